@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# make reproduce: run every experiment (writing results/<paper>/), render every figure with
+# gnuplot, write results/REPORT.md and results/claims.csv. Exit non-zero on any failed check.
+set -uo pipefail
+build=${1:-build}
+root=$(cd "$(dirname "$0")/.." && pwd)
+cd "$root"
+status=0
+while read -r exe; do
+  [ -n "$exe" ] || continue
+  if ! "$build/experiments/$exe" --root "$root"; then
+    echo "reproduce: experiment $exe reported failed checks" >&2
+    status=1
+  fi
+done < "$build/experiments.txt"
+for gp in scripts/plot/*.gp; do
+  name=$(basename "$gp" .gp)
+  [ "$name" = style ] && continue
+  paper=${name%%_fig*}
+  if ! gnuplot -e "datadir='results/$paper'" "$gp"; then
+    echo "reproduce: gnuplot failed on $gp" >&2
+    status=1
+  fi
+done
+"$build/cagd_report" "$root" || status=1
+{
+  echo "git revision: $(git rev-parse HEAD 2>/dev/null || echo unknown)"
+  echo "compiler: $(c++ --version | head -1)"
+  echo "cmake: $(cmake --version | head -1)"
+  echo "gnuplot: $(gnuplot --version)"
+  for p in libeigen3-dev libboost-dev libceres-dev libnlopt-cxx-dev libgtest-dev libcli11-dev; do
+    echo "$p: $(dpkg-query -W -f='${Version}' "$p" 2>/dev/null || echo '?')"
+  done
+} > results/ENVIRONMENT.txt
+exit $status

@@ -1,0 +1,128 @@
+#include "analysis/curve_measures.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "core/errors.hpp"
+#include "numeric/gauss_legendre.hpp"
+
+namespace cagd::analysis {
+
+namespace {
+const numeric::GaussLegendreRule& rule20() {
+    static const numeric::GaussLegendreRule rule(20);
+    return rule;
+}
+
+std::vector<double> subdivided(const std::vector<double>& br, int pieces) {
+    if (pieces < 1) fail_input("cagd::analysis", "pieces must be >= 1, got " + std::to_string(pieces));
+    std::vector<double> out;
+    for (std::size_t k = 0; k + 1 < br.size(); ++k)
+        for (int j = 0; j < pieces; ++j) out.push_back(br[k] + (br[k + 1] - br[k]) * j / pieces);
+    out.push_back(br.back());
+    return out;
+}
+
+std::vector<double> clipped_breaks(const Curve& c, double a, double b) {
+    std::vector<double> out{a};
+    for (double t : c.breakpoints())
+        if (t > a && t < b) out.push_back(t);
+    out.push_back(b);
+    return out;
+}
+
+double speed(const Curve& c, double t) { return c.jet(t, 1).row(1).norm(); }
+}  // namespace
+
+double curvature(const Curve& c, double t) {
+    const Eigen::MatrixXd J = c.jet(t, 2);
+    const double s2 = J.row(1).squaredNorm();
+    if (!(s2 > 0.0))
+        fail_input("cagd::analysis::curvature", "r'(t) = 0 at t = " + full_precision(t) +
+                                                    "; curvature undefined at a singular point");
+    const double cross2 = std::max(0.0, s2 * J.row(2).squaredNorm() - std::pow(J.row(1).dot(J.row(2)), 2));
+    return std::sqrt(cross2) / (s2 * std::sqrt(s2));
+}
+
+double signed_curvature(const Curve& c, double t) {
+    if (c.dimension() != 2)
+        fail_input("cagd::analysis::signed_curvature", "needs a planar curve, dimension is " +
+                                                           std::to_string(c.dimension()));
+    const Eigen::MatrixXd J = c.jet(t, 2);
+    const double s2 = J.row(1).squaredNorm();
+    if (!(s2 > 0.0))
+        fail_input("cagd::analysis::signed_curvature",
+                   "r'(t) = 0 at t = " + full_precision(t) + "; curvature undefined");
+    return (J(1, 0) * J(2, 1) - J(1, 1) * J(2, 0)) / (s2 * std::sqrt(s2));
+}
+
+double arc_length(const Curve& c, double a, double b, int pieces) {
+    if (!(a >= c.t_min() && b <= c.t_max() && a <= b))
+        fail_input("cagd::analysis::arc_length", "interval [" + full_precision(a) + ", " +
+                                                     full_precision(b) + "] not inside the domain");
+    return rule20().integrate_piecewise([&](double t) { return speed(c, t); },
+                                        subdivided(clipped_breaks(c, a, b), pieces));
+}
+
+double arc_length(const Curve& c, int pieces) { return arc_length(c, c.t_min(), c.t_max(), pieces); }
+
+numeric::RombergResult romberg_arc_length(const Curve& c, double rel_tol) {
+    numeric::RombergResult total;
+    const std::vector<double> br = c.breakpoints();
+    for (std::size_t k = 0; k + 1 < br.size(); ++k) {
+        const auto r = numeric::romberg([&](double t) { return speed(c, t); }, br[k], br[k + 1],
+                                        rel_tol, 1e-300, 24);
+        total.value += r.value;
+        total.error_estimate += r.error_estimate;
+        total.evaluations += r.evaluations;
+        total.levels = std::max(total.levels, r.levels);
+        if (!r.outcome.ok()) total.outcome = r.outcome;
+    }
+    return total;
+}
+
+double enclosed_area(const Curve& c) {
+    if (c.dimension() != 2)
+        fail_input("cagd::analysis::enclosed_area", "needs a planar curve, dimension is " +
+                                                        std::to_string(c.dimension()));
+    return 0.5 * rule20().integrate_piecewise(
+                     [&](double t) {
+                         const Eigen::MatrixXd J = c.jet(t, 1);
+                         return J(0, 0) * J(1, 1) - J(0, 1) * J(1, 0);
+                     },
+                     c.breakpoints());
+}
+
+double bending_energy(const Curve& c, int pieces) {
+    return rule20().integrate_piecewise(
+        [&](double t) {
+            const double k = curvature(c, t);
+            return k * k * speed(c, t);
+        },
+        subdivided(c.breakpoints(), pieces));
+}
+
+double max_distance_same_parameter(const Curve& a, const Curve& b, double t0, double t1, int samples) {
+    if (samples < 2) fail_input("cagd::analysis::max_distance_same_parameter", "samples must be >= 2");
+    double worst = 0.0;
+    for (int i = 0; i < samples; ++i) {
+        const double t = t0 + (t1 - t0) * i / (samples - 1);
+        worst = std::max(worst, (a.point(t) - b.point(t)).norm());
+    }
+    return worst;
+}
+
+double max_distance_same_parameter(const Curve& a, const Curve& b, int samples_per_piece) {
+    const double t0 = std::max(a.t_min(), b.t_min()), t1 = std::min(a.t_max(), b.t_max());
+    std::set<double> br{t0, t1};
+    for (double t : a.breakpoints()) if (t > t0 && t < t1) br.insert(t);
+    for (double t : b.breakpoints()) if (t > t0 && t < t1) br.insert(t);
+    const std::vector<double> v(br.begin(), br.end());
+    double worst = 0.0;
+    for (std::size_t k = 0; k + 1 < v.size(); ++k)
+        worst = std::max(worst, max_distance_same_parameter(a, b, v[k], v[k + 1], samples_per_piece + 1));
+    return worst;
+}
+
+}  // namespace cagd::analysis

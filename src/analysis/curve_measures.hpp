@@ -1,0 +1,33 @@
+#pragma once
+// Differential and integral measures of any Curve (DESIGN.md: computed once, here).
+//
+//   curvature κ(t) = sqrt(|r'|²|r''|² − (r'·r'')²) / |r'|³        (any dimension ≥ 2)
+//   signed curvature (planar) κ(t) = (x'y'' − y'x'') / |r'|³
+//   arc length L = ∫ |r'(t)| dt,  enclosed (signed) area A = ½ ∮ (x y' − y x') dt,
+//   bending energy E = ∫ κ² ds = ∫ κ² |r'| dt.
+// Integrals are taken piece by piece between Curve::breakpoints() with a 20-point
+// Gauss–Legendre rule split into `pieces` sub-intervals (fast path), or with Romberg to
+// rel 1e-13 (reference path, `romberg_arc_length`). For polynomial curves the area
+// integrand is a polynomial and the rule is exact to rounding for degree ≤ 19.
+// Preconditions: |r'(t)| > 0 where curvature is asked (InvalidInput names t otherwise).
+#include "core/curve.hpp"
+#include "numeric/romberg.hpp"
+
+namespace cagd::analysis {
+
+double curvature(const Curve& c, double t);
+double signed_curvature(const Curve& c, double t);   // planar curves only
+double arc_length(const Curve& c, int pieces = 4);
+double arc_length(const Curve& c, double a, double b, int pieces = 4);
+numeric::RombergResult romberg_arc_length(const Curve& c, double rel_tol = 1e-13);
+double enclosed_area(const Curve& c);                  // planar; signed, CCW positive
+double bending_energy(const Curve& c, int pieces = 4);
+
+// max_t |a(t) − b(t)| over `samples_per_piece` uniform samples between the breakpoints of
+// both curves, on the common parameter interval. The curves must share the parameter.
+double max_distance_same_parameter(const Curve& a, const Curve& b, int samples_per_piece = 64);
+// The same restricted to [t0, t1].
+double max_distance_same_parameter(const Curve& a, const Curve& b, double t0, double t1,
+                                   int samples = 257);
+
+}  // namespace cagd::analysis

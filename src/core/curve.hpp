@@ -1,0 +1,26 @@
+#pragma once
+// The one curve interface (DESIGN.md): position and derivatives at a parameter.
+// Everything in analysis/ (curvature, length, area, distances) works on a Curve, so it is
+// written once for all curve types. Modelled on GTE's ParametricCurve::Evaluate(t, order).
+#include <Eigen/Dense>
+#include <vector>
+
+namespace cagd {
+
+class Curve {
+public:
+    virtual ~Curve() = default;
+    virtual int dimension() const = 0;
+    virtual double t_min() const = 0;
+    virtual double t_max() const = 0;
+    // Row k of the result is the k-th derivative d^k r/dt^k at t, k = 0..order.
+    // Precondition: t_min ≤ t ≤ t_max (throws InvalidInput otherwise), order ≥ 0.
+    virtual Eigen::MatrixXd jet(double t, int order) const = 0;
+    // Parameters in [t_min, t_max] between which the curve is polynomial (ascending,
+    // including both ends). Quadrature in analysis/ integrates piece by piece.
+    virtual std::vector<double> breakpoints() const = 0;
+
+    Eigen::VectorXd point(double t) const { return jet(t, 0).row(0).transpose(); }
+};
+
+}  // namespace cagd

@@ -1,0 +1,32 @@
+#pragma once
+// Errors and numerical outcomes (DESIGN.md "Library conventions").
+//
+// A violated precondition (bad input) throws cagd::InvalidInput whose message names
+// the function, the condition and the offending value at full precision.
+// A legitimate numerical outcome for valid input (no convergence, no solution) is not
+// an exception: functions that can meet one return a value carrying a cagd::Outcome.
+#include <stdexcept>
+#include <string>
+
+namespace cagd {
+
+class InvalidInput : public std::invalid_argument {
+public:
+    using std::invalid_argument::invalid_argument;
+};
+
+enum class Status { ok, no_convergence, no_solution };
+
+struct Outcome {
+    Status status = Status::ok;
+    std::string message;
+    bool ok() const { return status == Status::ok; }
+};
+
+// Full-precision decimal rendering for error messages (17 significant digits).
+std::string full_precision(double value);
+
+// Throws InvalidInput("<who>: <what>") — the one way library code reports bad input.
+[[noreturn]] void fail_input(const std::string& who, const std::string& what);
+
+}  // namespace cagd

@@ -1,0 +1,34 @@
+#include "core/points.hpp"
+
+#include <cmath>
+
+#include "core/errors.hpp"
+
+namespace cagd {
+
+void require_valid_points(const PointList& points, Eigen::Index min_count,
+                          bool distinct_consecutive, bool closed, const std::string& who) {
+    const Eigen::Index n = points.rows();
+    if (n < min_count)
+        fail_input(who, "needs at least " + std::to_string(min_count) + " points, got " +
+                            std::to_string(n));
+    if (points.cols() < 1 || points.cols() > 3)
+        fail_input(who, "points must have 1, 2 or 3 coordinates, got " +
+                            std::to_string(points.cols()));
+    for (Eigen::Index i = 0; i < n; ++i)
+        for (Eigen::Index k = 0; k < points.cols(); ++k)
+            if (!std::isfinite(points(i, k)))
+                fail_input(who, "point " + std::to_string(i) + " coordinate " +
+                                    std::to_string(k) + " is " + full_precision(points(i, k)) +
+                                    "; coordinates must be finite");
+    if (!distinct_consecutive) return;
+    const Eigen::Index pairs = closed ? n : n - 1;
+    for (Eigen::Index i = 0; i < pairs; ++i) {
+        const Eigen::Index j = (i + 1) % n;
+        if ((points.row(i) - points.row(j)).norm() == 0.0)
+            fail_input(who, "points " + std::to_string(i) + " and " + std::to_string(j) +
+                                " coincide (zero-length chord); consecutive points must differ");
+    }
+}
+
+}  // namespace cagd

@@ -1,0 +1,75 @@
+#pragma once
+// One run of one experiment (one paper artifact): loads the artifact's reference file,
+// records a check per claim and a validation per independent recomputation, writes
+//   results/<paper>/<artifact>.checks.csv   (claims and validations, stable formatting)
+//   results/<paper>/<artifact>.meta         (title, section, sources, figures, notes)
+// plus the data files the experiment asks for, and returns the exit code.
+//
+// Status of a claim (DESIGN.md):
+//   reproduced  |ours − paper| ≤ tolerance
+//   deviates    outside tolerance, the row names an erratum present in reference/ERRATA.md,
+//               and the corrected statement holds: |ours − corrected_value| ≤ tolerance, or
+//               (for a misprinted formula) the experiment's value computed with the corrected
+//               formula, ours_corrected, satisfies |ours_corrected − paper| ≤ tolerance
+//   failed      anything else, including a reference row the experiment never checked.
+// Any failed claim or validation makes finish() return 1.
+//
+// Command line of every experiment: [--check] [--root DIR]. --check computes and checks
+// everything but writes under a temporary directory instead of results/.
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "repro/csv.hpp"
+#include "repro/reference.hpp"
+
+namespace cagd::repro {
+
+enum class ClaimStatus { reproduced, deviates, failed };
+const char* to_string(ClaimStatus s);
+
+// The classification rule above, as a pure function (unit-tested).
+ClaimStatus classify(const ReferenceRow& row, double ours, std::optional<double> ours_corrected,
+                     bool erratum_documented);
+
+struct CheckRecord {
+    std::string kind;   // "claim" or "validation"
+    std::string id, description;
+    double paper = 0.0, ours = 0.0, tolerance = 0.0;
+    std::string paper_text, tolerance_reason, erratum;
+    ClaimStatus status = ClaimStatus::failed;
+};
+
+class ArtifactRun {
+public:
+    // section: the paper's section/equation used to order artifacts in the report ("2.1").
+    ArtifactRun(std::string paper, std::string artifact, std::string section, std::string title,
+                int argc, char** argv);
+
+    const Reference& reference() const { return reference_; }
+    // Check claim `<paper>.<short_id>` of the reference file against our value.
+    void check(const std::string& short_id, double ours);
+    void check(const std::string& short_id, double ours, double ours_corrected);
+    // An independent recomputation of a library value: |fast − reference| ≤ tolerance.
+    void validate(const std::string& short_id, const std::string& description, double fast,
+                  double reference_value, double tolerance, const std::string& tolerance_reason);
+
+    void figure(const std::string& name, const std::string& caption);
+    void note(const std::string& text);
+    std::string data_path(const std::string& file_name) const;   // where to write data
+    CsvWriter table(const std::string& file_name, const std::vector<std::string>& header) const;
+
+    int finish();
+
+private:
+    std::string paper_, artifact_, section_, title_, root_, out_dir_;
+    bool check_mode_ = false;
+    Reference reference_;
+    std::set<std::string> errata_;
+    std::vector<CheckRecord> records_;
+    std::vector<std::pair<std::string, std::string>> figures_;
+    std::vector<std::string> notes_;
+};
+
+}  // namespace cagd::repro

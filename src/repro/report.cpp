@@ -1,0 +1,182 @@
+#include "repro/report.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "core/errors.hpp"
+#include "repro/csv.hpp"
+
+namespace cagd::repro {
+
+namespace fs = std::filesystem;
+
+namespace {
+struct Row {
+    std::map<std::string, std::string> f;
+    const std::string& operator[](const std::string& k) const {
+        static const std::string empty;
+        const auto it = f.find(k);
+        return it == f.end() ? empty : it->second;
+    }
+};
+
+struct Artifact {
+    std::string paper, name, title, section, reference, experiment;
+    std::vector<std::string> provenance, notes;
+    std::vector<std::pair<std::string, std::string>> figures;
+    std::vector<Row> rows;
+};
+
+const std::vector<std::pair<std::string, std::string>> kPapers = {
+    {"pseudo_energy", "Inoue, Shibata, Kanatani — cubic Hermite spline with minimum pseudo-energy"},
+    {"sb2_locality", "Kuroda, Furukawa, Kimura — S-splines and B2-splines with controllable locality"},
+    {"hosaka", "Hosaka — theory of curve and surface synthesis and smoothing"},
+    {"typical_curves", "Miura, Shirahata, Agari — nonstationary typical curves, extension to surfaces"},
+    {"curvature_profile", "Kuroda, Higashi, Saito, Watanabe — composite interpolants, curvature piecewise 0–2nd degree in arc length"},
+};
+
+std::vector<Row> read_checks(const fs::path& p) {
+    std::ifstream in(p);
+    std::string line;
+    std::vector<std::string> header;
+    std::vector<Row> rows;
+    while (std::getline(in, line)) {
+        const auto f = split_csv_line(line);
+        if (header.empty()) { header = f; continue; }
+        Row r;
+        for (std::size_t i = 0; i < header.size() && i < f.size(); ++i) r.f[header[i]] = f[i];
+        rows.push_back(r);
+    }
+    return rows;
+}
+
+Artifact read_artifact(const fs::path& meta, const std::string& paper) {
+    Artifact a;
+    a.paper = paper;
+    a.name = meta.stem().string();
+    std::ifstream in(meta);
+    std::string line;
+    while (std::getline(in, line)) {
+        const auto colon = line.find(": ");
+        if (colon == std::string::npos) continue;
+        const std::string k = line.substr(0, colon), v = line.substr(colon + 2);
+        if (k == "title") a.title = v;
+        else if (k == "section") a.section = v;
+        else if (k == "reference") a.reference = v;
+        else if (k == "experiment") a.experiment = v;
+        else if (k == "provenance") a.provenance.push_back(v);
+        else if (k == "note") a.notes.push_back(v);
+        else if (k == "figure") {
+            const auto bar = v.find('|');
+            a.figures.emplace_back(v.substr(0, bar), bar == std::string::npos ? "" : v.substr(bar + 1));
+        }
+    }
+    a.rows = read_checks(meta.parent_path() / (a.name + ".checks.csv"));
+    return a;
+}
+
+std::string md(const std::string& s) {   // escape table pipes
+    std::string o;
+    for (char c : s) { if (c == '|') o += "\\|"; else o += c; }
+    return o;
+}
+
+std::string anchor(const std::string& erratum) {
+    std::string a;
+    for (char c : erratum) a += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return a;
+}
+}  // namespace
+
+int write_report(const std::string& root) {
+    const fs::path results = fs::path(root) / "results";
+    int failed = 0;
+    std::ofstream claims(results / "claims.csv");
+    claims << "paper,artifact,claim,paper_value,ours,abs_diff,tolerance,status,erratum\n";
+    std::ostringstream body, summary;
+    summary << "| paper | claims | reproduced | deviates | failed | validations (passed / total) |\n"
+               "|---|---:|---:|---:|---:|---:|\n";
+    for (const auto& [paper, title] : kPapers) {
+        const fs::path dir = results / paper;
+        if (!fs::exists(dir)) {
+            summary << "| `" << paper << "` | — | — | — | — | not yet reproduced |\n";
+            continue;
+        }
+        std::vector<Artifact> arts;
+        std::vector<fs::path> metas;
+        for (const auto& e : fs::directory_iterator(dir))
+            if (e.path().extension() == ".meta") metas.push_back(e.path());
+        std::sort(metas.begin(), metas.end());
+        for (const auto& m : metas) arts.push_back(read_artifact(m, paper));
+        std::stable_sort(arts.begin(), arts.end(), [](const Artifact& x, const Artifact& y) {
+            return std::make_pair(x.section, x.name) < std::make_pair(y.section, y.name);
+        });
+        int n = 0, rep = 0, dev = 0, fail = 0, val = 0, val_ok = 0;
+        body << "\n## `" << paper << "` — " << title << "\n";
+        for (const auto& a : arts) {
+            body << "\n### " << a.title << " (`" << a.name << "`)\n\n";
+            body << "Paper: " << a.section << ". Reference: [`" << a.reference << "`](../" << a.reference
+                 << "). Experiment: [`" << a.experiment << "`](../" << a.experiment << ").\n";
+            for (const auto& p : a.provenance) body << "> " << p << "\n";
+            if (!a.provenance.empty()) body << "\n";
+            for (const auto& note : a.notes) body << "- " << note << "\n";
+            body << "\n| claim | statement | paper | ours | \\|Δ\\| | tolerance | status |\n"
+                    "|---|---|---:|---:|---:|---:|---|\n";
+            std::ostringstream vals;
+            for (const auto& r : a.rows) {
+                const std::string status = r["status"];
+                if (r["kind"] == "claim") {
+                    ++n;
+                    rep += status == "reproduced";
+                    dev += status == "deviates";
+                    fail += status == "failed";
+                    claims << csv_field(paper) << "," << csv_field(a.name) << "," << csv_field(r["id"]) << ","
+                           << csv_field(r["paper_value"]) << "," << r["ours"] << "," << r["abs_diff"] << ","
+                           << r["tolerance"] << "," << status << "," << r["erratum"] << "\n";
+                    std::string shown = status == "failed" ? "**failed**" : status;
+                    if (!r["erratum"].empty())
+                        shown += " ([" + r["erratum"] + "](../reference/ERRATA.md#" + anchor(r["erratum"]) + "))";
+                    body << "| `" << r["id"].substr(paper.size() + 1) << "` | " << md(r["description"]) << " | "
+                         << md(r["paper_value"]) << " | " << r["ours"] << " | " << r["abs_diff"] << " | "
+                         << r["tolerance"] << " | " << shown << " |\n";
+                } else {
+                    ++val;
+                    val_ok += status == "reproduced";
+                    vals << "| `" << r["id"].substr(paper.size() + 1) << "` | " << md(r["description"]) << " | "
+                         << r["paper_value"] << " | " << r["ours"] << " | " << r["abs_diff"] << " | "
+                         << r["tolerance"] << " (" << md(r["tolerance_reason"]) << ") | "
+                         << (status == "reproduced" ? "passed" : "**failed**") << " |\n";
+                }
+                failed += status == "failed";
+            }
+            if (!vals.str().empty())
+                body << "\nValidation — library value against an independent recomputation:\n\n"
+                        "| check | what | reference | library | \\|Δ\\| | tolerance | result |\n"
+                        "|---|---|---:|---:|---:|---|---|\n"
+                     << vals.str();
+            for (const auto& [name, caption] : a.figures)
+                body << "\n![" << md(caption) << "](" << paper << "/" << name << ".png)\n\n*" << caption
+                     << "* — data: [`" << paper << "/" << name << ".csv`](" << paper << "/" << name
+                     << ".csv), script: [`scripts/plot/" << paper << "_" << name << ".gp`](../scripts/plot/"
+                     << paper << "_" << name << ".gp)\n";
+        }
+        summary << "| [`" << paper << "`](#" << paper << ") | " << n << " | " << rep << " | " << dev << " | "
+                << fail << " | " << val_ok << " / " << val << " |\n";
+    }
+    std::ofstream report(results / "REPORT.md");
+    report << "# cagd-repro — reproduction report\n\n"
+              "Generated by `make reproduce` (src/repro/report.cpp); do not edit. Every value in the\n"
+              "*ours* column is computed by the library at run time. Status: **reproduced** = within the\n"
+              "tolerance of the paper's printed value; **deviates** = outside it, with an erratum in\n"
+              "[reference/ERRATA.md](../reference/ERRATA.md) that shows why, and the corrected statement\n"
+              "checked; **failed** = outside tolerance with no explanation. Tolerances and their reasons\n"
+              "are in the reference files. The machine-readable form is [claims.csv](claims.csv).\n\n"
+              "## Summary\n\n"
+           << summary.str() << body.str();
+    return failed;
+}
+
+}  // namespace cagd::repro

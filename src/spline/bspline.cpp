@@ -1,0 +1,246 @@
+#include "spline/bspline.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/errors.hpp"
+
+namespace cagd {
+
+namespace {
+const char* const kWho = "cagd::BSplineCurve";
+
+double binomial(int n, int k) {
+    double r = 1.0;
+    for (int i = 1; i <= k; ++i) r = r * (n - k + i) / i;
+    return r;
+}
+}  // namespace
+
+BSplineCurve::BSplineCurve(int degree, std::vector<double> knots, Eigen::MatrixXd control_points)
+    : degree_(degree), knots_(std::move(knots)), control_(std::move(control_points)) {
+    if (degree_ < 0) fail_input(kWho, "degree must be >= 0, got " + std::to_string(degree_));
+    const auto n = static_cast<std::size_t>(control_.rows());
+    if (control_.rows() < degree_ + 1)
+        fail_input(kWho, "needs at least degree+1 = " + std::to_string(degree_ + 1) +
+                             " control points, got " + std::to_string(n));
+    if (knots_.size() != n + static_cast<std::size_t>(degree_) + 1)
+        fail_input(kWho, "knot count must be control points + degree + 1 = " +
+                             std::to_string(n + degree_ + 1) + ", got " +
+                             std::to_string(knots_.size()));
+    for (std::size_t i = 0; i < knots_.size(); ++i) {
+        if (!std::isfinite(knots_[i]))
+            fail_input(kWho, "knot " + std::to_string(i) + " is " + full_precision(knots_[i]));
+        if (i > 0 && knots_[i] < knots_[i - 1])
+            fail_input(kWho, "knots must be non-decreasing; knot " + std::to_string(i) + " = " +
+                                 full_precision(knots_[i]) + " < " + full_precision(knots_[i - 1]));
+        const auto pp1 = static_cast<std::size_t>(degree_) + 1;
+        if (i >= pp1 && knots_[i] == knots_[i - pp1])
+            fail_input(kWho, "knot " + full_precision(knots_[i]) + " has multiplicity > degree+1 = " +
+                                 std::to_string(degree_ + 1));
+    }
+    if (!(t_min() < t_max()))
+        fail_input(kWho, "empty domain [" + full_precision(t_min()) + ", " +
+                             full_precision(t_max()) + "]");
+    if (!control_.allFinite()) fail_input(kWho, "control points must be finite");
+}
+
+int BSplineCurve::find_span(double t) const {
+    const int n = static_cast<int>(control_.rows());
+    if (t >= t_max()) {
+        int s = n - 1;
+        while (s > degree_ && knots_[s] == knots_[s + 1]) --s;
+        return s;
+    }
+    const auto it = std::upper_bound(knots_.begin() + degree_, knots_.begin() + n, t);
+    return static_cast<int>(it - knots_.begin()) - 1;
+}
+
+Eigen::MatrixXd basis_function_derivatives(int p, const std::vector<double>& U, int span,
+                                           double u, int order) {
+    // Piegl & Tiller, The NURBS Book (2nd ed.), algorithm A2.3.
+    const int nd = std::min(order, p);
+    Eigen::MatrixXd ndu(p + 1, p + 1), a(2, p + 1);
+    Eigen::VectorXd left(p + 1), right(p + 1);
+    ndu(0, 0) = 1.0;
+    for (int j = 1; j <= p; ++j) {
+        left(j) = u - U[span + 1 - j];
+        right(j) = U[span + j] - u;
+        double saved = 0.0;
+        for (int r = 0; r < j; ++r) {
+            ndu(j, r) = right(r + 1) + left(j - r);
+            const double temp = ndu(r, j - 1) / ndu(j, r);
+            ndu(r, j) = saved + right(r + 1) * temp;
+            saved = left(j - r) * temp;
+        }
+        ndu(j, j) = saved;
+    }
+    Eigen::MatrixXd ders = Eigen::MatrixXd::Zero(order + 1, p + 1);
+    for (int j = 0; j <= p; ++j) ders(0, j) = ndu(j, p);
+    for (int r = 0; r <= p; ++r) {
+        int s1 = 0, s2 = 1;
+        a(0, 0) = 1.0;
+        for (int k = 1; k <= nd; ++k) {
+            double d = 0.0;
+            const int rk = r - k, pk = p - k;
+            if (r >= k) {
+                a(s2, 0) = a(s1, 0) / ndu(pk + 1, rk);
+                d = a(s2, 0) * ndu(rk, pk);
+            }
+            const int j1 = (rk >= -1) ? 1 : -rk;
+            const int j2 = (r - 1 <= pk) ? k - 1 : p - r;
+            for (int j = j1; j <= j2; ++j) {
+                a(s2, j) = (a(s1, j) - a(s1, j - 1)) / ndu(pk + 1, rk + j);
+                d += a(s2, j) * ndu(rk + j, pk);
+            }
+            if (r <= pk) {
+                a(s2, k) = -a(s1, k - 1) / ndu(pk + 1, r);
+                d += a(s2, k) * ndu(r, pk);
+            }
+            ders(k, r) = d;
+            std::swap(s1, s2);
+        }
+    }
+    double factor = p;
+    for (int k = 1; k <= nd; ++k) {
+        ders.row(k) *= factor;
+        factor *= (p - k);
+    }
+    return ders;
+}
+
+Eigen::MatrixXd BSplineCurve::jet(double t, int order) const {
+    if (!(t >= t_min() && t <= t_max()))
+        fail_input("cagd::BSplineCurve::jet", "t = " + full_precision(t) + " outside [" +
+                                                  full_precision(t_min()) + ", " +
+                                                  full_precision(t_max()) + "]");
+    if (order < 0) fail_input("cagd::BSplineCurve::jet", "order must be >= 0");
+    const int span = find_span(t);
+    const Eigen::MatrixXd ders = basis_function_derivatives(degree_, knots_, span, t, order);
+    return ders * control_.middleRows(span - degree_, degree_ + 1);
+}
+
+std::vector<double> BSplineCurve::breakpoints() const {
+    std::vector<double> b;
+    for (int i = degree_; i <= static_cast<int>(control_.rows()); ++i)
+        if (b.empty() || knots_[i] > b.back()) b.push_back(knots_[i]);
+    return b;
+}
+
+double bspline_basis(int p, const std::vector<double>& k, double t, int derivative) {
+    if (p < 0 || k.size() != static_cast<std::size_t>(p) + 2)
+        fail_input("cagd::bspline_basis", "needs degree+2 = " + std::to_string(p + 2) +
+                                              " local knots, got " + std::to_string(k.size()));
+    if (derivative < 0) fail_input("cagd::bspline_basis", "derivative must be >= 0");
+    if (derivative > p) return 0.0;
+    if (t < k.front() || t > k.back()) return 0.0;
+    if (p == 0) {
+        if (k[0] == k[1]) return 0.0;
+        return (t < k[1] || t == k.back()) ? 1.0 : 0.0;
+    }
+    // Evaluate through the curve machinery: the function is the single basis function of
+    // a B-spline whose knot vector is padded with p knots beyond each end.
+    const double w = std::max(1.0, k.back() - k.front());
+    std::vector<double> U;
+    for (int i = p; i >= 1; --i) U.push_back(k.front() - w * i);
+    U.insert(U.end(), k.begin(), k.end());
+    for (int i = 1; i <= p; ++i) U.push_back(k.back() + w * i);
+    // U has 3p+2 knots -> 2p+1 basis functions; ours is index p.
+    Eigen::MatrixXd control = Eigen::MatrixXd::Zero(2 * p + 1, 1);
+    control(p, 0) = 1.0;
+    const BSplineCurve curve(p, U, control);
+    return curve.jet(t, derivative)(derivative, 0);
+}
+
+BSplineCurve insert_knot(const BSplineCurve& c, double t) {
+    // Boehm's algorithm.
+    if (!(t >= c.t_min() && t <= c.t_max()))
+        fail_input("cagd::insert_knot", "t = " + full_precision(t) + " outside the domain");
+    const int p = c.degree();
+    const auto& U = c.knots();
+    const Eigen::MatrixXd& P = c.control_points();
+    const int n = static_cast<int>(P.rows());
+    int k = c.find_span(t);
+    if (t == c.t_max()) k = n - 1;
+    std::vector<double> V(U.begin(), U.begin() + k + 1);
+    V.push_back(t);
+    V.insert(V.end(), U.begin() + k + 1, U.end());
+    Eigen::MatrixXd Q(n + 1, P.cols());
+    for (int i = 0; i <= n; ++i) {
+        if (i <= k - p) Q.row(i) = P.row(i);
+        else if (i > k) Q.row(i) = P.row(i - 1);
+        else {
+            const double denom = U[i + p] - U[i];
+            const double a = denom > 0 ? (t - U[i]) / denom : 0.0;
+            Q.row(i) = a * P.row(i) + (1.0 - a) * P.row(i - 1);
+        }
+    }
+    return BSplineCurve(p, V, Q);
+}
+
+BSplineCurve elevate_degree(const BSplineCurve& c) {
+    const int p = c.degree(), q = p + 1;
+    const auto& U = c.knots();
+    const int n = static_cast<int>(c.control_points().rows());
+    // Every knot with multiplicity +1, then trimmed so that the domain is unchanged:
+    // new knot q (0-based) is the last copy of t_p, new knot n' is the first copy of t_n.
+    std::vector<double> L;
+    for (std::size_t i = 0; i < U.size(); ++i) {
+        L.push_back(U[i]);
+        if (i + 1 == U.size() || U[i + 1] != U[i]) L.push_back(U[i]);
+    }
+    const double a = c.t_min(), b = c.t_max();
+    const auto last_a = static_cast<int>(std::upper_bound(L.begin(), L.end(), a) - L.begin()) - 1;
+    const auto first_b = static_cast<int>(std::lower_bound(L.begin(), L.end(), b) - L.begin());
+    std::vector<double> V;
+    for (int i = last_a - q; i < 0; ++i) V.push_back(L.front());   // pad (clamped input)
+    V.insert(V.end(), L.begin() + std::max(0, last_a - q),
+             L.begin() + std::min<int>(static_cast<int>(L.size()), first_b + q + 1));
+    while (static_cast<int>(V.size()) < (first_b - (last_a - q)) + q + 1) V.push_back(L.back());
+    const int n_new = static_cast<int>(V.size()) - q - 1;
+    (void)n;
+    // Least squares on q+1 Chebyshev samples per span: exact since r ∈ new space.
+    const std::vector<double> br = c.breakpoints();
+    const int samples = q + 1;
+    const int rows = static_cast<int>(br.size() - 1) * samples;
+    Eigen::MatrixXd A = Eigen::MatrixXd::Zero(rows, n_new), B(rows, c.dimension());
+    int row = 0;
+    for (std::size_t s = 0; s + 1 < br.size(); ++s) {
+        for (int j = 0; j < samples; ++j) {
+            const double x = std::cos(M_PI * (2.0 * j + 1.0) / (2.0 * samples));
+            const double t = 0.5 * (br[s] + br[s + 1]) + 0.5 * (br[s + 1] - br[s]) * x;
+            const auto it = std::upper_bound(V.begin() + q, V.begin() + n_new, t);
+            const int span = static_cast<int>(it - V.begin()) - 1;
+            const Eigen::MatrixXd N = basis_function_derivatives(q, V, span, t, 0);
+            for (int k = 0; k <= q; ++k) A(row, span - q + k) = N(0, k);
+            B.row(row) = c.jet(t, 0).row(0);
+            ++row;
+        }
+    }
+    const Eigen::MatrixXd control = A.colPivHouseholderQr().solve(B);
+    return BSplineCurve(q, V, control);
+}
+
+std::vector<BezierCurve> bezier_segments(const BSplineCurve& c) {
+    const int p = c.degree();
+    const std::vector<double> br = c.breakpoints();
+    std::vector<BezierCurve> segments;
+    for (std::size_t s = 0; s + 1 < br.size(); ++s) {
+        const double a = br[s], h = br[s + 1] - br[s];
+        const Eigen::MatrixXd J = c.jet(a, p);   // right-hand derivatives at the span start
+        // Taylor coefficients in s ∈ [0,1]: c_k = h^k r^(k)(a) / k!;  b_j = Σ_k C(j,k)/C(p,k) c_k.
+        Eigen::MatrixXd coef(p + 1, c.dimension());
+        double hk = 1.0, fact = 1.0;
+        for (int k = 0; k <= p; ++k) {
+            if (k > 0) { hk *= h; fact *= k; }
+            coef.row(k) = (hk / fact) * J.row(k);
+        }
+        Eigen::MatrixXd b = Eigen::MatrixXd::Zero(p + 1, c.dimension());
+        for (int j = 0; j <= p; ++j)
+            for (int k = 0; k <= j; ++k) b.row(j) += binomial(j, k) / binomial(p, k) * coef.row(k);
+        segments.emplace_back(b, br[s], br[s + 1]);
+    }
+    return segments;
+}
+
+}  // namespace cagd

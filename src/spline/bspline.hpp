@@ -1,0 +1,63 @@
+#pragma once
+// B-spline curves of any degree on any (uniform or non-uniform) knot vector.
+//
+//   r(t) = Σ_{i=0}^{n−1} N_{i,p}(t) d_i,   t ∈ [t_p, t_n],
+// with knots t_0 ≤ … ≤ t_{n+p} (n + p + 1 of them) and Cox–de Boor basis N_{i,p}.
+// Evaluation with derivatives: basis-function derivatives by Piegl & Tiller, The NURBS
+// Book, algorithm A2.3, then a (p+1)-term combination: O(p²) per point.
+// Knot insertion: Boehm's algorithm (exact, convex combinations). Degree elevation:
+// the elevated curve lies exactly in the spline space of degree p+1 whose knots are
+// the old ones with every multiplicity raised by one; its control points are found by
+// a least-squares fit to p+2 samples per span, which is exact up to rounding because the
+// old curve is in that space (QR; error ~ 10 ε·|d| for well-conditioned knots).
+// Bézier segments: per non-empty span, from the Taylor jet at the span start.
+//
+// Preconditions (InvalidInput otherwise): p ≥ 0; knots non-decreasing and finite;
+// control point count n = knots − p − 1 ≥ p + 1; t_p < t_n; no knot of multiplicity > p+1.
+#include <Eigen/Dense>
+#include <vector>
+
+#include "core/curve.hpp"
+#include "spline/bezier.hpp"
+
+namespace cagd {
+
+class BSplineCurve : public Curve {
+public:
+    BSplineCurve(int degree, std::vector<double> knots, Eigen::MatrixXd control_points);
+
+    int degree() const { return degree_; }
+    const std::vector<double>& knots() const { return knots_; }
+    const Eigen::MatrixXd& control_points() const { return control_; }
+
+    int dimension() const override { return static_cast<int>(control_.cols()); }
+    double t_min() const override { return knots_[degree_]; }
+    double t_max() const override { return knots_[control_.rows()]; }
+    Eigen::MatrixXd jet(double t, int order) const override;
+    std::vector<double> breakpoints() const override;
+
+    // Index s with t_s ≤ t < t_{s+1}, p ≤ s ≤ n−1 (t = t_max: the last non-empty span).
+    int find_span(double t) const;
+
+private:
+    int degree_;
+    std::vector<double> knots_;
+    Eigen::MatrixXd control_;
+};
+
+// Derivatives 0..order of the p+1 basis functions non-zero on span s at t:
+// result(k, j) = d^k N_{s−p+j, p}(t) / dt^k. (Piegl & Tiller A2.3.)
+Eigen::MatrixXd basis_function_derivatives(int degree, const std::vector<double>& knots,
+                                           int span, double t, int order);
+
+// One B-spline basis function of degree p given by its p+2 local knots
+// [κ_0, …, κ_{p+1}], or its derivative, at t; zero outside [κ_0, κ_{p+1}). Right-continuous,
+// except that t = κ_{p+1} is taken from the left (so closed supports evaluate symmetrically).
+double bspline_basis(int degree, const std::vector<double>& local_knots, double t,
+                     int derivative = 0);
+
+BSplineCurve insert_knot(const BSplineCurve& curve, double t);
+BSplineCurve elevate_degree(const BSplineCurve& curve);
+std::vector<BezierCurve> bezier_segments(const BSplineCurve& curve);
+
+}  // namespace cagd

@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# The cagd command: a good run writes a curve through the points; each kind of bad input
+# gives exit code 2 and exactly one line on stderr.
+set -u
+cagd=$1
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+fails=0
+printf 'x,y\n0,0\n1,1\n2,0\n3,1\n4,0\n' > "$dir/pts.csv"
+
+if ! "$cagd" interpolate --method s-spline --m 2 --in "$dir/pts.csv" --out "$dir/c.csv" --samples 4; then
+  echo "FAIL: good interpolate exited non-zero"; fails=$((fails+1))
+fi
+# u = 2 is the 9th sample (4 per span): the curve passes through (2, 0).
+if ! awk -F, 'NR==10 { exit !($1==2 && ($2-2)^2 < 1e-20 && $3^2 < 1e-20) }' "$dir/c.csv"; then
+  echo "FAIL: curve does not pass through p_2 = (2,0) at u = 2"; sed -n 10p "$dir/c.csv"; fails=$((fails+1))
+fi
+"$cagd" analyze "$dir/c.csv" > "$dir/a.txt" 2>/dev/null || { echo "FAIL: analyze"; fails=$((fails+1)); }
+grep -q '^polyline_length,' "$dir/a.txt" || { echo "FAIL: analyze prints no length"; fails=$((fails+1)); }
+"$cagd" interpolate --help | grep -q -- '--m-vector' || { echo "FAIL: --help lacks --m-vector"; fails=$((fails+1)); }
+
+expect_bad() {   # description, file content, extra args...
+  local what=$1 content=$2; shift 2
+  printf '%b' "$content" > "$dir/bad.csv"
+  "$cagd" "$@" > /dev/null 2> "$dir/err.txt"
+  local code=$?
+  local lines
+  lines=$(wc -l < "$dir/err.txt")
+  if [ "$code" -ne 2 ] || [ "$lines" -ne 1 ]; then
+    echo "FAIL: $what: exit $code, $lines stderr lines:"; cat "$dir/err.txt"; fails=$((fails+1))
+  fi
+}
+expect_bad "one point"            '0,0\n'              interpolate --m 1 --in "$dir/bad.csv" --out "$dir/o.csv"
+expect_bad "nan coordinate"       '0,0\n1,nan\n2,0\n'  interpolate --m 1 --in "$dir/bad.csv" --out "$dir/o.csv"
+expect_bad "repeated points"      '0,0\n1,1\n1,1\n'    interpolate --m 1 --in "$dir/bad.csv" --out "$dir/o.csv"
+expect_bad "negative m"           '0,0\n1,1\n2,0\n'    interpolate --m -1 --in "$dir/bad.csv" --out "$dir/o.csv"
+expect_bad "m-vector length"      '0,0\n1,1\n2,0\n'    interpolate --m-vector 1,2,3 --in "$dir/bad.csv" --out "$dir/o.csv"
+expect_bad "unreadable line"      '0,0\n1,x\n2,0\n'    interpolate --m 1 --in "$dir/bad.csv" --out "$dir/o.csv"
+expect_bad "missing file"         ''                   interpolate --m 1 --in "$dir/none.csv" --out "$dir/o.csv"
+expect_bad "unknown method"       '0,0\n1,1\n'         interpolate --method foo --in "$dir/bad.csv" --out "$dir/o.csv"
+expect_bad "tangent without vec"  '0,0\n1,1\n2,0\n'    interpolate --end tangent --in "$dir/bad.csv" --out "$dir/o.csv"
+
+if [ "$fails" -eq 0 ]; then echo "cli: all checks passed"; fi
+exit $((fails > 0))

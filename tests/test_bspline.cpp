@@ -1,0 +1,115 @@
+// B-spline and Bézier evaluation, knot insertion, degree elevation, Bézier extraction.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "analysis/curve_measures.hpp"
+#include "core/errors.hpp"
+#include "spline/bspline.hpp"
+
+using namespace cagd;
+
+namespace {
+BSplineCurve random_curve(int degree, int n, unsigned seed, bool uniform) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(-1.0, 1.0), gap(0.2, 1.5);
+    std::vector<double> knots{0.0};
+    for (int i = 1; i < n + degree + 1; ++i) knots.push_back(knots.back() + (uniform ? 1.0 : gap(rng)));
+    Eigen::MatrixXd c(n, 2);
+    for (int i = 0; i < n; ++i) c.row(i) << u(rng), u(rng);
+    return BSplineCurve(degree, knots, c);
+}
+}  // namespace
+
+TEST(BSpline, BasisIsAPartitionOfUnityWithMatchingDerivatives) {
+    const BSplineCurve c = random_curve(4, 9, 1, false);
+    for (int k = 0; k <= 40; ++k) {
+        const double t = c.t_min() + (c.t_max() - c.t_min()) * k / 40.0;
+        const int span = c.find_span(t);
+        const Eigen::MatrixXd N = basis_function_derivatives(4, c.knots(), span, t, 2);
+        EXPECT_NEAR(N.row(0).sum(), 1.0, 1e-14) << "Σ N_i(t) = 1 at t = " << t;
+        EXPECT_NEAR(N.row(1).sum(), 0.0, 1e-12) << "Σ N_i'(t) = 0";
+    }
+}
+
+TEST(BSpline, DerivativesMatchCentralDifferences) {
+    const BSplineCurve c = random_curve(3, 8, 2, false);
+    const double h = 1e-5;
+    for (double s : {0.13, 0.41, 0.77}) {
+        const double t = c.t_min() + s * (c.t_max() - c.t_min());
+        const Eigen::MatrixXd J = c.jet(t, 2);
+        const Eigen::RowVectorXd fd1 = (c.point(t + h) - c.point(t - h)).transpose() / (2 * h);
+        const Eigen::RowVectorXd fd2 = (c.point(t + h) - 2 * c.point(t) + c.point(t - h)).transpose() / (h * h);
+        EXPECT_LT((J.row(1) - fd1).norm(), 1e-8);
+        EXPECT_LT((J.row(2) - fd2).norm(), 1e-4);
+    }
+}
+
+TEST(BSpline, KnotInsertionLeavesTheCurveUnchanged) {
+    const BSplineCurve c = random_curve(3, 10, 3, false);
+    BSplineCurve d = insert_knot(c, 0.37 * c.t_min() + 0.63 * c.t_max());
+    d = insert_knot(d, c.knots()[5]);   // raise an existing knot's multiplicity
+    EXPECT_EQ(d.control_points().rows(), c.control_points().rows() + 2);
+    EXPECT_LT(analysis::max_distance_same_parameter(c, d), 1e-14);
+}
+
+TEST(BSpline, DegreeElevationLeavesTheCurveUnchanged) {
+    const BSplineCurve c = random_curve(3, 9, 4, false);
+    const BSplineCurve e = elevate_degree(c);
+    EXPECT_EQ(e.degree(), 4);
+    EXPECT_DOUBLE_EQ(e.t_min(), c.t_min());
+    EXPECT_DOUBLE_EQ(e.t_max(), c.t_max());
+    EXPECT_LT(analysis::max_distance_same_parameter(c, e), 1e-12);
+}
+
+TEST(BSpline, ElevatedUniformCubicHasDoubleKnotsAndKnownControls) {
+    // Uniform cubic → quartic with double knots: d̂_{2i+1} = (c_i + c_{i+1})/2 and
+    // d̂_{2i} = (c_{i−1} + 10 c_i + c_{i+1})/12 (derived from eq (7) and eq (9) of sb2_locality).
+    const BSplineCurve c = random_curve(3, 12, 5, true);
+    const BSplineCurve e = elevate_degree(c);
+    const auto& C = c.control_points();
+    const auto& D = e.control_points();
+    for (std::size_t k = 5; k + 5 < e.knots().size(); k += 2) EXPECT_EQ(e.knots()[k], e.knots()[k + 1]);
+    // Find the control of e associated with c_i: knots of c at integers 0.., c_i centred at i+2.
+    // e's control 2j+1 (odd) is centred between; locate by matching the formula, with index offset.
+    int matched = 0;
+    for (Eigen::Index j = 1; j + 1 < D.rows(); ++j)
+        for (Eigen::Index i = 1; i + 1 < C.rows(); ++i)
+            if ((D.row(j) - (C.row(i - 1) + 10 * C.row(i) + C.row(i + 1)) / 12.0).norm() < 1e-12 &&
+                (D.row(j + 1) - (C.row(i) + C.row(i + 1)) / 2.0).norm() < 1e-12)
+                ++matched;
+    EXPECT_GE(matched, 6);
+}
+
+TEST(BSpline, BezierSegmentsReproduceTheCurve) {
+    const BSplineCurve c = random_curve(4, 9, 6, false);
+    const auto segs = bezier_segments(c);
+    EXPECT_EQ(segs.size(), c.breakpoints().size() - 1);
+    for (const auto& s : segs) {
+        EXPECT_LT(analysis::max_distance_same_parameter(c, s, s.t_min(), s.t_max(), 33), 1e-12);
+        EXPECT_LT((s.jet(s.t_max(), 2) - c.jet(s.t_max() - 1e-15, 2)).norm(), 1e-8);
+    }
+}
+
+TEST(BSpline, SingleBasisFunctionMatchesCurveBasis) {
+    // Uniform cubic B-spline at its centre: 2/3; at ±1 from the centre: 1/6.
+    const std::vector<double> k{0, 1, 2, 3, 4};
+    EXPECT_NEAR(bspline_basis(3, k, 2.0), 2.0 / 3.0, 1e-15);
+    EXPECT_NEAR(bspline_basis(3, k, 1.0), 1.0 / 6.0, 1e-15);
+    EXPECT_EQ(bspline_basis(3, k, -0.1), 0.0);
+    EXPECT_EQ(bspline_basis(3, k, 4.0), 0.0);
+    EXPECT_NEAR(bspline_basis(3, k, 2.0, 1), 0.0, 1e-15);
+    EXPECT_NEAR(bspline_basis(3, k, 1.0, 1), 0.5, 1e-14);
+}
+
+TEST(BSpline, RejectsBadInput) {
+    Eigen::MatrixXd c = Eigen::MatrixXd::Zero(4, 2);
+    EXPECT_THROW(BSplineCurve(3, {0, 1, 2, 3, 4, 5, 6}, c), InvalidInput);      // too few knots
+    EXPECT_THROW(BSplineCurve(3, {0, 1, 2, 3, 5, 4, 6, 7}, c), InvalidInput);   // decreasing
+    EXPECT_THROW(BSplineCurve(3, {0, 0, 0, 0, 0, 1, 1, 1}, c), InvalidInput);   // multiplicity 5
+    c(1, 0) = NAN;
+    EXPECT_THROW(BSplineCurve(3, {0, 1, 2, 3, 4, 5, 6, 7}, c), InvalidInput);
+    const BSplineCurve ok = random_curve(3, 5, 7, true);
+    EXPECT_THROW(ok.jet(ok.t_max() + 0.1, 0), InvalidInput);
+    EXPECT_THROW(BezierCurve(Eigen::MatrixXd::Zero(3, 2), 1.0, 1.0), InvalidInput);
+}

@@ -1,0 +1,87 @@
+// Romberg and Gauss–Legendre against Boost.Math (gauss_kronrod, tanh_sinh, gauss<>) on
+// integrands with known values.
+#include <gtest/gtest.h>
+
+#include <boost/math/quadrature/gauss.hpp>
+#include <boost/math/quadrature/gauss_kronrod.hpp>
+#include <boost/math/quadrature/tanh_sinh.hpp>
+#include <cmath>
+
+#include "core/errors.hpp"
+#include "numeric/gauss_legendre.hpp"
+#include "numeric/romberg.hpp"
+
+using cagd::numeric::GaussLegendreRule;
+using cagd::numeric::romberg;
+
+TEST(Romberg, MatchesKnownValuesAndBoost) {
+    const auto f = [](double x) { return std::exp(x) * std::cos(3 * x); };
+    const double exact = (std::exp(1.0) * (std::cos(3.0) + 3 * std::sin(3.0)) - 1.0) / 10.0;
+    const auto r = romberg(f, 0.0, 1.0, 1e-13);
+    ASSERT_TRUE(r.outcome.ok()) << r.outcome.message;
+    EXPECT_NEAR(r.value, exact, 1e-13 * std::abs(exact));
+    double gk_err = 0.0;
+    const double gk = boost::math::quadrature::gauss_kronrod<double, 31>::integrate(f, 0.0, 1.0, 15, 1e-14, &gk_err);
+    EXPECT_NEAR(r.value, gk, 2e-14);
+    boost::math::quadrature::tanh_sinh<double> ts;
+    EXPECT_NEAR(r.value, ts.integrate(f, 0.0, 1.0), 2e-14);
+}
+
+TEST(Romberg, ErrorEstimateBoundsActualErrorOnSmoothIntegrand) {
+    const auto f = [](double x) { return 1.0 / (1.0 + x * x); };
+    const auto r = romberg(f, 0.0, 1.0, 1e-8);
+    ASSERT_TRUE(r.outcome.ok());
+    // The estimate |R(k,k) − R(k−1,k−1)| is an upper bound of the error of R(k,k) here.
+    EXPECT_LE(std::abs(r.value - M_PI / 4), r.error_estimate + 1e-16);
+    EXPECT_LE(r.error_estimate, 1e-8);
+}
+
+TEST(Romberg, ReportsNoConvergenceAsStatusNotException) {
+    // sqrt has an unbounded derivative at 0: Romberg converges only algebraically.
+    const auto r = romberg([](double x) { return std::sqrt(x); }, 0.0, 1.0, 1e-15, 0.0, 6);
+    EXPECT_EQ(r.outcome.status, cagd::Status::no_convergence);
+    EXPECT_NE(r.outcome.message.find("no convergence"), std::string::npos);
+}
+
+TEST(Romberg, RejectsBadArguments) {
+    const auto f = [](double x) { return x; };
+    EXPECT_THROW(romberg(f, 0.0, INFINITY), cagd::InvalidInput);
+    EXPECT_THROW(romberg(f, 0.0, 1.0, 0.0), cagd::InvalidInput);
+    EXPECT_THROW(romberg(f, 0.0, 1.0, 1e-10, 0.0, 1), cagd::InvalidInput);
+}
+
+TEST(GaussLegendre, ExactForPolynomialsOfDegree2nMinus1) {
+    for (int n = 1; n <= 12; ++n) {
+        const GaussLegendreRule rule(n);
+        const int deg = 2 * n - 1;
+        // ∫_{-0.5}^{2} x^deg dx
+        const double exact = (std::pow(2.0, deg + 1) - std::pow(-0.5, deg + 1)) / (deg + 1);
+        EXPECT_NEAR(rule.integrate([&](double x) { return std::pow(x, deg); }, -0.5, 2.0), exact,
+                    1e-13 * std::max(1.0, std::abs(exact)))
+            << "n = " << n;
+        // and not exact for degree 2n (the rule's order is sharp)
+        const double exact2 = (std::pow(2.0, deg + 2) - std::pow(-0.5, deg + 2)) / (deg + 2);
+        EXPECT_GT(std::abs(rule.integrate([&](double x) { return std::pow(x, deg + 1); }, -0.5, 2.0) - exact2), 1e-10);
+    }
+}
+
+TEST(GaussLegendre, NodesAndWeightsMatchBoost) {
+    const GaussLegendreRule rule(7);
+    const auto& xs = boost::math::quadrature::gauss<double, 7>::abscissa();   // x ≥ 0 half
+    const auto& ws = boost::math::quadrature::gauss<double, 7>::weights();
+    for (std::size_t k = 0; k < xs.size(); ++k) {
+        EXPECT_NEAR(rule.nodes()[3 + k], xs[k], 2e-16);
+        EXPECT_NEAR(rule.weights()[3 + k], ws[k], 4e-16);
+    }
+}
+
+TEST(GaussLegendre, AgreesWithGaussKronrodOnAnalyticIntegrand) {
+    const auto f = [](double x) { return std::log(2.0 + std::sin(5 * x)); };
+    const double gk = boost::math::quadrature::gauss_kronrod<double, 61>::integrate(f, 0.0, 2.0, 20, 1e-15);
+        boost::math::quadrature::tanh_sinh<double> ts;
+    EXPECT_NEAR(gk, ts.integrate(f, 0.0, 2.0), 1e-14);
+    // Singularities at distance asinh(2)/5 from the real axis: convergence like ρ^{-2n}.
+    EXPECT_NEAR(GaussLegendreRule(100).integrate(f, 0.0, 2.0), gk, 1e-14);
+    EXPECT_GT(std::abs(GaussLegendreRule(20).integrate(f, 0.0, 2.0) - gk), 1e-9);
+    EXPECT_THROW(GaussLegendreRule(0), cagd::InvalidInput);
+}

@@ -1,0 +1,73 @@
+// The harness: status classification, reference loading, number formatting.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "core/errors.hpp"
+#include "repro/artifact_run.hpp"
+#include "repro/csv.hpp"
+#include "repro/reference.hpp"
+
+using namespace cagd::repro;
+
+TEST(Repro, ClassifiesReproducedDeviatesFailed) {
+    ReferenceRow r;
+    r.paper_value = 1.0;
+    r.tolerance = 0.01;
+    EXPECT_EQ(classify(r, 1.005, std::nullopt, false), ClaimStatus::reproduced);
+    EXPECT_EQ(classify(r, 1.02, std::nullopt, false), ClaimStatus::failed);
+    r.erratum = "E1";
+    EXPECT_EQ(classify(r, 1.02, std::nullopt, false), ClaimStatus::failed) << "erratum must be documented";
+    EXPECT_EQ(classify(r, 1.02, std::nullopt, true), ClaimStatus::failed) << "needs a corrected check";
+    EXPECT_EQ(classify(r, 1.02, 1.001, true), ClaimStatus::deviates);
+    EXPECT_EQ(classify(r, 1.02, 1.5, true), ClaimStatus::failed) << "corrected statement must hold";
+    r.corrected_value = 1.02;
+    EXPECT_EQ(classify(r, 1.021, std::nullopt, true), ClaimStatus::deviates);
+    EXPECT_EQ(classify(r, 1.2, std::nullopt, true), ClaimStatus::failed);
+    EXPECT_EQ(classify(r, std::nan(""), std::nullopt, true), ClaimStatus::failed);
+}
+
+TEST(Repro, LoadsReferenceWithProvenanceAndFractions) {
+    const auto path = std::filesystem::temp_directory_path() / "cagd_ref_test.csv";
+    std::ofstream(path) << "# source: eq (18)\nid,paper_value,tolerance,tolerance_reason,description\n"
+                           "p.a,56/41,1e-9,exact fraction,\"weight, rationalised\"\n";
+    const Reference ref = load_reference(path.string());
+    ASSERT_EQ(ref.rows.size(), 1u);
+    EXPECT_NEAR(ref.rows[0].paper_value, 56.0 / 41.0, 1e-16);
+    EXPECT_EQ(ref.rows[0].paper_text, "56/41");
+    EXPECT_EQ(ref.rows[0].description, "weight, rationalised");
+    EXPECT_EQ(ref.provenance.at(0), "source: eq (18)");
+}
+
+TEST(Repro, RejectsMalformedReferenceFiles) {
+    const auto path = std::filesystem::temp_directory_path() / "cagd_ref_bad.csv";
+    std::ofstream(path) << "id,paper_value,tolerance,tolerance_reason\np.a,1,0.1,x\n";
+    EXPECT_THROW(load_reference(path.string()), cagd::InvalidInput) << "no provenance";
+    std::ofstream(path) << "# s\nid,paper_value,tolerance,tolerance_reason\np.a,one,0.1,x\n";
+    EXPECT_THROW(load_reference(path.string()), cagd::InvalidInput) << "unparsable number";
+    std::ofstream(path) << "# s\nid,paper_value,tolerance,tolerance_reason\np.a,1,0.1,x\np.a,1,0.1,x\n";
+    EXPECT_THROW(load_reference(path.string()), cagd::InvalidInput) << "duplicate id";
+    std::ofstream(path) << "# s\nid,paper_value,tolerance\np.a,1,0.1\n";
+    EXPECT_THROW(load_reference(path.string()), cagd::InvalidInput) << "no tolerance reason";
+}
+
+TEST(Repro, EveryReferenceFileOfTheRepositoryLoads) {
+    int files = 0;
+    for (const auto& e : std::filesystem::recursive_directory_iterator(std::string(CAGD_SOURCE_DIR) + "/reference"))
+        if (e.path().extension() == ".csv") {
+            EXPECT_NO_THROW(load_reference(e.path().string())) << e.path();
+            ++files;
+        }
+    EXPECT_GT(files, 0);
+    EXPECT_FALSE(load_erratum_ids(std::string(CAGD_SOURCE_DIR) + "/reference/ERRATA.md").empty());
+}
+
+TEST(Repro, NumberFormattingIsStable) {
+    EXPECT_EQ(format_number(-0.0), "0");
+    EXPECT_EQ(format_number(1.0 / 3.0), "0.3333333333");
+    EXPECT_EQ(format_number(1e-20), "1e-20");
+    EXPECT_EQ(csv_field("a,b"), "\"a,b\"");
+    EXPECT_EQ(split_csv_line("a,\"b,c\",d").size(), 3u);
+}
