@@ -85,3 +85,18 @@ TEST(GaussLegendre, AgreesWithGaussKronrodOnAnalyticIntegrand) {
     EXPECT_GT(std::abs(GaussLegendreRule(20).integrate(f, 0.0, 2.0) - gk), 1e-9);
     EXPECT_THROW(GaussLegendreRule(0), cagd::InvalidInput);
 }
+
+#include "numeric/rational.hpp"
+
+TEST(Rational, SimplestFractionWithinTolerance) {
+    const auto f = cagd::numeric::simplest_fraction_within(M_PI, 0.002);
+    EXPECT_EQ(f.numerator, 22);
+    EXPECT_EQ(f.denominator, 7);
+    const auto g = cagd::numeric::simplest_fraction_within(M_PI, 1e-6);
+    EXPECT_EQ(g.numerator, 355);
+    EXPECT_EQ(g.denominator, 113);
+    const auto h = cagd::numeric::simplest_fraction_within(-0.366, 0.0005);
+    EXPECT_NEAR(h.value(), -0.366, 0.0005);
+    EXPECT_EQ(h.denominator, 41);
+    EXPECT_THROW(cagd::numeric::simplest_fraction_within(1.0, 0.0), cagd::InvalidInput);
+}
