@@ -2,7 +2,7 @@ load 'scripts/plot/style.gp'
 f = datadir.'/fig5.csv'
 pts = datadir.'/fig5_points.csv'
 set size ratio -1
-set key bottom center
+set key outside right top
 do for [t in "png svg"] {
   if (t eq "png") { set terminal pngcairo size 1200,900 enhanced font 'DejaVu Sans,10' } else { set terminal svg size 1200,900 enhanced font 'DejaVu Sans,10' }
   set output datadir.'/fig5.'.t

@@ -115,7 +115,7 @@ int write_report(const std::string& root) {
             return std::make_pair(x.section, x.name) < std::make_pair(y.section, y.name);
         });
         int n = 0, rep = 0, dev = 0, fail = 0, val = 0, val_ok = 0;
-        body << "\n## `" << paper << "` — " << title << "\n";
+        body << "\n<a id=\"" << paper << "\"></a>\n\n## `" << paper << "` — " << title << "\n";
         for (const auto& a : arts) {
             body << "\n### " << a.title << " (`" << a.name << "`)\n\n";
             body << "Paper: " << a.section << ". Reference: [`" << a.reference << "`](../" << a.reference
