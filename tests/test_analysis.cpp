@@ -40,3 +40,11 @@ TEST(Analysis, SingularPointIsAnError) {
     s << 0, 0, 0, 1, 1, 1;
     EXPECT_THROW(analysis::signed_curvature(BezierCurve(s), 0.5), InvalidInput);
 }
+
+TEST(Analysis, NormalOffsetIsSignedDistanceAlongLeftNormal) {
+    Eigen::MatrixXd a(2, 2), b(2, 2);
+    b << 0, 0, 1, 0;    // along +x: left normal is +y
+    a << 0, 0.5, 1, 0.5;
+    EXPECT_NEAR(analysis::normal_offset(BezierCurve(a), BezierCurve(b), 0.3), 0.5, 1e-15);
+    EXPECT_NEAR(analysis::normal_offset(BezierCurve(b), BezierCurve(a), 0.3), -0.5, 1e-15);
+}

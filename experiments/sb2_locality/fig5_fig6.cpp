@@ -11,6 +11,34 @@
 using namespace cagd;
 using namespace cagd::locality;
 
+namespace {
+struct CurvePairs {
+    std::vector<BSplineCurve> s, b2;   // m = 0..3
+};
+CurvePairs build(const PointList& p) {
+    CurvePairs c;
+    for (int m = 0; m <= 3; ++m) {
+        Options o;
+        o.m = {{m, m}};
+        o.form = SplineForm::s_spline;
+        c.s.push_back(interpolate(p, o).curve);
+        o.form = SplineForm::b2_spline;
+        c.b2.push_back(interpolate(p, o).curve);
+    }
+    return c;
+}
+// Sign of curvature if the S-spline (m = 3) is convex over the whole span, else 0.
+double convex_sign(const CurvePairs& c, int span) {
+    const double k = analysis::signed_curvature(c.s[3], span + 0.5);
+    if (analysis::signed_curvature(c.s[3], span + 0.05) * k <= 0 || analysis::signed_curvature(c.s[3], span + 0.95) * k <= 0) return 0.0;
+    return k > 0 ? 1.0 : -1.0;
+}
+// Offset of S outward from B2 at the span middle (outward = away from the centre of curvature).
+double outward_offset(const CurvePairs& c, int m, int span, double kappa_sign) {
+    return -kappa_sign * analysis::normal_offset(c.s[m], c.b2[m], span + 0.5);
+}
+}  // namespace
+
 int main(int argc, char** argv) {
     repro::ArtifactRun run("sb2_locality", "fig5_fig6", "4", "S vs B2 interpolants for m = 0..3 (Figs. 5, 6)", argc, argv);
     PointList p(11, 2);
@@ -21,15 +49,9 @@ int main(int argc, char** argv) {
         auto pts = run.table("fig5_points.csv", {"x", "y"});
         for (int i = 0; i < 11; ++i) pts.row({p(i, 0), p(i, 1)});
     }
-    std::vector<BSplineCurve> S, B;
-    for (int m = 0; m <= 3; ++m) {
-        Options o;
-        o.m = {{m, m}};
-        o.form = SplineForm::s_spline;
-        S.push_back(interpolate(p, o).curve);
-        o.form = SplineForm::b2_spline;
-        B.push_back(interpolate(p, o).curve);
-    }
+    const CurvePairs curves = build(p);
+    const auto& S = curves.s;
+    const auto& B = curves.b2;
     auto fig5 = run.table("fig5.csv", {"u", "s0x", "s0y", "b0x", "b0y", "s1x", "s1y", "b1x", "b1y", "s2x", "s2y", "b2x", "b2y",
                                        "s3x", "s3y", "b3x", "b3y"});
     for (int k = 0; k <= 10 * 32; ++k) {
@@ -66,18 +88,13 @@ int main(int argc, char** argv) {
     int steps = 0, changes = 0, all_steps = 0, all_changes = 0, best_span = 0;
     double best = 0;
     for (int span = 0; span < 10; ++span) {
-        const double u = span + 0.5;
-        const double k_a = analysis::signed_curvature(S[3], span + 0.05), k_b = analysis::signed_curvature(S[3], span + 0.95),
-                     k = analysis::signed_curvature(S[3], u);
-        if (k_a * k <= 0 || k_b * k <= 0) continue;   // not convex throughout
+        const double k = convex_sign(curves, span);
+        if (k == 0.0) continue;   // not convex throughout
         const bool condition = same_side(span);
-        std::vector<double> row{double(span), k > 0 ? 1.0 : -1.0, condition ? 1.0 : 0.0};
+        std::vector<double> row{double(span), k, condition ? 1.0 : 0.0};
         double prev = 0;
         for (int m = 0; m <= 3; ++m) {
-            const Eigen::MatrixXd J = B[m].jet(u, 1);
-            const Eigen::Vector2d tangent = J.row(1).transpose().normalized();
-            const Eigen::Vector2d outward = (k > 0 ? -1.0 : 1.0) * Eigen::Vector2d(-tangent(1), tangent(0));
-            const double offset = (S[m].point(u) - B[m].point(u)).dot(outward) / diag;
+            const double offset = outward_offset(curves, m, span, k) / diag;
             row.push_back(offset);
             if (m > 0) {
                 ++all_steps;
@@ -98,22 +115,13 @@ int main(int argc, char** argv) {
     for (int trial = 0; trial < 300; ++trial) {
         PointList q(11, 2);
         for (int i = 0; i < 11; ++i) q.row(i) << i + 0.3 * U(rng), 1.2 * U(rng);
-        std::vector<BSplineCurve> Sq, Bq;
-        for (int m = 0; m <= 3; ++m) {
-            Options o;
-            o.m = {{m, m}};
-            o.form = SplineForm::s_spline;
-            Sq.push_back(interpolate(q, o).curve);
-            o.form = SplineForm::b2_spline;
-            Bq.push_back(interpolate(q, o).curve);
-        }
+        const CurvePairs cq = build(q);
         for (int span = 3; span <= 6; ++span) {
-            const double u = span + 0.5, k = analysis::signed_curvature(Sq[3], u);
-            if (analysis::signed_curvature(Sq[3], span + 0.05) * k <= 0 || analysis::signed_curvature(Sq[3], span + 0.95) * k <= 0) continue;
+            const double k = convex_sign(cq, span);
+            if (k == 0.0) continue;
             double prev = 0;
             for (int m = 0; m <= 3; ++m) {
-                const Eigen::Vector2d t = Bq[m].jet(u, 1).row(1).transpose().normalized();
-                const double off = (Sq[m].point(u) - Bq[m].point(u)).dot((k > 0 ? -1.0 : 1.0) * Eigen::Vector2d(-t(1), t(0)));
+                const double off = outward_offset(cq, m, span, k);
                 if (m > 0) { ++random_steps; random_changes += off * prev < 0; }
                 prev = off;
             }

@@ -125,4 +125,15 @@ double max_distance_same_parameter(const Curve& a, const Curve& b, int samples_p
     return worst;
 }
 
+double normal_offset(const Curve& a, const Curve& b, double t) {
+    if (a.dimension() != 2 || b.dimension() != 2)
+        fail_input("cagd::analysis::normal_offset", "needs planar curves");
+    const Eigen::MatrixXd J = b.jet(t, 1);
+    const double speed_b = J.row(1).norm();
+    if (!(speed_b > 0.0))
+        fail_input("cagd::analysis::normal_offset", "b'(t) = 0 at t = " + full_precision(t));
+    const Eigen::Vector2d normal(-J(1, 1) / speed_b, J(1, 0) / speed_b);
+    return (a.point(t) - b.point(t)).dot(normal);
+}
+
 }  // namespace cagd::analysis

@@ -30,4 +30,8 @@ double max_distance_same_parameter(const Curve& a, const Curve& b, int samples_p
 double max_distance_same_parameter(const Curve& a, const Curve& b, double t0, double t1,
                                    int samples = 257);
 
+// Planar: (a(t) − b(t)) · n_b(t), n_b the unit left normal of b at t (positive = a lies to the
+// left of b). Precondition: b'(t) ≠ 0.
+double normal_offset(const Curve& a, const Curve& b, double t);
+
 }  // namespace cagd::analysis
