@@ -255,3 +255,20 @@ TEST(PointCsv, ErrorsNameTheLine) {
     EXPECT_NE(message("1,nan\n").find("not finite"), std::string::npos);
     EXPECT_NE(message("# only a comment\n").find("no points"), std::string::npos);
 }
+
+TEST(Locality, ExtendedPointsFollowSection33) {
+    const PointList p = random_points(5, 18);
+    Options o;   // natural: p_{−k} = 2p_0 − p_k, p_{n−1+k} = 2p_{n−1} − p_{n−1−k}
+    EXPECT_LT((extended_point(p, o, -2) - (2 * p.row(0) - p.row(2))).norm(), 1e-15);
+    EXPECT_LT((extended_point(p, o, 6) - (2 * p.row(4) - p.row(2))).norm(), 1e-15);
+    EXPECT_EQ((extended_point(p, o, 3) - p.row(3)).norm(), 0.0);
+    o.start.kind = EndKind::tangent;   // mirror ⟂ (1, 0) through p_0: x reflected, y kept
+    o.start.tangent = Eigen::Vector2d(1.0, 0.0);
+    const Eigen::RowVectorXd v = extended_point(p, o, -1);
+    EXPECT_NEAR(v(0), 2 * p(0, 0) - p(1, 0), 1e-15);
+    EXPECT_NEAR(v(1), p(1, 1), 1e-15);
+    o = Options{};
+    o.closed = true;
+    EXPECT_EQ((extended_point(p, o, -1) - p.row(4)).norm(), 0.0);
+    EXPECT_EQ((extended_point(p, o, 7) - p.row(2)).norm(), 0.0);
+}

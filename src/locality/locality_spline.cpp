@@ -65,6 +65,17 @@ Eigen::VectorXd unit_tangent(const EndCondition& end, const PointList& p, bool a
 }
 
 SegmentLocality swapped(SegmentLocality m) { return {m.right, m.left}; }
+
+// The virtual points of section 3.3 for these options (points already validated).
+ExtendedPoints make_extended_points(const PointList& points, const Options& o) {
+    Eigen::VectorXd ts, te;
+    bool ms = false, me = false;
+    if (!o.closed) {
+        if (o.start.kind != EndKind::natural) { ts = unit_tangent(o.start, points, true, "start"); ms = true; }
+        if (o.end.kind != EndKind::natural) { te = unit_tangent(o.end, points, false, "end"); me = true; }
+    }
+    return ExtendedPoints(points, o.closed, ts, te, ms, me);
+}
 }  // namespace
 
 double alpha() { return -2.0 + std::sqrt(3.0); }
@@ -209,13 +220,7 @@ LocalitySpline interpolate(const PointList& points, const Options& o) {
                              std::to_string(segments) + ")");
     for (const auto& m : o.m) require_locality(m, kWho);
 
-    Eigen::VectorXd ts, te;
-    bool ms = false, me = false;
-    if (!o.closed) {
-        if (o.start.kind != EndKind::natural) { ts = unit_tangent(o.start, points, true, "start"); ms = true; }
-        if (o.end.kind != EndKind::natural) { te = unit_tangent(o.end, points, false, "end"); me = true; }
-    }
-    const ExtendedPoints P(points, o.closed, ts, te, ms, me);
+    const ExtendedPoints P = make_extended_points(points, o);
     const auto m_of = [&](long seg) -> SegmentLocality {
         if (o.m.size() == 1) return o.m[0];
         if (o.closed) return o.m[static_cast<std::size_t>(((seg % n) + n) % n)];
@@ -251,26 +256,28 @@ LocalitySpline interpolate(const PointList& points, const Options& o) {
     // Controls d_j, j = −1 .. 2N−1 where N = number of interpolated nodes on the domain
     // (n open; n+1 closed: p_n = p_0). Odd j: extra points of segments −1 .. N−1.
     const long N = o.closed ? n + 1 : n;
-    LocalitySpline out{BSplineCurve(0, {0.0, 1.0}, Eigen::MatrixXd::Zero(1, 1)),
-                       Eigen::MatrixXd(N + 1, points.cols()), -1};
-    for (long i = -1; i <= N - 1; ++i) out.extra_points.row(i + 1) = extra_point(i);
+    Eigen::MatrixXd extra(N + 1, points.cols());
+    for (long i = -1; i <= N - 1; ++i) extra.row(i + 1) = extra_point(i);
     const KnotRelation rel = knot_relation(o.form);
     Eigen::MatrixXd control(2 * N + 1, points.cols());
-    for (long i = 0; i <= N; ++i) control.row(2 * i) = out.extra_points.row(i);   // d_{2i−1}
+    for (long i = 0; i <= N; ++i) control.row(2 * i) = extra.row(i);   // d_{2i−1}
     for (long i = 0; i < N; ++i)   // eq (3) / (7)
-        control.row(2 * i + 1) =
-            (P(i) - rel.side * (out.extra_points.row(i) + out.extra_points.row(i + 1))) / rel.centre;
+        control.row(2 * i + 1) = (P(i) - rel.side * (extra.row(i) + extra.row(i + 1))) / rel.centre;
     std::vector<double> knots;
-    if (o.form == SplineForm::b2_spline) {
+    if (o.form == SplineForm::b2_spline) {   // u_j = j/2: cubic, knots spaced 1/2
         for (long k = 0; k < 2 * N + 5; ++k) knots.push_back(-1.5 + 0.5 * static_cast<double>(k));
-        out.curve = BSplineCurve(3, knots, control);
-    } else {
+    } else {                                 // quartic, every integer knot double
         knots.push_back(-2.0);
         for (long k = -1; k <= N; ++k) { knots.push_back(double(k)); knots.push_back(double(k)); }
         knots.push_back(double(N + 1));
-        out.curve = BSplineCurve(4, knots, control);
     }
-    return out;
+    const int degree = o.form == SplineForm::b2_spline ? 3 : 4;
+    return {BSplineCurve(degree, knots, control), extra, -1};
+}
+
+Eigen::RowVectorXd extended_point(const PointList& points, const Options& o, long k) {
+    require_valid_points(points, o.closed ? 3 : 2, true, o.closed, "cagd::locality::extended_point");
+    return make_extended_points(points, o)(k);
 }
 
 BSplineCurve interpolating_blending_function(SplineForm form, int m) {

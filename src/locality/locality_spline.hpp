@@ -103,6 +103,10 @@ std::string format_m_vector(const MVector& m);
 // The interpolating curve (the whole construction: virtual points, eq (12), eq (3)/(7)).
 LocalitySpline interpolate(const PointList& points, const Options& options);
 
+// p_k for any integer k: the data point for 0 ≤ k ≤ n−1, otherwise the virtual point of
+// section 3.3 given by the options' end conditions (index modulo n for closed curves).
+Eigen::RowVectorXd extended_point(const PointList& points, const Options& options, long k);
+
 // Basis functions of section 2 at u (derivative order k): e (B2 cubic, knots spaced ½,
 // support [−1, 1]), ê and f̂ (quartic, double knots, supports [−1, 1] and [−1, 2]).
 double basis_e(double u, int k = 0);

@@ -181,7 +181,6 @@ BSplineCurve insert_knot(const BSplineCurve& c, double t) {
 BSplineCurve elevate_degree(const BSplineCurve& c) {
     const int p = c.degree(), q = p + 1;
     const auto& U = c.knots();
-    const int n = static_cast<int>(c.control_points().rows());
     // Every knot with multiplicity +1, then trimmed so that the domain is unchanged:
     // new knot q (0-based) is the last copy of t_p, new knot n' is the first copy of t_n.
     std::vector<double> L;
@@ -198,7 +197,6 @@ BSplineCurve elevate_degree(const BSplineCurve& c) {
              L.begin() + std::min<int>(static_cast<int>(L.size()), first_b + q + 1));
     while (static_cast<int>(V.size()) < (first_b - (last_a - q)) + q + 1) V.push_back(L.back());
     const int n_new = static_cast<int>(V.size()) - q - 1;
-    (void)n;
     // Least squares on q+1 Chebyshev samples per span: exact since r ∈ new space.
     const std::vector<double> br = c.breakpoints();
     const int samples = q + 1;
