@@ -23,7 +23,7 @@ int main(int argc, char** argv) {
     run.note("Data: 61 points p_i = (i + 0.3 sin 0.9i, sin 0.45i + 0.4 cos 1.3i); distances relative to the diagonal " +
              repro::format_number(diag, 6) + ".");
     const BSplineCurve open_ref = cubic_bspline_interpolant(p, false), closed_ref = cubic_bspline_interpolant(p, true);
-    auto tab = run.table("convergence.csv", {"m", "s_open", "b2_open", "s_closed", "b2_closed", "alpha_reference"});
+    auto tab = run.table("fig_convergence.csv", {"m", "s_open", "b2_open", "s_closed", "b2_closed", "alpha_reference"});
     bool monotone = true;
     double prev_s = INFINITY, prev_b2 = INFINITY;
     const auto distance = [&](SplineForm f, int m, bool closed) {

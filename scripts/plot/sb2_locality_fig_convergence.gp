@@ -1,5 +1,5 @@
 load 'scripts/plot/style.gp'
-f = datadir.'/convergence.csv'
+f = datadir.'/fig_convergence.csv'
 set title 'Distance to the conventional cubic B-spline interpolant (eq 10) against m'
 set xlabel 'm'
 set ylabel 'max distance / bounding-box diagonal'
