@@ -9,7 +9,11 @@
 // Accuracy: O(h^{2k+2}) for integrands smooth on [a, b]; integrate piecewise smooth
 // functions piece by piece. Cost: 2^max_levels + 1 evaluations at most.
 // Not converging within max_levels is an Outcome, not an exception.
+#include <array>
+#include <cmath>
 #include <functional>
+#include <string>
+#include <vector>
 
 #include "core/errors.hpp"
 
@@ -26,5 +30,82 @@ struct RombergResult {
 // Preconditions: a, b finite; rel_tol > 0; abs_tol ≥ 0; 2 ≤ max_levels ≤ 30.
 RombergResult romberg(const std::function<double(double)>& f, double a, double b,
                       double rel_tol = 1e-12, double abs_tol = 0.0, int max_levels = 24);
+
+// The same scheme for N integrals sharing one integrand evaluation, f(t) → std::array<double, N>:
+// converged when every component meets the test above at two consecutive levels, with the
+// relative test taken against the trapezoid sum of |f_c| (QUADPACK's "resabs"), so that an
+// integral that cancels to ~0 — a gradient component at a minimum — still converges.
+template <std::size_t N>
+struct RombergVectorResult {
+    std::array<double, N> value{}, error_estimate{};
+    int levels = 0;
+    long evaluations = 0;
+    Outcome outcome;
+};
+
+template <std::size_t N, class F>
+RombergVectorResult<N> romberg_vector(const F& f, double a, double b, double rel_tol = 1e-12,
+                                      double abs_tol = 0.0, int max_levels = 24) {
+    using Row = std::vector<std::array<double, N>>;
+    const std::string who = "cagd::numeric::romberg_vector";
+    if (!std::isfinite(a) || !std::isfinite(b))
+        fail_input(who, "interval [" + full_precision(a) + ", " + full_precision(b) + "] must be finite");
+    if (!(rel_tol > 0.0)) fail_input(who, "rel_tol must be > 0, got " + full_precision(rel_tol));
+    if (!(abs_tol >= 0.0)) fail_input(who, "abs_tol must be >= 0, got " + full_precision(abs_tol));
+    if (max_levels < 2 || max_levels > 30)
+        fail_input(who, "max_levels must be in [2, 30], got " + std::to_string(max_levels));
+    RombergVectorResult<N> r;
+    const double h0 = b - a;
+    const std::array<double, N> fa = f(a), fb = f(b);
+    Row prev(1), cur;
+    std::array<double, N> abs_trap{};
+    for (std::size_t c = 0; c < N; ++c) {
+        prev[0][c] = 0.5 * h0 * (fa[c] + fb[c]);
+        abs_trap[c] = 0.5 * h0 * (std::abs(fa[c]) + std::abs(fb[c]));
+    }
+    r.evaluations = 2;
+    int small_in_a_row = 0;
+    for (int k = 1; k <= max_levels; ++k) {
+        const long n_new = 1L << (k - 1);
+        const double h = h0 / static_cast<double>(1L << k);
+        std::array<double, N> sum{}, abs_sum{};
+        for (long i = 0; i < n_new; ++i) {
+            const std::array<double, N> v = f(a + static_cast<double>(2 * i + 1) * h);
+            for (std::size_t c = 0; c < N; ++c) {
+                sum[c] += v[c];
+                abs_sum[c] += std::abs(v[c]);
+            }
+        }
+        r.evaluations += n_new;
+        cur.assign(static_cast<std::size_t>(k + 1), std::array<double, N>{});
+        for (std::size_t c = 0; c < N; ++c) {
+            cur[0][c] = 0.5 * prev[0][c] + h * sum[c];
+            abs_trap[c] = 0.5 * abs_trap[c] + h * abs_sum[c];
+        }
+        double factor = 1.0;
+        for (int j = 1; j <= k; ++j) {
+            factor *= 4.0;
+            for (std::size_t c = 0; c < N; ++c)
+                cur[j][c] = cur[j - 1][c] + (cur[j - 1][c] - prev[j - 1][c]) / (factor - 1.0);
+        }
+        bool small = true;
+        for (std::size_t c = 0; c < N; ++c) {
+            r.value[c] = cur[k][c];
+            r.error_estimate[c] = std::abs(cur[k][c] - prev[k - 1][c]);
+            if (!std::isfinite(r.value[c])) {
+                r.levels = k;
+                r.outcome = {Status::no_convergence, who + ": integrand produced a non-finite value at level " + std::to_string(k)};
+                return r;
+            }
+            small = small && r.error_estimate[c] <= std::max(rel_tol * std::max(std::abs(r.value[c]), abs_trap[c]), abs_tol);
+        }
+        r.levels = k;
+        small_in_a_row = small ? small_in_a_row + 1 : 0;
+        if (small_in_a_row >= 2 && k >= 4) return r;
+        prev.swap(cur);
+    }
+    r.outcome = {Status::no_convergence, who + ": no convergence after " + std::to_string(max_levels) + " levels"};
+    return r;
+}
 
 }  // namespace cagd::numeric

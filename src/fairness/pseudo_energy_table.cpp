@@ -1,0 +1,294 @@
+#include "fairness/pseudo_energy_table.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+namespace cagd::fairness {
+
+namespace {
+
+constexpr int kCacheFormat = 1;
+
+void require_angle(const char* who, double theta, const char* name) {
+    if (!std::isfinite(theta) || std::abs(theta) > M_PI + 1e-12)
+        fail_input(who, std::string(name) + " must be a finite angle in [-pi, pi] (radians), got " + full_precision(theta));
+}
+
+// Index i and weight u ∈ [0, 1) of θ in the periodically extended node list: θ lies between
+// node i and node (i + 1) mod n (adding 2π to the latter when it wraps).
+void locate(const std::vector<double>& nodes, double theta, int& i, double& u) {
+    const int n = static_cast<int>(nodes.size());
+    if (theta < nodes.front()) theta += 2 * M_PI;
+    const auto it = std::upper_bound(nodes.begin(), nodes.end(), theta);
+    i = static_cast<int>(it - nodes.begin()) - 1;
+    const double left = nodes[static_cast<std::size_t>(i)];
+    const double right = i + 1 < n ? nodes[static_cast<std::size_t>(i + 1)] : nodes.front() + 2 * M_PI;
+    u = right > left ? (theta - left) / (right - left) : 0.0;
+    u = std::clamp(u, 0.0, 1.0);
+}
+
+// Parallel loop over [0, count) with `threads` workers taking indices by striding (deterministic).
+template <class F>
+void parallel_for(long count, int threads, const F& body, const std::function<void(long, long)>& progress) {
+    std::atomic<long> done{0};
+    const auto worker = [&](int w) {
+        for (long k = w; k < count; k += threads) {
+            body(k);
+            const long d = ++done;
+            if (progress && (d % 256 == 0 || d == count)) progress(d, count);
+        }
+    };
+    std::vector<std::thread> pool;
+    for (int w = 1; w < threads; ++w) pool.emplace_back(worker, w);
+    worker(0);
+    for (std::thread& t : pool) t.join();
+}
+
+}  // namespace
+
+const char* to_string(NodePlacement p) {
+    switch (p) {
+        case NodePlacement::periodic: return "periodic";
+        case NodePlacement::endpoints: return "endpoints";
+        default: return "midpoints";
+    }
+}
+
+NodePlacement parse_node_placement(const std::string& text) {
+    if (text == "periodic") return NodePlacement::periodic;
+    if (text == "endpoints") return NodePlacement::endpoints;
+    if (text == "midpoints") return NodePlacement::midpoints;
+    fail_input("cagd::fairness::parse_node_placement", "placement must be periodic, endpoints or midpoints, got '" + text + "'");
+}
+
+const char* to_string(TableMethod m) { return m == TableMethod::fast ? "fast" : "reference"; }
+
+std::vector<double> AngleGrid::nodes() const {
+    if (n < 2) fail_input("cagd::fairness::AngleGrid", "n must be >= 2, got " + std::to_string(n));
+    std::vector<double> out(static_cast<std::size_t>(n));
+    for (int k = 0; k < n; ++k) {
+        double f = 0.0;   // fraction of the way from −π to π
+        switch (placement) {
+            case NodePlacement::periodic: f = 2.0 * k / n; break;
+            case NodePlacement::endpoints: f = 2.0 * k / (n - 1); break;
+            case NodePlacement::midpoints: f = (2.0 * k + 1.0) / n; break;
+        }
+        // π·(f − 1) is exactly 0 when f = 1 and exactly ∓π at the ends.
+        out[static_cast<std::size_t>(k)] = M_PI * (f - 1.0);
+    }
+    return out;
+}
+
+PseudoEnergyTable PseudoEnergyTable::build(const AngleGrid& grid, TableMethod method, int threads, bool use_symmetry,
+                                           const std::function<void(long, long)>& progress) {
+    if (threads < 1) fail_input("cagd::fairness::PseudoEnergyTable::build", "threads must be >= 1, got " + std::to_string(threads));
+    PseudoEnergyTable t;
+    t.grid_ = grid;
+    t.method_ = method;
+    t.nodes_ = grid.nodes();
+    const int n = grid.n;
+    t.values_.assign(static_cast<std::size_t>(n * n), PseudoEnergyMinimum{});
+    // Index of the node at −θ (the placements are symmetric about 0; ±π map to themselves).
+    std::vector<int> negate(static_cast<std::size_t>(n));
+    for (int k = 0; k < n; ++k) {
+        const double target = -t.nodes_[static_cast<std::size_t>(k)];
+        int best = 0;
+        for (int m = 0; m < n; ++m)
+            if (std::abs(std::remainder(t.nodes_[static_cast<std::size_t>(m)] - target, 2 * M_PI)) <
+                std::abs(std::remainder(t.nodes_[static_cast<std::size_t>(best)] - target, 2 * M_PI)))
+                best = m;
+        negate[static_cast<std::size_t>(k)] = best;
+    }
+    // The orbit representative of (i, j): the smallest linear index among its images.
+    const auto representative = [&](int i, int j) {
+        const int ni = negate[static_cast<std::size_t>(i)], nj = negate[static_cast<std::size_t>(j)];
+        return std::min({i * n + j, j * n + i, ni * n + nj, nj * n + ni});
+    };
+    std::vector<long> todo;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j)
+            if (!use_symmetry || representative(i, j) == i * n + j) todo.push_back(i * n + j);
+    parallel_for(
+        static_cast<long>(todo.size()), threads,
+        [&](long k) {
+            const long idx = todo[static_cast<std::size_t>(k)];
+            const double a = t.nodes_[static_cast<std::size_t>(idx / n)], b = t.nodes_[static_cast<std::size_t>(idx % n)];
+            t.values_[static_cast<std::size_t>(idx)] =
+                method == TableMethod::fast ? minimize_pseudo_energy(a, b) : minimize_pseudo_energy_reference(a, b);
+        },
+        progress);
+    if (use_symmetry) {
+        for (int i = 0; i < n; ++i)
+            for (int j = 0; j < n; ++j) {
+                const int rep = representative(i, j);
+                if (rep == i * n + j) continue;
+                const PseudoEnergyMinimum& src = t.values_[static_cast<std::size_t>(rep)];
+                PseudoEnergyMinimum m = src;
+                const int ri = rep / n, rj = rep % n;
+                const int ni = negate[static_cast<std::size_t>(i)], nj = negate[static_cast<std::size_t>(j)];
+                m.theta0 = t.nodes_[static_cast<std::size_t>(i)];
+                m.theta1 = t.nodes_[static_cast<std::size_t>(j)];
+                bool swapped = false, negated = false;
+                if (ri == j && rj == i) swapped = true;
+                else if (ri == ni && rj == nj) negated = true;
+                else swapped = negated = true;   // (−θ1, −θ0)
+                if (swapped) {
+                    std::swap(m.r0, m.r1);
+                    std::swap(m.runner_up_r0, m.runner_up_r1);
+                }
+                if (swapped != negated) m.area = -m.area;
+                t.values_[static_cast<std::size_t>(i * n + j)] = m;
+            }
+    }
+    return t;
+}
+
+std::string PseudoEnergyTable::header_line() const {
+    std::ostringstream s;
+    s << "# cagd pseudo_energy table format " << kCacheFormat << " grid " << grid_.n << " placement "
+      << to_string(grid_.placement) << " method " << to_string(method_);
+    return s.str();
+}
+
+void PseudoEnergyTable::save(const std::string& path) const {
+    const std::string tmp = path + ".tmp";
+    {
+        std::ofstream out(tmp);
+        if (!out) fail_input("cagd::fairness::PseudoEnergyTable::save", "cannot write '" + tmp + "'");
+        out << header_line() << "\n";
+        out << "i,j,theta0,theta1,J,r0,r1,L,S,E,type,local_minima,runner_up,status\n";
+        char buf[512];
+        const int n = grid_.n;
+        for (int i = 0; i < n; ++i)
+            for (int j = 0; j < n; ++j) {
+                const PseudoEnergyMinimum& m = node(i, j);
+                std::snprintf(buf, sizeof buf, "%d,%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%s,%d,%.17g,%d\n", i, j,
+                              m.theta0, m.theta1, m.pseudo_energy, m.r0, m.r1, m.length, m.area, m.strain_energy,
+                              to_string(m.type), m.local_minima, m.runner_up, static_cast<int>(m.outcome.status));
+                out << buf;
+            }
+    }
+    std::rename(tmp.c_str(), path.c_str());
+}
+
+PseudoEnergyTable PseudoEnergyTable::load_or_build(const std::string& path, const AngleGrid& grid, TableMethod method,
+                                                   int threads) {
+    PseudoEnergyTable t;
+    t.grid_ = grid;
+    t.method_ = method;
+    t.nodes_ = grid.nodes();
+    std::ifstream in(path);
+    std::string line;
+    if (in && std::getline(in, line) && line == t.header_line() && std::getline(in, line)) {
+        const int n = grid.n;
+        t.values_.assign(static_cast<std::size_t>(n * n), PseudoEnergyMinimum{});
+        long read = 0;
+        while (std::getline(in, line)) {
+            std::istringstream s(line);
+            std::string f[14];
+            for (auto& x : f) std::getline(s, x, ',');
+            const int i = std::stoi(f[0]), j = std::stoi(f[1]);
+            if (i < 0 || j < 0 || i >= n || j >= n) break;
+            PseudoEnergyMinimum& m = t.values_[static_cast<std::size_t>(i * n + j)];
+            m.theta0 = std::stod(f[2]);
+            m.theta1 = std::stod(f[3]);
+            m.pseudo_energy = std::stod(f[4]);
+            m.r0 = std::stod(f[5]);
+            m.r1 = std::stod(f[6]);
+            m.length = std::stod(f[7]);
+            m.area = std::stod(f[8]);
+            m.strain_energy = std::stod(f[9]);
+            m.type = f[10] == "c" ? SegmentType::c : f[10] == "s" ? SegmentType::s : SegmentType::x;
+            m.local_minima = std::stoi(f[11]);
+            m.runner_up = std::stod(f[12]);
+            m.outcome.status = static_cast<Status>(std::stoi(f[13]));
+            ++read;
+        }
+        if (read == static_cast<long>(n) * n) return t;
+    }
+    t = build(grid, method, threads, method == TableMethod::fast);
+    t.save(path);
+    return t;
+}
+
+TableValue PseudoEnergyTable::lookup(double theta0, double theta1) const {
+    const char* who = "cagd::fairness::PseudoEnergyTable::lookup";
+    require_angle(who, theta0, "theta0");
+    require_angle(who, theta1, "theta1");
+    if (is_undefined_node(theta0, theta1))
+        fail_input(who, "(" + full_precision(theta0) + ", " + full_precision(theta1) +
+                            ") is an undefined node (theta0, theta1 in {0, +-pi}): r0, r1 do not exist there (paper §4.1)");
+    const int n = grid_.n;
+    int i = 0, j = 0;
+    double u = 0.0, v = 0.0;
+    locate(nodes_, theta0, i, u);
+    locate(nodes_, theta1, j, v);
+    const int i1 = (i + 1) % n, j1 = (j + 1) % n;
+    const int ci[4] = {i, i1, i, i1}, cj[4] = {j, j, j1, j1};
+    const double w[4] = {(1 - u) * (1 - v), u * (1 - v), (1 - u) * v, u * v};
+    const PseudoEnergyMinimum& nearest = node(u < 0.5 ? i : i1, v < 0.5 ? j : j1);
+    const SegmentType want = nearest.type;
+    TableValue out;
+    double wsum = 0.0;
+    for (int k = 0; k < 4; ++k) {
+        const PseudoEnergyMinimum& m = node(ci[k], cj[k]);
+        if (m.type == SegmentType::x || !m.outcome.ok()) continue;
+        if (want != SegmentType::x && m.type != want) continue;
+        wsum += w[k];
+        out.pseudo_energy += w[k] * m.pseudo_energy;
+        out.r0 += w[k] * m.r0;
+        out.r1 += w[k] * m.r1;
+        out.length += w[k] * m.length;
+        out.area += w[k] * m.area;
+    }
+    if (!(wsum > 0.0)) {
+        // Only possible when every corner of the cell is undefined or of the other type with
+        // zero weight: fall back to the nearest defined corner of the wanted type.
+        for (int k = 0; k < 4; ++k) {
+            const PseudoEnergyMinimum& m = node(ci[k], cj[k]);
+            if (m.type != SegmentType::x && m.outcome.ok() && (want == SegmentType::x || m.type == want)) {
+                out = {m.pseudo_energy, m.r0, m.r1, m.length, m.area, m.type};
+                return out;
+            }
+        }
+        fail_input(who, "no defined table node near (" + full_precision(theta0) + ", " + full_precision(theta1) + ")");
+    }
+    out.pseudo_energy /= wsum;
+    out.r0 /= wsum;
+    out.r1 /= wsum;
+    out.length /= wsum;
+    out.area /= wsum;
+    out.type = want;
+    return out;
+}
+
+AngleMinimumTable AngleMinimumTable::build(const AngleGrid& grid, int threads) {
+    AngleMinimumTable t;
+    t.grid_ = grid;
+    t.nodes_ = grid.nodes();
+    t.values_.assign(t.nodes_.size(), AngleMinimum{});
+    parallel_for(
+        static_cast<long>(t.nodes_.size()), threads,
+        [&](long k) { t.values_[static_cast<std::size_t>(k)] = minimize_over_end_angle(t.nodes_[static_cast<std::size_t>(k)]); },
+        {});
+    return t;
+}
+
+std::pair<double, double> AngleMinimumTable::lookup(double theta) const {
+    require_angle("cagd::fairness::AngleMinimumTable::lookup", theta, "theta");
+    int i = 0;
+    double u = 0.0;
+    locate(nodes_, theta, i, u);
+    const std::size_t a = static_cast<std::size_t>(i), b = static_cast<std::size_t>((i + 1) % static_cast<int>(nodes_.size()));
+    const double j = (1 - u) * values_[a].pseudo_energy + u * values_[b].pseudo_energy;
+    // θ1 is an angle: interpolate the wrapped difference.
+    const double d = std::remainder(values_[b].theta1 - values_[a].theta1, 2 * M_PI);
+    return {j, wrap_angle(values_[a].theta1 + u * d)};
+}
+
+}  // namespace cagd::fairness

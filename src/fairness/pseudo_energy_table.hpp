@@ -1,0 +1,102 @@
+#pragma once
+// Lookup tables of J(θ0, θ1), r0, r1, L, S and the segment type over a grid of direction
+// pairs, and of J(θ), θ1(θ) over a grid of angles (pseudo_energy section 4.1, eq 8, 11, 14).
+//
+// Node placement (the paper: "divide (−π, π)² into a lattice (Θ_i, Θ_j), i, j = 1..m, m = 36",
+// and it lists (|Θ_i|, |Θ_j|) = (π, 0), (0, π), (π, π) and (0, 0) as nodes, so 0 and ±π are nodes):
+//   periodic   Θ_k = −π + 2πk/N, k = 0..N−1 — N distinct directions; for N = 36 every 10°,
+//              −180° … 170°, containing 0 and ±π. The default: the only equally spaced 36-node
+//              placement containing both 0 and ±π without storing the direction ±π twice.
+//   endpoints  Θ_k = −π + 2πk/(N−1), k = 0..N−1 — both −π and π; 0 only for odd N.
+//   midpoints  Θ_k = −π + 2π(k + ½)/N — cell centres; no node is undefined.
+// J is exactly 2π-periodic in each angle (θ and θ ± 2π give the same tangent), so every
+// placement is interpolated periodically.
+//
+// Undefined nodes (θ0, θ1 ∈ {0, ±π}) are stored with type x and are never used by the
+// interpolation; querying one exactly throws InvalidInput (J(0, 0) = 0 but r0, r1 do not exist).
+//
+// Interpolation (section 4.1): bilinear in the grid cell containing (θ0, θ1), using only the
+// cell corners whose type equals the type of the nearest node (the weights of the others are
+// dropped and the rest renormalised), so a query never mixes the s- and c-branches across the
+// jump of Fig. 7. When the nearest node is undefined (x), all defined corners are used.
+// Cost: O(log N) per lookup (one binary search per axis), no allocation.
+//
+// Build: the fast minimiser at every node, two threads by default. `use_symmetry` computes one
+// node per orbit of the symmetry group {(θ0, θ1), (θ1, θ0), (−θ0, −θ1), (−θ1, −θ0)} and fills the
+// others (J, L invariant; r0 ↔ r1 under the swap; S changes sign under (θ1, θ0) and (−θ0, −θ1)),
+// which the placements here allow since each is symmetric about 0. The reference build
+// (Romberg + Ceres CG) computes every node, so the symmetry is a checked result there.
+// Cache: a text file whose first line records format version, grid, placement and method; `load`
+// refuses a file whose line differs, so a changed grid or method rebuilds.
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "fairness/pseudo_energy_minimum.hpp"
+
+namespace cagd::fairness {
+
+enum class NodePlacement { periodic, endpoints, midpoints };
+const char* to_string(NodePlacement p);
+NodePlacement parse_node_placement(const std::string& text);   // throws InvalidInput
+
+struct AngleGrid {
+    int n = 36;                                    // nodes per axis, ≥ 2
+    NodePlacement placement = NodePlacement::periodic;
+    std::vector<double> nodes() const;             // ascending, in [−π, π]
+};
+
+enum class TableMethod { fast, reference };
+const char* to_string(TableMethod m);
+
+struct TableValue {
+    double pseudo_energy = 0.0, r0 = 0.0, r1 = 0.0, length = 0.0, area = 0.0;
+    SegmentType type = SegmentType::x;   // the type whose nodes were used
+};
+
+class PseudoEnergyTable {
+public:
+    // progress(done, total) is called from the building threads now and then (may be empty).
+    static PseudoEnergyTable build(const AngleGrid& grid, TableMethod method, int threads = 2, bool use_symmetry = true,
+                                   const std::function<void(long, long)>& progress = {});
+    // Loads `path` when it holds a table of this grid and method, else builds and saves it.
+    static PseudoEnergyTable load_or_build(const std::string& path, const AngleGrid& grid, TableMethod method,
+                                           int threads = 2);
+
+    const AngleGrid& grid() const { return grid_; }
+    TableMethod method() const { return method_; }
+    const std::vector<double>& nodes() const { return nodes_; }
+    const PseudoEnergyMinimum& node(int i, int j) const { return values_[static_cast<std::size_t>(i * grid_.n + j)]; }
+
+    // Interpolated values at (θ0, θ1) ∈ [−π, π]²; throws InvalidInput outside, for non-finite
+    // angles, or at an undefined node.
+    TableValue lookup(double theta0, double theta1) const;
+
+    void save(const std::string& path) const;
+    std::string header_line() const;
+
+private:
+    AngleGrid grid_;
+    TableMethod method_ = TableMethod::fast;
+    std::vector<double> nodes_;
+    std::vector<PseudoEnergyMinimum> values_;
+};
+
+// J(θ) and θ1(θ) of eq (11) at the nodes of a grid (exact minimisation over θ1 at each node),
+// and their linear interpolation.
+class AngleMinimumTable {
+public:
+    static AngleMinimumTable build(const AngleGrid& grid, int threads = 2);
+    const std::vector<double>& nodes() const { return nodes_; }
+    const std::vector<AngleMinimum>& values() const { return values_; }
+    // Linear interpolation; throws InvalidInput outside [−π, π]. Returns {J(θ), θ1(θ)}.
+    std::pair<double, double> lookup(double theta) const;
+
+private:
+    AngleGrid grid_;
+    std::vector<double> nodes_;
+    std::vector<AngleMinimum> values_;
+};
+
+}  // namespace cagd::fairness
