@@ -38,6 +38,22 @@ expect_bad "m-vector length"      '0,0\n1,1\n2,0\n'    interpolate --m-vector 1,
 expect_bad "unreadable line"      '0,0\n1,x\n2,0\n'    interpolate --m 1 --in "$dir/bad.csv" --out "$dir/o.csv"
 expect_bad "missing file"         ''                   interpolate --m 1 --in "$dir/none.csv" --out "$dir/o.csv"
 expect_bad "unknown method"       '0,0\n1,1\n'         interpolate --method foo --in "$dir/bad.csv" --out "$dir/o.csv"
+expect_bad "angle out of range"   ''                   energy --theta0 4 --theta1 0
+expect_bad "angle in degrees"     ''                   energy --theta0 200 --theta1 0 --deg
+expect_bad "non-finite angle"     ''                   energy --theta0 nan --theta1 0
+expect_bad "undefined node"       ''                   energy --theta0 180 --theta1 0 --deg
+expect_bad "grid below 2"         ''                   energy-table --grid 1 --out "$dir/t.txt"
+expect_bad "unknown placement"    ''                   energy-table --grid 4 --placement uniform --out "$dir/t.txt"
+
+# energy: one CSV row with header; symmetric inputs give J(θ0, θ1) = J(θ1, θ0).
+"$cagd" energy --theta0 30 --theta1 -45 --deg > "$dir/e1.csv" || { echo "FAIL: energy"; fails=$((fails+1)); }
+"$cagd" energy --theta0 -45 --theta1 30 --deg > "$dir/e2.csv" || { echo "FAIL: energy swapped"; fails=$((fails+1)); }
+head -1 "$dir/e1.csv" | grep -q '^theta0,theta1,J,r0,r1,L,S,type$' || { echo "FAIL: energy header"; fails=$((fails+1)); }
+j1=$(awk -F, 'NR==2 {print $3}' "$dir/e1.csv"); j2=$(awk -F, 'NR==2 {print $3}' "$dir/e2.csv")
+awk -v a="$j1" -v b="$j2" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(a > 0 && d < 1e-10 * a) }' || { echo "FAIL: J not symmetric: $j1 vs $j2"; fails=$((fails+1)); }
+"$cagd" energy-table --grid 6 --out "$dir/t6.txt" 2> "$dir/progress.txt" || { echo "FAIL: energy-table"; fails=$((fails+1)); }
+[ "$(grep -c '^[0-9]' "$dir/t6.txt")" -eq 36 ] || { echo "FAIL: energy-table rows"; fails=$((fails+1)); }
+grep -q 'nodes' "$dir/progress.txt" || { echo "FAIL: energy-table progress line"; fails=$((fails+1)); }
 expect_bad "tangent without vec"  '0,0\n1,1\n2,0\n'    interpolate --end tangent --in "$dir/bad.csv" --out "$dir/o.csv"
 
 if [ "$fails" -eq 0 ]; then echo "cli: all checks passed"; fi

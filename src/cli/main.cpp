@@ -6,6 +6,7 @@
 // Bad input: one line on stderr, exit code 2.
 #include <CLI/CLI.hpp>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -13,6 +14,7 @@
 #include "analysis/curve_measures.hpp"
 #include "core/errors.hpp"
 #include "core/point_csv.hpp"
+#include "fairness/pseudo_energy_table.hpp"
 #include "locality/locality_spline.hpp"
 #include "repro/csv.hpp"
 
@@ -123,6 +125,36 @@ int run_analyze(const std::string& path) {
     return 0;
 }
 
+int run_energy(double theta0, double theta1, bool degrees) {
+    const double k = degrees ? M_PI / 180.0 : 1.0;
+    const double t0 = theta0 * k, t1 = theta1 * k;
+    if (!std::isfinite(t0) || !std::isfinite(t1) || std::abs(t0) > M_PI + 1e-12 || std::abs(t1) > M_PI + 1e-12)
+        fail_input("cagd energy", std::string("angles must be finite and in ") + (degrees ? "[-180, 180] degrees" : "[-pi, pi] radians") +
+                                      ", got theta0 = " + full_precision(theta0) + ", theta1 = " + full_precision(theta1));
+    const fairness::PseudoEnergyMinimum m = fairness::minimize_pseudo_energy(t0, t1);
+    if (fairness::is_undefined_node(t0, t1)) fail_input("cagd energy", m.outcome.message);
+    if (!m.outcome.ok()) {
+        std::cerr << "cagd: no result: " << m.outcome.message << "\n";
+        return 1;
+    }
+    std::printf("theta0,theta1,J,r0,r1,L,S,type\n%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%s\n", theta0, theta1, m.pseudo_energy, m.r0,
+                m.r1, m.length, m.area, fairness::to_string(m.type));
+    return 0;
+}
+
+int run_energy_table(int n, const std::string& placement, const std::string& method, int threads, const std::string& out) {
+    if (n < 2) fail_input("cagd energy-table", "--grid must be >= 2, got " + std::to_string(n));
+    const fairness::AngleGrid grid{n, fairness::parse_node_placement(placement)};
+    const auto m = method == "reference" ? fairness::TableMethod::reference : fairness::TableMethod::fast;
+    const auto progress = [](long done, long total) {
+        std::fprintf(stderr, "\rcagd energy-table: %ld / %ld nodes", done, total);
+        if (done == total) std::fprintf(stderr, "\n");
+    };
+    const fairness::PseudoEnergyTable t = fairness::PseudoEnergyTable::build(grid, m, threads, m == fairness::TableMethod::fast, progress);
+    t.save(out);
+    return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -151,6 +183,22 @@ int main(int argc, char** argv) {
     std::string curve_path;
     analyze->add_option("curve", curve_path, "curve CSV as written by cagd interpolate")->required();
 
+    auto* energy = app.add_subcommand("energy", "Minimum pseudo-energy J(theta0, theta1) of a unit-chord cubic Hermite segment (pseudo_energy eq 8), exact computation");
+    double theta0 = 0, theta1 = 0;
+    bool degrees = false;
+    energy->add_option("--theta0", theta0, "start tangent angle, in [-pi, pi] (or [-180, 180] with --deg)")->required();
+    energy->add_option("--theta1", theta1, "end tangent angle, in [-pi, pi] (or [-180, 180] with --deg)")->required();
+    energy->add_flag("--deg", degrees, "angles in degrees");
+
+    auto* table = app.add_subcommand("energy-table", "Build a lookup table of J, r0, r1, L, S and the segment type (pseudo_energy section 4.1)");
+    int grid_n = 36, threads = 2;
+    std::string placement = "periodic", table_out, table_method = "fast";
+    table->add_option("--grid", grid_n, "nodes per axis (>= 2)")->required();
+    table->add_option("--placement", placement, "periodic | endpoints | midpoints")->check(CLI::IsMember({"periodic", "endpoints", "midpoints"}));
+    table->add_option("--method", table_method, "fast | reference")->check(CLI::IsMember({"fast", "reference"}));
+    table->add_option("--threads", threads, "worker threads")->check(CLI::Range(1, 64));
+    table->add_option("--out", table_out, "table file (text, first line records grid, placement and method)")->required();
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -160,6 +208,8 @@ int main(int argc, char** argv) {
     }
     try {
         if (*analyze) return run_analyze(curve_path);
+        if (*energy) return run_energy(theta0, theta1, degrees);
+        if (*table) return run_energy_table(grid_n, placement, table_method, threads, table_out);
         const PointList points = read_points_csv(in_path);
         if (method == "cubic-bspline") {
             write_curve(locality::cubic_bspline_interpolant(points, closed), samples, out_path);

@@ -29,6 +29,7 @@
 // fast path (20-point Gauss–Legendre on the same pieces) agrees with it to ~1e-14 relative on
 // smooth segments (tests and the pseudo_energy experiments measure this).
 #include <Eigen/Dense>
+#include <string>
 #include <vector>
 
 #include "core/errors.hpp"
@@ -105,5 +106,14 @@ SegmentEnergy segment_energy_fast(const UnitChordHermite& seg, bool with_gradien
 
 // S = ∫ y dx, exact (the integrand is a polynomial of degree 5).
 double signed_area(const UnitChordHermite& seg);
+
+// High-precision spot values (Boost.Multiprecision, 50 decimal digits; Gauss–Kronrod 61 on the
+// same graded pieces to 1e-40): an independent check of both double paths. θ and r are taken as
+// the exact binary values given; cos and sin are evaluated in 50 digits. Slow (~0.1 s).
+struct SegmentEnergyDigits {
+    std::string strain_energy, length, pseudo_energy;   // 40 significant digits
+    double strain_energy_value = 0, length_value = 0, pseudo_energy_value = 0;
+};
+SegmentEnergyDigits segment_energy_high_precision(double theta0, double theta1, double r0, double r1);
 
 }  // namespace cagd::fairness

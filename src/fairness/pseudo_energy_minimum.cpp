@@ -78,6 +78,24 @@ std::vector<ScanPoint> scan_minima(double theta0, double theta1, const ScanBox& 
             if (minimum) out.push_back({v, rho(a), rho(b)});
         }
     std::sort(out.begin(), out.end(), [](const ScanPoint& p, const ScanPoint& q) { return p.j < q.j; });
+    // A narrow diagonal valley need not show as a discrete minimum on a coarse grid: add the
+    // lowest grid points lying more than two cells from every seed so far (three of them).
+    std::vector<int> order(static_cast<std::size_t>(n * n));
+    for (int k = 0; k < n * n; ++k) order[static_cast<std::size_t>(k)] = k;
+    std::sort(order.begin(), order.end(), [&](int p, int q) { return grid[static_cast<std::size_t>(p)] < grid[static_cast<std::size_t>(q)]; });
+    const double step = (hi - lo) / (n - 1);
+    int extra = 0;
+    for (int k : order) {
+        if (extra == 3 || !std::isfinite(grid[static_cast<std::size_t>(k)])) break;
+        const double ra = rho(k / n), rb = rho(k % n);
+        bool far = true;
+        for (const ScanPoint& p : out)
+            if (std::abs(p.rho0 - ra) <= 2.5 * step && std::abs(p.rho1 - rb) <= 2.5 * step) far = false;
+        if (!far) continue;
+        out.push_back({grid[static_cast<std::size_t>(k)], ra, rb});
+        ++extra;
+    }
+    std::stable_sort(out.begin(), out.end(), [](const ScanPoint& p, const ScanPoint& q) { return p.j < q.j; });
     // Seeds worth a descent: within a factor 2 of the lowest (the basins that matter; the edge
     // points towards r → 0 have far higher J unless the minimum really lies out there).
     if (!out.empty()) {
@@ -285,7 +303,7 @@ PseudoEnergyMinimum minimize_pseudo_energy_nlopt(double theta0, double theta1, c
     long evaluations = 0;
     const std::vector<ScanPoint> starts = scan_minima(theta0, theta1, box, evaluations);
     std::vector<Descent> runs;
-    if (!starts.empty()) {
+    for (std::size_t si = 0; si < starts.size() && si < 6; ++si) {
         struct Data {
             double theta0, theta1;
             long* evaluations;
@@ -309,7 +327,7 @@ PseudoEnergyMinimum minimize_pseudo_energy_nlopt(double theta0, double theta1, c
         opt.set_ftol_rel(1e-16);
         opt.set_xtol_rel(1e-13);
         opt.set_maxeval(5000);
-        std::vector<double> x{starts.front().rho0, starts.front().rho1};
+        std::vector<double> x{starts[si].rho0, starts[si].rho1};
         double f = 0.0;
         Descent d;
         try {

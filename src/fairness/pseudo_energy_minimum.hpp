@@ -9,14 +9,16 @@
 // positive quadratic in (r0, r1) as r → ∞ (section 2), so a minimum exists for every direction
 // pair the collinear nodes below excepted. It need not be unique, and J has further local
 // minima, some within 0.1 % of the global one, so both paths start from a scan of
-// (ρ0, ρ1) ∈ [log r_lo, log r_hi]² and descend from several of the scan's local minima.
+// (ρ0, ρ1) ∈ [log r_lo, log r_hi]² and descend from several seeds: the scan's discrete local
+// minima and the three lowest grid points away from them (a narrow diagonal valley need not show
+// as a discrete minimum), those within a factor 2 of the lowest.
 //
 // Reference path (what the paper did, section 4.1): Romberg integration (rel 1e-13) and the
 // nonlinear conjugate-gradient method (Ceres GradientProblemSolver, Polak–Ribière) from the best
 // `starts` scan minima; the lowest converged minimum is the answer. It also reports how many
 // distinct local minima it found and the runner-up, so the global choice is visible.
 // Independent check: `minimize_pseudo_energy_nlopt` (NLopt L-BFGS, Romberg values and
-// gradients) from the best scan minimum.
+// gradients) from the same scan minima.
 // Fast path: fixed 20-point Gauss–Legendre on the graded pieces, a coarse scan (8-point rule),
 // and damped Newton (analytic gradient, Hessian by central differences of it) from the best scan
 // minima. Both paths descend only from scan minima within a factor 2 of the lowest one.
@@ -62,13 +64,13 @@ struct ScanBox {
 
 struct ReferenceMinimizerOptions {
     ScanBox box{};
-    int starts = 4;              // descents from the lowest scan minima
+    int starts = 6;              // descents from the lowest scan seeds
     double romberg_rel_tol = 1e-13;
 };
 
 struct FastMinimizerOptions {
-    ScanBox box{1e-2, 1e2, 17};
-    int starts = 3;
+    ScanBox box{1e-2, 1e2, 21};
+    int starts = 6;
 };
 
 // True for the undefined nodes (θ0, θ1 ∈ {0, ±π} to 1e-12).
@@ -77,7 +79,8 @@ bool is_undefined_node(double theta0, double theta1);
 // Reference path. Throws InvalidInput for angles outside [−π, π] or non-finite.
 PseudoEnergyMinimum minimize_pseudo_energy_reference(double theta0, double theta1,
                                                      const ReferenceMinimizerOptions& opt = {});
-// Independent second minimiser (NLopt LD_LBFGS on the Romberg energy) from the best scan minimum.
+// Independent second minimiser (NLopt LD_LBFGS on the Romberg energy, no polish) from the same
+// scan minima (up to 4); the lowest result.
 PseudoEnergyMinimum minimize_pseudo_energy_nlopt(double theta0, double theta1, const ScanBox& box = {});
 // Fast path. `warm` adds starting points (r0, r1), e.g. a neighbouring node's minimiser.
 PseudoEnergyMinimum minimize_pseudo_energy(double theta0, double theta1, const FastMinimizerOptions& opt = {},

@@ -12,7 +12,8 @@ namespace cagd::fairness {
 
 namespace {
 
-constexpr int kCacheFormat = 1;
+// Bumped whenever a minimiser or the file layout changes, so stale caches are rebuilt.
+constexpr int kCacheFormat = 3;
 
 void require_angle(const char* who, double theta, const char* name) {
     if (!std::isfinite(theta) || std::abs(theta) > M_PI + 1e-12)
@@ -66,7 +67,13 @@ NodePlacement parse_node_placement(const std::string& text) {
     fail_input("cagd::fairness::parse_node_placement", "placement must be periodic, endpoints or midpoints, got '" + text + "'");
 }
 
-const char* to_string(TableMethod m) { return m == TableMethod::fast ? "fast" : "reference"; }
+const char* to_string(TableMethod m) {
+    switch (m) {
+        case TableMethod::fast: return "fast";
+        case TableMethod::reference: return "reference";
+        default: return "nlopt";
+    }
+}
 
 std::vector<double> AngleGrid::nodes() const {
     if (n < 2) fail_input("cagd::fairness::AngleGrid", "n must be >= 2, got " + std::to_string(n));
@@ -118,8 +125,9 @@ PseudoEnergyTable PseudoEnergyTable::build(const AngleGrid& grid, TableMethod me
         [&](long k) {
             const long idx = todo[static_cast<std::size_t>(k)];
             const double a = t.nodes_[static_cast<std::size_t>(idx / n)], b = t.nodes_[static_cast<std::size_t>(idx % n)];
-            t.values_[static_cast<std::size_t>(idx)] =
-                method == TableMethod::fast ? minimize_pseudo_energy(a, b) : minimize_pseudo_energy_reference(a, b);
+            t.values_[static_cast<std::size_t>(idx)] = method == TableMethod::fast        ? minimize_pseudo_energy(a, b)
+                                                       : method == TableMethod::reference ? minimize_pseudo_energy_reference(a, b)
+                                                                                          : minimize_pseudo_energy_nlopt(a, b);
         },
         progress);
     if (use_symmetry) {
@@ -216,7 +224,7 @@ PseudoEnergyTable PseudoEnergyTable::load_or_build(const std::string& path, cons
     return t;
 }
 
-TableValue PseudoEnergyTable::lookup(double theta0, double theta1) const {
+TableValue PseudoEnergyTable::lookup(double theta0, double theta1, bool same_type_only) const {
     const char* who = "cagd::fairness::PseudoEnergyTable::lookup";
     require_angle(who, theta0, "theta0");
     require_angle(who, theta1, "theta1");
@@ -232,7 +240,7 @@ TableValue PseudoEnergyTable::lookup(double theta0, double theta1) const {
     const int ci[4] = {i, i1, i, i1}, cj[4] = {j, j, j1, j1};
     const double w[4] = {(1 - u) * (1 - v), u * (1 - v), (1 - u) * v, u * v};
     const PseudoEnergyMinimum& nearest = node(u < 0.5 ? i : i1, v < 0.5 ? j : j1);
-    const SegmentType want = nearest.type;
+    const SegmentType want = same_type_only ? nearest.type : SegmentType::x;
     TableValue out;
     double wsum = 0.0;
     for (int k = 0; k < 4; ++k) {

@@ -47,7 +47,8 @@ struct AngleGrid {
     std::vector<double> nodes() const;             // ascending, in [−π, π]
 };
 
-enum class TableMethod { fast, reference };
+// fast: minimize_pseudo_energy; reference: Romberg + Ceres CG; nlopt: the independent second minimiser.
+enum class TableMethod { fast, reference, nlopt };
 const char* to_string(TableMethod m);
 
 struct TableValue {
@@ -70,8 +71,9 @@ public:
     const PseudoEnergyMinimum& node(int i, int j) const { return values_[static_cast<std::size_t>(i * grid_.n + j)]; }
 
     // Interpolated values at (θ0, θ1) ∈ [−π, π]²; throws InvalidInput outside, for non-finite
-    // angles, or at an undefined node.
-    TableValue lookup(double theta0, double theta1) const;
+    // angles, or at an undefined node. same_type_only = false gives plain bilinear interpolation
+    // over all defined corners (for comparison with the paper's rule).
+    TableValue lookup(double theta0, double theta1, bool same_type_only = true) const;
 
     void save(const std::string& path) const;
     std::string header_line() const;

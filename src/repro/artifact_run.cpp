@@ -86,6 +86,12 @@ void ArtifactRun::figure(const std::string& name, const std::string& caption) {
 
 void ArtifactRun::note(const std::string& text) { notes_.push_back(text); }
 
+std::string ArtifactRun::cache_path(const std::string& file_name) const {
+    const fs::path dir = fs::path(root_) / "build" / "cache" / paper_;
+    fs::create_directories(dir);
+    return (dir / file_name).string();
+}
+
 std::string ArtifactRun::data_path(const std::string& file_name) const {
     return out_dir_ + "/" + file_name;
 }

@@ -58,6 +58,9 @@ public:
     void figure(const std::string& name, const std::string& caption);
     void note(const std::string& text);
     std::string data_path(const std::string& file_name) const;   // where to write data
+    // Where to keep an expensive intermediate (a lookup table) between runs:
+    // <root>/build/cache/<paper>/<file>; never compared, never committed.
+    std::string cache_path(const std::string& file_name) const;
     CsvWriter table(const std::string& file_name, const std::vector<std::string>& header) const;
 
     int finish();

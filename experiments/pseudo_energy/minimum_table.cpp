@@ -1,0 +1,121 @@
+// pseudo_energy section 4.1, eq (8), (14): the 36×36 table of J(θ0, θ1) = min J and its
+// minimisers r0, r1, with L, S and the segment type, computed three ways at every node:
+// reference (Romberg + Ceres nonlinear CG, as the paper did), NLopt L-BFGS (independent second
+// minimiser) and the fast path (Gauss–Legendre + Newton, one node per symmetry orbit).
+// Node placement: periodic, Θ_k = −180° + 10°k, k = 0..35 (see fairness/pseudo_energy_table.hpp).
+#include <cmath>
+#include <cstdio>
+
+#include "fairness/pseudo_energy_table.hpp"
+#include "repro/artifact_run.hpp"
+
+using namespace cagd;
+using namespace cagd::fairness;
+
+namespace {
+constexpr double kDeg = 180.0 / M_PI;
+
+// Nodes where no admissible segment exists (every scanned (r0, r1) gives a cusp) or where the
+// straight segment attains J = 0: measured on a 41×41 log scan of r ∈ [1e-2, 1e2]².
+int measured_undefined_nodes(const std::vector<double>& nodes) {
+    int count = 0;
+    for (double a : nodes)
+        for (double b : nodes) {
+            bool all_cusp = true, zero = false;
+            for (int i = 0; i < 41 && !zero; ++i)
+                for (int j = 0; j < 41 && !zero; ++j) {
+                    const UnitChordHermite seg(a, b, std::pow(10.0, -2 + i / 10.0), std::pow(10.0, -2 + j / 10.0));
+                    if (has_cusp(seg)) continue;
+                    all_cusp = false;
+                    zero = segment_energy_fast(seg, false).pseudo_energy == 0.0;
+                }
+            count += (all_cusp || zero) ? 1 : 0;
+        }
+    return count;
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+    repro::ArtifactRun run("pseudo_energy", "minimum_table", "4.1", "The 36×36 table of minimum pseudo-energy (eq 8, 14)", argc, argv);
+    const AngleGrid grid{36, NodePlacement::periodic};
+    const PseudoEnergyTable ref = PseudoEnergyTable::load_or_build(run.cache_path("table36_reference.txt"), grid, TableMethod::reference);
+    const PseudoEnergyTable nl = PseudoEnergyTable::load_or_build(run.cache_path("table36_nlopt.txt"), grid, TableMethod::nlopt);
+    const PseudoEnergyTable fast = PseudoEnergyTable::build(grid, TableMethod::fast);
+    run.note("Grid: 36 × 36 nodes Θ_k = −180° + 10°k (periodic placement: the equally spaced 36-node grid containing 0 and ±π, "
+             "which the paper's list of undefined nodes requires). Reference: scan of (r0, r1) ∈ [1e-2, 1e2]² (41 × 41, log), "
+             "Ceres nonlinear CG from up to 4 scan minima, Newton polish on ∇J = 0 with the same Romberg gradients.");
+
+    const UnitChordHermite straight(0.0, 0.0, 1.0, 1.0);
+    run.check("sec4.j_zero_at_origin", segment_energy_reference(straight).pseudo_energy);
+    run.check("sec4.undefined_nodes", measured_undefined_nodes(ref.nodes()));
+
+    repro::CsvWriter out = run.table("table36.csv", {"theta0_deg", "theta1_deg", "J", "r0", "r1", "L", "S", "type", "local_minima", "runner_up_J"});
+    int no_minimum = 0, n_c = 0, n_s = 0, n_x = 0, multi = 0;
+    double fast_dj = 0, fast_dr = 0, fast_dls = 0, nl_dj = 0, nl_dr = 0, closest_gap = INFINITY;
+    std::string closest_at;
+    const int n = grid.n;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            const PseudoEnergyMinimum &r = ref.node(i, j), &f = fast.node(i, j), &q = nl.node(i, j);
+            out.row_text({repro::format_number(r.theta0 * kDeg), repro::format_number(r.theta1 * kDeg), repro::format_number(r.pseudo_energy, 15),
+                          repro::format_number(r.r0, 12), repro::format_number(r.r1, 12), repro::format_number(r.length, 12),
+                          repro::format_number(r.area, 12), to_string(r.type), std::to_string(r.local_minima),
+                          repro::format_number(r.runner_up, 12)});
+            if (is_undefined_node(r.theta0, r.theta1)) {
+                ++n_x;
+                continue;
+            }
+            if (!r.outcome.ok()) ++no_minimum;
+            (r.type == SegmentType::c ? n_c : n_s)++;
+            const double scale = std::max(1.0, r.pseudo_energy);
+            fast_dj = std::max(fast_dj, std::abs(f.pseudo_energy - r.pseudo_energy) / scale);
+            fast_dr = std::max({fast_dr, std::abs(f.r0 - r.r0), std::abs(f.r1 - r.r1)});
+            fast_dls = std::max({fast_dls, std::abs(f.length - r.length), std::abs(f.area - r.area)});
+            nl_dj = std::max(nl_dj, std::abs(q.pseudo_energy - r.pseudo_energy) / scale);
+            nl_dr = std::max({nl_dr, std::abs(q.r0 - r.r0), std::abs(q.r1 - r.r1)});
+            if (r.local_minima > 1) {
+                ++multi;
+                const double gap = (r.runner_up - r.pseudo_energy) / r.pseudo_energy;
+                if (gap < closest_gap) {
+                    closest_gap = gap;
+                    char at[64];   // snprintf: GCC 12 warns falsely (-Wrestrict) on string concatenation here
+                    std::snprintf(at, sizeof at, "(%g°, %g°)", r.theta0 * kDeg, r.theta1 * kDeg);
+                    closest_at = at;
+                }
+            }
+        }
+    run.check("sec2.minimum_exists_36", no_minimum);
+    run.check("sec4.both_types", n_c > 0 && n_s > 0 ? 1.0 : 0.0);
+    run.note("Types at the 36 × 36 nodes: " + std::to_string(n_c) + " c, " + std::to_string(n_s) + " s, " + std::to_string(n_x) +
+             " x (undefined). The reference reached ≥ 2 distinct local minima at " + std::to_string(multi) +
+             " nodes; the closest runner-up is " + repro::format_number(closest_gap * 100, 3) + " % above the global minimum, at " + closest_at + ".");
+    run.validate("fast.J", "fast path vs reference at every defined node: max |ΔJ| / max(1, J)", fast_dj, 0.0, 1e-10,
+                 "issue 3 agreement requirement (relative for J ≫ 1)");
+    run.validate("fast.r", "fast path vs reference at every defined node: max |Δr0|, |Δr1|", fast_dr, 0.0, 1e-8, "issue 3 agreement requirement");
+    run.validate("fast.L_S", "fast path vs reference at every defined node: max |ΔL|, |ΔS|", fast_dls, 0.0, 1e-8, "follows from |Δr| ≤ 1e-8");
+    run.validate("nlopt.J", "NLopt L-BFGS vs reference at every defined node: max |ΔJ| / max(1, J)", nl_dj, 0.0, 1e-12,
+                 "a value-based descent reaches J to ~quadrature noise");
+    run.validate("nlopt.r", "NLopt L-BFGS vs reference at every defined node: max |Δr| (same minimum)", nl_dr, 0.0, 1e-3,
+                 "value-based stop at |∇J| ~ 1e-6; in flat valleys Δr ~ |∇J|/λ_min");
+
+    // Symmetries (derived in fairness/pseudo_energy_table.hpp), on the reference table computed node by node.
+    std::vector<int> neg(static_cast<std::size_t>(n));
+    for (int k = 0; k < n; ++k) neg[static_cast<std::size_t>(k)] = (n - k) % n;   // −Θ_k = Θ_{n−k} (mod 2π)
+    double sj = 0, sr = 0, ss = 0;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            const PseudoEnergyMinimum &a = ref.node(i, j), &b = ref.node(j, i);
+            const PseudoEnergyMinimum& c = ref.node(neg[static_cast<std::size_t>(i)], neg[static_cast<std::size_t>(j)]);
+            if (is_undefined_node(a.theta0, a.theta1)) continue;
+            const double scale = std::max(1.0, a.pseudo_energy);
+            sj = std::max({sj, std::abs(a.pseudo_energy - b.pseudo_energy) / scale, std::abs(a.pseudo_energy - c.pseudo_energy) / scale});
+            sr = std::max({sr, std::abs(a.r0 - b.r1), std::abs(a.r1 - b.r0), std::abs(a.r0 - c.r0), std::abs(a.r1 - c.r1)});
+            ss = std::max({ss, std::abs(a.area + b.area), std::abs(a.area + c.area), std::abs(a.length - b.length)});
+        }
+    run.validate("symmetry.J", "J(θ0, θ1) = J(θ1, θ0) = J(−θ0, −θ1) on the reference table: max relative difference", sj, 0.0, 1e-10,
+                 "minimiser accuracy");
+    run.validate("symmetry.r", "r0(θ0, θ1) = r1(θ1, θ0) = r0(−θ0, −θ1): max |Δr|", sr, 0.0, 1e-8, "minimiser accuracy");
+    run.validate("symmetry.S", "S(θ0, θ1) = −S(θ1, θ0) = −S(−θ0, −θ1), L(θ0, θ1) = L(θ1, θ0): max difference", ss, 0.0, 1e-8,
+                 "minimiser accuracy");
+    return run.finish();
+}

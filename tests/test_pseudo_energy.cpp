@@ -1,0 +1,175 @@
+// pseudo_energy: the unit-chord Hermite segment (eq 1–7, 14–15), its minimisers (eq 8, 11) and
+// the lookup tables (section 4.1).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "analysis/curve_measures.hpp"
+#include "fairness/pseudo_energy_table.hpp"
+#include "numeric/romberg.hpp"
+
+using namespace cagd;
+using namespace cagd::fairness;
+
+TEST(HermiteSegment, EndConditionsOfEq1To5) {
+    const UnitChordHermite s(0.7, -1.2, 1.3, 0.6);
+    EXPECT_NEAR(s.position(0).norm(), 0.0, 1e-15);
+    EXPECT_NEAR((s.position(1) - Eigen::Vector2d(1, 0)).norm(), 0.0, 1e-15) << "P(1) = P1 = (1, 0)";
+    EXPECT_NEAR((s.first(0) - 1.3 * Eigen::Vector2d(std::cos(0.7), std::sin(0.7))).norm(), 0.0, 1e-15) << "P'(0) = r0 (cos θ0, sin θ0)";
+    EXPECT_NEAR((s.first(1) - 0.6 * Eigen::Vector2d(std::cos(-1.2), std::sin(-1.2))).norm(), 0.0, 1e-15);
+    // The Bézier form through the Curve interface is the same cubic.
+    const BezierCurve b = s.bezier();
+    for (double t : {0.0, 0.3, 0.8, 1.0}) {
+        const Eigen::MatrixXd j = b.jet(t, 2);
+        EXPECT_NEAR((j.row(0).transpose() - s.position(t)).norm(), 0.0, 1e-14);
+        EXPECT_NEAR((j.row(1).transpose() - s.first(t)).norm(), 0.0, 1e-13);
+        // k(t) = x''y' − x'y'' (eq 15)
+        EXPECT_NEAR(s.curvature_numerator(t), j(2, 0) * j(1, 1) - j(1, 0) * j(2, 1), 1e-12);
+    }
+}
+
+TEST(HermiteSegment, EnergyLengthAreaAgreeWithTheAnalysisModule) {
+    const UnitChordHermite s(0.9, 0.4, 1.1, 0.8);
+    const SegmentEnergy f = segment_energy_fast(s), r = segment_energy_reference(s);
+    const BezierCurve b = s.bezier();
+    EXPECT_NEAR(f.length, analysis::arc_length(b, 8), 1e-13);
+    EXPECT_NEAR(f.strain_energy, analysis::bending_energy(b, 8), 1e-12) << "E = ∫ κ² ds (eq 6)";
+    EXPECT_NEAR(f.pseudo_energy, f.length * f.length * f.strain_energy, 1e-15) << "J = L² E (eq 7)";
+    EXPECT_NEAR(f.pseudo_energy, r.pseudo_energy, 1e-13 * r.pseudo_energy);
+    // S = ∫ y dx; the closed path segment + chord back has area ½∮(x dy − y dx) = −S.
+    EXPECT_NEAR(signed_area(s), -analysis::enclosed_area(b), 1e-14);
+}
+
+TEST(HermiteSegment, GradientMatchesCentralDifferences) {
+    for (const auto& p : {std::array<double, 4>{0.5, 0.3, 1.0, 1.2}, {2.5, -2.0, 0.4, 3.0}, {-1.0, 1.5, 2.0, 0.7}}) {
+        const SegmentEnergy e = segment_energy_fast(UnitChordHermite(p[0], p[1], p[2], p[3]));
+        const double h = 1e-6;
+        const auto j = [&](double a, double b) { return segment_energy_fast(UnitChordHermite(p[0], p[1], a, b), false).pseudo_energy; };
+        const double d0 = (j(p[2] * std::exp(h), p[3]) - j(p[2] * std::exp(-h), p[3])) / (2 * h);
+        const double d1 = (j(p[2], p[3] * std::exp(h)) - j(p[2], p[3] * std::exp(-h))) / (2 * h);
+        EXPECT_NEAR(e.dj_dlog_r0, d0, 1e-6 * (1 + std::abs(d0)));
+        EXPECT_NEAR(e.dj_dlog_r1, d1, 1e-6 * (1 + std::abs(d1)));
+    }
+}
+
+TEST(HermiteSegment, CuspIsInfiniteNeverAFalseLowValue) {
+    const UnitChordHermite collinear(M_PI, 0.0, 1.0, 1.0);   // x'(0) < 0 < x'(1), y' ≡ 0
+    EXPECT_TRUE(has_cusp(collinear));
+    const SegmentEnergy f = segment_energy_fast(collinear), r = segment_energy_reference(collinear);
+    EXPECT_TRUE(f.cusp && r.cusp);
+    EXPECT_TRUE(std::isinf(f.pseudo_energy) && std::isinf(r.pseudo_energy));
+    EXPECT_EQ(f.outcome.status, Status::no_solution);
+    // Near the cusp the graded rule agrees with Romberg; a fixed rule reports far less.
+    const UnitChordHermite near(M_PI - 1e-3, 0.0, 1.0, 1.0);
+    const double jr = segment_energy_reference(near, 1e-13, false).pseudo_energy;
+    EXPECT_NEAR(segment_energy_fast(near, false).pseudo_energy, jr, 1e-11 * jr);
+    const BezierCurve b = near.bezier();
+    EXPECT_LT(std::pow(analysis::arc_length(b, 1), 2) * analysis::bending_energy(b, 1), 1e-3 * jr);
+}
+
+TEST(HermiteSegment, BadInputThrows) {
+    EXPECT_THROW(UnitChordHermite(3.5, 0, 1, 1), InvalidInput);
+    EXPECT_THROW(UnitChordHermite(0, -4.0, 1, 1), InvalidInput);
+    EXPECT_THROW(UnitChordHermite(NAN, 0, 1, 1), InvalidInput);
+    EXPECT_THROW(UnitChordHermite(0, 0, 0.0, 1), InvalidInput);
+    EXPECT_THROW(UnitChordHermite(0, 0, 1, -1), InvalidInput);
+    EXPECT_THROW(UnitChordHermite(0, 0, INFINITY, 1), InvalidInput);
+    EXPECT_NO_THROW(UnitChordHermite(M_PI, -M_PI, 1, 1));
+    EXPECT_THROW(segment_energy_fast(UnitChordHermite(0.1, 0.2, 1, 1), true, 7), InvalidInput);
+    EXPECT_NEAR(wrap_angle(3 * M_PI), M_PI, 1e-15);
+    EXPECT_NEAR(wrap_angle(-0.5 - 2 * M_PI), -0.5, 1e-15);
+    EXPECT_THROW(wrap_angle(NAN), InvalidInput);
+}
+
+TEST(PseudoEnergyMinimum, FastAgreesWithReferenceAndIsStationary) {
+    for (const auto& p : {std::pair{0.5, -0.3}, {2.0, 1.0}, {-2.8, 0.4}}) {
+        const PseudoEnergyMinimum f = minimize_pseudo_energy(p.first, p.second);
+        const PseudoEnergyMinimum r = minimize_pseudo_energy_reference(p.first, p.second);
+        ASSERT_TRUE(f.outcome.ok()) << f.outcome.message;
+        ASSERT_TRUE(r.outcome.ok()) << r.outcome.message;
+        EXPECT_NEAR(f.pseudo_energy, r.pseudo_energy, 1e-10 * std::max(1.0, r.pseudo_energy));
+        EXPECT_NEAR(f.r0, r.r0, 1e-8);
+        EXPECT_NEAR(f.r1, r.r1, 1e-8);
+        EXPECT_LT(f.gradient_norm, 1e-8 * (1 + f.pseudo_energy));
+        // No nearby (r0, r1) is lower.
+        for (double d : {-1e-3, 1e-3})
+            EXPECT_GE(segment_energy_fast(UnitChordHermite(p.first, p.second, f.r0 * std::exp(d), f.r1), false).pseudo_energy, f.pseudo_energy);
+    }
+}
+
+TEST(PseudoEnergyMinimum, Symmetries) {
+    const double a = 0.8, b = -2.1;
+    const PseudoEnergyMinimum m = minimize_pseudo_energy(a, b), swapped = minimize_pseudo_energy(b, a), negated = minimize_pseudo_energy(-a, -b);
+    EXPECT_NEAR(m.pseudo_energy, swapped.pseudo_energy, 1e-11 * m.pseudo_energy);
+    EXPECT_NEAR(m.r0, swapped.r1, 1e-8);
+    EXPECT_NEAR(m.area, -swapped.area, 1e-8);
+    EXPECT_NEAR(m.pseudo_energy, negated.pseudo_energy, 1e-11 * m.pseudo_energy);
+    EXPECT_NEAR(m.r0, negated.r0, 1e-8);
+    EXPECT_NEAR(m.area, -negated.area, 1e-8);
+    EXPECT_NEAR(m.length, negated.length, 1e-8);
+}
+
+TEST(PseudoEnergyMinimum, UndefinedNodes) {
+    const PseudoEnergyMinimum zero = minimize_pseudo_energy(0.0, 0.0);
+    EXPECT_EQ(zero.outcome.status, Status::no_solution);
+    EXPECT_EQ(zero.pseudo_energy, 0.0);
+    EXPECT_EQ(zero.type, SegmentType::x);
+    for (const auto& p : {std::pair{M_PI, 0.0}, {0.0, -M_PI}, {-M_PI, M_PI}}) {
+        const PseudoEnergyMinimum m = minimize_pseudo_energy(p.first, p.second);
+        EXPECT_EQ(m.outcome.status, Status::no_solution);
+        EXPECT_TRUE(std::isinf(m.pseudo_energy));
+    }
+    EXPECT_THROW(minimize_pseudo_energy(4.0, 0.0), InvalidInput);
+}
+
+TEST(PseudoEnergyTable, LookupReproducesNodesWrapsAndRejects) {
+    const PseudoEnergyTable t = PseudoEnergyTable::build({12, NodePlacement::periodic}, TableMethod::fast, 2, true);
+    const auto& nodes = t.nodes();
+    ASSERT_EQ(nodes.size(), 12u);
+    EXPECT_EQ(nodes[6], 0.0);
+    EXPECT_EQ(nodes[0], -M_PI);
+    const PseudoEnergyMinimum& n = t.node(3, 8);
+    const TableValue v = t.lookup(nodes[3], nodes[8]);
+    EXPECT_NEAR(v.pseudo_energy, n.pseudo_energy, 1e-12 * n.pseudo_energy);
+    EXPECT_NEAR(v.r0, n.r0, 1e-12);
+    // Symmetry fill equals direct computation.
+    const PseudoEnergyMinimum direct = minimize_pseudo_energy(nodes[8], nodes[3]);
+    EXPECT_NEAR(t.node(8, 3).r0, direct.r0, 1e-8);
+    EXPECT_NEAR(t.node(8, 3).area, direct.area, 1e-8);
+    // Periodic: θ = π is the node −π.
+    EXPECT_NEAR(t.lookup(M_PI, 1.0).pseudo_energy, t.lookup(-M_PI, 1.0).pseudo_energy, 1e-12);
+    EXPECT_THROW(t.lookup(0.0, 0.0), InvalidInput);
+    EXPECT_THROW(t.lookup(-M_PI, 0.0), InvalidInput);
+    EXPECT_THROW(t.lookup(3.3, 0.1), InvalidInput);
+    EXPECT_THROW(t.lookup(NAN, 0.1), InvalidInput);
+    EXPECT_THROW((AngleGrid{1, NodePlacement::periodic}.nodes()), InvalidInput);
+    EXPECT_THROW(parse_node_placement("uniform"), InvalidInput);
+}
+
+TEST(PseudoEnergyTable, CacheRoundTripAndVersionedHeader) {
+    const AngleGrid g{8, NodePlacement::midpoints};
+    const std::string path = (std::filesystem::temp_directory_path() / "cagd_table_test.txt").string();
+    std::remove(path.c_str());
+    const PseudoEnergyTable built = PseudoEnergyTable::load_or_build(path, g, TableMethod::fast, 1);
+    ASSERT_TRUE(std::filesystem::exists(path));
+    const PseudoEnergyTable loaded = PseudoEnergyTable::load_or_build(path, g, TableMethod::fast, 1);
+    for (int i = 0; i < 8; ++i)
+        for (int j = 0; j < 8; ++j) {
+            EXPECT_EQ(loaded.node(i, j).pseudo_energy, built.node(i, j).pseudo_energy);
+            EXPECT_EQ(loaded.node(i, j).r1, built.node(i, j).r1);
+            EXPECT_EQ(loaded.node(i, j).type, built.node(i, j).type);
+        }
+    EXPECT_NE(built.header_line().find("grid 8 placement midpoints method fast"), std::string::npos);
+    std::remove(path.c_str());
+}
+
+TEST(RombergVector, SharedEvaluationsConvergePerComponent) {
+    const auto f = [](double t) { return std::array<double, 3>{std::sin(t), std::cos(t) - std::cos(1.0), t * t}; };
+    const auto r = numeric::romberg_vector<3>(f, 0.0, 1.0, 1e-13);
+    ASSERT_TRUE(r.outcome.ok());
+    EXPECT_NEAR(r.value[0], 1 - std::cos(1.0), 1e-14);
+    EXPECT_NEAR(r.value[1], std::sin(1.0) - std::cos(1.0), 1e-14) << "a component near 0 still converges";
+    EXPECT_NEAR(r.value[2], 1.0 / 3.0, 1e-15);
+}
