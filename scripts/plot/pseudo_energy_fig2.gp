@@ -1,5 +1,7 @@
+# Draws Fig. 2; pseudo_energy_fig3.gp sets name = 'fig3' and loads this file.
 load 'scripts/plot/style.gp'
-do for [name in "fig2 fig3"] {
+if (!exists("name")) name = 'fig2'
+{
   f = datadir.'/'.name.'.csv'
   c = datadir.'/'.name.'_curves.csv'
   do for [t in "png svg"] {
@@ -10,9 +12,11 @@ do for [name in "fig2 fig3"] {
     set size ratio -1
     set xlabel 'x'
     set ylabel 'y'
-    set key bottom right
+    set key top left box opaque
+    set offsets 0, 0, 0.35, 0.05   # room for the key above the curves
     plot c u 2:3 w l ls 1 t 'r = 0.5', c u 4:5 w l ls 2 t 'r = 1', c u 6:7 w l ls 3 t 'r = 2', c u 8:9 w l ls 4 t 'r = 4'
     set size noratio
+    set offsets 0, 0, 0, 0
     set title 'strain energy'
     set logscale x
     set xlabel 'r'

@@ -9,9 +9,11 @@ do for [t in "png svg"] {
   set size ratio -1
   set xlabel 'x'
   set ylabel 'y'
-  set key bottom center
+  set key top left box opaque
+    set offsets 0, 0, 0.35, 0.05   # room for the key above the curves
   plot c u 2:3 w l ls 1 t 's-type (just before)', c u 4:5 w l ls 2 t 'c-type (just after)'
   set size noratio
+    set offsets 0, 0, 0, 0
   set title 'minimisers against θ1'
   set xlabel 'θ1 (degrees)'
   set ylabel 'r'

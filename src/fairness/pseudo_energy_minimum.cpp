@@ -322,11 +322,13 @@ PseudoEnergyMinimum minimize_pseudo_energy_nlopt(double theta0, double theta1, c
                 return e.pseudo_energy;
             },
             &data);
-        opt.set_lower_bounds({std::log(kRunawayLow), std::log(kRunawayLow)});
-        opt.set_upper_bounds({std::log(kRunawayHigh), std::log(kRunawayHigh)});
-        opt.set_ftol_rel(1e-16);
-        opt.set_xtol_rel(1e-13);
-        opt.set_maxeval(5000);
+        // Bounds r ∈ [1e-4, 1e4]: the minimisers of the 1° grid lie in [0.002, 10]; wider bounds let
+        // the line search probe r ~ 1e±8, where each Romberg evaluation costs seconds.
+        opt.set_lower_bounds({std::log(1e-4), std::log(1e-4)});
+        opt.set_upper_bounds({std::log(1e4), std::log(1e4)});
+        opt.set_ftol_rel(1e-15);
+        opt.set_xtol_rel(1e-12);
+        opt.set_maxeval(300);   // L-BFGS needs ~20–60; beyond, it is stalled at the noise floor
         std::vector<double> x{starts[si].rho0, starts[si].rho1};
         double f = 0.0;
         Descent d;
