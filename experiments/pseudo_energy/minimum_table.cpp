@@ -43,7 +43,9 @@ int main(int argc, char** argv) {
     const PseudoEnergyTable fast = PseudoEnergyTable::build(grid, TableMethod::fast);
     run.note("Grid: 36 × 36 nodes Θ_k = −180° + 10°k (periodic placement: the equally spaced 36-node grid containing 0 and ±π, "
              "which the paper's list of undefined nodes requires). Reference: scan of (r0, r1) ∈ [1e-2, 1e2]² (41 × 41, log), "
-             "Ceres nonlinear CG from up to 4 scan minima, Newton polish on ∇J = 0 with the same Romberg gradients.");
+             "Ceres nonlinear CG from up to 6 seeds (the scan's discrete minima and the lowest grid points away from them, within a factor 2 "
+             "of the lowest) and from the fast path's minimum and runner-up, Newton polish on ∇J = 0 with the same Romberg gradients. "
+             "NLopt L-BFGS from the scan seeds, no polish.");
 
     const UnitChordHermite straight(0.0, 0.0, 1.0, 1.0);
     run.check("sec4.j_zero_at_origin", segment_energy_reference(straight).pseudo_energy);

@@ -267,9 +267,17 @@ PseudoEnergyMinimum minimize_pseudo_energy_reference(double theta0, double theta
     // Ceres logs a warning each time CG restarts, which nearly converged CG does constantly.
     FLAGS_minloglevel = std::max(FLAGS_minloglevel, 2);
     long evaluations = 0;
-    const std::vector<ScanPoint> starts = scan_minima(theta0, theta1, opt.box, evaluations);
+    std::vector<ScanPoint> starts = scan_minima(theta0, theta1, opt.box, evaluations);
+    if (static_cast<int>(starts.size()) > opt.starts) starts.resize(static_cast<std::size_t>(opt.starts));
+    // Also descend from the fast path's minimum and runner-up: its finer seeding (extra grid
+    // points) reaches narrow valleys the reference scan can miss, so the reference answer is the
+    // lowest of both — never a local minimum the fast path has beaten.
+    const PseudoEnergyMinimum fast = minimize_pseudo_energy(theta0, theta1);
+    if (fast.outcome.ok()) starts.push_back({fast.pseudo_energy, std::log(fast.r0), std::log(fast.r1)});
+    if (std::isfinite(fast.runner_up) && fast.runner_up_r0 > 0 && fast.runner_up_r1 > 0)
+        starts.push_back({fast.runner_up, std::log(fast.runner_up_r0), std::log(fast.runner_up_r1)});
     std::vector<Descent> runs;
-    for (std::size_t s = 0; s < starts.size() && static_cast<int>(s) < opt.starts; ++s) {
+    for (std::size_t s = 0; s < starts.size(); ++s) {
         double rho[2] = {starts[s].rho0, starts[s].rho1};
         ceres::GradientProblemSolver::Options o;
         o.line_search_direction_type = ceres::NONLINEAR_CONJUGATE_GRADIENT;

@@ -13,7 +13,7 @@ namespace cagd::fairness {
 namespace {
 
 // Bumped whenever a minimiser or the file layout changes, so stale caches are rebuilt.
-constexpr int kCacheFormat = 3;
+constexpr int kCacheFormat = 4;
 
 void require_angle(const char* who, double theta, const char* name) {
     if (!std::isfinite(theta) || std::abs(theta) > M_PI + 1e-12)
