@@ -7,7 +7,8 @@ packages=(
   cmake g++ make pkg-config
   libeigen3-dev          # linear algebra, point types
   libboost-dev libboost-math-dev   # Boost.Math quadrature/interpolators, Boost.Multiprecision (headers)
-  libceres-dev           # nonlinear least squares, gradient solvers
+  libceres-dev           # nonlinear least squares, gradient solvers (pseudo_energy reference CG)
+  libgoogle-glog-dev     # Ceres's logger; fairness/ silences its CG-restart warnings
   libnlopt-cxx-dev       # bounded/constrained minimisation
   libgtest-dev libgmock-dev        # unit tests
   libbenchmark-dev       # make bench

@@ -22,9 +22,11 @@ bool is_multiple_of_pi(double theta) {
 }
 
 void require_angles(const char* who, double theta0, double theta1) {
-    // The segment constructor states the domain; build one to validate.
-    (void)who;
-    UnitChordHermite(theta0, theta1, 1.0, 1.0);
+    for (double th : {theta0, theta1})
+        if (!std::isfinite(th) || std::abs(th) > M_PI + 1e-12)   // the domain of UnitChordHermite
+            fail_input(std::string("cagd::fairness::") + who,
+                       "angles must be finite and in [-pi, pi] (radians), got theta0 = " + full_precision(theta0) +
+                           ", theta1 = " + full_precision(theta1));
 }
 
 PseudoEnergyMinimum undefined_node(double theta0, double theta1) {
