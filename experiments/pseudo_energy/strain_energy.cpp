@@ -6,6 +6,7 @@
 // Also: the cusp trap (a fixed quadrature rule reports a false, low J near a cusp) and
 // 50-digit spot values of E, L, J (Boost.Multiprecision) against both double paths.
 #include <cmath>
+#include <limits>
 
 #include "analysis/curve_measures.hpp"
 #include "fairness/hermite_segment.hpp"
@@ -110,7 +111,7 @@ int main(int argc, char** argv) {
             out.row({eps, min_speed, ref.pseudo_energy, fast.pseudo_energy, fixed});
             // Near the cusp P' = A + Bt + Ct² cancels to |P'| = min_speed: its relative rounding
             // error is ~ε_mach·|B|/min_speed, which bounds what any double quadrature can agree to.
-            const double bound = 1e-13 + 10 * 2.2e-16 * seg.b().norm() / min_speed;
+            const double bound = 1e-13 + 10 * std::numeric_limits<double>::epsilon() * seg.b().norm() / min_speed;
             worst_graded = std::max(worst_graded, std::abs(fast.pseudo_energy - ref.pseudo_energy) / ref.pseudo_energy / bound);
             fixed_ratio = std::min(fixed_ratio, fixed / ref.pseudo_energy);
         }

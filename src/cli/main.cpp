@@ -128,9 +128,8 @@ int run_analyze(const std::string& path) {
 int run_energy(double theta0, double theta1, bool degrees) {
     const double k = degrees ? M_PI / 180.0 : 1.0;
     const double t0 = theta0 * k, t1 = theta1 * k;
-    if (!std::isfinite(t0) || !std::isfinite(t1) || std::abs(t0) > M_PI + 1e-12 || std::abs(t1) > M_PI + 1e-12)
-        fail_input("cagd energy", std::string("angles must be finite and in ") + (degrees ? "[-180, 180] degrees" : "[-pi, pi] radians") +
-                                      ", got theta0 = " + full_precision(theta0) + ", theta1 = " + full_precision(theta1));
+    fairness::require_tangent_angle(degrees ? "cagd energy (--deg converted to radians)" : "cagd energy", t0, "--theta0");
+    fairness::require_tangent_angle(degrees ? "cagd energy (--deg converted to radians)" : "cagd energy", t1, "--theta1");
     const fairness::PseudoEnergyMinimum m = fairness::minimize_pseudo_energy(t0, t1);
     if (fairness::is_undefined_node(t0, t1)) fail_input("cagd energy", m.outcome.message);
     if (!m.outcome.ok()) {

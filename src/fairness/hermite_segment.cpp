@@ -97,15 +97,16 @@ double wrap_angle(double theta) {
     return w;
 }
 
+void require_tangent_angle(const std::string& who, double theta, const char* name) {
+    if (!std::isfinite(theta) || std::abs(theta) > M_PI + kAngleSlack)
+        fail_input(who, std::string(name) + " must be a finite angle in [-pi, pi] (radians), got " + full_precision(theta));
+}
+
 UnitChordHermite::UnitChordHermite(double theta0, double theta1, double r0, double r1)
     : theta0_(theta0), theta1_(theta1), r0_(r0), r1_(r1) {
     const std::string who = "cagd::fairness::UnitChordHermite";
-    const auto check_angle = [&](double th, const char* name) {
-        if (!std::isfinite(th) || std::abs(th) > M_PI + kAngleSlack)
-            fail_input(who, std::string(name) + " must be a finite angle in [-pi, pi] (radians), got " + full_precision(th));
-    };
-    check_angle(theta0, "theta0");
-    check_angle(theta1, "theta1");
+    require_tangent_angle(who, theta0, "theta0");
+    require_tangent_angle(who, theta1, "theta1");
     if (!std::isfinite(r0) || !(r0 > 0.0)) fail_input(who, "r0 must be finite and > 0, got " + full_precision(r0));
     if (!std::isfinite(r1) || !(r1 > 0.0)) fail_input(who, "r1 must be finite and > 0, got " + full_precision(r1));
     u0_ = unit_direction(theta0);

@@ -43,6 +43,10 @@ const char* to_string(SegmentType t);
 // Maps any finite angle to (−π, π] (exact 2π periodicity of the tangent direction).
 double wrap_angle(double theta);
 
+// The tangent-angle domain of this module, [−π, π] with a slack of 1e-12 (see above): throws
+// InvalidInput("<who>: <name> must be …") for a non-finite angle or one outside it.
+void require_tangent_angle(const std::string& who, double theta, const char* name);
+
 class UnitChordHermite {
 public:
     // Throws InvalidInput for non-finite values, |θ| > π (+1e-12), r ≤ 0.

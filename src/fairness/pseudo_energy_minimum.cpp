@@ -22,11 +22,8 @@ bool is_multiple_of_pi(double theta) {
 }
 
 void require_angles(const char* who, double theta0, double theta1) {
-    for (double th : {theta0, theta1})
-        if (!std::isfinite(th) || std::abs(th) > M_PI + 1e-12)   // the domain of UnitChordHermite
-            fail_input(std::string("cagd::fairness::") + who,
-                       "angles must be finite and in [-pi, pi] (radians), got theta0 = " + full_precision(theta0) +
-                           ", theta1 = " + full_precision(theta1));
+    require_tangent_angle(std::string("cagd::fairness::") + who, theta0, "theta0");
+    require_tangent_angle(std::string("cagd::fairness::") + who, theta1, "theta1");
 }
 
 PseudoEnergyMinimum undefined_node(double theta0, double theta1) {

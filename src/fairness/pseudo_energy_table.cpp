@@ -15,11 +15,6 @@ namespace {
 // Bumped whenever a minimiser or the file layout changes, so stale caches are rebuilt.
 constexpr int kCacheFormat = 4;
 
-void require_angle(const char* who, double theta, const char* name) {
-    if (!std::isfinite(theta) || std::abs(theta) > M_PI + 1e-12)
-        fail_input(who, std::string(name) + " must be a finite angle in [-pi, pi] (radians), got " + full_precision(theta));
-}
-
 // Index i and weight u ∈ [0, 1) of θ in the periodically extended node list: θ lies between
 // node i and node (i + 1) mod n (adding 2π to the latter when it wraps).
 void locate(const std::vector<double>& nodes, double theta, int& i, double& u) {
@@ -226,8 +221,8 @@ PseudoEnergyTable PseudoEnergyTable::load_or_build(const std::string& path, cons
 
 TableValue PseudoEnergyTable::lookup(double theta0, double theta1, bool same_type_only) const {
     const char* who = "cagd::fairness::PseudoEnergyTable::lookup";
-    require_angle(who, theta0, "theta0");
-    require_angle(who, theta1, "theta1");
+    require_tangent_angle(who, theta0, "theta0");
+    require_tangent_angle(who, theta1, "theta1");
     if (is_undefined_node(theta0, theta1))
         fail_input(who, "(" + full_precision(theta0) + ", " + full_precision(theta1) +
                             ") is an undefined node (theta0, theta1 in {0, +-pi}): r0, r1 do not exist there (paper §4.1)");
@@ -288,7 +283,7 @@ AngleMinimumTable AngleMinimumTable::build(const AngleGrid& grid, int threads) {
 }
 
 std::pair<double, double> AngleMinimumTable::lookup(double theta) const {
-    require_angle("cagd::fairness::AngleMinimumTable::lookup", theta, "theta");
+    require_tangent_angle("cagd::fairness::AngleMinimumTable::lookup", theta, "theta");
     int i = 0;
     double u = 0.0;
     locate(nodes_, theta, i, u);
