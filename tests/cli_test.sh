@@ -56,5 +56,27 @@ awk -v a="$j1" -v b="$j2" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(a > 0 &&
 grep -q 'nodes' "$dir/progress.txt" || { echo "FAIL: energy-table progress line"; fails=$((fails+1)); }
 expect_bad "tangent without vec"  '0,0\n1,1\n2,0\n'    interpolate --end tangent --in "$dir/bad.csv" --out "$dir/o.csv"
 
+# pseudo_energy section 4.2 methods: the knot data of Table 3 through every method.
+printf 'x,y\n0,0\n2,-0.1\n1,-0.1\n3,0\n' > "$dir/knot.csv"
+for m in pseudo-spline cubic-a cubic-b hermite-a hermite-b; do
+  "$cagd" interpolate --method "$m" --in "$dir/knot.csv" --out "$dir/k.csv" --samples 4 || { echo "FAIL: interpolate $m"; fails=$((fails+1)); }
+  # u = 2 is the 9th sample: the curve passes through P_2 = (1, -0.1).
+  awk -F, 'NR==10 { exit !($1==2 && ($2-1)^2 < 1e-20 && ($3+0.1)^2 < 1e-20) }' "$dir/k.csv" || { echo "FAIL: $m misses P_2"; fails=$((fails+1)); }
+done
+"$cagd" interpolate --method pseudo-spline --optimize approx --table "$dir/t6.txt" --in "$dir/knot.csv" --out "$dir/k.csv" \
+  || { echo "FAIL: pseudo-spline with a table file"; fails=$((fails+1)); }
+"$cagd" analyze --in "$dir/knot.csv" --method pseudo-spline > "$dir/an.csv" 2>/dev/null || { echo "FAIL: analyze --in"; fails=$((fails+1)); }
+for q in length_integrated area_integrated length_from_tables area_from_tables; do
+  grep -q "^$q," "$dir/an.csv" || { echo "FAIL: analyze --in prints no $q"; fails=$((fails+1)); }
+done
+"$cagd" analyze --in "$dir/knot.csv" --method hermite-a 2>/dev/null | grep -q '^length_from_tables' && { echo "FAIL: tables for hermite-a"; fails=$((fails+1)); }
+expect_bad "hairpin (turn of pi)"  '0,0\n2,0\n1,0\n3,1\n' interpolate --method pseudo-spline --in "$dir/bad.csv" --out "$dir/o.csv"
+expect_bad "pseudo-spline 1 point" '0,0\n'               interpolate --method pseudo-spline --in "$dir/bad.csv" --out "$dir/o.csv"
+expect_bad "hermite-b 2 points"    '0,0\n1,1\n'          interpolate --method hermite-b --in "$dir/bad.csv" --out "$dir/o.csv"
+expect_bad "closed with 2 points"  '0,0\n1,1\n'          interpolate --method cubic-b --closed --in "$dir/bad.csv" --out "$dir/o.csv"
+expect_bad "unknown optimisation"  '0,0\n1,1\n2,0\n'    interpolate --method pseudo-spline --optimize fast --in "$dir/bad.csv" --out "$dir/o.csv"
+expect_bad "foreign table file"    '0,0\n1,1\n2,0\n'    interpolate --method pseudo-spline --table "$dir/bad.csv" --in "$dir/bad.csv" --out "$dir/o.csv"
+expect_bad "analyze --in, no method" '0,0\n1,1\n2,0\n'  analyze --in "$dir/bad.csv"
+
 if [ "$fails" -eq 0 ]; then echo "cli: all checks passed"; fi
 exit $((fails > 0))

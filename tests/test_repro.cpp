@@ -56,7 +56,7 @@ TEST(Repro, RejectsMalformedReferenceFiles) {
 TEST(Repro, EveryReferenceFileOfTheRepositoryLoads) {
     int files = 0;
     for (const auto& e : std::filesystem::recursive_directory_iterator(std::string(CAGD_SOURCE_DIR) + "/reference"))
-        if (e.path().extension() == ".csv") {
+        if (e.path().extension() == ".csv" && e.path().parent_path().filename() != "data") {   // data/: point tables
             EXPECT_NO_THROW(load_reference(e.path().string())) << e.path();
             ++files;
         }

@@ -1,6 +1,7 @@
 #include "analysis/curve_measures.hpp"
 
 #include <algorithm>
+#include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <cmath>
 #include <set>
 
@@ -67,6 +68,15 @@ double arc_length(const Curve& c, double a, double b, int pieces) {
 
 double arc_length(const Curve& c, int pieces) { return arc_length(c, c.t_min(), c.t_max(), pieces); }
 
+double adaptive_arc_length(const Curve& c, double rel_tol) {
+    const std::vector<double> br = c.breakpoints();
+    double total = 0.0;
+    for (std::size_t k = 0; k + 1 < br.size(); ++k)
+        total += boost::math::quadrature::gauss_kronrod<double, 31>::integrate([&](double t) { return speed(c, t); }, br[k], br[k + 1],
+                                                                               15, rel_tol);
+    return total;
+}
+
 numeric::RombergResult romberg_arc_length(const Curve& c, double rel_tol) {
     numeric::RombergResult total;
     const std::vector<double> br = c.breakpoints();
@@ -94,14 +104,19 @@ double enclosed_area(const Curve& c) {
                      c.breakpoints());
 }
 
-double bending_energy(const Curve& c, int pieces) {
+double bending_energy(const Curve& c, double a, double b, int pieces) {
+    if (!(a >= c.t_min() && b <= c.t_max() && a <= b))
+        fail_input("cagd::analysis::bending_energy", "interval [" + full_precision(a) + ", " +
+                                                         full_precision(b) + "] not inside the domain");
     return rule20().integrate_piecewise(
         [&](double t) {
             const double k = curvature(c, t);
             return k * k * speed(c, t);
         },
-        subdivided(c.breakpoints(), pieces));
+        subdivided(clipped_breaks(c, a, b), pieces));
 }
+
+double bending_energy(const Curve& c, int pieces) { return bending_energy(c, c.t_min(), c.t_max(), pieces); }
 
 double max_distance_same_parameter(const Curve& a, const Curve& b, double t0, double t1, int samples) {
     if (samples < 2) fail_input("cagd::analysis::max_distance_same_parameter", "samples must be >= 2");

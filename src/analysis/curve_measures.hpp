@@ -20,8 +20,12 @@ double signed_curvature(const Curve& c, double t);   // planar curves only
 double arc_length(const Curve& c, int pieces = 4);
 double arc_length(const Curve& c, double a, double b, int pieces = 4);
 numeric::RombergResult romberg_arc_length(const Curve& c, double rel_tol = 1e-13);
+// Adaptive Gauss–Kronrod (Boost.Math, 31 points, depth ≤ 15) per piece: robust where the speed
+// nearly vanishes (near-cusps), where Romberg's uniform refinement needs millions of evaluations.
+double adaptive_arc_length(const Curve& c, double rel_tol = 1e-10);
 double enclosed_area(const Curve& c);                  // planar; signed, CCW positive
 double bending_energy(const Curve& c, int pieces = 4);
+double bending_energy(const Curve& c, double a, double b, int pieces = 4);
 
 // max_t |a(t) − b(t)| over `samples_per_piece` uniform samples between the breakpoints of
 // both curves, on the common parameter interval. The curves must share the parameter.

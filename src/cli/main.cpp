@@ -2,7 +2,10 @@
 //   cagd interpolate --method s-spline|b2-spline|cubic-bspline (--m M | --m-vector LIST)
 //                    [--end natural|tangent|bessel] [--start-tangent X,Y] [--end-tangent X,Y]
 //                    [--rule locality|I|IIa|fmill] [--closed] [--samples N] --in P.csv --out C.csv
+//   cagd interpolate --method pseudo-spline [--optimize none|exact|approx] [--table T]
+//                    | cubic-a | cubic-b | hermite-a | hermite-b  [--closed] --in P.csv --out C.csv
 //   cagd analyze CURVE.csv
+//   cagd analyze --in P.csv --method M [--optimize O] [--table T] [--closed]
 // Bad input: one line on stderr, exit code 2.
 #include <CLI/CLI.hpp>
 #include <cmath>
@@ -15,6 +18,7 @@
 #include "core/errors.hpp"
 #include "core/point_csv.hpp"
 #include "fairness/pseudo_energy_table.hpp"
+#include "fairness/pseudo_spline.hpp"
 #include "locality/locality_spline.hpp"
 #include "repro/csv.hpp"
 
@@ -125,6 +129,53 @@ int run_analyze(const std::string& path) {
     return 0;
 }
 
+bool is_section42_method(const std::string& m) {
+    return m == "pseudo-spline" || m == "cubic-a" || m == "cubic-b" || m == "hermite-a" || m == "hermite-b";
+}
+
+// The pseudo-energy tables for the pseudo-spline: a file written by `cagd energy-table`, or the
+// 36-node fast table built in memory (about 0.2 s on two threads), and J(θ), θ1(θ) derived from it.
+fairness::PseudoSplineTables load_tables(const std::string& table_path) {
+    return fairness::PseudoSplineTables::from(table_path.empty() ? fairness::PseudoEnergyTable::build({36, fairness::NodePlacement::periodic},
+                                                                                                     fairness::TableMethod::fast)
+                                                                 : fairness::PseudoEnergyTable::load(table_path));
+}
+
+void print_integrated(const spline::PiecewiseHermiteCurve& c);
+
+// Length and area of a curve through the points: direct integration always (Romberg arc length
+// to 1e-13, exact polynomial area), and from the L and S tables for the pseudo-spline (eq 16–21).
+int run_analyze_method(const std::string& in_path, const std::string& method, const std::string& optimize, const std::string& table_path,
+                       bool closed) {
+    const PointList points = read_points_csv(in_path);
+    const auto mode = fairness::parse_tangent_optimization(optimize);
+    const auto m = fairness::parse_interpolation_method(method);
+    if (m != fairness::InterpolationMethod::pseudo_spline) {
+        const spline::PiecewiseHermiteCurve c = fairness::section42_interpolant(points, m, closed, fairness::ExactOracle{}, mode);
+        print_integrated(c);
+        return 0;
+    }
+    const fairness::PseudoSplineTables t = load_tables(table_path);
+    const fairness::PseudoSpline ps = fairness::pseudo_spline(points, t.oracle(), mode, closed);
+    print_integrated(ps.curve);
+    std::cout << "length_from_tables," << repro::format_number(ps.length_from_tables(), 12) << "\n"
+              << "area_from_tables," << repro::format_number(ps.area_from_tables(), 12) << "\n"
+              << "pseudo_energy_from_tables," << repro::format_number(ps.pseudo_energy_from_tables(), 12) << "\n";
+    std::cerr << "cagd analyze: areas are signed (counter-clockwise positive); an open curve is closed by the line from its last point to its first\n";
+    return 0;
+}
+
+void print_integrated(const spline::PiecewiseHermiteCurve& c) {
+    // Area enclosed by the curve, closed by the straight line from the last point to the first.
+    const Eigen::MatrixXd& nodes = c.nodes();
+    const Eigen::Index last = nodes.rows() - 1;
+    const double closing = 0.5 * (nodes(last, 0) * nodes(0, 1) - nodes(last, 1) * nodes(0, 0));
+    std::cout << "quantity,value\n"
+              << "spans," << c.spans() << "\n"
+              << "length_integrated," << repro::format_number(analysis::romberg_arc_length(c).value, 12) << "\n"
+              << "area_integrated," << repro::format_number(analysis::enclosed_area(c) + closing, 12) << "\n";
+}
+
 int run_energy(double theta0, double theta1, bool degrees) {
     const double k = degrees ? M_PI / 180.0 : 1.0;
     const double t0 = theta0 * k, t1 = theta1 * k;
@@ -165,7 +216,11 @@ int main(int argc, char** argv) {
     std::string start_tangent, end_tangent;
     int m = -1, samples = 16;
     bool closed = false;
-    interp->add_option("--method", method, "s-spline | b2-spline | cubic-bspline")->check(CLI::IsMember({"s-spline", "b2-spline", "cubic-bspline"}));
+    std::string optimize = "exact", table_path;
+    interp->add_option("--method", method, "s-spline | b2-spline | cubic-bspline (sb2_locality); pseudo-spline | cubic-a | cubic-b | hermite-a | hermite-b (pseudo_energy section 4.2)")
+        ->check(CLI::IsMember({"s-spline", "b2-spline", "cubic-bspline", "pseudo-spline", "cubic-a", "cubic-b", "hermite-a", "hermite-b"}));
+    interp->add_option("--optimize", optimize, "pseudo-spline tangent optimisation: none | exact | approx (Table 4)")->check(CLI::IsMember({"none", "exact", "approx"}));
+    interp->add_option("--table", table_path, "pseudo-energy table written by cagd energy-table (default: the 36-node fast table, built in memory)");
     auto* m_opt = interp->add_option("--m", m, "locality m >= 0 for every segment (eq 12)");
     auto* mv_opt = interp->add_option("--m-vector", m_vector, "one m per segment, pairs as l:r, e.g. 1,2,1:3");
     m_opt->excludes(mv_opt);
@@ -180,7 +235,16 @@ int main(int argc, char** argv) {
 
     auto* analyze = app.add_subcommand("analyze", "Length, enclosed area, curvature extrema and bending energy of a curve CSV");
     std::string curve_path;
-    analyze->add_option("curve", curve_path, "curve CSV as written by cagd interpolate")->required();
+    std::string an_in, an_method, an_optimize = "exact", an_table;
+    bool an_closed = false;
+    auto* an_curve = analyze->add_option("curve", curve_path, "curve CSV as written by cagd interpolate (sample-based measures)");
+    auto* an_in_opt = analyze->add_option("--in", an_in, "points CSV: build the curve with --method and integrate it exactly");
+    analyze->add_option("--method", an_method, "with --in: pseudo-spline | cubic-a | cubic-b | hermite-a | hermite-b")
+        ->check(CLI::IsMember({"pseudo-spline", "cubic-a", "cubic-b", "hermite-a", "hermite-b"}));
+    analyze->add_option("--optimize", an_optimize, "pseudo-spline tangent optimisation: none | exact | approx")->check(CLI::IsMember({"none", "exact", "approx"}));
+    analyze->add_option("--table", an_table, "pseudo-energy table written by cagd energy-table (default: 36-node fast table)");
+    analyze->add_flag("--closed", an_closed, "closed curve (with --in)");
+    an_curve->excludes(an_in_opt);
 
     auto* energy = app.add_subcommand("energy", "Minimum pseudo-energy J(theta0, theta1) of a unit-chord cubic Hermite segment (pseudo_energy eq 8), exact computation");
     double theta0 = 0, theta1 = 0;
@@ -206,10 +270,28 @@ int main(int argc, char** argv) {
         return 2;
     }
     try {
-        if (*analyze) return run_analyze(curve_path);
+        if (*analyze) {
+            if (!an_in.empty()) {
+                if (an_method.empty()) fail_input("cagd analyze", "--in needs --method");
+                return run_analyze_method(an_in, an_method, an_optimize, an_table, an_closed);
+            }
+            if (curve_path.empty()) fail_input("cagd analyze", "give a curve CSV or --in POINTS --method M");
+            return run_analyze(curve_path);
+        }
         if (*energy) return run_energy(theta0, theta1, degrees);
         if (*table) return run_energy_table(grid_n, placement, table_method, threads, table_out);
         const PointList points = read_points_csv(in_path);
+        if (method == "pseudo-spline") {
+            const fairness::PseudoSplineTables t = load_tables(table_path);
+            write_curve(fairness::pseudo_spline(points, t.oracle(), fairness::parse_tangent_optimization(optimize), closed).curve, samples, out_path);
+            return 0;
+        }
+        if (is_section42_method(method)) {   // the four comparison curves need no table
+            write_curve(fairness::section42_interpolant(points, fairness::parse_interpolation_method(method), closed, fairness::ExactOracle{},
+                                                        fairness::TangentOptimization::none),
+                        samples, out_path);
+            return 0;
+        }
         if (method == "cubic-bspline") {
             write_curve(locality::cubic_bspline_interpolant(points, closed), samples, out_path);
             return 0;

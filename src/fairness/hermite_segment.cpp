@@ -12,7 +12,6 @@ namespace cagd::fairness {
 
 namespace {
 
-constexpr double kAngleSlack = 1e-12;
 constexpr double kCuspSpeed = 1e-13;   // relative to 1 + r0 + r1
 
 double cross(const Eigen::Vector2d& p, const Eigen::Vector2d& q) { return p.x() * q.y() - p.y() * q.x(); }
@@ -91,22 +90,31 @@ const char* to_string(SegmentType t) {
 }
 
 double wrap_angle(double theta) {
+    // Fast path (differences of two wrapped angles, the common case): one shift by 2π.
+    if (theta > -M_PI && theta <= M_PI) return theta;
+    if (theta > M_PI && theta <= 3.0 * M_PI) {
+        const double w = theta - 2.0 * M_PI;
+        if (w > -M_PI) return w;
+    }
+    if (theta <= -M_PI && theta > -3.0 * M_PI) {
+        const double w = theta + 2.0 * M_PI;
+        if (w <= M_PI && w > -M_PI) return w;
+    }
     if (!std::isfinite(theta)) fail_input("cagd::fairness::wrap_angle", "angle must be finite, got " + full_precision(theta));
     double w = std::remainder(theta, 2.0 * M_PI);   // in [−π, π]
     if (w <= -M_PI) w += 2.0 * M_PI;
     return w;
 }
 
-void require_tangent_angle(const std::string& who, double theta, const char* name) {
-    if (!std::isfinite(theta) || std::abs(theta) > M_PI + kAngleSlack)
-        fail_input(who, std::string(name) + " must be a finite angle in [-pi, pi] (radians), got " + full_precision(theta));
+void fail_tangent_angle(const char* who, double theta, const char* name) {
+    fail_input(who, std::string(name) + " must be a finite angle in [-pi, pi] (radians), got " + full_precision(theta));
 }
 
 UnitChordHermite::UnitChordHermite(double theta0, double theta1, double r0, double r1)
     : theta0_(theta0), theta1_(theta1), r0_(r0), r1_(r1) {
     const std::string who = "cagd::fairness::UnitChordHermite";
-    require_tangent_angle(who, theta0, "theta0");
-    require_tangent_angle(who, theta1, "theta1");
+    require_tangent_angle(who.c_str(), theta0, "theta0");
+    require_tangent_angle(who.c_str(), theta1, "theta1");
     if (!std::isfinite(r0) || !(r0 > 0.0)) fail_input(who, "r0 must be finite and > 0, got " + full_precision(r0));
     if (!std::isfinite(r1) || !(r1 > 0.0)) fail_input(who, "r1 must be finite and > 0, got " + full_precision(r1));
     u0_ = unit_direction(theta0);

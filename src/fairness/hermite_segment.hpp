@@ -29,6 +29,7 @@
 // fast path (20-point Gauss–Legendre on the same pieces) agrees with it to ~1e-14 relative on
 // smooth segments (tests and the pseudo_energy experiments measure this).
 #include <Eigen/Dense>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -45,7 +46,11 @@ double wrap_angle(double theta);
 
 // The tangent-angle domain of this module, [−π, π] with a slack of 1e-12 (see above): throws
 // InvalidInput("<who>: <name> must be …") for a non-finite angle or one outside it.
-void require_tangent_angle(const std::string& who, double theta, const char* name);
+// Inline: the check is on the hot path of every table lookup; the message is built only on failure.
+[[noreturn]] void fail_tangent_angle(const char* who, double theta, const char* name);
+inline void require_tangent_angle(const char* who, double theta, const char* name) {
+    if (!(std::abs(theta) <= M_PI + 1e-12)) fail_tangent_angle(who, theta, name);   // also catches NaN
+}
 
 class UnitChordHermite {
 public:

@@ -22,8 +22,9 @@ bool is_multiple_of_pi(double theta) {
 }
 
 void require_angles(const char* who, double theta0, double theta1) {
-    require_tangent_angle(std::string("cagd::fairness::") + who, theta0, "theta0");
-    require_tangent_angle(std::string("cagd::fairness::") + who, theta1, "theta1");
+    const std::string w = std::string("cagd::fairness::") + who;
+    require_tangent_angle(w.c_str(), theta0, "theta0");
+    require_tangent_angle(w.c_str(), theta1, "theta1");
 }
 
 PseudoEnergyMinimum undefined_node(double theta0, double theta1) {
@@ -387,13 +388,18 @@ PseudoEnergyMinimum measure_segment(double theta0, double theta1, double r0, dou
 
 AngleMinimum minimize_over_end_angle(double theta, double scan_step) {
     require_angles("minimize_over_end_angle", theta, 0.0);
-    if (!(scan_step > 0.0 && scan_step <= 0.5))
-        fail_input("cagd::fairness::minimize_over_end_angle", "scan_step must be in (0, 0.5], got " + full_precision(scan_step));
     const auto j_of = [&](double theta1) {
         const PseudoEnergyMinimum m = minimize_pseudo_energy(theta, theta1);
         if (is_undefined_node(theta, theta1)) return m.pseudo_energy;   // 0 at (0, 0), +∞ elsewhere
         return m.outcome.ok() ? m.pseudo_energy : kInf;
     };
+    return minimize_over_end_angle(theta, j_of, scan_step);
+}
+
+AngleMinimum minimize_over_end_angle(double theta, const std::function<double(double)>& j_of, double scan_step) {
+    require_angles("minimize_over_end_angle", theta, 0.0);
+    if (!(scan_step > 0.0 && scan_step <= 0.5))
+        fail_input("cagd::fairness::minimize_over_end_angle", "scan_step must be in (0, 0.5], got " + full_precision(scan_step));
     const int n = static_cast<int>(std::ceil(2 * M_PI / scan_step));
     std::vector<double> t(static_cast<std::size_t>(n + 1)), v(static_cast<std::size_t>(n + 1));
     for (int i = 0; i <= n; ++i) {

@@ -35,6 +35,7 @@
 // seeds too), and a minimum outside the box — r0 → 0 as (θ0, θ1) → (±π, 0) — is still reached.
 // Failure modes: a minimiser that ends at r < 1e-8 or r > 1e8 returns no_solution ("minimiser
 // runs off to the boundary"); a descent that does not converge returns no_convergence.
+#include <functional>
 #include <vector>
 
 #include "core/errors.hpp"
@@ -99,5 +100,8 @@ struct AngleMinimum {
     Outcome outcome;
 };
 AngleMinimum minimize_over_end_angle(double theta, double scan_step = M_PI / 90);
+// The same scan and Brent refinement on a given J(θ, ·) (e.g. an interpolated table); j_of returns
+// +∞ where J is undefined.
+AngleMinimum minimize_over_end_angle(double theta, const std::function<double(double)>& j_of, double scan_step);
 
 }  // namespace cagd::fairness

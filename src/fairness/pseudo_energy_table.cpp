@@ -3,12 +3,18 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <thread>
+#include <unistd.h>
 
 namespace cagd::fairness {
+
+namespace {
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+}
 
 namespace {
 
@@ -17,15 +23,19 @@ constexpr int kCacheFormat = 4;
 
 // Index i and weight u ∈ [0, 1) of θ in the periodically extended node list: θ lies between
 // node i and node (i + 1) mod n (adding 2π to the latter when it wraps).
-void locate(const std::vector<double>& nodes, double theta, int& i, double& u) {
+// Cell of `theta` in the equally spaced periodic `nodes` (first node x0, spacing h = 1 / inv_h):
+// i = the last node ≤ theta (wrapping to the last cell for theta beyond the last node) and the
+// fraction u ∈ [0, 1] across the cell.
+inline void locate(const std::vector<double>& nodes, double inv_h, double theta, int& i, double& u) {
     const int n = static_cast<int>(nodes.size());
-    if (theta < nodes.front()) theta += 2 * M_PI;
-    const auto it = std::upper_bound(nodes.begin(), nodes.end(), theta);
-    i = static_cast<int>(it - nodes.begin()) - 1;
+    const double x0 = nodes.front();
+    if (theta < x0) theta += 2 * M_PI;
+    i = std::clamp(static_cast<int>((theta - x0) * inv_h), 0, n - 1);   // a guess; the tests make it exact
+    if (i + 1 < n && nodes[static_cast<std::size_t>(i + 1)] <= theta) ++i;
+    else if (i > 0 && nodes[static_cast<std::size_t>(i)] > theta) --i;
     const double left = nodes[static_cast<std::size_t>(i)];
-    const double right = i + 1 < n ? nodes[static_cast<std::size_t>(i + 1)] : nodes.front() + 2 * M_PI;
-    u = right > left ? (theta - left) / (right - left) : 0.0;
-    u = std::clamp(u, 0.0, 1.0);
+    const double right = i + 1 < n ? nodes[static_cast<std::size_t>(i + 1)] : x0 + 2 * M_PI;
+    u = std::clamp((theta - left) / (right - left), 0.0, 1.0);
 }
 
 // Parallel loop over [0, count) with `threads` workers taking indices by striding (deterministic).
@@ -148,7 +158,17 @@ PseudoEnergyTable PseudoEnergyTable::build(const AngleGrid& grid, TableMethod me
                 t.values_[static_cast<std::size_t>(i * n + j)] = m;
             }
     }
+    t.pack();
     return t;
+}
+
+void PseudoEnergyTable::pack() {
+    packed_.resize(values_.size());
+    for (std::size_t k = 0; k < values_.size(); ++k) {
+        const PseudoEnergyMinimum& m = values_[k];
+        const bool usable = m.type != SegmentType::x && m.outcome.ok();
+        packed_[k] = {m.pseudo_energy, m.r0, m.r1, m.length, m.area, usable ? m.type : SegmentType::x};
+    }
 }
 
 std::string PseudoEnergyTable::header_line() const {
@@ -159,7 +179,8 @@ std::string PseudoEnergyTable::header_line() const {
 }
 
 void PseudoEnergyTable::save(const std::string& path) const {
-    const std::string tmp = path + ".tmp";
+    // A temporary name of this process, renamed at the end: concurrent builders never mix their lines.
+    const std::string tmp = path + ".tmp." + std::to_string(::getpid());
     {
         std::ofstream out(tmp);
         if (!out) fail_input("cagd::fairness::PseudoEnergyTable::save", "cannot write '" + tmp + "'");
@@ -179,25 +200,22 @@ void PseudoEnergyTable::save(const std::string& path) const {
     std::rename(tmp.c_str(), path.c_str());
 }
 
-PseudoEnergyTable PseudoEnergyTable::load_or_build(const std::string& path, const AngleGrid& grid, TableMethod method,
-                                                   int threads) {
-    PseudoEnergyTable t;
-    t.grid_ = grid;
-    t.method_ = method;
-    t.nodes_ = grid.nodes();
-    std::ifstream in(path);
+namespace {
+
+// Reads the node rows after the header line; true when all n² rows were read.
+bool read_node_rows(std::istream& in, int n, std::vector<PseudoEnergyMinimum>& values) {
     std::string line;
-    if (in && std::getline(in, line) && line == t.header_line() && std::getline(in, line)) {
-        const int n = grid.n;
-        t.values_.assign(static_cast<std::size_t>(n * n), PseudoEnergyMinimum{});
-        long read = 0;
-        while (std::getline(in, line)) {
-            std::istringstream s(line);
-            std::string f[14];
-            for (auto& x : f) std::getline(s, x, ',');
+    if (!std::getline(in, line)) return false;   // column names
+    values.assign(static_cast<std::size_t>(n * n), PseudoEnergyMinimum{});
+    long read = 0;
+    while (std::getline(in, line)) {
+        std::istringstream s(line);
+        std::string f[14];
+        for (auto& x : f) std::getline(s, x, ',');
+        try {
             const int i = std::stoi(f[0]), j = std::stoi(f[1]);
-            if (i < 0 || j < 0 || i >= n || j >= n) break;
-            PseudoEnergyMinimum& m = t.values_[static_cast<std::size_t>(i * n + j)];
+            if (i < 0 || j < 0 || i >= n || j >= n) return false;
+            PseudoEnergyMinimum& m = values[static_cast<std::size_t>(i * n + j)];
             m.theta0 = std::stod(f[2]);
             m.theta1 = std::stod(f[3]);
             m.pseudo_energy = std::stod(f[4]);
@@ -210,12 +228,55 @@ PseudoEnergyTable PseudoEnergyTable::load_or_build(const std::string& path, cons
             m.local_minima = std::stoi(f[11]);
             m.runner_up = std::stod(f[12]);
             m.outcome.status = static_cast<Status>(std::stoi(f[13]));
-            ++read;
+        } catch (const std::exception&) {
+            return false;
         }
-        if (read == static_cast<long>(n) * n) return t;
+        ++read;
+    }
+    return read == static_cast<long>(n) * n;
+}
+
+}  // namespace
+
+PseudoEnergyTable PseudoEnergyTable::load_or_build(const std::string& path, const AngleGrid& grid, TableMethod method,
+                                                   int threads) {
+    PseudoEnergyTable t;
+    t.grid_ = grid;
+    t.method_ = method;
+    t.nodes_ = grid.nodes();
+    std::ifstream in(path);
+    std::string line;
+    if (in && std::getline(in, line) && line == t.header_line() && read_node_rows(in, grid.n, t.values_)) {
+        t.pack();
+        return t;
     }
     t = build(grid, method, threads, method == TableMethod::fast);
     t.save(path);
+    return t;
+}
+
+PseudoEnergyTable PseudoEnergyTable::load(const std::string& path) {
+    const char* who = "cagd::fairness::PseudoEnergyTable::load";
+    std::ifstream in(path);
+    if (!in) fail_input(who, "cannot open '" + path + "'");
+    std::string line;
+    std::getline(in, line);
+    std::istringstream h(line);
+    std::string hash, cagd, paper, table, format, grid_word, placement_word, placement, method_word, method;
+    int version = 0, n = 0;
+    h >> hash >> cagd >> paper >> table >> format >> version >> grid_word >> n >> placement_word >> placement >> method_word >> method;
+    if (hash != "#" || grid_word != "grid" || placement_word != "placement" || method_word != "method")
+        fail_input(who, "'" + path + "' is not a table written by cagd energy-table (first line: '" + line + "')");
+    if (version != kCacheFormat)
+        fail_input(who, "'" + path + "' has table format " + std::to_string(version) + ", this build reads format " +
+                            std::to_string(kCacheFormat) + "; rebuild it with cagd energy-table");
+    if (n < 2) fail_input(who, "'" + path + "': grid must be >= 2, got " + std::to_string(n));
+    PseudoEnergyTable t;
+    t.grid_ = AngleGrid{n, parse_node_placement(placement)};
+    t.method_ = method == "reference" ? TableMethod::reference : method == "nlopt" ? TableMethod::nlopt : TableMethod::fast;
+    t.nodes_ = t.grid_.nodes();
+    if (!read_node_rows(in, n, t.values_)) fail_input(who, "'" + path + "': expected " + std::to_string(n * n) + " well-formed node rows");
+    t.pack();
     return t;
 }
 
@@ -229,18 +290,19 @@ TableValue PseudoEnergyTable::lookup(double theta0, double theta1, bool same_typ
     const int n = grid_.n;
     int i = 0, j = 0;
     double u = 0.0, v = 0.0;
-    locate(nodes_, theta0, i, u);
-    locate(nodes_, theta1, j, v);
+    const double inv_h = 1.0 / (nodes_[1] - nodes_[0]);
+    locate(nodes_, inv_h, theta0, i, u);
+    locate(nodes_, inv_h, theta1, j, v);
     const int i1 = (i + 1) % n, j1 = (j + 1) % n;
     const int ci[4] = {i, i1, i, i1}, cj[4] = {j, j, j1, j1};
     const double w[4] = {(1 - u) * (1 - v), u * (1 - v), (1 - u) * v, u * v};
-    const PseudoEnergyMinimum& nearest = node(u < 0.5 ? i : i1, v < 0.5 ? j : j1);
-    const SegmentType want = same_type_only ? nearest.type : SegmentType::x;
+    const auto at = [&](int a, int b) -> const TableValue& { return packed_[static_cast<std::size_t>(a * n + b)]; };
+    const SegmentType want = same_type_only ? at(u < 0.5 ? i : i1, v < 0.5 ? j : j1).type : SegmentType::x;
     TableValue out;
     double wsum = 0.0;
     for (int k = 0; k < 4; ++k) {
-        const PseudoEnergyMinimum& m = node(ci[k], cj[k]);
-        if (m.type == SegmentType::x || !m.outcome.ok()) continue;
+        const TableValue& m = at(ci[k], cj[k]);
+        if (m.type == SegmentType::x) continue;   // undefined or failed node
         if (want != SegmentType::x && m.type != want) continue;
         wsum += w[k];
         out.pseudo_energy += w[k] * m.pseudo_energy;
@@ -253,11 +315,8 @@ TableValue PseudoEnergyTable::lookup(double theta0, double theta1, bool same_typ
         // Only possible when every corner of the cell is undefined or of the other type with
         // zero weight: fall back to the nearest defined corner of the wanted type.
         for (int k = 0; k < 4; ++k) {
-            const PseudoEnergyMinimum& m = node(ci[k], cj[k]);
-            if (m.type != SegmentType::x && m.outcome.ok() && (want == SegmentType::x || m.type == want)) {
-                out = {m.pseudo_energy, m.r0, m.r1, m.length, m.area, m.type};
-                return out;
-            }
+            const TableValue& m = at(ci[k], cj[k]);
+            if (m.type != SegmentType::x && (want == SegmentType::x || m.type == want)) return m;
         }
         fail_input(who, "no defined table node near (" + full_precision(theta0) + ", " + full_precision(theta1) + ")");
     }
@@ -282,15 +341,38 @@ AngleMinimumTable AngleMinimumTable::build(const AngleGrid& grid, int threads) {
     return t;
 }
 
+AngleMinimumTable AngleMinimumTable::from_energy_table(const PseudoEnergyTable& table) {
+    AngleMinimumTable t;
+    t.grid_ = table.grid();
+    t.nodes_ = table.nodes();
+    for (double theta : t.nodes_) {
+        const auto j_of = [&](double theta1) {
+            if (is_undefined_node(theta, theta1)) return std::abs(theta) + std::abs(theta1) == 0.0 ? 0.0 : kInfinity;
+            return table.lookup(theta, theta1).pseudo_energy;
+        };
+        t.values_.push_back(minimize_over_end_angle(theta, j_of, M_PI / 720));
+    }
+    return t;
+}
+
+double AngleMinimumTable::pseudo_energy(double theta) const {
+    require_tangent_angle("cagd::fairness::AngleMinimumTable::pseudo_energy", theta, "theta");
+    int i = 0;
+    double u = 0.0;
+    locate(nodes_, 1.0 / (nodes_[1] - nodes_[0]), theta, i, u);
+    const std::size_t a = static_cast<std::size_t>(i), b = static_cast<std::size_t>((i + 1) % static_cast<int>(nodes_.size()));
+    return (1 - u) * values_[a].pseudo_energy + u * values_[b].pseudo_energy;
+}
+
 std::pair<double, double> AngleMinimumTable::lookup(double theta) const {
     require_tangent_angle("cagd::fairness::AngleMinimumTable::lookup", theta, "theta");
     int i = 0;
     double u = 0.0;
-    locate(nodes_, theta, i, u);
+    locate(nodes_, 1.0 / (nodes_[1] - nodes_[0]), theta, i, u);
     const std::size_t a = static_cast<std::size_t>(i), b = static_cast<std::size_t>((i + 1) % static_cast<int>(nodes_.size()));
     const double j = (1 - u) * values_[a].pseudo_energy + u * values_[b].pseudo_energy;
     // θ1 is an angle: interpolate the wrapped difference.
-    const double d = std::remainder(values_[b].theta1 - values_[a].theta1, 2 * M_PI);
+    const double d = wrap_angle(values_[b].theta1 - values_[a].theta1);
     return {j, wrap_angle(values_[a].theta1 + u * d)};
 }
 

@@ -62,6 +62,9 @@ public:
     static PseudoEnergyTable build(const AngleGrid& grid, TableMethod method, int threads = 2, bool use_symmetry = true,
                                    const std::function<void(long, long)>& progress = {});
     // Loads `path` when it holds a table of this grid and method, else builds and saves it.
+    // Loads a table written by save() / `cagd energy-table`; grid, placement and method come from
+    // its first line. Throws InvalidInput for a missing, foreign, truncated or other-format file.
+    static PseudoEnergyTable load(const std::string& path);
     static PseudoEnergyTable load_or_build(const std::string& path, const AngleGrid& grid, TableMethod method,
                                            int threads = 2);
 
@@ -83,17 +86,24 @@ private:
     TableMethod method_ = TableMethod::fast;
     std::vector<double> nodes_;
     std::vector<PseudoEnergyMinimum> values_;
+    std::vector<TableValue> packed_;   // what lookup reads: J, r0, r1, L, S, type (x = unusable), 48 bytes a node
+    void pack();
 };
 
-// J(θ) and θ1(θ) of eq (11) at the nodes of a grid (exact minimisation over θ1 at each node),
-// and their linear interpolation.
+// J(θ) and θ1(θ) of eq (11) at the nodes of a grid, and their linear interpolation. Two builds:
+//   build            exact minimisation over θ1 at each node (fast minimiser, scan step 2°, Brent);
+//   from_energy_table the paper's construction (section 4.1): at each node Θ_i, minimise the
+//                    *interpolated* J(Θ_i, θ1) of the 2-D table over θ1 (scan step 0.25°, Brent),
+//                    so J(θ) inherits the table's interpolation error. Cheap (no quadrature).
 class AngleMinimumTable {
 public:
     static AngleMinimumTable build(const AngleGrid& grid, int threads = 2);
+    static AngleMinimumTable from_energy_table(const PseudoEnergyTable& table);
     const std::vector<double>& nodes() const { return nodes_; }
     const std::vector<AngleMinimum>& values() const { return values_; }
     // Linear interpolation; throws InvalidInput outside [−π, π]. Returns {J(θ), θ1(θ)}.
     std::pair<double, double> lookup(double theta) const;
+    double pseudo_energy(double theta) const;   // J(θ) alone (the hot path of eq 12), same interpolation
 
 private:
     AngleGrid grid_;

@@ -92,6 +92,10 @@ std::string ArtifactRun::cache_path(const std::string& file_name) const {
     return (dir / file_name).string();
 }
 
+std::string ArtifactRun::reference_path(const std::string& file_name) const {
+    return root_ + "/reference/" + paper_ + "/" + file_name;
+}
+
 std::string ArtifactRun::data_path(const std::string& file_name) const {
     return out_dir_ + "/" + file_name;
 }
@@ -100,10 +104,19 @@ CsvWriter ArtifactRun::table(const std::string& file_name, const std::vector<std
     return CsvWriter(data_path(file_name), header);
 }
 
+void ArtifactRun::timing(const std::string& short_id, const std::string& description, const std::vector<std::string>& rows_used,
+                         double paper_ratio, double lo, double hi, double ours) {
+    for (const auto& r : rows_used) {
+        reference_.row(paper_ + "." + r);   // throws if the row does not exist
+        timing_rows_.insert(paper_ + "." + r);
+    }
+    timings_.push_back({paper_ + "." + short_id, description, paper_ratio, lo, hi, ours});
+}
+
 int ArtifactRun::finish() {
     // A claim of the reference file that was never checked is a failure, never a silent skip.
     for (const auto& row : reference_.rows) {
-        bool seen = false;
+        bool seen = timing_rows_.count(row.id) > 0;
         for (const auto& r : records_) seen = seen || (r.kind == "claim" && r.id == row.id);
         if (!seen)
             records_.push_back({"claim", row.id, row.description + " (NOT COMPUTED by the experiment)",
@@ -127,6 +140,21 @@ int ArtifactRun::finish() {
         for (const auto& line : reference_.provenance) meta << "provenance: " << line << "\n";
         for (const auto& [name, caption] : figures_) meta << "figure: " << name << "|" << caption << "\n";
         for (const auto& n : notes_) meta << "note: " << n << "\n";
+        for (const auto& t : timings_)
+            meta << "timing: " << t.id << "|" << t.description << "|" << format_number(t.paper, 4) << "|" << format_number(t.lo, 4) << "|"
+                 << format_number(t.hi, 4) << "\n";
+    }
+    if (!timings_.empty()) {
+        const std::string dir = check_mode_ ? out_dir_ : root_ + "/results/timing";
+        std::filesystem::create_directories(dir);
+        CsvWriter w(dir + "/" + paper_ + "_" + artifact_ + ".csv", {"id", "description", "paper_ratio", "interval_lo", "interval_hi", "ours", "within"});
+        for (const auto& t : timings_)
+            w.row_text({t.id, t.description, format_number(t.paper, 4), format_number(t.lo, 4), format_number(t.hi, 4), format_number(t.ours, 4),
+                        t.ours >= t.lo && t.ours <= t.hi ? "yes" : "no"});
+        for (const auto& t : timings_)
+            std::cout << "timing " << t.id << ": ours " << format_number(t.ours, 4) << ", paper " << format_number(t.paper, 4) << " in ["
+                      << format_number(t.lo, 4) << ", " << format_number(t.hi, 4) << "]: " << (t.ours >= t.lo && t.ours <= t.hi ? "within" : "outside")
+                      << "\n";
     }
     int counts[3] = {0, 0, 0};
     for (const auto& r : records_) {

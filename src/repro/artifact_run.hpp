@@ -55,9 +55,19 @@ public:
     void validate(const std::string& short_id, const std::string& description, double fast,
                   double reference_value, double tolerance, const std::string& tolerance_reason);
 
+    // A timing claim (DESIGN.md: timing is never pass/fail and never byte-stable): `ours` is
+    // tested against the interval [lo, hi] the paper's printed digits allow. It is written to
+    // <root>/results/timing/<paper>_<artifact>.csv (not committed, not compared by CI) and listed
+    // in the report without the measured value; the reference rows in `rows_used` (the printed
+    // times it is derived from) count as checked.
+    void timing(const std::string& short_id, const std::string& description, const std::vector<std::string>& rows_used,
+                double paper_ratio, double lo, double hi, double ours);
+
     void figure(const std::string& name, const std::string& caption);
     void note(const std::string& text);
     std::string data_path(const std::string& file_name) const;   // where to write data
+    // reference/<paper>/<file>: data transcribed from the paper (e.g. point tables).
+    std::string reference_path(const std::string& file_name) const;
     // Where to keep an expensive intermediate (a lookup table) between runs:
     // <root>/build/cache/<paper>/<file>; never compared, never committed.
     std::string cache_path(const std::string& file_name) const;
@@ -71,6 +81,12 @@ private:
     Reference reference_;
     std::set<std::string> errata_;
     std::vector<CheckRecord> records_;
+    struct TimingRecord {
+        std::string id, description;
+        double paper = 0.0, lo = 0.0, hi = 0.0, ours = 0.0;
+    };
+    std::vector<TimingRecord> timings_;
+    std::set<std::string> timing_rows_;
     std::vector<std::pair<std::string, std::string>> figures_;
     std::vector<std::string> notes_;
 };

@@ -25,7 +25,7 @@ struct Row {
 
 struct Artifact {
     std::string paper, name, title, section, reference, experiment;
-    std::vector<std::string> provenance, notes;
+    std::vector<std::string> provenance, notes, timings;
     std::vector<std::pair<std::string, std::string>> figures;
     std::vector<Row> rows;
 };
@@ -69,6 +69,7 @@ Artifact read_artifact(const fs::path& meta, const std::string& paper) {
         else if (k == "experiment") a.experiment = v;
         else if (k == "provenance") a.provenance.push_back(v);
         else if (k == "note") a.notes.push_back(v);
+        else if (k == "timing") a.timings.push_back(v);
         else if (k == "figure") {
             const auto bar = v.find('|');
             a.figures.emplace_back(v.substr(0, bar), bar == std::string::npos ? "" : v.substr(bar + 1));
@@ -157,6 +158,19 @@ int write_report(const std::string& root) {
                         "| check | what | reference | library | \\|Δ\\| | tolerance | result |\n"
                         "|---|---|---:|---:|---:|---|---|\n"
                      << vals.str();
+            if (!a.timings.empty()) {
+                body << "\nTiming claims — measured in every run, never pass/fail, not byte-stable: the measured ratios are in "
+                        "`results/timing/" << paper << "_" << a.name << ".csv` (not committed).\n\n"
+                        "| claim | statement | paper ratio | interval the printed digits allow |\n|---|---|---:|---|\n";
+                for (const auto& t : a.timings) {
+                    std::vector<std::string> f;
+                    std::stringstream ss(t);
+                    std::string x;
+                    while (std::getline(ss, x, '|')) f.push_back(x);
+                    if (f.size() == 5)
+                        body << "| `" << f[0].substr(paper.size() + 1) << "` | " << md(f[1]) << " | " << f[2] << " | [" << f[3] << ", " << f[4] << "] |\n";
+                }
+            }
             for (const auto& [name, caption] : a.figures)
                 body << "\n![" << md(caption) << "](" << paper << "/" << name << ".png)\n\n*" << caption
                      << "* — data: [`" << paper << "/" << name << ".csv`](" << paper << "/" << name

@@ -1,0 +1,33 @@
+# Figs. 15–19 (Table 2, spike data, a = 0..5): the five curves of section 4.2 (top row) and their
+# curvature κ(s) (bottom row), one line per a.
+# Data columns: method (1..5 as in fig10_14), a, u, x, y, s, kappa.
+load 'scripts/plot/style.gp'
+f = datadir.'/fig15_19.csv'
+titles = "'cubic spline A (uniform t)' 'cubic spline B (chord length)' 'Hermite curve A' 'Hermite curve B' 'pseudo-spline (exact optimisation)'"
+set palette defined (0 '#1f77b4', 1 '#2ca02c', 2 '#bcbd22', 3 '#ff7f0e', 4 '#d62728', 5 '#7f7f7f')
+set cbrange [0:5]
+do for [t in "png svg"] {
+  if (t eq "png") { set terminal pngcairo size 2000,800 enhanced font 'DejaVu Sans,11' } else { set terminal svg size 2000,800 enhanced font 'DejaVu Sans,11' }
+  set output datadir.'/fig15_19.'.t
+  set multiplot layout 2,5 title 'Figs. 15–19 — Table 2 (spike) data, y_4 = a for a = 0..5 (colour = a)'
+  do for [m=1:5] {
+    set title word(titles, m)
+    set xlabel 'x'
+    set ylabel 'y'
+    set yrange [-1.5:6.5]
+    unset key
+    unset colorbox
+    plot for [a=0:5] f u ($1==m && $2==a ? $4 : 1/0):($1==m && $2==a ? $5 : 1/0):(a) w l lw 2 lc palette, \
+         for [a=0:5] f u ($1==m && $2==a && $3==int($3) ? $4 : 1/0):($1==m && $2==a && $3==int($3) ? $5 : 1/0) w p ls 5
+  }
+  set autoscale y
+  do for [m=1:5] {
+    set title 'curvature κ(s)'
+    set xlabel 'arc length s'
+    set ylabel 'κ'
+    unset key
+    plot for [a=0:5] f u ($1==m && $2==a ? $6 : 1/0):($1==m && $2==a ? $7 : 1/0):(a) w l lw 1.5 lc palette
+  }
+  unset multiplot
+  unset output
+}

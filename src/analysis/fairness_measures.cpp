@@ -1,0 +1,90 @@
+#include "analysis/fairness_measures.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "analysis/curve_measures.hpp"
+#include "core/errors.hpp"
+
+namespace cagd::analysis {
+
+FairnessMeasures fairness_measures(const Curve& c, const PointList& data, int samples) {
+    const char* who = "cagd::analysis::fairness_measures";
+    if (c.dimension() != 2) fail_input(who, "needs a planar curve, dimension is " + std::to_string(c.dimension()));
+    if (data.cols() != 2 || data.rows() < 1) fail_input(who, "needs planar data points");
+    if (samples < 2) fail_input(who, "samples must be >= 2, got " + std::to_string(samples));
+    const Eigen::RowVector2d lo = data.colwise().minCoeff(), hi = data.colwise().maxCoeff();
+    const double diagonal = (hi - lo).norm();
+    FairnessMeasures m;
+    const std::vector<double> br = c.breakpoints();
+    int last_sign = 0;
+    for (std::size_t k = 0; k + 1 < br.size(); ++k) {
+        const double a = br[k], b = br[k + 1];
+        const double len = arc_length(c, a, b, 64);
+        const double energy = bending_energy(c, a, b, 64);
+        m.length += len;
+        m.bending_energy += energy;
+        m.pseudo_energy += len * len * energy;
+        const double chord = (c.point(b) - c.point(a)).norm();
+        double spike = 0.0;
+        for (int j = 0; j <= samples; ++j) {
+            const double u = a + (b - a) * j / samples;
+            const double kappa = signed_curvature(c, u);
+            m.max_abs_curvature = std::max(m.max_abs_curvature, std::abs(kappa));
+            spike = std::max(spike, std::abs(kappa) * chord);
+            const int sign = std::abs(kappa) * std::max(diagonal, 1e-300) <= 1e-9 ? 0 : (kappa > 0 ? 1 : -1);
+            if (sign != 0) {
+                if (last_sign != 0 && sign != last_sign) ++m.curvature_sign_changes;
+                last_sign = sign;
+            }
+            const Eigen::Vector2d p = c.point(u);
+            const double dx = std::max({lo.x() - p.x(), p.x() - hi.x(), 0.0}), dy = std::max({lo.y() - p.y(), p.y() - hi.y(), 0.0});
+            m.overshoot = std::max(m.overshoot, std::hypot(dx, dy) / diagonal);
+        }
+        m.max_spike = std::max(m.max_spike, spike);
+        if (spike > kCornerThreshold) ++m.corners;
+    }
+    return m;
+}
+
+std::vector<CurvatureSample> curvature_profile(const Curve& c, int samples) {
+    if (samples < 1) fail_input("cagd::analysis::curvature_profile", "samples must be >= 1, got " + std::to_string(samples));
+    std::vector<CurvatureSample> out;
+    const std::vector<double> br = c.breakpoints();
+    double s = 0.0;
+    for (std::size_t k = 0; k + 1 < br.size(); ++k) {
+        double prev = br[k];
+        for (int j = 0; j < samples + (k + 2 == br.size() ? 1 : 0); ++j) {
+            const double u = br[k] + (br[k + 1] - br[k]) * j / samples;
+            if (u > prev) s += arc_length(c, prev, u, 1);
+            prev = u;
+            out.push_back({u, s, signed_curvature(c, u)});
+        }
+        if (prev < br[k + 1]) s += arc_length(c, prev, br[k + 1], 1);
+    }
+    return out;
+}
+
+int self_intersections(const Curve& c, int samples) {
+    if (c.dimension() != 2) fail_input("cagd::analysis::self_intersections", "needs a planar curve");
+    if (samples < 1) fail_input("cagd::analysis::self_intersections", "samples must be >= 1, got " + std::to_string(samples));
+    std::vector<Eigen::Vector2d> p;
+    const std::vector<double> br = c.breakpoints();
+    for (std::size_t k = 0; k + 1 < br.size(); ++k)
+        for (int j = 0; j < samples + (k + 2 == br.size() ? 1 : 0); ++j) p.push_back(c.point(br[k] + (br[k + 1] - br[k]) * j / samples));
+    const auto cross = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); };
+    const bool closed = (p.front() - p.back()).norm() == 0.0;
+    int count = 0;
+    for (std::size_t i = 0; i + 1 < p.size(); ++i)
+        for (std::size_t j = i + 2; j + 1 < p.size(); ++j) {
+            if (closed && i == 0 && j + 2 == p.size()) continue;   // the closing segments touch at p_0
+            const Eigen::Vector2d r = p[i + 1] - p[i], s = p[j + 1] - p[j], q = p[j] - p[i];
+            const double d = cross(r, s);
+            if (d == 0.0) continue;
+            const double t = cross(q, s) / d, u = cross(q, r) / d;
+            if (t > 0.0 && t < 1.0 && u > 0.0 && u < 1.0) ++count;
+        }
+    return count;
+}
+
+}  // namespace cagd::analysis

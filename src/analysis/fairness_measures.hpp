@@ -1,0 +1,51 @@
+#pragma once
+// Measured fairness of a planar curve through data points (pseudo_energy section 4.2 judges
+// curves "natural-looking" by eye; these numbers are the measurable form of that judgement).
+//
+//   bending energy      ∫ κ² ds                          (Gauss–Legendre, 64 sub-pieces per span)
+//   pseudo-energy       Σ_pieces L_k² E_k, L_k, E_k the length and ∫κ² ds of piece k between
+//                       breakpoints; for a span with chord l this is l·J of its unit-chord image
+//                       (J = L²E is invariant under rotation and scales with l), so it equals the
+//                       pseudo-spline's Σ l_i J_i (pseudo_energy eq 7, 12)
+//   sign changes        of the signed curvature κ(u), sampled `samples` times per piece, zeros
+//                       (|κ| · diagonal ≤ 1e-9) skipped; a change inside a piece is an inflection,
+//                       a change across a breakpoint a jump of κ through 0 at a G1 join
+//   max |κ|             over the same samples (an estimate from below; exact at a sample)
+//   overshoot           max distance of the sampled curve outside the data's bounding box,
+//                       divided by the box diagonal (0 when the curve stays inside)
+//   curvature spike     the largest |κ| · l over the samples of each span, l the span's chord
+//                       length: a radius of curvature below l/100 (value > 100) is a "corner"
+//                       by our definition — at a cusp it is unbounded
+// Accuracy: sampled maxima and counts resolve features wider than 1/samples of a span.
+// Precondition: planar curve, r'(u) ≠ 0 at the samples (a sample on an exact cusp throws).
+#include <vector>
+
+#include "core/curve.hpp"
+#include "core/points.hpp"
+
+namespace cagd::analysis {
+
+struct FairnessMeasures {
+    double length = 0.0, bending_energy = 0.0, pseudo_energy = 0.0;
+    int curvature_sign_changes = 0;
+    double max_abs_curvature = 0.0;
+    double overshoot = 0.0;            // relative to the data's bounding-box diagonal
+    double max_spike = 0.0;            // max over spans of max |κ| · chord
+    int corners = 0;                   // spans with |κ| · chord > corner_threshold
+};
+
+constexpr double kCornerThreshold = 100.0;
+
+FairnessMeasures fairness_measures(const Curve& c, const PointList& data, int samples = 512);
+
+struct CurvatureSample {
+    double u = 0.0, s = 0.0, kappa = 0.0;
+};
+// κ(s) profile: `samples` per piece (plus the last point), s the arc length from u = t_min.
+std::vector<CurvatureSample> curvature_profile(const Curve& c, int samples = 64);
+
+// Proper crossings of the curve with itself: the curve sampled `samples` times per piece as a
+// polyline, crossings between non-adjacent polyline segments counted (O(N²) in the samples).
+int self_intersections(const Curve& c, int samples = 128);
+
+}  // namespace cagd::analysis

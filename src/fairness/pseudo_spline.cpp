@@ -1,0 +1,259 @@
+#include "fairness/pseudo_spline.hpp"
+
+#include <algorithm>
+#include <boost/math/tools/minima.hpp>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+
+#include "core/errors.hpp"
+
+namespace cagd::fairness {
+
+const char* to_string(TangentOptimization m) {
+    switch (m) {
+        case TangentOptimization::none: return "none";
+        case TangentOptimization::exact: return "exact";
+        case TangentOptimization::approximate: return "approx";
+    }
+    return "?";
+}
+
+TangentOptimization parse_tangent_optimization(const std::string& text) {
+    if (text == "none") return TangentOptimization::none;
+    if (text == "exact") return TangentOptimization::exact;
+    if (text == "approx" || text == "approximate") return TangentOptimization::approximate;
+    fail_input("cagd::fairness::parse_tangent_optimization", "'" + text + "' is not one of none, exact, approx");
+}
+
+TableValue ExactOracle::segment(double theta0, double theta1) const {
+    const PseudoEnergyMinimum m = minimize_pseudo_energy(theta0, theta1);
+    if (!m.outcome.ok())
+        fail_input("cagd::fairness::ExactOracle::segment",
+                   "no minimum at (" + full_precision(theta0) + ", " + full_precision(theta1) + "): " + m.outcome.message);
+    return TableValue{m.pseudo_energy, m.r0, m.r1, m.length, m.area, m.type};
+}
+
+std::pair<double, double> ExactOracle::angle_minimum(double theta) const {
+    const AngleMinimum a = minimize_over_end_angle(theta);
+    if (!a.outcome.ok())
+        fail_input("cagd::fairness::ExactOracle::angle_minimum", "no J(theta) at " + full_precision(theta) + ": " + a.outcome.message);
+    return {a.pseudo_energy, a.theta1};
+}
+
+double turning_angle(const Eigen::Vector2d& incoming, const Eigen::Vector2d& outgoing) {
+    return wrap_angle(std::atan2(outgoing.y(), outgoing.x()) - std::atan2(incoming.y(), incoming.x()));
+}
+
+double PseudoSpline::length_from_tables() const {
+    double s = 0.0;
+    for (std::size_t i = 0; i < spans.size(); ++i) s += chord_length[i] * spans[i].value.length;
+    return s;
+}
+
+double PseudoSpline::pseudo_energy_from_tables() const {
+    double s = 0.0;
+    for (std::size_t i = 0; i < spans.size(); ++i) s += chord_length[i] * spans[i].value.pseudo_energy;
+    return s;
+}
+
+double PseudoSpline::polygon_area() const {
+    const Eigen::MatrixXd& p = curve.nodes();
+    double s = 0.0;
+    for (Eigen::Index i = 0; i + 1 < p.rows(); ++i) s += p(i, 0) * p(i + 1, 1) - p(i, 1) * p(i + 1, 0);
+    const Eigen::Index n = p.rows() - 1;
+    s += p(n, 0) * p(0, 1) - p(n, 1) * p(0, 0);   // zero for a closed curve (node n = node 0)
+    return 0.5 * s;
+}
+
+double PseudoSpline::area_from_tables() const {
+    double s = polygon_area();
+    for (std::size_t i = 0; i < spans.size(); ++i) s -= chord_length[i] * chord_length[i] * spans[i].value.area;
+    return s;
+}
+
+namespace {
+
+constexpr double kStraight = 1e-12;
+
+// Minimiser of w over [lo, hi] (lo ≤ hi) by the chosen mode.
+template <class W>
+double minimise_w(const W& w, double lo, double hi, TangentOptimization mode) {
+    if (hi - lo <= 0.0) return lo;
+    if (mode == TangentOptimization::exact) {
+        std::uintmax_t iters = 200;
+        return boost::math::tools::brent_find_minima(w, lo, hi, std::numeric_limits<double>::digits / 2, iters).first;
+    }
+    // Approximate: the paper's three interior points and quadratic interpolation.
+    const double h = (hi - lo) / 4.0;
+    const double a = lo + h, b = lo + 2 * h, c = lo + 3 * h;
+    const double wa = w(a), wb = w(b), wc = w(c);
+    const double curvature = wa - 2 * wb + wc;   // h² × second derivative of the parabola
+    if (curvature > 0.0) {
+        const double vertex = b + h * (wa - wc) / (2.0 * curvature);
+        return std::clamp(vertex, lo, hi);
+    }
+    return wa <= wb && wa <= wc ? a : (wb <= wc ? b : c);
+}
+
+}  // namespace
+
+PseudoSpline pseudo_spline(const PointList& points, const SegmentOracle& oracle, TangentOptimization mode, bool closed) {
+    const char* who = "cagd::fairness::pseudo_spline";
+    require_valid_points(points, closed ? 3 : 2, true, closed, who);
+    if (points.cols() != 2) fail_input(who, "needs planar points (2 columns), got " + std::to_string(points.cols()));
+    const Eigen::Index np = points.rows();
+    const Eigen::Index spans = closed ? np : np - 1;
+    const auto next = [&](Eigen::Index i) { return (i + 1) % np; };
+
+    std::vector<double> phi(static_cast<std::size_t>(spans)), len(static_cast<std::size_t>(spans));
+    std::vector<Eigen::Vector2d> chord(static_cast<std::size_t>(spans));
+    for (Eigen::Index i = 0; i < spans; ++i) {
+        const Eigen::Vector2d c = (points.row(next(i)) - points.row(i)).transpose();
+        chord[static_cast<std::size_t>(i)] = c;
+        phi[static_cast<std::size_t>(i)] = std::atan2(c.y(), c.x());
+        len[static_cast<std::size_t>(i)] = c.norm();
+    }
+    // Turn at point i (i with an incoming and an outgoing chord): φ_i − φ_{i−1}, wrapped.
+    const auto turn = [&](Eigen::Index i) {
+        const Eigen::Index in = (i - 1 + spans) % spans;
+        const double t = wrap_angle(phi[static_cast<std::size_t>(i % spans)] - phi[static_cast<std::size_t>(in)]);
+        if (std::abs(std::abs(t) - M_PI) <= 1e-12)
+            fail_input(who, "the points turn by pi at point " + std::to_string(i) +
+                                " (a hairpin): no tangent direction between the chords, the pseudo-energy table is undefined there");
+        return t;
+    };
+
+    PseudoSpline ps{spline::PiecewiseHermiteCurve(Eigen::MatrixXd::Zero(2, 2), Eigen::MatrixXd::Zero(1, 2), Eigen::MatrixXd::Zero(1, 2)),
+                    std::vector<double>(static_cast<std::size_t>(np), 0.0), {}, {}, {}, 0};
+    ps.spans.reserve(static_cast<std::size_t>(spans));
+    const auto J = [&](double theta) {
+        ++ps.oracle_calls;
+        return oracle.angle_energy(wrap_angle(theta));
+    };
+
+    // Interior tangent directions (eq 12).
+    const Eigen::Index first = closed ? 0 : 1, last = closed ? np - 1 : np - 2;
+    for (Eigen::Index i = first; i <= last; ++i) {
+        const double tau = turn(i);   // φ_i − φ_{i−1}
+        const std::size_t in = static_cast<std::size_t>((i - 1 + spans) % spans), out = static_cast<std::size_t>(i);
+        double a = 0.0;
+        if (std::abs(tau) > 0.0) {
+            if (mode == TangentOptimization::none) {
+                const Eigen::Vector2d d = chord[in] + chord[out];   // P_{i+1} − P_{i−1}
+                a = wrap_angle(std::atan2(d.y(), d.x()) - phi[out]);
+            } else {
+                const auto w = [&](double alpha) { return len[in] * J(alpha + tau) + len[out] * J(alpha); };
+                a = minimise_w(w, std::min(0.0, -tau), std::max(0.0, -tau), mode);
+            }
+        }
+        ps.alpha[static_cast<std::size_t>(i)] = a;
+    }
+    // End tangents (eq 13).
+    if (!closed) {
+        if (np == 2) {
+            ps.alpha[0] = ps.alpha[1] = 0.0;
+        } else {
+            const double end_angle_at_p1 = wrap_angle(ps.alpha[1] + phi[1] - phi[0]);
+            ps.alpha[0] = std::abs(end_angle_at_p1) <= kStraight ? 0.0 : oracle.angle_minimum(end_angle_at_p1).second;
+            const double a = ps.alpha[static_cast<std::size_t>(np - 2)];
+            ps.alpha[static_cast<std::size_t>(np - 1)] = std::abs(a) <= kStraight ? 0.0 : oracle.angle_minimum(a).second;
+        }
+    }
+
+    // Unit tangent at every point, once: direction φ_i + α_i (the last point of an open curve:
+    // φ_{n−1} + α_n, α_n being relative to the incoming chord).
+    std::vector<Eigen::Vector2d> tangent(static_cast<std::size_t>(np));
+    for (Eigen::Index i = 0; i < np; ++i) {
+        const std::size_t k = static_cast<std::size_t>(i);
+        const double psi = phi[static_cast<std::size_t>(std::min<Eigen::Index>(i, spans - 1))] + ps.alpha[k];
+        tangent[k] = Eigen::Vector2d(std::cos(psi), std::sin(psi));
+    }
+    // Spans (eq 9, 10).
+    Eigen::MatrixXd nodes(spans + 1, 2), d0(spans, 2), d1(spans, 2);
+    for (Eigen::Index i = 0; i < spans; ++i) {
+        const std::size_t k = static_cast<std::size_t>(i);
+        PseudoSplineSpan s;
+        s.theta0 = wrap_angle(ps.alpha[k]);
+        const bool last_open = !closed && i == spans - 1;
+        s.theta1 = last_open ? wrap_angle(ps.alpha[k + 1])
+                             : wrap_angle(ps.alpha[static_cast<std::size_t>(next(i))] + phi[static_cast<std::size_t>(next(i) % spans)] - phi[k]);
+        if (std::abs(s.theta0) <= kStraight && std::abs(s.theta1) <= kStraight) {
+            s.value = TableValue{0.0, 1.0, 1.0, 1.0, 0.0, SegmentType::c};
+        } else {
+            try {
+                s.value = oracle.segment(s.theta0, s.theta1);
+            } catch (const InvalidInput& e) {
+                fail_input(who, "span " + std::to_string(i) + ": " + e.what());
+            }
+        }
+        const double l = len[k];
+        nodes.row(i) = points.row(i);
+        d0.row(i) = (l * s.value.r0) * tangent[k].transpose();
+        d1.row(i) = (l * s.value.r1) * tangent[static_cast<std::size_t>(next(i))].transpose();
+        ps.spans.push_back(s);
+    }
+    nodes.row(spans) = points.row(closed ? 0 : spans);
+    ps.curve = spline::PiecewiseHermiteCurve(std::move(nodes), std::move(d0), std::move(d1));
+    ps.chord_angle = std::move(phi);
+    ps.chord_length = std::move(len);
+    return ps;
+}
+
+long equivalent_polygon_points(double spline_error, CircleMeasure measure) {
+    if (!(spline_error > 0.0 && std::isfinite(spline_error)))
+        fail_input("cagd::fairness::equivalent_polygon_points", "spline_error must be positive and finite, got " + full_precision(spline_error));
+    const auto polygon_error = [&](long n) {
+        const double nd = static_cast<double>(n), x = M_PI / nd;
+        return measure == CircleMeasure::perimeter ? 2.0 * M_PI - 2.0 * nd * std::sin(x) : M_PI - 0.5 * nd * std::sin(2.0 * x);
+    };
+    // The polygon error decreases monotonically in N: bisection on the first N below spline_error.
+    long lo = 2, hi = 3;   // invariant: polygon_error(lo) ≥ spline_error (or lo = 2), search hi
+    while (polygon_error(hi) >= spline_error) {
+        lo = hi;
+        hi *= 2;
+        if (hi > 1000000000L) fail_input("cagd::fairness::equivalent_polygon_points", "spline_error " + full_precision(spline_error) + " is below every polygon error up to N = 1e9");
+    }
+    while (hi - lo > 1) {
+        const long mid = lo + (hi - lo) / 2;
+        (polygon_error(mid) >= spline_error ? lo : hi) = mid;
+    }
+    return hi;
+}
+
+const char* to_string(InterpolationMethod m) {
+    switch (m) {
+        case InterpolationMethod::cubic_spline_a: return "cubic-a";
+        case InterpolationMethod::cubic_spline_b: return "cubic-b";
+        case InterpolationMethod::hermite_a: return "hermite-a";
+        case InterpolationMethod::hermite_b: return "hermite-b";
+        case InterpolationMethod::pseudo_spline: return "pseudo-spline";
+    }
+    return "?";
+}
+
+InterpolationMethod parse_interpolation_method(const std::string& text) {
+    for (auto m : {InterpolationMethod::cubic_spline_a, InterpolationMethod::cubic_spline_b, InterpolationMethod::hermite_a,
+                   InterpolationMethod::hermite_b, InterpolationMethod::pseudo_spline})
+        if (text == to_string(m)) return m;
+    fail_input("cagd::fairness::parse_interpolation_method",
+               "'" + text + "' is not one of cubic-a, cubic-b, hermite-a, hermite-b, pseudo-spline");
+}
+
+spline::PiecewiseHermiteCurve section42_interpolant(const PointList& points, InterpolationMethod method, bool closed,
+                                                    const SegmentOracle& oracle, TangentOptimization mode) {
+    using namespace spline;
+    switch (method) {
+        case InterpolationMethod::cubic_spline_a: return cubic_spline_interpolant(points, ParameterSpacing::uniform, closed);
+        case InterpolationMethod::cubic_spline_b: return cubic_spline_interpolant(points, ParameterSpacing::chord_length, closed);
+        case InterpolationMethod::hermite_a:
+            return hermite_interpolant(points, hermite_tangent_directions(points, TangentRule::chord_of_neighbours, closed), closed);
+        case InterpolationMethod::hermite_b:
+            return hermite_interpolant(points, hermite_tangent_directions(points, TangentRule::circle, closed), closed);
+        case InterpolationMethod::pseudo_spline: return pseudo_spline(points, oracle, mode, closed).curve;
+    }
+    fail_input("cagd::fairness::section42_interpolant", "unknown method");
+}
+
+}  // namespace cagd::fairness

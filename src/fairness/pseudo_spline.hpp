@@ -1,0 +1,146 @@
+#pragma once
+// The pseudo-spline: the cubic Hermite curve through points whose spans are minimum
+// pseudo-energy segments (pseudo_energy section 3, eq 9–13), with its length and area from the
+// L and S tables (section 5, eq 16–21).
+//
+// Symbols ↔ names. Points P_0..P_n (closed: P_0..P_{n−1}, span n−1 returns to P_0).
+//   l_i = |P_i P_{i+1}|, φ_i = angle of P_i P_{i+1}             chord_length[i], chord_angle[i]
+//   α_i = tangent direction at P_i relative to the chord φ_i     alpha[i]
+//   span i, in its unit-chord frame: θ0 = α_i, θ1 = α_{i+1} + φ_{i+1} − φ_i     (eq 9)
+//   (r0, r1) = table minimiser at (θ0, θ1); span i = P_i + l_i R(φ_i) H(t)     (eq 10, 4)
+// Angle convention: every difference of chord angles is wrapped to (−π, π], so the turn at P_i,
+// τ_i = φ_i − φ_{i−1}, is the smaller of the two rotations; θ0, θ1 are wrapped likewise. A turn of
+// exactly ±π (a hairpin: P_{i+1} on the ray back through P_{i−1}) has no such convention and every
+// segment through it has a cusp (the table is undefined there): InvalidInput. The knot data of
+// Table 3 turn by 180° − 2.86° in the same (clockwise) sense at both interior points, which this
+// convention makes a loop crossing the first span (tested).
+//
+// Tangent directions (eq 11–13), interior points i = 1..n−1 (closed: every point):
+//   w(α) = l_{i−1} J(α + φ_i − φ_{i−1}) + l_i J(α)   on the search interval between 0 and φ_{i−1} − φ_i
+// (between the two chords; l_{i−1} = |P_{i−1}P_i|, l_i = |P_iP_{i+1}|), J(θ) = min_{θ1} J(θ, θ1) (eq 11).
+// The J(θ, θ1) symmetry J(θ0, θ1) = J(θ1, θ0) (reverse the segment and turn it by π about the chord
+// midpoint) makes J(·) the best rod energy for a fixed tangent at either end, which is why the
+// first term uses it for the end of span i−1. Open ends (eq 13): α_0 = θ1(α_1 + φ_1 − φ_0) and the
+// end direction at P_n is φ_{n−1} + θ1(α_{n−1}); we store alpha[n] = θ1(α_{n−1}), relative to the
+// incoming chord φ_{n−1} (the paper's α_n = φ_{n−1} + θ1(α_{n−1}) is the absolute angle).
+//   exact        Brent's method (Boost.Math) on w over the search interval.
+//   approximate  the paper's "three interior points and quadratic interpolation": w at ¼, ½, ¾
+//                of the interval, the vertex of the parabola through them, clamped to the interval;
+//                if the parabola is not convex, the best of the three points.
+//   none         w is not minimised: α_i is the direction of P_{i+1} − P_{i−1} (Hermite curve A's
+//                direction, the tangent of the quadratic through the three points at uniform
+//                parameter, Iri–Fujino [7] in section 3). Everything else is as in the method:
+//                magnitudes from the table (eq 9) and ends by eq (13). So "none" differs from the
+//                other modes only by the minimisation, which is what Table 4 times.
+//
+// Length and area (section 5): L = Σ l_i L(θ0_i, θ1_i) (eq 16, 17) and the signed area
+// A = S_0 − Σ l_i² S(θ0_i, θ1_i) (eq 19, 20; the paper prints |A|), S_0 the shoelace area of the
+// polygon closed by P_n P_0 (eq 21); for an open curve the region is closed by the line P_n P_0.
+//
+// Straight spans: when both |θ0|, |θ1| ≤ 1e-12 the span is the straight segment with r0 = r1 = 1
+// (J = 0, L = 1, S = 0); the table's (0, 0) node is undefined because r0, r1 are not determined there.
+//
+// Sources of J, θ1(θ), r0, r1, L, S: `TableOracle` (the lookup tables of pseudo_energy_table.hpp,
+// the paper's method) or `ExactOracle` (the fast minimiser at the exact angles, no table: about
+// 1 ms per span and 0.15 s per J(θ) value, for checking the tables).
+//
+// Preconditions (InvalidInput): planar points, finite, no coincident consecutive points, at least
+// 2 points open (2 points: the chord itself has no turn, both tangents along it) and 3 closed, no
+// hairpin. Failure modes: a table or minimiser with no value at the needed angles throws
+// InvalidInput naming the span.
+#include <Eigen/Dense>
+#include <utility>
+#include <vector>
+
+#include "core/points.hpp"
+#include "fairness/pseudo_energy_table.hpp"
+#include "spline/hermite_spline.hpp"
+
+namespace cagd::fairness {
+
+enum class TangentOptimization { none, exact, approximate };
+const char* to_string(TangentOptimization m);
+TangentOptimization parse_tangent_optimization(const std::string& text);   // none | exact | approx
+
+class SegmentOracle {
+public:
+    virtual ~SegmentOracle() = default;
+    // r0, r1, J, L, S and type at (θ0, θ1) ∈ [−π, π]², (θ0, θ1) not an undefined node.
+    virtual TableValue segment(double theta0, double theta1) const = 0;
+    // {J(θ), θ1(θ)} of eq (11).
+    virtual std::pair<double, double> angle_minimum(double theta) const = 0;
+    // J(θ) alone (what eq 12 evaluates).
+    virtual double angle_energy(double theta) const { return angle_minimum(theta).first; }
+};
+
+class TableOracle : public SegmentOracle {
+public:
+    TableOracle(const PseudoEnergyTable& energy, const AngleMinimumTable& angle) : energy_(energy), angle_(angle) {}
+    TableValue segment(double theta0, double theta1) const override { return energy_.lookup(theta0, theta1); }
+    std::pair<double, double> angle_minimum(double theta) const override { return angle_.lookup(theta); }
+    double angle_energy(double theta) const override { return angle_.pseudo_energy(theta); }
+
+private:
+    const PseudoEnergyTable& energy_;
+    const AngleMinimumTable& angle_;
+};
+
+// The two tables the paper's method reads: J, r0, r1, L, S over direction pairs, and J(θ), θ1(θ)
+// derived from it as section 4.1 describes. Keep the object alive while its oracle() is used.
+struct PseudoSplineTables {
+    PseudoEnergyTable energy;
+    AngleMinimumTable angle;
+    static PseudoSplineTables from(PseudoEnergyTable energy) {
+        AngleMinimumTable angle = AngleMinimumTable::from_energy_table(energy);
+        return {std::move(energy), std::move(angle)};
+    }
+    TableOracle oracle() const { return TableOracle(energy, angle); }
+};
+
+class ExactOracle : public SegmentOracle {
+public:
+    TableValue segment(double theta0, double theta1) const override;
+    std::pair<double, double> angle_minimum(double theta) const override;
+};
+
+struct PseudoSplineSpan {
+    double theta0 = 0.0, theta1 = 0.0;   // unit-chord frame angles (eq 9)
+    TableValue value;                     // r0, r1, J, L, S used for the span
+};
+
+struct PseudoSpline {
+    spline::PiecewiseHermiteCurve curve;
+    std::vector<double> alpha;          // one per point (see above for the last point of an open curve)
+    std::vector<double> chord_angle;    // φ_i, one per span
+    std::vector<double> chord_length;   // l_i, one per span
+    std::vector<PseudoSplineSpan> spans;
+    long oracle_calls = 0;              // J(θ) evaluations spent on the tangent directions
+    double length_from_tables() const;  // eq (16), (17)
+    double area_from_tables() const;    // eq (19)–(21), signed (counter-clockwise positive)
+    double pseudo_energy_from_tables() const;   // Σ l_i J_i (J scales with the chord length)
+    double polygon_area() const;        // S_0 of eq (21)
+};
+
+PseudoSpline pseudo_spline(const PointList& points, const SegmentOracle& oracle, TangentOptimization mode, bool closed);
+
+// The five curves of section 4.2 through the same points: cubic spline A (uniform parameter),
+// cubic spline B (chord length), Hermite A, Hermite B (spline/hermite_spline.hpp) and the
+// pseudo-spline (`oracle` and `mode` are used by the pseudo-spline only; pass them anyway).
+enum class InterpolationMethod { cubic_spline_a, cubic_spline_b, hermite_a, hermite_b, pseudo_spline };
+const char* to_string(InterpolationMethod m);
+InterpolationMethod parse_interpolation_method(const std::string& text);   // cubic-a | cubic-b | hermite-a | hermite-b | pseudo-spline
+spline::PiecewiseHermiteCurve section42_interpolant(const PointList& points, InterpolationMethod method, bool closed,
+                                                    const SegmentOracle& oracle, TangentOptimization mode);
+
+// "Equivalent points" of Tables 5 and 6 (section 5.1): the smallest N ≥ 3 for which the regular
+// N-gon inscribed in the unit circle is closer to the circle than the spline, i.e.
+// |true − spline| > |true − polygon_N|, with perimeter 2N sin(π/N) (true 2π) or area
+// (N/2) sin(2π/N) (true π). `spline_error` = |true − spline|; throws InvalidInput if it is not
+// positive and finite (no polygon is worse than a perfect value) or N would exceed 10^9.
+enum class CircleMeasure { perimeter, area };
+long equivalent_polygon_points(double spline_error, CircleMeasure measure);
+
+// The turn φ_i − φ_{i−1} wrapped to (−π, π] between two chord directions given as vectors.
+double turning_angle(const Eigen::Vector2d& incoming, const Eigen::Vector2d& outgoing);
+
+}  // namespace cagd::fairness

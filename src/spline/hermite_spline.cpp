@@ -1,0 +1,168 @@
+#include "spline/hermite_spline.hpp"
+
+#include <Eigen/Sparse>
+#include <cmath>
+#include <string>
+
+#include "core/errors.hpp"
+
+namespace cagd::spline {
+
+PiecewiseHermiteCurve::PiecewiseHermiteCurve(Eigen::MatrixXd nodes, Eigen::MatrixXd d0, Eigen::MatrixXd d1)
+    : nodes_(std::move(nodes)), d0_(std::move(d0)), d1_(std::move(d1)) {
+    const char* who = "PiecewiseHermiteCurve";
+    if (d0_.rows() < 1) fail_input(who, "needs at least one span");
+    if (nodes_.rows() != d0_.rows() + 1 || d1_.rows() != d0_.rows())
+        fail_input(who, "needs K+1 nodes and K start/end derivatives, got " + std::to_string(nodes_.rows()) + ", " +
+                            std::to_string(d0_.rows()) + ", " + std::to_string(d1_.rows()));
+    if (d0_.cols() != nodes_.cols() || d1_.cols() != nodes_.cols())
+        fail_input(who, "nodes and derivatives must have the same dimension");
+    if (!nodes_.allFinite() || !d0_.allFinite() || !d1_.allFinite())
+        fail_input(who, "nodes and derivatives must be finite");
+}
+
+std::vector<double> PiecewiseHermiteCurve::breakpoints() const {
+    std::vector<double> b(static_cast<std::size_t>(spans()) + 1);
+    for (std::size_t k = 0; k < b.size(); ++k) b[k] = static_cast<double>(k);
+    return b;
+}
+
+Eigen::MatrixXd PiecewiseHermiteCurve::jet(double u, int order) const {
+    if (!(u >= 0.0 && u <= spans()))
+        fail_input("PiecewiseHermiteCurve::jet", "u = " + full_precision(u) + " outside [0, " + std::to_string(spans()) + "]");
+    if (order < 0) fail_input("PiecewiseHermiteCurve::jet", "order must be >= 0, got " + std::to_string(order));
+    const int k = std::min(static_cast<int>(std::floor(u)), spans() - 1);
+    const double t = u - k;
+    // Basis values and derivatives of H0..H3 at t (rows: derivative order 0..3).
+    const double H[4][4] = {
+        {2 * t * t * t - 3 * t * t + 1, -2 * t * t * t + 3 * t * t, t * t * t - 2 * t * t + t, t * t * t - t * t},
+        {6 * t * t - 6 * t, -6 * t * t + 6 * t, 3 * t * t - 4 * t + 1, 3 * t * t - 2 * t},
+        {12 * t - 6, -12 * t + 6, 6 * t - 4, 6 * t - 2},
+        {12, -12, 6, 6}};
+    Eigen::MatrixXd out = Eigen::MatrixXd::Zero(order + 1, dimension());
+    for (int j = 0; j <= std::min(order, 3); ++j)
+        out.row(j) = H[j][0] * nodes_.row(k) + H[j][1] * nodes_.row(k + 1) + H[j][2] * d0_.row(k) + H[j][3] * d1_.row(k);
+    return out;
+}
+
+namespace {
+
+// Nodes with the first repeated at the end for a closed curve.
+Eigen::MatrixXd span_nodes(const PointList& points, bool closed) {
+    if (!closed) return points;
+    Eigen::MatrixXd n(points.rows() + 1, points.cols());
+    n << points, points.row(0);
+    return n;
+}
+
+Eigen::RowVectorXd unit(const Eigen::RowVectorXd& v) { return v / v.norm(); }
+
+}  // namespace
+
+PiecewiseHermiteCurve cubic_spline_interpolant(const PointList& points, ParameterSpacing spacing, bool closed) {
+    const char* who = "cubic_spline_interpolant";
+    require_valid_points(points, closed ? 3 : 2, true, closed, who);
+    const Eigen::MatrixXd nodes = span_nodes(points, closed);
+    const int spans = static_cast<int>(nodes.rows()) - 1;
+    const int dim = static_cast<int>(points.cols());
+    std::vector<double> h(static_cast<std::size_t>(spans));
+    Eigen::MatrixXd delta(spans, dim);
+    for (int k = 0; k < spans; ++k) {
+        delta.row(k) = nodes.row(k + 1) - nodes.row(k);
+        h[static_cast<std::size_t>(k)] = spacing == ParameterSpacing::uniform ? 1.0 : delta.row(k).norm();
+    }
+    // Unknowns m_0..m_{N−1}: N = n+1 for open, N = spans (m_K = m_0) for closed.
+    const int N = closed ? spans : spans + 1;
+    std::vector<Eigen::Triplet<double>> trip;
+    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(N, dim);
+    for (int k = 0; k < N; ++k) {
+        const bool first = !closed && k == 0, last = !closed && k == N - 1;
+        if (first) {
+            trip.emplace_back(0, 0, 2.0);
+            trip.emplace_back(0, 1, 1.0);
+            rhs.row(0) = 3.0 * delta.row(0) / h[0];
+            continue;
+        }
+        if (last) {
+            trip.emplace_back(k, k - 1, 1.0);
+            trip.emplace_back(k, k, 2.0);
+            rhs.row(k) = 3.0 * delta.row(spans - 1) / h[static_cast<std::size_t>(spans - 1)];
+            continue;
+        }
+        const int prev = (k - 1 + spans) % spans;   // span ending at node k
+        const int next = k % spans;                 // span starting at node k
+        const double hp = h[static_cast<std::size_t>(prev)], hn = h[static_cast<std::size_t>(next)];
+        trip.emplace_back(k, (k - 1 + N) % N, hn);
+        trip.emplace_back(k, k, 2.0 * (hp + hn));
+        trip.emplace_back(k, (k + 1) % N, hp);
+        rhs.row(k) = 3.0 * (hn * delta.row(prev) / hp + hp * delta.row(next) / hn);
+    }
+    Eigen::SparseMatrix<double> A(N, N);
+    A.setFromTriplets(trip.begin(), trip.end());
+    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu(A);
+    if (lu.info() != Eigen::Success) fail_input(who, "singular spline system (degenerate points)");
+    const Eigen::MatrixXd m = lu.solve(rhs);
+    Eigen::MatrixXd d0(spans, dim), d1(spans, dim);
+    for (int k = 0; k < spans; ++k) {
+        const double hk = h[static_cast<std::size_t>(k)];
+        d0.row(k) = hk * m.row(k);
+        d1.row(k) = hk * m.row((k + 1) % N);
+    }
+    return PiecewiseHermiteCurve(nodes, d0, d1);
+}
+
+Eigen::MatrixXd hermite_tangent_directions(const PointList& points, TangentRule rule, bool closed) {
+    const char* who = rule == TangentRule::circle ? "hermite_tangent_directions (circle, Hermite B)"
+                                                  : "hermite_tangent_directions (chord of neighbours, Hermite A)";
+    require_valid_points(points, (closed || rule == TangentRule::circle) ? 3 : 2, true, closed, who);
+    const Eigen::Index n = points.rows();
+    Eigen::MatrixXd t(n, points.cols());
+    const auto interior = [&](Eigen::Index i, Eigen::Index im, Eigen::Index ip) {
+        const Eigen::RowVectorXd a = points.row(i) - points.row(im), b = points.row(ip) - points.row(i);
+        Eigen::RowVectorXd d = rule == TangentRule::circle ? Eigen::RowVectorXd(b.norm() / a.norm() * a + a.norm() / b.norm() * b)
+                                                           : Eigen::RowVectorXd(points.row(ip) - points.row(im));
+        // A reversal leaves d = 0 (Hermite A: P_{i−1} = P_{i+1}) or tiny by cancellation.
+        if (d.norm() <= 1e-14 * (a.norm() + b.norm()))
+            fail_input(who, "the curve reverses at point " + std::to_string(i) +
+                                " (turning angle π), where no tangent direction is defined");
+        return unit(d);
+    };
+    for (Eigen::Index i = 0; i < n; ++i) {
+        if (closed || (i > 0 && i < n - 1)) {
+            t.row(i) = interior(i, (i - 1 + n) % n, (i + 1) % n);
+            continue;
+        }
+        if (rule == TangentRule::chord_of_neighbours) {
+            t.row(i) = i == 0 ? unit(points.row(1) - points.row(0)) : unit(points.row(n - 1) - points.row(n - 2));
+            continue;
+        }
+        // Circle end: reflect the middle tangent of the three end points.
+        if (i == 0) {
+            const Eigen::RowVectorXd t1 = interior(1, 0, 2), ah = unit(points.row(1) - points.row(0));
+            t.row(0) = 2.0 * t1.dot(ah) * ah - t1;
+        } else {
+            const Eigen::RowVectorXd tm = interior(n - 2, n - 3, n - 1), bh = unit(points.row(n - 1) - points.row(n - 2));
+            t.row(n - 1) = 2.0 * tm.dot(bh) * bh - tm;
+        }
+    }
+    return t;
+}
+
+PiecewiseHermiteCurve hermite_interpolant(const PointList& points, const Eigen::MatrixXd& directions, bool closed) {
+    const char* who = "hermite_interpolant";
+    require_valid_points(points, closed ? 3 : 2, true, closed, who);
+    if (directions.rows() != points.rows() || directions.cols() != points.cols())
+        fail_input(who, "needs one direction per point, got " + std::to_string(directions.rows()) + " for " +
+                            std::to_string(points.rows()) + " points");
+    const Eigen::MatrixXd nodes = span_nodes(points, closed);
+    const Eigen::Index spans = nodes.rows() - 1, n = points.rows();
+    Eigen::MatrixXd d0(spans, points.cols()), d1(spans, points.cols());
+    for (Eigen::Index k = 0; k < spans; ++k) {
+        const double l = (nodes.row(k + 1) - nodes.row(k)).norm();
+        d0.row(k) = l * directions.row(k);
+        d1.row(k) = l * directions.row((k + 1) % n);
+    }
+    return PiecewiseHermiteCurve(nodes, d0, d1);
+}
+
+}  // namespace cagd::spline
