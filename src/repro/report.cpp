@@ -124,8 +124,10 @@ int write_report(const std::string& root) {
             for (const auto& p : a.provenance) body << "> " << p << "\n";
             if (!a.provenance.empty()) body << "\n";
             for (const auto& note : a.notes) body << "- " << note << "\n";
-            body << "\n| claim | statement | paper | ours | \\|Δ\\| | tolerance | status |\n"
-                    "|---|---|---:|---:|---:|---:|---|\n";
+            const bool has_claims = std::any_of(a.rows.begin(), a.rows.end(), [](const Row& r) { return r["kind"] == "claim"; });
+            if (has_claims)
+                body << "\n| claim | statement | paper | ours | \\|Δ\\| | tolerance | status |\n"
+                        "|---|---|---:|---:|---:|---:|---|\n";
             std::ostringstream vals;
             for (const auto& r : a.rows) {
                 const std::string status = r["status"];
