@@ -16,6 +16,7 @@
 
 #include "analysis/curve_measures.hpp"
 #include "fairness/pseudo_spline.hpp"
+#include "random_walk.hpp"
 #include "spline/hermite_spline.hpp"
 
 namespace {
@@ -23,19 +24,7 @@ using namespace cagd;
 using namespace cagd::fairness;
 
 // A random walk: chords of length 0.5..2, turning by at most 2.5 rad (no hairpins), seeded.
-PointList random_walk(int n, unsigned seed) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> len(0.5, 2.0), turn(-2.5, 2.5);
-    PointList p(n, 2);
-    p.row(0) << 0, 0;
-    double heading = 0;
-    for (int i = 1; i < n; ++i) {
-        heading += turn(rng);
-        const double l = len(rng);
-        p.row(i) << p(i - 1, 0) + l * std::cos(heading), p(i - 1, 1) + l * std::sin(heading);
-    }
-    return p;
-}
+PointList random_walk(int n, unsigned seed) { return bench::random_walk(n, seed, 0.5, 2.0, 2.5); }
 
 struct Fixture {
     PseudoEnergyTable table = PseudoEnergyTable::build({36, NodePlacement::periodic}, TableMethod::fast, 2, true);

@@ -78,5 +78,15 @@ expect_bad "unknown optimisation"  '0,0\n1,1\n2,0\n'    interpolate --method pse
 expect_bad "foreign table file"    '0,0\n1,1\n2,0\n'    interpolate --method pseudo-spline --table "$dir/bad.csv" --in "$dir/bad.csv" --out "$dir/o.csv"
 expect_bad "analyze --in, no method" '0,0\n1,1\n2,0\n'  analyze --in "$dir/bad.csv"
 
+# hosaka eq (20): a space curve through 3-D points passes through them; bad ends are errors.
+printf 'x,y,z\n0,0,0\n1,1,0\n2,1,1\n3,0,2\n' > "$dir/space.csv"
+"$cagd" interpolate --method hosaka --in "$dir/space.csv" --out "$dir/h.csv" --samples 4 || { echo "FAIL: hosaka"; fails=$((fails+1)); }
+awk -F, 'NR==10 { exit !($1==2 && ($2-2)^2 < 1e-20 && ($3-1)^2 < 1e-20 && ($4-1)^2 < 1e-20) }' "$dir/h.csv" || { echo "FAIL: hosaka misses P_2"; fails=$((fails+1)); }
+"$cagd" interpolate --method hosaka --scale unit --end tangent --start-tangent 1,0,0 --end-tangent 0,0,1 --in "$dir/space.csv" --out "$dir/h.csv" \
+  || { echo "FAIL: hosaka tangent ends"; fails=$((fails+1)); }
+expect_bad "hosaka bessel end"     '0,0\n1,1\n2,0\n'    interpolate --method hosaka --end bessel --in "$dir/bad.csv" --out "$dir/o.csv"
+expect_bad "hosaka zero chord"     '0,0\n1,1\n1,1\n'    interpolate --method hosaka --in "$dir/bad.csv" --out "$dir/o.csv"
+expect_bad "hosaka tangent dim"    '0,0\n1,1\n2,0\n'    interpolate --method hosaka --end tangent --start-tangent 1,0,0 --end-tangent 0,1,0 --in "$dir/bad.csv" --out "$dir/o.csv"
+
 if [ "$fails" -eq 0 ]; then echo "cli: all checks passed"; fi
 exit $((fails > 0))

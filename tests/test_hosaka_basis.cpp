@@ -82,3 +82,72 @@ TEST(HosakaBasis, BadIndicesAreRejected) {
     EXPECT_THROW(b.p(2, 0.5), InvalidInput);
     EXPECT_THROW(b.q(0, 0.5, -1), InvalidInput);
 }
+
+// ---- hosaka section 3: curves from end derivatives and the C2 spline (eq 15–20) ----
+#include "analysis/curve_measures.hpp"
+#include "spline/hermite_spline.hpp"
+#include "spline/hosaka_spline.hpp"
+
+namespace {
+cagd::PointList uneven_points() {
+    cagd::PointList p(6, 2);
+    p << 0, 0, 1, 0.8, 1.15, 0.95, 3.0, 1.2, 3.2, 0.9, 5.0, 0.0;
+    return p;
+}
+}  // namespace
+
+TEST(HosakaSpline, ChordScaleIsTheChordLengthCubicSplineAndUnitScaleTheUniformOne) {
+    const cagd::PointList p = uneven_points();
+    for (bool closed : {false, true}) {
+        spline::HosakaSplineOptions o;
+        o.closed = closed;
+        const auto chord = spline::hosaka_c2_spline(p, o);
+        EXPECT_LT(analysis::max_distance_same_parameter(chord.curve, spline::cubic_spline_interpolant(p, spline::ParameterSpacing::chord_length, closed)), 1e-12);
+        o.scale = spline::HosakaScale::unit;
+        const auto unit = spline::hosaka_c2_spline(p, o);
+        EXPECT_LT(analysis::max_distance_same_parameter(unit.curve, spline::cubic_spline_interpolant(p, spline::ParameterSpacing::uniform, closed)), 1e-12);
+    }
+}
+
+TEST(HosakaSpline, JoinsSatisfyEq18WithTheErratumAndEndsHaveZeroCurvature) {
+    const cagd::PointList p = uneven_points();
+    const auto s = spline::hosaka_c2_spline(p);
+    for (int j = 0; j + 1 < s.curve.segments(); ++j) {
+        const Eigen::MatrixXd right = s.curve.jet(j + 1, 2);
+        const double kj = s.k[static_cast<std::size_t>(j)];
+        EXPECT_NEAR(kj, (p.row(j + 1) - p.row(j)).norm() / (p.row(j + 2) - p.row(j + 1)).norm(), 1e-15) << "eq (19)";
+        EXPECT_NEAR((s.curve.jet(j + 0.999999999999, 2).row(1) - kj * right.row(1)).norm(), 0.0, 1e-9) << "R_i'(1) = k_i R_{i+1}'(0)";
+        EXPECT_NEAR((s.C.row(j) - kj * right.row(1)).norm(), 0.0, 1e-12);
+        // Second derivatives from the segment's own end data (exact end values of the basis).
+        const Eigen::RowVectorXd r2_end = -6 * (p.row(j + 1) - p.row(j)) + 2 * s.B.row(j) + 4 * s.C.row(j);
+        const Eigen::RowVectorXd r2_start = 6 * (p.row(j + 2) - p.row(j + 1)) - 4 * s.B.row(j + 1) - 2 * s.C.row(j + 1);
+        EXPECT_NEAR((r2_end - kj * kj * r2_start).norm(), 0.0, 1e-11) << "R_i''(1) = k_i² R_{i+1}''(0)";
+    }
+    EXPECT_NEAR(s.curve.jet(0, 2).row(2).norm(), 0.0, 1e-12) << "natural start";
+    EXPECT_NEAR(s.curve.jet(s.curve.segments(), 2).row(2).norm(), 0.0, 1e-12) << "natural end";
+}
+
+TEST(HosakaSpline, TangentEndsSpaceCurvesAndBadInput) {
+    cagd::PointList p(4, 3);
+    p << 0, 0, 0, 1, 1, 0, 2, 1, 1, 3, 0, 2;
+    spline::HosakaSplineOptions o;
+    o.end = spline::HosakaEnd::tangent;
+    o.start_tangent = Eigen::Vector3d(1, 0, 0);
+    o.end_tangent = Eigen::Vector3d(0, 0, 1);
+    const auto s = spline::hosaka_c2_spline(p, o);
+    EXPECT_NEAR((s.curve.jet(0, 1).row(1) - Eigen::RowVector3d(1, 0, 0)).norm(), 0.0, 1e-13);
+    EXPECT_NEAR((s.curve.jet(3, 1).row(1) - Eigen::RowVector3d(0, 0, 1)).norm(), 0.0, 1e-13);
+    for (int i = 0; i < 4; ++i) EXPECT_NEAR((s.curve.point(i).transpose() - p.row(i)).norm(), 0.0, 1e-14);
+    cagd::PointList two(2, 2);
+    two << 0, 0, 1, 1;
+    EXPECT_NEAR(spline::hosaka_c2_spline(two).curve.point(0.5).y(), 0.5, 1e-15) << "two points: the chord";
+    cagd::PointList dup(3, 2);
+    dup << 0, 0, 1, 1, 1, 1;
+    EXPECT_THROW(spline::hosaka_c2_spline(dup), InvalidInput) << "zero-length chord: k undefined";
+    EXPECT_THROW(spline::hosaka_c2_spline(two.topRows(1)), InvalidInput);
+    o.end_tangent = Eigen::Vector2d(0, 1);
+    EXPECT_THROW(spline::hosaka_c2_spline(p, o), InvalidInput) << "tangent of the wrong dimension";
+    spline::HosakaSplineOptions closed;
+    closed.closed = true;
+    EXPECT_THROW(spline::hosaka_c2_spline(two, closed), InvalidInput) << "closed needs 3 points";
+}

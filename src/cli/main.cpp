@@ -4,6 +4,7 @@
 //                    [--rule locality|I|IIa|fmill] [--closed] [--samples N] --in P.csv --out C.csv
 //   cagd interpolate --method pseudo-spline [--optimize none|exact|approx] [--table T]
 //                    | cubic-a | cubic-b | hermite-a | hermite-b  [--closed] --in P.csv --out C.csv
+//   cagd interpolate --method hosaka [--scale chord|unit] [--end natural|tangent] [--closed] (2-D, 3-D)
 //   cagd analyze CURVE.csv
 //   cagd analyze --in P.csv --method M [--optimize O] [--table T] [--closed]
 // Bad input: one line on stderr, exit code 2.
@@ -20,6 +21,7 @@
 #include "fairness/pseudo_energy_table.hpp"
 #include "fairness/pseudo_spline.hpp"
 #include "locality/locality_spline.hpp"
+#include "spline/hosaka_spline.hpp"
 #include "repro/csv.hpp"
 
 namespace {
@@ -218,7 +220,9 @@ int main(int argc, char** argv) {
     bool closed = false;
     std::string optimize = "exact", table_path;
     interp->add_option("--method", method, "s-spline | b2-spline | cubic-bspline (sb2_locality); pseudo-spline | cubic-a | cubic-b | hermite-a | hermite-b (pseudo_energy section 4.2)")
-        ->check(CLI::IsMember({"s-spline", "b2-spline", "cubic-bspline", "pseudo-spline", "cubic-a", "cubic-b", "hermite-a", "hermite-b"}));
+        ->check(CLI::IsMember({"s-spline", "b2-spline", "cubic-bspline", "pseudo-spline", "cubic-a", "cubic-b", "hermite-a", "hermite-b", "hosaka"}));
+    std::string scale = "chord";
+    interp->add_option("--scale", scale, "hosaka: chord (k_i = |A_i|/|A_i+1|, eq 19) | unit (k_i = 1)")->check(CLI::IsMember({"chord", "unit"}));
     interp->add_option("--optimize", optimize, "pseudo-spline tangent optimisation: none | exact | approx (Table 4)")->check(CLI::IsMember({"none", "exact", "approx"}));
     interp->add_option("--table", table_path, "pseudo-energy table written by cagd energy-table (default: the 36-node fast table, built in memory)");
     auto* m_opt = interp->add_option("--m", m, "locality m >= 0 for every segment (eq 12)");
@@ -281,6 +285,21 @@ int main(int argc, char** argv) {
         if (*energy) return run_energy(theta0, theta1, degrees);
         if (*table) return run_energy_table(grid_n, placement, table_method, threads, table_out);
         const PointList points = read_points_csv(in_path);
+        if (method == "hosaka") {   // hosaka eq (20), m = 1
+            spline::HosakaSplineOptions ho;
+            ho.scale = scale == "unit" ? spline::HosakaScale::unit : spline::HosakaScale::chord;
+            ho.closed = closed;
+            if (end == "bessel") fail_input("cagd interpolate", "--method hosaka takes --end natural or tangent, not bessel");
+            if (end == "tangent") {
+                if (start_tangent.empty() || end_tangent.empty())
+                    fail_input("cagd interpolate", "--end tangent needs --start-tangent and --end-tangent");
+                ho.end = spline::HosakaEnd::tangent;
+                ho.start_tangent = parse_vector(start_tangent, "--start-tangent");
+                ho.end_tangent = parse_vector(end_tangent, "--end-tangent");
+            }
+            write_curve(spline::hosaka_c2_spline(points, ho).curve, samples, out_path);
+            return 0;
+        }
         if (method == "pseudo-spline") {
             const fairness::PseudoSplineTables t = load_tables(table_path);
             write_curve(fairness::pseudo_spline(points, t.oracle(), fairness::parse_tangent_optimization(optimize), closed).curve, samples, out_path);

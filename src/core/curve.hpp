@@ -23,4 +23,14 @@ public:
     Eigen::VectorXd point(double t) const { return jet(t, 0).row(0).transpose(); }
 };
 
+// Helpers for curves made of K pieces of unit parameter length, piece s on u ∈ [s, s+1]
+// (piecewise Hermite curves, Hosaka curves).
+std::vector<double> unit_piece_breakpoints(int pieces);   // 0, 1, …, K
+struct PieceLocation {
+    int piece;   // s, the last piece for u = K
+    double t;    // u − s ∈ [0, 1]
+};
+// Throws InvalidInput naming `who` for u outside [0, K] (or NaN) or order < 0.
+PieceLocation locate_unit_piece(const char* who, double u, int pieces, int order);
+
 }  // namespace cagd

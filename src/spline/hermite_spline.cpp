@@ -21,18 +21,10 @@ PiecewiseHermiteCurve::PiecewiseHermiteCurve(Eigen::MatrixXd nodes, Eigen::Matri
         fail_input(who, "nodes and derivatives must be finite");
 }
 
-std::vector<double> PiecewiseHermiteCurve::breakpoints() const {
-    std::vector<double> b(static_cast<std::size_t>(spans()) + 1);
-    for (std::size_t k = 0; k < b.size(); ++k) b[k] = static_cast<double>(k);
-    return b;
-}
+std::vector<double> PiecewiseHermiteCurve::breakpoints() const { return unit_piece_breakpoints(spans()); }
 
 Eigen::MatrixXd PiecewiseHermiteCurve::jet(double u, int order) const {
-    if (!(u >= 0.0 && u <= spans()))
-        fail_input("PiecewiseHermiteCurve::jet", "u = " + full_precision(u) + " outside [0, " + std::to_string(spans()) + "]");
-    if (order < 0) fail_input("PiecewiseHermiteCurve::jet", "order must be >= 0, got " + std::to_string(order));
-    const int k = std::min(static_cast<int>(std::floor(u)), spans() - 1);
-    const double t = u - k;
+    const auto [k, t] = locate_unit_piece("cagd::spline::PiecewiseHermiteCurve::jet", u, spans(), order);
     // Basis values and derivatives of H0..H3 at t (rows: derivative order 0..3).
     const double H[4][4] = {
         {2 * t * t * t - 3 * t * t + 1, -2 * t * t * t + 3 * t * t, t * t * t - 2 * t * t + t, t * t * t - t * t},

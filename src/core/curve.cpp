@@ -1,0 +1,25 @@
+#include "core/curve.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "core/errors.hpp"
+
+namespace cagd {
+
+std::vector<double> unit_piece_breakpoints(int pieces) {
+    std::vector<double> b(static_cast<std::size_t>(pieces) + 1);
+    for (std::size_t k = 0; k < b.size(); ++k) b[k] = static_cast<double>(k);
+    return b;
+}
+
+PieceLocation locate_unit_piece(const char* who, double u, int pieces, int order) {
+    if (!(u >= 0.0 && u <= pieces))
+        fail_input(who, "u = " + full_precision(u) + " outside [0, " + std::to_string(pieces) + "]");
+    if (order < 0) fail_input(who, "order must be >= 0, got " + std::to_string(order));
+    const int s = std::min(static_cast<int>(std::floor(u)), pieces - 1);
+    return {s, u - s};
+}
+
+}  // namespace cagd

@@ -1,0 +1,117 @@
+#include "spline/hosaka_spline.hpp"
+
+#include <Eigen/Sparse>
+#include <cmath>
+#include <string>
+
+#include "core/errors.hpp"
+
+namespace cagd::spline {
+
+HosakaCurve::HosakaCurve(int m, std::vector<Eigen::MatrixXd> start, std::vector<Eigen::MatrixXd> end)
+    : basis_(m), start_(std::move(start)), end_(std::move(end)) {
+    const char* who = "cagd::spline::HosakaCurve";
+    if (start_.empty() || start_.size() != end_.size())
+        fail_input(who, "needs as many start as end derivative sets, at least one, got " + std::to_string(start_.size()) + " and " +
+                            std::to_string(end_.size()));
+    for (std::size_t s = 0; s < start_.size(); ++s)
+        for (const Eigen::MatrixXd* d : {&start_[s], &end_[s]}) {
+            if (d->rows() != m + 1 || d->cols() != start_.front().cols() || d->cols() < 1)
+                fail_input(who, "segment " + std::to_string(s) + ": derivative sets must be (m+1) x dim = " + std::to_string(m + 1) + " x " +
+                                    std::to_string(start_.front().cols()));
+            if (!d->allFinite()) fail_input(who, "segment " + std::to_string(s) + ": derivatives must be finite");
+        }
+}
+
+std::vector<double> HosakaCurve::breakpoints() const { return unit_piece_breakpoints(segments()); }
+
+Eigen::MatrixXd HosakaCurve::jet(double u, int order) const {
+    const auto [s, t] = locate_unit_piece("cagd::spline::HosakaCurve::jet", u, segments(), order);
+    const Eigen::MatrixXd& a = start_[static_cast<std::size_t>(s)];
+    const Eigen::MatrixXd& b = end_[static_cast<std::size_t>(s)];
+    Eigen::MatrixXd out = Eigen::MatrixXd::Zero(order + 1, dimension());
+    for (int k = 0; k <= order; ++k)
+        for (int i = 0; i <= m(); ++i) out.row(k) += basis_.p(i, t, k) * a.row(i) + basis_.q(i, t, k) * b.row(i);
+    return out;
+}
+
+HosakaSpline hosaka_c2_spline(const PointList& points, const HosakaSplineOptions& o) {
+    const char* who = "cagd::spline::hosaka_c2_spline";
+    require_valid_points(points, o.closed ? 3 : 2, true, o.closed, who);
+    const int np = static_cast<int>(points.rows()), dim = static_cast<int>(points.cols());
+    const int n = o.closed ? np : np - 1;   // segments
+    if (!o.closed && o.end == HosakaEnd::tangent)
+        for (const Eigen::VectorXd* v : {&o.start_tangent, &o.end_tangent})
+            if (v->size() != dim || !v->allFinite())
+                fail_input(who, "tangent ends need a finite start and end tangent of dimension " + std::to_string(dim));
+    Eigen::MatrixXd A(n, dim);
+    for (int i = 0; i < n; ++i) A.row(i) = points.row((i + 1) % np) - points.row(i);
+    // k_i at the join after segment i (closed: every segment; open: i = 0..n−2).
+    std::vector<double> k(static_cast<std::size_t>(o.closed ? n : std::max(n - 1, 0)));
+    for (std::size_t i = 0; i < k.size(); ++i)
+        k[i] = o.scale == HosakaScale::unit ? 1.0 : A.row(static_cast<Eigen::Index>(i)).norm() / A.row(static_cast<Eigen::Index>((i + 1) % n)).norm();
+
+    // Unknowns: B_0..B_{n−1}, and C_{n−1} for an open curve (index n). C_i = k_i B_{i+1} otherwise.
+    const int unknowns = o.closed ? n : n + 1;
+    std::vector<Eigen::Triplet<double>> trip;
+    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(unknowns, dim);
+    // Adds coefficient `c` times C_i to row r.
+    const auto add_C = [&](int r, int i, double c) {
+        if (o.closed) trip.emplace_back(r, (i + 1) % n, c * k[static_cast<std::size_t>(i)]);
+        else if (i == n - 1) trip.emplace_back(r, n, c);
+        else trip.emplace_back(r, i + 1, c * k[static_cast<std::size_t>(i)]);
+    };
+    int row = 0;
+    if (!o.closed) {   // start condition
+        if (o.end == HosakaEnd::natural) {   // R''(0) = 6A − 4B − 2C = 0
+            trip.emplace_back(row, 0, 2.0);
+            add_C(row, 0, 1.0);
+            rhs.row(row) = 3.0 * A.row(0);
+        } else {
+            trip.emplace_back(row, 0, 1.0);
+            rhs.row(row) = o.start_tangent.transpose();
+        }
+        ++row;
+    }
+    const int joins = o.closed ? n : n - 1;
+    for (int j = 0; j < joins; ++j, ++row) {   // eq (20) at the join after segment j
+        const double kj = k[static_cast<std::size_t>(j)];
+        const int next = (j + 1) % n;
+        trip.emplace_back(row, j, 1.0);
+        trip.emplace_back(row, next, 2.0 * kj * (1.0 + kj));
+        add_C(row, next, kj * kj);
+        rhs.row(row) = 3.0 * (A.row(j) + kj * kj * A.row(next));
+    }
+    if (!o.closed) {   // end condition
+        if (o.end == HosakaEnd::natural) {   // R''(1) = −6A + 2B + 4C = 0
+            trip.emplace_back(row, n - 1, 1.0);
+            trip.emplace_back(row, n, 2.0);
+            rhs.row(row) = 3.0 * A.row(n - 1);
+        } else {
+            trip.emplace_back(row, n, 1.0);
+            rhs.row(row) = o.end_tangent.transpose();
+        }
+    }
+    Eigen::SparseMatrix<double> M(unknowns, unknowns);
+    M.setFromTriplets(trip.begin(), trip.end());
+    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu(M);
+    if (lu.info() != Eigen::Success) fail_input(who, "the system of eq (20) is singular for these points");
+    const Eigen::MatrixXd x = lu.solve(rhs);
+    Eigen::MatrixXd B(n, dim), C(n, dim);
+    for (int i = 0; i < n; ++i) {
+        B.row(i) = x.row(i);
+        if (o.closed) C.row(i) = k[static_cast<std::size_t>(i)] * x.row((i + 1) % n);
+        else C.row(i) = i == n - 1 ? Eigen::MatrixXd(x.row(n)) : Eigen::MatrixXd(k[static_cast<std::size_t>(i)] * x.row(i + 1));
+    }
+    std::vector<Eigen::MatrixXd> start, end;
+    for (int i = 0; i < n; ++i) {
+        Eigen::MatrixXd s(2, dim), e(2, dim);
+        s << points.row(i), B.row(i);
+        e << points.row((i + 1) % np), C.row(i);
+        start.push_back(s);
+        end.push_back(e);
+    }
+    return HosakaSpline{HosakaCurve(1, std::move(start), std::move(end)), k, B, C};
+}
+
+}  // namespace cagd::spline

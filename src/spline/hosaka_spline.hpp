@@ -1,0 +1,71 @@
+#pragma once
+// Hosaka's curves from end derivatives and his C2 spline through points (hosaka section 3,
+// eq 15–20, with the journal's erratum to eq 18 applied: k_{i+1} → k_i).
+//
+// A segment (eq 15): R(t) = Σ_{i=0}^{m} { R_0^{(i)} p_i(m, t) + R_1^{(i)} q_i(m, t) }, t ∈ [0, 1],
+// R_j^{(i)} the i-th t-derivative at the start (j = 0) and end (j = 1). HosakaCurve joins K such
+// segments on u ∈ [0, K] (segment s on [s, s+1]); any dimension, any m ≥ 0.
+//
+// The C2 spline (m = 1; eq 16–20). Segment i (i = 1..n, from P_{i−1} to P_i) is
+// R_i(t) = P_{i−1} + A_i f(t) + B_i g(t) + C_i h(t) with A_i = P_i − P_{i−1} (the chord), B_i, C_i
+// the end tangents (eq 16, 17). Curvature continuity at the joins (eq 18, corrected):
+//     R_i'(1) = k_i R_{i+1}'(0),  R_i''(1) = k_i² R_{i+1}''(0),  k_i = |A_i| / |A_{i+1}|   (19)
+// gives C_i = k_i B_{i+1} and the three-term recurrence (eq 20)
+//     B_i + 2k_i(1 + k_i) B_{i+1} + k_i² k_{i+1} B_{i+2} = 3(A_i + k_i² A_{i+1}).
+// With (19) the joins are C2 in the chord-length parameter, so this is the chord-length cubic
+// spline written in Hosaka's form (tested); `HosakaScale::unit` (k_i = 1, the "conventional" form
+// the paper criticises) is the uniform-parameter cubic spline.
+// Unknowns B_1..B_n and C_n: a tridiagonal system (row per join, one per end), solved with Eigen
+// SparseLU in O(n). End conditions: natural (R'' = 0 at both ends: 2B_1 + k_1 B_2 = 3A_1 and
+// B_n + 2C_n = 3A_n), tangent (B_1, C_n given), closed (the recurrence wraps round; k_n = |A_n|/|A_1|).
+// Preconditions (InvalidInput): ≥ 2 points open (≥ 3 closed), 1–3 coordinates, finite, no
+// coincident consecutive points (k_i would be 0 or ∞); tangent ends need two finite vectors of the
+// points' dimension.
+#include <Eigen/Dense>
+#include <vector>
+
+#include "core/curve.hpp"
+#include "core/points.hpp"
+#include "spline/hosaka_basis.hpp"
+
+namespace cagd::spline {
+
+class HosakaCurve : public Curve {
+public:
+    // start[s], end[s]: (m+1) × dim matrices, row i = the i-th derivative at the segment's start / end.
+    HosakaCurve(int m, std::vector<Eigen::MatrixXd> start, std::vector<Eigen::MatrixXd> end);
+    int m() const { return basis_.m(); }
+    int segments() const { return static_cast<int>(start_.size()); }
+    const Eigen::MatrixXd& start_derivatives(int s) const { return start_[static_cast<std::size_t>(s)]; }
+    const Eigen::MatrixXd& end_derivatives(int s) const { return end_[static_cast<std::size_t>(s)]; }
+
+    int dimension() const override { return static_cast<int>(start_.front().cols()); }
+    double t_min() const override { return 0.0; }
+    double t_max() const override { return segments(); }
+    Eigen::MatrixXd jet(double u, int order) const override;
+    std::vector<double> breakpoints() const override;
+
+private:
+    HosakaBasis basis_;
+    std::vector<Eigen::MatrixXd> start_, end_;
+};
+
+enum class HosakaScale { chord, unit };   // k_i of eq (19), or k_i = 1
+enum class HosakaEnd { natural, tangent };
+
+struct HosakaSplineOptions {
+    HosakaScale scale = HosakaScale::chord;
+    HosakaEnd end = HosakaEnd::natural;
+    bool closed = false;
+    Eigen::VectorXd start_tangent, end_tangent;   // B_1 and C_n for HosakaEnd::tangent
+};
+
+struct HosakaSpline {
+    HosakaCurve curve;
+    std::vector<double> k;          // k_i, one per join (closed: per segment, wrapping)
+    Eigen::MatrixXd B, C;           // one row per segment
+};
+
+HosakaSpline hosaka_c2_spline(const PointList& points, const HosakaSplineOptions& options = {});
+
+}  // namespace cagd::spline
