@@ -151,3 +151,23 @@ TEST(HosakaSpline, TangentEndsSpaceCurvesAndBadInput) {
     closed.closed = true;
     EXPECT_THROW(spline::hosaka_c2_spline(two, closed), InvalidInput) << "closed needs 3 points";
 }
+
+TEST(HosakaExplicit, InterpolatesIsC2WithNaturalEndsAndRejectsBadAbscissae) {
+    const std::vector<double> x{0, 0.4, 1.5, 2.2, 4.0};
+    Eigen::MatrixXd y(5, 1);
+    y << 1, -0.5, 0.25, 2, 0;
+    const auto s = spline::hosaka_explicit_spline(x, y);
+    for (int i = 0; i < 5; ++i) EXPECT_NEAR(s.evaluate(x[static_cast<std::size_t>(i)])(0), y(i, 0), 1e-14);
+    for (int i = 1; i < 4; ++i)
+        for (int k : {1, 2}) EXPECT_NEAR(s.evaluate_in(i - 1, 1.0, k)(0), s.evaluate_in(i, 0.0, k)(0), 1e-12) << "C" << k << " at x_" << i;
+    EXPECT_NEAR(s.evaluate(0.0, 2)(0), 0.0, 1e-12);
+    EXPECT_NEAR(s.evaluate(4.0, 2)(0), 0.0, 1e-12);
+    // A straight line is reproduced and has zero energy.
+    Eigen::MatrixXd line(5, 1);
+    for (int i = 0; i < 5; ++i) line(i, 0) = 2 * x[static_cast<std::size_t>(i)] - 1;
+    EXPECT_NEAR(spline::hosaka_explicit_spline(x, line).bending_energy(), 0.0, 1e-24);
+    EXPECT_THROW(spline::hosaka_explicit_spline({0, 1, 1, 2, 3}, y), InvalidInput) << "repeated abscissa";
+    EXPECT_THROW(spline::hosaka_explicit_spline({0, 2, 1, 3, 4}, y), InvalidInput) << "unsorted";
+    EXPECT_THROW(spline::hosaka_explicit_spline({0, 1, 2}, y), InvalidInput) << "row count";
+    EXPECT_THROW(s.evaluate(4.5), InvalidInput);
+}

@@ -1,6 +1,7 @@
 #include "spline/hosaka_spline.hpp"
 
 #include <Eigen/Sparse>
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -112,6 +113,69 @@ HosakaSpline hosaka_c2_spline(const PointList& points, const HosakaSplineOptions
         end.push_back(e);
     }
     return HosakaSpline{HosakaCurve(1, std::move(start), std::move(end)), k, B, C};
+}
+
+ExplicitSpline hosaka_explicit_spline(const std::vector<double>& x, const Eigen::MatrixXd& values) {
+    const char* who = "cagd::spline::hosaka_explicit_spline";
+    const int n = static_cast<int>(x.size());
+    if (n < 2) fail_input(who, "needs at least 2 abscissae, got " + std::to_string(n));
+    if (values.rows() != n || values.cols() < 1)
+        fail_input(who, "needs one value row per abscissa, got " + std::to_string(values.rows()) + " rows for " + std::to_string(n));
+    if (!values.allFinite()) fail_input(who, "values must be finite");
+    for (int i = 0; i < n; ++i) {
+        if (!std::isfinite(x[static_cast<std::size_t>(i)])) fail_input(who, "abscissa " + std::to_string(i) + " is not finite");
+        if (i > 0 && !(x[static_cast<std::size_t>(i)] > x[static_cast<std::size_t>(i - 1)]))
+            fail_input(who, "abscissae must increase strictly: x[" + std::to_string(i) + "] = " + full_precision(x[static_cast<std::size_t>(i)]) +
+                                " after " + full_precision(x[static_cast<std::size_t>(i - 1)]));
+    }
+    const auto h = [&](int i) { return x[static_cast<std::size_t>(i + 1)] - x[static_cast<std::size_t>(i)]; };
+    std::vector<Eigen::Triplet<double>> trip;
+    Eigen::MatrixXd rhs(n, values.cols());
+    trip.emplace_back(0, 0, 2.0);
+    trip.emplace_back(0, 1, 1.0);
+    rhs.row(0) = 3.0 * (values.row(1) - values.row(0)) / h(0);
+    for (int i = 1; i + 1 < n; ++i) {
+        trip.emplace_back(i, i - 1, 1.0 / h(i - 1));
+        trip.emplace_back(i, i, 2.0 * (1.0 / h(i - 1) + 1.0 / h(i)));
+        trip.emplace_back(i, i + 1, 1.0 / h(i));
+        rhs.row(i) = 3.0 * (values.row(i) - values.row(i - 1)) / (h(i - 1) * h(i - 1)) + 3.0 * (values.row(i + 1) - values.row(i)) / (h(i) * h(i));
+    }
+    trip.emplace_back(n - 1, n - 2, 1.0);
+    trip.emplace_back(n - 1, n - 1, 2.0);
+    rhs.row(n - 1) = 3.0 * (values.row(n - 1) - values.row(n - 2)) / h(n - 2);
+    Eigen::SparseMatrix<double> M(n, n);
+    M.setFromTriplets(trip.begin(), trip.end());
+    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu(M);
+    if (lu.info() != Eigen::Success) fail_input(who, "singular system of eq (23)");
+    return ExplicitSpline{x, values, lu.solve(rhs)};
+}
+
+Eigen::RowVectorXd ExplicitSpline::evaluate(double at, int k) const {
+    const char* who = "cagd::spline::ExplicitSpline::evaluate";
+    if (!(at >= x.front() && at <= x.back())) fail_input(who, "x = " + full_precision(at) + " outside [" + full_precision(x.front()) + ", " + full_precision(x.back()) + "]");
+    const auto it = std::upper_bound(x.begin(), x.end(), at);
+    const int i = std::clamp(static_cast<int>(it - x.begin()) - 1, 0, static_cast<int>(x.size()) - 2);
+    return evaluate_in(i, (at - x[static_cast<std::size_t>(i)]) / (x[static_cast<std::size_t>(i + 1)] - x[static_cast<std::size_t>(i)]), k);
+}
+
+Eigen::RowVectorXd ExplicitSpline::evaluate_in(int i, double u, int k) const {
+    const char* who = "cagd::spline::ExplicitSpline::evaluate_in";
+    if (i < 0 || i + 1 >= static_cast<int>(x.size())) fail_input(who, "interval " + std::to_string(i) + " does not exist");
+    if (k < 0 || k > 3) fail_input(who, "derivative order must be 0..3, got " + std::to_string(k));
+    static const HosakaBasis basis(1);
+    const double l = x[static_cast<std::size_t>(i + 1)] - x[static_cast<std::size_t>(i)];
+    // eq (21): l^j on the j-th end derivative; d/dx = (1/l) d/du.
+    return std::pow(l, -k) * (basis.p(0, u, k) * values.row(i) + basis.q(0, u, k) * values.row(i + 1) + l * basis.p(1, u, k) * slopes.row(i) +
+                              l * basis.q(1, u, k) * slopes.row(i + 1));
+}
+
+double ExplicitSpline::bending_energy() const {
+    double e = 0.0;
+    for (std::size_t i = 0; i + 1 < x.size(); ++i) {
+        const Eigen::RowVectorXd y0 = evaluate_in(static_cast<int>(i), 0.0, 2), y1 = evaluate_in(static_cast<int>(i), 1.0, 2);
+        e += (x[i + 1] - x[i]) / 3.0 * (y0.squaredNorm() + y0.dot(y1) + y1.squaredNorm());   // ∫ of a linear function squared
+    }
+    return e;
 }
 
 }  // namespace cagd::spline

@@ -68,4 +68,25 @@ struct HosakaSpline {
 
 HosakaSpline hosaka_c2_spline(const PointList& points, const HosakaSplineOptions& options = {});
 
+// The explicit form y(x), z(x) (eq 21–23): on [x_{i−1}, x_i] with u = (x − x_{i−1})/l, l = x_i − x_{i−1},
+//     (y, z)(x) = Σ_{j=0}^{1} { (y, z)_{i−1}^{(j)} p_j(1, u) + (y, z)_i^{(j)} q_j(1, u) } l^j      (21, 22)
+// with the slopes y'_i from the C2 conditions at the interior abscissae,
+//     y'_{i−1}/h_{i−1} + 2(1/h_{i−1} + 1/h_i) y'_i + y'_{i+1}/h_i = 3 (y_i − y_{i−1})/h_{i−1}² + 3 (y_{i+1} − y_i)/h_i²
+// (eq 23 with the squares the printed right-hand side lacks: erratum hosaka-E4), h_i = x_{i+1} − x_i,
+// and natural ends y'' = 0 (2y'_0 + y'_1 = 3(y_1 − y_0)/h_0, y'_{n−1} + 2y'_n = 3(y_n − y_{n−1})/h_{n−1}).
+// Each column of `values` (y, or y and z) is one function of x. This curve minimises
+// ∫ (y''² + z''²) dx among interpolants (eq 24; checked by perturbation in the experiment).
+// Preconditions: strictly increasing finite abscissae, ≥ 2 of them, one value row per abscissa.
+struct ExplicitSpline {
+    std::vector<double> x;
+    Eigen::MatrixXd values, slopes;   // one row per abscissa
+    // k-th x-derivative (k ≤ 3) at x ∈ [x_0, x_n] (InvalidInput outside); at an interior abscissa
+    // the interval to its right is used.
+    Eigen::RowVectorXd evaluate(double at, int k = 0) const;
+    // The same on interval i = [x_i, x_{i+1}] at its local u ∈ [0, 1] (one-sided limits at the joins).
+    Eigen::RowVectorXd evaluate_in(int interval, double u, int k = 0) const;
+    double bending_energy() const;   // Σ over columns of ∫ (d²/dx²)² dx, exact (y'' is linear per interval)
+};
+ExplicitSpline hosaka_explicit_spline(const std::vector<double>& x, const Eigen::MatrixXd& values);
+
 }  // namespace cagd::spline
