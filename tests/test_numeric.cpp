@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "core/errors.hpp"
+#include <random>
 #include "numeric/gauss_legendre.hpp"
 #include "numeric/romberg.hpp"
 
@@ -99,4 +100,27 @@ TEST(Rational, SimplestFractionWithinTolerance) {
     EXPECT_NEAR(h.value(), -0.366, 0.0005);
     EXPECT_EQ(h.denominator, 41);
     EXPECT_THROW(cagd::numeric::simplest_fraction_within(1.0, 0.0), cagd::InvalidInput);
+}
+
+#include "numeric/tridiagonal.hpp"
+
+TEST(Tridiagonal, MatchesADenseSolveAndRejectsAZeroPivot) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    const int n = 40;
+    std::vector<double> sub(n), diag(n), sup(n);
+    Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n, n), R(n, 2);
+    for (int r = 0; r < n; ++r) {
+        sub[static_cast<std::size_t>(r)] = r > 0 ? u(rng) : 0.0;
+        sup[static_cast<std::size_t>(r)] = r + 1 < n ? u(rng) : 0.0;
+        diag[static_cast<std::size_t>(r)] = 2.5 + u(rng);
+        A(r, r) = diag[static_cast<std::size_t>(r)];
+        if (r > 0) A(r, r - 1) = sub[static_cast<std::size_t>(r)];
+        if (r + 1 < n) A(r, r + 1) = sup[static_cast<std::size_t>(r)];
+        R.row(r) << u(rng), u(rng);
+    }
+    const Eigen::MatrixXd X = cagd::numeric::solve_tridiagonal(sub, diag, sup, R);
+    EXPECT_LT((A * X - R).norm(), 1e-13);
+    EXPECT_LT((X - A.partialPivLu().solve(R)).norm(), 1e-13);
+    EXPECT_THROW(cagd::numeric::solve_tridiagonal({0, 1}, {0, 1}, {1, 0}, Eigen::MatrixXd::Ones(2, 1)), cagd::InvalidInput);
 }

@@ -6,33 +6,50 @@
 #include <string>
 
 #include "core/errors.hpp"
+#include "numeric/tridiagonal.hpp"
 
 namespace cagd::spline {
 
-HosakaCurve::HosakaCurve(int m, std::vector<Eigen::MatrixXd> start, std::vector<Eigen::MatrixXd> end)
-    : basis_(m), start_(std::move(start)), end_(std::move(end)) {
+namespace {
+Eigen::MatrixXd stack(int m, const std::vector<Eigen::MatrixXd>& parts, const char* who) {
+    if (parts.empty()) fail_input(who, "needs at least one segment");
+    const Eigen::Index dim = parts.front().cols();
+    Eigen::MatrixXd out(static_cast<Eigen::Index>(parts.size()) * (m + 1), dim);
+    for (std::size_t s = 0; s < parts.size(); ++s) {
+        if (parts[s].rows() != m + 1 || parts[s].cols() != dim)
+            fail_input(who, "segment " + std::to_string(s) + ": derivative sets must be (m+1) x dim = " + std::to_string(m + 1) + " x " +
+                                std::to_string(dim));
+        out.middleRows(static_cast<Eigen::Index>(s) * (m + 1), m + 1) = parts[s];
+    }
+    return out;
+}
+}  // namespace
+
+HosakaCurve::HosakaCurve(int m, const std::vector<Eigen::MatrixXd>& start, const std::vector<Eigen::MatrixXd>& end)
+    : basis_(m), start_(stack(m, start, "cagd::spline::HosakaCurve")), end_(stack(m, end, "cagd::spline::HosakaCurve")) {
+    validate();
+}
+
+HosakaCurve::HosakaCurve(int m, Eigen::MatrixXd start, Eigen::MatrixXd end) : basis_(m), start_(std::move(start)), end_(std::move(end)) {
+    validate();
+}
+
+void HosakaCurve::validate() const {
     const char* who = "cagd::spline::HosakaCurve";
-    if (start_.empty() || start_.size() != end_.size())
-        fail_input(who, "needs as many start as end derivative sets, at least one, got " + std::to_string(start_.size()) + " and " +
-                            std::to_string(end_.size()));
-    for (std::size_t s = 0; s < start_.size(); ++s)
-        for (const Eigen::MatrixXd* d : {&start_[s], &end_[s]}) {
-            if (d->rows() != m + 1 || d->cols() != start_.front().cols() || d->cols() < 1)
-                fail_input(who, "segment " + std::to_string(s) + ": derivative sets must be (m+1) x dim = " + std::to_string(m + 1) + " x " +
-                                    std::to_string(start_.front().cols()));
-            if (!d->allFinite()) fail_input(who, "segment " + std::to_string(s) + ": derivatives must be finite");
-        }
+    if (start_.rows() < m() + 1 || start_.rows() % (m() + 1) != 0 || end_.rows() != start_.rows() || end_.cols() != start_.cols() || start_.cols() < 1)
+        fail_input(who, "needs (m+1) rows per segment, the same for start and end derivatives, got " + std::to_string(start_.rows()) + " and " +
+                            std::to_string(end_.rows()) + " rows");
+    if (!start_.allFinite() || !end_.allFinite()) fail_input(who, "derivatives must be finite");
 }
 
 std::vector<double> HosakaCurve::breakpoints() const { return unit_piece_breakpoints(segments()); }
 
 Eigen::MatrixXd HosakaCurve::jet(double u, int order) const {
     const auto [s, t] = locate_unit_piece("cagd::spline::HosakaCurve::jet", u, segments(), order);
-    const Eigen::MatrixXd& a = start_[static_cast<std::size_t>(s)];
-    const Eigen::MatrixXd& b = end_[static_cast<std::size_t>(s)];
+    const Eigen::Index first = static_cast<Eigen::Index>(s) * (m() + 1);
     Eigen::MatrixXd out = Eigen::MatrixXd::Zero(order + 1, dimension());
     for (int k = 0; k <= order; ++k)
-        for (int i = 0; i <= m(); ++i) out.row(k) += basis_.p(i, t, k) * a.row(i) + basis_.q(i, t, k) * b.row(i);
+        for (int i = 0; i <= m(); ++i) out.row(k) += basis_.p(i, t, k) * start_.row(first + i) + basis_.q(i, t, k) * end_.row(first + i);
     return out;
 }
 
@@ -93,24 +110,38 @@ HosakaSpline hosaka_c2_spline(const PointList& points, const HosakaSplineOptions
             rhs.row(row) = o.end_tangent.transpose();
         }
     }
-    Eigen::SparseMatrix<double> M(unknowns, unknowns);
-    M.setFromTriplets(trip.begin(), trip.end());
-    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu(M);
-    if (lu.info() != Eigen::Success) fail_input(who, "the system of eq (20) is singular for these points");
-    const Eigen::MatrixXd x = lu.solve(rhs);
+    Eigen::MatrixXd x;
+    if (!o.closed) {
+        // Tridiagonal: the Thomas algorithm, O(n). With the unknowns scaled by |A_i| (chord scale)
+        // the rows become m_j + 2(1 + k_j) m_{j+1} + k_j m_{j+2} (and 2m_0 + m_1, m_{n−1} + 2m_n at
+        // natural ends), diagonally dominant, so elimination without pivoting is stable; for
+        // k_i = 1 the rows are B_j + 4B_{j+1} + B_{j+2} already.
+        std::vector<double> sub(static_cast<std::size_t>(unknowns), 0.0), diag(sub), sup(sub);
+        for (const auto& t : trip) {
+            const int r = t.row(), c = t.col();
+            (c == r - 1 ? sub : c == r ? diag : sup)[static_cast<std::size_t>(r)] += t.value();
+        }
+        x = numeric::solve_tridiagonal(sub, diag, sup, rhs);
+    } else {
+        // Cyclic (corner entries): SparseLU; the natural ordering keeps the fill to the last rows and columns.
+        Eigen::SparseMatrix<double> M(unknowns, unknowns);
+        M.setFromTriplets(trip.begin(), trip.end());
+        Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::NaturalOrdering<int>> lu(M);
+        if (lu.info() != Eigen::Success) fail_input(who, "the system of eq (20) is singular for these points");
+        x = lu.solve(rhs);
+    }
     Eigen::MatrixXd B(n, dim), C(n, dim);
     for (int i = 0; i < n; ++i) {
         B.row(i) = x.row(i);
         if (o.closed) C.row(i) = k[static_cast<std::size_t>(i)] * x.row((i + 1) % n);
         else C.row(i) = i == n - 1 ? Eigen::MatrixXd(x.row(n)) : Eigen::MatrixXd(k[static_cast<std::size_t>(i)] * x.row(i + 1));
     }
-    std::vector<Eigen::MatrixXd> start, end;
+    Eigen::MatrixXd start(2 * n, dim), end(2 * n, dim);
     for (int i = 0; i < n; ++i) {
-        Eigen::MatrixXd s(2, dim), e(2, dim);
-        s << points.row(i), B.row(i);
-        e << points.row((i + 1) % np), C.row(i);
-        start.push_back(s);
-        end.push_back(e);
+        start.row(2 * i) = points.row(i);
+        start.row(2 * i + 1) = B.row(i);
+        end.row(2 * i) = points.row((i + 1) % np);
+        end.row(2 * i + 1) = C.row(i);
     }
     return HosakaSpline{HosakaCurve(1, std::move(start), std::move(end)), k, B, C};
 }

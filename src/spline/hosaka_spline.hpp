@@ -15,8 +15,9 @@
 // With (19) the joins are C2 in the chord-length parameter, so this is the chord-length cubic
 // spline written in Hosaka's form (tested); `HosakaScale::unit` (k_i = 1, the "conventional" form
 // the paper criticises) is the uniform-parameter cubic spline.
-// Unknowns B_1..B_n and C_n: a tridiagonal system (row per join, one per end), solved with Eigen
-// SparseLU in O(n). End conditions: natural (R'' = 0 at both ends: 2B_1 + k_1 B_2 = 3A_1 and
+// Unknowns B_1..B_n and C_n: a tridiagonal system (row per join, one per end), solved by the
+// Thomas algorithm in O(n) (numeric/tridiagonal.hpp; stable: diagonally dominant after scaling the
+// unknowns by |A_i|); a closed curve's cyclic system by Eigen SparseLU (natural ordering). End conditions: natural (R'' = 0 at both ends: 2B_1 + k_1 B_2 = 3A_1 and
 // B_n + 2C_n = 3A_n), tangent (B_1, C_n given), closed (the recurrence wraps round; k_n = |A_n|/|A_1|).
 // Preconditions (InvalidInput): ≥ 2 points open (≥ 3 closed), 1–3 coordinates, finite, no
 // coincident consecutive points (k_i would be 0 or ∞); tangent ends need two finite vectors of the
@@ -33,13 +34,15 @@ namespace cagd::spline {
 class HosakaCurve : public Curve {
 public:
     // start[s], end[s]: (m+1) × dim matrices, row i = the i-th derivative at the segment's start / end.
-    HosakaCurve(int m, std::vector<Eigen::MatrixXd> start, std::vector<Eigen::MatrixXd> end);
+    HosakaCurve(int m, const std::vector<Eigen::MatrixXd>& start, const std::vector<Eigen::MatrixXd>& end);
+    // The same data stacked: rows s(m+1) .. s(m+1)+m of `start` / `end` belong to segment s.
+    HosakaCurve(int m, Eigen::MatrixXd start, Eigen::MatrixXd end);
     int m() const { return basis_.m(); }
-    int segments() const { return static_cast<int>(start_.size()); }
-    const Eigen::MatrixXd& start_derivatives(int s) const { return start_[static_cast<std::size_t>(s)]; }
-    const Eigen::MatrixXd& end_derivatives(int s) const { return end_[static_cast<std::size_t>(s)]; }
+    int segments() const { return static_cast<int>(start_.rows()) / (m() + 1); }
+    Eigen::MatrixXd start_derivatives(int s) const { return start_.middleRows(s * (m() + 1), m() + 1); }
+    Eigen::MatrixXd end_derivatives(int s) const { return end_.middleRows(s * (m() + 1), m() + 1); }
 
-    int dimension() const override { return static_cast<int>(start_.front().cols()); }
+    int dimension() const override { return static_cast<int>(start_.cols()); }
     double t_min() const override { return 0.0; }
     double t_max() const override { return segments(); }
     Eigen::MatrixXd jet(double u, int order) const override;
@@ -47,7 +50,8 @@ public:
 
 private:
     HosakaBasis basis_;
-    std::vector<Eigen::MatrixXd> start_, end_;
+    Eigen::MatrixXd start_, end_;   // stacked, (m+1) rows per segment
+    void validate() const;
 };
 
 enum class HosakaScale { chord, unit };   // k_i of eq (19), or k_i = 1
