@@ -171,3 +171,21 @@ TEST(HosakaExplicit, InterpolatesIsC2WithNaturalEndsAndRejectsBadAbscissae) {
     EXPECT_THROW(spline::hosaka_explicit_spline({0, 1, 2}, y), InvalidInput) << "row count";
     EXPECT_THROW(s.evaluate(4.5), InvalidInput);
 }
+
+TEST(HosakaSpline, OrderMSplineIsContinuousTo2mAndReducesToEq20ForM1) {
+    const cagd::PointList p = uneven_points();
+    EXPECT_LT(analysis::max_distance_same_parameter(spline::hosaka_spline(p, 1), spline::hosaka_c2_spline(p).curve), 1e-12);
+    spline::HosakaSplineOptions closed;
+    closed.closed = true;
+    EXPECT_LT(analysis::max_distance_same_parameter(spline::hosaka_spline(p, 1, spline::HosakaScale::chord, true), spline::hosaka_c2_spline(p, closed).curve), 1e-12);
+    const spline::HosakaCurve c = spline::hosaka_spline(p, 2, spline::HosakaScale::unit);
+    for (int s = 1; s < c.segments(); ++s)
+        for (int k = 1; k <= 4; ++k) {   // unit scale: τ = u, so t-derivatives must match directly
+            const spline::HosakaBasis b(2);
+            Eigen::RowVectorXd left = Eigen::RowVectorXd::Zero(2);
+            for (int i = 0; i <= 2; ++i) left += b.p(i, 1.0, k) * c.start_derivatives(s - 1).row(i) + b.q(i, 1.0, k) * c.end_derivatives(s - 1).row(i);
+            const Eigen::RowVectorXd right = c.jet(s, k).row(k);
+            EXPECT_NEAR((left - right).norm(), 0.0, 1e-9 * (1 + right.norm())) << "order " << k << " at join " << s;
+        }
+    EXPECT_THROW(spline::hosaka_spline(p, 0), InvalidInput);
+}

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "analysis/curve_measures.hpp"
+#include "curve_data.hpp"
 #include "analysis/fairness_measures.hpp"
 #include "repro/artifact_run.hpp"
 #include "spline/hermite_spline.hpp"
@@ -20,9 +21,7 @@ double diagonal(const PointList& p) { return (p.colwise().maxCoeff() - p.colwise
 
 int main(int argc, char** argv) {
     repro::ArtifactRun run("hosaka", "c2_spline", "3", "The C2 spline with scale factors (eq 16-20) and the conventional k = 1", argc, argv);
-    PointList uneven(6, 2), even(7, 2);
-    uneven << 0, 0, 1, 0.8, 1.15, 0.95, 3.0, 1.2, 3.2, 0.9, 5.0, 0.0;
-    for (int i = 0; i < 7; ++i) even.row(i) << i, std::sin(double(i));
+    const PointList uneven = hosaka_data::uneven_points(), even = hosaka_data::even_points();
 
     HosakaSplineOptions chord_o, unit_o;
     unit_o.scale = HosakaScale::unit;

@@ -146,6 +146,62 @@ HosakaSpline hosaka_c2_spline(const PointList& points, const HosakaSplineOptions
     return HosakaSpline{HosakaCurve(1, std::move(start), std::move(end)), k, B, C};
 }
 
+HosakaCurve hosaka_spline(const PointList& points, int m, HosakaScale scale, bool closed) {
+    const char* who = "cagd::spline::hosaka_spline";
+    if (m < 1) fail_input(who, "m must be >= 1, got " + std::to_string(m));
+    require_valid_points(points, closed ? 3 : 2, true, closed, who);
+    const int np = static_cast<int>(points.rows()), dim = static_cast<int>(points.cols());
+    const int segs = closed ? np : np - 1;
+    std::vector<double> L(static_cast<std::size_t>(segs));
+    for (int i = 0; i < segs; ++i) L[static_cast<std::size_t>(i)] = scale == HosakaScale::unit ? 1.0 : (points.row((i + 1) % np) - points.row(i)).norm();
+    const HosakaBasis b(m);
+    // Unknown (node, j), j = 1..m: the j-th τ-derivative at the node.
+    const auto unknown = [&](int node, int j) { return node * m + (j - 1); };
+    const int unknowns = np * m;
+    std::vector<Eigen::Triplet<double>> trip;
+    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(unknowns, dim);
+    // Adds sign × (k-th τ-derivative of segment s at local t) to row r: the point values go to the rhs.
+    const auto add_derivative = [&](int r, int s, double t, int k, double sign) {
+        const double l = L[static_cast<std::size_t>(s)], inv = sign / std::pow(l, k);
+        const int a = s, c = (s + 1) % np;
+        rhs.row(r) -= inv * (b.p(0, t, k) * points.row(a) + b.q(0, t, k) * points.row(c));
+        for (int j = 1; j <= m; ++j) {
+            trip.emplace_back(r, unknown(a, j), inv * b.p(j, t, k) * std::pow(l, j));
+            trip.emplace_back(r, unknown(c, j), inv * b.q(j, t, k) * std::pow(l, j));
+        }
+    };
+    int row = 0;
+    for (int node = 0; node < np; ++node)
+        for (int k = m + 1; k <= 2 * m; ++k, ++row) {
+            const bool has_left = closed || node > 0, has_right = closed || node < np - 1;
+            if (has_left && has_right) {   // continuity of the k-th τ-derivative
+                add_derivative(row, (node - 1 + segs) % segs, 1.0, k, 1.0);
+                add_derivative(row, node % segs, 0.0, k, -1.0);
+            } else if (has_right) {        // natural start: the k-th derivative vanishes
+                add_derivative(row, 0, 0.0, k, 1.0);
+            } else {                       // natural end
+                add_derivative(row, segs - 1, 1.0, k, 1.0);
+            }
+        }
+    Eigen::SparseMatrix<double> M(unknowns, unknowns);
+    M.setFromTriplets(trip.begin(), trip.end());
+    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu(M);
+    if (lu.info() != Eigen::Success) fail_input(who, "the continuity system is singular for these points");
+    const Eigen::MatrixXd x = lu.solve(rhs);
+    Eigen::MatrixXd start((m + 1) * segs, dim), end((m + 1) * segs, dim);
+    for (int s = 0; s < segs; ++s) {
+        const int a = s, c = (s + 1) % np;
+        const double l = L[static_cast<std::size_t>(s)];
+        start.row(s * (m + 1)) = points.row(a);
+        end.row(s * (m + 1)) = points.row(c);
+        for (int j = 1; j <= m; ++j) {
+            start.row(s * (m + 1) + j) = std::pow(l, j) * x.row(unknown(a, j));
+            end.row(s * (m + 1) + j) = std::pow(l, j) * x.row(unknown(c, j));
+        }
+    }
+    return HosakaCurve(m, std::move(start), std::move(end));
+}
+
 ExplicitSpline hosaka_explicit_spline(const std::vector<double>& x, const Eigen::MatrixXd& values) {
     const char* who = "cagd::spline::hosaka_explicit_spline";
     const int n = static_cast<int>(x.size());

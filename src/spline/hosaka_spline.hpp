@@ -72,6 +72,17 @@ struct HosakaSpline {
 
 HosakaSpline hosaka_c2_spline(const PointList& points, const HosakaSplineOptions& options = {});
 
+// Higher order (end of section 3: "in general derivatives up to order 2m can be joined
+// continuously"): the spline of m-th order segments (eq 15) through points whose derivatives up to
+// order 2m are continuous in the global parameter τ (dτ = |A_i| dt on segment i with the chord
+// scale of eq 19, dτ = dt with the unit scale). Unknowns: the τ-derivatives of orders 1..m at every
+// point (segment i's end data are |A_i|^j times them); equations: continuity of the τ-derivatives
+// of orders m+1..2m at every interior point, and at open ends the natural conditions that those
+// derivatives vanish (for m = 1: R'' = 0, the spline of eq 20); closed curves wrap round. Solved with
+// Eigen SparseLU. m = 1 gives hosaka_c2_spline's curve (tested).
+// Preconditions: as hosaka_c2_spline, m ≥ 1, ≥ 2 points open (≥ 3 closed), natural ends only.
+HosakaCurve hosaka_spline(const PointList& points, int m, HosakaScale scale = HosakaScale::chord, bool closed = false);
+
 // The explicit form y(x), z(x) (eq 21–23): on [x_{i−1}, x_i] with u = (x − x_{i−1})/l, l = x_i − x_{i−1},
 //     (y, z)(x) = Σ_{j=0}^{1} { (y, z)_{i−1}^{(j)} p_j(1, u) + (y, z)_i^{(j)} q_j(1, u) } l^j      (21, 22)
 // with the slopes y'_i from the C2 conditions at the interior abscissae,
