@@ -84,6 +84,10 @@ printf 'x,y,z\n0,0,0\n1,1,0\n2,1,1\n3,0,2\n' > "$dir/space.csv"
 awk -F, 'NR==10 { exit !($1==2 && ($2-2)^2 < 1e-20 && ($3-1)^2 < 1e-20 && ($4-1)^2 < 1e-20) }' "$dir/h.csv" || { echo "FAIL: hosaka misses P_2"; fails=$((fails+1)); }
 "$cagd" interpolate --method hosaka --scale unit --end tangent --start-tangent 1,0,0 --end-tangent 0,0,1 --in "$dir/space.csv" --out "$dir/h.csv" \
   || { echo "FAIL: hosaka tangent ends"; fails=$((fails+1)); }
+"$cagd" interpolate --method hosaka --m 2 --in "$dir/space.csv" --out "$dir/h2.csv" --samples 4 || { echo "FAIL: hosaka --m 2"; fails=$((fails+1)); }
+awk -F, 'NR==10 { exit !($1==2 && ($2-2)^2 < 1e-20 && ($3-1)^2 < 1e-20 && ($4-1)^2 < 1e-20) }' "$dir/h2.csv" || { echo "FAIL: hosaka --m 2 misses P_2"; fails=$((fails+1)); }
+expect_bad "hosaka m 0"            '0,0\n1,1\n2,0\n'    interpolate --method hosaka --m 0 --in "$dir/bad.csv" --out "$dir/o.csv"
+expect_bad "hosaka m 2 tangent"    '0,0\n1,1\n2,0\n'    interpolate --method hosaka --m 2 --end tangent --start-tangent 1,0 --end-tangent 1,0 --in "$dir/bad.csv" --out "$dir/o.csv"
 expect_bad "hosaka bessel end"     '0,0\n1,1\n2,0\n'    interpolate --method hosaka --end bessel --in "$dir/bad.csv" --out "$dir/o.csv"
 expect_bad "hosaka zero chord"     '0,0\n1,1\n1,1\n'    interpolate --method hosaka --in "$dir/bad.csv" --out "$dir/o.csv"
 expect_bad "hosaka tangent dim"    '0,0\n1,1\n2,0\n'    interpolate --method hosaka --end tangent --start-tangent 1,0,0 --end-tangent 0,1,0 --in "$dir/bad.csv" --out "$dir/o.csv"

@@ -4,7 +4,7 @@
 //                    [--rule locality|I|IIa|fmill] [--closed] [--samples N] --in P.csv --out C.csv
 //   cagd interpolate --method pseudo-spline [--optimize none|exact|approx] [--table T]
 //                    | cubic-a | cubic-b | hermite-a | hermite-b  [--closed] --in P.csv --out C.csv
-//   cagd interpolate --method hosaka [--scale chord|unit] [--end natural|tangent] [--closed] (2-D, 3-D)
+//   cagd interpolate --method hosaka [--m M] [--scale chord|unit] [--end natural|tangent] [--closed] (2-D, 3-D)
 //   cagd analyze CURVE.csv
 //   cagd analyze --in P.csv --method M [--optimize O] [--table T] [--closed]
 // Bad input: one line on stderr, exit code 2.
@@ -225,7 +225,7 @@ int main(int argc, char** argv) {
     interp->add_option("--scale", scale, "hosaka: chord (k_i = |A_i|/|A_i+1|, eq 19) | unit (k_i = 1)")->check(CLI::IsMember({"chord", "unit"}));
     interp->add_option("--optimize", optimize, "pseudo-spline tangent optimisation: none | exact | approx (Table 4)")->check(CLI::IsMember({"none", "exact", "approx"}));
     interp->add_option("--table", table_path, "pseudo-energy table written by cagd energy-table (default: the 36-node fast table, built in memory)");
-    auto* m_opt = interp->add_option("--m", m, "locality m >= 0 for every segment (eq 12)");
+    auto* m_opt = interp->add_option("--m", m, "s-/b2-spline: locality m >= 0 for every segment (eq 12); hosaka: segment order m >= 1 (continuous to order 2m)");
     auto* mv_opt = interp->add_option("--m-vector", m_vector, "one m per segment, pairs as l:r, e.g. 1,2,1:3");
     m_opt->excludes(mv_opt);
     interp->add_option("--end", end, "natural | tangent | bessel (section 3.3)")->check(CLI::IsMember({"natural", "tangent", "bessel"}));
@@ -285,6 +285,14 @@ int main(int argc, char** argv) {
         if (*energy) return run_energy(theta0, theta1, degrees);
         if (*table) return run_energy_table(grid_n, placement, table_method, threads, table_out);
         const PointList points = read_points_csv(in_path);
+        if (method == "hosaka" && *mv_opt) fail_input("cagd interpolate", "--m-vector is for s-spline and b2-spline; hosaka takes --m");
+        if (method == "hosaka" && *m_opt && m != 1) {   // order-m segments continuous to order 2m (section 3)
+            if (m < 1) fail_input("cagd interpolate", "--method hosaka needs --m >= 1, got " + std::to_string(m));
+            if (end != "natural") fail_input("cagd interpolate", "--method hosaka with --m " + std::to_string(m) + " supports --end natural only");
+            write_curve(spline::hosaka_spline(points, m, scale == "unit" ? spline::HosakaScale::unit : spline::HosakaScale::chord, closed), samples,
+                        out_path);
+            return 0;
+        }
         if (method == "hosaka") {   // hosaka eq (20), m = 1
             spline::HosakaSplineOptions ho;
             ho.scale = scale == "unit" ? spline::HosakaScale::unit : spline::HosakaScale::chord;
