@@ -2,7 +2,7 @@
 # data; curvature κ(s) below. Columns: data (1 uneven, 2 even), scale (1 chord, 2 unit), u, x, y, s, kappa.
 load 'scripts/plot/style.gp'
 f = datadir.'/fig_scale.csv'
-names = "'uneven chords (k from 0.11 to 6.0)' 'even chords (y = sin x)'"
+names = "'uneven chords' 'even chords (y = sin x)'"
 do for [t in "png svg"] {
   if (t eq "png") { set terminal pngcairo size 1300,800 enhanced font 'DejaVu Sans,11' } else { set terminal svg size 1300,800 enhanced font 'DejaVu Sans,11' }
   set output datadir.'/fig_scale.'.t
