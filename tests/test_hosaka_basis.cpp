@@ -1,12 +1,16 @@
-// hosaka section 2: exact rational polynomials and the generalised Hermite basis (eq 1–14).
+// hosaka sections 2–3: exact rational polynomials, the generalised Hermite basis (eq 1–14), Hosaka
+// curves and splines (eq 15–24).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
+#include "analysis/curve_measures.hpp"
 #include "core/errors.hpp"
 #include "core/rational_polynomial.hpp"
+#include "spline/hermite_spline.hpp"
 #include "spline/hosaka_basis.hpp"
+#include "spline/hosaka_spline.hpp"
 
 using namespace cagd;
 
@@ -83,10 +87,7 @@ TEST(HosakaBasis, BadIndicesAreRejected) {
     EXPECT_THROW(b.q(0, 0.5, -1), InvalidInput);
 }
 
-// ---- hosaka section 3: curves from end derivatives and the C2 spline (eq 15–20) ----
-#include "analysis/curve_measures.hpp"
-#include "spline/hermite_spline.hpp"
-#include "spline/hosaka_spline.hpp"
+// ---- hosaka section 3: curves from end derivatives and the C2 spline (eq 15–24) ----
 
 namespace {
 cagd::PointList uneven_points() {
