@@ -32,15 +32,6 @@ CornerDerivatives random_corners(int m, int dim, unsigned seed) {
     return c;
 }
 
-PatchEdges edges_of(const HosakaPatch& p) {
-    PatchEdges e;
-    e.r1 = std::make_shared<spline::HosakaCurve>(p.edge(1));
-    e.r2 = std::make_shared<spline::HosakaCurve>(p.edge(2));
-    e.r3 = std::make_shared<spline::HosakaCurve>(p.edge(3));
-    e.r4 = std::make_shared<spline::HosakaCurve>(p.edge(4));
-    return e;
-}
-
 // Boundaries of our test surfaces: lower y0 = 0.2 sin x, upper y1 = 1.5 + 0.1 x², with z and
 // cross-boundary derivatives sinusoids.
 BoundaryCurve boundary(int m, int k) {
@@ -95,7 +86,7 @@ TEST(EdgeFormPatch, WithTwistsEqualsTensorPatchAndWithoutIsCoons) {
     std::uniform_real_distribution<double> d(0, 1);
     for (int m = 1; m <= 2; ++m) {
         const HosakaPatch patch(random_corners(m, 3, 20u + static_cast<unsigned>(m)));
-        const PatchEdges edges = edges_of(patch);
+        const PatchEdges edges = patch.edges();
         const EdgeFormPatch full(m, edges, patch.corners()), coons(m, edges);
         for (int s = 0; s < 50; ++s) {
             const double u = d(rng), v = d(rng);
@@ -117,7 +108,7 @@ TEST(EdgeFormPatch, WithTwistsEqualsTensorPatchAndWithoutIsCoons) {
 
 TEST(EdgeFormPatch, RejectsEdgesThatDoNotMeet) {
     const HosakaPatch patch(random_corners(1, 3, 3));
-    PatchEdges e = edges_of(patch);
+    PatchEdges e = patch.edges();
     Eigen::MatrixXd start = patch.edge(3).start_derivatives(0), end = patch.edge(3).end_derivatives(0);
     start(0, 2) += 0.1;
     e.r3 = std::make_shared<spline::HosakaCurve>(1, start, end);

@@ -9,6 +9,7 @@
 
 #include "core/errors.hpp"
 #include <random>
+#include "numeric/finite_difference.hpp"
 #include "numeric/gauss_legendre.hpp"
 #include "numeric/romberg.hpp"
 
@@ -123,4 +124,21 @@ TEST(Tridiagonal, MatchesADenseSolveAndRejectsAZeroPivot) {
     EXPECT_LT((A * X - R).norm(), 1e-13);
     EXPECT_LT((X - A.partialPivLu().solve(R)).norm(), 1e-13);
     EXPECT_THROW(cagd::numeric::solve_tridiagonal({0, 1}, {0, 1}, {1, 0}, Eigen::MatrixXd::Ones(2, 1)), cagd::InvalidInput);
+}
+
+TEST(OneSidedDerivatives, ExactForPolynomialsAndAccurateForSine) {
+    const auto cubic = [](double x) { return 2 - x + 3 * x * x * x; };
+    for (int side : {-1, 1}) {
+        const std::vector<double> d = cagd::numeric::one_sided_derivatives(cubic, 0.5, 0.1, side, 5);
+        EXPECT_NEAR(d[0], 2 - 0.5 + 3 * 0.125, 1e-12);
+        EXPECT_NEAR(d[1], -1 + 9 * 0.25, 1e-11);
+        EXPECT_NEAR(d[2], 18 * 0.5, 1e-9);
+        EXPECT_NEAR(d[3], 18, 1e-7);
+        EXPECT_NEAR(d[4], 0, 1e-5);
+    }
+    const std::vector<double> s = cagd::numeric::one_sided_derivatives([](double x) { return std::sin(x); }, 1.0, 0.02, -1, 7);
+    EXPECT_NEAR(s[1], std::cos(1.0), 1e-9);
+    EXPECT_NEAR(s[2], -std::sin(1.0), 1e-6);
+    EXPECT_THROW(cagd::numeric::one_sided_derivatives(cubic, 0, 0.1, 0, 4), cagd::InvalidInput);
+    EXPECT_THROW(cagd::numeric::one_sided_derivatives(cubic, 0, -0.1, 1, 4), cagd::InvalidInput);
 }

@@ -46,6 +46,14 @@ double curvature(const Curve& c, double t) {
     return std::sqrt(cross2) / (s2 * std::sqrt(s2));
 }
 
+Eigen::VectorXd curvature_vector(const Eigen::MatrixXd& J) {
+    if (J.rows() < 3) fail_input("cagd::analysis::curvature_vector", "needs a jet of order >= 2, got " + std::to_string(J.rows() - 1));
+    const Eigen::VectorXd d1 = J.row(1).transpose(), d2 = J.row(2).transpose();
+    const double s2 = d1.squaredNorm();
+    if (!(s2 > 0.0)) fail_input("cagd::analysis::curvature_vector", "r' = 0: curvature undefined at a singular point");
+    return (d2 - (d2.dot(d1) / s2) * d1) / s2;
+}
+
 double signed_curvature(const Curve& c, double t) {
     if (c.dimension() != 2)
         fail_input("cagd::analysis::signed_curvature", "needs a planar curve, dimension is " +

@@ -17,6 +17,9 @@ namespace cagd::analysis {
 
 double curvature(const Curve& c, double t);
 double signed_curvature(const Curve& c, double t);   // planar curves only
+// The curvature vector κN = (r'' − (r''·T) T)/|r'|², T = r'/|r'|, from rows 1 and 2 of a jet (any
+// dimension, any parameter: it is geometric). Compare one-sided jets at a join to measure G2.
+Eigen::VectorXd curvature_vector(const Eigen::MatrixXd& jet);
 double arc_length(const Curve& c, int pieces = 4);
 double arc_length(const Curve& c, double a, double b, int pieces = 4);
 numeric::RombergResult romberg_arc_length(const Curve& c, double rel_tol = 1e-13);

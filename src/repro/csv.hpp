@@ -20,6 +20,8 @@ public:
     CsvWriter(const std::string& path, const std::vector<std::string>& header);
     void row(const std::vector<double>& values, int significant = 12);
     void row_text(const std::vector<std::string>& fields);
+    // An empty line: ends a scan line of a gnuplot surface (splot draws each block as one line).
+    void end_scan() { out_ << '\n'; }
     const std::string& path() const { return path_; }
 
 private:

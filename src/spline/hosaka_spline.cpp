@@ -46,6 +46,13 @@ std::vector<double> HosakaCurve::breakpoints() const { return unit_piece_breakpo
 
 Eigen::MatrixXd HosakaCurve::jet(double u, int order) const {
     const auto [s, t] = locate_unit_piece("cagd::spline::HosakaCurve::jet", u, segments(), order);
+    return segment_jet(s, t, order);
+}
+
+Eigen::MatrixXd HosakaCurve::segment_jet(int s, double t, int order) const {
+    if (s < 0 || s >= segments() || !(t >= 0.0 && t <= 1.0) || order < 0)
+        fail_input("cagd::spline::HosakaCurve::segment_jet", "needs 0 <= s < " + std::to_string(segments()) + ", t in [0, 1], order >= 0; got s = " +
+                                                                  std::to_string(s) + ", t = " + full_precision(t) + ", order " + std::to_string(order));
     const Eigen::Index first = static_cast<Eigen::Index>(s) * (m() + 1);
     Eigen::MatrixXd out = Eigen::MatrixXd::Zero(order + 1, dimension());
     for (int k = 0; k <= order; ++k)

@@ -109,6 +109,11 @@ spline::HosakaCurve HosakaPatch::edge(int which) const {
     return spline::HosakaCurve(m(), start, end);
 }
 
+PatchEdges HosakaPatch::edges() const {
+    return {std::make_shared<spline::HosakaCurve>(edge(1)), std::make_shared<spline::HosakaCurve>(edge(2)),
+            std::make_shared<spline::HosakaCurve>(edge(3)), std::make_shared<spline::HosakaCurve>(edge(4))};
+}
+
 Eigen::MatrixXd unit_edge_jet(const Curve& edge, double s, int order) {
     const double span = edge.t_max() - edge.t_min();
     Eigen::MatrixXd j = edge.jet(std::min(edge.t_min() + s * span, edge.t_max()), order);

@@ -58,6 +58,10 @@ private:
     std::size_t index(int k, int l, int i, int j) const;
 };
 
+struct PatchEdges {
+    std::shared_ptr<const Curve> r1, r2, r3, r4;   // S(u,0), S(0,v), S(u,1), S(1,v)
+};
+
 class HosakaPatch {   // eq (27)
 public:
     explicit HosakaPatch(CornerDerivatives corners);
@@ -67,14 +71,11 @@ public:
     Eigen::VectorXd derivative(double u, double v, int a, int b) const;   // S^{(a,b)}(u, v)
     // Edge curve 1..4 (R1(u) = S(u,0), R2(v) = S(0,v), R3(u) = S(u,1), R4(v) = S(1,v)) on [0, 1].
     spline::HosakaCurve edge(int which) const;
+    PatchEdges edges() const;   // all four, for the edge-curve form
 
 private:
     CornerDerivatives corners_;
     spline::HosakaBasis basis_;
-};
-
-struct PatchEdges {
-    std::shared_ptr<const Curve> r1, r2, r3, r4;   // S(u,0), S(0,v), S(u,1), S(1,v)
 };
 
 class EdgeFormPatch {   // eq (28)
