@@ -87,7 +87,33 @@ awk -F, 'NR==10 { exit !($1==2 && ($2-2)^2 < 1e-20 && ($3-1)^2 < 1e-20 && ($4-1)
 "$cagd" interpolate --method hosaka --m 2 --in "$dir/space.csv" --out "$dir/h2.csv" --samples 4 || { echo "FAIL: hosaka --m 2"; fails=$((fails+1)); }
 awk -F, 'NR==10 { exit !($1==2 && ($2-2)^2 < 1e-20 && ($3-1)^2 < 1e-20 && ($4-1)^2 < 1e-20) }' "$dir/h2.csv" || { echo "FAIL: hosaka --m 2 misses P_2"; fails=$((fails+1)); }
 expect_bad "hosaka m 0"            '0,0\n1,1\n2,0\n'    interpolate --method hosaka --m 0 --in "$dir/bad.csv" --out "$dir/o.csv"
-expect_bad "hosaka m 2 tangent"    '0,0\n1,1\n2,0\n'    interpolate --method hosaka --m 2 --end tangent --start-tangent 1,0 --end-tangent 1,0 --in "$dir/bad.csv" --out "$dir/o.csv"
+"$cagd" interpolate --method hosaka --m 2 --end tangent --start-tangent 1,0,0 --end-tangent 0,0,1 --in "$dir/space.csv" --out "$dir/h3.csv" --samples 4 \
+  || { echo "FAIL: hosaka --m 2 tangent ends"; fails=$((fails+1)); }
+# the first row's derivative columns (dx, dy, dz) are the given start tangent
+awk -F, 'NR==2 { exit !(($5-1)^2 < 1e-20 && $6^2 < 1e-20 && $7^2 < 1e-20) }' "$dir/h3.csv" || { echo "FAIL: hosaka --m 2 start tangent"; sed -n 2p "$dir/h3.csv"; fails=$((fails+1)); }
+expect_bad "hosaka m 2 tangent dim" '0,0\n1,1\n2,0\n'    interpolate --method hosaka --m 2 --end tangent --start-tangent 1,0,0 --end-tangent 1,0 --in "$dir/bad.csv" --out "$dir/o.csv"
+# hosaka section 4: cagd surface (tensor over a grid of heights, Coons from four edges, boundary synthesis).
+printf 'x,y,z\n0,0,0\n1,0,1\n2,0,0\n0,1,1\n1,1,2\n2,1,1\n' > "$dir/grid.csv"
+"$cagd" surface --kind tensor --in "$dir/grid.csv" --samples 4 --out "$dir/s1.csv" || { echo "FAIL: surface tensor"; fails=$((fails+1)); }
+awk -F, 'NR>1 && $1==1 && $2==1 { found=1; if (($3-2)^2 > 1e-20) bad=1 } END { exit !(found && !bad) }' "$dir/s1.csv" || { echo "FAIL: tensor surface misses (1,1,2)"; fails=$((fails+1)); }
+printf '0,0,0\n0.5,0.1,0.2\n1,0,0\n' > "$dir/eb.csv"; printf '0,0,0\n-0.1,0.5,0.1\n0,1,0.3\n' > "$dir/el.csv"
+printf '0,1,0.3\n0.5,1.1,0.5\n1,1,0.2\n' > "$dir/et.csv"; printf '1,0,0\n1.1,0.5,0.1\n1,1,0.2\n' > "$dir/er.csv"
+"$cagd" surface --kind coons --bottom "$dir/eb.csv" --left "$dir/el.csv" --top "$dir/et.csv" --right "$dir/er.csv" --samples 2 --out "$dir/s2.csv" \
+  || { echo "FAIL: surface coons"; fails=$((fails+1)); }
+awk -F, 'NR>1 && $1==0.5 && $2==0 { found=1; if (($3-0.5)^2 + ($4-0.1)^2 + ($5-0.2)^2 > 1e-20) bad=1 } END { exit !(found && !bad) }' "$dir/s2.csv" \
+  || { echo "FAIL: coons surface misses its bottom edge"; fails=$((fails+1)); }
+printf 'x,y,z\n0,0,0\n1,0.2,0.1\n2,0,0.3\n' > "$dir/L0.csv"; printf 'x,y,z\n0,1,0.5\n1,1.3,0.4\n2,1.1,0.6\n' > "$dir/L1.csv"
+"$cagd" surface --kind boundary --lower "$dir/L0.csv" --upper "$dir/L1.csv" --m 2 --lower-slope 0.5 --samples 4 --out "$dir/s3.csv" \
+  || { echo "FAIL: surface boundary"; fails=$((fails+1)); }
+awk -F, 'NR>1 && $1==1 && $2==1.3 { found=1; if (($3-0.4)^2 > 1e-20) bad=1 } END { exit !(found && !bad) }' "$dir/s3.csv" \
+  || { echo "FAIL: boundary surface misses L1"; fails=$((fails+1)); }
+expect_bad "surface crossing"       'x,y,z\n0,1,0.5\n1,-0.3,0.4\n2,1.1,0.6\n' surface --kind boundary --lower "$dir/L0.csv" --upper "$dir/bad.csv" --out "$dir/o.csv"
+expect_bad "surface x ranges"       'x,y,z\n0,1,0.5\n1,1.3,0.4\n2.5,1.1,0.6\n' surface --kind boundary --lower "$dir/L0.csv" --upper "$dir/bad.csv" --out "$dir/o.csv"
+expect_bad "surface x not rising"   'x,y,z\n0,1,0.5\n2,1.3,0.4\n1,1.1,0.6\n' surface --kind boundary --lower "$dir/L0.csv" --upper "$dir/bad.csv" --out "$dir/o.csv"
+expect_bad "surface m 3"            ''                   surface --kind boundary --lower "$dir/L0.csv" --upper "$dir/L1.csv" --m 3 --out "$dir/o.csv"
+expect_bad "surface not a grid"     'x,y,z\n0,0,0\n1,0,1\n0,1,1\n' surface --kind tensor --in "$dir/bad.csv" --out "$dir/o.csv"
+expect_bad "coons open corners"     '0,1,0.9\n0.5,1.1,0.5\n1,1,0.2\n' surface --kind coons --bottom "$dir/eb.csv" --left "$dir/el.csv" --top "$dir/bad.csv" --right "$dir/er.csv" --out "$dir/o.csv"
+expect_bad "coons missing edge"     ''                   surface --kind coons --bottom "$dir/eb.csv" --out "$dir/o.csv"
 expect_bad "hosaka bessel end"     '0,0\n1,1\n2,0\n'    interpolate --method hosaka --end bessel --in "$dir/bad.csv" --out "$dir/o.csv"
 expect_bad "hosaka zero chord"     '0,0\n1,1\n1,1\n'    interpolate --method hosaka --in "$dir/bad.csv" --out "$dir/o.csv"
 expect_bad "hosaka tangent dim"    '0,0\n1,1\n2,0\n'    interpolate --method hosaka --end tangent --start-tangent 1,0,0 --end-tangent 0,1,0 --in "$dir/bad.csv" --out "$dir/o.csv"

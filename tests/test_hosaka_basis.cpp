@@ -190,3 +190,24 @@ TEST(HosakaSpline, OrderMSplineIsContinuousTo2mAndReducesToEq20ForM1) {
         }
     EXPECT_THROW(spline::hosaka_spline(p, 0), InvalidInput);
 }
+
+TEST(HosakaSpline, TangentEndsForAnyOrder) {
+    PointList p(5, 2);
+    p << 0, 0, 1, 0.8, 1.2, 2.0, 3.0, 1.5, 3.5, 0.2;
+    spline::HosakaSplineOptions o;
+    o.end = spline::HosakaEnd::tangent;
+    o.start_tangent = Eigen::Vector2d(0.5, 1.0);
+    o.end_tangent = Eigen::Vector2d(1.0, -2.0);
+    // m = 1: the clamped spline of eq (20).
+    EXPECT_LT(analysis::max_distance_same_parameter(spline::hosaka_spline(p, 1, o), spline::hosaka_c2_spline(p, o).curve), 1e-12);
+    const spline::HosakaCurve c = spline::hosaka_spline(p, 2, o);
+    const int last = c.segments() - 1;
+    EXPECT_LT((c.segment_jet(0, 0.0, 1).row(1).transpose() - o.start_tangent).norm(), 1e-12);
+    EXPECT_LT((c.segment_jet(last, 1.0, 1).row(1).transpose() - o.end_tangent).norm(), 1e-12);
+    EXPECT_LT(c.segment_jet(0, 0.0, 3).row(3).norm(), 1e-9 * c.segment_jet(0, 0.5, 3).row(3).norm() + 1e-9);   // order m+1 = 3 vanishes
+    EXPECT_GT(c.segment_jet(0, 0.0, 4).row(4).norm(), 1e-3);                                                     // order 2m does not
+    // Differs from the natural m = 2 spline, and bad tangents are rejected.
+    EXPECT_GT(analysis::max_distance_same_parameter(c, spline::hosaka_spline(p, 2)), 1e-3);
+    o.end_tangent = Eigen::Vector3d(1, 0, 0);
+    EXPECT_THROW(spline::hosaka_spline(p, 2, o), InvalidInput);
+}

@@ -49,7 +49,7 @@ RationalPolynomial printed_bracket(int m, int j, int k, int s) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    repro::ArtifactRun run("hosaka", "boundary_synthesis", "4.1", "Surfaces between boundary curves (eq 31-40) and joined across a section (eq 41-43)", argc, argv);
+    repro::ArtifactRun run("hosaka", "boundary_synthesis", "4-5", "Surfaces between boundary curves (eq 31-40) and joined across a section (eq 41-43)", argc, argv);
 
     double boundary_error = 0, boundary_size = 0, induction = 0, fd_gap = 0, seam = 0, seam_next = INFINITY, fd_error = 0;
     repro::CsvWriter fig = run.table("fig_joined.csv", {"surface", "s", "t", "x", "y", "z"});

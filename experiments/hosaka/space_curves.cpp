@@ -14,7 +14,7 @@ using namespace cagd;
 using namespace cagd::spline;
 
 int main(int argc, char** argv) {
-    repro::ArtifactRun run("hosaka", "space_curves", "3.1", "Space curves through 8 and 9 points (Fig. 2)", argc, argv);
+    repro::ArtifactRun run("hosaka", "space_curves", "3", "Space curves through 8 and 9 points (Fig. 2)", argc, argv);
     const double theta[] = {0, 0.6, 1.5, 2.1, 3.2, 3.8, 4.9, 5.5};
     PointList open(8, 3), closed(9, 3);
     for (int i = 0; i < 8; ++i) open.row(i) << (1 + 0.1 * i) * std::cos(theta[i]), (1 + 0.1 * i) * std::sin(theta[i]), 0.25 * theta[i];

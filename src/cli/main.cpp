@@ -4,7 +4,10 @@
 //                    [--rule locality|I|IIa|fmill] [--closed] [--samples N] --in P.csv --out C.csv
 //   cagd interpolate --method pseudo-spline [--optimize none|exact|approx] [--table T]
 //                    | cubic-a | cubic-b | hermite-a | hermite-b  [--closed] --in P.csv --out C.csv
-//   cagd interpolate --method hosaka [--m M] [--scale chord|unit] [--end natural|tangent] [--closed] (2-D, 3-D)
+//   cagd interpolate --method hosaka [--m M] [--scale chord|unit] [--end natural|tangent] [--closed] (2-D, 3-D; any M >= 1)
+//   cagd surface --kind tensor --in XYZ.csv | --kind coons --bottom B --left L --top T --right R
+//                | --kind boundary --lower L0 --upper L1 [--m 1|2] [--lower-slope S] [--upper-slope S]
+//                  [--lower-curvature C] [--upper-curvature C]     [--samples N] --out GRID.csv
 //   cagd analyze CURVE.csv
 //   cagd analyze --in P.csv --method M [--optimize O] [--table T] [--closed]
 // Bad input: one line on stderr, exit code 2.
@@ -22,6 +25,8 @@
 #include "fairness/pseudo_spline.hpp"
 #include "locality/locality_spline.hpp"
 #include "spline/hosaka_spline.hpp"
+#include "surface/boundary_surface.hpp"
+#include "surface/hosaka_patch.hpp"
 #include "repro/csv.hpp"
 
 namespace {
@@ -178,6 +183,71 @@ void print_integrated(const spline::PiecewiseHermiteCurve& c) {
               << "area_integrated," << repro::format_number(analysis::enclosed_area(c) + closing, 12) << "\n";
 }
 
+struct SurfaceArgs {
+    std::string kind, in, bottom, left, top, right, lower, upper, out;
+    int m = 1, samples = 20;
+    double lower_slope = 0, upper_slope = 0, lower_curvature = 0, upper_curvature = 0;
+};
+
+// hosaka section 4: the surfaces that take simple inputs, sampled on a (samples+1)² grid.
+int run_surface(const SurfaceArgs& a) {
+    const char* who = "cagd surface";
+    const int n = a.samples;
+    const auto require = [&](const std::string& value, const char* option) {
+        if (value.empty()) fail_input(who, "--kind " + a.kind + " needs " + option);
+    };
+    if (a.kind == "tensor") {   // eq (30), m = 1, node derivatives from splines along the grid lines
+        require(a.in, "--in");
+        const surface::CartesianSurface s = surface::cartesian_spline_surface(read_points_csv(a.in));
+        repro::CsvWriter w(a.out, {"x", "y", "z", "zx", "zy"});
+        for (int i = 0; i <= n; ++i)
+            for (int j = 0; j <= n; ++j) {
+                const double x = s.x().front() + (s.x().back() - s.x().front()) * i / n, y = s.y().front() + (s.y().back() - s.y().front()) * j / n;
+                w.row({x, y, s.value(x, y), s.derivative(x, y, 1, 0), s.derivative(x, y, 0, 1)}, 15);
+            }
+        return 0;
+    }
+    if (a.kind == "coons") {   // eq (28) with S0 = 0
+        for (const auto& [v, o] : {std::pair{a.bottom, "--bottom"}, {a.left, "--left"}, {a.top, "--top"}, {a.right, "--right"}}) require(v, o);
+        const surface::EdgeFormPatch s(1, surface::edges_through_points(read_points_csv(a.bottom), read_points_csv(a.left), read_points_csv(a.top),
+                                                                         read_points_csv(a.right)));
+        const Eigen::VectorXd probe = s.point(0, 0);
+        std::vector<std::string> header{"u", "v", "x", "y"};
+        if (probe.size() == 3) header.push_back("z");
+        repro::CsvWriter w(a.out, header);
+        for (int i = 0; i <= n; ++i)
+            for (int j = 0; j <= n; ++j) {
+                const Eigen::VectorXd p = s.point(double(i) / n, double(j) / n);
+                std::vector<double> row{double(i) / n, double(j) / n};
+                for (Eigen::Index k = 0; k < p.size(); ++k) row.push_back(p(k));
+                w.row(row, 15);
+            }
+        return 0;
+    }
+    if (a.kind == "boundary") {   // eq (31) between two boundary curves
+        require(a.lower, "--lower");
+        require(a.upper, "--upper");
+        if (a.m != 1 && a.m != 2) fail_input(who, "--kind boundary takes --m 1 or 2, got " + std::to_string(a.m));
+        std::vector<double> lower_d{a.lower_slope}, upper_d{a.upper_slope};
+        if (a.m == 2) {
+            lower_d.push_back(a.lower_curvature);
+            upper_d.push_back(a.upper_curvature);
+        }
+        const surface::BoundaryConformingSurface s(a.m, surface::boundary_through_points(read_points_csv(a.lower), lower_d),
+                                                   surface::boundary_through_points(read_points_csv(a.upper), upper_d));
+        repro::CsvWriter w(a.out, {"x", "y", "z"});
+        for (int i = 0; i <= n; ++i) {
+            const double x = std::min(s.x_min() + (s.x_max() - s.x_min()) * i / n, s.x_max());
+            for (int j = 0; j <= n; ++j) {
+                const double y = s.y_lower(x) + (s.y_upper(x) - s.y_lower(x)) * j / n;
+                w.row({x, y, s.value(x, y)}, 15);
+            }
+        }
+        return 0;
+    }
+    fail_input(who, "unknown --kind " + a.kind);
+}
+
 int run_energy(double theta0, double theta1, bool degrees) {
     const double k = degrees ? M_PI / 180.0 : 1.0;
     const double t0 = theta0 * k, t1 = theta1 * k;
@@ -250,6 +320,24 @@ int main(int argc, char** argv) {
     analyze->add_flag("--closed", an_closed, "closed curve (with --in)");
     an_curve->excludes(an_in_opt);
 
+    auto* surf = app.add_subcommand("surface", "Hosaka surfaces (section 4): tensor (eq 30 over a grid of heights), coons (eq 28, S0 = 0), boundary (eq 31)");
+    SurfaceArgs sa;
+    surf->add_option("--kind", sa.kind, "tensor | coons | boundary")->required()->check(CLI::IsMember({"tensor", "coons", "boundary"}));
+    surf->add_option("--in", sa.in, "tensor: heights CSV, x,y,z per line covering a rectangular grid");
+    surf->add_option("--bottom", sa.bottom, "coons: points of the edge v = 0 (R1), from S(0,0) to S(1,0)");
+    surf->add_option("--left", sa.left, "coons: points of the edge u = 0 (R2), from S(0,0) to S(0,1)");
+    surf->add_option("--top", sa.top, "coons: points of the edge v = 1 (R3), from S(0,1) to S(1,1)");
+    surf->add_option("--right", sa.right, "coons: points of the edge u = 1 (R4), from S(1,0) to S(1,1)");
+    surf->add_option("--lower", sa.lower, "boundary: lower curve L0, x,y,z per line, x increasing");
+    surf->add_option("--upper", sa.upper, "boundary: upper curve L1, same first and last x as L0");
+    surf->add_option("--m", sa.m, "boundary: order m (1 or 2) of the sections (eq 31)");
+    surf->add_option("--lower-slope", sa.lower_slope, "boundary: cross slope dz/dy along L0 (constant)");
+    surf->add_option("--upper-slope", sa.upper_slope, "boundary: cross slope dz/dy along L1 (constant)");
+    surf->add_option("--lower-curvature", sa.lower_curvature, "boundary, m = 2: d2z/dy2 along L0 (constant)");
+    surf->add_option("--upper-curvature", sa.upper_curvature, "boundary, m = 2: d2z/dy2 along L1 (constant)");
+    surf->add_option("--samples", sa.samples, "samples per direction")->check(CLI::Range(1, 10000));
+    surf->add_option("--out", sa.out, "grid CSV")->required();
+
     auto* energy = app.add_subcommand("energy", "Minimum pseudo-energy J(theta0, theta1) of a unit-chord cubic Hermite segment (pseudo_energy eq 8), exact computation");
     double theta0 = 0, theta1 = 0;
     bool degrees = false;
@@ -283,17 +371,12 @@ int main(int argc, char** argv) {
             return run_analyze(curve_path);
         }
         if (*energy) return run_energy(theta0, theta1, degrees);
+        if (*surf) return run_surface(sa);
         if (*table) return run_energy_table(grid_n, placement, table_method, threads, table_out);
         const PointList points = read_points_csv(in_path);
         if (method == "hosaka" && *mv_opt) fail_input("cagd interpolate", "--m-vector is for s-spline and b2-spline; hosaka takes --m");
-        if (method == "hosaka" && *m_opt && m != 1) {   // order-m segments continuous to order 2m (section 3)
-            if (m < 1) fail_input("cagd interpolate", "--method hosaka needs --m >= 1, got " + std::to_string(m));
-            if (end != "natural") fail_input("cagd interpolate", "--method hosaka with --m " + std::to_string(m) + " supports --end natural only");
-            write_curve(spline::hosaka_spline(points, m, scale == "unit" ? spline::HosakaScale::unit : spline::HosakaScale::chord, closed), samples,
-                        out_path);
-            return 0;
-        }
-        if (method == "hosaka") {   // hosaka eq (20), m = 1
+        if (method == "hosaka") {   // hosaka eq (20) (m = 1), or order-m segments continuous to order 2m (section 3)
+            if (*m_opt && m < 1) fail_input("cagd interpolate", "--method hosaka needs --m >= 1, got " + std::to_string(m));
             spline::HosakaSplineOptions ho;
             ho.scale = scale == "unit" ? spline::HosakaScale::unit : spline::HosakaScale::chord;
             ho.closed = closed;
@@ -305,7 +388,8 @@ int main(int argc, char** argv) {
                 ho.start_tangent = parse_vector(start_tangent, "--start-tangent");
                 ho.end_tangent = parse_vector(end_tangent, "--end-tangent");
             }
-            write_curve(spline::hosaka_c2_spline(points, ho).curve, samples, out_path);
+            if (*m_opt && m != 1) write_curve(spline::hosaka_spline(points, m, ho), samples, out_path);
+            else write_curve(spline::hosaka_c2_spline(points, ho).curve, samples, out_path);
             return 0;
         }
         if (method == "pseudo-spline") {

@@ -78,22 +78,28 @@ HosakaSpline hosaka_c2_spline(const PointList& points, const HosakaSplineOptions
 
     // Unknowns: B_0..B_{n−1}, and C_{n−1} for an open curve (index n). C_i = k_i B_{i+1} otherwise.
     const int unknowns = o.closed ? n : n + 1;
+    // Open: the three diagonals directly (no triplets); closed: triplets for SparseLU.
     std::vector<Eigen::Triplet<double>> trip;
+    std::vector<double> sub(o.closed ? 0 : static_cast<std::size_t>(unknowns), 0.0), diag(sub), sup(sub);
+    const auto add = [&](int r, int c, double v) {
+        if (o.closed) trip.emplace_back(r, c, v);
+        else (c == r - 1 ? sub : c == r ? diag : sup)[static_cast<std::size_t>(r)] += v;
+    };
     Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(unknowns, dim);
     // Adds coefficient `c` times C_i to row r.
     const auto add_C = [&](int r, int i, double c) {
-        if (o.closed) trip.emplace_back(r, (i + 1) % n, c * k[static_cast<std::size_t>(i)]);
-        else if (i == n - 1) trip.emplace_back(r, n, c);
-        else trip.emplace_back(r, i + 1, c * k[static_cast<std::size_t>(i)]);
+        if (o.closed) add(r, (i + 1) % n, c * k[static_cast<std::size_t>(i)]);
+        else if (i == n - 1) add(r, n, c);
+        else add(r, i + 1, c * k[static_cast<std::size_t>(i)]);
     };
     int row = 0;
     if (!o.closed) {   // start condition
         if (o.end == HosakaEnd::natural) {   // R''(0) = 6A − 4B − 2C = 0
-            trip.emplace_back(row, 0, 2.0);
+            add(row, 0, 2.0);
             add_C(row, 0, 1.0);
             rhs.row(row) = 3.0 * A.row(0);
         } else {
-            trip.emplace_back(row, 0, 1.0);
+            add(row, 0, 1.0);
             rhs.row(row) = o.start_tangent.transpose();
         }
         ++row;
@@ -102,18 +108,18 @@ HosakaSpline hosaka_c2_spline(const PointList& points, const HosakaSplineOptions
     for (int j = 0; j < joins; ++j, ++row) {   // eq (20) at the join after segment j
         const double kj = k[static_cast<std::size_t>(j)];
         const int next = (j + 1) % n;
-        trip.emplace_back(row, j, 1.0);
-        trip.emplace_back(row, next, 2.0 * kj * (1.0 + kj));
+        add(row, j, 1.0);
+        add(row, next, 2.0 * kj * (1.0 + kj));
         add_C(row, next, kj * kj);
         rhs.row(row) = 3.0 * (A.row(j) + kj * kj * A.row(next));
     }
     if (!o.closed) {   // end condition
         if (o.end == HosakaEnd::natural) {   // R''(1) = −6A + 2B + 4C = 0
-            trip.emplace_back(row, n - 1, 1.0);
-            trip.emplace_back(row, n, 2.0);
+            add(row, n - 1, 1.0);
+            add(row, n, 2.0);
             rhs.row(row) = 3.0 * A.row(n - 1);
         } else {
-            trip.emplace_back(row, n, 1.0);
+            add(row, n, 1.0);
             rhs.row(row) = o.end_tangent.transpose();
         }
     }
@@ -123,12 +129,7 @@ HosakaSpline hosaka_c2_spline(const PointList& points, const HosakaSplineOptions
         // the rows become m_j + 2(1 + k_j) m_{j+1} + k_j m_{j+2} (and 2m_0 + m_1, m_{n−1} + 2m_n at
         // natural ends), diagonally dominant, so elimination without pivoting is stable; for
         // k_i = 1 the rows are B_j + 4B_{j+1} + B_{j+2} already.
-        std::vector<double> sub(static_cast<std::size_t>(unknowns), 0.0), diag(sub), sup(sub);
-        for (const auto& t : trip) {
-            const int r = t.row(), c = t.col();
-            (c == r - 1 ? sub : c == r ? diag : sup)[static_cast<std::size_t>(r)] += t.value();
-        }
-        x = numeric::solve_tridiagonal(sub, diag, sup, rhs);
+        x = numeric::solve_tridiagonal(sub, diag, sup, std::move(rhs));
     } else {
         // Cyclic (corner entries): SparseLU; the natural ordering keeps the fill to the last rows and columns.
         Eigen::SparseMatrix<double> M(unknowns, unknowns);
@@ -141,7 +142,8 @@ HosakaSpline hosaka_c2_spline(const PointList& points, const HosakaSplineOptions
     for (int i = 0; i < n; ++i) {
         B.row(i) = x.row(i);
         if (o.closed) C.row(i) = k[static_cast<std::size_t>(i)] * x.row((i + 1) % n);
-        else C.row(i) = i == n - 1 ? Eigen::MatrixXd(x.row(n)) : Eigen::MatrixXd(k[static_cast<std::size_t>(i)] * x.row(i + 1));
+        else if (i == n - 1) C.row(i) = x.row(n);
+        else C.row(i) = k[static_cast<std::size_t>(i)] * x.row(i + 1);
     }
     Eigen::MatrixXd start(2 * n, dim), end(2 * n, dim);
     for (int i = 0; i < n; ++i) {
@@ -154,10 +156,23 @@ HosakaSpline hosaka_c2_spline(const PointList& points, const HosakaSplineOptions
 }
 
 HosakaCurve hosaka_spline(const PointList& points, int m, HosakaScale scale, bool closed) {
+    HosakaSplineOptions o;
+    o.scale = scale;
+    o.closed = closed;
+    return hosaka_spline(points, m, o);
+}
+
+HosakaCurve hosaka_spline(const PointList& points, int m, const HosakaSplineOptions& o) {
     const char* who = "cagd::spline::hosaka_spline";
     if (m < 1) fail_input(who, "m must be >= 1, got " + std::to_string(m));
+    const bool closed = o.closed, tangent_ends = o.end == HosakaEnd::tangent && !closed;
+    const HosakaScale scale = o.scale;
     require_valid_points(points, closed ? 3 : 2, true, closed, who);
     const int np = static_cast<int>(points.rows()), dim = static_cast<int>(points.cols());
+    if (tangent_ends)
+        for (const Eigen::VectorXd* t : {&o.start_tangent, &o.end_tangent})
+            if (t->size() != dim || !t->allFinite())
+                fail_input(who, "tangent ends need two finite vectors of dimension " + std::to_string(dim) + ", got one of size " + std::to_string(t->size()));
     const int segs = closed ? np : np - 1;
     std::vector<double> L(static_cast<std::size_t>(segs));
     for (int i = 0; i < segs; ++i) L[static_cast<std::size_t>(i)] = scale == HosakaScale::unit ? 1.0 : (points.row((i + 1) % np) - points.row(i)).norm();
@@ -184,6 +199,10 @@ HosakaCurve hosaka_spline(const PointList& points, int m, HosakaScale scale, boo
             if (has_left && has_right) {   // continuity of the k-th τ-derivative
                 add_derivative(row, (node - 1 + segs) % segs, 1.0, k, 1.0);
                 add_derivative(row, node % segs, 0.0, k, -1.0);
+            } else if (tangent_ends && k == 2 * m) {   // clamped end: the given t-derivative replaces order 2m
+                const int s = has_right ? 0 : segs - 1;
+                trip.emplace_back(row, unknown(node, 1), 1.0);
+                rhs.row(row) = (has_right ? o.start_tangent : o.end_tangent).transpose() / L[static_cast<std::size_t>(s)];
             } else if (has_right) {        // natural start: the k-th derivative vanishes
                 add_derivative(row, 0, 0.0, k, 1.0);
             } else {                       // natural end

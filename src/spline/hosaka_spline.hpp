@@ -82,8 +82,13 @@ HosakaSpline hosaka_c2_spline(const PointList& points, const HosakaSplineOptions
 // of orders m+1..2m at every interior point, and at open ends the natural conditions that those
 // derivatives vanish (for m = 1: R'' = 0, the spline of eq 20); closed curves wrap round. Solved with
 // Eigen SparseLU. m = 1 gives hosaka_c2_spline's curve (tested).
-// Preconditions: as hosaka_c2_spline, m ≥ 1, ≥ 2 points open (≥ 3 closed), natural ends only.
+// Tangent ends (open curves): the first derivative at each end is given, as a derivative in the end
+// segment's own parameter t (as B_1, C_n of eq 20), and the natural conditions keep orders m+1..2m−1
+// zero — the end conditions of the variational problem min ∫ |R^{(m+1)}(τ)|² dτ with R' clamped (for
+// m = 1: hosaka_c2_spline's tangent ends, tested).
+// Preconditions: as hosaka_c2_spline, m ≥ 1, ≥ 2 points open (≥ 3 closed).
 HosakaCurve hosaka_spline(const PointList& points, int m, HosakaScale scale = HosakaScale::chord, bool closed = false);
+HosakaCurve hosaka_spline(const PointList& points, int m, const HosakaSplineOptions& options);
 
 // The explicit form y(x), z(x) (eq 21–23): on [x_{i−1}, x_i] with u = (x − x_{i−1})/l, l = x_i − x_{i−1},
 //     (y, z)(x) = Σ_{j=0}^{1} { (y, z)_{i−1}^{(j)} p_j(1, u) + (y, z)_i^{(j)} q_j(1, u) } l^j      (21, 22)

@@ -59,6 +59,20 @@ DerivativeFunction explicit_spline_function(std::shared_ptr<const spline::Explic
     return [spline, column](double x, int k) { return k > 3 ? 0.0 : spline->evaluate(x, k)(column); };
 }
 
+BoundaryCurve boundary_through_points(const PointList& xyz, const std::vector<double>& cross_derivatives) {
+    const char* who = "cagd::surface::boundary_through_points";
+    if (xyz.cols() != 3) fail_input(who, "needs rows x, y, z, got " + std::to_string(xyz.cols()) + " columns");
+    std::vector<double> x(static_cast<std::size_t>(xyz.rows()));
+    for (Eigen::Index r = 0; r < xyz.rows(); ++r) x[static_cast<std::size_t>(r)] = xyz(r, 0);
+    const auto spline = std::make_shared<const spline::ExplicitSpline>(spline::hosaka_explicit_spline(x, xyz.rightCols(2)));
+    BoundaryCurve c{x.front(), x.back(), explicit_spline_function(spline, 0), {explicit_spline_function(spline, 1)}};
+    for (double d : cross_derivatives) {
+        if (!std::isfinite(d)) fail_input(who, "cross-boundary derivatives must be finite, got " + full_precision(d));
+        c.phi.push_back(constant_function(d));
+    }
+    return c;
+}
+
 BoundaryConformingSurface::BoundaryConformingSurface(int m, BoundaryCurve lower, BoundaryCurve upper)
     : basis_(m), lower_(std::move(lower)), upper_(std::move(upper)) {
     const char* who = "cagd::surface::BoundaryConformingSurface";

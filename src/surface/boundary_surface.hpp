@@ -38,6 +38,7 @@
 #include <memory>
 #include <vector>
 
+#include "core/points.hpp"
 #include "core/rational_polynomial.hpp"
 #include "numeric/taylor_jet.hpp"
 #include "spline/hosaka_basis.hpp"
@@ -61,6 +62,10 @@ struct BoundaryCurve {
     DerivativeFunction y;                    // y_k(x)
     std::vector<DerivativeFunction> phi;     // phi[j] = ζ^{(0,j)}(x, y_k(x)), j = 0..m (phi[0] = z_k(x))
 };
+
+// A boundary through points (x, y, z), x strictly increasing: y(x), z(x) the explicit spline of
+// eq (21)–(23); constant cross-boundary derivatives ζ^{(0,j)} = cross_derivatives[j−1], j = 1..m.
+BoundaryCurve boundary_through_points(const PointList& xyz, const std::vector<double>& cross_derivatives);
 
 class BoundaryConformingSurface {
 public:

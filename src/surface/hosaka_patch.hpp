@@ -38,6 +38,7 @@
 #include <vector>
 
 #include "core/curve.hpp"
+#include "core/points.hpp"
 #include "spline/hosaka_basis.hpp"
 #include "spline/hosaka_spline.hpp"
 
@@ -121,8 +122,15 @@ private:
     std::vector<Eigen::MatrixXd> nodes_;
 };
 
+// Edges through point lists (2-D or 3-D): each the C2 spline of eq (20) (chord scale, natural ends);
+// bottom = R1 (v = 0), left = R2 (u = 0), top = R3 (v = 1), right = R4 (u = 1). The corners must
+// coincide (EdgeFormPatch checks it).
+PatchEdges edges_through_points(const PointList& bottom, const PointList& left, const PointList& top, const PointList& right);
+
 // m = 1 Cartesian surface through heights z(a, b) = ζ(x_a, y_b) (rows: x, columns: y), node
 // derivatives from natural splines (eq 23) along the grid lines as described above.
 CartesianSurface cartesian_spline_surface(const std::vector<double>& x, const std::vector<double>& y, const Eigen::MatrixXd& z);
+// The same from rows (x, y, z) in any order that cover a rectangular grid exactly once.
+CartesianSurface cartesian_spline_surface(const PointList& xyz);
 
 }  // namespace cagd::surface
