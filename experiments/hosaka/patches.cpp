@@ -9,6 +9,7 @@
 //   grid         x = 0, 0.8, 1.5, 2.6, 3.2, 4; y = 0, 0.6, 1.5, 2.2, 3; heights and derivatives of
 //                ζ = 0.5 sin(1.1x) cos(0.9y) at the nodes.
 #include <cmath>
+#include <string>
 
 #include "repro/artifact_run.hpp"
 #include "surface/boundary_surface.hpp"
@@ -147,8 +148,11 @@ int main(int argc, char** argv) {
             g.row({x, y, z, exact});
             if (b == 30) g.end_scan();
         }
-    run.note("Fig. 4 analogue: the m = 1 Cartesian surface from the 6 × 5 heights alone (node derivatives from natural splines along the grid lines, "
-             "section 7 (iv)) differs from ζ by at most " + repro::format_number(worst, 3) + " on a 41 × 31 sampling: [fig_cartesian.csv](hosaka/fig_cartesian.csv).");
+    std::string grid_note = "Fig. 4 analogue: the m = 1 Cartesian surface from the ";
+    grid_note += std::to_string(gx.size()) + " × " + std::to_string(gy.size()) +
+                 " heights alone (node derivatives from natural splines along the grid lines, section 7 (iv)) differs from ζ by at most " +
+                 repro::format_number(worst, 3) + " on a 41 × 31 sampling: [fig_cartesian.csv](hosaka/fig_cartesian.csv).";
+    run.note(grid_note);
     run.note("The twist of the eq (27) patch at the corners is the data's; Coons' surface (eq 28 with S0 = 0) has every corner derivative S^(i,j), i, j ≥ 1, "
              "zero (relative size " + repro::format_number(coons_twist / data_twist, 3) + "), while keeping the edges: [fig_patches.csv](hosaka/fig_patches.csv).");
     run.figure("fig_patches", "The m = 1 tensor patch of eq (27) from our corner data (left) and Coons' surface with the same edges (eq 28 with S0 = 0, right): zero twist flattens the corners.");

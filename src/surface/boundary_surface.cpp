@@ -208,10 +208,9 @@ SectionJoinedSurface::SectionJoinedSurface(const BoundaryConformingSurface& a, d
     near.x_max = y1;
     near.y = [x0](double, int k) { return k == 0 ? x0 : 0.0; };
     const std::shared_ptr<const BoundaryConformingSurface> source = a_;
-    for (int i = 0; i <= a.m(); ++i) near.phi.push_back([source, x0, i](double y, int r) { return source->derivative(x0, y, i, r); });
-    // y within the section: clamp rounding at its ends (the far curve's range equals it to 1e-12).
-    for (auto& f : near.phi)
-        f = [f, y0, y1](double y, int r) { return f(std::clamp(y, y0, y1), r); };
+    // y clamped to the section: the far curve's range equals it only to 1e-12.
+    for (int i = 0; i <= a.m(); ++i)
+        near.phi.push_back([source, x0, i, y0, y1](double y, int r) { return source->derivative(x0, std::clamp(y, y0, y1), i, r); });
     try {
         joined_ = std::make_shared<const BoundaryConformingSurface>(a.m(), std::move(near), std::move(far));
     } catch (const InvalidInput& e) {

@@ -243,10 +243,6 @@ CartesianSurface cartesian_spline_surface(const std::vector<double>& x, const st
     return CartesianSurface(1, x, y, std::move(nodes));
 }
 
-}  // namespace cagd::surface
-
-namespace cagd::surface {
-
 PatchEdges edges_through_points(const PointList& bottom, const PointList& left, const PointList& top, const PointList& right) {
     const auto edge = [](const PointList& p) { return std::make_shared<spline::HosakaCurve>(spline::hosaka_c2_spline(p).curve); };
     return {edge(bottom), edge(left), edge(top), edge(right)};
