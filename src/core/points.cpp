@@ -31,4 +31,15 @@ void require_valid_points(const PointList& points, Eigen::Index min_count,
     }
 }
 
+void require_increasing(const std::vector<double>& values, std::size_t min_count, const std::string& name, const std::string& who) {
+    if (values.size() < min_count)
+        fail_input(who, "needs at least " + std::to_string(min_count) + " values of " + name + ", got " + std::to_string(values.size()));
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        if (!std::isfinite(values[i])) fail_input(who, name + "[" + std::to_string(i) + "] is " + full_precision(values[i]) + "; it must be finite");
+        if (i > 0 && !(values[i] > values[i - 1]))
+            fail_input(who, name + " must increase strictly: " + name + "[" + std::to_string(i) + "] = " + full_precision(values[i]) + " after " +
+                                full_precision(values[i - 1]));
+    }
+}
+
 }  // namespace cagd

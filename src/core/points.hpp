@@ -3,6 +3,7 @@
 // 1, 2 or 3). Validation shared by every constructor that takes data points.
 #include <Eigen/Dense>
 #include <string>
+#include <vector>
 
 namespace cagd {
 
@@ -13,5 +14,10 @@ using PointList = Eigen::MatrixXd;   // n × dim, one point per row
 // also last vs first). Messages name `who`, the row index and the value.
 void require_valid_points(const PointList& points, Eigen::Index min_count,
                           bool distinct_consecutive, bool closed, const std::string& who);
+
+// Throws InvalidInput unless `values` has at least min_count entries, all finite and strictly
+// increasing (abscissae of y(x) data, grid lines). `name` ("x", "y") appears in the message with
+// the index and the offending value.
+void require_increasing(const std::vector<double>& values, std::size_t min_count, const std::string& name, const std::string& who);
 
 }  // namespace cagd

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/errors.hpp"
+#include "core/points.hpp"
 #include "numeric/tridiagonal.hpp"
 
 namespace cagd::spline {
@@ -235,12 +236,7 @@ ExplicitSpline hosaka_explicit_spline(const std::vector<double>& x, const Eigen:
     if (values.rows() != n || values.cols() < 1)
         fail_input(who, "needs one value row per abscissa, got " + std::to_string(values.rows()) + " rows for " + std::to_string(n));
     if (!values.allFinite()) fail_input(who, "values must be finite");
-    for (int i = 0; i < n; ++i) {
-        if (!std::isfinite(x[static_cast<std::size_t>(i)])) fail_input(who, "abscissa " + std::to_string(i) + " is not finite");
-        if (i > 0 && !(x[static_cast<std::size_t>(i)] > x[static_cast<std::size_t>(i - 1)]))
-            fail_input(who, "abscissae must increase strictly: x[" + std::to_string(i) + "] = " + full_precision(x[static_cast<std::size_t>(i)]) +
-                                " after " + full_precision(x[static_cast<std::size_t>(i - 1)]));
-    }
+    require_increasing(x, 2, "x", who);
     const auto h = [&](int i) { return x[static_cast<std::size_t>(i + 1)] - x[static_cast<std::size_t>(i)]; };
     std::vector<Eigen::Triplet<double>> trip;
     Eigen::MatrixXd rhs(n, values.cols());

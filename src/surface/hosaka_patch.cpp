@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/errors.hpp"
+#include "core/points.hpp"
 
 namespace cagd::surface {
 
@@ -166,16 +167,8 @@ Eigen::VectorXd coons_boolean_sum(const PatchEdges& e, int m, double u, double v
 CartesianSurface::CartesianSurface(int m, std::vector<double> x, std::vector<double> y, std::vector<Eigen::MatrixXd> node_derivatives)
     : basis_(m), x_(std::move(x)), y_(std::move(y)), nodes_(std::move(node_derivatives)) {
     const char* who = "cagd::surface::CartesianSurface";
-    for (const auto* g : {&x_, &y_}) {
-        const char* name = g == &x_ ? "x" : "y";
-        if (g->size() < 2) fail_input(who, std::string("needs at least two ") + name + " grid lines, got " + std::to_string(g->size()));
-        for (std::size_t i = 0; i < g->size(); ++i) {
-            if (!std::isfinite((*g)[i])) fail_input(who, std::string(name) + "[" + std::to_string(i) + "] is not finite");
-            if (i > 0 && !((*g)[i] > (*g)[i - 1]))
-                fail_input(who, std::string(name) + " must increase strictly, " + name + "[" + std::to_string(i) + "] = " + full_precision((*g)[i]) +
-                                    " after " + full_precision((*g)[i - 1]));
-        }
-    }
+    require_increasing(x_, 2, "x", who);
+    require_increasing(y_, 2, "y", who);
     if (nodes_.size() != x_.size() * y_.size())
         fail_input(who, "needs one node matrix per grid node (" + std::to_string(x_.size() * y_.size()) + "), got " + std::to_string(nodes_.size()));
     for (std::size_t n = 0; n < nodes_.size(); ++n)
