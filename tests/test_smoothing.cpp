@@ -166,3 +166,139 @@ TEST(ElasticLine, BadInputThrows) {
     c.fixed_values = {{1, 1.0}, {1, 2.0}};
     EXPECT_THROW(elastic_line_hermite(x, a, {0.1}, c), InvalidInput);
 }
+
+// ---- surfaces (eq 53–60) ----
+#include "smoothing/surface_smoothing.hpp"
+
+namespace {
+struct Grid {
+    std::vector<double> x, y;
+    Eigen::MatrixXd a;
+};
+// Uneven 8 × 7 grid with heights f(x, y).
+template <typename F>
+Grid uneven_grid(F f) {
+    Grid g;
+    for (int i = 0; i < 8; ++i) g.x.push_back(i + 0.2 * std::sin(1.0 * i));
+    for (int j = 0; j < 7; ++j) g.y.push_back(0.5 * j + 0.1 * std::cos(2.0 * j));
+    g.a.resize(8, 7);
+    for (int i = 0; i < 8; ++i)
+        for (int j = 0; j < 7; ++j) g.a(i, j) = f(g.x[static_cast<std::size_t>(i)], g.y[static_cast<std::size_t>(j)]);
+    return g;
+}
+Eigen::MatrixXd scalar(double v) { return Eigen::MatrixXd::Constant(1, 1, v); }
+double node_error(const surface::CartesianSurface& s, const Grid& g) {
+    double e = 0;
+    for (std::size_t i = 0; i < g.x.size(); ++i)
+        for (std::size_t j = 0; j < g.y.size(); ++j) e = std::max(e, std::abs(s.value(g.x[i], g.y[j]) - g.a(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j))));
+    return e;
+}
+}  // namespace
+
+TEST(SurfaceSmoothing, EnergyFreeSurfacesAreKept) {
+    // A bilinear surface has ζxx = ζyy = 0: the net, the no-twist plate (57) and the mean-curvature
+    // plate (58) leave it unchanged; the twist-penalising plate (56) does not (ζxy ≠ 0).
+    const Grid g = uneven_grid([](double x, double y) { return 1 + 2 * x - y + 0.5 * x * y; });
+    EXPECT_LT((elastic_net(g.x, g.y, g.a, scalar(0.5)).values - g.a).cwiseAbs().maxCoeff(), 1e-12);
+    EXPECT_LT(node_error(plate_smoothing(g.x, g.y, g.a, scalar(0.5), PlateEnergy::no_twist).surface, g), 1e-10);
+    EXPECT_LT(node_error(plate_smoothing(g.x, g.y, g.a, scalar(0.5), PlateEnergy::mean_curvature).surface, g), 1e-10);
+    EXPECT_GT(node_error(plate_smoothing(g.x, g.y, g.a, scalar(0.5), PlateEnergy::no_poisson).surface, g), 1e-4);
+    // A plane has no energy under any of (55)–(58).
+    const Grid p = uneven_grid([](double x, double y) { return 0.3 - x + 2 * y; });
+    for (PlateEnergy e : {PlateEnergy::poisson, PlateEnergy::no_poisson, PlateEnergy::no_twist, PlateEnergy::mean_curvature})
+        EXPECT_LT(node_error(plate_smoothing(p.x, p.y, p.a, scalar(0.5), e).surface, p), 1e-10);
+}
+
+TEST(SurfaceSmoothing, SmallLambdaInterpolatesAndLargeLambdaSmooths) {
+    const Grid g = uneven_grid([](double x, double y) { return std::sin(x) * std::cos(2 * y); });
+    const ElasticNet tight = elastic_net(g.x, g.y, g.a, scalar(0.0));
+    EXPECT_LT((tight.values - g.a).cwiseAbs().maxCoeff(), 1e-14) << "lambda = 0: the net passes through the data";
+    const surface::CartesianSurface rough = surface::cartesian_spline_surface(g.x, g.y, g.a);
+    const double e_rough = plate_energy(rough, PlateEnergy::no_twist);
+    for (PlateEnergy e : {PlateEnergy::no_poisson, PlateEnergy::no_twist}) {
+        const PlateSmoothing small = plate_smoothing(g.x, g.y, g.a, scalar(1e-9), e), large = plate_smoothing(g.x, g.y, g.a, scalar(10.0), e);
+        EXPECT_LT(node_error(small.surface, g), 1e-6);
+        EXPECT_LT(plate_energy(large.surface, PlateEnergy::no_twist), 0.1 * e_rough);
+    }
+}
+
+TEST(SurfaceSmoothing, PlateSolutionIsStationary) {
+    // U(ζ + ε η) − U(ζ) = O(ε²) for the plate's own energy: perturb one node's height.
+    const Grid g = uneven_grid([](double x, double y) { return std::exp(-0.1 * (x - 3) * (x - 3)) * std::cos(y); });
+    const PlateSmoothing s = plate_smoothing(g.x, g.y, g.a, scalar(0.2), PlateEnergy::no_poisson);
+    const auto total = [&](const surface::CartesianSurface& c) {
+        double springs = 0;
+        for (std::size_t i = 0; i < g.x.size(); ++i)
+            for (std::size_t j = 0; j < g.y.size(); ++j) springs += std::pow(c.value(g.x[i], g.y[j]) - g.a(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)), 2) / 0.2;
+        return 0.5 * springs + 0.5 * plate_energy(c, PlateEnergy::no_poisson);
+    };
+    const double u0 = total(s.surface);
+    std::vector<Eigen::MatrixXd> nodes;
+    for (std::size_t j = 0; j < g.y.size(); ++j)
+        for (std::size_t i = 0; i < g.x.size(); ++i) nodes.push_back(s.surface.node(static_cast<int>(i), static_cast<int>(j)));
+    for (double eps : {1e-3, 1e-4}) {
+        std::vector<Eigen::MatrixXd> moved = nodes;
+        moved[3 + 8 * 2](0, 0) += eps;
+        moved[3 + 8 * 2](1, 1) += eps;
+        const double du = total(surface::CartesianSurface(1, g.x, g.y, moved)) - u0;
+        EXPECT_GT(du, 0.0);
+        EXPECT_LT(du, 100 * eps * eps) << "first-order change must vanish at the minimiser";
+    }
+}
+
+TEST(SurfaceSmoothing, OrthonormalPolynomialsAndApproximationOne) {
+    const Eigen::MatrixXd psi = discrete_orthonormal_polynomials(5, 3);
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) {
+            double s = 0;
+            for (int t = -2; t <= 2; ++t) {
+                double pi = 0, pj = 0;
+                for (int k = 3; k >= 0; --k) {
+                    pi = pi * t + psi(i, k);
+                    pj = pj * t + psi(j, k);
+                }
+                s += pi * pj;
+            }
+            EXPECT_NEAR(s, i == j ? 1.0 : 0.0, 1e-14) << i << "," << j;
+        }
+    // Approximation 1 with λ = 0 reproduces a bicubic polynomial exactly (it lies in the span of ψ_i ψ_j).
+    std::vector<double> x, y;
+    for (int i = 0; i < 9; ++i) x.push_back(0.25 * i);
+    for (int j = 0; j < 7; ++j) y.push_back(0.5 * j);
+    Eigen::MatrixXd a(9, 7);
+    const auto f = [](double u, double v) { return u * u * u - 2 * u * v * v + v * v * v * u + 1; };
+    for (int i = 0; i < 9; ++i)
+        for (int j = 0; j < 7; ++j) a(i, j) = f(x[static_cast<std::size_t>(i)], y[static_cast<std::size_t>(j)]);
+    const surface::CartesianSurface s = local_orthogonal_smoothing(x, y, a, 0.0, PlateEnergy::no_twist);
+    for (int i = 0; i < 9; ++i)
+        for (int j = 0; j < 7; ++j) {
+            EXPECT_NEAR(s.node(i, j)(0, 0), a(i, j), 1e-11);
+            EXPECT_NEAR(s.node(i, j)(1, 0), 3 * x[static_cast<std::size_t>(i)] * x[static_cast<std::size_t>(i)] - 2 * y[static_cast<std::size_t>(j)] * y[static_cast<std::size_t>(j)] +
+                                                std::pow(y[static_cast<std::size_t>(j)], 3),
+                        1e-10);
+        }
+}
+
+TEST(SurfaceSmoothing, BoundaryPlateKeepsTheSmoothedBoundaryRows) {
+    const Grid g = uneven_grid([](double x, double y) { return std::sin(0.5 * x) + y * y; });
+    const BoundaryPlateSmoothing s = boundary_plate_smoothing(g.x, g.y, g.a, scalar(0.05), PlateEnergy::no_twist, 2);
+    const ElasticLine lower = elastic_line(g.x, g.a.col(0), 0.05);
+    for (std::size_t i = 0; i < g.x.size(); ++i) EXPECT_NEAR(s.surface.value(g.x[i], g.y.front()), lower.values()(static_cast<Eigen::Index>(i), 0), 1e-12);
+    EXPECT_EQ(s.system_size, 2 * 2 * 8);
+}
+
+TEST(SurfaceSmoothing, BadInputThrows) {
+    const Grid g = uneven_grid([](double x, double y) { return x + y; });
+    EXPECT_THROW(elastic_net(g.x, g.y, g.a, scalar(-1.0)), InvalidInput);
+    EXPECT_THROW(elastic_net(g.x, g.y, g.a.topRows(7), scalar(1.0)), InvalidInput) << "ragged: heights do not match the grid";
+    EXPECT_THROW(elastic_net(g.x, g.y, g.a, Eigen::MatrixXd::Ones(3, 3)), InvalidInput);
+    Eigen::MatrixXd bad = g.a;
+    bad(2, 3) = std::nan("");
+    EXPECT_THROW(elastic_net(g.x, g.y, bad, scalar(1.0)), InvalidInput);
+    EXPECT_THROW(plate_smoothing(g.x, g.y, g.a, scalar(0.0), PlateEnergy::no_twist), InvalidInput) << "plates need finite springs";
+    EXPECT_THROW(plate_energy_form(PlateEnergy::poisson, 0.7), InvalidInput);
+    EXPECT_THROW(local_orthogonal_smoothing(g.x, g.y, g.a, 0.1, PlateEnergy::no_twist), InvalidInput) << "uneven grid";
+    std::vector<double> x{0, 1, 2, 3}, y{0, 1, 2, 3, 4};
+    EXPECT_THROW(local_orthogonal_smoothing(x, y, Eigen::MatrixXd::Zero(4, 5), 0.1, PlateEnergy::no_twist), InvalidInput) << "fewer than 5 lines";
+    EXPECT_THROW(surface::grid_from_points((PointList(3, 3) << 0, 0, 1, 1, 0, 1, 0, 1, 1).finished()), InvalidInput) << "ragged point grid";
+}

@@ -241,8 +241,8 @@ PatchEdges edges_through_points(const PointList& bottom, const PointList& left, 
     return {edge(bottom), edge(left), edge(top), edge(right)};
 }
 
-CartesianSurface cartesian_spline_surface(const PointList& xyz) {
-    const char* who = "cagd::surface::cartesian_spline_surface";
+GridHeights grid_from_points(const PointList& xyz) {
+    const char* who = "cagd::surface::grid_from_points";
     if (xyz.cols() != 3) fail_input(who, "needs rows x, y, z, got " + std::to_string(xyz.cols()) + " columns");
     std::set<double> xs, ys;
     for (Eigen::Index r = 0; r < xyz.rows(); ++r) {
@@ -250,18 +250,23 @@ CartesianSurface cartesian_spline_surface(const PointList& xyz) {
         xs.insert(xyz(r, 0));
         ys.insert(xyz(r, 1));
     }
-    const std::vector<double> x(xs.begin(), xs.end()), y(ys.begin(), ys.end());
-    if (static_cast<std::size_t>(xyz.rows()) != x.size() * y.size())
-        fail_input(who, "the points must cover a rectangular grid exactly once: " + std::to_string(x.size()) + " distinct x and " + std::to_string(y.size()) +
-                            " distinct y need " + std::to_string(x.size() * y.size()) + " rows, got " + std::to_string(xyz.rows()));
+    GridHeights g{std::vector<double>(xs.begin(), xs.end()), std::vector<double>(ys.begin(), ys.end()), {}};
+    if (static_cast<std::size_t>(xyz.rows()) != g.x.size() * g.y.size())
+        fail_input(who, "the points must cover a rectangular grid exactly once: " + std::to_string(g.x.size()) + " distinct x and " + std::to_string(g.y.size()) +
+                            " distinct y need " + std::to_string(g.x.size() * g.y.size()) + " rows, got " + std::to_string(xyz.rows()));
     std::map<std::pair<double, double>, double> height;
     for (Eigen::Index r = 0; r < xyz.rows(); ++r)
         if (!height.emplace(std::make_pair(xyz(r, 0), xyz(r, 1)), xyz(r, 2)).second)
             fail_input(who, "node (" + full_precision(xyz(r, 0)) + ", " + full_precision(xyz(r, 1)) + ") given twice (row " + std::to_string(r + 1) + ")");
-    Eigen::MatrixXd z(static_cast<Eigen::Index>(x.size()), static_cast<Eigen::Index>(y.size()));
-    for (std::size_t a = 0; a < x.size(); ++a)
-        for (std::size_t b = 0; b < y.size(); ++b) z(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b)) = height.at({x[a], y[b]});
-    return cartesian_spline_surface(x, y, z);
+    g.z.resize(static_cast<Eigen::Index>(g.x.size()), static_cast<Eigen::Index>(g.y.size()));
+    for (std::size_t a = 0; a < g.x.size(); ++a)
+        for (std::size_t b = 0; b < g.y.size(); ++b) g.z(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b)) = height.at({g.x[a], g.y[b]});
+    return g;
+}
+
+CartesianSurface cartesian_spline_surface(const PointList& xyz) {
+    const GridHeights g = grid_from_points(xyz);
+    return cartesian_spline_surface(g.x, g.y, g.z);
 }
 
 }  // namespace cagd::surface

@@ -133,4 +133,13 @@ CartesianSurface cartesian_spline_surface(const std::vector<double>& x, const st
 // The same from rows (x, y, z) in any order that cover a rectangular grid exactly once.
 CartesianSurface cartesian_spline_surface(const PointList& xyz);
 
+// Heights on a rectangular grid: z(a, b) = ζ(x_a, y_b) (rows: x, columns: y).
+struct GridHeights {
+    std::vector<double> x, y;
+    Eigen::MatrixXd z;
+};
+// From rows (x, y, z) in any order; InvalidInput for non-finite rows, a node given twice or
+// points that do not cover the grid of their distinct x and y exactly once (a ragged grid).
+GridHeights grid_from_points(const PointList& xyz);
+
 }  // namespace cagd::surface
