@@ -7,6 +7,8 @@ dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 fails=0
 printf 'x,y\n0,0\n1,1\n2,0\n3,1\n4,0\n' > "$dir/pts.csv"
+# A 5 x 5 grid of heights (equally spaced: approximation 1 needs 5 x 5 windows).
+for i in 0 1 2 3 4; do for j in 0 1 2 3 4; do echo "$i,$j,$(( (i*i + j) % 3 ))"; done; done > "$dir/grid5.csv"
 
 if ! "$cagd" interpolate --method s-spline --m 2 --in "$dir/pts.csv" --out "$dir/c.csv" --samples 4; then
   echo "FAIL: good interpolate exited non-zero"; fails=$((fails+1))
@@ -117,6 +119,31 @@ expect_bad "coons missing edge"     ''                   surface --kind coons --
 expect_bad "hosaka bessel end"     '0,0\n1,1\n2,0\n'    interpolate --method hosaka --end bessel --in "$dir/bad.csv" --out "$dir/o.csv"
 expect_bad "hosaka zero chord"     '0,0\n1,1\n1,1\n'    interpolate --method hosaka --in "$dir/bad.csv" --out "$dir/o.csv"
 expect_bad "hosaka tangent dim"    '0,0\n1,1\n2,0\n'    interpolate --method hosaka --end tangent --start-tangent 1,0,0 --end-tangent 0,1,0 --in "$dir/bad.csv" --out "$dir/o.csv"
+
+# hosaka sections 6-7: cagd smooth (elastic line) and cagd smooth-surface.
+printf 'x,y\n0,1\n1,0.6\n2,0.1\n3,0.5\n4,0.9\n' > "$dir/noisy.csv"
+"$cagd" smooth --lambda 0 --in "$dir/noisy.csv" --samples 2 --out "$dir/sm0.csv" || { echo "FAIL: smooth lambda 0"; fails=$((fails+1)); }
+# lambda = 0 interpolates: the sample at x = 2 (row 6) is 0.1.
+awk -F, 'NR==6 { exit !($1==2 && ($2-0.1)^2 < 1e-24) }' "$dir/sm0.csv" || { echo "FAIL: smooth lambda 0 misses (2, 0.1)"; sed -n 6p "$dir/sm0.csv"; fails=$((fails+1)); }
+"$cagd" smooth --lambda 1 --in "$dir/noisy.csv" --samples 2 --out "$dir/sm1.csv" || { echo "FAIL: smooth lambda 1"; fails=$((fails+1)); }
+awk -F, 'NR==6 { exit !($2 > 0.2) }' "$dir/sm1.csv" || { echo "FAIL: smooth lambda 1 does not lift the dip at x = 2"; fails=$((fails+1)); }
+printf '1\n1\n0\n1\n1\n' > "$dir/lam.csv"
+"$cagd" smooth --lambda-file "$dir/lam.csv" --in "$dir/noisy.csv" --samples 2 --out "$dir/sm2.csv" || { echo "FAIL: smooth lambda-file"; fails=$((fails+1)); }
+awk -F, 'NR==6 { exit !(($2-0.1)^2 < 1e-24) }' "$dir/sm2.csv" || { echo "FAIL: lambda_2 = 0 must hold the point"; fails=$((fails+1)); }
+"$cagd" smooth --lambda 0.1 --form parametric --in "$dir/pts.csv" --out "$dir/sm3.csv" || { echo "FAIL: smooth parametric"; fails=$((fails+1)); }
+for m in net plate plate-boundary approx1 approx2; do
+  "$cagd" smooth-surface --method $m --lambda 0.001 --in "$dir/grid5.csv" --out "$dir/ss_$m.csv" 2>/dev/null || { echo "FAIL: smooth-surface $m"; fails=$((fails+1)); }
+done
+expect_bad "smooth negative lambda"   'x,y\n0,0\n1,1\n2,0\n' smooth --lambda -0.1 --in "$dir/bad.csv" --out "$dir/o.csv"
+expect_bad "smooth unsorted x"        'x,y\n0,0\n2,1\n1,0\n' smooth --lambda 0.1 --in "$dir/bad.csv" --out "$dir/o.csv"
+expect_bad "smooth repeated x"        'x,y\n0,0\n1,1\n1,0\n' smooth --lambda 0.1 --in "$dir/bad.csv" --out "$dir/o.csv"
+expect_bad "smooth nan"               'x,y\n0,0\n1,nan\n2,0\n' smooth --lambda 0.1 --in "$dir/bad.csv" --out "$dir/o.csv"
+expect_bad "smooth both lambdas"      'x,y\n0,0\n1,1\n2,0\n' smooth --lambda 0.1 --lambda-file "$dir/lam.csv" --in "$dir/bad.csv" --out "$dir/o.csv"
+expect_bad "smooth lambda count"      'x,y\n0,0\n1,1\n2,0\n' smooth --lambda-file "$dir/lam.csv" --in "$dir/bad.csv" --out "$dir/o.csv"
+expect_bad "smooth-surface ragged"    'x,y,z\n0,0,0\n1,0,1\n0,1,1\n' smooth-surface --method net --lambda 0.1 --in "$dir/bad.csv" --out "$dir/o.csv"
+expect_bad "smooth-surface negative"  ''                   smooth-surface --method net --lambda -1 --in "$dir/grid5.csv" --out "$dir/o.csv"
+expect_bad "smooth-surface plate 0"   ''                   smooth-surface --method plate --lambda 0 --in "$dir/grid5.csv" --out "$dir/o.csv"
+expect_bad "smooth-surface nan"       'x,y,z\n0,0,0\n1,0,nan\n0,1,1\n1,1,1\n' smooth-surface --method net --lambda 0.1 --in "$dir/bad.csv" --out "$dir/o.csv"
 
 if [ "$fails" -eq 0 ]; then echo "cli: all checks passed"; fi
 exit $((fails > 0))

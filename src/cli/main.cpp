@@ -8,6 +8,9 @@
 //   cagd surface --kind tensor --in XYZ.csv | --kind coons --bottom B --left L --top T --right R
 //                | --kind boundary --lower L0 --upper L1 [--m 1|2] [--lower-slope S] [--upper-slope S]
 //                  [--lower-curvature C] [--upper-curvature C]     [--samples N] --out GRID.csv
+//   cagd smooth (--lambda L | --lambda-file F) [--form yx|parametric] [--samples N] --in P.csv --out C.csv
+//   cagd smooth-surface --method net|plate|plate-boundary|approx1|approx2 --lambda L [--energy 55|56|57|58]
+//                       [--poisson NU] [--m M] [--samples N] --in XYZ.csv --out GRID.csv
 //   cagd analyze CURVE.csv
 //   cagd analyze --in P.csv --method M [--optimize O] [--table T] [--closed]
 // Bad input: one line on stderr, exit code 2.
@@ -15,6 +18,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <sstream>
 
@@ -24,6 +28,8 @@
 #include "fairness/pseudo_energy_table.hpp"
 #include "fairness/pseudo_spline.hpp"
 #include "locality/locality_spline.hpp"
+#include "smoothing/elastic_line.hpp"
+#include "smoothing/surface_smoothing.hpp"
 #include "spline/hosaka_spline.hpp"
 #include "surface/boundary_surface.hpp"
 #include "surface/hosaka_patch.hpp"
@@ -248,6 +254,104 @@ int run_surface(const SurfaceArgs& a) {
     fail_input(who, "unknown --kind " + a.kind);
 }
 
+struct SmoothArgs {
+    std::string in, out, lambda_file, form = "yx";
+    double lambda = 0.0;
+    int samples = 20;
+};
+
+// hosaka section 6: the elastic line (eq 50-52) on y(x) data or on a parametric point list.
+int run_smooth(const SmoothArgs& a, bool lambda_given) {
+    const char* who = "cagd smooth";
+    if (lambda_given == !a.lambda_file.empty()) fail_input(who, "give exactly one of --lambda and --lambda-file");
+    const PointList points = read_points_csv(a.in);
+    std::vector<double> lambda{a.lambda};
+    if (!a.lambda_file.empty()) lambda = read_values_csv(a.lambda_file);
+    const char* names = "xyz";
+    if (a.form == "yx") {   // rows x, y[, z]: y(x) (and z(x)) smoothed
+        if (points.cols() < 2) fail_input(who, "--form yx needs rows x,y or x,y,z");
+        const std::vector<double> x(points.col(0).data(), points.col(0).data() + points.rows());
+        const smoothing::ElasticLine line = smoothing::elastic_line(x, points.rightCols(points.cols() - 1), lambda);
+        std::vector<std::string> header{"x"};
+        for (const char* prefix : {"", "d", "dd"})
+            for (Eigen::Index k = 1; k < points.cols(); ++k) header.push_back(std::string(prefix) + names[k]);
+        repro::CsvWriter w(a.out, header);
+        for (std::size_t i = 0; i + 1 < x.size(); ++i)
+            for (int k = 0; k < a.samples || (i + 2 == x.size() && k == a.samples); ++k) {
+                const double u = double(k) / a.samples;
+                std::vector<double> row{x[i] + u * (x[i + 1] - x[i])};
+                for (int order = 0; order <= 2; ++order) {
+                    const Eigen::RowVectorXd v = line.curve.evaluate_in(static_cast<int>(i), u, order);
+                    row.insert(row.end(), v.data(), v.data() + v.size());
+                }
+                w.row(row, 15);
+            }
+        return 0;
+    }
+    // parametric: x(t), y(t)[, z(t)] over the chord-length parameter
+    const smoothing::ElasticLine line = smoothing::elastic_line_parametric(points, lambda);
+    std::vector<std::string> header{"t"};
+    for (Eigen::Index k = 0; k < points.cols(); ++k) header.push_back(std::string(1, names[k]));
+    repro::CsvWriter w(a.out, header);
+    for (std::size_t i = 0; i + 1 < line.x().size(); ++i)
+        for (int k = 0; k < a.samples || (i + 2 == line.x().size() && k == a.samples); ++k) {
+            const double u = double(k) / a.samples;
+            std::vector<double> row{line.x()[i] + u * (line.x()[i + 1] - line.x()[i])};
+            const Eigen::RowVectorXd v = line.curve.evaluate_in(static_cast<int>(i), u);
+            row.insert(row.end(), v.data(), v.data() + v.size());
+            w.row(row, 15);
+        }
+    return 0;
+}
+
+struct SmoothSurfaceArgs {
+    std::string method, in, out;
+    double lambda = 0.0, poisson = 0.3;
+    int energy = 57, m = 2, samples = 0;
+};
+
+// hosaka sections 6-7: the net, the plates and the two approximations on a grid of heights.
+int run_smooth_surface(const SmoothSurfaceArgs& a) {
+    const surface::GridHeights g = surface::grid_from_points(read_points_csv(a.in));
+    const Eigen::MatrixXd lambda = Eigen::MatrixXd::Constant(1, 1, a.lambda);
+    const smoothing::PlateEnergy energy = a.energy == 55   ? smoothing::PlateEnergy::poisson
+                                          : a.energy == 56 ? smoothing::PlateEnergy::no_poisson
+                                          : a.energy == 57 ? smoothing::PlateEnergy::no_twist
+                                                           : smoothing::PlateEnergy::mean_curvature;
+    if (a.method == "net") {   // the net's own unknowns at the nodes
+        if (a.samples > 0) fail_input("cagd smooth-surface", "--method net gives node values only; use approx2 for a surface to sample");
+        const smoothing::ElasticNet net = smoothing::elastic_net(g.x, g.y, g.z, lambda);
+        repro::CsvWriter w(a.out, {"x", "y", "z", "zxx", "zyy"});
+        for (std::size_t i = 0; i < g.x.size(); ++i)
+            for (std::size_t j = 0; j < g.y.size(); ++j) {
+                const Eigen::Index r = static_cast<Eigen::Index>(i), c = static_cast<Eigen::Index>(j);
+                w.row({g.x[i], g.y[j], net.values(r, c), net.xx(r, c), net.yy(r, c)}, 15);
+            }
+        return 0;
+    }
+    std::function<double(double, double, int, int)> s;
+    if (a.method == "plate-boundary") {
+        const auto b = smoothing::boundary_plate_smoothing(g.x, g.y, g.z, lambda, energy, a.m, a.poisson).surface;
+        s = [b](double x, double y, int i, int j) { return b.derivative(x, y, i, j); };
+    } else {
+        const surface::CartesianSurface c = a.method == "plate"     ? smoothing::plate_smoothing(g.x, g.y, g.z, lambda, energy, a.poisson).surface
+                                            : a.method == "approx1" ? smoothing::local_orthogonal_smoothing(g.x, g.y, g.z, a.lambda, energy, a.poisson)
+                                                                    : smoothing::net_spline_smoothing(g.x, g.y, g.z, lambda);
+        s = [c](double x, double y, int i, int j) { return c.derivative(x, y, i, j); };
+    }
+    repro::CsvWriter w(a.out, {"x", "y", "z", "zx", "zy", "zxy"});
+    const auto emit = [&](double x, double y) { w.row({x, y, s(x, y, 0, 0), s(x, y, 1, 0), s(x, y, 0, 1), s(x, y, 1, 1)}, 15); };
+    if (a.samples == 0) {
+        for (double x : g.x)
+            for (double y : g.y) emit(x, y);
+        return 0;
+    }
+    for (int i = 0; i <= a.samples; ++i)
+        for (int j = 0; j <= a.samples; ++j)
+            emit(std::min(g.x.front() + (g.x.back() - g.x.front()) * i / a.samples, g.x.back()), std::min(g.y.front() + (g.y.back() - g.y.front()) * j / a.samples, g.y.back()));
+    return 0;
+}
+
 int run_energy(double theta0, double theta1, bool degrees) {
     const double k = degrees ? M_PI / 180.0 : 1.0;
     const double t0 = theta0 * k, t1 = theta1 * k;
@@ -338,6 +442,29 @@ int main(int argc, char** argv) {
     surf->add_option("--samples", sa.samples, "samples per direction")->check(CLI::Range(1, 10000));
     surf->add_option("--out", sa.out, "grid CSV")->required();
 
+    auto* smooth = app.add_subcommand("smooth", "Elastic-line smoothing (hosaka section 6, eq 50-52): y(x) data or a parametric point list");
+    SmoothArgs sm;
+    auto* sm_lambda = smooth->add_option("--lambda", sm.lambda, "lambda = EI/k for every point (>= 0; 0 interpolates; units length^3)");
+    smooth->add_option("--lambda-file", sm.lambda_file, "one lambda per data point, one per line");
+    smooth->add_option("--form", sm.form, "yx: rows x,y[,z], x strictly increasing | parametric: 2-D/3-D points, chord parameter")
+        ->check(CLI::IsMember({"yx", "parametric"}));
+    smooth->add_option("--samples", sm.samples, "samples per interval")->check(CLI::Range(1, 100000));
+    smooth->add_option("--in", sm.in, "data CSV")->required();
+    smooth->add_option("--out", sm.out, "smoothed curve CSV (yx: x, values, first and second derivatives)")->required();
+
+    auto* ssurf = app.add_subcommand("smooth-surface", "Smooth a grid of heights (hosaka sections 6-7): elastic net, plates, approximations 1 and 2");
+    SmoothSurfaceArgs ss;
+    ssurf->add_option("--method", ss.method, "net | plate (method i) | plate-boundary (method ii) | approx1 (eq 60) | approx2 (net + splines)")
+        ->required()
+        ->check(CLI::IsMember({"net", "plate", "plate-boundary", "approx1", "approx2"}));
+    ssurf->add_option("--lambda", ss.lambda, "lambda = EI/k (net) or D/k (plates), >= 0 (> 0 for plates)")->required();
+    ssurf->add_option("--energy", ss.energy, "plate energy: 55 (with --poisson), 56, 57 (default), 58")->check(CLI::IsMember({55, 56, 57, 58}));
+    ssurf->add_option("--poisson", ss.poisson, "Poisson's ratio for --energy 55, in [0, 0.5)");
+    ssurf->add_option("--m", ss.m, "plate-boundary: order m of eq (31), 1..4");
+    ssurf->add_option("--samples", ss.samples, "sample the surface on an (N+1)^2 grid instead of the data nodes")->check(CLI::Range(0, 10000));
+    ssurf->add_option("--in", ss.in, "heights CSV, x,y,z per line covering a rectangular grid")->required();
+    ssurf->add_option("--out", ss.out, "CSV: x, y, z and derivatives at the nodes (or samples)")->required();
+
     auto* energy = app.add_subcommand("energy", "Minimum pseudo-energy J(theta0, theta1) of a unit-chord cubic Hermite segment (pseudo_energy eq 8), exact computation");
     double theta0 = 0, theta1 = 0;
     bool degrees = false;
@@ -372,6 +499,8 @@ int main(int argc, char** argv) {
         }
         if (*energy) return run_energy(theta0, theta1, degrees);
         if (*surf) return run_surface(sa);
+        if (*smooth) return run_smooth(sm, sm_lambda->count() > 0);
+        if (*ssurf) return run_smooth_surface(ss);
         if (*table) return run_energy_table(grid_n, placement, table_method, threads, table_out);
         const PointList points = read_points_csv(in_path);
         if (method == "hosaka" && *mv_opt) fail_input("cagd interpolate", "--m-vector is for s-spline and b2-spline; hosaka takes --m");

@@ -27,8 +27,10 @@ bool parse_double(const std::string& s, double& v) {
 }
 }  // namespace
 
-PointList read_points_csv(std::istream& in, const std::string& name) {
-    const std::string who = "cagd::read_points_csv";
+namespace {
+// Rows of min_cols..max_cols finite numbers (an optional header line of names, # comments).
+PointList read_number_rows(std::istream& in, const std::string& name, std::size_t min_cols, std::size_t max_cols, const std::string& who,
+                           const std::string& what) {
     std::vector<std::vector<double>> rows;
     std::string line;
     int line_no = 0;
@@ -53,13 +55,11 @@ PointList read_points_csv(std::istream& in, const std::string& name) {
         }
         if (!numeric) {
             if (header_allowed) { header_allowed = false; continue; }   // a header of names
-            fail_input(who, name + ":" + std::to_string(line_no) + ": cannot read '" + line +
-                                "' as 2 or 3 comma-separated numbers");
+            fail_input(who, name + ":" + std::to_string(line_no) + ": cannot read '" + line + "' as " + what);
         }
         header_allowed = false;
-        if (values.size() < 2 || values.size() > 3)
-            fail_input(who, name + ":" + std::to_string(line_no) + ": " + std::to_string(values.size()) +
-                                " columns in '" + line + "'; points need 2 or 3");
+        if (values.size() < min_cols || values.size() > max_cols)
+            fail_input(who, name + ":" + std::to_string(line_no) + ": " + std::to_string(values.size()) + " columns in '" + line + "'; expected " + what);
         if (!rows.empty() && values.size() != rows.front().size())
             fail_input(who, name + ":" + std::to_string(line_no) + ": " + std::to_string(values.size()) +
                                 " columns, earlier lines have " + std::to_string(rows.front().size()));
@@ -69,11 +69,23 @@ PointList read_points_csv(std::istream& in, const std::string& name) {
                                     " is not finite");
         rows.push_back(values);
     }
-    if (rows.empty()) fail_input(who, name + ": no points");
+    if (rows.empty()) fail_input(who, name + ": no data rows (no points)");
     PointList p(static_cast<Eigen::Index>(rows.size()), static_cast<Eigen::Index>(rows.front().size()));
     for (std::size_t i = 0; i < rows.size(); ++i)
         for (std::size_t k = 0; k < rows[i].size(); ++k) p(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k)) = rows[i][k];
     return p;
+}
+}  // namespace
+
+PointList read_points_csv(std::istream& in, const std::string& name) {
+    return read_number_rows(in, name, 2, 3, "cagd::read_points_csv", "2 or 3 comma-separated numbers (points need 2 or 3)");
+}
+
+std::vector<double> read_values_csv(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) fail_input("cagd::read_values_csv", "cannot open '" + path + "'");
+    const PointList v = read_number_rows(in, path, 1, 1, "cagd::read_values_csv", "one number per line");
+    return std::vector<double>(v.data(), v.data() + v.rows());
 }
 
 PointList read_points_csv(const std::string& path) {

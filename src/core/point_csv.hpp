@@ -6,6 +6,7 @@
 // Errors (InvalidInput) name the source, the line number and the offending text.
 #include <istream>
 #include <string>
+#include <vector>
 
 #include "core/points.hpp"
 
@@ -13,5 +14,7 @@ namespace cagd {
 
 PointList read_points_csv(std::istream& in, const std::string& source_name);
 PointList read_points_csv(const std::string& path);
+// One finite number per line (optional header, # comments), e.g. per-point smoothing weights.
+std::vector<double> read_values_csv(const std::string& path);
 
 }  // namespace cagd
