@@ -9,6 +9,7 @@
 
 #include "core/errors.hpp"
 #include <random>
+#include "numeric/pentadiagonal.hpp"
 #include "numeric/finite_difference.hpp"
 #include "numeric/gauss_legendre.hpp"
 #include "numeric/romberg.hpp"
@@ -141,4 +142,29 @@ TEST(OneSidedDerivatives, ExactForPolynomialsAndAccurateForSine) {
     EXPECT_NEAR(s[2], -std::sin(1.0), 1e-6);
     EXPECT_THROW(cagd::numeric::one_sided_derivatives(cubic, 0, 0.1, 0, 4), cagd::InvalidInput);
     EXPECT_THROW(cagd::numeric::one_sided_derivatives(cubic, 0, -0.1, 1, 4), cagd::InvalidInput);
+}
+
+TEST(Pentadiagonal, MatchesDenseSolveOfAnSpdBandMatrix) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for (int n : {1, 2, 3, 7, 40}) {
+        // B Bᵀ with B lower bidiagonal plus a diagonal shift: SPD and pentadiagonal.
+        Eigen::MatrixXd b = Eigen::MatrixXd::Zero(n, n);
+        for (int i = 0; i < n; ++i) {
+            b(i, i) = 1.5 + u(rng);
+            if (i > 0) b(i, i - 1) = u(rng);
+            if (i > 1) b(i, i - 2) = u(rng);
+        }
+        const Eigen::MatrixXd a = b * b.transpose() + 0.1 * Eigen::MatrixXd::Identity(n, n);
+        std::vector<double> d, f, s;
+        for (int i = 0; i < n; ++i) {
+            d.push_back(a(i, i));
+            if (i + 1 < n) f.push_back(a(i, i + 1));
+            if (i + 2 < n) s.push_back(a(i, i + 2));
+        }
+        const Eigen::MatrixXd rhs = Eigen::MatrixXd::Random(n, 2);
+        const Eigen::MatrixXd x = cagd::numeric::solve_symmetric_pentadiagonal(d, f, s, rhs);
+        EXPECT_LT((a * x - rhs).cwiseAbs().maxCoeff(), 1e-12) << "n = " << n;
+    }
+    EXPECT_THROW(cagd::numeric::solve_symmetric_pentadiagonal({1.0, 1.0}, {2.0}, {}, Eigen::MatrixXd::Ones(2, 1)), cagd::InvalidInput) << "indefinite";
 }

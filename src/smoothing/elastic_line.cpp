@@ -7,6 +7,7 @@
 #include <string>
 
 #include "numeric/gauss_legendre.hpp"
+#include "numeric/pentadiagonal.hpp"
 #include "numeric/tridiagonal.hpp"
 #include "spline/hosaka_basis.hpp"
 
@@ -58,16 +59,17 @@ Tridiagonal spline_matrix(const std::vector<double>& x) {
     return r;
 }
 
-// Node values y = a − Λ Q M and the curve of eq (52) from the interior M.
-ElasticLine assemble_line(const std::vector<double>& x, const Eigen::MatrixXd& a, const std::vector<double>& lambda, const Sparse& q,
-                          const Eigen::MatrixXd& interior) {
+// Node values y = a − Λ δ²M and the curve of eq (52) from the interior M.
+ElasticLine assemble_line(const std::vector<double>& x, const Eigen::MatrixXd& a, const std::vector<double>& lambda, const Eigen::MatrixXd& interior) {
     const Eigen::Index n = static_cast<Eigen::Index>(x.size()) - 1;
     Eigen::MatrixXd m = Eigen::MatrixXd::Zero(n + 1, a.cols());
     if (n > 1) m.middleRows(1, n - 1) = interior;
     Eigen::MatrixXd y = a;
-    if (n > 1) {
-        const Eigen::MatrixXd reaction = q * interior;   // δ²M_i, i = 0..n
-        for (Eigen::Index i = 0; i <= n; ++i) y.row(i) -= lambda[static_cast<std::size_t>(i)] * reaction.row(i);
+    for (Eigen::Index i = 0; i <= n; ++i) {   // δ²M_i, the terms beyond the ends dropped
+        const std::size_t k = static_cast<std::size_t>(i);
+        if (lambda[k] == 0.0) continue;
+        if (i < n) y.row(i) -= lambda[k] * (m.row(i + 1) - m.row(i)) / (x[k + 1] - x[k]);
+        if (i > 0) y.row(i) += lambda[k] * (m.row(i) - m.row(i - 1)) / (x[k] - x[k - 1]);
     }
     // Slopes of the cubic with values y and second derivatives M (the spline's y'_i).
     Eigen::MatrixXd slopes(n + 1, a.cols());
@@ -95,27 +97,23 @@ ElasticLine elastic_line(const std::vector<double>& x, const Eigen::MatrixXd& a,
     const char* who = "cagd::smoothing::elastic_line";
     require_data(x, a, who);
     const std::vector<double> lambda = per_point_lambda(lambda_in, x.size(), who);
-    const Sparse q = second_difference(x);
-    if (x.size() == 2) return assemble_line(x, a, lambda, q, Eigen::MatrixXd(0, a.cols()));
-    const Tridiagonal r = spline_matrix(x);
-    const Eigen::Index inner = q.cols();
-    std::vector<Eigen::Triplet<double>> t;
-    for (Eigen::Index c = 0; c < inner; ++c) {
-        const std::size_t k = static_cast<std::size_t>(c);
-        t.emplace_back(c, c, r.diag[k]);
-        if (c > 0) t.emplace_back(c, c - 1, r.sub[k]);
-        if (c + 1 < inner) t.emplace_back(c, c + 1, r.sup[k]);
+    const std::size_t n = x.size() - 1, inner = n - 1;   // interior unknowns M_1..M_{n−1}
+    if (n == 1) return assemble_line(x, a, lambda, Eigen::MatrixXd(0, a.cols()));
+    // (R + 6 QᵀΛQ) in its three bands: column c ↔ node k = c + 1, whose Q column has
+    // (α_k, −α_k − α_{k+1}, α_{k+1}) at rows k − 1, k, k + 1, α_k = 1/l_k.
+    const auto alpha = [&](std::size_t k) { return 1.0 / (x[k] - x[k - 1]); };
+    std::vector<double> diag(inner), first(inner > 0 ? inner - 1 : 0), second(inner > 1 ? inner - 2 : 0);
+    Eigen::MatrixXd rhs(static_cast<Eigen::Index>(inner), a.cols());
+    for (std::size_t c = 0; c < inner; ++c) {
+        const std::size_t k = c + 1;
+        const double ak = alpha(k), ak1 = alpha(k + 1);
+        diag[c] = 2.0 * (x[k + 1] - x[k - 1]) + 6.0 * (lambda[k - 1] * ak * ak + lambda[k] * (ak + ak1) * (ak + ak1) + lambda[k + 1] * ak1 * ak1);
+        if (c + 1 < inner) first[c] = (x[k + 1] - x[k]) + 6.0 * (-lambda[k] * (ak + ak1) * ak1 - lambda[k + 1] * ak1 * (ak1 + alpha(k + 2)));
+        if (c + 2 < inner) second[c] = 6.0 * lambda[k + 1] * ak1 * alpha(k + 2);
+        rhs.row(static_cast<Eigen::Index>(c)) = 6.0 * ((a.row(static_cast<Eigen::Index>(k + 1)) - a.row(static_cast<Eigen::Index>(k))) * ak1 -
+                                                       (a.row(static_cast<Eigen::Index>(k)) - a.row(static_cast<Eigen::Index>(k - 1))) * ak);
     }
-    Sparse system(inner, inner);
-    system.setFromTriplets(t.begin(), t.end());
-    const Eigen::VectorXd weights = Eigen::Map<const Eigen::VectorXd>(lambda.data(), static_cast<Eigen::Index>(lambda.size()));
-    const Sparse qt = q.transpose();
-    system += 6.0 * (qt * weights.asDiagonal() * q);
-    // Banded SPD: natural ordering keeps the band, so the factorisation is O(n).
-    Eigen::SimplicialLDLT<Sparse, Eigen::Lower, Eigen::NaturalOrdering<int>> ldlt(system);
-    if (ldlt.info() != Eigen::Success) fail_input(who, "the five-term system (51) could not be factorised");
-    const Eigen::MatrixXd rhs = 6.0 * (qt * a);
-    return assemble_line(x, a, lambda, q, ldlt.solve(rhs));
+    return assemble_line(x, a, lambda, numeric::solve_symmetric_pentadiagonal(diag, first, second, std::move(rhs)));
 }
 
 ElasticLine elastic_line(const std::vector<double>& x, const Eigen::MatrixXd& a, double lambda) {
@@ -131,7 +129,7 @@ ElasticLineIteration elastic_line_iterative(const std::vector<double>& x, const 
     const Sparse q = second_difference(x);
     ElasticLineIteration out;
     if (x.size() == 2) {
-        out.line = assemble_line(x, a, lambda, q, Eigen::MatrixXd(0, a.cols()));
+        out.line = assemble_line(x, a, lambda, Eigen::MatrixXd(0, a.cols()));
         return out;
     }
     const Tridiagonal r = spline_matrix(x);
@@ -150,7 +148,7 @@ ElasticLineIteration elastic_line_iterative(const std::vector<double>& x, const 
         const double size = m.cwiseAbs().maxCoeff();
         if (!std::isfinite(step) || !std::isfinite(size)) break;
         if (step <= tolerance * std::max(size, 1e-300)) {
-            out.line = assemble_line(x, a, lambda, q, m);
+            out.line = assemble_line(x, a, lambda, m);
             return out;
         }
         if (k > 20 && out.contraction >= 1.0) break;   // growing corrections: ρ ≥ 1
@@ -159,7 +157,7 @@ ElasticLineIteration elastic_line_iterative(const std::vector<double>& x, const 
     out.outcome = Outcome{Status::no_convergence, "the iteration from lambda = 0 did not converge: ratio of successive corrections " +
                                                       full_precision(out.contraction) + " after " + std::to_string(out.iterations) +
                                                       " iterations (it converges only when 6 R^-1 Q^T Lambda Q has spectral radius < 1)"};
-    if (m.allFinite()) out.line = assemble_line(x, a, lambda, q, m);
+    if (m.allFinite()) out.line = assemble_line(x, a, lambda, m);
     return out;
 }
 

@@ -16,7 +16,8 @@
 //       + (6/l_{i+1})(λ_{i+1} δ²M_{i+1} − λ_i δ²M_i) − (6/l_i)(λ_i δ²M_i − λ_{i−1} δ²M_{i−1}) = 6 δ²a_i  (51)
 // for i = 1..n−1, M_0 = M_n = 0. In matrix form (R + 6 Qᵀ Λ Q) M = 6 Qᵀ a with R the spline's
 // tridiagonal matrix and Q the (n+1) × (n−1) second-difference matrix: symmetric positive definite
-// and pentadiagonal, solved by Eigen's sparse LDLᵀ in natural (banded) order, O(n).
+// and pentadiagonal, assembled band by band and solved by a banded LDLᵀ
+// (numeric::solve_symmetric_pentadiagonal), O(n) time and memory.
 // The curve is eq (52) — on [x_i, x_{i+1}], u = (x − x_i)/l_{i+1},
 //     y = y_i + (y_{i+1} − y_i) u − (2M_i + M_{i+1})(l²/6) p_1(u) + (M_i + 2M_{i+1})(l²/6) q_1(u),
 // which is the cubic Hermite segment of eq (45) with the slopes of the spline; we return it as a
