@@ -113,19 +113,8 @@ double eq46_residual(const spline::ExplicitSpline& c) {
 
 // Spectral radius of 6 R⁻¹ Qᵀ Λ Q (the iteration matrix), by a dense eigen-solver.
 double iteration_spectral_radius(const Vec& x, double lambda) {
-    const Eigen::Index n = static_cast<Eigen::Index>(x.size()) - 1, inner = n - 1;
-    Eigen::MatrixXd r = Eigen::MatrixXd::Zero(inner, inner), q = Eigen::MatrixXd::Zero(n + 1, inner);
-    for (Eigen::Index c = 0; c < inner; ++c) {
-        const std::size_t i = static_cast<std::size_t>(c + 1);
-        const double left = x[i] - x[i - 1], right = x[i + 1] - x[i];
-        r(c, c) = 2 * (left + right);
-        if (c > 0) r(c, c - 1) = left;
-        if (c + 1 < inner) r(c, c + 1) = right;
-        q(c, c) = 1 / left;
-        q(c + 1, c) = -1 / left - 1 / right;
-        q(c + 2, c) = 1 / right;
-    }
-    const Eigen::MatrixXd g = 6 * lambda * r.inverse() * q.transpose() * q;
+    const SplineMatrices m = natural_spline_matrices(x);
+    const Eigen::MatrixXd g = 6 * lambda * m.r.inverse() * m.q.transpose() * m.q;
     return g.eigenvalues().cwiseAbs().maxCoeff();
 }
 

@@ -13,6 +13,7 @@
 #include <random>
 
 #include "repro/artifact_run.hpp"
+#include "smoothing/elastic_line.hpp"
 #include "smoothing/surface_smoothing.hpp"
 
 using namespace cagd;
@@ -25,18 +26,8 @@ using SurfaceFn = std::function<double(double, double, int, int)>;   // ζ^(a,b)
 
 // Net energy in ζ only: each natural spline line contributes ∫ y''² = 6 ζᵀ Q R⁻¹ Qᵀ ζ (dense).
 Eigen::MatrixXd line_energy_matrix(const Vec& g) {
-    const Eigen::Index n = static_cast<Eigen::Index>(g.size());
-    Eigen::MatrixXd r = Eigen::MatrixXd::Zero(n - 2, n - 2), q = Eigen::MatrixXd::Zero(n, n - 2);
-    for (Eigen::Index c = 0; c + 2 < n; ++c) {
-        const double left = g[static_cast<std::size_t>(c + 1)] - g[static_cast<std::size_t>(c)], right = g[static_cast<std::size_t>(c + 2)] - g[static_cast<std::size_t>(c + 1)];
-        r(c, c) = 2 * (left + right);
-        if (c > 0) r(c, c - 1) = left;
-        if (c + 3 < n) r(c, c + 1) = right;
-        q(c, c) = 1 / left;
-        q(c + 1, c) = -1 / left - 1 / right;
-        q(c + 2, c) = 1 / right;
-    }
-    return 6 * q * r.inverse() * q.transpose();
+    const SplineMatrices m = natural_spline_matrices(g);
+    return 6 * m.q * m.r.inverse() * m.q.transpose();
 }
 
 // δ² along x (dir 0) or y (dir 1) of a node field, one-sided at the ends.
@@ -180,20 +171,9 @@ int main(int argc, char** argv) {
         Eigen::MatrixXd printed(4, 4);   // rows: coefficients of 1, t, t², t³ of the printed ψ_0..ψ_3
         printed << 1, 0, 0, 0, 0, 0.5, 0, 0, -0.5, 0, 0.5, 0, 0, -17.0 / 6, 0, 5.0 / 6;
         const Eigen::MatrixXd ours = discrete_orthonormal_polynomials(5, 3);
-        const auto inner = [](const Eigen::MatrixXd& c, int i, int j) {
-            double s = 0;
-            for (int t = -2; t <= 2; ++t) {
-                double pi = 0, pj = 0;
-                for (int k = 3; k >= 0; --k) {
-                    pi = pi * t + c(i, k);
-                    pj = pj * t + c(j, k);
-                }
-                s += pi * pj;
-            }
-            return s;
-        };
+        const Eigen::MatrixXd printed_gram = discrete_gram_matrix(printed, 5), our_gram = discrete_gram_matrix(ours, 5);
         for (int i = 0; i <= 3; ++i)
-            for (int j = i; j <= 3; ++j) run.check("eq60.psi" + std::to_string(i) + std::to_string(j), inner(printed, i, j), inner(ours, i, j));
+            for (int j = i; j <= 3; ++j) run.check("eq60.psi" + std::to_string(i) + std::to_string(j), printed_gram(i, j), our_gram(i, j));
         // Ours ∝ printed for ψ_1, ψ_3 (ratio of t³ to t coefficients, of t coefficients).
         run.validate("eq60.psi3_shape", "our ψ_3 is proportional to the printed (5t³ − 17t)/6: |t-coefficient / t³-coefficient + 17/5|", std::abs(ours(3, 1) / ours(3, 3) + 17.0 / 5.0), 0.0,
                      1e-14, "rounding");

@@ -84,6 +84,19 @@ ElasticLine assemble_line(const std::vector<double>& x, const Eigen::MatrixXd& a
 
 }  // namespace
 
+SplineMatrices natural_spline_matrices(const std::vector<double>& x) {
+    require_increasing(x, 3, "x", "cagd::smoothing::natural_spline_matrices");
+    const Tridiagonal t = spline_matrix(x);
+    const Eigen::Index inner = static_cast<Eigen::Index>(t.diag.size());
+    SplineMatrices m{Eigen::MatrixXd::Zero(inner, inner), Eigen::MatrixXd(second_difference(x))};
+    for (Eigen::Index c = 0; c < inner; ++c) {
+        m.r(c, c) = t.diag[static_cast<std::size_t>(c)];
+        if (c > 0) m.r(c, c - 1) = t.sub[static_cast<std::size_t>(c)];
+        if (c + 1 < inner) m.r(c, c + 1) = t.sup[static_cast<std::size_t>(c)];
+    }
+    return m;
+}
+
 std::vector<double> per_point_lambda(const std::vector<double>& lambda, std::size_t count, const char* who) {
     if (lambda.size() != 1 && lambda.size() != count)
         fail_input(who, "needs one lambda for all points or one per point (" + std::to_string(count) + "), got " + std::to_string(lambda.size()));

@@ -99,6 +99,14 @@ double elastic_line_energy(const spline::ExplicitSpline& curve, const Eigen::Vec
 // of the node values M_i (values below 1e-12 · max |M| count as zero and are skipped).
 int inflection_count(const ElasticLine& line, int column = 0);
 
+// The natural spline's matrices as dense matrices (for checks and small problems): R, the
+// (n−1) × (n−1) C2 matrix (l_i, 2(l_i + l_{i+1}), l_{i+1}) for the interior M, and Q, the (n+1) × (n−1)
+// second-difference matrix ((Q M)_i = δ²M_i). Then RM = 6Qᵀy and ∫y''² dx = 6 yᵀ Q R⁻¹ Qᵀ y.
+struct SplineMatrices {
+    Eigen::MatrixXd r, q;
+};
+SplineMatrices natural_spline_matrices(const std::vector<double>& x);
+
 // λ given once for all points, expanded to one per abscissa; validated (finite, ≥ 0).
 std::vector<double> per_point_lambda(const std::vector<double>& lambda, std::size_t count, const char* who);
 

@@ -354,6 +354,14 @@ Eigen::MatrixXd discrete_orthonormal_polynomials(int points, int degree) {
     return coefficients;
 }
 
+Eigen::MatrixXd discrete_gram_matrix(const Eigen::MatrixXd& psi, int points) {
+    if (points < 1) fail_input("cagd::smoothing::discrete_gram_matrix", "needs points >= 1");
+    Eigen::MatrixXd values(points, psi.rows());
+    for (int k = 0; k < points; ++k)
+        for (Eigen::Index i = 0; i < psi.rows(); ++i) values(k, i) = polynomial(psi.row(i), k - 0.5 * (points - 1), 0);
+    return values.transpose() * values;
+}
+
 Eigen::MatrixXd window_energy_matrix(const Eigen::MatrixXd& psi, PlateEnergy energy, double hx, double hy, double nu) {
     const Eigen::Matrix3d c = plate_energy_form(energy, nu);
     const int n = static_cast<int>(psi.rows());

@@ -97,6 +97,9 @@ BoundaryPlateSmoothing boundary_plate_smoothing(const std::vector<double>& x, co
 // Orthonormal polynomials on the points s = −(n−1)/2 .. (n−1)/2 (step 1), degrees 0..degree:
 // row i = coefficients of ψ_i in 1, s, s², … (Gram–Schmidt in the discrete inner product).
 Eigen::MatrixXd discrete_orthonormal_polynomials(int points, int degree);
+// G(i, j) = Σ_k ψ_i(s_k) ψ_j(s_k) over the same points, for any coefficient rows (the identity for
+// the orthonormal set; eq (60)'s claim checked on the printed rows).
+Eigen::MatrixXd discrete_gram_matrix(const Eigen::MatrixXd& psi, int points);
 // The 16 × 16 matrix E of ∬_{[−2,2]²} e over c (grid steps hx, hy), and the sizes of the blocks
 // into which I + λE separates (connected components of its nonzero pattern, ascending), for the
 // basis whose rows are given (orthonormal or not; the spring term is then the basis's Gram matrix).
