@@ -66,7 +66,8 @@ double plate_energy(const surface::CartesianSurface& s, PlateEnergy energy, doub
 
 struct PlateSmoothing {
     surface::CartesianSurface surface;   // m = 1 Cartesian patch (eq 30)
-    int max_equation_terms = 0;          // most nonzero coefficients in one equation (36 for m = 1)
+    int max_equation_terms = 0;          // most nonzero coefficients in one equation (36 for m = 1 on an uneven
+                                         // grid; 25 on an equally spaced one, where value–own-slope couplings cancel)
     long system_size = 0;
 };
 PlateSmoothing plate_smoothing(const std::vector<double>& x, const std::vector<double>& y, const Eigen::MatrixXd& a, const Eigen::MatrixXd& lambda,
