@@ -2,17 +2,32 @@
 
 #include <cmath>
 
+#include "core/bernstein_polynomial.hpp"
 #include "core/errors.hpp"
 
 namespace cagd {
 
-BezierCurve::BezierCurve(Eigen::MatrixXd control_points, double a, double b)
-    : control_(std::move(control_points)), a_(a), b_(b) {
+BezierCurve::BezierCurve(Eigen::MatrixXd control_points, double a, double b, BezierEvaluation method)
+    : control_(std::move(control_points)), a_(a), b_(b), method_(method) {
     const std::string who = "cagd::BezierCurve";
     if (control_.rows() < 1) fail_input(who, "needs at least one control point");
     if (!std::isfinite(a) || !std::isfinite(b) || !(a < b))
         fail_input(who, "parameter interval [" + full_precision(a) + ", " + full_precision(b) +
                             "] must be finite with a < b");
+    if (method_ == BezierEvaluation::power_basis) {
+        const int p = degree();
+        monomial_ = Eigen::MatrixXd::Zero(p + 1, control_.cols());
+        for (int k = 0; k <= p; ++k) {
+            double binom_pk = 1.0;   // C(p, k)
+            for (int i = 1; i <= k; ++i) binom_pk = binom_pk * (p - k + i) / i;
+            double binom_kj = 1.0;   // C(k, j), updated in j
+            for (int j = 0; j <= k; ++j) {
+                if (j > 0) binom_kj = binom_kj * (k - j + 1) / j;
+                const double sign = ((k - j) % 2 == 0) ? 1.0 : -1.0;
+                monomial_.row(k) += sign * binom_pk * binom_kj * control_.row(j);
+            }
+        }
+    }
 }
 
 Eigen::MatrixXd BezierCurve::jet(double t, int order) const {
@@ -20,9 +35,23 @@ Eigen::MatrixXd BezierCurve::jet(double t, int order) const {
         fail_input("cagd::BezierCurve::jet", "t = " + full_precision(t) + " outside [" +
                                                  full_precision(a_) + ", " + full_precision(b_) + "]");
     if (order < 0) fail_input("cagd::BezierCurve::jet", "order must be >= 0");
-    const double s = (t - a_) / (b_ - a_);
+    const double s = std::min(1.0, std::max(0.0, (t - a_) / (b_ - a_)));
     const double scale = 1.0 / (b_ - a_);
     Eigen::MatrixXd result = Eigen::MatrixXd::Zero(order + 1, control_.cols());
+    if (method_ == BezierEvaluation::power_basis) {
+        const int p = degree();
+        for (int k = 0; k <= order && k <= p; ++k) {
+            // d^k/ds^k Σ a_m s^m = Σ_{m ≥ k} m!/(m−k)! a_m s^{m−k}, by Horner.
+            Eigen::RowVectorXd acc = Eigen::RowVectorXd::Zero(control_.cols());
+            for (int m = p; m >= k; --m) {
+                double falling = 1.0;
+                for (int i = 0; i < k; ++i) falling *= (m - i);
+                acc = acc * s + falling * monomial_.row(m);
+            }
+            result.row(k) = acc * std::pow(scale, k);
+        }
+        return result;
+    }
     Eigen::MatrixXd diff = control_;   // k-th forward differences, scaled
     double factor = 1.0;
     for (int k = 0; k <= order && k <= degree(); ++k) {
@@ -30,6 +59,13 @@ Eigen::MatrixXd BezierCurve::jet(double t, int order) const {
             const Eigen::Index m = diff.rows() - 1;
             diff = (diff.bottomRows(m) - diff.topRows(m)).eval();
             factor *= static_cast<double>(degree() - k + 1) * scale;
+        }
+        if (method_ == BezierEvaluation::bernstein) {
+            const std::vector<double> basis = bernstein_basis_values(static_cast<int>(diff.rows()) - 1, s);
+            Eigen::RowVectorXd acc = Eigen::RowVectorXd::Zero(control_.cols());
+            for (Eigen::Index j = 0; j < diff.rows(); ++j) acc += basis[static_cast<std::size_t>(j)] * diff.row(j);
+            result.row(k) = factor * acc;
+            continue;
         }
         Eigen::MatrixXd work = diff;   // de Casteljau
         for (Eigen::Index r = work.rows() - 1; r > 0; --r)

@@ -1,7 +1,15 @@
 #pragma once
 // Bézier curves r(t) = Σ_{j=0}^{p} B_{j,p}(s) b_j, s = (t − a)/(b − a), t ∈ [a, b].
-// Evaluation by de Casteljau on the control polygon and its forward differences
-// (hodographs): numerically stable for any degree, O(p²) per derivative order.
+// Derivatives come from the forward differences of the control points (hodographs):
+//   r^(k)(t) = p!/(p−k)! (b − a)^{−k} Σ_j Δ^k b_j B_{j,p−k}(s).
+// Three evaluation methods, chosen at construction:
+//   de_casteljau  repeated convex combinations: stable for any degree, O(p²) per derivative order
+//                 (the default);
+//   bernstein     the basis values by core/bernstein_basis_values (O(p), stable for any degree:
+//                 for p in the hundreds or thousands, where O(p²) is slow);
+//   power_basis   the monomial coefficients a_k = C(p,k) Σ_j (−1)^{k−j} C(k,j) b_j and Horner —
+//                 the naive method, kept to show why it must not be used: the a_k grow like 2^p
+//                 and cancel, so its error grows exponentially with p (typical_curves Fig. 1).
 // Preconditions: at least one control point, finite a < b.
 #include <Eigen/Dense>
 #include <vector>
@@ -10,11 +18,15 @@
 
 namespace cagd {
 
+enum class BezierEvaluation { de_casteljau, bernstein, power_basis };
+
 class BezierCurve : public Curve {
 public:
-    explicit BezierCurve(Eigen::MatrixXd control_points, double a = 0.0, double b = 1.0);
+    explicit BezierCurve(Eigen::MatrixXd control_points, double a = 0.0, double b = 1.0,
+                         BezierEvaluation method = BezierEvaluation::de_casteljau);
     int degree() const { return static_cast<int>(control_.rows()) - 1; }
     const Eigen::MatrixXd& control_points() const { return control_; }
+    BezierEvaluation evaluation() const { return method_; }
     int dimension() const override { return static_cast<int>(control_.cols()); }
     double t_min() const override { return a_; }
     double t_max() const override { return b_; }
@@ -24,6 +36,8 @@ public:
 private:
     Eigen::MatrixXd control_;
     double a_, b_;
+    BezierEvaluation method_;
+    Eigen::MatrixXd monomial_;   // power_basis only: row k = a_k
 };
 
 }  // namespace cagd

@@ -1,0 +1,70 @@
+#pragma once
+// Planar log-aesthetic curves (typical_curves section 2.2, eq 5–15), every α including the two
+// the paper leaves out (α = 0: eq 9; α = 1: the logarithmic spiral).
+//
+// A curve whose logarithmic curvature graph is a line of slope α (eq 5) satisfies
+//   ρ^α = c0 s + c1            (α ≠ 0, eq 8)        ρ = c0 e^{c1 s}   (α = 0, eq 9)
+// with s the arc length. We parametrise by s ∈ [0, L] with signed curvature κ = σ/ρ (σ = ±1,
+// the turning direction), start point P0 and start tangent angle θ_start:
+//   κ(s) = σ u(s)^{−1/α},  u = c0 s + c1                                    (α ≠ 0)
+//   κ(s) = σ e^{−c1 s}/c0                                                   (α = 0)
+//   θ(s) = θ_start + σ (Θ(s) − Θ(0)),  Θ' = |κ|, with the antiderivatives
+//     Θ = α u^{(α−1)/α} / ((α−1) c0)   (α ≠ 0, 1; eq 13)     Θ = ln u / c0   (α = 1)
+//     Θ = −e^{−c1 s}/(c0 c1)           (α = 0)               Θ = s/ρ       (c0 = 0 resp. c1 = 0:
+//                                                                           a circle)
+//   C(s) = P0 + ∫_0^s e^{iθ(v)} dv                                           (eq 14)
+// The integral is taken by adaptive Gauss–Kronrod (Boost.Math, 31 points, rel. 1e-14); for α = 1
+// and α = 2 closed forms exist (closed_form_point), which the experiments use as a check.
+// normalized_log_aesthetic_curve(α, L) is eq (15): C(s) = ∫_0^s e^{iα v^{(α−1)/α}} dv, i.e. θ(s) =
+// α s^{(α−1)/α}, κ = (α−1) s^{−1/α}: σ = sign(α − 1), c0 = |α − 1|^{−α}, c1 = 0. It exists only for
+// α < 0 or α > 1: for 0 < α ≤ 1 the turning ∫κ ds diverges at s = 0, α = 0 is not of this form.
+//
+// Preconditions (InvalidInput naming the value): finite α, c0, c1, L > 0, σ = ±1; u > 0 on (0, L)
+// and, where u = 0 at an end, α < 0 or α > 1 (finite turning; for α > 1 the curvature is unbounded
+// there and jets of order ≥ 2 at that end throw); for α = 0, c0 > 0. Jets up to order 3.
+#include <Eigen/Dense>
+#include <optional>
+
+#include "core/curve.hpp"
+
+namespace cagd::aesthetic {
+
+struct LogAestheticParameters {
+    double alpha = -1.0;
+    double c0 = 1.0, c1 = 1.0;
+    double length = 1.0;
+    int turn = 1;                       // σ: +1 counter-clockwise, −1 clockwise
+    double start_angle = 0.0;           // θ_start
+    Eigen::Vector2d start = Eigen::Vector2d::Zero();
+};
+
+class LogAestheticCurve : public Curve {
+public:
+    explicit LogAestheticCurve(const LogAestheticParameters& p);
+    const LogAestheticParameters& parameters() const { return p_; }
+
+    int dimension() const override { return 2; }
+    double t_min() const override { return 0.0; }
+    double t_max() const override { return p_.length; }
+    Eigen::MatrixXd jet(double s, int order) const override;   // order ≤ 3
+    std::vector<double> breakpoints() const override { return {0.0, p_.length}; }
+
+    double curvature(double s) const;             // signed κ(s)
+    double curvature_derivative(double s) const;  // dκ/ds
+    double tangent_angle(double s) const;         // θ(s), closed form
+    // Points at `count` ≥ 2 arc lengths uniform in [0, L] (cumulative quadrature, one pass).
+    Eigen::MatrixXd sample_points(int count) const;
+    // Closed-form C(s) for α = 1 (log spiral) and α = 2 (circle involute); nullopt otherwise.
+    std::optional<Eigen::Vector2d> closed_form_point(double s) const;
+
+private:
+    double antiderivative(double s) const;   // Θ(s)
+    double base(double s) const { return p_.c0 * s + p_.c1; }
+    Eigen::Vector2d integrate(double a, double b) const;
+    LogAestheticParameters p_;
+    double theta_origin_ = 0.0;   // Θ(0)
+};
+
+LogAestheticCurve normalized_log_aesthetic_curve(double alpha, double length);
+
+}  // namespace cagd::aesthetic

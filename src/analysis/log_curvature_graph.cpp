@@ -1,0 +1,95 @@
+#include "analysis/log_curvature_graph.hpp"
+
+#include <cmath>
+
+#include "core/errors.hpp"
+
+namespace cagd::analysis {
+
+namespace {
+
+// Cross product of a and b as a 3-vector (planar: (0, 0, a_x b_y − a_y b_x)).
+Eigen::Vector3d cross3(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+    Eigen::Vector3d u = Eigen::Vector3d::Zero(), v = Eigen::Vector3d::Zero();
+    u.head(a.size()) = a;
+    v.head(b.size()) = b;
+    return u.cross(v);
+}
+
+struct CurvatureAndRate {
+    double kappa, kappa_s;
+};
+
+CurvatureAndRate curvature_and_rate(const Curve& c, double t) {
+    if (c.dimension() < 2 || c.dimension() > 3) fail_input("cagd::analysis::log_curvature_graph", "curve dimension must be 2 or 3");
+    const Eigen::MatrixXd j = c.jet(t, 3);
+    const Eigen::VectorXd d1 = j.row(1).transpose(), d2 = j.row(2).transpose(), d3 = j.row(3).transpose();
+    const double speed = d1.norm();
+    if (!(speed > 0.0)) fail_input("cagd::analysis::log_curvature_graph", "r'(t) = 0 at t = " + full_precision(t));
+    const Eigen::Vector3d cr = cross3(d1, d2), crd = cross3(d1, d3);
+    const double cn = cr.norm();
+    const double s3 = speed * speed * speed;
+    const double kappa = cn / s3;
+    if (cn == 0.0) return {0.0, 0.0};
+    const double dk = cr.dot(crd) / (cn * s3) - 3.0 * cn * d1.dot(d2) / (s3 * speed * speed);
+    return {kappa, dk / speed};
+}
+
+}  // namespace
+
+double curvature_arc_derivative(const Curve& c, double t) { return curvature_and_rate(c, t).kappa_s; }
+
+LcgSamples log_curvature_graph(const Curve& c, double t0, double t1, int samples) {
+    const std::string who = "cagd::analysis::log_curvature_graph";
+    if (!(t0 >= c.t_min() && t1 <= c.t_max() && t0 < t1))
+        fail_input(who, "range [" + full_precision(t0) + ", " + full_precision(t1) + "] not inside [" + full_precision(c.t_min()) + ", " + full_precision(c.t_max()) + "] or empty");
+    if (samples < 2) fail_input(who, "samples = " + std::to_string(samples) + " < 2");
+    LcgSamples out;
+    for (int k = 0; k < samples; ++k) {
+        const double t = t0 + (t1 - t0) * k / (samples - 1);
+        const CurvatureAndRate r = curvature_and_rate(c, t);
+        if (r.kappa == 0.0 || r.kappa_s == 0.0 || !std::isfinite(r.kappa_s)) {
+            ++out.skipped;
+            continue;
+        }
+        out.points.push_back({t, -std::log(r.kappa), std::log(std::abs(r.kappa / r.kappa_s))});
+    }
+    return out;
+}
+
+LineFit fit_line(const std::vector<double>& x, const std::vector<double>& y) {
+    if (x.size() != y.size() || x.size() < 2) fail_input("cagd::analysis::fit_line", "needs at least two (x, y) pairs of equal count");
+    const double n = static_cast<double>(x.size());
+    double mx = 0.0, my = 0.0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        mx += x[i];
+        my += y[i];
+    }
+    mx /= n;
+    my /= n;
+    double sxx = 0.0, sxy = 0.0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        sxx += (x[i] - mx) * (x[i] - mx);
+        sxy += (x[i] - mx) * (y[i] - my);
+    }
+    if (!(sxx > 0.0)) fail_input("cagd::analysis::fit_line", "all x equal (" + full_precision(mx) + ")");
+    LineFit f;
+    f.slope = sxy / sxx;
+    f.intercept = my - f.slope * mx;
+    f.points = static_cast<int>(x.size());
+    for (std::size_t i = 0; i < x.size(); ++i) f.max_residual = std::max(f.max_residual, std::abs(y[i] - (f.slope * x[i] + f.intercept)));
+    return f;
+}
+
+LineFit lcg_slope(const Curve& c, double t0, double t1, int samples) {
+    const LcgSamples g = log_curvature_graph(c, t0, t1, samples);
+    std::vector<double> x, y;
+    for (const LcgPoint& p : g.points) {
+        x.push_back(p.log_radius);
+        y.push_back(p.log_gradient);
+    }
+    if (x.size() < 2) fail_input("cagd::analysis::lcg_slope", "fewer than two samples with finite LCG coordinates in the range");
+    return fit_line(x, y);
+}
+
+}  // namespace cagd::analysis

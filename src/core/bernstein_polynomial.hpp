@@ -1,0 +1,67 @@
+#pragma once
+// Polynomials in Bernstein form on [0, 1], in double precision:
+//   p(t) = Σ_{i=0}^{d} c_i B_{i,d}(t),   B_{i,d}(t) = C(d,i) t^i (1 − t)^{d−i}.
+// Used to decide the sign of a curvature derivative exactly up to rounding (typical_curves,
+// appendix A.1: "if all C_i have one sign, the curvature is strictly monotone").
+//
+// Products use C(m,i) C(k,j) / C(m+k,i+j) (Farin, CAGD ch. 5); derivative and degree elevation
+// are the textbook formulas; evaluation and subdivision are de Casteljau (stable, convex).
+// sign_on_unit_interval() isolates sign changes by recursive subdivision: a value counts as
+// positive or negative only if it exceeds 64 ε · max |c_i|, so rounding noise of a polynomial that
+// touches zero is not read as a sign change; after `max_depth` halvings an unresolved interval
+// makes the result `undetermined` (a returned status, never a guess).
+//
+// bernstein_basis_values(d, t): all B_{i,d}(t) in O(d), stable for any degree ("Bernstein with
+// care"): start from the largest term i* = round(d t) through lgamma, run the ratio
+// B_{i+1}/B_i = (d−i)/(i+1) · t/(1−t) both ways, and renormalise by the sum (partition of unity),
+// which removes the lgamma rounding. Relative error about sqrt(d) ε on the significant terms;
+// no overflow or underflow trouble at d = 10^4. Precondition: 0 ≤ t ≤ 1, d ≥ 0.
+#include <string>
+#include <vector>
+
+namespace cagd {
+
+class BernsteinPolynomial {
+public:
+    BernsteinPolynomial() = default;
+    explicit BernsteinPolynomial(std::vector<double> coefficients);   // at least one, finite
+
+    int degree() const { return static_cast<int>(c_.size()) - 1; }
+    const std::vector<double>& coefficients() const { return c_; }
+    double operator()(double t) const;                                  // de Casteljau
+    BernsteinPolynomial derivative() const;                             // degree d − 1 (d = 0: 0)
+    BernsteinPolynomial elevated(int to_degree) const;                  // same polynomial
+    // Degree d − 1 representation of a polynomial whose true degree is below d (e.g. r' × r'' of
+    // a Bézier curve, whose leading terms cancel): the inverse of elevation, from the left for
+    // the first half of the coefficients and from the right for the rest (Farin, CAGD §6.1).
+    BernsteinPolynomial reduced() const;
+    // Halves on [0, τ] and [τ, 1], each reparametrised to [0, 1].
+    std::pair<BernsteinPolynomial, BernsteinPolynomial> subdivide(double tau = 0.5) const;
+
+    BernsteinPolynomial& operator*=(double s);
+    friend BernsteinPolynomial operator+(const BernsteinPolynomial& a, const BernsteinPolynomial& b);
+    friend BernsteinPolynomial operator-(const BernsteinPolynomial& a, const BernsteinPolynomial& b);
+    friend BernsteinPolynomial operator*(const BernsteinPolynomial& a, const BernsteinPolynomial& b);
+    friend BernsteinPolynomial operator*(double s, BernsteinPolynomial a) { return a *= s; }
+
+private:
+    std::vector<double> c_;
+};
+
+enum class SignOnInterval { negative, positive, nonpositive, nonnegative, zero, changes_sign, undetermined };
+const char* to_string(SignOnInterval s);
+
+struct SignAnalysis {
+    SignOnInterval sign = SignOnInterval::undetermined;
+    // For changes_sign: a parameter where p is clearly negative and one where it is clearly
+    // positive (witnesses), else −1.
+    double t_negative = -1.0, t_positive = -1.0;
+};
+// negative/positive: every Bernstein coefficient strictly of that sign (after subdivision where
+// needed) — p has no zero in [0, 1]. nonpositive/nonnegative: p never clearly crosses zero
+// (it may touch it). zero: all coefficients within rounding of 0.
+SignAnalysis sign_on_unit_interval(const BernsteinPolynomial& p, int max_depth = 40);
+
+std::vector<double> bernstein_basis_values(int degree, double t);
+
+}  // namespace cagd
