@@ -1,6 +1,6 @@
 #include "aesthetic/log_aesthetic_curve.hpp"
 
-#include <boost/math/quadrature/gauss_kronrod.hpp>
+#include <boost/math/quadrature/tanh_sinh.hpp>
 #include <cmath>
 #include <complex>
 
@@ -62,10 +62,13 @@ double LogAestheticCurve::curvature_derivative(double s) const {
 
 Eigen::Vector2d LogAestheticCurve::integrate(double a, double b) const {
     if (b <= a) return Eigen::Vector2d::Zero();
-    using Rule = boost::math::quadrature::gauss_kronrod<double, 31>;
-    const double x = Rule::integrate([&](double v) { return std::cos(tangent_angle(v)); }, a, b, 15, 1e-14);
-    const double y = Rule::integrate([&](double v) { return std::sin(tangent_angle(v)); }, a, b, 15, 1e-14);
-    return {x, y};
+    // tanh-sinh: double-exponential convergence for smooth integrands and for the endpoint
+    // singularity of θ' where c0 s + c1 = 0 (α > 1), where Gauss–Kronrod bisects for ever.
+    // (Boost 1.74 declares integrate(f, a, b, …) non-const, hence one integrator per thread.)
+    thread_local boost::math::quadrature::tanh_sinh<double> rule;
+    const auto fx = [this](double v) { return std::cos(tangent_angle(v)); };
+    const auto fy = [this](double v) { return std::sin(tangent_angle(v)); };
+    return {rule.integrate(fx, a, b, 1e-14), rule.integrate(fy, a, b, 1e-14)};
 }
 
 Eigen::MatrixXd LogAestheticCurve::jet(double s, int order) const {

@@ -13,7 +13,8 @@
 //     Θ = −e^{−c1 s}/(c0 c1)           (α = 0)               Θ = s/ρ       (c0 = 0 resp. c1 = 0:
 //                                                                           a circle)
 //   C(s) = P0 + ∫_0^s e^{iθ(v)} dv                                           (eq 14)
-// The integral is taken by adaptive Gauss–Kronrod (Boost.Math, 31 points, rel. 1e-14); for α = 1
+// The integral is taken by tanh-sinh quadrature (Boost.Math, rel. 1e-14; it copes with the endpoint
+// singularity of θ' where c0 s + c1 = 0); for α = 1
 // and α = 2 closed forms exist (closed_form_point), which the experiments use as a check.
 // normalized_log_aesthetic_curve(α, L) is eq (15): C(s) = ∫_0^s e^{iα v^{(α−1)/α}} dv, i.e. θ(s) =
 // α s^{(α−1)/α}, κ = (α−1) s^{−1/α}: σ = sign(α − 1), c0 = |α − 1|^{−α}, c1 = 0. It exists only for

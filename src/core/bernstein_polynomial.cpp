@@ -132,12 +132,12 @@ const char* to_string(SignOnInterval s) {
 namespace {
 
 struct SignSearch {
-    double threshold;
     int max_depth;
     double t_negative = -1.0, t_positive = -1.0;
     bool unresolved = false, all_strict = true;
 
-    void note(double value, double t) {
+    // A value is clearly signed when it exceeds the rounding level of the piece it belongs to.
+    void note(double value, double t, double threshold) {
         if (value < -threshold && t_negative < 0) t_negative = t;
         if (value > threshold && t_positive < 0) t_positive = t;
     }
@@ -145,19 +145,16 @@ struct SignSearch {
     void visit(const BernsteinPolynomial& p, double a, double b, int depth) {
         if (t_negative >= 0 && t_positive >= 0) return;
         const auto& c = p.coefficients();
-        note(c.front(), a);
-        note(c.back(), b);
-        const bool all_neg = std::all_of(c.begin(), c.end(), [&](double v) { return v < -threshold; });
-        const bool all_pos = std::all_of(c.begin(), c.end(), [&](double v) { return v > threshold; });
-        if (all_neg || all_pos) return;
-        const bool all_nonpos = std::all_of(c.begin(), c.end(), [&](double v) { return v <= threshold; });
-        const bool all_nonneg = std::all_of(c.begin(), c.end(), [&](double v) { return v >= -threshold; });
-        if (all_nonpos || all_nonneg) {   // touches zero within rounding at most
-            all_strict = false;
-            return;
-        }
-        if (depth >= max_depth) {
-            unresolved = true;
+        const double threshold = 64.0 * std::numeric_limits<double>::epsilon() * max_abs(c);
+        note(c.front(), a, threshold);
+        note(c.back(), b, threshold);
+        if (std::all_of(c.begin(), c.end(), [](double v) { return v < 0.0; })) return;
+        if (std::all_of(c.begin(), c.end(), [](double v) { return v > 0.0; })) return;
+        if (depth >= max_depth) {   // a piece of width 2^−max_depth that still mixes signs
+            const bool nonpos = std::all_of(c.begin(), c.end(), [&](double v) { return v <= threshold; });
+            const bool nonneg = std::all_of(c.begin(), c.end(), [&](double v) { return v >= -threshold; });
+            if (nonpos || nonneg) all_strict = false;   // touches zero within rounding
+            else unresolved = true;
             return;
         }
         const auto halves = p.subdivide(0.5);
@@ -176,7 +173,7 @@ SignAnalysis sign_on_unit_interval(const BernsteinPolynomial& p, int max_depth) 
         out.sign = SignOnInterval::zero;
         return out;
     }
-    SignSearch search{64.0 * std::numeric_limits<double>::epsilon() * scale, max_depth};
+    SignSearch search{max_depth};
     search.visit(p, 0.0, 1.0, 0);
     out.t_negative = search.t_negative;
     out.t_positive = search.t_positive;

@@ -6,10 +6,11 @@
 //
 // Products use C(m,i) C(k,j) / C(m+k,i+j) (Farin, CAGD ch. 5); derivative and degree elevation
 // are the textbook formulas; evaluation and subdivision are de Casteljau (stable, convex).
-// sign_on_unit_interval() isolates sign changes by recursive subdivision: a value counts as
-// positive or negative only if it exceeds 64 ε · max |c_i|, so rounding noise of a polynomial that
-// touches zero is not read as a sign change; after `max_depth` halvings an unresolved interval
-// makes the result `undetermined` (a returned status, never a guess).
+// sign_on_unit_interval() isolates sign changes by recursive subdivision: a piece whose
+// coefficients all have one strict sign is settled; a value witnesses a sign only if it exceeds
+// 64 ε · max |c_i| of its own piece (local, so polynomials spanning many orders of magnitude on
+// [0, 1] are judged fairly); a piece still mixed after `max_depth` halvings either touches zero
+// within rounding (non-strict sign) or makes the result `undetermined` (a returned status).
 //
 // bernstein_basis_values(d, t): all B_{i,d}(t) in O(d), stable for any degree ("Bernstein with
 // care"): start from the largest term i* = round(d t) through lgamma, run the ratio
