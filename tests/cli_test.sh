@@ -145,5 +145,31 @@ expect_bad "smooth-surface negative"  ''                   smooth-surface --meth
 expect_bad "smooth-surface plate 0"   ''                   smooth-surface --method plate --lambda 0 --in "$dir/grid5.csv" --out "$dir/o.csv"
 expect_bad "smooth-surface nan"       'x,y,z\n0,0,0\n1,0,nan\n0,1,1\n1,1,1\n' smooth-surface --method net --lambda 0.1 --in "$dir/bad.csv" --out "$dir/o.csv"
 
+# typical_curves: cagd lac and cagd monotone.
+"$cagd" lac --alpha -0.5 --length 1 --degree 99 --lcg --out "$dir/lac.csv" > "$dir/lac.txt" || { echo "FAIL: lac"; fails=$((fails+1)); }
+awk -F, '$1=="lcg_slope" { exit !($2 > -0.51 && $2 < -0.49) }' "$dir/lac.txt" || { echo "FAIL: lac LCG slope not near alpha"; cat "$dir/lac.txt"; fails=$((fails+1)); }
+[ "$(grep -c '^control,' "$dir/lac.csv")" -eq 100 ] || { echo "FAIL: lac must write 100 control points"; fails=$((fails+1)); }
+"$cagd" lac --alpha 1.5 --degree 20 --construction rotation --out "$dir/lac2.csv" || { echo "FAIL: lac rotation"; fails=$((fails+1)); }
+# A unit-edge polygon with decreasing turns 30, 10, 5, 2 degrees: uniform knots, every segment monotone.
+printf '0,0
+1,0
+1.8660254,0.5
+2.5088130,1.2660444
+3.0825706,2.0852596
+3.6117634,2.9333054
+' > "$dir/mono.csv"
+"$cagd" monotone --knots uniform --in "$dir/mono.csv" > "$dir/mono.txt" || { echo "FAIL: monotone"; fails=$((fails+1)); }
+grep -q '^whole_curve,' "$dir/mono.txt" || { echo "FAIL: monotone prints no whole-curve verdict"; fails=$((fails+1)); }
+[ "$(grep -c '^[0-9]' "$dir/mono.txt")" -eq 3 ] || { echo "FAIL: monotone must report 3 uniform segments"; cat "$dir/mono.txt"; fails=$((fails+1)); }
+expect_bad "lac degree 0"         ''  lac --alpha -0.5 --degree 0 --out "$dir/o.csv"
+expect_bad "lac alpha 0.5 scale1" ''  lac --alpha 0.5 --degree 9 --out "$dir/o.csv"
+expect_bad "lac alpha 1 rotation" ''  lac --alpha 1 --degree 9 --construction rotation --out "$dir/o.csv"
+expect_bad "lac alpha nan"        ''  lac --alpha nan --degree 9 --out "$dir/o.csv"
+expect_bad "lac negative length"  ''  lac --alpha -0.5 --length -1 --degree 9 --out "$dir/o.csv"
+expect_bad "monotone zero edge"   '0,0\n1,0\n1,0\n2,1\n3,3\n' monotone --in "$dir/bad.csv"
+expect_bad "monotone nan"         '0,0\n1,0\nnan,1\n2,1\n3,3\n' monotone --in "$dir/bad.csv"
+expect_bad "monotone 3-D"         '0,0,0\n1,0,0\n2,1,0\n3,3,1\n' monotone --in "$dir/bad.csv"
+expect_bad "monotone too few"     '0,0\n1,0\n2,1\n' monotone --in "$dir/bad.csv"
+
 if [ "$fails" -eq 0 ]; then echo "cli: all checks passed"; fi
 exit $((fails > 0))

@@ -11,6 +11,9 @@
 //   cagd smooth (--lambda L | --lambda-file F) [--form yx|parametric] [--samples N] --in P.csv --out C.csv
 //   cagd smooth-surface --method net|plate|plate-boundary|approx1|approx2 --lambda L [--energy 55|56|57|58]
 //                       [--poisson NU] [--m M] [--samples N] --in XYZ.csv --out GRID.csv
+//   cagd lac --alpha A --length L --degree N [--construction scale1|rotation] [--samples S] [--lcg]
+//            [--fit-from T0 --fit-to T1] --out C.csv
+//   cagd monotone --in CONTROL.csv [--knots endpoint|uniform]
 //   cagd analyze CURVE.csv
 //   cagd analyze --in P.csv --method M [--optimize O] [--table T] [--closed]
 // Bad input: one line on stderr, exit code 2.
@@ -23,6 +26,7 @@
 #include <sstream>
 
 #include "analysis/curve_measures.hpp"
+#include "cli/aesthetic_commands.hpp"
 #include "core/errors.hpp"
 #include "core/point_csv.hpp"
 #include "fairness/pseudo_energy_table.hpp"
@@ -481,6 +485,11 @@ int main(int argc, char** argv) {
     table->add_option("--threads", threads, "worker threads")->check(CLI::Range(1, 64));
     table->add_option("--out", table_out, "table file (text, first line records grid, placement and method)")->required();
 
+    cli::LacArgs lac_args;
+    cli::MonotoneArgs mono_args;
+    auto* lac = cli::add_lac_command(app, lac_args);
+    auto* mono = cli::add_monotone_command(app, mono_args);
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -498,6 +507,8 @@ int main(int argc, char** argv) {
             return run_analyze(curve_path);
         }
         if (*energy) return run_energy(theta0, theta1, degrees);
+        if (*lac) return cli::run_lac(lac_args);
+        if (*mono) return cli::run_monotone(mono_args);
         if (*surf) return run_surface(sa);
         if (*smooth) return run_smooth(sm, sm_lambda->count() > 0);
         if (*ssurf) return run_smooth_surface(ss);
