@@ -32,6 +32,10 @@ TEST(BernsteinPolynomial, ProductDerivativeAndElevationMatchPointValues) {
             EXPECT_NEAR(d(t), (a(t + h) - a(t - h)) / (2 * h), 1e-7);
         }
     }
+    // Degree reduction inverts elevation exactly (to rounding).
+    const BernsteinPolynomial r = a.elevated(5).reduced().reduced();
+    for (int i = 0; i < 4; ++i) EXPECT_NEAR(r.coefficients()[i], a.coefficients()[i], 1e-13);
+    EXPECT_THROW(BernsteinPolynomial({2.0}).reduced(), InvalidInput);
     const auto halves = a.subdivide(0.3);
     EXPECT_NEAR(halves.first(0.5), a(0.15), 1e-14);
     EXPECT_NEAR(halves.second(0.5), a(0.65), 1e-14);
@@ -179,7 +183,18 @@ TEST(LogAestheticCurve, TangentAngleClosedFormsAndLcgSlope) {
     LogAestheticParameters bad;
     bad.alpha = 0.5;
     bad.c1 = 0.0;
+    EXPECT_THROW(LogAestheticCurve{bad}, InvalidInput);   // turning diverges at s = 0
+    bad.alpha = 0.0;
+    bad.c0 = -1.0;
+    EXPECT_THROW(LogAestheticCurve{bad}, InvalidInput);   // ρ = c0 e^{c1 s} needs c0 > 0
+    bad.alpha = -0.5;
+    bad.c0 = -1.0;
+    bad.c1 = 0.5;                                          // c0 s + c1 < 0 before s = L = 1
     EXPECT_THROW(LogAestheticCurve{bad}, InvalidInput);
+    EXPECT_THROW(n.jet(1.6, 2), InvalidInput);             // outside [0, L]
+    EXPECT_THROW(n.jet(0.5, 4), InvalidInput);             // jets up to order 3
+    EXPECT_THROW(analysis::fit_line({1.0, 1.0}, {0.0, 2.0}), InvalidInput);
+    EXPECT_THROW(analysis::lcg_slope(n, 0.5, 0.4, 10), InvalidInput);
 }
 
 TEST(ClassA, TypicalMatrixConditionIsEq2ForScaleAboveOneAndReversedBelow) {
