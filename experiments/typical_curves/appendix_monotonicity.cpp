@@ -272,7 +272,7 @@ int main(int argc, char** argv) {
             const TypicalPolygon poly = scale_one_typical_polygon(-0.5, 1.0, degree);
             const auto u = tally(uniform_cubic_bspline(poly.points));
             table.row_text({std::to_string(degree), "uniform", std::to_string(poly.points.rows() - 3), repro::format_number(u[0], 6), repro::format_number(u[1], 6), repro::format_number(u[2], 6), repro::format_number(u[3], 6)});
-            const Eigen::MatrixXd ends = endpoint_interpolating_polygon(poly.points / (1.0 / degree));
+            const Eigen::MatrixXd ends = endpoint_interpolating_polygon(poly.points * degree);   // unit edges
             const auto e = tally(endpoint_interpolating_cubic_bspline(ends));
             table.row_text({std::to_string(degree), "endpoint_interpolating", std::to_string(ends.rows() - 3), repro::format_number(e[0], 6), repro::format_number(e[1], 6), repro::format_number(e[2], 6), repro::format_number(e[3], 6)});
         }

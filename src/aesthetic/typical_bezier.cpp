@@ -13,6 +13,13 @@ void require_finite_alpha(double alpha, const char* who) {
     if (!std::isfinite(alpha)) fail_input(who, "alpha = " + full_precision(alpha) + " is not finite");
 }
 
+// Eq (20)–(21) divide by α and by α − 1.
+void require_rotation_alpha(double alpha, const char* who) {
+    require_finite_alpha(alpha, who);
+    if (alpha == 0.0 || alpha == 1.0)
+        fail_input(who, "alpha = " + full_precision(alpha) + ": eq (20)-(21) divide by alpha and by alpha - 1 (allowed: alpha not 0 or 1)");
+}
+
 void require_degree(int degree, int minimum, const char* who) {
     if (degree < minimum) fail_input(who, "degree " + std::to_string(degree) + " < " + std::to_string(minimum));
 }
@@ -57,9 +64,7 @@ TypicalPolygon scale_one_typical_polygon(double alpha, double length, int degree
 
 TypicalPolygon constant_rotation_typical_polygon_by_angle(double alpha, double rotation, int degree) {
     const char* who = "cagd::aesthetic::constant_rotation_typical_polygon";
-    require_finite_alpha(alpha, who);
-    if (alpha == 0.0 || alpha == 1.0)
-        fail_input(who, "alpha = " + full_precision(alpha) + ": eq (20)-(21) divide by alpha and by alpha - 1 (allowed: alpha not 0 or 1)");
+    require_rotation_alpha(alpha, who);
     if (!std::isfinite(rotation) || rotation == 0.0) fail_input(who, "rotation = " + full_precision(rotation) + " must be finite and non-zero");
     require_degree(degree, 2, who);
     const double turn = alpha > 1.0 ? 1.0 : -1.0;
@@ -74,9 +79,7 @@ TypicalPolygon constant_rotation_typical_polygon_by_angle(double alpha, double r
 
 TypicalPolygon constant_rotation_typical_polygon(double alpha, double length, int degree) {
     const char* who = "cagd::aesthetic::constant_rotation_typical_polygon";
-    require_finite_alpha(alpha, who);
-    if (alpha == 0.0 || alpha == 1.0)
-        fail_input(who, "alpha = " + full_precision(alpha) + ": eq (20)-(21) divide by alpha and by alpha - 1 (allowed: alpha not 0 or 1)");
+    require_rotation_alpha(alpha, who);
     require_length(length, who);
     require_degree(degree, 2, who);
     double sum = 0.0;   // Σ (j+1)^{1/(α−1)}
