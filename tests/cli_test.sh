@@ -171,5 +171,26 @@ expect_bad "monotone nan"         '0,0\n1,0\nnan,1\n2,1\n3,3\n' monotone --in "$
 expect_bad "monotone 3-D"         '0,0,0\n1,0,0\n2,1,0\n3,3,1\n' monotone --in "$dir/bad.csv"
 expect_bad "monotone too few"     '0,0\n1,0\n2,1\n' monotone --in "$dir/bad.csv"
 
+# typical_curves section 4–5: cagd lac3d and cagd typical-surface.
+"$cagd" lac3d --alpha 1.5 --beta 1.2 --degree 99 --slopes --out "$dir/l3.csv" > "$dir/l3.txt" || { echo "FAIL: lac3d"; fails=$((fails+1)); }
+awk -F, '$1=="lcg_slope" { exit !($2 > 1.44 && $2 < 1.5) }' "$dir/l3.txt" || { echo "FAIL: lac3d LCG slope not near alpha"; cat "$dir/l3.txt"; fails=$((fails+1)); }
+awk -F, '$1=="ltg_slope" { exit !($2 > 1.05 && $2 < 1.2) }' "$dir/l3.txt" || { echo "FAIL: lac3d LTG slope not near beta"; cat "$dir/l3.txt"; fails=$((fails+1)); }
+[ "$(grep -c '^control,' "$dir/l3.csv")" -eq 100 ] || { echo "FAIL: lac3d must write 100 control points"; fails=$((fails+1)); }
+awk -F, '$1=="curve" && !($7 > 0) { bad=1 } END { exit bad }' "$dir/l3.csv" || { echo "FAIL: lac3d torsion must stay positive"; fails=$((fails+1)); }
+"$cagd" typical-surface --n 25 --alpha-u -0.5 --alpha-v -0.6 --angle-deg 0.01 --grid 11 --out "$dir/ts.csv" --net-out "$dir/tsnet.csv" || { echo "FAIL: typical-surface"; fails=$((fails+1)); }
+[ "$(tail -n +2 "$dir/ts.csv" | wc -l)" -eq 121 ] || { echo "FAIL: typical-surface must write 11x11 grid rows"; fails=$((fails+1)); }
+[ "$(tail -n +2 "$dir/tsnet.csv" | wc -l)" -eq 625 ] || { echo "FAIL: typical-surface must write 25x25 control points"; fails=$((fails+1)); }
+awk -F, 'NR > 1 && !($7 < 0) { bad=1 } END { exit bad }' "$dir/ts.csv" || { echo "FAIL: typical-surface mean curvature must be negative (normal S_u x S_v, dome bending to -z)"; fails=$((fails+1)); }
+expect_bad "lac3d degree 2"          ''  lac3d --alpha 1.5 --beta 1.2 --degree 2 --out "$dir/o.csv"
+expect_bad "lac3d beta 1"            ''  lac3d --alpha 1.5 --beta 1 --degree 9 --out "$dir/o.csv"
+expect_bad "lac3d alpha 0.5 start 0" ''  lac3d --alpha 0.5 --beta 1.2 --start 0 --degree 9 --out "$dir/o.csv"
+expect_bad "lac3d alpha nan"         ''  lac3d --alpha nan --beta 1.2 --degree 9 --out "$dir/o.csv"
+expect_bad "lac3d negative start"    ''  lac3d --alpha 1.5 --beta 1.2 --start -1 --degree 9 --out "$dir/o.csv"
+expect_bad "lac3d zero length"       ''  lac3d --alpha 1.5 --beta 1.2 --length 0 --degree 9 --out "$dir/o.csv"
+expect_bad "surface n 2"             ''  typical-surface --n 2 --alpha-u -0.5 --alpha-v -0.6 --angle-deg 0 --out "$dir/o.csv"
+expect_bad "surface alpha 0.5"       ''  typical-surface --n 5 --alpha-u 0.5 --alpha-v -0.6 --angle-deg 0 --out "$dir/o.csv"
+expect_bad "surface angle inf"       ''  typical-surface --n 5 --alpha-u -0.5 --alpha-v -0.6 --angle-deg inf --out "$dir/o.csv"
+expect_bad "surface zero edges"      ''  typical-surface --n 5 --alpha-u -0.5 --alpha-v -0.6 --angle-deg 0 --length 0 --out "$dir/o.csv"
+
 if [ "$fails" -eq 0 ]; then echo "cli: all checks passed"; fi
 exit $((fails > 0))

@@ -13,49 +13,66 @@ const char* kWho = "cagd::aesthetic::LogAestheticCurve";
 bool finite_turning_at_zero_base(double alpha) { return alpha < 0.0 || alpha > 1.0; }
 }  // namespace
 
-LogAestheticCurve::LogAestheticCurve(const LogAestheticParameters& p) : p_(p) {
-    for (const auto& [name, v] : {std::pair{"alpha", p.alpha}, {"c0", p.c0}, {"c1", p.c1}, {"start_angle", p.start_angle}, {"start.x", p.start.x()}, {"start.y", p.start.y()}})
-        if (!std::isfinite(v)) fail_input(kWho, std::string(name) + " = " + full_precision(v) + " is not finite");
-    if (!(p.length > 0.0) || !std::isfinite(p.length)) fail_input(kWho, "length L = " + full_precision(p.length) + " must be finite and > 0");
-    if (p.turn != 1 && p.turn != -1) fail_input(kWho, "turn = " + std::to_string(p.turn) + " must be +1 or -1");
-    if (p.alpha == 0.0) {
-        if (!(p.c0 > 0.0)) fail_input(kWho, "alpha = 0 (rho = c0 exp(c1 s), eq 9) needs c0 > 0, got c0 = " + full_precision(p.c0));
-    } else {
-        const double u0 = base(0.0), u1 = base(p.length);
-        if (u0 < 0.0 || u1 < 0.0 || (u0 == 0.0 && u1 == 0.0))
-            fail_input(kWho, "rho^alpha = c0 s + c1 must be > 0 on (0, L): c0 s + c1 = " + full_precision(u0) + " at s = 0 and " + full_precision(u1) + " at s = L");
-        if ((u0 == 0.0 || u1 == 0.0) && !finite_turning_at_zero_base(p.alpha))
-            fail_input(kWho, "c0 s + c1 = 0 at an end of [0, L] with alpha = " + full_precision(p.alpha) +
-                                 ": the turning angle diverges there for 0 < alpha <= 1 (allowed: alpha < 0 or alpha > 1)");
+void LogAestheticRate::validate(const char* who, const char* name, double length) const {
+    const std::string n(name);
+    for (const auto& [label, v] : {std::pair{"alpha", alpha}, {"c0", c0}, {"c1", c1}})
+        if (!std::isfinite(v)) fail_input(who, n + " " + label + " = " + full_precision(v) + " is not finite");
+    if (!(length > 0.0) || !std::isfinite(length)) fail_input(who, "length L = " + full_precision(length) + " must be finite and > 0");
+    if (alpha == 0.0) {
+        if (!(c0 > 0.0)) fail_input(who, n + ": alpha = 0 (rho = c0 exp(c1 s), eq 9) needs c0 > 0, got c0 = " + full_precision(c0));
+        return;
     }
-    theta_origin_ = antiderivative(0.0);
+    const double u0 = base(0.0), u1 = base(length);
+    if (u0 < 0.0 || u1 < 0.0 || (u0 == 0.0 && u1 == 0.0))
+        fail_input(who, n + ": rho^alpha = c0 s + c1 must be > 0 on (0, L): c0 s + c1 = " + full_precision(u0) + " at s = 0 and " + full_precision(u1) + " at s = L");
+    if ((u0 == 0.0 || u1 == 0.0) && !finite_turning_at_zero_base(alpha))
+        fail_input(who, n + ": c0 s + c1 = 0 at an end of [0, L] with alpha = " + full_precision(alpha) +
+                            ": the turning angle diverges there for 0 < alpha <= 1 (allowed: alpha < 0 or alpha > 1)");
 }
 
-double LogAestheticCurve::antiderivative(double s) const {
-    const double a = p_.alpha;
-    if (a == 0.0) return p_.c1 == 0.0 ? s / p_.c0 : -std::exp(-p_.c1 * s) / (p_.c0 * p_.c1);
-    if (p_.c0 == 0.0) return std::pow(p_.c1, -1.0 / a) * s;
-    if (a == 1.0) return std::log(base(s)) / p_.c0;
-    return a * std::pow(base(s), (a - 1.0) / a) / ((a - 1.0) * p_.c0);
+double LogAestheticRate::value(double s) const {
+    if (alpha == 0.0) return std::exp(-c1 * s) / c0;
+    return std::pow(base(s), -1.0 / alpha);
+}
+
+double LogAestheticRate::derivative(double s) const {
+    if (alpha == 0.0) return -c1 * value(s);
+    return (-1.0 / alpha) * c0 * std::pow(base(s), -1.0 / alpha - 1.0);
+}
+
+double LogAestheticRate::second_derivative(double s) const {
+    if (alpha == 0.0) return c1 * c1 * value(s);
+    return (-1.0 / alpha) * (-1.0 / alpha - 1.0) * c0 * c0 * std::pow(base(s), -1.0 / alpha - 2.0);
+}
+
+double LogAestheticRate::antiderivative(double s) const {
+    if (alpha == 0.0) return c1 == 0.0 ? s / c0 : -std::exp(-c1 * s) / (c0 * c1);
+    if (c0 == 0.0) return std::pow(c1, -1.0 / alpha) * s;
+    if (alpha == 1.0) return std::log(base(s)) / c0;
+    return alpha * std::pow(base(s), (alpha - 1.0) / alpha) / ((alpha - 1.0) * c0);
+}
+
+LogAestheticCurve::LogAestheticCurve(const LogAestheticParameters& p) : p_(p), rate_{p.alpha, p.c0, p.c1} {
+    for (const auto& [name, v] : {std::pair{"start_angle", p.start_angle}, {"start.x", p.start.x()}, {"start.y", p.start.y()}})
+        if (!std::isfinite(v)) fail_input(kWho, std::string(name) + " = " + full_precision(v) + " is not finite");
+    if (p.turn != 1 && p.turn != -1) fail_input(kWho, "turn = " + std::to_string(p.turn) + " must be +1 or -1");
+    rate_.validate(kWho, "curvature", p.length);
+    theta_origin_ = rate_.antiderivative(0.0);
 }
 
 double LogAestheticCurve::tangent_angle(double s) const {
     if (!(s >= 0.0 && s <= p_.length)) fail_input(kWho, "s = " + full_precision(s) + " outside [0, L]");
-    return p_.start_angle + p_.turn * (antiderivative(s) - theta_origin_);
+    return p_.start_angle + p_.turn * (rate_.antiderivative(s) - theta_origin_);
 }
 
 double LogAestheticCurve::curvature(double s) const {
-    if (p_.alpha == 0.0) return p_.turn * std::exp(-p_.c1 * s) / p_.c0;
-    const double u = base(s);
-    if (u == 0.0 && p_.alpha > 0.0) fail_input(kWho, "curvature is unbounded at s = " + full_precision(s) + " (c0 s + c1 = 0, alpha > 1)");
-    return p_.turn * std::pow(u, -1.0 / p_.alpha);
+    if (p_.alpha != 0.0 && rate_.base(s) == 0.0 && p_.alpha > 0.0) fail_input(kWho, "curvature is unbounded at s = " + full_precision(s) + " (c0 s + c1 = 0, alpha > 1)");
+    return p_.turn * rate_.value(s);
 }
 
 double LogAestheticCurve::curvature_derivative(double s) const {
-    if (p_.alpha == 0.0) return -p_.c1 * curvature(s);
-    const double u = base(s);
-    if (u == 0.0 && p_.alpha > 0.0) fail_input(kWho, "curvature is unbounded at s = " + full_precision(s) + " (c0 s + c1 = 0, alpha > 1)");
-    const double d = p_.turn * (-1.0 / p_.alpha) * p_.c0 * std::pow(u, -1.0 / p_.alpha - 1.0);
+    if (p_.alpha != 0.0 && rate_.base(s) == 0.0 && p_.alpha > 0.0) fail_input(kWho, "curvature is unbounded at s = " + full_precision(s) + " (c0 s + c1 = 0, alpha > 1)");
+    const double d = p_.turn * rate_.derivative(s);
     if (!std::isfinite(d)) fail_input(kWho, "dkappa/ds is unbounded at s = " + full_precision(s) + " (c0 s + c1 = 0 with alpha < -1: alpha = " + full_precision(p_.alpha) + ")");
     return d;
 }
@@ -108,13 +125,13 @@ std::optional<Eigen::Vector2d> LogAestheticCurve::closed_form_point(double s) co
     C z;
     if (p_.alpha == 1.0 && p_.c0 != 0.0) {
         // θ = θ_start + σ ln(u/u0)/c0: ∫ (u/u0)^{iσ/c0} ds = (u0/c0) [(u/u0)^{iσ/c0 + 1} − 1]/(iσ/c0 + 1).
-        const double u0 = base(0.0), u = base(s);
+        const double u0 = rate_.base(0.0), u = rate_.base(s);
         const C k = i * static_cast<double>(p_.turn) / p_.c0;
         z = start_dir * (u0 / p_.c0) * (std::pow(C(u / u0), k + 1.0) - 1.0) / (k + 1.0);
     } else if (p_.alpha == 2.0 && p_.c0 != 0.0) {
         // u = c0 s + c1 = w², θ = θ_start + σ (2/c0)(w − w0), ds = (2w/c0) dw:
         // ∫ w e^{iω(w − w0)} dw = [e^{iω(w − w0)} (w/(iω) + 1/ω²)],  ω = 2σ/c0.
-        const double w0 = std::sqrt(base(0.0)), w = std::sqrt(base(s));
+        const double w0 = std::sqrt(rate_.base(0.0)), w = std::sqrt(rate_.base(s));
         const double om = 2.0 * p_.turn / p_.c0;
         auto prim = [&](double ww) { return std::exp(i * om * (ww - w0)) * (ww / (i * om) + 1.0 / (om * om)); };
         z = start_dir * (2.0 / p_.c0) * (prim(w) - prim(w0));

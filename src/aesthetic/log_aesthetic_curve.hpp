@@ -30,6 +30,25 @@
 
 namespace cagd::aesthetic {
 
+// The radius law shared by planar curves (eq 8–9) and by the curvature and torsion of space curves
+// (eq 31–32): the rate r(s) = 1/ρ(s) with ρ^α = c0 s + c1 (α ≠ 0) or ρ = c0 e^{c1 s} (α = 0), and
+// the turning Θ(s) = ∫ r ds of eq (13)/(34)/(35) without its integration constant:
+//   r = u^{−1/α}, u = c0 s + c1;  Θ = α u^{(α−1)/α}/((α−1) c0) (α ≠ 1),  ln u / c0 (α = 1),
+//   Θ = r s (c0 = 0: a constant rate);   α = 0: r = e^{−c1 s}/c0, Θ = −e^{−c1 s}/(c0 c1) (s/c0 if c1 = 0).
+// `validate` checks the preconditions on [0, L] (InvalidInput naming `who` and the value): finite
+// α, c0, c1, L > 0; u > 0 on (0, L), and u = 0 at an end only for α < 0 or α > 1 (finite Θ); c0 > 0
+// for α = 0. Where u = 0 the rate is infinite (α > 1) or zero (α < 0); `derivative` throws where
+// it is unbounded.
+struct LogAestheticRate {
+    double alpha = -1.0, c0 = 1.0, c1 = 1.0;
+    void validate(const char* who, const char* name, double length) const;
+    double base(double s) const { return c0 * s + c1; }
+    double value(double s) const;            // r(s) = 1/ρ
+    double derivative(double s) const;       // dr/ds
+    double second_derivative(double s) const;
+    double antiderivative(double s) const;   // Θ(s)
+};
+
 struct LogAestheticParameters {
     double alpha = -1.0;
     double c0 = 1.0, c1 = 1.0;
@@ -59,10 +78,9 @@ public:
     std::optional<Eigen::Vector2d> closed_form_point(double s) const;
 
 private:
-    double antiderivative(double s) const;   // Θ(s)
-    double base(double s) const { return p_.c0 * s + p_.c1; }
     Eigen::Vector2d integrate(double a, double b) const;
     LogAestheticParameters p_;
+    LogAestheticRate rate_;
     double theta_origin_ = 0.0;   // Θ(0)
 };
 

@@ -39,22 +39,72 @@ CurvatureAndRate curvature_and_rate(const Curve& c, double t) {
 
 double curvature_arc_derivative(const Curve& c, double t) { return curvature_and_rate(c, t).kappa_s; }
 
-LcgSamples log_curvature_graph(const Curve& c, double t0, double t1, int samples) {
-    const std::string who = "cagd::analysis::log_curvature_graph";
+namespace {
+
+struct TorsionAndRate {
+    double tau, tau_s;
+    bool defined;   // r' × r'' ≠ 0
+};
+
+TorsionAndRate torsion_and_rate(const Curve& c, double t) {
+    if (c.dimension() != 3) fail_input("cagd::analysis::torsion", "torsion needs a 3-D curve, got dimension " + std::to_string(c.dimension()));
+    const Eigen::MatrixXd j = c.jet(t, 4);
+    const Eigen::Vector3d d1 = j.row(1).transpose(), d2 = j.row(2).transpose(), d3 = j.row(3).transpose(), d4 = j.row(4).transpose();
+    const double speed = d1.norm();
+    if (!(speed > 0.0)) fail_input("cagd::analysis::torsion", "r'(t) = 0 at t = " + full_precision(t));
+    const Eigen::Vector3d cr = d1.cross(d2);
+    const double den = cr.squaredNorm();
+    if (den == 0.0) return {0.0, 0.0, false};
+    const double num = cr.dot(d3), dnum = cr.dot(d4), dden = 2.0 * cr.dot(d1.cross(d3));
+    return {num / den, (dnum * den - num * dden) / (den * den) / speed, true};
+}
+
+// Samples (x, y) = (−log|r|, log|r/r_s|) of a rate r (curvature or torsion) at `samples` parameters.
+template <class RateAndDerivative>
+LcgSamples log_rate_graph(const char* who, const Curve& c, double t0, double t1, int samples, RateAndDerivative rate) {
     if (!(t0 >= c.t_min() && t1 <= c.t_max() && t0 < t1))
         fail_input(who, "range [" + full_precision(t0) + ", " + full_precision(t1) + "] not inside [" + full_precision(c.t_min()) + ", " + full_precision(c.t_max()) + "] or empty");
     if (samples < 2) fail_input(who, "samples = " + std::to_string(samples) + " < 2");
     LcgSamples out;
     for (int k = 0; k < samples; ++k) {
         const double t = t0 + (t1 - t0) * k / (samples - 1);
-        const CurvatureAndRate r = curvature_and_rate(c, t);
-        if (r.kappa == 0.0 || r.kappa_s == 0.0 || !std::isfinite(r.kappa_s)) {
+        const auto [r, r_s] = rate(t);
+        if (r == 0.0 || r_s == 0.0 || !std::isfinite(r) || !std::isfinite(r_s)) {
             ++out.skipped;
             continue;
         }
-        out.points.push_back({t, -std::log(r.kappa), std::log(std::abs(r.kappa / r.kappa_s))});
+        out.points.push_back({t, -std::log(std::abs(r)), std::log(std::abs(r / r_s))});
     }
     return out;
+}
+
+LineFit fit_graph(const char* who, const LcgSamples& g) {
+    std::vector<double> x, y;
+    for (const LcgPoint& p : g.points) {
+        x.push_back(p.log_radius);
+        y.push_back(p.log_gradient);
+    }
+    if (x.size() < 2) fail_input(who, "fewer than two samples with finite graph coordinates in the range");
+    return fit_line(x, y);
+}
+
+}  // namespace
+
+LcgSamples log_curvature_graph(const Curve& c, double t0, double t1, int samples) {
+    return log_rate_graph("cagd::analysis::log_curvature_graph", c, t0, t1, samples, [&c](double t) {
+        const CurvatureAndRate r = curvature_and_rate(c, t);
+        return std::pair{r.kappa, r.kappa_s};
+    });
+}
+
+double torsion(const Curve& c, double t) { return torsion_and_rate(c, t).tau; }
+double torsion_arc_derivative(const Curve& c, double t) { return torsion_and_rate(c, t).tau_s; }
+
+LcgSamples log_torsion_graph(const Curve& c, double t0, double t1, int samples) {
+    return log_rate_graph("cagd::analysis::log_torsion_graph", c, t0, t1, samples, [&c](double t) {
+        const TorsionAndRate r = torsion_and_rate(c, t);
+        return std::pair{r.tau, r.tau_s};
+    });
 }
 
 LineFit fit_line(const std::vector<double>& x, const std::vector<double>& y) {
@@ -81,15 +131,8 @@ LineFit fit_line(const std::vector<double>& x, const std::vector<double>& y) {
     return f;
 }
 
-LineFit lcg_slope(const Curve& c, double t0, double t1, int samples) {
-    const LcgSamples g = log_curvature_graph(c, t0, t1, samples);
-    std::vector<double> x, y;
-    for (const LcgPoint& p : g.points) {
-        x.push_back(p.log_radius);
-        y.push_back(p.log_gradient);
-    }
-    if (x.size() < 2) fail_input("cagd::analysis::lcg_slope", "fewer than two samples with finite LCG coordinates in the range");
-    return fit_line(x, y);
-}
+LineFit lcg_slope(const Curve& c, double t0, double t1, int samples) { return fit_graph("cagd::analysis::lcg_slope", log_curvature_graph(c, t0, t1, samples)); }
+
+LineFit ltg_slope(const Curve& c, double t0, double t1, int samples) { return fit_graph("cagd::analysis::ltg_slope", log_torsion_graph(c, t0, t1, samples)); }
 
 }  // namespace cagd::analysis

@@ -1,5 +1,6 @@
 #pragma once
-// The logarithmic curvature graph (LCG) of any Curve (typical_curves section 2.2, eq 5).
+// The logarithmic curvature graph (LCG) of any Curve (typical_curves section 2.2, eq 5) and the
+// logarithmic torsion graph (LTG) of a space curve (section 4).
 //
 //   x = log ρ,   y = log |ρ ds/dρ|,   ρ = 1/κ the radius of curvature, s arc length.
 // Since dρ/ds = −κ_s/κ², ρ ds/dρ = −κ/κ_s, so y = log |κ/κ_s| and x = −log |κ|: one jet of
@@ -11,7 +12,15 @@
 // lcg_slope: ordinary least squares of y on x over `samples` parameters uniform in [t0, t1]
 // (the fit range is the caller's choice and changes the slope of a curve that is not exactly a
 // log-aesthetic curve: typical_curves Fig. 1 reports it).
-// Preconditions (InvalidInput): t_min ≤ t0 < t1 ≤ t_max, samples ≥ 2, regular curve (r' ≠ 0).
+//
+// The logarithmic torsion graph (LTG, typical_curves section 4) of a space curve is the same with
+// the radius of torsion μ = 1/τ:  x = log μ = −log |τ|,  y = log |μ ds/dμ| = log |τ/τ_s|; for a
+// log-aesthetic space curve μ^β = g s + h (eq 32) it is a line of slope β. From one jet of order 4:
+//   τ = N/D,  N = det(r', r'', r''') = c·r''',  D = |c|²,  c = r' × r'',
+//   dτ/dt = (N'D − N D')/D²,  N' = c·r'''',  D' = 2 c·(r' × r'''),   τ_s = (dτ/dt)/|r'|.
+// Samples with τ = 0, τ_s = 0 or c = 0 (no osculating plane) are skipped and counted.
+// Preconditions (InvalidInput): t_min ≤ t0 < t1 ≤ t_max, samples ≥ 2, regular curve (r' ≠ 0);
+// torsion and LTG: 3-D curves.
 #include <vector>
 
 #include "core/curve.hpp"
@@ -42,5 +51,12 @@ struct LineFit {
 // Least-squares line through (x, y); at least two distinct x (InvalidInput otherwise).
 LineFit fit_line(const std::vector<double>& x, const std::vector<double>& y);
 LineFit lcg_slope(const Curve& c, double t0, double t1, int samples);
+
+// Torsion τ(t) (0 where r' × r'' = 0) and dτ/ds, 3-D curves.
+double torsion(const Curve& c, double t);
+double torsion_arc_derivative(const Curve& c, double t);
+// LTG samples: log_radius = log μ, log_gradient = log |μ ds/dμ|.
+LcgSamples log_torsion_graph(const Curve& c, double t0, double t1, int samples);
+LineFit ltg_slope(const Curve& c, double t0, double t1, int samples);
 
 }  // namespace cagd::analysis

@@ -14,6 +14,8 @@
 //   cagd lac --alpha A --length L --degree N [--construction scale1|rotation] [--samples S] [--lcg]
 //            [--fit-from T0 --fit-to T1] --out C.csv
 //   cagd monotone --in CONTROL.csv [--knots endpoint|uniform]
+//   cagd lac3d --alpha A --beta B --degree N [--length L] [--start S0] [--composition C] [--slopes] --out C.csv
+//   cagd typical-surface --n N --alpha-u A --alpha-v B --angle-deg D [--length L] [--grid G] --out GRID.csv [--net-out NET.csv]
 //   cagd analyze CURVE.csv
 //   cagd analyze --in P.csv --method M [--optimize O] [--table T] [--closed]
 // Bad input: one line on stderr, exit code 2.
@@ -489,6 +491,10 @@ int main(int argc, char** argv) {
     cli::MonotoneArgs mono_args;
     auto* lac = cli::add_lac_command(app, lac_args);
     auto* mono = cli::add_monotone_command(app, mono_args);
+    cli::Lac3dArgs lac3d_args;
+    cli::TypicalSurfaceArgs tsurf_args;
+    auto* lac3d = cli::add_lac3d_command(app, lac3d_args);
+    auto* tsurf = cli::add_typical_surface_command(app, tsurf_args);
 
     try {
         app.parse(argc, argv);
@@ -509,6 +515,8 @@ int main(int argc, char** argv) {
         if (*energy) return run_energy(theta0, theta1, degrees);
         if (*lac) return cli::run_lac(lac_args);
         if (*mono) return cli::run_monotone(mono_args);
+        if (*lac3d) return cli::run_lac3d(lac3d_args);
+        if (*tsurf) return cli::run_typical_surface(tsurf_args);
         if (*surf) return run_surface(sa);
         if (*smooth) return run_smooth(sm, sm_lambda->count() > 0);
         if (*ssurf) return run_smooth_surface(ss);
