@@ -1,0 +1,532 @@
+#include "intrinsic/curvature_profile_design.hpp"
+
+#include <ceres/ceres.h>
+#include <ceres/jet.h>
+
+#include <Eigen/SparseLU>
+#include <algorithm>
+#include <cmath>
+
+#include "analysis/curve_measures.hpp"
+#include "intrinsic/detail/bezier_extraction.hpp"
+#include "spline/hermite_spline.hpp"
+
+namespace cagd::intrinsic {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+int span_count(const CurvatureProfileProblem& P) {
+    return static_cast<int>(P.points.rows()) - (P.closed ? 0 : 1);
+}
+
+Eigen::Vector2d chord(const CurvatureProfileProblem& P, int span) {
+    const Eigen::Index n = P.points.rows();
+    const Eigen::Index a = span, b = (span + 1) % n;
+    return (P.points.row(b) - P.points.row(a)).transpose();
+}
+
+double data_scale(const CurvatureProfileProblem& P) {
+    double s = 1.0;
+    for (int i = 0; i < span_count(P); ++i) s = std::max(s, chord(P, i).norm());
+    return s;
+}
+
+int shape_rows(SegmentShape s, int p) {
+    switch (s) {
+        case SegmentShape::free: return 0;
+        case SegmentShape::line: return p;
+        case SegmentShape::arc: return p - 1;
+        case SegmentShape::linear_curvature: return 1;
+    }
+    return 0;
+}
+
+// The Bézier ordinates of segment j and their exact derivatives with respect to the local de Boor
+// ordinates (columns first_ordinate..+p) and the local segment lengths (first_segment..).
+struct SegmentJet {
+    Eigen::VectorXd b;
+    int first_ordinate = 0, first_segment = 0;
+    Eigen::MatrixXd db_dc, db_dw;
+};
+
+using Jet = ceres::Jet<double, 10>;
+
+SegmentJet segment_jet(const TangentAngleSpline& psi, const std::vector<double>& v, int j) {
+    const KnotLayout& L = psi.layout();
+    const int p = L.degree(), last = L.last_knot_of_breakpoint(j), k0 = last - p + 1;
+    Jet u[6], c[4], b[4];
+    for (int m = 0; m < 2 * p; ++m) u[m] = Jet(v[static_cast<std::size_t>(k0 + m)], m);
+    for (int m = 0; m <= p; ++m) c[m] = Jet(psi.de_boor()(k0 + m), 2 * p + m);
+    detail::bezier_from_de_boor(p, u, c, b);
+    SegmentJet out;
+    const int g0 = L.breakpoint_of_knot(k0), g1 = L.breakpoint_of_knot(k0 + 2 * p - 1);
+    out.b.resize(p + 1);
+    out.first_ordinate = k0;
+    out.first_segment = g0;
+    out.db_dc.resize(p + 1, p + 1);
+    out.db_dw = Eigen::MatrixXd::Zero(p + 1, std::max(g1 - g0, 1));
+    for (int r = 0; r <= p; ++r) {
+        out.b(r) = b[r].a;
+        for (int m = 0; m <= p; ++m) out.db_dc(r, m) = b[r].v(2 * p + m);
+        // knot m sits at w_{g(m)} = Σ_{i < g(m)} Δw_i: ∂/∂Δw_i = Σ_{m : g(m) > i} ∂/∂u_m.
+        for (int m = 0; m < 2 * p; ++m) {
+            const int g = L.breakpoint_of_knot(k0 + m);
+            for (int i = g0; i < g; ++i) out.db_dw(r, i - g0) += b[r].v(m);
+        }
+    }
+    return out;
+}
+
+class RowWriter {
+public:
+    RowWriter(const KnotLayout& L, std::vector<Eigen::Triplet<double>>* t) : L_(L), t_(t) {}
+    // Row `row` depends on b_j through gradient g (∂f/∂b_{j,·}) and directly on Δw_j with `direct`.
+    void add(int row, const SegmentJet& s, int j, const Eigen::VectorXd& g, double direct) const {
+        if (!t_) return;
+        const int l = L_.independent_lengths();
+        const Eigen::RowVectorXd gc = g.transpose() * s.db_dc, gw = g.transpose() * s.db_dw;
+        for (int m = 0; m < gc.size(); ++m) t_->emplace_back(row, l + s.first_ordinate + m, gc(m));
+        for (int i = 0; i < gw.size(); ++i)
+            if (gw(i) != 0.0) t_->emplace_back(row, L_.length_index(s.first_segment + i), gw(i));
+        if (direct != 0.0) t_->emplace_back(row, L_.length_index(j), direct);
+    }
+
+private:
+    const KnotLayout& L_;
+    std::vector<Eigen::Triplet<double>>* t_;
+};
+
+std::string fmt(double v) { return full_precision(v); }
+
+}  // namespace
+
+int closing_turns(const CurvatureProfileProblem& P) {
+    if (P.turns != 0) return P.turns;
+    double area = 0.0;
+    const Eigen::Index n = P.points.rows();
+    for (Eigen::Index i = 0; i < n; ++i) {
+        const Eigen::Index j = (i + 1) % n;
+        area += P.points(i, 0) * P.points(j, 1) - P.points(j, 0) * P.points(i, 1);
+    }
+    return area >= 0 ? 1 : -1;
+}
+
+const char* to_string(SegmentShape shape) {
+    switch (shape) {
+        case SegmentShape::free: return "free";
+        case SegmentShape::line: return "line";
+        case SegmentShape::arc: return "arc";
+        case SegmentShape::linear_curvature: return "linear_curvature";
+    }
+    return "?";
+}
+
+std::vector<SegmentShape> parse_span_shapes(const std::string& text) {
+    std::vector<SegmentShape> out;
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t comma = text.find(',', start);
+        std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+        item.erase(0, item.find_first_not_of(" \t"));
+        item.erase(item.find_last_not_of(" \t") + 1);
+        if (item == "free") out.push_back(SegmentShape::free);
+        else if (item == "line") out.push_back(SegmentShape::line);
+        else if (item == "arc") out.push_back(SegmentShape::arc);
+        else if (item == "clothoid" || item == "linear_curvature") out.push_back(SegmentShape::linear_curvature);
+        else fail_input("intrinsic::parse_span_shapes", "span " + std::to_string(out.size()) + ": \"" + item + "\" is not a shape (allowed: free, line, arc, clothoid)");
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+    return out;
+}
+
+std::vector<SegmentShape> segment_shapes(const KnotLayout& layout, const std::vector<SegmentShape>& span_shapes) {
+    if (static_cast<int>(span_shapes.size()) != layout.spans())
+        fail_input("intrinsic::segment_shapes", "needs one shape per span (" + std::to_string(layout.spans()) + "), got " + std::to_string(span_shapes.size()));
+    std::vector<SegmentShape> out;
+    for (int j = 0; j < layout.segments(); ++j) out.push_back(span_shapes[static_cast<std::size_t>(layout.span_of_segment(j))]);
+    return out;
+}
+
+KnotLayout span_layout(const std::vector<SegmentShape>& span_shapes) {
+    if (span_shapes.empty()) fail_input("intrinsic::span_layout", "needs at least one span");
+    const int n = static_cast<int>(span_shapes.size());
+    std::vector<int> mult{2}, index;
+    for (int i = 1; i < n; ++i) {
+        const auto a = span_shapes[static_cast<std::size_t>(i) - 1], b = span_shapes[static_cast<std::size_t>(i)];
+        const bool rigid = a == SegmentShape::line || a == SegmentShape::arc || b == SegmentShape::line || b == SegmentShape::arc;
+        mult.push_back(rigid ? 2 : 1);
+    }
+    mult.push_back(2);
+    for (int i = 0; i < n; ++i) index.push_back(i);
+    return KnotLayout(2, std::vector<int>(static_cast<std::size_t>(n), 1), mult, index);
+}
+
+void require_valid_problem(const CurvatureProfileProblem& P, const std::string& who) {
+    require_valid_points(P.points, P.closed ? 3 : 2, true, P.closed, who);
+    if (P.points.cols() != 2) fail_input(who, "points must be planar (2 columns), got " + std::to_string(P.points.cols()));
+    const int n = span_count(P);
+    if (P.layout.spans() != n)
+        fail_input(who, "the knot layout has " + std::to_string(P.layout.spans()) + " spans but the " + std::to_string(P.points.rows()) + (P.closed ? " points of a closed curve make " : " points make ") + std::to_string(n));
+    if (static_cast<int>(P.shapes.size()) != P.layout.segments())
+        fail_input(who, "needs one shape per segment (" + std::to_string(P.layout.segments()) + "), got " + std::to_string(P.shapes.size()));
+    for (std::size_t j = 0; j < P.shapes.size(); ++j)
+        if (P.shapes[j] == SegmentShape::linear_curvature && P.layout.degree() != 3)
+            fail_input(who, "segment " + std::to_string(j) + ": linear_curvature needs a degree-3 ψ (a degree-2 ψ has linear curvature on every segment)");
+    using K = DesignCondition::Kind;
+    for (const auto& c : P.conditions) {
+        const int top = P.layout.segments() - (c.kind == K::segment_length ? 1 : 0);
+        if (c.index < 0 || c.index > top)
+            fail_input(who, std::string(c.kind == K::segment_length ? "segment" : "breakpoint") + " index " + std::to_string(c.index) + " of a condition is outside 0.." + std::to_string(top));
+        if (!std::isfinite(c.value)) fail_input(who, "condition value " + fmt(c.value) + " is not finite");
+        if (c.kind == K::curvature_radius && c.value == 0.0) fail_input(who, "curvature radius 0 at breakpoint " + std::to_string(c.index));
+        if (c.kind == K::segment_length && !(c.value > 0)) fail_input(who, "segment length " + fmt(c.value) + " for segment " + std::to_string(c.index) + " must be > 0");
+        if ((c.kind == K::curvature || c.kind == K::curvature_radius) && ((c.from_left && c.index == 0) || (!c.from_left && c.index == P.layout.segments())))
+            fail_input(who, "curvature at breakpoint " + std::to_string(c.index) + " needs the side that has a segment");
+    }
+    if (P.closed && std::abs(P.turns) > 100) fail_input(who, "turns = " + std::to_string(P.turns) + " is implausible (|turns| ≤ 100)");
+}
+
+int design_unknowns(const CurvatureProfileProblem& P) {
+    return P.layout.independent_lengths() + P.layout.ordinates();
+}
+
+int design_equations(const CurvatureProfileProblem& P) {
+    int m = 2 * P.layout.spans() + static_cast<int>(P.conditions.size()) + (P.closed ? 2 : 0);
+    for (auto s : P.shapes) m += shape_rows(s, P.layout.degree());
+    return m;
+}
+
+std::vector<std::string> design_equation_labels(const CurvatureProfileProblem& P) {
+    std::vector<std::string> out;
+    const int p = P.layout.degree();
+    for (int i = 0; i < P.layout.spans(); ++i) {
+        out.push_back("interpolation x, span " + std::to_string(i));
+        out.push_back("interpolation y, span " + std::to_string(i));
+    }
+    for (int j = 0; j < P.layout.segments(); ++j) {
+        const std::string seg = ", segment " + std::to_string(j);
+        switch (P.shapes[static_cast<std::size_t>(j)]) {
+            case SegmentShape::free: break;
+            case SegmentShape::line:
+                for (int r = 1; r <= p; ++r) out.push_back("line" + seg + ", b" + std::to_string(r) + " − b0");
+                break;
+            case SegmentShape::arc:
+                for (int r = 1; r < p; ++r) out.push_back("arc" + seg + ", second difference at b" + std::to_string(r));
+                break;
+            case SegmentShape::linear_curvature: out.push_back("linear curvature" + seg + ", third difference"); break;
+        }
+    }
+    for (const auto& c : P.conditions) {
+        using K = DesignCondition::Kind;
+        if (c.kind == K::segment_length) {
+            out.push_back("length of segment " + std::to_string(c.index));
+            continue;
+        }
+        const char* what = c.kind == K::tangent_angle ? "tangent angle" : c.kind == K::curvature ? "curvature" : "curvature radius";
+        out.push_back(std::string(what) + " at breakpoint " + std::to_string(c.index));
+    }
+    if (P.closed) {
+        out.push_back("closed: tangent angles differ by 2π·turns");
+        out.push_back("closed: end curvatures equal");
+    }
+    return out;
+}
+
+DesignSystem design_system(const CurvatureProfileProblem& P, const Eigen::VectorXd& u, bool with_jacobian) {
+    const KnotLayout& L = P.layout;
+    const int p = L.degree(), k = L.segments(), rows = design_equations(P), cols = design_unknowns(P);
+    const TangentAngleSpline psi = TangentAngleSpline::from_unknowns(L, u);
+    const std::vector<double> v = psi.farin_knots();
+    std::vector<SegmentJet> jets;
+    jets.reserve(static_cast<std::size_t>(k));
+    for (int j = 0; j < k; ++j) jets.push_back(segment_jet(psi, v, j));
+    std::vector<Eigen::Triplet<double>> triplets;
+    RowWriter write(L, with_jacobian ? &triplets : nullptr);
+    DesignSystem out;
+    out.f.resize(rows);
+    int row = 0;
+
+    // eq (3): interpolation.
+    for (int i = 0; i < L.spans(); ++i) {
+        Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+        for (int j = L.first_segment(i); j < L.end_segment(i); ++j) {
+            const SegmentJet& s = jets[static_cast<std::size_t>(j)];
+            const double d = psi.segment_lengths()[static_cast<std::size_t>(j)];
+            Eigen::Matrix<double, 2, Eigen::Dynamic> W;
+            const Eigen::Vector2d I = direction_integrals(s.b, 1.0, with_jacobian ? &W : nullptr);
+            sum += d * I;
+            if (with_jacobian) {
+                write.add(row, s, j, -d * W.row(1).transpose(), I(0));
+                write.add(row + 1, s, j, d * W.row(0).transpose(), I(1));
+            }
+        }
+        out.f.segment<2>(row) = sum - chord(P, i);
+        row += 2;
+    }
+    // eq (4): segment shapes.
+    for (int j = 0; j < k; ++j) {
+        const SegmentJet& s = jets[static_cast<std::size_t>(j)];
+        auto linear_row = [&](const Eigen::VectorXd& g) {
+            out.f(row) = g.dot(s.b);
+            write.add(row, s, j, g, 0.0);
+            ++row;
+        };
+        Eigen::VectorXd g = Eigen::VectorXd::Zero(p + 1);
+        switch (P.shapes[static_cast<std::size_t>(j)]) {
+            case SegmentShape::free: break;
+            case SegmentShape::line:
+                for (int r = 1; r <= p; ++r) {
+                    g.setZero();
+                    g(r) = 1.0, g(0) = -1.0;
+                    linear_row(g);
+                }
+                break;
+            case SegmentShape::arc:
+                for (int r = 1; r < p; ++r) {
+                    g.setZero();
+                    g(r - 1) = 1.0, g(r) = -2.0, g(r + 1) = 1.0;
+                    linear_row(g);
+                }
+                break;
+            case SegmentShape::linear_curvature:
+                g << -1.0, 3.0, -3.0, 1.0;
+                linear_row(g);
+                break;
+        }
+    }
+    // eq (4): breakpoint conditions.
+    auto angle_row = [&](int g, bool at_end, double sign) {   // adds sign·ψ(w_g) to the current row
+        const int j = at_end ? g - 1 : g;
+        const SegmentJet& s = jets[static_cast<std::size_t>(j)];
+        Eigen::VectorXd gr = Eigen::VectorXd::Zero(p + 1);
+        gr(at_end ? p : 0) = sign;
+        write.add(row, s, j, gr, 0.0);
+        return sign * s.b(at_end ? p : 0);
+    };
+    auto curvature_row = [&](int g, bool at_end, double sign) {   // adds sign·κ(w_g^∓)
+        const int j = at_end ? g - 1 : g;
+        const SegmentJet& s = jets[static_cast<std::size_t>(j)];
+        const double d = psi.segment_lengths()[static_cast<std::size_t>(j)];
+        Eigen::VectorXd gr = Eigen::VectorXd::Zero(p + 1);
+        const int hi = at_end ? p : 1, lo = at_end ? p - 1 : 0;
+        gr(hi) = sign * p / d, gr(lo) = -sign * p / d;
+        const double kappa = p * (s.b(hi) - s.b(lo)) / d;
+        write.add(row, s, j, gr, -sign * kappa / d);
+        return sign * kappa;
+    };
+    for (const auto& c : P.conditions) {
+        using K = DesignCondition::Kind;
+        if (c.kind == K::tangent_angle) {
+            out.f(row) = angle_row(c.index, c.index == k, 1.0) - c.value;
+        } else if (c.kind == K::segment_length) {
+            out.f(row) = psi.segment_lengths()[static_cast<std::size_t>(c.index)] - c.value;
+            if (with_jacobian) triplets.emplace_back(row, L.length_index(c.index), 1.0);
+        } else {
+            const double target = c.kind == K::curvature ? c.value : 1.0 / c.value;
+            out.f(row) = curvature_row(c.index, c.from_left, 1.0) - target;
+        }
+        ++row;
+    }
+    if (P.closed) {
+        out.f(row) = angle_row(k, true, 1.0) + angle_row(0, false, -1.0) - 2.0 * kPi * closing_turns(P);
+        ++row;
+        out.f(row) = curvature_row(k, true, 1.0) + curvature_row(0, false, -1.0);
+        ++row;
+    }
+    if (with_jacobian) {
+        out.jacobian.resize(rows, cols);
+        out.jacobian.setFromTriplets(triplets.begin(), triplets.end());
+    }
+    return out;
+}
+
+Eigen::VectorXd c2_start(const CurvatureProfileProblem& P) {
+    require_valid_problem(P, "intrinsic::c2_start");
+    const KnotLayout& L = P.layout;
+    const spline::PiecewiseHermiteCurve c2 = spline::cubic_spline_interpolant(P.points, spline::ParameterSpacing::chord_length, P.closed);
+    const int n = L.spans();
+    std::vector<double> span_length(static_cast<std::size_t>(n)), seg(static_cast<std::size_t>(L.segments()));
+    for (int i = 0; i < n; ++i) {
+        span_length[static_cast<std::size_t>(i)] = analysis::arc_length(c2, i, i + 1, 8);
+        const int a = L.first_segment(i), b = L.end_segment(i);
+        for (int j = a; j < b; ++j) seg[static_cast<std::size_t>(j)] = span_length[static_cast<std::size_t>(i)] / (b - a);
+    }
+    const int l = L.independent_lengths();
+    Eigen::VectorXd u = Eigen::VectorXd::Zero(l + L.ordinates());
+    Eigen::VectorXd count = Eigen::VectorXd::Zero(l);
+    for (int j = 0; j < L.segments(); ++j) u(L.length_index(j)) += seg[static_cast<std::size_t>(j)], count(L.length_index(j)) += 1;
+    for (int i = 0; i < l; ++i) u(i) /= count(i);
+    std::vector<double> lengths;
+    for (int j = 0; j < L.segments(); ++j) lengths.push_back(u(L.length_index(j)));
+    const TangentAngleSpline shape(L, lengths, Eigen::VectorXd::Zero(L.ordinates()));
+    const std::vector<double> g = shape.greville_abscissae();
+    // Span start positions in the (start) arc length.
+    std::vector<double> span_start;
+    for (int i = 0; i <= n; ++i) span_start.push_back(shape.breakpoints()[static_cast<std::size_t>(i < n ? L.first_segment(i) : L.segments())]);
+    double previous = 0.0;
+    for (int i = 0; i < L.ordinates(); ++i) {
+        const double s = g[static_cast<std::size_t>(i)];
+        int span = static_cast<int>(std::upper_bound(span_start.begin(), span_start.end(), s) - span_start.begin()) - 1;
+        span = std::clamp(span, 0, n - 1);
+        const double frac = std::clamp((s - span_start[static_cast<std::size_t>(span)]) / (span_start[static_cast<std::size_t>(span) + 1] - span_start[static_cast<std::size_t>(span)]), 0.0, 1.0);
+        const Eigen::MatrixXd j = c2.jet(span + frac, 1);
+        double a = std::atan2(j(1, 1), j(1, 0));
+        if (i > 0) a += 2.0 * kPi * std::round((previous - a) / (2.0 * kPi));
+        u(l + i) = previous = a;
+    }
+    return u;
+}
+
+std::vector<double> CurvatureProfileSolution::segment_lengths() const {
+    std::vector<double> out;
+    if (!curve) return out;
+    return curve->tangent_angle().segment_lengths();
+}
+
+namespace {
+
+std::string worst_equation(const CurvatureProfileProblem& P, const Eigen::VectorXd& f) {
+    Eigen::Index i = 0;
+    f.cwiseAbs().maxCoeff(&i);
+    return design_equation_labels(P)[static_cast<std::size_t>(i)] + " (|f| = " + fmt(std::abs(f(i))) + ")";
+}
+
+void finish_ok(const CurvatureProfileProblem& P, CurvatureProfileSolution& sol) {
+    sol.curve.emplace(P.points.row(0).transpose(), TangentAngleSpline::from_unknowns(P.layout, sol.u));
+}
+
+}  // namespace
+
+CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& P, const Eigen::VectorXd& start, const NewtonOptions& options) {
+    const std::string who = "intrinsic::solve_curvature_profile";
+    require_valid_problem(P, who);
+    if (options.max_iterations < 1 || !(options.tolerance > 0)) fail_input(who, "needs max_iterations ≥ 1 and tolerance > 0");
+    CurvatureProfileSolution sol;
+    sol.unknowns = design_unknowns(P);
+    sol.equations = design_equations(P);
+    if (start.size() != sol.unknowns) fail_input(who, "start vector needs " + std::to_string(sol.unknowns) + " entries (eq 2), got " + std::to_string(start.size()));
+    const int l = P.layout.independent_lengths();
+    for (int i = 0; i < l; ++i)
+        if (!(start(i) > 0) || !std::isfinite(start(i))) fail_input(who, "start length S_" + std::to_string(i) + " = " + fmt(start(i)) + " (finite and > 0 required)");
+    if (P.layout.independent_lengths() + P.layout.ordinates() != start.size()) fail_input(who, "inconsistent start");
+    if (options.step == NewtonStep::sparse_lu && sol.equations != sol.unknowns)
+        fail_input(who, "the sparse LU step needs a square system; this one has " + std::to_string(sol.equations) + " equations and " + std::to_string(sol.unknowns) + " unknowns (use the pseudo-inverse)");
+    const double tol = options.tolerance * data_scale(P);
+    const char* method = options.step == NewtonStep::pseudo_inverse ? "Newton with the Moore–Penrose step" : "Newton with sparse LU";
+    sol.u = start;
+    for (int it = 0;; ++it) {
+        const DesignSystem sys = design_system(P, sol.u, true);
+        const double res = sys.f.lpNorm<Eigen::Infinity>();
+        if (!std::isfinite(res)) {
+            sol.outcome = {Status::no_convergence, std::string(method) + ": the residual became non-finite at iteration " + std::to_string(it)};
+            return sol;
+        }
+        if (res <= tol) {
+            sol.history.push_back({it, res, 0.0, 1.0, sol.rank});
+            finish_ok(P, sol);
+            return sol;
+        }
+        if (it == options.max_iterations) {
+            sol.history.push_back({it, res, 0.0, 1.0, sol.rank});
+            sol.outcome = {Status::no_convergence, std::string(method) + " from the given start did not reach ‖f‖∞ ≤ " + fmt(tol) + " in " + std::to_string(options.max_iterations) +
+                                                       " iterations: ‖f‖∞ = " + fmt(res) + ", worst equation " + worst_equation(P, sys.f) + "; " + std::to_string(sol.equations) + " equations, " +
+                                                       std::to_string(sol.unknowns) + " unknowns, rank " + std::to_string(sol.rank)};
+            return sol;
+        }
+        Eigen::VectorXd delta;
+        if (options.step == NewtonStep::pseudo_inverse) {
+            Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(Eigen::MatrixXd(sys.jacobian));
+            cod.setThreshold(1e-10);
+            sol.rank = static_cast<int>(cod.rank());
+            delta = cod.solve(sys.f);
+        } else {
+            Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
+            lu.compute(sys.jacobian);
+            if (lu.info() != Eigen::Success) {
+                sol.outcome = {Status::no_convergence, std::string(method) + ": the Jacobian is singular at iteration " + std::to_string(it) + " (use the pseudo-inverse step)"};
+                return sol;
+            }
+            delta = lu.solve(sys.f);
+        }
+        if (!delta.allFinite()) {
+            sol.outcome = {Status::no_convergence, std::string(method) + ": non-finite step at iteration " + std::to_string(it)};
+            return sol;
+        }
+        double lambda = 1.0;
+        for (int i = 0; i < l; ++i)
+            while (sol.u(i) - lambda * delta(i) < 0.2 * sol.u(i)) lambda *= 0.5;
+        const double step = lambda * delta.lpNorm<Eigen::Infinity>();
+        sol.history.push_back({it, res, step, lambda, sol.rank});
+        if (step <= 1e-13 * (1.0 + sol.u.lpNorm<Eigen::Infinity>())) {
+            sol.outcome = {Status::no_solution, std::string(method) + " settled on a least-squares point with ‖f‖∞ = " + fmt(res) + " > " + fmt(tol) +
+                                                    ": the conditions are inconsistent for these points (worst equation " + worst_equation(P, sys.f) + "; " +
+                                                    std::to_string(sol.equations) + " equations, " + std::to_string(sol.unknowns) + " unknowns, rank " + std::to_string(sol.rank) + ")"};
+            return sol;
+        }
+        sol.u -= lambda * delta;
+    }
+}
+
+CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& P, const NewtonOptions& options) {
+    return solve_curvature_profile(P, c2_start(P), options);
+}
+
+namespace {
+
+struct DesignResidual {
+    const CurvatureProfileProblem* problem;
+    int unknowns;
+    bool operator()(double const* const* parameters, double* residuals) const {
+        const Eigen::Map<const Eigen::VectorXd> u(parameters[0], unknowns);
+        for (int i = 0; i < problem->layout.independent_lengths(); ++i)
+            if (!(u(i) > 0)) return false;
+        const Eigen::VectorXd f = design_system(*problem, u, false).f;
+        std::copy(f.data(), f.data() + f.size(), residuals);
+        return f.allFinite();
+    }
+};
+
+}  // namespace
+
+CurvatureProfileSolution solve_curvature_profile_levenberg_marquardt(const CurvatureProfileProblem& P, const Eigen::VectorXd& start) {
+    const std::string who = "intrinsic::solve_curvature_profile_levenberg_marquardt";
+    require_valid_problem(P, who);
+    CurvatureProfileSolution sol;
+    sol.unknowns = design_unknowns(P);
+    sol.equations = design_equations(P);
+    if (start.size() != sol.unknowns) fail_input(who, "start vector needs " + std::to_string(sol.unknowns) + " entries (eq 2), got " + std::to_string(start.size()));
+    sol.u = start;
+    auto* cost = new ceres::DynamicNumericDiffCostFunction<DesignResidual, ceres::CENTRAL>(new DesignResidual{&P, sol.unknowns});
+    cost->AddParameterBlock(sol.unknowns);
+    cost->SetNumResiduals(sol.equations);
+    ceres::Problem problem;
+    problem.AddResidualBlock(cost, nullptr, sol.u.data());
+    const double scale = data_scale(P);
+    for (int i = 0; i < P.layout.independent_lengths(); ++i) problem.SetParameterLowerBound(sol.u.data(), i, 1e-6 * scale);
+    ceres::Solver::Options opt;
+    opt.minimizer_type = ceres::TRUST_REGION;
+    opt.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
+    opt.linear_solver_type = ceres::DENSE_QR;
+    opt.max_num_iterations = 500;
+    opt.function_tolerance = 1e-20;
+    opt.gradient_tolerance = 1e-20;
+    opt.parameter_tolerance = 1e-15;
+    opt.logging_type = ceres::SILENT;
+    ceres::Solver::Summary summary;
+    ceres::Solve(opt, &problem, &summary);
+    const Eigen::VectorXd f = design_system(P, sol.u, false).f;
+    const double res = f.lpNorm<Eigen::Infinity>();
+    sol.history.push_back({static_cast<int>(summary.iterations.size()), res, 0.0, 1.0, -1});
+    if (res <= 1e-9 * scale) {
+        finish_ok(P, sol);
+        return sol;
+    }
+    sol.outcome = {summary.termination_type == ceres::CONVERGENCE ? Status::no_solution : Status::no_convergence,
+                   "Ceres Levenberg–Marquardt (" + summary.message + ") ended with ‖f‖∞ = " + fmt(res) + ", worst equation " + worst_equation(P, f)};
+    return sol;
+}
+
+}  // namespace cagd::intrinsic

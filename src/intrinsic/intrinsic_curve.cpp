@@ -1,0 +1,51 @@
+#include "intrinsic/intrinsic_curve.hpp"
+
+#include <cmath>
+
+#include "core/errors.hpp"
+
+namespace cagd::intrinsic {
+
+IntrinsicCurve::IntrinsicCurve(Eigen::Vector2d start, TangentAngleSpline psi) : psi_(std::move(psi)) {
+    if (!start.allFinite()) fail_input("intrinsic::IntrinsicCurve", "start point (" + full_precision(start(0)) + ", " + full_precision(start(1)) + ") is not finite");
+    const int k = psi_.segments();
+    points_.resize(k + 1, 2);
+    points_.row(0) = start.transpose();
+    for (int j = 0; j < k; ++j)
+        points_.row(j + 1) = points_.row(j) + psi_.segment_lengths()[static_cast<std::size_t>(j)] * direction_integrals(psi_.bezier().row(j).transpose()).transpose();
+}
+
+Eigen::MatrixXd IntrinsicCurve::jet(double s, int order) const {
+    if (order < 0 || order > 4) fail_input("intrinsic::IntrinsicCurve::jet", "order must be in 0..4, got " + std::to_string(order));
+    const int j = psi_.segment_at(s);
+    const double w = psi_.breakpoints()[static_cast<std::size_t>(j)], d = psi_.segment_lengths()[static_cast<std::size_t>(j)];
+    const double tau = std::min(1.0, std::max(0.0, (s - w) / d));
+    Eigen::MatrixXd out(order + 1, 2);
+    out.row(0) = points_.row(j) + d * direction_integrals(psi_.bezier().row(j).transpose(), tau).transpose();
+    if (order == 0) return out;
+    const Eigen::VectorXd a = psi_.jet(s, std::max(order - 1, 0));
+    const Eigen::RowVector2d e(std::cos(a(0)), std::sin(a(0))), n(-std::sin(a(0)), std::cos(a(0)));
+    out.row(1) = e;
+    if (order >= 2) out.row(2) = a(1) * n;
+    if (order >= 3) out.row(3) = a(2) * n - a(1) * a(1) * e;
+    if (order >= 4) out.row(4) = (a(3) - a(1) * a(1) * a(1)) * n - 3.0 * a(1) * a(2) * e;
+    return out;
+}
+
+std::vector<ProfileSample> curvature_profile_samples(const IntrinsicCurve& curve, int per_segment) {
+    if (per_segment < 1) fail_input("intrinsic::curvature_profile_samples", "per_segment must be ≥ 1, got " + std::to_string(per_segment));
+    const TangentAngleSpline& psi = curve.tangent_angle();
+    std::vector<ProfileSample> out;
+    for (int j = 0; j < psi.segments(); ++j) {
+        const double a = psi.breakpoints()[static_cast<std::size_t>(j)], d = psi.segment_lengths()[static_cast<std::size_t>(j)];
+        for (int m = 0; m <= per_segment; ++m) {
+            const double s = std::min(a + d * m / per_segment, curve.length());
+            const Eigen::MatrixXd r = curve.jet(s, 0);
+            const Eigen::VectorXd k = psi.jet_in_segment(j, std::max(a, s), 1);
+            out.push_back({s, r(0, 0), r(0, 1), k(0), k(1), j});
+        }
+    }
+    return out;
+}
+
+}  // namespace cagd::intrinsic

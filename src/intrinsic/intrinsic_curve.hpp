@@ -1,0 +1,46 @@
+#pragma once
+// The plane curve of a tangent-angle spline (curvature_profile eq 1):
+//   r(s) = r_0 + ∫_0^s (cos ψ(σ), sin ψ(σ)) dσ,  0 ≤ s ≤ L,
+// parametrised by arc length. The breakpoint positions r(w_g) are accumulated segment by segment
+// with direction_integrals (eq 3's integrals); r(s) inside a segment adds the partial integral.
+// Jets (order ≤ 4) with e = (cos ψ, sin ψ), n = (−sin ψ, cos ψ):
+//   r' = e, r'' = ψ' n, r''' = ψ'' n − ψ'² e, r'''' = (ψ''' − ψ'³) n − 3ψ'ψ'' e.
+// Preconditions (InvalidInput): start finite; 0 ≤ s ≤ L; 0 ≤ order ≤ 4.
+#include <Eigen/Dense>
+#include <vector>
+
+#include "core/curve.hpp"
+#include "intrinsic/tangent_angle_spline.hpp"
+
+namespace cagd::intrinsic {
+
+class IntrinsicCurve : public Curve {
+public:
+    IntrinsicCurve(Eigen::Vector2d start, TangentAngleSpline psi);
+
+    const TangentAngleSpline& tangent_angle() const { return psi_; }
+    // (k + 1) × 2: r(w_0), …, r(w_k).
+    const Eigen::MatrixXd& breakpoint_points() const { return points_; }
+    double length() const { return psi_.length(); }
+
+    int dimension() const override { return 2; }
+    double t_min() const override { return 0.0; }
+    double t_max() const override { return psi_.length(); }
+    Eigen::MatrixXd jet(double s, int order) const override;
+    std::vector<double> breakpoints() const override { return psi_.breakpoints(); }
+
+private:
+    TangentAngleSpline psi_;
+    Eigen::MatrixXd points_;
+};
+
+// The curvature profile for plots and tables: per segment j, `per_segment` + 1 equally spaced arc
+// lengths from w_j to w_{j+1} (both ends, so a κ jump at a G1 join shows as a vertical step), with
+// position, ψ and κ of segment j's polynomial (one-sided at its ends). per_segment ≥ 1.
+struct ProfileSample {
+    double s, x, y, psi, kappa;
+    int segment;
+};
+std::vector<ProfileSample> curvature_profile_samples(const IntrinsicCurve& curve, int per_segment);
+
+}  // namespace cagd::intrinsic

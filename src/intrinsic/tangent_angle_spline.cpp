@@ -1,0 +1,152 @@
+#include "intrinsic/tangent_angle_spline.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/errors.hpp"
+#include "intrinsic/detail/bezier_extraction.hpp"
+#include "numeric/gauss_legendre.hpp"
+#include "spline/bspline.hpp"
+
+namespace cagd::intrinsic {
+
+namespace {
+const numeric::GaussLegendreRule& rule16() {
+    static const numeric::GaussLegendreRule rule(16);
+    return rule;
+}
+double bernstein(int p, int r, double t) {
+    static const double binom[4][4] = {{1, 0, 0, 0}, {1, 1, 0, 0}, {1, 2, 1, 0}, {1, 3, 3, 1}};
+    return binom[p][r] * std::pow(t, r) * std::pow(1.0 - t, p - r);
+}
+}  // namespace
+
+TangentAngleSpline::TangentAngleSpline(KnotLayout layout, std::vector<double> segment_lengths, Eigen::VectorXd de_boor)
+    : layout_(std::move(layout)), lengths_(std::move(segment_lengths)), de_boor_(std::move(de_boor)) {
+    const std::string who = "intrinsic::TangentAngleSpline";
+    const int k = layout_.segments(), p = layout_.degree();
+    if (static_cast<int>(lengths_.size()) != k)
+        fail_input(who, "needs " + std::to_string(k) + " segment lengths, got " + std::to_string(lengths_.size()));
+    if (de_boor_.size() != layout_.ordinates())
+        fail_input(who, "needs " + std::to_string(layout_.ordinates()) + " de Boor ordinates, got " + std::to_string(de_boor_.size()));
+    w_.push_back(0.0);
+    for (int j = 0; j < k; ++j) {
+        const double d = lengths_[static_cast<std::size_t>(j)];
+        if (!std::isfinite(d) || d <= 0) fail_input(who, "segment " + std::to_string(j) + " has length " + full_precision(d) + " (finite and > 0 required)");
+        w_.push_back(w_.back() + d);
+    }
+    for (int i = 0; i < de_boor_.size(); ++i)
+        if (!std::isfinite(de_boor_(i))) fail_input(who, "de Boor ordinate B_" + std::to_string(i) + " = " + full_precision(de_boor_(i)) + " is not finite");
+    const std::vector<double> v = farin_knots();
+    bezier_.resize(k, p + 1);
+    for (int j = 0; j < k; ++j) {
+        const int last = layout_.last_knot_of_breakpoint(j);
+        double u[6], c[4], b[4];
+        for (int m = 0; m < 2 * p; ++m) u[m] = v[static_cast<std::size_t>(last - p + 1 + m)];
+        for (int m = 0; m <= p; ++m) c[m] = de_boor_(last - p + 1 + m);
+        detail::bezier_from_de_boor(p, u, c, b);
+        for (int m = 0; m <= p; ++m) bezier_(j, m) = b[m];
+    }
+}
+
+TangentAngleSpline TangentAngleSpline::from_unknowns(const KnotLayout& layout, const Eigen::VectorXd& u) {
+    const int l = layout.independent_lengths();
+    if (u.size() != l + layout.ordinates())
+        fail_input("intrinsic::TangentAngleSpline::from_unknowns", "u needs " + std::to_string(l + layout.ordinates()) + " entries (eq 2), got " + std::to_string(u.size()));
+    std::vector<double> lengths;
+    for (int j = 0; j < layout.segments(); ++j) lengths.push_back(u(layout.length_index(j)));
+    return TangentAngleSpline(layout, lengths, u.tail(layout.ordinates()));
+}
+
+std::vector<double> TangentAngleSpline::farin_knots() const {
+    std::vector<double> v;
+    for (int i = 0; i < layout_.farin_knot_count(); ++i) v.push_back(w_[static_cast<std::size_t>(layout_.breakpoint_of_knot(i))]);
+    return v;
+}
+
+std::vector<double> TangentAngleSpline::greville_abscissae() const {
+    const std::vector<double> v = farin_knots();
+    const int p = degree();
+    std::vector<double> g;
+    for (int i = 0; i < layout_.ordinates(); ++i) {
+        double s = 0.0;
+        for (int m = 0; m < p; ++m) s += v[static_cast<std::size_t>(i + m)];
+        g.push_back(s / p);
+    }
+    return g;
+}
+
+int TangentAngleSpline::segment_at(double s) const {
+    if (!(s >= 0.0 && s <= length()))
+        fail_input("intrinsic::TangentAngleSpline", "arc length s = " + full_precision(s) + " outside [0, " + full_precision(length()) + "]");
+    const auto it = std::upper_bound(w_.begin(), w_.end(), s);
+    return std::min(static_cast<int>(it - w_.begin()) - 1, segments() - 1);
+}
+
+Eigen::VectorXd TangentAngleSpline::jet(double s, int order) const {
+    return jet_in_segment(segment_at(s), s, order);
+}
+
+Eigen::VectorXd TangentAngleSpline::jet_in_segment(int j, double s, int order) const {
+    const std::string who = "intrinsic::TangentAngleSpline::jet";
+    if (order < 0) fail_input(who, "order must be ≥ 0, got " + std::to_string(order));
+    if (j < 0 || j >= segments()) fail_input(who, "segment " + std::to_string(j) + " outside 0.." + std::to_string(segments() - 1));
+    const double lo = w_[static_cast<std::size_t>(j)], hi = w_[static_cast<std::size_t>(j) + 1];
+    if (!(s >= lo && s <= hi)) fail_input(who, "s = " + full_precision(s) + " outside segment " + std::to_string(j) + " [" + full_precision(lo) + ", " + full_precision(hi) + "]");
+    const int p = degree();
+    std::vector<double> knots = farin_knots();
+    knots.insert(knots.begin(), w_.front());
+    knots.push_back(w_.back());
+    const int span = layout_.last_knot_of_breakpoint(j) + 1;
+    const Eigen::MatrixXd N = basis_function_derivatives(p, knots, span, s, order);
+    Eigen::VectorXd out = Eigen::VectorXd::Zero(order + 1);
+    for (int d = 0; d <= order; ++d)
+        for (int m = 0; m <= p; ++m) out(d) += N(d, m) * de_boor_(span - p + m);
+    return out;
+}
+
+double TangentAngleSpline::angle(int segment, bool at_end) const {
+    return at_end ? bezier_(segment, degree()) : bezier_(segment, 0);
+}
+
+double TangentAngleSpline::curvature(int segment, bool at_end) const {
+    const int p = degree();
+    const double d = lengths_[static_cast<std::size_t>(segment)];
+    return at_end ? p * (bezier_(segment, p) - bezier_(segment, p - 1)) / d : p * (bezier_(segment, 1) - bezier_(segment, 0)) / d;
+}
+
+Eigen::Vector2d direction_integrals(const Eigen::VectorXd& b, double tau, Eigen::Matrix<double, 2, Eigen::Dynamic>* weights) {
+    const int p = static_cast<int>(b.size()) - 1;
+    if (p < 0 || p > 3) fail_input("intrinsic::direction_integrals", "Bézier degree must be 0..3, got " + std::to_string(p));
+    if (!(tau >= 0.0 && tau <= 1.0)) fail_input("intrinsic::direction_integrals", "tau = " + full_precision(tau) + " outside [0, 1]");
+    if (weights && tau != 1.0) fail_input("intrinsic::direction_integrals", "weighted integrals need tau = 1, got " + full_precision(tau));
+    double bound = 0.0;
+    for (int r = 0; r < p; ++r) bound = std::max(bound, std::abs(p * (b(r + 1) - b(r))));
+    const int pieces = std::max(1, static_cast<int>(std::ceil(bound * tau)));
+    const auto& rule = rule16();
+    Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+    if (weights) weights->setZero(2, p + 1);
+    const double h = tau / pieces;
+    for (int m = 0; m < pieces; ++m) {
+        const double a = m * h;
+        for (int q = 0; q < rule.size(); ++q) {
+            const double t = a + 0.5 * h * (rule.nodes()[static_cast<std::size_t>(q)] + 1.0);
+            const double wq = 0.5 * h * rule.weights()[static_cast<std::size_t>(q)];
+            double psi = 0.0, B[4];
+            for (int r = 0; r <= p; ++r) {
+                B[r] = bernstein(p, r, t);
+                psi += b(r) * B[r];
+            }
+            const double c = std::cos(psi), s = std::sin(psi);
+            sum += wq * Eigen::Vector2d(c, s);
+            if (weights)
+                for (int r = 0; r <= p; ++r) {
+                    (*weights)(0, r) += wq * c * B[r];
+                    (*weights)(1, r) += wq * s * B[r];
+                }
+        }
+    }
+    return sum;
+}
+
+}  // namespace cagd::intrinsic

@@ -1,0 +1,286 @@
+// curvature_profile: knot-difference lists, the tangent-angle B-spline, the design equations and
+// their Jacobian, Newton with the Moore–Penrose step, outcomes and bad input.
+#include <gtest/gtest.h>
+
+#include <boost/math/quadrature/gauss_kronrod.hpp>
+#include <cmath>
+#include <random>
+
+#include "core/errors.hpp"
+#include "intrinsic/design_verification.hpp"
+
+using namespace cagd;
+using namespace cagd::intrinsic;
+
+namespace {
+
+const double kPi = std::acos(-1.0);
+const char* kFig3List = "{0, 5.000, 0, 4.018, 0, 3.000, 0, 1.571, 0, 5.000, 0, 5.123, 0, 6.282, 0, 2.500, 0, 1.571, 0, {2.053, 1.806}, 3.430, 2.000, 0}";
+
+PointList fig3_points() {
+    PointList p(13, 2);
+    p << 9, 1, 4, 1, 1, 3, 1, 6, 2, 7, 7, 7, 10, 3.5, 14, 3.5, 14, 6, 15, 7, 17, 4.2, 20, 3, 22, 3;
+    return p;
+}
+
+CurvatureProfileProblem fig3_problem() {
+    const KnotLayout layout = parse_knot_difference_list(kFig3List, 2).layout;
+    return {fig3_points(), layout, segment_shapes(layout, parse_span_shapes("line,free,line,arc,line,free,arc,line,arc,free,free,line")), {}, false, 0};
+}
+
+CurvatureProfileProblem closed_problem(int degree) {
+    PointList p(6, 2);
+    p << 0, 0, 4, -1, 7, 1, 6, 5, 2, 6, -1, 3;
+    std::vector<int> mult(7, degree - 1), index{0, 1, 2, 3, 4, 5};
+    mult.front() = mult.back() = degree;
+    const KnotLayout layout(degree, std::vector<int>(6, 1), mult, index);
+    return {p, layout, std::vector<SegmentShape>(6, degree == 3 ? SegmentShape::linear_curvature : SegmentShape::free), {}, true, 0};
+}
+
+}  // namespace
+
+TEST(KnotDifferenceList, Figure1ExampleStructureAndRoundTrip) {
+    const std::string fig1 = "{0, 0, {S0, S0}, 0, S1, {S2, 0, S3}, 0, 0}";
+    const KnotDifferenceList l = parse_knot_difference_list(fig1, 3);
+    EXPECT_EQ(l.layout.spans(), 3);
+    EXPECT_EQ(l.layout.segments(), 5);
+    EXPECT_EQ(l.layout.independent_lengths(), 4);   // S0 shared by span 0's two segments
+    const std::vector<int> mult{3, 1, 2, 1, 2, 3};
+    for (int g = 0; g <= 5; ++g) EXPECT_EQ(l.layout.multiplicity(g), mult[static_cast<std::size_t>(g)]) << "breakpoint " << g;
+    EXPECT_EQ(l.layout.ordinates(), 12 - 3 + 1);
+    EXPECT_EQ(format_knot_difference_list(l.layout), fig1);
+    const std::vector<double> lengths{1.25, 1.25, 2.5, 0.75, 3.0};
+    const std::string numeric = format_knot_difference_list(l.layout, lengths, 3);
+    EXPECT_EQ(numeric, "{0, 0, {1.250, 1.250}, 0, 2.500, {0.750, 0, 3.000}, 0, 0}");
+    const KnotDifferenceList back = parse_knot_difference_list(numeric, 3);
+    for (int g = 0; g <= 5; ++g) EXPECT_EQ(back.layout.multiplicity(g), l.layout.multiplicity(g));
+    EXPECT_EQ(back.layout.independent_lengths(), 5);   // numbers never share a length
+    ASSERT_TRUE(back.values[2].has_value());
+    EXPECT_DOUBLE_EQ(*back.values[2], 2.5);
+}
+
+TEST(KnotDifferenceList, Figure3PrintedListRoundTripsAtDegreeTwo) {
+    const KnotDifferenceList l = parse_knot_difference_list(kFig3List, 2);
+    EXPECT_EQ(l.layout.spans(), 12);
+    EXPECT_EQ(l.layout.segments(), 13);
+    EXPECT_EQ(l.layout.ordinates(), 24);
+    EXPECT_EQ(l.layout.geometric_continuity(9), 1);    // join ⑨–⑩: one zero = double knot
+    EXPECT_EQ(l.layout.geometric_continuity(10), 2);   // inside ⑩: simple knot
+    std::vector<double> values;
+    for (int j = 0; j < 13; ++j) values.push_back(*l.values[static_cast<std::size_t>(l.layout.length_index(j))]);
+    EXPECT_EQ(format_knot_difference_list(l.layout, values, 3), kFig3List);
+    // As degree 3 the same text is malformed (ends need two zeros).
+    EXPECT_THROW(parse_knot_difference_list(kFig3List, 3), InvalidInput);
+    // Elevation raises every multiplicity by one.
+    EXPECT_EQ(format_knot_difference_list(l.layout.elevated()).substr(0, 16), "{0, 0, S0, 0, 0,");
+}
+
+TEST(KnotDifferenceList, MalformedListsThrow) {
+    for (const char* bad : {"", "{}", "{0, 5, 0", "{0, 5, 0} x", "{0, {1, {2}}, 0}", "{0, -1, 0}", "{0, 1, …, 0}", "{0, 1, ..., 0}",
+                            "{0, 1, 0, 0, 2, 0}", "{0, {0, 1}, 0}", "{0, {1, 0}, 0}", "{0, 0, 0}", "{1, 2, 0}", "{0, 1, 2}", "{0, 1e999, 0}", "{0, 1; 2, 0}"})
+        EXPECT_THROW(parse_knot_difference_list(bad, 2), InvalidInput) << bad;
+    EXPECT_THROW(parse_knot_difference_list("{0, 1, 0}", 4), InvalidInput);
+    EXPECT_THROW(KnotLayout(2, {1, 1}, {2, 3, 2}, {0, 1}), InvalidInput);   // interior multiplicity > p
+    EXPECT_THROW(KnotLayout(2, {1, 1}, {2, 1, 2}, {1, 0}), InvalidInput);   // indices not in order of first use
+    const KnotLayout ok(2, {1}, {2, 2}, {0});
+    EXPECT_THROW(format_knot_difference_list(ok, {0.0001}, 2), InvalidInput);   // would print as 0
+}
+
+TEST(TangentAngleSpline, BezierFormMatchesDeBoorEvaluation) {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> len(0.3, 2.0), ord(-2.0, 2.0);
+    for (int p = 2; p <= 3; ++p) {
+        const KnotLayout layout(p, {2, 1, 2}, {p, 1, p, p - 1, p == 3 ? 2 : 1, p}, {0, 1, 2, 3, 4});
+        std::vector<double> lengths;
+        for (int j = 0; j < 5; ++j) lengths.push_back(len(rng));
+        Eigen::VectorXd c(layout.ordinates());
+        for (int i = 0; i < c.size(); ++i) c(i) = ord(rng);
+        const TangentAngleSpline psi(layout, lengths, c);
+        for (int j = 0; j < 5; ++j)
+            for (double t : {0.0, 0.3, 0.71, 1.0}) {
+                const double s = psi.breakpoints()[static_cast<std::size_t>(j)] + t * lengths[static_cast<std::size_t>(j)];
+                double bez = 0.0;
+                for (int r = 0; r <= p; ++r) bez += psi.bezier()(j, r) * std::tgamma(p + 1) / (std::tgamma(r + 1) * std::tgamma(p - r + 1)) * std::pow(t, r) * std::pow(1 - t, p - r);
+                EXPECT_NEAR(bez, psi.jet_in_segment(j, s, 0)(0), 1e-13) << "p=" << p << " segment " << j << " t=" << t;
+            }
+        // Clamped ends interpolate the end ordinates; Greville abscissae start at 0 and end at L.
+        EXPECT_NEAR(psi.jet(0.0, 0)(0), c(0), 1e-14);
+        EXPECT_NEAR(psi.jet(psi.length(), 0)(0), c(c.size() - 1), 1e-14);
+        EXPECT_NEAR(psi.greville_abscissae().back(), psi.length(), 1e-14);
+    }
+}
+
+TEST(TangentAngleSpline, DirectionIntegralsMatchAdaptiveGaussKronrod) {
+    using GK = boost::math::quadrature::gauss_kronrod<double, 31>;
+    for (const Eigen::Vector4d& b : {Eigen::Vector4d(0, 5, -3, 8), Eigen::Vector4d(1, 1, 1, 1), Eigen::Vector4d(-20, 3, 30, -2)}) {
+        auto psi = [&](double t) { return b(0) * std::pow(1 - t, 3) + 3 * b(1) * t * (1 - t) * (1 - t) + 3 * b(2) * t * t * (1 - t) + b(3) * t * t * t; };
+        for (double tau : {1.0, 0.37}) {
+            const Eigen::Vector2d I = direction_integrals(b, tau);
+            EXPECT_NEAR(I(0), GK::integrate([&](double t) { return std::cos(psi(t)) + 2.0; }, 0.0, tau, 15, 1e-15) - 2.0 * tau, 1e-14) << b.transpose();
+            EXPECT_NEAR(I(1), GK::integrate([&](double t) { return std::sin(psi(t)) + 2.0; }, 0.0, tau, 15, 1e-15) - 2.0 * tau, 1e-14) << b.transpose();
+        }
+    }
+    EXPECT_THROW(direction_integrals(Eigen::Vector4d(0, 1, 2, 3), 1.5), InvalidInput);
+}
+
+TEST(IntrinsicCurve, JetMatchesFiniteDifferencesOfPosition) {
+    const CurvatureProfileProblem P = closed_problem(3);
+    const IntrinsicCurve c(Eigen::Vector2d(1, 2), TangentAngleSpline::from_unknowns(P.layout, c2_start(P)));
+    const double h = 1e-4;
+    for (double s : {0.5, 3.3, 9.1}) {
+        const Eigen::MatrixXd j = c.jet(s, 2);
+        const Eigen::RowVector2d d1 = (c.jet(s + h, 0).row(0) - c.jet(s - h, 0).row(0)) / (2 * h);
+        const Eigen::RowVector2d d2 = (c.jet(s + h, 0).row(0) - 2 * j.row(0) + c.jet(s - h, 0).row(0)) / (h * h);
+        EXPECT_NEAR((d1 - j.row(1)).norm(), 0.0, 1e-8) << "r' = (cos ψ, sin ψ) at s = " << s;
+        EXPECT_NEAR((d2 - j.row(2)).norm(), 0.0, 1e-5) << "r'' = κ n at s = " << s;
+        EXPECT_NEAR(j.row(1).norm(), 1.0, 1e-15) << "arc-length parametrisation";
+    }
+}
+
+TEST(CurvatureProfileDesign, JacobianMatchesCentralDifferences) {
+    CurvatureProfileProblem cubic = closed_problem(3);
+    cubic.closed = false;
+    cubic.points.conservativeResize(5, 2);
+    cubic.layout = KnotLayout(3, {2, 1, 1, 1}, {3, 1, 2, 3, 2, 3}, {0, 0, 1, 2, 3});
+    cubic.shapes = {SegmentShape::free, SegmentShape::arc, SegmentShape::linear_curvature, SegmentShape::line, SegmentShape::free};
+    using K = DesignCondition::Kind;
+    cubic.conditions = {{K::tangent_angle, 0, 0.1, false}, {K::curvature, 3, 0.2, true}, {K::curvature_radius, 2, 4.0, false}, {K::segment_length, 4, 2.0, false}};
+    for (const CurvatureProfileProblem& P : {fig3_problem(), closed_problem(2), closed_problem(3), cubic}) {
+        Eigen::VectorXd u = c2_start(P);
+        std::mt19937 rng(3);
+        std::uniform_real_distribution<double> jitter(-0.05, 0.05);
+        for (int i = 0; i < u.size(); ++i) u(i) += jitter(rng);
+        const Eigen::MatrixXd J(design_system(P, u, true).jacobian);
+        ASSERT_EQ(J.rows(), design_equations(P));
+        ASSERT_EQ(J.cols(), design_unknowns(P));
+        const double h = 1e-6;
+        double worst = 0.0;
+        for (int k = 0; k < u.size(); ++k) {
+            Eigen::VectorXd up = u, um = u;
+            up(k) += h, um(k) -= h;
+            const Eigen::VectorXd fd = (design_system(P, up, false).f - design_system(P, um, false).f) / (2 * h);
+            worst = std::max(worst, (fd - J.col(k)).lpNorm<Eigen::Infinity>());
+        }
+        EXPECT_LT(worst, 1e-7) << "∂f/∂u against central differences, " << design_equations(P) << " equations";
+    }
+}
+
+TEST(CurvatureProfileDesign, Figure3ConvergesQuadraticallyToTheForcedArcs) {
+    const CurvatureProfileProblem P = fig3_problem();
+    const CurvatureProfileSolution sol = solve_curvature_profile(P);
+    ASSERT_TRUE(sol.outcome.ok()) << sol.outcome.message;
+    EXPECT_EQ(sol.rank, 36);   // 37 × 37, one redundant equation and a free split of span ⑩
+    const std::vector<double> L = sol.segment_lengths();
+    EXPECT_NEAR(L[3], kPi / 2, 1e-11);   // quarter circle radius 1
+    EXPECT_NEAR(L[6], 2 * kPi, 1e-11);   // semicircle radius 2
+    EXPECT_NEAR(L[8], kPi / 2, 1e-11);
+    EXPECT_NEAR(L[1], 4.01808761111852, 1e-11);   // reference/curvature_profile/fig3_mpmath.py
+    EXPECT_NEAR(L[5], 5.12274417009232, 1e-11);
+    EXPECT_NEAR(L[11], 3.43018694456654, 1e-11);
+    const auto& h = sol.history;
+    ASSERT_GE(h.size(), 4u);
+    for (std::size_t k = 2; k + 1 < h.size(); ++k) EXPECT_LT(h[k + 1].residual, 10.0 * h[k].residual * h[k].residual) << "r_{k+1} ≤ C r_k² at k = " << k;
+    const DesignVerification v = verify_design(P, *sol.curve);
+    EXPECT_LT(v.interpolation_error, 1e-10);
+    EXPECT_LT(v.line_curvature, 1e-10);
+    EXPECT_LT(v.arc_curvature_spread, 1e-10);
+    EXPECT_GT(v.g1_curvature_jump, 0.5);   // κ really jumps where a line meets an arc
+}
+
+TEST(CurvatureProfileDesign, ClosedClothoidSplineSparseAndDenseAgree) {
+    const CurvatureProfileProblem P = closed_problem(2);
+    NewtonOptions lu;
+    lu.step = NewtonStep::sparse_lu;
+    const CurvatureProfileSolution a = solve_curvature_profile(P), b = solve_curvature_profile(P, lu);
+    ASSERT_TRUE(a.outcome.ok() && b.outcome.ok()) << a.outcome.message << b.outcome.message;
+    EXPECT_LT((a.u - b.u).lpNorm<Eigen::Infinity>(), 1e-10);
+    const DesignVerification v = verify_design(P, *a.curve);
+    EXPECT_LT(std::abs(v.closing_angle), 1e-12);
+    EXPECT_LT(std::abs(v.closing_curvature), 1e-12);
+    EXPECT_LT(v.g2_curvature_jump, 1e-12);
+    EXPECT_LT(v.interpolation_error, 1e-10);
+    const TangentAngleSpline& psi = a.curve->tangent_angle();
+    EXPECT_NEAR(psi.angle(5, true) - psi.angle(0, false), 2 * kPi, 1e-12);   // counter-clockwise: turns = +1
+}
+
+TEST(CurvatureProfileDesign, InconsistentArcIsNoSolutionNotAWrongCurve) {
+    // Line, arc, line: the circle leaving (1,0) along +x through (2,1) arrives heading +y, not along the
+    // final line's +x.
+    PointList p(4, 2);
+    p << 0, 0, 1, 0, 2, 1, 3, 1;
+    const std::vector<SegmentShape> spans = parse_span_shapes("line,arc,line");
+    const CurvatureProfileProblem P{p, span_layout(spans), spans, {}, false, 0};
+    const CurvatureProfileSolution sol = solve_curvature_profile(P);
+    EXPECT_EQ(sol.outcome.status, Status::no_solution);
+    EXPECT_FALSE(sol.curve.has_value());
+    EXPECT_NE(sol.outcome.message.find("inconsistent"), std::string::npos) << sol.outcome.message;
+    NewtonOptions one;
+    one.max_iterations = 1;
+    const CurvatureProfileSolution early = solve_curvature_profile(fig3_problem(), one);
+    EXPECT_EQ(early.outcome.status, Status::no_convergence);
+    EXPECT_NE(early.outcome.message.find("worst equation"), std::string::npos) << early.outcome.message;
+}
+
+TEST(CurvatureProfileDesign, SpanShapesAndDefaultLayout) {
+    const std::vector<SegmentShape> s = parse_span_shapes("line, free,arc,free,free,clothoid");
+    ASSERT_EQ(s.size(), 6u);
+    EXPECT_EQ(s[5], SegmentShape::linear_curvature);
+    const KnotLayout L = span_layout(s);
+    EXPECT_EQ(L.degree(), 2);
+    EXPECT_EQ(format_knot_difference_list(L), "{0, S0, 0, S1, 0, S2, 0, S3, S4, S5, 0}");
+    EXPECT_THROW(parse_span_shapes("line,circle"), InvalidInput);
+    EXPECT_THROW(parse_span_shapes(""), InvalidInput);
+}
+
+TEST(CurvatureProfileDesign, BadInputThrows) {
+    CurvatureProfileProblem P = fig3_problem();
+    auto expect_bad = [](CurvatureProfileProblem q, const char* what) {
+        EXPECT_THROW(solve_curvature_profile(q), InvalidInput) << what;
+    };
+    {
+        CurvatureProfileProblem q = P;
+        q.points.conservativeResize(1, 2);
+        expect_bad(q, "one point");
+    }
+    {
+        CurvatureProfileProblem q = P;
+        q.points.row(4) = q.points.row(3);
+        expect_bad(q, "coincident consecutive points");
+    }
+    {
+        CurvatureProfileProblem q = P;
+        q.points(2, 1) = std::nan("");
+        expect_bad(q, "NaN coordinate");
+    }
+    {
+        CurvatureProfileProblem q = P;
+        q.points.conservativeResize(12, 2);
+        expect_bad(q, "12 points for a 12-span layout");
+    }
+    {
+        CurvatureProfileProblem q = P;
+        q.shapes[1] = SegmentShape::linear_curvature;
+        expect_bad(q, "linear curvature on a degree-2 ψ");
+    }
+    {
+        CurvatureProfileProblem q = P;
+        q.conditions = {{DesignCondition::Kind::tangent_angle, 14, 0.0, false}};
+        expect_bad(q, "breakpoint out of range");
+    }
+    {
+        CurvatureProfileProblem q = P;
+        q.conditions = {{DesignCondition::Kind::curvature_radius, 3, 0.0, false}};
+        expect_bad(q, "radius 0");
+    }
+    Eigen::VectorXd start = c2_start(P);
+    start(2) = -1.0;
+    EXPECT_THROW(solve_curvature_profile(P, start), InvalidInput);
+    EXPECT_THROW(solve_curvature_profile(P, Eigen::VectorXd::Ones(5)), InvalidInput);
+    NewtonOptions lu;
+    lu.step = NewtonStep::sparse_lu;
+    CurvatureProfileProblem under = closed_problem(2);
+    under.closed = false;
+    under.points.conservativeResize(7, 2);
+    under.points.row(6) << 1, -2;
+    EXPECT_THROW(solve_curvature_profile(under, lu), InvalidInput);   // 12 + 0 equations, 14 unknowns
+}
