@@ -192,5 +192,23 @@ expect_bad "surface alpha 0.5"       ''  typical-surface --n 5 --alpha-u 0.5 --a
 expect_bad "surface angle inf"       ''  typical-surface --n 5 --alpha-u -0.5 --alpha-v -0.6 --angle-deg inf --out "$dir/o.csv"
 expect_bad "surface zero edges"      ''  typical-surface --n 5 --alpha-u -0.5 --alpha-v -0.6 --angle-deg 0 --length 0 --out "$dir/o.csv"
 
+# curvature_profile: cagd interpolate --method curvature-profile (Fig. 3's points, lines and arcs).
+printf 'x,y\n9,1\n4,1\n1,3\n1,6\n2,7\n7,7\n10,3.5\n14,3.5\n14,6\n15,7\n17,4.2\n20,3\n22,3\n' > "$dir/f3.csv"
+f3_spans=line,free,line,arc,line,free,arc,line,arc,free,free,line
+"$cagd" interpolate --method curvature-profile --in "$dir/f3.csv" --spans "$f3_spans" --out "$dir/cp.csv" > "$dir/cp.txt" || { echo "FAIL: curvature-profile"; fails=$((fails+1)); }
+grep -q '^knot_difference_list,"{0, 5.0000, 0, 4.0181, 0, 3.0000, 0, 1.5708, 0, 5.0000, 0, 5.1227, 0, 6.2832,' "$dir/cp.txt" || { echo "FAIL: curvature-profile list"; cat "$dir/cp.txt"; fails=$((fails+1)); }
+tail -1 "$dir/cp.csv" | awk -F, '{ exit !(($2-22)^2 + ($3-3)^2 < 1e-18) }' || { echo "FAIL: curvature-profile curve does not end at (22,3)"; tail -1 "$dir/cp.csv"; fails=$((fails+1)); }
+printf 'x,y\n0,0\n1,0\n2,1\n3,1\n' > "$dir/arc.csv"
+"$cagd" interpolate --method curvature-profile --in "$dir/arc.csv" --spans line,arc,line --out "$dir/o.csv" > /dev/null 2> "$dir/err.txt"
+code=$?
+{ [ "$code" -eq 1 ] && [ "$(wc -l < "$dir/err.txt")" -eq 1 ] && grep -q inconsistent "$dir/err.txt"; } || { echo "FAIL: impossible arc must exit 1 with one line: exit $code"; cat "$dir/err.txt"; fails=$((fails+1)); }
+expect_bad "cp one point"          '0,0\n'                  interpolate --method curvature-profile --in "$dir/bad.csv" --out "$dir/o.csv"
+expect_bad "cp coincident points"  '0,0\n1,1\n1,1\n2,0\n'   interpolate --method curvature-profile --in "$dir/bad.csv" --out "$dir/o.csv"
+expect_bad "cp span count"         '0,0\n1,1\n2,0\n'        interpolate --method curvature-profile --spans line,free,arc --in "$dir/bad.csv" --out "$dir/o.csv"
+expect_bad "cp unknown shape"      '0,0\n1,1\n2,0\n'        interpolate --method curvature-profile --spans line,circle --in "$dir/bad.csv" --out "$dir/o.csv"
+expect_bad "cp malformed list"     '0,0\n1,1\n2,0\n'        interpolate --method curvature-profile --knots "{0, A, {B, 0}" --in "$dir/bad.csv" --out "$dir/o.csv"
+expect_bad "cp list vs points"     '0,0\n1,1\n2,0\n'        interpolate --method curvature-profile --knots "{0, A, 0}" --in "$dir/bad.csv" --out "$dir/o.csv"
+expect_bad "cp degree, no list"    '0,0\n1,1\n2,0\n'        interpolate --method curvature-profile --degree 3 --in "$dir/bad.csv" --out "$dir/o.csv"
+
 if [ "$fails" -eq 0 ]; then echo "cli: all checks passed"; fi
 exit $((fails > 0))

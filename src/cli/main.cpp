@@ -5,6 +5,7 @@
 //   cagd interpolate --method pseudo-spline [--optimize none|exact|approx] [--table T]
 //                    | cubic-a | cubic-b | hermite-a | hermite-b  [--closed] --in P.csv --out C.csv
 //   cagd interpolate --method hosaka [--m M] [--scale chord|unit] [--end natural|tangent] [--closed] (2-D, 3-D; any M >= 1)
+//   cagd interpolate --method curvature-profile [--spans line,free,arc,...] [--knots LIST [--degree 2|3]] [--closed] (2-D)
 //   cagd surface --kind tensor --in XYZ.csv | --kind coons --bottom B --left L --top T --right R
 //                | --kind boundary --lower L0 --upper L1 [--m 1|2] [--lower-slope S] [--upper-slope S]
 //                  [--lower-curvature C] [--upper-curvature C]     [--samples N] --out GRID.csv
@@ -29,6 +30,8 @@
 
 #include "analysis/curve_measures.hpp"
 #include "cli/aesthetic_commands.hpp"
+#include "cli/curvature_profile_command.hpp"
+#include "cli/curve_output.hpp"
 #include "core/errors.hpp"
 #include "core/point_csv.hpp"
 #include "fairness/pseudo_energy_table.hpp"
@@ -44,6 +47,7 @@
 namespace {
 
 using namespace cagd;
+using cagd::cli::write_curve;
 
 Eigen::VectorXd parse_vector(const std::string& text, const std::string& option) {
     std::vector<double> v;
@@ -61,24 +65,6 @@ Eigen::VectorXd parse_vector(const std::string& text, const std::string& option)
     return out;
 }
 
-void write_curve(const Curve& c, int samples_per_span, const std::string& path) {
-    const int d = c.dimension();
-    const char* names = "xyz";
-    std::vector<std::string> header{"u"};
-    for (const char* prefix : {"", "d", "dd"})
-        for (int k = 0; k < d; ++k) header.push_back(std::string(prefix) + names[k]);
-    repro::CsvWriter w(path, header);
-    const std::vector<double> br = c.breakpoints();
-    for (std::size_t s = 0; s + 1 < br.size(); ++s)
-        for (int j = 0; j < samples_per_span + (s + 2 == br.size() ? 1 : 0); ++j) {
-            const double u = br[s] + (br[s + 1] - br[s]) * j / samples_per_span;
-            const Eigen::MatrixXd J = c.jet(u, 2);
-            std::vector<double> row{u};
-            for (int k = 0; k < 3; ++k)
-                for (int i = 0; i < d; ++i) row.push_back(J(k, i));
-            w.row(row, 15);
-        }
-}
 
 int run_analyze(const std::string& path) {
     std::ifstream in(path);
@@ -399,8 +385,12 @@ int main(int argc, char** argv) {
     int m = -1, samples = 16;
     bool closed = false;
     std::string optimize = "exact", table_path;
-    interp->add_option("--method", method, "s-spline | b2-spline | cubic-bspline (sb2_locality); pseudo-spline | cubic-a | cubic-b | hermite-a | hermite-b (pseudo_energy section 4.2)")
-        ->check(CLI::IsMember({"s-spline", "b2-spline", "cubic-bspline", "pseudo-spline", "cubic-a", "cubic-b", "hermite-a", "hermite-b", "hosaka"}));
+    interp->add_option("--method", method, "s-spline | b2-spline | cubic-bspline (sb2_locality); pseudo-spline | cubic-a | cubic-b | hermite-a | hermite-b (pseudo_energy section 4.2); hosaka; curvature-profile")
+        ->check(CLI::IsMember({"s-spline", "b2-spline", "cubic-bspline", "pseudo-spline", "cubic-a", "cubic-b", "hermite-a", "hermite-b", "hosaka", "curvature-profile"}));
+    cli::CurvatureProfileArgs cp;
+    interp->add_option("--spans", cp.spans, "curvature-profile: one shape per span, free | line | arc | clothoid, e.g. line,free,arc (default: all free)");
+    interp->add_option("--knots", cp.knots, "curvature-profile: knot-difference list of ψ, e.g. \"{0, S0, 0, {S1, S2}, S3, 0}\" (default: from --spans, degree 2)");
+    auto* cp_degree = interp->add_option("--degree", cp.degree, "curvature-profile: degree of ψ for --knots, 2 (clothoid) or 3 (the paper's cubic)")->check(CLI::Range(2, 3));
     std::string scale = "chord";
     interp->add_option("--scale", scale, "hosaka: chord (k_i = |A_i|/|A_i+1|, eq 19) | unit (k_i = 1)")->check(CLI::IsMember({"chord", "unit"}));
     interp->add_option("--optimize", optimize, "pseudo-spline tangent optimisation: none | exact | approx (Table 4)")->check(CLI::IsMember({"none", "exact", "approx"}));
@@ -522,6 +512,13 @@ int main(int argc, char** argv) {
         if (*ssurf) return run_smooth_surface(ss);
         if (*table) return run_energy_table(grid_n, placement, table_method, threads, table_out);
         const PointList points = read_points_csv(in_path);
+        if (method == "curvature-profile") {   // curvature_profile sections 2–4
+            cp.degree_given = cp_degree->count() > 0;
+            cp.closed = closed;
+            cp.samples = samples;
+            cp.out = out_path;
+            return cli::run_curvature_profile(points, cp);
+        }
         if (method == "hosaka" && *mv_opt) fail_input("cagd interpolate", "--m-vector is for s-spline and b2-spline; hosaka takes --m");
         if (method == "hosaka") {   // hosaka eq (20) (m = 1), or order-m segments continuous to order 2m (section 3)
             if (*m_opt && m < 1) fail_input("cagd interpolate", "--method hosaka needs --m >= 1, got " + std::to_string(m));

@@ -1,0 +1,25 @@
+#include "cli/curve_output.hpp"
+
+#include "repro/csv.hpp"
+
+namespace cagd::cli {
+
+void write_curve(const Curve& c, int samples_per_span, const std::string& path) {
+    const int d = c.dimension();
+    const char* names = "xyz";
+    std::vector<std::string> header{"u"};
+    for (const char* prefix : {"", "d", "dd"})
+        for (int k = 0; k < d; ++k) header.push_back(std::string(prefix) + names[k]);
+    repro::CsvWriter w(path, header);
+    const std::vector<double> br = c.breakpoints();
+    for (std::size_t s = 0; s + 1 < br.size(); ++s)
+        for (int j = 0; j < samples_per_span + (s + 2 == br.size() ? 1 : 0); ++j) {
+            const double u = br[s] + (br[s + 1] - br[s]) * j / samples_per_span;
+            const Eigen::MatrixXd J = c.jet(u, 2);
+            std::vector<double> row{u};
+            for (int k = 0; k < 3; ++k)
+                for (int i = 0; i < d; ++i) row.push_back(J(k, i));
+            w.row(row, 15);
+        }
+}
+}  // namespace cagd::cli
