@@ -1,6 +1,7 @@
 #include "repro/report.hpp"
 
 #include <algorithm>
+#include <iterator>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -92,6 +93,32 @@ std::string anchor(const std::string& erratum) {
 }
 }  // namespace
 
+// The CSV files a figure's gnuplot script reads, in order: its `datadir.'/FILE.csv'` and
+// `datadir.'/'.name.'SUFFIX.csv'` references (name = the figure's name), following `load`ed scripts
+// other than the shared style.
+std::vector<std::string> figure_data_files(const fs::path& root, const fs::path& script, const std::string& name, int depth = 0) {
+    std::ifstream in(root / script);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::vector<std::string> out;
+    auto add = [&](const std::string& file) {
+        if (file.size() > 4 && file.compare(file.size() - 4, 4, ".csv") == 0 && std::find(out.begin(), out.end(), file) == out.end()) out.push_back(file);
+    };
+    for (const auto& [key, prefix] : {std::pair<std::string, std::string>{"datadir.'/'.name.'", name}, {"datadir.'/", ""}})
+        for (std::size_t at = text.find(key); at != std::string::npos; at = text.find(key, at + 1)) {
+            const std::size_t start = at + key.size(), end = text.find('\'', start);
+            if (end == std::string::npos) break;
+            add(prefix + text.substr(start, end - start));
+        }
+    const std::string load = "load '";
+    for (std::size_t at = text.find(load); depth < 3 && at != std::string::npos; at = text.find(load, at + 1)) {
+        const std::size_t start = at + load.size(), end = text.find('\'', start);
+        const std::string other = text.substr(start, end - start);
+        if (end == std::string::npos || other.find("style.gp") != std::string::npos) continue;
+        for (const auto& f : figure_data_files(root, other, name, depth + 1)) add(f);
+    }
+    return out;
+}
+
 int write_report(const std::string& root) {
     const fs::path results = fs::path(root) / "results";
     int failed = 0;
@@ -173,11 +200,15 @@ int write_report(const std::string& root) {
                         body << "| `" << f[0].substr(paper.size() + 1) << "` | " << md(f[1]) << " | " << f[2] << " | [" << f[3] << ", " << f[4] << "] |\n";
                 }
             }
-            for (const auto& [name, caption] : a.figures)
-                body << "\n![" << md(caption) << "](" << paper << "/" << name << ".png)\n\n*" << caption
-                     << "* — data: [`" << paper << "/" << name << ".csv`](" << paper << "/" << name
-                     << ".csv), script: [`scripts/plot/" << paper << "_" << name << ".gp`](../scripts/plot/"
-                     << paper << "_" << name << ".gp)\n";
+            for (const auto& [name, caption] : a.figures) {
+                const std::string script = "scripts/plot/" + paper + "_" + name + ".gp";
+                body << "\n![" << md(caption) << "](" << paper << "/" << name << ".png)\n\n*" << caption << "* — data:";
+                const std::vector<std::string> files = figure_data_files(fs::path(root), script, name);
+                for (std::size_t i = 0; i < files.size(); ++i)
+                    body << (i ? ", " : " ") << "[`" << paper << "/" << files[i] << "`](" << paper << "/" << files[i] << ")";
+                if (files.empty()) body << " (none read by the script)";
+                body << "; script: [`" << script << "`](../" << script << ")\n";
+            }
         }
         summary << "| [`" << paper << "`](#" << paper << ") | " << n << " | " << rep << " | " << dev << " | "
                 << fail << " | " << val_ok << " / " << val << " |\n";
