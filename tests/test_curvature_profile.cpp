@@ -137,6 +137,23 @@ TEST(IntrinsicCurve, JetMatchesFiniteDifferencesOfPosition) {
     }
 }
 
+TEST(IntrinsicCurve, ProfileSamplesShowOneSidedCurvatureAtJoins) {
+    const CurvatureProfileProblem P = fig3_problem();
+    const CurvatureProfileSolution sol = solve_curvature_profile(P);
+    ASSERT_TRUE(sol.outcome.ok()) << sol.outcome.message;
+    const std::vector<ProfileSample> q = curvature_profile_samples(*sol.curve, 4);
+    ASSERT_EQ(q.size(), 13u * 5u);
+    // Span ③ is a line (κ = 0) and ④ the clockwise quarter circle (κ = −1): both sides of their join.
+    EXPECT_EQ(q[14].segment, 2);
+    EXPECT_NEAR(q[14].kappa, 0.0, 1e-12);
+    EXPECT_EQ(q[15].segment, 3);
+    EXPECT_NEAR(q[15].kappa, -1.0, 1e-12);
+    EXPECT_DOUBLE_EQ(q[14].s, q[15].s);
+    EXPECT_NEAR(q[14].x, 1.0, 1e-12);
+    EXPECT_NEAR(q[14].y, 6.0, 1e-12);
+    EXPECT_THROW(curvature_profile_samples(*sol.curve, 0), InvalidInput);
+}
+
 TEST(CurvatureProfileDesign, JacobianMatchesCentralDifferences) {
     CurvatureProfileProblem cubic = closed_problem(3);
     cubic.closed = false;
