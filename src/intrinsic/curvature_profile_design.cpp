@@ -411,7 +411,6 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
     const int l = P.layout.independent_lengths();
     for (int i = 0; i < l; ++i)
         if (!(start(i) > 0) || !std::isfinite(start(i))) fail_input(who, "start length S_" + std::to_string(i) + " = " + fmt(start(i)) + " (finite and > 0 required)");
-    if (P.layout.independent_lengths() + P.layout.ordinates() != start.size()) fail_input(who, "inconsistent start");
     if (options.step == NewtonStep::sparse_lu && sol.equations != sol.unknowns)
         fail_input(who, "the sparse LU step needs a square system; this one has " + std::to_string(sol.equations) + " equations and " + std::to_string(sol.unknowns) + " unknowns (use the pseudo-inverse)");
     const double tol = options.tolerance * data_scale(P);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/bernstein_polynomial.hpp"
 #include "core/errors.hpp"
 #include "intrinsic/detail/bezier_extraction.hpp"
 #include "numeric/gauss_legendre.hpp"
@@ -14,10 +15,6 @@ namespace {
 const numeric::GaussLegendreRule& rule16() {
     static const numeric::GaussLegendreRule rule(16);
     return rule;
-}
-double bernstein(int p, int r, double t) {
-    static const double binom[4][4] = {{1, 0, 0, 0}, {1, 1, 0, 0}, {1, 2, 1, 0}, {1, 3, 3, 1}};
-    return binom[p][r] * std::pow(t, r) * std::pow(1.0 - t, p - r);
 }
 }  // namespace
 
@@ -132,17 +129,15 @@ Eigen::Vector2d direction_integrals(const Eigen::VectorXd& b, double tau, Eigen:
         for (int q = 0; q < rule.size(); ++q) {
             const double t = a + 0.5 * h * (rule.nodes()[static_cast<std::size_t>(q)] + 1.0);
             const double wq = 0.5 * h * rule.weights()[static_cast<std::size_t>(q)];
-            double psi = 0.0, B[4];
-            for (int r = 0; r <= p; ++r) {
-                B[r] = bernstein(p, r, t);
-                psi += b(r) * B[r];
-            }
+            const std::vector<double> B = bernstein_basis_values(p, t);
+            double psi = 0.0;
+            for (int r = 0; r <= p; ++r) psi += b(r) * B[static_cast<std::size_t>(r)];
             const double c = std::cos(psi), s = std::sin(psi);
             sum += wq * Eigen::Vector2d(c, s);
             if (weights)
                 for (int r = 0; r <= p; ++r) {
-                    (*weights)(0, r) += wq * c * B[r];
-                    (*weights)(1, r) += wq * s * B[r];
+                    (*weights)(0, r) += wq * c * B[static_cast<std::size_t>(r)];
+                    (*weights)(1, r) += wq * s * B[static_cast<std::size_t>(r)];
                 }
         }
     }
