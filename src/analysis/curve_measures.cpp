@@ -36,6 +36,13 @@ std::vector<double> clipped_breaks(const Curve& c, double a, double b) {
 double speed(const Curve& c, double t) { return c.jet(t, 1).row(1).norm(); }
 }  // namespace
 
+namespace {
+double bending_density(const Curve& c, double t) {   // κ² |r'|, the integrand of ∫ κ² ds in t
+    const double k = curvature(c, t);
+    return k * k * speed(c, t);
+}
+}  // namespace
+
 double curvature(const Curve& c, double t) {
     const Eigen::MatrixXd J = c.jet(t, 2);
     const double s2 = J.row(1).squaredNorm();
@@ -117,11 +124,18 @@ double bending_energy(const Curve& c, double a, double b, int pieces) {
         fail_input("cagd::analysis::bending_energy", "interval [" + full_precision(a) + ", " +
                                                          full_precision(b) + "] not inside the domain");
     return rule20().integrate_piecewise(
-        [&](double t) {
-            const double k = curvature(c, t);
-            return k * k * speed(c, t);
-        },
+        [&](double t) { return bending_density(c, t); },
         subdivided(clipped_breaks(c, a, b), pieces));
+}
+
+double piece_arc_length(const Curve& c, double a, double b, int pieces) {
+    return rule20().integrate_piecewise([&](double t) { return speed(c, t); }, subdivided({a, b}, pieces));
+}
+
+double piece_bending_energy(const Curve& c, double a, double b, int pieces) {
+    return rule20().integrate_piecewise(
+        [&](double t) { return bending_density(c, t); },
+        subdivided({a, b}, pieces));
 }
 
 double bending_energy(const Curve& c, int pieces) { return bending_energy(c, c.t_min(), c.t_max(), pieces); }

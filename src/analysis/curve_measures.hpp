@@ -28,6 +28,10 @@ numeric::RombergResult romberg_arc_length(const Curve& c, double rel_tol = 1e-13
 double adaptive_arc_length(const Curve& c, double rel_tol = 1e-10);
 double enclosed_area(const Curve& c);                  // planar; signed, CCW positive
 double bending_energy(const Curve& c, int pieces = 4);
+// The same on [a, b] inside one polynomial piece (no breakpoint strictly inside, not checked):
+// O(pieces) evaluations and no breakpoint search, for loops over the pieces of long curves.
+double piece_arc_length(const Curve& c, double a, double b, int pieces);
+double piece_bending_energy(const Curve& c, double a, double b, int pieces);
 double bending_energy(const Curve& c, double a, double b, int pieces = 4);
 
 // max_t |a(t) − b(t)| over `samples_per_piece` uniform samples between the breakpoints of

@@ -9,7 +9,13 @@
 namespace cagd::analysis {
 
 FairnessMeasures fairness_measures(const Curve& c, const PointList& data, int samples) {
+    return fairness_measures(c, data, FairnessSampling{samples, 64});
+}
+
+FairnessMeasures fairness_measures(const Curve& c, const PointList& data, const FairnessSampling& sampling) {
     const char* who = "cagd::analysis::fairness_measures";
+    const int samples = sampling.samples, pieces = sampling.quadrature_pieces;
+    if (pieces < 1) fail_input(who, "quadrature_pieces must be >= 1, got " + std::to_string(pieces));
     if (c.dimension() != 2) fail_input(who, "needs a planar curve, dimension is " + std::to_string(c.dimension()));
     if (data.cols() != 2 || data.rows() < 1) fail_input(who, "needs planar data points");
     if (samples < 2) fail_input(who, "samples must be >= 2, got " + std::to_string(samples));
@@ -20,8 +26,8 @@ FairnessMeasures fairness_measures(const Curve& c, const PointList& data, int sa
     int last_sign = 0;
     for (std::size_t k = 0; k + 1 < br.size(); ++k) {
         const double a = br[k], b = br[k + 1];
-        const double len = arc_length(c, a, b, 64);
-        const double energy = bending_energy(c, a, b, 64);
+        const double len = piece_arc_length(c, a, b, pieces);
+        const double energy = piece_bending_energy(c, a, b, pieces);
         m.length += len;
         m.bending_energy += energy;
         m.pseudo_energy += len * len * energy;
@@ -29,7 +35,13 @@ FairnessMeasures fairness_measures(const Curve& c, const PointList& data, int sa
         double spike = 0.0;
         for (int j = 0; j <= samples; ++j) {
             const double u = a + (b - a) * j / samples;
-            const double kappa = signed_curvature(c, u);
+            const Eigen::MatrixXd J = c.jet(u, 3);
+            const double x1 = J(1, 0), y1 = J(1, 1), v2 = x1 * x1 + y1 * y1;
+            if (!(v2 > 0.0)) fail_input(who, "zero speed (a cusp) at t = " + full_precision(u) + ": curvature is undefined there");
+            const double cross = x1 * J(2, 1) - y1 * J(2, 0), v = std::sqrt(v2);
+            const double kappa = cross / (v2 * v);
+            const double dkappa_ds = ((x1 * J(3, 1) - y1 * J(3, 0)) * v2 - 3.0 * cross * (x1 * J(2, 0) + y1 * J(2, 1))) / (v2 * v2 * v2);
+            m.max_abs_curvature_derivative = std::max(m.max_abs_curvature_derivative, std::abs(dkappa_ds));
             m.max_abs_curvature = std::max(m.max_abs_curvature, std::abs(kappa));
             spike = std::max(spike, std::abs(kappa) * chord);
             const int sign = std::abs(kappa) * std::max(diagonal, 1e-300) <= 1e-9 ? 0 : (kappa > 0 ? 1 : -1);
@@ -37,7 +49,7 @@ FairnessMeasures fairness_measures(const Curve& c, const PointList& data, int sa
                 if (last_sign != 0 && sign != last_sign) ++m.curvature_sign_changes;
                 last_sign = sign;
             }
-            const Eigen::Vector2d p = c.point(u);
+            const Eigen::Vector2d p = J.row(0).transpose();
             const double dx = std::max({lo.x() - p.x(), p.x() - hi.x(), 0.0}), dy = std::max({lo.y() - p.y(), p.y() - hi.y(), 0.0});
             m.overshoot = std::max(m.overshoot, std::hypot(dx, dy) / diagonal);
         }

@@ -11,6 +11,8 @@
 //                       (|κ| · diagonal ≤ 1e-9) skipped; a change inside a piece is an inflection,
 //                       a change across a breakpoint a jump of κ through 0 at a G1 join
 //   max |κ|             over the same samples (an estimate from below; exact at a sample)
+//   max |dκ/ds|         over the same samples, dκ/ds = [(x'y''' − y'x''')|r'|² − 3(x'y'' − y'x'')(r'·r'')]/|r'|⁶
+//                       from the jet of order 3 (one-sided at breakpoints as Curve::jet is)
 //   overshoot           max distance of the sampled curve outside the data's bounding box,
 //                       divided by the box diagonal (0 when the curve stays inside)
 //   curvature spike     the largest |κ| · l over the samples of each span, l the span's chord
@@ -29,6 +31,7 @@ struct FairnessMeasures {
     double length = 0.0, bending_energy = 0.0, pseudo_energy = 0.0;
     int curvature_sign_changes = 0;
     double max_abs_curvature = 0.0;
+    double max_abs_curvature_derivative = 0.0;   // max |dκ/ds|
     double overshoot = 0.0;            // relative to the data's bounding-box diagonal
     double max_spike = 0.0;            // max over spans of max |κ| · chord
     int corners = 0;                   // spans with |κ| · chord > corner_threshold
@@ -36,6 +39,14 @@ struct FairnessMeasures {
 
 constexpr double kCornerThreshold = 100.0;
 
+// `samples` per piece for the sampled measures, `quadrature_pieces` sub-intervals per piece (each a
+// 20-point Gauss–Legendre rule) for length and energy: 512 and 64 by default; long inputs (10^5
+// pieces) take fewer of both, trading resolution for time linearly.
+struct FairnessSampling {
+    int samples = 512;
+    int quadrature_pieces = 64;
+};
+FairnessMeasures fairness_measures(const Curve& c, const PointList& data, const FairnessSampling& sampling);
 FairnessMeasures fairness_measures(const Curve& c, const PointList& data, int samples = 512);
 
 struct CurvatureSample {

@@ -18,22 +18,10 @@ int run_curvature_profile(const PointList& points, const CurvatureProfileArgs& a
         fail_input(who, "--spans gives " + std::to_string(span_shapes.size()) + " shapes but the " + std::to_string(points.rows()) + " points make " + std::to_string(spans) + " spans");
     const KnotLayout layout = a.knots.empty() ? span_layout(span_shapes) : parse_knot_difference_list(a.knots, a.degree).layout;
     CurvatureProfileProblem problem{points, layout, segment_shapes(layout, span_shapes), {}, a.closed, 0};
-    // Open ends of free spans: natural (κ = 0), the clothoid spline's usual end condition.
-    if (!a.closed) {
-        if (problem.shapes.front() == SegmentShape::free) problem.conditions.push_back({DesignCondition::Kind::curvature, 0, 0.0, false});
-        if (problem.shapes.back() == SegmentShape::free) problem.conditions.push_back({DesignCondition::Kind::curvature, layout.segments(), 0.0, true});
-    }
+    add_natural_open_ends(problem);
     require_valid_problem(problem, who);
     const int m = design_equations(problem), N = design_unknowns(problem);
-    // The paper's Moore–Penrose step; large square systems take sparse LU steps (O(n) per iteration)
-    // and fall back to the Moore–Penrose step if those fail (a singular or unconverged iteration).
-    CurvatureProfileSolution sol;
-    if (m == N && N > 200) {
-        NewtonOptions lu;
-        lu.step = NewtonStep::sparse_lu;
-        sol = solve_curvature_profile(problem, lu);
-    }
-    if (!sol.outcome.ok() || !sol.curve) sol = solve_curvature_profile(problem);
+    const CurvatureProfileSolution sol = solve_curvature_profile_auto(problem);
     for (const auto& h : sol.history) std::cout << "newton," << h.iteration << ",residual," << h.residual << ",rank," << h.rank << "\n";
     if (!sol.outcome.ok()) {
         std::cerr << "cagd: no result: " << sol.outcome.message << "\n";

@@ -18,6 +18,7 @@
 //   cagd lac3d --alpha A --beta B --degree N [--length L] [--start S0] [--composition C] [--slopes] --out C.csv
 //   cagd typical-surface --n N --alpha-u A --alpha-v B --angle-deg D [--length L] [--grid G] --out GRID.csv [--net-out NET.csv]
 //   cagd analyze CURVE.csv
+//   cagd compare --in P.csv [--closed] [--methods a,b,...] [--no-plot] --out DIR
 //   cagd analyze --in P.csv --method M [--optimize O] [--table T] [--closed]
 // Bad input: one line on stderr, exit code 2.
 #include <CLI/CLI.hpp>
@@ -30,6 +31,7 @@
 
 #include "analysis/curve_measures.hpp"
 #include "cli/aesthetic_commands.hpp"
+#include "cli/compare_command.hpp"
 #include "cli/curvature_profile_command.hpp"
 #include "cli/curve_output.hpp"
 #include "core/errors.hpp"
@@ -477,6 +479,15 @@ int main(int argc, char** argv) {
     table->add_option("--threads", threads, "worker threads")->check(CLI::Range(1, 64));
     table->add_option("--out", table_out, "table file (text, first line records grid, placement and method)")->required();
 
+    auto* cmp = app.add_subcommand("compare", "Every interpolation method on the same points: fairness table (CSV, Markdown) and figures");
+    cli::CompareArgs cmp_args;
+    cmp->add_option("--in", cmp_args.in, "points CSV: x,y per line, optional header")->required();
+    cmp->add_option("--out", cmp_args.out, "output directory (created)")->required();
+    cmp->add_flag("--closed", cmp_args.closed, "closed curves (methods that draw open curves only are listed as not applicable)");
+    cmp->add_option("--methods", cmp_args.methods, "comma-separated subset, e.g. pseudo-spline-exact,cubic-b,curvature-profile (default: all)");
+    bool no_plot = false;
+    cmp->add_flag("--no-plot", no_plot, "write the figure data and script but do not run gnuplot");
+
     cli::LacArgs lac_args;
     cli::MonotoneArgs mono_args;
     auto* lac = cli::add_lac_command(app, lac_args);
@@ -501,6 +512,10 @@ int main(int argc, char** argv) {
             }
             if (curve_path.empty()) fail_input("cagd analyze", "give a curve CSV or --in POINTS --method M");
             return run_analyze(curve_path);
+        }
+        if (*cmp) {
+            cmp_args.plot = !no_plot;
+            return cli::run_compare(cmp_args);
         }
         if (*energy) return run_energy(theta0, theta1, degrees);
         if (*lac) return cli::run_lac(lac_args);

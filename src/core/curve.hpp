@@ -19,6 +19,11 @@ public:
     // Parameters in [t_min, t_max] between which the curve is polynomial (ascending,
     // including both ends). Quadrature in analysis/ integrates piece by piece.
     virtual std::vector<double> breakpoints() const = 0;
+    // The left limit lim_{t'→t⁻} jet(t', order), for t_min < t ≤ t_max: at a breakpoint, the jet of
+    // the piece that ends there (jet(t) is the piece that starts there). Continuity at a join is
+    // measured by comparing the two. The default serves curves of one piece (it throws
+    // std::logic_error for a curve of several pieces that does not override it).
+    virtual Eigen::MatrixXd jet_from_left(double t, int order) const;
 
     Eigen::VectorXd point(double t) const { return jet(t, 0).row(0).transpose(); }
 };
@@ -32,5 +37,7 @@ struct PieceLocation {
 };
 // Throws InvalidInput naming `who` for u outside [0, K] (or NaN) or order < 0.
 PieceLocation locate_unit_piece(const char* who, double u, int pieces, int order);
+// The piece that ends at u for u ∈ (0, K] (t = 1 at a breakpoint): for Curve::jet_from_left.
+PieceLocation locate_unit_piece_from_left(const char* who, double u, int pieces, int order);
 
 }  // namespace cagd

@@ -528,4 +528,22 @@ CurvatureProfileSolution solve_curvature_profile_levenberg_marquardt(const Curva
     return sol;
 }
 
+void add_natural_open_ends(CurvatureProfileProblem& problem) {
+    if (problem.closed || problem.shapes.empty()) return;
+    if (problem.shapes.front() == SegmentShape::free) problem.conditions.push_back({DesignCondition::Kind::curvature, 0, 0.0, false});
+    if (problem.shapes.back() == SegmentShape::free)
+        problem.conditions.push_back({DesignCondition::Kind::curvature, problem.layout.segments(), 0.0, true});
+}
+
+CurvatureProfileSolution solve_curvature_profile_auto(const CurvatureProfileProblem& problem) {
+    const int m = design_equations(problem), n = design_unknowns(problem);
+    if (m == n && n > 200) {
+        NewtonOptions lu;
+        lu.step = NewtonStep::sparse_lu;
+        CurvatureProfileSolution sol = solve_curvature_profile(problem, lu);
+        if (sol.outcome.ok() && sol.curve) return sol;
+    }
+    return solve_curvature_profile(problem);
+}
+
 }  // namespace cagd::intrinsic

@@ -129,6 +129,14 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
                                                  const NewtonOptions& options = {});
 CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& problem, const NewtonOptions& options = {});
 
+// The clothoid-spline defaults shared by `cagd interpolate` and compare/: natural ends (κ = 0 at an
+// open end whose segment is free; lines and arcs already fix their curvature), appended to
+// problem.conditions; and the solve that picks the step — sparse LU for square systems of more than
+// 200 unknowns (O(n) per iteration), the Moore–Penrose step otherwise or when the LU iteration
+// fails (a singular or unconverged iteration).
+void add_natural_open_ends(CurvatureProfileProblem& problem);
+CurvatureProfileSolution solve_curvature_profile_auto(const CurvatureProfileProblem& problem);
+
 // The second solver: Ceres Levenberg–Marquardt on the same f, with its own central-difference
 // Jacobian (DynamicNumericDiffCostFunction) and lengths bounded below — independent of ours.
 CurvatureProfileSolution solve_curvature_profile_levenberg_marquardt(const CurvatureProfileProblem& problem,

@@ -1,5 +1,6 @@
 #include "intrinsic/intrinsic_curve.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/errors.hpp"
@@ -16,14 +17,25 @@ IntrinsicCurve::IntrinsicCurve(Eigen::Vector2d start, TangentAngleSpline psi) : 
 }
 
 Eigen::MatrixXd IntrinsicCurve::jet(double s, int order) const {
+    return jet_in_segment(psi_.segment_at(s), s, order);
+}
+
+Eigen::MatrixXd IntrinsicCurve::jet_from_left(double s, int order) const {
+    if (!(s > 0.0 && s <= length()))
+        fail_input("intrinsic::IntrinsicCurve::jet_from_left", "s = " + full_precision(s) + " outside (0, " + full_precision(length()) + "]");
+    const std::vector<double>& w = psi_.breakpoints();
+    const int j = static_cast<int>(std::lower_bound(w.begin(), w.end(), s) - w.begin()) - 1;   // w_j < s ≤ w_{j+1}
+    return jet_in_segment(j, s, order);
+}
+
+Eigen::MatrixXd IntrinsicCurve::jet_in_segment(int j, double s, int order) const {
     if (order < 0 || order > 4) fail_input("intrinsic::IntrinsicCurve::jet", "order must be in 0..4, got " + std::to_string(order));
-    const int j = psi_.segment_at(s);
     const double w = psi_.breakpoints()[static_cast<std::size_t>(j)], d = psi_.segment_lengths()[static_cast<std::size_t>(j)];
     const double tau = std::min(1.0, std::max(0.0, (s - w) / d));
     Eigen::MatrixXd out(order + 1, 2);
     out.row(0) = points_.row(j) + d * direction_integrals(psi_.bezier().row(j).transpose(), tau).transpose();
     if (order == 0) return out;
-    const Eigen::VectorXd a = psi_.jet(s, std::max(order - 1, 0));
+    const Eigen::VectorXd a = psi_.jet_in_segment(j, s, std::max(order - 1, 0));
     const Eigen::RowVector2d e(std::cos(a(0)), std::sin(a(0))), n(-std::sin(a(0)), std::cos(a(0)));
     out.row(1) = e;
     if (order >= 2) out.row(2) = a(1) * n;

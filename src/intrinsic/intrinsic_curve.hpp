@@ -27,9 +27,11 @@ public:
     double t_min() const override { return 0.0; }
     double t_max() const override { return psi_.length(); }
     Eigen::MatrixXd jet(double s, int order) const override;
+    Eigen::MatrixXd jet_from_left(double s, int order) const override;
     std::vector<double> breakpoints() const override { return psi_.breakpoints(); }
 
 private:
+    Eigen::MatrixXd jet_in_segment(int j, double s, int order) const;
     TangentAngleSpline psi_;
     Eigen::MatrixXd points_;
 };

@@ -35,6 +35,9 @@ TangentAngleSpline::TangentAngleSpline(KnotLayout layout, std::vector<double> se
     for (int i = 0; i < de_boor_.size(); ++i)
         if (!std::isfinite(de_boor_(i))) fail_input(who, "de Boor ordinate B_" + std::to_string(i) + " = " + full_precision(de_boor_(i)) + " is not finite");
     const std::vector<double> v = farin_knots();
+    basis_knots_ = v;
+    basis_knots_.insert(basis_knots_.begin(), w_.front());
+    basis_knots_.push_back(w_.back());
     bezier_.resize(k, p + 1);
     for (int j = 0; j < k; ++j) {
         const int last = layout_.last_knot_of_breakpoint(j);
@@ -91,11 +94,8 @@ Eigen::VectorXd TangentAngleSpline::jet_in_segment(int j, double s, int order) c
     const double lo = w_[static_cast<std::size_t>(j)], hi = w_[static_cast<std::size_t>(j) + 1];
     if (!(s >= lo && s <= hi)) fail_input(who, "s = " + full_precision(s) + " outside segment " + std::to_string(j) + " [" + full_precision(lo) + ", " + full_precision(hi) + "]");
     const int p = degree();
-    std::vector<double> knots = farin_knots();
-    knots.insert(knots.begin(), w_.front());
-    knots.push_back(w_.back());
     const int span = layout_.last_knot_of_breakpoint(j) + 1;
-    const Eigen::MatrixXd N = basis_function_derivatives(p, knots, span, s, order);
+    const Eigen::MatrixXd N = basis_function_derivatives(p, basis_knots_, span, s, order);
     Eigen::VectorXd out = Eigen::VectorXd::Zero(order + 1);
     for (int d = 0; d <= order; ++d)
         for (int m = 0; m <= p; ++m) out(d) += N(d, m) * de_boor_(span - p + m);

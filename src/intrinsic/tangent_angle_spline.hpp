@@ -51,6 +51,7 @@ public:
     double curvature(int segment, bool at_end) const;
 
 private:
+    std::vector<double> basis_knots_;   // farin_knots() with w_0 and w_k added: the knot vector of jet_in_segment
     KnotLayout layout_;
     std::vector<double> lengths_, w_;
     Eigen::VectorXd de_boor_;

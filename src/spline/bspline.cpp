@@ -120,6 +120,19 @@ Eigen::MatrixXd BSplineCurve::jet(double t, int order) const {
     return ders * control_.middleRows(span - degree_, degree_ + 1);
 }
 
+Eigen::MatrixXd BSplineCurve::jet_from_left(double t, int order) const {
+    if (!(t > t_min() && t <= t_max()))
+        fail_input("cagd::BSplineCurve::jet_from_left", "t = " + full_precision(t) + " outside (" + full_precision(t_min()) + ", " +
+                                                             full_precision(t_max()) + "]");
+    if (order < 0) fail_input("cagd::BSplineCurve::jet_from_left", "order must be >= 0");
+    // The last non-empty span [U_i, U_{i+1}) with U_i < t: the polynomial piece that ends at or after t.
+    const int n = static_cast<int>(control_.rows());
+    const auto it = std::lower_bound(knots_.begin() + degree_, knots_.begin() + n + 1, t);
+    const int span = static_cast<int>(it - knots_.begin()) - 1;
+    const Eigen::MatrixXd ders = basis_function_derivatives(degree_, knots_, span, t, order);
+    return ders * control_.middleRows(span - degree_, degree_ + 1);
+}
+
 std::vector<double> BSplineCurve::breakpoints() const {
     std::vector<double> b;
     for (int i = degree_; i <= static_cast<int>(control_.rows()); ++i)

@@ -34,6 +34,7 @@ public:
     double t_min() const override { return knots_[degree_]; }
     double t_max() const override { return knots_[control_.rows()]; }
     Eigen::MatrixXd jet(double t, int order) const override;
+    Eigen::MatrixXd jet_from_left(double t, int order) const override;
     std::vector<double> breakpoints() const override;
 
     // Index s with t_s ≤ t < t_{s+1}, p ≤ s ≤ n−1 (t = t_max: the last non-empty span).

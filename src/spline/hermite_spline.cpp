@@ -25,6 +25,15 @@ std::vector<double> PiecewiseHermiteCurve::breakpoints() const { return unit_pie
 
 Eigen::MatrixXd PiecewiseHermiteCurve::jet(double u, int order) const {
     const auto [k, t] = locate_unit_piece("cagd::spline::PiecewiseHermiteCurve::jet", u, spans(), order);
+    return span_jet(k, t, order);
+}
+
+Eigen::MatrixXd PiecewiseHermiteCurve::jet_from_left(double u, int order) const {
+    const auto [k, t] = locate_unit_piece_from_left("cagd::spline::PiecewiseHermiteCurve::jet_from_left", u, spans(), order);
+    return span_jet(k, t, order);
+}
+
+Eigen::MatrixXd PiecewiseHermiteCurve::span_jet(int k, double t, int order) const {
     // Basis values and derivatives of H0..H3 at t (rows: derivative order 0..3).
     const double H[4][4] = {
         {2 * t * t * t - 3 * t * t + 1, -2 * t * t * t + 3 * t * t, t * t * t - 2 * t * t + t, t * t * t - t * t},

@@ -58,9 +58,11 @@ public:
     double t_min() const override { return 0.0; }
     double t_max() const override { return spans(); }
     Eigen::MatrixXd jet(double u, int order) const override;
+    Eigen::MatrixXd jet_from_left(double u, int order) const override;
     std::vector<double> breakpoints() const override;
 
 private:
+    Eigen::MatrixXd span_jet(int k, double t, int order) const;   // span k at local t ∈ [0, 1]
     Eigen::MatrixXd nodes_, d0_, d1_;
 };
 

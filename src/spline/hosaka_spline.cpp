@@ -50,6 +50,11 @@ Eigen::MatrixXd HosakaCurve::jet(double u, int order) const {
     return segment_jet(s, t, order);
 }
 
+Eigen::MatrixXd HosakaCurve::jet_from_left(double u, int order) const {
+    const auto [s, t] = locate_unit_piece_from_left("cagd::spline::HosakaCurve::jet_from_left", u, segments(), order);
+    return segment_jet(s, t, order);
+}
+
 Eigen::MatrixXd HosakaCurve::segment_jet(int s, double t, int order) const {
     if (s < 0 || s >= segments() || !(t >= 0.0 && t <= 1.0) || order < 0)
         fail_input("cagd::spline::HosakaCurve::segment_jet", "needs 0 <= s < " + std::to_string(segments()) + ", t in [0, 1], order >= 0; got s = " +

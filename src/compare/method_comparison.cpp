@@ -1,0 +1,221 @@
+#include "compare/method_comparison.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+#include "analysis/curve_measures.hpp"
+#include "repro/csv.hpp"
+
+namespace cagd::compare {
+
+namespace {
+
+double data_diagonal(const PointList& p) { return (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm(); }
+
+// The parameter at fraction f of span k.
+double span_parameter(const Interpolant& a, std::size_t k, double f) {
+    const double t0 = a.node_parameters[k], t1 = a.node_parameters[k + 1];
+    return f == 1.0 ? t1 : t0 + f * (t1 - t0);
+}
+
+// Spans of a and b (same points but one moved) that differ by more than `tolerance` somewhere.
+int spans_moved(const Interpolant& a, const Interpolant& b, double tolerance) {
+    int count = 0;
+    for (std::size_t k = 0; k + 1 < a.node_parameters.size(); ++k)
+        for (int j = 0; j <= 8; ++j) {
+            const double f = j / 8.0;
+            if ((a.curve->point(span_parameter(a, k, f)) - b.curve->point(span_parameter(b, k, f))).norm() > tolerance) {
+                ++count;
+                break;
+            }
+        }
+    return count;
+}
+
+// Σ_k L_k² E_k over the data spans, each span integrated piece by piece between the curve's breakpoints.
+double span_pseudo_energy(const Interpolant& a, int pieces) {
+    const Curve& c = *a.curve;
+    const std::vector<double> br = c.breakpoints();
+    std::size_t b = 0;
+    double total = 0.0;
+    for (std::size_t k = 0; k + 1 < a.node_parameters.size(); ++k) {
+        const double t0 = a.node_parameters[k], t1 = a.node_parameters[k + 1];
+        double L = 0.0, E = 0.0, from = t0;
+        while (b < br.size() && br[b] <= t0) ++b;
+        for (; b < br.size() && br[b] < t1; ++b) {
+            L += analysis::piece_arc_length(c, from, br[b], pieces);
+            E += analysis::piece_bending_energy(c, from, br[b], pieces);
+            from = br[b];
+        }
+        L += analysis::piece_arc_length(c, from, t1, pieces);
+        E += analysis::piece_bending_energy(c, from, t1, pieces);
+        total += L * L * E;
+    }
+    return total;
+}
+
+std::string applicability(const MethodInfo& m, const PointList& points, bool closed) {
+    if (closed && !m.supports_closed) return "open curves only";
+    const int need = closed ? m.min_points_closed : m.min_points;
+    if (points.rows() < need) return "needs at least " + std::to_string(need) + " points";
+    if (points.cols() > m.max_dimension) return "planar points only";
+    return "";
+}
+
+}  // namespace
+
+analysis::FairnessSampling comparison_sampling(int pieces) {
+    const int budget = 2'000'000 / std::max(pieces, 1);
+    return {std::clamp(budget, 8, 128), std::clamp(budget / 128, 2, 16)};
+}
+
+std::vector<MethodComparison> compare_methods(const PointList& points, const ComparisonOptions& options) {
+    const char* who = "cagd::compare::compare_methods";
+    if (points.cols() != 2) fail_input(who, "compares planar curves: needs 2 columns (x, y), got " + std::to_string(points.cols()));
+    std::vector<std::string> names = options.methods;
+    if (names.empty())
+        for (const MethodInfo& m : interpolation_methods()) names.push_back(m.name);
+    const double diagonal = data_diagonal(points);
+    std::vector<MethodComparison> out;
+    for (const std::string& name : names) {
+        const MethodInfo& info = method_info(name);
+        MethodComparison c;
+        c.method = name;
+        c.note = applicability(info, points, options.closed);
+        if (!c.note.empty()) {
+            c.status = "not applicable";
+            out.push_back(std::move(c));
+            continue;
+        }
+        const auto start = std::chrono::steady_clock::now();
+        InterpolationResult r = interpolate(name, points, options.closed);
+        c.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (!r.outcome.ok() || !r.interpolant) {
+            c.status = "no result";
+            c.note = r.outcome.message;
+            out.push_back(std::move(c));
+            continue;
+        }
+        c.interpolant = std::move(r.interpolant);
+        const Curve& curve = *c.interpolant->curve;
+        c.spans = static_cast<int>(c.interpolant->node_parameters.size()) - 1;
+        const analysis::FairnessSampling sampling = comparison_sampling(static_cast<int>(curve.breakpoints().size()) - 1);
+        c.length = analysis::arc_length(curve, sampling.quadrature_pieces);
+        if (options.closed) c.area = analysis::enclosed_area(curve);
+        try {
+            c.fairness = analysis::fairness_measures(curve, points, sampling);
+            c.pseudo_energy = span_pseudo_energy(*c.interpolant, sampling.quadrature_pieces);
+            c.status = "ok";
+        } catch (const InvalidInput& e) {   // a sample of zero speed: κ undefined there
+            c.status = "cusp";
+            c.note = e.what();
+        }
+        if (options.locality && points.rows() >= 3) {
+            PointList moved = points;
+            moved(points.rows() / 2, 1) += 1e-3 * diagonal;
+            try {
+                const InterpolationResult m = interpolate(name, moved, options.closed);
+                if (m.outcome.ok() && m.interpolant) c.locality_footprint = spans_moved(*c.interpolant, *m.interpolant, 1e-9 * diagonal);
+            } catch (const InvalidInput&) {   // the moved point made the input invalid for this method
+            }
+        }
+        out.push_back(std::move(c));
+    }
+    return out;
+}
+
+std::vector<std::string> comparison_header(bool closed, bool timing) {
+    std::vector<std::string> h{"method", "status", "spans", "length"};
+    if (closed) h.push_back("area");
+    for (const char* n : {"bending_energy", "pseudo_energy", "inflections", "max_abs_curvature", "max_abs_dcurvature_ds", "overshoot",
+                          "locality_footprint"})
+        h.push_back(n);
+    if (timing) h.push_back("seconds");
+    h.push_back("note");
+    return h;
+}
+
+std::vector<std::vector<std::string>> comparison_rows(const std::vector<MethodComparison>& cs, bool closed, bool timing, int digits) {
+    std::vector<std::vector<std::string>> rows;
+    const auto num = [&](double v) { return repro::format_number(v, digits); };
+    for (const MethodComparison& c : cs) {
+        const bool built = c.interpolant.has_value();
+        std::vector<std::string> r{c.method, c.status, built ? std::to_string(c.spans) : "", built ? num(c.length) : ""};
+        if (closed) r.push_back(built ? num(c.area) : "");
+        if (c.fairness) {
+            const analysis::FairnessMeasures& f = *c.fairness;
+            for (const std::string& v : {num(f.bending_energy), num(c.pseudo_energy), std::to_string(f.curvature_sign_changes), num(f.max_abs_curvature),
+                                         num(f.max_abs_curvature_derivative), num(f.overshoot)})
+                r.push_back(v);
+        } else {
+            r.insert(r.end(), 6, "");
+        }
+        r.push_back(c.locality_footprint ? std::to_string(*c.locality_footprint) : "");
+        if (timing) r.push_back(built ? repro::format_number(c.seconds, 3) : "");
+        r.push_back(c.note);
+        rows.push_back(std::move(r));
+    }
+    return rows;
+}
+
+std::string comparison_markdown(const std::vector<MethodComparison>& cs, bool closed, bool timing, int digits) {
+    const std::vector<std::string> header = comparison_header(closed, timing);
+    std::ostringstream md;
+    md << "|";
+    for (const std::string& h : header) md << " " << h << " |";
+    md << "\n|";
+    for (std::size_t i = 0; i < header.size(); ++i) md << (i == 0 || i + 1 == header.size() || i == 1 ? "---|" : "---:|");
+    md << "\n";
+    for (const auto& row : comparison_rows(cs, closed, timing, digits)) {
+        md << "|";
+        for (std::string f : row) {
+            std::replace(f.begin(), f.end(), '|', '/');
+            md << " " << f << " |";
+        }
+        md << "\n";
+    }
+    return md.str();
+}
+
+FigureData comparison_figure_data(const std::vector<MethodComparison>& cs, const PointList& points, int per_span) {
+    if (per_span < 1) fail_input("cagd::compare::comparison_figure_data", "per_span must be >= 1, got " + std::to_string(per_span));
+    FigureData d;
+    const double diagonal = data_diagonal(points);
+    for (std::size_t i = 0; i < cs.size(); ++i) {
+        if (!cs[i].interpolant) continue;
+        const Interpolant& a = *cs[i].interpolant;
+        const double index = static_cast<double>(i);
+        struct Sample {
+            double x, y, nx, ny, kappa;
+        };
+        std::vector<Sample> samples;
+        double s = 0.0;
+        for (std::size_t k = 0; k + 1 < a.node_parameters.size(); ++k) {
+            double previous = a.node_parameters[k];
+            for (int j = 0; j <= per_span; ++j) {
+                const double t = span_parameter(a, k, double(j) / per_span);
+                const Eigen::MatrixXd J = j == per_span && t > a.curve->t_min() ? a.curve->jet_from_left(t, 2) : a.curve->jet(t, 2);
+                if (j < per_span || k + 2 == a.node_parameters.size()) d.curves.push_back({index, J(0, 0), J(0, 1)});
+                if (t > previous) s += analysis::arc_length(*a.curve, previous, t, 1);
+                previous = t;
+                if (!cs[i].fairness) continue;
+                const double v = std::hypot(J(1, 0), J(1, 1));
+                const double kappa = (J(1, 0) * J(2, 1) - J(1, 1) * J(2, 0)) / (v * v * v);
+                d.profiles.push_back({index, s, kappa});
+                samples.push_back({J(0, 0), J(0, 1), -J(1, 1) / v, J(1, 0) / v, kappa});
+            }
+        }
+        if (samples.empty()) continue;
+        std::vector<double> magnitudes;
+        for (const Sample& q : samples) magnitudes.push_back(std::abs(q.kappa));
+        const auto p95 = magnitudes.begin() + static_cast<std::ptrdiff_t>(0.95 * static_cast<double>(magnitudes.size() - 1));
+        std::nth_element(magnitudes.begin(), p95, magnitudes.end());
+        const double scale = *p95 > 0.0 ? 0.1 * diagonal / *p95 : 0.0;
+        for (const Sample& q : samples) d.combs.push_back({index, q.x, q.y, q.x - scale * q.kappa * q.nx, q.y - scale * q.kappa * q.ny});
+    }
+    return d;
+}
+
+}  // namespace cagd::compare

@@ -1,0 +1,69 @@
+#pragma once
+// Every interpolation method on the same planar points, measured the same way (`cagd compare`):
+//
+//   length, enclosed area (closed)   ∫|r'| dt, ½∮(x y' − y x') dt (analysis/curve_measures)
+//   pseudo-energy                    Σ_k L_k² E_k over the data spans k (L_k, E_k = ∫κ² ds on span k;
+//                                    = Σ l_k J_k, pseudo_energy eq 7, 12, whatever the curve's pieces)
+//   bending energy ∫κ² ds, curvature sign changes (inflections; also a
+//   κ jump through 0 at a G1 join), max |κ|, max |dκ/ds|, overshoot beyond the data's bounding box
+//   (÷ its diagonal)                 analysis/fairness_measures, sampled per piece
+//   locality footprint               moving the middle data point P_⌊n/2⌋ by 10⁻³ × diagonal in y
+//                                    moves how many spans, a span moving when some sample at the
+//                                    same fraction of its parameter interval moves by more than
+//                                    10⁻⁹ × diagonal (9 samples per span)
+//   seconds                          wall time of interpolate() (not deterministic)
+//
+// A method that does not apply (too few points, closed curves unsupported, 3-D) is listed with
+// the reason; a returned outcome (the curvature-profile Newton) is listed with its message; a curve
+// with a point of zero speed (a cusp: Boost's pchip does this where x and y turn together) has no
+// curvature there, and its κ measures are left empty with that note. Nothing is NaN.
+// Sampling: `samples` and `quadrature_pieces` per piece default to 128 and 16, reduced for long
+// inputs so that a method measures about 2·10⁶ samples in all (at least 8 and 2 per piece).
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "analysis/fairness_measures.hpp"
+#include "compare/interpolation_methods.hpp"
+
+namespace cagd::compare {
+
+struct ComparisonOptions {
+    std::vector<std::string> methods;   // empty: every method
+    bool closed = false;
+    bool locality = true;
+};
+
+struct MethodComparison {
+    std::string method;
+    std::string status;   // "ok", "not applicable", "no result", "cusp"
+    std::string note;     // the reason when status is not ok
+    std::optional<Interpolant> interpolant;
+    double length = 0.0, area = 0.0, pseudo_energy = 0.0;
+    std::optional<analysis::FairnessMeasures> fairness;   // absent for a cusp
+    int spans = 0;
+    std::optional<int> locality_footprint;
+    double seconds = 0.0;
+};
+
+analysis::FairnessSampling comparison_sampling(int pieces);
+std::vector<MethodComparison> compare_methods(const PointList& points, const ComparisonOptions& options);
+
+// The table: one row per method, numbers to `digits` significant digits, empty where undefined.
+// With timing = false the seconds column is left out (deterministic output).
+std::vector<std::string> comparison_header(bool closed, bool timing);
+std::vector<std::vector<std::string>> comparison_rows(const std::vector<MethodComparison>& c, bool closed, bool timing, int digits = 8);
+std::string comparison_markdown(const std::vector<MethodComparison>& c, bool closed, bool timing, int digits = 6);
+
+// Figure data. Curve samples (method index, method, x, y), `per_span` per span; the curvature
+// profile (method index, s, κ), `per_span` per span with both ends of every span; the curvature
+// comb (method index, x, y, tooth end x, y), the tooth r − c·κ·n (n the left unit normal), c per
+// method such that the 95th percentile of |κ| draws 10 % of the data diagonal (a spike shows as a
+// long tooth without flattening the rest).
+struct FigureData {
+    std::vector<std::vector<double>> curves, profiles, combs;
+};
+FigureData comparison_figure_data(const std::vector<MethodComparison>& c, const PointList& points, int per_span);
+
+}  // namespace cagd::compare

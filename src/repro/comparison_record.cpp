@@ -1,0 +1,42 @@
+#include "repro/comparison_record.hpp"
+
+#include <cmath>
+
+#include "analysis/curve_measures.hpp"
+
+namespace cagd::repro {
+
+std::vector<compare::MethodComparison> record_comparison(ArtifactRun& run, const std::string& prefix, const PointList& points, bool closed) {
+    compare::ComparisonOptions options;
+    options.closed = closed;
+    const std::vector<compare::MethodComparison> results = compare::compare_methods(points, options);
+    {
+        CsvWriter w = run.table(prefix + "measures.csv", compare::comparison_header(closed, false));
+        for (const auto& row : compare::comparison_rows(results, closed, false)) w.row_text(row);
+    }
+    {
+        CsvWriter w = run.table(prefix + "methods.csv", {"index", "method"});
+        for (std::size_t i = 0; i < results.size(); ++i) w.row_text({std::to_string(i), results[i].method});
+    }
+    {
+        CsvWriter w = run.table(prefix + "points.csv", {"x", "y"});
+        for (Eigen::Index i = 0; i < points.rows(); ++i) w.row({points(i, 0), points(i, 1)});
+    }
+    const compare::FigureData fig = compare::comparison_figure_data(results, points, 32);
+    const auto write = [&](const std::string& name, const std::vector<std::string>& header, const std::vector<std::vector<double>>& rows) {
+        CsvWriter w = run.table(prefix + name, header);
+        for (const auto& r : rows) w.row(r, 10);
+    };
+    write("curves.csv", {"index", "x", "y"}, fig.curves);
+    write("curvature.csv", {"index", "s", "kappa"}, fig.profiles);
+    write("combs.csv", {"index", "x", "y", "tip_x", "tip_y"}, fig.combs);
+    for (const compare::MethodComparison& c : results) {
+        if (!c.interpolant) continue;
+        const double reference = analysis::adaptive_arc_length(*c.interpolant->curve, 1e-12);
+        run.validate(prefix + c.method + ".length", "compare table length of " + c.method + " (Gauss-Legendre) vs adaptive Gauss-Kronrod", c.length, reference,
+                     5e-8 * reference, "two quadratures of one curve; the table prints 8 significant digits, so it must be right to half a unit in the 8th (5e-8 relative)");
+    }
+    return results;
+}
+
+}  // namespace cagd::repro

@@ -1,0 +1,17 @@
+#pragma once
+// The method comparison of `cagd compare` recorded in an experiment (the report's comparisons on
+// the papers' data): writes <prefix>measures.csv (no timing column: deterministic) and the figure
+// data <prefix>{methods,points,curves,curvature,combs}.csv that scripts/plot/compare_panels.gp
+// draws, and validates every curve's length (Gauss–Legendre, as the table) against Boost's
+// adaptive Gauss–Kronrod to 10⁻¹² relative — an independent quadrature of the same curve.
+#include <string>
+#include <vector>
+
+#include "compare/method_comparison.hpp"
+#include "repro/artifact_run.hpp"
+
+namespace cagd::repro {
+
+std::vector<compare::MethodComparison> record_comparison(ArtifactRun& run, const std::string& prefix, const PointList& points, bool closed);
+
+}  // namespace cagd::repro
