@@ -16,6 +16,7 @@ done < "$build/experiments.txt"
 for gp in scripts/plot/*.gp; do
   name=$(basename "$gp" .gp)
   [ "$name" = style ] && continue
+  [ "$name" = compare_panels ] && continue   # loaded by the comparison figures, not a figure itself
   paper=${name%%_fig*}
   if ! gnuplot -e "datadir='results/$paper'" "$gp"; then
     echo "reproduce: gnuplot failed on $gp" >&2

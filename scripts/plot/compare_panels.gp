@@ -1,0 +1,75 @@
+# The figures of a method comparison (`cagd compare`, and the comparisons in the report).
+# Set before loading: datadir, prefix (file-name prefix inside datadir, may be ''), heading (a
+# title line), and optionally formats (default "png svg"), figures (default "curves combs
+# curvature") and the file names f_methods, f_points, f_curves, f_combs, f_kappa. Reads prefix.'methods.csv' (index,
+# method: the names, in the order of the index column), 'points.csv' (x,y), 'curves.csv'
+# (index,x,y), 'combs.csv' (index,x,y,tip_x,tip_y) and 'curvature.csv' (index,s,kappa);
+# writes prefix.'curves', 'combs' and 'curvature' in each format. gnuplot only draws.
+# This file is not a figure of its own: scripts/reproduce.sh skips it, and `cagd compare` embeds it.
+set datafile separator ','
+set grid lc rgb '#dddddd'
+set border lw 1.2
+if (!exists("formats")) formats = "png svg"
+if (!exists("figures")) figures = "curves combs curvature"
+if (!exists("f_methods")) f_methods = datadir.'/'.prefix.'methods.csv'
+if (!exists("f_points")) f_points = datadir.'/'.prefix.'points.csv'
+if (!exists("f_curves")) f_curves = datadir.'/'.prefix.'curves.csv'
+if (!exists("f_combs")) f_combs = datadir.'/'.prefix.'combs.csv'
+if (!exists("f_kappa")) f_kappa = datadir.'/'.prefix.'curvature.csv'
+names = system("tail -n +2 '".f_methods."' | cut -d, -f2 | tr '\n' ' '")
+n = words(names)
+cols = n <= 4 ? n : (n <= 9 ? 3 : (n <= 16 ? 4 : 5))
+rows = int((n + cols - 1) / cols)
+pick(i, v) = (column(1) == i - 1 ? v : NaN)
+do for [t in formats] {
+  # 1. every curve over the points
+  if (strstrt(figures, "curves") > 0) {
+  if (t eq "png") { set terminal pngcairo size 1100,800 enhanced font 'DejaVu Sans,11' } else { set terminal svg size 1100,800 enhanced font 'DejaVu Sans,11' }
+  set output datadir.'/'.prefix.'curves.'.t
+  set title heading.': every method over the data points' noenhanced
+  set size ratio -1
+  set key outside right top noenhanced
+  set xlabel 'x'
+  set ylabel 'y'
+  plot for [i=1:n] f_curves skip 1 using 2:(pick(i, $3)) with lines lw 1.5 lc i title word(names, i), \
+       f_points skip 1 using 1:2 with points pt 7 ps 0.8 lc rgb '#000000' title 'data'
+  unset output
+  }
+  # 2. per method: curve and curvature comb
+  if (strstrt(figures, "combs") > 0) {
+  set size ratio -1
+  if (t eq "png") { set terminal pngcairo size 360*cols,300*rows enhanced font 'DejaVu Sans,9' } else { set terminal svg size 360*cols,300*rows enhanced font 'DejaVu Sans,9' }
+  set output datadir.'/'.prefix.'combs.'.t
+  set multiplot layout rows,cols title heading.': curvature combs (teeth -c κ n; c per method: 95th percentile of |κ| = 10 % of the diagonal)' noenhanced
+  unset key
+  unset xlabel
+  unset ylabel
+  do for [i=1:n] {
+    set title word(names, i) noenhanced
+    plot f_combs skip 1 using (pick(i, $2)):3:($4 - $2):($5 - $3) with vectors nohead lc rgb '#9ecae1', \
+         f_combs skip 1 using (pick(i, $4)):5 with lines lc rgb '#6baed6', \
+         f_curves skip 1 using (pick(i, $2)):3 with lines lw 1.5 lc rgb '#08306b', \
+         f_points skip 1 using 1:2 with points pt 7 ps 0.5 lc rgb '#000000'
+  }
+  unset multiplot
+  unset output
+  }
+  # 3. per method: curvature profile κ(s)
+  if (strstrt(figures, "curvature") > 0) {
+  if (t eq "png") { set terminal pngcairo size 360*cols,300*rows enhanced font 'DejaVu Sans,9' } else { set terminal svg size 360*cols,300*rows enhanced font 'DejaVu Sans,9' }
+  unset key
+  set output datadir.'/'.prefix.'curvature.'.t
+  set size noratio
+  set multiplot layout rows,cols title heading.': curvature κ against arc length s' noenhanced
+  do for [i=1:n] {
+    set title word(names, i) noenhanced
+    set xlabel 's'
+    set ylabel 'κ'
+    plot f_kappa skip 1 using 2:(pick(i, $3)) with lines lw 1.2 lc rgb '#d62728'
+  }
+  unset multiplot
+  unset output
+  unset xlabel
+  unset ylabel
+  }
+}
