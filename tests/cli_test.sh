@@ -215,5 +215,20 @@ expect_bad "cp malformed list"     '0,0\n1,1\n2,0\n'        interpolate --method
 expect_bad "cp list vs points"     '0,0\n1,1\n2,0\n'        interpolate --method curvature-profile --knots "{0, A, 0}" --in "$dir/bad.csv" --out "$dir/o.csv"
 expect_bad "cp degree, no list"    '0,0\n1,1\n2,0\n'        interpolate --method curvature-profile --degree 3 --in "$dir/bad.csv" --out "$dir/o.csv"
 
+# cagd compare: one table row per method, the figure data, and bad input.
+printf 'x,y\n0,0\n1,1\n2,0\n3,1\n4,0\n5,1\n' > "$dir/zig.csv"
+if "$cagd" compare --in "$dir/zig.csv" --out "$dir/cmp" --no-plot > "$dir/cmp.md" 2> /dev/null; then
+  rows=$(($(wc -l < "$dir/cmp/measures.csv") - 1))
+  [ "$rows" -eq 19 ] || { echo "FAIL: compare wrote $rows method rows, expected 19"; fails=$((fails+1)); }
+  grep -q '^| curvature-profile | ok |' "$dir/cmp.md" || { echo "FAIL: compare table lacks curvature-profile"; fails=$((fails+1)); }
+  for f in methods points curves curvature combs; do [ -s "$dir/cmp/$f.csv" ] || { echo "FAIL: compare wrote no $f.csv"; fails=$((fails+1)); }; done
+else
+  echo "FAIL: compare exited non-zero"; fails=$((fails+1))
+fi
+"$cagd" compare --in "$dir/zig.csv" --closed --methods boost-pchip,cubic-b --out "$dir/cmp2" --no-plot > "$dir/cmp2.md" 2> /dev/null
+grep -q '^| boost-pchip | not applicable |' "$dir/cmp2.md" || { echo "FAIL: compare --closed must list boost-pchip as not applicable"; fails=$((fails+1)); }
+expect_bad "compare 3-D points"    '0,0,0\n1,1,1\n2,0,0\n3,1,1\n'  compare --in "$dir/bad.csv" --out "$dir/cmp3" --no-plot
+expect_bad "compare unknown method" '0,0\n1,1\n2,0\n3,1\n'        compare --in "$dir/bad.csv" --methods cubic-z --out "$dir/cmp3" --no-plot
+
 if [ "$fails" -eq 0 ]; then echo "cli: all checks passed"; fi
 exit $((fails > 0))

@@ -169,7 +169,6 @@ TEST_P(EveryMethod, RandomPointSetsKeepEveryClaim) {
     EXPECT_LE(t.worst_geometric, 1e-6) << m.name;
     EXPECT_LE(t.worst_invariance, 1e-9) << m.name;
     EXPECT_LE(t.worst_affine, 1e-9) << m.name;
-    RecordProperty("worst_interpolation", std::to_string(t.worst_interpolation));
     std::printf("%s: %d sets, %d without result; worst interpolation %.2e, C^k %.2e, G^k %.2e, invariance %.2e, affine %.2e\n", m.name.c_str(), t.sets,
                 t.no_result, t.worst_interpolation, t.worst_parametric, t.worst_geometric, t.worst_invariance, t.worst_affine);
 }
@@ -185,7 +184,7 @@ TEST_P(EveryMethod, DegenerateInputsHaveDefinedOutcomes) {
     const Curve& c = *r.interpolant->curve;
     for (double t = c.t_min(); t < c.t_max(); t += (c.t_max() - c.t_min()) / 97) {
         const Eigen::Vector2d q = c.point(t);
-        EXPECT_NEAR(q.y() - 2.0 * q.x(), 0.0, 1e-12 * 20) << m.name << " at t = " << t;
+        EXPECT_NEAR(q.y() - 2.0 * q.x(), 0.0, 1e-11) << m.name << " at t = " << t;   // rounding at coordinates ≤ 14
     }
     // Two points: the segment between them, or InvalidInput naming the count for methods needing more.
     PointList two(2, 2);
@@ -205,7 +204,7 @@ TEST_P(EveryMethod, DegenerateInputsHaveDefinedOutcomes) {
         interpolate(m.name, repeated, false);
         ADD_FAILURE() << m.name << " accepted a repeated point";
     } catch (const InvalidInput& e) {
-        EXPECT_NE(std::string(e.what()).find("2"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("points 2 and 3 coincide"), std::string::npos) << e.what();
     }
     // Nearly coincident points (10^-9 of the diagonal apart) and coordinates of magnitude 1e-8 and
     // 1e8: a finite curve through every point, or a returned outcome.
