@@ -80,6 +80,30 @@ TEST(BernsteinBasis, StableValuesAgreeWithDeCasteljauAtHighDegree) {
     EXPECT_GT(err, 1e-3);
 }
 
+TEST(BernsteinBasis, SmallDegreeTriangleAndRatioPathAgreeWithTheDefinition) {
+    // Both sides of kSmallBernsteinDegree against C(d,i) t^i (1−t)^(d−i) in long double; the span
+    // overload returns the same values and checks its size.
+    for (int d : {0, 1, 3, 5, kSmallBernsteinDegree, kSmallBernsteinDegree + 1, 30}) {
+        for (double t : {0.0, 1e-9, 0.2, 0.5, 0.77, 1.0 - 1e-9, 1.0}) {
+            const std::vector<double> b = bernstein_basis_values(d, t);
+            std::vector<double> into(static_cast<std::size_t>(d) + 1, -1.0);
+            bernstein_basis_values(d, t, into);
+            ASSERT_EQ(b.size(), static_cast<std::size_t>(d) + 1);
+            long double binom = 1.0L;
+            for (int i = 0; i <= d; ++i) {
+                if (i > 0) binom = binom * (d - i + 1) / i;
+                const long double exact = binom * std::pow(static_cast<long double>(t), i) * std::pow(1.0L - static_cast<long double>(t), d - i);
+                const double tol = 4.0 * (d + 1) * std::numeric_limits<double>::epsilon() * static_cast<double>(exact) + 1e-300;
+                EXPECT_NEAR(b[static_cast<std::size_t>(i)], static_cast<double>(exact), tol) << "d " << d << " t " << t << " i " << i;
+                EXPECT_EQ(into[static_cast<std::size_t>(i)], b[static_cast<std::size_t>(i)]) << "d " << d << " t " << t << " i " << i;
+            }
+        }
+    }
+    std::vector<double> wrong(3);
+    EXPECT_THROW(bernstein_basis_values(3, 0.5, wrong), InvalidInput);
+    EXPECT_THROW(bernstein_basis_values(3, 1.5), InvalidInput);
+}
+
 TEST(CurvatureMonotonicity, NumeratorHasTheSignOfTheCurvatureDerivative) {
     Eigen::MatrixXd cp(6, 2);
     cp << 0, 0, 1, 0.2, 2, 0.8, 2.6, 1.9, 2.8, 3.1, 2.5, 4.0;

@@ -10,6 +10,7 @@ using std::isnan;
 #include <boost/math/interpolators/catmull_rom.hpp>
 #include <boost/math/interpolators/makima.hpp>
 #include <boost/math/interpolators/pchip.hpp>
+#include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <cstdlib>
 #include <random>
 #include <sstream>
@@ -31,6 +32,21 @@ int property_sets() {
 }
 
 double diagonal(const PointList& p) { return (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm(); }
+
+// A seeded planar walk: steps 0.2–1, heading changes within ±1.2 rad.
+PointList random_walk_points(Eigen::Index n) {
+    std::mt19937 rng(1);
+    std::uniform_real_distribution<double> turn(-1.2, 1.2), step(0.2, 1.0);
+    PointList p(n, 2);
+    double heading = 0.0;
+    p.row(0) << 0, 0;
+    for (Eigen::Index i = 1; i < n; ++i) {
+        heading += turn(rng);
+        const double l = step(rng);
+        p.row(i) << p(i - 1, 0) + l * std::cos(heading), p(i - 1, 1) + l * std::sin(heading);
+    }
+    return p;
+}
 
 // Open: a random walk, steps in [0.2, 1], turns in [−150°, 150°]. Closed: a star-shaped polygon
 // (sorted angles, radii in [0.5, 1.5]), so that consecutive points are distinct and the turn is < π.
@@ -240,6 +256,28 @@ TEST_P(EveryMethod, DegenerateInputsHaveDefinedOutcomes) {
     }
 }
 
+// Very long input: 10^6 points of a random walk. Every method interpolates them (all are O(n); the
+// curvature-profile Newton solves 2·10^6 unknowns by sparse LU in about 30 s): every 997th node and
+// the last lie on the curve to 1e-9 of the diagonal, and the curve is finite at those spans' middles.
+TEST_P(EveryMethod, MillionPointsAreInterpolated) {
+    const MethodInfo& m = method_info(GetParam());
+    const PointList p = random_walk_points(1'000'000);
+    const InterpolationResult r = interpolate(m.name, p, false);
+    ASSERT_TRUE(r.outcome.ok() && r.interpolant) << m.name << ": " << r.outcome.message;
+    const Interpolant& a = *r.interpolant;
+    ASSERT_EQ(a.node_parameters.size(), static_cast<std::size_t>(p.rows()));
+    const double tolerance = 1e-9 * diagonal(p);
+    double worst = 0.0;
+    for (std::size_t i = 0; i < a.node_parameters.size(); i += (i + 1 == a.node_parameters.size() ? 1 : std::min<std::size_t>(997, a.node_parameters.size() - 1 - i))) {
+        worst = std::max(worst, (a.curve->point(a.node_parameters[i]) - p.row(static_cast<Eigen::Index>(i)).transpose()).norm());
+        if (i + 1 < a.node_parameters.size()) {
+            ASSERT_TRUE(a.curve->jet(span_parameter(a, i, 0.5), 2).allFinite()) << m.name << " span " << i;
+        }
+    }
+    EXPECT_LE(worst, tolerance) << m.name;
+    std::printf("%s: 10^6 points, worst interpolation error %.2e (diagonal %.0f)\n", m.name.c_str(), worst, diagonal(p));
+}
+
 INSTANTIATE_TEST_SUITE_P(Compare, EveryMethod, ::testing::ValuesIn([] {
                              std::vector<std::string> names;
                              for (const MethodInfo& m : interpolation_methods()) names.push_back(m.name);
@@ -348,6 +386,77 @@ TEST(Compare, TableOnTable1DataHasEveryMethod) {
         }
     EXPECT_THROW(compare_methods(PointList::Zero(5, 3), {}), InvalidInput);
     EXPECT_THROW(method_info("no-such-method"), InvalidInput);
+}
+
+TEST(Compare, PseudoEnergyFromMeasuredPiecesEqualsSpanIntegration) {
+    // span_pseudo_energy sums fairness_measures' pieces where every node is a breakpoint and
+    // integrates afresh otherwise (S-, B2-splines); Σ L²E must not depend on the route: compare with
+    // Σ over spans of (∫|r'|)² ∫κ²ds by adaptive Gauss–Kronrod per span.
+    const PointList p = read_points_csv(std::string(CAGD_SOURCE_DIR) + "/reference/pseudo_energy/data/table1.csv");
+    ComparisonOptions o;
+    o.methods = {"hermite-a", "s-spline-m2", "b2-spline-m1", "curvature-profile"};
+    o.locality = false;
+    for (const MethodComparison& m : compare_methods(p, o)) {
+        ASSERT_EQ(m.status, "ok") << m.method;
+        const Interpolant& a = *m.interpolant;
+        double reference = 0.0;
+        for (std::size_t k = 0; k + 1 < a.node_parameters.size(); ++k) {
+            const double t0 = a.node_parameters[k], t1 = a.node_parameters[k + 1];
+            double L = 0.0, E = 0.0;
+            std::vector<double> cuts{t0};
+            for (double b : a.curve->breakpoints())
+                if (b > t0 && b < t1) cuts.push_back(b);
+            cuts.push_back(t1);
+            for (std::size_t q = 0; q + 1 < cuts.size(); ++q) {
+                L += boost::math::quadrature::gauss_kronrod<double, 31>::integrate([&](double t) { return a.curve->derivatives(t, 1).norm(); }, cuts[q], cuts[q + 1], 15, 1e-13);
+                E += boost::math::quadrature::gauss_kronrod<double, 31>::integrate(
+                    [&](double t) {
+                        const double k2 = analysis::curvature(*a.curve, t);
+                        return k2 * k2 * a.curve->derivatives(t, 1).norm();
+                    },
+                    cuts[q], cuts[q + 1], 15, 1e-13);
+            }
+            reference += L * L * E;
+        }
+        EXPECT_NEAR(m.pseudo_energy, reference, 1e-9 * reference) << m.method;
+        EXPECT_NEAR(m.length, analysis::adaptive_arc_length(*a.curve, 1e-13), 1e-10 * m.length) << m.method;
+    }
+}
+
+TEST(Compare, FigureSamplingKeepsLongInputsWithinTheBudget) {
+    EXPECT_EQ(figure_sampling(13, 10000).per_span, 32);
+    EXPECT_EQ(figure_sampling(13, 10000).span_stride, 1);
+    EXPECT_EQ(figure_sampling(999, 10000).per_span, 9);   // 999 spans × 10 samples ≤ 10^4
+    EXPECT_EQ(figure_sampling(999, 10000).span_stride, 1);
+    const FigureSampling big = figure_sampling(99999, 10000);
+    EXPECT_EQ(big.per_span, 1);
+    EXPECT_EQ(big.span_stride, 20);
+    EXPECT_THROW(figure_sampling(0, 10000), InvalidInput);
+    EXPECT_THROW(figure_sampling(10, 1), InvalidInput);
+
+    // Strided figure data: rows per method consecutive, the methods table points at them, and the
+    // arc length of the profile still runs over the skipped spans (its last s is the curve length).
+    const PointList p = random_walk_points(2001);
+    ComparisonOptions o;
+    o.methods = {"hermite-a", "cubic-b"};
+    o.locality = false;
+    const std::vector<MethodComparison> c = compare_methods(p, o);
+    const FigureSampling sampling = figure_sampling(2000, 400);
+    ASSERT_EQ(sampling.span_stride, 10);
+    const FigureData d = comparison_figure_data(c, p, sampling);
+    const std::vector<std::vector<std::string>> table = figure_methods_rows(c, d);
+    ASSERT_EQ(table.size(), 2u);
+    EXPECT_EQ(figure_methods_header().size(), table[0].size());
+    std::size_t expected_first = 0;
+    for (std::size_t i = 0; i < 2; ++i) {
+        const std::size_t first = std::stoul(table[i][4]), count = std::stoul(table[i][5]);   // curvature rows
+        EXPECT_EQ(first, expected_first);
+        EXPECT_EQ(count, 200u * 2u + 2u) << "200 sampled spans, both ends, plus the last span";
+        for (std::size_t r = first; r < first + count; ++r) ASSERT_EQ(d.profiles[r][0], static_cast<double>(i));
+        EXPECT_NEAR(d.profiles[first + count - 1][1], c[i].length, 1e-6 * c[i].length) << c[i].method;
+        expected_first += count;
+    }
+    EXPECT_EQ(expected_first, d.profiles.size());
 }
 
 // The point reader: header or none, comments, blank lines, whitespace, 2 or 3 columns; errors

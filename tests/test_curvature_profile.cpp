@@ -137,6 +137,60 @@ TEST(IntrinsicCurve, JetMatchesFiniteDifferencesOfPosition) {
     }
 }
 
+TEST(IntrinsicCurve, DerivativesAreTheJetWithoutItsPosition) {
+    const CurvatureProfileProblem P = closed_problem(3);
+    const IntrinsicCurve c(Eigen::Vector2d(1, 2), TangentAngleSpline::from_unknowns(P.layout, c2_start(P)));
+    for (double s : {0.0, 0.5, 3.3, 9.1, c.length()})
+        for (int order = 1; order <= 4; ++order) {
+            const Eigen::MatrixXd d = c.derivatives(s, order), j = c.jet(s, order);
+            ASSERT_EQ(d.rows(), order);
+            EXPECT_EQ(d, j.bottomRows(order)) << "s = " << s << ", order " << order;
+        }
+    EXPECT_THROW(c.derivatives(1.0, 0), InvalidInput);
+    EXPECT_THROW(c.derivatives(-0.1, 1), InvalidInput);
+    // The default (a curve that does not override it) slices the jet.
+    const Curve& base = c;
+    EXPECT_EQ(base.Curve::derivatives(2.0, 3), c.jet(2.0, 3).bottomRows(3));
+}
+
+TEST(TangentAngleSpline, LocalKnotsAreTheFarinKnotsShiftedToTheSegmentStart) {
+    const CurvatureProfileProblem P = fig3_problem();
+    const TangentAngleSpline psi = TangentAngleSpline::from_unknowns(P.layout, c2_start(P));
+    const std::vector<double> v = psi.farin_knots();
+    const int p = psi.degree();
+    for (int j = 0; j < psi.segments(); ++j) {
+        const std::vector<double> local = psi.local_farin_knots(j);
+        ASSERT_EQ(local.size(), static_cast<std::size_t>(2 * p));
+        const int k0 = P.layout.last_knot_of_breakpoint(j) - p + 1;
+        for (int m = 0; m < 2 * p; ++m)
+            EXPECT_NEAR(local[static_cast<std::size_t>(m)], v[static_cast<std::size_t>(k0 + m)] - psi.breakpoints()[static_cast<std::size_t>(j)], 1e-13) << j << " " << m;
+    }
+}
+
+TEST(CurvatureProfileDesign, LongOpenSplineConvergesToTheTolerance) {
+    // 6·10^4 points of a random walk (arc length 3.6·10^4): with absolute knots the knot differences
+    // lost ε·w each and Newton settled at ‖f‖∞ = 2.8e-12 > 1e-12 ("no solution"; checked by
+    // putting the absolute knots back).
+    std::mt19937 rng(1);
+    std::uniform_real_distribution<double> turn(-1.2, 1.2), step(0.2, 1.0);
+    PointList p(60000, 2);
+    double heading = 0.0;
+    p.row(0) << 0, 0;
+    for (Eigen::Index i = 1; i < p.rows(); ++i) {
+        heading += turn(rng);
+        const double l = step(rng);
+        p.row(i) << p(i - 1, 0) + l * std::cos(heading), p(i - 1, 1) + l * std::sin(heading);
+    }
+    const std::vector<SegmentShape> free(static_cast<std::size_t>(p.rows() - 1), SegmentShape::free);
+    const KnotLayout layout = span_layout(free);
+    CurvatureProfileProblem problem{p, layout, segment_shapes(layout, free), {}, false, 0};
+    add_natural_open_ends(problem);
+    const CurvatureProfileSolution sol = solve_curvature_profile_auto(problem);
+    ASSERT_TRUE(sol.outcome.ok()) << sol.outcome.message;
+    EXPECT_LE(sol.history.back().residual, 1e-12 * 1.0);   // data_scale = max(1, longest chord) = 1
+    EXPECT_LE(sol.history.size(), 8u);
+}
+
 TEST(IntrinsicCurve, ProfileSamplesShowOneSidedCurvatureAtJoins) {
     const CurvatureProfileProblem P = fig3_problem();
     const CurvatureProfileSolution sol = solve_curvature_profile(P);
@@ -218,6 +272,21 @@ TEST(CurvatureProfileDesign, ClosedClothoidSplineSparseAndDenseAgree) {
     EXPECT_LT(v.interpolation_error, 1e-10);
     const TangentAngleSpline& psi = a.curve->tangent_angle();
     EXPECT_NEAR(psi.angle(5, true) - psi.angle(0, false), 2 * kPi, 1e-12);   // counter-clockwise: turns = +1
+}
+
+TEST(CurvatureProfileDesign, DivergingIterationStopsEarly) {
+    // Found by fuzz_interpolate: a closed clothoid spline through a hairpin that revisits (2, 1).
+    // Newton diverges; it used to spend 50 iterations on ever more winding ψ (3 s at -O2, a
+    // libFuzzer timeout under ASan). Now: no_convergence naming the divergence.
+    PointList p(6, 2);
+    p << 0, 0, 2, 1, 1, 0, 2, 1, 7.5, 0, 9, 2.5;
+    const std::vector<SegmentShape> free(6, SegmentShape::free);
+    const KnotLayout layout = span_layout(free);
+    const CurvatureProfileProblem problem{p, layout, segment_shapes(layout, free), {}, true, 0};
+    const CurvatureProfileSolution sol = solve_curvature_profile(problem);
+    EXPECT_EQ(sol.outcome.status, Status::no_convergence);
+    EXPECT_NE(sol.outcome.message.find("diverged at iteration"), std::string::npos) << sol.outcome.message;
+    EXPECT_FALSE(sol.curve.has_value());
 }
 
 TEST(CurvatureProfileDesign, InconsistentArcIsNoSolutionNotAWrongCurve) {

@@ -1,10 +1,12 @@
 # The figures of a method comparison (`cagd compare`, and the comparisons in the report).
 # Set before loading: datadir, prefix (file-name prefix inside datadir, may be ''), heading (a
 # title line), and optionally formats (default "png svg"), figures (default "curves combs
-# curvature") and the file names f_methods, f_points, f_curves, f_combs, f_kappa. Reads prefix.'methods.csv' (index,
-# method: the names, in the order of the index column), 'points.csv' (x,y), 'curves.csv'
-# (index,x,y), 'combs.csv' (index,x,y,tip_x,tip_y) and 'curvature.csv' (index,s,kappa);
-# writes prefix.'curves', 'combs' and 'curvature' in each format. gnuplot only draws.
+# curvature"), point_every (draw every n-th data point; default 1) and the file names f_methods,
+# f_points, f_curves, f_combs, f_kappa. Reads prefix.'methods.csv' (index, method, and per figure
+# file the first row and row count of each method: compare/method_comparison.hpp), 'points.csv'
+# (x,y), 'curves.csv' (index,x,y), 'combs.csv' (index,x,y,tip_x,tip_y) and 'curvature.csv'
+# (index,s,kappa); writes prefix.'curves', 'combs' and 'curvature' in each format. A method's rows
+# are read with `every ::first::last` (gnuplot stops reading there). gnuplot only draws.
 # This file is not a figure of its own: scripts/reproduce.sh skips it, and `cagd compare` embeds it.
 set datafile separator ','
 set grid lc rgb '#dddddd'
@@ -16,11 +18,18 @@ if (!exists("f_points")) f_points = datadir.'/'.prefix.'points.csv'
 if (!exists("f_curves")) f_curves = datadir.'/'.prefix.'curves.csv'
 if (!exists("f_combs")) f_combs = datadir.'/'.prefix.'combs.csv'
 if (!exists("f_kappa")) f_kappa = datadir.'/'.prefix.'curvature.csv'
-names = system("tail -n +2 '".f_methods."' | cut -d, -f2 | tr '\n' ' '")
+if (!exists("point_every")) point_every = 1
+column_words(k) = system("tail -n +2 '".f_methods."' | cut -d, -f".k." | tr '\n' ' '")
+names = column_words(2)
+curves_first = column_words(3); curves_count = column_words(4)
+kappa_first = column_words(5); kappa_count = column_words(6)
+combs_first = column_words(7); combs_count = column_words(8)
 n = words(names)
+# rows of method i in a figure file: first(list, i) .. last(list, counts, i) (last < first when none)
+first(list, i) = int(word(list, i))
+last(list, counts, i) = int(word(list, i)) + int(word(counts, i)) - 1
 cols = n <= 4 ? n : (n <= 9 ? 3 : (n <= 16 ? 4 : 5))
 rows = int((n + cols - 1) / cols)
-pick(i, v) = (column(1) == i - 1 ? v : NaN)
 do for [t in formats] {
   # 1. every curve over the points
   if (strstrt(figures, "curves") > 0) {
@@ -31,8 +40,8 @@ do for [t in formats] {
   set key outside right top noenhanced
   set xlabel 'x'
   set ylabel 'y'
-  plot for [i=1:n] f_curves skip 1 using 2:(pick(i, $3)) with lines lw 1.5 lc i title word(names, i), \
-       f_points skip 1 using 1:2 with points pt 7 ps 0.8 lc rgb '#000000' title 'data'
+  plot for [i=1:n] f_curves skip 1 every ::first(curves_first, i)::last(curves_first, curves_count, i) using 2:3 with lines lw 1.5 lc i title word(names, i), \
+       f_points skip 1 every point_every using 1:2 with points pt 7 ps 0.8 lc rgb '#000000' title 'data'
   unset output
   }
   # 2. per method: curve and curvature comb
@@ -40,19 +49,31 @@ do for [t in formats] {
   set size ratio -1
   if (t eq "png") { set terminal pngcairo size 360*cols,300*rows enhanced font 'DejaVu Sans,9' } else { set terminal svg size 360*cols,300*rows enhanced font 'DejaVu Sans,9' }
   set output datadir.'/'.prefix.'combs.'.t
-  set multiplot layout rows,cols title heading.': curvature combs (teeth -c κ n; c per method: 95th percentile of |κ| = 10 % of the diagonal)' noenhanced
+  # the data's box grown by 30 % of its diagonal: the 5 % of teeth longer than 10 % of it are cut
+  # at the frame instead of shrinking the curve to a dot
+  stats f_points skip 1 using 1:2 nooutput
+  margin = 0.3 * sqrt((STATS_max_x - STATS_min_x)**2 + (STATS_max_y - STATS_min_y)**2)
+  set xrange [STATS_min_x - margin:STATS_max_x + margin]
+  set yrange [STATS_min_y - margin:STATS_max_y + margin]
+  set clip two
+  set multiplot layout rows,cols title heading.': curvature combs (teeth -c κ n; c per method: 95th percentile of |κ| = 10 % of the diagonal; frame: data box + 30 %)' noenhanced
   unset key
   unset xlabel
   unset ylabel
   do for [i=1:n] {
     set title word(names, i) noenhanced
-    plot f_combs skip 1 using (pick(i, $2)):3:($4 - $2):($5 - $3) with vectors nohead lc rgb '#9ecae1', \
-         f_combs skip 1 using (pick(i, $4)):5 with lines lc rgb '#6baed6', \
-         f_curves skip 1 using (pick(i, $2)):3 with lines lw 1.5 lc rgb '#08306b', \
-         f_points skip 1 using 1:2 with points pt 7 ps 0.5 lc rgb '#000000'
+    if (int(word(combs_count, i)) > 0) {
+      plot f_combs skip 1 every ::first(combs_first, i)::last(combs_first, combs_count, i) using 2:3:($4 - $2):($5 - $3) with vectors nohead lc rgb '#9ecae1', \
+           f_combs skip 1 every ::first(combs_first, i)::last(combs_first, combs_count, i) using 4:5 with lines lc rgb '#6baed6', \
+           f_curves skip 1 every ::first(curves_first, i)::last(curves_first, curves_count, i) using 2:3 with lines lw 1.5 lc rgb '#08306b', \
+           f_points skip 1 every point_every using 1:2 with points pt 7 ps 0.5 lc rgb '#000000'
+    } else {
+      plot f_points skip 1 every point_every using 1:2 with points pt 7 ps 0.5 lc rgb '#000000'
+    }
   }
   unset multiplot
   unset output
+  set autoscale xy
   }
   # 3. per method: curvature profile κ(s)
   if (strstrt(figures, "curvature") > 0) {
@@ -65,7 +86,13 @@ do for [t in formats] {
     set title word(names, i) noenhanced
     set xlabel 's'
     set ylabel 'κ'
-    plot f_kappa skip 1 using 2:(pick(i, $3)) with lines lw 1.2 lc rgb '#d62728'
+    if (int(word(kappa_count, i)) > 0) {
+      plot f_kappa skip 1 every ::first(kappa_first, i)::last(kappa_first, kappa_count, i) using 2:3 with lines lw 1.2 lc rgb '#d62728'
+    } else {
+      set label 1 'no curvature (see the table)' at graph 0.5, graph 0.5 center
+      plot [0:1] [-1:1] NaN notitle
+      unset label 1
+    }
   }
   unset multiplot
   unset output

@@ -33,25 +33,26 @@ std::vector<double> clipped_breaks(const Curve& c, double a, double b) {
     return out;
 }
 
-double speed(const Curve& c, double t) { return c.jet(t, 1).row(1).norm(); }
+double speed(const Curve& c, double t) { return c.derivatives(t, 1).row(0).norm(); }
 }  // namespace
 
 namespace {
+// |r' × r''|² / |r'|⁶ from the first two derivatives (rows 0, 1 of Curve::derivatives); throws
+// naming `who` at a singular point.
+double squared_curvature(const Eigen::MatrixXd& D, double t, const char* who) {
+    const double s2 = D.row(0).squaredNorm();
+    if (!(s2 > 0.0)) fail_input(who, "r'(t) = 0 at t = " + full_precision(t) + "; curvature undefined at a singular point");
+    const double cross2 = std::max(0.0, s2 * D.row(1).squaredNorm() - std::pow(D.row(0).dot(D.row(1)), 2));
+    return cross2 / (s2 * s2 * s2);
+}
+
 double bending_density(const Curve& c, double t) {   // κ² |r'|, the integrand of ∫ κ² ds in t
-    const double k = curvature(c, t);
-    return k * k * speed(c, t);
+    const Eigen::MatrixXd D = c.derivatives(t, 2);
+    return squared_curvature(D, t, "cagd::analysis::curvature") * D.row(0).norm();
 }
 }  // namespace
 
-double curvature(const Curve& c, double t) {
-    const Eigen::MatrixXd J = c.jet(t, 2);
-    const double s2 = J.row(1).squaredNorm();
-    if (!(s2 > 0.0))
-        fail_input("cagd::analysis::curvature", "r'(t) = 0 at t = " + full_precision(t) +
-                                                    "; curvature undefined at a singular point");
-    const double cross2 = std::max(0.0, s2 * J.row(2).squaredNorm() - std::pow(J.row(1).dot(J.row(2)), 2));
-    return std::sqrt(cross2) / (s2 * std::sqrt(s2));
-}
+double curvature(const Curve& c, double t) { return std::sqrt(squared_curvature(c.derivatives(t, 2), t, "cagd::analysis::curvature")); }
 
 Eigen::VectorXd curvature_vector(const Eigen::MatrixXd& J) {
     if (J.rows() < 3) fail_input("cagd::analysis::curvature_vector", "needs a jet of order >= 2, got " + std::to_string(J.rows() - 1));
@@ -65,12 +66,12 @@ double signed_curvature(const Curve& c, double t) {
     if (c.dimension() != 2)
         fail_input("cagd::analysis::signed_curvature", "needs a planar curve, dimension is " +
                                                            std::to_string(c.dimension()));
-    const Eigen::MatrixXd J = c.jet(t, 2);
-    const double s2 = J.row(1).squaredNorm();
+    const Eigen::MatrixXd D = c.derivatives(t, 2);
+    const double s2 = D.row(0).squaredNorm();
     if (!(s2 > 0.0))
         fail_input("cagd::analysis::signed_curvature",
                    "r'(t) = 0 at t = " + full_precision(t) + "; curvature undefined");
-    return (J(1, 0) * J(2, 1) - J(1, 1) * J(2, 0)) / (s2 * std::sqrt(s2));
+    return (D(0, 0) * D(1, 1) - D(0, 1) * D(1, 0)) / (s2 * std::sqrt(s2));
 }
 
 double arc_length(const Curve& c, double a, double b, int pieces) {

@@ -30,6 +30,8 @@ FairnessMeasures fairness_measures(const Curve& c, const PointList& data, const 
         const double energy = piece_bending_energy(c, a, b, pieces);
         m.length += len;
         m.bending_energy += energy;
+        m.piece_lengths.push_back(len);
+        m.piece_energies.push_back(energy);
         m.pseudo_energy += len * len * energy;
         const double chord = (c.point(b) - c.point(a)).norm();
         double spike = 0.0;

@@ -35,6 +35,8 @@ struct FairnessMeasures {
     double overshoot = 0.0;            // relative to the data's bounding-box diagonal
     double max_spike = 0.0;            // max over spans of max |κ| · chord
     int corners = 0;                   // spans with |κ| · chord > corner_threshold
+    // Per piece between consecutive breakpoints (what the totals above sum): length L_k and ∫κ² ds E_k.
+    std::vector<double> piece_lengths, piece_energies;
 };
 
 constexpr double kCornerThreshold = 100.0;

@@ -67,9 +67,10 @@ int run_compare(const CompareArgs& a) {
     std::ofstream(dir + "measures.md") << md;
     std::cout << md;
 
-    // Figure data: about 2·10^4 samples per method whatever the input length.
-    const int per_span = std::max(1, std::min(32, 20000 / static_cast<int>(points.rows())));
-    const compare::FigureData fig = compare::comparison_figure_data(results, points, per_span);
+    // Figure data: at most about 10^4 samples per method whatever the input length (drawing time
+    // grows with the samples: 10^5 points at 4·10^4 samples per method take gnuplot 35 s).
+    const int spans = static_cast<int>(points.rows()) - (a.closed ? 0 : 1);
+    const compare::FigureData fig = compare::comparison_figure_data(results, points, compare::figure_sampling(std::max(spans, 1), 10000));
     {
         repro::CsvWriter w(dir + "points.csv", {"x", "y"});
         for (Eigen::Index i = 0; i < points.rows(); ++i) w.row({points(i, 0), points(i, 1)}, 17);
@@ -78,13 +79,14 @@ int run_compare(const CompareArgs& a) {
     write_rows(dir + "curvature.csv", {"index", "s", "kappa"}, fig.profiles);
     write_rows(dir + "combs.csv", {"index", "x", "y", "tip_x", "tip_y"}, fig.combs);
     {
-        repro::CsvWriter w(dir + "methods.csv", {"index", "method"});
-        for (std::size_t i = 0; i < results.size(); ++i) w.row_text({std::to_string(i), results[i].method});
+        repro::CsvWriter w(dir + "methods.csv", compare::figure_methods_header());
+        for (const auto& row : compare::figure_methods_rows(results, fig)) w.row_text(row);
     }
     std::ofstream(dir + "compare_panels.gp") << kComparePanelsScript;
     if (!a.plot) return 0;
     const std::string settings = "datadir=" + gnuplot_quoted(a.out) + "; prefix=''; heading=" +
-                                 gnuplot_quoted(std::filesystem::path(a.in).filename().string()) + "; formats='png'";
+                                 gnuplot_quoted(std::filesystem::path(a.in).filename().string()) + "; formats='png'; point_every=" +
+                                 std::to_string(std::max<Eigen::Index>(1, points.rows() / 5000));   // ≤ ~5000 dots per panel
     const std::string command = "gnuplot -e " + shell_quoted(settings) + " " + shell_quoted(dir + "compare_panels.gp");
     if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) {
         std::cerr << "cagd compare: gnuplot not found; the figure data and compare_panels.gp are in " << a.out << "\n";

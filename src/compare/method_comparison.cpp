@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 #include "analysis/curve_measures.hpp"
 #include "repro/csv.hpp"
@@ -34,14 +35,27 @@ int spans_moved(const Interpolant& a, const Interpolant& b, double tolerance) {
     return count;
 }
 
-// Σ_k L_k² E_k over the data spans, each span integrated piece by piece between the curve's breakpoints.
-double span_pseudo_energy(const Interpolant& a, int pieces) {
+// Σ_k L_k² E_k over the data spans. Where every node parameter is a breakpoint (all methods but the
+// S- and B2-splines, whose knots sit between the nodes) the pieces fairness_measures measured are
+// summed per span; otherwise each span is integrated afresh, split at the breakpoints inside it.
+double span_pseudo_energy(const Interpolant& a, const analysis::FairnessMeasures& f, int pieces) {
     const Curve& c = *a.curve;
     const std::vector<double> br = c.breakpoints();
-    std::size_t b = 0;
+    const std::vector<double>& nodes = a.node_parameters;
     double total = 0.0;
-    for (std::size_t k = 0; k + 1 < a.node_parameters.size(); ++k) {
-        const double t0 = a.node_parameters[k], t1 = a.node_parameters[k + 1];
+    if (f.piece_lengths.size() + 1 == br.size() && std::includes(br.begin(), br.end(), nodes.begin(), nodes.end())) {
+        std::size_t b = 0;
+        while (br[b] < nodes.front()) ++b;
+        for (std::size_t k = 0; k + 1 < nodes.size(); ++k) {
+            double L = 0.0, E = 0.0;
+            for (; br[b] < nodes[k + 1]; ++b) L += f.piece_lengths[b], E += f.piece_energies[b];
+            total += L * L * E;
+        }
+        return total;
+    }
+    std::size_t b = 0;
+    for (std::size_t k = 0; k + 1 < nodes.size(); ++k) {
+        const double t0 = nodes[k], t1 = nodes[k + 1];
         double L = 0.0, E = 0.0, from = t0;
         while (b < br.size() && br[b] <= t0) ++b;
         for (; b < br.size() && br[b] < t1; ++b) {
@@ -102,13 +116,14 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
         const Curve& curve = *c.interpolant->curve;
         c.spans = static_cast<int>(c.interpolant->node_parameters.size()) - 1;
         const analysis::FairnessSampling sampling = comparison_sampling(static_cast<int>(curve.breakpoints().size()) - 1);
-        c.length = analysis::arc_length(curve, sampling.quadrature_pieces);
         if (options.closed) c.area = analysis::enclosed_area(curve);
         try {
             c.fairness = analysis::fairness_measures(curve, points, sampling);
-            c.pseudo_energy = span_pseudo_energy(*c.interpolant, sampling.quadrature_pieces);
+            c.length = c.fairness->length;
+            c.pseudo_energy = span_pseudo_energy(*c.interpolant, *c.fairness, sampling.quadrature_pieces);
             c.status = "ok";
         } catch (const InvalidInput& e) {   // a sample of zero speed: κ undefined there
+            c.length = analysis::arc_length(curve, sampling.quadrature_pieces);
             c.status = "cusp";
             c.note = e.what();
         }
@@ -179,8 +194,19 @@ std::string comparison_markdown(const std::vector<MethodComparison>& cs, bool cl
     return md.str();
 }
 
-FigureData comparison_figure_data(const std::vector<MethodComparison>& cs, const PointList& points, int per_span) {
-    if (per_span < 1) fail_input("cagd::compare::comparison_figure_data", "per_span must be >= 1, got " + std::to_string(per_span));
+FigureSampling figure_sampling(int spans, int budget) {
+    if (spans < 1 || budget < 2) fail_input("cagd::compare::figure_sampling", "needs spans >= 1 and budget >= 2, got " + std::to_string(spans) + " and " + std::to_string(budget));
+    // A sampled span yields per_span + 1 samples (both ends).
+    const long total = static_cast<long>(spans), b = budget;
+    if (total * 33 <= b) return {32, 1};
+    if (total * 2 <= b) return {static_cast<int>(b / total) - 1, 1};
+    return {1, static_cast<int>((2 * total + b - 1) / b)};
+}
+
+FigureData comparison_figure_data(const std::vector<MethodComparison>& cs, const PointList& points, const FigureSampling& sampling) {
+    const int per_span = sampling.per_span, stride = sampling.span_stride;
+    if (per_span < 1 || stride < 1)
+        fail_input("cagd::compare::comparison_figure_data", "per_span and span_stride must be >= 1, got " + std::to_string(per_span) + " and " + std::to_string(stride));
     FigureData d;
     const double diagonal = data_diagonal(points);
     for (std::size_t i = 0; i < cs.size(); ++i) {
@@ -193,11 +219,16 @@ FigureData comparison_figure_data(const std::vector<MethodComparison>& cs, const
         std::vector<Sample> samples;
         double s = 0.0;
         for (std::size_t k = 0; k + 1 < a.node_parameters.size(); ++k) {
+            const bool last = k + 2 == a.node_parameters.size();
+            if (k % static_cast<std::size_t>(stride) != 0 && !last) {
+                s += analysis::piece_arc_length(*a.curve, a.node_parameters[k], a.node_parameters[k + 1], 1);
+                continue;
+            }
             double previous = a.node_parameters[k];
             for (int j = 0; j <= per_span; ++j) {
                 const double t = span_parameter(a, k, double(j) / per_span);
                 const Eigen::MatrixXd J = j == per_span && t > a.curve->t_min() ? a.curve->jet_from_left(t, 2) : a.curve->jet(t, 2);
-                if (j < per_span || k + 2 == a.node_parameters.size()) d.curves.push_back({index, J(0, 0), J(0, 1)});
+                if (j < per_span || last) d.curves.push_back({index, J(0, 0), J(0, 1)});
                 // One 20-point rule per sample step (analysis::arc_length would search all breakpoints
                 // per call: O(n²) on long inputs); a step across a breakpoint costs plot accuracy only.
                 if (t > previous) s += analysis::piece_arc_length(*a.curve, previous, t, 1);
@@ -218,6 +249,29 @@ FigureData comparison_figure_data(const std::vector<MethodComparison>& cs, const
         for (const Sample& q : samples) d.combs.push_back({index, q.x, q.y, q.x - scale * q.kappa * q.nx, q.y - scale * q.kappa * q.ny});
     }
     return d;
+}
+
+std::vector<std::string> figure_methods_header() {
+    return {"index", "method", "curves_first", "curves_count", "curvature_first", "curvature_count", "combs_first", "combs_count"};
+}
+
+std::vector<std::vector<std::string>> figure_methods_rows(const std::vector<MethodComparison>& cs, const FigureData& d) {
+    std::vector<std::vector<std::string>> out;
+    for (std::size_t i = 0; i < cs.size(); ++i) out.push_back({std::to_string(i), cs[i].method});
+    for (const std::vector<std::vector<double>>* rows : {&d.curves, &d.profiles, &d.combs}) {
+        std::vector<std::size_t> first(cs.size(), 0), count(cs.size(), 0);
+        for (std::size_t r = 0; r < rows->size(); ++r) {
+            const auto m = static_cast<std::size_t>((*rows)[r][0]);
+            if (count[m] == 0) first[m] = r;
+            else if (first[m] + count[m] != r) throw std::logic_error("cagd::compare::figure_methods_rows: rows of method " + std::to_string(m) + " are not consecutive");
+            ++count[m];
+        }
+        for (std::size_t i = 0; i < cs.size(); ++i) {
+            out[i].push_back(std::to_string(first[i]));
+            out[i].push_back(std::to_string(count[i]));
+        }
+    }
+    return out;
 }
 
 }  // namespace cagd::compare

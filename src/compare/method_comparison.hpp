@@ -61,9 +61,24 @@ std::string comparison_markdown(const std::vector<MethodComparison>& c, bool clo
 // comb (method index, x, y, tooth end x, y), the tooth r − c·κ·n (n the left unit normal), c per
 // method such that the 95th percentile of |κ| draws 10 % of the data diagonal (a spike shows as a
 // long tooth without flattening the rest).
+// Long inputs: only every `span_stride`-th span is sampled (the arc length s still runs over every
+// span), so a figure of 10^5 spans stays a few MB; figure_sampling(spans, budget) picks per_span
+// (≤ 32) and the stride for at most about `budget` samples per method (a sampled span gives
+// per_span + 1 samples).
 struct FigureData {
     std::vector<std::vector<double>> curves, profiles, combs;
 };
-FigureData comparison_figure_data(const std::vector<MethodComparison>& c, const PointList& points, int per_span);
+struct FigureSampling {
+    int per_span = 32, span_stride = 1;
+};
+FigureSampling figure_sampling(int spans, int budget);
+FigureData comparison_figure_data(const std::vector<MethodComparison>& c, const PointList& points, const FigureSampling& sampling);
+
+// The methods table of the figure data (methods.csv): index, method, and for each of curves,
+// curvature and combs the first data row of that method (0-based after the header) and its row
+// count. A method's rows are consecutive, so the plot script reads them with gnuplot's
+// `every ::first::last`, which stops there — filtering whole files per panel costs methods² rows.
+std::vector<std::string> figure_methods_header();
+std::vector<std::vector<std::string>> figure_methods_rows(const std::vector<MethodComparison>& c, const FigureData& d);
 
 }  // namespace cagd::compare

@@ -193,11 +193,46 @@ SignAnalysis sign_on_unit_interval(const BernsteinPolynomial& p, int max_depth) 
     return out;
 }
 
-std::vector<double> bernstein_basis_values(int degree, double t) {
+namespace {
+
+void require_basis_arguments(int degree, double t) {
     if (degree < 0) fail_input("cagd::bernstein_basis_values", "degree " + std::to_string(degree) + " < 0");
     if (!(t >= 0.0 && t <= 1.0)) fail_input("cagd::bernstein_basis_values", "t = " + full_precision(t) + " outside [0, 1]");
+}
+
+// B_{0..d,d}(t) by the triangle of convex combinations (d ≤ kSmallBernsteinDegree).
+void small_degree_basis(int d, double t, double* b) {
+    const double s = 1.0 - t;
+    b[0] = 1.0;
+    for (int k = 1; k <= d; ++k) {
+        b[k] = t * b[k - 1];
+        for (int i = k - 1; i > 0; --i) b[i] = s * b[i] + t * b[i - 1];
+        b[0] *= s;
+    }
+}
+
+}  // namespace
+
+void bernstein_basis_values(int degree, double t, std::span<double> out) {
+    require_basis_arguments(degree, t);
+    if (out.size() != static_cast<std::size_t>(degree) + 1)
+        fail_input("cagd::bernstein_basis_values", "output holds " + std::to_string(out.size()) + " values; degree " + std::to_string(degree) + " needs " + std::to_string(degree + 1));
+    if (degree <= kSmallBernsteinDegree) {
+        small_degree_basis(degree, t, out.data());
+        return;
+    }
+    const std::vector<double> b = bernstein_basis_values(degree, t);
+    std::copy(b.begin(), b.end(), out.begin());
+}
+
+std::vector<double> bernstein_basis_values(int degree, double t) {
+    require_basis_arguments(degree, t);
     const int d = degree;
     std::vector<double> b(static_cast<std::size_t>(d + 1), 0.0);
+    if (d <= kSmallBernsteinDegree) {
+        small_degree_basis(d, t, b.data());
+        return b;
+    }
     if (t == 0.0 || t == 1.0) {
         b[t == 0.0 ? 0 : d] = 1.0;
         return b;

@@ -31,6 +31,11 @@ PieceLocation locate_unit_piece_from_left(const char* who, double u, int pieces,
     return {s, u - s};
 }
 
+Eigen::MatrixXd Curve::derivatives(double t, int order) const {
+    if (order < 1) fail_input("cagd::Curve::derivatives", "order must be >= 1, got " + std::to_string(order));
+    return jet(t, order).bottomRows(order);
+}
+
 Eigen::MatrixXd Curve::jet_from_left(double t, int order) const {
     if (breakpoints().size() > 2)
         throw std::logic_error("cagd::Curve::jet_from_left: a curve of several pieces must override it");

@@ -24,6 +24,11 @@ public:
     // measured by comparing the two. The default serves curves of one piece (it throws
     // std::logic_error for a curve of several pieces that does not override it).
     virtual Eigen::MatrixXd jet_from_left(double t, int order) const;
+    // The derivatives without the position: row k − 1 is d^k r/dt^k at t, k = 1..order (order ≥ 1),
+    // i.e. jet(t, order) without its first row. Speed, curvature and their integrals need only
+    // these. The default slices jet(); a curve whose position is costly (IntrinsicCurve: a
+    // quadrature per point) overrides it.
+    virtual Eigen::MatrixXd derivatives(double t, int order) const;
 
     Eigen::VectorXd point(double t) const { return jet(t, 0).row(0).transpose(); }
 };

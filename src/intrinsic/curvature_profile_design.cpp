@@ -53,11 +53,12 @@ struct SegmentJet {
 
 using Jet = ceres::Jet<double, 10>;
 
-SegmentJet segment_jet(const TangentAngleSpline& psi, const std::vector<double>& v, int j) {
+SegmentJet segment_jet(const TangentAngleSpline& psi, int j) {
     const KnotLayout& L = psi.layout();
     const int p = L.degree(), last = L.last_knot_of_breakpoint(j), k0 = last - p + 1;
+    const std::vector<double> v = psi.local_farin_knots(j);   // the extraction is invariant under a shift of all knots
     Jet u[6], c[4], b[4];
-    for (int m = 0; m < 2 * p; ++m) u[m] = Jet(v[static_cast<std::size_t>(k0 + m)], m);
+    for (int m = 0; m < 2 * p; ++m) u[m] = Jet(v[static_cast<std::size_t>(m)], m);
     for (int m = 0; m <= p; ++m) c[m] = Jet(psi.de_boor()(k0 + m), 2 * p + m);
     detail::bezier_from_de_boor(p, u, c, b);
     SegmentJet out;
@@ -239,10 +240,9 @@ DesignSystem design_system(const CurvatureProfileProblem& P, const Eigen::Vector
     const KnotLayout& L = P.layout;
     const int p = L.degree(), k = L.segments(), rows = design_equations(P), cols = design_unknowns(P);
     const TangentAngleSpline psi = TangentAngleSpline::from_unknowns(L, u);
-    const std::vector<double> v = psi.farin_knots();
     std::vector<SegmentJet> jets;
     jets.reserve(static_cast<std::size_t>(k));
-    for (int j = 0; j < k; ++j) jets.push_back(segment_jet(psi, v, j));
+    for (int j = 0; j < k; ++j) jets.push_back(segment_jet(psi, j));
     std::vector<Eigen::Triplet<double>> triplets;
     RowWriter write(L, with_jacobian ? &triplets : nullptr);
     DesignSystem out;
@@ -350,7 +350,7 @@ Eigen::VectorXd c2_start(const CurvatureProfileProblem& P) {
     const int n = L.spans();
     std::vector<double> span_length(static_cast<std::size_t>(n)), seg(static_cast<std::size_t>(L.segments()));
     for (int i = 0; i < n; ++i) {
-        span_length[static_cast<std::size_t>(i)] = analysis::arc_length(c2, i, i + 1, 8);
+        span_length[static_cast<std::size_t>(i)] = analysis::piece_arc_length(c2, i, i + 1, 1);   // one cubic piece, one 20-point rule: ample for a start
         const int a = L.first_segment(i), b = L.end_segment(i);
         for (int j = a; j < b; ++j) seg[static_cast<std::size_t>(j)] = span_length[static_cast<std::size_t>(i)] / (b - a);
     }
@@ -417,6 +417,15 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
     const char* method = options.step == NewtonStep::pseudo_inverse ? "Newton with the Moore–Penrose step" : "Newton with sparse LU";
     sol.u = start;
     for (int it = 0;; ++it) {
+        // A diverging iterate winds ψ by hundreds of turns between neighbouring ordinates; the
+        // integrals of such a segment cost O(turning) and mean nothing: stop it as unconverged.
+        const Eigen::VectorXd ordinates = sol.u.tail(P.layout.ordinates());
+        const double turning = ordinates.size() > 1 ? (ordinates.tail(ordinates.size() - 1) - ordinates.head(ordinates.size() - 1)).lpNorm<Eigen::Infinity>() : 0.0;
+        if (!(turning <= kMaxOrdinateTurning)) {
+            sol.outcome = {Status::no_convergence, std::string(method) + " diverged at iteration " + std::to_string(it) + ": neighbouring tangent-angle ordinates differ by " + fmt(turning) +
+                                                       " rad (limit " + fmt(kMaxOrdinateTurning) + ")"};
+            return sol;
+        }
         const DesignSystem sys = design_system(P, sol.u, true);
         const double res = sys.f.lpNorm<Eigen::Infinity>();
         if (!std::isfinite(res)) {
@@ -536,12 +545,15 @@ void add_natural_open_ends(CurvatureProfileProblem& problem) {
 }
 
 CurvatureProfileSolution solve_curvature_profile_auto(const CurvatureProfileProblem& problem) {
+    // The Moore–Penrose step forms the Jacobian densely: n² doubles and O(n³) work per iteration
+    // (2000 unknowns: 32 MB, seconds). Above that the sparse-LU outcome is the answer.
+    constexpr int kDenseFallbackUnknowns = 2000;
     const int m = design_equations(problem), n = design_unknowns(problem);
     if (m == n && n > 200) {
         NewtonOptions lu;
         lu.step = NewtonStep::sparse_lu;
         CurvatureProfileSolution sol = solve_curvature_profile(problem, lu);
-        if (sol.outcome.ok() && sol.curve) return sol;
+        if ((sol.outcome.ok() && sol.curve) || n > kDenseFallbackUnknowns) return sol;
     }
     return solve_curvature_profile(problem);
 }

@@ -35,8 +35,11 @@
 // Outcomes (returned, never thrown): ok when ‖f‖∞ ≤ tolerance·max(1, largest chord); no_solution
 // when the iteration settles (step < 1e−13·(1 + ‖u‖)) on a least-squares point with ‖f‖∞ above
 // that — the conditions are inconsistent (e.g. an arc span no arc with the given tangents joins);
-// no_convergence when max_iterations pass. The message says what was tried, the residual, the
-// rank, and the worst equation.
+// no_convergence when max_iterations pass, or when an iterate diverges: neighbouring de Boor
+// ordinates B_i, B_{i+1} more than kMaxOrdinateTurning = 1000 rad apart (160 turns; the integrals
+// of eq 3 would cost O(turning) per segment — found by fuzzing: a closed 6-point hairpin spent
+// seconds on 50 such iterations). The message says what was tried, the residual, the rank, and the
+// worst equation.
 // Preconditions (InvalidInput): ≥ 2 points (closed: ≥ 3), finite, no coincident consecutive
 // points (closed: last ≠ first); the layout's span count n matches the points; one shape per
 // segment; linear_curvature only for p = 3; conditions name existing breakpoints and finite values
@@ -102,6 +105,7 @@ DesignSystem design_system(const CurvatureProfileProblem& problem, const Eigen::
 // The starting vector from the parametric cubic C2 interpolant.
 Eigen::VectorXd c2_start(const CurvatureProfileProblem& problem);
 
+inline constexpr double kMaxOrdinateTurning = 1000.0;
 enum class NewtonStep { pseudo_inverse, sparse_lu };
 struct NewtonOptions {
     NewtonStep step = NewtonStep::pseudo_inverse;
@@ -133,7 +137,8 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
 // open end whose segment is free; lines and arcs already fix their curvature), appended to
 // problem.conditions; and the solve that picks the step — sparse LU for square systems of more than
 // 200 unknowns (O(n) per iteration), the Moore–Penrose step otherwise or when the LU iteration
-// fails (a singular or unconverged iteration).
+// fails (a singular or unconverged iteration) on at most 2000 unknowns. Above 2000 unknowns a failed
+// LU iteration is returned as it is: the dense step would need n² doubles (10^5 points: 80 GB).
 void add_natural_open_ends(CurvatureProfileProblem& problem);
 CurvatureProfileSolution solve_curvature_profile_auto(const CurvatureProfileProblem& problem);
 

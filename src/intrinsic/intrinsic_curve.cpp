@@ -28,6 +28,17 @@ Eigen::MatrixXd IntrinsicCurve::jet_from_left(double s, int order) const {
     return jet_in_segment(j, s, order);
 }
 
+namespace {
+// Rows first.. of a jet: d^k r/ds^k, k = 1..order, from the ψ jet a = (ψ, ψ', …) of segment j.
+void write_derivative_rows(const Eigen::VectorXd& a, int order, Eigen::MatrixXd& out, int first) {
+    const Eigen::RowVector2d e(std::cos(a(0)), std::sin(a(0))), n(-std::sin(a(0)), std::cos(a(0)));
+    out.row(first) = e;
+    if (order >= 2) out.row(first + 1) = a(1) * n;
+    if (order >= 3) out.row(first + 2) = a(2) * n - a(1) * a(1) * e;
+    if (order >= 4) out.row(first + 3) = (a(3) - a(1) * a(1) * a(1)) * n - 3.0 * a(1) * a(2) * e;
+}
+}  // namespace
+
 Eigen::MatrixXd IntrinsicCurve::jet_in_segment(int j, double s, int order) const {
     if (order < 0 || order > 4) fail_input("intrinsic::IntrinsicCurve::jet", "order must be in 0..4, got " + std::to_string(order));
     const double w = psi_.breakpoints()[static_cast<std::size_t>(j)], d = psi_.segment_lengths()[static_cast<std::size_t>(j)];
@@ -35,12 +46,14 @@ Eigen::MatrixXd IntrinsicCurve::jet_in_segment(int j, double s, int order) const
     Eigen::MatrixXd out(order + 1, 2);
     out.row(0) = points_.row(j) + d * direction_integrals(psi_.bezier().row(j).transpose(), tau).transpose();
     if (order == 0) return out;
-    const Eigen::VectorXd a = psi_.jet_in_segment(j, s, std::max(order - 1, 0));
-    const Eigen::RowVector2d e(std::cos(a(0)), std::sin(a(0))), n(-std::sin(a(0)), std::cos(a(0)));
-    out.row(1) = e;
-    if (order >= 2) out.row(2) = a(1) * n;
-    if (order >= 3) out.row(3) = a(2) * n - a(1) * a(1) * e;
-    if (order >= 4) out.row(4) = (a(3) - a(1) * a(1) * a(1)) * n - 3.0 * a(1) * a(2) * e;
+    write_derivative_rows(psi_.jet_in_segment(j, s, order - 1), order, out, 1);
+    return out;
+}
+
+Eigen::MatrixXd IntrinsicCurve::derivatives(double s, int order) const {
+    if (order < 1 || order > 4) fail_input("intrinsic::IntrinsicCurve::derivatives", "order must be in 1..4, got " + std::to_string(order));
+    Eigen::MatrixXd out(order, 2);
+    write_derivative_rows(psi_.jet_in_segment(psi_.segment_at(s), s, order - 1), order, out, 0);
     return out;
 }
 

@@ -28,6 +28,9 @@ public:
     double t_max() const override { return psi_.length(); }
     Eigen::MatrixXd jet(double s, int order) const override;
     Eigen::MatrixXd jet_from_left(double s, int order) const override;
+    // r', r'', … from ψ alone (e = (cos ψ, sin ψ), n = e rotated by π/2; r' = e, r'' = ψ' n, …):
+    // no position quadrature, so speed and curvature integrals cost a B-spline evaluation each.
+    Eigen::MatrixXd derivatives(double s, int order) const override;
     std::vector<double> breakpoints() const override { return psi_.breakpoints(); }
 
 private:

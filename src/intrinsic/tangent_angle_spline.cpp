@@ -41,8 +41,9 @@ TangentAngleSpline::TangentAngleSpline(KnotLayout layout, std::vector<double> se
     bezier_.resize(k, p + 1);
     for (int j = 0; j < k; ++j) {
         const int last = layout_.last_knot_of_breakpoint(j);
+        const std::vector<double> local = local_farin_knots(j);
         double u[6], c[4], b[4];
-        for (int m = 0; m < 2 * p; ++m) u[m] = v[static_cast<std::size_t>(last - p + 1 + m)];
+        std::copy(local.begin(), local.end(), u);
         for (int m = 0; m <= p; ++m) c[m] = de_boor_(last - p + 1 + m);
         detail::bezier_from_de_boor(p, u, c, b);
         for (int m = 0; m <= p; ++m) bezier_(j, m) = b[m];
@@ -56,6 +57,19 @@ TangentAngleSpline TangentAngleSpline::from_unknowns(const KnotLayout& layout, c
     std::vector<double> lengths;
     for (int j = 0; j < layout.segments(); ++j) lengths.push_back(u(layout.length_index(j)));
     return TangentAngleSpline(layout, lengths, u.tail(layout.ordinates()));
+}
+
+std::vector<double> TangentAngleSpline::local_farin_knots(int segment) const {
+    const int p = layout_.degree(), k0 = layout_.last_knot_of_breakpoint(segment) - p + 1;
+    std::vector<double> out;
+    for (int m = 0; m < 2 * p; ++m) {
+        const int g = layout_.breakpoint_of_knot(k0 + m);
+        double x = 0.0;
+        for (int i = segment; i < g; ++i) x += lengths_[static_cast<std::size_t>(i)];
+        for (int i = g; i < segment; ++i) x -= lengths_[static_cast<std::size_t>(i)];
+        out.push_back(x);
+    }
+    return out;
 }
 
 std::vector<double> TangentAngleSpline::farin_knots() const {
@@ -129,15 +143,16 @@ Eigen::Vector2d direction_integrals(const Eigen::VectorXd& b, double tau, Eigen:
         for (int q = 0; q < rule.size(); ++q) {
             const double t = a + 0.5 * h * (rule.nodes()[static_cast<std::size_t>(q)] + 1.0);
             const double wq = 0.5 * h * rule.weights()[static_cast<std::size_t>(q)];
-            const std::vector<double> B = bernstein_basis_values(p, t);
+            double B[4];
+            bernstein_basis_values(p, t, std::span<double>(B, static_cast<std::size_t>(p) + 1));
             double psi = 0.0;
-            for (int r = 0; r <= p; ++r) psi += b(r) * B[static_cast<std::size_t>(r)];
+            for (int r = 0; r <= p; ++r) psi += b(r) * B[r];
             const double c = std::cos(psi), s = std::sin(psi);
             sum += wq * Eigen::Vector2d(c, s);
             if (weights)
                 for (int r = 0; r <= p; ++r) {
-                    (*weights)(0, r) += wq * c * B[static_cast<std::size_t>(r)];
-                    (*weights)(1, r) += wq * s * B[static_cast<std::size_t>(r)];
+                    (*weights)(0, r) += wq * c * B[r];
+                    (*weights)(1, r) += wq * s * B[r];
                 }
         }
     }

@@ -15,14 +15,10 @@ std::vector<compare::MethodComparison> record_comparison(ArtifactRun& run, const
         for (const auto& row : compare::comparison_rows(results, closed, false)) w.row_text(row);
     }
     {
-        CsvWriter w = run.table(prefix + "methods.csv", {"index", "method"});
-        for (std::size_t i = 0; i < results.size(); ++i) w.row_text({std::to_string(i), results[i].method});
-    }
-    {
         CsvWriter w = run.table(prefix + "points.csv", {"x", "y"});
         for (Eigen::Index i = 0; i < points.rows(); ++i) w.row({points(i, 0), points(i, 1)});
     }
-    const compare::FigureData fig = compare::comparison_figure_data(results, points, 32);
+    const compare::FigureData fig = compare::comparison_figure_data(results, points, compare::FigureSampling{32, 1});
     const auto write = [&](const std::string& name, const std::vector<std::string>& header, const std::vector<std::vector<double>>& rows) {
         CsvWriter w = run.table(prefix + name, header);
         for (const auto& r : rows) w.row(r, 10);
@@ -30,6 +26,10 @@ std::vector<compare::MethodComparison> record_comparison(ArtifactRun& run, const
     write("curves.csv", {"index", "x", "y"}, fig.curves);
     write("curvature.csv", {"index", "s", "kappa"}, fig.profiles);
     write("combs.csv", {"index", "x", "y", "tip_x", "tip_y"}, fig.combs);
+    {
+        CsvWriter w = run.table(prefix + "methods.csv", compare::figure_methods_header());
+        for (const auto& row : compare::figure_methods_rows(results, fig)) w.row_text(row);
+    }
     for (const compare::MethodComparison& c : results) {
         if (!c.interpolant) continue;
         const double reference = analysis::adaptive_arc_length(*c.interpolant->curve, 1e-12);

@@ -56,12 +56,17 @@ int BSplineCurve::find_span(double t) const {
     return static_cast<int>(it - knots_.begin()) - 1;
 }
 
-Eigen::MatrixXd basis_function_derivatives(int p, const std::vector<double>& U, int span,
-                                           double u, int order) {
-    // Piegl & Tiller, The NURBS Book (2nd ed.), algorithm A2.3.
+namespace {
+
+// Piegl & Tiller, The NURBS Book (2nd ed.), algorithm A2.3. The work arrays have at most `Max`
+// rows and columns (Eigen::Dynamic: unbounded): on the stack for the usual low degrees.
+template <int Max>
+Eigen::MatrixXd basis_function_derivatives_a23(int p, const std::vector<double>& U, int span, double u, int order) {
+    using Work = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, Max, Max>;
+    using WorkVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, Max, 1>;
     const int nd = std::min(order, p);
-    Eigen::MatrixXd ndu(p + 1, p + 1), a(2, p + 1);
-    Eigen::VectorXd left(p + 1), right(p + 1);
+    Work ndu(p + 1, p + 1), a(2, p + 1);
+    WorkVector left(p + 1), right(p + 1);
     ndu(0, 0) = 1.0;
     for (int j = 1; j <= p; ++j) {
         left(j) = u - U[span + 1 - j];
@@ -107,6 +112,14 @@ Eigen::MatrixXd basis_function_derivatives(int p, const std::vector<double>& U, 
         factor *= (p - k);
     }
     return ders;
+}
+
+}  // namespace
+
+Eigen::MatrixXd basis_function_derivatives(int p, const std::vector<double>& U, int span, double u, int order) {
+    constexpr int kStackOrder = 8;   // degrees 0..7
+    return p + 1 <= kStackOrder ? basis_function_derivatives_a23<kStackOrder>(p, U, span, u, order)
+                                : basis_function_derivatives_a23<Eigen::Dynamic>(p, U, span, u, order);
 }
 
 Eigen::MatrixXd BSplineCurve::jet(double t, int order) const {
