@@ -3,7 +3,7 @@ BUILD   ?= build
 JOBS    ?= 2
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 
-.PHONY: all deps configure build test reproduce bench clean
+.PHONY: all deps configure build test reproduce bench sanitize clean
 
 all: build
 
@@ -26,6 +26,10 @@ bench: build
 	@cmake --build $(BUILD) -j$(JOBS) --target cagd_bench
 	@mkdir -p results/timing
 	@$(BUILD)/bench/cagd_bench --benchmark_out=results/timing/bench.json --benchmark_out_format=json
+
+# ASan + UBSan tests of the compare modules and a minute of libFuzzer (clang; build-sanitize/).
+sanitize: deps
+	@JOBS=$(JOBS) bash scripts/sanitize.sh $(CURDIR)/build-sanitize
 
 clean:
 	@rm -rf $(BUILD)

@@ -14,6 +14,7 @@ packages=(
   libbenchmark-dev       # make bench
   libcli11-dev           # command line of the cagd tool
   gnuplot-nox            # figures (pngcairo and svg terminals)
+  clang libclang-rt-14-dev         # make sanitize: ASan/UBSan and libFuzzer runtimes
 )
 
 missing=()
