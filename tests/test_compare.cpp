@@ -521,6 +521,6 @@ TEST(Compare, PseudoSplineRotationDeviationIsBounded) {
     }
     std::printf("rotation deviation: none %.2e, exact %.2e, approx %.2e\n", worst[0], worst[1], worst[2]);
     EXPECT_LE(worst[0], 1e-12);
-    EXPECT_LE(worst[1], 1e-7);
-    EXPECT_LE(worst[2], 5e-2);
+    EXPECT_LE(worst[1], 1e-7);    // Brent's tolerance 2^-26 on α (interpolation_methods.hpp)
+    EXPECT_LE(worst[2], 1e-12);   // was 3.5e-3 while the non-convex case followed rounding noise
 }

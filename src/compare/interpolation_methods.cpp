@@ -33,7 +33,7 @@ const std::vector<MethodInfo>& interpolation_methods() {
     static const std::vector<MethodInfo> methods = {
         {"pseudo-spline-none", "pseudo_energy eq (4)-(11), 36-node table, tangents not optimised", 0, 1, "u (unit spans)", I::similarity, true, 2, 3, 2},
         {"pseudo-spline-exact", "pseudo_energy eq (4)-(12), 36-node table, exact tangent optimisation", 0, 1, "u (unit spans)", I::none, true, 2, 3, 2},
-        {"pseudo-spline-approx", "pseudo_energy eq (4)-(12), 36-node table, 3-point approximation", 0, 1, "u (unit spans)", I::none, true, 2, 3, 2},
+        {"pseudo-spline-approx", "pseudo_energy eq (4)-(12), 36-node table, 3-point approximation", 0, 1, "u (unit spans)", I::similarity, true, 2, 3, 2},
         {"cubic-a", "pseudo_energy sec 4.2 cubic spline A (natural, uniform parameter)", 2, 2, "uniform", I::affine, true, 2, 3, 3},
         {"cubic-b", "pseudo_energy sec 4.2 cubic spline B (natural, chord length)", 2, 2, "chord length", I::similarity, true, 2, 3, 3},
         {"hermite-a", "pseudo_energy sec 4.2 Hermite curve A (neighbour chord tangents)", 0, 1, "u (unit spans)", I::similarity, true, 2, 3, 3},

@@ -24,11 +24,13 @@
 // function of the curve's parameter u with dτ/du = dtau_du[k], so d/dτ = (1/dtau_du[k]) d/du. "G^k": the unit tangent (k ≥ 1) and curvature vector (k = 2)
 // agree. Invariance: every method commutes with translations, rotations and uniform scalings
 // (similarity) except Boost's pchip and makima, which act on x and y separately (translation and
-// scaling only), and the pseudo-spline with tangent optimisation (exact and approx modes): measured
-// on 10^4 random sets, translating, rotating or scaling the points moves the exact mode's curve by
-// up to ~2e-8 and the approximate mode's by up to ~7e-3 of the data diagonal, and even a
-// translation alone does (test_compare) — an open defect in the tangent optimisation, not yet
-// traced, so no invariance is claimed for them (the non-optimised mode is exact); methods linear in the points with a fixed parameter (cubic-a, the S-/B2-splines,
+// scaling only), and the pseudo-spline with exact tangent optimisation: Brent's minimiser stops at
+// a relative tolerance of 2^−26 (Boost's limit, half the digits: a smooth minimum cannot be located
+// closer in double precision), so rounding-level changes of w under a similarity move α_i within that tolerance and
+// the curve by up to ~2e-8 of the data diagonal (measured; test_compare bounds it by 1e-7). The
+// approximate mode is invariant up to rounding since its non-convex case is decided against
+// rounding (fairness/pseudo_spline.hpp); before that it moved by up to 3.5e-3 of the diagonal.
+// Methods linear in the points with a fixed parameter (cubic-a, the S-/B2-splines,
 // hosaka-c2-unit) also commute with every affine map.
 //
 // Boost's interpolants are converted, exactly, into our piecewise cubic Hermite form (values and

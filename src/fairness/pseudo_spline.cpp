@@ -90,11 +90,18 @@ double minimise_w(const W& w, double lo, double hi, TangentOptimization mode) {
     const double a = lo + h, b = lo + 2 * h, c = lo + 3 * h;
     const double wa = w(a), wb = w(b), wc = w(c);
     const double curvature = wa - 2 * wb + wc;   // h² × second derivative of the parabola
-    if (curvature > 0.0) {
+    // Differences of w within rounding of its values decide nothing: a parabola that is not clearly
+    // convex is treated as a line (or a constant), and a line or concave parabola is least over the
+    // interval at its lower end. (Deciding by the sign of a curvature that is rounding noise — w is
+    // linear inside a table cell — sent α to lo in one orientation of the points and to lo + ¼ of
+    // the interval in a rotated copy: 3.5e-3 of the diagonal.)
+    const double noise = 64.0 * std::numeric_limits<double>::epsilon() * std::max({std::abs(wa), std::abs(wb), std::abs(wc)});
+    if (curvature > noise) {
         const double vertex = b + h * (wa - wc) / (2.0 * curvature);
         return std::clamp(vertex, lo, hi);
     }
-    return wa <= wb && wa <= wc ? a : (wb <= wc ? b : c);
+    if (std::abs(wa - wc) <= noise) return b;   // flat within rounding
+    return wa < wc ? lo : hi;
 }
 
 }  // namespace

@@ -25,8 +25,15 @@
 // incoming chord φ_{n−1} (the paper's α_n = φ_{n−1} + θ1(α_{n−1}) is the absolute angle).
 //   exact        Brent's method (Boost.Math) on w over the search interval.
 //   approximate  the paper's "three interior points and quadratic interpolation": w at ¼, ½, ¾
-//                of the interval, the vertex of the parabola through them, clamped to the interval;
-//                if the parabola is not convex, the best of the three points.
+//                of the interval, the vertex of the parabola through them, clamped to the interval.
+//                The paper does not say what to do when the parabola is not convex; we take its
+//                least value over the interval, an end point (lo when w(¼) < w(¾), else hi), and
+//                judge convexity and slope against rounding (64 ε max w): a parabola within
+//                rounding of a line is a line, within rounding of a constant gives the middle.
+//                This keeps α continuous in the data, so the mode is invariant under rotation,
+//                scaling and translation up to rounding — deciding by the sign of a rounding-noise
+//                curvature (w is linear within a table cell) moved α by ¼ of the interval in a
+//                rotated copy of the points.
 //   none         w is not minimised: α_i is the direction of P_{i+1} − P_{i−1} (Hermite curve A's
 //                direction, the tangent of the quadratic through the three points at uniform
 //                parameter, Iri–Fujino [7] in section 3). Everything else is as in the method:
