@@ -8,6 +8,7 @@
 
 #include "core/errors.hpp"
 #include "intrinsic/design_verification.hpp"
+#include "random_walk.hpp"
 
 using namespace cagd;
 using namespace cagd::intrinsic;
@@ -171,16 +172,7 @@ TEST(CurvatureProfileDesign, LongOpenSplineConvergesToTheTolerance) {
     // 6·10^4 points of a random walk (arc length 3.6·10^4): with absolute knots the knot differences
     // lost ε·w each and Newton settled at ‖f‖∞ = 2.8e-12 > 1e-12 ("no solution"; checked by
     // putting the absolute knots back).
-    std::mt19937 rng(1);
-    std::uniform_real_distribution<double> turn(-1.2, 1.2), step(0.2, 1.0);
-    PointList p(60000, 2);
-    double heading = 0.0;
-    p.row(0) << 0, 0;
-    for (Eigen::Index i = 1; i < p.rows(); ++i) {
-        heading += turn(rng);
-        const double l = step(rng);
-        p.row(i) << p(i - 1, 0) + l * std::cos(heading), p(i - 1, 1) + l * std::sin(heading);
-    }
+    const PointList p = bench::random_walk(60000, 1, 0.2, 1.0, 1.2);
     const std::vector<SegmentShape> free(static_cast<std::size_t>(p.rows() - 1), SegmentShape::free);
     const KnotLayout layout = span_layout(free);
     CurvatureProfileProblem problem{p, layout, segment_shapes(layout, free), {}, false, 0};

@@ -16,7 +16,6 @@ using namespace cagd;
 using namespace cagd::spline;
 
 namespace {
-double diagonal(const PointList& p) { return (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm(); }
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -46,7 +45,7 @@ int main(int argc, char** argv) {
     // The paper: with k_i near 1 the conventional form gives about the same curve; where k_i varies
     // strongly it does not give the expected shape.
     const HosakaSpline even_chord = hosaka_c2_spline(even, chord_o), even_unit = hosaka_c2_spline(even, unit_o);
-    const double even_gap = analysis::max_distance_same_parameter(even_chord.curve, even_unit.curve) / diagonal(even);
+    const double even_gap = analysis::max_distance_same_parameter(even_chord.curve, even_unit.curve) / bounding_box_diagonal(even);
     run.check("sec3.unit_scale_similar_when_k_near_1", even_gap < 0.01 ? 1.0 : 0.0);
     const analysis::FairnessMeasures fc = analysis::fairness_measures(chord.curve, uneven), fu = analysis::fairness_measures(unit.curve, uneven);
     const int xc = analysis::self_intersections(chord.curve), xu = analysis::self_intersections(unit.curve);

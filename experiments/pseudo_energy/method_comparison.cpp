@@ -22,7 +22,7 @@ int main(int argc, char** argv) {
             if (c.method == "cubic-b") b = &c;
             if (c.method == "hosaka-c2-chord") h = &c;
         }
-        const double diagonal = (points.colwise().maxCoeff() - points.colwise().minCoeff()).norm();
+        const double diagonal = bounding_box_diagonal(points);
         run.validate(prefix + "hosaka_chord_is_cubic_b", "hosaka-c2-chord vs cubic-b: max distance at the same parameter",
                      analysis::max_distance_same_parameter(*b->interpolant->curve, *h->interpolant->curve), 0.0, 1e-12 * diagonal,
                      "the same curve (1e-12 x data diagonal: rounding)");

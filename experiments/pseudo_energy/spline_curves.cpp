@@ -22,7 +22,6 @@ constexpr InterpolationMethod kMethods[] = {InterpolationMethod::cubic_spline_a,
                                             InterpolationMethod::hermite_a, InterpolationMethod::hermite_b,
                                             InterpolationMethod::pseudo_spline};
 
-double diagonal(const PointList& p) { return (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm(); }
 
 // Largest distance between two curves over the spans in [first, last] (same parameter).
 double span_distance(const Curve& a, const Curve& b, int first, int last) {
@@ -109,9 +108,9 @@ int main(int argc, char** argv) {
         if (d.name != "table3" && spans >= 3) {
             for (auto m : {InterpolationMethod::hermite_a, InterpolationMethod::hermite_b}) {
                 const auto h = section42_interpolant(d.points, m, false, oracle, TangentOptimization::exact);
-                const double interior = span_distance(exact.curve, h, 1, spans - 2) / diagonal(d.points);
+                const double interior = span_distance(exact.curve, h, 1, spans - 2) / bounding_box_diagonal(d.points);
                 const double ends = std::max(span_distance(exact.curve, h, 0, 0), span_distance(exact.curve, h, spans - 1, spans - 1)) /
-                                    diagonal(d.points);
+                                    bounding_box_diagonal(d.points);
                 std::string key = d.name + "." + to_string(m);
                 interior_max[key] = std::max(interior_max[key], interior);
                 ends_max[key] = std::max(ends_max[key], ends);
@@ -146,12 +145,12 @@ int main(int argc, char** argv) {
             int worst = 0;
             for (Eigen::Index j = 2; j + 2 < n; ++j) {
                 PointList moved = d->points;
-                moved(j, 1) += 0.01 * diagonal(d->points);
+                moved(j, 1) += 0.01 * bounding_box_diagonal(d->points);
                 const auto a = section42_interpolant(d->points, kMethods[mi], false, oracle, TangentOptimization::exact);
                 const auto b = section42_interpolant(moved, kMethods[mi], false, oracle, TangentOptimization::exact);
                 int count = 0;
                 for (int k = 0; k < a.spans(); ++k)
-                    if (analysis::max_distance_same_parameter(a, b, k, k + 1, 65) > 1e-12 * diagonal(d->points)) ++count;
+                    if (analysis::max_distance_same_parameter(a, b, k, k + 1, 65) > 1e-12 * bounding_box_diagonal(d->points)) ++count;
                 worst = std::max(worst, count);
                 loc.row_text({d->name + (std::isnan(d->a) ? "" : " a=" + repro::format_number(d->a)), to_string(kMethods[mi]),
                               std::to_string(j), std::to_string(a.spans()), std::to_string(count)});
@@ -172,7 +171,7 @@ int main(int argc, char** argv) {
         const Eigen::MatrixXd& n = ps.curve.nodes();
         const double closing = 0.5 * (n(n.rows() - 1, 0) * n(0, 1) - n(n.rows() - 1, 1) * n(0, 0));
         const double L = analysis::adaptive_arc_length(ps.curve, 1e-12), S = analysis::enclosed_area(ps.curve) + closing;
-        const double dl = std::abs(ps.length_from_tables() - L) / L, diag = diagonal(d->points);
+        const double dl = std::abs(ps.length_from_tables() - L) / L, diag = bounding_box_diagonal(d->points);
         worst_length = std::max(worst_length, dl);
         tvi.row_text({d->name + (std::isnan(d->a) ? "" : " a=" + repro::format_number(d->a)), repro::format_number(ps.length_from_tables(), 10),
                       repro::format_number(L, 10), repro::format_number(dl, 3), repro::format_number(ps.area_from_tables(), 10),
@@ -188,7 +187,7 @@ int main(int argc, char** argv) {
         const auto a = section42_interpolant(t1, InterpolationMethod::cubic_spline_a, false, oracle, TangentOptimization::exact);
         const BSplineCurve b = locality::cubic_bspline_interpolant(t1, false);
         run.validate("sec42.cubic_spline_a_vs_bspline", "cubic spline A (Hermite form, tridiagonal) vs the B-spline interpolant of sb2_locality eq (10), Table 1 data: max distance",
-                     analysis::max_distance_same_parameter(a, b), 0.0, 1e-12 * diagonal(t1), "rounding (1e-12 × data diagonal)");
+                     analysis::max_distance_same_parameter(a, b), 0.0, 1e-12 * bounding_box_diagonal(t1), "rounding (1e-12 × data diagonal)");
     }
 
     run.figure("fig10_14", "Figs. 10–14 — Table 1 (Newbery–Garrett) data: cubic spline A, cubic spline B, Hermite A, Hermite B, pseudo-spline (top), and the curvature κ(s) of each (bottom).");

@@ -21,7 +21,7 @@ int main(int argc, char** argv) {
     repro::ArtifactRun run("sb2_locality", "boundary", "3.3", "Boundary conditions by virtual points (section 3.3)", argc, argv);
     PointList p(10, 2);
     p << 0, 0, 1.1, 0.9, 2.0, 1.2, 3.2, 0.4, 4.0, -0.6, 5.3, -0.9, 6.1, 0.1, 7.0, 1.4, 8.4, 1.0, 9.0, 0.2;
-    const double diag = (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm();
+    const double diag = bounding_box_diagonal(p);
     const Eigen::Vector2d t0(1.0, 2.0), t1(1.0, -1.0);
     run.note("Data: the 10 points of `earlier_methods`; given tangents (1, 2) at the start and (1, −1) at the end.");
     auto tab = run.table("boundary.csv", {"form", "m", "kappa_start_natural", "kappa_end_natural", "angle_start_tangent",

@@ -33,7 +33,7 @@ int main(int argc, char** argv) {
         const double t = 2 * M_PI * k / n;
         p.row(k) << 2 * std::cos(t) + 0.3 * std::cos(3 * t), std::sin(t) + 0.2 * std::sin(2 * t);
     }
-    const double diag = (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm();
+    const double diag = bounding_box_diagonal(p);
     run.note("Data: 12 points (2cos θ + 0.3cos 3θ, sin θ + 0.2 sin 2θ), θ = 2πk/12, closed; residuals divided by the bounding-box diagonal " +
              repro::format_number(diag, 6) + ".");
 

@@ -19,7 +19,7 @@ int main(int argc, char** argv) {
     const int n = 61;
     PointList p(n, 2);
     for (int i = 0; i < n; ++i) p.row(i) << i + 0.3 * std::sin(0.9 * i), std::sin(0.45 * i) + 0.4 * std::cos(1.3 * i);
-    const double diag = (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm();
+    const double diag = bounding_box_diagonal(p);
     run.note("Data: 61 points p_i = (i + 0.3 sin 0.9i, sin 0.45i + 0.4 cos 1.3i); distances relative to the diagonal " +
              repro::format_number(diag, 6) + ".");
     const BSplineCurve open_ref = cubic_bspline_interpolant(p, false), closed_ref = cubic_bspline_interpolant(p, true);

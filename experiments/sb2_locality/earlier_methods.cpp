@@ -15,7 +15,7 @@ int main(int argc, char** argv) {
     repro::ArtifactRun run("sb2_locality", "earlier_methods", "3.4", "Earlier extra-point rules I, II(a), II(b) and eq (18)", argc, argv);
     PointList p(10, 2);
     p << 0, 0, 1.1, 0.9, 2.0, 1.2, 3.2, 0.4, 4.0, -0.6, 5.3, -0.9, 6.1, 0.1, 7.0, 1.4, 8.4, 1.0, 9.0, 0.2;
-    const double diag = (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm();
+    const double diag = bounding_box_diagonal(p);
     run.note("Data: 10 points (0,0) (1.1,0.9) (2,1.2) (3.2,0.4) (4,−0.6) (5.3,−0.9) (6.1,0.1) (7,1.4) (8.4,1) (9,0.2), open, natural ends.");
 
     const auto w = extra_point_weights({1, 1});

@@ -43,7 +43,7 @@ int main(int argc, char** argv) {
     repro::ArtifactRun run("sb2_locality", "fig5_fig6", "4", "S vs B2 interpolants for m = 0..3 (Figs. 5, 6)", argc, argv);
     PointList p(11, 2);
     p << 0, 0, 1, 1.5, 2, 2, 3, 1.2, 4, 0.2, 5, 0.5, 6, 2.2, 7, 2.6, 8, 1.5, 9, 0.3, 10, 0;
-    const double diag = (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm();
+    const double diag = bounding_box_diagonal(p);
     run.note("Data (chosen): (0,0) (1,1.5) (2,2) (3,1.2) (4,0.2) (5,0.5) (6,2.2) (7,2.6) (8,1.5) (9,0.3) (10,0), open, natural ends.");
     {
         auto pts = run.table("fig5_points.csv", {"x", "y"});

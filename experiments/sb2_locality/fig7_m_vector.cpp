@@ -28,7 +28,7 @@ int main(int argc, char** argv) {
         p.row(k) << 10 * t + 1.2 * std::sin(9 * t), 6 * (1 - t) + 1.5 * std::sin(13 * t) + 0.6 * std::cos(29 * t);
     }
     run.note("Data (chosen): p_k = (10t + 1.2 sin 9t, 6(1−t) + 1.5 sin 13t + 0.6 cos 29t), t = k/20, k = 0..20; open, natural ends.");
-    const double diag = (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm();
+    const double diag = bounding_box_diagonal(p);
     Options a, b;
     a.m = dotted;
     b.m = solid;

@@ -13,8 +13,6 @@ namespace cagd::compare {
 
 namespace {
 
-double data_diagonal(const PointList& p) { return (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm(); }
-
 // The parameter at fraction f of span k.
 double span_parameter(const Interpolant& a, std::size_t k, double f) {
     const double t0 = a.node_parameters[k], t1 = a.node_parameters[k + 1];
@@ -91,7 +89,7 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
     std::vector<std::string> names = options.methods;
     if (names.empty())
         for (const MethodInfo& m : interpolation_methods()) names.push_back(m.name);
-    const double diagonal = data_diagonal(points);
+    const double diagonal = bounding_box_diagonal(points);
     std::vector<MethodComparison> out;
     for (const std::string& name : names) {
         const MethodInfo& info = method_info(name);
@@ -208,7 +206,7 @@ FigureData comparison_figure_data(const std::vector<MethodComparison>& cs, const
     if (per_span < 1 || stride < 1)
         fail_input("cagd::compare::comparison_figure_data", "per_span and span_stride must be >= 1, got " + std::to_string(per_span) + " and " + std::to_string(stride));
     FigureData d;
-    const double diagonal = data_diagonal(points);
+    const double diagonal = bounding_box_diagonal(points);
     for (std::size_t i = 0; i < cs.size(); ++i) {
         if (!cs[i].interpolant) continue;
         const Interpolant& a = *cs[i].interpolant;

@@ -42,4 +42,9 @@ void require_increasing(const std::vector<double>& values, std::size_t min_count
     }
 }
 
+double bounding_box_diagonal(const PointList& points) {
+    if (points.rows() == 0) return 0.0;
+    return (points.colwise().maxCoeff() - points.colwise().minCoeff()).norm();
+}
+
 }  // namespace cagd

@@ -20,4 +20,8 @@ void require_valid_points(const PointList& points, Eigen::Index min_count,
 // the index and the offending value.
 void require_increasing(const std::vector<double>& values, std::size_t min_count, const std::string& name, const std::string& who);
 
+// The diagonal of the points' axis-aligned bounding box: the length scale against which distances
+// between curves, overshoot and tolerances are measured. 0 for a single point or an empty list.
+double bounding_box_diagonal(const PointList& points);
+
 }  // namespace cagd
