@@ -9,6 +9,7 @@
 
 #include <boost/multiprecision/cpp_bin_float.hpp>
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 #include "aesthetic/cubic_bspline_monotonicity.hpp"
@@ -66,7 +67,7 @@ void BM_degree99_jets(benchmark::State& s) {
 }
 
 void BM_fig7_region(benchmark::State& s) {
-    for (auto _ : s) benchmark::DoNotOptimize(cagd::aesthetic::monotonicity_region(1000, 0.0, M_PI / 2));
+    for (auto _ : s) benchmark::DoNotOptimize(cagd::aesthetic::monotonicity_region(1000, 0.0, std::numbers::pi / 2));
     s.SetItemsProcessed(s.iterations() * 1000000);
 }
 
@@ -74,7 +75,7 @@ void BM_fig7_condition29_baseline(benchmark::State& s) {
     for (auto _ : s) {
         double count = 0;
         for (int i = 0; i < 1000; ++i)
-            for (int j = 0; j < 1000; ++j) count += cagd::aesthetic::condition29(M_PI / 2 * i / 999, M_PI / 2 * j / 999) > 0.0;
+            for (int j = 0; j < 1000; ++j) count += cagd::aesthetic::condition29(std::numbers::pi / 2 * i / 999, std::numbers::pi / 2 * j / 999) > 0.0;
         benchmark::DoNotOptimize(count);
     }
     s.SetItemsProcessed(s.iterations() * 1000000);

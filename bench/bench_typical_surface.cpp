@@ -7,6 +7,7 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 #include "aesthetic/typical_surface.hpp"
@@ -18,7 +19,7 @@ namespace {
 constexpr int kGrid = 200;
 
 const cagd::surface::BezierPatch& fig6_patch() {
-    static const cagd::surface::BezierPatch patch(cagd::aesthetic::log_aesthetic_typical_net(-0.5, -0.6, 1.0, 24, 0.01 * std::acos(-1.0) / 180.0));
+    static const cagd::surface::BezierPatch patch(cagd::aesthetic::log_aesthetic_typical_net(-0.5, -0.6, 1.0, 24, 0.01 * std::numbers::pi / 180.0));
     return patch;
 }
 

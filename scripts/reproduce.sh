@@ -23,6 +23,7 @@ for gp in scripts/plot/*.gp; do
     status=1
   fi
 done
+bash scripts/update-readme-methods.sh "$build" || status=1   # README's method table, from the registry
 "$build/cagd_report" "$root" || status=1
 {
   echo "git revision: $(git rev-parse HEAD 2>/dev/null || echo unknown)"

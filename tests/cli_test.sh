@@ -219,7 +219,9 @@ expect_bad "cp degree, no list"    '0,0\n1,1\n2,0\n'        interpolate --method
 printf 'x,y\n0,0\n1,1\n2,0\n3,1\n4,0\n5,1\n' > "$dir/zig.csv"
 if "$cagd" compare --in "$dir/zig.csv" --out "$dir/cmp" --no-plot > "$dir/cmp.md" 2> /dev/null; then
   rows=$(($(wc -l < "$dir/cmp/measures.csv") - 1))
-  [ "$rows" -eq 19 ] || { echo "FAIL: compare wrote $rows method rows, expected 19"; fails=$((fails+1)); }
+  # one row per configuration of the registry: the backticked names of the table's last column
+  configs=$("$cagd" interpolate --list-methods --markdown | awk -F'|' '/^\| `/ { n += gsub(/`/, "", $(NF-1)) / 2 } END { print n }')
+  [ "$rows" -eq "$configs" ] || { echo "FAIL: compare wrote $rows method rows, the registry has $configs configurations"; fails=$((fails+1)); }
   grep -q '^| curvature-profile | ok |' "$dir/cmp.md" || { echo "FAIL: compare table lacks curvature-profile"; fails=$((fails+1)); }
   for f in methods points curves curvature combs; do [ -s "$dir/cmp/$f.csv" ] || { echo "FAIL: compare wrote no $f.csv"; fails=$((fails+1)); }; done
 else
@@ -229,6 +231,25 @@ fi
 grep -q '^| boost-pchip | not applicable |' "$dir/cmp2.md" || { echo "FAIL: compare --closed must list boost-pchip as not applicable"; fails=$((fails+1)); }
 expect_bad "compare 3-D points"    '0,0,0\n1,1,1\n2,0,0\n3,1,1\n'  compare --in "$dir/bad.csv" --out "$dir/cmp3" --no-plot
 expect_bad "compare unknown method" '0,0\n1,1\n2,0\n3,1\n'        compare --in "$dir/bad.csv" --methods cubic-z --out "$dir/cmp3" --no-plot
+
+# Every registered method is reachable from interpolate, analyze --in and compare by name (the
+# list comes from the registry: a new method is walked here without editing this file).
+methods=$("$cagd" interpolate --list-methods | awk '/^[a-z0-9]/ { print $1 }')
+[ "$(echo "$methods" | wc -l)" -ge 12 ] || { echo "FAIL: --list-methods lists $(echo "$methods" | wc -l) methods"; fails=$((fails+1)); }
+for m in $methods; do
+  "$cagd" interpolate --method "$m" --in "$dir/zig.csv" --out "$dir/each.csv" --samples 2 > /dev/null 2> "$dir/err.txt" \
+    || { echo "FAIL: interpolate --method $m: $(cat "$dir/err.txt")"; fails=$((fails+1)); }
+  [ "$(($(wc -l < "$dir/each.csv") - 1))" -ge 11 ] || { echo "FAIL: interpolate --method $m wrote $(wc -l < "$dir/each.csv") lines"; fails=$((fails+1)); }
+  "$cagd" analyze --in "$dir/zig.csv" --method "$m" 2> /dev/null | grep -q '^length_integrated,' \
+    || { echo "FAIL: analyze --in --method $m prints no length"; fails=$((fails+1)); }
+  "$cagd" compare --in "$dir/zig.csv" --methods "$m" --out "$dir/cmp_each" --no-plot 2> /dev/null | grep -q "^| $m" \
+    || { echo "FAIL: compare --methods $m has no row"; fails=$((fails+1)); }
+done
+expect_bad "option of another method" '0,0\n1,1\n2,0\n'  interpolate --method s-spline --scale unit --in "$dir/bad.csv" --out "$dir/o.csv"
+expect_bad "hosaka m-vector"          '0,0\n1,1\n2,0\n'  interpolate --method hosaka --m-vector 1,1 --in "$dir/bad.csv" --out "$dir/o.csv"
+expect_bad "m and m-vector"           '0,0\n1,1\n2,0\n'  interpolate --m 1 --m-vector 1,1 --in "$dir/bad.csv" --out "$dir/o.csv"
+"$cagd" --version | grep -q '^cagd [0-9]' || { echo "FAIL: --version"; fails=$((fails+1)); }
+"$cagd" energy-table --help | grep -q 'periodic' || { echo "FAIL: energy-table --help shows no default placement"; fails=$((fails+1)); }
 
 if [ "$fails" -eq 0 ]; then echo "cli: all checks passed"; fi
 exit $((fails > 0))

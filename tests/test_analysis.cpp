@@ -2,8 +2,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
+#include <numbers>
 
 #include "analysis/curve_measures.hpp"
+#include "analysis/sampled_curve_measures.hpp"
 #include "core/errors.hpp"
 #include "spline/bezier.hpp"
 #include "spline/bspline.hpp"
@@ -47,4 +50,88 @@ TEST(Analysis, NormalOffsetIsSignedDistanceAlongLeftNormal) {
     a << 0, 0.5, 1, 0.5;
     EXPECT_NEAR(analysis::normal_offset(BezierCurve(a), BezierCurve(b), 0.3), 0.5, 1e-15);
     EXPECT_NEAR(analysis::normal_offset(BezierCurve(b), BezierCurve(a), 0.3), -0.5, 1e-15);
+}
+
+// `cagd analyze CURVE.csv` (analysis/sampled_curve_measures): a unit circle sampled at N + 1
+// points with exact derivatives. Polyline length 2N sin(π/N), area (N/2) sin(2π/N) (the inscribed
+// N-gon, exact to rounding), κ = 1 at every sample, trapezoid energy = polyline length.
+TEST(SampledCurveMeasures, CircleGivesTheInscribedPolygonAndUnitCurvature) {
+    const int N = 64;
+    analysis::CurveSamples s;
+    s.position.resize(N + 1, 2);
+    s.first = Eigen::MatrixXd(N + 1, 2);
+    s.second = Eigen::MatrixXd(N + 1, 2);
+    for (int i = 0; i <= N; ++i) {
+        const double t = 2 * std::numbers::pi * i / N;
+        s.position.row(i) << std::cos(t), std::sin(t);
+        s.first->row(i) << -std::sin(t), std::cos(t);
+        s.second->row(i) << -std::cos(t), -std::sin(t);
+        s.parameter.push_back(t);
+    }
+    const analysis::SampledCurveMeasures m = analysis::sampled_curve_measures(s);
+    EXPECT_EQ(m.samples, N + 1);
+    EXPECT_TRUE(m.closed);
+    EXPECT_NEAR(m.polyline_length, 2 * N * std::sin(std::numbers::pi / N), 1e-13);
+    ASSERT_TRUE(m.enclosed_area.has_value());
+    EXPECT_NEAR(*m.enclosed_area, 0.5 * N * std::sin(2 * std::numbers::pi / N), 1e-13);
+    ASSERT_TRUE(m.has_curvature);
+    EXPECT_NEAR(m.curvature_min, 1.0, 1e-14);
+    EXPECT_NEAR(m.curvature_max, 1.0, 1e-14);
+    EXPECT_NEAR(m.bending_energy, m.polyline_length, 1e-13);
+    // Reversed orientation: negative area and signed curvature −1.
+    analysis::CurveSamples r = s;
+    r.position.col(1) *= -1;
+    r.first->col(1) *= -1;
+    r.second->col(1) *= -1;
+    const analysis::SampledCurveMeasures mr = analysis::sampled_curve_measures(r);
+    EXPECT_NEAR(*mr.enclosed_area, -*m.enclosed_area, 1e-13);
+    EXPECT_NEAR(mr.curvature_max, -1.0, 1e-14);
+}
+
+// A helix (cos t, sin t, c t) has κ = 1/(1 + c²); its length counts z (no silent xy projection).
+TEST(SampledCurveMeasures, HelixIsMeasuredInSpace) {
+    const int N = 200;
+    const double c = 0.5;
+    analysis::CurveSamples s;
+    s.position.resize(N + 1, 3);
+    s.first = Eigen::MatrixXd(N + 1, 3);
+    s.second = Eigen::MatrixXd(N + 1, 3);
+    for (int i = 0; i <= N; ++i) {
+        const double t = 4.0 * i / N;
+        s.position.row(i) << std::cos(t), std::sin(t), c * t;
+        s.first->row(i) << -std::sin(t), std::cos(t), c;
+        s.second->row(i) << -std::cos(t), -std::sin(t), 0;
+    }
+    const analysis::SampledCurveMeasures m = analysis::sampled_curve_measures(s);
+    EXPECT_FALSE(m.closed);
+    EXPECT_FALSE(m.enclosed_area.has_value());
+    // chord of the helix over Δt = 4/N: sqrt(4 sin²(Δt/2) + c²Δt²), N of them
+    const double dt = 4.0 / N;
+    EXPECT_NEAR(m.polyline_length, N * std::sqrt(4 * std::pow(std::sin(dt / 2), 2) + c * c * dt * dt), 1e-12);
+    EXPECT_NEAR(m.curvature_min, 1 / (1 + c * c), 1e-14);
+    EXPECT_NEAR(m.curvature_max, 1 / (1 + c * c), 1e-14);
+}
+
+TEST(SampledCurveMeasures, BadSamplesAreNamed) {
+    analysis::CurveSamples s;
+    s.position = Eigen::MatrixXd::Zero(1, 2);
+    EXPECT_THROW(analysis::sampled_curve_measures(s), InvalidInput);
+    s.position = (Eigen::MatrixXd(3, 2) << 0, 0, 1, 0, 2, 0).finished();
+    s.first = Eigen::MatrixXd::Zero(3, 2);
+    s.second = Eigen::MatrixXd::Zero(3, 2);
+    try {
+        analysis::sampled_curve_measures(s);
+        ADD_FAILURE() << "zero speed accepted";
+    } catch (const InvalidInput& e) {
+        EXPECT_NE(std::string(e.what()).find("zero speed at sample 0"), std::string::npos) << e.what();
+    }
+    s.first = std::nullopt;
+    s.second = std::nullopt;
+    s.position(1, 1) = std::numeric_limits<double>::quiet_NaN();
+    try {
+        analysis::sampled_curve_measures(s);
+        ADD_FAILURE() << "NaN accepted";
+    } catch (const InvalidInput& e) {
+        EXPECT_NE(std::string(e.what()).find("not finite"), std::string::npos) << e.what();
+    }
 }

@@ -1,4 +1,4 @@
-// Robustness of every interpolation method (compare/interpolation_methods) and the comparison:
+// Robustness of every interpolation method (methods/method_registry) and the comparison:
 // seeded random point sets (10^4 per method; CAGD_PROPERTY_SETS overrides), degenerate inputs,
 // the point reader, and the measurements of `cagd compare`.
 #include <gtest/gtest.h>
@@ -12,18 +12,20 @@ using std::isnan;
 #include <boost/math/interpolators/pchip.hpp>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <cstdlib>
+#include <numbers>
 #include <random>
 #include <sstream>
 
 #include "analysis/curve_measures.hpp"
 #include "analysis/fairness_measures.hpp"
-#include "compare/interpolation_methods.hpp"
+#include "methods/method_registry.hpp"
 #include "compare/method_comparison.hpp"
 #include "core/point_csv.hpp"
 #include "random_walk.hpp"
 
 using namespace cagd;
 using namespace cagd::compare;
+using namespace cagd::methods;
 
 namespace {
 
@@ -44,17 +46,17 @@ PointList random_points(std::mt19937_64& rng, int n, bool closed) {
     PointList p(n, 2);
     if (closed) {
         std::vector<double> a(static_cast<std::size_t>(n));
-        for (int i = 0; i < n; ++i) a[static_cast<std::size_t>(i)] = 2 * M_PI * (i + 0.1 + 0.8 * u(rng)) / n;
+        for (int i = 0; i < n; ++i) a[static_cast<std::size_t>(i)] = 2 * std::numbers::pi * (i + 0.1 + 0.8 * u(rng)) / n;
         for (int i = 0; i < n; ++i) {
             const double r = 0.5 + u(rng);
             p.row(i) << r * std::cos(a[static_cast<std::size_t>(i)]), r * std::sin(a[static_cast<std::size_t>(i)]);
         }
         return p;
     }
-    double angle = 2 * M_PI * u(rng);
+    double angle = 2 * std::numbers::pi * u(rng);
     p.row(0) << u(rng), u(rng);
     for (int i = 1; i < n; ++i) {
-        angle += (u(rng) - 0.5) * (300.0 / 180.0 * M_PI);
+        angle += (u(rng) - 0.5) * (300.0 / 180.0 * std::numbers::pi);
         const double step = 0.2 + 0.8 * u(rng);
         p.row(i) = p.row(i - 1) + step * Eigen::RowVector2d(std::cos(angle), std::sin(angle));
     }
@@ -76,8 +78,8 @@ struct PropertyTally {
 };
 
 // Every property of one random set, folded into the tally (fatal failures for structural errors).
-void check_properties(const MethodInfo& m, const PointList& p, bool closed, PropertyTally& t) {
-    const InterpolationResult r = interpolate(m.name, p, closed);
+void check_properties(const Configuration& m, const PointList& p, bool closed, PropertyTally& t) {
+    const InterpolationResult r = interpolate(m, p, closed);
     ++t.sets;
     if (!r.outcome.ok()) {
         ++t.no_result;
@@ -103,16 +105,16 @@ void check_properties(const MethodInfo& m, const PointList& p, bool closed, Prop
         const double tl = i == 0 ? a.node_parameters.back() : a.node_parameters[i], tr = i == nodes - 1 ? a.node_parameters.front() : a.node_parameters[i];
         if (closed && i == nodes - 1) break;
         const Eigen::MatrixXd L = a.curve->jet_from_left(tl, 2), R = a.curve->jet(tr, 2);
-        for (int k = 1; k <= m.parametric_continuity; ++k) {
+        for (int k = 1; k <= m.claims.parametric_continuity; ++k) {
             const Eigen::VectorXd dl = L.row(k).transpose() / std::pow(a.dtau_du[left_span], k);
             const Eigen::VectorXd dr = R.row(k).transpose() / std::pow(a.dtau_du[right_span], k);
             t.worst_parametric = std::max(t.worst_parametric, relative_gap(dl, dr, 1e-300));
         }
-        if (m.geometric_continuity >= 1) {
+        if (m.claims.geometric_continuity >= 1) {
             const Eigen::VectorXd el = L.row(1).normalized().transpose(), er = R.row(1).normalized().transpose();
             t.worst_geometric = std::max(t.worst_geometric, (el - er).norm());
         }
-        if (m.geometric_continuity >= 2)
+        if (m.claims.geometric_continuity >= 2)
             t.worst_geometric = std::max(t.worst_geometric, (analysis::curvature_vector(L) - analysis::curvature_vector(R)).norm() * diag /
                                                                std::max(1.0, diag * analysis::curvature_vector(R).norm()));
     }
@@ -122,7 +124,7 @@ void check_properties(const MethodInfo& m, const PointList& p, bool closed, Prop
     // 4. invariance: the curve through T(P) is T(the curve through P), span by span
     const auto compare_under = [&](const Eigen::Matrix2d& A, const Eigen::RowVector2d& b, double& worst) {
         const PointList q = (p * A.transpose()).rowwise() + b;
-        const InterpolationResult rq = interpolate(m.name, q, closed);
+        const InterpolationResult rq = interpolate(m, q, closed);
         if (!rq.outcome.ok()) return;   // counted once above; a transformed failure is the same Newton
         const Interpolant& aq = *rq.interpolant;
         const double dq = bounding_box_diagonal(q);
@@ -134,13 +136,13 @@ void check_properties(const MethodInfo& m, const PointList& p, bool closed, Prop
     };
     std::mt19937_64 rng(static_cast<std::uint64_t>(t.sets));
     std::uniform_real_distribution<double> u(0.0, 1.0);
-    if (m.invariance == Invariance::none) return;   // measured separately: PseudoSplineRotationDeviationIsBounded
-    const double angle = m.invariance == Invariance::translation_scale ? 0.0 : 2 * M_PI * u(rng);
+    if (m.claims.invariance == Invariance::none) return;   // measured separately: PseudoSplineRotationDeviationIsBounded
+    const double angle = m.claims.invariance == Invariance::translation_scale ? 0.0 : 2 * std::numbers::pi * u(rng);
     const double scale = std::exp(6 * (u(rng) - 0.5));
     Eigen::Matrix2d rotation;
     rotation << std::cos(angle), -std::sin(angle), std::sin(angle), std::cos(angle);
     compare_under(scale * rotation, Eigen::RowVector2d(10 * u(rng) - 5, 10 * u(rng) - 5), t.worst_invariance);
-    if (m.invariance == Invariance::affine) {
+    if (m.claims.invariance == Invariance::affine) {
         Eigen::Matrix2d shear;
         shear << 1.0, 0.5, 0.2, 1.3;
         compare_under(shear, Eigen::RowVector2d(1, -2), t.worst_affine);
@@ -157,13 +159,13 @@ class EveryMethod : public ::testing::TestWithParam<std::string> {};
 // curves whose spans differ by up to 5× in length, measured worst 1e-9); Newton may fail for at
 // most 1 % of the sets (a returned status with a message, never an exception).
 TEST_P(EveryMethod, RandomPointSetsKeepEveryClaim) {
-    const MethodInfo& m = method_info(GetParam());
+    const Configuration m = find_configuration(GetParam());
     std::mt19937_64 rng(20261122);
-    std::uniform_int_distribution<int> count(std::max(4, m.min_points), 9);
+    std::uniform_int_distribution<int> count(std::max(4, m.claims.min_points), 9);
     PropertyTally t;
     const int sets = property_sets();
     for (int s = 0; s < sets; ++s) {
-        const bool closed = m.supports_closed && s % 4 == 3;
+        const bool closed = m.claims.supports_closed && s % 4 == 3;
         check_properties(m, random_points(rng, count(rng), closed), closed, t);
         if (HasFatalFailure()) return;
     }
@@ -180,11 +182,11 @@ TEST_P(EveryMethod, RandomPointSetsKeepEveryClaim) {
 
 // Degenerate inputs, each with its defined outcome.
 TEST_P(EveryMethod, DegenerateInputsHaveDefinedOutcomes) {
-    const MethodInfo& m = method_info(GetParam());
+    const Configuration m = find_configuration(GetParam());
     // Collinear points: the straight line (κ = 0 everywhere, no overshoot off the line).
     PointList line(6, 2);
     for (int i = 0; i < 6; ++i) line.row(i) << 1.0 + i + 0.3 * (i % 2), 2.0 * (1.0 + i + 0.3 * (i % 2));
-    const InterpolationResult r = interpolate(m.name, line, false);
+    const InterpolationResult r = interpolate(m, line, false);
     ASSERT_TRUE(r.outcome.ok()) << m.name << ": " << r.outcome.message;
     const Curve& c = *r.interpolant->curve;
     for (double t = c.t_min(); t < c.t_max(); t += (c.t_max() - c.t_min()) / 97) {
@@ -194,19 +196,19 @@ TEST_P(EveryMethod, DegenerateInputsHaveDefinedOutcomes) {
     // Two points: the segment between them, or InvalidInput naming the count for methods needing more.
     PointList two(2, 2);
     two << 0.0, 0.0, 3.0, 4.0;
-    if (m.min_points <= 2) {
-        const InterpolationResult r2 = interpolate(m.name, two, false);
+    if (m.claims.min_points <= 2) {
+        const InterpolationResult r2 = interpolate(m, two, false);
         ASSERT_TRUE(r2.outcome.ok()) << m.name;
         EXPECT_NEAR(analysis::arc_length(*r2.interpolant->curve), 5.0, 1e-12) << m.name;
     } else {
-        EXPECT_THROW(interpolate(m.name, two, false), InvalidInput) << m.name;
+        EXPECT_THROW(interpolate(m, two, false), InvalidInput) << m.name;
     }
     // A repeated point (two consecutive rows equal): InvalidInput.
     std::mt19937_64 rng7(7);
     PointList repeated = random_points(rng7, 6, false);
     repeated.row(3) = repeated.row(2);
     try {
-        interpolate(m.name, repeated, false);
+        interpolate(m, repeated, false);
         ADD_FAILURE() << m.name << " accepted a repeated point";
     } catch (const InvalidInput& e) {
         EXPECT_NE(std::string(e.what()).find("points 2 and 3 coincide"), std::string::npos) << e.what();
@@ -219,7 +221,7 @@ TEST_P(EveryMethod, DegenerateInputsHaveDefinedOutcomes) {
     near.row(4) = near.row(3) + 1e-9 * bounding_box_diagonal(base) * Eigen::RowVector2d(0.6, 0.8);
     for (const auto& [points, label] : {std::pair<PointList, const char*>{near, "nearly coincident"}, {base * 1e-8, "1e-8"}, {base * 1e8, "1e8"},
                                         {(base.array() + 1e8).matrix(), "offset 1e8"}}) {
-        const InterpolationResult rr = interpolate(m.name, points, false);
+        const InterpolationResult rr = interpolate(m, points, false);
         if (!rr.outcome.ok()) {
             EXPECT_FALSE(rr.outcome.message.empty()) << m.name << " " << label;
             continue;
@@ -235,7 +237,7 @@ TEST_P(EveryMethod, DegenerateInputsHaveDefinedOutcomes) {
     PointList hairpin(5, 2);
     hairpin << 0, 0, 1, 0, 2, 0, 1, 0, 0, 1;
     try {
-        const InterpolationResult rh = interpolate(m.name, hairpin, false);
+        const InterpolationResult rh = interpolate(m, hairpin, false);
         if (rh.outcome.ok())
             for (std::size_t k = 0; k + 1 < rh.interpolant->node_parameters.size(); ++k)
                 EXPECT_TRUE(rh.interpolant->curve->jet(span_parameter(*rh.interpolant, k, 0.5), 1).allFinite()) << m.name << " hairpin";
@@ -249,9 +251,9 @@ TEST_P(EveryMethod, DegenerateInputsHaveDefinedOutcomes) {
 // curvature-profile Newton solves 2·10^6 unknowns by sparse LU in about 30 s): every 997th node and
 // the last lie on the curve to 1e-9 of the diagonal, and the curve is finite at those spans' middles.
 TEST_P(EveryMethod, MillionPointsAreInterpolated) {
-    const MethodInfo& m = method_info(GetParam());
+    const Configuration m = find_configuration(GetParam());
     const PointList p = random_walk_points(1'000'000);
-    const InterpolationResult r = interpolate(m.name, p, false);
+    const InterpolationResult r = interpolate(m, p, false);
     ASSERT_TRUE(r.outcome.ok() && r.interpolant) << m.name << ": " << r.outcome.message;
     const Interpolant& a = *r.interpolant;
     ASSERT_EQ(a.node_parameters.size(), static_cast<std::size_t>(p.rows()));
@@ -269,7 +271,7 @@ TEST_P(EveryMethod, MillionPointsAreInterpolated) {
 
 INSTANTIATE_TEST_SUITE_P(Compare, EveryMethod, ::testing::ValuesIn([] {
                              std::vector<std::string> names;
-                             for (const MethodInfo& m : interpolation_methods()) names.push_back(m.name);
+                             for (const Configuration& m : configurations()) names.push_back(m.name);
                              return names;
                          }()),
                          [](const ::testing::TestParamInfo<std::string>& i) {
@@ -343,7 +345,7 @@ TEST(Compare, CurvatureDerivativeMatchesFiniteDifferences) {
 TEST(Compare, TableOnTable1DataHasEveryMethod) {
     const PointList p = read_points_csv(std::string(CAGD_SOURCE_DIR) + "/reference/pseudo_energy/data/table1.csv");
     const std::vector<MethodComparison> c = compare_methods(p, {});
-    ASSERT_EQ(c.size(), interpolation_methods().size());
+    ASSERT_EQ(c.size(), configurations().size());
     for (const MethodComparison& m : c) {
         EXPECT_EQ(m.status, "ok") << m.method << ": " << m.note;
         ASSERT_TRUE(m.fairness.has_value()) << m.method;
@@ -370,11 +372,11 @@ TEST(Compare, TableOnTable1DataHasEveryMethod) {
     closed.closed = true;
     closed.locality = false;
     for (const MethodComparison& m : compare_methods(p, closed))
-        if (!method_info(m.method).supports_closed) {
+        if (!find_configuration(m.method).claims.supports_closed) {
             EXPECT_EQ(m.status, "not applicable") << m.method;
         }
     EXPECT_THROW(compare_methods(PointList::Zero(5, 3), {}), InvalidInput);
-    EXPECT_THROW(method_info("no-such-method"), InvalidInput);
+    EXPECT_THROW(find_configuration("no-such-method"), InvalidInput);
 }
 
 TEST(Compare, PseudoEnergyFromMeasuredPiecesEqualsSpanIntegration) {
@@ -498,7 +500,7 @@ TEST(PointReader, ErrorsNameTheLine) {
     EXPECT_NE(message("0,1\n2,3,\n").find("p.csv:2"), std::string::npos);
 }
 
-// The measured exception to rotation invariance (interpolation_methods.hpp): the optimised
+// The measured exception to rotation invariance (methods/method_registry.hpp): the optimised
 // pseudo-spline through rotated points is not exactly the rotated curve. Bounds as measured on 200
 // seeded sets; the non-optimised mode is exact to rounding.
 TEST(Compare, PseudoSplineRotationDeviationIsBounded) {
@@ -518,6 +520,6 @@ TEST(Compare, PseudoSplineRotationDeviationIsBounded) {
     }
     std::printf("rotation deviation: none %.2e, exact %.2e, approx %.2e\n", worst[0], worst[1], worst[2]);
     EXPECT_LE(worst[0], 1e-12);
-    EXPECT_LE(worst[1], 1e-7);    // Brent's tolerance 2^-26 on α (interpolation_methods.hpp)
+    EXPECT_LE(worst[1], 1e-7);    // Brent's tolerance 2^-26 on α (methods/method_registry.hpp)
     EXPECT_LE(worst[2], 1e-12);   // was 3.5e-3 while the non-convex case followed rounding noise
 }

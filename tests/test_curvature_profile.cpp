@@ -4,6 +4,7 @@
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <cmath>
+#include <numbers>
 #include <random>
 
 #include "core/errors.hpp"
@@ -15,7 +16,7 @@ using namespace cagd::intrinsic;
 
 namespace {
 
-const double kPi = std::acos(-1.0);
+constexpr double kPi = std::numbers::pi;
 const char* kFig3List = "{0, 5.000, 0, 4.018, 0, 3.000, 0, 1.571, 0, 5.000, 0, 5.123, 0, 6.282, 0, 2.500, 0, 1.571, 0, {2.053, 1.806}, 3.430, 2.000, 0}";
 
 PointList fig3_points() {

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <random>
 
 #include "core/errors.hpp"
@@ -51,7 +52,7 @@ TEST(TaylorJet, ArithmeticMatchesKnownSeries) {
     const TaylorJet geometric = numeric::reciprocal(TaylorJet(6, 1.0) - x);
     for (int k = 0; k <= 6; ++k) EXPECT_DOUBLE_EQ(geometric.coefficient(k), 1.0);
     // sin·cos = sin(2x)/2 at x0 = 0.7, derivatives to order 5.
-    const auto s = sinusoid(1, 1, 0), c = sinusoid(1, 1, M_PI / 2), s2 = sinusoid(0.5, 2, 0);
+    const auto s = sinusoid(1, 1, 0), c = sinusoid(1, 1, std::numbers::pi / 2), s2 = sinusoid(0.5, 2, 0);
     const TaylorJet a = TaylorJet::from_derivatives({s(0.7, 0), s(0.7, 1), s(0.7, 2), s(0.7, 3), s(0.7, 4), s(0.7, 5)});
     const TaylorJet b = TaylorJet::from_derivatives({c(0.7, 0), c(0.7, 1), c(0.7, 2), c(0.7, 3), c(0.7, 4), c(0.7, 5)});
     const TaylorJet p = a * b;

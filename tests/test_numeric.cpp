@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "core/errors.hpp"
+#include <numbers>
 #include <random>
 #include "numeric/pentadiagonal.hpp"
 #include "numeric/finite_difference.hpp"
@@ -35,7 +36,7 @@ TEST(Romberg, ErrorEstimateBoundsActualErrorOnSmoothIntegrand) {
     const auto r = romberg(f, 0.0, 1.0, 1e-8);
     ASSERT_TRUE(r.outcome.ok());
     // The estimate |R(k,k) − R(k−1,k−1)| is an upper bound of the error of R(k,k) here.
-    EXPECT_LE(std::abs(r.value - M_PI / 4), r.error_estimate + 1e-16);
+    EXPECT_LE(std::abs(r.value - std::numbers::pi / 4), r.error_estimate + 1e-16);
     EXPECT_LE(r.error_estimate, 1e-8);
 }
 
@@ -92,10 +93,10 @@ TEST(GaussLegendre, AgreesWithGaussKronrodOnAnalyticIntegrand) {
 #include "numeric/rational.hpp"
 
 TEST(Rational, SimplestFractionWithinTolerance) {
-    const auto f = cagd::numeric::simplest_fraction_within(M_PI, 0.002);
+    const auto f = cagd::numeric::simplest_fraction_within(std::numbers::pi, 0.002);
     EXPECT_EQ(f.numerator, 22);
     EXPECT_EQ(f.denominator, 7);
-    const auto g = cagd::numeric::simplest_fraction_within(M_PI, 1e-6);
+    const auto g = cagd::numeric::simplest_fraction_within(std::numbers::pi, 1e-6);
     EXPECT_EQ(g.numerator, 355);
     EXPECT_EQ(g.denominator, 113);
     const auto h = cagd::numeric::simplest_fraction_within(-0.366, 0.0005);

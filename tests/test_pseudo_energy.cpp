@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <numbers>
 
 #include "analysis/curve_measures.hpp"
 #include "fairness/pseudo_energy_table.hpp"
@@ -55,14 +56,14 @@ TEST(HermiteSegment, GradientMatchesCentralDifferences) {
 }
 
 TEST(HermiteSegment, CuspIsInfiniteNeverAFalseLowValue) {
-    const UnitChordHermite collinear(M_PI, 0.0, 1.0, 1.0);   // x'(0) < 0 < x'(1), y' ≡ 0
+    const UnitChordHermite collinear(std::numbers::pi, 0.0, 1.0, 1.0);   // x'(0) < 0 < x'(1), y' ≡ 0
     EXPECT_TRUE(has_cusp(collinear));
     const SegmentEnergy f = segment_energy_fast(collinear), r = segment_energy_reference(collinear);
     EXPECT_TRUE(f.cusp && r.cusp);
     EXPECT_TRUE(std::isinf(f.pseudo_energy) && std::isinf(r.pseudo_energy));
     EXPECT_EQ(f.outcome.status, Status::no_solution);
     // Near the cusp the graded rule agrees with Romberg; a fixed rule reports far less.
-    const UnitChordHermite near(M_PI - 1e-3, 0.0, 1.0, 1.0);
+    const UnitChordHermite near(std::numbers::pi - 1e-3, 0.0, 1.0, 1.0);
     const double jr = segment_energy_reference(near, 1e-13, false).pseudo_energy;
     EXPECT_NEAR(segment_energy_fast(near, false).pseudo_energy, jr, 1e-11 * jr);
     const BezierCurve b = near.bezier();
@@ -76,10 +77,10 @@ TEST(HermiteSegment, BadInputThrows) {
     EXPECT_THROW(UnitChordHermite(0, 0, 0.0, 1), InvalidInput);
     EXPECT_THROW(UnitChordHermite(0, 0, 1, -1), InvalidInput);
     EXPECT_THROW(UnitChordHermite(0, 0, INFINITY, 1), InvalidInput);
-    EXPECT_NO_THROW(UnitChordHermite(M_PI, -M_PI, 1, 1));
+    EXPECT_NO_THROW(UnitChordHermite(std::numbers::pi, -std::numbers::pi, 1, 1));
     EXPECT_THROW(segment_energy_fast(UnitChordHermite(0.1, 0.2, 1, 1), true, 7), InvalidInput);
-    EXPECT_NEAR(wrap_angle(3 * M_PI), M_PI, 1e-15);
-    EXPECT_NEAR(wrap_angle(-0.5 - 2 * M_PI), -0.5, 1e-15);
+    EXPECT_NEAR(wrap_angle(3 * std::numbers::pi), std::numbers::pi, 1e-15);
+    EXPECT_NEAR(wrap_angle(-0.5 - 2 * std::numbers::pi), -0.5, 1e-15);
     EXPECT_THROW(wrap_angle(NAN), InvalidInput);
 }
 
@@ -116,7 +117,7 @@ TEST(PseudoEnergyMinimum, UndefinedNodes) {
     EXPECT_EQ(zero.outcome.status, Status::no_solution);
     EXPECT_EQ(zero.pseudo_energy, 0.0);
     EXPECT_EQ(zero.type, SegmentType::x);
-    for (const auto& p : {std::pair{M_PI, 0.0}, {0.0, -M_PI}, {-M_PI, M_PI}}) {
+    for (const auto& p : {std::pair{std::numbers::pi, 0.0}, {0.0, -std::numbers::pi}, {-std::numbers::pi, std::numbers::pi}}) {
         const PseudoEnergyMinimum m = minimize_pseudo_energy(p.first, p.second);
         EXPECT_EQ(m.outcome.status, Status::no_solution);
         EXPECT_TRUE(std::isinf(m.pseudo_energy));
@@ -129,7 +130,7 @@ TEST(PseudoEnergyTable, LookupReproducesNodesWrapsAndRejects) {
     const auto& nodes = t.nodes();
     ASSERT_EQ(nodes.size(), 12u);
     EXPECT_EQ(nodes[6], 0.0);
-    EXPECT_EQ(nodes[0], -M_PI);
+    EXPECT_EQ(nodes[0], -std::numbers::pi);
     const PseudoEnergyMinimum& n = t.node(3, 8);
     const TableValue v = t.lookup(nodes[3], nodes[8]);
     EXPECT_NEAR(v.pseudo_energy, n.pseudo_energy, 1e-12 * n.pseudo_energy);
@@ -139,9 +140,9 @@ TEST(PseudoEnergyTable, LookupReproducesNodesWrapsAndRejects) {
     EXPECT_NEAR(t.node(8, 3).r0, direct.r0, 1e-8);
     EXPECT_NEAR(t.node(8, 3).area, direct.area, 1e-8);
     // Periodic: θ = π is the node −π.
-    EXPECT_NEAR(t.lookup(M_PI, 1.0).pseudo_energy, t.lookup(-M_PI, 1.0).pseudo_energy, 1e-12);
+    EXPECT_NEAR(t.lookup(std::numbers::pi, 1.0).pseudo_energy, t.lookup(-std::numbers::pi, 1.0).pseudo_energy, 1e-12);
     EXPECT_THROW(t.lookup(0.0, 0.0), InvalidInput);
-    EXPECT_THROW(t.lookup(-M_PI, 0.0), InvalidInput);
+    EXPECT_THROW(t.lookup(-std::numbers::pi, 0.0), InvalidInput);
     EXPECT_THROW(t.lookup(3.3, 0.1), InvalidInput);
     EXPECT_THROW(t.lookup(NAN, 0.1), InvalidInput);
     EXPECT_THROW((AngleGrid{1, NodePlacement::periodic}.nodes()), InvalidInput);

@@ -7,9 +7,10 @@
 
 #include "core/errors.hpp"
 #include "repro/artifact_run.hpp"
-#include "repro/csv.hpp"
+#include "core/csv.hpp"
 #include "repro/reference.hpp"
 
+using namespace cagd;
 using namespace cagd::repro;
 
 TEST(Repro, ClassifiesReproducedDeviatesFailed) {

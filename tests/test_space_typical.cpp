@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "aesthetic/log_aesthetic_space_curve.hpp"
 #include "aesthetic/space_typical_bezier.hpp"
@@ -44,7 +45,7 @@ TEST(AlexaProduct, LimitDefinitionConvergesLikeOneOverN) {
 }
 
 TEST(AlexaProduct, RejectsMatricesWithoutARealLogarithm) {
-    const Eigen::Matrix3d half_turn = curvature_rotation(M_PI);
+    const Eigen::Matrix3d half_turn = curvature_rotation(std::numbers::pi);
     EXPECT_THROW(numeric::alexa_product(half_turn, Eigen::Matrix3d::Identity()), InvalidInput);
     EXPECT_THROW(numeric::alexa_product(Eigen::Matrix2d::Identity(), Eigen::Matrix3d::Identity()), InvalidInput);
     Eigen::Matrix3d bad = Eigen::Matrix3d::Identity();

@@ -25,7 +25,7 @@ int main(int argc, char** argv) {
     if (!sol.outcome.ok()) fail_input("fig2_clothoid_spline", "Newton failed: " + sol.outcome.message);
     const IntrinsicCurve& curve = *sol.curve;
     std::string residuals;
-    for (const auto& h : sol.history) residuals += (residuals.empty() ? "" : ", ") + repro::format_number(h.residual, 3);
+    for (const auto& h : sol.history) residuals += (residuals.empty() ? "" : ", ") + format_number(h.residual, 3);
     run.note("Knot-difference list (degree 2, symbolic) " + format_knot_difference_list(layout) + "; converged " + format_knot_difference_list(layout, sol.segment_lengths(), 3) + ". " +
              std::to_string(sol.equations) + " equations in " + std::to_string(sol.unknowns) + " unknowns, Jacobian rank " + std::to_string(sol.rank) + "; Newton residuals ‖f‖∞: " + residuals + ".");
 
@@ -55,14 +55,14 @@ int main(int argc, char** argv) {
     run.validate("fig2.degree3_equivalent", "degree-3 ψ with double knots and linear curvature on every segment: largest span-length difference", length_dev(cub), 0.0, 1e-10, "two Newton solutions (measured ≤ 1e-13)");
 
     double kmin = 1e300, kmax = -1e300;
-    repro::CsvWriter out = run.table("fig2_curve.csv", {"s", "x", "y", "psi", "kappa"});
+    CsvWriter out = run.table("fig2_curve.csv", {"s", "x", "y", "psi", "kappa"});
     for (const ProfileSample& q : curvature_profile_samples(curve, 40)) {
         kmin = std::min(kmin, q.kappa), kmax = std::max(kmax, q.kappa);
         out.row({q.s, q.x, q.y, q.psi, q.kappa});
     }
-    repro::CsvWriter pts = run.table("fig2_points.csv", {"x", "y"});
+    CsvWriter pts = run.table("fig2_points.csv", {"x", "y"});
     for (int i = 0; i <= n; ++i) pts.row({points(i % n, 0), points(i % n, 1)});
-    run.note("Curvature from " + repro::format_number(kmin, 4) + " to " + repro::format_number(kmax, 4) + " (it changes sign on the concave stretch); length " + repro::format_number(curve.length(), 8) + ".");
+    run.note("Curvature from " + format_number(kmin, 4) + " to " + format_number(kmax, 4) + " (it changes sign on the concave stretch); length " + format_number(curve.length(), 8) + ".");
     run.figure("fig2", "Fig. 2 redrawn with our data: the closed G2 clothoid spline through 9 points (left) and its curvature profile κ(s), continuous and piecewise linear, κ(L) = κ(0) (right).");
     return run.finish();
 }

@@ -81,16 +81,16 @@ int main(int argc, char** argv) {
     run.check("fig3.arcs_circular", v.arc_curvature_spread);
     run.check("fig3.g1_joins", v.angle_jump);
     run.check("fig3.g2_joins", v.g2_curvature_jump);
-    run.note("Curvature jumps at the G1 (double) knots, where lines, arcs and free spans meet: up to " + repro::format_number(v.g1_curvature_jump, 4) +
-             " (allowed there); radii of the arcs ④ ⑦ ⑨: " + repro::format_number(1.0 / std::abs(curve.tangent_angle().curvature(problem.layout.first_segment(3), false)), 12) + ", " +
-             repro::format_number(1.0 / std::abs(curve.tangent_angle().curvature(problem.layout.first_segment(6), false)), 12) + ", " +
-             repro::format_number(1.0 / std::abs(curve.tangent_angle().curvature(problem.layout.first_segment(8), false)), 12) + ".");
+    run.note("Curvature jumps at the G1 (double) knots, where lines, arcs and free spans meet: up to " + format_number(v.g1_curvature_jump, 4) +
+             " (allowed there); radii of the arcs ④ ⑦ ⑨: " + format_number(1.0 / std::abs(curve.tangent_angle().curvature(problem.layout.first_segment(3), false)), 12) + ", " +
+             format_number(1.0 / std::abs(curve.tangent_angle().curvature(problem.layout.first_segment(6), false)), 12) + ", " +
+             format_number(1.0 / std::abs(curve.tangent_angle().curvature(problem.layout.first_segment(8), false)), 12) + ".");
 
     // Quadratic convergence, and the iterate the paper appears to print.
-    repro::CsvWriter newton = run.table("fig3_newton.csv", {"iteration", "residual_inf", "step_inf", "damping", "rank"});
+    CsvWriter newton = run.table("fig3_newton.csv", {"iteration", "residual_inf", "step_inf", "damping", "rank"});
     for (const auto& h : sol.history) newton.row({static_cast<double>(h.iteration), h.residual, h.step, h.damping, static_cast<double>(h.rank)}, 6);
     std::string residuals;
-    for (const auto& h : sol.history) residuals += (residuals.empty() ? "" : ", ") + repro::format_number(h.residual, 3);
+    for (const auto& h : sol.history) residuals += (residuals.empty() ? "" : ", ") + format_number(h.residual, 3);
     const std::size_t H = sol.history.size();
     const double order = std::log(sol.history[H - 1].residual / sol.history[H - 2].residual) / std::log(sol.history[H - 2].residual / sol.history[H - 3].residual);
     run.validate("fig3.newton_quadratic", "order of convergence log(r_{k+1}/r_k)/log(r_k/r_{k−1}) from the last three Newton residuals ‖f‖∞ (2 = quadratic)", order, 2.0, 0.5,
@@ -99,7 +99,7 @@ int main(int argc, char** argv) {
     two.max_iterations = 2;
     const CurvatureProfileSolution early = solve_curvature_profile(problem, start, two);
     const TangentAngleSpline early_psi = TangentAngleSpline::from_unknowns(problem.layout, early.u);
-    run.note("Newton residuals ‖f‖∞ per iteration: " + residuals + ". After two iterations (‖f‖∞ = " + repro::format_number(sol.history[2].residual, 2) + ") the list prints " +
+    run.note("Newton residuals ‖f‖∞ per iteration: " + residuals + ". After two iterations (‖f‖∞ = " + format_number(sol.history[2].residual, 2) + ") the list prints " +
              format_knot_difference_list(problem.layout, early_psi.segment_lengths(), 3) + " — semicircle ⑦ 6.282 as in the paper (ERRATA curvature_profile-E1).");
 
     // Non-uniqueness of span ⑩: other solvers find other members of the family.
@@ -121,10 +121,10 @@ int main(int argc, char** argv) {
                  "two Newton solutions to ‖f‖∞ ≤ 1e-12·scale (measured ≤ 1e-13)");
     const double cubic_second = pinned(cubic.layout, cubic.shapes, s10, paper_first)[static_cast<std::size_t>(s10) + 1];
     run.validate("fig3.degree3_pinned_span10", "span ⑩'s second segment given the first = 2.053, degree-3 formulation against degree 2", cubic_second, second_given_first, 1e-10, "two Newton solutions (measured ≤ 1e-13)");
-    auto pair = [&](const std::vector<double>& l) { return "(" + repro::format_number(l[static_cast<std::size_t>(s10)], 5) + ", " + repro::format_number(l[static_cast<std::size_t>(s10) + 1], 5) + ")"; };
+    auto pair = [&](const std::vector<double>& l) { return "(" + format_number(l[static_cast<std::size_t>(s10)], 5) + ", " + format_number(l[static_cast<std::size_t>(s10) + 1], 5) + ")"; };
     run.note("Span ⑩ is a one-parameter family (ERRATA curvature_profile-E2): the Moore–Penrose Newton gives " + pair(lengths) + ", Ceres LM " + pair(lm.segment_lengths()) +
              ", the degree-3 formulation " + pair(cub.segment_lengths()) + "; all pass through the points. Given the printed first segment 2.053 the second is " +
-             repro::format_number(second_given_first, 6) + "; given the printed second 1.806 the first is " + repro::format_number(first_given_second, 6) + ".");
+             format_number(second_given_first, 6) + "; given the printed second 1.806 the first is " + format_number(first_given_second, 6) + ".");
 
     // The null direction of J at the solution lies in span ⑩'s unknowns.
     const DesignSystem sys = design_system(problem, sol.u, true);
@@ -141,13 +141,13 @@ int main(int argc, char** argv) {
     }
     run.validate("fig3.null_vector_in_span10", "share of the Jacobian's null vector (smallest singular value) outside span ⑩'s two lengths and interior ordinates", 1.0 - inside, 0.0, 1e-8,
                  "rounding in the SVD of a 37×37 matrix (measured ≤ 1e-14)");
-    run.note("Singular values of J at the solution: largest " + repro::format_number(sv(0), 4) + ", two smallest " + repro::format_number(sv(sv.size() - 2), 4) + " and " +
-             (sv(sv.size() - 1) < 1e-14 ? std::string("below 1e-14") : repro::format_number(sv(sv.size() - 1), 3)) + ": numerically rank 36 — one redundant equation (the line ⑤ re-imposes the tangent the quarter circle ④ already ends with) and the free split of ⑩.");
+    run.note("Singular values of J at the solution: largest " + format_number(sv(0), 4) + ", two smallest " + format_number(sv(sv.size() - 2), 4) + " and " +
+             (sv(sv.size() - 1) < 1e-14 ? std::string("below 1e-14") : format_number(sv(sv.size() - 1), 3)) + ": numerically rank 36 — one redundant equation (the line ⑤ re-imposes the tangent the quarter circle ④ already ends with) and the free split of ⑩.");
 
     // Figure data.
-    repro::CsvWriter pts = run.table("fig3_points.csv", {"x", "y"});
+    CsvWriter pts = run.table("fig3_points.csv", {"x", "y"});
     for (Eigen::Index i = 0; i < points.rows(); ++i) pts.row({points(i, 0), points(i, 1)});
-    repro::CsvWriter out = run.table("fig3_curve.csv", {"s", "x", "y", "psi", "kappa", "span"});
+    CsvWriter out = run.table("fig3_curve.csv", {"s", "x", "y", "psi", "kappa", "span"});
     for (const ProfileSample& q : curvature_profile_samples(curve, 40)) out.row({q.s, q.x, q.y, q.psi, q.kappa, static_cast<double>(problem.layout.span_of_segment(q.segment) + 1)});
     run.figure("fig3", "Fig. 3 redrawn: the composite interpolant through the 13 points (left; arcs ④ ⑦ ⑨, lines ① ③ ⑤ ⑧ ⑫) and its curvature profile κ(s) (right), piecewise 0th (lines, arcs) and 1st degree; κ jumps at the G1 joins.");
     run.figure("fig3_newton", "Newton with the Moore–Penrose step from the C2 start: ‖f‖∞ per iteration (quadratic convergence).");

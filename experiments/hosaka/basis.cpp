@@ -207,7 +207,7 @@ int main(int argc, char** argv) {
                  worst, 0.0, 1e-7, "rounding of coefficients up to 11!/… ≈ 1e6 in the 11th derivative, relative 1e-13");
     // Figure: the basis for m = 1 and m = 2 (what eq 12 and 14 print).
     {
-        repro::CsvWriter fig = run.table("fig_basis.csv", {"t", "m1_p0", "m1_q0", "m1_p1", "m1_q1", "m2_p0", "m2_q0", "m2_p1", "m2_q1", "m2_p2", "m2_q2"});
+        CsvWriter fig = run.table("fig_basis.csv", {"t", "m1_p0", "m1_q0", "m1_p1", "m1_q1", "m2_p0", "m2_q0", "m2_p1", "m2_q1", "m2_p2", "m2_q2"});
         const spline::HosakaBasis b1(1), b2(2);
         for (int s = 0; s <= 200; ++s) {
             const double tt = s / 200.0;

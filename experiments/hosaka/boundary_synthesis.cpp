@@ -7,6 +7,7 @@
 //   section x0 = 2, L3 (y over the section's range): x_3 = 3 + 0.2 sin 2y, z_3 = 0.5 + 0.3 sin 1.5y,
 //   ζ^(1,0) = 0.2 cos y, ζ^(2,0) = 0.1 sin y.   (m = 1 uses the first cross derivative, m = 2 both.)
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include "numeric/finite_difference.hpp"
@@ -19,7 +20,7 @@ using namespace cagd::surface;
 namespace {
 
 BoundaryCurve lower(int m) {
-    BoundaryCurve c{0.0, 2.0, sinusoid(0.2, 1.0, 0.0), {sinusoid(0.3, 1.2, 0.0), sinusoid(0.4, 0.8, M_PI / 2), sinusoid(0.2, 1.0, 0.0, -0.5)}};
+    BoundaryCurve c{0.0, 2.0, sinusoid(0.2, 1.0, 0.0), {sinusoid(0.3, 1.2, 0.0), sinusoid(0.4, 0.8, std::numbers::pi / 2), sinusoid(0.2, 1.0, 0.0, -0.5)}};
     c.phi.resize(static_cast<std::size_t>(m) + 1);
     return c;
 }
@@ -31,7 +32,7 @@ BoundaryCurve upper(int m) {
 }
 
 BoundaryCurve far_curve(int m, double y0, double y1) {
-    BoundaryCurve c{y0, y1, sinusoid(0.2, 2.0, 0.0, 3.0), {sinusoid(0.3, 1.5, 0.0, 0.5), sinusoid(0.2, 1.0, M_PI / 2), sinusoid(0.1, 1.0, 0.0)}};
+    BoundaryCurve c{y0, y1, sinusoid(0.2, 2.0, 0.0, 3.0), {sinusoid(0.3, 1.5, 0.0, 0.5), sinusoid(0.2, 1.0, std::numbers::pi / 2), sinusoid(0.1, 1.0, 0.0)}};
     c.phi.resize(static_cast<std::size_t>(m) + 1);
     return c;
 }
@@ -53,8 +54,8 @@ int main(int argc, char** argv) {
     repro::ArtifactRun run("hosaka", "boundary_synthesis", "4-5", "Surfaces between boundary curves (eq 31-40) and joined across a section (eq 41-43)", argc, argv);
 
     double boundary_error = 0, boundary_size = 0, induction = 0, fd_gap = 0, seam = 0, seam_next = INFINITY, fd_error = 0;
-    repro::CsvWriter fig = run.table("fig_joined.csv", {"surface", "s", "t", "x", "y", "z"});
-    repro::CsvWriter seam_table = run.table("seam_jumps.csv", {"m", "i", "jump_one_sided_differences", "jump_analytic", "max_abs_zeta_i0"});
+    CsvWriter fig = run.table("fig_joined.csv", {"surface", "s", "t", "x", "y", "z"});
+    CsvWriter seam_table = run.table("seam_jumps.csv", {"m", "i", "jump_one_sided_differences", "jump_analytic", "max_abs_zeta_i0"});
     for (int m = 1; m <= 2; ++m) {
         const BoundaryCurve lo = lower(m), hi = upper(m);
         const BoundaryConformingSurface a(m, lo, hi);
@@ -142,7 +143,7 @@ int main(int argc, char** argv) {
     note40 += std::to_string(brackets);
     run.note(note40 + " brackets (m = 0..5, j = 0..m, two boundaries, two slopes) the transcribed form leaves " + std::to_string(printed_nonzero) +
              " non-zero, the corrected one " + std::to_string(corrected_nonzero) + " (exact rational arithmetic).");
-    run.note("Seam x0 = 2: the x-derivatives of order m + 1 are not matched (smallest relative jump over m = 1, 2: " + repro::format_number(seam_next, 3) +
+    run.note("Seam x0 = 2: the x-derivatives of order m + 1 are not matched (smallest relative jump over m = 1, 2: " + format_number(seam_next, 3) +
              "), as the theory says. Analytically (column jump_analytic) the orders ≤ m agree exactly, because S^B takes S^A's zeta^(i,0)(x0, y) as data: "
              "[seam_jumps.csv](hosaka/seam_jumps.csv).");
     run.figure("fig_joined", "Fig. 5 analogue (m = 1): the surface S^A between L0 and L1 (x in [0, 2]) and S^B joined to it at the section x0 = 2, up to L3.");

@@ -51,24 +51,24 @@ int main(int argc, char** argv) {
     const int xc = analysis::self_intersections(chord.curve), xu = analysis::self_intersections(unit.curve);
     const bool unexpected = fu.bending_energy >= 1.5 * fc.bending_energy || xu > xc || fu.curvature_sign_changes > fc.curvature_sign_changes;
     run.check("sec3.unit_scale_unexpected_when_k_varies", unexpected ? 1.0 : 0.0);
-    repro::CsvWriter t = run.table("scale_comparison.csv", {"data", "scale", "k_min", "k_max", "length", "bending_energy", "curvature_sign_changes",
+    CsvWriter t = run.table("scale_comparison.csv", {"data", "scale", "k_min", "k_max", "length", "bending_energy", "curvature_sign_changes",
                                                             "max_abs_curvature", "overshoot", "self_intersections"});
     const auto row = [&](const char* data, const char* scale, const HosakaSpline& s, const PointList& p) {
         const analysis::FairnessMeasures f = analysis::fairness_measures(s.curve, p);
         double kmin = INFINITY, kmax = 0;
         for (double k : s.k) kmin = std::min(kmin, k), kmax = std::max(kmax, k);
-        t.row_text({data, scale, repro::format_number(kmin, 4), repro::format_number(kmax, 4), repro::format_number(f.length, 8),
-                    repro::format_number(f.bending_energy, 8), std::to_string(f.curvature_sign_changes), repro::format_number(f.max_abs_curvature, 6),
-                    repro::format_number(f.overshoot, 4), std::to_string(analysis::self_intersections(s.curve))});
+        t.row_text({data, scale, format_number(kmin, 4), format_number(kmax, 4), format_number(f.length, 8),
+                    format_number(f.bending_energy, 8), std::to_string(f.curvature_sign_changes), format_number(f.max_abs_curvature, 6),
+                    format_number(f.overshoot, 4), std::to_string(analysis::self_intersections(s.curve))});
     };
     row("uneven", "chord (eq 19)", chord, uneven);
     row("uneven", "unit (k = 1)", unit, uneven);
     row("even", "chord (eq 19)", even_chord, even);
     row("even", "unit (k = 1)", even_unit, even);
     run.note("Data (ours; the paper gives none for this claim): uneven = (0,0), (1,0.8), (1.15,0.95), (3,1.2), (3.2,0.9), (5,0); even = (i, sin i), i = 0..6. "
-             "'About the same' = within 1 % of the data diagonal (even data: " + repro::format_number(100 * even_gap, 3) +
+             "'About the same' = within 1 % of the data diagonal (even data: " + format_number(100 * even_gap, 3) +
              " %); 'not the expected shape' = bending energy at least 1.5 times that of the scaled curve, or more inflections, or a loop the scaled curve has not (uneven data: energy " +
-             repro::format_number(fu.bending_energy, 5) + " vs " + repro::format_number(fc.bending_energy, 5) + ", inflections " +
+             format_number(fu.bending_energy, 5) + " vs " + format_number(fc.bending_energy, 5) + ", inflections " +
              std::to_string(fu.curvature_sign_changes) + " vs " + std::to_string(fc.curvature_sign_changes) + ", crossings " + std::to_string(xu) + " vs " +
              std::to_string(xc) + "). Measures: [scale_comparison.csv](hosaka/scale_comparison.csv).");
 
@@ -88,7 +88,7 @@ int main(int argc, char** argv) {
     }
 
     // Figure data: both curves on both data sets, with curvature.
-    repro::CsvWriter fig = run.table("fig_scale.csv", {"data", "scale", "u", "x", "y", "s", "kappa"});
+    CsvWriter fig = run.table("fig_scale.csv", {"data", "scale", "u", "x", "y", "s", "kappa"});
     int data_index = 0;
     for (const auto* pair : {&chord, &unit, &even_chord, &even_unit}) {
         const int data = data_index < 2 ? 1 : 2, scale = data_index % 2 == 0 ? 1 : 2;

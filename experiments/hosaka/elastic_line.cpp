@@ -188,11 +188,11 @@ int main(int argc, char** argv) {
     for (double lam : lambdas) {
         if (lam == 0.0) continue;
         const ElasticLineIteration t = elastic_line_iterative(x, a, {lam});
-        iteration_note += "λ = " + repro::format_number(lam, 3) + ": ρ = " + repro::format_number(iteration_spectral_radius(x, lam), 4) + ", " +
+        iteration_note += "λ = " + format_number(lam, 3) + ": ρ = " + format_number(iteration_spectral_radius(x, lam), 4) + ", " +
                           (t.outcome.ok() ? "converges in " + std::to_string(t.iterations) + " iterations; " : "diverges; ");
     }
     // λ where ρ = 1 (ρ is linear in λ).
-    iteration_note += "ρ = 1 at λ = " + repro::format_number(1.0 / iteration_spectral_radius(x, 1.0), 4) +
+    iteration_note += "ρ = 1 at λ = " + format_number(1.0 / iteration_spectral_radius(x, 1.0), 4) +
                       " (for many equally spaced points the bound tends to l³/48). So the iteration serves only for λ small against the cube of the spacing; elastic_line solves (51) directly (banded LDLᵀ), which has no such limit.";
     run.note(iteration_note);
 
@@ -203,19 +203,19 @@ int main(int argc, char** argv) {
     for (double lam : lambdas) {
         lines.push_back(elastic_line(x, a, lam));
         counts.push_back(inflection_count(lines.back()));
-        header.push_back("λ = " + repro::format_number(lam, 3) + " (" + std::to_string(counts.back()) + " inflection" + (counts.back() == 1 ? "" : "s") + ")");
+        header.push_back("λ = " + format_number(lam, 3) + " (" + std::to_string(counts.back()) + " inflection" + (counts.back() == 1 ? "" : "s") + ")");
     }
     run.check("fig7.lambda0.1_fewer_inflections", counts[1] < counts[0] ? 1.0 : 0.0);
     run.check("fig7.inflections_nonincreasing", counts[0] >= counts[1] && counts[1] >= counts[2] ? 1.0 : 0.0);
     {
-        repro::CsvWriter curves = run.table("fig7_curves.csv", header);
+        CsvWriter curves = run.table("fig7_curves.csv", header);
         for (int k = 0; k <= 400; ++k) {
             const double xx = x.front() + (x.back() - x.front()) * k / 400.0;
             std::vector<double> row{xx};
             for (const ElasticLine& line : lines) row.push_back(line.curve.evaluate(xx)(0));
             curves.row(row);
         }
-        repro::CsvWriter points = run.table("fig7_points.csv", {"x", "a", "y_lambda0.1", "y_lambda1"});
+        CsvWriter points = run.table("fig7_points.csv", {"x", "a", "y_lambda0.1", "y_lambda1"});
         for (std::size_t i = 0; i < x.size(); ++i) points.row({x[i], a(static_cast<Eigen::Index>(i)), lines[1].values()(static_cast<Eigen::Index>(i), 0), lines[2].values()(static_cast<Eigen::Index>(i), 0)});
     }
     run.figure("fig7_curves", "Fig. 7 analogue: our five points smoothed with λ = 0 (the interpolating spline), 0.1 and 1.0; the legend gives each curve's inflection count.");
@@ -240,7 +240,7 @@ int main(int argc, char** argv) {
     }
     run.check("sec6.mean_inflections_decrease", mean[0] > mean[1] && mean[1] > mean[2] ? 1.0 : 0.0);
     run.note("Inflections over " + std::to_string(sets) + " random data sets (convex trend plus noise, stated in the header): mean count " +
-             repro::format_number(mean[0], 4) + " at λ = 0, " + repro::format_number(mean[1], 4) + " at λ = 0.1, " + repro::format_number(mean[2], 4) +
+             format_number(mean[0], 4) + " at λ = 0, " + format_number(mean[1], 4) + " at λ = 0.1, " + format_number(mean[2], 4) +
              " at λ = 1.0; the count never increased with λ in " + std::to_string(monotone) + " of them. It is a tendency, not a theorem: as λ → ∞, M → (QᵀQ)⁻¹Qᵀa/(6λ), which keeps the sign pattern of purely alternating data (tested).");
 
     // Lagrange constraints (text after eq 44): a fixed point and fixed end slopes.
@@ -261,17 +261,17 @@ int main(int argc, char** argv) {
         slopes.end_slope = 0.0;
         const HermiteElasticLine clamped = elastic_line_hermite(x, a, lam, slopes);
         run.check("sec6.lagrange_end_slopes", std::max(std::abs(clamped.curve.slopes(0, 0)), std::abs(clamped.curve.slopes(4, 0))));
-        repro::CsvWriter c = run.table("constraints.csv", {"x", "free", "fixed_point", "clamped_ends"});
+        CsvWriter c = run.table("constraints.csv", {"x", "free", "fixed_point", "clamped_ends"});
         const ElasticLine free = elastic_line(x, a, lam);
         for (int k = 0; k <= 400; ++k) {
             const double xx = 4.0 * k / 400.0;
             c.row({xx, free.curve.evaluate(xx)(0), pinned.curve.evaluate(xx)(0), clamped.curve.evaluate(xx)(0)});
         }
-        run.note("Constraints (λ = 0.1): the point x = 2 held at y = 0.4 (multiplier " + repro::format_number(pinned.multipliers(0), 6) +
+        run.note("Constraints (λ = 0.1): the point x = 2 held at y = 0.4 (multiplier " + format_number(pinned.multipliers(0), 6) +
                  ", the force the constraint exerts per unit EI) and, separately, both end slopes held at 0 (multipliers " +
-                 repro::format_number(clamped.multipliers(0), 6) + ", " + repro::format_number(clamped.multipliers(1), 6) + "); V/EI rises from " +
-                 repro::format_number(elastic_line_energy(free.curve, a, lam), 6) + " to " + repro::format_number(pinned.energy, 6) + " and " +
-                 repro::format_number(clamped.energy, 6) + ".");
+                 format_number(clamped.multipliers(0), 6) + ", " + format_number(clamped.multipliers(1), 6) + "); V/EI rises from " +
+                 format_number(elastic_line_energy(free.curve, a, lam), 6) + " to " + format_number(pinned.energy, 6) + " and " +
+                 format_number(clamped.energy, 6) + ".");
     }
     run.figure("fig_constraints", "Constraints by Lagrange multipliers (λ = 0.1): free, with y(2) = 0.4 fixed, and with both end slopes fixed at 0.");
     return run.finish();

@@ -109,10 +109,10 @@ int main(int argc, char** argv) {
     }
     run.check("eq24.no_lower_energy", lower);
     run.note("Eq (24): 2000 C2 quintic interpolants of the same data with slopes and second derivatives perturbed by ε·N(0, 1), ε = 1e-3, 1e-2, 0.1, 1 (seeded); the smallest relative energy increase was " +
-             repro::format_number(min_increase, 3) + " (ε = 1e-3 gives increases of order ε², as a minimum should). Spline energy ∫(y''² + z''²) dx = " +
-             repro::format_number(e_spline, 10) + ".");
+             format_number(min_increase, 3) + " (ε = 1e-3 gives increases of order ε², as a minimum should). Spline energy ∫(y''² + z''²) dx = " +
+             format_number(e_spline, 10) + ".");
 
-    repro::CsvWriter fig = run.table("fig_explicit.csv", {"x", "y", "z", "y2", "z2"});
+    CsvWriter fig = run.table("fig_explicit.csv", {"x", "y", "z", "y2", "z2"});
     for (int k = 0; k <= 500; ++k) {
         const double xx = x.front() + (x.back() - x.front()) * k / 500.0;
         const Eigen::RowVectorXd v = spline.evaluate(xx), v2 = spline.evaluate(xx, 2);

@@ -52,23 +52,23 @@ Jumps measure(const HosakaCurve& c, const PointList& p) {
 int main(int argc, char** argv) {
     repro::ArtifactRun run("hosaka", "higher_order", "3", "Splines continuous to the 2m-th derivative (section 3, end)", argc, argv);
     const PointList uneven = hosaka_data::uneven_points(), even = hosaka_data::even_points();
-    repro::CsvWriter t = run.table("continuity.csv", {"data", "m", "max_relative_jump_orders_1_to_2m", "relative_jump_order_2m_plus_1", "natural_end_residual"});
+    CsvWriter t = run.table("continuity.csv", {"data", "m", "max_relative_jump_orders_1_to_2m", "relative_jump_order_2m_plus_1", "natural_end_residual"});
     double worst_m2 = 0.0, worst_ends = 0.0, min_next = INFINITY;
     for (const auto& [name, p] : {std::pair<const char*, const PointList*>{"uneven", &uneven}, {"even", &even}})
         for (int m = 1; m <= 3; ++m) {
             const Jumps j = measure(hosaka_spline(*p, m), *p);
-            t.row_text({name, std::to_string(m), repro::format_number(j.continuous, 3), repro::format_number(j.next, 3), repro::format_number(j.ends, 3)});
+            t.row_text({name, std::to_string(m), format_number(j.continuous, 3), format_number(j.next, 3), format_number(j.ends, 3)});
             if (m == 2) worst_m2 = std::max(worst_m2, j.continuous);
             worst_ends = std::max(worst_ends, j.ends);
             min_next = std::min(min_next, j.next);
         }
     run.check("sec3.m2_continuous_to_order_4", worst_m2);
     run.note("Largest relative jump of the τ-derivatives of orders 1..2m at the joins, and of order 2m+1 (not continuous: smallest over the cases " +
-             repro::format_number(min_next, 3) + "); natural ends (orders m+1..2m zero) to " + repro::format_number(worst_ends, 3) +
+             format_number(min_next, 3) + "); natural ends (orders m+1..2m zero) to " + format_number(worst_ends, 3) +
              ": [continuity.csv](hosaka/continuity.csv). m = 1 is the C2 spline of eq (20); m = 3 (order 6) is shown too.");
     run.validate("sec3.m1_is_eq20_spline", "m = 1 vs hosaka_c2_spline (eq 20, chord scale), uneven data: max distance",
                  analysis::max_distance_same_parameter(hosaka_spline(uneven, 1), hosaka_c2_spline(uneven).curve), 0.0, 1e-12, "rounding");
-    repro::CsvWriter fig = run.table("fig_higher_order.csv", {"m", "u", "x", "y", "kappa"});
+    CsvWriter fig = run.table("fig_higher_order.csv", {"m", "u", "x", "y", "kappa"});
     for (int m = 1; m <= 3; ++m) {
         const HosakaCurve c = hosaka_spline(uneven, m);
         for (int k = 0; k <= 64 * c.segments(); ++k) {

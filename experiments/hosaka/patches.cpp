@@ -9,6 +9,7 @@
 //   grid         x = 0, 0.8, 1.5, 2.6, 3.2, 4; y = 0, 0.6, 1.5, 2.2, 3; heights and derivatives of
 //                ζ = 0.5 sin(1.1x) cos(0.9y) at the nodes.
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include "repro/artifact_run.hpp"
@@ -41,7 +42,7 @@ CornerDerivatives corner_data(int m) {
 }
 
 // ζ = 0.5 sin(1.1x) cos(0.9y) and its derivatives.
-double grid_function(double x, double y, int i, int j) { return sinusoid(0.5, 1.1, 0.0)(x, i) * sinusoid(1.0, 0.9, M_PI / 2)(y, j); }
+double grid_function(double x, double y, int i, int j) { return sinusoid(0.5, 1.1, 0.0)(x, i) * sinusoid(1.0, 0.9, std::numbers::pi / 2)(y, j); }
 
 }  // namespace
 
@@ -49,7 +50,7 @@ int main(int argc, char** argv) {
     repro::ArtifactRun run("hosaka", "patches", "4", "Surface patches: tensor form (eq 27), edge-curve form and Coons (eq 28-29), Cartesian patch (eq 30)", argc, argv);
 
     double corner_error = 0, printed_28 = 0, corrected_28 = 0, coons_gap = 0, coons_twist = 0, data_twist = 0, size = 0;
-    repro::CsvWriter fig = run.table("fig_patches.csv", {"m", "u", "v", "x", "y", "z_eq27", "z_coons"});
+    CsvWriter fig = run.table("fig_patches.csv", {"m", "u", "v", "x", "y", "z_eq27", "z_coons"});
     for (int m = 1; m <= 2; ++m) {
         const HosakaPatch patch(corner_data(m));
         const PatchEdges edges = patch.edges();
@@ -139,7 +140,7 @@ int main(int argc, char** argv) {
     for (std::size_t a = 0; a < gx.size(); ++a)
         for (std::size_t b = 0; b < gy.size(); ++b) heights(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b)) = grid_function(gx[a], gy[b], 0, 0);
     const CartesianSurface from_heights = cartesian_spline_surface(gx, gy, heights);
-    repro::CsvWriter g = run.table("fig_cartesian.csv", {"x", "y", "z", "z_exact"});
+    CsvWriter g = run.table("fig_cartesian.csv", {"x", "y", "z", "z_exact"});
     double worst = 0;
     for (int a = 0; a <= 40; ++a)
         for (int b = 0; b <= 30; ++b) {
@@ -151,10 +152,10 @@ int main(int argc, char** argv) {
     std::string grid_note = "Fig. 4 analogue: the m = 1 Cartesian surface from the ";
     grid_note += std::to_string(gx.size()) + " × " + std::to_string(gy.size()) +
                  " heights alone (node derivatives from natural splines along the grid lines, section 7 (iv)) differs from ζ by at most " +
-                 repro::format_number(worst, 3) + " on a 41 × 31 sampling: [fig_cartesian.csv](hosaka/fig_cartesian.csv).";
+                 format_number(worst, 3) + " on a 41 × 31 sampling: [fig_cartesian.csv](hosaka/fig_cartesian.csv).";
     run.note(grid_note);
     run.note("The twist of the eq (27) patch at the corners is the data's; Coons' surface (eq 28 with S0 = 0) has every corner derivative S^(i,j), i, j ≥ 1, "
-             "zero (relative size " + repro::format_number(coons_twist / data_twist, 3) + "), while keeping the edges: [fig_patches.csv](hosaka/fig_patches.csv).");
+             "zero (relative size " + format_number(coons_twist / data_twist, 3) + "), while keeping the edges: [fig_patches.csv](hosaka/fig_patches.csv).");
     run.figure("fig_patches", "The m = 1 tensor patch of eq (27) from our corner data (left) and Coons' surface with the same edges (eq 28 with S0 = 0, right): zero twist flattens the corners.");
     run.figure("fig_cartesian", "Fig. 4 analogue: the Cartesian surface of eq (30) (m = 1) over our 6 × 5 grid, node derivatives from splines along the grid lines.");
     return run.finish();

@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
     const std::vector<double> lambda{0.1};
     const std::vector<double> amplitudes{0.001, 0.002, 0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1.0};
 
-    repro::CsvWriter table = run.table("space_smoothing.csv", {"amplitude", "max_slope", "relative_difference", "energy_projections", "energy_space"});
+    CsvWriter table = run.table("space_smoothing.csv", {"amplitude", "max_slope", "relative_difference", "energy_projections", "energy_space"});
     std::vector<double> rel;
     double worst_energy_gap = 0.0, worst_refinement = 0.0;
     bool converged = true;
@@ -66,9 +66,9 @@ int main(int argc, char** argv) {
     // As printed: the projections may be smoothed separately "when the deformation is large".
     run.check("sec6.space_per_projection", rel[large], rel[small]);
     const double order = std::log(rel[3] / rel[0]) / std::log(amplitudes[3] / amplitudes[0]);
-    run.note("Relative difference max |per-projection − space| / A: " + repro::format_number(rel[small], 3) + " at A = " + repro::format_number(amplitudes[small], 3) + ", " +
-             repro::format_number(rel[large], 3) + " at A = " + repro::format_number(amplitudes[large], 3) + "; it grows like A^" + repro::format_number(order, 3) +
-             " (fitted between A = " + repro::format_number(amplitudes[0], 3) + " and " + repro::format_number(amplitudes[3], 3) +
+    run.note("Relative difference max |per-projection − space| / A: " + format_number(rel[small], 3) + " at A = " + format_number(amplitudes[small], 3) + ", " +
+             format_number(rel[large], 3) + " at A = " + format_number(amplitudes[large], 3) + "; it grows like A^" + format_number(order, 3) +
+             " (fitted between A = " + format_number(amplitudes[0], 3) + " and " + format_number(amplitudes[3], 3) +
              "), as the neglected factor 1/|r'|⁵ = 1 − (5/2)(y'² + z'²) + … predicts. The argument holds for small deformation (slopes), not large.");
     run.figure("fig_space_smoothing", "Difference between per-projection smoothing and the space elastic line (true bending energy), relative to the amplitude A of the data, against A; λ = 0.1.");
     return run.finish();

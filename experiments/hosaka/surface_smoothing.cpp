@@ -222,8 +222,8 @@ int main(int argc, char** argv) {
         {"plate (ii), eq 57, m = 2", [&](const Eigen::MatrixXd& d, double l) { return wrap(boundary_plate_smoothing(gx, gy, d, L(l), PlateEnergy::no_twist, 2).surface); }},
         {"approx. 1, eq 57", [&](const Eigen::MatrixXd& d, double l) { return wrap(local_orthogonal_smoothing(gx, gy, d, l, PlateEnergy::no_twist)); }},
         {"no smoothing (spline surface through the data)", [&](const Eigen::MatrixXd& d, double) { return wrap(surface::cartesian_spline_surface(gx, gy, d)); }}};
-    repro::CsvWriter table = run.table("surface_comparison.csv", {"surface", "method", "best_lambda", "rms_error", "max_error", "energy57", "energy57_truth"});
-    repro::CsvWriter fig = run.table("fig_surface_smoothing.csv", {"x", "y", "truth", "noisy", "net_splines", "plate57", "plate_ii", "approx1"});
+    CsvWriter table = run.table("surface_comparison.csv", {"surface", "method", "best_lambda", "rms_error", "max_error", "energy57", "energy57_truth"});
+    CsvWriter fig = run.table("fig_surface_smoothing.csv", {"x", "y", "truth", "noisy", "net_splines", "plate57", "plate_ii", "approx1"});
     std::string table_note = "Best RMS error against the truth on a 101 × 101 evaluation grid (noise σ = 0.02): ";
     for (const Truth& t : truths) {
         Eigen::MatrixXd data(21, 21);
@@ -261,9 +261,9 @@ int main(int argc, char** argv) {
             for (int i = 0; i <= 80; ++i)
                 for (int j = 0; j <= 80; ++j) exact(i, j) = t.f(fx[static_cast<std::size_t>(i)], fx[static_cast<std::size_t>(j)]);
             const double truth_energy = energy57(wrap(surface::cartesian_spline_surface(fx, fx, exact)), gx, gy);
-            table.row_text({t.name, m.name, repro::format_number(best_lambda, 3), repro::format_number(best, 4), repro::format_number(best_max, 4),
-                            repro::format_number(energy57(best_s, gx, gy), 4), repro::format_number(truth_energy, 4)});
-            table_note += t.name + " / " + m.name + ": " + repro::format_number(best, 3) + " (λ = " + repro::format_number(best_lambda, 2) + "); ";
+            table.row_text({t.name, m.name, format_number(best_lambda, 3), format_number(best, 4), format_number(best_max, 4),
+                            format_number(energy57(best_s, gx, gy), 4), format_number(truth_energy, 4)});
+            table_note += t.name + " / " + m.name + ": " + format_number(best, 3) + " (λ = " + format_number(best_lambda, 2) + "); ";
         }
         if (t.name == "franke") {
             for (int i = 0; i <= 40; ++i) {

@@ -8,6 +8,7 @@
 //          plain bilinear interpolation, and the length/area of the curve the tables draw.
 // The claims take the exact values; the table values explain the paper's (erratum pseudo_energy-E4).
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include "analysis/curve_measures.hpp"
@@ -21,7 +22,7 @@ namespace {
 
 PointList circle_points(int n) {
     PointList p(n, 2);
-    for (int k = 0; k < n; ++k) p.row(k) << std::cos(2 * M_PI * k / n), std::sin(2 * M_PI * k / n);
+    for (int k = 0; k < n; ++k) p.row(k) << std::cos(2 * std::numbers::pi * k / n), std::sin(2 * std::numbers::pi * k / n);
     return p;
 }
 
@@ -36,9 +37,9 @@ int main(int argc, char** argv) {
     const TableOracle oracle = tables.oracle();
     const ExactOracle exact_oracle;
 
-    run.check("table5.true_value", 2 * M_PI);
-    run.check("table6.true_value", M_PI);
-    repro::CsvWriter out = run.table("table5_table6.csv",
+    run.check("table5.true_value", 2 * std::numbers::pi);
+    run.check("table6.true_value", std::numbers::pi);
+    CsvWriter out = run.table("table5_table6.csv",
                                      {"n", "length_exact", "length_reference_path", "length_table", "length_table_bilinear", "length_of_table_curve",
                                       "equivalent_exact", "equivalent_table", "area_exact", "area_reference_path", "area_table", "area_table_bilinear",
                                       "area_of_table_curve", "area_equivalent_exact", "area_equivalent_table", "alpha_offset_table_deg"});
@@ -54,15 +55,15 @@ int main(int argc, char** argv) {
         const double L = ex.length_from_tables(), S = ex.area_from_tables();
         // The bisector minimises w with the exact J(θ): w at the bisector and at 1/8, 1/4 of the turn
         // beside it (w is symmetric about the bisector: J(θ) = J(−θ)).
-        const double tau = 2 * M_PI / n, centre = -tau / 2;
+        const double tau = 2 * std::numbers::pi / n, centre = -tau / 2;
         const auto w = [&](double a) { return exact_oracle.angle_minimum(wrap_angle(a + tau)).first + exact_oracle.angle_minimum(a).first; };
         const double wc = w(centre);
         bool ok = true;
         for (double f : {0.125, 0.25}) ok = ok && w(centre + f * tau) >= wc;
         bisector_minimises += ok ? 1 : 0;
         // The same segment from the reference minimiser (Romberg 1e-13, Ceres CG, Newton polish).
-        const PseudoEnergyMinimum ref = minimize_pseudo_energy_reference(-M_PI / n, M_PI / n);
-        const double l = 2 * std::sin(M_PI / n);
+        const PseudoEnergyMinimum ref = minimize_pseudo_energy_reference(-std::numbers::pi / n, std::numbers::pi / n);
+        const double l = 2 * std::sin(std::numbers::pi / n);
         const double L_ref = n * l * ref.length, S_ref = ex.polygon_area() - n * l * l * ref.area;
         ref_gap = std::max({ref_gap, std::abs(L - L_ref), std::abs(S - S_ref)});
         // eq (17), (20) against direct integration of the same curve.
@@ -78,25 +79,26 @@ int main(int argc, char** argv) {
             S_bil -= tb.chord_length[i] * tb.chord_length[i] * v.area;
         }
         const double L_tab = tb.length_from_tables(), S_tab = tb.area_from_tables();
-        if (std::abs(tb.alpha[0] - centre) * 180 / M_PI > 0.01) {
+        if (std::abs(tb.alpha[0] - centre) * 180 / std::numbers::pi > 0.01) {
             off_bisector += ' ';
             off_bisector += std::to_string(n);
         }
-        run.check("table5." + id + ".length", L);
-        run.check("table5." + id + ".equivalent", double(equivalent_polygon_points(std::abs(2 * M_PI - L), CircleMeasure::perimeter)));
-        run.check("table6." + id + ".area", S);
-        run.check("table6." + id + ".equivalent", double(equivalent_polygon_points(std::abs(M_PI - S), CircleMeasure::area)));
+        const std::string table5 = "table5." + id, table6 = "table6." + id;   // table5.n<n>.*, table6.n<n>.*
+        run.check(table5 + ".length", L);
+        run.check(table5 + ".equivalent", double(equivalent_polygon_points(std::abs(2 * std::numbers::pi - L), CircleMeasure::perimeter)));
+        run.check(table6 + ".area", S);
+        run.check(table6 + ".equivalent", double(equivalent_polygon_points(std::abs(std::numbers::pi - S), CircleMeasure::area)));
         // The paper's equivalent-points column from its own printed length/area.
-        const double printed_L = run.reference().row("pseudo_energy.table5." + id + ".length").paper_value;
-        const double printed_S = run.reference().row("pseudo_energy.table6." + id + ".area").paper_value;
-        run.check("table5." + id + ".equivalent_from_printed",
-                  double(equivalent_polygon_points(std::abs(2 * M_PI - printed_L), CircleMeasure::perimeter)));
-        run.check("table6." + id + ".equivalent_from_printed", double(equivalent_polygon_points(std::abs(M_PI - printed_S), CircleMeasure::area)));
+        const double printed_L = run.reference().row("pseudo_energy." + table5 + ".length").paper_value;
+        const double printed_S = run.reference().row("pseudo_energy." + table6 + ".area").paper_value;
+        run.check(table5 + ".equivalent_from_printed",
+                  double(equivalent_polygon_points(std::abs(2 * std::numbers::pi - printed_L), CircleMeasure::perimeter)));
+        run.check(table6 + ".equivalent_from_printed", double(equivalent_polygon_points(std::abs(std::numbers::pi - printed_S), CircleMeasure::area)));
         out.row({double(n), L, L_ref, L_tab, L_bil, analysis::romberg_arc_length(tb.curve).value,
-                 double(equivalent_polygon_points(std::abs(2 * M_PI - L), CircleMeasure::perimeter)),
-                 double(equivalent_polygon_points(std::abs(2 * M_PI - L_tab), CircleMeasure::perimeter)), S, S_ref, S_tab, S_bil,
-                 analysis::enclosed_area(tb.curve), double(equivalent_polygon_points(std::abs(M_PI - S), CircleMeasure::area)),
-                 double(equivalent_polygon_points(std::abs(M_PI - S_tab), CircleMeasure::area)), (tb.alpha[0] - centre) * 180 / M_PI},
+                 double(equivalent_polygon_points(std::abs(2 * std::numbers::pi - L), CircleMeasure::perimeter)),
+                 double(equivalent_polygon_points(std::abs(2 * std::numbers::pi - L_tab), CircleMeasure::perimeter)), S, S_ref, S_tab, S_bil,
+                 analysis::enclosed_area(tb.curve), double(equivalent_polygon_points(std::abs(std::numbers::pi - S), CircleMeasure::area)),
+                 double(equivalent_polygon_points(std::abs(std::numbers::pi - S_tab), CircleMeasure::area)), (tb.alpha[0] - centre) * 180 / std::numbers::pi},
                 10);
     }
     run.validate("sec5.bisector_minimises_w", "exact J(θ): the bisector minimises w of eq (12) for n = 3..10 (count of n)", bisector_minimises, 8, 0,

@@ -3,6 +3,7 @@
 // by exact minimisation over θ1 at 2° nodes. The paper derived J(θ) from its interpolated 36-node
 // table instead; we report how far that shortcut is from the exact J(θ).
 #include <cmath>
+#include <numbers>
 
 #include "fairness/pseudo_energy_table.hpp"
 #include "repro/artifact_run.hpp"
@@ -11,7 +12,7 @@ using namespace cagd;
 using namespace cagd::fairness;
 
 namespace {
-constexpr double kDeg = 180.0 / M_PI;
+constexpr double kDeg = 180.0 / std::numbers::pi;
 }
 
 int main(int argc, char** argv) {
@@ -19,7 +20,7 @@ int main(int argc, char** argv) {
     const AngleGrid one_degree{361, NodePlacement::endpoints};
     const PseudoEnergyTable fine = PseudoEnergyTable::load_or_build(run.cache_path("table361_fast.txt"), one_degree, TableMethod::fast);
     {
-        repro::CsvWriter out = run.table("fig8.csv", {"theta0_deg", "theta1_deg", "log10_J"});
+        CsvWriter out = run.table("fig8.csv", {"theta0_deg", "theta1_deg", "log10_J"});
         for (int i = 0; i < one_degree.n; i += 4) {
             for (int j = 0; j < one_degree.n; j += 4) {
                 const PseudoEnergyMinimum& m = fine.node(i, j);
@@ -31,7 +32,7 @@ int main(int argc, char** argv) {
     run.figure("fig8", "Fig. 8 — log10 J(θ0, θ1) over (−180°, 180°)² (1° fast table, every 4th node); undefined nodes blank.");
 
     const AngleMinimumTable angle = AngleMinimumTable::build({180, NodePlacement::periodic});
-    repro::CsvWriter out = run.table("fig9.csv", {"theta_deg", "J", "theta1_deg"});
+    CsvWriter out = run.table("fig9.csv", {"theta_deg", "J", "theta1_deg"});
     double sym_j = 0, sym_t = 0, j_at_zero = NAN;
     const auto& nodes = angle.nodes();
     const auto& vals = angle.values();
@@ -61,13 +62,13 @@ int main(int argc, char** argv) {
         if (th == 0.0) continue;
         double best = INFINITY;
         for (int s = 0; s <= 3600; ++s) {
-            const double t1 = -M_PI + 2 * M_PI * s / 3600.0;
+            const double t1 = -std::numbers::pi + 2 * std::numbers::pi * s / 3600.0;
             if (is_undefined_node(th, t1)) continue;
             best = std::min(best, t36.lookup(th, t1).pseudo_energy);
         }
         worst = std::max(worst, std::abs(best - vals[static_cast<std::size_t>(k)].pseudo_energy) / vals[static_cast<std::size_t>(k)].pseudo_energy);
     }
     run.note("J(θ) taken from the interpolated 36-node table (as the paper did; θ1 scanned in 0.1° steps) differs from the exact J(θ) by "
-             "up to " + repro::format_number(worst * 100, 3) + " % (36 nodes θ = −180°, −170°, …).");
+             "up to " + format_number(worst * 100, 3) + " % (36 nodes θ = −180°, −170°, …).");
     return run.finish();
 }

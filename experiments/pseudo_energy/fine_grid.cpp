@@ -4,6 +4,7 @@
 // seeded random sample, for grids of 36, 72, 180 (periodic) and 361 (endpoints) nodes per axis.
 // Also the fast path against the reference path on a random sample (not only at nodes).
 #include <cmath>
+#include <numbers>
 #include <random>
 
 #include "fairness/pseudo_energy_table.hpp"
@@ -42,12 +43,12 @@ int main(int argc, char** argv) {
         }
     run.check("sec2.minimum_exists_1deg", no_minimum);
     run.note("1° grid (361 × 361 nodes, fast path, one node per symmetry orbit): minimisers range over r ∈ [" +
-             repro::format_number(r_min, 4) + ", " + repro::format_number(r_max, 4) +
+             format_number(r_min, 4) + ", " + format_number(r_max, 4) +
              "]; the smallest occur next to the undefined nodes (±180°, 0), where r0 → 0 as θ1 → 0.");
 
     // Seeded random sample of direction pairs and their exact minima (fast path).
     std::mt19937_64 rng(20261121);
-    std::uniform_real_distribution<double> angle(-M_PI, M_PI);
+    std::uniform_real_distribution<double> angle(-std::numbers::pi, std::numbers::pi);
     const int samples = 2000;
     std::vector<PseudoEnergyMinimum> exact;
     while (static_cast<int>(exact.size()) < samples) {
@@ -55,8 +56,8 @@ int main(int argc, char** argv) {
         const PseudoEnergyMinimum m = minimize_pseudo_energy(a, b);
         if (m.outcome.ok()) exact.push_back(m);
     }
-    repro::CsvWriter out = run.table("interpolation_error.csv", {"nodes_per_axis", "placement", "rule", "quantity", "max_error", "rms_error"});
-    repro::CsvWriter fig = run.table("fig_interpolation_error.csv", {"nodes_per_axis", "spacing_deg", "max_rel_J_same_type", "rms_rel_J_same_type",
+    CsvWriter out = run.table("interpolation_error.csv", {"nodes_per_axis", "placement", "rule", "quantity", "max_error", "rms_error"});
+    CsvWriter fig = run.table("fig_interpolation_error.csv", {"nodes_per_axis", "spacing_deg", "max_rel_J_same_type", "rms_rel_J_same_type",
                                                                     "max_rel_J_plain", "rms_rel_J_plain"});
     const std::pair<int, NodePlacement> grids[] = {
         {36, NodePlacement::periodic}, {72, NodePlacement::periodic}, {180, NodePlacement::periodic}, {361, NodePlacement::endpoints}};
@@ -80,13 +81,13 @@ int main(int argc, char** argv) {
             const std::pair<const char*, const ErrorStats*> rows[] = {
                 {"J_relative", &ej}, {"r0", &er0}, {"r1", &er1}, {"L", &el}, {"S", &es}};
             for (const auto& [q, st] : rows)
-                out.row_text({std::to_string(n), to_string(placement), rule, q, repro::format_number(st->max, 6), repro::format_number(st->rms(), 6)});
+                out.row_text({std::to_string(n), to_string(placement), rule, q, format_number(st->max, 6), format_number(st->rms(), 6)});
             fig_row[same ? 0 : 2] = ej.max;
             fig_row[same ? 1 : 3] = ej.rms();
             if (n == 36 && same)
                 run.note("36-node table, same-type bilinear rule, " + std::to_string(samples) + " random pairs: max relative error of J " +
-                         repro::format_number(ej.max, 3) + " (RMS " + repro::format_number(ej.rms(), 3) + "), of r0 " +
-                         repro::format_number(er0.max, 3) + " (RMS " + repro::format_number(er0.rms(), 3) + ").");
+                         format_number(ej.max, 3) + " (RMS " + format_number(ej.rms(), 3) + "), of r0 " +
+                         format_number(er0.max, 3) + " (RMS " + format_number(er0.rms(), 3) + ").");
         }
         const double spacing = placement == NodePlacement::endpoints ? 360.0 / (n - 1) : 360.0 / n;
         fig.row({double(n), spacing, fig_row[0], fig_row[1], fig_row[2], fig_row[3]});

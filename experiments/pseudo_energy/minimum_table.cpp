@@ -5,6 +5,7 @@
 // Node placement: periodic, Θ_k = −180° + 10°k, k = 0..35 (see fairness/pseudo_energy_table.hpp).
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 
 #include "fairness/pseudo_energy_table.hpp"
 #include "repro/artifact_run.hpp"
@@ -13,7 +14,7 @@ using namespace cagd;
 using namespace cagd::fairness;
 
 namespace {
-constexpr double kDeg = 180.0 / M_PI;
+constexpr double kDeg = 180.0 / std::numbers::pi;
 
 // Nodes where no admissible segment exists (every scanned (r0, r1) gives a cusp) or where the
 // straight segment attains J = 0: measured on a 41×41 log scan of r ∈ [1e-2, 1e2]².
@@ -51,7 +52,7 @@ int main(int argc, char** argv) {
     run.check("sec4.j_zero_at_origin", segment_energy_reference(straight).pseudo_energy);
     run.check("sec4.undefined_nodes", measured_undefined_nodes(ref.nodes()));
 
-    repro::CsvWriter out = run.table("table36.csv", {"theta0_deg", "theta1_deg", "J", "r0", "r1", "L", "S", "type", "local_minima", "runner_up_J"});
+    CsvWriter out = run.table("table36.csv", {"theta0_deg", "theta1_deg", "J", "r0", "r1", "L", "S", "type", "local_minima", "runner_up_J"});
     int no_minimum = 0, n_c = 0, n_s = 0, n_x = 0, multi = 0;
     double fast_dj = 0, fast_dr = 0, fast_dls = 0, nl_dj = 0, nl_dr = 0, closest_gap = INFINITY;
     std::string closest_at;
@@ -59,10 +60,10 @@ int main(int argc, char** argv) {
     for (int i = 0; i < n; ++i)
         for (int j = 0; j < n; ++j) {
             const PseudoEnergyMinimum &r = ref.node(i, j), &f = fast.node(i, j), &q = nl.node(i, j);
-            out.row_text({repro::format_number(r.theta0 * kDeg), repro::format_number(r.theta1 * kDeg), repro::format_number(r.pseudo_energy, 15),
-                          repro::format_number(r.r0, 12), repro::format_number(r.r1, 12), repro::format_number(r.length, 12),
-                          repro::format_number(r.area, 12), to_string(r.type), std::to_string(r.local_minima),
-                          repro::format_number(r.runner_up, 12)});
+            out.row_text({format_number(r.theta0 * kDeg), format_number(r.theta1 * kDeg), format_number(r.pseudo_energy, 15),
+                          format_number(r.r0, 12), format_number(r.r1, 12), format_number(r.length, 12),
+                          format_number(r.area, 12), to_string(r.type), std::to_string(r.local_minima),
+                          format_number(r.runner_up, 12)});
             if (is_undefined_node(r.theta0, r.theta1)) {
                 ++n_x;
                 continue;
@@ -90,7 +91,7 @@ int main(int argc, char** argv) {
     run.check("sec4.both_types", n_c > 0 && n_s > 0 ? 1.0 : 0.0);
     run.note("Types at the 36 × 36 nodes: " + std::to_string(n_c) + " c, " + std::to_string(n_s) + " s, " + std::to_string(n_x) +
              " x (undefined). The reference reached ≥ 2 distinct local minima at " + std::to_string(multi) +
-             " nodes; the closest runner-up is " + repro::format_number(closest_gap * 100, 3) + " % above the global minimum, at " + closest_at + ".");
+             " nodes; the closest runner-up is " + format_number(closest_gap * 100, 3) + " % above the global minimum, at " + closest_at + ".");
     run.validate("fast.J", "fast path vs reference at every defined node: max |ΔJ| / max(1, J)", fast_dj, 0.0, 1e-10,
                  "issue 3 agreement requirement (relative for J ≫ 1)");
     run.validate("fast.r", "fast path vs reference at every defined node: max |Δr0|, |Δr1|", fast_dr, 0.0, 1e-8, "issue 3 agreement requirement");

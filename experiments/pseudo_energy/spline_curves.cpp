@@ -4,6 +4,7 @@
 // as section 4.1 describes. The pseudo-spline of the figures uses the exact tangent optimisation.
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <string>
 
 #include "analysis/curve_measures.hpp"
@@ -56,19 +57,19 @@ int main(int argc, char** argv) {
     }
     sets.push_back({"table3", "fig20_24", "", t3, NAN});
 
-    repro::CsvWriter measures = run.table("measures.csv", {"data", "a", "method", "mode", "length", "bending_energy", "pseudo_energy",
+    CsvWriter measures = run.table("measures.csv", {"data", "a", "method", "mode", "length", "bending_energy", "pseudo_energy",
                                                            "curvature_sign_changes", "max_abs_curvature", "overshoot", "max_spike",
                                                            "corners", "self_intersections"});
-    repro::CsvWriter fig1 = run.table("fig10_14.csv", {"method", "u", "x", "y", "s", "kappa"});
-    repro::CsvWriter fig2 = run.table("fig15_19.csv", {"method", "a", "u", "x", "y", "s", "kappa"});
-    repro::CsvWriter fig3 = run.table("fig20_24.csv", {"method", "u", "x", "y", "s", "kappa"});
+    CsvWriter fig1 = run.table("fig10_14.csv", {"method", "u", "x", "y", "s", "kappa"});
+    CsvWriter fig2 = run.table("fig15_19.csv", {"method", "a", "u", "x", "y", "s", "kappa"});
+    CsvWriter fig3 = run.table("fig20_24.csv", {"method", "u", "x", "y", "s", "kappa"});
     const auto measure_row = [&](const DataSet& d, const std::string& method, const std::string& mode, const Curve& c) {
         const analysis::FairnessMeasures f = analysis::fairness_measures(c, d.points);
         const int crossings = analysis::self_intersections(c);
-        measures.row_text({d.name, std::isnan(d.a) ? "" : repro::format_number(d.a), method, mode, repro::format_number(f.length, 10),
-                           repro::format_number(f.bending_energy, 10), repro::format_number(f.pseudo_energy, 10),
-                           std::to_string(f.curvature_sign_changes), repro::format_number(f.max_abs_curvature, 10),
-                           repro::format_number(f.overshoot, 6), repro::format_number(f.max_spike, 6), std::to_string(f.corners),
+        measures.row_text({d.name, std::isnan(d.a) ? "" : format_number(d.a), method, mode, format_number(f.length, 10),
+                           format_number(f.bending_energy, 10), format_number(f.pseudo_energy, 10),
+                           std::to_string(f.curvature_sign_changes), format_number(f.max_abs_curvature, 10),
+                           format_number(f.overshoot, 6), format_number(f.max_spike, 6), std::to_string(f.corners),
                            std::to_string(crossings)});
         return std::make_pair(f, crossings);
     };
@@ -114,21 +115,22 @@ int main(int argc, char** argv) {
                 std::string key = d.name + "." + to_string(m);
                 interior_max[key] = std::max(interior_max[key], interior);
                 ends_max[key] = std::max(ends_max[key], ends);
-                run.note(d.name + (std::isnan(d.a) ? "" : " (a = " + repro::format_number(d.a) + ")") + ": pseudo-spline vs " +
-                         to_string(m) + " — largest distance on interior spans " + repro::format_number(100 * interior, 3) +
-                         " % of the data diagonal, on the end spans " + repro::format_number(100 * ends, 3) + " %.");
+                run.note(d.name + (std::isnan(d.a) ? "" : " (a = " + format_number(d.a) + ")") + ": pseudo-spline vs " +
+                         to_string(m) + " — largest distance on interior spans " + format_number(100 * interior, 3) +
+                         " % of the data diagonal, on the end spans " + format_number(100 * ends, 3) + " %.");
             }
         }
     }
     // "Nearly the same except at the ends" (section 4.2, Tables 1 and 2): visibly the same means
     // within 1 % of the data diagonal (our threshold, as in sb2_locality).
-    repro::CsvWriter comparison = run.table("optimisation_comparison.csv", {"data", "non_optimised", "interior_spans_percent_of_diagonal", "end_spans_percent_of_diagonal"});
+    CsvWriter comparison = run.table("optimisation_comparison.csv", {"data", "non_optimised", "interior_spans_percent_of_diagonal", "end_spans_percent_of_diagonal"});
     for (const char* data : {"table1", "table2"})
         for (const char* m : {"hermite-a", "hermite-b"}) {
             const std::string key = std::string(data) + "." + m;
-            comparison.row_text({data, m, repro::format_number(100 * interior_max[key], 4), repro::format_number(100 * ends_max[key], 4)});
-            run.check("sec42." + key + ".interior_same", interior_max[key] < 0.01 ? 1.0 : 0.0);
-            run.check("sec42." + key + ".ends_differ_more", ends_max[key] > interior_max[key] ? 1.0 : 0.0);
+            comparison.row_text({data, m, format_number(100 * interior_max[key], 4), format_number(100 * ends_max[key], 4)});
+            const std::string claim = "sec42." + key;   // sec42.<table1|table2>.<hermite-a|hermite-b>.*
+            run.check(claim + ".interior_same", interior_max[key] < 0.01 ? 1.0 : 0.0);
+            run.check(claim + ".ends_differ_more", ends_max[key] > interior_max[key] ? 1.0 : 0.0);
         }
     run.check("sec42.table3.pseudo_spline_corners", table3_pseudo_corners);
     run.check("sec42.table3.hermite_a_corner", table3_corner_a > 0 ? 1.0 : 0.0);
@@ -137,7 +139,7 @@ int main(int argc, char** argv) {
 
     // Locality (section 6: "the curve keeps locality"): move one interior point by 1 % of the
     // diagonal and count the spans that move by more than 1e-12 × diagonal.
-    repro::CsvWriter loc = run.table("locality.csv", {"data", "method", "moved_point", "spans", "spans_moved"});
+    CsvWriter loc = run.table("locality.csv", {"data", "method", "moved_point", "spans", "spans_moved"});
     int pseudo_worst = 0;
     for (const DataSet* d : {&sets[0], &sets[4]}) {
         const Eigen::Index n = d->points.rows();
@@ -152,7 +154,7 @@ int main(int argc, char** argv) {
                 for (int k = 0; k < a.spans(); ++k)
                     if (analysis::max_distance_same_parameter(a, b, k, k + 1, 65) > 1e-12 * bounding_box_diagonal(d->points)) ++count;
                 worst = std::max(worst, count);
-                loc.row_text({d->name + (std::isnan(d->a) ? "" : " a=" + repro::format_number(d->a)), to_string(kMethods[mi]),
+                loc.row_text({d->name + (std::isnan(d->a) ? "" : " a=" + format_number(d->a)), to_string(kMethods[mi]),
                               std::to_string(j), std::to_string(a.spans()), std::to_string(count)});
             }
             if (kMethods[mi] == InterpolationMethod::pseudo_spline) pseudo_worst = std::max(pseudo_worst, worst);
@@ -163,7 +165,7 @@ int main(int argc, char** argv) {
     // Length and area from the L and S tables (eq 16, 19, 21) against adaptive integration of the
     // curve the tables draw. They differ by the tables' interpolation error: L and S are
     // interpolated at (θ0, θ1) while the curve uses interpolated r0, r1.
-    repro::CsvWriter tvi = run.table("tables_vs_integration.csv", {"data", "length_tables", "length_integrated", "length_rel_diff", "area_tables",
+    CsvWriter tvi = run.table("tables_vs_integration.csv", {"data", "length_tables", "length_integrated", "length_rel_diff", "area_tables",
                                                                    "area_integrated", "area_abs_diff_over_diagonal_squared"});
     double worst_length = 0.0;
     for (const DataSet* d : {&sets[0], &sets[4], &sets[6], &sets[7]}) {
@@ -173,12 +175,12 @@ int main(int argc, char** argv) {
         const double L = analysis::adaptive_arc_length(ps.curve, 1e-12), S = analysis::enclosed_area(ps.curve) + closing;
         const double dl = std::abs(ps.length_from_tables() - L) / L, diag = bounding_box_diagonal(d->points);
         worst_length = std::max(worst_length, dl);
-        tvi.row_text({d->name + (std::isnan(d->a) ? "" : " a=" + repro::format_number(d->a)), repro::format_number(ps.length_from_tables(), 10),
-                      repro::format_number(L, 10), repro::format_number(dl, 3), repro::format_number(ps.area_from_tables(), 10),
-                      repro::format_number(S, 10), repro::format_number(std::abs(ps.area_from_tables() - S) / (diag * diag), 3)});
+        tvi.row_text({d->name + (std::isnan(d->a) ? "" : " a=" + format_number(d->a)), format_number(ps.length_from_tables(), 10),
+                      format_number(L, 10), format_number(dl, 3), format_number(ps.area_from_tables(), 10),
+                      format_number(S, 10), format_number(std::abs(ps.area_from_tables() - S) / (diag * diag), 3)});
     }
     run.note("Length and area from the tables (eq 16–21) against adaptive integration of the drawn curve: largest relative length difference " +
-             repro::format_number(100 * worst_length, 3) + " % (table interpolation error; with exact segments they agree to 1e-11, experiment circle_length_area) — [tables_vs_integration.csv](pseudo_energy/tables_vs_integration.csv).");
+             format_number(100 * worst_length, 3) + " % (table interpolation error; with exact segments they agree to 1e-11, experiment circle_length_area) — [tables_vs_integration.csv](pseudo_energy/tables_vs_integration.csv).");
     run.note("Measured fairness of every curve (length, ∫κ² ds, pseudo-energy, curvature sign changes, max |κ|, overshoot beyond the data's box, corners, self-crossings): [measures.csv](pseudo_energy/measures.csv); spans moved when one point moves, per method: [locality.csv](pseudo_energy/locality.csv); with/without optimisation distances: [optimisation_comparison.csv](pseudo_energy/optimisation_comparison.csv).");
 
     // Independent check of cubic spline A: the natural uniform cubic B-spline interpolant of
@@ -194,9 +196,9 @@ int main(int argc, char** argv) {
     run.figure("fig15_19", "Figs. 15–19 — Table 2 (spike) data for a = 0..5, the five methods (top) and their curvature κ(s) (bottom).");
     run.figure("fig20_24", "Figs. 20–24 — Table 3 (knot) data, the five methods (top) and κ(s) (bottom); the Hermite curves and the cubic splines have curvature spikes (corners), the pseudo-spline has none.");
     run.note("Angle convention: chord-angle differences are wrapped to (−180°, 180°], so at both interior points of Table 3 the data turn clockwise by " +
-             repro::format_number(180.0 - std::atan2(0.1, 2.0) * 180.0 / M_PI, 6) +
+             format_number(180.0 - std::atan2(0.1, 2.0) * 180.0 / std::numbers::pi, 6) +
              "° and the pseudo-spline is a loop that crosses its first span (claim sec42.table3.knot counts the crossings).");
-    run.note("Corner: a span whose largest |κ|·l (l the span's chord) exceeds " + repro::format_number(analysis::kCornerThreshold) +
+    run.note("Corner: a span whose largest |κ|·l (l the span's chord) exceeds " + format_number(analysis::kCornerThreshold) +
              ", i.e. a radius of curvature below 1 % of the chord — our definition; at a cusp |κ| is unbounded. Cubic splines A and B use natural end conditions (our choice; the paper cites [5]).");
     run.note("Tangent optimisation 'none' (Table 4; the Table 3 corner note above): α_i along P_{i−1}P_{i+1} (Hermite A's direction), magnitudes from the table and ends by eq (13) — the method without the minimisation of eq (12).");
     return run.finish();

@@ -7,6 +7,7 @@
 // 50-digit spot values of E, L, J (Boost.Multiprecision) against both double paths.
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "analysis/curve_measures.hpp"
 #include "fairness/hermite_segment.hpp"
@@ -16,7 +17,7 @@ using namespace cagd;
 using namespace cagd::fairness;
 
 namespace {
-constexpr double kDeg = M_PI / 180.0;
+constexpr double kDeg = std::numbers::pi / 180.0;
 
 SegmentEnergy energy_at(double t0, double t1, double r) {
     return segment_energy_reference(UnitChordHermite(t0, t1, r, r), 1e-13, false);
@@ -33,7 +34,7 @@ double pick_j(const SegmentEnergy& e) { return e.pseudo_energy; }
 // Local minima of E(r) on a log grid r ∈ [0.05, 1e5], step 0.01 in ln r; writes the curve.
 int energy_profile(repro::ArtifactRun& run, const std::string& name, double t0, double t1, double& r_at_min,
                    double& e_at_min) {
-    repro::CsvWriter out = run.table(name + ".csv", {"r", "log10_E", "log10_L", "log10_J"});
+    CsvWriter out = run.table(name + ".csv", {"r", "log10_E", "log10_L", "log10_J"});
     int minima = 0;
     double prev = INFINITY, prev2 = INFINITY;
     for (double lr = std::log(0.05); lr <= std::log(1e5) + 1e-9; lr += 0.01) {
@@ -53,7 +54,7 @@ int energy_profile(repro::ArtifactRun& run, const std::string& name, double t0, 
 
 void curves(repro::ArtifactRun& run, const std::string& name, double t0, double t1) {
     const double rs[] = {0.5, 1.0, 2.0, 4.0};
-    repro::CsvWriter out = run.table(name + "_curves.csv", {"t", "x_r0.5", "y_r0.5", "x_r1", "y_r1", "x_r2", "y_r2", "x_r4", "y_r4"});
+    CsvWriter out = run.table(name + "_curves.csv", {"t", "x_r0.5", "y_r0.5", "x_r1", "y_r1", "x_r2", "y_r2", "x_r4", "y_r4"});
     for (int i = 0; i <= 200; ++i) {
         const double t = i / 200.0;
         std::vector<double> row{t};
@@ -83,8 +84,8 @@ int main(int argc, char** argv) {
     curves(run, "fig3", f3a, f3b);
     run.figure("fig3", "Fig. 3 — (θ0, θ1) = (45°, −45°): E has a local minimum near r = 1 but decreases without bound for large r.");
     run.check("fig3.below_local_minimum", energy_at(f3a, f3b, 1e5).strain_energy < e3 ? 1.0 : 0.0);
-    run.note("Fig. 3 local minimum of E at r ≈ " + repro::format_number(r3, 4) + ", E = " + repro::format_number(e3, 6) +
-             "; E(1e5) = " + repro::format_number(energy_at(f3a, f3b, 1e5).strain_energy, 4) + ".");
+    run.note("Fig. 3 local minimum of E at r ≈ " + format_number(r3, 4) + ", E = " + format_number(e3, 6) +
+             "; E(1e5) = " + format_number(energy_at(f3a, f3b, 1e5).strain_energy, 4) + ".");
 
     run.check("sec2.energy_order_fig2", slope(f2a, f2b, pick_e));
     run.check("sec2.energy_order_fig3", slope(f3a, f3b, pick_e));
@@ -98,10 +99,10 @@ int main(int argc, char** argv) {
 
     // The cusp trap: (π − ε, 0, 1, 1) has a near-cusp of speed ~ε; a fixed rule steps over it.
     {
-        repro::CsvWriter out = run.table("cusp_trap.csv", {"epsilon", "min_speed", "J_reference", "J_graded_fast", "J_fixed_rule"});
+        CsvWriter out = run.table("cusp_trap.csv", {"epsilon", "min_speed", "J_reference", "J_graded_fast", "J_fixed_rule"});
         double worst_graded = 0, fixed_ratio = 1;
         for (double eps : {1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6}) {
-            const UnitChordHermite seg(M_PI - eps, 0.0, 1.0, 1.0);
+            const UnitChordHermite seg(std::numbers::pi - eps, 0.0, 1.0, 1.0);
             const SegmentEnergy ref = segment_energy_reference(seg, 1e-13, false);
             const SegmentEnergy fast = segment_energy_fast(seg, false);
             const BezierCurve bez = seg.bezier();
@@ -118,21 +119,21 @@ int main(int argc, char** argv) {
         run.validate("cusp.graded_vs_romberg", "near-cusp segments (π − ε, 0, 1, 1), ε = 1e-1 … 1e-6: graded 20-point Gauss–Legendre vs Romberg, max of relative |ΔJ| / (1e-13 + 10 ε_mach |B| / min|P'|)",
                      worst_graded, 0.0, 1.0, "rounding of P' near the cusp (cancellation) bounds the agreement of any double quadrature");
         run.note("Cusp trap (cusp_trap.csv): a fixed 20-point rule on [0, 1] without grading reports as little as " +
-                 repro::format_number(fixed_ratio, 3) + " × the true J near a cusp; the graded rules do not.");
+                 format_number(fixed_ratio, 3) + " × the true J near a cusp; the graded rules do not.");
     }
 
     // 50-digit spot values against both double paths.
     const double spots[][4] = {{0.5, 0.3, 1.0, 1.0}, {45 * kDeg, -45 * kDeg, 1.2, 1.2}, {3.0, 2.9, 2.0, 2.0},
-                               {150 * kDeg, -150 * kDeg, 0.3, 4.0}, {M_PI - 1e-3, 0.0, 1.0, 1.0}};
-    repro::CsvWriter spot = run.table("high_precision.csv", {"theta0", "theta1", "r0", "r1", "J_50_digits", "J_romberg", "J_fast"});
+                               {150 * kDeg, -150 * kDeg, 0.3, 4.0}, {std::numbers::pi - 1e-3, 0.0, 1.0, 1.0}};
+    CsvWriter spot = run.table("high_precision.csv", {"theta0", "theta1", "r0", "r1", "J_50_digits", "J_romberg", "J_fast"});
     double worst_ref = 0, worst_fast = 0;
     for (const auto& s : spots) {
         const SegmentEnergyDigits hp = segment_energy_high_precision(s[0], s[1], s[2], s[3]);
         const UnitChordHermite seg(s[0], s[1], s[2], s[3]);
         const double jr = segment_energy_reference(seg, 1e-13, false).pseudo_energy;
         const double jf = segment_energy_fast(seg, false).pseudo_energy;
-        spot.row_text({repro::format_number(s[0]), repro::format_number(s[1]), repro::format_number(s[2]), repro::format_number(s[3]),
-                       hp.pseudo_energy, repro::format_number(jr, 17), repro::format_number(jf, 17)});
+        spot.row_text({format_number(s[0]), format_number(s[1]), format_number(s[2]), format_number(s[3]),
+                       hp.pseudo_energy, format_number(jr, 17), format_number(jf, 17)});
         worst_ref = std::max(worst_ref, std::abs(jr - hp.pseudo_energy_value) / hp.pseudo_energy_value);
         worst_fast = std::max(worst_fast, std::abs(jf - hp.pseudo_energy_value) / hp.pseudo_energy_value);
     }

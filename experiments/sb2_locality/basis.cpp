@@ -101,10 +101,10 @@ int main(int argc, char** argv) {
     };
     run.check("sec23.s_h_smaller", norm(SplineForm::s_spline, false) < norm(SplineForm::b2_spline, false) ? 1.0 : 0.0);
     run.check("sec23.s_g_larger", norm(SplineForm::s_spline, true) > norm(SplineForm::b2_spline, true) ? 1.0 : 0.0);
-    run.note("L1 norms: |g| = " + repro::format_number(norm(SplineForm::b2_spline, true), 6) +
-             ", |ĝ| = " + repro::format_number(norm(SplineForm::s_spline, true), 6) +
-             ", |h| = " + repro::format_number(norm(SplineForm::b2_spline, false), 6) +
-             ", |ĥ| = " + repro::format_number(norm(SplineForm::s_spline, false), 6) + ".");
+    run.note("L1 norms: |g| = " + format_number(norm(SplineForm::b2_spline, true), 6) +
+             ", |ĝ| = " + format_number(norm(SplineForm::s_spline, true), 6) +
+             ", |h| = " + format_number(norm(SplineForm::b2_spline, false), 6) +
+             ", |ĥ| = " + format_number(norm(SplineForm::s_spline, false), 6) + ".");
     run.figure("fig2", "Fig. 2 — blending functions g, h (B2-spline) and ĝ, ĥ (S-spline)");
     return run.finish();
 }

@@ -43,8 +43,8 @@ int main(int argc, char** argv) {
             const auto bes = interpolate(p, o).curve;
             const Eigen::VectorXd tb = bessel_tangent(p);
             const double ab = angle(bes.jet(0.0, 1).row(1).transpose(), tb);
-            tab.row_text({f == SplineForm::s_spline ? "S" : "B2", std::to_string(m), repro::format_number(k0),
-                          repro::format_number(k1), repro::format_number(a0), repro::format_number(a1), repro::format_number(ab)});
+            tab.row_text({f == SplineForm::s_spline ? "S" : "B2", std::to_string(m), format_number(k0),
+                          format_number(k1), format_number(a0), format_number(a1), format_number(ab)});
             kappa = std::max({kappa, k0, k1});
             tangent = std::max({tangent, a0, a1});
             bessel = std::max(bessel, ab);

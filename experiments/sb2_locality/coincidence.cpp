@@ -3,6 +3,7 @@
 // closed curve (2cos θ + 0.3cos 3θ, sin θ + 0.2 sin 2θ), θ = 2πk/12 (chosen; the paper gives
 // none) — closed, so no end condition enters.
 #include <cmath>
+#include <numbers>
 
 #include "locality/locality_spline.hpp"
 #include "repro/artifact_run.hpp"
@@ -30,12 +31,12 @@ int main(int argc, char** argv) {
     const int n = 12;
     PointList p(n, 2);
     for (int k = 0; k < n; ++k) {
-        const double t = 2 * M_PI * k / n;
+        const double t = 2 * std::numbers::pi * k / n;
         p.row(k) << 2 * std::cos(t) + 0.3 * std::cos(3 * t), std::sin(t) + 0.2 * std::sin(2 * t);
     }
     const double diag = bounding_box_diagonal(p);
     run.note("Data: 12 points (2cos θ + 0.3cos 3θ, sin θ + 0.2 sin 2θ), θ = 2πk/12, closed; residuals divided by the bounding-box diagonal " +
-             repro::format_number(diag, 6) + ".");
+             format_number(diag, 6) + ".");
 
     // α measured from eq (10): impulse response of the (1,4,1)/6 system, far from the ends.
     PointList impulse = PointList::Zero(201, 2);
@@ -96,7 +97,7 @@ int main(int argc, char** argv) {
         series_corrected = std::max(series_corrected, (std::sqrt(3.0) * (1 + alpha()) * b - target).norm() / diag);
     }
     run.check("eq11.series", series_printed, series_corrected);
-    run.note("With the corrections of errata E1 and E2: eq (9) residual " + repro::format_number(corrected, 3) +
-             ", eq (11) deviation " + repro::format_number(series_corrected, 3) + " (relative to the diagonal).");
+    run.note("With the corrections of errata E1 and E2: eq (9) residual " + format_number(corrected, 3) +
+             ", eq (11) deviation " + format_number(series_corrected, 3) + " (relative to the diagonal).");
     return run.finish();
 }

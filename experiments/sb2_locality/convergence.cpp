@@ -21,7 +21,7 @@ int main(int argc, char** argv) {
     for (int i = 0; i < n; ++i) p.row(i) << i + 0.3 * std::sin(0.9 * i), std::sin(0.45 * i) + 0.4 * std::cos(1.3 * i);
     const double diag = bounding_box_diagonal(p);
     run.note("Data: 61 points p_i = (i + 0.3 sin 0.9i, sin 0.45i + 0.4 cos 1.3i); distances relative to the diagonal " +
-             repro::format_number(diag, 6) + ".");
+             format_number(diag, 6) + ".");
     const BSplineCurve open_ref = cubic_bspline_interpolant(p, false), closed_ref = cubic_bspline_interpolant(p, true);
     auto tab = run.table("fig_convergence.csv", {"m", "s_open", "b2_open", "s_closed", "b2_closed", "alpha_reference"});
     bool monotone = true;
@@ -41,7 +41,7 @@ int main(int argc, char** argv) {
         prev_s = so;
         prev_b2 = bo;
         if (m == 5)
-            run.note("m = 5: max distance to eq (10) = " + repro::format_number(so, 3) + " (S), " + repro::format_number(bo, 3) +
+            run.note("m = 5: max distance to eq (10) = " + format_number(so, 3) + " (S), " + format_number(bo, 3) +
                      " (B2) of the diagonal.");
     }
     run.check("sec31.monotone_convergence", monotone ? 1.0 : 0.0);
@@ -70,6 +70,6 @@ int main(int argc, char** argv) {
     run.validate("sec31.peer_s_m60", "S-spline m = 60 vs Boost cardinal_cubic_b_spline on u ∈ [20, 40] (max distance / diag)",
                  peer_s60, 0.0, 1e-9, "end conditions differ; their influence decays like |α|^20 ≈ 4e-12");
     run.figure("fig_convergence", "Max distance to the conventional interpolant (eq 10) against m (log scale), with the reference line 0.1 |α|^m, |α| = " +
-                                      repro::format_number(std::abs(alpha()), 7));
+                                      format_number(std::abs(alpha()), 7));
     return run.finish();
 }

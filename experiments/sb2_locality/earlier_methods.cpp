@@ -72,8 +72,8 @@ int main(int argc, char** argv) {
     run.check("sec34.fmill_reproduces_lines", off_line(fmill));
     const double fm_vs_m1 = analysis::max_distance_same_parameter(interpolate(p, fmill).curve, s1.curve) / diag;
     run.check("sec34.fmill_differs_from_m1", fm_vs_m1 > 1e-6 ? 1.0 : 0.0);
-    run.note("FMILL vs m = 1 (S-spline): max distance " + repro::format_number(fm_vs_m1, 4) +
+    run.note("FMILL vs m = 1 (S-spline): max distance " + format_number(fm_vs_m1, 4) +
              " of the diagonal. Rearranged m = 1 form with the correction of erratum E3: max |Δ| " +
-             repro::format_number(corrected, 3) + ".");
+             format_number(corrected, 3) + ".");
     return run.finish();
 }

@@ -69,8 +69,8 @@ int main(int argc, char** argv) {
     run.check("fig5.m3_no_visible_difference", diff[3]);
     run.check("fig5.difference_decreases", (diff[0] > diff[1] && diff[1] > diff[2] && diff[2] > diff[3]) ? 1.0 : 0.0);
     run.note("Visibility (our 0.2 % threshold) is data-dependent: on these data m = 1 differs by " +
-             repro::format_number(100.0 * diff[1], 3) + " % of the diagonal. max |S − B2| / diag for m = 0..3: " + repro::format_number(diff[0], 3) + ", " + repro::format_number(diff[1], 3) +
-             ", " + repro::format_number(diff[2], 3) + ", " + repro::format_number(diff[3], 3) + ".");
+             format_number(100.0 * diff[1], 3) + " % of the diagonal. max |S − B2| / diag for m = 0..3: " + format_number(diff[0], 3) + ", " + format_number(diff[1], 3) +
+             ", " + format_number(diff[2], 3) + ", " + format_number(diff[3], 3) + ".");
 
     // Fig. 6: signed outward offset of S relative to B2 at the middle of each convex span.
     // The paper's condition: q_{i,1}, q_{i,2} (natural virtual points beyond the ends) on the same
@@ -127,7 +127,7 @@ int main(int argc, char** argv) {
     const double random_fraction = double(random_changes) / double(random_steps);
     run.check("fig6.outer_curve_alternates", steps ? double(changes) / steps : 0.0, random_fraction > 0.5 ? 1.0 : 0.0);
     run.note("Random data (300 seeded sets, interior convex spans): the outer curve alternates in " + std::to_string(random_changes) +
-             " of " + std::to_string(random_steps) + " steps (" + repro::format_number(100.0 * random_fraction, 3) + " %).");
+             " of " + std::to_string(random_steps) + " steps (" + format_number(100.0 * random_fraction, 3) + " %).");
     run.note("Alternation: " + std::to_string(changes) + " of " + std::to_string(steps) + " steps on convex spans meeting the paper's condition; " +
              std::to_string(all_changes) + " of " + std::to_string(all_steps) + " on all convex spans (the exceptions are spans where the condition fails).");
     run.note("Fig. 6 close-up: span [" + std::to_string(best_span) + ", " + std::to_string(best_span + 1) +

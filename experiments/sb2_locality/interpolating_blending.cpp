@@ -51,7 +51,7 @@ int main(int argc, char** argv) {
         }
         shrinking = shrinking && overall < previous;
         previous = overall;
-        run.note("m = " + std::to_string(m) + ": max |S − B2| = " + repro::format_number(overall, 4) + ", " +
+        run.note("m = " + std::to_string(m) + ": max |S − B2| = " + format_number(overall, 4) + ", " +
                  std::to_string(differing) + " differing spans.");
     }
     run.check("sec32.difference_shrinks", shrinking ? 1.0 : 0.0);

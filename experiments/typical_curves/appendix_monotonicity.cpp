@@ -7,6 +7,7 @@
 // Data (ours; the paper gives none): angle grids as stated; for the checker, the scale-1 typical
 // polygons of Fig. 1 (α = −0.5, L = 1, degrees 24, 49, 99) and 200 random unit-edge polygons.
 #include <cmath>
+#include <numbers>
 #include <random>
 
 #include "aesthetic/cubic_bspline_monotonicity.hpp"
@@ -57,7 +58,7 @@ std::vector<double> h_with_factor(double a, double b, double k, double scale = 1
 int main(int argc, char** argv) {
     repro::ArtifactRun run("typical_curves", "appendix_monotonicity", "3.4",
                            "Curvature monotonicity of cubic B-spline segments: coefficients C0–C5, condition (29)–(30), Fig. 7 regions, endpoint interpolation (section 3.4, appendix A)", argc, argv);
-    const double half_pi = M_PI / 2;
+    const double half_pi = std::numbers::pi / 2;
 
     // ---- A.1: the printed coefficients against the exact ones, on a 41 × 41 grid of [0, π/2]².
     double diff[6] = {0, 0, 0, 0, 0, 0}, diff_c2_ext = 0, diff_c3_cor = 0, diff_closed = 0, diff_two_thirds = 0, ratio_scaled = 0, ratio_unscaled = 0;
@@ -145,15 +146,15 @@ int main(int argc, char** argv) {
     run.check("fig7.caption_c1_negative_where_29", static_cast<double>(p29_c1) / static_cast<double>(p29));
     run.check("appendix.deciding_coefficient", agree_c0_all / total, agree_c5_all / total);
     run.check("sec3.4.condition29_monotone", static_cast<double>(p29_mono) / static_cast<double>(p29));
-    run.note("Fig. 7 domain [0, π/2]², " + std::to_string(n) + " × " + std::to_string(n) + " grid: (29) holds on " + repro::format_number(100.0 * p29 / total, 4) +
-             " % of it, every C_i < 0 on " + repro::format_number(100.0 * all_neg / total, 4) + " %, dκ/dt ≤ 0 on [0, 1] by the exact sign on " +
-             repro::format_number(100.0 * exact_mono / total, 4) + " % (dκ/dt ≥ 0, the mirrored case θ1 > θ0, on " + repro::format_number(100.0 * exact_inc / total, 4) +
-             " %). Grid points where 'decreasing' and (29) disagree: " + repro::format_number(differ, 6) +
+    run.note("Fig. 7 domain [0, π/2]², " + std::to_string(n) + " × " + std::to_string(n) + " grid: (29) holds on " + format_number(100.0 * p29 / total, 4) +
+             " % of it, every C_i < 0 on " + format_number(100.0 * all_neg / total, 4) + " %, dκ/dt ≤ 0 on [0, 1] by the exact sign on " +
+             format_number(100.0 * exact_mono / total, 4) + " % (dκ/dt ≥ 0, the mirrored case θ1 > θ0, on " + format_number(100.0 * exact_inc / total, 4) +
+             " %). Grid points where 'decreasing' and (29) disagree: " + format_number(differ, 6) +
              ". (29) is necessary as well as sufficient for decreasing curvature, because C5 = h(1): if C5 > 0 the curvature increases at the segment's end.");
     // The same tests over (0, π)² (the paper states (29) for any θ0 > 0).
     {
         const int m = 600;
-        const std::vector<RegionPoint> wide = monotonicity_region(m, 0.0, M_PI * (1.0 - 1e-9));
+        const std::vector<RegionPoint> wide = monotonicity_region(m, 0.0, std::numbers::pi * (1.0 - 1e-9));
         double w29 = 0, w29_all = 0, w29_mono = 0;
         double worst_a = -1, worst_b = -1;
         for (int i = 0; i < m; ++i)
@@ -164,14 +165,14 @@ int main(int argc, char** argv) {
                 w29_all += r.all_negative;
                 w29_mono += r.exact == analysis::Trend::decreasing;
                 if (!r.all_negative && worst_a < 0) {
-                    worst_a = M_PI * (1.0 - 1e-9) * i / (m - 1);
-                    worst_b = M_PI * (1.0 - 1e-9) * j / (m - 1);
+                    worst_a = std::numbers::pi * (1.0 - 1e-9) * i / (m - 1);
+                    worst_b = std::numbers::pi * (1.0 - 1e-9) * j / (m - 1);
                 }
             }
         run.check("sec3.4.condition29_all_negative_wide", static_cast<double>(w29_all) / static_cast<double>(w29));
-        run.note("Over (0, π)² (" + std::to_string(m) + " × " + std::to_string(m) + " grid): where (29) holds, every C_i < 0 at " + repro::format_number(100.0 * w29_all / static_cast<double>(w29), 6) +
-                 " % of the points and dκ/dt ≤ 0 (exact) at " + repro::format_number(100.0 * w29_mono / static_cast<double>(w29), 6) + " %" +
-                 (worst_a >= 0 ? "; first counterexample to 'all C_i < 0' at (θ0, θ1) = (" + repro::format_number(worst_a, 6) + ", " + repro::format_number(worst_b, 6) + ")." : "; no counterexample."));
+        run.note("Over (0, π)² (" + std::to_string(m) + " × " + std::to_string(m) + " grid): where (29) holds, every C_i < 0 at " + format_number(100.0 * w29_all / static_cast<double>(w29), 6) +
+                 " % of the points and dκ/dt ≤ 0 (exact) at " + format_number(100.0 * w29_mono / static_cast<double>(w29), 6) + " %" +
+                 (worst_a >= 0 ? "; first counterexample to 'all C_i < 0' at (θ0, θ1) = (" + format_number(worst_a, 6) + ", " + format_number(worst_b, 6) + ")." : "; no counterexample."));
     }
 
     // Figure data: 301 × 301 classification codes as a matrix (row i: θ0 = 0.3° i, column j: θ1 = 0.3° j;
@@ -180,8 +181,8 @@ int main(int argc, char** argv) {
         const int m = 301;
         const std::vector<RegionPoint> grid = monotonicity_region(m, 0.0, half_pi);
         std::vector<std::string> header;
-        for (int j = 0; j < m; ++j) header.push_back("theta1_" + repro::format_number(90.0 * j / (m - 1), 6));
-        repro::CsvWriter codes = run.table("fig7_regions.csv", header);
+        for (int j = 0; j < m; ++j) header.push_back("theta1_" + format_number(90.0 * j / (m - 1), 6));
+        CsvWriter codes = run.table("fig7_regions.csv", header);
         for (int i = 0; i < m; ++i) {
             std::vector<std::string> line;
             for (int j = 0; j < m; ++j) {
@@ -193,8 +194,8 @@ int main(int argc, char** argv) {
             }
             codes.row_text(line);
         }
-        repro::CsvWriter bound = run.table("fig7_bound.csv", {"theta0_deg", "theta1_bound_deg"});
-        for (int i = 0; i <= 90; ++i) bound.row({static_cast<double>(i), theta1_bound(half_pi * i / 90) * 180 / M_PI});
+        CsvWriter bound = run.table("fig7_bound.csv", {"theta0_deg", "theta1_bound_deg"});
+        for (int i = 0; i <= 90; ++i) bound.row({static_cast<double>(i), theta1_bound(half_pi * i / 90) * 180 / std::numbers::pi});
         run.figure("fig7_regions", "Fig. 7 redrawn as regions of the unit polygon's (θ0, θ1) ∈ [0°, 90°]²: where (29) holds (then every C_i < 0), where every C_i < 0 without (29), where the curvature is monotone only by the exact sign of dκ/dt, and where it is not monotone; the line is eq (30).");
     }
 
@@ -248,7 +249,7 @@ int main(int argc, char** argv) {
             }
             return pos && neg ? analysis::Trend::not_monotone : pos ? analysis::Trend::increasing : analysis::Trend::decreasing;
         };
-        repro::CsvWriter table = run.table("checker_typical_polygons.csv", {"degree", "knots", "segments", "condition29_monotone", "bernstein_monotone", "exact_monotone", "whole_curve_monotone"});
+        CsvWriter table = run.table("checker_typical_polygons.csv", {"degree", "knots", "segments", "condition29_monotone", "bernstein_monotone", "exact_monotone", "whole_curve_monotone"});
         auto tally = [&](const BSplineCurve& c) {
             const MonotonicityReport rep = cubic_bspline_curvature_monotonicity(c);
             std::vector<BezierCurve> segs = bezier_segments(c);
@@ -271,10 +272,10 @@ int main(int argc, char** argv) {
         for (int degree : {24, 49, 99}) {
             const TypicalPolygon poly = scale_one_typical_polygon(-0.5, 1.0, degree);
             const auto u = tally(uniform_cubic_bspline(poly.points));
-            table.row_text({std::to_string(degree), "uniform", std::to_string(poly.points.rows() - 3), repro::format_number(u[0], 6), repro::format_number(u[1], 6), repro::format_number(u[2], 6), repro::format_number(u[3], 6)});
+            table.row_text({std::to_string(degree), "uniform", std::to_string(poly.points.rows() - 3), format_number(u[0], 6), format_number(u[1], 6), format_number(u[2], 6), format_number(u[3], 6)});
             const Eigen::MatrixXd ends = endpoint_interpolating_polygon(poly.points * degree);   // unit edges
             const auto e = tally(endpoint_interpolating_cubic_bspline(ends));
-            table.row_text({std::to_string(degree), "endpoint_interpolating", std::to_string(ends.rows() - 3), repro::format_number(e[0], 6), repro::format_number(e[1], 6), repro::format_number(e[2], 6), repro::format_number(e[3], 6)});
+            table.row_text({std::to_string(degree), "endpoint_interpolating", std::to_string(ends.rows() - 3), format_number(e[0], 6), format_number(e[1], 6), format_number(e[2], 6), format_number(e[3], 6)});
         }
         for (int trial = 0; trial < 200; ++trial) {
             Eigen::MatrixXd q(9, 2);

@@ -6,6 +6,7 @@
 // Monotonicity is decided exactly (Bernstein subdivision of the derivative's numerator,
 // analysis::curvature_monotonicity) and cross-checked by 2001 samples.
 #include <cmath>
+#include <numbers>
 #include <random>
 
 #include "aesthetic/class_a.hpp"
@@ -100,7 +101,7 @@ int main(int argc, char** argv) {
         double above = 0, above_agree = 0, below = 0, below_m = 0, below_inverse = 0;
         for (int i = 1; i < 90; ++i)
             for (int k = 0; k < 40; ++k) {
-                const double theta = M_PI / 2 * i / 90;
+                const double theta = std::numbers::pi / 2 * i / 90;
                 for (double s : {0.3 + 0.0165 * k, 1.02 + 0.05 * k}) {
                     const Eigen::Matrix2d m = typical_matrix(theta, s);
                     const bool cond4 = typical_matrix_condition(theta, s);
@@ -120,7 +121,7 @@ int main(int argc, char** argv) {
 
     // ---- Random matrices: class A, and just outside.
     std::mt19937 rng(2026);
-    repro::CsvWriter table = run.table("class_a_random.csv", {"dimension", "set", "curves", "monotone_curvature", "monotone_torsion"});
+    CsvWriter table = run.table("class_a_random.csv", {"dimension", "set", "curves", "monotone_curvature", "monotone_torsion"});
     double planar_class_a = 0, space_curv = 0, space_tors = 0, planar_typical = 0, space_typical = 0, space_typical_tors = 0;
     int agree = 0, checked = 0;
     std::string counterexample;
@@ -146,9 +147,9 @@ int main(int argc, char** argv) {
                     const SignAnalysis st = sign_on_unit_interval(tp);
                     mono_t += monotone(analysis::trend_of(st));
                     if (set == Set::typical_class_a && !monotone(analysis::trend_of(st)) && counterexample.empty())
-                        counterexample = "M = s R_z(θ) with s = " + repro::format_number(m(2, 2), 8) + ", θ = " + repro::format_number(std::atan2(m(1, 0), m(0, 0)), 8) +
-                                         ", degree " + std::to_string(degree) + ", Δb0 = (1, 0, 0.3): dτ/dt is negative at t = " + repro::format_number(st.t_negative, 6) +
-                                         " and positive at t = " + repro::format_number(st.t_positive, 6);
+                        counterexample = "M = s R_z(θ) with s = " + format_number(m(2, 2), 8) + ", θ = " + format_number(std::atan2(m(1, 0), m(0, 0)), 8) +
+                                         ", degree " + std::to_string(degree) + ", Δb0 = (1, 0, 0.3): dτ/dt is negative at t = " + format_number(st.t_negative, 6) +
+                                         " and positive at t = " + format_number(st.t_positive, 6);
                     ++checked;
                     agree += consistent(tp, st);
                 }

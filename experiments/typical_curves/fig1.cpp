@@ -24,8 +24,8 @@ int main(int argc, char** argv) {
     const int samples = 400;
     const std::vector<int> degrees{99, 49, 24};
 
-    repro::CsvWriter curv = run.table("fig1_curvature.csv", {"degree", "t", "arc_length_fraction", "curvature", "log_radius", "log_gradient"});
-    repro::CsvWriter poly_csv = run.table("fig1_polygon.csv", {"degree", "x", "y"});
+    CsvWriter curv = run.table("fig1_curvature.csv", {"degree", "t", "arc_length_fraction", "curvature", "log_radius", "log_gradient"});
+    CsvWriter poly_csv = run.table("fig1_polygon.csv", {"degree", "x", "y"});
     std::vector<double> slopes, residuals;
     bool all_monotone = true;
     for (int n : degrees) {
@@ -42,8 +42,8 @@ int main(int argc, char** argv) {
             const double kappa = analysis::signed_curvature(c, t);
             const double ks = analysis::curvature_arc_derivative(c, t);
             const bool finite = kappa != 0.0 && ks != 0.0;
-            curv.row_text({std::to_string(n), repro::format_number(t), repro::format_number(analysis::arc_length(c, 0.0, t) / total), repro::format_number(kappa),
-                           finite ? repro::format_number(-std::log(std::abs(kappa))) : "", finite ? repro::format_number(std::log(std::abs(kappa / ks))) : ""});
+            curv.row_text({std::to_string(n), format_number(t), format_number(analysis::arc_length(c, 0.0, t) / total), format_number(kappa),
+                           finite ? format_number(-std::log(std::abs(kappa))) : "", finite ? format_number(std::log(std::abs(kappa / ks))) : ""});
         }
         curv.end_scan();
         curv.end_scan();
@@ -58,21 +58,21 @@ int main(int argc, char** argv) {
             const double s = L * k / 200;
             const double kappa = target.curvature(s);
             const bool finite = kappa != 0.0;
-            curv.row_text({"0", repro::format_number(s / L), repro::format_number(s / L), repro::format_number(kappa), finite ? repro::format_number(-std::log(std::abs(kappa))) : "",
-                           finite ? repro::format_number(std::log(std::abs(kappa / target.curvature_derivative(s)))) : ""});
+            curv.row_text({"0", format_number(s / L), format_number(s / L), format_number(kappa), finite ? format_number(-std::log(std::abs(kappa))) : "",
+                           finite ? format_number(std::log(std::abs(kappa / target.curvature_derivative(s)))) : ""});
         }
     }
     run.check("fig1.lcg_slope_degree99", slopes[0]);
     run.check("fig1.curvature_monotone", all_monotone ? 1.0 : 0.0);
     run.check("fig1.lcg_less_straight_with_lower_degree", residuals[0] < residuals[1] && residuals[1] < residuals[2] ? 1.0 : 0.0);
-    run.note("LCG slopes (our choices: L = 1, fit t ∈ [0.05, 0.95]): degree 99: " + repro::format_number(slopes[0], 5) + ", 49: " + repro::format_number(slopes[1], 5) + ", 24: " +
-             repro::format_number(slopes[2], 5) + "; largest residual from the fitted line: " + repro::format_number(residuals[0], 3) + ", " + repro::format_number(residuals[1], 3) + ", " +
-             repro::format_number(residuals[2], 3) + ".");
+    run.note("LCG slopes (our choices: L = 1, fit t ∈ [0.05, 0.95]): degree 99: " + format_number(slopes[0], 5) + ", 49: " + format_number(slopes[1], 5) + ", 24: " +
+             format_number(slopes[2], 5) + "; largest residual from the fitted line: " + format_number(residuals[0], 3) + ", " + format_number(residuals[1], 3) + ", " +
+             format_number(residuals[2], 3) + ".");
     run.figure("fig1", "Fig. 1 redrawn: the degree-24 control polygon and curve (left), curvature against arc-length fraction (middle) and LCGs (right) for degrees 99, 49, 24 and the target eq. (15) (α = −0.5, L = 1).");
 
     // How the slope depends on the unstated choices.
     {
-        repro::CsvWriter t = run.table("fig1_slope_dependence.csv", {"degree", "length", "t_from", "t_to", "slope", "max_residual"});
+        CsvWriter t = run.table("fig1_slope_dependence.csv", {"degree", "length", "t_from", "t_to", "slope", "max_residual"});
         double lo = 1e9, hi = -1e9;
         for (int n : degrees)
             for (double len : {0.5, 1.0, 1.5, 2.0})
@@ -82,13 +82,13 @@ int main(int argc, char** argv) {
                     t.row({static_cast<double>(n), len, r.first, r.second, f.slope, f.max_residual});
                     if (n == 99) lo = std::min(lo, f.slope), hi = std::max(hi, f.slope);
                 }
-        run.note("Degree 99 over L ∈ {0.5, 1, 1.5, 2} and fit ranges [0, 1], [0.05, 0.95], [0.1, 0.9], [0.2, 0.8]: the LCG slope lies in [" + repro::format_number(lo, 4) + ", " +
-                 repro::format_number(hi, 4) + "] (fig1_slope_dependence.csv).");
+        run.note("Degree 99 over L ∈ {0.5, 1, 1.5, 2} and fit ranges [0, 1], [0.05, 0.95], [0.1, 0.9], [0.2, 0.8]: the LCG slope lies in [" + format_number(lo, 4) + ", " +
+                 format_number(hi, 4) + "] (fig1_slope_dependence.csv).");
     }
 
     // Beyond the paper: degree → 1999 with the O(n) Bernstein evaluation; the power basis.
     {
-        repro::CsvWriter t = run.table("fig1_convergence.csv", {"degree", "slope_interior", "slope_full", "power_basis_position_error", "power_basis_slope"});
+        CsvWriter t = run.table("fig1_convergence.csv", {"degree", "slope_interior", "slope_full", "power_basis_position_error", "power_basis_slope"});
         double slope_1999 = 0, worst_stable = 0;
         for (int n : {24, 49, 99, 199, 499, 999, 1999}) {
             const TypicalPolygon poly = scale_one_typical_polygon(alpha, L, n);
@@ -105,14 +105,14 @@ int main(int argc, char** argv) {
                 const BezierCurve power(poly.points, 0, 1, BezierEvaluation::power_basis);
                 double err = 0;
                 for (int k = 0; k <= 100; ++k) err = std::max(err, (power.point(k / 100.0) - stable.point(k / 100.0)).norm());
-                power_err = repro::format_number(err, 4);
+                power_err = format_number(err, 4);
                 try {
-                    power_slope = repro::format_number(analysis::lcg_slope(power, t0, t1, samples).slope, 4);
+                    power_slope = format_number(analysis::lcg_slope(power, t0, t1, samples).slope, 4);
                 } catch (const InvalidInput&) {
                     power_slope = "no finite LCG";
                 }
             }
-            t.row_text({std::to_string(n), repro::format_number(si, 6), repro::format_number(sf, 6), power_err, power_slope});
+            t.row_text({std::to_string(n), format_number(si, 6), format_number(sf, 6), power_err, power_slope});
         }
         run.check("fig1.slope_converges_to_alpha", std::abs(slope_1999 - alpha));
         run.validate("bernstein_vs_de_casteljau", "O(n) Bernstein evaluation vs de Casteljau, jets to 3rd order at 5 parameters, degrees 24 … 999 (largest difference relative to the jet's size)",

@@ -8,6 +8,7 @@
 // polygon turned by +0.01° (right-handed about P_{i+1,j} → P_{i,j+1}) from its parallelogram position.
 // Curvature maps on a 51×51 grid; H signed with the normal S_u × S_v.
 #include <cmath>
+#include <numbers>
 
 #include "aesthetic/typical_surface.hpp"
 #include "analysis/log_curvature_graph.hpp"
@@ -20,7 +21,7 @@ using namespace cagd;
 
 int main(int argc, char** argv) {
     repro::ArtifactRun run("typical_curves", "fig6_surface", "5", "Fig. 6: nonstationary typical surface, 25×25 control points, boundaries α = −0.5 (v = 0) and −0.6 (u = 0), 0.01° per polygon (section 5)", argc, argv);
-    const double alpha_u = -0.5, alpha_v = -0.6, L = 1.0, pi = std::acos(-1.0), angle = 0.01 * pi / 180.0;
+    const double alpha_u = -0.5, alpha_v = -0.6, L = 1.0, pi = std::numbers::pi, angle = 0.01 * pi / 180.0;
     const int degree = 24, grid = 51;
     const surface::ControlNet net = aesthetic::log_aesthetic_typical_net(alpha_u, alpha_v, L, degree, angle);
     const surface::BezierPatch patch(net);
@@ -41,8 +42,8 @@ int main(int argc, char** argv) {
         }
     run.check("fig6.edge_lengths_fixed", edge_dev);
     run.check("fig6.second_condition_holds", printed_dev <= 1e-12 ? 1.0 : 0.0, corrected_dev <= 1e-12 ? 1.0 : 0.0);
-    run.note("Second condition of section 5 over the 576 control polygons, relative to the edge 1/24: as printed, | |P(i,j)P(i+1,j+1)| − |P(i+1,j)P(i+1,j+1)| | up to " + repro::format_number(printed_dev, 3) +
-             "; corrected (|P(i,j)P(i,j+1)| = |P(i+1,j)P(i+1,j+1)|) up to " + repro::format_number(corrected_dev, 3) + ".");
+    run.note("Second condition of section 5 over the 576 control polygons, relative to the edge 1/24: as printed, | |P(i,j)P(i+1,j+1)| − |P(i+1,j)P(i+1,j+1)| | up to " + format_number(printed_dev, 3) +
+             "; corrected (|P(i,j)P(i,j+1)| = |P(i+1,j)P(i+1,j+1)|) up to " + format_number(corrected_dev, 3) + ".");
 
     // Evaluation: basis-matrix grid against de Casteljau.
     std::vector<double> ts;
@@ -60,7 +61,7 @@ int main(int argc, char** argv) {
                  eval_dev, 0.0, 1e-11, "rounding, growing with degree² for 2nd derivatives (measured ≤ 1e-12)");
 
     // Curvature maps; the Weingarten route with differences of the unit normal as the check.
-    repro::CsvWriter surf = run.table("fig6_surface.csv", {"u", "v", "x", "y", "z", "gaussian", "mean"});
+    CsvWriter surf = run.table("fig6_surface.csv", {"u", "v", "x", "y", "z", "gaussian", "mean"});
     double kmin = 1e300, kmax = -1e300, hmin = 1e300, hmax = -1e300, weingarten_dev = 0.0;
     const double h = 1e-5;
     for (int a = 0; a < grid; ++a) {
@@ -81,8 +82,8 @@ int main(int argc, char** argv) {
     }
     run.validate("curvature_weingarten", "K and H from the second fundamental form against the Weingarten route with central differences (h = 1e-5) of the unit normal, interior grid points (largest absolute difference)",
                  weingarten_dev, 0.0, 1e-6, "central differences: O(h²) truncation and O(ε/h) rounding (measured ≤ 1e-8)");
-    run.note("On the 51×51 grid: Gaussian curvature K ∈ [" + repro::format_number(kmin, 4) + ", " + repro::format_number(kmax, 4) + "], mean curvature H ∈ [" + repro::format_number(hmin, 4) + ", " +
-             repro::format_number(hmax, 4) + "] (normal S_u × S_v).");
+    run.note("On the 51×51 grid: Gaussian curvature K ∈ [" + format_number(kmin, 4) + ", " + format_number(kmax, 4) + "], mean curvature H ∈ [" + format_number(hmin, 4) + ", " +
+             format_number(hmax, 4) + "] (normal S_u × S_v).");
 
     // The boundary curves S(u, 0), S(0, v) are the degree-24 Bézier curves of the boundary polygons.
     {
@@ -92,17 +93,17 @@ int main(int argc, char** argv) {
             bv.row(i) << net[1](0, i), net[2](0, i);
         }
         const double su = analysis::lcg_slope(BezierCurve(bu), 0.05, 0.95, 400).slope, sv = analysis::lcg_slope(BezierCurve(bv), 0.05, 0.95, 400).slope;
-        run.note("LCG slopes of the boundary curves (degree 24, fit t ∈ [0.05, 0.95]): v = 0 (α = −0.5): " + repro::format_number(su, 4) + "; u = 0 (α = −0.6): " + repro::format_number(sv, 4) + ".");
+        run.note("LCG slopes of the boundary curves (degree 24, fit t ∈ [0.05, 0.95]): v = 0 (α = −0.5): " + format_number(su, 4) + "; u = 0 (α = −0.6): " + format_number(sv, 4) + ".");
     }
 
     // Net and the effect of the angle.
-    repro::CsvWriter net_csv = run.table("fig6_net.csv", {"i", "j", "x", "y", "z"});
+    CsvWriter net_csv = run.table("fig6_net.csv", {"i", "j", "x", "y", "z"});
     for (int i = 0; i <= degree; ++i) {
         for (int j = 0; j <= degree; ++j) net_csv.row({static_cast<double>(i), static_cast<double>(j), net[0](i, j), net[1](i, j), net[2](i, j)});
         net_csv.end_scan();
     }
     {
-        repro::CsvWriter t = run.table("fig6_angle_effect.csv", {"angle_deg", "corner_shift", "gaussian_min", "gaussian_max", "mean_min", "mean_max"});
+        CsvWriter t = run.table("fig6_angle_effect.csv", {"angle_deg", "corner_shift", "gaussian_min", "gaussian_max", "mean_min", "mean_max"});
         const surface::ControlNet flat = aesthetic::log_aesthetic_typical_net(alpha_u, alpha_v, L, degree, 0.0);
         for (double deg : {0.0, 0.01, 0.1, 1.0}) {
             const surface::ControlNet nd = aesthetic::log_aesthetic_typical_net(alpha_u, alpha_v, L, degree, deg * pi / 180.0);
@@ -120,14 +121,14 @@ int main(int argc, char** argv) {
     }
     // Top left of Fig. 6: one control polygon and the circle of its fourth point.
     {
-        repro::CsvWriter t = run.table("fig6_diagonal.csv", {"kind", "x", "y", "z"});
+        CsvWriter t = run.table("fig6_diagonal.csv", {"kind", "x", "y", "z"});
         const Eigen::Vector3d p00(0, 0, 0), p10(1, 0, 0.15), p01(0.1, 1, 0.1);
         for (const auto& [kind, q] : {std::pair{"given", p00}, {"given", p10}, {"given", p01}, {"parallelogram", aesthetic::rotated_fourth_point(p00, p10, p01, 0.0)},
                                       {"turned_40deg", aesthetic::rotated_fourth_point(p00, p10, p01, 40.0 * pi / 180.0)}})
-            t.row_text({kind, repro::format_number(q(0)), repro::format_number(q(1)), repro::format_number(q(2))});
+            t.row_text({kind, format_number(q(0)), format_number(q(1)), format_number(q(2))});
         for (int k = 0; k <= 72; ++k) {
             const Eigen::Vector3d q = aesthetic::rotated_fourth_point(p00, p10, p01, 2.0 * pi * k / 72);
-            t.row_text({"circle", repro::format_number(q(0)), repro::format_number(q(1)), repro::format_number(q(2))});
+            t.row_text({"circle", format_number(q(0)), format_number(q(1)), format_number(q(2))});
         }
     }
     run.figure("fig6", "Fig. 6 redrawn: one control polygon and the circle on which its fourth point turns about the diagonal (top left); the 25×25 net and the bi-24 patch (top right); Gaussian (bottom left) and mean curvature (bottom right) over (u, v).");

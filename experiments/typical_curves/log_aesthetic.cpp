@@ -19,7 +19,7 @@ int main(int argc, char** argv) {
         double alpha, c0, c1;
     };
     const std::vector<Case> cases{{-2.0, 1.0, 0.5}, {-1.0, 1.0, 0.2}, {-0.5, 2.0, 0.3}, {0.0, 1.2, 0.7}, {0.5, 1.0, 1.0}, {1.0, 0.8, 0.5}, {1.5, 1.0, 0.4}, {2.0, 1.0, 0.4}, {3.0, -0.3, 1.0}};
-    repro::CsvWriter table = run.table("lac_cases.csv", {"alpha", "c0", "c1", "lcg_slope", "lcg_max_residual", "theta_error", "closed_form_error"});
+    CsvWriter table = run.table("lac_cases.csv", {"alpha", "c0", "c1", "lcg_slope", "lcg_max_residual", "theta_error", "closed_form_error"});
     const numeric::GaussLegendreRule gl(20);
     double worst_slope = 0, worst_slope_alpha0 = 0, worst_theta = 0, worst_closed = 0, worst_position = 0;
     for (const Case& cs : cases) {
@@ -86,7 +86,7 @@ int main(int argc, char** argv) {
 
     // Figure: eq (15) for several α on [0, 1], and their LCGs.
     {
-        repro::CsvWriter curves = run.table("fig_lac_curves.csv", {"alpha", "s", "x", "y", "log_radius", "log_gradient"});
+        CsvWriter curves = run.table("fig_lac_curves.csv", {"alpha", "s", "x", "y", "log_radius", "log_gradient"});
         for (double alpha : {-2.0, -1.0, -0.5, 1.5, 2.0, 3.0}) {
             const LogAestheticCurve c = normalized_log_aesthetic_curve(alpha, 2.0);
             const Eigen::MatrixXd pts = c.sample_points(201);
@@ -94,7 +94,7 @@ int main(int argc, char** argv) {
             for (int k = 0; k < 201; ++k) {
                 const double lr = k >= 1 ? g.points[static_cast<std::size_t>(k - 1)].log_radius : NAN;
                 const double lg = k >= 1 ? g.points[static_cast<std::size_t>(k - 1)].log_gradient : NAN;
-                if (k == 0) curves.row_text({repro::format_number(alpha), "0", repro::format_number(pts(0, 0)), repro::format_number(pts(0, 1)), "", ""});
+                if (k == 0) curves.row_text({format_number(alpha), "0", format_number(pts(0, 0)), format_number(pts(0, 1)), "", ""});
                 else curves.row({alpha, 2.0 * k / 200, pts(k, 0), pts(k, 1), lr, lg});
             }
             curves.end_scan();

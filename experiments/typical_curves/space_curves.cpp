@@ -49,9 +49,9 @@ int main(int argc, char** argv) {
     const LogAestheticSpaceParameters params = normalized_log_aesthetic_space_parameters(alpha, beta, L, s0);
     const LogAestheticSpaceCurve target(params);
 
-    repro::CsvWriter poly_csv = run.table("space_polygon.csv", {"degree", "x", "y", "z"});
-    repro::CsvWriter curve_csv = run.table("space_curve.csv", {"degree", "t", "x", "y", "z"});
-    repro::CsvWriter prof = run.table("space_curvature_torsion.csv", {"degree", "t", "arc_length_fraction", "curvature", "torsion", "lcg_x", "lcg_y", "ltg_x", "ltg_y"});
+    CsvWriter poly_csv = run.table("space_polygon.csv", {"degree", "x", "y", "z"});
+    CsvWriter curve_csv = run.table("space_curve.csv", {"degree", "t", "x", "y", "z"});
+    CsvWriter prof = run.table("space_curvature_torsion.csv", {"degree", "t", "arc_length_fraction", "curvature", "torsion", "lcg_x", "lcg_y", "ltg_x", "ltg_y"});
     std::vector<double> lcg, ltg, lcg_res, ltg_res;
     bool kappa_monotone = true, tau_monotone = true;
     std::string trends;
@@ -78,9 +78,9 @@ int main(int argc, char** argv) {
             curve_csv.row({static_cast<double>(n), t, p(0), p(1), p(2)});
             const double kappa = analysis::curvature(c, t), ks = analysis::curvature_arc_derivative(c, t);
             const double tau = analysis::torsion(c, t), ts = analysis::torsion_arc_derivative(c, t);
-            prof.row_text({std::to_string(n), repro::format_number(t), repro::format_number(analysis::arc_length(c, 0.0, t) / total), repro::format_number(kappa), repro::format_number(tau),
-                           repro::format_number(-std::log(kappa)), repro::format_number(std::log(std::abs(kappa / ks))), repro::format_number(-std::log(std::abs(tau))),
-                           repro::format_number(std::log(std::abs(tau / ts)))});
+            prof.row_text({std::to_string(n), format_number(t), format_number(analysis::arc_length(c, 0.0, t) / total), format_number(kappa), format_number(tau),
+                           format_number(-std::log(kappa)), format_number(std::log(std::abs(kappa / ks))), format_number(-std::log(std::abs(tau))),
+                           format_number(std::log(std::abs(tau / ts)))});
         }
         curve_csv.end_scan();
         curve_csv.end_scan();
@@ -102,11 +102,11 @@ int main(int argc, char** argv) {
     run.check("space.torsion_monotone", tau_monotone ? 1.0 : 0.0);
     run.check("space.graphs_less_straight_with_lower_degree",
               lcg_res[0] < lcg_res[1] && lcg_res[1] < lcg_res[2] && ltg_res[0] < ltg_res[1] && ltg_res[1] < ltg_res[2] ? 1.0 : 0.0);
-    run.note("Our choices: κ = 0.5 σ^(−1/1.5), τ = 0.2 σ^(−1/1.2) on σ ∈ [s0, s0 + L], s0 = " + repro::format_number(s0) + ", L = " + repro::format_number(L) +
-             ", frames turned by R_κ ⊗ R_τ, fit over t ∈ [0, 1] (400 samples). LCG slopes, degrees 99, 49, 24: " + repro::format_number(lcg[0], 5) + ", " + repro::format_number(lcg[1], 5) + ", " +
-             repro::format_number(lcg[2], 5) + "; LTG slopes: " + repro::format_number(ltg[0], 5) + ", " + repro::format_number(ltg[1], 5) + ", " + repro::format_number(ltg[2], 5) +
-             "; largest residuals from the fitted lines, LCG: " + repro::format_number(lcg_res[0], 3) + ", " + repro::format_number(lcg_res[1], 3) + ", " + repro::format_number(lcg_res[2], 3) +
-             ", LTG: " + repro::format_number(ltg_res[0], 3) + ", " + repro::format_number(ltg_res[1], 3) + ", " + repro::format_number(ltg_res[2], 3) + ". Exact trends (Bernstein sign of dκ²/dt, dτ/dt): " +
+    run.note("Our choices: κ = 0.5 σ^(−1/1.5), τ = 0.2 σ^(−1/1.2) on σ ∈ [s0, s0 + L], s0 = " + format_number(s0) + ", L = " + format_number(L) +
+             ", frames turned by R_κ ⊗ R_τ, fit over t ∈ [0, 1] (400 samples). LCG slopes, degrees 99, 49, 24: " + format_number(lcg[0], 5) + ", " + format_number(lcg[1], 5) + ", " +
+             format_number(lcg[2], 5) + "; LTG slopes: " + format_number(ltg[0], 5) + ", " + format_number(ltg[1], 5) + ", " + format_number(ltg[2], 5) +
+             "; largest residuals from the fitted lines, LCG: " + format_number(lcg_res[0], 3) + ", " + format_number(lcg_res[1], 3) + ", " + format_number(lcg_res[2], 3) +
+             ", LTG: " + format_number(ltg_res[0], 3) + ", " + format_number(ltg_res[1], 3) + ", " + format_number(ltg_res[2], 3) + ". Exact trends (Bernstein sign of dκ²/dt, dτ/dt): " +
              trends + ".");
     run.figure("fig3", "Fig. 3 redrawn: the degree-24 control polygon and Bézier curve (α = 1.5, β = 1.2) with the x, y, z axes, in perspective and in two views.");
     run.figure("fig4", "Fig. 4 redrawn: curvature and torsion against the arc-length fraction for degrees 99, 49, 24 and the target log-aesthetic space curve.");
@@ -114,7 +114,7 @@ int main(int argc, char** argv) {
 
     // The first torsion rotation: which part of it reaches the polygon's shape.
     {
-        repro::CsvWriter t = run.table("space_torsion_rotations.csv", {"composition", "j", "curvature_rotation", "torsion_rotation", "turning_angle", "dihedral_angle"});
+        CsvWriter t = run.table("space_torsion_rotations.csv", {"composition", "j", "curvature_rotation", "torsion_rotation", "turning_angle", "dihedral_angle"});
         std::string fractions;
         double change_alexa = 0.0, change_tau_first = 0.0;
         for (FrenetComposition comp : {FrenetComposition::alexa, FrenetComposition::kappa_then_tau, FrenetComposition::tau_then_kappa}) {
@@ -127,10 +127,10 @@ int main(int argc, char** argv) {
             const double fraction = (fa.dihedral[0] - fb.dihedral[0]) / poly.torsion_rotations[0];
             if (comp == FrenetComposition::alexa) change_alexa = change;
             if (comp == FrenetComposition::tau_then_kappa) change_tau_first = change;
-            fractions += std::string(fractions.empty() ? "" : "; ") + to_string(comp) + ": " + repro::format_number(fraction, 4) + " (largest angle change " + repro::format_number(change, 3) + " rad)";
+            fractions += std::string(fractions.empty() ? "" : "; ") + to_string(comp) + ": " + format_number(fraction, 4) + " (largest angle change " + format_number(change, 3) + " rad)";
             for (std::size_t j = 0; j < poly.curvature_rotations.size(); ++j)
-                t.row_text({to_string(comp), std::to_string(j), repro::format_number(poly.curvature_rotations[j]), repro::format_number(poly.torsion_rotations[j]), repro::format_number(fa.turning[j]),
-                            j < fa.dihedral.size() ? repro::format_number(fa.dihedral[j]) : ""});
+                t.row_text({to_string(comp), std::to_string(j), format_number(poly.curvature_rotations[j]), format_number(poly.torsion_rotations[j]), format_number(fa.turning[j]),
+                            j < fa.dihedral.size() ? format_number(fa.dihedral[j]) : ""});
         }
         run.check("space.first_torsion_rotation_no_effect", change_alexa <= 1e-12 ? 1.0 : 0.0, change_tau_first <= 1e-12 ? 1.0 : 0.0);
         run.note("The first torsion rotation Δθ_τ,0 (degree 24): the fraction of it that reaches the first dihedral angle of the control polygon (the only place it can act) — " + fractions +
@@ -151,15 +151,15 @@ int main(int argc, char** argv) {
             if (j < 10) order = std::max(order, (numeric::alexa_product_limit(a, b, 16) - numeric::alexa_product_limit(b, a, 16)).cwiseAbs().maxCoeff());
         }
         run.check("space.alexa_order_independent", order);
-        run.note("Order of the two rotations: R_κ R_τ and R_τ R_κ differ by up to " + repro::format_number(sequential, 3) + " (largest entry, degree-99 polygon); the limit of eq (37) in the two orders by " +
-                 repro::format_number(order, 3) + " at n = 2^16.");
+        run.note("Order of the two rotations: R_κ R_τ and R_τ R_κ differ by up to " + format_number(sequential, 3) + " (largest entry, degree-99 polygon); the limit of eq (37) in the two orders by " +
+                 format_number(order, 3) + " at n = 2^16.");
         run.validate("alexa_vs_rodrigues", "R_κ ⊗ R_τ by matrix log/exp against the rotation by the vector (Δθ_τ, 0, Δθ_κ) (Rodrigues), all 98 steps of the degree-99 polygon (largest entry difference)",
                      vs_rodrigues, 0.0, 1e-14, "rounding of log/exp on 3×3 rotations (measured ≤ 1e-15)");
         // The limit (A^{1/n} B^{1/n})^n, n = 2^k, with square roots only; n·error → ‖L_exp(Z, [log A, log B]/2)‖.
         const Eigen::Matrix3d a = curvature_rotation(poly.curvature_rotations[0]), b = torsion_rotation(poly.torsion_rotations[0]);
         const Eigen::MatrixXd exact = numeric::alexa_product(a, b);
         const double predicted = numeric::alexa_limit_error_coefficient(a, b);
-        repro::CsvWriter t = run.table("alexa_limit.csv", {"k", "n", "error", "error_times_n", "predicted_error_times_n"});
+        CsvWriter t = run.table("alexa_limit.csv", {"k", "n", "error", "error_times_n", "predicted_error_times_n"});
         double scaled_16 = 0.0;
         for (int k = 0; k <= 20; k += 2) {
             const double n = std::ldexp(1.0, k);
@@ -188,7 +188,7 @@ int main(int argc, char** argv) {
 
     // Beyond the paper: the degree grows; vertices converge to the target curve.
     {
-        repro::CsvWriter t = run.table("space_convergence.csv", {"degree", "lcg_slope", "ltg_slope", "vertex_error"});
+        CsvWriter t = run.table("space_convergence.csv", {"degree", "lcg_slope", "ltg_slope", "vertex_error"});
         double lcg_1999 = 0, ltg_1999 = 0, err_prev = 0, ratio = 0;
         for (int n : {24, 49, 99, 199, 399, 999, 1999}) {
             const SpaceTypicalPolygon poly = space_typical_polygon(params, n);
@@ -210,21 +210,21 @@ int main(int argc, char** argv) {
 
     // How the slopes and the monotonicity depend on the unstated choices.
     {
-        repro::CsvWriter t = run.table("space_slope_dependence.csv", {"start", "length", "composition", "degree", "t_from", "t_to", "lcg_slope", "ltg_slope"});
+        CsvWriter t = run.table("space_slope_dependence.csv", {"start", "length", "composition", "degree", "t_from", "t_to", "lcg_slope", "ltg_slope"});
         for (double st : {0.0, 0.05, 0.1, 0.5, 1.0})
             for (double len : {0.5, 1.0, 2.0})
                 for (FrenetComposition comp : {FrenetComposition::alexa, FrenetComposition::kappa_then_tau, FrenetComposition::tau_then_kappa})
                     for (int n : degrees)
                         for (const auto& r : {std::pair{0.0, 1.0}, {0.05, 0.95}}) {
                             const BezierCurve c(space_typical_polygon(normalized_log_aesthetic_space_parameters(alpha, beta, len, st), n, comp).points, 0, 1, BezierEvaluation::bernstein);
-                            t.row_text({repro::format_number(st), repro::format_number(len), to_string(comp), std::to_string(n), repro::format_number(r.first), repro::format_number(r.second),
-                                        repro::format_number(analysis::lcg_slope(c, r.first, r.second, samples).slope, 6), repro::format_number(analysis::ltg_slope(c, r.first, r.second, samples).slope, 6)});
+                            t.row_text({format_number(st), format_number(len), to_string(comp), std::to_string(n), format_number(r.first), format_number(r.second),
+                                        format_number(analysis::lcg_slope(c, r.first, r.second, samples).slope, 6), format_number(analysis::ltg_slope(c, r.first, r.second, samples).slope, 6)});
                         }
-        repro::CsvWriter m = run.table("space_monotonicity_dependence.csv", {"start", "degree", "curvature_trend", "torsion_trend"});
+        CsvWriter m = run.table("space_monotonicity_dependence.csv", {"start", "degree", "curvature_trend", "torsion_trend"});
         for (double st : {0.0, 0.05, 0.1, 0.5, 1.0})
             for (int n : degrees) {
                 const BezierCurve c(space_typical_polygon(normalized_log_aesthetic_space_parameters(alpha, beta, L, st), n).points);
-                m.row_text({repro::format_number(st), std::to_string(n), analysis::to_string(curvature_trend(c)), analysis::to_string(torsion_trend(c))});
+                m.row_text({format_number(st), std::to_string(n), analysis::to_string(curvature_trend(c)), analysis::to_string(torsion_trend(c))});
             }
     }
     return run.finish();

@@ -43,7 +43,7 @@ int main(int argc, char** argv) {
     {
         const double alpha = -0.5;
         auto exact = [&](double ds, int j) { return alpha * (std::pow((j + 2) * ds, (alpha - 1) / alpha) - std::pow((j + 1) * ds, (alpha - 1) / alpha)); };
-        repro::CsvWriter t = run.table("eq18_accuracy.csv", {"j", "ds", "rel_error_eq18", "rel_error_eq19"});
+        CsvWriter t = run.table("eq18_accuracy.csv", {"j", "ds", "rel_error_eq18", "rel_error_eq19"});
         double rel18_small_ds = 0, rel18_large_j = 0, rel19_small_ds = 0, rel19_large_j = 0;
         for (double ds : {1e-2, 1e-4, 1e-6})
             for (int j : {0, 1, 10, 100, 1000, 10000}) {
@@ -135,7 +135,7 @@ int main(int argc, char** argv) {
 
     // ---- The two constructions converge to log-aesthetic curves of slope α, but to different pieces.
     {
-        repro::CsvWriter t = run.table("construction_comparison.csv", {"alpha", "degree", "construction", "total_turning", "end_x", "end_y", "lcg_slope_interior"});
+        CsvWriter t = run.table("construction_comparison.csv", {"alpha", "degree", "construction", "total_turning", "end_x", "end_y", "lcg_slope_interior"});
         for (double alpha : {-0.5, 1.5})
             for (int n : {99, 999}) {
                 const TypicalPolygon s1 = scale_one_typical_polygon(alpha, 1.0, n), cr = constant_rotation_typical_polygon(alpha, 1.0, n);
@@ -145,12 +145,12 @@ int main(int argc, char** argv) {
                     const BezierCurve c(poly->points, 0, 1, BezierEvaluation::bernstein);
                     const double slope = analysis::lcg_slope(c, 0.05, 0.95, 200).slope;
                     const Eigen::RowVectorXd end = poly->points.row(poly->points.rows() - 1);
-                    t.row_text({repro::format_number(alpha), std::to_string(n), name, repro::format_number(turned), repro::format_number(end(0)), repro::format_number(end(1)), repro::format_number(slope, 6)});
+                    t.row_text({format_number(alpha), std::to_string(n), name, format_number(turned), format_number(end(0)), format_number(end(1)), format_number(slope, 6)});
                 }
             }
         const LogAestheticCurve target = normalized_log_aesthetic_curve(-0.5, 1.0);
-        run.note("Eq. (15) on [0, 1] with α = −0.5 turns by " + repro::format_number(target.tangent_angle(1.0), 6) + " rad and ends at (" + repro::format_number(target.point(1.0).x(), 6) + ", " +
-                 repro::format_number(target.point(1.0).y(), 6) + "); construction_comparison.csv lists both constructions: the scale-1 polygon approaches this piece, the constant-rotation polygon another piece of a curve with the same α (its eq (20) takes (j+1)Δs_j for the arc length Σ_{k≤j} Δs_k).");
+        run.note("Eq. (15) on [0, 1] with α = −0.5 turns by " + format_number(target.tangent_angle(1.0), 6) + " rad and ends at (" + format_number(target.point(1.0).x(), 6) + ", " +
+                 format_number(target.point(1.0).y(), 6) + "); construction_comparison.csv lists both constructions: the scale-1 polygon approaches this piece, the constant-rotation polygon another piece of a curve with the same α (its eq (20) takes (j+1)Δs_j for the arc length Σ_{k≤j} Δs_k).");
     }
     return run.finish();
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "core/errors.hpp"
 
@@ -11,7 +12,7 @@ namespace {
 
 void require_angles(double theta0, double theta1, const char* who) {
     for (double a : {theta0, theta1})
-        if (!std::isfinite(a) || a < 0.0 || a >= M_PI) fail_input(who, "angle " + full_precision(a) + " outside [0, pi)");
+        if (!std::isfinite(a) || a < 0.0 || a >= std::numbers::pi) fail_input(who, "angle " + full_precision(a) + " outside [0, pi)");
 }
 
 double signed_turn(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b)); }
@@ -83,7 +84,7 @@ Eigen::MatrixXd endpoint_interpolating_polygon(const Eigen::MatrixXd& unit_polyg
         const Eigen::Vector2d b = (unit_polygon.row(q2) - unit_polygon.row(q1)).transpose();
         if (!(a.norm() > 0.0) || !(b.norm() > 0.0)) fail_input(who, "zero-length edge next to point " + std::to_string(q1));
         const double turn = signed_turn(a, b);
-        if (!(std::abs(turn) < M_PI / 2))
+        if (!(std::abs(turn) < std::numbers::pi / 2))
             fail_input(who, "turning angle " + full_precision(turn) + " at point " + std::to_string(q1) + " must be below pi/2 in magnitude (|P0P1| = cos(theta0)/3 > 0)");
         p.row(q1) = unit_polygon.row(q2) + (2.0 / 3.0) * b.normalized().transpose() * -1.0;
         p.row(q0) = p.row(q1) - (std::cos(turn) / 3.0) * a.normalized().transpose();

@@ -1,6 +1,7 @@
 #include "aesthetic/space_typical_bezier.hpp"
 
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include "core/errors.hpp"
@@ -9,7 +10,7 @@
 namespace cagd::aesthetic {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kPi = std::numbers::pi;
 }
 
 const char* to_string(FrenetComposition c) {

@@ -108,6 +108,25 @@ numeric::RombergResult romberg_arc_length(const Curve& c, double rel_tol) {
     return total;
 }
 
+ArcLength reference_arc_length(const Curve& c) {
+    const numeric::RombergResult r = romberg_arc_length(c);
+    if (r.outcome.ok()) return {r.value, r.error_estimate, "romberg"};
+    ArcLength a{0.0, 0.0, "gauss-kronrod"};
+    const std::vector<double> br = c.breakpoints();
+    for (std::size_t k = 0; k + 1 < br.size(); ++k) {
+        double error = 0.0;
+        a.value += boost::math::quadrature::gauss_kronrod<double, 31>::integrate([&](double t) { return speed(c, t); }, br[k], br[k + 1], 15, 1e-10,
+                                                                                 &error);
+        a.error_estimate += error;
+    }
+    return a;
+}
+
+double area_closed_by_chord(const Curve& c) {
+    const Eigen::VectorXd first = c.point(c.t_min()), last = c.point(c.t_max());
+    return enclosed_area(c) + 0.5 * (last(0) * first(1) - last(1) * first(0));
+}
+
 double enclosed_area(const Curve& c) {
     if (c.dimension() != 2)
         fail_input("cagd::analysis::enclosed_area", "needs a planar curve, dimension is " +

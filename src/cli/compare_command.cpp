@@ -1,23 +1,34 @@
-#include "cli/compare_command.hpp"
+// `cagd compare --in P.csv [--closed] [--methods a,b,…] [--no-plot] --out DIR`: every configuration
+// of the method registry on the user's points (compare/method_comparison). Writes DIR/measures.csv
+// and DIR/measures.md (one row per method), the figure data DIR/{points,curves,curvature,combs}.csv,
+// DIR/compare_panels.gp, and with gnuplot on the PATH the figures DIR/{curves,combs,curvature}.png.
+// Prints the Markdown table on stdout and one progress line per method on stderr.
 
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <sstream>
 
+#include "cli/commands.hpp"
 #include "cli/compare_panels_script.hpp"
 #include "compare/method_comparison.hpp"
 #include "core/errors.hpp"
 #include "core/point_csv.hpp"
-#include "repro/csv.hpp"
+#include "core/csv.hpp"
 
 namespace cagd::cli {
 
 namespace {
 
+struct CompareArgs {
+    std::string in, out, methods;
+    bool closed = false, no_plot = false;
+};
+
 void write_rows(const std::string& path, const std::vector<std::string>& header, const std::vector<std::vector<double>>& rows) {
-    repro::CsvWriter w(path, header);
+    CsvWriter w(path, header);
     for (const auto& r : rows) w.row(r, 12);
 }
 
@@ -35,8 +46,6 @@ std::string shell_quoted(const std::string& s) {
     return q + "'";
 }
 
-}  // namespace
-
 int run_compare(const CompareArgs& a) {
     const char* who = "cagd compare";
     const PointList points = read_points_csv(a.in);
@@ -45,22 +54,22 @@ int run_compare(const CompareArgs& a) {
     if (!a.methods.empty()) {
         std::stringstream ss(a.methods);
         std::string m;
-        while (std::getline(ss, m, ',')) options.methods.push_back(compare::method_info(m).name);
+        while (std::getline(ss, m, ',')) options.methods.push_back(methods::find_configuration(m).name);
     }
     if (points.cols() != 2) fail_input(who, a.in + ": compares planar curves, the points have " + std::to_string(points.cols()) + " columns");
     std::error_code ec;
     std::filesystem::create_directories(a.out, ec);
     if (!std::filesystem::is_directory(a.out)) fail_input(who, "cannot create the output directory '" + a.out + "'");
-    std::cerr << "cagd compare: " << points.rows() << " points, " << (options.methods.empty() ? compare::interpolation_methods().size() : options.methods.size())
+    std::cerr << "cagd compare: " << points.rows() << " points, " << (options.methods.empty() ? methods::configurations().size() : options.methods.size())
               << " methods\n";
     const std::vector<compare::MethodComparison> results = compare::compare_methods(points, options);
     for (const auto& r : results)
         std::cerr << "cagd compare: " << r.method << ": " << r.status << (r.note.empty() ? "" : " (" + r.note + ")") << ", "
-                  << repro::format_number(r.seconds, 3) << " s\n";
+                  << format_number(r.seconds, 3) << " s\n";
 
     const std::string dir = a.out + "/";
     {
-        repro::CsvWriter w(dir + "measures.csv", compare::comparison_header(a.closed, true));
+        CsvWriter w(dir + "measures.csv", compare::comparison_header(a.closed, true));
         for (const auto& row : compare::comparison_rows(results, a.closed, true)) w.row_text(row);
     }
     const std::string md = compare::comparison_markdown(results, a.closed, true);
@@ -72,18 +81,18 @@ int run_compare(const CompareArgs& a) {
     const int spans = static_cast<int>(points.rows()) - (a.closed ? 0 : 1);
     const compare::FigureData fig = compare::comparison_figure_data(results, points, compare::figure_sampling(std::max(spans, 1), 10000));
     {
-        repro::CsvWriter w(dir + "points.csv", {"x", "y"});
+        CsvWriter w(dir + "points.csv", {"x", "y"});
         for (Eigen::Index i = 0; i < points.rows(); ++i) w.row({points(i, 0), points(i, 1)}, 17);
     }
     write_rows(dir + "curves.csv", {"index", "x", "y"}, fig.curves);
     write_rows(dir + "curvature.csv", {"index", "s", "kappa"}, fig.profiles);
     write_rows(dir + "combs.csv", {"index", "x", "y", "tip_x", "tip_y"}, fig.combs);
     {
-        repro::CsvWriter w(dir + "methods.csv", compare::figure_methods_header());
+        CsvWriter w(dir + "methods.csv", compare::figure_methods_header());
         for (const auto& row : compare::figure_methods_rows(results, fig)) w.row_text(row);
     }
     std::ofstream(dir + "compare_panels.gp") << kComparePanelsScript;
-    if (!a.plot) return 0;
+    if (a.no_plot) return 0;
     const std::string settings = "datadir=" + gnuplot_quoted(a.out) + "; prefix=''; heading=" +
                                  gnuplot_quoted(std::filesystem::path(a.in).filename().string()) + "; formats='png'; point_every=" +
                                  std::to_string(std::max<Eigen::Index>(1, points.rows() / 5000));   // ≤ ~5000 dots per panel
@@ -98,6 +107,19 @@ int run_compare(const CompareArgs& a) {
     }
     std::cerr << "cagd compare: figures " << dir << "{curves,combs,curvature}.png\n";
     return 0;
+}
+
+}  // namespace
+
+Command add_compare_command(CLI::App& app) {
+    auto a = std::make_shared<CompareArgs>();
+    CLI::App* c = app.add_subcommand("compare", "Every interpolation method on the same points: fairness table (CSV, Markdown) and figures");
+    c->add_option("--in", a->in, "points CSV: x,y per line, optional header")->required();
+    c->add_option("--out", a->out, "output directory (created)")->required();
+    c->add_flag("--closed", a->closed, "closed curves (methods that draw open curves only are listed as not applicable)");
+    c->add_option("--methods", a->methods, "comma-separated presets or methods (a method runs with its defaults), e.g. pseudo-spline-exact,cubic-b,hosaka (default: every preset)");
+    c->add_flag("--no-plot", a->no_plot, "write the figure data and script but do not run gnuplot");
+    return {c, [a] { return run_compare(*a); }};
 }
 
 }  // namespace cagd::cli

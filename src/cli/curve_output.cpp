@@ -1,6 +1,6 @@
 #include "cli/curve_output.hpp"
 
-#include "repro/csv.hpp"
+#include "core/csv.hpp"
 
 namespace cagd::cli {
 
@@ -10,7 +10,7 @@ void write_curve(const Curve& c, int samples_per_span, const std::string& path) 
     std::vector<std::string> header{"u"};
     for (const char* prefix : {"", "d", "dd"})
         for (int k = 0; k < d; ++k) header.push_back(std::string(prefix) + names[k]);
-    repro::CsvWriter w(path, header);
+    CsvWriter w(path, header);
     const std::vector<double> br = c.breakpoints();
     for (std::size_t s = 0; s + 1 < br.size(); ++s)
         for (int j = 0; j < samples_per_span + (s + 2 == br.size() ? 1 : 0); ++j) {

@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "analysis/curve_measures.hpp"
-#include "repro/csv.hpp"
+#include "core/csv.hpp"
 
 namespace cagd::compare {
 
@@ -68,7 +68,7 @@ double span_pseudo_energy(const Interpolant& a, const analysis::FairnessMeasures
     return total;
 }
 
-std::string applicability(const MethodInfo& m, const PointList& points, bool closed) {
+std::string applicability(const methods::MethodClaims& m, const PointList& points, bool closed) {
     if (closed && !m.supports_closed) return "open curves only";
     const int need = closed ? m.min_points_closed : m.min_points;
     if (points.rows() < need) return "needs at least " + std::to_string(need) + " points";
@@ -86,23 +86,22 @@ analysis::FairnessSampling comparison_sampling(int pieces) {
 std::vector<MethodComparison> compare_methods(const PointList& points, const ComparisonOptions& options) {
     const char* who = "cagd::compare::compare_methods";
     if (points.cols() != 2) fail_input(who, "compares planar curves: needs 2 columns (x, y), got " + std::to_string(points.cols()));
-    std::vector<std::string> names = options.methods;
-    if (names.empty())
-        for (const MethodInfo& m : interpolation_methods()) names.push_back(m.name);
+    std::vector<methods::Configuration> configurations;
+    for (const std::string& name : options.methods) configurations.push_back(methods::find_configuration(name));
+    if (options.methods.empty()) configurations = methods::configurations();
     const double diagonal = bounding_box_diagonal(points);
     std::vector<MethodComparison> out;
-    for (const std::string& name : names) {
-        const MethodInfo& info = method_info(name);
+    for (const methods::Configuration& configuration : configurations) {
         MethodComparison c;
-        c.method = name;
-        c.note = applicability(info, points, options.closed);
+        c.method = configuration.name;
+        c.note = applicability(configuration.claims, points, options.closed);
         if (!c.note.empty()) {
             c.status = "not applicable";
             out.push_back(std::move(c));
             continue;
         }
         const auto start = std::chrono::steady_clock::now();
-        InterpolationResult r = interpolate(name, points, options.closed);
+        InterpolationResult r = methods::interpolate(configuration, points, options.closed);
         c.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (!r.outcome.ok() || !r.interpolant) {
             c.status = "no result";
@@ -129,7 +128,7 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
             PointList moved = points;
             moved(points.rows() / 2, 1) += 1e-3 * diagonal;
             try {
-                const InterpolationResult m = interpolate(name, moved, options.closed);
+                const InterpolationResult m = methods::interpolate(configuration, moved, options.closed);
                 if (m.outcome.ok() && m.interpolant) c.locality_footprint = spans_moved(*c.interpolant, *m.interpolant, 1e-9 * diagonal);
             } catch (const InvalidInput&) {   // the moved point made the input invalid for this method
             }
@@ -152,7 +151,7 @@ std::vector<std::string> comparison_header(bool closed, bool timing) {
 
 std::vector<std::vector<std::string>> comparison_rows(const std::vector<MethodComparison>& cs, bool closed, bool timing, int digits) {
     std::vector<std::vector<std::string>> rows;
-    const auto num = [&](double v) { return repro::format_number(v, digits); };
+    const auto num = [&](double v) { return format_number(v, digits); };
     for (const MethodComparison& c : cs) {
         const bool built = c.interpolant.has_value();
         std::vector<std::string> r{c.method, c.status, built ? std::to_string(c.spans) : "", built ? num(c.length) : ""};
@@ -166,7 +165,7 @@ std::vector<std::vector<std::string>> comparison_rows(const std::vector<MethodCo
             r.insert(r.end(), 6, "");
         }
         r.push_back(c.locality_footprint ? std::to_string(*c.locality_footprint) : "");
-        if (timing) r.push_back(built ? repro::format_number(c.seconds, 3) : "");
+        if (timing) r.push_back(built ? format_number(c.seconds, 3) : "");
         r.push_back(c.note);
         rows.push_back(std::move(r));
     }

@@ -25,12 +25,15 @@
 #include <vector>
 
 #include "analysis/fairness_measures.hpp"
-#include "compare/interpolation_methods.hpp"
+#include "methods/method_registry.hpp"
 
 namespace cagd::compare {
 
+using methods::InterpolationResult;
+using methods::Interpolant;
+
 struct ComparisonOptions {
-    std::vector<std::string> methods;   // empty: every method
+    std::vector<std::string> methods;   // configuration or method names (methods::find_configuration); empty: every configuration
     bool closed = false;
     bool locality = true;
 };

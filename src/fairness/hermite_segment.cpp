@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "numeric/gauss_legendre.hpp"
 #include "numeric/romberg.hpp"
@@ -19,7 +20,7 @@ double cross(const Eigen::Vector2d& p, const Eigen::Vector2d& q) { return p.x() 
 // cos/sin that are exact at multiples of π/2 given in floating point (±π, ±π/2, 0), so the
 // collinear configurations of §4.1 are collinear to the last bit.
 Eigen::Vector2d unit_direction(double theta) {
-    const double q = theta / (M_PI / 2);
+    const double q = theta / (std::numbers::pi / 2);
     const double nearest = std::round(q);
     if (std::abs(q - nearest) < 1e-15 * 4) {
         switch (((static_cast<int>(nearest) % 4) + 4) % 4) {
@@ -91,18 +92,18 @@ const char* to_string(SegmentType t) {
 
 double wrap_angle(double theta) {
     // Fast path (differences of two wrapped angles, the common case): one shift by 2π.
-    if (theta > -M_PI && theta <= M_PI) return theta;
-    if (theta > M_PI && theta <= 3.0 * M_PI) {
-        const double w = theta - 2.0 * M_PI;
-        if (w > -M_PI) return w;
+    if (theta > -std::numbers::pi && theta <= std::numbers::pi) return theta;
+    if (theta > std::numbers::pi && theta <= 3.0 * std::numbers::pi) {
+        const double w = theta - 2.0 * std::numbers::pi;
+        if (w > -std::numbers::pi) return w;
     }
-    if (theta <= -M_PI && theta > -3.0 * M_PI) {
-        const double w = theta + 2.0 * M_PI;
-        if (w <= M_PI && w > -M_PI) return w;
+    if (theta <= -std::numbers::pi && theta > -3.0 * std::numbers::pi) {
+        const double w = theta + 2.0 * std::numbers::pi;
+        if (w <= std::numbers::pi && w > -std::numbers::pi) return w;
     }
     if (!std::isfinite(theta)) fail_input("cagd::fairness::wrap_angle", "angle must be finite, got " + full_precision(theta));
-    double w = std::remainder(theta, 2.0 * M_PI);   // in [−π, π]
-    if (w <= -M_PI) w += 2.0 * M_PI;
+    double w = std::remainder(theta, 2.0 * std::numbers::pi);   // in [−π, π]
+    if (w <= -std::numbers::pi) w += 2.0 * std::numbers::pi;
     return w;
 }
 

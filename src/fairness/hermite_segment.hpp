@@ -30,6 +30,7 @@
 // smooth segments (tests and the pseudo_energy experiments measure this).
 #include <Eigen/Dense>
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -49,7 +50,7 @@ double wrap_angle(double theta);
 // Inline: the check is on the hot path of every table lookup; the message is built only on failure.
 [[noreturn]] void fail_tangent_angle(const char* who, double theta, const char* name);
 inline void require_tangent_angle(const char* who, double theta, const char* name) {
-    if (!(std::abs(theta) <= M_PI + 1e-12)) fail_tangent_angle(who, theta, name);   // also catches NaN
+    if (!(std::abs(theta) <= std::numbers::pi + 1e-12)) fail_tangent_angle(who, theta, name);   // also catches NaN
 }
 
 class UnitChordHermite {

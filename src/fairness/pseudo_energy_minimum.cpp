@@ -7,6 +7,7 @@
 #include <glog/logging.h>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <nlopt.hpp>
 
 namespace cagd::fairness {
@@ -18,7 +19,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kRunawayLow = 1e-8, kRunawayHigh = 1e8;
 
 bool is_multiple_of_pi(double theta) {
-    return std::abs(theta) < 1e-12 || std::abs(std::abs(theta) - M_PI) < 1e-12;
+    return std::abs(theta) < 1e-12 || std::abs(std::abs(theta) - std::numbers::pi) < 1e-12;
 }
 
 void require_angles(const char* who, double theta0, double theta1) {
@@ -119,6 +120,48 @@ void fill_measures(PseudoEnergyMinimum& m, double r0, double r1, const SegmentEn
     m.error_estimate = e.error_estimate;
 }
 
+// newton_descent's stopping rules and safeguards, each with its reason.
+// Central-difference step for the Hessian of the analytic ∇J in ρ = log r: truncation O(h²) and
+// rounding O(ε/h) balance near ε^(1/3) ≈ 6e-6.
+constexpr double kHessianStep = 1e-5;
+// Newton converges quadratically in about ten steps; a hundred only guards against cycling.
+constexpr int kNewtonIterations = 100;
+// Converged when |∇J| ≤ kGradientAtRounding · (1 + J): the gradient is at rounding level.
+constexpr double kGradientAtRounding = 1e-14;
+// At the rounding floor (no acceptable step) a descent still counts as converged when
+// |∇J| ≤ kGradientConverged · (1 + J): about 1e4 ε, what the energy's quadrature noise leaves.
+constexpr double kGradientConverged = 1e-10;
+// Levenberg damping relative to the Hessian's scale 1 + |λ_max|: the first shift above an
+// indefinite Hessian's least eigenvalue, the floor of μ, and its growth per rejected step.
+constexpr double kDampingShift = 1e-6;
+constexpr double kDampingFloor = 1e-9;
+constexpr double kDampingGrowth = 8.0;
+// Rejected steps before giving up: 8^40 ≈ 1e36 has turned any step into a tiny steepest descent.
+constexpr int kDampingTries = 40;
+// |ρ| < 50 (r between 2e-22 and 5e21, far past the runaway limits): beyond it J loses every digit.
+constexpr double kLogMagnitudeLimit = 50.0;
+// A step changes r by at most a factor e = exp(kMaxStep): J's valleys curve at small angles.
+constexpr double kMaxStep = 1.0;
+// A step shorter than this in ρ changes r by less than rounding.
+constexpr double kStepAtRounding = 1e-15;
+// A "flatter" step (smaller |∇J|) may raise J by the quadrature noise of the energy (relative).
+constexpr double kEnergyNoise = 1e-13;
+// The reference path's Ceres CG (Polak–Ribière, Wolfe line search with curvature factor 0.1, the
+// usual choice for CG): its stopping tolerances sit just above the Romberg energy's noise (1e-13
+// relative), and the Newton polish below takes the last digits.
+constexpr int kCgIterations = 500;
+constexpr double kCgFunctionTolerance = 1e-14, kCgGradientTolerance = 1e-11, kCgParameterTolerance = 1e-13;
+// The NLopt cross-check (L-BFGS on r ∈ [1e-4, 1e4]): ~20–60 evaluations converge; beyond
+// kLbfgsEvaluations it is stalled at the noise floor. A value-based method stops at
+// |∇J| ~ sqrt(quadrature noise · J · λ), so it counts as converged at kLbfgsGradient · (1 + J).
+constexpr double kLbfgsBound = 1e4, kLbfgsFtolRel = 1e-15, kLbfgsXtolRel = 1e-12, kLbfgsGradient = 1e-6;
+constexpr int kLbfgsEvaluations = 300;
+// Brent's minimiser on J(θ, θ1) over θ1 keeps 40 bits: more than the 26 a smooth minimum's
+// location supports in double precision, as Boost allows up to the full 52.
+constexpr int kBrentBits = 40;
+// Two descents whose ρ agree to this (r to a relative 1e-6) found the same minimum.
+constexpr double kSameMinimum = 1e-6;
+
 struct Descent {
     double j = kInf, rho0 = 0, rho1 = 0;
     SegmentEnergy energy;
@@ -126,9 +169,8 @@ struct Descent {
     std::string message;
 };
 
-// Picks the global answer among descents; counts distinct minima (|Δρ| > 1e-6).
-PseudoEnergyMinimum choose(double theta0, double theta1, const std::vector<Descent>& runs, const ScanBox& box,
-                           long evaluations) {
+// Picks the global answer among descents; counts distinct minima (|Δρ| > kSameMinimum).
+PseudoEnergyMinimum choose(double theta0, double theta1, const std::vector<Descent>& runs, long evaluations) {
     PseudoEnergyMinimum m;
     m.theta0 = theta0;
     m.theta1 = theta1;
@@ -139,7 +181,7 @@ PseudoEnergyMinimum choose(double theta0, double theta1, const std::vector<Desce
         if (!d.converged || !std::isfinite(d.j)) continue;
         bool seen = false;
         for (const Descent* e : distinct)
-            if (std::abs(e->rho0 - d.rho0) < 1e-6 && std::abs(e->rho1 - d.rho1) < 1e-6) seen = true;
+            if (std::abs(e->rho0 - d.rho0) < kSameMinimum && std::abs(e->rho1 - d.rho1) < kSameMinimum) seen = true;
         if (!seen) distinct.push_back(&d);
     }
     std::sort(distinct.begin(), distinct.end(), [](const Descent* a, const Descent* b) { return a->j < b->j; });
@@ -158,7 +200,6 @@ PseudoEnergyMinimum choose(double theta0, double theta1, const std::vector<Desce
         m.runner_up_r0 = std::exp(distinct[1]->rho0);
         m.runner_up_r1 = std::exp(distinct[1]->rho1);
     }
-    (void)box;
     if (std::min(m.r0, m.r1) < kRunawayLow || std::max(m.r0, m.r1) > kRunawayHigh)
         m.outcome = {Status::no_solution, "minimiser runs off to the boundary of r > 0 (r0 = " + full_precision(m.r0) +
                                               ", r1 = " + full_precision(m.r1) + ")"};
@@ -174,12 +215,12 @@ Descent newton_descent(const Energy& energy, double rho0, double rho1) {
     Descent d;
     Eigen::Vector2d x(rho0, rho1);
     SegmentEnergy e = energy(x[0], x[1]);
-    const double h = 1e-5;
+    const double h = kHessianStep;
     const auto grad = [](const SegmentEnergy& s) { return Eigen::Vector2d(s.dj_dlog_r0, s.dj_dlog_r1); };
-    for (int it = 0; it < 100; ++it) {
+    for (int it = 0; it < kNewtonIterations; ++it) {
         if (!std::isfinite(e.pseudo_energy)) break;
         const Eigen::Vector2d g = grad(e);
-        if (g.norm() <= 1e-14 * (1.0 + e.pseudo_energy)) {
+        if (g.norm() <= kGradientAtRounding * (1.0 + e.pseudo_energy)) {
             d.converged = true;
             break;
         }
@@ -196,17 +237,17 @@ Descent newton_descent(const Energy& energy, double rho0, double rho1) {
         // valleys J has at small angles, where H is nearly singular.
         Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(H);
         const double lmin = eig.eigenvalues()[0], lmax = std::abs(eig.eigenvalues()[1]);
-        double mu = lmin > 0.0 ? 0.0 : -lmin + 1e-6 * (1.0 + lmax);
+        double mu = lmin > 0.0 ? 0.0 : -lmin + kDampingShift * (1.0 + lmax);
         bool accepted = false;
         double step_norm = 0.0;
-        for (int tries = 0; tries < 40 && !accepted; ++tries) {
+        for (int tries = 0; tries < kDampingTries && !accepted; ++tries) {
             Eigen::Vector2d step = -(H + mu * Eigen::Matrix2d::Identity()).ldlt().solve(g);
-            if (step.norm() > 1.0) step *= 1.0 / step.norm();
+            if (step.norm() > kMaxStep) step *= kMaxStep / step.norm();
             const Eigen::Vector2d xn = x + step;
-            if (step.allFinite() && std::abs(xn[0]) < 50 && std::abs(xn[1]) < 50) {
+            if (step.allFinite() && std::abs(xn[0]) < kLogMagnitudeLimit && std::abs(xn[1]) < kLogMagnitudeLimit) {
                 const SegmentEnergy en = energy(xn[0], xn[1]);
                 const bool lower = en.pseudo_energy < e.pseudo_energy;
-                const bool flatter = en.pseudo_energy <= e.pseudo_energy + 1e-13 * std::abs(e.pseudo_energy) &&
+                const bool flatter = en.pseudo_energy <= e.pseudo_energy + kEnergyNoise * std::abs(e.pseudo_energy) &&
                                      grad(en).norm() < g.norm();
                 if (lower || flatter) {
                     x = xn;
@@ -215,14 +256,14 @@ Descent newton_descent(const Energy& energy, double rho0, double rho1) {
                     step_norm = step.norm();
                 }
             }
-            mu = std::max(8.0 * mu, 1e-9 * (1.0 + lmax));
+            mu = std::max(kDampingGrowth * mu, kDampingFloor * (1.0 + lmax));
         }
-        if (!accepted || step_norm < 1e-15) {   // at the rounding floor
-            d.converged = grad(e).norm() <= 1e-10 * (1.0 + e.pseudo_energy);
+        if (!accepted || step_norm < kStepAtRounding) {   // at the rounding floor
+            d.converged = grad(e).norm() <= kGradientConverged * (1.0 + e.pseudo_energy);
             break;
         }
     }
-    d.converged = d.converged || (std::isfinite(e.pseudo_energy) && grad(e).norm() <= 1e-10 * (1.0 + e.pseudo_energy));
+    d.converged = d.converged || (std::isfinite(e.pseudo_energy) && grad(e).norm() <= kGradientConverged * (1.0 + e.pseudo_energy));
     d.rho0 = x[0];
     d.rho1 = x[1];
     d.energy = e;
@@ -238,7 +279,7 @@ public:
     RombergPseudoEnergy(double theta0, double theta1, double rel_tol, long* evaluations)
         : theta0_(theta0), theta1_(theta1), rel_tol_(rel_tol), evaluations_(evaluations) {}
     bool Evaluate(const double* rho, double* cost, double* gradient) const override {
-        if (!(std::abs(rho[0]) < 50 && std::abs(rho[1]) < 50)) return false;
+        if (!(std::abs(rho[0]) < kLogMagnitudeLimit && std::abs(rho[1]) < kLogMagnitudeLimit)) return false;
         const UnitChordHermite seg(theta0_, theta1_, std::exp(rho[0]), std::exp(rho[1]));
         const SegmentEnergy e = segment_energy_reference(seg, rel_tol_, gradient != nullptr);
         ++*evaluations_;
@@ -284,10 +325,10 @@ PseudoEnergyMinimum minimize_pseudo_energy_reference(double theta0, double theta
         o.nonlinear_conjugate_gradient_type = ceres::POLAK_RIBIERE;
         o.line_search_type = ceres::WOLFE;
         o.line_search_sufficient_curvature_decrease = 0.1;   // the usual choice for CG
-        o.max_num_iterations = 500;
-        o.function_tolerance = 1e-14;
-        o.gradient_tolerance = 1e-11;
-        o.parameter_tolerance = 1e-13;
+        o.max_num_iterations = kCgIterations;
+        o.function_tolerance = kCgFunctionTolerance;
+        o.gradient_tolerance = kCgGradientTolerance;
+        o.parameter_tolerance = kCgParameterTolerance;
         o.logging_type = ceres::SILENT;
         ceres::GradientProblem problem(new RombergPseudoEnergy(theta0, theta1, opt.romberg_rel_tol, &evaluations));
         ceres::GradientProblemSolver::Summary summary;
@@ -302,7 +343,7 @@ PseudoEnergyMinimum minimize_pseudo_energy_reference(double theta0, double theta
         d.message = "Ceres CG: " + summary.message + "; " + d.message;
         runs.push_back(d);
     }
-    return choose(theta0, theta1, runs, opt.box, evaluations);
+    return choose(theta0, theta1, runs, evaluations);
 }
 
 PseudoEnergyMinimum minimize_pseudo_energy_nlopt(double theta0, double theta1, const ScanBox& box) {
@@ -332,11 +373,11 @@ PseudoEnergyMinimum minimize_pseudo_energy_nlopt(double theta0, double theta1, c
             &data);
         // Bounds r ∈ [1e-4, 1e4]: the minimisers of the 1° grid lie in [0.002, 10]; wider bounds let
         // the line search probe r ~ 1e±8, where each Romberg evaluation costs seconds.
-        opt.set_lower_bounds({std::log(1e-4), std::log(1e-4)});
-        opt.set_upper_bounds({std::log(1e4), std::log(1e4)});
-        opt.set_ftol_rel(1e-15);
-        opt.set_xtol_rel(1e-12);
-        opt.set_maxeval(300);   // L-BFGS needs ~20–60; beyond, it is stalled at the noise floor
+        opt.set_lower_bounds({std::log(1.0 / kLbfgsBound), std::log(1.0 / kLbfgsBound)});
+        opt.set_upper_bounds({std::log(kLbfgsBound), std::log(kLbfgsBound)});
+        opt.set_ftol_rel(kLbfgsFtolRel);
+        opt.set_xtol_rel(kLbfgsXtolRel);
+        opt.set_maxeval(kLbfgsEvaluations);
         std::vector<double> x{starts[si].rho0, starts[si].rho1};
         double f = 0.0;
         Descent d;
@@ -350,11 +391,10 @@ PseudoEnergyMinimum minimize_pseudo_energy_nlopt(double theta0, double theta1, c
         d.rho1 = x[1];
         d.energy = segment_energy_reference(UnitChordHermite(theta0, theta1, std::exp(x[0]), std::exp(x[1])));
         d.j = d.energy.pseudo_energy;
-        // A value-based method stops at |∇J| ~ sqrt(quadrature noise · J · λ): accept 1e-6.
-        d.converged = std::hypot(d.energy.dj_dlog_r0, d.energy.dj_dlog_r1) <= 1e-6 * (1.0 + d.j);
+        d.converged = std::hypot(d.energy.dj_dlog_r0, d.energy.dj_dlog_r1) <= kLbfgsGradient * (1.0 + d.j);
         runs.push_back(d);
     }
-    return choose(theta0, theta1, runs, box, evaluations);
+    return choose(theta0, theta1, runs, evaluations);
 }
 
 
@@ -373,7 +413,7 @@ PseudoEnergyMinimum minimize_pseudo_energy(double theta0, double theta1, const F
         runs.push_back(newton_descent(fast_energy, starts[s].rho0, starts[s].rho1));
     for (const Eigen::Vector2d& w : warm)
         if (w[0] > 0 && w[1] > 0) runs.push_back(newton_descent(fast_energy, std::log(w[0]), std::log(w[1])));
-    return choose(theta0, theta1, runs, opt.box, evaluations);
+    return choose(theta0, theta1, runs, evaluations);
 }
 
 PseudoEnergyMinimum measure_segment(double theta0, double theta1, double r0, double r1) {
@@ -400,10 +440,10 @@ AngleMinimum minimize_over_end_angle(double theta, const std::function<double(do
     require_angles("minimize_over_end_angle", theta, 0.0);
     if (!(scan_step > 0.0 && scan_step <= 0.5))
         fail_input("cagd::fairness::minimize_over_end_angle", "scan_step must be in (0, 0.5], got " + full_precision(scan_step));
-    const int n = static_cast<int>(std::ceil(2 * M_PI / scan_step));
+    const int n = static_cast<int>(std::ceil(2 * std::numbers::pi / scan_step));
     std::vector<double> t(static_cast<std::size_t>(n + 1)), v(static_cast<std::size_t>(n + 1));
     for (int i = 0; i <= n; ++i) {
-        t[static_cast<std::size_t>(i)] = -M_PI + 2 * M_PI * i / n;
+        t[static_cast<std::size_t>(i)] = -std::numbers::pi + 2 * std::numbers::pi * i / n;
         v[static_cast<std::size_t>(i)] = j_of(t[static_cast<std::size_t>(i)]);
     }
     const auto best = static_cast<std::size_t>(std::min_element(v.begin(), v.end()) - v.begin());
@@ -418,7 +458,7 @@ AngleMinimum minimize_over_end_angle(double theta, const std::function<double(do
         return out;
     }
     const double lo = t[best == 0 ? 0 : best - 1], hi = t[std::min(best + 1, t.size() - 1)];
-    const auto r = boost::math::tools::brent_find_minima(j_of, lo, hi, 40);
+    const auto r = boost::math::tools::brent_find_minima(j_of, lo, hi, kBrentBits);
     out.theta1 = r.second <= v[best] ? r.first : t[best];
     out.pseudo_energy = std::min(r.second, v[best]);
     return out;

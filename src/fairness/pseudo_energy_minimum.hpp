@@ -36,6 +36,7 @@
 // Failure modes: a minimiser that ends at r < 1e-8 or r > 1e8 returns no_solution ("minimiser
 // runs off to the boundary"); a descent that does not converge returns no_convergence.
 #include <functional>
+#include <numbers>
 #include <vector>
 
 #include "core/errors.hpp"
@@ -99,7 +100,7 @@ struct AngleMinimum {
     double theta = 0.0, theta1 = 0.0, pseudo_energy = 0.0;
     Outcome outcome;
 };
-AngleMinimum minimize_over_end_angle(double theta, double scan_step = M_PI / 90);
+AngleMinimum minimize_over_end_angle(double theta, double scan_step = std::numbers::pi / 90);
 // The same scan and Brent refinement on a given J(θ, ·) (e.g. an interpolated table); j_of returns
 // +∞ where J is undefined.
 AngleMinimum minimize_over_end_angle(double theta, const std::function<double(double)>& j_of, double scan_step);

@@ -6,6 +6,7 @@
 #include <limits>
 #include <cstdio>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 #include <thread>
 #include <unistd.h>
@@ -29,12 +30,12 @@ constexpr int kCacheFormat = 4;
 inline void locate(const std::vector<double>& nodes, double inv_h, double theta, int& i, double& u) {
     const int n = static_cast<int>(nodes.size());
     const double x0 = nodes.front();
-    if (theta < x0) theta += 2 * M_PI;
+    if (theta < x0) theta += 2 * std::numbers::pi;
     i = std::clamp(static_cast<int>((theta - x0) * inv_h), 0, n - 1);   // a guess; the tests make it exact
     if (i + 1 < n && nodes[static_cast<std::size_t>(i + 1)] <= theta) ++i;
     else if (i > 0 && nodes[static_cast<std::size_t>(i)] > theta) --i;
     const double left = nodes[static_cast<std::size_t>(i)];
-    const double right = i + 1 < n ? nodes[static_cast<std::size_t>(i + 1)] : x0 + 2 * M_PI;
+    const double right = i + 1 < n ? nodes[static_cast<std::size_t>(i + 1)] : x0 + 2 * std::numbers::pi;
     u = std::clamp((theta - left) / (right - left), 0.0, 1.0);
 }
 
@@ -91,7 +92,7 @@ std::vector<double> AngleGrid::nodes() const {
             case NodePlacement::midpoints: f = (2.0 * k + 1.0) / n; break;
         }
         // π·(f − 1) is exactly 0 when f = 1 and exactly ∓π at the ends.
-        out[static_cast<std::size_t>(k)] = M_PI * (f - 1.0);
+        out[static_cast<std::size_t>(k)] = std::numbers::pi * (f - 1.0);
     }
     return out;
 }
@@ -111,8 +112,8 @@ PseudoEnergyTable PseudoEnergyTable::build(const AngleGrid& grid, TableMethod me
         const double target = -t.nodes_[static_cast<std::size_t>(k)];
         int best = 0;
         for (int m = 0; m < n; ++m)
-            if (std::abs(std::remainder(t.nodes_[static_cast<std::size_t>(m)] - target, 2 * M_PI)) <
-                std::abs(std::remainder(t.nodes_[static_cast<std::size_t>(best)] - target, 2 * M_PI)))
+            if (std::abs(std::remainder(t.nodes_[static_cast<std::size_t>(m)] - target, 2 * std::numbers::pi)) <
+                std::abs(std::remainder(t.nodes_[static_cast<std::size_t>(best)] - target, 2 * std::numbers::pi)))
                 best = m;
         negate[static_cast<std::size_t>(k)] = best;
     }
@@ -350,7 +351,7 @@ AngleMinimumTable AngleMinimumTable::from_energy_table(const PseudoEnergyTable& 
             if (is_undefined_node(theta, theta1)) return std::abs(theta) + std::abs(theta1) == 0.0 ? 0.0 : kInfinity;
             return table.lookup(theta, theta1).pseudo_energy;
         };
-        t.values_.push_back(minimize_over_end_angle(theta, j_of, M_PI / 720));
+        t.values_.push_back(minimize_over_end_angle(theta, j_of, std::numbers::pi / 720));
     }
     return t;
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <numbers>
 #include <string>
 
 #include "core/errors.hpp"
@@ -126,7 +127,7 @@ PseudoSpline pseudo_spline(const PointList& points, const SegmentOracle& oracle,
     const auto turn = [&](Eigen::Index i) {
         const Eigen::Index in = (i - 1 + spans) % spans;
         const double t = wrap_angle(phi[static_cast<std::size_t>(i % spans)] - phi[static_cast<std::size_t>(in)]);
-        if (std::abs(std::abs(t) - M_PI) <= 1e-12)
+        if (std::abs(std::abs(t) - std::numbers::pi) <= 1e-12)
             fail_input(who, "the points turn by pi at point " + std::to_string(i) +
                                 " (a hairpin): no tangent direction between the chords, the pseudo-energy table is undefined there");
         return t;
@@ -212,8 +213,8 @@ long equivalent_polygon_points(double spline_error, CircleMeasure measure) {
     if (!(spline_error > 0.0 && std::isfinite(spline_error)))
         fail_input("cagd::fairness::equivalent_polygon_points", "spline_error must be positive and finite, got " + full_precision(spline_error));
     const auto polygon_error = [&](long n) {
-        const double nd = static_cast<double>(n), x = M_PI / nd;
-        return measure == CircleMeasure::perimeter ? 2.0 * M_PI - 2.0 * nd * std::sin(x) : M_PI - 0.5 * nd * std::sin(2.0 * x);
+        const double nd = static_cast<double>(n), x = std::numbers::pi / nd;
+        return measure == CircleMeasure::perimeter ? 2.0 * std::numbers::pi - 2.0 * nd * std::sin(x) : std::numbers::pi - 0.5 * nd * std::sin(2.0 * x);
     };
     // The polygon error decreases monotonically in N: bisection on the first N below spline_error.
     long lo = 2, hi = 3;   // invariant: polygon_error(lo) ≥ spline_error (or lo = 2), search hi
@@ -238,14 +239,6 @@ const char* to_string(InterpolationMethod m) {
         case InterpolationMethod::pseudo_spline: return "pseudo-spline";
     }
     return "?";
-}
-
-InterpolationMethod parse_interpolation_method(const std::string& text) {
-    for (auto m : {InterpolationMethod::cubic_spline_a, InterpolationMethod::cubic_spline_b, InterpolationMethod::hermite_a,
-                   InterpolationMethod::hermite_b, InterpolationMethod::pseudo_spline})
-        if (text == to_string(m)) return m;
-    fail_input("cagd::fairness::parse_interpolation_method",
-               "'" + text + "' is not one of cubic-a, cubic-b, hermite-a, hermite-b, pseudo-spline");
 }
 
 spline::PiecewiseHermiteCurve section42_interpolant(const PointList& points, InterpolationMethod method, bool closed,

@@ -132,10 +132,11 @@ PseudoSpline pseudo_spline(const PointList& points, const SegmentOracle& oracle,
 
 // The five curves of section 4.2 through the same points: cubic spline A (uniform parameter),
 // cubic spline B (chord length), Hermite A, Hermite B (spline/hermite_spline.hpp) and the
-// pseudo-spline (`oracle` and `mode` are used by the pseudo-spline only; pass them anyway).
+// pseudo-spline (`oracle` and `mode` are used by the pseudo-spline only; pass them anyway), with
+// the oracle the caller chooses (the reproduction of Figs. 10–24 reads the reference table). The
+// same curves by name, with the default table, are in methods/method_registry.hpp.
 enum class InterpolationMethod { cubic_spline_a, cubic_spline_b, hermite_a, hermite_b, pseudo_spline };
 const char* to_string(InterpolationMethod m);
-InterpolationMethod parse_interpolation_method(const std::string& text);   // cubic-a | cubic-b | hermite-a | hermite-b | pseudo-spline
 spline::PiecewiseHermiteCurve section42_interpolant(const PointList& points, InterpolationMethod method, bool closed,
                                                     const SegmentOracle& oracle, TangentOptimization mode);
 

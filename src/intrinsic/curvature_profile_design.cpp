@@ -6,6 +6,9 @@
 #include <Eigen/SparseLU>
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
 
 #include "analysis/curve_measures.hpp"
 #include "intrinsic/detail/bezier_extraction.hpp"
@@ -15,7 +18,7 @@ namespace cagd::intrinsic {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kPi = std::numbers::pi;
 
 int span_count(const CurvatureProfileProblem& P) {
     return static_cast<int>(P.points.rows()) - (P.closed ? 0 : 1);
@@ -51,13 +54,18 @@ struct SegmentJet {
     Eigen::MatrixXd db_dc, db_dw;
 };
 
-using Jet = ceres::Jet<double, 10>;
+// Forward derivatives of a segment's Bézier ordinates with respect to its 2p knots and p + 1
+// de Boor ordinates: 3p + 1 slots, fixed at compile time for the largest degree ψ may have.
+constexpr int kMaxJetDegree = 3;
+using Jet = ceres::Jet<double, 3 * kMaxJetDegree + 1>;
 
 SegmentJet segment_jet(const TangentAngleSpline& psi, int j) {
     const KnotLayout& L = psi.layout();
     const int p = L.degree(), last = L.last_knot_of_breakpoint(j), k0 = last - p + 1;
+    if (p > kMaxJetDegree)
+        throw std::logic_error("cagd::intrinsic::segment_jet: degree " + std::to_string(p) + " exceeds the Jet's " + std::to_string(kMaxJetDegree));
     const std::vector<double> v = psi.local_farin_knots(j);   // the extraction is invariant under a shift of all knots
-    Jet u[6], c[4], b[4];
+    Jet u[2 * kMaxJetDegree], c[kMaxJetDegree + 1], b[kMaxJetDegree + 1];
     for (int m = 0; m < 2 * p; ++m) u[m] = Jet(v[static_cast<std::size_t>(m)], m);
     for (int m = 0; m <= p; ++m) c[m] = Jet(psi.de_boor()(k0 + m), 2 * p + m);
     detail::bezier_from_de_boor(p, u, c, b);
@@ -499,6 +507,21 @@ struct DesignResidual {
 
 }  // namespace
 
+namespace {
+
+// The Levenberg–Marquardt cross-check. Its Jacobian is a central difference (error ~ε^(2/3) ≈
+// 4e-11 relative), so it is accepted at ‖f‖∞ ≤ kLmAcceptance · scale, three digits above Newton's
+// exact-Jacobian tolerance (NewtonOptions::tolerance, 1e-12): what it checks is the span lengths,
+// to 1e-8 (fig2, fig3). Its own stopping rules are set below any reachable value so that only the
+// iteration limit (LM takes tens of iterations here) or a stall ends it.
+constexpr double kLmAcceptance = 1e-9;
+constexpr int kLmIterations = 500;
+constexpr double kLmFunctionTolerance = 1e-20, kLmGradientTolerance = 1e-20, kLmParameterTolerance = 1e-15;
+// Span lengths are kept above this fraction of the data scale (a zero length is a degenerate span).
+constexpr double kLmShortestSpan = 1e-6;
+
+}  // namespace
+
 CurvatureProfileSolution solve_curvature_profile_levenberg_marquardt(const CurvatureProfileProblem& P, const Eigen::VectorXd& start) {
     const std::string who = "intrinsic::solve_curvature_profile_levenberg_marquardt";
     require_valid_problem(P, who);
@@ -513,22 +536,22 @@ CurvatureProfileSolution solve_curvature_profile_levenberg_marquardt(const Curva
     ceres::Problem problem;
     problem.AddResidualBlock(cost, nullptr, sol.u.data());
     const double scale = data_scale(P);
-    for (int i = 0; i < P.layout.independent_lengths(); ++i) problem.SetParameterLowerBound(sol.u.data(), i, 1e-6 * scale);
+    for (int i = 0; i < P.layout.independent_lengths(); ++i) problem.SetParameterLowerBound(sol.u.data(), i, kLmShortestSpan * scale);
     ceres::Solver::Options opt;
     opt.minimizer_type = ceres::TRUST_REGION;
     opt.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
     opt.linear_solver_type = ceres::DENSE_QR;
-    opt.max_num_iterations = 500;
-    opt.function_tolerance = 1e-20;
-    opt.gradient_tolerance = 1e-20;
-    opt.parameter_tolerance = 1e-15;
+    opt.max_num_iterations = kLmIterations;
+    opt.function_tolerance = kLmFunctionTolerance;
+    opt.gradient_tolerance = kLmGradientTolerance;
+    opt.parameter_tolerance = kLmParameterTolerance;
     opt.logging_type = ceres::SILENT;
     ceres::Solver::Summary summary;
     ceres::Solve(opt, &problem, &summary);
     const Eigen::VectorXd f = design_system(P, sol.u, false).f;
     const double res = f.lpNorm<Eigen::Infinity>();
     sol.history.push_back({static_cast<int>(summary.iterations.size()), res, 0.0, 1.0, -1});
-    if (res <= 1e-9 * scale) {
+    if (res <= kLmAcceptance * scale) {
         finish_ok(P, sol);
         return sol;
     }

@@ -2,6 +2,7 @@
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <cmath>
+#include <numbers>
 
 namespace cagd::intrinsic {
 
@@ -47,7 +48,7 @@ DesignVerification verify_design(const CurvatureProfileProblem& P, const Intrins
     if (P.closed) {
         const int k = L.segments();
         const Eigen::VectorXd start = psi.jet_in_segment(0, 0.0, 1), end = psi.jet_in_segment(k - 1, psi.length(), 1);
-        v.closing_angle = end(0) - start(0) - 2.0 * std::acos(-1.0) * closing_turns(P);
+        v.closing_angle = end(0) - start(0) - 2.0 * std::numbers::pi * closing_turns(P);
         v.closing_curvature = end(1) - start(1);
     }
     return v;

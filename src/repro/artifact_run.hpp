@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "repro/csv.hpp"
+#include "core/csv.hpp"
 #include "repro/reference.hpp"
 
 namespace cagd::repro {

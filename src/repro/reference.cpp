@@ -4,7 +4,7 @@
 #include <set>
 
 #include "core/errors.hpp"
-#include "repro/csv.hpp"
+#include "core/csv.hpp"
 
 namespace cagd::repro {
 

@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "core/errors.hpp"
-#include "repro/csv.hpp"
+#include "core/csv.hpp"
 
 namespace cagd::repro {
 

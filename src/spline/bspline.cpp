@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "core/errors.hpp"
 
@@ -231,7 +232,7 @@ BSplineCurve elevate_degree(const BSplineCurve& c) {
     int row = 0;
     for (std::size_t s = 0; s + 1 < br.size(); ++s) {
         for (int j = 0; j < samples; ++j) {
-            const double x = std::cos(M_PI * (2.0 * j + 1.0) / (2.0 * samples));
+            const double x = std::cos(std::numbers::pi * (2.0 * j + 1.0) / (2.0 * samples));
             const double t = 0.5 * (br[s] + br[s + 1]) + 0.5 * (br[s + 1] - br[s]) * x;
             const auto it = std::upper_bound(V.begin() + q, V.begin() + n_new, t);
             const int span = static_cast<int>(it - V.begin()) - 1;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include "core/errors.hpp"
@@ -49,7 +50,7 @@ DerivativeFunction polynomial_function(std::vector<double> coefficients) {
 
 DerivativeFunction sinusoid(double amplitude, double frequency, double phase, double offset) {
     return [=](double x, int k) {
-        return amplitude * std::pow(frequency, k) * std::sin(frequency * x + phase + k * (M_PI / 2)) + (k == 0 ? offset : 0.0);
+        return amplitude * std::pow(frequency, k) * std::sin(frequency * x + phase + k * (std::numbers::pi / 2)) + (k == 0 ? offset : 0.0);
     };
 }
 

@@ -1,5 +1,5 @@
-// libFuzzer target: compare::interpolate for every method on arbitrary points.
-// Input bytes: method (1 byte, modulo the method count), flags (1 byte: bit 0 closed, bit 1 raw
+// libFuzzer target: methods::interpolate for every configuration of the registry on arbitrary points.
+// Input bytes: configuration (1 byte, modulo the configuration count), flags (1 byte: bit 0 closed, bit 1 raw
 // doubles), then points — raw mode: 16 bytes per point, two IEEE doubles as they come (NaN, Inf,
 // 1e300, denormals); grid mode: 2 bytes per point, signed bytes / 4 (repeated points, collinear
 // runs, hairpins, tiny and huge turns). At most 48 points.
@@ -10,7 +10,7 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "compare/interpolation_methods.hpp"
+#include "methods/method_registry.hpp"
 #include "core/errors.hpp"
 
 // Build the per-process caches (the pseudo-spline's 36-node table: seconds under ASan) before the
@@ -18,15 +18,15 @@
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
     cagd::PointList p(4, 2);
     p << 0, 0, 1, 0.5, 2, 0, 3, 1;
-    for (const cagd::compare::MethodInfo& m : cagd::compare::interpolation_methods()) cagd::compare::interpolate(m.name, p, false);
+    for (const cagd::methods::Configuration& c : cagd::methods::configurations()) cagd::methods::interpolate(c, p, false);
     return 0;
 }
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     using namespace cagd;
     if (size < 2) return 0;
-    const std::vector<compare::MethodInfo>& methods = compare::interpolation_methods();
-    const compare::MethodInfo& m = methods[data[0] % methods.size()];
+    const std::vector<methods::Configuration>& configurations = methods::configurations();
+    const methods::Configuration& m = configurations[data[0] % configurations.size()];
     const bool closed = data[1] & 1, raw = data[1] & 2;
     const std::size_t stride = raw ? 16 : 2, n = std::min<std::size_t>((size - 2) / stride, 48);
     PointList p(static_cast<Eigen::Index>(n), 2);
@@ -42,7 +42,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         }
     }
     try {
-        const compare::InterpolationResult r = compare::interpolate(m.name, p, closed);
+        const methods::InterpolationResult r = methods::interpolate(m, p, closed);
         if (r.outcome.ok()) {
             if (!r.interpolant) std::abort();
             for (double t : r.interpolant->node_parameters)

@@ -1,11 +1,12 @@
-#include "repro/csv.hpp"
+#include "core/csv.hpp"
 
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 
 #include "core/errors.hpp"
 
-namespace cagd::repro {
+namespace cagd {
 
 std::vector<std::string> split_csv_line(const std::string& line) {
     std::vector<std::string> out;
@@ -42,7 +43,7 @@ std::string format_number(double value, int significant) {
 
 double parse_number(const std::string& text) {
     const auto fail = [&]() -> double {
-        fail_input("cagd::repro::parse_number", "'" + text + "' is not a number or fraction a/b");
+        fail_input("cagd::parse_number", "'" + text + "' is not a number or fraction a/b");
     };
     if (text.empty()) return fail();
     const auto slash = text.find('/');
@@ -66,7 +67,7 @@ double parse_number(const std::string& text) {
 
 CsvWriter::CsvWriter(const std::string& path, const std::vector<std::string>& header)
     : path_(path), out_(path), columns_(header.size()) {
-    if (!out_) fail_input("cagd::repro::CsvWriter", "cannot open '" + path + "' for writing");
+    if (!out_) fail_input("cagd::CsvWriter", "cannot open '" + path + "' for writing");
     row_text(header);
 }
 
@@ -78,10 +79,48 @@ void CsvWriter::row(const std::vector<double>& values, int significant) {
 
 void CsvWriter::row_text(const std::vector<std::string>& fields) {
     if (fields.size() != columns_)
-        fail_input("cagd::repro::CsvWriter", path_ + ": row has " + std::to_string(fields.size()) +
+        fail_input("cagd::CsvWriter", path_ + ": row has " + std::to_string(fields.size()) +
                                                  " fields, header has " + std::to_string(columns_));
     for (std::size_t i = 0; i < fields.size(); ++i) out_ << (i ? "," : "") << csv_field(fields[i]);
     out_ << '\n';
 }
 
-}  // namespace cagd::repro
+int NumericTable::column(const std::string& name) const {
+    for (std::size_t i = 0; i < header.size(); ++i)
+        if (header[i] == name) return static_cast<int>(i);
+    return -1;
+}
+
+NumericTable read_numeric_table(const std::string& path) {
+    const char* who = "cagd::read_numeric_table";
+    std::ifstream in(path);
+    if (!in) fail_input(who, "cannot open '" + path + "'");
+    NumericTable t;
+    std::string line;
+    int line_no = 0;
+    while (std::getline(in, line)) {
+        ++line_no;
+        if (line_no == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);   // UTF-8 byte-order mark
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        if (line.empty() || line[0] == '#') continue;
+        const std::vector<std::string> fields = split_csv_line(line);
+        if (t.header.empty()) {
+            t.header = fields;
+            continue;
+        }
+        std::vector<double> row;
+        for (const std::string& f : fields) {
+            try {
+                row.push_back(parse_number(f));
+            } catch (const InvalidInput&) {
+                fail_input(who, path + ":" + std::to_string(line_no) + ": '" + f + "' is not a number");
+            }
+        }
+        if (row.size() != t.header.size())
+            fail_input(who, path + ":" + std::to_string(line_no) + ": " + std::to_string(row.size()) + " fields, header has " + std::to_string(t.header.size()));
+        t.rows.push_back(std::move(row));
+    }
+    return t;
+}
+
+}  // namespace cagd

@@ -1,11 +1,11 @@
 #pragma once
-// Minimal CSV for the harness: RFC-4180-style quoting (fields with commas or quotes are
+// Minimal CSV for the library, the harness and the command: RFC-4180-style quoting (fields with commas or quotes are
 // quoted), '#' comment lines kept apart, stable number formatting for byte-stable results.
 #include <fstream>
 #include <string>
 #include <vector>
 
-namespace cagd::repro {
+namespace cagd {
 
 std::vector<std::string> split_csv_line(const std::string& line);
 std::string csv_field(const std::string& text);   // quotes when needed
@@ -14,6 +14,16 @@ std::string format_number(double value, int significant = 10);
 // Parses a decimal or an exact fraction "a/b" (reference files print 1/6 as 1/6).
 // Throws InvalidInput naming the text.
 double parse_number(const std::string& text);
+
+// A CSV of numbers under a header line of names ('#' comments and blank lines skipped), e.g. a
+// curve written by `cagd interpolate`. InvalidInput names path:line and the field when a field is
+// not a number or a row's field count differs from the header's.
+struct NumericTable {
+    std::vector<std::string> header;
+    std::vector<std::vector<double>> rows;
+    int column(const std::string& name) const;   // −1 when absent
+};
+NumericTable read_numeric_table(const std::string& path);
 
 class CsvWriter {
 public:
@@ -30,4 +40,4 @@ private:
     std::size_t columns_;
 };
 
-}  // namespace cagd::repro
+}  // namespace cagd

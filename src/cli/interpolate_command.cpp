@@ -1,0 +1,61 @@
+// `cagd interpolate --method M [method options] [--closed] [--samples N] --in P.csv --out C.csv`:
+// any registered method (methods/method_registry.hpp) on the user's points; `--list-methods`
+// describes them. Writes the curve CSV (cli/curve_output.hpp); prints what the method reports
+// (the curvature-profile Newton history) on stdout; exit 1 with the outcome when no curve exists.
+#include <iostream>
+#include <memory>
+
+#include "cli/commands.hpp"
+#include "cli/curve_output.hpp"
+#include "cli/method_options.hpp"
+#include "core/errors.hpp"
+#include "core/point_csv.hpp"
+#include "methods/method_registry.hpp"
+
+namespace cagd::cli {
+
+namespace {
+
+struct InterpolateArgs {
+    std::string method = "s-spline", in, out;
+    MethodOptions options;
+    bool closed = false, list = false, markdown = false;
+    int samples = 16;
+};
+
+int run_interpolate(const InterpolateArgs& a) {
+    const char* who = "cagd interpolate";
+    if (a.list) {
+        std::cout << (a.markdown ? methods::registry_markdown() : methods::registry_listing());
+        return 0;
+    }
+    if (a.in.empty() || a.out.empty()) fail_input(who, "--in and --out are required (or --list-methods)");
+    const methods::Method& method = methods::find_method(a.method);
+    const methods::ParameterValues values = methods::parse_parameter_values(method.name, method.parameters, given_parameters(a.options));
+    const PointList points = read_points_csv(a.in);
+    const methods::InterpolationResult r = methods::interpolate(method, points, a.closed, values);
+    for (const std::string& line : r.log) std::cout << line << "\n";
+    if (!r.outcome.ok() || !r.interpolant) {
+        std::cerr << "cagd: no result: " << r.outcome.message << "\n";
+        return 1;
+    }
+    write_curve(*r.interpolant->curve, a.samples, a.out);
+    return 0;
+}
+
+}  // namespace
+
+Command add_interpolate_command(CLI::App& app) {
+    auto a = std::make_shared<InterpolateArgs>();
+    CLI::App* c = app.add_subcommand("interpolate", "Interpolate points with any registered method (--list-methods): a curve CSV of samples with derivatives");
+    add_method_options(c, a->method, a->options);
+    c->add_flag("--list-methods", a->list, "describe every method: paper, equations, claims, parameters with defaults and ranges");
+    c->add_flag("--markdown", a->markdown, "with --list-methods: the README's Markdown table");
+    c->add_flag("--closed", a->closed, "closed curve");
+    c->add_option("--samples", a->samples, "samples per curve piece in the output")->check(CLI::Range(1, 100000));
+    c->add_option("--in", a->in, "points CSV: x,y[,z] per line, optional header");
+    c->add_option("--out", a->out, "curve CSV: u, position, 1st and 2nd derivative");
+    return {c, [a] { return run_interpolate(*a); }};
+}
+
+}  // namespace cagd::cli

@@ -1,0 +1,71 @@
+// `cagd typical-surface --n N --alpha-u A --alpha-v B --angle-deg D [--length L] [--grid G] --out
+// GRID.csv [--net-out NET.csv]`: the nonstationary typical surface of typical_curves section 5 (net
+// with fixed edges, polygons turned about their diagonals) as a Bezier patch with K and H.
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <numbers>
+
+#include "cli/commands.hpp"
+#include "core/csv.hpp"
+#include "core/errors.hpp"
+#include "aesthetic/typical_surface.hpp"
+#include "analysis/surface_curvature.hpp"
+
+namespace cagd::cli {
+
+namespace {
+
+struct TypicalSurfaceArgs {
+    int n = 25, grid = 51;
+    double alpha_u = 0.0, alpha_v = 0.0, angle_deg = 0.0, length = 1.0;
+    std::string out, net_out;
+};
+
+int run_typical_surface(const TypicalSurfaceArgs& a) {
+    if (a.n < 3) fail_input("cagd typical-surface", "--n must be >= 3 (control points per direction), got " + std::to_string(a.n));
+    if (!std::isfinite(a.angle_deg)) fail_input("cagd typical-surface", "--angle-deg = " + full_precision(a.angle_deg) + " is not finite");
+    const surface::ControlNet net = aesthetic::log_aesthetic_typical_net(a.alpha_u, a.alpha_v, a.length, a.n - 1, a.angle_deg * std::numbers::pi / 180.0);
+    const surface::BezierPatch patch(net);
+    std::vector<double> ts;
+    for (int k = 0; k < a.grid; ++k) ts.push_back(static_cast<double>(k) / (a.grid - 1));
+    const surface::SurfaceGrid g = patch.evaluate_grid(ts, ts);
+    std::ofstream out(a.out);
+    if (!out) fail_input("cagd typical-surface", "cannot write '" + a.out + "'");
+    out << "u,v,x,y,z,gaussian,mean\n";
+    for (Eigen::Index i = 0; i < a.grid; ++i)
+        for (Eigen::Index j = 0; j < a.grid; ++j) {
+            const analysis::SurfaceJet2 jet = g.jet(i, j);
+            const analysis::SurfaceCurvatures c = analysis::surface_curvatures(jet);
+            out << format_number(ts[static_cast<std::size_t>(i)], 15) << ',' << format_number(ts[static_cast<std::size_t>(j)], 15) << ',' << format_number(jet.s(0), 15) << ','
+                << format_number(jet.s(1), 15) << ',' << format_number(jet.s(2), 15) << ',' << format_number(c.gaussian, 15) << ',' << format_number(c.mean, 15) << '\n';
+        }
+    if (!a.net_out.empty()) {
+        std::ofstream nout(a.net_out);
+        if (!nout) fail_input("cagd typical-surface", "cannot write '" + a.net_out + "'");
+        nout << "i,j,x,y,z\n";
+        for (Eigen::Index i = 0; i < net[0].rows(); ++i)
+            for (Eigen::Index j = 0; j < net[0].cols(); ++j)
+                nout << i << ',' << j << ',' << format_number(net[0](i, j), 15) << ',' << format_number(net[1](i, j), 15) << ',' << format_number(net[2](i, j), 15) << '\n';
+    }
+    return 0;
+}
+
+}  // namespace
+
+Command add_typical_surface_command(CLI::App& app) {
+    auto a = std::make_shared<TypicalSurfaceArgs>();
+    auto* c = app.add_subcommand("typical-surface", "Nonstationary typical surface: net with fixed edges, polygons turned about their diagonals; Bezier patch with K and H (typical_curves section 5)");
+    c->add_option("--n", a->n, "control points per direction (>= 3; the patch has bi-degree n - 1)")->required();
+    c->add_option("--alpha-u", a->alpha_u, "alpha of the v = 0 boundary P(i,0) (< 0 or > 1)")->required();
+    c->add_option("--alpha-v", a->alpha_v, "alpha of the u = 0 boundary P(0,j) (< 0 or > 1)")->required();
+    c->add_option("--angle-deg", a->angle_deg, "rotation of every control polygon about its diagonal, degrees")->required();
+    c->add_option("--length", a->length, "length of each boundary polygon (> 0)");
+    c->add_option("--grid", a->grid, "parameter grid points per direction")->check(CLI::Range(2, 100000));
+    c->add_option("--out", a->out, "CSV: u, v, x, y, z, gaussian, mean")->required();
+    c->add_option("--net-out", a->net_out, "optional CSV of the control net: i, j, x, y, z");
+    return {c, [a] { return run_typical_surface(*a); }};
+}
+
+}  // namespace cagd::cli

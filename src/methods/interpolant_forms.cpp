@@ -1,0 +1,97 @@
+#include "methods/interpolant_forms.hpp"
+
+#include <array>
+#include <cmath>
+// Boost 1.74's pchip.hpp and makima.hpp call isnan unqualified on a double, which only compiles if
+// std::isnan is visible where the templates are defined.
+using std::isnan;
+#include <boost/math/interpolators/catmull_rom.hpp>
+#include <boost/math/interpolators/makima.hpp>
+#include <boost/math/interpolators/pchip.hpp>
+
+#include "spline/hermite_spline.hpp"
+
+namespace cagd::methods {
+
+namespace {
+
+std::vector<double> unit_nodes(Eigen::Index nodes) {
+    std::vector<double> u(static_cast<std::size_t>(nodes));
+    for (std::size_t i = 0; i < u.size(); ++i) u[i] = static_cast<double>(i);
+    return u;
+}
+
+template <class Interpolator>
+Interpolant componentwise_chord_interpolant(const PointList& p) {
+    const std::vector<double> h = chord_lengths(p, false);
+    std::vector<double> tau{0.0};
+    for (double hk : h) tau.push_back(tau.back() + hk);
+    Eigen::MatrixXd slopes(p.rows(), p.cols());
+    for (Eigen::Index c = 0; c < p.cols(); ++c) {
+        std::vector<double> x = tau, y(p.col(c).data(), p.col(c).data() + p.rows());
+        const Interpolator f(std::move(x), std::move(y));
+        for (Eigen::Index k = 0; k < p.rows(); ++k) slopes(k, c) = f.prime(tau[static_cast<std::size_t>(k)]);
+    }
+    return hermite_from_slopes(p, slopes, h, false);
+}
+
+template <std::size_t D>
+Interpolant catmull_rom_interpolant(const PointList& p, bool closed) {
+    using Point = std::array<double, D>;
+    std::vector<Point> pts(static_cast<std::size_t>(p.rows()));
+    for (Eigen::Index k = 0; k < p.rows(); ++k)
+        for (std::size_t c = 0; c < D; ++c) pts[static_cast<std::size_t>(k)][c] = p(k, static_cast<Eigen::Index>(c));
+    const boost::math::catmull_rom<Point> cr(std::move(pts), closed, 0.5);
+    const Eigen::Index n = p.rows(), spans = closed ? n : n - 1;
+    std::vector<double> h;
+    for (Eigen::Index k = 0; k < spans; ++k)
+        h.push_back((k + 1 == n ? cr.max_parameter() : cr.parameter_at_point(static_cast<std::size_t>(k + 1))) -
+                    cr.parameter_at_point(static_cast<std::size_t>(k)));
+    Eigen::MatrixXd slopes(n, p.cols());
+    for (Eigen::Index k = 0; k < n; ++k) {
+        // prime at the last open node is the last span's end derivative (Boost evaluates the span
+        // on the left at s = max_parameter); every other node is a span start.
+        const Point d = cr.prime(cr.parameter_at_point(static_cast<std::size_t>(k)));
+        for (std::size_t c = 0; c < D; ++c) slopes(k, static_cast<Eigen::Index>(c)) = d[c];
+    }
+    return hermite_from_slopes(p, slopes, h, closed);
+}
+
+}  // namespace
+
+std::vector<double> chord_lengths(const PointList& p, bool closed) {
+    std::vector<double> h;
+    const Eigen::Index n = p.rows(), spans = closed ? n : n - 1;
+    for (Eigen::Index k = 0; k < spans; ++k) h.push_back((p.row((k + 1) % n) - p.row(k)).norm());
+    return h;
+}
+
+Interpolant unit_span_interpolant(std::shared_ptr<const Curve> curve, Eigen::Index nodes, std::vector<double> dtau_du) {
+    return {std::move(curve), unit_nodes(nodes), std::move(dtau_du)};
+}
+
+Interpolant hermite_from_slopes(const PointList& p, const Eigen::MatrixXd& slopes, const std::vector<double>& h, bool closed) {
+    const Eigen::Index n = p.rows(), spans = static_cast<Eigen::Index>(h.size());
+    Eigen::MatrixXd nodes(spans + 1, p.cols()), d0(spans, p.cols()), d1(spans, p.cols());
+    for (Eigen::Index k = 0; k <= spans; ++k) nodes.row(k) = p.row(k % n);
+    for (Eigen::Index k = 0; k < spans; ++k) {
+        const double hk = h[static_cast<std::size_t>(k)];
+        d0.row(k) = hk * slopes.row(k);
+        d1.row(k) = hk * slopes.row(closed ? (k + 1) % n : k + 1);
+    }
+    return unit_span_interpolant(std::make_shared<spline::PiecewiseHermiteCurve>(nodes, d0, d1), spans + 1, h);
+}
+
+Interpolant boost_pchip_interpolant(const PointList& p) {
+    return componentwise_chord_interpolant<boost::math::interpolators::pchip<std::vector<double>>>(p);
+}
+
+Interpolant boost_makima_interpolant(const PointList& p) {
+    return componentwise_chord_interpolant<boost::math::interpolators::makima<std::vector<double>>>(p);
+}
+
+Interpolant boost_catmull_rom_interpolant(const PointList& p, bool closed) {
+    return p.cols() == 2 ? catmull_rom_interpolant<2>(p, closed) : catmull_rom_interpolant<3>(p, closed);
+}
+
+}  // namespace cagd::methods

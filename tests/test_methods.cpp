@@ -1,0 +1,177 @@
+// The method registry (methods/method_registry.hpp): typed parameters, names, configurations, and
+// that every registered method is reachable from each place that lists methods. The command line
+// (interpolate, analyze --in, compare) is walked over every method by tests/cli_test.sh.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "analysis/curve_measures.hpp"
+#include "locality/locality_spline.hpp"
+#include "methods/method_registry.hpp"
+
+using namespace cagd;
+using namespace cagd::methods;
+
+namespace {
+
+PointList wave(int n) {
+    PointList p(n, 2);
+    for (int i = 0; i < n; ++i) p.row(i) << i, (i % 2 ? 1.0 : 0.0) + 0.1 * i;
+    return p;
+}
+
+std::string message_of(const std::function<void()>& f) {
+    try {
+        f();
+    } catch (const InvalidInput& e) {
+        return e.what();
+    }
+    return "(no InvalidInput)";
+}
+
+}  // namespace
+
+TEST(Methods, NamesAreUniqueAndFound) {
+    std::set<std::string> seen;
+    for (const std::string& n : method_names()) {
+        EXPECT_TRUE(seen.insert(n).second) << "name given twice: " << n;
+        EXPECT_EQ(&find_method(n), &find_method(find_method(n).name)) << n;
+    }
+    for (const Configuration& c : configurations()) EXPECT_TRUE(seen.insert(c.name).second || find_method(c.name).presets.empty()) << c.name;
+    const std::string m = message_of([] { find_method("cubic"); });
+    EXPECT_NE(m.find("unknown method 'cubic'"), std::string::npos) << m;
+    EXPECT_NE(m.find("curvature-profile"), std::string::npos) << "the message lists the known names: " << m;
+}
+
+TEST(Methods, EveryMethodIsConfiguredForTheComparisonPropertyTestsAndFuzzers) {
+    // compare, the property tests (test_compare EveryMethod) and fuzz_interpolate iterate
+    // configurations(): a method without presets appears there under its own name.
+    for (const Method& m : registry()) {
+        int found = 0;
+        for (const Configuration& c : configurations()) found += c.method == &m;
+        EXPECT_GE(found, 1) << m.name << " is not compared";
+        if (m.presets.empty()) {
+            EXPECT_EQ(find_configuration(m.name).method, &m);
+        }
+        EXPECT_TRUE(m.claims && m.build) << m.name;
+        EXPECT_FALSE(m.paper.empty() || m.source.empty() || m.summary.empty()) << m.name;
+    }
+    // The comparison's rows keep the names and order of the published results.
+    std::vector<std::string> names;
+    for (const Configuration& c : configurations()) names.push_back(c.name);
+    const std::vector<std::string> expected = {"pseudo-spline-none", "pseudo-spline-exact", "pseudo-spline-approx", "cubic-a", "cubic-b", "hermite-a", "hermite-b",
+                                               "s-spline-m1", "s-spline-m2", "s-spline-m4", "b2-spline-m1", "b2-spline-m2", "b2-spline-m4", "hosaka-c2-chord",
+                                               "hosaka-c2-unit", "curvature-profile", "boost-pchip", "boost-makima", "boost-catmull-rom"};
+    EXPECT_EQ(names, expected);
+}
+
+TEST(Methods, EveryMethodInterpolatesWithItsDefaults) {
+    const PointList p = wave(6);
+    for (const Method& m : registry()) {
+        const InterpolationResult r = interpolate(m.name, p, false);
+        ASSERT_TRUE(r.outcome.ok() && r.interpolant) << m.name << ": " << r.outcome.message;
+        const Interpolant& a = *r.interpolant;
+        ASSERT_EQ(a.node_parameters.size(), 6u) << m.name;
+        for (Eigen::Index i = 0; i < p.rows(); ++i)
+            EXPECT_LE((a.curve->point(a.node_parameters[static_cast<std::size_t>(i)]) - p.row(i).transpose()).norm(), 1e-9) << m.name << " point " << i;
+    }
+}
+
+TEST(Methods, ReadmeTableIsTheRegistry) {
+    std::ifstream in(std::string(CAGD_SOURCE_DIR) + "/README.md");
+    std::stringstream ss;
+    ss << in.rdbuf();
+    const std::string readme = ss.str(), table = registry_markdown();
+    EXPECT_NE(readme.find("<!-- methods:begin -->\n" + table + "<!-- methods:end -->"), std::string::npos)
+        << "README.md's method table differs from the registry: run scripts/update-readme-methods.sh (make reproduce does)";
+    for (const Method& m : registry()) EXPECT_NE(table.find("`" + m.name + "`"), std::string::npos) << m.name;
+}
+
+TEST(Methods, ParametersAreCheckedAgainstTheirDeclarations) {
+    const Method& s = find_method("s-spline");
+    // Defaults are filled in; given() tells them apart from given values.
+    const ParameterValues d = parse_parameter_values(s.name, s.parameters, {});
+    EXPECT_EQ(d.integer("m"), 2);
+    EXPECT_FALSE(d.given("m"));
+    EXPECT_EQ(d.text("end"), "natural");
+    EXPECT_FALSE(d.has("m-vector"));
+    const ParameterValues g = parse_parameter_values(s.name, s.parameters, {{"m", "10"}, {"start-tangent", "1,-2.5"}});
+    EXPECT_EQ(g.integer("m"), 10) << "m = 10 (the old name parser read one digit)";
+    EXPECT_TRUE(g.given("m"));
+    EXPECT_EQ(g.vector("start-tangent"), Eigen::Vector2d(1, -2.5));
+    // Each bad value is named with its option and what is allowed.
+    const auto bad = [&](const ParameterText& t, const std::string& expected) {
+        const std::string m = message_of([&] { parse_parameter_values(s.name, s.parameters, t); });
+        EXPECT_NE(m.find(expected), std::string::npos) << m;
+    };
+    bad({{"m", "-1"}}, "--m '-1': out of range; allowed: integer in [0, 1000]");
+    bad({{"m", "2.5"}}, "--m '2.5': not a whole number");
+    bad({{"m", "two"}}, "--m 'two': not a number");
+    bad({{"m", "inf"}}, "--m 'inf': not finite");
+    bad({{"end", "clamped"}}, "--end 'clamped': not a choice; allowed: one of natural | tangent | bessel");
+    bad({{"start-tangent", "1,x"}}, "'x' is not a number");
+    bad({{"scale", "unit"}}, "--scale is not a parameter of s-spline");
+    const Method& boost = find_method("boost-pchip");
+    const std::string none = message_of([&] { parse_parameter_values(boost.name, boost.parameters, {{"m", "1"}}); });
+    EXPECT_NE(none.find("it has none"), std::string::npos) << none;
+}
+
+TEST(Methods, BuildersCheckCombinationsOfParameters) {
+    const PointList p = wave(5);
+    std::string m = message_of([&] { interpolate("s-spline", p, false, {{"end", "tangent"}}); });
+    EXPECT_NE(m.find("--end tangent needs --start-tangent and --end-tangent"), std::string::npos) << m;
+    m = message_of([&] { interpolate("hosaka", p, false, {{"start-tangent", "1,0"}, {"end-tangent", "1,0"}}); });
+    EXPECT_NE(m.find("--start-tangent applies with --end tangent only"), std::string::npos) << m;
+    m = message_of([&] { interpolate("s-spline", p, false, {{"m", "1"}, {"m-vector", "1,1,1,1"}}); });
+    EXPECT_NE(m.find("give --m or --m-vector, not both"), std::string::npos) << m;
+    m = message_of([&] { interpolate("curvature-profile", p, false, {{"degree", "3"}}); });
+    EXPECT_NE(m.find("--degree applies to a --knots list"), std::string::npos) << m;
+    m = message_of([&] { interpolate("hosaka", p, false, {{"m", "51"}}); });
+    EXPECT_NE(m.find("--m '51': out of range; allowed: integer in [1, 50]"), std::string::npos) << m;
+    // A preset's values can be overridden by name.
+    const InterpolationResult r1 = interpolate("s-spline-m1", p, false), r4 = interpolate("s-spline-m1", p, false, {{"m", "4"}});
+    const InterpolationResult s4 = interpolate("s-spline", p, false, {{"m", "4"}});
+    EXPECT_GT(analysis::max_distance_same_parameter(*r1.interpolant->curve, *r4.interpolant->curve), 1e-6);
+    EXPECT_EQ(analysis::max_distance_same_parameter(*s4.interpolant->curve, *r4.interpolant->curve), 0.0);
+}
+
+TEST(Methods, ClaimsFollowTheParameters) {
+    const Method& ps = find_method("pseudo-spline");
+    EXPECT_EQ(ps.claims(parse_parameter_values(ps.name, ps.parameters, {{"optimize", "exact"}})).invariance, Invariance::none);
+    EXPECT_EQ(ps.claims(parse_parameter_values(ps.name, ps.parameters, {{"optimize", "approx"}})).invariance, Invariance::similarity);
+    const Method& h = find_method("hosaka");
+    EXPECT_EQ(h.claims(parse_parameter_values(h.name, h.parameters, {{"scale", "unit"}})).invariance, Invariance::affine);
+    EXPECT_EQ(h.claims(parse_parameter_values(h.name, h.parameters, {})).parameter, "chord length");
+    // Open-only methods refuse closed curves, naming the method.
+    const std::string m = message_of([] { interpolate("boost-pchip", wave(6), true); });
+    EXPECT_NE(m.find("(boost-pchip): draws open curves only"), std::string::npos) << m;
+}
+
+// `cubic-bspline` (sb2_locality eq 10) is an alias of cubic-a (pseudo_energy sec 4.2): the same
+// natural uniform C2 cubic, here in B-spline and there in Hermite form.
+TEST(Methods, CubicBsplineAliasIsCubicA) {
+    for (bool closed : {false, true}) {
+        const PointList p = wave(7);
+        const InterpolationResult a = interpolate("cubic-bspline", p, closed);
+        const BSplineCurve b = locality::cubic_bspline_interpolant(p, closed);
+        EXPECT_LE(analysis::max_distance_same_parameter(*a.interpolant->curve, b), 1e-13) << (closed ? "closed" : "open");
+    }
+}
+
+TEST(Methods, PseudoSplineReportsTableQuantities) {
+    const InterpolationResult r = interpolate("pseudo-spline", wave(5), false);
+    ASSERT_EQ(r.quantities.size(), 3u);
+    EXPECT_EQ(r.quantities[0].first, "length_from_tables");
+    // eq (16)-(17) from the 36-node table vs the integrated curve: the table's interpolation error.
+    EXPECT_NEAR(r.quantities[0].second, analysis::arc_length(*r.interpolant->curve, 16), 1e-2 * r.quantities[0].second);
+}
+
+TEST(Methods, CurvatureProfileLogsNewton) {
+    const InterpolationResult r = interpolate("curvature-profile", wave(5), false);
+    ASSERT_TRUE(r.outcome.ok()) << r.outcome.message;
+    ASSERT_GE(r.log.size(), 3u);
+    EXPECT_EQ(r.log.front().rfind("newton,", 0), 0u) << r.log.front();
+    EXPECT_EQ(r.log.back().rfind("knot_difference_list,\"", 0), 0u) << r.log.back();
+}
