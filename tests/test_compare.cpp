@@ -357,14 +357,9 @@ TEST(Compare, TableOnTable1DataHasEveryMethod) {
     }
     // The pseudo-spline (eq 12–13: α_i depends on P_{i−1}, P_i, P_{i+1}) keeps locality; the global
     // C2 splines move every span.
-    for (const MethodComparison& m : c) {
-        if (m.method == "pseudo-spline-exact") {
-            EXPECT_LE(*m.locality_footprint, 4);
-        }
-        if (m.method == "cubic-a" || m.method == "curvature-profile") {
-            EXPECT_EQ(*m.locality_footprint, m.spans);
-        }
-    }
+    EXPECT_LE(*find_comparison(c, "pseudo-spline-exact").locality_footprint, 4);
+    for (const char* global : {"cubic-a", "curvature-profile"}) EXPECT_EQ(*find_comparison(c, global).locality_footprint, find_comparison(c, global).spans) << global;
+    EXPECT_THROW(find_comparison(c, "cubic-z"), InvalidInput);
     const std::string md = comparison_markdown(c, false, false);
     EXPECT_NE(md.find("| pseudo-spline-exact | ok | 12 |"), std::string::npos) << md;
     // Open-only methods are listed, not dropped, for closed curves.

@@ -16,15 +16,11 @@ int main(int argc, char** argv) {
         const auto results = repro::record_comparison(run, prefix, points, false);
         // Hosaka's C2 spline with the scale factors of eq (19) is the chord-length C2 cubic spline
         // (cubic spline B): the same curve from two papers' constructions.
-        const compare::MethodComparison* b = nullptr;
-        const compare::MethodComparison* h = nullptr;
-        for (const auto& c : results) {
-            if (c.method == "cubic-b") b = &c;
-            if (c.method == "hosaka-c2-chord") h = &c;
-        }
+        const compare::MethodComparison& b = compare::find_comparison(results, "cubic-b");
+        const compare::MethodComparison& h = compare::find_comparison(results, "hosaka-c2-chord");
         const double diagonal = bounding_box_diagonal(points);
         run.validate(prefix + "hosaka_chord_is_cubic_b", "hosaka-c2-chord vs cubic-b: max distance at the same parameter",
-                     analysis::max_distance_same_parameter(*b->interpolant->curve, *h->interpolant->curve), 0.0, 1e-12 * diagonal,
+                     analysis::max_distance_same_parameter(*b.interpolant->curve, *h.interpolant->curve), 0.0, 1e-12 * diagonal,
                      "the same curve (1e-12 x data diagonal: rounding)");
         run.note(std::string(table) + ": [measures](pseudo_energy/" + prefix + "measures.csv) of every method; figures below.");
     }

@@ -84,12 +84,20 @@ double arc_length(const Curve& c, double a, double b, int pieces) {
 
 double arc_length(const Curve& c, int pieces) { return arc_length(c, c.t_min(), c.t_max(), pieces); }
 
+// Romberg per piece: 24 levels (1.7·10^7 evaluations) before reporting no convergence; the
+// absolute tolerance at the underflow edge only lets a zero-length piece converge.
+constexpr int kRombergLevels = 24;
+constexpr double kRombergAbsTol = 1e-300;
+// Adaptive Gauss–Kronrod (31 points) bisects to depth 15; as reference_arc_length's fallback, to rel 1e-10.
+constexpr int kKronrodDepth = 15;
+constexpr double kKronrodRelTol = 1e-10;
+
 double adaptive_arc_length(const Curve& c, double rel_tol) {
     const std::vector<double> br = c.breakpoints();
     double total = 0.0;
     for (std::size_t k = 0; k + 1 < br.size(); ++k)
         total += boost::math::quadrature::gauss_kronrod<double, 31>::integrate([&](double t) { return speed(c, t); }, br[k], br[k + 1],
-                                                                               15, rel_tol);
+                                                                               kKronrodDepth, rel_tol);
     return total;
 }
 
@@ -98,7 +106,7 @@ numeric::RombergResult romberg_arc_length(const Curve& c, double rel_tol) {
     const std::vector<double> br = c.breakpoints();
     for (std::size_t k = 0; k + 1 < br.size(); ++k) {
         const auto r = numeric::romberg([&](double t) { return speed(c, t); }, br[k], br[k + 1],
-                                        rel_tol, 1e-300, 24);
+                                        rel_tol, kRombergAbsTol, kRombergLevels);
         total.value += r.value;
         total.error_estimate += r.error_estimate;
         total.evaluations += r.evaluations;
@@ -115,8 +123,8 @@ ArcLength reference_arc_length(const Curve& c) {
     const std::vector<double> br = c.breakpoints();
     for (std::size_t k = 0; k + 1 < br.size(); ++k) {
         double error = 0.0;
-        a.value += boost::math::quadrature::gauss_kronrod<double, 31>::integrate([&](double t) { return speed(c, t); }, br[k], br[k + 1], 15, 1e-10,
-                                                                                 &error);
+        a.value += boost::math::quadrature::gauss_kronrod<double, 31>::integrate([&](double t) { return speed(c, t); }, br[k], br[k + 1], kKronrodDepth,
+                                                                                 kKronrodRelTol, &error);
         a.error_estimate += error;
     }
     return a;

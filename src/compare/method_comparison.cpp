@@ -83,6 +83,13 @@ analysis::FairnessSampling comparison_sampling(int pieces) {
     return {std::clamp(budget, 8, 128), std::clamp(budget / 128, 2, 16)};
 }
 
+const MethodComparison& find_comparison(const std::vector<MethodComparison>& c, const std::string& configuration) {
+    const std::string name = methods::find_configuration(configuration).name;
+    for (const MethodComparison& m : c)
+        if (m.method == name) return m;
+    fail_input("cagd::compare::find_comparison", "the comparison has no row '" + name + "'");
+}
+
 std::vector<MethodComparison> compare_methods(const PointList& points, const ComparisonOptions& options) {
     const char* who = "cagd::compare::compare_methods";
     if (points.cols() != 2) fail_input(who, "compares planar curves: needs 2 columns (x, y), got " + std::to_string(points.cols()));

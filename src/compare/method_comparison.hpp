@@ -51,6 +51,9 @@ struct MethodComparison {
 };
 
 analysis::FairnessSampling comparison_sampling(int pieces);
+// The row of `configuration` (a name methods::find_configuration knows); InvalidInput if the name is
+// unknown or the comparison has no such row.
+const MethodComparison& find_comparison(const std::vector<MethodComparison>& c, const std::string& configuration);
 std::vector<MethodComparison> compare_methods(const PointList& points, const ComparisonOptions& options);
 
 // The table: one row per method, numbers to `digits` significant digits, empty where undefined.

@@ -156,6 +156,8 @@ constexpr double kCgFunctionTolerance = 1e-14, kCgGradientTolerance = 1e-11, kCg
 // |∇J| ~ sqrt(quadrature noise · J · λ), so it counts as converged at kLbfgsGradient · (1 + J).
 constexpr double kLbfgsBound = 1e4, kLbfgsFtolRel = 1e-15, kLbfgsXtolRel = 1e-12, kLbfgsGradient = 1e-6;
 constexpr int kLbfgsEvaluations = 300;
+// Its objective: the Romberg energy to rel 1e-13, as the reference path's (DESIGN.md).
+constexpr double kLbfgsRombergRelTol = 1e-13;
 // Brent's minimiser on J(θ, θ1) over θ1 keeps 40 bits: more than the 26 a smooth minimum's
 // location supports in double precision, as Boost allows up to the full 52.
 constexpr int kBrentBits = 40;
@@ -363,7 +365,7 @@ PseudoEnergyMinimum minimize_pseudo_energy_nlopt(double theta0, double theta1, c
                 const Data& dd = *static_cast<const Data*>(p);
                 ++*dd.evaluations;
                 const UnitChordHermite seg(dd.theta0, dd.theta1, std::exp(rho[0]), std::exp(rho[1]));
-                const SegmentEnergy e = segment_energy_reference(seg, 1e-13, !grad.empty());
+                const SegmentEnergy e = segment_energy_reference(seg, kLbfgsRombergRelTol, !grad.empty());
                 if (!grad.empty()) {
                     grad[0] = e.dj_dlog_r0;
                     grad[1] = e.dj_dlog_r1;

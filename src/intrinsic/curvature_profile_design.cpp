@@ -54,6 +54,15 @@ struct SegmentJet {
     Eigen::MatrixXd db_dc, db_dw;
 };
 
+// Newton's safeguards. The Moore–Penrose step treats singular values below kRankThreshold · σ_max
+// as zero: the Jacobian's entries are O(1) in the data scale and exact, so 1e-10 separates true
+// rank deficiency (σ ~ ε) from conditioning. A step shorter than kStalledStep · (1 + ‖u‖∞) is the
+// rounding of u: Newton has settled. A step may shrink a span length to kKeptLengthFraction of
+// itself at most (halving λ until it does), so lengths stay positive.
+constexpr double kRankThreshold = 1e-10;
+constexpr double kStalledStep = 1e-13;
+constexpr double kKeptLengthFraction = 0.2;
+
 // Forward derivatives of a segment's Bézier ordinates with respect to its 2p knots and p + 1
 // de Boor ordinates: 3p + 1 slots, fixed at compile time for the largest degree ψ may have.
 constexpr int kMaxJetDegree = 3;
@@ -455,7 +464,7 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
         Eigen::VectorXd delta;
         if (options.step == NewtonStep::pseudo_inverse) {
             Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(Eigen::MatrixXd(sys.jacobian));
-            cod.setThreshold(1e-10);
+            cod.setThreshold(kRankThreshold);
             sol.rank = static_cast<int>(cod.rank());
             delta = cod.solve(sys.f);
         } else {
@@ -473,10 +482,10 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
         }
         double lambda = 1.0;
         for (int i = 0; i < l; ++i)
-            while (sol.u(i) - lambda * delta(i) < 0.2 * sol.u(i)) lambda *= 0.5;
+            while (sol.u(i) - lambda * delta(i) < kKeptLengthFraction * sol.u(i)) lambda *= 0.5;
         const double step = lambda * delta.lpNorm<Eigen::Infinity>();
         sol.history.push_back({it, res, step, lambda, sol.rank});
-        if (step <= 1e-13 * (1.0 + sol.u.lpNorm<Eigen::Infinity>())) {
+        if (step <= kStalledStep * (1.0 + sol.u.lpNorm<Eigen::Infinity>())) {
             sol.outcome = {Status::no_solution, std::string(method) + " settled on a least-squares point with ‖f‖∞ = " + fmt(res) + " > " + fmt(tol) +
                                                     ": the conditions are inconsistent for these points (worst equation " + worst_equation(P, sys.f) + "; " +
                                                     std::to_string(sol.equations) + " equations, " + std::to_string(sol.unknowns) + " unknowns, rank " + std::to_string(sol.rank) + ")"};

@@ -119,10 +119,14 @@ ElasticSpaceCurve elastic_space_curve(const std::vector<double>& x, const Eigen:
                                  nullptr, block[i * static_cast<std::size_t>(subdivisions)].data());
     ceres::Solver::Options options;
     options.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
-    options.function_tolerance = 1e-15;
-    options.gradient_tolerance = 1e-14;
-    options.parameter_tolerance = 1e-14;
-    options.max_num_iterations = 500;
+    // The energy is quadratic but for the spring directions: Ceres converges in tens of iterations;
+    // the tolerances sit at rounding so that the result is the minimiser to double precision.
+    constexpr double kFunctionTolerance = 1e-15, kGradientTolerance = 1e-14, kParameterTolerance = 1e-14;
+    constexpr int kIterations = 500;
+    options.function_tolerance = kFunctionTolerance;
+    options.gradient_tolerance = kGradientTolerance;
+    options.parameter_tolerance = kParameterTolerance;
+    options.max_num_iterations = kIterations;
     options.num_threads = 1;
     options.logging_type = ceres::SILENT;
     ceres::Solver::Summary summary;
