@@ -48,8 +48,7 @@ void BM_pseudo_spline(benchmark::State& s) {
 void BM_hermite_a(benchmark::State& s) {
     Fixture& f = fixture();
     for (auto _ : s)
-        benchmark::DoNotOptimize(spline::hermite_interpolant(
-            f.points, spline::hermite_tangent_directions(f.points, spline::TangentRule::chord_of_neighbours, false), false));
+        benchmark::DoNotOptimize(spline::hermite_interpolant(f.points, spline::hermite_tangent_directions(f.points, spline::TangentRule::chord_of_neighbours, false), false));
     s.SetItemsProcessed(s.iterations() * f.points.rows());
 }
 
@@ -58,7 +57,7 @@ void BM_catmull_rom_boost(benchmark::State& s) {
     std::vector<std::array<double, 2>> pts(static_cast<std::size_t>(f.points.rows()));
     for (Eigen::Index i = 0; i < f.points.rows(); ++i) pts[static_cast<std::size_t>(i)] = {f.points(i, 0), f.points(i, 1)};
     for (auto _ : s) {
-        auto copy = pts;   // catmull_rom takes the points by value
+        auto copy = pts;  // catmull_rom takes the points by value
         benchmark::DoNotOptimize(boost::math::catmull_rom<std::array<double, 2>>(std::move(copy)));
     }
     s.SetItemsProcessed(s.iterations() * f.points.rows());

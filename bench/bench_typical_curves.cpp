@@ -27,8 +27,7 @@ std::vector<Eigen::MatrixXd> reference_jets(const Eigen::MatrixXd& cp) {
     std::vector<std::vector<std::array<Big, 2>>> diffs(4);
     for (int i = 0; i <= n; ++i) diffs[0].push_back({Big(cp(i, 0)), Big(cp(i, 1))});
     for (int k = 1; k <= 3; ++k)
-        for (std::size_t i = 0; i + 1 < diffs[k - 1].size(); ++i)
-            diffs[k].push_back({diffs[k - 1][i + 1][0] - diffs[k - 1][i][0], diffs[k - 1][i + 1][1] - diffs[k - 1][i][1]});
+        for (std::size_t i = 0; i + 1 < diffs[k - 1].size(); ++i) diffs[k].push_back({diffs[k - 1][i + 1][0] - diffs[k - 1][i][0], diffs[k - 1][i + 1][1] - diffs[k - 1][i][1]});
     std::vector<Eigen::MatrixXd> out;
     for (int q = 0; q < kParams; ++q) {
         const Big t = Big(q) / (kParams - 1);
@@ -58,8 +57,7 @@ void BM_degree99_jets(benchmark::State& s) {
     double err = 0;
     for (int q = 0; q < kParams; ++q) {
         const Eigen::MatrixXd j = c.jet(static_cast<double>(q) / (kParams - 1), 3);
-        for (int k = 0; k <= 3; ++k)
-            err = std::max(err, (j.row(k) - ref[static_cast<std::size_t>(q)].row(k)).norm() / (1e-300 + ref[static_cast<std::size_t>(q)].row(k).norm()));
+        for (int k = 0; k <= 3; ++k) err = std::max(err, (j.row(k) - ref[static_cast<std::size_t>(q)].row(k)).norm() / (1e-300 + ref[static_cast<std::size_t>(q)].row(k).norm()));
     }
     s.counters["max_error"] = err;
     s.SetItemsProcessed(s.iterations() * kParams);

@@ -207,16 +207,16 @@ TEST(LogAestheticCurve, TangentAngleClosedFormsAndLcgSlope) {
     LogAestheticParameters bad;
     bad.alpha = 0.5;
     bad.c1 = 0.0;
-    EXPECT_THROW(LogAestheticCurve{bad}, InvalidInput);   // turning diverges at s = 0
+    EXPECT_THROW(LogAestheticCurve{bad}, InvalidInput);  // turning diverges at s = 0
     bad.alpha = 0.0;
     bad.c0 = -1.0;
-    EXPECT_THROW(LogAestheticCurve{bad}, InvalidInput);   // ρ = c0 e^{c1 s} needs c0 > 0
+    EXPECT_THROW(LogAestheticCurve{bad}, InvalidInput);  // ρ = c0 e^{c1 s} needs c0 > 0
     bad.alpha = -0.5;
     bad.c0 = -1.0;
-    bad.c1 = 0.5;                                          // c0 s + c1 < 0 before s = L = 1
+    bad.c1 = 0.5;  // c0 s + c1 < 0 before s = L = 1
     EXPECT_THROW(LogAestheticCurve{bad}, InvalidInput);
-    EXPECT_THROW(n.jet(1.6, 2), InvalidInput);             // outside [0, L]
-    EXPECT_THROW(n.jet(0.5, 4), InvalidInput);             // jets up to order 3
+    EXPECT_THROW(n.jet(1.6, 2), InvalidInput);  // outside [0, L]
+    EXPECT_THROW(n.jet(0.5, 4), InvalidInput);  // jets up to order 3
     EXPECT_THROW(analysis::fit_line({1.0, 1.0}, {0.0, 2.0}), InvalidInput);
     EXPECT_THROW(analysis::lcg_slope(n, 0.5, 0.4, 10), InvalidInput);
 }
@@ -226,8 +226,10 @@ TEST(ClassA, TypicalMatrixConditionIsEq2ForScaleAboveOneAndReversedBelow) {
         for (double th = 0.01; th < 1.5; th += 0.07) {
             const Eigen::Matrix2d m = typical_matrix(th, s);
             const bool cond4 = typical_matrix_condition(th, s);
-            if (s > 1) EXPECT_EQ(cond4, class_a_test(m).eq2) << s << " " << th;
-            else EXPECT_EQ(cond4, class_a_test(m.inverse()).eq2) << s << " " << th;
+            if (s > 1)
+                EXPECT_EQ(cond4, class_a_test(m).eq2) << s << " " << th;
+            else
+                EXPECT_EQ(cond4, class_a_test(m.inverse()).eq2) << s << " " << th;
         }
     EXPECT_THROW(class_a_test(Eigen::MatrixXd::Identity(4, 4)), InvalidInput);
     EXPECT_THROW(class_a_control_points(Eigen::Vector2d(0, 0), Eigen::Vector2d(1, 0), Eigen::Matrix2d::Identity(), 0), InvalidInput);

@@ -37,7 +37,7 @@ TEST(Analysis, AreaOfClosedPolylineSquareIsOne) {
 
 TEST(Analysis, SingularPointIsAnError) {
     Eigen::MatrixXd b(3, 2);
-    b << 0, 0, 0, 0, 1, 1;   // r'(0) = 0
+    b << 0, 0, 0, 0, 1, 1;  // r'(0) = 0
     EXPECT_THROW(analysis::curvature(BezierCurve(b), 0.0), InvalidInput);
     Eigen::MatrixXd s(2, 3);
     s << 0, 0, 0, 1, 1, 1;
@@ -46,7 +46,7 @@ TEST(Analysis, SingularPointIsAnError) {
 
 TEST(Analysis, NormalOffsetIsSignedDistanceAlongLeftNormal) {
     Eigen::MatrixXd a(2, 2), b(2, 2);
-    b << 0, 0, 1, 0;    // along +x: left normal is +y
+    b << 0, 0, 1, 0;  // along +x: left normal is +y
     a << 0, 0.5, 1, 0.5;
     EXPECT_NEAR(analysis::normal_offset(BezierCurve(a), BezierCurve(b), 0.3), 0.5, 1e-15);
     EXPECT_NEAR(analysis::normal_offset(BezierCurve(b), BezierCurve(a), 0.3), -0.5, 1e-15);

@@ -48,7 +48,7 @@ TEST(BSpline, DerivativesMatchCentralDifferences) {
 TEST(BSpline, KnotInsertionLeavesTheCurveUnchanged) {
     const BSplineCurve c = random_curve(3, 10, 3, false);
     BSplineCurve d = insert_knot(c, 0.37 * c.t_min() + 0.63 * c.t_max());
-    d = insert_knot(d, c.knots()[5]);   // raise an existing knot's multiplicity
+    d = insert_knot(d, c.knots()[5]);  // raise an existing knot's multiplicity
     EXPECT_EQ(d.control_points().rows(), c.control_points().rows() + 2);
     EXPECT_LT(analysis::max_distance_same_parameter(c, d), 1e-14);
 }
@@ -75,9 +75,7 @@ TEST(BSpline, ElevatedUniformCubicHasDoubleKnotsAndKnownControls) {
     int matched = 0;
     for (Eigen::Index j = 1; j + 1 < D.rows(); ++j)
         for (Eigen::Index i = 1; i + 1 < C.rows(); ++i)
-            if ((D.row(j) - (C.row(i - 1) + 10 * C.row(i) + C.row(i + 1)) / 12.0).norm() < 1e-12 &&
-                (D.row(j + 1) - (C.row(i) + C.row(i + 1)) / 2.0).norm() < 1e-12)
-                ++matched;
+            if ((D.row(j) - (C.row(i - 1) + 10 * C.row(i) + C.row(i + 1)) / 12.0).norm() < 1e-12 && (D.row(j + 1) - (C.row(i) + C.row(i + 1)) / 2.0).norm() < 1e-12) ++matched;
     EXPECT_GE(matched, 6);
 }
 
@@ -104,9 +102,9 @@ TEST(BSpline, SingleBasisFunctionMatchesCurveBasis) {
 
 TEST(BSpline, RejectsBadInput) {
     Eigen::MatrixXd c = Eigen::MatrixXd::Zero(4, 2);
-    EXPECT_THROW(BSplineCurve(3, {0, 1, 2, 3, 4, 5, 6}, c), InvalidInput);      // too few knots
-    EXPECT_THROW(BSplineCurve(3, {0, 1, 2, 3, 5, 4, 6, 7}, c), InvalidInput);   // decreasing
-    EXPECT_THROW(BSplineCurve(3, {0, 0, 0, 0, 0, 1, 1, 1}, c), InvalidInput);   // multiplicity 5
+    EXPECT_THROW(BSplineCurve(3, {0, 1, 2, 3, 4, 5, 6}, c), InvalidInput);     // too few knots
+    EXPECT_THROW(BSplineCurve(3, {0, 1, 2, 3, 5, 4, 6, 7}, c), InvalidInput);  // decreasing
+    EXPECT_THROW(BSplineCurve(3, {0, 0, 0, 0, 0, 1, 1, 1}, c), InvalidInput);  // multiplicity 5
     c(1, 0) = NAN;
     EXPECT_THROW(BSplineCurve(3, {0, 1, 2, 3, 4, 5, 6, 7}, c), InvalidInput);
     const BSplineCurve ok = random_curve(3, 5, 7, true);

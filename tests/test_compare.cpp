@@ -18,9 +18,9 @@ using std::isnan;
 
 #include "analysis/curve_measures.hpp"
 #include "analysis/fairness_measures.hpp"
-#include "methods/method_registry.hpp"
 #include "compare/method_comparison.hpp"
 #include "core/point_csv.hpp"
+#include "methods/method_registry.hpp"
 #include "random_walk.hpp"
 
 using namespace cagd;
@@ -33,7 +33,6 @@ int property_sets() {
     const char* env = std::getenv("CAGD_PROPERTY_SETS");
     return env ? std::max(1, std::atoi(env)) : 10000;
 }
-
 
 // A seeded planar walk (bench/random_walk.hpp, the benchmarks' generator): steps 0.2–1, heading
 // changes within ±1.2 rad.
@@ -63,14 +62,10 @@ PointList random_points(std::mt19937_64& rng, int n, bool closed) {
     return p;
 }
 
-double span_parameter(const Interpolant& a, std::size_t k, double f) {
-    return a.node_parameters[k] + f * (a.node_parameters[k + 1] - a.node_parameters[k]);
-}
+double span_parameter(const Interpolant& a, std::size_t k, double f) { return a.node_parameters[k] + f * (a.node_parameters[k + 1] - a.node_parameters[k]); }
 
 // Relative difference of two vectors, measured against their size (and `floor`).
-double relative_gap(const Eigen::VectorXd& a, const Eigen::VectorXd& b, double floor) {
-    return (a - b).norm() / std::max({a.norm(), b.norm(), floor});
-}
+double relative_gap(const Eigen::VectorXd& a, const Eigen::VectorXd& b, double floor) { return (a - b).norm() / std::max({a.norm(), b.norm(), floor}); }
 
 struct PropertyTally {
     int sets = 0, no_result = 0;
@@ -115,8 +110,8 @@ void check_properties(const Configuration& m, const PointList& p, bool closed, P
             t.worst_geometric = std::max(t.worst_geometric, (el - er).norm());
         }
         if (m.claims.geometric_continuity >= 2)
-            t.worst_geometric = std::max(t.worst_geometric, (analysis::curvature_vector(L) - analysis::curvature_vector(R)).norm() * diag /
-                                                               std::max(1.0, diag * analysis::curvature_vector(R).norm()));
+            t.worst_geometric = std::max(
+                t.worst_geometric, (analysis::curvature_vector(L) - analysis::curvature_vector(R)).norm() * diag / std::max(1.0, diag * analysis::curvature_vector(R).norm()));
     }
     // 3. nothing is NaN or infinite
     for (std::size_t k = 0; k + 1 < nodes; ++k)
@@ -125,7 +120,7 @@ void check_properties(const Configuration& m, const PointList& p, bool closed, P
     const auto compare_under = [&](const Eigen::Matrix2d& A, const Eigen::RowVector2d& b, double& worst) {
         const PointList q = (p * A.transpose()).rowwise() + b;
         const InterpolationResult rq = interpolate(m, q, closed);
-        if (!rq.outcome.ok()) return;   // counted once above; a transformed failure is the same Newton
+        if (!rq.outcome.ok()) return;  // counted once above; a transformed failure is the same Newton
         const Interpolant& aq = *rq.interpolant;
         const double dq = bounding_box_diagonal(q);
         for (std::size_t k = 0; k + 1 < nodes; ++k)
@@ -136,7 +131,7 @@ void check_properties(const Configuration& m, const PointList& p, bool closed, P
     };
     std::mt19937_64 rng(static_cast<std::uint64_t>(t.sets));
     std::uniform_real_distribution<double> u(0.0, 1.0);
-    if (m.claims.invariance == Invariance::none) return;   // measured separately: PseudoSplineRotationDeviationIsBounded
+    if (m.claims.invariance == Invariance::none) return;  // measured separately: PseudoSplineRotationDeviationIsBounded
     const double angle = m.claims.invariance == Invariance::translation_scale ? 0.0 : 2 * std::numbers::pi * u(rng);
     const double scale = std::exp(6 * (u(rng) - 0.5));
     Eigen::Matrix2d rotation;
@@ -176,8 +171,8 @@ TEST_P(EveryMethod, RandomPointSetsKeepEveryClaim) {
     EXPECT_LE(t.worst_geometric, 1e-6) << m.name;
     EXPECT_LE(t.worst_invariance, 1e-9) << m.name;
     EXPECT_LE(t.worst_affine, 1e-9) << m.name;
-    std::printf("%s: %d sets, %d without result; worst interpolation %.2e, C^k %.2e, G^k %.2e, invariance %.2e, affine %.2e\n", m.name.c_str(), t.sets,
-                t.no_result, t.worst_interpolation, t.worst_parametric, t.worst_geometric, t.worst_invariance, t.worst_affine);
+    std::printf("%s: %d sets, %d without result; worst interpolation %.2e, C^k %.2e, G^k %.2e, invariance %.2e, affine %.2e\n", m.name.c_str(), t.sets, t.no_result,
+                t.worst_interpolation, t.worst_parametric, t.worst_geometric, t.worst_invariance, t.worst_affine);
 }
 
 // Degenerate inputs, each with its defined outcome.
@@ -191,7 +186,7 @@ TEST_P(EveryMethod, DegenerateInputsHaveDefinedOutcomes) {
     const Curve& c = *r.interpolant->curve;
     for (double t = c.t_min(); t < c.t_max(); t += (c.t_max() - c.t_min()) / 97) {
         const Eigen::Vector2d q = c.point(t);
-        EXPECT_NEAR(q.y() - 2.0 * q.x(), 0.0, 1e-11) << m.name << " at t = " << t;   // rounding at coordinates ≤ 14
+        EXPECT_NEAR(q.y() - 2.0 * q.x(), 0.0, 1e-11) << m.name << " at t = " << t;  // rounding at coordinates ≤ 14
     }
     // Two points: the segment between them, or InvalidInput naming the count for methods needing more.
     PointList two(2, 2);
@@ -219,8 +214,8 @@ TEST_P(EveryMethod, DegenerateInputsHaveDefinedOutcomes) {
     PointList base = random_points(rng, 7, false);
     PointList near = base;
     near.row(4) = near.row(3) + 1e-9 * bounding_box_diagonal(base) * Eigen::RowVector2d(0.6, 0.8);
-    for (const auto& [points, label] : {std::pair<PointList, const char*>{near, "nearly coincident"}, {base * 1e-8, "1e-8"}, {base * 1e8, "1e8"},
-                                        {(base.array() + 1e8).matrix(), "offset 1e8"}}) {
+    for (const auto& [points, label] :
+         {std::pair<PointList, const char*>{near, "nearly coincident"}, {base * 1e-8, "1e-8"}, {base * 1e8, "1e8"}, {(base.array() + 1e8).matrix(), "offset 1e8"}}) {
         const InterpolationResult rr = interpolate(m, points, false);
         if (!rr.outcome.ok()) {
             EXPECT_FALSE(rr.outcome.message.empty()) << m.name << " " << label;
@@ -230,8 +225,7 @@ TEST_P(EveryMethod, DegenerateInputsHaveDefinedOutcomes) {
         const double scale = points.cwiseAbs().maxCoeff();
         for (std::size_t i = 0; i < a.node_parameters.size(); ++i)
             EXPECT_LE((a.curve->point(a.node_parameters[i]) - points.row(static_cast<Eigen::Index>(i)).transpose()).norm(), 1e-9 * scale) << m.name << " " << label;
-        for (std::size_t k = 0; k + 1 < a.node_parameters.size(); ++k)
-            EXPECT_TRUE(a.curve->jet(span_parameter(a, k, 0.5), 2).allFinite()) << m.name << " " << label;
+        for (std::size_t k = 0; k + 1 < a.node_parameters.size(); ++k) EXPECT_TRUE(a.curve->jet(span_parameter(a, k, 0.5), 2).allFinite()) << m.name << " " << label;
     }
     // A hairpin (the path turns back by exactly π at P_2): InvalidInput, or a finite curve.
     PointList hairpin(5, 2);
@@ -243,8 +237,7 @@ TEST_P(EveryMethod, DegenerateInputsHaveDefinedOutcomes) {
                 EXPECT_TRUE(rh.interpolant->curve->jet(span_parameter(*rh.interpolant, k, 0.5), 1).allFinite()) << m.name << " hairpin";
         else
             EXPECT_FALSE(rh.outcome.message.empty());
-    } catch (const InvalidInput&) {
-    }
+    } catch (const InvalidInput&) {}
 }
 
 // Very long input: 10^6 points of a random walk. Every method interpolates them (all are O(n); the
@@ -315,7 +308,8 @@ TEST(Compare, BoostPeersAreRepresentedExactly) {
         const boost::math::catmull_rom<std::array<double, 2>> cr(std::move(pts), false, 0.5);
         std::vector<double> t;
         for (Eigen::Index k = 0; k < p.rows(); ++k) t.push_back(cr.parameter_at_point(static_cast<std::size_t>(k)));
-        check("boost-catmull-rom", [&](double s) { return cr(s)[0]; }, [&](double s) { return cr(s)[1]; }, t);
+        check(
+            "boost-catmull-rom", [&](double s) { return cr(s)[0]; }, [&](double s) { return cr(s)[1]; }, t);
     }
 }
 
@@ -412,7 +406,7 @@ TEST(Compare, PseudoEnergyFromMeasuredPiecesEqualsSpanIntegration) {
 TEST(Compare, FigureSamplingKeepsLongInputsWithinTheBudget) {
     EXPECT_EQ(figure_sampling(13, 10000).per_span, 32);
     EXPECT_EQ(figure_sampling(13, 10000).span_stride, 1);
-    EXPECT_EQ(figure_sampling(999, 10000).per_span, 9);   // 999 spans × 10 samples ≤ 10^4
+    EXPECT_EQ(figure_sampling(999, 10000).per_span, 9);  // 999 spans × 10 samples ≤ 10^4
     EXPECT_EQ(figure_sampling(999, 10000).span_stride, 1);
     const FigureSampling big = figure_sampling(99999, 10000);
     EXPECT_EQ(big.per_span, 1);
@@ -435,7 +429,7 @@ TEST(Compare, FigureSamplingKeepsLongInputsWithinTheBudget) {
     EXPECT_EQ(figure_methods_header().size(), table[0].size());
     std::size_t expected_first = 0;
     for (std::size_t i = 0; i < 2; ++i) {
-        const std::size_t first = std::stoul(table[i][4]), count = std::stoul(table[i][5]);   // curvature rows
+        const std::size_t first = std::stoul(table[i][4]), count = std::stoul(table[i][5]);  // curvature rows
         EXPECT_EQ(first, expected_first);
         EXPECT_EQ(count, 200u * 2u + 2u) << "200 sampled spans, both ends, plus the last span";
         for (std::size_t r = first; r < first + count; ++r) ASSERT_EQ(d.profiles[r][0], static_cast<double>(i));
@@ -447,7 +441,7 @@ TEST(Compare, FigureSamplingKeepsLongInputsWithinTheBudget) {
 
 TEST(Points, BoundingBoxDiagonal) {
     PointList p(3, 2);
-    p << 1, 2, 4, -2, 2, 0;   // box [1, 4] × [−2, 2]: diagonal 5
+    p << 1, 2, 4, -2, 2, 0;  // box [1, 4] × [−2, 2]: diagonal 5
     EXPECT_DOUBLE_EQ(bounding_box_diagonal(p), 5.0);
     EXPECT_DOUBLE_EQ(bounding_box_diagonal(p.topRows(1)), 0.0);
     EXPECT_DOUBLE_EQ(bounding_box_diagonal(PointList(0, 2)), 0.0);
@@ -515,6 +509,6 @@ TEST(Compare, PseudoSplineRotationDeviationIsBounded) {
     }
     std::printf("rotation deviation: none %.2e, exact %.2e, approx %.2e\n", worst[0], worst[1], worst[2]);
     EXPECT_LE(worst[0], 1e-12);
-    EXPECT_LE(worst[1], 1e-7);    // Brent's tolerance 2^-26 on α (methods/method_registry.hpp)
-    EXPECT_LE(worst[2], 1e-12);   // was 3.5e-3 while the non-convex case followed rounding noise
+    EXPECT_LE(worst[1], 1e-7);   // Brent's tolerance 2^-26 on α (methods/method_registry.hpp)
+    EXPECT_LE(worst[2], 1e-12);  // was 3.5e-3 while the non-convex case followed rounding noise
 }

@@ -46,7 +46,7 @@ TEST(KnotDifferenceList, Figure1ExampleStructureAndRoundTrip) {
     const KnotDifferenceList l = parse_knot_difference_list(fig1, 3);
     EXPECT_EQ(l.layout.spans(), 3);
     EXPECT_EQ(l.layout.segments(), 5);
-    EXPECT_EQ(l.layout.independent_lengths(), 4);   // S0 shared by span 0's two segments
+    EXPECT_EQ(l.layout.independent_lengths(), 4);  // S0 shared by span 0's two segments
     const std::vector<int> mult{3, 1, 2, 1, 2, 3};
     for (int g = 0; g <= 5; ++g) EXPECT_EQ(l.layout.multiplicity(g), mult[static_cast<std::size_t>(g)]) << "breakpoint " << g;
     EXPECT_EQ(l.layout.ordinates(), 12 - 3 + 1);
@@ -56,7 +56,7 @@ TEST(KnotDifferenceList, Figure1ExampleStructureAndRoundTrip) {
     EXPECT_EQ(numeric, "{0, 0, {1.250, 1.250}, 0, 2.500, {0.750, 0, 3.000}, 0, 0}");
     const KnotDifferenceList back = parse_knot_difference_list(numeric, 3);
     for (int g = 0; g <= 5; ++g) EXPECT_EQ(back.layout.multiplicity(g), l.layout.multiplicity(g));
-    EXPECT_EQ(back.layout.independent_lengths(), 5);   // numbers never share a length
+    EXPECT_EQ(back.layout.independent_lengths(), 5);  // numbers never share a length
     ASSERT_TRUE(back.values[2].has_value());
     EXPECT_DOUBLE_EQ(*back.values[2], 2.5);
 }
@@ -66,8 +66,8 @@ TEST(KnotDifferenceList, Figure3PrintedListRoundTripsAtDegreeTwo) {
     EXPECT_EQ(l.layout.spans(), 12);
     EXPECT_EQ(l.layout.segments(), 13);
     EXPECT_EQ(l.layout.ordinates(), 24);
-    EXPECT_EQ(l.layout.geometric_continuity(9), 1);    // join ⑨–⑩: one zero = double knot
-    EXPECT_EQ(l.layout.geometric_continuity(10), 2);   // inside ⑩: simple knot
+    EXPECT_EQ(l.layout.geometric_continuity(9), 1);   // join ⑨–⑩: one zero = double knot
+    EXPECT_EQ(l.layout.geometric_continuity(10), 2);  // inside ⑩: simple knot
     std::vector<double> values;
     for (int j = 0; j < 13; ++j) values.push_back(*l.values[static_cast<std::size_t>(l.layout.length_index(j))]);
     EXPECT_EQ(format_knot_difference_list(l.layout, values, 3), kFig3List);
@@ -78,14 +78,14 @@ TEST(KnotDifferenceList, Figure3PrintedListRoundTripsAtDegreeTwo) {
 }
 
 TEST(KnotDifferenceList, MalformedListsThrow) {
-    for (const char* bad : {"", "{}", "{0, 5, 0", "{0, 5, 0} x", "{0, {1, {2}}, 0}", "{0, -1, 0}", "{0, 1, …, 0}", "{0, 1, ..., 0}",
-                            "{0, 1, 0, 0, 2, 0}", "{0, {0, 1}, 0}", "{0, {1, 0}, 0}", "{0, 0, 0}", "{1, 2, 0}", "{0, 1, 2}", "{0, 1e999, 0}", "{0, 1; 2, 0}"})
+    for (const char* bad : {"", "{}", "{0, 5, 0", "{0, 5, 0} x", "{0, {1, {2}}, 0}", "{0, -1, 0}", "{0, 1, …, 0}", "{0, 1, ..., 0}", "{0, 1, 0, 0, 2, 0}", "{0, {0, 1}, 0}",
+                            "{0, {1, 0}, 0}", "{0, 0, 0}", "{1, 2, 0}", "{0, 1, 2}", "{0, 1e999, 0}", "{0, 1; 2, 0}"})
         EXPECT_THROW(parse_knot_difference_list(bad, 2), InvalidInput) << bad;
     EXPECT_THROW(parse_knot_difference_list("{0, 1, 0}", 4), InvalidInput);
-    EXPECT_THROW(KnotLayout(2, {1, 1}, {2, 3, 2}, {0, 1}), InvalidInput);   // interior multiplicity > p
-    EXPECT_THROW(KnotLayout(2, {1, 1}, {2, 1, 2}, {1, 0}), InvalidInput);   // indices not in order of first use
+    EXPECT_THROW(KnotLayout(2, {1, 1}, {2, 3, 2}, {0, 1}), InvalidInput);  // interior multiplicity > p
+    EXPECT_THROW(KnotLayout(2, {1, 1}, {2, 1, 2}, {1, 0}), InvalidInput);  // indices not in order of first use
     const KnotLayout ok(2, {1}, {2, 2}, {0});
-    EXPECT_THROW(format_knot_difference_list(ok, {0.0001}, 2), InvalidInput);   // would print as 0
+    EXPECT_THROW(format_knot_difference_list(ok, {0.0001}, 2), InvalidInput);  // would print as 0
 }
 
 TEST(TangentAngleSpline, BezierFormMatchesDeBoorEvaluation) {
@@ -102,7 +102,8 @@ TEST(TangentAngleSpline, BezierFormMatchesDeBoorEvaluation) {
             for (double t : {0.0, 0.3, 0.71, 1.0}) {
                 const double s = psi.breakpoints()[static_cast<std::size_t>(j)] + t * lengths[static_cast<std::size_t>(j)];
                 double bez = 0.0;
-                for (int r = 0; r <= p; ++r) bez += psi.bezier()(j, r) * std::tgamma(p + 1) / (std::tgamma(r + 1) * std::tgamma(p - r + 1)) * std::pow(t, r) * std::pow(1 - t, p - r);
+                for (int r = 0; r <= p; ++r)
+                    bez += psi.bezier()(j, r) * std::tgamma(p + 1) / (std::tgamma(r + 1) * std::tgamma(p - r + 1)) * std::pow(t, r) * std::pow(1 - t, p - r);
                 EXPECT_NEAR(bez, psi.jet_in_segment(j, s, 0)(0), 1e-13) << "p=" << p << " segment " << j << " t=" << t;
             }
         // Clamped ends interpolate the end ordinates; Greville abscissae start at 0 and end at L.
@@ -180,7 +181,7 @@ TEST(CurvatureProfileDesign, LongOpenSplineConvergesToTheTolerance) {
     add_natural_open_ends(problem);
     const CurvatureProfileSolution sol = solve_curvature_profile_auto(problem);
     ASSERT_TRUE(sol.outcome.ok()) << sol.outcome.message;
-    EXPECT_LE(sol.history.back().residual, 1e-12 * 1.0);   // data_scale = max(1, longest chord) = 1
+    EXPECT_LE(sol.history.back().residual, 1e-12 * 1.0);  // data_scale = max(1, longest chord) = 1
     EXPECT_LE(sol.history.size(), 8u);
 }
 
@@ -233,12 +234,12 @@ TEST(CurvatureProfileDesign, Figure3ConvergesQuadraticallyToTheForcedArcs) {
     const CurvatureProfileProblem P = fig3_problem();
     const CurvatureProfileSolution sol = solve_curvature_profile(P);
     ASSERT_TRUE(sol.outcome.ok()) << sol.outcome.message;
-    EXPECT_EQ(sol.rank, 36);   // 37 × 37, one redundant equation and a free split of span ⑩
+    EXPECT_EQ(sol.rank, 36);  // 37 × 37, one redundant equation and a free split of span ⑩
     const std::vector<double> L = sol.segment_lengths();
-    EXPECT_NEAR(L[3], kPi / 2, 1e-11);   // quarter circle radius 1
-    EXPECT_NEAR(L[6], 2 * kPi, 1e-11);   // semicircle radius 2
+    EXPECT_NEAR(L[3], kPi / 2, 1e-11);  // quarter circle radius 1
+    EXPECT_NEAR(L[6], 2 * kPi, 1e-11);  // semicircle radius 2
     EXPECT_NEAR(L[8], kPi / 2, 1e-11);
-    EXPECT_NEAR(L[1], 4.01808761111852, 1e-11);   // reference/curvature_profile/fig3_mpmath.py
+    EXPECT_NEAR(L[1], 4.01808761111852, 1e-11);  // reference/curvature_profile/fig3_mpmath.py
     EXPECT_NEAR(L[5], 5.12274417009232, 1e-11);
     EXPECT_NEAR(L[11], 3.43018694456654, 1e-11);
     const auto& h = sol.history;
@@ -248,7 +249,7 @@ TEST(CurvatureProfileDesign, Figure3ConvergesQuadraticallyToTheForcedArcs) {
     EXPECT_LT(v.interpolation_error, 1e-10);
     EXPECT_LT(v.line_curvature, 1e-10);
     EXPECT_LT(v.arc_curvature_spread, 1e-10);
-    EXPECT_GT(v.g1_curvature_jump, 0.5);   // κ really jumps where a line meets an arc
+    EXPECT_GT(v.g1_curvature_jump, 0.5);  // κ really jumps where a line meets an arc
 }
 
 TEST(CurvatureProfileDesign, ClosedClothoidSplineSparseAndDenseAgree) {
@@ -264,7 +265,7 @@ TEST(CurvatureProfileDesign, ClosedClothoidSplineSparseAndDenseAgree) {
     EXPECT_LT(v.g2_curvature_jump, 1e-12);
     EXPECT_LT(v.interpolation_error, 1e-10);
     const TangentAngleSpline& psi = a.curve->tangent_angle();
-    EXPECT_NEAR(psi.angle(5, true) - psi.angle(0, false), 2 * kPi, 1e-12);   // counter-clockwise: turns = +1
+    EXPECT_NEAR(psi.angle(5, true) - psi.angle(0, false), 2 * kPi, 1e-12);  // counter-clockwise: turns = +1
 }
 
 TEST(CurvatureProfileDesign, DivergingIterationStopsEarly) {
@@ -313,9 +314,7 @@ TEST(CurvatureProfileDesign, SpanShapesAndDefaultLayout) {
 
 TEST(CurvatureProfileDesign, BadInputThrows) {
     CurvatureProfileProblem P = fig3_problem();
-    auto expect_bad = [](CurvatureProfileProblem q, const char* what) {
-        EXPECT_THROW(solve_curvature_profile(q), InvalidInput) << what;
-    };
+    auto expect_bad = [](CurvatureProfileProblem q, const char* what) { EXPECT_THROW(solve_curvature_profile(q), InvalidInput) << what; };
     {
         CurvatureProfileProblem q = P;
         q.points.conservativeResize(1, 2);
@@ -361,5 +360,5 @@ TEST(CurvatureProfileDesign, BadInputThrows) {
     under.closed = false;
     under.points.conservativeResize(7, 2);
     under.points.row(6) << 1, -2;
-    EXPECT_THROW(solve_curvature_profile(under, lu), InvalidInput);   // 12 + 0 equations, 14 unknowns
+    EXPECT_THROW(solve_curvature_profile(under, lu), InvalidInput);  // 12 + 0 equations, 14 unknowns
 }

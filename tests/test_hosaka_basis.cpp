@@ -22,7 +22,7 @@ TEST(RationalPolynomial, ArithmeticDerivativeAndReflectionAreExact) {
     EXPECT_EQ(cube.coefficient(1), 3);
     EXPECT_EQ(cube.coefficient(2), 3);
     EXPECT_EQ(cube.coefficient(3), 1);
-    EXPECT_EQ(cube.derivative(2), RationalPolynomial({6, 6}));   // 6(1 + t)
+    EXPECT_EQ(cube.derivative(2), RationalPolynomial({6, 6}));  // 6(1 + t)
     EXPECT_TRUE(cube.derivative(4).is_zero());
     EXPECT_EQ(cube(Rational(1, 2)), Rational(27, 8));
     // p(1 − t) for p = t²: 1 − 2t + t².
@@ -181,7 +181,7 @@ TEST(HosakaSpline, OrderMSplineIsContinuousTo2mAndReducesToEq20ForM1) {
     EXPECT_LT(analysis::max_distance_same_parameter(spline::hosaka_spline(p, 1, spline::HosakaScale::chord, true), spline::hosaka_c2_spline(p, closed).curve), 1e-12);
     const spline::HosakaCurve c = spline::hosaka_spline(p, 2, spline::HosakaScale::unit);
     for (int s = 1; s < c.segments(); ++s)
-        for (int k = 1; k <= 4; ++k) {   // unit scale: τ = u, so t-derivatives must match directly
+        for (int k = 1; k <= 4; ++k) {  // unit scale: τ = u, so t-derivatives must match directly
             const spline::HosakaBasis b(2);
             Eigen::RowVectorXd left = Eigen::RowVectorXd::Zero(2);
             for (int i = 0; i <= 2; ++i) left += b.p(i, 1.0, k) * c.start_derivatives(s - 1).row(i) + b.q(i, 1.0, k) * c.end_derivatives(s - 1).row(i);
@@ -204,8 +204,8 @@ TEST(HosakaSpline, TangentEndsForAnyOrder) {
     const int last = c.segments() - 1;
     EXPECT_LT((c.segment_jet(0, 0.0, 1).row(1).transpose() - o.start_tangent).norm(), 1e-12);
     EXPECT_LT((c.segment_jet(last, 1.0, 1).row(1).transpose() - o.end_tangent).norm(), 1e-12);
-    EXPECT_LT(c.segment_jet(0, 0.0, 3).row(3).norm(), 1e-9 * c.segment_jet(0, 0.5, 3).row(3).norm() + 1e-9);   // order m+1 = 3 vanishes
-    EXPECT_GT(c.segment_jet(0, 0.0, 4).row(4).norm(), 1e-3);                                                     // order 2m does not
+    EXPECT_LT(c.segment_jet(0, 0.0, 3).row(3).norm(), 1e-9 * c.segment_jet(0, 0.5, 3).row(3).norm() + 1e-9);  // order m+1 = 3 vanishes
+    EXPECT_GT(c.segment_jet(0, 0.0, 4).row(4).norm(), 1e-3);                                                  // order 2m does not
     // Differs from the natural m = 2 spline, and bad tangents are rejected.
     EXPECT_GT(analysis::max_distance_same_parameter(c, spline::hosaka_spline(p, 2)), 1e-3);
     o.end_tangent = Eigen::Vector3d(1, 0, 0);

@@ -59,7 +59,7 @@ TEST(TaylorJet, ArithmeticMatchesKnownSeries) {
     for (int k = 0; k <= 5; ++k) EXPECT_NEAR(p.derivative(k), s2(0.7, k), 1e-13) << k;
     // (x²)∘(1 + 2x) = 1 + 4x + 4x²; power(−2) of (1 + x) has coefficients (k+1)(−1)^k.
     const TaylorJet inner = TaylorJet(3, 1.0) + 2.0 * TaylorJet::variable(3, 0.0);
-    const TaylorJet sq = numeric::compose({1.0, 2.0, 2.0}, inner);   // g = t² at t = 1: g, g', g''
+    const TaylorJet sq = numeric::compose({1.0, 2.0, 2.0}, inner);  // g = t² at t = 1: g, g', g''
     EXPECT_DOUBLE_EQ(sq.coefficient(1), 4.0);
     EXPECT_DOUBLE_EQ(sq.coefficient(2), 4.0);
     EXPECT_DOUBLE_EQ(sq.coefficient(3), 0.0);
@@ -76,8 +76,7 @@ TEST(HosakaPatch, InterpolatesEveryCornerDerivative) {
         for (int k = 0; k < 2; ++k)
             for (int l = 0; l < 2; ++l)
                 for (int i = 0; i <= m; ++i)
-                    for (int j = 0; j <= m; ++j)
-                        EXPECT_LT((patch.derivative(k, l, i, j) - patch.corners().at(k, l, i, j)).norm(), 1e-11) << m << k << l << i << j;
+                    for (int j = 0; j <= m; ++j) EXPECT_LT((patch.derivative(k, l, i, j) - patch.corners().at(k, l, i, j)).norm(), 1e-11) << m << k << l << i << j;
     }
     EXPECT_THROW(HosakaPatch(random_corners(1, 3, 1)).point(1.5, 0.5), InvalidInput);
 }
@@ -100,9 +99,9 @@ TEST(EdgeFormPatch, WithTwistsEqualsTensorPatchAndWithoutIsCoons) {
         }
         for (int k = 0; k < 2; ++k)
             for (int l = 0; l < 2; ++l) {
-                EXPECT_LT(coons.derivative(k, l, 1, 1).norm(), 1e-12);                        // zero twist
-                EXPECT_GT(patch.derivative(k, l, 1, 1).norm(), 1e-3);                          // the data's is not
-                EXPECT_LT((coons.derivative(k, l, 1, 0) - patch.derivative(k, l, 1, 0)).norm(), 1e-12);   // edge tangents kept
+                EXPECT_LT(coons.derivative(k, l, 1, 1).norm(), 1e-12);                                   // zero twist
+                EXPECT_GT(patch.derivative(k, l, 1, 1).norm(), 1e-3);                                    // the data's is not
+                EXPECT_LT((coons.derivative(k, l, 1, 0) - patch.derivative(k, l, 1, 0)).norm(), 1e-12);  // edge tangents kept
             }
     }
 }
@@ -154,7 +153,7 @@ TEST(CartesianSplineSurface, InterpolatesHeightsAndIsC2AlongGridLines) {
     // ζ^{(2,0)} continuous across x = x_1 (the spline's C2) for v inside a cell.
     for (double v : {0.2, 0.6}) EXPECT_NEAR(s.derivative_in(0, 1, 1.0, v, 2, 0), s.derivative_in(1, 1, 0.0, v, 2, 0), 1e-11);
     // ζ^{(1,1)} from the splines along y of ζ^{(1,0)} equals the one along x of ζ^{(0,1)} (tensor spline).
-    const Eigen::MatrixXd zy = spline::hosaka_explicit_spline(y, z.transpose()).slopes;   // ny × nx
+    const Eigen::MatrixXd zy = spline::hosaka_explicit_spline(y, z.transpose()).slopes;    // ny × nx
     const Eigen::MatrixXd zyx = spline::hosaka_explicit_spline(x, zy.transpose()).slopes;  // nx × ny
     for (int a = 0; a < 5; ++a)
         for (int b = 0; b < 4; ++b) EXPECT_NEAR(s.node(a, b)(1, 1), zyx(a, b), 1e-12);
@@ -184,7 +183,7 @@ TEST(BoundaryConformingSurface, RecurrenceAgreesWithDirectDifferentiationAndFini
                         const double direct = s.derivative_direct(x, y, i, n);
                         EXPECT_NEAR(s.derivative(x, y, i, n), direct, 1e-10 * (1 + std::abs(direct))) << m << " " << x << " " << v << " " << i << " " << n;
                     }
-                if (v > 0.0 && v < 1.0) {   // the jets against a central difference in x (inside the section)
+                if (v > 0.0 && v < 1.0) {  // the jets against a central difference in x (inside the section)
                     const double h = 1e-5, fd = (s.value(x + h, y) - s.value(x - h, y)) / (2 * h);
                     EXPECT_NEAR(s.derivative_direct(x, y, 1, 0), fd, 1e-8);
                 }
@@ -195,12 +194,12 @@ TEST(BoundaryConformingSurface, RecurrenceAgreesWithDirectDifferentiationAndFini
 TEST(BoundaryConformingSurface, RejectsCrossingCurvesAndDifferentRanges) {
     BoundaryCurve lo = boundary(1, 0), hi = boundary(1, 1);
     BoundaryCurve crossing = hi;
-    crossing.y = polynomial_function({0.5, -0.5});   // drops below 0.2 sin x near x = 0.7
+    crossing.y = polynomial_function({0.5, -0.5});  // drops below 0.2 sin x near x = 0.7
     EXPECT_THROW(BoundaryConformingSurface(1, lo, crossing), InvalidInput);
     BoundaryCurve shorter = hi;
     shorter.x_max = 1.5;
     EXPECT_THROW(BoundaryConformingSurface(1, lo, shorter), InvalidInput);
-    EXPECT_THROW(BoundaryConformingSurface(2, lo, hi), InvalidInput);   // m+1 functions needed
+    EXPECT_THROW(BoundaryConformingSurface(2, lo, hi), InvalidInput);  // m+1 functions needed
     const BoundaryConformingSurface s(1, lo, hi);
     EXPECT_THROW(s.value(2.5, 1.0), InvalidInput);
     EXPECT_THROW(s.value(1.0, 5.0), InvalidInput);
@@ -221,7 +220,7 @@ TEST(SectionJoinedSurface, AgreesWithTheFirstSurfaceToOrderMAcrossTheSeam) {
         BoundaryCurve far;
         far.x_min = y0;
         far.x_max = y1;
-        far.y = sinusoid(0.2, 2.0, 0.0, 3.0);   // x3(y) = 3 + 0.2 sin 2y
+        far.y = sinusoid(0.2, 2.0, 0.0, 3.0);  // x3(y) = 3 + 0.2 sin 2y
         for (int i = 0; i <= m; ++i) far.phi.push_back(sinusoid(0.3 / (i + 1), 1.5, i, i == 0 ? 0.5 : 0.0));
         const SectionJoinedSurface b(a, x0, far);
         double worst = 0.0, next = 0.0;
@@ -233,13 +232,13 @@ TEST(SectionJoinedSurface, AgreesWithTheFirstSurfaceToOrderMAcrossTheSeam) {
             }
         }
         EXPECT_LT(worst, 1e-10) << m;
-        EXPECT_GT(next, 1e-3) << m;   // order m+1 is not matched
+        EXPECT_GT(next, 1e-3) << m;  // order m+1 is not matched
         EXPECT_NEAR(b.value(b.x_far(0.5 * (y0 + y1)), 0.5 * (y0 + y1)), far.phi[0](0.5 * (y0 + y1), 0), 1e-12);
         BoundaryCurve wrong = far;
         wrong.x_max = y1 + 0.1;
         EXPECT_THROW(SectionJoinedSurface(a, x0, wrong), InvalidInput);
         wrong = far;
-        wrong.y = constant_function(1.0);   // x3 < x0
+        wrong.y = constant_function(1.0);  // x3 < x0
         EXPECT_THROW(SectionJoinedSurface(a, x0, wrong), InvalidInput);
         EXPECT_THROW(SectionJoinedSurface(a, 5.0, far), InvalidInput);
     }

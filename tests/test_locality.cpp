@@ -60,8 +60,7 @@ TEST(Locality, InterpolatesEveryPointForEveryFormEndAndM) {
                     o.closed = closed;
                     const auto s = interpolate(p, o);
                     for (Eigen::Index i = 0; i < p.rows(); ++i)
-                        EXPECT_LT((s.curve.point(double(i)) - p.row(i).transpose()).norm(), 1e-13)
-                            << "r(" << i << ") = p_" << i << ", m = " << m;
+                        EXPECT_LT((s.curve.point(double(i)) - p.row(i).transpose()).norm(), 1e-13) << "r(" << i << ") = p_" << i << ", m = " << m;
                     if (closed) {
                         EXPECT_LT((s.curve.point(double(p.rows())) - p.row(0).transpose()).norm(), 1e-13);
                     }
@@ -93,11 +92,9 @@ TEST(Locality, MZeroIsMethodIAndLargeMIsTheCubicInterpolant) {
         b.rule = ExtraPointRule::method_I;
         EXPECT_LT(analysis::max_distance_same_parameter(interpolate(p, a).curve, interpolate(p, b).curve), 1e-15);
         a.m = {{60, 60}};
-        EXPECT_LT(analysis::max_distance_same_parameter(interpolate(p, a).curve, cubic_bspline_interpolant(p, false)),
-                  1e-13);
+        EXPECT_LT(analysis::max_distance_same_parameter(interpolate(p, a).curve, cubic_bspline_interpolant(p, false)), 1e-13);
         a.closed = true;
-        EXPECT_LT(analysis::max_distance_same_parameter(interpolate(p, a).curve, cubic_bspline_interpolant(p, true)),
-                  1e-13);
+        EXPECT_LT(analysis::max_distance_same_parameter(interpolate(p, a).curve, cubic_bspline_interpolant(p, true)), 1e-13);
     }
 }
 
@@ -137,7 +134,7 @@ TEST(Locality, TruncationWeightsClosedFormEqualsStencil) {
 TEST(Locality, Eq14ExtraPointsOfTheBlendingFunction) {
     // p_i = δ_{i0}: d_{2i+1} = d_{−2i−1} = (1−α)/(1−α^{m+1}) α^i / 2, i = 0..m; zero beyond.
     const int m = 3, half = m + 3;
-    PointList p = PointList::Zero(2 * half + 1, 2);   // x = i, y = δ_{i0}
+    PointList p = PointList::Zero(2 * half + 1, 2);  // x = i, y = δ_{i0}
     for (int i = 0; i <= 2 * half; ++i) p(i, 0) = i - half;
     p(half, 1) = 1.0;
     Options o;
@@ -167,8 +164,7 @@ TEST(Locality, StraightLinesAndAffineMapsAreReproduced) {
         o.form = f;
         o.m = {{2, 2}};
         const auto cp = interpolate(p, o).curve, cq = interpolate(q, o).curve;
-        for (double u = 0; u <= 6; u += 0.1)
-            EXPECT_LT((A * cp.point(u) + shift.transpose() - cq.point(u)).norm(), 1e-12);
+        for (double u = 0; u <= 6; u += 0.1) EXPECT_LT((A * cp.point(u) + shift.transpose() - cq.point(u)).norm(), 1e-12);
     }
 }
 
@@ -177,7 +173,7 @@ TEST(Locality, MVectorChangesOnlyNearbySpans) {
     Options a, b;
     a.m = parse_m_vector("1,1,1,1,1,1,1,1,1,1,1");
     b.m = a.m;
-    b.m[5] = {3, 3};   // segment 5 changes: its extra point moves → spans 4, 5, 6 move
+    b.m[5] = {3, 3};  // segment 5 changes: its extra point moves → spans 4, 5, 6 move
     const auto ca = interpolate(p, a).curve, cb = interpolate(p, b).curve;
     for (int s = 0; s < 11; ++s) {
         const double d = analysis::max_distance_same_parameter(ca, cb, s, s + 1, 65);
@@ -258,11 +254,11 @@ TEST(PointCsv, ErrorsNameTheLine) {
 
 TEST(Locality, ExtendedPointsFollowSection33) {
     const PointList p = random_points(5, 18);
-    Options o;   // natural: p_{−k} = 2p_0 − p_k, p_{n−1+k} = 2p_{n−1} − p_{n−1−k}
+    Options o;  // natural: p_{−k} = 2p_0 − p_k, p_{n−1+k} = 2p_{n−1} − p_{n−1−k}
     EXPECT_LT((extended_point(p, o, -2) - (2 * p.row(0) - p.row(2))).norm(), 1e-15);
     EXPECT_LT((extended_point(p, o, 6) - (2 * p.row(4) - p.row(2))).norm(), 1e-15);
     EXPECT_EQ((extended_point(p, o, 3) - p.row(3)).norm(), 0.0);
-    o.start.kind = EndKind::tangent;   // mirror ⟂ (1, 0) through p_0: x reflected, y kept
+    o.start.kind = EndKind::tangent;  // mirror ⟂ (1, 0) through p_0: x reflected, y kept
     o.start.tangent = Eigen::Vector2d(1.0, 0.0);
     const Eigen::RowVectorXd v = extended_point(p, o, -1);
     EXPECT_NEAR(v(0), 2 * p(0, 0) - p(1, 0), 1e-15);

@@ -61,9 +61,10 @@ TEST(Methods, EveryMethodIsConfiguredForTheComparisonPropertyTestsAndFuzzers) {
     // The comparison's rows keep the names and order of the published results.
     std::vector<std::string> names;
     for (const Configuration& c : configurations()) names.push_back(c.name);
-    const std::vector<std::string> expected = {"pseudo-spline-none", "pseudo-spline-exact", "pseudo-spline-approx", "cubic-a", "cubic-b", "hermite-a", "hermite-b",
-                                               "s-spline-m1", "s-spline-m2", "s-spline-m4", "b2-spline-m1", "b2-spline-m2", "b2-spline-m4", "hosaka-c2-chord",
-                                               "hosaka-c2-unit", "curvature-profile", "boost-pchip", "boost-makima", "boost-catmull-rom"};
+    const std::vector<std::string> expected = {"pseudo-spline-none", "pseudo-spline-exact", "pseudo-spline-approx", "cubic-a",          "cubic-b",
+                                               "hermite-a",          "hermite-b",           "s-spline-m1",          "s-spline-m2",      "s-spline-m4",
+                                               "b2-spline-m1",       "b2-spline-m2",        "b2-spline-m4",         "hosaka-c2-chord",  "hosaka-c2-unit",
+                                               "curvature-profile",  "boost-pchip",         "boost-makima",         "boost-catmull-rom"};
     EXPECT_EQ(names, expected);
 }
 

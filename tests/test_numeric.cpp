@@ -7,12 +7,12 @@
 #include <boost/math/quadrature/tanh_sinh.hpp>
 #include <cmath>
 
-#include "core/errors.hpp"
 #include <numbers>
 #include <random>
-#include "numeric/pentadiagonal.hpp"
+#include "core/errors.hpp"
 #include "numeric/finite_difference.hpp"
 #include "numeric/gauss_legendre.hpp"
+#include "numeric/pentadiagonal.hpp"
 #include "numeric/romberg.hpp"
 
 using cagd::numeric::GaussLegendreRule;
@@ -60,9 +60,7 @@ TEST(GaussLegendre, ExactForPolynomialsOfDegree2nMinus1) {
         const int deg = 2 * n - 1;
         // ∫_{-0.5}^{2} x^deg dx
         const double exact = (std::pow(2.0, deg + 1) - std::pow(-0.5, deg + 1)) / (deg + 1);
-        EXPECT_NEAR(rule.integrate([&](double x) { return std::pow(x, deg); }, -0.5, 2.0), exact,
-                    1e-13 * std::max(1.0, std::abs(exact)))
-            << "n = " << n;
+        EXPECT_NEAR(rule.integrate([&](double x) { return std::pow(x, deg); }, -0.5, 2.0), exact, 1e-13 * std::max(1.0, std::abs(exact))) << "n = " << n;
         // and not exact for degree 2n (the rule's order is sharp)
         const double exact2 = (std::pow(2.0, deg + 2) - std::pow(-0.5, deg + 2)) / (deg + 2);
         EXPECT_GT(std::abs(rule.integrate([&](double x) { return std::pow(x, deg + 1); }, -0.5, 2.0) - exact2), 1e-10);
@@ -71,7 +69,7 @@ TEST(GaussLegendre, ExactForPolynomialsOfDegree2nMinus1) {
 
 TEST(GaussLegendre, NodesAndWeightsMatchBoost) {
     const GaussLegendreRule rule(7);
-    const auto& xs = boost::math::quadrature::gauss<double, 7>::abscissa();   // x ≥ 0 half
+    const auto& xs = boost::math::quadrature::gauss<double, 7>::abscissa();  // x ≥ 0 half
     const auto& ws = boost::math::quadrature::gauss<double, 7>::weights();
     for (std::size_t k = 0; k < xs.size(); ++k) {
         EXPECT_NEAR(rule.nodes()[3 + k], xs[k], 2e-16);
@@ -82,7 +80,7 @@ TEST(GaussLegendre, NodesAndWeightsMatchBoost) {
 TEST(GaussLegendre, AgreesWithGaussKronrodOnAnalyticIntegrand) {
     const auto f = [](double x) { return std::log(2.0 + std::sin(5 * x)); };
     const double gk = boost::math::quadrature::gauss_kronrod<double, 61>::integrate(f, 0.0, 2.0, 20, 1e-15);
-        boost::math::quadrature::tanh_sinh<double> ts;
+    boost::math::quadrature::tanh_sinh<double> ts;
     EXPECT_NEAR(gk, ts.integrate(f, 0.0, 2.0), 1e-14);
     // Singularities at distance asinh(2)/5 from the real axis: convergence like ρ^{-2n}.
     EXPECT_NEAR(GaussLegendreRule(100).integrate(f, 0.0, 2.0), gk, 1e-14);

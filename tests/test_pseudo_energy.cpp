@@ -56,7 +56,7 @@ TEST(HermiteSegment, GradientMatchesCentralDifferences) {
 }
 
 TEST(HermiteSegment, CuspIsInfiniteNeverAFalseLowValue) {
-    const UnitChordHermite collinear(std::numbers::pi, 0.0, 1.0, 1.0);   // x'(0) < 0 < x'(1), y' ≡ 0
+    const UnitChordHermite collinear(std::numbers::pi, 0.0, 1.0, 1.0);  // x'(0) < 0 < x'(1), y' ≡ 0
     EXPECT_TRUE(has_cusp(collinear));
     const SegmentEnergy f = segment_energy_fast(collinear), r = segment_energy_reference(collinear);
     EXPECT_TRUE(f.cusp && r.cusp);
@@ -95,8 +95,7 @@ TEST(PseudoEnergyMinimum, FastAgreesWithReferenceAndIsStationary) {
         EXPECT_NEAR(f.r1, r.r1, 1e-8);
         EXPECT_LT(f.gradient_norm, 1e-8 * (1 + f.pseudo_energy));
         // No nearby (r0, r1) is lower.
-        for (double d : {-1e-3, 1e-3})
-            EXPECT_GE(segment_energy_fast(UnitChordHermite(p.first, p.second, f.r0 * std::exp(d), f.r1), false).pseudo_energy, f.pseudo_energy);
+        for (double d : {-1e-3, 1e-3}) EXPECT_GE(segment_energy_fast(UnitChordHermite(p.first, p.second, f.r0 * std::exp(d), f.r1), false).pseudo_energy, f.pseudo_energy);
     }
 }
 

@@ -36,8 +36,8 @@ PointList points(std::initializer_list<std::pair<double, double>> xy) {
     return p;
 }
 
-const PointList kNewberyGarrett = points({{0.0, 5.0}, {0.3, 2.5}, {1.5, 1.5}, {2.3, 1.25}, {2.5, 2.5}, {3.0, 3.5}, {5.0, 3.75},
-                                          {5.5, 3.3}, {5.75, 1.0}, {7.0, 1.0}, {8.0, 0.75}, {9.0, 3.5}, {10.0, 3.75}});
+const PointList kNewberyGarrett =
+    points({{0.0, 5.0}, {0.3, 2.5}, {1.5, 1.5}, {2.3, 1.25}, {2.5, 2.5}, {3.0, 3.5}, {5.0, 3.75}, {5.5, 3.3}, {5.75, 1.0}, {7.0, 1.0}, {8.0, 0.75}, {9.0, 3.5}, {10.0, 3.75}});
 const PointList kKnot = points({{0.0, 0.0}, {2.0, -0.1}, {1.0, -0.1}, {3.0, 0.0}});
 
 double angle_of(const Eigen::RowVectorXd& v) { return std::atan2(v(1), v(0)); }
@@ -85,8 +85,7 @@ TEST(CubicSplines, ChordLengthSplineBIsC2InItsParameterWithNaturalEnds) {
             const Eigen::MatrixXd left = c.jet(k - 1e-13, 2), right = c.jet(next == 0 ? 0.0 : k, 2);
             // dr/dτ = r'(t)/h, d²r/dτ² = r''(t)/h² on each span.
             EXPECT_NEAR((left.row(1) / h(k - 1) - right.row(1) / h(next)).norm(), 0.0, 1e-9) << "C1 at node " << k;
-            EXPECT_NEAR((left.row(2) / (h(k - 1) * h(k - 1)) - right.row(2) / (h(next) * h(next))).norm(), 0.0, 1e-8)
-                << "C2 at node " << k;
+            EXPECT_NEAR((left.row(2) / (h(k - 1) * h(k - 1)) - right.row(2) / (h(next) * h(next))).norm(), 0.0, 1e-8) << "C2 at node " << k;
         }
         if (!closed) {
             EXPECT_NEAR(c.jet(0, 2).row(2).norm(), 0.0, 1e-10) << "natural start";
@@ -130,11 +129,9 @@ TEST(HermiteCurves, HermiteAUsesNeighbourChordsAndChordLengthMagnitudes) {
     const PiecewiseHermiteCurve c = spline::hermite_interpolant(kNewberyGarrett, t, false);
     EXPECT_NEAR(c.start_derivatives().row(3).norm(), (kNewberyGarrett.row(4) - kNewberyGarrett.row(3)).norm(), 1e-14);
     EXPECT_NEAR(c.end_derivatives().row(3).norm(), (kNewberyGarrett.row(4) - kNewberyGarrett.row(3)).norm(), 1e-14);
-    EXPECT_THROW(spline::hermite_tangent_directions(points({{0, 0}, {1, 0}, {0, 0.0}}), spline::TangentRule::chord_of_neighbours, false),
-                 InvalidInput)
+    EXPECT_THROW(spline::hermite_tangent_directions(points({{0, 0}, {1, 0}, {0, 0.0}}), spline::TangentRule::chord_of_neighbours, false), InvalidInput)
         << "P0 = P2: no direction (and coincident points)";
-    EXPECT_THROW(spline::hermite_tangent_directions(points({{0, 0}, {1, 0}, {0.0, 0.0}, {2, 0}}), spline::TangentRule::circle, false),
-                 InvalidInput)
+    EXPECT_THROW(spline::hermite_tangent_directions(points({{0, 0}, {1, 0}, {0.0, 0.0}, {2, 0}}), spline::TangentRule::circle, false), InvalidInput)
         << "an exact reversal with equal chords";
 }
 
@@ -270,7 +267,7 @@ TEST(PseudoSpline, LengthAndAreaOfEq16To21MatchIntegrationWithExactSegments) {
     EXPECT_NEAR(ps.area_from_tables(), analysis::enclosed_area(ps.curve), 1e-11);
     // Open curve: the region is closed by the line from the last point to the first (eq 19, 21).
     const PseudoSpline open = pseudo_spline(points({{0.5, 0.2}, {1, 0.8}, {2.5, 0.6}, {3, -0.4}}), ExactOracle{}, TangentOptimization::none, false);
-    const double closing = 0.5 * (3 * 0.2 - (-0.4) * 0.5);   // ½(x_n y_0 − y_n x_0), the line back to P_0
+    const double closing = 0.5 * (3 * 0.2 - (-0.4) * 0.5);  // ½(x_n y_0 − y_n x_0), the line back to P_0
     EXPECT_NEAR(open.area_from_tables(), analysis::enclosed_area(open.curve) + closing, 1e-11);
 }
 
@@ -296,7 +293,7 @@ TEST(AngleMinimumTable, FromTheEnergyTableIsSymmetricAndZeroAtZero) {
     const PseudoEnergyTable t = PseudoEnergyTable::build({36, NodePlacement::periodic}, TableMethod::fast);
     const AngleMinimumTable a = AngleMinimumTable::from_energy_table(t);
     EXPECT_EQ(a.lookup(0.0).first, 0.0);
-    for (double th : {0.3, 1.1, 2.0, 3.0}) {   // J(θ) is the minimum over θ1 of the interpolated J(θ, θ1)
+    for (double th : {0.3, 1.1, 2.0, 3.0}) {  // J(θ) is the minimum over θ1 of the interpolated J(θ, θ1)
         EXPECT_NEAR(a.lookup(th).first, a.lookup(-th).first, 1e-9 * a.lookup(th).first) << "J(θ) = J(−θ)";
         // θ1(θ) need not be odd here: the interpolated J(θ, ·) is piecewise bilinear with the
         // same-type switch, and mirrored nodes can pick different minimisers of equal J (the J check above).
@@ -344,8 +341,7 @@ TEST(FairnessMeasures, CountInflectionsCornersOvershootAndCrossings) {
     const analysis::FairnessMeasures g = analysis::fairness_measures(PiecewiseHermiteCurve(nodes, d0, d1), data);
     EXPECT_EQ(g.corners, 1);
     const PiecewiseHermiteCurve near_cusp(nodes, d0, d1);
-    EXPECT_NEAR(analysis::adaptive_arc_length(near_cusp, 1e-12), analysis::romberg_arc_length(near_cusp).value, 1e-10)
-        << "adaptive Gauss–Kronrod at a near-cusp";
+    EXPECT_NEAR(analysis::adaptive_arc_length(near_cusp, 1e-12), analysis::romberg_arc_length(near_cusp).value, 1e-10) << "adaptive Gauss–Kronrod at a near-cusp";
     EXPECT_GT(g.max_spike, analysis::kCornerThreshold);
     // Overshoot: a span bulging above the box of its data.
     d0 << 0, 4;

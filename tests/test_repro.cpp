@@ -5,9 +5,9 @@
 #include <filesystem>
 #include <fstream>
 
+#include "core/csv.hpp"
 #include "core/errors.hpp"
 #include "repro/artifact_run.hpp"
-#include "core/csv.hpp"
 #include "repro/reference.hpp"
 
 using namespace cagd;
@@ -57,7 +57,7 @@ TEST(Repro, RejectsMalformedReferenceFiles) {
 TEST(Repro, EveryReferenceFileOfTheRepositoryLoads) {
     int files = 0;
     for (const auto& e : std::filesystem::recursive_directory_iterator(std::string(CAGD_SOURCE_DIR) + "/reference"))
-        if (e.path().extension() == ".csv" && e.path().parent_path().filename() != "data") {   // data/: point tables
+        if (e.path().extension() == ".csv" && e.path().parent_path().filename() != "data") {  // data/: point tables
             EXPECT_NO_THROW(load_reference(e.path().string())) << e.path();
             ++files;
         }

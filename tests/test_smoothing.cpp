@@ -60,7 +60,7 @@ TEST(ElasticLine, SpringLawEq50CorrectedHoldsAndNaturalEnds) {
     EXPECT_EQ(m(m.size() - 1), 0.0);
     for (std::size_t i = 0; i < d.x.size(); ++i) {
         const Eigen::Index k = static_cast<Eigen::Index>(i);
-        double d2 = 0.0;   // δ²M_i with the terms beyond the ends dropped
+        double d2 = 0.0;  // δ²M_i with the terms beyond the ends dropped
         if (i + 1 < d.x.size()) d2 += (m(k + 1) - m(k)) / (d.x[i + 1] - d.x[i]);
         if (i > 0) d2 -= (m(k) - m(k - 1)) / (d.x[i] - d.x[i - 1]);
         EXPECT_NEAR(line.values()(k, 0) - d.a(k) + d.lambda[i] * d2, 0.0, 1e-12) << "y_i - a_i + lambda_i delta^2 y''_i = 0 at i = " << i;
@@ -86,7 +86,7 @@ TEST(ElasticLine, ZeroLambdaPointEqualsLagrangeFixedPoint) {
     const ElasticLine line = elastic_line(d.x, d.a, d.lambda);
     EXPECT_NEAR(line.values()(4, 0), d.a(4), 1e-14);
     Data e = d;
-    e.lambda[4] = 0.3;   // any spring: the constraint overrides it
+    e.lambda[4] = 0.3;  // any spring: the constraint overrides it
     ElasticLineConstraints c;
     c.fixed_values = {{4, d.a(4)}};
     std::vector<double> lam = e.lambda;
@@ -131,7 +131,7 @@ TEST(ElasticLine, IterationConvergesForSmallLambdaAndReportsDivergence) {
     ASSERT_TRUE(small.outcome.ok()) << small.outcome.message;
     EXPECT_LT((small.line.values() - elastic_line(x, a, 0.01).values()).cwiseAbs().maxCoeff(), 1e-12);
     EXPECT_LT(small.contraction, 48 * 0.01);
-    const ElasticLineIteration large = elastic_line_iterative(x, a, {0.1});   // 48 λ / l³ = 4.8
+    const ElasticLineIteration large = elastic_line_iterative(x, a, {0.1});  // 48 λ / l³ = 4.8
     EXPECT_EQ(large.outcome.status, Status::no_convergence);
     EXPECT_GT(large.contraction, 1.0);
 }
@@ -140,7 +140,7 @@ TEST(ElasticLine, InflectionsAreSignChangesOfSecondDerivatives) {
     const std::vector<double> x{0, 1, 2, 3, 4, 5};
     Eigen::VectorXd zigzag(6), convex(6);
     zigzag << 0, 1, 0, 1, 0, 1;
-    for (int i = 0; i < 6; ++i) convex(i) = 0.1 * i * i + (i % 2 ? 0.3 : -0.3);   // a convex trend plus alternating noise
+    for (int i = 0; i < 6; ++i) convex(i) = 0.1 * i * i + (i % 2 ? 0.3 : -0.3);  // a convex trend plus alternating noise
     EXPECT_EQ(inflection_count(elastic_line(x, zigzag, 0.0)), 3);
     EXPECT_EQ(inflection_count(elastic_line(x, convex, 0.0)), 3);
     EXPECT_EQ(inflection_count(elastic_line(x, convex, 1e3)), 0) << "the stiff line follows the convex trend";
@@ -249,7 +249,7 @@ TEST(SurfaceSmoothing, PlateSolutionIsStationary) {
 TEST(SurfaceSmoothing, OrthonormalPolynomialsAndApproximationOne) {
     const Eigen::MatrixXd psi = discrete_orthonormal_polynomials(5, 3);
     EXPECT_LT((discrete_gram_matrix(psi, 5) - Eigen::MatrixXd::Identity(4, 4)).cwiseAbs().maxCoeff(), 1e-14);
-    Eigen::MatrixXd pair(2, 3);   // ψ_0 = 1 and the printed ψ_2 = (t² − 1)/2: Σ = 2.5, not 0 (erratum hosaka-E12)
+    Eigen::MatrixXd pair(2, 3);  // ψ_0 = 1 and the printed ψ_2 = (t² − 1)/2: Σ = 2.5, not 0 (erratum hosaka-E12)
     pair << 1, 0, 0, -0.5, 0, 0.5;
     EXPECT_NEAR(discrete_gram_matrix(pair, 5)(0, 1), 2.5, 1e-15);
     // Approximation 1 with λ = 0 reproduces a bicubic polynomial exactly (it lies in the span of ψ_i ψ_j).
@@ -264,8 +264,9 @@ TEST(SurfaceSmoothing, OrthonormalPolynomialsAndApproximationOne) {
     for (int i = 0; i < 9; ++i)
         for (int j = 0; j < 7; ++j) {
             EXPECT_NEAR(s.node(i, j)(0, 0), a(i, j), 1e-11);
-            EXPECT_NEAR(s.node(i, j)(1, 0), 3 * x[static_cast<std::size_t>(i)] * x[static_cast<std::size_t>(i)] - 2 * y[static_cast<std::size_t>(j)] * y[static_cast<std::size_t>(j)] +
-                                                std::pow(y[static_cast<std::size_t>(j)], 3),
+            EXPECT_NEAR(s.node(i, j)(1, 0),
+                        3 * x[static_cast<std::size_t>(i)] * x[static_cast<std::size_t>(i)] - 2 * y[static_cast<std::size_t>(j)] * y[static_cast<std::size_t>(j)] +
+                            std::pow(y[static_cast<std::size_t>(j)], 3),
                         1e-10);
         }
 }

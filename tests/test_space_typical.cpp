@@ -57,7 +57,7 @@ TEST(AlexaProduct, RejectsMatricesWithoutARealLogarithm) {
 TEST(LogAestheticSpaceCurve, ConstantRatesGiveTheHelix) {
     const double k = 2.0, tau = 0.8, w = std::hypot(k, tau);
     LogAestheticSpaceParameters p;
-    p.curvature = {1.5, 0.0, std::pow(1.0 / k, 1.5)};   // ρ^α = c1, ρ = 1/κ
+    p.curvature = {1.5, 0.0, std::pow(1.0 / k, 1.5)};  // ρ^α = c1, ρ = 1/κ
     p.torsion = {1.2, 0.0, std::pow(1.0 / tau, 1.2)};
     p.length = 3.0;
     const LogAestheticSpaceCurve c(p);
@@ -87,8 +87,8 @@ TEST(LogAestheticSpaceCurve, GraphsAreLinesOfSlopesAlphaAndBeta) {
     // Singular start (normalised law): the position is still finite and the frame orthonormal.
     const LogAestheticSpaceCurve n(normalized_log_aesthetic_space_parameters(1.5, 1.2, 1.0));
     EXPECT_TRUE(n.point(1.0).allFinite());
-    EXPECT_NEAR(n.curvature_angle(1.0), 1.5, 1e-14);   // θ_κ = α s^{(α−1)/α} at s = 1
-    EXPECT_THROW(n.jet(0.0, 2), InvalidInput);            // κ unbounded at s = 0
+    EXPECT_NEAR(n.curvature_angle(1.0), 1.5, 1e-14);  // θ_κ = α s^{(α−1)/α} at s = 1
+    EXPECT_THROW(n.jet(0.0, 2), InvalidInput);        // κ unbounded at s = 0
 }
 
 TEST(LogAestheticSpaceCurve, RejectsBadParameters) {
@@ -98,9 +98,9 @@ TEST(LogAestheticSpaceCurve, RejectsBadParameters) {
     EXPECT_THROW(normalized_log_aesthetic_space_parameters(1.5, 1.2, 0.0), InvalidInput);
     EXPECT_THROW(normalized_log_aesthetic_space_parameters(std::nan(""), 1.2, 1.0), InvalidInput);
     LogAestheticSpaceParameters p;
-    p.curvature = {1.5, -1.0, 1.0};   // c s + d = 0 at s = L = 1: singular end
+    p.curvature = {1.5, -1.0, 1.0};  // c s + d = 0 at s = L = 1: singular end
     EXPECT_THROW(LogAestheticSpaceCurve{p}, InvalidInput);
-    p.curvature = {1.5, -2.0, 1.0};   // negative on (0.5, 1]
+    p.curvature = {1.5, -2.0, 1.0};  // negative on (0.5, 1]
     EXPECT_THROW(LogAestheticSpaceCurve{p}, InvalidInput);
 }
 
@@ -120,7 +120,7 @@ TEST(SpaceTypicalPolygon, DihedralAnglesShowWhichTorsionRotationIsLost) {
                 EXPECT_NEAR(a.turning[j], poly.curvature_rotations[j], 1e-13);
             } else if (comp == FrenetComposition::tau_then_kappa) {
                 EXPECT_NEAR(a.dihedral[j], rt[j + 1], 1e-13);
-            } else {   // symmetric splitting: third order in the angles
+            } else {  // symmetric splitting: third order in the angles
                 const double h = std::max(rt[j], poly.curvature_rotations[j]);
                 EXPECT_NEAR(a.dihedral[j], 0.5 * (rt[j] + rt[j + 1]), h * h * h) << "j = " << j;
             }

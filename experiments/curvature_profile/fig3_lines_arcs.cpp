@@ -36,7 +36,10 @@ std::string two_digit(int i) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    repro::ArtifactRun run("curvature_profile", "fig3_lines_arcs", "5", "Fig. 3: composite interpolant through 13 points with circular arcs on ④ ⑦ ⑨ and straight lines on the other numbered spans; the converged knot-difference list (section 5)", argc, argv);
+    repro::ArtifactRun run("curvature_profile", "fig3_lines_arcs", "5",
+                           "Fig. 3: composite interpolant through 13 points with circular arcs on ④ ⑦ ⑨ and straight lines on the other numbered spans; the converged "
+                           "knot-difference list (section 5)",
+                           argc, argv);
     const PointList points = read_points_csv(run.reference_path("data/fig3_points.csv"));
     const std::string printed = first_data_line(run.reference_path("data/fig3_knot_list.txt"));
     const KnotDifferenceList list = parse_knot_difference_list(printed, 2);
@@ -52,7 +55,8 @@ int main(int argc, char** argv) {
     run.note("The printed list read as degree 2 has the symbolic form " + format_knot_difference_list(list.layout) + " and as the equivalent degree-3 list " +
              format_knot_difference_list(list.layout.elevated()) + ". " + std::to_string(sol.equations) + " equations (24 interpolation, 10 line, 3 arc) in " +
              std::to_string(sol.unknowns) + " unknowns (13 lengths, 24 de Boor ordinates); the Jacobian has rank " + std::to_string(sol.rank) + ".");
-    run.note("Converged list (ours, Newton with the Moore–Penrose step from the C2 start): " + format_knot_difference_list(problem.layout, lengths, 3) + "; the paper: " + printed + ".");
+    run.note("Converged list (ours, Newton with the Moore–Penrose step from the C2 start): " + format_knot_difference_list(problem.layout, lengths, 3) + "; the paper: " + printed +
+             ".");
 
     // Claims: the single-segment spans.
     for (int i = 0; i < problem.layout.spans(); ++i) {
@@ -115,13 +119,18 @@ int main(int argc, char** argv) {
         lm_dev = std::max(lm_dev, std::abs(lm.segment_lengths()[static_cast<std::size_t>(j)] - lengths[static_cast<std::size_t>(j)]));
         cubic_dev = std::max(cubic_dev, std::abs(cub.segment_lengths()[static_cast<std::size_t>(j)] - lengths[static_cast<std::size_t>(j)]));
     }
-    run.validate("fig3.levenberg_marquardt", "Ceres Levenberg–Marquardt (own central-difference Jacobian) from the same start: largest difference of the 11 determined span lengths", lm_dev, 0.0, 1e-8,
+    run.validate("fig3.levenberg_marquardt",
+                 "Ceres Levenberg–Marquardt (own central-difference Jacobian) from the same start: largest difference of the 11 determined span lengths", lm_dev, 0.0, 1e-8,
                  "LM stops at ‖f‖∞ ≤ 1e-9·scale with a finite-difference Jacobian (measured ≤ 1e-10)");
-    run.validate("fig3.degree3_equivalent", "the same design as a degree-3 ψ (triple/double knots, linear curvature on free segments): largest difference of the 11 determined span lengths", cubic_dev, 0.0, 1e-10,
-                 "two Newton solutions to ‖f‖∞ ≤ 1e-12·scale (measured ≤ 1e-13)");
+    run.validate("fig3.degree3_equivalent",
+                 "the same design as a degree-3 ψ (triple/double knots, linear curvature on free segments): largest difference of the 11 determined span lengths", cubic_dev, 0.0,
+                 1e-10, "two Newton solutions to ‖f‖∞ ≤ 1e-12·scale (measured ≤ 1e-13)");
     const double cubic_second = pinned(cubic.layout, cubic.shapes, s10, paper_first)[static_cast<std::size_t>(s10) + 1];
-    run.validate("fig3.degree3_pinned_span10", "span ⑩'s second segment given the first = 2.053, degree-3 formulation against degree 2", cubic_second, second_given_first, 1e-10, "two Newton solutions (measured ≤ 1e-13)");
-    auto pair = [&](const std::vector<double>& l) { return "(" + format_number(l[static_cast<std::size_t>(s10)], 5) + ", " + format_number(l[static_cast<std::size_t>(s10) + 1], 5) + ")"; };
+    run.validate("fig3.degree3_pinned_span10", "span ⑩'s second segment given the first = 2.053, degree-3 formulation against degree 2", cubic_second, second_given_first, 1e-10,
+                 "two Newton solutions (measured ≤ 1e-13)");
+    auto pair = [&](const std::vector<double>& l) {
+        return "(" + format_number(l[static_cast<std::size_t>(s10)], 5) + ", " + format_number(l[static_cast<std::size_t>(s10) + 1], 5) + ")";
+    };
     run.note("Span ⑩ is a one-parameter family (ERRATA curvature_profile-E2): the Moore–Penrose Newton gives " + pair(lengths) + ", Ceres LM " + pair(lm.segment_lengths()) +
              ", the degree-3 formulation " + pair(cub.segment_lengths()) + "; all pass through the points. Given the printed first segment 2.053 the second is " +
              format_number(second_given_first, 6) + "; given the printed second 1.806 the first is " + format_number(first_given_second, 6) + ".");
@@ -136,20 +145,25 @@ int main(int argc, char** argv) {
     double inside = 0.0;
     for (int i = 0; i < null.size(); ++i) {
         const bool in10 = i < problem.layout.independent_lengths() ? problem.layout.span_of_segment(i) == 9
-                                                                    : greville[static_cast<std::size_t>(i - problem.layout.independent_lengths())] > lo && greville[static_cast<std::size_t>(i - problem.layout.independent_lengths())] < hi;
+                                                                   : greville[static_cast<std::size_t>(i - problem.layout.independent_lengths())] > lo &&
+                                                                         greville[static_cast<std::size_t>(i - problem.layout.independent_lengths())] < hi;
         if (in10) inside += null(i) * null(i);
     }
-    run.validate("fig3.null_vector_in_span10", "share of the Jacobian's null vector (smallest singular value) outside span ⑩'s two lengths and interior ordinates", 1.0 - inside, 0.0, 1e-8,
-                 "rounding in the SVD of a 37×37 matrix (measured ≤ 1e-14)");
+    run.validate("fig3.null_vector_in_span10", "share of the Jacobian's null vector (smallest singular value) outside span ⑩'s two lengths and interior ordinates", 1.0 - inside,
+                 0.0, 1e-8, "rounding in the SVD of a 37×37 matrix (measured ≤ 1e-14)");
     run.note("Singular values of J at the solution: largest " + format_number(sv(0), 4) + ", two smallest " + format_number(sv(sv.size() - 2), 4) + " and " +
-             (sv(sv.size() - 1) < 1e-14 ? std::string("below 1e-14") : format_number(sv(sv.size() - 1), 3)) + ": numerically rank 36 — one redundant equation (the line ⑤ re-imposes the tangent the quarter circle ④ already ends with) and the free split of ⑩.");
+             (sv(sv.size() - 1) < 1e-14 ? std::string("below 1e-14") : format_number(sv(sv.size() - 1), 3)) +
+             ": numerically rank 36 — one redundant equation (the line ⑤ re-imposes the tangent the quarter circle ④ already ends with) and the free split of ⑩.");
 
     // Figure data.
     CsvWriter pts = run.table("fig3_points.csv", {"x", "y"});
     for (Eigen::Index i = 0; i < points.rows(); ++i) pts.row({points(i, 0), points(i, 1)});
     CsvWriter out = run.table("fig3_curve.csv", {"s", "x", "y", "psi", "kappa", "span"});
-    for (const ProfileSample& q : curvature_profile_samples(curve, 40)) out.row({q.s, q.x, q.y, q.psi, q.kappa, static_cast<double>(problem.layout.span_of_segment(q.segment) + 1)});
-    run.figure("fig3", "Fig. 3 redrawn: the composite interpolant through the 13 points (left; arcs ④ ⑦ ⑨, lines ① ③ ⑤ ⑧ ⑫) and its curvature profile κ(s) (right), piecewise 0th (lines, arcs) and 1st degree; κ jumps at the G1 joins.");
+    for (const ProfileSample& q : curvature_profile_samples(curve, 40))
+        out.row({q.s, q.x, q.y, q.psi, q.kappa, static_cast<double>(problem.layout.span_of_segment(q.segment) + 1)});
+    run.figure("fig3",
+               "Fig. 3 redrawn: the composite interpolant through the 13 points (left; arcs ④ ⑦ ⑨, lines ① ③ ⑤ ⑧ ⑫) and its curvature profile κ(s) (right), piecewise 0th (lines, "
+               "arcs) and 1st degree; κ jumps at the G1 joins.");
     run.figure("fig3_newton", "Newton with the Moore–Penrose step from the C2 start: ‖f‖∞ per iteration (quadratic convergence).");
     return run.finish();
 }

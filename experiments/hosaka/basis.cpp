@@ -26,8 +26,7 @@ Rational inv_factorial(int n) { return n < 0 ? Rational(0) : Rational(1) / facto
 Rational derivative_at(const RationalPolynomial& p, int k, const Rational& t) { return p.derivative(k)(t); }
 
 // Count the (m, i, k) cases, m = 0..5, i = 0..m, k in [k_lo(m), k_hi(m)], where `holds` is false.
-long count_failures(const std::function<int(int)>& k_lo, const std::function<int(int)>& k_hi,
-                    const std::function<bool(int, int, int)>& holds) {
+long count_failures(const std::function<int(int)>& k_lo, const std::function<int(int)>& k_hi, const std::function<bool(int, int, int)>& holds) {
     long failures = 0;
     for (int m = 0; m <= kMaxM; ++m)
         for (int i = 0; i <= m; ++i)
@@ -44,16 +43,15 @@ Rational eq7_p0_printed(int m, int i, int k) {
 // ... corrected (derived by differentiating eq 2 at t = 0): (2m+1−i)! k! in the numerator.
 Rational eq7_p0_corrected(int m, int i, int k) {
     Rational s = 0;
-    for (int j = 0; j <= m - i; ++j)
-        s += sign(i + j - k) * factorial(2 * m + 1 - i) * factorial(k) * inv_factorial(j) * inv_factorial(k - i - j) * inv_factorial(2 * m + 1 - k);
+    for (int j = 0; j <= m - i; ++j) s += sign(i + j - k) * factorial(2 * m + 1 - i) * factorial(k) * inv_factorial(j) * inv_factorial(k - i - j) * inv_factorial(2 * m + 1 - k);
     return s / factorial(i);
 }
 // eq (7) as printed, second line: p_i^{(k)}(m, 1) = (1/i!) Σ_j (−1)^{i+j−k} (2m+1−i)!/(j!(2m+1−i−j)!) · k!(i+j)!/((k−2m−1+i+j)!(2m+1−k)!)
 Rational eq7_p1(int m, int i, int k, bool printed_sign) {
     Rational s = 0;
     for (int j = 0; j <= m - i; ++j)
-        s += sign(printed_sign ? i + j - k : i + j - 1) * factorial(2 * m + 1 - i) * inv_factorial(j) * inv_factorial(2 * m + 1 - i - j) * factorial(k) *
-             factorial(i + j) * inv_factorial(k - 2 * m - 1 + i + j) * inv_factorial(2 * m + 1 - k);
+        s += sign(printed_sign ? i + j - k : i + j - 1) * factorial(2 * m + 1 - i) * inv_factorial(j) * inv_factorial(2 * m + 1 - i - j) * factorial(k) * factorial(i + j) *
+             inv_factorial(k - 2 * m - 1 + i + j) * inv_factorial(2 * m + 1 - k);
     return s / factorial(i);
 }
 
@@ -74,15 +72,11 @@ int main(int argc, char** argv) {
     const auto none_k = [](int) { return 0; };
 
     // (3), (4), (5): end derivatives up to order m.
-    run.check("eq3.p_at_0", double(count_failures(from_0, zero_to_m, [](int m, int i, int k) {
-                  return derivative_at(hosaka_p(m, i), k, kZero) == (i == k ? kOne : kZero);
-              })));
-    run.check("eq4.q_at_1", double(count_failures(from_0, zero_to_m, [](int m, int i, int k) {
-                  return derivative_at(hosaka_q(m, i), k, kOne) == (i == k ? kOne : kZero);
-              })));
-    run.check("eq5.p_at_1_and_q_at_0", double(count_failures(from_0, zero_to_m, [](int m, int i, int k) {
-                  return derivative_at(hosaka_p(m, i), k, kOne) == 0 && derivative_at(hosaka_q(m, i), k, kZero) == 0;
-              })));
+    run.check("eq3.p_at_0", double(count_failures(from_0, zero_to_m, [](int m, int i, int k) { return derivative_at(hosaka_p(m, i), k, kZero) == (i == k ? kOne : kZero); })));
+    run.check("eq4.q_at_1", double(count_failures(from_0, zero_to_m, [](int m, int i, int k) { return derivative_at(hosaka_q(m, i), k, kOne) == (i == k ? kOne : kZero); })));
+    run.check(
+        "eq5.p_at_1_and_q_at_0",
+        double(count_failures(from_0, zero_to_m, [](int m, int i, int k) { return derivative_at(hosaka_p(m, i), k, kOne) == 0 && derivative_at(hosaka_q(m, i), k, kZero) == 0; })));
     // (1): the representation reproduces every polynomial of degree 2m+1 (checked on t^d, d ≤ 2m+1).
     long rep_failures = 0;
     for (int m = 0; m <= kMaxM; ++m)
@@ -153,10 +147,8 @@ int main(int argc, char** argv) {
     // (11): p_m, q_m and the (m+1)-th end derivatives.
     long eq11_pm = 0, eq11_const = 0;
     for (int m = 0; m <= kMaxM; ++m) {
-        eq11_pm += pm(m) == t.power(m) * t_minus_1.power(m + 1) * (sign(m - 1) / factorial(m)) &&
-                           qm(m) == t.power(m + 1) * t_minus_1.power(m) * (Rational(1) / factorial(m))
-                       ? 0
-                       : 1;
+        eq11_pm +=
+            pm(m) == t.power(m) * t_minus_1.power(m + 1) * (sign(m - 1) / factorial(m)) && qm(m) == t.power(m + 1) * t_minus_1.power(m) * (Rational(1) / factorial(m)) ? 0 : 1;
         for (int i = 0; i <= m; ++i) {
             eq11_const += derivative_at(hosaka_p(m, i), m + 1, kZero) == p_m1_at_0(m, i) ? 0 : 1;
             eq11_const += derivative_at(hosaka_p(m, i), m + 1, kOne) == p_m1_at_1(m, i) ? 0 : 1;
@@ -203,8 +195,8 @@ int main(int argc, char** argv) {
                                       std::abs(b.q(i, tt, k) - static_cast<double>(derivative_at(hosaka_q(m, i), k, tr)))});
                 }
     }
-    run.validate("basis.double_vs_exact", "HosakaBasis (double, Horner) vs the exact rational basis: max |difference| over m ≤ 5, all i, k ≤ 2m+1, t = s/16",
-                 worst, 0.0, 1e-7, "rounding of coefficients up to 11!/… ≈ 1e6 in the 11th derivative, relative 1e-13");
+    run.validate("basis.double_vs_exact", "HosakaBasis (double, Horner) vs the exact rational basis: max |difference| over m ≤ 5, all i, k ≤ 2m+1, t = s/16", worst, 0.0, 1e-7,
+                 "rounding of coefficients up to 11!/… ≈ 1e6 in the 11th derivative, relative 1e-13");
     // Figure: the basis for m = 1 and m = 2 (what eq 12 and 14 print).
     {
         CsvWriter fig = run.table("fig_basis.csv", {"t", "m1_p0", "m1_q0", "m1_p1", "m1_q1", "m2_p0", "m2_q0", "m2_p1", "m2_q1", "m2_p2", "m2_q2"});

@@ -43,9 +43,8 @@ RationalPolynomial printed_bracket(int m, int j, int k, int s) {
     const RationalPolynomial pj = spline::hosaka_p(m, j), qj = spline::hosaka_q(m, j);
     const RationalPolynomial b = k == 0 ? pj : qj, prev = j == 0 ? RationalPolynomial() : (k == 0 ? spline::hosaka_p(m, j - 1) : spline::hosaka_q(m, j - 1));
     const RationalPolynomial first_prime = m >= 1 ? (k == 0 ? spline::hosaka_p(m, 1) : spline::hosaka_q(m, 1)).derivative() : RationalPolynomial();
-    if (s == 0)
-        return Rational(-j) * pj + (k == 0 ? prev : RationalPolynomial()) + first_prime * v_minus_1 + b.derivative(m + 1)(0) * spline::hosaka_p(m, m);
-    return identity40_bracket(m, j, k, s);   // the y_1' brackets are printed right
+    if (s == 0) return Rational(-j) * pj + (k == 0 ? prev : RationalPolynomial()) + first_prime * v_minus_1 + b.derivative(m + 1)(0) * spline::hosaka_p(m, m);
+    return identity40_bracket(m, j, k, s);  // the y_1' brackets are printed right
 }
 
 }  // namespace
@@ -74,7 +73,7 @@ int main(int argc, char** argv) {
                         const double direct = a.derivative_direct(x, y, i, n);
                         induction = std::max(induction, std::abs(a.derivative(x, y, i, n) - direct) / (1 + std::abs(direct)));
                     }
-                if (sx > 0 && sx < 8 && v > 0 && v < 1) {   // Taylor jets against a fourth-order central difference in x
+                if (sx > 0 && sx < 8 && v > 0 && v < 1) {  // Taylor jets against a fourth-order central difference in x
                     const double h = 1e-3;
                     const double fd = (-a.value(x + 2 * h, y) + 8 * a.value(x + h, y) - 8 * a.value(x - h, y) + a.value(x - 2 * h, y)) / (12 * h);
                     fd_gap = std::max(fd_gap, std::abs(fd - a.derivative_direct(x, y, 1, 0)));
@@ -102,11 +101,13 @@ int main(int argc, char** argv) {
         for (int i = 0; i <= m + 1; ++i) {
             const std::size_t ii = static_cast<std::size_t>(i);
             seam_table.row({double(m), double(i), jump[ii], code_jump[ii], size[ii]}, 6);
-            if (i <= m) seam = std::max(seam, jump[ii] / size[ii]);
-            else seam_next = std::min(seam_next, jump[ii] / size[ii]);
+            if (i <= m)
+                seam = std::max(seam, jump[ii] / size[ii]);
+            else
+                seam_next = std::min(seam_next, jump[ii] / size[ii]);
         }
         if (m != 1) continue;
-        for (int s = 0; s <= 20; ++s) {   // Fig. 5 analogue, m = 1: S^A on [0, 2], S^B from x0 to x_3(y)
+        for (int s = 0; s <= 20; ++s) {  // Fig. 5 analogue, m = 1: S^A on [0, 2], S^B from x0 to x_3(y)
             for (int t = 0; t <= 12; ++t) {
                 const double x = 2.0 * s / 20, y = a.y_lower(x) + (a.y_upper(x) - a.y_lower(x)) * t / 12;
                 fig.row({0, double(s), double(t), x, y, a.value(x, y)});
@@ -135,10 +136,11 @@ int main(int argc, char** argv) {
                 }
     run.check("eq40.identity", printed_nonzero, corrected_nonzero);
     run.check("eq43.seam_continuity", seam);
-    run.validate("seam_difference_error", "the one-sided 7-point stencil (h = 0.02) on S^A alone vs its analytic zeta^(i,0), i ≤ m (relative): the resolution of eq43.seam_continuity",
-                 fd_error, 0.0, 1e-6, "truncation O(h^5) for i = 2");
-    run.validate("jets_vs_finite_differences", "ζ^(1,0) by Taylor arithmetic vs a fourth-order central difference (h = 1e-3) inside the sections, m = 1, 2",
-                 fd_gap, 0.0, 1e-9, "truncation O(h^4) and rounding O(1e-16/h)");
+    run.validate("seam_difference_error",
+                 "the one-sided 7-point stencil (h = 0.02) on S^A alone vs its analytic zeta^(i,0), i ≤ m (relative): the resolution of eq43.seam_continuity", fd_error, 0.0, 1e-6,
+                 "truncation O(h^5) for i = 2");
+    run.validate("jets_vs_finite_differences", "ζ^(1,0) by Taylor arithmetic vs a fourth-order central difference (h = 1e-3) inside the sections, m = 1, 2", fd_gap, 0.0, 1e-9,
+                 "truncation O(h^4) and rounding O(1e-16/h)");
     std::string note40 = "Eq (40): of the ";
     note40 += std::to_string(brackets);
     run.note(note40 + " brackets (m = 0..5, j = 0..m, two boundaries, two slopes) the transcribed form leaves " + std::to_string(printed_nonzero) +

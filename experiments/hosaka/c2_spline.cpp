@@ -6,8 +6,8 @@
 #include <cmath>
 
 #include "analysis/curve_measures.hpp"
-#include "curve_data.hpp"
 #include "analysis/fairness_measures.hpp"
+#include "curve_data.hpp"
 #include "repro/artifact_run.hpp"
 #include "spline/hermite_spline.hpp"
 #include "spline/hosaka_spline.hpp"
@@ -15,8 +15,7 @@
 using namespace cagd;
 using namespace cagd::spline;
 
-namespace {
-}  // namespace
+namespace {}  // namespace
 
 int main(int argc, char** argv) {
     repro::ArtifactRun run("hosaka", "c2_spline", "3", "The C2 spline with scale factors (eq 16-20) and the conventional k = 1", argc, argv);
@@ -51,26 +50,29 @@ int main(int argc, char** argv) {
     const int xc = analysis::self_intersections(chord.curve), xu = analysis::self_intersections(unit.curve);
     const bool unexpected = fu.bending_energy >= 1.5 * fc.bending_energy || xu > xc || fu.curvature_sign_changes > fc.curvature_sign_changes;
     run.check("sec3.unit_scale_unexpected_when_k_varies", unexpected ? 1.0 : 0.0);
-    CsvWriter t = run.table("scale_comparison.csv", {"data", "scale", "k_min", "k_max", "length", "bending_energy", "curvature_sign_changes",
-                                                            "max_abs_curvature", "overshoot", "self_intersections"});
+    CsvWriter t = run.table("scale_comparison.csv",
+                            {"data", "scale", "k_min", "k_max", "length", "bending_energy", "curvature_sign_changes", "max_abs_curvature", "overshoot", "self_intersections"});
     const auto row = [&](const char* data, const char* scale, const HosakaSpline& s, const PointList& p) {
         const analysis::FairnessMeasures f = analysis::fairness_measures(s.curve, p);
         double kmin = INFINITY, kmax = 0;
         for (double k : s.k) kmin = std::min(kmin, k), kmax = std::max(kmax, k);
-        t.row_text({data, scale, format_number(kmin, 4), format_number(kmax, 4), format_number(f.length, 8),
-                    format_number(f.bending_energy, 8), std::to_string(f.curvature_sign_changes), format_number(f.max_abs_curvature, 6),
-                    format_number(f.overshoot, 4), std::to_string(analysis::self_intersections(s.curve))});
+        t.row_text({data, scale, format_number(kmin, 4), format_number(kmax, 4), format_number(f.length, 8), format_number(f.bending_energy, 8),
+                    std::to_string(f.curvature_sign_changes), format_number(f.max_abs_curvature, 6), format_number(f.overshoot, 4),
+                    std::to_string(analysis::self_intersections(s.curve))});
     };
     row("uneven", "chord (eq 19)", chord, uneven);
     row("uneven", "unit (k = 1)", unit, uneven);
     row("even", "chord (eq 19)", even_chord, even);
     row("even", "unit (k = 1)", even_unit, even);
-    run.note("Data (ours; the paper gives none for this claim): uneven = (0,0), (1,0.8), (1.15,0.95), (3,1.2), (3.2,0.9), (5,0); even = (i, sin i), i = 0..6. "
-             "'About the same' = within 1 % of the data diagonal (even data: " + format_number(100 * even_gap, 3) +
-             " %); 'not the expected shape' = bending energy at least 1.5 times that of the scaled curve, or more inflections, or a loop the scaled curve has not (uneven data: energy " +
-             format_number(fu.bending_energy, 5) + " vs " + format_number(fc.bending_energy, 5) + ", inflections " +
-             std::to_string(fu.curvature_sign_changes) + " vs " + std::to_string(fc.curvature_sign_changes) + ", crossings " + std::to_string(xu) + " vs " +
-             std::to_string(xc) + "). Measures: [scale_comparison.csv](hosaka/scale_comparison.csv).");
+    run.note(
+        "Data (ours; the paper gives none for this claim): uneven = (0,0), (1,0.8), (1.15,0.95), (3,1.2), (3.2,0.9), (5,0); even = (i, sin i), i = 0..6. "
+        "'About the same' = within 1 % of the data diagonal (even data: " +
+        format_number(100 * even_gap, 3) +
+        " %); 'not the expected shape' = bending energy at least 1.5 times that of the scaled curve, or more inflections, or a loop the scaled curve has not (uneven data: "
+        "energy " +
+        format_number(fu.bending_energy, 5) + " vs " + format_number(fc.bending_energy, 5) + ", inflections " + std::to_string(fu.curvature_sign_changes) + " vs " +
+        std::to_string(fc.curvature_sign_changes) + ", crossings " + std::to_string(xu) + " vs " + std::to_string(xc) +
+        "). Measures: [scale_comparison.csv](hosaka/scale_comparison.csv).");
 
     // Independent implementations: the chord-length and uniform cubic splines of spline/hermite_spline
     // (tridiagonal in the global parameter τ) are the same curves.
@@ -79,12 +81,11 @@ int main(int argc, char** argv) {
         oc.closed = ou.closed = closed;
         const std::string tag = closed ? "closed" : "open";
         run.validate("sec3.chord_scale_is_chord_length_spline_" + tag, "k_i of eq (19) vs the chord-length cubic spline (" + tag + "): max distance",
-                     analysis::max_distance_same_parameter(hosaka_c2_spline(uneven, oc).curve,
-                                                           cubic_spline_interpolant(uneven, ParameterSpacing::chord_length, closed)),
-                     0.0, 1e-12, "rounding");
+                     analysis::max_distance_same_parameter(hosaka_c2_spline(uneven, oc).curve, cubic_spline_interpolant(uneven, ParameterSpacing::chord_length, closed)), 0.0,
+                     1e-12, "rounding");
         run.validate("sec3.unit_scale_is_uniform_spline_" + tag, "k_i = 1 vs the uniform-parameter cubic spline (" + tag + "): max distance",
-                     analysis::max_distance_same_parameter(hosaka_c2_spline(uneven, ou).curve, cubic_spline_interpolant(uneven, ParameterSpacing::uniform, closed)),
-                     0.0, 1e-12, "rounding");
+                     analysis::max_distance_same_parameter(hosaka_c2_spline(uneven, ou).curve, cubic_spline_interpolant(uneven, ParameterSpacing::uniform, closed)), 0.0, 1e-12,
+                     "rounding");
     }
 
     // Figure data: both curves on both data sets, with curvature.
@@ -98,6 +99,7 @@ int main(int argc, char** argv) {
         }
         ++data_index;
     }
-    run.figure("fig_scale", "Hosaka's C2 spline with scale factors k_i = |A_i|/|A_{i+1}| (eq 19) and with k_i = 1, on uneven and even data (top), and their curvature κ(s) (bottom).");
+    run.figure("fig_scale",
+               "Hosaka's C2 spline with scale factors k_i = |A_i|/|A_{i+1}| (eq 19) and with k_i = 1, on uneven and even data (top), and their curvature κ(s) (bottom).");
     return run.finish();
 }

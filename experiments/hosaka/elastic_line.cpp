@@ -50,14 +50,14 @@ Residuals derivation_residuals(const Vec& x, const Eigen::VectorXd& a, const Vec
     const Eigen::VectorXd y = c.values.col(0), s = c.slopes.col(0);
     Eigen::VectorXd m(static_cast<Eigen::Index>(n));
     for (std::size_t i = 0; i < n; ++i) m(static_cast<Eigen::Index>(i)) = c.evaluate(x[i], 2)(0);
-    const auto l = [&](std::size_t i) { return x[i] - x[i - 1]; };   // l_i = x_i − x_{i−1}
+    const auto l = [&](std::size_t i) { return x[i] - x[i - 1]; };  // l_i = x_i − x_{i−1}
     const double scale_a = a.cwiseAbs().maxCoeff();
     double scale_rhs = 0.0;
     for (std::size_t i = 1; i + 1 < n; ++i) scale_rhs = std::max(scale_rhs, std::abs(6 * second_difference(x, a, i)));
     Residuals r;
     for (std::size_t i = 0; i < n; ++i) {
         const Eigen::Index k = static_cast<Eigen::Index>(i);
-        double bracket = 0.0;   // eq (48)'s bracket, one-sided at the ends
+        double bracket = 0.0;  // eq (48)'s bracket, one-sided at the ends
         if (i > 0) bracket += 12 * (y(k) - y(k - 1)) / std::pow(l(i), 3) - 6 * s(k - 1) / std::pow(l(i), 2) - 6 * s(k) / std::pow(l(i), 2);
         if (i + 1 < n) bracket += -12 * (y(k + 1) - y(k)) / std::pow(l(i + 1), 3) + 6 * s(k) / std::pow(l(i + 1), 2) + 6 * s(k + 1) / std::pow(l(i + 1), 2);
         r.eq48 = std::max(r.eq48, std::abs(y(k) - a(k) + lambda[i] * bracket) / scale_a);
@@ -165,14 +165,15 @@ int main(int argc, char** argv) {
     run.check("eq50.spring_law", worst.eq50_printed, worst.eq50_corrected);
     run.check("eq51.five_term_system", worst.eq51);
     run.check("eq52.curve", worst_eq52);
-    run.validate("five_term_vs_hermite_minimisation", "curve from the five-term system (51) vs direct minimisation of V (eq 44) over Hermite (y_i, y'_i): largest distance, relative to max |a|, over Fig. 7's λ and the per-point-λ set",
+    run.validate("five_term_vs_hermite_minimisation",
+                 "curve from the five-term system (51) vs direct minimisation of V (eq 44) over Hermite (y_i, y'_i): largest distance, relative to max |a|, over Fig. 7's λ and "
+                 "the per-point-λ set",
                  worst_gap, 0.0, 1e-10, "the issue's bound; measured at rounding level");
 
     // The paper's iteration from λ = 0.
     const double small = 0.01;
     const ElasticLineIteration it = elastic_line_iterative(x, a, {small});
-    run.check("sec6.iteration_converges_for_small_lambda",
-              it.outcome.ok() && (it.line.values() - elastic_line(x, a, small).values()).cwiseAbs().maxCoeff() < 1e-12 ? 1.0 : 0.0);
+    run.check("sec6.iteration_converges_for_small_lambda", it.outcome.ok() && (it.line.values() - elastic_line(x, a, small).values()).cwiseAbs().maxCoeff() < 1e-12 ? 1.0 : 0.0);
     // Convergence exactly when ρ < 1: a sweep of λ (log-spaced, 1e-3..1), leaving out λ within 2 %
     // of ρ = 1, where the iteration is too slow to decide in its iteration budget.
     int mismatches = 0, swept = 0;
@@ -182,8 +183,10 @@ int main(int argc, char** argv) {
         ++swept;
         if (elastic_line_iterative(x, a, {lam}).outcome.ok() != (rho < 1.0)) ++mismatches;
     }
-    run.validate("iteration_converges_iff_spectral_radius_below_one", "λ of a log-spaced sweep 1e-3..1 where the iteration's outcome (converged or not) disagrees with ρ(6 R^-1 Q^T Λ Q) < 1 from a dense eigen-solver (" +
-                 std::to_string(swept) + " values)", mismatches, 0.0, 0.0, "count, exact");
+    run.validate("iteration_converges_iff_spectral_radius_below_one",
+                 "λ of a log-spaced sweep 1e-3..1 where the iteration's outcome (converged or not) disagrees with ρ(6 R^-1 Q^T Λ Q) < 1 from a dense eigen-solver (" +
+                     std::to_string(swept) + " values)",
+                 mismatches, 0.0, 0.0, "count, exact");
     std::string iteration_note = "The iteration from λ = 0 (text after eq 51) converges only while the spectral radius ρ of 6 R⁻¹QᵀΛQ is below 1. On our Fig. 7 data: ";
     for (double lam : lambdas) {
         if (lam == 0.0) continue;
@@ -193,7 +196,8 @@ int main(int argc, char** argv) {
     }
     // λ where ρ = 1 (ρ is linear in λ).
     iteration_note += "ρ = 1 at λ = " + format_number(1.0 / iteration_spectral_radius(x, 1.0), 4) +
-                      " (for many equally spaced points the bound tends to l³/48). So the iteration serves only for λ small against the cube of the spacing; elastic_line solves (51) directly (banded LDLᵀ), which has no such limit.";
+                      " (for many equally spaced points the bound tends to l³/48). So the iteration serves only for λ small against the cube of the spacing; elastic_line solves "
+                      "(51) directly (banded LDLᵀ), which has no such limit.";
     run.note(iteration_note);
 
     // Fig. 7: inflections for λ = 0, 0.1, 1.0.
@@ -216,7 +220,8 @@ int main(int argc, char** argv) {
             curves.row(row);
         }
         CsvWriter points = run.table("fig7_points.csv", {"x", "a", "y_lambda0.1", "y_lambda1"});
-        for (std::size_t i = 0; i < x.size(); ++i) points.row({x[i], a(static_cast<Eigen::Index>(i)), lines[1].values()(static_cast<Eigen::Index>(i), 0), lines[2].values()(static_cast<Eigen::Index>(i), 0)});
+        for (std::size_t i = 0; i < x.size(); ++i)
+            points.row({x[i], a(static_cast<Eigen::Index>(i)), lines[1].values()(static_cast<Eigen::Index>(i), 0), lines[2].values()(static_cast<Eigen::Index>(i), 0)});
     }
     run.figure("fig7_curves", "Fig. 7 analogue: our five points smoothed with λ = 0 (the interpolating spline), 0.1 and 1.0; the legend gives each curve's inflection count.");
 
@@ -239,9 +244,10 @@ int main(int argc, char** argv) {
         if (n[0] >= n[1] && n[1] >= n[2]) ++monotone;
     }
     run.check("sec6.mean_inflections_decrease", mean[0] > mean[1] && mean[1] > mean[2] ? 1.0 : 0.0);
-    run.note("Inflections over " + std::to_string(sets) + " random data sets (convex trend plus noise, stated in the header): mean count " +
-             format_number(mean[0], 4) + " at λ = 0, " + format_number(mean[1], 4) + " at λ = 0.1, " + format_number(mean[2], 4) +
-             " at λ = 1.0; the count never increased with λ in " + std::to_string(monotone) + " of them. It is a tendency, not a theorem: as λ → ∞, M → (QᵀQ)⁻¹Qᵀa/(6λ), which keeps the sign pattern of purely alternating data (tested).");
+    run.note("Inflections over " + std::to_string(sets) + " random data sets (convex trend plus noise, stated in the header): mean count " + format_number(mean[0], 4) +
+             " at λ = 0, " + format_number(mean[1], 4) + " at λ = 0.1, " + format_number(mean[2], 4) + " at λ = 1.0; the count never increased with λ in " +
+             std::to_string(monotone) +
+             " of them. It is a tendency, not a theorem: as λ → ∞, M → (QᵀQ)⁻¹Qᵀa/(6λ), which keeps the sign pattern of purely alternating data (tested).");
 
     // Lagrange constraints (text after eq 44): a fixed point and fixed end slopes.
     {
@@ -252,9 +258,10 @@ int main(int argc, char** argv) {
         Eigen::VectorXd moved = a;
         moved(2) = 0.4;
         Vec stiff(5, 0.1);
-        stiff[2] = 0.0;   // an infinitely stiff spring at the same place, in the five-term system
+        stiff[2] = 0.0;  // an infinitely stiff spring at the same place, in the five-term system
         run.check("sec6.lagrange_fixed_point", std::abs(pinned.curve.values(2, 0) - 0.4));
-        run.validate("lagrange_fixed_point_vs_stiff_spring", "Lagrange-constrained y(x_2) = 0.4 (Hermite KKT) vs λ_2 = 0 with a_2 = 0.4 in the five-term system: largest curve distance",
+        run.validate("lagrange_fixed_point_vs_stiff_spring",
+                     "Lagrange-constrained y(x_2) = 0.4 (Hermite KKT) vs λ_2 = 0 with a_2 = 0.4 in the five-term system: largest curve distance",
                      max_difference(pinned.curve, elastic_line(x, moved, stiff).curve), 0.0, 1e-12, "rounding (measured 1e-15)");
         ElasticLineConstraints slopes;
         slopes.start_slope = 0.0;
@@ -268,10 +275,9 @@ int main(int argc, char** argv) {
             c.row({xx, free.curve.evaluate(xx)(0), pinned.curve.evaluate(xx)(0), clamped.curve.evaluate(xx)(0)});
         }
         run.note("Constraints (λ = 0.1): the point x = 2 held at y = 0.4 (multiplier " + format_number(pinned.multipliers(0), 6) +
-                 ", the force the constraint exerts per unit EI) and, separately, both end slopes held at 0 (multipliers " +
-                 format_number(clamped.multipliers(0), 6) + ", " + format_number(clamped.multipliers(1), 6) + "); V/EI rises from " +
-                 format_number(elastic_line_energy(free.curve, a, lam), 6) + " to " + format_number(pinned.energy, 6) + " and " +
-                 format_number(clamped.energy, 6) + ".");
+                 ", the force the constraint exerts per unit EI) and, separately, both end slopes held at 0 (multipliers " + format_number(clamped.multipliers(0), 6) + ", " +
+                 format_number(clamped.multipliers(1), 6) + "); V/EI rises from " + format_number(elastic_line_energy(free.curve, a, lam), 6) + " to " +
+                 format_number(pinned.energy, 6) + " and " + format_number(clamped.energy, 6) + ".");
     }
     run.figure("fig_constraints", "Constraints by Lagrange multipliers (λ = 0.1): free, with y(2) = 0.4 fixed, and with both end slopes fixed at 0.");
     return run.finish();

@@ -22,7 +22,7 @@ namespace {
 // ∫ |y''(x)|² dx of the C2 quintic through (x_i, Y_i) with slopes S_i and second derivatives C_i.
 double quintic_energy(const std::vector<double>& x, const Eigen::MatrixXd& Y, const Eigen::MatrixXd& S, const Eigen::MatrixXd& C) {
     static const HosakaBasis b(2);
-    static const numeric::GaussLegendreRule rule(6);   // exact: y''² has degree 6
+    static const numeric::GaussLegendreRule rule(6);  // exact: y''² has degree 6
     double e = 0.0;
     for (std::size_t i = 0; i + 1 < x.size(); ++i) {
         const Eigen::Index a = static_cast<Eigen::Index>(i), c = a + 1;
@@ -96,7 +96,7 @@ int main(int argc, char** argv) {
     int lower = 0;
     double min_increase = INFINITY;
     for (int trial = 0; trial < 2000; ++trial) {
-        const double eps = std::pow(10.0, -3.0 + 3.0 * (trial % 4) / 3.0);   // 1e-3, 1e-2, 1e-1, 1
+        const double eps = std::pow(10.0, -3.0 + 3.0 * (trial % 4) / 3.0);  // 1e-3, 1e-2, 1e-1, 1
         Eigen::MatrixXd S = spline.slopes, Cp = C;
         for (int i = 0; i < n; ++i)
             for (int d = 0; d < 2; ++d) {
@@ -108,9 +108,10 @@ int main(int argc, char** argv) {
         min_increase = std::min(min_increase, (e - e_spline) / e_spline);
     }
     run.check("eq24.no_lower_energy", lower);
-    run.note("Eq (24): 2000 C2 quintic interpolants of the same data with slopes and second derivatives perturbed by ε·N(0, 1), ε = 1e-3, 1e-2, 0.1, 1 (seeded); the smallest relative energy increase was " +
-             format_number(min_increase, 3) + " (ε = 1e-3 gives increases of order ε², as a minimum should). Spline energy ∫(y''² + z''²) dx = " +
-             format_number(e_spline, 10) + ".");
+    run.note(
+        "Eq (24): 2000 C2 quintic interpolants of the same data with slopes and second derivatives perturbed by ε·N(0, 1), ε = 1e-3, 1e-2, 0.1, 1 (seeded); the smallest relative "
+        "energy increase was " +
+        format_number(min_increase, 3) + " (ε = 1e-3 gives increases of order ε², as a minimum should). Spline energy ∫(y''² + z''²) dx = " + format_number(e_spline, 10) + ".");
 
     CsvWriter fig = run.table("fig_explicit.csv", {"x", "y", "z", "y2", "z2"});
     for (int k = 0; k <= 500; ++k) {

@@ -15,9 +15,9 @@ using namespace cagd::spline;
 namespace {
 
 struct Jumps {
-    double continuous = 0.0;   // largest relative jump of τ-derivatives 1..2m over the interior joins
-    double next = 0.0;         // the same for order 2m+1 (not continuous in general)
-    double ends = 0.0;         // largest relative |τ-derivative| of orders m+1..2m at the two ends
+    double continuous = 0.0;  // largest relative jump of τ-derivatives 1..2m over the interior joins
+    double next = 0.0;        // the same for order 2m+1 (not continuous in general)
+    double ends = 0.0;        // largest relative |τ-derivative| of orders m+1..2m at the two ends
 };
 
 Jumps measure(const HosakaCurve& c, const PointList& p) {
@@ -27,7 +27,7 @@ Jumps measure(const HosakaCurve& c, const PointList& p) {
     // τ-derivatives of segment s at local t: t-derivatives over L_s^k.
     const auto tau = [&](int s, double t, int k) { return Eigen::RowVectorXd(c.jet(s + t, k).row(k) / std::pow(L[static_cast<std::size_t>(s)], k)); };
     const HosakaBasis b(m);
-    const auto tau_left = [&](int s, int k) {   // at the end of segment s (t = 1 from inside)
+    const auto tau_left = [&](int s, int k) {  // at the end of segment s (t = 1 from inside)
         const Eigen::MatrixXd e = c.end_derivatives(s), a = c.start_derivatives(s);
         Eigen::RowVectorXd v = Eigen::RowVectorXd::Zero(p.cols());
         for (int i = 0; i <= m; ++i) v += b.p(i, 1.0, k) * a.row(i) + b.q(i, 1.0, k) * e.row(i);
@@ -63,8 +63,8 @@ int main(int argc, char** argv) {
             min_next = std::min(min_next, j.next);
         }
     run.check("sec3.m2_continuous_to_order_4", worst_m2);
-    run.note("Largest relative jump of the τ-derivatives of orders 1..2m at the joins, and of order 2m+1 (not continuous: smallest over the cases " +
-             format_number(min_next, 3) + "); natural ends (orders m+1..2m zero) to " + format_number(worst_ends, 3) +
+    run.note("Largest relative jump of the τ-derivatives of orders 1..2m at the joins, and of order 2m+1 (not continuous: smallest over the cases " + format_number(min_next, 3) +
+             "); natural ends (orders m+1..2m zero) to " + format_number(worst_ends, 3) +
              ": [continuity.csv](hosaka/continuity.csv). m = 1 is the C2 spline of eq (20); m = 3 (order 6) is shown too.");
     run.validate("sec3.m1_is_eq20_spline", "m = 1 vs hosaka_c2_spline (eq 20, chord scale), uneven data: max distance",
                  analysis::max_distance_same_parameter(hosaka_spline(uneven, 1), hosaka_c2_spline(uneven).curve), 0.0, 1e-12, "rounding");
@@ -77,6 +77,7 @@ int main(int argc, char** argv) {
             fig.row({double(m), u, q(0), q(1), analysis::signed_curvature(c, u)});
         }
     }
-    run.figure("fig_higher_order", "Splines of order m = 1, 2, 3 (continuous to the 2m-th derivative) through the uneven data (left) and their curvature along the parameter (right).");
+    run.figure("fig_higher_order",
+               "Splines of order m = 1, 2, 3 (continuous to the 2m-th derivative) through the uneven data (left) and their curvature along the parameter (right).");
     return run.finish();
 }

@@ -33,9 +33,12 @@ CornerDerivatives corner_data(int m) {
             for (int i = 0; i <= m; ++i)
                 for (int j = 0; j <= m; ++j) {
                     if (i + j <= 1 || (i == 1 && j == 1)) continue;
-                    if (j == 0) c.at(k, l, i, j) = Eigen::Vector3d(0, 0, 0.4);
-                    else if (i == 0) c.at(k, l, i, j) = Eigen::Vector3d(0, 0, -0.3);
-                    else c.at(k, l, i, j) = Eigen::Vector3d(0, 0, 0.5 * (i + j) * ((k + l) % 2 ? -1 : 1));
+                    if (j == 0)
+                        c.at(k, l, i, j) = Eigen::Vector3d(0, 0, 0.4);
+                    else if (i == 0)
+                        c.at(k, l, i, j) = Eigen::Vector3d(0, 0, -0.3);
+                    else
+                        c.at(k, l, i, j) = Eigen::Vector3d(0, 0, 0.5 * (i + j) * ((k + l) % 2 ? -1 : 1));
                 }
         }
     return c;
@@ -81,7 +84,7 @@ int main(int argc, char** argv) {
                 fig.row({double(m), u, v, s27(0), s27(1), s27(2), c(2)});
                 if (b == 20) fig.end_scan();
             }
-        fig.end_scan();   // blank-line pair: gnuplot index m − 1
+        fig.end_scan();  // blank-line pair: gnuplot index m − 1
     }
     run.check("eq27.interpolates_corner_derivatives", corner_error / size);
     run.check("eq28.equals_eq27", printed_28 / size, corrected_28 / size);
@@ -112,8 +115,7 @@ int main(int argc, char** argv) {
                         // The printed eq (30) subtracts the ζ_11 terms: it equals ours minus twice them.
                         double z11_terms = 0;
                         for (int i = 0; i <= m; ++i)
-                            for (int j = 0; j <= m; ++j)
-                                z11_terms += std::pow(lx, i) * std::pow(ly, j) * s.node(cx + 1, cy + 1)(i, j) * basis.q(i, k, 0) * basis.q(j, l, 0);
+                            for (int j = 0; j <= m; ++j) z11_terms += std::pow(lx, i) * std::pow(ly, j) * s.node(cx + 1, cy + 1)(i, j) * basis.q(i, k, 0) * basis.q(j, l, 0);
                         printed_30 = std::max(printed_30, std::abs(s.derivative_in(cx, cy, k, l, 0, 0) - 2 * z11_terms - want(0, 0)));
                         z_size = std::max(z_size, std::abs(want(0, 0)));
                         for (int i = 0; i <= m; ++i)
@@ -132,8 +134,8 @@ int main(int argc, char** argv) {
             }
     }
     run.check("eq30.interpolates_node_derivatives", printed_30 / z_size, corrected_30);
-    run.validate("eq30.continuity_across_grid_lines", "eq (30): ζ^(a,b), a ≤ m, b ≤ 2, continuous across x = const grid lines (largest jump, relative), m = 1, 2",
-                 jump / jump_size, 0.0, 1e-12, "rounding");
+    run.validate("eq30.continuity_across_grid_lines", "eq (30): ζ^(a,b), a ≤ m, b ≤ 2, continuous across x = const grid lines (largest jump, relative), m = 1, 2", jump / jump_size,
+                 0.0, 1e-12, "rounding");
 
     // Fig. 4: the m = 1 surface over the grid from heights only (section 7 (iv) node derivatives).
     Eigen::MatrixXd heights(static_cast<Eigen::Index>(gx.size()), static_cast<Eigen::Index>(gy.size()));
@@ -151,12 +153,15 @@ int main(int argc, char** argv) {
         }
     std::string grid_note = "Fig. 4 analogue: the m = 1 Cartesian surface from the ";
     grid_note += std::to_string(gx.size()) + " × " + std::to_string(gy.size()) +
-                 " heights alone (node derivatives from natural splines along the grid lines, section 7 (iv)) differs from ζ by at most " +
-                 format_number(worst, 3) + " on a 41 × 31 sampling: [fig_cartesian.csv](hosaka/fig_cartesian.csv).";
+                 " heights alone (node derivatives from natural splines along the grid lines, section 7 (iv)) differs from ζ by at most " + format_number(worst, 3) +
+                 " on a 41 × 31 sampling: [fig_cartesian.csv](hosaka/fig_cartesian.csv).";
     run.note(grid_note);
-    run.note("The twist of the eq (27) patch at the corners is the data's; Coons' surface (eq 28 with S0 = 0) has every corner derivative S^(i,j), i, j ≥ 1, "
-             "zero (relative size " + format_number(coons_twist / data_twist, 3) + "), while keeping the edges: [fig_patches.csv](hosaka/fig_patches.csv).");
-    run.figure("fig_patches", "The m = 1 tensor patch of eq (27) from our corner data (left) and Coons' surface with the same edges (eq 28 with S0 = 0, right): zero twist flattens the corners.");
+    run.note(
+        "The twist of the eq (27) patch at the corners is the data's; Coons' surface (eq 28 with S0 = 0) has every corner derivative S^(i,j), i, j ≥ 1, "
+        "zero (relative size " +
+        format_number(coons_twist / data_twist, 3) + "), while keeping the edges: [fig_patches.csv](hosaka/fig_patches.csv).");
+    run.figure("fig_patches",
+               "The m = 1 tensor patch of eq (27) from our corner data (left) and Coons' surface with the same edges (eq 28 with S0 = 0, right): zero twist flattens the corners.");
     run.figure("fig_cartesian", "Fig. 4 analogue: the Cartesian surface of eq (30) (m = 1) over our 6 × 5 grid, node derivatives from splines along the grid lines.");
     return run.finish();
 }

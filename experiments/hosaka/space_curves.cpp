@@ -31,14 +31,13 @@ int main(int argc, char** argv) {
     CsvWriter t = run.table("space_joins.csv", {"curve", "join", "curvature_left", "curvature_right", "curvature_vector_jump"});
     for (const auto& [name, s] : {std::pair<const char*, const HosakaSpline*>{"open8", &a}, {"closed9", &b}}) {
         const int segs = s->curve.segments(), closed_curve = s == &b;
-        for (int j = closed_curve ? 0 : 1; j < segs; ++j) {   // join between segment j−1 (wrapping) and j
+        for (int j = closed_curve ? 0 : 1; j < segs; ++j) {  // join between segment j−1 (wrapping) and j
             const int prev = (j + segs - 1) % segs;
             const Eigen::VectorXd left = analysis::curvature_vector(s->curve.segment_jet(prev, 1.0, 2));
             const Eigen::VectorXd right = analysis::curvature_vector(s->curve.segment_jet(j, 0.0, 2));
             jump = std::max(jump, (left - right).norm());
             size = std::max({size, left.norm(), right.norm()});
-            t.row_text({name, std::to_string(j), format_number(left.norm(), 10), format_number(right.norm(), 10),
-                        format_number((left - right).norm(), 3)});
+            t.row_text({name, std::to_string(j), format_number(left.norm(), 10), format_number(right.norm(), 10), format_number((left - right).norm(), 3)});
         }
     }
     run.check("fig2.space_curves_curvature_continuous", jump / size);
@@ -53,6 +52,7 @@ int main(int argc, char** argv) {
         fig.end_scan();
     }
     run.note("Joins of both curves, curvature from either side: [space_joins.csv](hosaka/space_joins.csv).");
-    run.figure("fig_space", "Fig. 2 analogue: the C2 spline of eq (20) through 8 points (open) and 9 points (closed) in space, in perspective and in the three orthographic projections.");
+    run.figure("fig_space",
+               "Fig. 2 analogue: the C2 spline of eq (20) through 8 points (open) and 9 points (closed) in space, in perspective and in the three orthographic projections.");
     return run.finish();
 }

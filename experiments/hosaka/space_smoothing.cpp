@@ -70,6 +70,7 @@ int main(int argc, char** argv) {
              format_number(rel[large], 3) + " at A = " + format_number(amplitudes[large], 3) + "; it grows like A^" + format_number(order, 3) +
              " (fitted between A = " + format_number(amplitudes[0], 3) + " and " + format_number(amplitudes[3], 3) +
              "), as the neglected factor 1/|r'|⁵ = 1 − (5/2)(y'² + z'²) + … predicts. The argument holds for small deformation (slopes), not large.");
-    run.figure("fig_space_smoothing", "Difference between per-projection smoothing and the space elastic line (true bending energy), relative to the amplitude A of the data, against A; λ = 0.1.");
+    run.figure("fig_space_smoothing",
+               "Difference between per-projection smoothing and the space elastic line (true bending energy), relative to the amplitude A of the data, against A; λ = 0.1.");
     return run.finish();
 }

@@ -22,7 +22,7 @@ using namespace cagd::smoothing;
 namespace {
 
 using Vec = std::vector<double>;
-using SurfaceFn = std::function<double(double, double, int, int)>;   // ζ^(a,b)(x, y)
+using SurfaceFn = std::function<double(double, double, int, int)>;  // ζ^(a,b)(x, y)
 
 // Net energy in ζ only: each natural spline line contributes ∫ y''² = 6 ζᵀ Q R⁻¹ Qᵀ ζ (dense).
 Eigen::MatrixXd line_energy_matrix(const Vec& g) {
@@ -42,7 +42,7 @@ double delta2(const Vec& g, const Eigen::MatrixXd& f, Eigen::Index i, Eigen::Ind
 
 double energy57(const SurfaceFn& s, const Vec& x, const Vec& y) {
     double e = 0.0;
-    const double gx[2] = {0.5 - 0.5 / std::sqrt(3.0), 0.5 + 0.5 / std::sqrt(3.0)};   // 2-point Gauss per quarter cell
+    const double gx[2] = {0.5 - 0.5 / std::sqrt(3.0), 0.5 + 0.5 / std::sqrt(3.0)};  // 2-point Gauss per quarter cell
     for (std::size_t i = 0; i + 1 < x.size(); ++i)
         for (std::size_t j = 0; j + 1 < y.size(); ++j) {
             const double hx = x[i + 1] - x[i], hy = y[j + 1] - y[j];
@@ -109,8 +109,8 @@ int main(int argc, char** argv) {
         Eigen::MatrixXd w(nx, ny), zsum(nx, ny);
         for (Eigen::Index i = 0; i < nx; ++i)
             for (Eigen::Index j = 0; j < ny; ++j) {
-                w(i, j) = delta2(xs, p, i, j, 0) + delta2(ys, q, i, j, 1);   // the corrected bracket
-                zsum(i, j) = p(i, j) + q(i, j);                              // Z of the text: ζ^(2,0) + ζ^(0,2)
+                w(i, j) = delta2(xs, p, i, j, 0) + delta2(ys, q, i, j, 1);  // the corrected bracket
+                zsum(i, j) = p(i, j) + q(i, j);                             // Z of the text: ζ^(2,0) + ζ^(0,2)
                 printed53 = std::max(printed53, std::abs(zeta(i, j) - a(i, j) + lam(i, j) * (delta2(xs, q, i, j, 0) + delta2(ys, p, i, j, 1))));
                 corrected53 = std::max(corrected53, std::abs(zeta(i, j) - a(i, j) + lam(i, j) * w(i, j)));
             }
@@ -124,7 +124,8 @@ int main(int argc, char** argv) {
                     if (k == 0 || k + 1 == count) continue;
                     const Eigen::MatrixXd& s2 = dir == 0 ? p : q;
                     const auto at = [&](const Eigen::MatrixXd& f, Eigen::Index o) { return dir == 0 ? f(i + o, j) : f(i, j + o); };
-                    const double l0 = grid[static_cast<std::size_t>(k)] - grid[static_cast<std::size_t>(k - 1)], l1 = grid[static_cast<std::size_t>(k + 1)] - grid[static_cast<std::size_t>(k)];
+                    const double l0 = grid[static_cast<std::size_t>(k)] - grid[static_cast<std::size_t>(k - 1)],
+                                 l1 = grid[static_cast<std::size_t>(k + 1)] - grid[static_cast<std::size_t>(k)];
                     const double tri = l0 * at(s2, -1) + 2 * at(s2, 0) * (l0 + l1) + l1 * at(s2, 1);
                     const double rhs = 6 * delta2(grid, a, i, j, dir);
                     // λ·δ²(·) at k−1, k, k+1 along the line
@@ -168,15 +169,15 @@ int main(int argc, char** argv) {
 
     // ---- approximation 1: the ψ_i of eq (60) ----
     {
-        Eigen::MatrixXd printed(4, 4);   // rows: coefficients of 1, t, t², t³ of the printed ψ_0..ψ_3
+        Eigen::MatrixXd printed(4, 4);  // rows: coefficients of 1, t, t², t³ of the printed ψ_0..ψ_3
         printed << 1, 0, 0, 0, 0, 0.5, 0, 0, -0.5, 0, 0.5, 0, 0, -17.0 / 6, 0, 5.0 / 6;
         const Eigen::MatrixXd ours = discrete_orthonormal_polynomials(5, 3);
         const Eigen::MatrixXd printed_gram = discrete_gram_matrix(printed, 5), our_gram = discrete_gram_matrix(ours, 5);
         for (int i = 0; i <= 3; ++i)
             for (int j = i; j <= 3; ++j) run.check("eq60.psi" + std::to_string(i) + std::to_string(j), printed_gram(i, j), our_gram(i, j));
         // Ours ∝ printed for ψ_1, ψ_3 (ratio of t³ to t coefficients, of t coefficients).
-        run.validate("eq60.psi3_shape", "our ψ_3 is proportional to the printed (5t³ − 17t)/6: |t-coefficient / t³-coefficient + 17/5|", std::abs(ours(3, 1) / ours(3, 3) + 17.0 / 5.0), 0.0,
-                     1e-14, "rounding");
+        run.validate("eq60.psi3_shape", "our ψ_3 is proportional to the printed (5t³ − 17t)/6: |t-coefficient / t³-coefficient + 17/5|",
+                     std::abs(ours(3, 1) / ours(3, 3) + 17.0 / 5.0), 0.0, 1e-14, "rounding");
         const auto max_block = [](const std::vector<int>& b) { return *std::max_element(b.begin(), b.end()); };
         const auto fours = [](const std::vector<int>& b) { return static_cast<double>(std::count(b.begin(), b.end(), 4)); };
         const std::vector<int> b57 = window_block_sizes(ours, PlateEnergy::no_twist), b58 = window_block_sizes(ours, PlateEnergy::mean_curvature);
@@ -189,7 +190,8 @@ int main(int argc, char** argv) {
             return s;
         };
         run.note("Eq (60): with orthonormal ψ the 16 unknowns c_ij separate into blocks of sizes " + list(b57) + " for (57), " + list(b58) + " for (58), " + list(b56) +
-                 " for (56) and " + list(b55) + " for (55) — at most 3 except one block of 4 with the twist term, as the paper says. With the printed ψ (not orthogonal) the blocks are " +
+                 " for (56) and " + list(b55) +
+                 " for (55) — at most 3 except one block of 4 with the twist term, as the paper says. With the printed ψ (not orthogonal) the blocks are " +
                  list(window_block_sizes(printed, PlateEnergy::no_twist)) + " for (57) and " + list(window_block_sizes(printed, PlateEnergy::no_poisson)) + " for (56).");
     }
 
@@ -261,8 +263,8 @@ int main(int argc, char** argv) {
             for (int i = 0; i <= 80; ++i)
                 for (int j = 0; j <= 80; ++j) exact(i, j) = t.f(fx[static_cast<std::size_t>(i)], fx[static_cast<std::size_t>(j)]);
             const double truth_energy = energy57(wrap(surface::cartesian_spline_surface(fx, fx, exact)), gx, gy);
-            table.row_text({t.name, m.name, format_number(best_lambda, 3), format_number(best, 4), format_number(best_max, 4),
-                            format_number(energy57(best_s, gx, gy), 4), format_number(truth_energy, 4)});
+            table.row_text({t.name, m.name, format_number(best_lambda, 3), format_number(best, 4), format_number(best_max, 4), format_number(energy57(best_s, gx, gy), 4),
+                            format_number(truth_energy, 4)});
             table_note += t.name + " / " + m.name + ": " + format_number(best, 3) + " (λ = " + format_number(best_lambda, 2) + "); ";
         }
         if (t.name == "franke") {
@@ -277,6 +279,8 @@ int main(int argc, char** argv) {
         }
     }
     run.note(table_note + "the full table (max error, energy ∬(ζxx² + ζyy²) of each result and of the truth) is surface_comparison.csv.");
-    run.figure("fig_surface_smoothing", "Franke's function sampled on a 21 × 21 grid with noise σ = 0.02: the truth, the spline surface through the noisy data, and the smoothed surfaces of the net + splines, plate (i) with eq (57), plate (ii) and approximation 1, each with its best λ.");
+    run.figure("fig_surface_smoothing",
+               "Franke's function sampled on a 21 × 21 grid with noise σ = 0.02: the truth, the spline surface through the noisy data, and the smoothed surfaces of the net + "
+               "splines, plate (i) with eq (57), plate (ii) and approximation 1, each with its best λ.");
     return run.finish();
 }

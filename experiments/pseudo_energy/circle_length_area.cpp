@@ -29,27 +29,25 @@ PointList circle_points(int n) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    repro::ArtifactRun run("pseudo_energy", "circle_length_area", "5", "Length and area of the closed pseudo-spline through points on the unit circle (Tables 5, 6)",
-                           argc, argv);
-    const PseudoSplineTables tables = PseudoSplineTables::from(PseudoEnergyTable::load_or_build(
-        run.cache_path("table36_reference.txt"), {36, NodePlacement::periodic}, TableMethod::reference));
+    repro::ArtifactRun run("pseudo_energy", "circle_length_area", "5", "Length and area of the closed pseudo-spline through points on the unit circle (Tables 5, 6)", argc, argv);
+    const PseudoSplineTables tables =
+        PseudoSplineTables::from(PseudoEnergyTable::load_or_build(run.cache_path("table36_reference.txt"), {36, NodePlacement::periodic}, TableMethod::reference));
     const PseudoEnergyTable& table = tables.energy;
     const TableOracle oracle = tables.oracle();
     const ExactOracle exact_oracle;
 
     run.check("table5.true_value", 2 * std::numbers::pi);
     run.check("table6.true_value", std::numbers::pi);
-    CsvWriter out = run.table("table5_table6.csv",
-                                     {"n", "length_exact", "length_reference_path", "length_table", "length_table_bilinear", "length_of_table_curve",
-                                      "equivalent_exact", "equivalent_table", "area_exact", "area_reference_path", "area_table", "area_table_bilinear",
-                                      "area_of_table_curve", "area_equivalent_exact", "area_equivalent_table", "alpha_offset_table_deg"});
+    CsvWriter out = run.table("table5_table6.csv", {"n", "length_exact", "length_reference_path", "length_table", "length_table_bilinear", "length_of_table_curve",
+                                                    "equivalent_exact", "equivalent_table", "area_exact", "area_reference_path", "area_table", "area_table_bilinear",
+                                                    "area_of_table_curve", "area_equivalent_exact", "area_equivalent_table", "alpha_offset_table_deg"});
     double assembly_length = 0, assembly_area = 0, ref_gap = 0;
-    std::string off_bisector;   // the n whose table-procedure tangent leaves the bisector
+    std::string off_bisector;  // the n whose table-procedure tangent leaves the bisector
     int bisector_minimises = 0;
     for (int n = 3; n <= 10; ++n) {
         const PointList p = circle_points(n);
         std::string id = "n";
-        id += std::to_string(n);   // (not "n" + to_string: a GCC 12 -Wrestrict false positive)
+        id += std::to_string(n);  // (not "n" + to_string: a GCC 12 -Wrestrict false positive)
         // Exact: bisector directions (mode none = direction of P_{i+1} − P_{i−1}, the bisector for equal chords).
         const PseudoSpline ex = pseudo_spline(p, exact_oracle, TangentOptimization::none, true);
         const double L = ex.length_from_tables(), S = ex.area_from_tables();
@@ -83,7 +81,7 @@ int main(int argc, char** argv) {
             off_bisector += ' ';
             off_bisector += std::to_string(n);
         }
-        const std::string table5 = "table5." + id, table6 = "table6." + id;   // table5.n<n>.*, table6.n<n>.*
+        const std::string table5 = "table5." + id, table6 = "table6." + id;  // table5.n<n>.*, table6.n<n>.*
         run.check(table5 + ".length", L);
         run.check(table5 + ".equivalent", double(equivalent_polygon_points(std::abs(2 * std::numbers::pi - L), CircleMeasure::perimeter)));
         run.check(table6 + ".area", S);
@@ -91,26 +89,28 @@ int main(int argc, char** argv) {
         // The paper's equivalent-points column from its own printed length/area.
         const double printed_L = run.reference().row("pseudo_energy." + table5 + ".length").paper_value;
         const double printed_S = run.reference().row("pseudo_energy." + table6 + ".area").paper_value;
-        run.check(table5 + ".equivalent_from_printed",
-                  double(equivalent_polygon_points(std::abs(2 * std::numbers::pi - printed_L), CircleMeasure::perimeter)));
+        run.check(table5 + ".equivalent_from_printed", double(equivalent_polygon_points(std::abs(2 * std::numbers::pi - printed_L), CircleMeasure::perimeter)));
         run.check(table6 + ".equivalent_from_printed", double(equivalent_polygon_points(std::abs(std::numbers::pi - printed_S), CircleMeasure::area)));
         out.row({double(n), L, L_ref, L_tab, L_bil, analysis::romberg_arc_length(tb.curve).value,
                  double(equivalent_polygon_points(std::abs(2 * std::numbers::pi - L), CircleMeasure::perimeter)),
-                 double(equivalent_polygon_points(std::abs(2 * std::numbers::pi - L_tab), CircleMeasure::perimeter)), S, S_ref, S_tab, S_bil,
-                 analysis::enclosed_area(tb.curve), double(equivalent_polygon_points(std::abs(std::numbers::pi - S), CircleMeasure::area)),
+                 double(equivalent_polygon_points(std::abs(2 * std::numbers::pi - L_tab), CircleMeasure::perimeter)), S, S_ref, S_tab, S_bil, analysis::enclosed_area(tb.curve),
+                 double(equivalent_polygon_points(std::abs(std::numbers::pi - S), CircleMeasure::area)),
                  double(equivalent_polygon_points(std::abs(std::numbers::pi - S_tab), CircleMeasure::area)), (tb.alpha[0] - centre) * 180 / std::numbers::pi},
                 10);
     }
-    run.validate("sec5.bisector_minimises_w", "exact J(θ): the bisector minimises w of eq (12) for n = 3..10 (count of n)", bisector_minimises, 8, 0,
-                 "count");
+    run.validate("sec5.bisector_minimises_w", "exact J(θ): the bisector minimises w of eq (12) for n = 3..10 (count of n)", bisector_minimises, 8, 0, "count");
     run.validate("sec5.fast_vs_reference", "exact lengths and areas, fast minimiser vs reference minimiser: max |difference|", ref_gap, 0.0, 1e-10,
                  "minimiser tolerance (|grad J| < 1e-12 in log r) propagated to L and S, with margin");
-    run.validate("sec5.eq17_vs_integration", "eq (17): Σ l_i L_i vs Romberg arc length of the same curve, max relative difference", assembly_length, 0.0,
-                 1e-11, "quadrature (fast L at about 1e-13, Romberg 1e-13)");
-    run.validate("sec5.eq20_vs_integration", "eq (20)–(21): S_0 − Σ l_i² S_i vs ½∮(x dy − y dx) of the same curve, max relative difference", assembly_area,
-                 0.0, 1e-12, "exact polynomial integrals, rounding");
-    run.note("Our 'length' and 'area' are exact (minimisers at the exact angles, no table); the table columns of table5_table6.csv follow the paper's procedure (36-node reference table, same-type bilinear rule; J(θ) from the table; exact tangent optimisation) and show where the paper's values come from (erratum pseudo_energy-E4).");
-    run.note("alpha_offset_table_deg: the tangent direction the table procedure chooses minus the bisector. With J(θ) interpolated linearly, w of eq (12) is piecewise linear and its minimum can leave the bisector (by more than 0.01° for n =" +
-             off_bisector + "), which makes the spans asymmetric.");
+    run.validate("sec5.eq17_vs_integration", "eq (17): Σ l_i L_i vs Romberg arc length of the same curve, max relative difference", assembly_length, 0.0, 1e-11,
+                 "quadrature (fast L at about 1e-13, Romberg 1e-13)");
+    run.validate("sec5.eq20_vs_integration", "eq (20)–(21): S_0 − Σ l_i² S_i vs ½∮(x dy − y dx) of the same curve, max relative difference", assembly_area, 0.0, 1e-12,
+                 "exact polynomial integrals, rounding");
+    run.note(
+        "Our 'length' and 'area' are exact (minimisers at the exact angles, no table); the table columns of table5_table6.csv follow the paper's procedure (36-node reference "
+        "table, same-type bilinear rule; J(θ) from the table; exact tangent optimisation) and show where the paper's values come from (erratum pseudo_energy-E4).");
+    run.note(
+        "alpha_offset_table_deg: the tangent direction the table procedure chooses minus the bisector. With J(θ) interpolated linearly, w of eq (12) is piecewise linear and its "
+        "minimum can leave the bisector (by more than 0.01° for n =" +
+        off_bisector + "), which makes the spans asymmetric.");
     return run.finish();
 }

@@ -38,20 +38,17 @@ int main(int argc, char** argv) {
     const auto& vals = angle.values();
     const int n = static_cast<int>(nodes.size());
     for (int k = 0; k < n; ++k) {
-        out.row({nodes[static_cast<std::size_t>(k)] * kDeg, vals[static_cast<std::size_t>(k)].pseudo_energy,
-                 vals[static_cast<std::size_t>(k)].theta1 * kDeg});
+        out.row({nodes[static_cast<std::size_t>(k)] * kDeg, vals[static_cast<std::size_t>(k)].pseudo_energy, vals[static_cast<std::size_t>(k)].theta1 * kDeg});
         if (nodes[static_cast<std::size_t>(k)] == 0.0) j_at_zero = vals[static_cast<std::size_t>(k)].pseudo_energy;
-        const int m = (n - k) % n;   // node at −θ
-        if (k == 0) continue;        // −180° is its own mirror image
+        const int m = (n - k) % n;  // node at −θ
+        if (k == 0) continue;       // −180° is its own mirror image
         sym_j = std::max(sym_j, std::abs(vals[static_cast<std::size_t>(k)].pseudo_energy - vals[static_cast<std::size_t>(m)].pseudo_energy) /
                                     std::max(1.0, vals[static_cast<std::size_t>(k)].pseudo_energy));
         sym_t = std::max(sym_t, std::abs(vals[static_cast<std::size_t>(k)].theta1 + vals[static_cast<std::size_t>(m)].theta1));
     }
     run.check("fig9.j_zero", j_at_zero);
-    run.validate("fig9.symmetry_J", "J(θ) = J(−θ) at the 180 nodes: max relative difference", sym_j, 0.0, 1e-9,
-                 "Brent on θ1 to ~1e-8 rad; J is stationary there");
-    run.validate("fig9.symmetry_theta1", "θ1(−θ) = −θ1(θ) at the 180 nodes: max |difference| (rad)", sym_t, 0.0, 1e-6,
-                 "Brent's method stops at ~sqrt(ε_J) in θ1");
+    run.validate("fig9.symmetry_J", "J(θ) = J(−θ) at the 180 nodes: max relative difference", sym_j, 0.0, 1e-9, "Brent on θ1 to ~1e-8 rad; J is stationary there");
+    run.validate("fig9.symmetry_theta1", "θ1(−θ) = −θ1(θ) at the 180 nodes: max |difference| (rad)", sym_t, 0.0, 1e-6, "Brent's method stops at ~sqrt(ε_J) in θ1");
     run.figure("fig9", "Fig. 9 — J(θ) = min over θ1 of J(θ, θ1) (left axis, log scale) and its minimiser θ1(θ) (right axis), 2° nodes.");
 
     // The paper's shortcut: J(θ) from the interpolated 36-node table.
@@ -68,7 +65,9 @@ int main(int argc, char** argv) {
         }
         worst = std::max(worst, std::abs(best - vals[static_cast<std::size_t>(k)].pseudo_energy) / vals[static_cast<std::size_t>(k)].pseudo_energy);
     }
-    run.note("J(θ) taken from the interpolated 36-node table (as the paper did; θ1 scanned in 0.1° steps) differs from the exact J(θ) by "
-             "up to " + format_number(worst * 100, 3) + " % (36 nodes θ = −180°, −170°, …).");
+    run.note(
+        "J(θ) taken from the interpolated 36-node table (as the paper did; θ1 scanned in 0.1° steps) differs from the exact J(θ) by "
+        "up to " +
+        format_number(worst * 100, 3) + " % (36 nodes θ = −180°, −170°, …).");
     return run.finish();
 }

@@ -42,11 +42,12 @@ int main(int argc, char** argv) {
     const PseudoEnergyTable ref = PseudoEnergyTable::load_or_build(run.cache_path("table36_reference.txt"), grid, TableMethod::reference);
     const PseudoEnergyTable nl = PseudoEnergyTable::load_or_build(run.cache_path("table36_nlopt.txt"), grid, TableMethod::nlopt);
     const PseudoEnergyTable fast = PseudoEnergyTable::build(grid, TableMethod::fast);
-    run.note("Grid: 36 × 36 nodes Θ_k = −180° + 10°k (periodic placement: the equally spaced 36-node grid containing 0 and ±π, "
-             "which the paper's list of undefined nodes requires). Reference: scan of (r0, r1) ∈ [1e-2, 1e2]² (41 × 41, log), "
-             "Ceres nonlinear CG from up to 6 seeds (the scan's discrete minima and the lowest grid points away from them, within a factor 2 "
-             "of the lowest) and from the fast path's minimum and runner-up, Newton polish on ∇J = 0 with the same Romberg gradients. "
-             "NLopt L-BFGS from the scan seeds, no polish.");
+    run.note(
+        "Grid: 36 × 36 nodes Θ_k = −180° + 10°k (periodic placement: the equally spaced 36-node grid containing 0 and ±π, "
+        "which the paper's list of undefined nodes requires). Reference: scan of (r0, r1) ∈ [1e-2, 1e2]² (41 × 41, log), "
+        "Ceres nonlinear CG from up to 6 seeds (the scan's discrete minima and the lowest grid points away from them, within a factor 2 "
+        "of the lowest) and from the fast path's minimum and runner-up, Newton polish on ∇J = 0 with the same Romberg gradients. "
+        "NLopt L-BFGS from the scan seeds, no polish.");
 
     const UnitChordHermite straight(0.0, 0.0, 1.0, 1.0);
     run.check("sec4.j_zero_at_origin", segment_energy_reference(straight).pseudo_energy);
@@ -60,10 +61,8 @@ int main(int argc, char** argv) {
     for (int i = 0; i < n; ++i)
         for (int j = 0; j < n; ++j) {
             const PseudoEnergyMinimum &r = ref.node(i, j), &f = fast.node(i, j), &q = nl.node(i, j);
-            out.row_text({format_number(r.theta0 * kDeg), format_number(r.theta1 * kDeg), format_number(r.pseudo_energy, 15),
-                          format_number(r.r0, 12), format_number(r.r1, 12), format_number(r.length, 12),
-                          format_number(r.area, 12), to_string(r.type), std::to_string(r.local_minima),
-                          format_number(r.runner_up, 12)});
+            out.row_text({format_number(r.theta0 * kDeg), format_number(r.theta1 * kDeg), format_number(r.pseudo_energy, 15), format_number(r.r0, 12), format_number(r.r1, 12),
+                          format_number(r.length, 12), format_number(r.area, 12), to_string(r.type), std::to_string(r.local_minima), format_number(r.runner_up, 12)});
             if (is_undefined_node(r.theta0, r.theta1)) {
                 ++n_x;
                 continue;
@@ -81,7 +80,7 @@ int main(int argc, char** argv) {
                 const double gap = (r.runner_up - r.pseudo_energy) / r.pseudo_energy;
                 if (gap < closest_gap) {
                     closest_gap = gap;
-                    char at[64];   // snprintf: GCC 12 warns falsely (-Wrestrict) on string concatenation here
+                    char at[64];  // snprintf: GCC 12 warns falsely (-Wrestrict) on string concatenation here
                     std::snprintf(at, sizeof at, "(%g°, %g°)", r.theta0 * kDeg, r.theta1 * kDeg);
                     closest_at = at;
                 }
@@ -90,20 +89,18 @@ int main(int argc, char** argv) {
     run.check("sec2.minimum_exists_36", no_minimum);
     run.check("sec4.both_types", n_c > 0 && n_s > 0 ? 1.0 : 0.0);
     run.note("Types at the 36 × 36 nodes: " + std::to_string(n_c) + " c, " + std::to_string(n_s) + " s, " + std::to_string(n_x) +
-             " x (undefined). The reference reached ≥ 2 distinct local minima at " + std::to_string(multi) +
-             " nodes; the closest runner-up is " + format_number(closest_gap * 100, 3) + " % above the global minimum, at " + closest_at + ".");
-    run.validate("fast.J", "fast path vs reference at every defined node: max |ΔJ| / max(1, J)", fast_dj, 0.0, 1e-10,
-                 "issue 3 agreement requirement (relative for J ≫ 1)");
+             " x (undefined). The reference reached ≥ 2 distinct local minima at " + std::to_string(multi) + " nodes; the closest runner-up is " +
+             format_number(closest_gap * 100, 3) + " % above the global minimum, at " + closest_at + ".");
+    run.validate("fast.J", "fast path vs reference at every defined node: max |ΔJ| / max(1, J)", fast_dj, 0.0, 1e-10, "issue 3 agreement requirement (relative for J ≫ 1)");
     run.validate("fast.r", "fast path vs reference at every defined node: max |Δr0|, |Δr1|", fast_dr, 0.0, 1e-8, "issue 3 agreement requirement");
     run.validate("fast.L_S", "fast path vs reference at every defined node: max |ΔL|, |ΔS|", fast_dls, 0.0, 1e-8, "follows from |Δr| ≤ 1e-8");
-    run.validate("nlopt.J", "NLopt L-BFGS vs reference at every defined node: max |ΔJ| / max(1, J)", nl_dj, 0.0, 1e-12,
-                 "a value-based descent reaches J to ~quadrature noise");
+    run.validate("nlopt.J", "NLopt L-BFGS vs reference at every defined node: max |ΔJ| / max(1, J)", nl_dj, 0.0, 1e-12, "a value-based descent reaches J to ~quadrature noise");
     run.validate("nlopt.r", "NLopt L-BFGS vs reference at every defined node: max |Δr| (same minimum)", nl_dr, 0.0, 1e-3,
                  "value-based stop at |∇J| ~ 1e-6; in flat valleys Δr ~ |∇J|/λ_min");
 
     // Symmetries (derived in fairness/pseudo_energy_table.hpp), on the reference table computed node by node.
     std::vector<int> neg(static_cast<std::size_t>(n));
-    for (int k = 0; k < n; ++k) neg[static_cast<std::size_t>(k)] = (n - k) % n;   // −Θ_k = Θ_{n−k} (mod 2π)
+    for (int k = 0; k < n; ++k) neg[static_cast<std::size_t>(k)] = (n - k) % n;  // −Θ_k = Θ_{n−k} (mod 2π)
     double sj = 0, sr = 0, ss = 0;
     for (int i = 0; i < n; ++i)
         for (int j = 0; j < n; ++j) {
@@ -115,10 +112,8 @@ int main(int argc, char** argv) {
             sr = std::max({sr, std::abs(a.r0 - b.r1), std::abs(a.r1 - b.r0), std::abs(a.r0 - c.r0), std::abs(a.r1 - c.r1)});
             ss = std::max({ss, std::abs(a.area + b.area), std::abs(a.area + c.area), std::abs(a.length - b.length)});
         }
-    run.validate("symmetry.J", "J(θ0, θ1) = J(θ1, θ0) = J(−θ0, −θ1) on the reference table: max relative difference", sj, 0.0, 1e-10,
-                 "minimiser accuracy");
+    run.validate("symmetry.J", "J(θ0, θ1) = J(θ1, θ0) = J(−θ0, −θ1) on the reference table: max relative difference", sj, 0.0, 1e-10, "minimiser accuracy");
     run.validate("symmetry.r", "r0(θ0, θ1) = r1(θ1, θ0) = r0(−θ0, −θ1): max |Δr|", sr, 0.0, 1e-8, "minimiser accuracy");
-    run.validate("symmetry.S", "S(θ0, θ1) = −S(θ1, θ0) = −S(−θ0, −θ1), L(θ0, θ1) = L(θ1, θ0): max difference", ss, 0.0, 1e-8,
-                 "minimiser accuracy");
+    run.validate("symmetry.S", "S(θ0, θ1) = −S(θ1, θ0) = −S(−θ0, −θ1), L(θ0, θ1) = L(θ1, θ0): max difference", ss, 0.0, 1e-8, "minimiser accuracy");
     return run.finish();
 }

@@ -19,10 +19,8 @@ using namespace cagd::fairness;
 
 namespace {
 
-constexpr InterpolationMethod kMethods[] = {InterpolationMethod::cubic_spline_a, InterpolationMethod::cubic_spline_b,
-                                            InterpolationMethod::hermite_a, InterpolationMethod::hermite_b,
-                                            InterpolationMethod::pseudo_spline};
-
+constexpr InterpolationMethod kMethods[] = {InterpolationMethod::cubic_spline_a, InterpolationMethod::cubic_spline_b, InterpolationMethod::hermite_a,
+                                            InterpolationMethod::hermite_b, InterpolationMethod::pseudo_spline};
 
 // Largest distance between two curves over the spans in [first, last] (same parameter).
 double span_distance(const Curve& a, const Curve& b, int first, int last) {
@@ -34,10 +32,9 @@ double span_distance(const Curve& a, const Curve& b, int first, int last) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    repro::ArtifactRun run("pseudo_energy", "spline_curves", "4.2", "Pseudo-splines and the four comparison curves (Figs. 10-24)",
-                           argc, argv);
-    const PseudoSplineTables tables = PseudoSplineTables::from(PseudoEnergyTable::load_or_build(
-        run.cache_path("table36_reference.txt"), {36, NodePlacement::periodic}, TableMethod::reference));
+    repro::ArtifactRun run("pseudo_energy", "spline_curves", "4.2", "Pseudo-splines and the four comparison curves (Figs. 10-24)", argc, argv);
+    const PseudoSplineTables tables =
+        PseudoSplineTables::from(PseudoEnergyTable::load_or_build(run.cache_path("table36_reference.txt"), {36, NodePlacement::periodic}, TableMethod::reference));
     const TableOracle oracle = tables.oracle();
 
     struct DataSet {
@@ -57,20 +54,17 @@ int main(int argc, char** argv) {
     }
     sets.push_back({"table3", "fig20_24", "", t3, NAN});
 
-    CsvWriter measures = run.table("measures.csv", {"data", "a", "method", "mode", "length", "bending_energy", "pseudo_energy",
-                                                           "curvature_sign_changes", "max_abs_curvature", "overshoot", "max_spike",
-                                                           "corners", "self_intersections"});
+    CsvWriter measures = run.table("measures.csv", {"data", "a", "method", "mode", "length", "bending_energy", "pseudo_energy", "curvature_sign_changes", "max_abs_curvature",
+                                                    "overshoot", "max_spike", "corners", "self_intersections"});
     CsvWriter fig1 = run.table("fig10_14.csv", {"method", "u", "x", "y", "s", "kappa"});
     CsvWriter fig2 = run.table("fig15_19.csv", {"method", "a", "u", "x", "y", "s", "kappa"});
     CsvWriter fig3 = run.table("fig20_24.csv", {"method", "u", "x", "y", "s", "kappa"});
     const auto measure_row = [&](const DataSet& d, const std::string& method, const std::string& mode, const Curve& c) {
         const analysis::FairnessMeasures f = analysis::fairness_measures(c, d.points);
         const int crossings = analysis::self_intersections(c);
-        measures.row_text({d.name, std::isnan(d.a) ? "" : format_number(d.a), method, mode, format_number(f.length, 10),
-                           format_number(f.bending_energy, 10), format_number(f.pseudo_energy, 10),
-                           std::to_string(f.curvature_sign_changes), format_number(f.max_abs_curvature, 10),
-                           format_number(f.overshoot, 6), format_number(f.max_spike, 6), std::to_string(f.corners),
-                           std::to_string(crossings)});
+        measures.row_text({d.name, std::isnan(d.a) ? "" : format_number(d.a), method, mode, format_number(f.length, 10), format_number(f.bending_energy, 10),
+                           format_number(f.pseudo_energy, 10), std::to_string(f.curvature_sign_changes), format_number(f.max_abs_curvature, 10), format_number(f.overshoot, 6),
+                           format_number(f.max_spike, 6), std::to_string(f.corners), std::to_string(crossings)});
         return std::make_pair(f, crossings);
     };
 
@@ -84,9 +78,12 @@ int main(int argc, char** argv) {
             const auto [f, crossings] = measure_row(d, to_string(m), m == InterpolationMethod::pseudo_spline ? "exact" : "", c);
             for (const analysis::CurvatureSample& s : analysis::curvature_profile(c, 64)) {
                 const Eigen::Vector2d p = c.point(s.u);
-                if (d.figure == "fig10_14") fig1.row({double(mi + 1), s.u, p.x(), p.y(), s.s, s.kappa});
-                else if (d.figure == "fig15_19") fig2.row({double(mi + 1), d.a, s.u, p.x(), p.y(), s.s, s.kappa});
-                else fig3.row({double(mi + 1), s.u, p.x(), p.y(), s.s, s.kappa});
+                if (d.figure == "fig10_14")
+                    fig1.row({double(mi + 1), s.u, p.x(), p.y(), s.s, s.kappa});
+                else if (d.figure == "fig15_19")
+                    fig2.row({double(mi + 1), d.a, s.u, p.x(), p.y(), s.s, s.kappa});
+                else
+                    fig3.row({double(mi + 1), s.u, p.x(), p.y(), s.s, s.kappa});
             }
             if (d.name == "table3") {
                 if (m == InterpolationMethod::pseudo_spline) {
@@ -103,21 +100,18 @@ int main(int argc, char** argv) {
         const PseudoSpline approx = pseudo_spline(d.points, oracle, TangentOptimization::approximate, false);
         const auto fn = measure_row(d, "pseudo-spline", "none", none.curve).first;
         measure_row(d, "pseudo-spline", "approx", approx.curve);
-        if (d.name == "table3")
-            run.note("Table 3 data: the pseudo-spline in mode none (no minimisation of eq 12) has " + std::to_string(fn.corners) + " span(s) with a corner.");
+        if (d.name == "table3") run.note("Table 3 data: the pseudo-spline in mode none (no minimisation of eq 12) has " + std::to_string(fn.corners) + " span(s) with a corner.");
         const int spans = exact.curve.spans();
         if (d.name != "table3" && spans >= 3) {
             for (auto m : {InterpolationMethod::hermite_a, InterpolationMethod::hermite_b}) {
                 const auto h = section42_interpolant(d.points, m, false, oracle, TangentOptimization::exact);
                 const double interior = span_distance(exact.curve, h, 1, spans - 2) / bounding_box_diagonal(d.points);
-                const double ends = std::max(span_distance(exact.curve, h, 0, 0), span_distance(exact.curve, h, spans - 1, spans - 1)) /
-                                    bounding_box_diagonal(d.points);
+                const double ends = std::max(span_distance(exact.curve, h, 0, 0), span_distance(exact.curve, h, spans - 1, spans - 1)) / bounding_box_diagonal(d.points);
                 std::string key = d.name + "." + to_string(m);
                 interior_max[key] = std::max(interior_max[key], interior);
                 ends_max[key] = std::max(ends_max[key], ends);
-                run.note(d.name + (std::isnan(d.a) ? "" : " (a = " + format_number(d.a) + ")") + ": pseudo-spline vs " +
-                         to_string(m) + " — largest distance on interior spans " + format_number(100 * interior, 3) +
-                         " % of the data diagonal, on the end spans " + format_number(100 * ends, 3) + " %.");
+                run.note(d.name + (std::isnan(d.a) ? "" : " (a = " + format_number(d.a) + ")") + ": pseudo-spline vs " + to_string(m) + " — largest distance on interior spans " +
+                         format_number(100 * interior, 3) + " % of the data diagonal, on the end spans " + format_number(100 * ends, 3) + " %.");
             }
         }
     }
@@ -128,7 +122,7 @@ int main(int argc, char** argv) {
         for (const char* m : {"hermite-a", "hermite-b"}) {
             const std::string key = std::string(data) + "." + m;
             comparison.row_text({data, m, format_number(100 * interior_max[key], 4), format_number(100 * ends_max[key], 4)});
-            const std::string claim = "sec42." + key;   // sec42.<table1|table2>.<hermite-a|hermite-b>.*
+            const std::string claim = "sec42." + key;  // sec42.<table1|table2>.<hermite-a|hermite-b>.*
             run.check(claim + ".interior_same", interior_max[key] < 0.01 ? 1.0 : 0.0);
             run.check(claim + ".ends_differ_more", ends_max[key] > interior_max[key] ? 1.0 : 0.0);
         }
@@ -154,8 +148,8 @@ int main(int argc, char** argv) {
                 for (int k = 0; k < a.spans(); ++k)
                     if (analysis::max_distance_same_parameter(a, b, k, k + 1, 65) > 1e-12 * bounding_box_diagonal(d->points)) ++count;
                 worst = std::max(worst, count);
-                loc.row_text({d->name + (std::isnan(d->a) ? "" : " a=" + format_number(d->a)), to_string(kMethods[mi]),
-                              std::to_string(j), std::to_string(a.spans()), std::to_string(count)});
+                loc.row_text({d->name + (std::isnan(d->a) ? "" : " a=" + format_number(d->a)), to_string(kMethods[mi]), std::to_string(j), std::to_string(a.spans()),
+                              std::to_string(count)});
             }
             if (kMethods[mi] == InterpolationMethod::pseudo_spline) pseudo_worst = std::max(pseudo_worst, worst);
         }
@@ -165,8 +159,8 @@ int main(int argc, char** argv) {
     // Length and area from the L and S tables (eq 16, 19, 21) against adaptive integration of the
     // curve the tables draw. They differ by the tables' interpolation error: L and S are
     // interpolated at (θ0, θ1) while the curve uses interpolated r0, r1.
-    CsvWriter tvi = run.table("tables_vs_integration.csv", {"data", "length_tables", "length_integrated", "length_rel_diff", "area_tables",
-                                                                   "area_integrated", "area_abs_diff_over_diagonal_squared"});
+    CsvWriter tvi = run.table("tables_vs_integration.csv",
+                              {"data", "length_tables", "length_integrated", "length_rel_diff", "area_tables", "area_integrated", "area_abs_diff_over_diagonal_squared"});
     double worst_length = 0.0;
     for (const DataSet* d : {&sets[0], &sets[4], &sets[6], &sets[7]}) {
         const PseudoSpline ps = pseudo_spline(d->points, oracle, TangentOptimization::exact, false);
@@ -175,31 +169,42 @@ int main(int argc, char** argv) {
         const double L = analysis::adaptive_arc_length(ps.curve, 1e-12), S = analysis::enclosed_area(ps.curve) + closing;
         const double dl = std::abs(ps.length_from_tables() - L) / L, diag = bounding_box_diagonal(d->points);
         worst_length = std::max(worst_length, dl);
-        tvi.row_text({d->name + (std::isnan(d->a) ? "" : " a=" + format_number(d->a)), format_number(ps.length_from_tables(), 10),
-                      format_number(L, 10), format_number(dl, 3), format_number(ps.area_from_tables(), 10),
-                      format_number(S, 10), format_number(std::abs(ps.area_from_tables() - S) / (diag * diag), 3)});
+        tvi.row_text({d->name + (std::isnan(d->a) ? "" : " a=" + format_number(d->a)), format_number(ps.length_from_tables(), 10), format_number(L, 10), format_number(dl, 3),
+                      format_number(ps.area_from_tables(), 10), format_number(S, 10), format_number(std::abs(ps.area_from_tables() - S) / (diag * diag), 3)});
     }
     run.note("Length and area from the tables (eq 16–21) against adaptive integration of the drawn curve: largest relative length difference " +
-             format_number(100 * worst_length, 3) + " % (table interpolation error; with exact segments they agree to 1e-11, experiment circle_length_area) — [tables_vs_integration.csv](pseudo_energy/tables_vs_integration.csv).");
-    run.note("Measured fairness of every curve (length, ∫κ² ds, pseudo-energy, curvature sign changes, max |κ|, overshoot beyond the data's box, corners, self-crossings): [measures.csv](pseudo_energy/measures.csv); spans moved when one point moves, per method: [locality.csv](pseudo_energy/locality.csv); with/without optimisation distances: [optimisation_comparison.csv](pseudo_energy/optimisation_comparison.csv).");
+             format_number(100 * worst_length, 3) +
+             " % (table interpolation error; with exact segments they agree to 1e-11, experiment circle_length_area) — "
+             "[tables_vs_integration.csv](pseudo_energy/tables_vs_integration.csv).");
+    run.note(
+        "Measured fairness of every curve (length, ∫κ² ds, pseudo-energy, curvature sign changes, max |κ|, overshoot beyond the data's box, corners, self-crossings): "
+        "[measures.csv](pseudo_energy/measures.csv); spans moved when one point moves, per method: [locality.csv](pseudo_energy/locality.csv); with/without optimisation "
+        "distances: [optimisation_comparison.csv](pseudo_energy/optimisation_comparison.csv).");
 
     // Independent check of cubic spline A: the natural uniform cubic B-spline interpolant of
     // sb2_locality eq (10) (B-spline form, SparseLU) is the same curve.
     {
         const auto a = section42_interpolant(t1, InterpolationMethod::cubic_spline_a, false, oracle, TangentOptimization::exact);
         const BSplineCurve b = locality::cubic_bspline_interpolant(t1, false);
-        run.validate("sec42.cubic_spline_a_vs_bspline", "cubic spline A (Hermite form, tridiagonal) vs the B-spline interpolant of sb2_locality eq (10), Table 1 data: max distance",
+        run.validate("sec42.cubic_spline_a_vs_bspline",
+                     "cubic spline A (Hermite form, tridiagonal) vs the B-spline interpolant of sb2_locality eq (10), Table 1 data: max distance",
                      analysis::max_distance_same_parameter(a, b), 0.0, 1e-12 * bounding_box_diagonal(t1), "rounding (1e-12 × data diagonal)");
     }
 
-    run.figure("fig10_14", "Figs. 10–14 — Table 1 (Newbery–Garrett) data: cubic spline A, cubic spline B, Hermite A, Hermite B, pseudo-spline (top), and the curvature κ(s) of each (bottom).");
+    run.figure("fig10_14",
+               "Figs. 10–14 — Table 1 (Newbery–Garrett) data: cubic spline A, cubic spline B, Hermite A, Hermite B, pseudo-spline (top), and the curvature κ(s) of each (bottom).");
     run.figure("fig15_19", "Figs. 15–19 — Table 2 (spike) data for a = 0..5, the five methods (top) and their curvature κ(s) (bottom).");
-    run.figure("fig20_24", "Figs. 20–24 — Table 3 (knot) data, the five methods (top) and κ(s) (bottom); the Hermite curves and the cubic splines have curvature spikes (corners), the pseudo-spline has none.");
+    run.figure("fig20_24",
+               "Figs. 20–24 — Table 3 (knot) data, the five methods (top) and κ(s) (bottom); the Hermite curves and the cubic splines have curvature spikes (corners), the "
+               "pseudo-spline has none.");
     run.note("Angle convention: chord-angle differences are wrapped to (−180°, 180°], so at both interior points of Table 3 the data turn clockwise by " +
              format_number(180.0 - std::atan2(0.1, 2.0) * 180.0 / std::numbers::pi, 6) +
              "° and the pseudo-spline is a loop that crosses its first span (claim sec42.table3.knot counts the crossings).");
     run.note("Corner: a span whose largest |κ|·l (l the span's chord) exceeds " + format_number(analysis::kCornerThreshold) +
-             ", i.e. a radius of curvature below 1 % of the chord — our definition; at a cusp |κ| is unbounded. Cubic splines A and B use natural end conditions (our choice; the paper cites [5]).");
-    run.note("Tangent optimisation 'none' (Table 4; the Table 3 corner note above): α_i along P_{i−1}P_{i+1} (Hermite A's direction), magnitudes from the table and ends by eq (13) — the method without the minimisation of eq (12).");
+             ", i.e. a radius of curvature below 1 % of the chord — our definition; at a cusp |κ| is unbounded. Cubic splines A and B use natural end conditions (our choice; the "
+             "paper cites [5]).");
+    run.note(
+        "Tangent optimisation 'none' (Table 4; the Table 3 corner note above): α_i along P_{i−1}P_{i+1} (Hermite A's direction), magnitudes from the table and ends by eq (13) — "
+        "the method without the minimisation of eq (12).");
     return run.finish();
 }

@@ -30,8 +30,8 @@ double draw(const PointList& p, const SegmentOracle& oracle, TangentOptimization
 
 int main(int argc, char** argv) {
     repro::ArtifactRun run("pseudo_energy", "table4_timing", "4.2", "Computation time with and without tangent optimisation (Table 4)", argc, argv);
-    const PseudoSplineTables tables = PseudoSplineTables::from(PseudoEnergyTable::load_or_build(
-        run.cache_path("table36_reference.txt"), {36, NodePlacement::periodic}, TableMethod::reference));
+    const PseudoSplineTables tables =
+        PseudoSplineTables::from(PseudoEnergyTable::load_or_build(run.cache_path("table36_reference.txt"), {36, NodePlacement::periodic}, TableMethod::reference));
     const TableOracle oracle = tables.oracle();
 
     std::vector<std::pair<std::string, std::vector<PointList>>> sets;
@@ -85,16 +85,17 @@ int main(int argc, char** argv) {
             const double hi = (r.paper_value + r.tolerance) / (none.paper_value - none.tolerance);
             run.timing("table4." + name + "." + paper_mode + "_over_none",
                        "Table 4, " + name + " data: time with " + (k == 1 ? "exact" : "approximate") + " optimisation / time without",
-                       {"table4." + name + ".none", "table4." + name + "." + paper_mode}, r.paper_value / none.paper_value, lo, hi,
-                       median[k] / median[0]);
+                       {"table4." + name + ".none", "table4." + name + "." + paper_mode}, r.paper_value / none.paper_value, lo, hi, median[k] / median[0]);
         }
         // Deterministic part: J(θ) lookups spent on the tangent directions.
         long calls[3] = {0, 0, 0};
         for (int k = 0; k < 3; ++k)
             for (const PointList& p : curves) calls[k] += pseudo_spline(p, oracle, modes[k], false).oracle_calls;
-        run.note(name + " data: J(θ) lookups for the tangent directions — none " + std::to_string(calls[0]) + ", exact (Brent) " +
-                 std::to_string(calls[1]) + ", approximate " + std::to_string(calls[2]) + " (2 per w evaluation; the end tangents of eq (13) are not counted).");
+        run.note(name + " data: J(θ) lookups for the tangent directions — none " + std::to_string(calls[0]) + ", exact (Brent) " + std::to_string(calls[1]) + ", approximate " +
+                 std::to_string(calls[2]) + " (2 per w evaluation; the end tangents of eq (13) are not counted).");
     }
-    run.note("Timed work: build the pseudo-spline from the points with the tables in memory and evaluate it at 100 points per span; median of 7 trials. The paper's seconds (SPARCstation 10) are not comparable; the claims are the ratios to mode none.");
+    run.note(
+        "Timed work: build the pseudo-spline from the points with the tables in memory and evaluate it at 100 points per span; median of 7 trials. The paper's seconds "
+        "(SPARCstation 10) are not comparable; the claims are the ratios to mode none.");
     return run.finish();
 }

@@ -12,9 +12,7 @@ using namespace cagd;
 using namespace cagd::locality;
 
 namespace {
-double angle(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
-    return std::atan2(std::abs(a(0) * b(1) - a(1) * b(0)), a.dot(b));
-}
+double angle(const Eigen::VectorXd& a, const Eigen::VectorXd& b) { return std::atan2(std::abs(a(0) * b(1) - a(1) * b(0)), a.dot(b)); }
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -24,8 +22,7 @@ int main(int argc, char** argv) {
     const double diag = bounding_box_diagonal(p);
     const Eigen::Vector2d t0(1.0, 2.0), t1(1.0, -1.0);
     run.note("Data: the 10 points of `earlier_methods`; given tangents (1, 2) at the start and (1, −1) at the end.");
-    auto tab = run.table("boundary.csv", {"form", "m", "kappa_start_natural", "kappa_end_natural", "angle_start_tangent",
-                                          "angle_end_tangent", "angle_start_bessel"});
+    auto tab = run.table("boundary.csv", {"form", "m", "kappa_start_natural", "kappa_end_natural", "angle_start_tangent", "angle_end_tangent", "angle_start_bessel"});
     double kappa = 0, tangent = 0, bessel = 0, eq12 = 0;
     for (SplineForm f : {SplineForm::b2_spline, SplineForm::s_spline})
         for (int m = 0; m <= 4; ++m) {
@@ -43,8 +40,8 @@ int main(int argc, char** argv) {
             const auto bes = interpolate(p, o).curve;
             const Eigen::VectorXd tb = bessel_tangent(p);
             const double ab = angle(bes.jet(0.0, 1).row(1).transpose(), tb);
-            tab.row_text({f == SplineForm::s_spline ? "S" : "B2", std::to_string(m), format_number(k0),
-                          format_number(k1), format_number(a0), format_number(a1), format_number(ab)});
+            tab.row_text(
+                {f == SplineForm::s_spline ? "S" : "B2", std::to_string(m), format_number(k0), format_number(k1), format_number(a0), format_number(a1), format_number(ab)});
             kappa = std::max({kappa, k0, k1});
             tangent = std::max({tangent, a0, a1});
             bessel = std::max(bessel, ab);

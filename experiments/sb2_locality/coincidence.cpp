@@ -26,8 +26,7 @@ Eigen::Index control_with_knots(const BSplineCurve& c, const std::vector<double>
 }  // namespace
 
 int main(int argc, char** argv) {
-    repro::ArtifactRun run("sb2_locality", "coincidence", "2.3", "Coincidence with the conventional interpolant (eq 9–11)",
-                           argc, argv);
+    repro::ArtifactRun run("sb2_locality", "coincidence", "2.3", "Coincidence with the conventional interpolant (eq 9–11)", argc, argv);
     const int n = 12;
     PointList p(n, 2);
     for (int k = 0; k < n; ++k) {
@@ -35,8 +34,7 @@ int main(int argc, char** argv) {
         p.row(k) << 2 * std::cos(t) + 0.3 * std::cos(3 * t), std::sin(t) + 0.2 * std::sin(2 * t);
     }
     const double diag = bounding_box_diagonal(p);
-    run.note("Data: 12 points (2cos θ + 0.3cos 3θ, sin θ + 0.2 sin 2θ), θ = 2πk/12, closed; residuals divided by the bounding-box diagonal " +
-             format_number(diag, 6) + ".");
+    run.note("Data: 12 points (2cos θ + 0.3cos 3θ, sin θ + 0.2 sin 2θ), θ = 2πk/12, closed; residuals divided by the bounding-box diagonal " + format_number(diag, 6) + ".");
 
     // α measured from eq (10): impulse response of the (1,4,1)/6 system, far from the ends.
     PointList impulse = PointList::Zero(201, 2);
@@ -51,19 +49,19 @@ int main(int argc, char** argv) {
 
     // The conventional interpolant, its B2 form (knot insertion) and S form (degree elevation).
     const BSplineCurve cubic = cubic_bspline_interpolant(p, true);
-    const auto c = [&](int i) -> Eigen::RowVector2d {   // c_i, periodic; control i+1 of `cubic`
+    const auto c = [&](int i) -> Eigen::RowVector2d {  // c_i, periodic; control i+1 of `cubic`
         return cubic.control_points().row(((i % n) + n) % n + 1);
     };
     BSplineCurve b2 = cubic;
     for (int i = 0; i < n; ++i) b2 = insert_knot(b2, i + 0.5);
-    const auto d = [&](int j) -> Eigen::RowVector2d {   // d_j: local knots (j−2)/2 … (j+2)/2
+    const auto d = [&](int j) -> Eigen::RowVector2d {  // d_j: local knots (j−2)/2 … (j+2)/2
         std::vector<double> local;
         for (int r = -2; r <= 2; ++r) local.push_back((j + r) / 2.0);
         const Eigen::Index idx = control_with_knots(b2, local);
         return idx < 0 ? Eigen::RowVector2d(NAN, NAN) : Eigen::RowVector2d(b2.control_points().row(idx));
     };
     const BSplineCurve s = elevate_degree(cubic);
-    const auto dhat_odd = [&](int i) -> Eigen::RowVector2d {   // d̂_{2i+1}: knots i−1, i, i, i+1, i+1, i+2
+    const auto dhat_odd = [&](int i) -> Eigen::RowVector2d {  // d̂_{2i+1}: knots i−1, i, i, i+1, i+1, i+2
         const Eigen::Index idx = control_with_knots(s, {i - 1.0, double(i), double(i), i + 1.0, i + 1.0, i + 2.0});
         return idx < 0 ? Eigen::RowVector2d(NAN, NAN) : Eigen::RowVector2d(s.control_points().row(idx));
     };
@@ -77,8 +75,8 @@ int main(int argc, char** argv) {
         s_mid = std::max(s_mid, (dhat_odd(i) - 0.5 * (c(i) + c(i + 1))).norm() / diag);
     }
     run.check("eq9.b2_condition", printed, corrected);
-    run.validate("eq3.on_b2_form", "eq (3) d_{2i−1} + 4d_{2i} + d_{2i+1} = 6p_i on the knot-inserted interpolant (max residual / diag)",
-                 eq3, 0.0, 1e-12, "rounding of knot insertion");
+    run.validate("eq3.on_b2_form", "eq (3) d_{2i−1} + 4d_{2i} + d_{2i+1} = 6p_i on the knot-inserted interpolant (max residual / diag)", eq3, 0.0, 1e-12,
+                 "rounding of knot insertion");
     run.check("eq9.b2_midpoint", b2_mid);
     run.check("eq9.s_midpoint", s_mid);
 
@@ -97,7 +95,7 @@ int main(int argc, char** argv) {
         series_corrected = std::max(series_corrected, (std::sqrt(3.0) * (1 + alpha()) * b - target).norm() / diag);
     }
     run.check("eq11.series", series_printed, series_corrected);
-    run.note("With the corrections of errata E1 and E2: eq (9) residual " + format_number(corrected, 3) +
-             ", eq (11) deviation " + format_number(series_corrected, 3) + " (relative to the diagonal).");
+    run.note("With the corrections of errata E1 and E2: eq (9) residual " + format_number(corrected, 3) + ", eq (11) deviation " + format_number(series_corrected, 3) +
+             " (relative to the diagonal).");
     return run.finish();
 }

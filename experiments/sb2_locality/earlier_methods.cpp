@@ -19,7 +19,7 @@ int main(int argc, char** argv) {
     run.note("Data: 10 points (0,0) (1.1,0.9) (2,1.2) (3.2,0.4) (4,−0.6) (5.3,−0.9) (6.1,0.1) (7,1.4) (8.4,1) (9,0.2), open, natural ends.");
 
     const auto w = extra_point_weights({1, 1});
-    const double w0 = w.left(0) + w.right(0), w1 = w.left(1) + w.right(1);   // weights of q_{i,0}, q_{i,1}
+    const double w0 = w.left(0) + w.right(0), w1 = w.left(1) + w.right(1);  // weights of q_{i,0}, q_{i,1}
     run.check("eq18.w0", w0);
     run.check("eq18.w1", w1);
     run.validate("eq18.closed_form", "eq (12) weight of q_{i,0} at m = 1 vs 1/(1+α)", w0, 1 / (1 + alpha()), 1e-15, "rounding");
@@ -72,8 +72,7 @@ int main(int argc, char** argv) {
     run.check("sec34.fmill_reproduces_lines", off_line(fmill));
     const double fm_vs_m1 = analysis::max_distance_same_parameter(interpolate(p, fmill).curve, s1.curve) / diag;
     run.check("sec34.fmill_differs_from_m1", fm_vs_m1 > 1e-6 ? 1.0 : 0.0);
-    run.note("FMILL vs m = 1 (S-spline): max distance " + format_number(fm_vs_m1, 4) +
-             " of the diagonal. Rearranged m = 1 form with the correction of erratum E3: max |Δ| " +
+    run.note("FMILL vs m = 1 (S-spline): max distance " + format_number(fm_vs_m1, 4) + " of the diagonal. Rearranged m = 1 form with the correction of erratum E3: max |Δ| " +
              format_number(corrected, 3) + ".");
     return run.finish();
 }

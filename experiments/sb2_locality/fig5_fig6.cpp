@@ -13,7 +13,7 @@ using namespace cagd::locality;
 
 namespace {
 struct CurvePairs {
-    std::vector<BSplineCurve> s, b2;   // m = 0..3
+    std::vector<BSplineCurve> s, b2;  // m = 0..3
 };
 CurvePairs build(const PointList& p) {
     CurvePairs c;
@@ -34,9 +34,7 @@ double convex_sign(const CurvePairs& c, int span) {
     return k > 0 ? 1.0 : -1.0;
 }
 // Offset of S outward from B2 at the span middle (outward = away from the centre of curvature).
-double outward_offset(const CurvePairs& c, int m, int span, double kappa_sign) {
-    return -kappa_sign * analysis::normal_offset(c.s[m], c.b2[m], span + 0.5);
-}
+double outward_offset(const CurvePairs& c, int m, int span, double kappa_sign) { return -kappa_sign * analysis::normal_offset(c.s[m], c.b2[m], span + 0.5); }
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -52,8 +50,7 @@ int main(int argc, char** argv) {
     const CurvePairs curves = build(p);
     const auto& S = curves.s;
     const auto& B = curves.b2;
-    auto fig5 = run.table("fig5.csv", {"u", "s0x", "s0y", "b0x", "b0y", "s1x", "s1y", "b1x", "b1y", "s2x", "s2y", "b2x", "b2y",
-                                       "s3x", "s3y", "b3x", "b3y"});
+    auto fig5 = run.table("fig5.csv", {"u", "s0x", "s0y", "b0x", "b0y", "s1x", "s1y", "b1x", "b1y", "s2x", "s2y", "b2x", "b2y", "s3x", "s3y", "b3x", "b3y"});
     for (int k = 0; k <= 10 * 32; ++k) {
         const double u = k / 32.0;
         std::vector<double> r{u};
@@ -68,9 +65,9 @@ int main(int argc, char** argv) {
     run.check("fig5.m2_almost_coincide", diff[2]);
     run.check("fig5.m3_no_visible_difference", diff[3]);
     run.check("fig5.difference_decreases", (diff[0] > diff[1] && diff[1] > diff[2] && diff[2] > diff[3]) ? 1.0 : 0.0);
-    run.note("Visibility (our 0.2 % threshold) is data-dependent: on these data m = 1 differs by " +
-             format_number(100.0 * diff[1], 3) + " % of the diagonal. max |S − B2| / diag for m = 0..3: " + format_number(diff[0], 3) + ", " + format_number(diff[1], 3) +
-             ", " + format_number(diff[2], 3) + ", " + format_number(diff[3], 3) + ".");
+    run.note("Visibility (our 0.2 % threshold) is data-dependent: on these data m = 1 differs by " + format_number(100.0 * diff[1], 3) +
+             " % of the diagonal. max |S − B2| / diag for m = 0..3: " + format_number(diff[0], 3) + ", " + format_number(diff[1], 3) + ", " + format_number(diff[2], 3) + ", " +
+             format_number(diff[3], 3) + ".");
 
     // Fig. 6: signed outward offset of S relative to B2 at the middle of each convex span.
     // The paper's condition: q_{i,1}, q_{i,2} (natural virtual points beyond the ends) on the same
@@ -86,7 +83,7 @@ int main(int argc, char** argv) {
     double best = 0;
     for (int span = 0; span < 10; ++span) {
         const double k = convex_sign(curves, span);
-        if (k == 0.0) continue;   // not convex throughout
+        if (k == 0.0) continue;  // not convex throughout
         const bool condition = same_side(span);
         std::vector<double> row{double(span), k, condition ? 1.0 : 0.0};
         double prev = 0;
@@ -96,10 +93,16 @@ int main(int argc, char** argv) {
             if (m > 0) {
                 ++all_steps;
                 all_changes += (offset * prev < 0);
-                if (condition) { ++steps; changes += (offset * prev < 0); }
+                if (condition) {
+                    ++steps;
+                    changes += (offset * prev < 0);
+                }
             }
             prev = offset;
-            if (span >= 5 && std::abs(offset) > best && (m == 1 || m == 2)) { best = std::abs(offset); best_span = span; }
+            if (span >= 5 && std::abs(offset) > best && (m == 1 || m == 2)) {
+                best = std::abs(offset);
+                best_span = span;
+            }
         }
         side.row(row);
     }
@@ -119,17 +122,20 @@ int main(int argc, char** argv) {
             double prev = 0;
             for (int m = 0; m <= 3; ++m) {
                 const double off = outward_offset(cq, m, span, k);
-                if (m > 0) { ++random_steps; random_changes += off * prev < 0; }
+                if (m > 0) {
+                    ++random_steps;
+                    random_changes += off * prev < 0;
+                }
                 prev = off;
             }
         }
     }
     const double random_fraction = double(random_changes) / double(random_steps);
     run.check("fig6.outer_curve_alternates", steps ? double(changes) / steps : 0.0, random_fraction > 0.5 ? 1.0 : 0.0);
-    run.note("Random data (300 seeded sets, interior convex spans): the outer curve alternates in " + std::to_string(random_changes) +
-             " of " + std::to_string(random_steps) + " steps (" + format_number(100.0 * random_fraction, 3) + " %).");
-    run.note("Alternation: " + std::to_string(changes) + " of " + std::to_string(steps) + " steps on convex spans meeting the paper's condition; " +
-             std::to_string(all_changes) + " of " + std::to_string(all_steps) + " on all convex spans (the exceptions are spans where the condition fails).");
+    run.note("Random data (300 seeded sets, interior convex spans): the outer curve alternates in " + std::to_string(random_changes) + " of " + std::to_string(random_steps) +
+             " steps (" + format_number(100.0 * random_fraction, 3) + " %).");
+    run.note("Alternation: " + std::to_string(changes) + " of " + std::to_string(steps) + " steps on convex spans meeting the paper's condition; " + std::to_string(all_changes) +
+             " of " + std::to_string(all_steps) + " on all convex spans (the exceptions are spans where the condition fails).");
     run.note("Fig. 6 close-up: span [" + std::to_string(best_span) + ", " + std::to_string(best_span + 1) +
              "], the lower-right convex span with the largest S − B2 offset at m = 1, 2; offsets per span in fig6_sides.csv.");
     auto fig6 = run.table("fig6.csv", {"u", "s1x", "s1y", "b1x", "b1y", "s2x", "s2y", "b2x", "b2y"});

@@ -17,10 +17,9 @@ int main(int argc, char** argv) {
     const MVector solid_printed = parse_m_vector("1,2,2,1,2,1,2,1,0,1,1,2,2,3,2,2,1,2,3");
     run.check("fig7.vector_lengths", double(solid_printed.size()) - double(dotted.size()));
     MVector solid = solid_printed;
-    solid.push_back(solid.back());   // 20 segments: last entry repeated (erratum E4)
-    run.note("Caption m-vectors: dotted " + format_m_vector(dotted) + " (" + std::to_string(dotted.size()) + " entries); solid " +
-             format_m_vector(solid_printed) + " (" + std::to_string(solid_printed.size()) +
-             " entries, used with its last entry repeated).");
+    solid.push_back(solid.back());  // 20 segments: last entry repeated (erratum E4)
+    run.note("Caption m-vectors: dotted " + format_m_vector(dotted) + " (" + std::to_string(dotted.size()) + " entries); solid " + format_m_vector(solid_printed) + " (" +
+             std::to_string(solid_printed.size()) + " entries, used with its last entry repeated).");
 
     PointList p(21, 2);
     for (int k = 0; k <= 20; ++k) {
@@ -37,8 +36,7 @@ int main(int argc, char** argv) {
     auto spans = run.table("fig7_spans.csv", {"span", "m_dotted", "m_solid", "max_distance_over_diag", "predicted_to_move"});
     for (int s = 0; s < 20; ++s) {
         bool predicted = false;
-        for (int i = std::max(0, s - 1); i <= std::min(19, s + 1); ++i)
-            predicted = predicted || dotted[i].left != solid[i].left || dotted[i].right != solid[i].right;
+        for (int i = std::max(0, s - 1); i <= std::min(19, s + 1); ++i) predicted = predicted || dotted[i].left != solid[i].left || dotted[i].right != solid[i].right;
         const double d = analysis::max_distance_same_parameter(ca, cb, s, s + 1, 65) / diag;
         disagreements += (d > 1e-12) != predicted;
         spans.row({double(s), double(dotted[s].left), double(solid[s].left), d, predicted ? 1.0 : 0.0});

@@ -27,8 +27,7 @@ int main(int argc, char** argv) {
             run.check(k + ".wm", w(1));
             run.check(k + ".wm1", w(2));
             run.validate(k + ".stencil", "closed form vs (1,4,1)/6 stencil on eq (12) weights (max |Δ|, and no other q_{i,j} left)",
-                         std::max((w - stencil.weights).cwiseAbs().maxCoeff(), stencil.largest_other), 0.0, 1e-15,
-                         "rounding (a dozen terms)");
+                         std::max((w - stencil.weights).cwiseAbs().maxCoeff(), stencil.largest_other), 0.0, 1e-15, "rounding (a dozen terms)");
         }
         if (m == 5) run.check("eq13.m5_within_0_1_percent", err < 1e-3 ? 1.0 : 0.0);
     }
@@ -53,8 +52,7 @@ int main(int argc, char** argv) {
         for (int i = 0; i <= m + 1; ++i) {
             const double expect = i <= m ? K * std::pow(alpha(), i) / 2 : 0.0;
             // extra_points row r is segment r−1; d_{2i+1} is segment half+i, d_{−2i−1} segment half−i−1.
-            eq14 = std::max({eq14, std::abs(s.extra_points(half + i + 1, 1) - expect),
-                             std::abs(s.extra_points(half - i, 1) - expect)});
+            eq14 = std::max({eq14, std::abs(s.extra_points(half + i + 1, 1) - expect), std::abs(s.extra_points(half - i, 1) - expect)});
         }
     }
     run.check("eq14.extra_points", eq14);

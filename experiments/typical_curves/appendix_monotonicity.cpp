@@ -27,8 +27,10 @@ std::array<double, 6> printed_coefficients(double a, double b) {
     using std::sin;
     const double C0 = std::pow(cos(a / 2), 3) * (sin(a / 2 + b) - 3 * sin(a / 2));
     const double C1 = -0.4 * (2 - 4 * cos(a) + cos(b) + cos(a + b)) * sin(a) - std::pow(cos(a / 2), 3) * (3 * sin(a / 2) - sin(a / 2 + b));
-    const double C2 = (-22 * sin(a) + 7 * sin(2 * a) - 2 * cos(a / 2) * (32 * sin(a / 2) - b) + 14 * sin(a / 2 + b) - 6 * sin(1.5 * a + b) + sin(a / 2 + 2 * b) + sin(1.5 * a + 2 * b)) / 40;
-    const double C3 = -(-22 * sin(b) + 7 * sin(2 * b) - 2 * cos(b / 2) * (-32 * sin(a - b / 2) + 14 * sin(a + b / 2)) - 6 * sin(a + 1.5 * b) + sin(2 * a + b / 2) + sin(a + 1.5 * b)) / 40;
+    const double C2 =
+        (-22 * sin(a) + 7 * sin(2 * a) - 2 * cos(a / 2) * (32 * sin(a / 2) - b) + 14 * sin(a / 2 + b) - 6 * sin(1.5 * a + b) + sin(a / 2 + 2 * b) + sin(1.5 * a + 2 * b)) / 40;
+    const double C3 =
+        -(-22 * sin(b) + 7 * sin(2 * b) - 2 * cos(b / 2) * (-32 * sin(a - b / 2) + 14 * sin(a + b / 2)) - 6 * sin(a + 1.5 * b) + sin(2 * a + b / 2) + sin(a + 1.5 * b)) / 40;
     const double C4 = 0.4 * (2 + cos(a) - 4 * cos(b) + cos(a + b)) * sin(b) + std::pow(cos(b / 2), 3) * (3 * sin(b / 2) - sin(a + b / 2));
     const double C5 = -std::pow(cos(b / 2), 3) * (sin(a + b / 2) - 3 * sin(b / 2));
     return {C0, C1, C2, C3, C4, C5};
@@ -56,8 +58,9 @@ std::vector<double> h_with_factor(double a, double b, double k, double scale = 1
 }  // namespace
 
 int main(int argc, char** argv) {
-    repro::ArtifactRun run("typical_curves", "appendix_monotonicity", "3.4",
-                           "Curvature monotonicity of cubic B-spline segments: coefficients C0–C5, condition (29)–(30), Fig. 7 regions, endpoint interpolation (section 3.4, appendix A)", argc, argv);
+    repro::ArtifactRun run(
+        "typical_curves", "appendix_monotonicity", "3.4",
+        "Curvature monotonicity of cubic B-spline segments: coefficients C0–C5, condition (29)–(30), Fig. 7 regions, endpoint interpolation (section 3.4, appendix A)", argc, argv);
     const double half_pi = std::numbers::pi / 2;
 
     // ---- A.1: the printed coefficients against the exact ones, on a 41 × 41 grid of [0, π/2]².
@@ -75,7 +78,7 @@ int main(int argc, char** argv) {
             diff_c2_ext = std::max(diff_c2_ext, std::abs(printed_c2_bracket_extended(a, b) - h[2]));
             diff_c3_cor = std::max(diff_c3_cor, std::abs(printed_c3_corrected(a, b) - h[3]));
             diff_two_thirds = std::max(diff_two_thirds, std::abs(printed[1] - h23[1]));
-            if (i == 20 && j == 10) {   // |Q1Q2| scaled to 1 (×3) as the text says, and unscaled
+            if (i == 20 && j == 10) {  // |Q1Q2| scaled to 1 (×3) as the text says, and unscaled
                 ratio_scaled = h_with_factor(a, b, 1.5, 3.0)[0] / printed[0];
                 ratio_unscaled = h[0] / printed[0];
             }
@@ -88,7 +91,8 @@ int main(int argc, char** argv) {
     run.check("appendix.C5", diff[5]);
     run.check("appendix.eq40_factor", diff_two_thirds, diff[1]);
     run.check("appendix.scaled_q1q2", ratio_scaled, ratio_unscaled);
-    run.validate("closed_forms", "library closed forms C0–C5 (monotonicity_coefficients) vs the Bernstein-product h, largest difference on the grid", diff_closed, 0.0, 1e-13, "rounding (measured ~1e-15)");
+    run.validate("closed_forms", "library closed forms C0–C5 (monotonicity_coefficients) vs the Bernstein-product h, largest difference on the grid", diff_closed, 0.0, 1e-13,
+                 "rounding (measured ~1e-15)");
 
     // eq (39): dκ/dt against central differences of κ(t) at t = 0.1 … 0.9, one segment.
     {
@@ -170,9 +174,11 @@ int main(int argc, char** argv) {
                 }
             }
         run.check("sec3.4.condition29_all_negative_wide", static_cast<double>(w29_all) / static_cast<double>(w29));
-        run.note("Over (0, π)² (" + std::to_string(m) + " × " + std::to_string(m) + " grid): where (29) holds, every C_i < 0 at " + format_number(100.0 * w29_all / static_cast<double>(w29), 6) +
-                 " % of the points and dκ/dt ≤ 0 (exact) at " + format_number(100.0 * w29_mono / static_cast<double>(w29), 6) + " %" +
-                 (worst_a >= 0 ? "; first counterexample to 'all C_i < 0' at (θ0, θ1) = (" + format_number(worst_a, 6) + ", " + format_number(worst_b, 6) + ")." : "; no counterexample."));
+        run.note("Over (0, π)² (" + std::to_string(m) + " × " + std::to_string(m) + " grid): where (29) holds, every C_i < 0 at " +
+                 format_number(100.0 * w29_all / static_cast<double>(w29), 6) + " % of the points and dκ/dt ≤ 0 (exact) at " +
+                 format_number(100.0 * w29_mono / static_cast<double>(w29), 6) + " %" +
+                 (worst_a >= 0 ? "; first counterexample to 'all C_i < 0' at (θ0, θ1) = (" + format_number(worst_a, 6) + ", " + format_number(worst_b, 6) + ")."
+                               : "; no counterexample."));
     }
 
     // Figure data: 301 × 301 classification codes as a matrix (row i: θ0 = 0.3° i, column j: θ1 = 0.3° j;
@@ -189,19 +195,25 @@ int main(int argc, char** argv) {
                 const RegionPoint& r = grid[static_cast<std::size_t>(i) * m + j];
                 // 0: not monotone; 1: monotone (exact) only; 2: all C_i < 0 without (29); 3: (29) (and all C_i < 0);
                 // 4: (29) without all C_i < 0 (a counterexample); 5: increasing (the mirrored case).
-                const int cls = r.condition29 ? (r.all_negative ? 3 : 4) : r.all_negative ? 2 : r.exact == analysis::Trend::decreasing ? 1 : r.exact == analysis::Trend::increasing ? 5 : 0;
+                const int cls = r.condition29                            ? (r.all_negative ? 3 : 4)
+                                : r.all_negative                         ? 2
+                                : r.exact == analysis::Trend::decreasing ? 1
+                                : r.exact == analysis::Trend::increasing ? 5
+                                                                         : 0;
                 line.push_back(std::to_string(cls));
             }
             codes.row_text(line);
         }
         CsvWriter bound = run.table("fig7_bound.csv", {"theta0_deg", "theta1_bound_deg"});
         for (int i = 0; i <= 90; ++i) bound.row({static_cast<double>(i), theta1_bound(half_pi * i / 90) * 180 / std::numbers::pi});
-        run.figure("fig7_regions", "Fig. 7 redrawn as regions of the unit polygon's (θ0, θ1) ∈ [0°, 90°]²: where (29) holds (then every C_i < 0), where every C_i < 0 without (29), where the curvature is monotone only by the exact sign of dκ/dt, and where it is not monotone; the line is eq (30).");
+        run.figure("fig7_regions",
+                   "Fig. 7 redrawn as regions of the unit polygon's (θ0, θ1) ∈ [0°, 90°]²: where (29) holds (then every C_i < 0), where every C_i < 0 without (29), where the "
+                   "curvature is monotone only by the exact sign of dκ/dt, and where it is not monotone; the line is eq (30).");
     }
 
     // ---- A.2: endpoint-interpolating cubic B-splines.
     {
-        Eigen::MatrixXd q(8, 2);   // unit edges, turns 0.5, 0.35, 0.25, 0.18, 0.12, 0.08 (ours)
+        Eigen::MatrixXd q(8, 2);  // unit edges, turns 0.5, 0.35, 0.25, 0.18, 0.12, 0.08 (ours)
         const double turns[] = {0.0, 0.5, 0.35, 0.25, 0.18, 0.12, 0.08};
         double dir = 0.0;
         q.row(0) << 0, 0;
@@ -249,7 +261,8 @@ int main(int argc, char** argv) {
             }
             return pos && neg ? analysis::Trend::not_monotone : pos ? analysis::Trend::increasing : analysis::Trend::decreasing;
         };
-        CsvWriter table = run.table("checker_typical_polygons.csv", {"degree", "knots", "segments", "condition29_monotone", "bernstein_monotone", "exact_monotone", "whole_curve_monotone"});
+        CsvWriter table =
+            run.table("checker_typical_polygons.csv", {"degree", "knots", "segments", "condition29_monotone", "bernstein_monotone", "exact_monotone", "whole_curve_monotone"});
         auto tally = [&](const BSplineCurve& c) {
             const MonotonicityReport rep = cubic_bspline_curvature_monotonicity(c);
             std::vector<BezierCurve> segs = bezier_segments(c);
@@ -272,10 +285,12 @@ int main(int argc, char** argv) {
         for (int degree : {24, 49, 99}) {
             const TypicalPolygon poly = scale_one_typical_polygon(-0.5, 1.0, degree);
             const auto u = tally(uniform_cubic_bspline(poly.points));
-            table.row_text({std::to_string(degree), "uniform", std::to_string(poly.points.rows() - 3), format_number(u[0], 6), format_number(u[1], 6), format_number(u[2], 6), format_number(u[3], 6)});
-            const Eigen::MatrixXd ends = endpoint_interpolating_polygon(poly.points * degree);   // unit edges
+            table.row_text({std::to_string(degree), "uniform", std::to_string(poly.points.rows() - 3), format_number(u[0], 6), format_number(u[1], 6), format_number(u[2], 6),
+                            format_number(u[3], 6)});
+            const Eigen::MatrixXd ends = endpoint_interpolating_polygon(poly.points * degree);  // unit edges
             const auto e = tally(endpoint_interpolating_cubic_bspline(ends));
-            table.row_text({std::to_string(degree), "endpoint_interpolating", std::to_string(ends.rows() - 3), format_number(e[0], 6), format_number(e[1], 6), format_number(e[2], 6), format_number(e[3], 6)});
+            table.row_text({std::to_string(degree), "endpoint_interpolating", std::to_string(ends.rows() - 3), format_number(e[0], 6), format_number(e[1], 6),
+                            format_number(e[2], 6), format_number(e[3], 6)});
         }
         for (int trial = 0; trial < 200; ++trial) {
             Eigen::MatrixXd q(9, 2);
@@ -287,7 +302,8 @@ int main(int argc, char** argv) {
             }
             tally(endpoint_interpolating_cubic_bspline(endpoint_interpolating_polygon(q)));
         }
-        run.validate("checker_vs_sampling", "per-segment exact verdict (Bernstein subdivision) equals the verdict of 2001 samples of h (fraction of " + std::to_string(segments) + " segments)",
+        run.validate("checker_vs_sampling",
+                     "per-segment exact verdict (Bernstein subdivision) equals the verdict of 2001 samples of h (fraction of " + std::to_string(segments) + " segments)",
                      static_cast<double>(agree) / segments, 1.0, 0.0, "yes/no per segment");
         run.validate("guarantee_sound", "segments guaranteed monotone by (29) or by the Bernstein signs are monotone by sampling (fraction of " + std::to_string(guaranteed) + ")",
                      static_cast<double>(guaranteed_and_monotone) / guaranteed, 1.0, 0.0, "yes/no per segment");

@@ -51,7 +51,7 @@ Eigen::MatrixXd random_matrix(int d, Set set, std::mt19937& rng) {
             const double theta = set == Set::typical_class_a ? bound * frac(rng) : bound * (1.0 + 0.2 * frac(rng)) + 1e-9;
             Eigen::MatrixXd m = Eigen::MatrixXd::Identity(d, d);
             m.topLeftCorner(2, 2) = typical_matrix(theta, s);
-            if (d == 3) m(2, 2) = s;   // 3-D: rotation about z with the same scale
+            if (d == 3) m(2, 2) = s;  // 3-D: rotation about z with the same scale
             if (set == Set::typical_class_a || !class_a_test(m).eq2) return m;
             continue;
         }
@@ -134,7 +134,7 @@ int main(int argc, char** argv) {
                 const Eigen::MatrixXd m = random_matrix(d, set, rng);
                 Eigen::VectorXd b0 = Eigen::VectorXd::Zero(d), db0 = Eigen::VectorXd::Zero(d);
                 db0(0) = 1.0;
-                if (d == 3) db0(2) = 0.3;   // off the plane of the typical rotation: a true space curve
+                if (d == 3) db0(2) = 0.3;  // off the plane of the typical rotation: a true space curve
                 const BezierCurve curve(class_a_control_points(b0, db0, m, degree));
                 const BernsteinPolynomial kp = d == 2 ? analysis::curvature_derivative_numerator(curve) : analysis::squared_curvature_derivative_numerator(curve);
                 const SignAnalysis sk = sign_on_unit_interval(kp);
@@ -147,8 +147,8 @@ int main(int argc, char** argv) {
                     const SignAnalysis st = sign_on_unit_interval(tp);
                     mono_t += monotone(analysis::trend_of(st));
                     if (set == Set::typical_class_a && !monotone(analysis::trend_of(st)) && counterexample.empty())
-                        counterexample = "M = s R_z(θ) with s = " + format_number(m(2, 2), 8) + ", θ = " + format_number(std::atan2(m(1, 0), m(0, 0)), 8) +
-                                         ", degree " + std::to_string(degree) + ", Δb0 = (1, 0, 0.3): dτ/dt is negative at t = " + format_number(st.t_negative, 6) +
+                        counterexample = "M = s R_z(θ) with s = " + format_number(m(2, 2), 8) + ", θ = " + format_number(std::atan2(m(1, 0), m(0, 0)), 8) + ", degree " +
+                                         std::to_string(degree) + ", Δb0 = (1, 0, 0.3): dτ/dt is negative at t = " + format_number(st.t_negative, 6) +
                                          " and positive at t = " + format_number(st.t_positive, 6);
                     ++checked;
                     agree += consistent(tp, st);
@@ -156,12 +156,16 @@ int main(int argc, char** argv) {
             }
             table.row_text({std::to_string(d), name(set), std::to_string(curves), std::to_string(mono_k), d == 3 ? std::to_string(mono_t) : ""});
             if (set == Set::symmetric_class_a) {
-                if (d == 2) planar_class_a = mono_k / static_cast<double>(curves);
-                else space_curv = mono_k / static_cast<double>(curves), space_tors = mono_t / static_cast<double>(curves);
+                if (d == 2)
+                    planar_class_a = mono_k / static_cast<double>(curves);
+                else
+                    space_curv = mono_k / static_cast<double>(curves), space_tors = mono_t / static_cast<double>(curves);
             }
             if (set == Set::typical_class_a) {
-                if (d == 2) planar_typical = mono_k / static_cast<double>(curves);
-                else space_typical = mono_k / static_cast<double>(curves), space_typical_tors = mono_t / static_cast<double>(curves);
+                if (d == 2)
+                    planar_typical = mono_k / static_cast<double>(curves);
+                else
+                    space_typical = mono_k / static_cast<double>(curves), space_typical_tors = mono_t / static_cast<double>(curves);
             }
         }
     run.check("sec2.1.class_a_monotone_curvature_2d", planar_class_a);
@@ -172,8 +176,13 @@ int main(int argc, char** argv) {
     // Torsion for the non-symmetric (typical) class A matrices; corrected: symmetric class A.
     run.check("sec2.1.typical_monotone_torsion_3d", space_typical_tors, space_tors);
     if (!counterexample.empty()) run.note("A class A space curve whose torsion is not monotone: " + counterexample + ".");
-    run.validate("exact_vs_sampled", "exact verdicts confirmed: monotone ones by 2001 samples of the numerator, sign changes by evaluating their witnesses (fraction of " + std::to_string(checked) + " polynomials)",
+    run.validate("exact_vs_sampled",
+                 "exact verdicts confirmed: monotone ones by 2001 samples of the numerator, sign changes by evaluating their witnesses (fraction of " + std::to_string(checked) +
+                     " polynomials)",
                  agree / static_cast<double>(checked), 1.0, 0.0, "yes/no per polynomial");
-    run.note("class_a_random.csv: out of 400 curves per set (degrees 3–8), how many have monotone curvature (and torsion): symmetric class A and typical matrices, and just outside — symmetric matrices failing eq (3), typical matrices failing (4) slightly, and non-symmetric matrices that pass every test of eq (2)–(3) (the paper states (3) for symmetric matrices only).");
+    run.note(
+        "class_a_random.csv: out of 400 curves per set (degrees 3–8), how many have monotone curvature (and torsion): symmetric class A and typical matrices, and just outside — "
+        "symmetric matrices failing eq (3), typical matrices failing (4) slightly, and non-symmetric matrices that pass every test of eq (2)–(3) (the paper states (3) for "
+        "symmetric matrices only).");
     return run.finish();
 }

@@ -19,7 +19,8 @@ using namespace cagd;
 using namespace cagd::aesthetic;
 
 int main(int argc, char** argv) {
-    repro::ArtifactRun run("typical_curves", "fig1", "3.1b", "Fig. 1: α = −0.5 approximated by scale-1 typical Bézier curves of degree 99, 49, 24; curvature, LCG and its slope (section 3.1)", argc, argv);
+    repro::ArtifactRun run("typical_curves", "fig1", "3.1b",
+                           "Fig. 1: α = −0.5 approximated by scale-1 typical Bézier curves of degree 99, 49, 24; curvature, LCG and its slope (section 3.1)", argc, argv);
     const double alpha = -0.5, L = 1.0, t0 = 0.05, t1 = 0.95;
     const int samples = 400;
     const std::vector<int> degrees{99, 49, 24};
@@ -65,10 +66,12 @@ int main(int argc, char** argv) {
     run.check("fig1.lcg_slope_degree99", slopes[0]);
     run.check("fig1.curvature_monotone", all_monotone ? 1.0 : 0.0);
     run.check("fig1.lcg_less_straight_with_lower_degree", residuals[0] < residuals[1] && residuals[1] < residuals[2] ? 1.0 : 0.0);
-    run.note("LCG slopes (our choices: L = 1, fit t ∈ [0.05, 0.95]): degree 99: " + format_number(slopes[0], 5) + ", 49: " + format_number(slopes[1], 5) + ", 24: " +
-             format_number(slopes[2], 5) + "; largest residual from the fitted line: " + format_number(residuals[0], 3) + ", " + format_number(residuals[1], 3) + ", " +
+    run.note("LCG slopes (our choices: L = 1, fit t ∈ [0.05, 0.95]): degree 99: " + format_number(slopes[0], 5) + ", 49: " + format_number(slopes[1], 5) +
+             ", 24: " + format_number(slopes[2], 5) + "; largest residual from the fitted line: " + format_number(residuals[0], 3) + ", " + format_number(residuals[1], 3) + ", " +
              format_number(residuals[2], 3) + ".");
-    run.figure("fig1", "Fig. 1 redrawn: the degree-24 control polygon and curve (left), curvature against arc-length fraction (middle) and LCGs (right) for degrees 99, 49, 24 and the target eq. (15) (α = −0.5, L = 1).");
+    run.figure("fig1",
+               "Fig. 1 redrawn: the degree-24 control polygon and curve (left), curvature against arc-length fraction (middle) and LCGs (right) for degrees 99, 49, 24 and the "
+               "target eq. (15) (α = −0.5, L = 1).");
 
     // How the slope depends on the unstated choices.
     {
@@ -98,7 +101,8 @@ int main(int argc, char** argv) {
             // Stable evaluations agree (de Casteljau is O(n²): checked at 5 parameters).
             if (n <= 999) {
                 const BezierCurve dc(poly.points);
-                for (double u : {0.0, 0.2, 0.5, 0.8, 1.0}) worst_stable = std::max(worst_stable, (dc.jet(u, 3) - stable.jet(u, 3)).cwiseAbs().maxCoeff() / (dc.jet(u, 3).cwiseAbs().maxCoeff()));
+                for (double u : {0.0, 0.2, 0.5, 0.8, 1.0})
+                    worst_stable = std::max(worst_stable, (dc.jet(u, 3) - stable.jet(u, 3)).cwiseAbs().maxCoeff() / (dc.jet(u, 3).cwiseAbs().maxCoeff()));
             }
             std::string power_err = "", power_slope = "";
             if (n <= 199) {
@@ -115,9 +119,12 @@ int main(int argc, char** argv) {
             t.row_text({std::to_string(n), format_number(si, 6), format_number(sf, 6), power_err, power_slope});
         }
         run.check("fig1.slope_converges_to_alpha", std::abs(slope_1999 - alpha));
-        run.validate("bernstein_vs_de_casteljau", "O(n) Bernstein evaluation vs de Casteljau, jets to 3rd order at 5 parameters, degrees 24 … 999 (largest difference relative to the jet's size)",
-                     worst_stable, 0.0, 1e-9, "rounding grows like n·ε per derivative order (measured ≤ 1e-12)");
-        run.figure("fig1_convergence", "LCG slope of the scale-1 curve (α = −0.5, L = 1) against the degree, with the O(n) Bernstein evaluation; the power-basis evaluation's position error, which grows exponentially with the degree.");
+        run.validate("bernstein_vs_de_casteljau",
+                     "O(n) Bernstein evaluation vs de Casteljau, jets to 3rd order at 5 parameters, degrees 24 … 999 (largest difference relative to the jet's size)", worst_stable,
+                     0.0, 1e-9, "rounding grows like n·ε per derivative order (measured ≤ 1e-12)");
+        run.figure("fig1_convergence",
+                   "LCG slope of the scale-1 curve (α = −0.5, L = 1) against the degree, with the O(n) Bernstein evaluation; the power-basis evaluation's position error, which "
+                   "grows exponentially with the degree.");
     }
     return run.finish();
 }

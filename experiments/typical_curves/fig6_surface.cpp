@@ -20,7 +20,8 @@
 using namespace cagd;
 
 int main(int argc, char** argv) {
-    repro::ArtifactRun run("typical_curves", "fig6_surface", "5", "Fig. 6: nonstationary typical surface, 25×25 control points, boundaries α = −0.5 (v = 0) and −0.6 (u = 0), 0.01° per polygon (section 5)", argc, argv);
+    repro::ArtifactRun run("typical_curves", "fig6_surface", "5",
+                           "Fig. 6: nonstationary typical surface, 25×25 control points, boundaries α = −0.5 (v = 0) and −0.6 (u = 0), 0.01° per polygon (section 5)", argc, argv);
     const double alpha_u = -0.5, alpha_v = -0.6, L = 1.0, pi = std::numbers::pi, angle = 0.01 * pi / 180.0;
     const int degree = 24, grid = 51;
     const surface::ControlNet net = aesthetic::log_aesthetic_typical_net(alpha_u, alpha_v, L, degree, angle);
@@ -42,8 +43,8 @@ int main(int argc, char** argv) {
         }
     run.check("fig6.edge_lengths_fixed", edge_dev);
     run.check("fig6.second_condition_holds", printed_dev <= 1e-12 ? 1.0 : 0.0, corrected_dev <= 1e-12 ? 1.0 : 0.0);
-    run.note("Second condition of section 5 over the 576 control polygons, relative to the edge 1/24: as printed, | |P(i,j)P(i+1,j+1)| − |P(i+1,j)P(i+1,j+1)| | up to " + format_number(printed_dev, 3) +
-             "; corrected (|P(i,j)P(i,j+1)| = |P(i+1,j)P(i+1,j+1)|) up to " + format_number(corrected_dev, 3) + ".");
+    run.note("Second condition of section 5 over the 576 control polygons, relative to the edge 1/24: as printed, | |P(i,j)P(i+1,j+1)| − |P(i+1,j)P(i+1,j+1)| | up to " +
+             format_number(printed_dev, 3) + "; corrected (|P(i,j)P(i,j+1)| = |P(i+1,j)P(i+1,j+1)|) up to " + format_number(corrected_dev, 3) + ".");
 
     // Evaluation: basis-matrix grid against de Casteljau.
     std::vector<double> ts;
@@ -57,7 +58,9 @@ int main(int argc, char** argv) {
             const Eigen::Vector3d* ys[6] = {&y.s, &y.su, &y.sv, &y.suu, &y.suv, &y.svv};
             for (int k = 0; k < 6; ++k) eval_dev = std::max(eval_dev, (*xs[k] - *ys[k]).norm() / std::max(1.0, ys[k]->norm()));
         }
-    run.validate("patch_grid_vs_de_casteljau", "bi-24 patch: S and its derivatives to 2nd order by basis matrices against de Casteljau (rows, then columns), 36 parameter pairs (largest difference relative to max(1, |value|))",
+    run.validate("patch_grid_vs_de_casteljau",
+                 "bi-24 patch: S and its derivatives to 2nd order by basis matrices against de Casteljau (rows, then columns), 36 parameter pairs (largest difference relative to "
+                 "max(1, |value|))",
                  eval_dev, 0.0, 1e-11, "rounding, growing with degree² for 2nd derivatives (measured ≤ 1e-12)");
 
     // Curvature maps; the Weingarten route with differences of the unit normal as the check.
@@ -80,7 +83,9 @@ int main(int argc, char** argv) {
         }
         surf.end_scan();
     }
-    run.validate("curvature_weingarten", "K and H from the second fundamental form against the Weingarten route with central differences (h = 1e-5) of the unit normal, interior grid points (largest absolute difference)",
+    run.validate("curvature_weingarten",
+                 "K and H from the second fundamental form against the Weingarten route with central differences (h = 1e-5) of the unit normal, interior grid points (largest "
+                 "absolute difference)",
                  weingarten_dev, 0.0, 1e-6, "central differences: O(h²) truncation and O(ε/h) rounding (measured ≤ 1e-8)");
     run.note("On the 51×51 grid: Gaussian curvature K ∈ [" + format_number(kmin, 4) + ", " + format_number(kmax, 4) + "], mean curvature H ∈ [" + format_number(hmin, 4) + ", " +
              format_number(hmax, 4) + "] (normal S_u × S_v).");
@@ -93,7 +98,8 @@ int main(int argc, char** argv) {
             bv.row(i) << net[1](0, i), net[2](0, i);
         }
         const double su = analysis::lcg_slope(BezierCurve(bu), 0.05, 0.95, 400).slope, sv = analysis::lcg_slope(BezierCurve(bv), 0.05, 0.95, 400).slope;
-        run.note("LCG slopes of the boundary curves (degree 24, fit t ∈ [0.05, 0.95]): v = 0 (α = −0.5): " + format_number(su, 4) + "; u = 0 (α = −0.6): " + format_number(sv, 4) + ".");
+        run.note("LCG slopes of the boundary curves (degree 24, fit t ∈ [0.05, 0.95]): v = 0 (α = −0.5): " + format_number(su, 4) + "; u = 0 (α = −0.6): " + format_number(sv, 4) +
+                 ".");
     }
 
     // Net and the effect of the angle.
@@ -115,7 +121,8 @@ int main(int argc, char** argv) {
                     const analysis::SurfaceCurvatures c = analysis::surface_curvatures(gd.jet(a, b));
                     k0 = std::min(k0, c.gaussian), k1 = std::max(k1, c.gaussian), h0 = std::min(h0, c.mean), h1 = std::max(h1, c.mean);
                 }
-            const Eigen::Vector3d shift(nd[0](degree, degree) - flat[0](degree, degree), nd[1](degree, degree) - flat[1](degree, degree), nd[2](degree, degree) - flat[2](degree, degree));
+            const Eigen::Vector3d shift(nd[0](degree, degree) - flat[0](degree, degree), nd[1](degree, degree) - flat[1](degree, degree),
+                                        nd[2](degree, degree) - flat[2](degree, degree));
             t.row({deg, shift.norm(), k0, k1, h0, h1});
         }
     }
@@ -123,7 +130,10 @@ int main(int argc, char** argv) {
     {
         CsvWriter t = run.table("fig6_diagonal.csv", {"kind", "x", "y", "z"});
         const Eigen::Vector3d p00(0, 0, 0), p10(1, 0, 0.15), p01(0.1, 1, 0.1);
-        for (const auto& [kind, q] : {std::pair{"given", p00}, {"given", p10}, {"given", p01}, {"parallelogram", aesthetic::rotated_fourth_point(p00, p10, p01, 0.0)},
+        for (const auto& [kind, q] : {std::pair{"given", p00},
+                                      {"given", p10},
+                                      {"given", p01},
+                                      {"parallelogram", aesthetic::rotated_fourth_point(p00, p10, p01, 0.0)},
                                       {"turned_40deg", aesthetic::rotated_fourth_point(p00, p10, p01, 40.0 * pi / 180.0)}})
             t.row_text({kind, format_number(q(0)), format_number(q(1)), format_number(q(2))});
         for (int k = 0; k <= 72; ++k) {
@@ -131,6 +141,8 @@ int main(int argc, char** argv) {
             t.row_text({"circle", format_number(q(0)), format_number(q(1)), format_number(q(2))});
         }
     }
-    run.figure("fig6", "Fig. 6 redrawn: one control polygon and the circle on which its fourth point turns about the diagonal (top left); the 25×25 net and the bi-24 patch (top right); Gaussian (bottom left) and mean curvature (bottom right) over (u, v).");
+    run.figure("fig6",
+               "Fig. 6 redrawn: one control polygon and the circle on which its fourth point turns about the diagonal (top left); the 25×25 net and the bi-24 patch (top right); "
+               "Gaussian (bottom left) and mean curvature (bottom right) over (u, v).");
     return run.finish();
 }

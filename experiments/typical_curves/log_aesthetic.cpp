@@ -18,7 +18,8 @@ int main(int argc, char** argv) {
     struct Case {
         double alpha, c0, c1;
     };
-    const std::vector<Case> cases{{-2.0, 1.0, 0.5}, {-1.0, 1.0, 0.2}, {-0.5, 2.0, 0.3}, {0.0, 1.2, 0.7}, {0.5, 1.0, 1.0}, {1.0, 0.8, 0.5}, {1.5, 1.0, 0.4}, {2.0, 1.0, 0.4}, {3.0, -0.3, 1.0}};
+    const std::vector<Case> cases{{-2.0, 1.0, 0.5}, {-1.0, 1.0, 0.2}, {-0.5, 2.0, 0.3}, {0.0, 1.2, 0.7}, {0.5, 1.0, 1.0},
+                                  {1.0, 0.8, 0.5},  {1.5, 1.0, 0.4},  {2.0, 1.0, 0.4},  {3.0, -0.3, 1.0}};
     CsvWriter table = run.table("lac_cases.csv", {"alpha", "c0", "c1", "lcg_slope", "lcg_max_residual", "theta_error", "closed_form_error"});
     const numeric::GaussLegendreRule gl(20);
     double worst_slope = 0, worst_slope_alpha0 = 0, worst_theta = 0, worst_closed = 0, worst_position = 0;
@@ -44,8 +45,10 @@ int main(int argc, char** argv) {
                                          gl.integrate_piecewise([&](double v) { return std::sin(c.tangent_angle(v)); }, breaks));
             worst_position = std::max(worst_position, (second - c.point(s)).norm());
         }
-        if (cs.alpha == 0.0) worst_slope_alpha0 = std::abs(fit.slope);
-        else worst_slope = std::max(worst_slope, std::abs(fit.slope - cs.alpha));
+        if (cs.alpha == 0.0)
+            worst_slope_alpha0 = std::abs(fit.slope);
+        else
+            worst_slope = std::max(worst_slope, std::abs(fit.slope - cs.alpha));
         worst_theta = std::max(worst_theta, theta_err);
         if (closed_err >= 0) worst_closed = std::max(worst_closed, closed_err);
         table.row({cs.alpha, cs.c0, cs.c1, fit.slope, fit.max_residual, theta_err, closed_err});
@@ -54,7 +57,8 @@ int main(int argc, char** argv) {
     run.check("eq9.alpha0_lcg_slope", worst_slope_alpha0);
     run.check("eq13.tangent_angle", worst_theta);
     run.check("sec3.closed_form_alpha_1_2", worst_closed);
-    run.validate("position_quadrature", "C(s) of eq (14): adaptive Gauss–Kronrod (library) vs composite 20-point Gauss–Legendre on 400 panels, largest distance over all cases and s = 0.1 … 2",
+    run.validate("position_quadrature",
+                 "C(s) of eq (14): adaptive Gauss–Kronrod (library) vs composite 20-point Gauss–Legendre on 400 panels, largest distance over all cases and s = 0.1 … 2",
                  worst_position, 0.0, 1e-12, "quadrature error (measured ~1e-15)");
 
     // eq (15) represents a general curve ρ^α = c0 s + c1 (c1 > 0) up to similarity: shift s by c1/c0,
@@ -66,7 +70,7 @@ int main(int argc, char** argv) {
         p.c0 = c0;
         p.c1 = c1;
         p.length = L;
-        p.turn = -1;   // eq (15) turns clockwise for α < 1
+        p.turn = -1;  // eq (15) turns clockwise for α < 1
         const LogAestheticCurve general(p);
         const double mu = std::pow(std::pow(c0, -1.0 / alpha) / std::abs(alpha - 1.0), alpha / (1.0 - alpha));
         const double u0 = (c1 / c0) / mu, u1 = (c1 / c0 + L) / mu;
@@ -94,13 +98,17 @@ int main(int argc, char** argv) {
             for (int k = 0; k < 201; ++k) {
                 const double lr = k >= 1 ? g.points[static_cast<std::size_t>(k - 1)].log_radius : NAN;
                 const double lg = k >= 1 ? g.points[static_cast<std::size_t>(k - 1)].log_gradient : NAN;
-                if (k == 0) curves.row_text({format_number(alpha), "0", format_number(pts(0, 0)), format_number(pts(0, 1)), "", ""});
-                else curves.row({alpha, 2.0 * k / 200, pts(k, 0), pts(k, 1), lr, lg});
+                if (k == 0)
+                    curves.row_text({format_number(alpha), "0", format_number(pts(0, 0)), format_number(pts(0, 1)), "", ""});
+                else
+                    curves.row({alpha, 2.0 * k / 200, pts(k, 0), pts(k, 1), lr, lg});
             }
             curves.end_scan();
             curves.end_scan();
         }
-        run.figure("fig_lac_curves", "Eq. (15), C(s) = ∫ e^{iα v^{(α−1)/α}} dv on s ∈ [0, 2], for α = −2, −1, −0.5, 1.5, 2, 3 (left) and their logarithmic curvature graphs, straight lines of slope α (right).");
+        run.figure("fig_lac_curves",
+                   "Eq. (15), C(s) = ∫ e^{iα v^{(α−1)/α}} dv on s ∈ [0, 2], for α = −2, −1, −0.5, 1.5, 2, 3 (left) and their logarithmic curvature graphs, straight lines of slope "
+                   "α (right).");
     }
     return run.finish();
 }

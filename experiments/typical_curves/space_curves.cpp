@@ -42,7 +42,8 @@ double shape_change(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    repro::ArtifactRun run("typical_curves", "space_curves", "4", "Figs. 3–5: log-aesthetic space curves by nonstationary typical Bézier curves, α = 1.5, β = 1.2, degrees 99, 49, 24 (section 4, eq 31–37)", argc, argv);
+    repro::ArtifactRun run("typical_curves", "space_curves", "4",
+                           "Figs. 3–5: log-aesthetic space curves by nonstationary typical Bézier curves, α = 1.5, β = 1.2, degrees 99, 49, 24 (section 4, eq 31–37)", argc, argv);
     const double alpha = 1.5, beta = 1.2, L = 1.0, s0 = 0.1;
     const int samples = 400;
     const std::vector<int> degrees{99, 49, 24};
@@ -63,7 +64,7 @@ int main(int argc, char** argv) {
         ltg.push_back(b.slope);
         lcg_res.push_back(a.max_residual);
         ltg_res.push_back(b.max_residual);
-        const BezierCurve exact(poly.points);   // de Casteljau for the sign analysis
+        const BezierCurve exact(poly.points);  // de Casteljau for the sign analysis
         const analysis::Trend tk = curvature_trend(exact), tt = torsion_trend(exact);
         kappa_monotone = kappa_monotone && monotone(tk);
         tau_monotone = tau_monotone && monotone(tt);
@@ -93,21 +94,21 @@ int main(int argc, char** argv) {
         const Eigen::VectorXd p = target.point(s);
         curve_csv.row({0.0, s / L, p(0), p(1), p(2)});
         const double kappa = target.curvature(s), tau = target.torsion(s);
-        prof.row({0.0, s / L, s / L, kappa, tau, -std::log(kappa), std::log(kappa / std::abs(params.curvature.derivative(s))), -std::log(tau), std::log(tau / std::abs(params.torsion.derivative(s)))});
+        prof.row({0.0, s / L, s / L, kappa, tau, -std::log(kappa), std::log(kappa / std::abs(params.curvature.derivative(s))), -std::log(tau),
+                  std::log(tau / std::abs(params.torsion.derivative(s)))});
     }
 
     run.check("space.lcg_slope_degree99", lcg[0]);
     run.check("space.ltg_slope_degree99", ltg[0]);
     run.check("space.curvature_monotone", kappa_monotone ? 1.0 : 0.0);
     run.check("space.torsion_monotone", tau_monotone ? 1.0 : 0.0);
-    run.check("space.graphs_less_straight_with_lower_degree",
-              lcg_res[0] < lcg_res[1] && lcg_res[1] < lcg_res[2] && ltg_res[0] < ltg_res[1] && ltg_res[1] < ltg_res[2] ? 1.0 : 0.0);
+    run.check("space.graphs_less_straight_with_lower_degree", lcg_res[0] < lcg_res[1] && lcg_res[1] < lcg_res[2] && ltg_res[0] < ltg_res[1] && ltg_res[1] < ltg_res[2] ? 1.0 : 0.0);
     run.note("Our choices: κ = 0.5 σ^(−1/1.5), τ = 0.2 σ^(−1/1.2) on σ ∈ [s0, s0 + L], s0 = " + format_number(s0) + ", L = " + format_number(L) +
-             ", frames turned by R_κ ⊗ R_τ, fit over t ∈ [0, 1] (400 samples). LCG slopes, degrees 99, 49, 24: " + format_number(lcg[0], 5) + ", " + format_number(lcg[1], 5) + ", " +
-             format_number(lcg[2], 5) + "; LTG slopes: " + format_number(ltg[0], 5) + ", " + format_number(ltg[1], 5) + ", " + format_number(ltg[2], 5) +
+             ", frames turned by R_κ ⊗ R_τ, fit over t ∈ [0, 1] (400 samples). LCG slopes, degrees 99, 49, 24: " + format_number(lcg[0], 5) + ", " + format_number(lcg[1], 5) +
+             ", " + format_number(lcg[2], 5) + "; LTG slopes: " + format_number(ltg[0], 5) + ", " + format_number(ltg[1], 5) + ", " + format_number(ltg[2], 5) +
              "; largest residuals from the fitted lines, LCG: " + format_number(lcg_res[0], 3) + ", " + format_number(lcg_res[1], 3) + ", " + format_number(lcg_res[2], 3) +
-             ", LTG: " + format_number(ltg_res[0], 3) + ", " + format_number(ltg_res[1], 3) + ", " + format_number(ltg_res[2], 3) + ". Exact trends (Bernstein sign of dκ²/dt, dτ/dt): " +
-             trends + ".");
+             ", LTG: " + format_number(ltg_res[0], 3) + ", " + format_number(ltg_res[1], 3) + ", " + format_number(ltg_res[2], 3) +
+             ". Exact trends (Bernstein sign of dκ²/dt, dτ/dt): " + trends + ".");
     run.figure("fig3", "Fig. 3 redrawn: the degree-24 control polygon and Bézier curve (α = 1.5, β = 1.2) with the x, y, z axes, in perspective and in two views.");
     run.figure("fig4", "Fig. 4 redrawn: curvature and torsion against the arc-length fraction for degrees 99, 49, 24 and the target log-aesthetic space curve.");
     run.figure("fig5", "Fig. 5 redrawn: LCG (left) and LTG (right) for degrees 99, 49, 24 and the target (slopes α = 1.5, β = 1.2).");
@@ -127,14 +128,15 @@ int main(int argc, char** argv) {
             const double fraction = (fa.dihedral[0] - fb.dihedral[0]) / poly.torsion_rotations[0];
             if (comp == FrenetComposition::alexa) change_alexa = change;
             if (comp == FrenetComposition::tau_then_kappa) change_tau_first = change;
-            fractions += std::string(fractions.empty() ? "" : "; ") + to_string(comp) + ": " + format_number(fraction, 4) + " (largest angle change " + format_number(change, 3) + " rad)";
+            fractions +=
+                std::string(fractions.empty() ? "" : "; ") + to_string(comp) + ": " + format_number(fraction, 4) + " (largest angle change " + format_number(change, 3) + " rad)";
             for (std::size_t j = 0; j < poly.curvature_rotations.size(); ++j)
                 t.row_text({to_string(comp), std::to_string(j), format_number(poly.curvature_rotations[j]), format_number(poly.torsion_rotations[j]), format_number(fa.turning[j]),
                             j < fa.dihedral.size() ? format_number(fa.dihedral[j]) : ""});
         }
         run.check("space.first_torsion_rotation_no_effect", change_alexa <= 1e-12 ? 1.0 : 0.0, change_tau_first <= 1e-12 ? 1.0 : 0.0);
-        run.note("The first torsion rotation Δθ_τ,0 (degree 24): the fraction of it that reaches the first dihedral angle of the control polygon (the only place it can act) — " + fractions +
-                 ". The polygon has n − 2 dihedral angles for n − 1 torsion rotations (space_torsion_rotations.csv).");
+        run.note("The first torsion rotation Δθ_τ,0 (degree 24): the fraction of it that reaches the first dihedral angle of the control polygon (the only place it can act) — " +
+                 fractions + ". The polygon has n − 2 dihedral angles for n − 1 torsion rotations (space_torsion_rotations.csv).");
     }
 
     // Alexa's ⊗ (eq 37): log/exp against Rodrigues and against the limit definition.
@@ -144,16 +146,16 @@ int main(int argc, char** argv) {
         for (std::size_t j = 0; j < poly.curvature_rotations.size(); ++j) {
             const Eigen::Matrix3d a = curvature_rotation(poly.curvature_rotations[j]), b = torsion_rotation(poly.torsion_rotations[j]);
             const Eigen::MatrixXd ab = numeric::alexa_product(a, b);
-            vs_rodrigues = std::max(vs_rodrigues, (ab - Eigen::MatrixXd(numeric::rotation_from_vector({poly.torsion_rotations[j], 0.0, poly.curvature_rotations[j]})))
-                                                      .cwiseAbs()
-                                                      .maxCoeff());
+            vs_rodrigues =
+                std::max(vs_rodrigues, (ab - Eigen::MatrixXd(numeric::rotation_from_vector({poly.torsion_rotations[j], 0.0, poly.curvature_rotations[j]}))).cwiseAbs().maxCoeff());
             sequential = std::max(sequential, (a * b - b * a).cwiseAbs().maxCoeff());
             if (j < 10) order = std::max(order, (numeric::alexa_product_limit(a, b, 16) - numeric::alexa_product_limit(b, a, 16)).cwiseAbs().maxCoeff());
         }
         run.check("space.alexa_order_independent", order);
-        run.note("Order of the two rotations: R_κ R_τ and R_τ R_κ differ by up to " + format_number(sequential, 3) + " (largest entry, degree-99 polygon); the limit of eq (37) in the two orders by " +
-                 format_number(order, 3) + " at n = 2^16.");
-        run.validate("alexa_vs_rodrigues", "R_κ ⊗ R_τ by matrix log/exp against the rotation by the vector (Δθ_τ, 0, Δθ_κ) (Rodrigues), all 98 steps of the degree-99 polygon (largest entry difference)",
+        run.note("Order of the two rotations: R_κ R_τ and R_τ R_κ differ by up to " + format_number(sequential, 3) +
+                 " (largest entry, degree-99 polygon); the limit of eq (37) in the two orders by " + format_number(order, 3) + " at n = 2^16.");
+        run.validate("alexa_vs_rodrigues",
+                     "R_κ ⊗ R_τ by matrix log/exp against the rotation by the vector (Δθ_τ, 0, Δθ_κ) (Rodrigues), all 98 steps of the degree-99 polygon (largest entry difference)",
                      vs_rodrigues, 0.0, 1e-14, "rounding of log/exp on 3×3 rotations (measured ≤ 1e-15)");
         // The limit (A^{1/n} B^{1/n})^n, n = 2^k, with square roots only; n·error → ‖L_exp(Z, [log A, log B]/2)‖.
         const Eigen::Matrix3d a = curvature_rotation(poly.curvature_rotations[0]), b = torsion_rotation(poly.torsion_rotations[0]);
@@ -167,7 +169,9 @@ int main(int argc, char** argv) {
             t.row({static_cast<double>(k), n, err, err * n, predicted});
             if (k == 16) scaled_16 = err * n;
         }
-        run.validate("alexa_limit_definition", "eq (37) as written: n·‖(A^{1/n} B^{1/n})^n − exp(log A + log B)‖_F at n = 2^16 (square roots only) against its limit ‖L_exp(log A + log B, [log A, log B]/2)‖_F (Baker–Campbell–Hausdorff; the first rotations of the degree-99 polygon)",
+        run.validate("alexa_limit_definition",
+                     "eq (37) as written: n·‖(A^{1/n} B^{1/n})^n − exp(log A + log B)‖_F at n = 2^16 (square roots only) against its limit ‖L_exp(log A + log B, [log A, log "
+                     "B]/2)‖_F (Baker–Campbell–Hausdorff; the first rotations of the degree-99 polygon)",
                      scaled_16, predicted, 1e-3 * predicted, "O(1/n) next term (measured relative 3e-5 at n = 2^16)");
     }
 
@@ -179,11 +183,15 @@ int main(int argc, char** argv) {
             tau_err = std::max(tau_err, std::abs(analysis::torsion(target, s) - target.torsion(s)) / target.torsion(s));
             taus_err = std::max(taus_err, std::abs(analysis::torsion_arc_derivative(target, s) - params.torsion.derivative(s)) / std::abs(params.torsion.derivative(s)));
         }
-        run.validate("torsion_formula", "torsion det(r', r'', r''')/|r' × r''|² of the target curve's jets against the law τ = |β − 1| σ^{−1/β} (largest relative difference, 20 arc lengths)", tau_err, 0.0, 1e-10,
+        run.validate("torsion_formula",
+                     "torsion det(r', r'', r''')/|r' × r''|² of the target curve's jets against the law τ = |β − 1| σ^{−1/β} (largest relative difference, 20 arc lengths)",
+                     tau_err, 0.0, 1e-10, "ODE tolerance 1e-13 (measured ≤ 1e-12)");
+        run.validate("torsion_rate_formula", "dτ/ds from the 4th-order jet against the law's derivative (largest relative difference)", taus_err, 0.0, 1e-10,
                      "ODE tolerance 1e-13 (measured ≤ 1e-12)");
-        run.validate("torsion_rate_formula", "dτ/ds from the 4th-order jet against the law's derivative (largest relative difference)", taus_err, 0.0, 1e-10, "ODE tolerance 1e-13 (measured ≤ 1e-12)");
-        run.validate("target_ltg_slope", "LTG slope of the target curve (whole curve, 400 samples) against β", analysis::ltg_slope(target, 0.0, L, samples).slope, beta, 1e-9, "the LTG of eq (32) is exactly a line");
-        run.validate("target_lcg_slope", "LCG slope of the target curve against α", analysis::lcg_slope(target, 0.0, L, samples).slope, alpha, 1e-9, "the LCG of eq (31) is exactly a line");
+        run.validate("target_ltg_slope", "LTG slope of the target curve (whole curve, 400 samples) against β", analysis::ltg_slope(target, 0.0, L, samples).slope, beta, 1e-9,
+                     "the LTG of eq (32) is exactly a line");
+        run.validate("target_lcg_slope", "LCG slope of the target curve against α", analysis::lcg_slope(target, 0.0, L, samples).slope, alpha, 1e-9,
+                     "the LCG of eq (31) is exactly a line");
     }
 
     // Beyond the paper: the degree grows; vertices converge to the target curve.
@@ -203,9 +211,11 @@ int main(int argc, char** argv) {
         }
         run.check("space.lcg_slope_converges_to_alpha", std::abs(lcg_1999 - alpha));
         run.check("space.ltg_slope_converges_to_beta", std::abs(ltg_1999 - beta));
-        run.validate("polygon_first_order", "the control polygon is a first-order discretisation: vertex error at degree 399 over that at degree 199 (max |b_j − C(jΔs)|, C the Frenet–Serret solution)",
+        run.validate("polygon_first_order",
+                     "the control polygon is a first-order discretisation: vertex error at degree 399 over that at degree 199 (max |b_j − C(jΔs)|, C the Frenet–Serret solution)",
                      ratio, 199.0 / 399.0, 0.05, "first order in Δs (measured)");
-        run.figure("fig5_convergence", "Beyond the paper: LCG and LTG slopes against the degree (α = 1.5, β = 1.2), and the largest distance of the polygon's vertices from the target curve.");
+        run.figure("fig5_convergence",
+                   "Beyond the paper: LCG and LTG slopes against the degree (α = 1.5, β = 1.2), and the largest distance of the polygon's vertices from the target curve.");
     }
 
     // How the slopes and the monotonicity depend on the unstated choices.
@@ -216,9 +226,11 @@ int main(int argc, char** argv) {
                 for (FrenetComposition comp : {FrenetComposition::alexa, FrenetComposition::kappa_then_tau, FrenetComposition::tau_then_kappa})
                     for (int n : degrees)
                         for (const auto& r : {std::pair{0.0, 1.0}, {0.05, 0.95}}) {
-                            const BezierCurve c(space_typical_polygon(normalized_log_aesthetic_space_parameters(alpha, beta, len, st), n, comp).points, 0, 1, BezierEvaluation::bernstein);
+                            const BezierCurve c(space_typical_polygon(normalized_log_aesthetic_space_parameters(alpha, beta, len, st), n, comp).points, 0, 1,
+                                                BezierEvaluation::bernstein);
                             t.row_text({format_number(st), format_number(len), to_string(comp), std::to_string(n), format_number(r.first), format_number(r.second),
-                                        format_number(analysis::lcg_slope(c, r.first, r.second, samples).slope, 6), format_number(analysis::ltg_slope(c, r.first, r.second, samples).slope, 6)});
+                                        format_number(analysis::lcg_slope(c, r.first, r.second, samples).slope, 6),
+                                        format_number(analysis::ltg_slope(c, r.first, r.second, samples).slope, 6)});
                         }
         CsvWriter m = run.table("space_monotonicity_dependence.csv", {"start", "degree", "curvature_trend", "torsion_trend"});
         for (double st : {0.0, 0.05, 0.1, 0.5, 1.0})

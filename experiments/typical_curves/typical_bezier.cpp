@@ -15,7 +15,8 @@ using namespace cagd;
 using namespace cagd::aesthetic;
 
 int main(int argc, char** argv) {
-    repro::ArtifactRun run("typical_curves", "typical_bezier", "3.1", "Nonstationary typical Bézier polygons: scale-1 and constant-rotation constructions, log spiral, clothoid (sections 3.1–3.3, eq 16–28)", argc, argv);
+    repro::ArtifactRun run("typical_curves", "typical_bezier", "3.1",
+                           "Nonstationary typical Bézier polygons: scale-1 and constant-rotation constructions, log spiral, clothoid (sections 3.1–3.3, eq 16–28)", argc, argv);
 
     // ---- 3.1: scale 1.
     double worst_printed17 = 0, worst_corrected17 = 0, total_printed = 0, total_corrected = 0;
@@ -23,7 +24,7 @@ int main(int argc, char** argv) {
         for (int n : {24, 99}) {
             const double ds = 1.0 / n, e = (alpha - 1) / alpha;
             const TypicalPolygon p = scale_one_typical_polygon(alpha, 1.0, n);
-            const PlanarTransitions tr = planar_transitions(p.points);   // measured from the points
+            const PlanarTransitions tr = planar_transitions(p.points);  // measured from the points
             for (std::size_t j = 0; j + 2 < static_cast<std::size_t>(n); ++j) {
                 const double jj = static_cast<double>(j);
                 const double printed = alpha * std::pow((jj + 2) * ds, e) - alpha * std::pow((jj + 1) * ds, e);
@@ -81,7 +82,8 @@ int main(int argc, char** argv) {
         run.check("eq21.solves_eq20", worst20);
         run.check("sec3.2.constant_rotation", worst_rot);
         run.check("eq22.scale_ratio", worst22);
-        run.validate("constant_rotation_length", "the constant-rotation polygon has the requested length L = 1 (Δθ solved in closed form), largest error", worst_len, 0.0, 1e-13, "rounding");
+        run.validate("constant_rotation_length", "the constant-rotation polygon has the requested length L = 1 (Δθ solved in closed form), largest error", worst_len, 0.0, 1e-13,
+                     "rounding");
     }
 
     // ---- 3.3.1: the log spiral has a stationary matrix.
@@ -149,8 +151,10 @@ int main(int argc, char** argv) {
                 }
             }
         const LogAestheticCurve target = normalized_log_aesthetic_curve(-0.5, 1.0);
-        run.note("Eq. (15) on [0, 1] with α = −0.5 turns by " + format_number(target.tangent_angle(1.0), 6) + " rad and ends at (" + format_number(target.point(1.0).x(), 6) + ", " +
-                 format_number(target.point(1.0).y(), 6) + "); construction_comparison.csv lists both constructions: the scale-1 polygon approaches this piece, the constant-rotation polygon another piece of a curve with the same α (its eq (20) takes (j+1)Δs_j for the arc length Σ_{k≤j} Δs_k).");
+        run.note("Eq. (15) on [0, 1] with α = −0.5 turns by " + format_number(target.tangent_angle(1.0), 6) + " rad and ends at (" + format_number(target.point(1.0).x(), 6) +
+                 ", " + format_number(target.point(1.0).y(), 6) +
+                 "); construction_comparison.csv lists both constructions: the scale-1 polygon approaches this piece, the constant-rotation polygon another piece of a curve with "
+                 "the same α (its eq (20) takes (j+1)Δs_j for the arc length Σ_{k≤j} Δs_k).");
     }
     return run.finish();
 }

@@ -8,8 +8,7 @@ namespace cagd::aesthetic {
 
 namespace {
 void require_square(const Eigen::MatrixXd& m, const char* who) {
-    if (m.rows() != m.cols() || m.rows() < 2 || m.rows() > 3)
-        fail_input(who, "matrix must be 2x2 or 3x3, got " + std::to_string(m.rows()) + "x" + std::to_string(m.cols()));
+    if (m.rows() != m.cols() || m.rows() < 2 || m.rows() > 3) fail_input(who, "matrix must be 2x2 or 3x3, got " + std::to_string(m.rows()) + "x" + std::to_string(m.cols()));
     if (!m.allFinite()) fail_input(who, "matrix has a non-finite entry");
 }
 }  // namespace
@@ -44,10 +43,11 @@ Eigen::Matrix2d typical_matrix(double theta, double scale) {
 
 bool typical_matrix_condition(double theta, double scale) {
     if (!std::isfinite(theta) || !(scale > 0.0) || !std::isfinite(scale))
-        fail_input("cagd::aesthetic::typical_matrix_condition", "theta = " + full_precision(theta) + ", scale = " + full_precision(scale) + " (need finite theta, finite scale > 0)");
+        fail_input("cagd::aesthetic::typical_matrix_condition",
+                   "theta = " + full_precision(theta) + ", scale = " + full_precision(scale) + " (need finite theta, finite scale > 0)");
     if (scale > 1.0) return std::cos(theta) > 1.0 / scale;
     if (scale < 1.0) return std::cos(theta) > scale;
-    return false;   // s = 1: (4) is silent; Mᵀ + M − 2I = 2(cos θ − 1) I ≥ 0 only for θ = 0
+    return false;  // s = 1: (4) is silent; Mᵀ + M − 2I = 2(cos θ − 1) I ≥ 0 only for θ = 0
 }
 
 Eigen::MatrixXd nonstationary_control_points(const Eigen::VectorXd& b0, const Eigen::VectorXd& db0, const std::vector<Eigen::MatrixXd>& matrices) {
@@ -59,7 +59,7 @@ Eigen::MatrixXd nonstationary_control_points(const Eigen::VectorXd& b0, const Ei
         require_square(m, who);
         if (m.rows() != b0.size()) fail_input(who, "matrix size does not match the dimension of b0");
     }
-    const Eigen::Index n = static_cast<Eigen::Index>(matrices.size()) + 1;   // degree
+    const Eigen::Index n = static_cast<Eigen::Index>(matrices.size()) + 1;  // degree
     Eigen::MatrixXd pts(n + 1, b0.size());
     pts.row(0) = b0.transpose();
     Eigen::VectorXd edge = db0;

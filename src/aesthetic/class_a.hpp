@@ -21,20 +21,20 @@
 namespace cagd::aesthetic {
 
 struct ClassATest {
-    double min_eig_symmetric_part = 0.0;   // λ_min(Mᵀ + M − 2I), eq (2)
-    double min_eig_gram = 0.0;             // λ_min(MᵀM − I), eq (2)
-    Eigen::VectorXd singular_values;       // descending
-    bool eq1 = false;                      // λ_min(Mᵀ + M − 2I) ≥ 0 ⇔ eq (1)
-    bool eq2 = false;                      // both eigenvalue tests of eq (2)
-    bool singular_at_least_one = false;    // σ_min ≥ 1
-    bool cao_wang = false;                 // eq (3)
+    double min_eig_symmetric_part = 0.0;  // λ_min(Mᵀ + M − 2I), eq (2)
+    double min_eig_gram = 0.0;            // λ_min(MᵀM − I), eq (2)
+    Eigen::VectorXd singular_values;      // descending
+    bool eq1 = false;                     // λ_min(Mᵀ + M − 2I) ≥ 0 ⇔ eq (1)
+    bool eq2 = false;                     // both eigenvalue tests of eq (2)
+    bool singular_at_least_one = false;   // σ_min ≥ 1
+    bool cao_wang = false;                // eq (3)
     bool symmetric = false;
-    bool class_a = false;                  // eq2 && singular_at_least_one && cao_wang
+    bool class_a = false;  // eq2 && singular_at_least_one && cao_wang
 };
 ClassATest class_a_test(const Eigen::MatrixXd& m, double tolerance = 0.0);
 
-Eigen::Matrix2d typical_matrix(double theta, double scale);    // s R_θ
-bool typical_matrix_condition(double theta, double scale);    // eq (4)
+Eigen::Matrix2d typical_matrix(double theta, double scale);  // s R_θ
+bool typical_matrix_condition(double theta, double scale);   // eq (4)
 
 // b_0, b_1 = b_0 + Δb_0, b_{j+1} = b_j + M^j Δb_0, j < degree: (degree + 1) × dim.
 Eigen::MatrixXd class_a_control_points(const Eigen::VectorXd& b0, const Eigen::VectorXd& db0, const Eigen::MatrixXd& m, int degree);

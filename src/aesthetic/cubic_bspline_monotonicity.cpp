@@ -24,8 +24,8 @@ std::array<double, 3> leading_coefficients(double a, double b) {
     const double c3 = std::pow(cos(a / 2), 3);
     const double c0 = c3 * (sin(a / 2 + b) - 3 * sin(a / 2));
     const double c1 = -0.4 * (2 - 4 * cos(a) + cos(b) + cos(a + b)) * sin(a) - c3 * (3 * sin(a / 2) - sin(a / 2 + b));
-    const double c2 = (-22 * sin(a) + 7 * sin(2 * a) -
-                       2 * cos(a / 2) * (32 * sin(a / 2 - b) + 14 * sin(a / 2 + b) - 6 * sin(1.5 * a + b) + sin(a / 2 + 2 * b) + sin(1.5 * a + 2 * b))) / 40;
+    const double c2 =
+        (-22 * sin(a) + 7 * sin(2 * a) - 2 * cos(a / 2) * (32 * sin(a / 2 - b) + 14 * sin(a / 2 + b) - 6 * sin(1.5 * a + b) + sin(a / 2 + 2 * b) + sin(1.5 * a + 2 * b))) / 40;
     return {c0, c1, c2};
 }
 
@@ -102,8 +102,7 @@ RegionPoint classify_unit_polygon(double theta0, double theta1) {
     r.c0_negative = c[0] < 0.0;
     r.c4_negative = c[4] < 0.0;
     r.c5_negative = c[5] < 0.0;
-    r.exact = r.all_negative ? analysis::Trend::decreasing
-                             : analysis::trend_of(sign_on_unit_interval(BernsteinPolynomial(std::vector<double>(c.begin(), c.end()))));
+    r.exact = r.all_negative ? analysis::Trend::decreasing : analysis::trend_of(sign_on_unit_interval(BernsteinPolynomial(std::vector<double>(c.begin(), c.end()))));
     return r;
 }
 
@@ -148,8 +147,7 @@ MonotonicityReport cubic_bspline_curvature_monotonicity(const BSplineCurve& curv
     const Eigen::MatrixXd& d = curve.control_points();
     if (!d.allFinite()) fail_input(who, "a control point coordinate is not finite");
     for (Eigen::Index k = 0; k + 1 < d.rows(); ++k)
-        if (!((d.row(k + 1) - d.row(k)).norm() > 0.0))
-            fail_input(who, "control points " + std::to_string(k) + " and " + std::to_string(k + 1) + " coincide (zero-length edge)");
+        if (!((d.row(k + 1) - d.row(k)).norm() > 0.0)) fail_input(who, "control points " + std::to_string(k) + " and " + std::to_string(k + 1) + " coincide (zero-length edge)");
     MonotonicityReport report;
     int index = 0;
     bool any_inc = false, any_dec = false, any_bad = false, any_undetermined = false;
@@ -186,11 +184,16 @@ MonotonicityReport cubic_bspline_curvature_monotonicity(const BSplineCurve& curv
         any_undetermined = any_undetermined || v.exact == analysis::Trend::undetermined;
         report.segments.push_back(v);
     }
-    if (any_bad || (any_inc && any_dec)) report.whole_curve = analysis::Trend::not_monotone;
-    else if (any_undetermined) report.whole_curve = analysis::Trend::undetermined;
-    else if (any_inc) report.whole_curve = analysis::Trend::increasing;
-    else if (any_dec) report.whole_curve = analysis::Trend::decreasing;
-    else report.whole_curve = analysis::Trend::constant;
+    if (any_bad || (any_inc && any_dec))
+        report.whole_curve = analysis::Trend::not_monotone;
+    else if (any_undetermined)
+        report.whole_curve = analysis::Trend::undetermined;
+    else if (any_inc)
+        report.whole_curve = analysis::Trend::increasing;
+    else if (any_dec)
+        report.whole_curve = analysis::Trend::decreasing;
+    else
+        report.whole_curve = analysis::Trend::constant;
     return report;
 }
 

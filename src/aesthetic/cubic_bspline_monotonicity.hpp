@@ -39,12 +39,12 @@ namespace cagd::aesthetic {
 using CubicPoints = Eigen::Matrix<double, 4, 2>;
 
 CubicPoints unit_edge_polygon(double theta0, double theta1);
-CubicPoints uniform_segment_bezier(const CubicPoints& polygon);       // A.1
-CubicPoints equivalent_uniform_polygon(const CubicPoints& bezier);    // the inverse of A.1
+CubicPoints uniform_segment_bezier(const CubicPoints& polygon);     // A.1
+CubicPoints equivalent_uniform_polygon(const CubicPoints& bezier);  // the inverse of A.1
 
-std::array<double, 6> monotonicity_coefficients(double theta0, double theta1);   // C0 … C5
-double condition29(double theta0, double theta1);   // sin(θ0 + θ1/2) − 3 sin(θ1/2)
-double theta1_bound(double theta0);                 // eq (30)
+std::array<double, 6> monotonicity_coefficients(double theta0, double theta1);  // C0 … C5
+double condition29(double theta0, double theta1);                               // sin(θ0 + θ1/2) − 3 sin(θ1/2)
+double theta1_bound(double theta0);                                             // eq (30)
 
 // The endpoint-interpolating polygon of section 3.4 (Fig. 2 bottom) from a unit-edge polygon
 // Q0 … Qn (n ≥ 4): P_k = Q_k for 2 ≤ k ≤ n−2; P1 on Q2Q1 with |P1P2| = 2/3 and P0 on the line of
@@ -56,8 +56,8 @@ Eigen::MatrixXd endpoint_interpolating_polygon(const Eigen::MatrixXd& unit_polyg
 // Fig. 7 classification of one (θ0, θ1) of the unit polygon: (29), the Bernstein signs, and the
 // exact sign of dκ/dt on [0, 1] (Bernstein subdivision of h from the closed-form C_i).
 struct RegionPoint {
-    bool condition29 = false;                   // sin(θ0 + θ1/2) − 3 sin(θ1/2) > 0
-    bool all_negative = false;                  // every C_i < 0
+    bool condition29 = false;   // sin(θ0 + θ1/2) − 3 sin(θ1/2) > 0
+    bool all_negative = false;  // every C_i < 0
     bool c0_negative = false, c4_negative = false, c5_negative = false;
     analysis::Trend exact = analysis::Trend::undetermined;
 };
@@ -75,19 +75,19 @@ const char* to_string(Guarantee g);
 
 struct SegmentVerdict {
     int segment = 0;
-    CubicPoints bezier, polygon;        // Bézier points; equivalent uniform polygon
-    std::array<double, 3> edges{};      // its edge lengths
-    double turn0 = 0.0, turn1 = 0.0;    // its signed turning angles at the 2nd and 3rd point
-    bool equal_edges = false;           // |e_k − e_0| ≤ 1e-9 |e_0|
-    Guarantee condition29_verdict = Guarantee::not_applicable;   // (29), equal edges, same-sign turns
-    double condition29_value = 0.0;     // sin(θa + θb/2) − 3 sin(θb/2), θa = the larger |turn|
-    std::array<double, 6> h_coefficients{};                      // Bernstein coefficients of h
-    Guarantee bernstein_verdict = Guarantee::not_guaranteed;     // all C_i strictly one sign
-    analysis::Trend exact = analysis::Trend::undetermined;       // sign of dκ/dt on the segment
+    CubicPoints bezier, polygon;                                // Bézier points; equivalent uniform polygon
+    std::array<double, 3> edges{};                              // its edge lengths
+    double turn0 = 0.0, turn1 = 0.0;                            // its signed turning angles at the 2nd and 3rd point
+    bool equal_edges = false;                                   // |e_k − e_0| ≤ 1e-9 |e_0|
+    Guarantee condition29_verdict = Guarantee::not_applicable;  // (29), equal edges, same-sign turns
+    double condition29_value = 0.0;                             // sin(θa + θb/2) − 3 sin(θb/2), θa = the larger |turn|
+    std::array<double, 6> h_coefficients{};                     // Bernstein coefficients of h
+    Guarantee bernstein_verdict = Guarantee::not_guaranteed;    // all C_i strictly one sign
+    analysis::Trend exact = analysis::Trend::undetermined;      // sign of dκ/dt on the segment
 };
 struct MonotonicityReport {
     std::vector<SegmentVerdict> segments;
-    analysis::Trend whole_curve = analysis::Trend::undetermined;   // all segments one trend
+    analysis::Trend whole_curve = analysis::Trend::undetermined;  // all segments one trend
 };
 // Any planar cubic B-spline (degree 3, dimension 2).
 MonotonicityReport cubic_bspline_curvature_monotonicity(const BSplineCurve& curve);

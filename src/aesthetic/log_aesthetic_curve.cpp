@@ -145,7 +145,8 @@ LogAestheticCurve normalized_log_aesthetic_curve(double alpha, double length) {
     if (!std::isfinite(alpha)) fail_input("cagd::aesthetic::normalized_log_aesthetic_curve", "alpha = " + full_precision(alpha) + " is not finite");
     if (!finite_turning_at_zero_base(alpha))
         fail_input("cagd::aesthetic::normalized_log_aesthetic_curve",
-                   "eq (15) is defined only for alpha < 0 or alpha > 1 (its turning angle alpha s^((alpha-1)/alpha) diverges at s = 0 for 0 < alpha < 1, is constant for alpha = 1, undefined for alpha = 0); got alpha = " +
+                   "eq (15) is defined only for alpha < 0 or alpha > 1 (its turning angle alpha s^((alpha-1)/alpha) diverges at s = 0 for 0 < alpha < 1, is constant for alpha = "
+                   "1, undefined for alpha = 0); got alpha = " +
                        full_precision(alpha));
     LogAestheticParameters p;
     p.alpha = alpha;

@@ -43,18 +43,18 @@ struct LogAestheticRate {
     double alpha = -1.0, c0 = 1.0, c1 = 1.0;
     void validate(const char* who, const char* name, double length) const;
     double base(double s) const { return c0 * s + c1; }
-    double value(double s) const;            // r(s) = 1/ρ
-    double derivative(double s) const;       // dr/ds
+    double value(double s) const;       // r(s) = 1/ρ
+    double derivative(double s) const;  // dr/ds
     double second_derivative(double s) const;
-    double antiderivative(double s) const;   // Θ(s)
+    double antiderivative(double s) const;  // Θ(s)
 };
 
 struct LogAestheticParameters {
     double alpha = -1.0;
     double c0 = 1.0, c1 = 1.0;
     double length = 1.0;
-    int turn = 1;                       // σ: +1 counter-clockwise, −1 clockwise
-    double start_angle = 0.0;           // θ_start
+    int turn = 1;              // σ: +1 counter-clockwise, −1 clockwise
+    double start_angle = 0.0;  // θ_start
     Eigen::Vector2d start = Eigen::Vector2d::Zero();
 };
 
@@ -66,7 +66,7 @@ public:
     int dimension() const override { return 2; }
     double t_min() const override { return 0.0; }
     double t_max() const override { return p_.length; }
-    Eigen::MatrixXd jet(double s, int order) const override;   // order ≤ 3
+    Eigen::MatrixXd jet(double s, int order) const override;  // order ≤ 3
     std::vector<double> breakpoints() const override { return {0.0, p_.length}; }
 
     double curvature(double s) const;             // signed κ(s)
@@ -81,7 +81,7 @@ private:
     Eigen::Vector2d integrate(double a, double b) const;
     LogAestheticParameters p_;
     LogAestheticRate rate_;
-    double theta_origin_ = 0.0;   // Θ(0)
+    double theta_origin_ = 0.0;  // Θ(0)
 };
 
 LogAestheticCurve normalized_log_aesthetic_curve(double alpha, double length);

@@ -54,10 +54,10 @@ LogAestheticSpaceParameters normalized_log_aesthetic_space_parameters(double alp
     if (!(start >= 0.0) || !std::isfinite(start)) fail_input(who, "start s0 = " + full_precision(start) + " must be finite and >= 0");
     for (const auto& [name, v] : {std::pair{"alpha", alpha}, {"beta", beta}}) {
         if (!std::isfinite(v)) fail_input(who, std::string(name) + " = " + full_precision(v) + " is not finite");
-        if (v == 0.0 || v == 1.0)
-            fail_input(who, std::string(name) + " = " + full_precision(v) + ": the normalised law |slope - 1| s^(-1/slope) needs a slope other than 0 and 1");
+        if (v == 0.0 || v == 1.0) fail_input(who, std::string(name) + " = " + full_precision(v) + ": the normalised law |slope - 1| s^(-1/slope) needs a slope other than 0 and 1");
         if (start == 0.0 && v > 0.0 && v < 1.0)
-            fail_input(who, std::string(name) + " = " + full_precision(v) + " with start s0 = 0: the turning angle diverges at s = 0 for 0 < slope < 1 (use slope < 0 or > 1, or s0 > 0)");
+            fail_input(
+                who, std::string(name) + " = " + full_precision(v) + " with start s0 = 0: the turning angle diverges at s = 0 for 0 < slope < 1 (use slope < 0 or > 1, or s0 > 0)");
     }
     LogAestheticSpaceParameters p;
     const double c = std::pow(std::abs(alpha - 1.0), -alpha), g = std::pow(std::abs(beta - 1.0), -beta);
@@ -73,7 +73,8 @@ LogAestheticSpaceCurve::LogAestheticSpaceCurve(const LogAestheticSpaceParameters
     p.torsion.validate(kWho, "torsion", p.length);
     for (const auto& [name, r] : {std::pair{"curvature", p.curvature}, {"torsion", p.torsion}})
         if (r.alpha != 0.0 && r.base(p.length) == 0.0)
-            fail_input(kWho, std::string(name) + ": c s + d = 0 at s = L = " + full_precision(p.length) + " (a singular end is not supported; reverse the curve so that it is at s = 0)");
+            fail_input(kWho,
+                       std::string(name) + ": c s + d = 0 at s = L = " + full_precision(p.length) + " (a singular end is not supported; reverse the curve so that it is at s = 0)");
     for (const LogAestheticRate& r : {p.curvature, p.torsion})
         if (vanishes_at_start(r)) exponent_ = std::max({exponent_, 2, r.alpha > 1.0 ? static_cast<int>(std::ceil(2.0 * r.alpha / (r.alpha - 1.0))) : 2});
 

@@ -39,8 +39,8 @@
 namespace cagd::aesthetic {
 
 struct LogAestheticSpaceParameters {
-    LogAestheticRate curvature{1.5, 1.0, 1.0};   // ρ^α = c s + d
-    LogAestheticRate torsion{1.2, 1.0, 1.0};     // μ^β = g s + h
+    LogAestheticRate curvature{1.5, 1.0, 1.0};  // ρ^α = c s + d
+    LogAestheticRate torsion{1.2, 1.0, 1.0};    // μ^β = g s + h
     double length = 1.0;
 };
 
@@ -54,23 +54,23 @@ public:
     int dimension() const override { return 3; }
     double t_min() const override { return 0.0; }
     double t_max() const override { return p_.length; }
-    Eigen::MatrixXd jet(double s, int order) const override;   // order ≤ 4
+    Eigen::MatrixXd jet(double s, int order) const override;  // order ≤ 4
     std::vector<double> breakpoints() const override { return {0.0, p_.length}; }
 
     double curvature(double s) const { return p_.curvature.value(s); }
     double torsion(double s) const { return p_.torsion.value(s); }
-    double curvature_angle(double s) const;   // θ_κ(s), eq (34) minus its value at 0
-    double torsion_angle(double s) const;     // θ_τ(s), eq (35) minus its value at 0
+    double curvature_angle(double s) const;  // θ_κ(s), eq (34) minus its value at 0
+    double torsion_angle(double s) const;    // θ_τ(s), eq (35) minus its value at 0
     // Columns t, n, b at s.
     Eigen::Matrix3d frame(double s) const;
 
 private:
-    using State = std::array<double, 12>;   // r, t, n, b
+    using State = std::array<double, 12>;  // r, t, n, b
     State state_at(double s) const;
     void check_s(double s) const;
     LogAestheticSpaceParameters p_;
-    int exponent_ = 1;                      // m of s = L w^m
-    std::vector<State> nodes_;              // at w = k/(nodes − 1)
+    int exponent_ = 1;          // m of s = L w^m
+    std::vector<State> nodes_;  // at w = k/(nodes − 1)
 };
 
 }  // namespace cagd::aesthetic

@@ -38,28 +38,26 @@ namespace cagd::aesthetic {
 enum class FrenetComposition { alexa, kappa_then_tau, tau_then_kappa };
 const char* to_string(FrenetComposition c);
 
-Eigen::Matrix3d curvature_rotation(double angle);   // R_κ of eq (36): about z (b)
-Eigen::Matrix3d torsion_rotation(double angle);     // R_τ of eq (36): about x (t)
+Eigen::Matrix3d curvature_rotation(double angle);  // R_κ of eq (36): about z (b)
+Eigen::Matrix3d torsion_rotation(double angle);    // R_τ of eq (36): about x (t)
 Eigen::Matrix3d frenet_transition(double curvature_angle, double torsion_angle, FrenetComposition c);
 
 struct SpaceTypicalPolygon {
-    Eigen::MatrixXd points;                 // (n + 1) × 3
-    std::vector<Eigen::Matrix3d> frames;    // F_0 … F_{n−1}
-    std::vector<double> curvature_rotations, torsion_rotations;   // Δθ_κ,j, Δθ_τ,j, j = 0 … n−2
-    double edge_length = 0.0;               // Δs
+    Eigen::MatrixXd points;                                      // (n + 1) × 3
+    std::vector<Eigen::Matrix3d> frames;                         // F_0 … F_{n−1}
+    std::vector<double> curvature_rotations, torsion_rotations;  // Δθ_κ,j, Δθ_τ,j, j = 0 … n−2
+    double edge_length = 0.0;                                    // Δs
 };
 
-SpaceTypicalPolygon space_typical_polygon(const LogAestheticSpaceParameters& p, int degree,
-                                          FrenetComposition composition = FrenetComposition::alexa);
+SpaceTypicalPolygon space_typical_polygon(const LogAestheticSpaceParameters& p, int degree, FrenetComposition composition = FrenetComposition::alexa);
 // The same construction from given rotation angles (n − 1 of each) and edge length.
-SpaceTypicalPolygon space_typical_polygon_from_rotations(const std::vector<double>& curvature_rotations,
-                                                         const std::vector<double>& torsion_rotations, double edge_length,
+SpaceTypicalPolygon space_typical_polygon_from_rotations(const std::vector<double>& curvature_rotations, const std::vector<double>& torsion_rotations, double edge_length,
                                                          FrenetComposition composition = FrenetComposition::alexa,
                                                          const Eigen::Matrix3d& initial_frame = Eigen::Matrix3d::Identity());
 
 struct PolygonFrenetAngles {
-    std::vector<double> turning;    // φ_j ∈ [0, π], j = 0 … n−2
-    std::vector<double> dihedral;   // ψ_j ∈ (−π, π], j = 0 … n−3 (positive: right-handed about e_{j+1})
+    std::vector<double> turning;   // φ_j ∈ [0, π], j = 0 … n−2
+    std::vector<double> dihedral;  // ψ_j ∈ (−π, π], j = 0 … n−3 (positive: right-handed about e_{j+1})
 };
 // Preconditions: ≥ 4 points in 3-D, no zero edge, no two consecutive edges parallel.
 PolygonFrenetAngles polygon_frenet_angles(const Eigen::MatrixXd& points);

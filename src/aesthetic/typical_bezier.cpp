@@ -16,8 +16,7 @@ void require_finite_alpha(double alpha, const char* who) {
 // Eq (20)–(21) divide by α and by α − 1.
 void require_rotation_alpha(double alpha, const char* who) {
     require_finite_alpha(alpha, who);
-    if (alpha == 0.0 || alpha == 1.0)
-        fail_input(who, "alpha = " + full_precision(alpha) + ": eq (20)-(21) divide by alpha and by alpha - 1 (allowed: alpha not 0 or 1)");
+    if (alpha == 0.0 || alpha == 1.0) fail_input(who, "alpha = " + full_precision(alpha) + ": eq (20)-(21) divide by alpha and by alpha - 1 (allowed: alpha not 0 or 1)");
 }
 
 void require_degree(int degree, int minimum, const char* who) {
@@ -44,7 +43,7 @@ TypicalPolygon polygon_from_edges(const std::vector<double>& lengths, const std:
     return p;
 }
 
-double direction(double alpha, double s) { return alpha * std::pow(s, (alpha - 1.0) / alpha); }   // θ(s) of eq (15)
+double direction(double alpha, double s) { return alpha * std::pow(s, (alpha - 1.0) / alpha); }  // θ(s) of eq (15)
 
 }  // namespace
 
@@ -52,8 +51,10 @@ TypicalPolygon scale_one_typical_polygon(double alpha, double length, int degree
     const char* who = "cagd::aesthetic::scale_one_typical_polygon";
     require_finite_alpha(alpha, who);
     if (!(alpha < 0.0 || alpha > 1.0))
-        fail_input(who, "alpha = " + full_precision(alpha) +
-                            ": eq (16) needs alpha < 0 or alpha > 1 (0 < alpha < 1: (j ds)^((alpha-1)/alpha) diverges at j = 0; alpha = 1: all edges parallel; alpha = 0: division by alpha)");
+        fail_input(
+            who,
+            "alpha = " + full_precision(alpha) +
+                ": eq (16) needs alpha < 0 or alpha > 1 (0 < alpha < 1: (j ds)^((alpha-1)/alpha) diverges at j = 0; alpha = 1: all edges parallel; alpha = 0: division by alpha)");
     require_length(length, who);
     require_degree(degree, 1, who);
     const double ds = length / degree;
@@ -82,9 +83,9 @@ TypicalPolygon constant_rotation_typical_polygon(double alpha, double length, in
     require_rotation_alpha(alpha, who);
     require_length(length, who);
     require_degree(degree, 2, who);
-    double sum = 0.0;   // Σ (j+1)^{1/(α−1)}
+    double sum = 0.0;  // Σ (j+1)^{1/(α−1)}
     for (int j = 0; j < degree; ++j) sum += std::pow(j + 1.0, 1.0 / (alpha - 1.0));
-    const double k = length / sum;   // = (|Δθ|/|α−1|)^{α/(α−1)}
+    const double k = length / sum;  // = (|Δθ|/|α−1|)^{α/(α−1)}
     const double rotation = std::abs(alpha - 1.0) * std::pow(k, (alpha - 1.0) / alpha);
     return constant_rotation_typical_polygon_by_angle(alpha, rotation, degree);
 }
@@ -107,16 +108,12 @@ TypicalPolygon log_spiral_polygon(double a, double b, double rotation, int degre
     return p;
 }
 
-double first_order_rotation(double alpha, double ds, int j) {
-    return alpha * (alpha - 1.0) / alpha * std::pow((j + 1.0) * ds, -1.0 / alpha) * ds;
-}
+double first_order_rotation(double alpha, double ds, int j) { return alpha * (alpha - 1.0) / alpha * std::pow((j + 1.0) * ds, -1.0 / alpha) * ds; }
 
 double first_order_rotation_ratio(double alpha, int j) { return std::pow((j + 1.0) / (j + 2.0), 1.0 / alpha); }
 
 double constant_rotation_scale_ratio(double alpha, int j) { return std::pow((j + 2.0) / (j + 1.0), 1.0 / (alpha - 1.0)); }
 
-double exact_rotation_ratio(double alpha, int j) {
-    return (direction(alpha, j + 3.0) - direction(alpha, j + 2.0)) / (direction(alpha, j + 2.0) - direction(alpha, j + 1.0));
-}
+double exact_rotation_ratio(double alpha, int j) { return (direction(alpha, j + 3.0) - direction(alpha, j + 2.0)) / (direction(alpha, j + 2.0) - direction(alpha, j + 1.0)); }
 
 }  // namespace cagd::aesthetic

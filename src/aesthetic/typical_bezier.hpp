@@ -29,10 +29,10 @@
 namespace cagd::aesthetic {
 
 struct TypicalPolygon {
-    Eigen::MatrixXd points;             // (n + 1) × 2, b_0 = (0, 0), first edge along +x
-    std::vector<double> edge_lengths;   // Δs_j, j = 0 … n−1
-    std::vector<double> rotations;      // φ_j: edge j → edge j + 1, j = 0 … n−2
-    std::vector<double> scales;         // s_j = Δs_{j+1}/Δs_j
+    Eigen::MatrixXd points;            // (n + 1) × 2, b_0 = (0, 0), first edge along +x
+    std::vector<double> edge_lengths;  // Δs_j, j = 0 … n−1
+    std::vector<double> rotations;     // φ_j: edge j → edge j + 1, j = 0 … n−2
+    std::vector<double> scales;        // s_j = Δs_{j+1}/Δs_j
 };
 
 TypicalPolygon scale_one_typical_polygon(double alpha, double length, int degree);
@@ -41,9 +41,9 @@ TypicalPolygon constant_rotation_typical_polygon(double alpha, double length, in
 TypicalPolygon constant_rotation_typical_polygon_by_angle(double alpha, double rotation, int degree);
 TypicalPolygon log_spiral_polygon(double a, double b, double rotation, int degree);
 
-double first_order_rotation(double alpha, double ds, int j);           // eq (18)
-double first_order_rotation_ratio(double alpha, int j);                // eq (19)
-double constant_rotation_scale_ratio(double alpha, int j);             // eq (22)
+double first_order_rotation(double alpha, double ds, int j);  // eq (18)
+double first_order_rotation_ratio(double alpha, int j);       // eq (19)
+double constant_rotation_scale_ratio(double alpha, int j);    // eq (22)
 // Exact ratio of the eq (17) rotations, φ_{j+2}/φ_{j+1} = (θ((j+3)Δs) − θ((j+2)Δs))/(θ((j+2)Δs) − θ((j+1)Δs)):
 // independent of Δs, → eq (19) as j → ∞.
 double exact_rotation_ratio(double alpha, int j);

@@ -12,10 +12,12 @@ namespace {
 const char* kWho = "cagd::aesthetic::typical_surface_net";
 
 void check_boundary(const Eigen::MatrixXd& b, const char* name) {
-    if (b.cols() != 3 || b.rows() < 2) fail_input(kWho, std::string(name) + " boundary must be at least 2 points in 3-D, got " + std::to_string(b.rows()) + "x" + std::to_string(b.cols()));
+    if (b.cols() != 3 || b.rows() < 2)
+        fail_input(kWho, std::string(name) + " boundary must be at least 2 points in 3-D, got " + std::to_string(b.rows()) + "x" + std::to_string(b.cols()));
     if (!b.allFinite()) fail_input(kWho, std::string(name) + " boundary points must be finite");
     for (Eigen::Index i = 0; i + 1 < b.rows(); ++i)
-        if ((b.row(i + 1) - b.row(i)).norm() == 0.0) fail_input(kWho, std::string(name) + " boundary: zero-length edge between points " + std::to_string(i) + " and " + std::to_string(i + 1));
+        if ((b.row(i + 1) - b.row(i)).norm() == 0.0)
+            fail_input(kWho, std::string(name) + " boundary: zero-length edge between points " + std::to_string(i) + " and " + std::to_string(i + 1));
 }
 }  // namespace
 

@@ -20,9 +20,9 @@ struct PlanarCurvatureParts {
     BernsteinPolynomial f, g;
 };
 PlanarCurvatureParts planar_curvature_parts(const BezierCurve& c);
-BernsteinPolynomial curvature_derivative_numerator(const BezierCurve& c);           // h (planar)
-BernsteinPolynomial squared_curvature_derivative_numerator(const BezierCurve& c);   // q'g − 3qg'
-BernsteinPolynomial torsion_derivative_numerator(const BezierCurve& c);             // d'q − dq'
+BernsteinPolynomial curvature_derivative_numerator(const BezierCurve& c);          // h (planar)
+BernsteinPolynomial squared_curvature_derivative_numerator(const BezierCurve& c);  // q'g − 3qg'
+BernsteinPolynomial torsion_derivative_numerator(const BezierCurve& c);            // d'q − dq'
 
 // Sign of the derivative in the curve's own parameter direction, as a monotonicity verdict.
 enum class Trend { increasing, decreasing, constant, not_monotone, undetermined };

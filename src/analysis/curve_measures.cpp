@@ -46,7 +46,7 @@ double squared_curvature(const Eigen::MatrixXd& D, double t, const char* who) {
     return cross2 / (s2 * s2 * s2);
 }
 
-double bending_density(const Curve& c, double t) {   // κ² |r'|, the integrand of ∫ κ² ds in t
+double bending_density(const Curve& c, double t) {  // κ² |r'|, the integrand of ∫ κ² ds in t
     const Eigen::MatrixXd D = c.derivatives(t, 2);
     return squared_curvature(D, t, "cagd::analysis::curvature") * D.row(0).norm();
 }
@@ -63,23 +63,17 @@ Eigen::VectorXd curvature_vector(const Eigen::MatrixXd& J) {
 }
 
 double signed_curvature(const Curve& c, double t) {
-    if (c.dimension() != 2)
-        fail_input("cagd::analysis::signed_curvature", "needs a planar curve, dimension is " +
-                                                           std::to_string(c.dimension()));
+    if (c.dimension() != 2) fail_input("cagd::analysis::signed_curvature", "needs a planar curve, dimension is " + std::to_string(c.dimension()));
     const Eigen::MatrixXd D = c.derivatives(t, 2);
     const double s2 = D.row(0).squaredNorm();
-    if (!(s2 > 0.0))
-        fail_input("cagd::analysis::signed_curvature",
-                   "r'(t) = 0 at t = " + full_precision(t) + "; curvature undefined");
+    if (!(s2 > 0.0)) fail_input("cagd::analysis::signed_curvature", "r'(t) = 0 at t = " + full_precision(t) + "; curvature undefined");
     return (D(0, 0) * D(1, 1) - D(0, 1) * D(1, 0)) / (s2 * std::sqrt(s2));
 }
 
 double arc_length(const Curve& c, double a, double b, int pieces) {
     if (!(a >= c.t_min() && b <= c.t_max() && a <= b))
-        fail_input("cagd::analysis::arc_length", "interval [" + full_precision(a) + ", " +
-                                                     full_precision(b) + "] not inside the domain");
-    return rule20().integrate_piecewise([&](double t) { return speed(c, t); },
-                                        subdivided(clipped_breaks(c, a, b), pieces));
+        fail_input("cagd::analysis::arc_length", "interval [" + full_precision(a) + ", " + full_precision(b) + "] not inside the domain");
+    return rule20().integrate_piecewise([&](double t) { return speed(c, t); }, subdivided(clipped_breaks(c, a, b), pieces));
 }
 
 double arc_length(const Curve& c, int pieces) { return arc_length(c, c.t_min(), c.t_max(), pieces); }
@@ -96,8 +90,7 @@ double adaptive_arc_length(const Curve& c, double rel_tol) {
     const std::vector<double> br = c.breakpoints();
     double total = 0.0;
     for (std::size_t k = 0; k + 1 < br.size(); ++k)
-        total += boost::math::quadrature::gauss_kronrod<double, 31>::integrate([&](double t) { return speed(c, t); }, br[k], br[k + 1],
-                                                                               kKronrodDepth, rel_tol);
+        total += boost::math::quadrature::gauss_kronrod<double, 31>::integrate([&](double t) { return speed(c, t); }, br[k], br[k + 1], kKronrodDepth, rel_tol);
     return total;
 }
 
@@ -105,8 +98,7 @@ numeric::RombergResult romberg_arc_length(const Curve& c, double rel_tol) {
     numeric::RombergResult total;
     const std::vector<double> br = c.breakpoints();
     for (std::size_t k = 0; k + 1 < br.size(); ++k) {
-        const auto r = numeric::romberg([&](double t) { return speed(c, t); }, br[k], br[k + 1],
-                                        rel_tol, kRombergAbsTol, kRombergLevels);
+        const auto r = numeric::romberg([&](double t) { return speed(c, t); }, br[k], br[k + 1], rel_tol, kRombergAbsTol, kRombergLevels);
         total.value += r.value;
         total.error_estimate += r.error_estimate;
         total.evaluations += r.evaluations;
@@ -123,8 +115,7 @@ ArcLength reference_arc_length(const Curve& c) {
     const std::vector<double> br = c.breakpoints();
     for (std::size_t k = 0; k + 1 < br.size(); ++k) {
         double error = 0.0;
-        a.value += boost::math::quadrature::gauss_kronrod<double, 31>::integrate([&](double t) { return speed(c, t); }, br[k], br[k + 1], kKronrodDepth,
-                                                                                 kKronrodRelTol, &error);
+        a.value += boost::math::quadrature::gauss_kronrod<double, 31>::integrate([&](double t) { return speed(c, t); }, br[k], br[k + 1], kKronrodDepth, kKronrodRelTol, &error);
         a.error_estimate += error;
     }
     return a;
@@ -136,9 +127,7 @@ double area_closed_by_chord(const Curve& c) {
 }
 
 double enclosed_area(const Curve& c) {
-    if (c.dimension() != 2)
-        fail_input("cagd::analysis::enclosed_area", "needs a planar curve, dimension is " +
-                                                        std::to_string(c.dimension()));
+    if (c.dimension() != 2) fail_input("cagd::analysis::enclosed_area", "needs a planar curve, dimension is " + std::to_string(c.dimension()));
     return 0.5 * rule20().integrate_piecewise(
                      [&](double t) {
                          const Eigen::MatrixXd J = c.jet(t, 1);
@@ -149,11 +138,8 @@ double enclosed_area(const Curve& c) {
 
 double bending_energy(const Curve& c, double a, double b, int pieces) {
     if (!(a >= c.t_min() && b <= c.t_max() && a <= b))
-        fail_input("cagd::analysis::bending_energy", "interval [" + full_precision(a) + ", " +
-                                                         full_precision(b) + "] not inside the domain");
-    return rule20().integrate_piecewise(
-        [&](double t) { return bending_density(c, t); },
-        subdivided(clipped_breaks(c, a, b), pieces));
+        fail_input("cagd::analysis::bending_energy", "interval [" + full_precision(a) + ", " + full_precision(b) + "] not inside the domain");
+    return rule20().integrate_piecewise([&](double t) { return bending_density(c, t); }, subdivided(clipped_breaks(c, a, b), pieces));
 }
 
 double piece_arc_length(const Curve& c, double a, double b, int pieces) {
@@ -161,9 +147,7 @@ double piece_arc_length(const Curve& c, double a, double b, int pieces) {
 }
 
 double piece_bending_energy(const Curve& c, double a, double b, int pieces) {
-    return rule20().integrate_piecewise(
-        [&](double t) { return bending_density(c, t); },
-        subdivided({a, b}, pieces));
+    return rule20().integrate_piecewise([&](double t) { return bending_density(c, t); }, subdivided({a, b}, pieces));
 }
 
 double bending_energy(const Curve& c, int pieces) { return bending_energy(c, c.t_min(), c.t_max(), pieces); }
@@ -181,22 +165,21 @@ double max_distance_same_parameter(const Curve& a, const Curve& b, double t0, do
 double max_distance_same_parameter(const Curve& a, const Curve& b, int samples_per_piece) {
     const double t0 = std::max(a.t_min(), b.t_min()), t1 = std::min(a.t_max(), b.t_max());
     std::set<double> br{t0, t1};
-    for (double t : a.breakpoints()) if (t > t0 && t < t1) br.insert(t);
-    for (double t : b.breakpoints()) if (t > t0 && t < t1) br.insert(t);
+    for (double t : a.breakpoints())
+        if (t > t0 && t < t1) br.insert(t);
+    for (double t : b.breakpoints())
+        if (t > t0 && t < t1) br.insert(t);
     const std::vector<double> v(br.begin(), br.end());
     double worst = 0.0;
-    for (std::size_t k = 0; k + 1 < v.size(); ++k)
-        worst = std::max(worst, max_distance_same_parameter(a, b, v[k], v[k + 1], samples_per_piece + 1));
+    for (std::size_t k = 0; k + 1 < v.size(); ++k) worst = std::max(worst, max_distance_same_parameter(a, b, v[k], v[k + 1], samples_per_piece + 1));
     return worst;
 }
 
 double normal_offset(const Curve& a, const Curve& b, double t) {
-    if (a.dimension() != 2 || b.dimension() != 2)
-        fail_input("cagd::analysis::normal_offset", "needs planar curves");
+    if (a.dimension() != 2 || b.dimension() != 2) fail_input("cagd::analysis::normal_offset", "needs planar curves");
     const Eigen::MatrixXd J = b.jet(t, 1);
     const double speed_b = J.row(1).norm();
-    if (!(speed_b > 0.0))
-        fail_input("cagd::analysis::normal_offset", "b'(t) = 0 at t = " + full_precision(t));
+    if (!(speed_b > 0.0)) fail_input("cagd::analysis::normal_offset", "b'(t) = 0 at t = " + full_precision(t));
     const Eigen::Vector2d normal(-J(1, 1) / speed_b, J(1, 0) / speed_b);
     return (a.point(t) - b.point(t)).dot(normal);
 }

@@ -16,7 +16,7 @@
 namespace cagd::analysis {
 
 double curvature(const Curve& c, double t);
-double signed_curvature(const Curve& c, double t);   // planar curves only
+double signed_curvature(const Curve& c, double t);  // planar curves only
 // The curvature vector κN = (r'' − (r''·T) T)/|r'|², T = r'/|r'|, from rows 1 and 2 of a jet (any
 // dimension, any parameter: it is geometric). Compare one-sided jets at a join to measure G2.
 Eigen::VectorXd curvature_vector(const Eigen::MatrixXd& jet);
@@ -26,7 +26,7 @@ numeric::RombergResult romberg_arc_length(const Curve& c, double rel_tol = 1e-13
 // Adaptive Gauss–Kronrod (Boost.Math, 31 points, depth ≤ 15) per piece: robust where the speed
 // nearly vanishes (near-cusps), where Romberg's uniform refinement needs millions of evaluations.
 double adaptive_arc_length(const Curve& c, double rel_tol = 1e-10);
-double enclosed_area(const Curve& c);                  // planar; signed, CCW positive
+double enclosed_area(const Curve& c);  // planar; signed, CCW positive
 // The signed area enclosed by the curve and the straight chord from its end back to its start
 // (= enclosed_area for a closed curve).
 double area_closed_by_chord(const Curve& c);
@@ -51,8 +51,7 @@ double bending_energy(const Curve& c, double a, double b, int pieces = 4);
 // both curves, on the common parameter interval. The curves must share the parameter.
 double max_distance_same_parameter(const Curve& a, const Curve& b, int samples_per_piece = 64);
 // The same restricted to [t0, t1].
-double max_distance_same_parameter(const Curve& a, const Curve& b, double t0, double t1,
-                                   int samples = 257);
+double max_distance_same_parameter(const Curve& a, const Curve& b, double t0, double t1, int samples = 257);
 
 // Planar: (a(t) − b(t)) · n_b(t), n_b the unit left normal of b at t (positive = a lies to the
 // left of b). Precondition: b'(t) ≠ 0.

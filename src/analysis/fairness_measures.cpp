@@ -8,9 +8,7 @@
 
 namespace cagd::analysis {
 
-FairnessMeasures fairness_measures(const Curve& c, const PointList& data, int samples) {
-    return fairness_measures(c, data, FairnessSampling{samples, 64});
-}
+FairnessMeasures fairness_measures(const Curve& c, const PointList& data, int samples) { return fairness_measures(c, data, FairnessSampling{samples, 64}); }
 
 FairnessMeasures fairness_measures(const Curve& c, const PointList& data, const FairnessSampling& sampling) {
     const char* who = "cagd::analysis::fairness_measures";
@@ -91,7 +89,7 @@ int self_intersections(const Curve& c, int samples) {
     int count = 0;
     for (std::size_t i = 0; i + 1 < p.size(); ++i)
         for (std::size_t j = i + 2; j + 1 < p.size(); ++j) {
-            if (closed && i == 0 && j + 2 == p.size()) continue;   // the closing segments touch at p_0
+            if (closed && i == 0 && j + 2 == p.size()) continue;  // the closing segments touch at p_0
             const Eigen::Vector2d r = p[i + 1] - p[i], s = p[j + 1] - p[j], q = p[j] - p[i];
             const double d = cross(r, s);
             if (d == 0.0) continue;

@@ -31,10 +31,10 @@ struct FairnessMeasures {
     double length = 0.0, bending_energy = 0.0, pseudo_energy = 0.0;
     int curvature_sign_changes = 0;
     double max_abs_curvature = 0.0;
-    double max_abs_curvature_derivative = 0.0;   // max |dκ/ds|
-    double overshoot = 0.0;            // relative to the data's bounding-box diagonal
-    double max_spike = 0.0;            // max over spans of max |κ| · chord
-    int corners = 0;                   // spans with |κ| · chord > corner_threshold
+    double max_abs_curvature_derivative = 0.0;  // max |dκ/ds|
+    double overshoot = 0.0;                     // relative to the data's bounding-box diagonal
+    double max_spike = 0.0;                     // max over spans of max |κ| · chord
+    int corners = 0;                            // spans with |κ| · chord > corner_threshold
     // Per piece between consecutive breakpoints (what the totals above sum): length L_k and ∫κ² ds E_k.
     std::vector<double> piece_lengths, piece_energies;
 };

@@ -43,7 +43,7 @@ namespace {
 
 struct TorsionAndRate {
     double tau, tau_s;
-    bool defined;   // r' × r'' ≠ 0
+    bool defined;  // r' × r'' ≠ 0
 };
 
 TorsionAndRate torsion_and_rate(const Curve& c, double t) {
@@ -63,7 +63,8 @@ TorsionAndRate torsion_and_rate(const Curve& c, double t) {
 template <class RateAndDerivative>
 LcgSamples log_rate_graph(const char* who, const Curve& c, double t0, double t1, int samples, RateAndDerivative rate) {
     if (!(t0 >= c.t_min() && t1 <= c.t_max() && t0 < t1))
-        fail_input(who, "range [" + full_precision(t0) + ", " + full_precision(t1) + "] not inside [" + full_precision(c.t_min()) + ", " + full_precision(c.t_max()) + "] or empty");
+        fail_input(who,
+                   "range [" + full_precision(t0) + ", " + full_precision(t1) + "] not inside [" + full_precision(c.t_min()) + ", " + full_precision(c.t_max()) + "] or empty");
     if (samples < 2) fail_input(who, "samples = " + std::to_string(samples) + " < 2");
     LcgSamples out;
     for (int k = 0; k < samples; ++k) {

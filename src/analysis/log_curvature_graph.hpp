@@ -29,13 +29,13 @@ namespace cagd::analysis {
 
 struct LcgPoint {
     double t;
-    double log_radius;     // x = log ρ
-    double log_gradient;   // y = log |ρ ds/dρ|
+    double log_radius;    // x = log ρ
+    double log_gradient;  // y = log |ρ ds/dρ|
 };
 
 struct LcgSamples {
     std::vector<LcgPoint> points;
-    int skipped = 0;   // samples with κ = 0 or κ_s = 0
+    int skipped = 0;  // samples with κ = 0 or κ_s = 0
 };
 
 // dκ/ds of the unsigned curvature κ = |r' × r''|/|r'|³ at t.
@@ -45,7 +45,7 @@ LcgSamples log_curvature_graph(const Curve& c, double t0, double t1, int samples
 
 struct LineFit {
     double slope = 0.0, intercept = 0.0;
-    double max_residual = 0.0;   // largest |y − (slope x + intercept)|
+    double max_residual = 0.0;  // largest |y − (slope x + intercept)|
     int points = 0;
 };
 // Least-squares line through (x, y); at least two distinct x (InvalidInput otherwise).

@@ -23,18 +23,18 @@ namespace cagd::analysis {
 constexpr double kClosedRelativeGap = 1e-12;
 
 struct CurveSamples {
-    Eigen::MatrixXd position;                 // one row per sample, 2 or 3 columns
-    std::optional<Eigen::MatrixXd> first;     // r'(u), the same shape (with `second`)
-    std::optional<Eigen::MatrixXd> second;    // r''(u)
-    std::vector<double> parameter;            // u per sample; empty: the sample index
+    Eigen::MatrixXd position;               // one row per sample, 2 or 3 columns
+    std::optional<Eigen::MatrixXd> first;   // r'(u), the same shape (with `second`)
+    std::optional<Eigen::MatrixXd> second;  // r''(u)
+    std::vector<double> parameter;          // u per sample; empty: the sample index
 };
 
 struct SampledCurveMeasures {
     int samples = 0;
     double polyline_length = 0.0;
     bool closed = false;
-    std::optional<double> enclosed_area;      // planar closed curves
-    bool has_curvature = false;               // derivatives given
+    std::optional<double> enclosed_area;  // planar closed curves
+    bool has_curvature = false;           // derivatives given
     double curvature_min = 0.0, curvature_min_at = 0.0, curvature_max = 0.0, curvature_max_at = 0.0;
     double bending_energy = 0.0;
 };

@@ -9,7 +9,8 @@ namespace {
 double regular_area(const Eigen::Vector3d& su, const Eigen::Vector3d& sv) {
     const double area = su.cross(sv).norm();
     if (!(area > 1e-14 * su.norm() * sv.norm()) || !std::isfinite(area))
-        fail_input("cagd::analysis::surface_curvatures", "singular surface point: |S_u x S_v| = " + full_precision(area) + " (|S_u| = " + full_precision(su.norm()) + ", |S_v| = " + full_precision(sv.norm()) + ")");
+        fail_input("cagd::analysis::surface_curvatures",
+                   "singular surface point: |S_u x S_v| = " + full_precision(area) + " (|S_u| = " + full_precision(su.norm()) + ", |S_v| = " + full_precision(sv.norm()) + ")");
     return area;
 }
 

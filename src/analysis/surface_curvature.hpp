@@ -24,6 +24,6 @@ struct SurfaceCurvatures {
 
 SurfaceCurvatures surface_curvatures(const SurfaceJet2& jet);
 SurfaceCurvatures surface_curvatures_weingarten(const Eigen::Vector3d& su, const Eigen::Vector3d& sv, const Eigen::Vector3d& nu, const Eigen::Vector3d& nv);
-Eigen::Vector3d unit_normal(const SurfaceJet2& jet);   // S_u × S_v / |S_u × S_v|
+Eigen::Vector3d unit_normal(const SurfaceJet2& jet);  // S_u × S_v / |S_u × S_v|
 
 }  // namespace cagd::analysis

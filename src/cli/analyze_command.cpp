@@ -89,10 +89,8 @@ int analyze_method(const AnalyzeArgs& a) {
               << "length_error_estimate," << format_number(length.error_estimate, 3) << "\n";
     if (c.dimension() == 2) std::cout << "area_integrated," << format_number(analysis::area_closed_by_chord(c), 12) << "\n";
     for (const auto& [name, value] : r.quantities) std::cout << name << "," << format_number(value, 12) << "\n";
-    if (std::string(length.method) != "romberg")
-        std::cerr << "cagd analyze: Romberg did not converge (a near-cusp); length by adaptive Gauss-Kronrod to 1e-10\n";
-    if (c.dimension() == 2)
-        std::cerr << "cagd analyze: areas are signed (counter-clockwise positive); an open curve is closed by the line from its last point to its first\n";
+    if (std::string(length.method) != "romberg") std::cerr << "cagd analyze: Romberg did not converge (a near-cusp); length by adaptive Gauss-Kronrod to 1e-10\n";
+    if (c.dimension() == 2) std::cerr << "cagd analyze: areas are signed (counter-clockwise positive); an open curve is closed by the line from its last point to its first\n";
     return 0;
 }
 

@@ -14,9 +14,9 @@
 #include "cli/commands.hpp"
 #include "cli/compare_panels_script.hpp"
 #include "compare/method_comparison.hpp"
+#include "core/csv.hpp"
 #include "core/errors.hpp"
 #include "core/point_csv.hpp"
-#include "core/csv.hpp"
 
 namespace cagd::cli {
 
@@ -60,12 +60,10 @@ int run_compare(const CompareArgs& a) {
     std::error_code ec;
     std::filesystem::create_directories(a.out, ec);
     if (!std::filesystem::is_directory(a.out)) fail_input(who, "cannot create the output directory '" + a.out + "'");
-    std::cerr << "cagd compare: " << points.rows() << " points, " << (options.methods.empty() ? methods::configurations().size() : options.methods.size())
-              << " methods\n";
+    std::cerr << "cagd compare: " << points.rows() << " points, " << (options.methods.empty() ? methods::configurations().size() : options.methods.size()) << " methods\n";
     const std::vector<compare::MethodComparison> results = compare::compare_methods(points, options);
     for (const auto& r : results)
-        std::cerr << "cagd compare: " << r.method << ": " << r.status << (r.note.empty() ? "" : " (" + r.note + ")") << ", "
-                  << format_number(r.seconds, 3) << " s\n";
+        std::cerr << "cagd compare: " << r.method << ": " << r.status << (r.note.empty() ? "" : " (" + r.note + ")") << ", " << format_number(r.seconds, 3) << " s\n";
 
     const std::string dir = a.out + "/";
     {
@@ -93,9 +91,8 @@ int run_compare(const CompareArgs& a) {
     }
     std::ofstream(dir + "compare_panels.gp") << kComparePanelsScript;
     if (a.no_plot) return 0;
-    const std::string settings = "datadir=" + gnuplot_quoted(a.out) + "; prefix=''; heading=" +
-                                 gnuplot_quoted(std::filesystem::path(a.in).filename().string()) + "; formats='png'; point_every=" +
-                                 std::to_string(std::max<Eigen::Index>(1, points.rows() / 5000));   // ≤ ~5000 dots per panel
+    const std::string settings = "datadir=" + gnuplot_quoted(a.out) + "; prefix=''; heading=" + gnuplot_quoted(std::filesystem::path(a.in).filename().string()) +
+                                 "; formats='png'; point_every=" + std::to_string(std::max<Eigen::Index>(1, points.rows() / 5000));  // ≤ ~5000 dots per panel
     const std::string command = "gnuplot -e " + shell_quoted(settings) + " " + shell_quoted(dir + "compare_panels.gp");
     if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) {
         std::cerr << "cagd compare: gnuplot not found; the figure data and compare_panels.gp are in " << a.out << "\n";

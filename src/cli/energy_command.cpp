@@ -31,8 +31,8 @@ int run_energy(const EnergyArgs& a) {
         std::cerr << "cagd: no result: " << m.outcome.message << "\n";
         return 1;
     }
-    std::printf("theta0,theta1,J,r0,r1,L,S,type\n%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%s\n", a.theta0, a.theta1, m.pseudo_energy, m.r0, m.r1, m.length,
-                m.area, fairness::to_string(m.type));
+    std::printf("theta0,theta1,J,r0,r1,L,S,type\n%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%s\n", a.theta0, a.theta1, m.pseudo_energy, m.r0, m.r1, m.length, m.area,
+                fairness::to_string(m.type));
     return 0;
 }
 

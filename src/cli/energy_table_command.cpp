@@ -24,8 +24,7 @@ int run_energy_table(const EnergyTableArgs& a) {
         std::fprintf(stderr, "\rcagd energy-table: %ld / %ld nodes", done, total);
         if (done == total) std::fprintf(stderr, "\n");
     };
-    const fairness::PseudoEnergyTable t =
-        fairness::PseudoEnergyTable::build({a.grid, a.placement}, a.method, a.threads, a.method == fairness::TableMethod::fast, progress);
+    const fairness::PseudoEnergyTable t = fairness::PseudoEnergyTable::build({a.grid, a.placement}, a.method, a.threads, a.method == fairness::TableMethod::fast, progress);
     t.save(a.out);
     return 0;
 }

@@ -7,12 +7,12 @@
 #include <memory>
 #include <numbers>
 
-#include "cli/commands.hpp"
-#include "core/csv.hpp"
-#include "core/errors.hpp"
 #include "aesthetic/space_typical_bezier.hpp"
 #include "analysis/curve_measures.hpp"
 #include "analysis/log_curvature_graph.hpp"
+#include "cli/commands.hpp"
+#include "core/csv.hpp"
+#include "core/errors.hpp"
 #include "spline/bezier.hpp"
 
 namespace cagd::cli {
@@ -35,7 +35,8 @@ int run_lac3d(const Lac3dArgs& a) {
     if (!out) fail_input("cagd lac3d", "cannot write '" + a.out + "'");
     out << "kind,t,x,y,z,curvature,torsion\n";
     for (Eigen::Index i = 0; i < poly.points.rows(); ++i)
-        out << "control," << i << ',' << format_number(poly.points(i, 0), 15) << ',' << format_number(poly.points(i, 1), 15) << ',' << format_number(poly.points(i, 2), 15) << ",,\n";
+        out << "control," << i << ',' << format_number(poly.points(i, 0), 15) << ',' << format_number(poly.points(i, 1), 15) << ',' << format_number(poly.points(i, 2), 15)
+            << ",,\n";
     for (int k = 0; k < a.samples; ++k) {
         const double t = static_cast<double>(k) / (a.samples - 1);
         const Eigen::VectorXd q = curve.point(t);
@@ -61,7 +62,8 @@ Command add_lac3d_command(CLI::App& app) {
     c->add_option("--length", a->length, "arc length L of the target piece (> 0)");
     c->add_option("--start", a->start, "the piece starts at sigma = s0 of kappa = |alpha-1| sigma^(-1/alpha), tau = |beta-1| sigma^(-1/beta) (>= 0)");
     add_enum_option(c, "--composition", a->composition,
-                    {{"alexa", aesthetic::FrenetComposition::alexa}, {"kappa_then_tau", aesthetic::FrenetComposition::kappa_then_tau},
+                    {{"alexa", aesthetic::FrenetComposition::alexa},
+                     {"kappa_then_tau", aesthetic::FrenetComposition::kappa_then_tau},
                      {"tau_then_kappa", aesthetic::FrenetComposition::tau_then_kappa}},
                     "alexa (eq 37) | kappa_then_tau | tau_then_kappa");
     c->add_option("--samples", a->samples, "curve samples in the output")->check(CLI::Range(2, 1000000));

@@ -7,12 +7,12 @@
 #include <memory>
 #include <numbers>
 
-#include "cli/commands.hpp"
-#include "core/csv.hpp"
-#include "core/errors.hpp"
 #include "aesthetic/typical_bezier.hpp"
 #include "analysis/curve_measures.hpp"
 #include "analysis/log_curvature_graph.hpp"
+#include "cli/commands.hpp"
+#include "core/csv.hpp"
+#include "core/errors.hpp"
 #include "spline/bezier.hpp"
 
 namespace cagd::cli {
@@ -32,7 +32,7 @@ struct LacArgs {
 int run_lac(const LacArgs& a) {
     if (a.degree < 1) fail_input("cagd lac", "--degree must be >= 1, got " + std::to_string(a.degree));
     const aesthetic::TypicalPolygon poly = a.construction == LacConstruction::rotation ? aesthetic::constant_rotation_typical_polygon(a.alpha, a.length, a.degree)
-                                                                        : aesthetic::scale_one_typical_polygon(a.alpha, a.length, a.degree);
+                                                                                       : aesthetic::scale_one_typical_polygon(a.alpha, a.length, a.degree);
     // de Casteljau is O(n²) per point: the O(n) Bernstein evaluation above degree 60.
     const BezierCurve curve(poly.points, 0.0, 1.0, a.degree > 60 ? BezierEvaluation::bernstein : BezierEvaluation::de_casteljau);
     std::ofstream out(a.out);
@@ -64,7 +64,8 @@ Command add_lac_command(CLI::App& app) {
     c->add_option("--alpha", a->alpha, "LCG slope alpha (scale1: alpha < 0 or alpha > 1; rotation: alpha not 0 or 1)")->required();
     c->add_option("--length", a->length, "total length L of the control polygon (> 0)");
     c->add_option("--degree", a->degree, "Bezier degree n >= 1 (n + 1 control points)")->required();
-    add_enum_option(c, "--construction", a->construction, {{"scale1", LacConstruction::scale1}, {"rotation", LacConstruction::rotation}}, "scale1 (eq 16, equal edges) | rotation (eq 21, equal rotations)");
+    add_enum_option(c, "--construction", a->construction, {{"scale1", LacConstruction::scale1}, {"rotation", LacConstruction::rotation}},
+                    "scale1 (eq 16, equal edges) | rotation (eq 21, equal rotations)");
     c->add_option("--samples", a->samples, "curve samples in the output")->check(CLI::Range(2, 1000000));
     c->add_option("--out", a->out, "CSV: kind (control|curve), t, x, y, curvature")->required();
     c->add_flag("--lcg", a->lcg, "print the fitted LCG slope on stdout");

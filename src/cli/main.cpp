@@ -21,9 +21,8 @@ int main(int argc, char** argv) {
     app.option_defaults()->always_capture_default();
     app.set_version_flag("--version", std::string("cagd ") + CAGD_VERSION);
     const std::vector<Command> commands = {
-        add_interpolate_command(app), add_analyze_command(app),  add_compare_command(app),      add_surface_command(app),
-        add_smooth_command(app),      add_smooth_surface_command(app), add_energy_command(app), add_energy_table_command(app),
-        add_lac_command(app),         add_monotone_command(app), add_lac3d_command(app),         add_typical_surface_command(app),
+        add_interpolate_command(app), add_analyze_command(app),      add_compare_command(app), add_surface_command(app),  add_smooth_command(app), add_smooth_surface_command(app),
+        add_energy_command(app),      add_energy_table_command(app), add_lac_command(app),     add_monotone_command(app), add_lac3d_command(app),  add_typical_surface_command(app),
     };
     try {
         app.parse(argc, argv);

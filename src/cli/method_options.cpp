@@ -10,12 +10,11 @@ namespace cagd::cli {
 CLI::Option* add_method_options(CLI::App* app, std::string& method, MethodOptions& o) {
     std::string names;
     for (const std::string& n : methods::method_names()) names += (names.empty() ? "" : " | ") + n;
-    CLI::Option* m = app->add_option("--method", method, "interpolation method: " + names + " (--list-methods describes each)")
-                         ->check(CLI::IsMember(methods::method_names()));
+    CLI::Option* m = app->add_option("--method", method, "interpolation method: " + names + " (--list-methods describes each)")->check(CLI::IsMember(methods::method_names()));
     // Each parameter name once; its help says what it is for each method that has it, methods
     // with the same declaration named together.
     std::vector<std::string> order;
-    std::map<std::string, std::vector<std::pair<std::string, std::string>>> meanings;   // name → (methods, text)
+    std::map<std::string, std::vector<std::pair<std::string, std::string>>> meanings;  // name → (methods, text)
     std::map<std::string, std::set<std::string>> choices;
     for (const methods::Method& method_entry : methods::registry())
         for (const methods::Parameter& p : method_entry.parameters) {

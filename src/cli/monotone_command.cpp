@@ -6,11 +6,11 @@
 #include <memory>
 #include <numbers>
 
+#include "aesthetic/cubic_bspline_monotonicity.hpp"
+#include "analysis/curvature_monotonicity.hpp"
 #include "cli/commands.hpp"
 #include "core/csv.hpp"
 #include "core/errors.hpp"
-#include "aesthetic/cubic_bspline_monotonicity.hpp"
-#include "analysis/curvature_monotonicity.hpp"
 #include "core/point_csv.hpp"
 
 namespace cagd::cli {

@@ -30,7 +30,7 @@ int run_smooth(const SmoothArgs& a) {
     std::vector<double> lambda{a.lambda};
     if (!a.lambda_file.empty()) lambda = read_values_csv(a.lambda_file);
     const char* names = "xyz";
-    if (a.form == SmoothForm::yx) {   // rows x, y[, z]: y(x) (and z(x)) smoothed
+    if (a.form == SmoothForm::yx) {  // rows x, y[, z]: y(x) (and z(x)) smoothed
         if (points.cols() < 2) fail_input(who, "--form yx needs rows x,y or x,y,z");
         const std::vector<double> x(points.col(0).data(), points.col(0).data() + points.rows());
         const smoothing::ElasticLine line = smoothing::elastic_line(x, points.rightCols(points.cols() - 1), lambda);

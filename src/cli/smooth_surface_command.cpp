@@ -28,7 +28,7 @@ struct SmoothSurfaceArgs {
 int run_smooth_surface(const SmoothSurfaceArgs& a) {
     const surface::GridHeights g = surface::grid_from_points(read_points_csv(a.in));
     const Eigen::MatrixXd lambda = Eigen::MatrixXd::Constant(1, 1, a.lambda);
-    if (a.method == SurfaceSmoothing::net) {   // the net's own unknowns at the nodes
+    if (a.method == SurfaceSmoothing::net) {  // the net's own unknowns at the nodes
         if (a.samples > 0) fail_input("cagd smooth-surface", "--method net gives node values only; use approx2 for a surface to sample");
         const smoothing::ElasticNet net = smoothing::elastic_net(g.x, g.y, g.z, lambda);
         CsvWriter w(a.out, {"x", "y", "z", "zxx", "zyy"});
@@ -58,8 +58,7 @@ int run_smooth_surface(const SmoothSurfaceArgs& a) {
     }
     for (int i = 0; i <= a.samples; ++i)
         for (int j = 0; j <= a.samples; ++j)
-            emit(std::min(g.x.front() + (g.x.back() - g.x.front()) * i / a.samples, g.x.back()),
-                 std::min(g.y.front() + (g.y.back() - g.y.front()) * j / a.samples, g.y.back()));
+            emit(std::min(g.x.front() + (g.x.back() - g.x.front()) * i / a.samples, g.x.back()), std::min(g.y.front() + (g.y.back() - g.y.front()) * j / a.samples, g.y.back()));
     return 0;
 }
 
@@ -69,13 +68,18 @@ Command add_smooth_surface_command(CLI::App& app) {
     auto a = std::make_shared<SmoothSurfaceArgs>();
     CLI::App* c = app.add_subcommand("smooth-surface", "Smooth a grid of heights (hosaka sections 6-7): elastic net, plates, approximations 1 and 2");
     add_enum_option(c, "--method", a->method,
-                    {{"net", SurfaceSmoothing::net}, {"plate", SurfaceSmoothing::plate}, {"plate-boundary", SurfaceSmoothing::plate_boundary},
-                     {"approx1", SurfaceSmoothing::approx1}, {"approx2", SurfaceSmoothing::approx2}},
+                    {{"net", SurfaceSmoothing::net},
+                     {"plate", SurfaceSmoothing::plate},
+                     {"plate-boundary", SurfaceSmoothing::plate_boundary},
+                     {"approx1", SurfaceSmoothing::approx1},
+                     {"approx2", SurfaceSmoothing::approx2}},
                     "net | plate (method i) | plate-boundary (method ii) | approx1 (eq 60) | approx2 (net + splines)")
         ->required();
     c->add_option("--lambda", a->lambda, "lambda = EI/k (net) or D/k (plates), >= 0 (> 0 for plates)")->required();
     add_enum_option(c, "--energy", a->energy,
-                    {{"55", smoothing::PlateEnergy::poisson}, {"56", smoothing::PlateEnergy::no_poisson}, {"57", smoothing::PlateEnergy::no_twist},
+                    {{"55", smoothing::PlateEnergy::poisson},
+                     {"56", smoothing::PlateEnergy::no_poisson},
+                     {"57", smoothing::PlateEnergy::no_twist},
                      {"58", smoothing::PlateEnergy::mean_curvature}},
                     "plate energy: eq 55 (with --poisson), 56, 57, 58");
     c->add_option("--poisson", a->poisson, "Poisson's ratio for --energy 55, in [0, 0.5)");

@@ -7,11 +7,11 @@
 #include <memory>
 #include <numbers>
 
+#include "aesthetic/typical_surface.hpp"
+#include "analysis/surface_curvature.hpp"
 #include "cli/commands.hpp"
 #include "core/csv.hpp"
 #include "core/errors.hpp"
-#include "aesthetic/typical_surface.hpp"
-#include "analysis/surface_curvature.hpp"
 
 namespace cagd::cli {
 
@@ -56,7 +56,8 @@ int run_typical_surface(const TypicalSurfaceArgs& a) {
 
 Command add_typical_surface_command(CLI::App& app) {
     auto a = std::make_shared<TypicalSurfaceArgs>();
-    auto* c = app.add_subcommand("typical-surface", "Nonstationary typical surface: net with fixed edges, polygons turned about their diagonals; Bezier patch with K and H (typical_curves section 5)");
+    auto* c = app.add_subcommand(
+        "typical-surface", "Nonstationary typical surface: net with fixed edges, polygons turned about their diagonals; Bezier patch with K and H (typical_curves section 5)");
     c->add_option("--n", a->n, "control points per direction (>= 3; the patch has bi-degree n - 1)")->required();
     c->add_option("--alpha-u", a->alpha_u, "alpha of the v = 0 boundary P(i,0) (< 0 or > 1)")->required();
     c->add_option("--alpha-v", a->alpha_v, "alpha of the u = 0 boundary P(0,j) (< 0 or > 1)")->required();

@@ -126,7 +126,7 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
             c.length = c.fairness->length;
             c.pseudo_energy = span_pseudo_energy(*c.interpolant, *c.fairness, sampling.quadrature_pieces);
             c.status = "ok";
-        } catch (const InvalidInput& e) {   // a sample of zero speed: κ undefined there
+        } catch (const InvalidInput& e) {  // a sample of zero speed: κ undefined there
             c.length = analysis::arc_length(curve, sampling.quadrature_pieces);
             c.status = "cusp";
             c.note = e.what();
@@ -137,7 +137,7 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
             try {
                 const InterpolationResult m = methods::interpolate(configuration, moved, options.closed);
                 if (m.outcome.ok() && m.interpolant) c.locality_footprint = spans_moved(*c.interpolant, *m.interpolant, 1e-9 * diagonal);
-            } catch (const InvalidInput&) {   // the moved point made the input invalid for this method
+            } catch (const InvalidInput&) {  // the moved point made the input invalid for this method
             }
         }
         out.push_back(std::move(c));
@@ -148,9 +148,7 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
 std::vector<std::string> comparison_header(bool closed, bool timing) {
     std::vector<std::string> h{"method", "status", "spans", "length"};
     if (closed) h.push_back("area");
-    for (const char* n : {"bending_energy", "pseudo_energy", "inflections", "max_abs_curvature", "max_abs_dcurvature_ds", "overshoot",
-                          "locality_footprint"})
-        h.push_back(n);
+    for (const char* n : {"bending_energy", "pseudo_energy", "inflections", "max_abs_curvature", "max_abs_dcurvature_ds", "overshoot", "locality_footprint"}) h.push_back(n);
     if (timing) h.push_back("seconds");
     h.push_back("note");
     return h;
@@ -255,9 +253,7 @@ FigureData comparison_figure_data(const std::vector<MethodComparison>& cs, const
     return d;
 }
 
-std::vector<std::string> figure_methods_header() {
-    return {"index", "method", "curves_first", "curves_count", "curvature_first", "curvature_count", "combs_first", "combs_count"};
-}
+std::vector<std::string> figure_methods_header() { return {"index", "method", "curves_first", "curves_count", "curvature_first", "curvature_count", "combs_first", "combs_count"}; }
 
 std::vector<std::vector<std::string>> figure_methods_rows(const std::vector<MethodComparison>& cs, const FigureData& d) {
     std::vector<std::vector<std::string>> out;
@@ -266,8 +262,10 @@ std::vector<std::vector<std::string>> figure_methods_rows(const std::vector<Meth
         std::vector<std::size_t> first(cs.size(), 0), count(cs.size(), 0);
         for (std::size_t r = 0; r < rows->size(); ++r) {
             const auto m = static_cast<std::size_t>((*rows)[r][0]);
-            if (count[m] == 0) first[m] = r;
-            else if (first[m] + count[m] != r) throw std::logic_error("cagd::compare::figure_methods_rows: rows of method " + std::to_string(m) + " are not consecutive");
+            if (count[m] == 0)
+                first[m] = r;
+            else if (first[m] + count[m] != r)
+                throw std::logic_error("cagd::compare::figure_methods_rows: rows of method " + std::to_string(m) + " are not consecutive");
             ++count[m];
         }
         for (std::size_t i = 0; i < cs.size(); ++i) {

@@ -29,22 +29,22 @@
 
 namespace cagd::compare {
 
-using methods::InterpolationResult;
 using methods::Interpolant;
+using methods::InterpolationResult;
 
 struct ComparisonOptions {
-    std::vector<std::string> methods;   // configuration or method names (methods::find_configuration); empty: every configuration
+    std::vector<std::string> methods;  // configuration or method names (methods::find_configuration); empty: every configuration
     bool closed = false;
     bool locality = true;
 };
 
 struct MethodComparison {
     std::string method;
-    std::string status;   // "ok", "not applicable", "no result", "cusp"
-    std::string note;     // the reason when status is not ok
+    std::string status;  // "ok", "not applicable", "no result", "cusp"
+    std::string note;    // the reason when status is not ok
     std::optional<Interpolant> interpolant;
     double length = 0.0, area = 0.0, pseudo_energy = 0.0;
-    std::optional<analysis::FairnessMeasures> fairness;   // absent for a cusp
+    std::optional<analysis::FairnessMeasures> fairness;  // absent for a cusp
     int spans = 0;
     std::optional<int> locality_footprint;
     double seconds = 0.0;

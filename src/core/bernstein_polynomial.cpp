@@ -103,16 +103,13 @@ BernsteinPolynomial operator+(const BernsteinPolynomial& a, const BernsteinPolyn
     return BernsteinPolynomial(std::move(c));
 }
 
-BernsteinPolynomial operator-(const BernsteinPolynomial& a, const BernsteinPolynomial& b) {
-    return a + (-1.0) * b;
-}
+BernsteinPolynomial operator-(const BernsteinPolynomial& a, const BernsteinPolynomial& b) { return a + (-1.0) * b; }
 
 BernsteinPolynomial operator*(const BernsteinPolynomial& a, const BernsteinPolynomial& b) {
     const int m = a.degree(), k = b.degree();
     std::vector<double> c(static_cast<std::size_t>(m + k + 1), 0.0);
     for (int i = 0; i <= m; ++i)
-        for (int j = 0; j <= k; ++j)
-            c[i + j] += a.c_[i] * b.c_[j] * binomial_double(m, i) * binomial_double(k, j) / binomial_double(m + k, i + j);
+        for (int j = 0; j <= k; ++j) c[i + j] += a.c_[i] * b.c_[j] * binomial_double(m, i) * binomial_double(k, j) / binomial_double(m + k, i + j);
     return BernsteinPolynomial(std::move(c));
 }
 
@@ -150,11 +147,13 @@ struct SignSearch {
         note(c.back(), b, threshold);
         if (std::all_of(c.begin(), c.end(), [](double v) { return v < 0.0; })) return;
         if (std::all_of(c.begin(), c.end(), [](double v) { return v > 0.0; })) return;
-        if (depth >= max_depth) {   // a piece of width 2^−max_depth that still mixes signs
+        if (depth >= max_depth) {  // a piece of width 2^−max_depth that still mixes signs
             const bool nonpos = std::all_of(c.begin(), c.end(), [&](double v) { return v <= threshold; });
             const bool nonneg = std::all_of(c.begin(), c.end(), [&](double v) { return v >= -threshold; });
-            if (nonpos || nonneg) all_strict = false;   // touches zero within rounding
-            else unresolved = true;
+            if (nonpos || nonneg)
+                all_strict = false;  // touches zero within rounding
+            else
+                unresolved = true;
             return;
         }
         const auto halves = p.subdivide(0.5);
@@ -216,7 +215,8 @@ void small_degree_basis(int d, double t, double* b) {
 void bernstein_basis_values(int degree, double t, std::span<double> out) {
     require_basis_arguments(degree, t);
     if (out.size() != static_cast<std::size_t>(degree) + 1)
-        fail_input("cagd::bernstein_basis_values", "output holds " + std::to_string(out.size()) + " values; degree " + std::to_string(degree) + " needs " + std::to_string(degree + 1));
+        fail_input("cagd::bernstein_basis_values",
+                   "output holds " + std::to_string(out.size()) + " values; degree " + std::to_string(degree) + " needs " + std::to_string(degree + 1));
     if (degree <= kSmallBernsteinDegree) {
         small_degree_basis(degree, t, out.data());
         return;
@@ -238,8 +238,7 @@ std::vector<double> bernstein_basis_values(int degree, double t) {
         return b;
     }
     const int mode = std::clamp(static_cast<int>(std::lround(d * t)), 0, d);
-    const double log_mode = std::lgamma(d + 1.0) - std::lgamma(mode + 1.0) - std::lgamma(d - mode + 1.0) +
-                            mode * std::log(t) + (d - mode) * std::log1p(-t);
+    const double log_mode = std::lgamma(d + 1.0) - std::lgamma(mode + 1.0) - std::lgamma(d - mode + 1.0) + mode * std::log(t) + (d - mode) * std::log1p(-t);
     b[mode] = std::exp(log_mode);
     const double ratio = t / (1.0 - t);
     for (int i = mode; i < d; ++i) b[i + 1] = b[i] * (d - i) / (i + 1.0) * ratio;

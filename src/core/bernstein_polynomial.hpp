@@ -30,13 +30,13 @@ namespace cagd {
 class BernsteinPolynomial {
 public:
     BernsteinPolynomial() = default;
-    explicit BernsteinPolynomial(std::vector<double> coefficients);   // at least one, finite
+    explicit BernsteinPolynomial(std::vector<double> coefficients);  // at least one, finite
 
     int degree() const { return static_cast<int>(c_.size()) - 1; }
     const std::vector<double>& coefficients() const { return c_; }
-    double operator()(double t) const;                                  // de Casteljau
-    BernsteinPolynomial derivative() const;                             // degree d − 1 (d = 0: 0)
-    BernsteinPolynomial elevated(int to_degree) const;                  // same polynomial
+    double operator()(double t) const;                  // de Casteljau
+    BernsteinPolynomial derivative() const;             // degree d − 1 (d = 0: 0)
+    BernsteinPolynomial elevated(int to_degree) const;  // same polynomial
     // Degree d − 1 representation of a polynomial whose true degree is below d (e.g. r' × r'' of
     // a Bézier curve, whose leading terms cancel): the inverse of elevation, from the left for
     // the first half of the coefficients and from the right for the rest (Farin, CAGD §6.1).

@@ -15,12 +15,20 @@ std::vector<std::string> split_csv_line(const std::string& line) {
     for (std::size_t i = 0; i < line.size(); ++i) {
         const char c = line[i];
         if (quoted) {
-            if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') { cur += '"'; ++i; }
-            else if (c == '"') quoted = false;
-            else cur += c;
-        } else if (c == '"') quoted = true;
-        else if (c == ',') { out.push_back(cur); cur.clear(); }
-        else if (c != '\r') cur += c;
+            if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+                cur += '"';
+                ++i;
+            } else if (c == '"')
+                quoted = false;
+            else
+                cur += c;
+        } else if (c == '"')
+            quoted = true;
+        else if (c == ',') {
+            out.push_back(cur);
+            cur.clear();
+        } else if (c != '\r')
+            cur += c;
     }
     out.push_back(cur);
     return out;
@@ -29,7 +37,10 @@ std::vector<std::string> split_csv_line(const std::string& line) {
 std::string csv_field(const std::string& text) {
     if (text.find_first_of(",\"\n") == std::string::npos) return text;
     std::string q = "\"";
-    for (char c : text) { if (c == '"') q += '"'; q += c; }
+    for (char c : text) {
+        if (c == '"') q += '"';
+        q += c;
+    }
     return q + "\"";
 }
 
@@ -42,9 +53,7 @@ std::string format_number(double value, int significant) {
 }
 
 double parse_number(const std::string& text) {
-    const auto fail = [&]() -> double {
-        fail_input("cagd::parse_number", "'" + text + "' is not a number or fraction a/b");
-    };
+    const auto fail = [&]() -> double { fail_input("cagd::parse_number", "'" + text + "' is not a number or fraction a/b"); };
     if (text.empty()) return fail();
     const auto slash = text.find('/');
     try {
@@ -65,8 +74,7 @@ double parse_number(const std::string& text) {
     }
 }
 
-CsvWriter::CsvWriter(const std::string& path, const std::vector<std::string>& header)
-    : path_(path), out_(path), columns_(header.size()) {
+CsvWriter::CsvWriter(const std::string& path, const std::vector<std::string>& header) : path_(path), out_(path), columns_(header.size()) {
     if (!out_) fail_input("cagd::CsvWriter", "cannot open '" + path + "' for writing");
     row_text(header);
 }
@@ -78,9 +86,7 @@ void CsvWriter::row(const std::vector<double>& values, int significant) {
 }
 
 void CsvWriter::row_text(const std::vector<std::string>& fields) {
-    if (fields.size() != columns_)
-        fail_input("cagd::CsvWriter", path_ + ": row has " + std::to_string(fields.size()) +
-                                                 " fields, header has " + std::to_string(columns_));
+    if (fields.size() != columns_) fail_input("cagd::CsvWriter", path_ + ": row has " + std::to_string(fields.size()) + " fields, header has " + std::to_string(columns_));
     for (std::size_t i = 0; i < fields.size(); ++i) out_ << (i ? "," : "") << csv_field(fields[i]);
     out_ << '\n';
 }
@@ -100,7 +106,7 @@ NumericTable read_numeric_table(const std::string& path) {
     int line_no = 0;
     while (std::getline(in, line)) {
         ++line_no;
-        if (line_no == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);   // UTF-8 byte-order mark
+        if (line_no == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);  // UTF-8 byte-order mark
         if (!line.empty() && line.back() == '\r') line.pop_back();
         if (line.empty() || line[0] == '#') continue;
         const std::vector<std::string> fields = split_csv_line(line);

@@ -8,7 +8,7 @@
 namespace cagd {
 
 std::vector<std::string> split_csv_line(const std::string& line);
-std::string csv_field(const std::string& text);   // quotes when needed
+std::string csv_field(const std::string& text);  // quotes when needed
 // Stable rendering: "%.10g", with −0 printed as 0. Used for every number in results/.
 std::string format_number(double value, int significant = 10);
 // Parses a decimal or an exact fraction "a/b" (reference files print 1/6 as 1/6).
@@ -21,7 +21,7 @@ double parse_number(const std::string& text);
 struct NumericTable {
     std::vector<std::string> header;
     std::vector<std::vector<double>> rows;
-    int column(const std::string& name) const;   // −1 when absent
+    int column(const std::string& name) const;  // −1 when absent
 };
 NumericTable read_numeric_table(const std::string& path);
 

@@ -16,16 +16,14 @@ std::vector<double> unit_piece_breakpoints(int pieces) {
 }
 
 PieceLocation locate_unit_piece(const char* who, double u, int pieces, int order) {
-    if (!(u >= 0.0 && u <= pieces))
-        fail_input(who, "u = " + full_precision(u) + " outside [0, " + std::to_string(pieces) + "]");
+    if (!(u >= 0.0 && u <= pieces)) fail_input(who, "u = " + full_precision(u) + " outside [0, " + std::to_string(pieces) + "]");
     if (order < 0) fail_input(who, "order must be >= 0, got " + std::to_string(order));
     const int s = std::min(static_cast<int>(std::floor(u)), pieces - 1);
     return {s, u - s};
 }
 
 PieceLocation locate_unit_piece_from_left(const char* who, double u, int pieces, int order) {
-    if (!(u > 0.0 && u <= pieces))
-        fail_input(who, "left limit at u = " + full_precision(u) + " needs u in (0, " + std::to_string(pieces) + "]");
+    if (!(u > 0.0 && u <= pieces)) fail_input(who, "left limit at u = " + full_precision(u) + " needs u in (0, " + std::to_string(pieces) + "]");
     if (order < 0) fail_input(who, "order must be >= 0, got " + std::to_string(order));
     const int s = std::max(static_cast<int>(std::ceil(u)) - 1, 0);
     return {s, u - s};
@@ -37,8 +35,7 @@ Eigen::MatrixXd Curve::derivatives(double t, int order) const {
 }
 
 Eigen::MatrixXd Curve::jet_from_left(double t, int order) const {
-    if (breakpoints().size() > 2)
-        throw std::logic_error("cagd::Curve::jet_from_left: a curve of several pieces must override it");
+    if (breakpoints().size() > 2) throw std::logic_error("cagd::Curve::jet_from_left: a curve of several pieces must override it");
     if (!(t > t_min() && t <= t_max()))
         fail_input("cagd::Curve::jet_from_left", "t = " + full_precision(t) + " outside (" + full_precision(t_min()) + ", " + full_precision(t_max()) + "]");
     return jet(t, order);

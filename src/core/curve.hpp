@@ -35,10 +35,10 @@ public:
 
 // Helpers for curves made of K pieces of unit parameter length, piece s on u ∈ [s, s+1]
 // (piecewise Hermite curves, Hosaka curves).
-std::vector<double> unit_piece_breakpoints(int pieces);   // 0, 1, …, K
+std::vector<double> unit_piece_breakpoints(int pieces);  // 0, 1, …, K
 struct PieceLocation {
-    int piece;   // s, the last piece for u = K
-    double t;    // u − s ∈ [0, 1]
+    int piece;  // s, the last piece for u = K
+    double t;   // u − s ∈ [0, 1]
 };
 // Throws InvalidInput naming `who` for u outside [0, K] (or NaN) or order < 0.
 PieceLocation locate_unit_piece(const char* who, double u, int pieces, int order);

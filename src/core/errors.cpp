@@ -10,8 +10,6 @@ std::string full_precision(double value) {
     return buf;
 }
 
-void fail_input(const std::string& who, const std::string& what) {
-    throw InvalidInput(who + ": " + what);
-}
+void fail_input(const std::string& who, const std::string& what) { throw InvalidInput(who + ": " + what); }
 
 }  // namespace cagd

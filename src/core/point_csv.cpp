@@ -29,8 +29,7 @@ bool parse_double(const std::string& s, double& v) {
 
 namespace {
 // Rows of min_cols..max_cols finite numbers (an optional header line of names, # comments).
-PointList read_number_rows(std::istream& in, const std::string& name, std::size_t min_cols, std::size_t max_cols, const std::string& who,
-                           const std::string& what) {
+PointList read_number_rows(std::istream& in, const std::string& name, std::size_t min_cols, std::size_t max_cols, const std::string& who, const std::string& what) {
     std::vector<std::vector<double>> rows;
     std::string line;
     int line_no = 0;
@@ -54,19 +53,19 @@ PointList read_number_rows(std::istream& in, const std::string& name, std::size_
             values.push_back(v);
         }
         if (!numeric) {
-            if (header_allowed) { header_allowed = false; continue; }   // a header of names
+            if (header_allowed) {
+                header_allowed = false;
+                continue;
+            }  // a header of names
             fail_input(who, name + ":" + std::to_string(line_no) + ": cannot read '" + line + "' as " + what);
         }
         header_allowed = false;
         if (values.size() < min_cols || values.size() > max_cols)
             fail_input(who, name + ":" + std::to_string(line_no) + ": " + std::to_string(values.size()) + " columns in '" + line + "'; expected " + what);
         if (!rows.empty() && values.size() != rows.front().size())
-            fail_input(who, name + ":" + std::to_string(line_no) + ": " + std::to_string(values.size()) +
-                                " columns, earlier lines have " + std::to_string(rows.front().size()));
+            fail_input(who, name + ":" + std::to_string(line_no) + ": " + std::to_string(values.size()) + " columns, earlier lines have " + std::to_string(rows.front().size()));
         for (double v : values)
-            if (!std::isfinite(v))
-                fail_input(who, name + ":" + std::to_string(line_no) + ": coordinate " + full_precision(v) +
-                                    " is not finite");
+            if (!std::isfinite(v)) fail_input(who, name + ":" + std::to_string(line_no) + ": coordinate " + full_precision(v) + " is not finite");
         rows.push_back(values);
     }
     if (rows.empty()) fail_input(who, name + ": no data rows (no points)");

@@ -7,13 +7,12 @@
 
 namespace cagd {
 
-using PointList = Eigen::MatrixXd;   // n × dim, one point per row
+using PointList = Eigen::MatrixXd;  // n × dim, one point per row
 
 // Throws InvalidInput unless: rows ≥ min_count, 1 ≤ cols ≤ 3, every coordinate finite,
 // and (if distinct_consecutive) no two consecutive points coincide (for closed lists
 // also last vs first). Messages name `who`, the row index and the value.
-void require_valid_points(const PointList& points, Eigen::Index min_count,
-                          bool distinct_consecutive, bool closed, const std::string& who);
+void require_valid_points(const PointList& points, Eigen::Index min_count, bool distinct_consecutive, bool closed, const std::string& who);
 
 // Throws InvalidInput unless `values` has at least min_count entries, all finite and strictly
 // increasing (abscissae of y(x) data, grid lines). `name` ("x", "y") appears in the message with

@@ -38,9 +38,7 @@ int RationalPolynomial::degree() const {
     return -1;
 }
 
-Rational RationalPolynomial::coefficient(int k) const {
-    return k >= 0 && k < static_cast<int>(c_.size()) ? c_[static_cast<std::size_t>(k)] : Rational(0);
-}
+Rational RationalPolynomial::coefficient(int k) const { return k >= 0 && k < static_cast<int>(c_.size()) ? c_[static_cast<std::size_t>(k)] : Rational(0); }
 
 Rational RationalPolynomial::operator()(const Rational& t) const {
     Rational v = 0;
@@ -115,8 +113,10 @@ std::string RationalPolynomial::to_string() const {
     for (int k = 0; k <= degree(); ++k) {
         const Rational& c = c_[static_cast<std::size_t>(k)];
         if (c == 0) continue;
-        if (!first) s << (c < 0 ? " - " : " + ");
-        else if (c < 0) s << "-";
+        if (!first)
+            s << (c < 0 ? " - " : " + ");
+        else if (c < 0)
+            s << "-";
         const Rational a = c < 0 ? Rational(-c) : c;
         if (a != 1 || k == 0) s << a << (k > 0 ? " " : "");
         if (k > 0) s << "t" << (k > 1 ? "^" + std::to_string(k) : "");

@@ -13,26 +13,26 @@ namespace cagd {
 using Rational = boost::multiprecision::cpp_rational;
 
 Rational factorial(int n);
-Rational binomial(int n, int k);   // 0 for k < 0 or k > n
+Rational binomial(int n, int k);  // 0 for k < 0 or k > n
 
 class RationalPolynomial {
 public:
     RationalPolynomial() = default;
     explicit RationalPolynomial(std::vector<Rational> coefficients);
     static RationalPolynomial constant(const Rational& c);
-    static RationalPolynomial monomial(int degree, const Rational& c = 1);   // c t^degree
-    static RationalPolynomial linear(const Rational& c0, const Rational& c1); // c0 + c1 t
+    static RationalPolynomial monomial(int degree, const Rational& c = 1);     // c t^degree
+    static RationalPolynomial linear(const Rational& c0, const Rational& c1);  // c0 + c1 t
 
     // Degree of the highest non-zero coefficient; −1 for the zero polynomial.
     int degree() const;
     bool is_zero() const { return degree() < 0; }
     const std::vector<Rational>& coefficients() const { return c_; }
-    Rational coefficient(int k) const;   // 0 beyond the stored ones
+    Rational coefficient(int k) const;  // 0 beyond the stored ones
 
-    Rational operator()(const Rational& t) const;   // exact value (Horner)
-    double value(double t) const;                   // in double, from rounded coefficients
+    Rational operator()(const Rational& t) const;  // exact value (Horner)
+    double value(double t) const;                  // in double, from rounded coefficients
     RationalPolynomial derivative(int order = 1) const;
-    RationalPolynomial compose_one_minus() const;   // p(1 − t)
+    RationalPolynomial compose_one_minus() const;  // p(1 − t)
     RationalPolynomial power(int n) const;
 
     RationalPolynomial& operator+=(const RationalPolynomial& o);
@@ -45,7 +45,7 @@ public:
     friend RationalPolynomial operator*(const RationalPolynomial& a, const RationalPolynomial& b);
     friend bool operator==(const RationalPolynomial& a, const RationalPolynomial& b) { return (a - b).is_zero(); }
 
-    std::string to_string() const;   // e.g. "3 t^2 - 2 t^3"
+    std::string to_string() const;  // e.g. "3 t^2 - 2 t^3"
 
 private:
     std::vector<Rational> c_;

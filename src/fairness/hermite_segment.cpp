@@ -13,7 +13,7 @@ namespace cagd::fairness {
 
 namespace {
 
-constexpr double kCuspSpeed = 1e-13;   // relative to 1 + r0 + r1
+constexpr double kCuspSpeed = 1e-13;  // relative to 1 + r0 + r1
 
 double cross(const Eigen::Vector2d& p, const Eigen::Vector2d& q) { return p.x() * q.y() - p.y() * q.x(); }
 
@@ -102,7 +102,7 @@ double wrap_angle(double theta) {
         if (w <= std::numbers::pi && w > -std::numbers::pi) return w;
     }
     if (!std::isfinite(theta)) fail_input("cagd::fairness::wrap_angle", "angle must be finite, got " + full_precision(theta));
-    double w = std::remainder(theta, 2.0 * std::numbers::pi);   // in [−π, π]
+    double w = std::remainder(theta, 2.0 * std::numbers::pi);  // in [−π, π]
     if (w <= -std::numbers::pi) w += 2.0 * std::numbers::pi;
     return w;
 }
@@ -111,8 +111,7 @@ void fail_tangent_angle(const char* who, double theta, const char* name) {
     fail_input(who, std::string(name) + " must be a finite angle in [-pi, pi] (radians), got " + full_precision(theta));
 }
 
-UnitChordHermite::UnitChordHermite(double theta0, double theta1, double r0, double r1)
-    : theta0_(theta0), theta1_(theta1), r0_(r0), r1_(r1) {
+UnitChordHermite::UnitChordHermite(double theta0, double theta1, double r0, double r1) : theta0_(theta0), theta1_(theta1), r0_(r0), r1_(r1) {
     const std::string who = "cagd::fairness::UnitChordHermite";
     require_tangent_angle(who.c_str(), theta0, "theta0");
     require_tangent_angle(who.c_str(), theta1, "theta1");
@@ -132,9 +131,7 @@ Eigen::Vector2d UnitChordHermite::first(double t) const { return a_ + t * (b_ + 
 Eigen::Vector2d UnitChordHermite::second(double t) const { return b_ + 2.0 * t * c_; }
 double UnitChordHermite::curvature_numerator(double t) const { return cross(second(t), first(t)); }
 
-SegmentType UnitChordHermite::type() const {
-    return curvature_numerator(0.0) * curvature_numerator(1.0) >= 0.0 ? SegmentType::c : SegmentType::s;
-}
+SegmentType UnitChordHermite::type() const { return curvature_numerator(0.0) * curvature_numerator(1.0) >= 0.0 ? SegmentType::c : SegmentType::s; }
 
 BezierCurve UnitChordHermite::bezier() const {
     Eigen::MatrixXd cp(4, 2);
@@ -153,7 +150,7 @@ std::vector<SpeedMinimum> speed_minima(const UnitChordHermite& seg) {
     const double q0 = A.dot(B), q1 = B.dot(B) + 2.0 * A.dot(C), q2 = 3.0 * B.dot(C), q3 = 2.0 * C.dot(C);
     const auto slope = [&](double t) { return q0 + t * (q1 + t * (q2 + t * q3)); };
     std::vector<double> cuts{0.0};
-    const double a2 = 3.0 * q3, a1 = 2.0 * q2, a0 = q1;   // derivative of the cubic
+    const double a2 = 3.0 * q3, a1 = 2.0 * q2, a0 = q1;  // derivative of the cubic
     if (a2 != 0.0) {
         const double disc = a1 * a1 - 4.0 * a2 * a0;
         if (disc > 0.0) {
@@ -242,8 +239,7 @@ constexpr int kRombergLevels = 20;
 constexpr double kRombergAbsTol = 1e-300;
 
 SegmentEnergy segment_energy_reference(const UnitChordHermite& seg, double rel_tol, bool with_gradient) {
-    if (!(rel_tol > 0.0 && rel_tol <= 1e-12))
-        fail_input("cagd::fairness::segment_energy_reference", "rel_tol must be in (0, 1e-12], got " + full_precision(rel_tol));
+    if (!(rel_tol > 0.0 && rel_tol <= 1e-12)) fail_input("cagd::fairness::segment_energy_reference", "rel_tol must be in (0, 1e-12], got " + full_precision(rel_tol));
     const std::vector<SpeedMinimum> minima = speed_minima(seg);
     if (cusp_among(seg, minima)) return cusp_energy();
     const std::vector<double> br = breaks_for(seg, minima);
@@ -270,8 +266,7 @@ SegmentEnergy segment_energy_reference(const UnitChordHermite& seg, double rel_t
 
 SegmentEnergy segment_energy_fast(const UnitChordHermite& seg, bool with_gradient, int rule_nodes) {
     static const numeric::GaussLegendreRule rule20(20), rule8(8);
-    if (rule_nodes != 8 && rule_nodes != 20)
-        fail_input("cagd::fairness::segment_energy_fast", "rule_nodes must be 8 or 20, got " + std::to_string(rule_nodes));
+    if (rule_nodes != 8 && rule_nodes != 20) fail_input("cagd::fairness::segment_energy_fast", "rule_nodes must be 8 or 20, got " + std::to_string(rule_nodes));
     const numeric::GaussLegendreRule& rule = rule_nodes == 8 ? rule8 : rule20;
     const std::vector<SpeedMinimum> minima = speed_minima(seg);
     if (cusp_among(seg, minima)) return cusp_energy();

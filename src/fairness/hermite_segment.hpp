@@ -50,7 +50,7 @@ double wrap_angle(double theta);
 // Inline: the check is on the hot path of every table lookup; the message is built only on failure.
 [[noreturn]] void fail_tangent_angle(const char* who, double theta, const char* name);
 inline void require_tangent_angle(const char* who, double theta, const char* name) {
-    if (!(std::abs(theta) <= std::numbers::pi + 1e-12)) fail_tangent_angle(who, theta, name);   // also catches NaN
+    if (!(std::abs(theta) <= std::numbers::pi + 1e-12)) fail_tangent_angle(who, theta, name);  // also catches NaN
 }
 
 class UnitChordHermite {
@@ -63,12 +63,12 @@ public:
     double r0() const { return r0_; }
     double r1() const { return r1_; }
 
-    Eigen::Vector2d position(double t) const;     // P(t)
-    Eigen::Vector2d first(double t) const;        // P'(t) = A + Bt + Ct²
-    Eigen::Vector2d second(double t) const;       // P''(t) = B + 2Ct
-    double curvature_numerator(double t) const;   // k(t) of eq (15), a quadratic in t
-    SegmentType type() const;                     // eq (14) from k(0)k(1)
-    BezierCurve bezier() const;                   // the same cubic through the Curve interface
+    Eigen::Vector2d position(double t) const;    // P(t)
+    Eigen::Vector2d first(double t) const;       // P'(t) = A + Bt + Ct²
+    Eigen::Vector2d second(double t) const;      // P''(t) = B + 2Ct
+    double curvature_numerator(double t) const;  // k(t) of eq (15), a quadratic in t
+    SegmentType type() const;                    // eq (14) from k(0)k(1)
+    BezierCurve bezier() const;                  // the same cubic through the Curve interface
 
     // Power-form coefficients of P'(t) = A + B t + C t².
     const Eigen::Vector2d& a() const { return a_; }
@@ -85,7 +85,7 @@ private:
 
 // The local minima of |P'(t)| inside (0, 1), ascending, with |P'| there.
 struct SpeedMinimum {
-    double t = 0.0, speed = 0.0, width = 0.0;   // width δ = |P'(t*)| / |P''(t*)|
+    double t = 0.0, speed = 0.0, width = 0.0;  // width δ = |P'(t*)| / |P''(t*)|
 };
 std::vector<SpeedMinimum> speed_minima(const UnitChordHermite& seg);
 
@@ -96,20 +96,19 @@ bool has_cusp(const UnitChordHermite& seg);
 std::vector<double> integration_breaks(const UnitChordHermite& seg);
 
 struct SegmentEnergy {
-    double strain_energy = 0.0;    // E (6)
-    double length = 0.0;           // L
-    double pseudo_energy = 0.0;    // J = L² E (7)
+    double strain_energy = 0.0;  // E (6)
+    double length = 0.0;         // L
+    double pseudo_energy = 0.0;  // J = L² E (7)
     // Gradient of J with respect to log r0, log r1 (the minimisers' variables).
     double dj_dlog_r0 = 0.0, dj_dlog_r1 = 0.0;
-    double error_estimate = 0.0;   // bound on |ΔJ| from the quadrature (reference path)
+    double error_estimate = 0.0;  // bound on |ΔJ| from the quadrature (reference path)
     long evaluations = 0;
-    bool cusp = false;             // E = J = +∞
-    Outcome outcome;               // no_convergence if Romberg did not converge
+    bool cusp = false;  // E = J = +∞
+    Outcome outcome;    // no_convergence if Romberg did not converge
 };
 
 // Reference path: Romberg on every piece of integration_breaks, rel_tol (≤ 1e-12) per integral.
-SegmentEnergy segment_energy_reference(const UnitChordHermite& seg, double rel_tol = 1e-13,
-                                       bool with_gradient = true);
+SegmentEnergy segment_energy_reference(const UnitChordHermite& seg, double rel_tol = 1e-13, bool with_gradient = true);
 // Fast path: 20-point Gauss–Legendre on the same pieces. `rule_nodes` ∈ {8, 20}: 8 is a cheap
 // estimate (~1e-6 relative) for scans that only seed a minimiser.
 SegmentEnergy segment_energy_fast(const UnitChordHermite& seg, bool with_gradient = true, int rule_nodes = 20);
@@ -121,7 +120,7 @@ double signed_area(const UnitChordHermite& seg);
 // same graded pieces to 1e-40): an independent check of both double paths. θ and r are taken as
 // the exact binary values given; cos and sin are evaluated in 50 digits. Slow (~0.1 s).
 struct SegmentEnergyDigits {
-    std::string strain_energy, length, pseudo_energy;   // 40 significant digits
+    std::string strain_energy, length, pseudo_energy;  // 40 significant digits
     double strain_energy_value = 0, length_value = 0, pseudo_energy_value = 0;
 };
 SegmentEnergyDigits segment_energy_high_precision(double theta0, double theta1, double r0, double r1);

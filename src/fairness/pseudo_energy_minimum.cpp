@@ -1,14 +1,14 @@
 #include "fairness/pseudo_energy_minimum.hpp"
 
-#include <algorithm>
-#include <boost/math/tools/minima.hpp>
 #include <ceres/gradient_problem.h>
 #include <ceres/gradient_problem_solver.h>
 #include <glog/logging.h>
+#include <algorithm>
+#include <boost/math/tools/minima.hpp>
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <nlopt.hpp>
+#include <numbers>
 
 namespace cagd::fairness {
 
@@ -18,9 +18,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // A descent that ends beyond these has run off towards r = 0 or r = ∞.
 constexpr double kRunawayLow = 1e-8, kRunawayHigh = 1e8;
 
-bool is_multiple_of_pi(double theta) {
-    return std::abs(theta) < 1e-12 || std::abs(std::abs(theta) - std::numbers::pi) < 1e-12;
-}
+bool is_multiple_of_pi(double theta) { return std::abs(theta) < 1e-12 || std::abs(std::abs(theta) - std::numbers::pi) < 1e-12; }
 
 void require_angles(const char* who, double theta0, double theta1) {
     const std::string w = std::string("cagd::fairness::") + who;
@@ -38,10 +36,9 @@ PseudoEnergyMinimum undefined_node(double theta0, double theta1) {
     m.pseudo_energy = straight ? 0.0 : kInf;
     m.strain_energy = straight ? 0.0 : kInf;
     m.length = straight ? 1.0 : 0.0;
-    m.outcome = {Status::no_solution,
-                 straight ? "undefined node (0, 0): the straight segment has J = 0 and r0, r1 are not determined (paper §4.1)"
-                          : "undefined node: both tangents are parallel to the chord and point so that every segment has a "
-                            "cusp; no minimum exists (paper §4.1)"};
+    m.outcome = {Status::no_solution, straight ? "undefined node (0, 0): the straight segment has J = 0 and r0, r1 are not determined (paper §4.1)"
+                                               : "undefined node: both tangents are parallel to the chord and point so that every segment has a "
+                                                 "cusp; no minimum exists (paper §4.1)"};
     return m;
 }
 
@@ -73,8 +70,7 @@ std::vector<ScanPoint> scan_minima(double theta0, double theta1, const ScanBox& 
             for (int da = -1; da <= 1 && minimum; ++da)
                 for (int db = -1; db <= 1; ++db) {
                     const int x = a + da, y = b + db;
-                    if ((da || db) && x >= 0 && y >= 0 && x < n && y < n && grid[static_cast<std::size_t>(x * n + y)] < v)
-                        minimum = false;
+                    if ((da || db) && x >= 0 && y >= 0 && x < n && y < n && grid[static_cast<std::size_t>(x * n + y)] < v) minimum = false;
                 }
             if (minimum) out.push_back({v, rho(a), rho(b)});
         }
@@ -203,8 +199,7 @@ PseudoEnergyMinimum choose(double theta0, double theta1, const std::vector<Desce
         m.runner_up_r1 = std::exp(distinct[1]->rho1);
     }
     if (std::min(m.r0, m.r1) < kRunawayLow || std::max(m.r0, m.r1) > kRunawayHigh)
-        m.outcome = {Status::no_solution, "minimiser runs off to the boundary of r > 0 (r0 = " + full_precision(m.r0) +
-                                              ", r1 = " + full_precision(m.r1) + ")"};
+        m.outcome = {Status::no_solution, "minimiser runs off to the boundary of r > 0 (r0 = " + full_precision(m.r0) + ", r1 = " + full_precision(m.r1) + ")"};
     return m;
 }
 
@@ -249,8 +244,7 @@ Descent newton_descent(const Energy& energy, double rho0, double rho1) {
             if (step.allFinite() && std::abs(xn[0]) < kLogMagnitudeLimit && std::abs(xn[1]) < kLogMagnitudeLimit) {
                 const SegmentEnergy en = energy(xn[0], xn[1]);
                 const bool lower = en.pseudo_energy < e.pseudo_energy;
-                const bool flatter = en.pseudo_energy <= e.pseudo_energy + kEnergyNoise * std::abs(e.pseudo_energy) &&
-                                     grad(en).norm() < g.norm();
+                const bool flatter = en.pseudo_energy <= e.pseudo_energy + kEnergyNoise * std::abs(e.pseudo_energy) && grad(en).norm() < g.norm();
                 if (lower || flatter) {
                     x = xn;
                     e = en;
@@ -260,7 +254,7 @@ Descent newton_descent(const Energy& energy, double rho0, double rho1) {
             }
             mu = std::max(kDampingGrowth * mu, kDampingFloor * (1.0 + lmax));
         }
-        if (!accepted || step_norm < kStepAtRounding) {   // at the rounding floor
+        if (!accepted || step_norm < kStepAtRounding) {  // at the rounding floor
             d.converged = grad(e).norm() <= kGradientConverged * (1.0 + e.pseudo_energy);
             break;
         }
@@ -278,8 +272,7 @@ Descent newton_descent(const Energy& energy, double rho0, double rho1) {
 
 class RombergPseudoEnergy final : public ceres::FirstOrderFunction {
 public:
-    RombergPseudoEnergy(double theta0, double theta1, double rel_tol, long* evaluations)
-        : theta0_(theta0), theta1_(theta1), rel_tol_(rel_tol), evaluations_(evaluations) {}
+    RombergPseudoEnergy(double theta0, double theta1, double rel_tol, long* evaluations) : theta0_(theta0), theta1_(theta1), rel_tol_(rel_tol), evaluations_(evaluations) {}
     bool Evaluate(const double* rho, double* cost, double* gradient) const override {
         if (!(std::abs(rho[0]) < kLogMagnitudeLimit && std::abs(rho[1]) < kLogMagnitudeLimit)) return false;
         const UnitChordHermite seg(theta0_, theta1_, std::exp(rho[0]), std::exp(rho[1]));
@@ -326,7 +319,7 @@ PseudoEnergyMinimum minimize_pseudo_energy_reference(double theta0, double theta
         o.line_search_direction_type = ceres::NONLINEAR_CONJUGATE_GRADIENT;
         o.nonlinear_conjugate_gradient_type = ceres::POLAK_RIBIERE;
         o.line_search_type = ceres::WOLFE;
-        o.line_search_sufficient_curvature_decrease = 0.1;   // the usual choice for CG
+        o.line_search_sufficient_curvature_decrease = 0.1;  // the usual choice for CG
         o.max_num_iterations = kCgIterations;
         o.function_tolerance = kCgFunctionTolerance;
         o.gradient_tolerance = kCgGradientTolerance;
@@ -399,9 +392,7 @@ PseudoEnergyMinimum minimize_pseudo_energy_nlopt(double theta0, double theta1, c
     return choose(theta0, theta1, runs, evaluations);
 }
 
-
-PseudoEnergyMinimum minimize_pseudo_energy(double theta0, double theta1, const FastMinimizerOptions& opt,
-                                           const std::vector<Eigen::Vector2d>& warm) {
+PseudoEnergyMinimum minimize_pseudo_energy(double theta0, double theta1, const FastMinimizerOptions& opt, const std::vector<Eigen::Vector2d>& warm) {
     require_angles("minimize_pseudo_energy", theta0, theta1);
     if (is_undefined_node(theta0, theta1)) return undefined_node(theta0, theta1);
     long evaluations = 0;
@@ -411,8 +402,7 @@ PseudoEnergyMinimum minimize_pseudo_energy(double theta0, double theta1, const F
         return segment_energy_fast(UnitChordHermite(theta0, theta1, std::exp(a), std::exp(b)));
     };
     std::vector<Descent> runs;
-    for (std::size_t s = 0; s < starts.size() && static_cast<int>(s) < opt.starts; ++s)
-        runs.push_back(newton_descent(fast_energy, starts[s].rho0, starts[s].rho1));
+    for (std::size_t s = 0; s < starts.size() && static_cast<int>(s) < opt.starts; ++s) runs.push_back(newton_descent(fast_energy, starts[s].rho0, starts[s].rho1));
     for (const Eigen::Vector2d& w : warm)
         if (w[0] > 0 && w[1] > 0) runs.push_back(newton_descent(fast_energy, std::log(w[0]), std::log(w[1])));
     return choose(theta0, theta1, runs, evaluations);
@@ -432,7 +422,7 @@ AngleMinimum minimize_over_end_angle(double theta, double scan_step) {
     require_angles("minimize_over_end_angle", theta, 0.0);
     const auto j_of = [&](double theta1) {
         const PseudoEnergyMinimum m = minimize_pseudo_energy(theta, theta1);
-        if (is_undefined_node(theta, theta1)) return m.pseudo_energy;   // 0 at (0, 0), +∞ elsewhere
+        if (is_undefined_node(theta, theta1)) return m.pseudo_energy;  // 0 at (0, 0), +∞ elsewhere
         return m.outcome.ok() ? m.pseudo_energy : kInf;
     };
     return minimize_over_end_angle(theta, j_of, scan_step);
@@ -440,8 +430,7 @@ AngleMinimum minimize_over_end_angle(double theta, double scan_step) {
 
 AngleMinimum minimize_over_end_angle(double theta, const std::function<double(double)>& j_of, double scan_step) {
     require_angles("minimize_over_end_angle", theta, 0.0);
-    if (!(scan_step > 0.0 && scan_step <= 0.5))
-        fail_input("cagd::fairness::minimize_over_end_angle", "scan_step must be in (0, 0.5], got " + full_precision(scan_step));
+    if (!(scan_step > 0.0 && scan_step <= 0.5)) fail_input("cagd::fairness::minimize_over_end_angle", "scan_step must be in (0, 0.5], got " + full_precision(scan_step));
     const int n = static_cast<int>(std::ceil(2 * std::numbers::pi / scan_step));
     std::vector<double> t(static_cast<std::size_t>(n + 1)), v(static_cast<std::size_t>(n + 1));
     for (int i = 0; i <= n; ++i) {
@@ -455,7 +444,7 @@ AngleMinimum minimize_over_end_angle(double theta, const std::function<double(do
         out.outcome = {Status::no_solution, "J(theta, theta1) is undefined for every scanned theta1"};
         return out;
     }
-    if (v[best] == 0.0) {   // θ = 0: the straight segment
+    if (v[best] == 0.0) {  // θ = 0: the straight segment
         out.theta1 = t[best];
         return out;
     }

@@ -46,29 +46,29 @@ namespace cagd::fairness {
 
 struct PseudoEnergyMinimum {
     double theta0 = 0.0, theta1 = 0.0;
-    double pseudo_energy = 0.0;   // J(θ0, θ1)
+    double pseudo_energy = 0.0;  // J(θ0, θ1)
     double r0 = 0.0, r1 = 0.0;
-    double length = 0.0;          // L(θ0, θ1)
-    double area = 0.0;            // S(θ0, θ1)
-    double strain_energy = 0.0;   // E at the minimiser
+    double length = 0.0;         // L(θ0, θ1)
+    double area = 0.0;           // S(θ0, θ1)
+    double strain_energy = 0.0;  // E at the minimiser
     SegmentType type = SegmentType::x;
     double gradient_norm = 0.0;   // |∇_ρ J| at the answer
     double error_estimate = 0.0;  // quadrature error bound on J (reference path)
     int local_minima = 0;         // distinct local minima the descents reached
     double runner_up = 0.0;       // lowest J among the other local minima (+∞ if none)
     double runner_up_r0 = 0.0, runner_up_r1 = 0.0;
-    long evaluations = 0;         // energy evaluations (all starts)
+    long evaluations = 0;  // energy evaluations (all starts)
     Outcome outcome;
 };
 
 struct ScanBox {
     double r_lo = 1e-2, r_hi = 1e2;
-    int n = 41;   // scan points per axis, log-spaced
+    int n = 41;  // scan points per axis, log-spaced
 };
 
 struct ReferenceMinimizerOptions {
     ScanBox box{};
-    int starts = 6;              // descents from the lowest scan seeds
+    int starts = 6;  // descents from the lowest scan seeds
     double romberg_rel_tol = 1e-13;
 };
 
@@ -81,14 +81,12 @@ struct FastMinimizerOptions {
 bool is_undefined_node(double theta0, double theta1);
 
 // Reference path. Throws InvalidInput for angles outside [−π, π] or non-finite.
-PseudoEnergyMinimum minimize_pseudo_energy_reference(double theta0, double theta1,
-                                                     const ReferenceMinimizerOptions& opt = {});
+PseudoEnergyMinimum minimize_pseudo_energy_reference(double theta0, double theta1, const ReferenceMinimizerOptions& opt = {});
 // Independent second minimiser (NLopt LD_LBFGS on the Romberg energy, no polish) from the same
 // scan minima (up to 4); the lowest result.
 PseudoEnergyMinimum minimize_pseudo_energy_nlopt(double theta0, double theta1, const ScanBox& box = {});
 // Fast path. `warm` adds starting points (r0, r1), e.g. a neighbouring node's minimiser.
-PseudoEnergyMinimum minimize_pseudo_energy(double theta0, double theta1, const FastMinimizerOptions& opt = {},
-                                           const std::vector<Eigen::Vector2d>& warm = {});
+PseudoEnergyMinimum minimize_pseudo_energy(double theta0, double theta1, const FastMinimizerOptions& opt = {}, const std::vector<Eigen::Vector2d>& warm = {});
 
 // Evaluate the measures of the segment (θ0, θ1, r0, r1) into a PseudoEnergyMinimum record (fast
 // quadrature); used to report a given (r0, r1).

@@ -1,15 +1,15 @@
 #include "fairness/pseudo_energy_table.hpp"
 
+#include <unistd.h>
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <limits>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 #include <numbers>
 #include <sstream>
 #include <thread>
-#include <unistd.h>
 
 namespace cagd::fairness {
 
@@ -31,9 +31,11 @@ inline void locate(const std::vector<double>& nodes, double inv_h, double theta,
     const int n = static_cast<int>(nodes.size());
     const double x0 = nodes.front();
     if (theta < x0) theta += 2 * std::numbers::pi;
-    i = std::clamp(static_cast<int>((theta - x0) * inv_h), 0, n - 1);   // a guess; the tests make it exact
-    if (i + 1 < n && nodes[static_cast<std::size_t>(i + 1)] <= theta) ++i;
-    else if (i > 0 && nodes[static_cast<std::size_t>(i)] > theta) --i;
+    i = std::clamp(static_cast<int>((theta - x0) * inv_h), 0, n - 1);  // a guess; the tests make it exact
+    if (i + 1 < n && nodes[static_cast<std::size_t>(i + 1)] <= theta)
+        ++i;
+    else if (i > 0 && nodes[static_cast<std::size_t>(i)] > theta)
+        --i;
     const double left = nodes[static_cast<std::size_t>(i)];
     const double right = i + 1 < n ? nodes[static_cast<std::size_t>(i + 1)] : x0 + 2 * std::numbers::pi;
     u = std::clamp((theta - left) / (right - left), 0.0, 1.0);
@@ -85,7 +87,7 @@ std::vector<double> AngleGrid::nodes() const {
     if (n < 2) fail_input("cagd::fairness::AngleGrid", "n must be >= 2, got " + std::to_string(n));
     std::vector<double> out(static_cast<std::size_t>(n));
     for (int k = 0; k < n; ++k) {
-        double f = 0.0;   // fraction of the way from −π to π
+        double f = 0.0;  // fraction of the way from −π to π
         switch (placement) {
             case NodePlacement::periodic: f = 2.0 * k / n; break;
             case NodePlacement::endpoints: f = 2.0 * k / (n - 1); break;
@@ -97,8 +99,7 @@ std::vector<double> AngleGrid::nodes() const {
     return out;
 }
 
-PseudoEnergyTable PseudoEnergyTable::build(const AngleGrid& grid, TableMethod method, int threads, bool use_symmetry,
-                                           const std::function<void(long, long)>& progress) {
+PseudoEnergyTable PseudoEnergyTable::build(const AngleGrid& grid, TableMethod method, int threads, bool use_symmetry, const std::function<void(long, long)>& progress) {
     if (threads < 1) fail_input("cagd::fairness::PseudoEnergyTable::build", "threads must be >= 1, got " + std::to_string(threads));
     PseudoEnergyTable t;
     t.grid_ = grid;
@@ -148,9 +149,12 @@ PseudoEnergyTable PseudoEnergyTable::build(const AngleGrid& grid, TableMethod me
                 m.theta0 = t.nodes_[static_cast<std::size_t>(i)];
                 m.theta1 = t.nodes_[static_cast<std::size_t>(j)];
                 bool swapped = false, negated = false;
-                if (ri == j && rj == i) swapped = true;
-                else if (ri == ni && rj == nj) negated = true;
-                else swapped = negated = true;   // (−θ1, −θ0)
+                if (ri == j && rj == i)
+                    swapped = true;
+                else if (ri == ni && rj == nj)
+                    negated = true;
+                else
+                    swapped = negated = true;  // (−θ1, −θ0)
                 if (swapped) {
                     std::swap(m.r0, m.r1);
                     std::swap(m.runner_up_r0, m.runner_up_r1);
@@ -174,8 +178,7 @@ void PseudoEnergyTable::pack() {
 
 std::string PseudoEnergyTable::header_line() const {
     std::ostringstream s;
-    s << "# cagd pseudo_energy table format " << kCacheFormat << " grid " << grid_.n << " placement "
-      << to_string(grid_.placement) << " method " << to_string(method_);
+    s << "# cagd pseudo_energy table format " << kCacheFormat << " grid " << grid_.n << " placement " << to_string(grid_.placement) << " method " << to_string(method_);
     return s.str();
 }
 
@@ -192,9 +195,8 @@ void PseudoEnergyTable::save(const std::string& path) const {
         for (int i = 0; i < n; ++i)
             for (int j = 0; j < n; ++j) {
                 const PseudoEnergyMinimum& m = node(i, j);
-                std::snprintf(buf, sizeof buf, "%d,%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%s,%d,%.17g,%d\n", i, j,
-                              m.theta0, m.theta1, m.pseudo_energy, m.r0, m.r1, m.length, m.area, m.strain_energy,
-                              to_string(m.type), m.local_minima, m.runner_up, static_cast<int>(m.outcome.status));
+                std::snprintf(buf, sizeof buf, "%d,%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%s,%d,%.17g,%d\n", i, j, m.theta0, m.theta1, m.pseudo_energy, m.r0, m.r1,
+                              m.length, m.area, m.strain_energy, to_string(m.type), m.local_minima, m.runner_up, static_cast<int>(m.outcome.status));
                 out << buf;
             }
     }
@@ -206,7 +208,7 @@ namespace {
 // Reads the node rows after the header line; true when all n² rows were read.
 bool read_node_rows(std::istream& in, int n, std::vector<PseudoEnergyMinimum>& values) {
     std::string line;
-    if (!std::getline(in, line)) return false;   // column names
+    if (!std::getline(in, line)) return false;  // column names
     values.assign(static_cast<std::size_t>(n * n), PseudoEnergyMinimum{});
     long read = 0;
     while (std::getline(in, line)) {
@@ -239,8 +241,7 @@ bool read_node_rows(std::istream& in, int n, std::vector<PseudoEnergyMinimum>& v
 
 }  // namespace
 
-PseudoEnergyTable PseudoEnergyTable::load_or_build(const std::string& path, const AngleGrid& grid, TableMethod method,
-                                                   int threads) {
+PseudoEnergyTable PseudoEnergyTable::load_or_build(const std::string& path, const AngleGrid& grid, TableMethod method, int threads) {
     PseudoEnergyTable t;
     t.grid_ = grid;
     t.method_ = method;
@@ -269,8 +270,8 @@ PseudoEnergyTable PseudoEnergyTable::load(const std::string& path) {
     if (hash != "#" || grid_word != "grid" || placement_word != "placement" || method_word != "method")
         fail_input(who, "'" + path + "' is not a table written by cagd energy-table (first line: '" + line + "')");
     if (version != kCacheFormat)
-        fail_input(who, "'" + path + "' has table format " + std::to_string(version) + ", this build reads format " +
-                            std::to_string(kCacheFormat) + "; rebuild it with cagd energy-table");
+        fail_input(who, "'" + path + "' has table format " + std::to_string(version) + ", this build reads format " + std::to_string(kCacheFormat) +
+                            "; rebuild it with cagd energy-table");
     if (n < 2) fail_input(who, "'" + path + "': grid must be >= 2, got " + std::to_string(n));
     PseudoEnergyTable t;
     t.grid_ = AngleGrid{n, parse_node_placement(placement)};
@@ -286,8 +287,8 @@ TableValue PseudoEnergyTable::lookup(double theta0, double theta1, bool same_typ
     require_tangent_angle(who, theta0, "theta0");
     require_tangent_angle(who, theta1, "theta1");
     if (is_undefined_node(theta0, theta1))
-        fail_input(who, "(" + full_precision(theta0) + ", " + full_precision(theta1) +
-                            ") is an undefined node (theta0, theta1 in {0, +-pi}): r0, r1 do not exist there (paper §4.1)");
+        fail_input(who,
+                   "(" + full_precision(theta0) + ", " + full_precision(theta1) + ") is an undefined node (theta0, theta1 in {0, +-pi}): r0, r1 do not exist there (paper §4.1)");
     const int n = grid_.n;
     int i = 0, j = 0;
     double u = 0.0, v = 0.0;
@@ -303,7 +304,7 @@ TableValue PseudoEnergyTable::lookup(double theta0, double theta1, bool same_typ
     double wsum = 0.0;
     for (int k = 0; k < 4; ++k) {
         const TableValue& m = at(ci[k], cj[k]);
-        if (m.type == SegmentType::x) continue;   // undefined or failed node
+        if (m.type == SegmentType::x) continue;  // undefined or failed node
         if (want != SegmentType::x && m.type != want) continue;
         wsum += w[k];
         out.pseudo_energy += w[k] * m.pseudo_energy;
@@ -335,10 +336,8 @@ AngleMinimumTable AngleMinimumTable::build(const AngleGrid& grid, int threads) {
     t.grid_ = grid;
     t.nodes_ = grid.nodes();
     t.values_.assign(t.nodes_.size(), AngleMinimum{});
-    parallel_for(
-        static_cast<long>(t.nodes_.size()), threads,
-        [&](long k) { t.values_[static_cast<std::size_t>(k)] = minimize_over_end_angle(t.nodes_[static_cast<std::size_t>(k)]); },
-        {});
+    parallel_for(static_cast<long>(t.nodes_.size()), threads,
+                 [&](long k) { t.values_[static_cast<std::size_t>(k)] = minimize_over_end_angle(t.nodes_[static_cast<std::size_t>(k)]); }, {});
     return t;
 }
 

@@ -39,12 +39,12 @@ namespace cagd::fairness {
 
 enum class NodePlacement { periodic, endpoints, midpoints };
 const char* to_string(NodePlacement p);
-NodePlacement parse_node_placement(const std::string& text);   // throws InvalidInput
+NodePlacement parse_node_placement(const std::string& text);  // throws InvalidInput
 
 struct AngleGrid {
-    int n = 36;                                    // nodes per axis, ≥ 2
+    int n = 36;  // nodes per axis, ≥ 2
     NodePlacement placement = NodePlacement::periodic;
-    std::vector<double> nodes() const;             // ascending, in [−π, π]
+    std::vector<double> nodes() const;  // ascending, in [−π, π]
 };
 
 // fast: minimize_pseudo_energy; reference: Romberg + Ceres CG; nlopt: the independent second minimiser.
@@ -53,20 +53,18 @@ const char* to_string(TableMethod m);
 
 struct TableValue {
     double pseudo_energy = 0.0, r0 = 0.0, r1 = 0.0, length = 0.0, area = 0.0;
-    SegmentType type = SegmentType::x;   // the type whose nodes were used
+    SegmentType type = SegmentType::x;  // the type whose nodes were used
 };
 
 class PseudoEnergyTable {
 public:
     // progress(done, total) is called from the building threads now and then (may be empty).
-    static PseudoEnergyTable build(const AngleGrid& grid, TableMethod method, int threads = 2, bool use_symmetry = true,
-                                   const std::function<void(long, long)>& progress = {});
+    static PseudoEnergyTable build(const AngleGrid& grid, TableMethod method, int threads = 2, bool use_symmetry = true, const std::function<void(long, long)>& progress = {});
     // Loads `path` when it holds a table of this grid and method, else builds and saves it.
     // Loads a table written by save() / `cagd energy-table`; grid, placement and method come from
     // its first line. Throws InvalidInput for a missing, foreign, truncated or other-format file.
     static PseudoEnergyTable load(const std::string& path);
-    static PseudoEnergyTable load_or_build(const std::string& path, const AngleGrid& grid, TableMethod method,
-                                           int threads = 2);
+    static PseudoEnergyTable load_or_build(const std::string& path, const AngleGrid& grid, TableMethod method, int threads = 2);
 
     const AngleGrid& grid() const { return grid_; }
     TableMethod method() const { return method_; }
@@ -86,7 +84,7 @@ private:
     TableMethod method_ = TableMethod::fast;
     std::vector<double> nodes_;
     std::vector<PseudoEnergyMinimum> values_;
-    std::vector<TableValue> packed_;   // what lookup reads: J, r0, r1, L, S, type (x = unusable), 48 bytes a node
+    std::vector<TableValue> packed_;  // what lookup reads: J, r0, r1, L, S, type (x = unusable), 48 bytes a node
     void pack();
 };
 
@@ -103,7 +101,7 @@ public:
     const std::vector<AngleMinimum>& values() const { return values_; }
     // Linear interpolation; throws InvalidInput outside [−π, π]. Returns {J(θ), θ1(θ)}.
     std::pair<double, double> lookup(double theta) const;
-    double pseudo_energy(double theta) const;   // J(θ) alone (the hot path of eq 12), same interpolation
+    double pseudo_energy(double theta) const;  // J(θ) alone (the hot path of eq 12), same interpolation
 
 private:
     AngleGrid grid_;

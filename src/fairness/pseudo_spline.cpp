@@ -30,16 +30,13 @@ TangentOptimization parse_tangent_optimization(const std::string& text) {
 
 TableValue ExactOracle::segment(double theta0, double theta1) const {
     const PseudoEnergyMinimum m = minimize_pseudo_energy(theta0, theta1);
-    if (!m.outcome.ok())
-        fail_input("cagd::fairness::ExactOracle::segment",
-                   "no minimum at (" + full_precision(theta0) + ", " + full_precision(theta1) + "): " + m.outcome.message);
+    if (!m.outcome.ok()) fail_input("cagd::fairness::ExactOracle::segment", "no minimum at (" + full_precision(theta0) + ", " + full_precision(theta1) + "): " + m.outcome.message);
     return TableValue{m.pseudo_energy, m.r0, m.r1, m.length, m.area, m.type};
 }
 
 std::pair<double, double> ExactOracle::angle_minimum(double theta) const {
     const AngleMinimum a = minimize_over_end_angle(theta);
-    if (!a.outcome.ok())
-        fail_input("cagd::fairness::ExactOracle::angle_minimum", "no J(theta) at " + full_precision(theta) + ": " + a.outcome.message);
+    if (!a.outcome.ok()) fail_input("cagd::fairness::ExactOracle::angle_minimum", "no J(theta) at " + full_precision(theta) + ": " + a.outcome.message);
     return {a.pseudo_energy, a.theta1};
 }
 
@@ -64,7 +61,7 @@ double PseudoSpline::polygon_area() const {
     double s = 0.0;
     for (Eigen::Index i = 0; i + 1 < p.rows(); ++i) s += p(i, 0) * p(i + 1, 1) - p(i, 1) * p(i + 1, 0);
     const Eigen::Index n = p.rows() - 1;
-    s += p(n, 0) * p(0, 1) - p(n, 1) * p(0, 0);   // zero for a closed curve (node n = node 0)
+    s += p(n, 0) * p(0, 1) - p(n, 1) * p(0, 0);  // zero for a closed curve (node n = node 0)
     return 0.5 * s;
 }
 
@@ -90,7 +87,7 @@ double minimise_w(const W& w, double lo, double hi, TangentOptimization mode) {
     const double h = (hi - lo) / 4.0;
     const double a = lo + h, b = lo + 2 * h, c = lo + 3 * h;
     const double wa = w(a), wb = w(b), wc = w(c);
-    const double curvature = wa - 2 * wb + wc;   // h² × second derivative of the parabola
+    const double curvature = wa - 2 * wb + wc;  // h² × second derivative of the parabola
     // Differences of w within rounding of its values decide nothing: a parabola that is not clearly
     // convex is treated as a line (or a constant), and a line or concave parabola is least over the
     // interval at its lower end. (Deciding by the sign of a curvature that is rounding noise — w is
@@ -101,7 +98,7 @@ double minimise_w(const W& w, double lo, double hi, TangentOptimization mode) {
         const double vertex = b + h * (wa - wc) / (2.0 * curvature);
         return std::clamp(vertex, lo, hi);
     }
-    if (std::abs(wa - wc) <= noise) return b;   // flat within rounding
+    if (std::abs(wa - wc) <= noise) return b;  // flat within rounding
     return wa < wc ? lo : hi;
 }
 
@@ -128,13 +125,17 @@ PseudoSpline pseudo_spline(const PointList& points, const SegmentOracle& oracle,
         const Eigen::Index in = (i - 1 + spans) % spans;
         const double t = wrap_angle(phi[static_cast<std::size_t>(i % spans)] - phi[static_cast<std::size_t>(in)]);
         if (std::abs(std::abs(t) - std::numbers::pi) <= 1e-12)
-            fail_input(who, "the points turn by pi at point " + std::to_string(i) +
-                                " (a hairpin): no tangent direction between the chords, the pseudo-energy table is undefined there");
+            fail_input(who,
+                       "the points turn by pi at point " + std::to_string(i) + " (a hairpin): no tangent direction between the chords, the pseudo-energy table is undefined there");
         return t;
     };
 
     PseudoSpline ps{spline::PiecewiseHermiteCurve(Eigen::MatrixXd::Zero(2, 2), Eigen::MatrixXd::Zero(1, 2), Eigen::MatrixXd::Zero(1, 2)),
-                    std::vector<double>(static_cast<std::size_t>(np), 0.0), {}, {}, {}, 0};
+                    std::vector<double>(static_cast<std::size_t>(np), 0.0),
+                    {},
+                    {},
+                    {},
+                    0};
     ps.spans.reserve(static_cast<std::size_t>(spans));
     const auto J = [&](double theta) {
         ++ps.oracle_calls;
@@ -144,12 +145,12 @@ PseudoSpline pseudo_spline(const PointList& points, const SegmentOracle& oracle,
     // Interior tangent directions (eq 12).
     const Eigen::Index first = closed ? 0 : 1, last = closed ? np - 1 : np - 2;
     for (Eigen::Index i = first; i <= last; ++i) {
-        const double tau = turn(i);   // φ_i − φ_{i−1}
+        const double tau = turn(i);  // φ_i − φ_{i−1}
         const std::size_t in = static_cast<std::size_t>((i - 1 + spans) % spans), out = static_cast<std::size_t>(i);
         double a = 0.0;
         if (std::abs(tau) > 0.0) {
             if (mode == TangentOptimization::none) {
-                const Eigen::Vector2d d = chord[in] + chord[out];   // P_{i+1} − P_{i−1}
+                const Eigen::Vector2d d = chord[in] + chord[out];  // P_{i+1} − P_{i−1}
                 a = wrap_angle(std::atan2(d.y(), d.x()) - phi[out]);
             } else {
                 const auto w = [&](double alpha) { return len[in] * J(alpha + tau) + len[out] * J(alpha); };
@@ -185,8 +186,7 @@ PseudoSpline pseudo_spline(const PointList& points, const SegmentOracle& oracle,
         PseudoSplineSpan s;
         s.theta0 = wrap_angle(ps.alpha[k]);
         const bool last_open = !closed && i == spans - 1;
-        s.theta1 = last_open ? wrap_angle(ps.alpha[k + 1])
-                             : wrap_angle(ps.alpha[static_cast<std::size_t>(next(i))] + phi[static_cast<std::size_t>(next(i) % spans)] - phi[k]);
+        s.theta1 = last_open ? wrap_angle(ps.alpha[k + 1]) : wrap_angle(ps.alpha[static_cast<std::size_t>(next(i))] + phi[static_cast<std::size_t>(next(i) % spans)] - phi[k]);
         if (std::abs(s.theta0) <= kStraight && std::abs(s.theta1) <= kStraight) {
             s.value = TableValue{0.0, 1.0, 1.0, 1.0, 0.0, SegmentType::c};
         } else {
@@ -217,11 +217,12 @@ long equivalent_polygon_points(double spline_error, CircleMeasure measure) {
         return measure == CircleMeasure::perimeter ? 2.0 * std::numbers::pi - 2.0 * nd * std::sin(x) : std::numbers::pi - 0.5 * nd * std::sin(2.0 * x);
     };
     // The polygon error decreases monotonically in N: bisection on the first N below spline_error.
-    long lo = 2, hi = 3;   // invariant: polygon_error(lo) ≥ spline_error (or lo = 2), search hi
+    long lo = 2, hi = 3;  // invariant: polygon_error(lo) ≥ spline_error (or lo = 2), search hi
     while (polygon_error(hi) >= spline_error) {
         lo = hi;
         hi *= 2;
-        if (hi > 1000000000L) fail_input("cagd::fairness::equivalent_polygon_points", "spline_error " + full_precision(spline_error) + " is below every polygon error up to N = 1e9");
+        if (hi > 1000000000L)
+            fail_input("cagd::fairness::equivalent_polygon_points", "spline_error " + full_precision(spline_error) + " is below every polygon error up to N = 1e9");
     }
     while (hi - lo > 1) {
         const long mid = lo + (hi - lo) / 2;
@@ -241,16 +242,13 @@ const char* to_string(InterpolationMethod m) {
     return "?";
 }
 
-spline::PiecewiseHermiteCurve section42_interpolant(const PointList& points, InterpolationMethod method, bool closed,
-                                                    const SegmentOracle& oracle, TangentOptimization mode) {
+spline::PiecewiseHermiteCurve section42_interpolant(const PointList& points, InterpolationMethod method, bool closed, const SegmentOracle& oracle, TangentOptimization mode) {
     using namespace spline;
     switch (method) {
         case InterpolationMethod::cubic_spline_a: return cubic_spline_interpolant(points, ParameterSpacing::uniform, closed);
         case InterpolationMethod::cubic_spline_b: return cubic_spline_interpolant(points, ParameterSpacing::chord_length, closed);
-        case InterpolationMethod::hermite_a:
-            return hermite_interpolant(points, hermite_tangent_directions(points, TangentRule::chord_of_neighbours, closed), closed);
-        case InterpolationMethod::hermite_b:
-            return hermite_interpolant(points, hermite_tangent_directions(points, TangentRule::circle, closed), closed);
+        case InterpolationMethod::hermite_a: return hermite_interpolant(points, hermite_tangent_directions(points, TangentRule::chord_of_neighbours, closed), closed);
+        case InterpolationMethod::hermite_b: return hermite_interpolant(points, hermite_tangent_directions(points, TangentRule::circle, closed), closed);
         case InterpolationMethod::pseudo_spline: return pseudo_spline(points, oracle, mode, closed).curve;
     }
     fail_input("cagd::fairness::section42_interpolant", "unknown method");

@@ -67,7 +67,7 @@ namespace cagd::fairness {
 
 enum class TangentOptimization { none, exact, approximate };
 const char* to_string(TangentOptimization m);
-TangentOptimization parse_tangent_optimization(const std::string& text);   // none | exact | approx
+TangentOptimization parse_tangent_optimization(const std::string& text);  // none | exact | approx
 
 class SegmentOracle {
 public:
@@ -111,21 +111,21 @@ public:
 };
 
 struct PseudoSplineSpan {
-    double theta0 = 0.0, theta1 = 0.0;   // unit-chord frame angles (eq 9)
-    TableValue value;                     // r0, r1, J, L, S used for the span
+    double theta0 = 0.0, theta1 = 0.0;  // unit-chord frame angles (eq 9)
+    TableValue value;                   // r0, r1, J, L, S used for the span
 };
 
 struct PseudoSpline {
     spline::PiecewiseHermiteCurve curve;
-    std::vector<double> alpha;          // one per point (see above for the last point of an open curve)
-    std::vector<double> chord_angle;    // φ_i, one per span
-    std::vector<double> chord_length;   // l_i, one per span
+    std::vector<double> alpha;         // one per point (see above for the last point of an open curve)
+    std::vector<double> chord_angle;   // φ_i, one per span
+    std::vector<double> chord_length;  // l_i, one per span
     std::vector<PseudoSplineSpan> spans;
-    long oracle_calls = 0;              // J(θ) evaluations spent on the tangent directions
-    double length_from_tables() const;  // eq (16), (17)
-    double area_from_tables() const;    // eq (19)–(21), signed (counter-clockwise positive)
-    double pseudo_energy_from_tables() const;   // Σ l_i J_i (J scales with the chord length)
-    double polygon_area() const;        // S_0 of eq (21)
+    long oracle_calls = 0;                     // J(θ) evaluations spent on the tangent directions
+    double length_from_tables() const;         // eq (16), (17)
+    double area_from_tables() const;           // eq (19)–(21), signed (counter-clockwise positive)
+    double pseudo_energy_from_tables() const;  // Σ l_i J_i (J scales with the chord length)
+    double polygon_area() const;               // S_0 of eq (21)
 };
 
 PseudoSpline pseudo_spline(const PointList& points, const SegmentOracle& oracle, TangentOptimization mode, bool closed);
@@ -137,8 +137,7 @@ PseudoSpline pseudo_spline(const PointList& points, const SegmentOracle& oracle,
 // same curves by name, with the default table, are in methods/method_registry.hpp.
 enum class InterpolationMethod { cubic_spline_a, cubic_spline_b, hermite_a, hermite_b, pseudo_spline };
 const char* to_string(InterpolationMethod m);
-spline::PiecewiseHermiteCurve section42_interpolant(const PointList& points, InterpolationMethod method, bool closed,
-                                                    const SegmentOracle& oracle, TangentOptimization mode);
+spline::PiecewiseHermiteCurve section42_interpolant(const PointList& points, InterpolationMethod method, bool closed, const SegmentOracle& oracle, TangentOptimization mode);
 
 // "Equivalent points" of Tables 5 and 6 (section 5.1): the smallest N ≥ 3 for which the regular
 // N-gon inscribed in the unit circle is closer to the circle than the spline, i.e.

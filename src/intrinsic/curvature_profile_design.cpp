@@ -20,9 +20,7 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-int span_count(const CurvatureProfileProblem& P) {
-    return static_cast<int>(P.points.rows()) - (P.closed ? 0 : 1);
-}
+int span_count(const CurvatureProfileProblem& P) { return static_cast<int>(P.points.rows()) - (P.closed ? 0 : 1); }
 
 Eigen::Vector2d chord(const CurvatureProfileProblem& P, int span) {
     const Eigen::Index n = P.points.rows();
@@ -71,9 +69,8 @@ using Jet = ceres::Jet<double, 3 * kMaxJetDegree + 1>;
 SegmentJet segment_jet(const TangentAngleSpline& psi, int j) {
     const KnotLayout& L = psi.layout();
     const int p = L.degree(), last = L.last_knot_of_breakpoint(j), k0 = last - p + 1;
-    if (p > kMaxJetDegree)
-        throw std::logic_error("cagd::intrinsic::segment_jet: degree " + std::to_string(p) + " exceeds the Jet's " + std::to_string(kMaxJetDegree));
-    const std::vector<double> v = psi.local_farin_knots(j);   // the extraction is invariant under a shift of all knots
+    if (p > kMaxJetDegree) throw std::logic_error("cagd::intrinsic::segment_jet: degree " + std::to_string(p) + " exceeds the Jet's " + std::to_string(kMaxJetDegree));
+    const std::vector<double> v = psi.local_farin_knots(j);  // the extraction is invariant under a shift of all knots
     Jet u[2 * kMaxJetDegree], c[kMaxJetDegree + 1], b[kMaxJetDegree + 1];
     for (int m = 0; m < 2 * p; ++m) u[m] = Jet(v[static_cast<std::size_t>(m)], m);
     for (int m = 0; m <= p; ++m) c[m] = Jet(psi.de_boor()(k0 + m), 2 * p + m);
@@ -149,11 +146,16 @@ std::vector<SegmentShape> parse_span_shapes(const std::string& text) {
         std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
         item.erase(0, item.find_first_not_of(" \t"));
         item.erase(item.find_last_not_of(" \t") + 1);
-        if (item == "free") out.push_back(SegmentShape::free);
-        else if (item == "line") out.push_back(SegmentShape::line);
-        else if (item == "arc") out.push_back(SegmentShape::arc);
-        else if (item == "clothoid" || item == "linear_curvature") out.push_back(SegmentShape::linear_curvature);
-        else fail_input("intrinsic::parse_span_shapes", "span " + std::to_string(out.size()) + ": \"" + item + "\" is not a shape (allowed: free, line, arc, clothoid)");
+        if (item == "free")
+            out.push_back(SegmentShape::free);
+        else if (item == "line")
+            out.push_back(SegmentShape::line);
+        else if (item == "arc")
+            out.push_back(SegmentShape::arc);
+        else if (item == "clothoid" || item == "linear_curvature")
+            out.push_back(SegmentShape::linear_curvature);
+        else
+            fail_input("intrinsic::parse_span_shapes", "span " + std::to_string(out.size()) + ": \"" + item + "\" is not a shape (allowed: free, line, arc, clothoid)");
         if (comma == std::string::npos) break;
         start = comma + 1;
     }
@@ -187,7 +189,8 @@ void require_valid_problem(const CurvatureProfileProblem& P, const std::string& 
     if (P.points.cols() != 2) fail_input(who, "points must be planar (2 columns), got " + std::to_string(P.points.cols()));
     const int n = span_count(P);
     if (P.layout.spans() != n)
-        fail_input(who, "the knot layout has " + std::to_string(P.layout.spans()) + " spans but the " + std::to_string(P.points.rows()) + (P.closed ? " points of a closed curve make " : " points make ") + std::to_string(n));
+        fail_input(who, "the knot layout has " + std::to_string(P.layout.spans()) + " spans but the " + std::to_string(P.points.rows()) +
+                            (P.closed ? " points of a closed curve make " : " points make ") + std::to_string(n));
     if (static_cast<int>(P.shapes.size()) != P.layout.segments())
         fail_input(who, "needs one shape per segment (" + std::to_string(P.layout.segments()) + "), got " + std::to_string(P.shapes.size()));
     for (std::size_t j = 0; j < P.shapes.size(); ++j)
@@ -197,7 +200,8 @@ void require_valid_problem(const CurvatureProfileProblem& P, const std::string& 
     for (const auto& c : P.conditions) {
         const int top = P.layout.segments() - (c.kind == K::segment_length ? 1 : 0);
         if (c.index < 0 || c.index > top)
-            fail_input(who, std::string(c.kind == K::segment_length ? "segment" : "breakpoint") + " index " + std::to_string(c.index) + " of a condition is outside 0.." + std::to_string(top));
+            fail_input(who, std::string(c.kind == K::segment_length ? "segment" : "breakpoint") + " index " + std::to_string(c.index) + " of a condition is outside 0.." +
+                                std::to_string(top));
         if (!std::isfinite(c.value)) fail_input(who, "condition value " + fmt(c.value) + " is not finite");
         if (c.kind == K::curvature_radius && c.value == 0.0) fail_input(who, "curvature radius 0 at breakpoint " + std::to_string(c.index));
         if (c.kind == K::segment_length && !(c.value > 0)) fail_input(who, "segment length " + fmt(c.value) + " for segment " + std::to_string(c.index) + " must be > 0");
@@ -207,9 +211,7 @@ void require_valid_problem(const CurvatureProfileProblem& P, const std::string& 
     if (P.closed && std::abs(P.turns) > 100) fail_input(who, "turns = " + std::to_string(P.turns) + " is implausible (|turns| ≤ 100)");
 }
 
-int design_unknowns(const CurvatureProfileProblem& P) {
-    return P.layout.independent_lengths() + P.layout.ordinates();
-}
+int design_unknowns(const CurvatureProfileProblem& P) { return P.layout.independent_lengths() + P.layout.ordinates(); }
 
 int design_equations(const CurvatureProfileProblem& P) {
     int m = 2 * P.layout.spans() + static_cast<int>(P.conditions.size()) + (P.closed ? 2 : 0);
@@ -315,7 +317,7 @@ DesignSystem design_system(const CurvatureProfileProblem& P, const Eigen::Vector
         }
     }
     // eq (4): breakpoint conditions.
-    auto angle_row = [&](int g, bool at_end, double sign) {   // adds sign·ψ(w_g) to the current row
+    auto angle_row = [&](int g, bool at_end, double sign) {  // adds sign·ψ(w_g) to the current row
         const int j = at_end ? g - 1 : g;
         const SegmentJet& s = jets[static_cast<std::size_t>(j)];
         Eigen::VectorXd gr = Eigen::VectorXd::Zero(p + 1);
@@ -323,7 +325,7 @@ DesignSystem design_system(const CurvatureProfileProblem& P, const Eigen::Vector
         write.add(row, s, j, gr, 0.0);
         return sign * s.b(at_end ? p : 0);
     };
-    auto curvature_row = [&](int g, bool at_end, double sign) {   // adds sign·κ(w_g^∓)
+    auto curvature_row = [&](int g, bool at_end, double sign) {  // adds sign·κ(w_g^∓)
         const int j = at_end ? g - 1 : g;
         const SegmentJet& s = jets[static_cast<std::size_t>(j)];
         const double d = psi.segment_lengths()[static_cast<std::size_t>(j)];
@@ -367,7 +369,7 @@ Eigen::VectorXd c2_start(const CurvatureProfileProblem& P) {
     const int n = L.spans();
     std::vector<double> span_length(static_cast<std::size_t>(n)), seg(static_cast<std::size_t>(L.segments()));
     for (int i = 0; i < n; ++i) {
-        span_length[static_cast<std::size_t>(i)] = analysis::piece_arc_length(c2, i, i + 1, 1);   // one cubic piece, one 20-point rule: ample for a start
+        span_length[static_cast<std::size_t>(i)] = analysis::piece_arc_length(c2, i, i + 1, 1);  // one cubic piece, one 20-point rule: ample for a start
         const int a = L.first_segment(i), b = L.end_segment(i);
         for (int j = a; j < b; ++j) seg[static_cast<std::size_t>(j)] = span_length[static_cast<std::size_t>(i)] / (b - a);
     }
@@ -388,7 +390,8 @@ Eigen::VectorXd c2_start(const CurvatureProfileProblem& P) {
         const double s = g[static_cast<std::size_t>(i)];
         int span = static_cast<int>(std::upper_bound(span_start.begin(), span_start.end(), s) - span_start.begin()) - 1;
         span = std::clamp(span, 0, n - 1);
-        const double frac = std::clamp((s - span_start[static_cast<std::size_t>(span)]) / (span_start[static_cast<std::size_t>(span) + 1] - span_start[static_cast<std::size_t>(span)]), 0.0, 1.0);
+        const double frac =
+            std::clamp((s - span_start[static_cast<std::size_t>(span)]) / (span_start[static_cast<std::size_t>(span) + 1] - span_start[static_cast<std::size_t>(span)]), 0.0, 1.0);
         const Eigen::MatrixXd j = c2.jet(span + frac, 1);
         double a = std::atan2(j(1, 1), j(1, 0));
         if (i > 0) a += 2.0 * kPi * std::round((previous - a) / (2.0 * kPi));
@@ -429,7 +432,8 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
     for (int i = 0; i < l; ++i)
         if (!(start(i) > 0) || !std::isfinite(start(i))) fail_input(who, "start length S_" + std::to_string(i) + " = " + fmt(start(i)) + " (finite and > 0 required)");
     if (options.step == NewtonStep::sparse_lu && sol.equations != sol.unknowns)
-        fail_input(who, "the sparse LU step needs a square system; this one has " + std::to_string(sol.equations) + " equations and " + std::to_string(sol.unknowns) + " unknowns (use the pseudo-inverse)");
+        fail_input(who, "the sparse LU step needs a square system; this one has " + std::to_string(sol.equations) + " equations and " + std::to_string(sol.unknowns) +
+                            " unknowns (use the pseudo-inverse)");
     const double tol = options.tolerance * data_scale(P);
     const char* method = options.step == NewtonStep::pseudo_inverse ? "Newton with the Moore–Penrose step" : "Newton with sparse LU";
     sol.u = start;
@@ -439,8 +443,8 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
         const Eigen::VectorXd ordinates = sol.u.tail(P.layout.ordinates());
         const double turning = ordinates.size() > 1 ? (ordinates.tail(ordinates.size() - 1) - ordinates.head(ordinates.size() - 1)).lpNorm<Eigen::Infinity>() : 0.0;
         if (!(turning <= kMaxOrdinateTurning)) {
-            sol.outcome = {Status::no_convergence, std::string(method) + " diverged at iteration " + std::to_string(it) + ": neighbouring tangent-angle ordinates differ by " + fmt(turning) +
-                                                       " rad (limit " + fmt(kMaxOrdinateTurning) + ")"};
+            sol.outcome = {Status::no_convergence, std::string(method) + " diverged at iteration " + std::to_string(it) + ": neighbouring tangent-angle ordinates differ by " +
+                                                       fmt(turning) + " rad (limit " + fmt(kMaxOrdinateTurning) + ")"};
             return sol;
         }
         const DesignSystem sys = design_system(P, sol.u, true);
@@ -456,9 +460,10 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
         }
         if (it == options.max_iterations) {
             sol.history.push_back({it, res, 0.0, 1.0, sol.rank});
-            sol.outcome = {Status::no_convergence, std::string(method) + " from the given start did not reach ‖f‖∞ ≤ " + fmt(tol) + " in " + std::to_string(options.max_iterations) +
-                                                       " iterations: ‖f‖∞ = " + fmt(res) + ", worst equation " + worst_equation(P, sys.f) + "; " + std::to_string(sol.equations) + " equations, " +
-                                                       std::to_string(sol.unknowns) + " unknowns, rank " + std::to_string(sol.rank)};
+            sol.outcome = {Status::no_convergence, std::string(method) + " from the given start did not reach ‖f‖∞ ≤ " + fmt(tol) + " in " +
+                                                       std::to_string(options.max_iterations) + " iterations: ‖f‖∞ = " + fmt(res) + ", worst equation " + worst_equation(P, sys.f) +
+                                                       "; " + std::to_string(sol.equations) + " equations, " + std::to_string(sol.unknowns) + " unknowns, rank " +
+                                                       std::to_string(sol.rank)};
             return sol;
         }
         Eigen::VectorXd delta;
@@ -488,16 +493,15 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
         if (step <= kStalledStep * (1.0 + sol.u.lpNorm<Eigen::Infinity>())) {
             sol.outcome = {Status::no_solution, std::string(method) + " settled on a least-squares point with ‖f‖∞ = " + fmt(res) + " > " + fmt(tol) +
                                                     ": the conditions are inconsistent for these points (worst equation " + worst_equation(P, sys.f) + "; " +
-                                                    std::to_string(sol.equations) + " equations, " + std::to_string(sol.unknowns) + " unknowns, rank " + std::to_string(sol.rank) + ")"};
+                                                    std::to_string(sol.equations) + " equations, " + std::to_string(sol.unknowns) + " unknowns, rank " + std::to_string(sol.rank) +
+                                                    ")"};
             return sol;
         }
         sol.u -= lambda * delta;
     }
 }
 
-CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& P, const NewtonOptions& options) {
-    return solve_curvature_profile(P, c2_start(P), options);
-}
+CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& P, const NewtonOptions& options) { return solve_curvature_profile(P, c2_start(P), options); }
 
 namespace {
 
@@ -572,8 +576,7 @@ CurvatureProfileSolution solve_curvature_profile_levenberg_marquardt(const Curva
 void add_natural_open_ends(CurvatureProfileProblem& problem) {
     if (problem.closed || problem.shapes.empty()) return;
     if (problem.shapes.front() == SegmentShape::free) problem.conditions.push_back({DesignCondition::Kind::curvature, 0, 0.0, false});
-    if (problem.shapes.back() == SegmentShape::free)
-        problem.conditions.push_back({DesignCondition::Kind::curvature, problem.layout.segments(), 0.0, true});
+    if (problem.shapes.back() == SegmentShape::free) problem.conditions.push_back({DesignCondition::Kind::curvature, problem.layout.segments(), 0.0, true});
 }
 
 CurvatureProfileSolution solve_curvature_profile_auto(const CurvatureProfileProblem& problem) {

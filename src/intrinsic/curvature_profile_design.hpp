@@ -68,12 +68,12 @@ struct DesignCondition {
 };
 
 struct CurvatureProfileProblem {
-    PointList points;   // open: n + 1 rows; closed: n rows (the closing span added)
-    KnotLayout layout;  // n spans
-    std::vector<SegmentShape> shapes;   // one per segment
+    PointList points;                  // open: n + 1 rows; closed: n rows (the closing span added)
+    KnotLayout layout;                 // n spans
+    std::vector<SegmentShape> shapes;  // one per segment
     std::vector<DesignCondition> conditions;
     bool closed = false;
-    int turns = 0;      // closed: ψ(L) − ψ(0) = 2π·turns; 0 = the sign of the polygon's signed area
+    int turns = 0;  // closed: ψ(L) − ψ(0) = 2π·turns; 0 = the sign of the polygon's signed area
 };
 
 // "line,free,arc,…" (one shape per span; also "clothoid" = linear_curvature) → shapes.
@@ -91,14 +91,14 @@ void require_valid_problem(const CurvatureProfileProblem& problem, const std::st
 // turns if set, else +1 for a counter-clockwise polygon (signed area ≥ 0) and −1 otherwise.
 int closing_turns(const CurvatureProfileProblem& problem);
 
-int design_unknowns(const CurvatureProfileProblem& problem);    // N = l + q + 1
-int design_equations(const CurvatureProfileProblem& problem);   // m + 1
+int design_unknowns(const CurvatureProfileProblem& problem);   // N = l + q + 1
+int design_equations(const CurvatureProfileProblem& problem);  // m + 1
 // One label per equation ("interpolation x, span 3", "line, segment 2, b2 − b0", …).
 std::vector<std::string> design_equation_labels(const CurvatureProfileProblem& problem);
 
 struct DesignSystem {
     Eigen::VectorXd f;
-    Eigen::SparseMatrix<double> jacobian;   // empty unless asked for
+    Eigen::SparseMatrix<double> jacobian;  // empty unless asked for
 };
 DesignSystem design_system(const CurvatureProfileProblem& problem, const Eigen::VectorXd& u, bool with_jacobian = true);
 
@@ -113,24 +113,23 @@ struct NewtonOptions {
     double tolerance = 1e-12;
 };
 struct NewtonRecord {
-    int iteration;      // 0 = the start
-    double residual;    // ‖f(u)‖∞ before the step
-    double step;        // ‖Δu‖∞ taken (0 for the final record)
-    double damping;     // 1 = the full Newton step
-    int rank;           // of J (−1 for the sparse step)
+    int iteration;    // 0 = the start
+    double residual;  // ‖f(u)‖∞ before the step
+    double step;      // ‖Δu‖∞ taken (0 for the final record)
+    double damping;   // 1 = the full Newton step
+    int rank;         // of J (−1 for the sparse step)
 };
 struct CurvatureProfileSolution {
     Outcome outcome;
     Eigen::VectorXd u;
     std::vector<NewtonRecord> history;
     int equations = 0, unknowns = 0, rank = -1;
-    std::optional<IntrinsicCurve> curve;   // present when outcome.ok()
+    std::optional<IntrinsicCurve> curve;  // present when outcome.ok()
 
-    std::vector<double> segment_lengths() const;   // Δw_j of the final iterate
+    std::vector<double> segment_lengths() const;  // Δw_j of the final iterate
 };
 
-CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& problem, const Eigen::VectorXd& start,
-                                                 const NewtonOptions& options = {});
+CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& problem, const Eigen::VectorXd& start, const NewtonOptions& options = {});
 CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& problem, const NewtonOptions& options = {});
 
 // The clothoid-spline defaults shared by `cagd interpolate` and compare/: natural ends (κ = 0 at an
@@ -144,7 +143,6 @@ CurvatureProfileSolution solve_curvature_profile_auto(const CurvatureProfileProb
 
 // The second solver: Ceres Levenberg–Marquardt on the same f, with its own central-difference
 // Jacobian (DynamicNumericDiffCostFunction) and lengths bounded below — independent of ours.
-CurvatureProfileSolution solve_curvature_profile_levenberg_marquardt(const CurvatureProfileProblem& problem,
-                                                                     const Eigen::VectorXd& start);
+CurvatureProfileSolution solve_curvature_profile_levenberg_marquardt(const CurvatureProfileProblem& problem, const Eigen::VectorXd& start);
 
 }  // namespace cagd::intrinsic

@@ -34,8 +34,10 @@ DesignVerification verify_design(const CurvatureProfileProblem& P, const Intrins
         const double mid = psi.jet_in_segment(j, a + 0.5 * d, 1)(1);
         for (int m = 0; m < 20; ++m) {
             const double kappa = psi.jet_in_segment(j, a + (m + 0.5) / 20.0 * d, 1)(1);
-            if (shape == SegmentShape::line) v.line_curvature = std::max(v.line_curvature, std::abs(kappa));
-            else v.arc_curvature_spread = std::max(v.arc_curvature_spread, std::abs(kappa - mid));
+            if (shape == SegmentShape::line)
+                v.line_curvature = std::max(v.line_curvature, std::abs(kappa));
+            else
+                v.arc_curvature_spread = std::max(v.arc_curvature_spread, std::abs(kappa - mid));
         }
     }
     for (int g = 1; g < L.segments(); ++g) {

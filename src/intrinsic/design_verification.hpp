@@ -15,8 +15,8 @@
 namespace cagd::intrinsic {
 
 struct DesignVerification {
-    double interpolation_error = 0, line_curvature = 0, arc_curvature_spread = 0, angle_jump = 0,
-           g2_curvature_jump = 0, g1_curvature_jump = 0, closing_angle = 0, closing_curvature = 0;
+    double interpolation_error = 0, line_curvature = 0, arc_curvature_spread = 0, angle_jump = 0, g2_curvature_jump = 0, g1_curvature_jump = 0, closing_angle = 0,
+           closing_curvature = 0;
 };
 
 DesignVerification verify_design(const CurvatureProfileProblem& problem, const IntrinsicCurve& curve);

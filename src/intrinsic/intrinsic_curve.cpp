@@ -16,15 +16,12 @@ IntrinsicCurve::IntrinsicCurve(Eigen::Vector2d start, TangentAngleSpline psi) : 
         points_.row(j + 1) = points_.row(j) + psi_.segment_lengths()[static_cast<std::size_t>(j)] * direction_integrals(psi_.bezier().row(j).transpose()).transpose();
 }
 
-Eigen::MatrixXd IntrinsicCurve::jet(double s, int order) const {
-    return jet_in_segment(psi_.segment_at(s), s, order);
-}
+Eigen::MatrixXd IntrinsicCurve::jet(double s, int order) const { return jet_in_segment(psi_.segment_at(s), s, order); }
 
 Eigen::MatrixXd IntrinsicCurve::jet_from_left(double s, int order) const {
-    if (!(s > 0.0 && s <= length()))
-        fail_input("intrinsic::IntrinsicCurve::jet_from_left", "s = " + full_precision(s) + " outside (0, " + full_precision(length()) + "]");
+    if (!(s > 0.0 && s <= length())) fail_input("intrinsic::IntrinsicCurve::jet_from_left", "s = " + full_precision(s) + " outside (0, " + full_precision(length()) + "]");
     const std::vector<double>& w = psi_.breakpoints();
-    const int j = static_cast<int>(std::lower_bound(w.begin(), w.end(), s) - w.begin()) - 1;   // w_j < s ≤ w_{j+1}
+    const int j = static_cast<int>(std::lower_bound(w.begin(), w.end(), s) - w.begin()) - 1;  // w_j < s ≤ w_{j+1}
     return jet_in_segment(j, s, order);
 }
 

@@ -10,24 +10,21 @@
 
 namespace cagd::intrinsic {
 
-KnotLayout::KnotLayout(int degree, std::vector<int> segments_per_span, std::vector<int> multiplicity,
-                       std::vector<int> length_index)
+KnotLayout::KnotLayout(int degree, std::vector<int> segments_per_span, std::vector<int> multiplicity, std::vector<int> length_index)
     : degree_(degree), multiplicity_(std::move(multiplicity)), length_index_(std::move(length_index)) {
     const std::string who = "intrinsic::KnotLayout";
     if (degree_ < 2 || degree_ > 3) fail_input(who, "degree must be 2 or 3, got " + std::to_string(degree_));
     if (segments_per_span.empty()) fail_input(who, "needs at least one span");
     span_first_.push_back(0);
     for (std::size_t i = 0; i < segments_per_span.size(); ++i) {
-        if (segments_per_span[i] < 1)
-            fail_input(who, "span " + std::to_string(i) + " has " + std::to_string(segments_per_span[i]) + " segments (≥ 1 required)");
+        if (segments_per_span[i] < 1) fail_input(who, "span " + std::to_string(i) + " has " + std::to_string(segments_per_span[i]) + " segments (≥ 1 required)");
         for (int s = 0; s < segments_per_span[i]; ++s) segment_span_.push_back(static_cast<int>(i));
         span_first_.push_back(span_first_.back() + segments_per_span[i]);
     }
     const int k = segments();
     if (static_cast<int>(multiplicity_.size()) != k + 1)
         fail_input(who, "needs " + std::to_string(k + 1) + " breakpoint multiplicities, got " + std::to_string(multiplicity_.size()));
-    if (static_cast<int>(length_index_.size()) != k)
-        fail_input(who, "needs " + std::to_string(k) + " length indices, got " + std::to_string(length_index_.size()));
+    if (static_cast<int>(length_index_.size()) != k) fail_input(who, "needs " + std::to_string(k) + " length indices, got " + std::to_string(length_index_.size()));
     for (int g = 0; g <= k; ++g) {
         const int m = multiplicity_[static_cast<std::size_t>(g)];
         const bool end = g == 0 || g == k;
@@ -39,7 +36,8 @@ KnotLayout::KnotLayout(int degree, std::vector<int> segments_per_span, std::vect
     for (int j = 0; j < k; ++j) {
         const int li = length_index_[static_cast<std::size_t>(j)];
         if (li < 0 || li > lengths_)
-            fail_input(who, "segment " + std::to_string(j) + " has length index " + std::to_string(li) + "; indices must be numbered in order of first use (next new index " + std::to_string(lengths_) + ")");
+            fail_input(who, "segment " + std::to_string(j) + " has length index " + std::to_string(li) + "; indices must be numbered in order of first use (next new index " +
+                                std::to_string(lengths_) + ")");
         if (li == lengths_) ++lengths_;
     }
     int count = 0;
@@ -59,8 +57,7 @@ KnotLayout KnotLayout::elevated() const {
 }
 
 bool KnotLayout::operator==(const KnotLayout& o) const {
-    return degree_ == o.degree_ && span_first_ == o.span_first_ && multiplicity_ == o.multiplicity_ &&
-           length_index_ == o.length_index_;
+    return degree_ == o.degree_ && span_first_ == o.span_first_ && multiplicity_ == o.multiplicity_ && length_index_ == o.length_index_;
 }
 
 namespace {
@@ -78,10 +75,25 @@ std::vector<Token> tokenize(const std::string& s) {
     std::size_t i = 0;
     while (i < s.size()) {
         const char c = s[i];
-        if (std::isspace(static_cast<unsigned char>(c))) { ++i; continue; }
-        if (c == '{') { out.push_back({Token::open, "{", i}); ++i; continue; }
-        if (c == '}') { out.push_back({Token::close, "}", i}); ++i; continue; }
-        if (c == ',') { out.push_back({Token::comma, ",", i}); ++i; continue; }
+        if (std::isspace(static_cast<unsigned char>(c))) {
+            ++i;
+            continue;
+        }
+        if (c == '{') {
+            out.push_back({Token::open, "{", i});
+            ++i;
+            continue;
+        }
+        if (c == '}') {
+            out.push_back({Token::close, "}", i});
+            ++i;
+            continue;
+        }
+        if (c == ',') {
+            out.push_back({Token::comma, ",", i});
+            ++i;
+            continue;
+        }
         const std::size_t start = i;
         if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
             while (i < s.size() && (std::isalnum(static_cast<unsigned char>(s[i])) || s[i] == '_')) ++i;
@@ -136,20 +148,30 @@ private:
                 char* endp = nullptr;
                 const double v = std::strtod(t.text.c_str(), &endp);
                 if (endp != t.text.c_str() + t.text.size() || !std::isfinite(v) || v < 0)
-                    fail_input(kWho, "entry \"" + t.text + "\" at position " + std::to_string(t.position) + " is not a finite number ≥ 0 (\"…\" is not accepted: write every entry)");
-                if (v == 0.0) e.zero = true;
-                else e.label = t.text;
+                    fail_input(kWho,
+                               "entry \"" + t.text + "\" at position " + std::to_string(t.position) + " is not a finite number ≥ 0 (\"…\" is not accepted: write every entry)");
+                if (v == 0.0)
+                    e.zero = true;
+                else
+                    e.label = t.text;
                 ++pos_;
             } else if (t.kind == Token::name) {
                 e.label = t.text;
                 ++pos_;
             } else {
-                fail_input(kWho, "expected an entry at position " + std::to_string(t.position) + " of \"" + text_ + "\", found '" + (t.kind == Token::end ? std::string("end of text") : t.text) + "'");
+                fail_input(kWho, "expected an entry at position " + std::to_string(t.position) + " of \"" + text_ + "\", found '" +
+                                     (t.kind == Token::end ? std::string("end of text") : t.text) + "'");
             }
             items.push_back(std::move(e));
             const Token& sep = tokens_[pos_];
-            if (sep.kind == Token::comma) { ++pos_; continue; }
-            if (sep.kind == Token::close) { ++pos_; return items; }
+            if (sep.kind == Token::comma) {
+                ++pos_;
+                continue;
+            }
+            if (sep.kind == Token::close) {
+                ++pos_;
+                return items;
+            }
             fail_input(kWho, "expected ',' or '}' at position " + std::to_string(sep.position) + " of \"" + text_ + "\"");
         }
     }
@@ -180,7 +202,8 @@ KnotDifferenceList parse_knot_difference_list(const std::string& text, int degre
     auto add_segment = [&](const Entry& e) {
         int idx;
         const bool numeric = std::isdigit(static_cast<unsigned char>(e.label[0])) || e.label[0] == '.' || e.label[0] == '+';
-        if (!numeric && by_name.count(e.label)) idx = by_name[e.label];
+        if (!numeric && by_name.count(e.label))
+            idx = by_name[e.label];
         else {
             idx = static_cast<int>(labels.size());
             labels.push_back(e.label);
@@ -193,16 +216,21 @@ KnotDifferenceList parse_knot_difference_list(const std::string& text, int degre
     int zeros = 0;
     while (i < items.size() && items[i].zero) ++zeros, ++i;
     if (zeros != degree - 1)
-        fail_input(kWho, "a degree-" + std::to_string(degree) + " list starts with " + std::to_string(degree - 1) + " zero(s) (end knot of multiplicity " + std::to_string(degree) + "), \"" + text + "\" starts with " + std::to_string(zeros));
+        fail_input(kWho, "a degree-" + std::to_string(degree) + " list starts with " + std::to_string(degree - 1) + " zero(s) (end knot of multiplicity " + std::to_string(degree) +
+                             "), \"" + text + "\" starts with " + std::to_string(zeros));
     mult.push_back(degree);
     bool after_span = false;
-    int pending = 0;   // zeros since the last span
+    int pending = 0;  // zeros since the last span
     for (; i < items.size(); ++i) {
         const Entry& e = items[i];
-        if (e.zero) { ++pending; continue; }
+        if (e.zero) {
+            ++pending;
+            continue;
+        }
         if (after_span) {
             if (pending + 1 > degree)
-                fail_input(kWho, std::to_string(pending) + " consecutive zeros before position " + std::to_string(e.position) + " make a knot of multiplicity " + std::to_string(pending + 1) + " > p = " + std::to_string(degree));
+                fail_input(kWho, std::to_string(pending) + " consecutive zeros before position " + std::to_string(e.position) + " make a knot of multiplicity " +
+                                     std::to_string(pending + 1) + " > p = " + std::to_string(degree));
             mult.push_back(pending + 1);
         }
         pending = 0;
@@ -215,10 +243,14 @@ KnotDifferenceList parse_knot_difference_list(const std::string& text, int degre
                 fail_input(kWho, "the sub-list at position " + std::to_string(e.position) + " must begin and end with a segment length (its zeros mark knots inside the span)");
             int segs = 0, inner = 0;
             for (std::size_t m = 0; m < c.size(); ++m) {
-                if (c[m].zero) { ++inner; continue; }
+                if (c[m].zero) {
+                    ++inner;
+                    continue;
+                }
                 if (segs > 0) {
                     if (inner + 1 > degree)
-                        fail_input(kWho, std::to_string(inner) + " consecutive zeros inside the sub-list at position " + std::to_string(e.position) + " exceed multiplicity p = " + std::to_string(degree));
+                        fail_input(kWho, std::to_string(inner) + " consecutive zeros inside the sub-list at position " + std::to_string(e.position) +
+                                             " exceed multiplicity p = " + std::to_string(degree));
                     mult.push_back(inner + 1);
                 }
                 inner = 0;
@@ -231,7 +263,8 @@ KnotDifferenceList parse_knot_difference_list(const std::string& text, int degre
     }
     if (per_span.empty()) fail_input(kWho, "\"" + text + "\" has no segment");
     if (pending != degree - 1)
-        fail_input(kWho, "a degree-" + std::to_string(degree) + " list ends with " + std::to_string(degree - 1) + " zero(s), \"" + text + "\" ends with " + std::to_string(pending));
+        fail_input(kWho,
+                   "a degree-" + std::to_string(degree) + " list ends with " + std::to_string(degree - 1) + " zero(s), \"" + text + "\" ends with " + std::to_string(pending));
     mult.push_back(degree);
     return {KnotLayout(degree, per_span, mult, length_index), labels, values};
 }
@@ -240,12 +273,17 @@ namespace {
 
 std::string format_list(const KnotLayout& L, const std::vector<std::string>& seg_text) {
     std::vector<std::string> out;
-    auto zeros = [&](int count) { for (int z = 0; z < count; ++z) out.push_back("0"); };
+    auto zeros = [&](int count) {
+        for (int z = 0; z < count; ++z) out.push_back("0");
+    };
     zeros(L.degree() - 1);
     for (int s = 0; s < L.spans(); ++s) {
         const int a = L.first_segment(s), b = L.end_segment(s);
         if (s > 0) zeros(L.multiplicity(a) - 1);
-        if (b - a == 1) { out.push_back(seg_text[static_cast<std::size_t>(a)]); continue; }
+        if (b - a == 1) {
+            out.push_back(seg_text[static_cast<std::size_t>(a)]);
+            continue;
+        }
         std::string sub = "{";
         for (int j = a; j < b; ++j) {
             if (j > a) {
@@ -273,7 +311,8 @@ std::string format_knot_difference_list(const KnotLayout& layout, const std::vec
         if (!std::isfinite(v) || v <= 0) fail_input("intrinsic::format_knot_difference_list", "segment length " + full_precision(v) + " is not finite and > 0");
         t.push_back(fixed(v, decimals));
         if (std::strtod(t.back().c_str(), nullptr) == 0.0)
-            fail_input("intrinsic::format_knot_difference_list", "segment length " + full_precision(v) + " prints as 0 with " + std::to_string(decimals) + " decimals (it would read as a repeated knot)");
+            fail_input("intrinsic::format_knot_difference_list",
+                       "segment length " + full_precision(v) + " prints as 0 with " + std::to_string(decimals) + " decimals (it would read as a repeated knot)");
     }
     return format_list(layout, t);
 }

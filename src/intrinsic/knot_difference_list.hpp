@@ -37,14 +37,13 @@ public:
     // segments_per_span: n entries ≥ 1; multiplicity: k + 1 entries (k = Σ segments_per_span),
     // ends = degree, interior in [1, degree]; length_index: k entries, the independent length of
     // each segment, numbered in order of first appearance (0, 1, …, l − 1). degree ∈ {2, 3}.
-    KnotLayout(int degree, std::vector<int> segments_per_span, std::vector<int> multiplicity,
-               std::vector<int> length_index);
+    KnotLayout(int degree, std::vector<int> segments_per_span, std::vector<int> multiplicity, std::vector<int> length_index);
 
     int degree() const { return degree_; }
     int spans() const { return static_cast<int>(span_first_.size()) - 1; }
     int segments() const { return static_cast<int>(segment_span_.size()); }
     int independent_lengths() const { return lengths_; }
-    int ordinates() const { return ordinates_; }                 // q + 1
+    int ordinates() const { return ordinates_; }  // q + 1
     int farin_knot_count() const { return ordinates_ + degree_ - 1; }
     int first_segment(int span) const { return span_first_[static_cast<std::size_t>(span)]; }
     int end_segment(int span) const { return span_first_[static_cast<std::size_t>(span) + 1]; }  // one past
@@ -82,8 +81,7 @@ KnotDifferenceList parse_knot_difference_list(const std::string& text, int degre
 
 // The list with segment lengths printed to `decimals` places ("{0, 5.000, 0, …}"); segment_lengths
 // has one entry per segment.
-std::string format_knot_difference_list(const KnotLayout& layout, const std::vector<double>& segment_lengths,
-                                        int decimals);
+std::string format_knot_difference_list(const KnotLayout& layout, const std::vector<double>& segment_lengths, int decimals);
 // The symbolic list with independent lengths named S0, S1, … (equal names = equal lengths).
 std::string format_knot_difference_list(const KnotLayout& layout);
 

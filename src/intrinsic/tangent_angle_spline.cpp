@@ -22,10 +22,8 @@ TangentAngleSpline::TangentAngleSpline(KnotLayout layout, std::vector<double> se
     : layout_(std::move(layout)), lengths_(std::move(segment_lengths)), de_boor_(std::move(de_boor)) {
     const std::string who = "intrinsic::TangentAngleSpline";
     const int k = layout_.segments(), p = layout_.degree();
-    if (static_cast<int>(lengths_.size()) != k)
-        fail_input(who, "needs " + std::to_string(k) + " segment lengths, got " + std::to_string(lengths_.size()));
-    if (de_boor_.size() != layout_.ordinates())
-        fail_input(who, "needs " + std::to_string(layout_.ordinates()) + " de Boor ordinates, got " + std::to_string(de_boor_.size()));
+    if (static_cast<int>(lengths_.size()) != k) fail_input(who, "needs " + std::to_string(k) + " segment lengths, got " + std::to_string(lengths_.size()));
+    if (de_boor_.size() != layout_.ordinates()) fail_input(who, "needs " + std::to_string(layout_.ordinates()) + " de Boor ordinates, got " + std::to_string(de_boor_.size()));
     w_.push_back(0.0);
     for (int j = 0; j < k; ++j) {
         const double d = lengths_[static_cast<std::size_t>(j)];
@@ -91,15 +89,12 @@ std::vector<double> TangentAngleSpline::greville_abscissae() const {
 }
 
 int TangentAngleSpline::segment_at(double s) const {
-    if (!(s >= 0.0 && s <= length()))
-        fail_input("intrinsic::TangentAngleSpline", "arc length s = " + full_precision(s) + " outside [0, " + full_precision(length()) + "]");
+    if (!(s >= 0.0 && s <= length())) fail_input("intrinsic::TangentAngleSpline", "arc length s = " + full_precision(s) + " outside [0, " + full_precision(length()) + "]");
     const auto it = std::upper_bound(w_.begin(), w_.end(), s);
     return std::min(static_cast<int>(it - w_.begin()) - 1, segments() - 1);
 }
 
-Eigen::VectorXd TangentAngleSpline::jet(double s, int order) const {
-    return jet_in_segment(segment_at(s), s, order);
-}
+Eigen::VectorXd TangentAngleSpline::jet(double s, int order) const { return jet_in_segment(segment_at(s), s, order); }
 
 Eigen::VectorXd TangentAngleSpline::jet_in_segment(int j, double s, int order) const {
     const std::string who = "intrinsic::TangentAngleSpline::jet";
@@ -116,9 +111,7 @@ Eigen::VectorXd TangentAngleSpline::jet_in_segment(int j, double s, int order) c
     return out;
 }
 
-double TangentAngleSpline::angle(int segment, bool at_end) const {
-    return at_end ? bezier_(segment, degree()) : bezier_(segment, 0);
-}
+double TangentAngleSpline::angle(int segment, bool at_end) const { return at_end ? bezier_(segment, degree()) : bezier_(segment, 0); }
 
 double TangentAngleSpline::curvature(int segment, bool at_end) const {
     const int p = degree();

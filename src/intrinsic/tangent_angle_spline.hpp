@@ -34,29 +34,29 @@ public:
     int degree() const { return layout_.degree(); }
     int segments() const { return layout_.segments(); }
     const std::vector<double>& segment_lengths() const { return lengths_; }
-    const std::vector<double>& breakpoints() const { return w_; }   // w_0 = 0, …, w_k = length
+    const std::vector<double>& breakpoints() const { return w_; }  // w_0 = 0, …, w_k = length
     double length() const { return w_.back(); }
     const Eigen::VectorXd& de_boor() const { return de_boor_; }
-    std::vector<double> farin_knots() const;        // v_{−p+1}..v_q
+    std::vector<double> farin_knots() const;  // v_{−p+1}..v_q
     // The 2p Farin knots that shape segment j, measured from its start w_j by summing segment
     // lengths (exact up to the sum of a few terms). The Bézier extraction uses these rather than
     // farin_knots(): differences of absolute knots cost ε·w_k each, which at 10^5 segments floors the
     // eq (3) residual near 1e−11 and stops Newton short of its tolerance.
     std::vector<double> local_farin_knots(int segment) const;
-    std::vector<double> greville_abscissae() const; // one per de Boor ordinate
-    const Eigen::MatrixXd& bezier() const { return bezier_; }   // k × (p+1): b_{j,r}
+    std::vector<double> greville_abscissae() const;            // one per de Boor ordinate
+    const Eigen::MatrixXd& bezier() const { return bezier_; }  // k × (p+1): b_{j,r}
 
     // ψ^{(d)}(s), d = 0..order, by the B-spline basis (right-continuous; s = length from the left).
     Eigen::VectorXd jet(double s, int order) const;
     // The same for the polynomial of segment j, s ∈ [w_j, w_{j+1}] (one-sided limits at its ends).
     Eigen::VectorXd jet_in_segment(int segment, double s, int order) const;
-    int segment_at(double s) const;   // j with w_j ≤ s < w_{j+1} (the last segment at s = length)
+    int segment_at(double s) const;  // j with w_j ≤ s < w_{j+1} (the last segment at s = length)
     // From the Bézier form: ψ and κ at the start (t = 0) or end (t = 1) of segment j.
     double angle(int segment, bool at_end) const;
     double curvature(int segment, bool at_end) const;
 
 private:
-    std::vector<double> basis_knots_;   // farin_knots() with w_0 and w_k added: the knot vector of jet_in_segment
+    std::vector<double> basis_knots_;  // farin_knots() with w_0 and w_k added: the knot vector of jet_in_segment
     KnotLayout layout_;
     std::vector<double> lengths_, w_;
     Eigen::VectorXd de_boor_;
@@ -66,7 +66,6 @@ private:
 // ∫_0^τ (cos ψ(t), sin ψ(t)) dt for the Bézier polynomial ψ with ordinates b (degree = size − 1,
 // ≤ 3), 0 ≤ τ ≤ 1, by the rule above. With `weights`, also W(0, r) = ∫_0^1 cos ψ B^p_r dt and
 // W(1, r) = ∫_0^1 sin ψ B^p_r dt (τ must be 1), the derivatives' building blocks.
-Eigen::Vector2d direction_integrals(const Eigen::VectorXd& b, double tau = 1.0,
-                                    Eigen::Matrix<double, 2, Eigen::Dynamic>* weights = nullptr);
+Eigen::Vector2d direction_integrals(const Eigen::VectorXd& b, double tau = 1.0, Eigen::Matrix<double, 2, Eigen::Dynamic>* weights = nullptr);
 
 }  // namespace cagd::intrinsic

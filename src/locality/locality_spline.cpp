@@ -14,18 +14,14 @@ const char* const kWho = "cagd::locality::interpolate";
 
 void require_locality(SegmentLocality m, const std::string& who) {
     for (int v : {m.left, m.right})
-        if (v < 0 || v > kMaxLocality)
-            fail_input(who, "locality m = " + std::to_string(v) + " outside [0, " +
-                                std::to_string(kMaxLocality) + "]");
+        if (v < 0 || v > kMaxLocality) fail_input(who, "locality m = " + std::to_string(v) + " outside [0, " + std::to_string(kMaxLocality) + "]");
 }
 
 // Virtual points of section 3.3 as an index → point map over all integers.
 class ExtendedPoints {
 public:
-    ExtendedPoints(const PointList& p, bool closed, Eigen::VectorXd start_normal,
-                   Eigen::VectorXd end_normal, bool start_mirror, bool end_mirror)
-        : p_(p), closed_(closed), start_normal_(std::move(start_normal)),
-          end_normal_(std::move(end_normal)), start_mirror_(start_mirror), end_mirror_(end_mirror) {}
+    ExtendedPoints(const PointList& p, bool closed, Eigen::VectorXd start_normal, Eigen::VectorXd end_normal, bool start_mirror, bool end_mirror)
+        : p_(p), closed_(closed), start_normal_(std::move(start_normal)), end_normal_(std::move(end_normal)), start_mirror_(start_mirror), end_mirror_(end_mirror) {}
 
     Eigen::RowVectorXd operator()(long k) const {
         const long n = p_.rows();
@@ -36,11 +32,10 @@ public:
     }
 
 private:
-    static Eigen::RowVectorXd reflect(const Eigen::RowVectorXd& x, const Eigen::RowVectorXd& centre,
-                                      const Eigen::VectorXd& unit_normal, bool mirror) {
-        if (!mirror) return 2.0 * centre - x;   // point symmetry (natural end)
+    static Eigen::RowVectorXd reflect(const Eigen::RowVectorXd& x, const Eigen::RowVectorXd& centre, const Eigen::VectorXd& unit_normal, bool mirror) {
+        if (!mirror) return 2.0 * centre - x;  // point symmetry (natural end)
         const double s = (x - centre).dot(unit_normal.transpose());
-        return x - 2.0 * s * unit_normal.transpose();   // mirror ⟂ tangent
+        return x - 2.0 * s * unit_normal.transpose();  // mirror ⟂ tangent
     }
     const PointList& p_;
     bool closed_;
@@ -48,16 +43,12 @@ private:
     bool start_mirror_, end_mirror_;
 };
 
-Eigen::VectorXd unit_tangent(const EndCondition& end, const PointList& p, bool at_start,
-                             const std::string& which) {
+Eigen::VectorXd unit_tangent(const EndCondition& end, const PointList& p, bool at_start, const std::string& which) {
     Eigen::VectorXd t;
     if (end.kind == EndKind::tangent) {
         t = end.tangent;
-        if (t.size() != p.cols())
-            fail_input(kWho, which + " tangent has " + std::to_string(t.size()) +
-                                 " coordinates; the points have " + std::to_string(p.cols()));
-        if (!t.allFinite() || t.norm() == 0.0)
-            fail_input(kWho, which + " tangent must be finite and non-zero");
+        if (t.size() != p.cols()) fail_input(kWho, which + " tangent has " + std::to_string(t.size()) + " coordinates; the points have " + std::to_string(p.cols()));
+        if (!t.allFinite() || t.norm() == 0.0) fail_input(kWho, which + " tangent must be finite and non-zero");
     } else {
         t = at_start ? bessel_tangent(p) : bessel_tangent(p.colwise().reverse().eval());
     }
@@ -71,8 +62,14 @@ ExtendedPoints make_extended_points(const PointList& points, const Options& o) {
     Eigen::VectorXd ts, te;
     bool ms = false, me = false;
     if (!o.closed) {
-        if (o.start.kind != EndKind::natural) { ts = unit_tangent(o.start, points, true, "start"); ms = true; }
-        if (o.end.kind != EndKind::natural) { te = unit_tangent(o.end, points, false, "end"); me = true; }
+        if (o.start.kind != EndKind::natural) {
+            ts = unit_tangent(o.start, points, true, "start");
+            ms = true;
+        }
+        if (o.end.kind != EndKind::natural) {
+            te = unit_tangent(o.end, points, false, "end");
+            me = true;
+        }
     }
     return ExtendedPoints(points, o.closed, ts, te, ms, me);
 }
@@ -86,8 +83,14 @@ SegmentWeights extra_point_weights(SegmentLocality m) {
     SegmentWeights w{Eigen::VectorXd(m.left + 1), Eigen::VectorXd(m.right + 1)};
     double power = 1.0, total = 0.0;
     for (int j = 0; j <= std::max(m.left, m.right); ++j, power *= a) {
-        if (j <= m.left) { w.left(j) = power; total += power; }
-        if (j <= m.right) { w.right(j) = power; total += power; }
+        if (j <= m.left) {
+            w.left(j) = power;
+            total += power;
+        }
+        if (j <= m.right) {
+            w.right(j) = power;
+            total += power;
+        }
     }
     w.left /= total;
     w.right /= total;
@@ -95,22 +98,18 @@ SegmentWeights extra_point_weights(SegmentLocality m) {
 }
 
 Eigen::Vector3d truncation_weights(int m) {
-    if (m < 1 || m > kMaxLocality)
-        fail_input("cagd::locality::truncation_weights", "m = " + std::to_string(m) +
-                                                             " outside [1, " + std::to_string(kMaxLocality) + "]");
+    if (m < 1 || m > kMaxLocality) fail_input("cagd::locality::truncation_weights", "m = " + std::to_string(m) + " outside [1, " + std::to_string(kMaxLocality) + "]");
     const double a = alpha(), am = std::pow(a, m), am1 = am * a, k = 1.0 / (1.0 - am1);
     return {k, -k * (1.0 - a) * am1 / 6.0, k * (1.0 - a) * am / 6.0};
 }
 
 StencilWeights truncation_weights_by_stencil(int m) {
-    if (m < 1 || m > kMaxLocality)
-        fail_input("cagd::locality::truncation_weights_by_stencil",
-                   "m = " + std::to_string(m) + " outside [1, " + std::to_string(kMaxLocality) + "]");
+    if (m < 1 || m > kMaxLocality) fail_input("cagd::locality::truncation_weights_by_stencil", "m = " + std::to_string(m) + " outside [1, " + std::to_string(kMaxLocality) + "]");
     const SegmentWeights w = extra_point_weights({m, m});
     // Coefficients on p_{i+o}, o = −(m+1) .. m+2, stored at index o + m + 1.
     const int size = 2 * m + 4, shift = m + 1;
     Eigen::VectorXd v = Eigen::VectorXd::Zero(size);
-    const auto add_segment = [&](int s, double factor) {   // segment i+s
+    const auto add_segment = [&](int s, double factor) {  // segment i+s
         for (int j = 0; j <= m; ++j) {
             v(s - j + shift) += factor * w.left(j);
             v(s + 1 + j + shift) += factor * w.right(j);
@@ -124,10 +123,14 @@ StencilWeights truncation_weights_by_stencil(int m) {
     for (int k = 0; k <= m + 1; ++k) {
         const double c = 2.0 * v(-k + shift), c_mirror = 2.0 * v(1 + k + shift);
         out.largest_other = std::max(out.largest_other, std::abs(c - c_mirror));
-        if (k == 0) out.weights(0) = c;
-        else if (k == m) out.weights(1) = c;
-        else if (k == m + 1) out.weights(2) = c;
-        else out.largest_other = std::max(out.largest_other, std::abs(c));
+        if (k == 0)
+            out.weights(0) = c;
+        else if (k == m)
+            out.weights(1) = c;
+        else if (k == m + 1)
+            out.weights(2) = c;
+        else
+            out.largest_other = std::max(out.largest_other, std::abs(c));
     }
     return out;
 }
@@ -171,8 +174,7 @@ std::string format_m_vector(const MVector& m) {
     std::string s;
     for (std::size_t i = 0; i < m.size(); ++i) {
         if (i) s += ",";
-        s += m[i].left == m[i].right ? std::to_string(m[i].left)
-                                     : std::to_string(m[i].left) + ":" + std::to_string(m[i].right);
+        s += m[i].left == m[i].right ? std::to_string(m[i].left) : std::to_string(m[i].left) + ":" + std::to_string(m[i].right);
     }
     return s;
 }
@@ -195,8 +197,7 @@ double blending_g(SplineForm form, double u, int k) {
 double blending_h(SplineForm form, double u, int k) {
     const KnotRelation r = knot_relation(form);
     const double ratio = r.side / r.centre;
-    if (form == SplineForm::b2_spline)
-        return basis_e(u - 0.5, k) - ratio * (basis_e(u, k) + basis_e(u - 1.0, k));
+    if (form == SplineForm::b2_spline) return basis_e(u - 0.5, k) - ratio * (basis_e(u, k) + basis_e(u - 1.0, k));
     return basis_f_hat(u, k) - ratio * (basis_e_hat(u, k) + basis_e_hat(u - 1.0, k));
 }
 
@@ -214,10 +215,8 @@ LocalitySpline interpolate(const PointList& points, const Options& o) {
     const long n = points.rows();
     const long segments = o.closed ? n : n - 1;
     if (o.m.size() != 1 && static_cast<long>(o.m.size()) != segments)
-        fail_input(kWho, "m-vector has " + std::to_string(o.m.size()) + " entries; this " +
-                             (o.closed ? "closed" : "open") + " curve through " + std::to_string(n) +
-                             " points has " + std::to_string(segments) + " segments (give 1 or " +
-                             std::to_string(segments) + ")");
+        fail_input(kWho, "m-vector has " + std::to_string(o.m.size()) + " entries; this " + (o.closed ? "closed" : "open") + " curve through " + std::to_string(n) +
+                             " points has " + std::to_string(segments) + " segments (give 1 or " + std::to_string(segments) + ")");
     for (const auto& m : o.m) require_locality(m, kWho);
 
     const ExtendedPoints P = make_extended_points(points, o);
@@ -231,22 +230,20 @@ LocalitySpline interpolate(const PointList& points, const Options& o) {
     const auto extra_point = [&](long i) -> Eigen::RowVectorXd {
         const Eigen::RowVectorXd q0 = 0.5 * (P(i) + P(i + 1));
         switch (o.rule) {
-            case ExtraPointRule::method_I: return q0;   // eq (15)
+            case ExtraPointRule::method_I: return q0;  // eq (15)
             case ExtraPointRule::method_IIa:           // eq (16)
                 return 1.25 * q0 - 0.25 * (0.5 * (P(i - 1) + P(i + 2)));
-            case ExtraPointRule::fmill: {               // eq (17)
+            case ExtraPointRule::fmill: {  // eq (17)
                 const auto tangent = [&](long k) {
                     const Eigen::RowVectorXd c = P(k + 1) - P(k - 1);
-                    if (c.norm() == 0.0)
-                        fail_input(kWho, "FMILL tangent at point " + std::to_string(k) +
-                                             " undefined: its neighbours coincide");
+                    if (c.norm() == 0.0) fail_input(kWho, "FMILL tangent at point " + std::to_string(k) + " undefined: its neighbours coincide");
                     return Eigen::RowVectorXd(c.normalized());
                 };
                 return q0 + (tangent(i) - tangent(i + 1)) * (P(i + 1) - P(i)).norm() / 6.0;
             }
             case ExtraPointRule::locality: break;
         }
-        const SegmentWeights w = extra_point_weights(m_of(i));   // eq (12)
+        const SegmentWeights w = extra_point_weights(m_of(i));  // eq (12)
         Eigen::RowVectorXd d = Eigen::RowVectorXd::Zero(points.cols());
         for (long j = 0; j < w.left.size(); ++j) d += w.left(j) * P(i - j);
         for (long j = 0; j < w.right.size(); ++j) d += w.right(j) * P(i + 1 + j);
@@ -260,15 +257,18 @@ LocalitySpline interpolate(const PointList& points, const Options& o) {
     for (long i = -1; i <= N - 1; ++i) extra.row(i + 1) = extra_point(i);
     const KnotRelation rel = knot_relation(o.form);
     Eigen::MatrixXd control(2 * N + 1, points.cols());
-    for (long i = 0; i <= N; ++i) control.row(2 * i) = extra.row(i);   // d_{2i−1}
-    for (long i = 0; i < N; ++i)   // eq (3) / (7)
+    for (long i = 0; i <= N; ++i) control.row(2 * i) = extra.row(i);  // d_{2i−1}
+    for (long i = 0; i < N; ++i)                                      // eq (3) / (7)
         control.row(2 * i + 1) = (P(i) - rel.side * (extra.row(i) + extra.row(i + 1))) / rel.centre;
     std::vector<double> knots;
-    if (o.form == SplineForm::b2_spline) {   // u_j = j/2: cubic, knots spaced 1/2
+    if (o.form == SplineForm::b2_spline) {  // u_j = j/2: cubic, knots spaced 1/2
         for (long k = 0; k < 2 * N + 5; ++k) knots.push_back(-1.5 + 0.5 * static_cast<double>(k));
-    } else {                                 // quartic, every integer knot double
+    } else {  // quartic, every integer knot double
         knots.push_back(-2.0);
-        for (long k = -1; k <= N; ++k) { knots.push_back(double(k)); knots.push_back(double(k)); }
+        for (long k = -1; k <= N; ++k) {
+            knots.push_back(double(k));
+            knots.push_back(double(k));
+        }
         knots.push_back(double(N + 1));
     }
     const int degree = o.form == SplineForm::b2_spline ? 3 : 4;
@@ -281,10 +281,8 @@ Eigen::RowVectorXd extended_point(const PointList& points, const Options& o, lon
 }
 
 BSplineCurve interpolating_blending_function(SplineForm form, int m) {
-    if (m < 0 || m > kMaxLocality)
-        fail_input("cagd::locality::interpolating_blending_function",
-                   "m = " + std::to_string(m) + " outside [0, " + std::to_string(kMaxLocality) + "]");
-    const int half = m + 3;   // zeros beyond ±(m+1) keep the natural virtual points zero
+    if (m < 0 || m > kMaxLocality) fail_input("cagd::locality::interpolating_blending_function", "m = " + std::to_string(m) + " outside [0, " + std::to_string(kMaxLocality) + "]");
+    const int half = m + 3;  // zeros beyond ±(m+1) keep the natural virtual points zero
     PointList p = PointList::Zero(2 * half + 1, 2);
     for (int k = 0; k <= 2 * half; ++k) p(k, 0) = k - half;
     p(half, 1) = 1.0;
@@ -305,7 +303,7 @@ BSplineCurve cubic_bspline_interpolant(const PointList& points, bool closed) {
     std::vector<Eigen::Triplet<double>> t;
     Eigen::MatrixXd rhs = 6.0 * points;
     for (long i = 0; i < n; ++i) {
-        if (!closed && (i == 0 || i == n - 1)) {   // natural: c_{−1} = 2c_0 − c_1 ⇒ 6c_0 = 6p_0
+        if (!closed && (i == 0 || i == n - 1)) {  // natural: c_{−1} = 2c_0 − c_1 ⇒ 6c_0 = 6p_0
             t.emplace_back(i, i, 6.0);
             continue;
         }

@@ -53,23 +53,23 @@ using MVector = std::vector<SegmentLocality>;
 enum class EndKind { natural, tangent, bessel };
 struct EndCondition {
     EndKind kind = EndKind::natural;
-    Eigen::VectorXd tangent;   // used by EndKind::tangent
+    Eigen::VectorXd tangent;  // used by EndKind::tangent
 };
 
 enum class ExtraPointRule { locality, method_I, method_IIa, fmill };
 
 struct Options {
     SplineForm form = SplineForm::s_spline;
-    MVector m = MVector(1, SegmentLocality{2, 2});   // one entry (all segments) or one per segment
+    MVector m = MVector(1, SegmentLocality{2, 2});  // one entry (all segments) or one per segment
     bool closed = false;
     EndCondition start, end;
     ExtraPointRule rule = ExtraPointRule::locality;
 };
 
 struct LocalitySpline {
-    BSplineCurve curve;                // parameter u ∈ [0, n−1] (open) or [0, n] (closed)
-    Eigen::MatrixXd extra_points;      // d_{2i+1} for segments i = −1 .. n−1 (open), 0..n (closed)
-    int first_segment = -1;            // segment index of extra_points row 0
+    BSplineCurve curve;            // parameter u ∈ [0, n−1] (open) or [0, n] (closed)
+    Eigen::MatrixXd extra_points;  // d_{2i+1} for segments i = −1 .. n−1 (open), 0..n (closed)
+    int first_segment = -1;        // segment index of extra_points row 0
 };
 
 constexpr int kMaxLocality = 1000;

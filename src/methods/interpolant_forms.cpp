@@ -45,8 +45,7 @@ Interpolant catmull_rom_interpolant(const PointList& p, bool closed) {
     const Eigen::Index n = p.rows(), spans = closed ? n : n - 1;
     std::vector<double> h;
     for (Eigen::Index k = 0; k < spans; ++k)
-        h.push_back((k + 1 == n ? cr.max_parameter() : cr.parameter_at_point(static_cast<std::size_t>(k + 1))) -
-                    cr.parameter_at_point(static_cast<std::size_t>(k)));
+        h.push_back((k + 1 == n ? cr.max_parameter() : cr.parameter_at_point(static_cast<std::size_t>(k + 1))) - cr.parameter_at_point(static_cast<std::size_t>(k)));
     Eigen::MatrixXd slopes(n, p.cols());
     for (Eigen::Index k = 0; k < n; ++k) {
         // prime at the last open node is the last span's end derivative (Boost evaluates the span
@@ -82,16 +81,10 @@ Interpolant hermite_from_slopes(const PointList& p, const Eigen::MatrixXd& slope
     return unit_span_interpolant(std::make_shared<spline::PiecewiseHermiteCurve>(nodes, d0, d1), spans + 1, h);
 }
 
-Interpolant boost_pchip_interpolant(const PointList& p) {
-    return componentwise_chord_interpolant<boost::math::interpolators::pchip<std::vector<double>>>(p);
-}
+Interpolant boost_pchip_interpolant(const PointList& p) { return componentwise_chord_interpolant<boost::math::interpolators::pchip<std::vector<double>>>(p); }
 
-Interpolant boost_makima_interpolant(const PointList& p) {
-    return componentwise_chord_interpolant<boost::math::interpolators::makima<std::vector<double>>>(p);
-}
+Interpolant boost_makima_interpolant(const PointList& p) { return componentwise_chord_interpolant<boost::math::interpolators::makima<std::vector<double>>>(p); }
 
-Interpolant boost_catmull_rom_interpolant(const PointList& p, bool closed) {
-    return p.cols() == 2 ? catmull_rom_interpolant<2>(p, closed) : catmull_rom_interpolant<3>(p, closed);
-}
+Interpolant boost_catmull_rom_interpolant(const PointList& p, bool closed) { return p.cols() == 2 ? catmull_rom_interpolant<2>(p, closed) : catmull_rom_interpolant<3>(p, closed); }
 
 }  // namespace cagd::methods

@@ -96,7 +96,7 @@ ParameterValues parse_parameter_values(const std::string& method, const std::vec
         const auto it = given.find(p.name);
         const bool is_given = it != given.end();
         const std::string text = is_given ? it->second : p.default_text;
-        if (text.empty()) continue;   // absent
+        if (text.empty()) continue;  // absent
         const auto bad = [&](const std::string& why) {
             fail_input(who, "--" + p.name + " '" + text + "'" + (is_given ? "" : " (default)") + ": " + why + "; allowed: " + p.domain());
         };

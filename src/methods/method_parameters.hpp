@@ -28,12 +28,12 @@ enum class ParameterType { integer, real, choice, text, vector };
 const char* to_string(ParameterType t);
 
 struct Parameter {
-    std::string name{};         // the option, without "--"
+    std::string name{};  // the option, without "--"
     ParameterType type = ParameterType::text;
-    std::string default_text{};   // as a user would type it; empty: absent unless given
-    double lower = -std::numeric_limits<double>::infinity();   // integer, real: inclusive range
+    std::string default_text{};                               // as a user would type it; empty: absent unless given
+    double lower = -std::numeric_limits<double>::infinity();  // integer, real: inclusive range
     double upper = std::numeric_limits<double>::infinity();
-    std::vector<std::string> choices{};                        // choice
+    std::vector<std::string> choices{};  // choice
     std::string help{};
 
     // "integer in [0, 1000]", "one of none | exact | approx", … for help texts and messages.
@@ -45,11 +45,11 @@ using ParameterText = std::map<std::string, std::string>;
 
 class ParameterValues {
 public:
-    bool has(const std::string& name) const;     // given, or has a default
-    bool given(const std::string& name) const;   // given explicitly
+    bool has(const std::string& name) const;    // given, or has a default
+    bool given(const std::string& name) const;  // given explicitly
     int integer(const std::string& name) const;
     double real(const std::string& name) const;
-    const std::string& text(const std::string& name) const;   // choice or text; "" when absent
+    const std::string& text(const std::string& name) const;  // choice or text; "" when absent
     const Eigen::VectorXd& vector(const std::string& name) const;
     // The values as text (defaults included), for messages and tables: "m=2, end=natural".
     std::string describe() const;

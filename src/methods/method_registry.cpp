@@ -65,13 +65,10 @@ const fairness::PseudoSplineTables& default_pseudo_spline_tables() {
 InterpolationResult build_pseudo_spline(const PointList& points, bool closed, const ParameterValues& v) {
     const auto mode = fairness::parse_tangent_optimization(v.text("optimize"));
     const auto make = [&](const fairness::PseudoSplineTables& t) { return fairness::pseudo_spline(points, t.oracle(), mode, closed); };
-    const fairness::PseudoSpline ps = v.has("table") ? make(fairness::PseudoSplineTables::from(fairness::PseudoEnergyTable::load(v.text("table"))))
-                                                     : make(default_pseudo_spline_tables());
-    InterpolationResult r = result_of(unit_span_interpolant(std::make_shared<spline::PiecewiseHermiteCurve>(ps.curve), node_count(points, closed),
-                                                            unit_lengths(points, closed)));
-    r.quantities = {{"length_from_tables", ps.length_from_tables()},
-                    {"area_from_tables", ps.area_from_tables()},
-                    {"pseudo_energy_from_tables", ps.pseudo_energy_from_tables()}};
+    const fairness::PseudoSpline ps =
+        v.has("table") ? make(fairness::PseudoSplineTables::from(fairness::PseudoEnergyTable::load(v.text("table")))) : make(default_pseudo_spline_tables());
+    InterpolationResult r = result_of(unit_span_interpolant(std::make_shared<spline::PiecewiseHermiteCurve>(ps.curve), node_count(points, closed), unit_lengths(points, closed)));
+    r.quantities = {{"length_from_tables", ps.length_from_tables()}, {"area_from_tables", ps.area_from_tables()}, {"pseudo_energy_from_tables", ps.pseudo_energy_from_tables()}};
     return r;
 }
 
@@ -90,11 +87,18 @@ InterpolationResult build_hermite(const PointList& points, bool closed, spline::
 
 std::vector<Parameter> locality_parameters() {
     std::vector<Parameter> p = {
-        {.name = "m", .type = P::integer, .default_text = "2", .lower = 0, .upper = locality::kMaxLocality,
+        {.name = "m",
+         .type = P::integer,
+         .default_text = "2",
+         .lower = 0,
+         .upper = locality::kMaxLocality,
          .help = "locality m for every segment (eq 12; m = 4, 5 truncated by eq 13)"},
         {.name = "m-vector", .type = P::text, .help = "one m per segment instead of --m, pairs as l:r, e.g. 1,2,1:3"},
         {.name = "end", .type = P::choice, .default_text = "natural", .choices = {"natural", "tangent", "bessel"}, .help = "end condition (section 3.3)"},
-        {.name = "rule", .type = P::choice, .default_text = "locality", .choices = {"locality", "I", "IIa", "fmill"},
+        {.name = "rule",
+         .type = P::choice,
+         .default_text = "locality",
+         .choices = {"locality", "I", "IIa", "fmill"},
          .help = "extra control point: locality (eq 12) | I (eq 15) | IIa (eq 16) | fmill (eq 17)"},
     };
     for (Parameter& t : tangent_parameters()) p.push_back(std::move(t));
@@ -102,8 +106,11 @@ std::vector<Parameter> locality_parameters() {
 }
 
 MethodClaims locality_claims(const ParameterValues& v) {
-    return {.parametric_continuity = 2, .geometric_continuity = 2, .parameter = "uniform",
-            .invariance = v.text("end") == "tangent" ? Invariance::none : Invariance::affine, .max_dimension = 3};
+    return {.parametric_continuity = 2,
+            .geometric_continuity = 2,
+            .parameter = "uniform",
+            .invariance = v.text("end") == "tangent" ? Invariance::none : Invariance::affine,
+            .max_dimension = 3};
 }
 
 InterpolationResult build_locality(const PointList& points, bool closed, const ParameterValues& v, locality::SplineForm form) {
@@ -111,12 +118,14 @@ InterpolationResult build_locality(const PointList& points, bool closed, const P
     locality::Options o;
     o.form = form;
     if (v.given("m") && v.has("m-vector")) fail_input(who, "give --m or --m-vector, not both");
-    if (v.has("m-vector")) o.m = locality::parse_m_vector(v.text("m-vector"));
-    else o.m = {{v.integer("m"), v.integer("m")}};
+    if (v.has("m-vector"))
+        o.m = locality::parse_m_vector(v.text("m-vector"));
+    else
+        o.m = {{v.integer("m"), v.integer("m")}};
     o.closed = closed;
     const std::string& rule = v.text("rule");
-    o.rule = rule == "I" ? locality::ExtraPointRule::method_I
-             : rule == "IIa" ? locality::ExtraPointRule::method_IIa
+    o.rule = rule == "I"       ? locality::ExtraPointRule::method_I
+             : rule == "IIa"   ? locality::ExtraPointRule::method_IIa
              : rule == "fmill" ? locality::ExtraPointRule::fmill
                                : locality::ExtraPointRule::locality;
     const std::string& end = v.text("end");
@@ -146,10 +155,9 @@ InterpolationResult build_hosaka(const PointList& points, bool closed, const Par
         o.end_tangent = v.vector("end-tangent");
     }
     const int m = v.integer("m");
-    auto c = m == 1 ? std::make_shared<spline::HosakaCurve>(spline::hosaka_c2_spline(points, o).curve)
-                    : std::make_shared<spline::HosakaCurve>(spline::hosaka_spline(points, m, o));
-    return result_of(unit_span_interpolant(std::move(c), node_count(points, closed),
-                                           o.scale == spline::HosakaScale::chord ? chord_lengths(points, closed) : unit_lengths(points, closed)));
+    auto c = m == 1 ? std::make_shared<spline::HosakaCurve>(spline::hosaka_c2_spline(points, o).curve) : std::make_shared<spline::HosakaCurve>(spline::hosaka_spline(points, m, o));
+    return result_of(
+        unit_span_interpolant(std::move(c), node_count(points, closed), o.scale == spline::HosakaScale::chord ? chord_lengths(points, closed) : unit_lengths(points, closed)));
 }
 
 // ---- curvature_profile --------------------------------------------------------------------
@@ -163,8 +171,8 @@ InterpolationResult build_curvature_profile(const PointList& points, bool closed
     const std::vector<SegmentShape> span_shapes =
         v.has("spans") ? parse_span_shapes(v.text("spans")) : std::vector<SegmentShape>(static_cast<std::size_t>(spans), SegmentShape::free);
     if (static_cast<int>(span_shapes.size()) != spans)
-        fail_input(who, "--spans gives " + std::to_string(span_shapes.size()) + " shapes but the " + std::to_string(points.rows()) + " points make " +
-                            std::to_string(spans) + " spans");
+        fail_input(who,
+                   "--spans gives " + std::to_string(span_shapes.size()) + " shapes but the " + std::to_string(points.rows()) + " points make " + std::to_string(spans) + " spans");
     const KnotLayout layout = knots.empty() ? span_layout(span_shapes) : parse_knot_difference_list(knots, v.has("degree") ? v.integer("degree") : 2).layout;
     CurvatureProfileProblem problem{points, layout, segment_shapes(layout, span_shapes), {}, closed, 0};
     add_natural_open_ends(problem);
@@ -179,8 +187,7 @@ InterpolationResult build_curvature_profile(const PointList& points, bool closed
     }
     if (!sol.outcome.ok() || !sol.curve) return r;
     const int m = design_equations(problem), N = design_unknowns(problem);
-    r.log.push_back("equations," + std::to_string(m) + ",unknowns," + std::to_string(N) + ",rank," +
-                    (sol.rank < 0 ? std::string("full (sparse LU)") : std::to_string(sol.rank)) +
+    r.log.push_back("equations," + std::to_string(m) + ",unknowns," + std::to_string(N) + ",rank," + (sol.rank < 0 ? std::string("full (sparse LU)") : std::to_string(sol.rank)) +
                     (m < N || (sol.rank >= 0 && sol.rank < N) ? ",minimum-norm Newton steps chose one of several solutions" : ""));
     // Four decimals as the paper prints, more where the shortest span needs them to stay nonzero.
     const std::vector<double> lengths = sol.segment_lengths();
@@ -197,8 +204,13 @@ InterpolationResult build_curvature_profile(const PointList& points, bool closed
 // ---- Boost.Math peers ---------------------------------------------------------------------
 
 MethodClaims boost_componentwise_claims(const ParameterValues&) {
-    return {.parametric_continuity = 1, .parameter = "chord length", .invariance = Invariance::translation_scale, .supports_closed = false,
-            .min_points = 4, .min_points_closed = 0, .max_dimension = 3};
+    return {.parametric_continuity = 1,
+            .parameter = "chord length",
+            .invariance = Invariance::translation_scale,
+            .supports_closed = false,
+            .min_points = 4,
+            .min_points_closed = 0,
+            .max_dimension = 3};
 }
 
 std::vector<Method> make_registry() {
@@ -209,14 +221,17 @@ std::vector<Method> make_registry() {
         .paper = "pseudo_energy",
         .source = "eq (4)-(12), sec 4.1-4.2",
         .summary = "cubic Hermite spline of minimum pseudo-energy from a J, r0, r1 table; tangents by the 3-point pseudo-elastic rod",
-        .parameters = {{.name = "optimize", .type = P::choice, .default_text = "exact", .choices = {"none", "exact", "approx"},
+        .parameters = {{.name = "optimize",
+                        .type = P::choice,
+                        .default_text = "exact",
+                        .choices = {"none", "exact", "approx"},
                         .help = "tangent optimisation of eq (12): none, exact (Brent) or approx (3-point parabola, Table 4)"},
-                       {.name = "table", .type = P::text,
-                        .help = "pseudo-energy table written by cagd energy-table (absent: the 36-node fast table, built in memory)"}},
-        .claims = [](const ParameterValues& v) {
-            return MethodClaims{.geometric_continuity = 1, .parameter = "u (unit spans)",
-                                .invariance = v.text("optimize") == "exact" ? Invariance::none : Invariance::similarity};
-        },
+                       {.name = "table", .type = P::text, .help = "pseudo-energy table written by cagd energy-table (absent: the 36-node fast table, built in memory)"}},
+        .claims =
+            [](const ParameterValues& v) {
+                return MethodClaims{
+                    .geometric_continuity = 1, .parameter = "u (unit spans)", .invariance = v.text("optimize") == "exact" ? Invariance::none : Invariance::similarity};
+            },
         .build = build_pseudo_spline,
         .presets = {{"pseudo-spline-none", {{"optimize", "none"}}}, {"pseudo-spline-exact", {{"optimize", "exact"}}}, {"pseudo-spline-approx", {{"optimize", "approx"}}}},
     });
@@ -274,10 +289,13 @@ std::vector<Method> make_registry() {
         .presets = {{"b2-spline-m1", {{"m", "1"}}}, {"b2-spline-m2", {{"m", "2"}}}, {"b2-spline-m4", {{"m", "4"}}}},
     });
     std::vector<Parameter> hosaka_parameters = {
-        {.name = "m", .type = P::integer, .default_text = "1", .lower = 1, .upper = kMaxHosakaOrder,
+        {.name = "m",
+         .type = P::integer,
+         .default_text = "1",
+         .lower = 1,
+         .upper = kMaxHosakaOrder,
          .help = "segment order m: segments of degree 2m+1, continuous to order 2m (m = 1: eq 18-20)"},
-        {.name = "scale", .type = P::choice, .default_text = "chord", .choices = {"chord", "unit"},
-         .help = "scale factors: chord (k_i = |A_i|/|A_i+1|, eq 19) or unit (k_i = 1)"},
+        {.name = "scale", .type = P::choice, .default_text = "chord", .choices = {"chord", "unit"}, .help = "scale factors: chord (k_i = |A_i|/|A_i+1|, eq 19) or unit (k_i = 1)"},
         {.name = "end", .type = P::choice, .default_text = "natural", .choices = {"natural", "tangent"}, .help = "end condition"},
     };
     for (Parameter& t : tangent_parameters()) hosaka_parameters.push_back(std::move(t));
@@ -287,12 +305,17 @@ std::vector<Method> make_registry() {
         .source = "eq (15), (18)-(20), sec 3",
         .summary = "generalised Hermite spline with scale factors, C2 (order m: C^2m)",
         .parameters = std::move(hosaka_parameters),
-        .claims = [](const ParameterValues& v) {
-            const bool chord = v.text("scale") == "chord";
-            return MethodClaims{.parametric_continuity = 2, .geometric_continuity = 2, .parameter = chord ? "chord length" : "uniform",
-                                .invariance = v.text("end") == "tangent" ? Invariance::none : chord ? Invariance::similarity : Invariance::affine,
-                                .max_dimension = 3};
-        },
+        .claims =
+            [](const ParameterValues& v) {
+                const bool chord = v.text("scale") == "chord";
+                return MethodClaims{.parametric_continuity = 2,
+                                    .geometric_continuity = 2,
+                                    .parameter = chord ? "chord length" : "uniform",
+                                    .invariance = v.text("end") == "tangent" ? Invariance::none
+                                                  : chord                    ? Invariance::similarity
+                                                                             : Invariance::affine,
+                                    .max_dimension = 3};
+            },
         .build = build_hosaka,
         .presets = {{"hosaka-c2-chord", {{"scale", "chord"}}}, {"hosaka-c2-unit", {{"scale", "unit"}}}},
     });
@@ -302,10 +325,8 @@ std::vector<Method> make_registry() {
         .source = "sec 2-4, eq (2)-(4)",
         .summary = "curvature piecewise polynomial in arc length (all spans free: a clothoid spline), natural open ends",
         .parameters = {{.name = "spans", .type = P::text, .help = "one shape per span, free | line | arc | clothoid, e.g. line,free,arc (absent: all free)"},
-                       {.name = "knots", .type = P::text,
-                        .help = "knot-difference list of psi, e.g. \"{0, S0, 0, {S1, S2}, S3, 0}\" (absent: from --spans, degree 2)"},
-                       {.name = "degree", .type = P::integer, .lower = 2, .upper = 3,
-                        .help = "degree of psi for --knots: 2 (clothoid) or 3 (the paper's cubic; absent: 2)"}},
+                       {.name = "knots", .type = P::text, .help = "knot-difference list of psi, e.g. \"{0, S0, 0, {S1, S2}, S3, 0}\" (absent: from --spans, degree 2)"},
+                       {.name = "degree", .type = P::integer, .lower = 2, .upper = 3, .help = "degree of psi for --knots: 2 (clothoid) or 3 (the paper's cubic; absent: 2)"}},
         .claims = fixed({.parametric_continuity = 2, .geometric_continuity = 2, .parameter = "arc length", .invariance = Invariance::similarity}),
         .build = build_curvature_profile,
     });
@@ -330,8 +351,12 @@ std::vector<Method> make_registry() {
         .paper = "Boost.Math",
         .source = "boost::math::catmull_rom, centripetal (alpha = 1/2)",
         .summary = "centripetal Catmull-Rom spline (a peer)",
-        .claims = fixed({.parametric_continuity = 1, .parameter = "centripetal (sum of sqrt chord)", .invariance = Invariance::similarity, .min_points = 4,
-                         .min_points_closed = 4, .max_dimension = 3}),
+        .claims = fixed({.parametric_continuity = 1,
+                         .parameter = "centripetal (sum of sqrt chord)",
+                         .invariance = Invariance::similarity,
+                         .min_points = 4,
+                         .min_points_closed = 4,
+                         .max_dimension = 3}),
         .build = [](const PointList& p, bool closed, const ParameterValues&) { return result_of(boost_catmull_rom_interpolant(p, closed)); },
     });
     return r;
@@ -373,7 +398,7 @@ InterpolationResult interpolate(const Method& method, const PointList& points, b
         fail_input(who, "needs points of dimension 2" + std::string(claims.max_dimension == 3 ? " or 3" : "") + ", got " + std::to_string(points.cols()));
     try {
         return method.build(points, closed, values);
-    } catch (const std::domain_error& e) {   // Boost.Math's own precondition checks
+    } catch (const std::domain_error& e) {  // Boost.Math's own precondition checks
         fail_input(who, std::string("Boost.Math refused the points: ") + e.what());
     }
 }
@@ -383,7 +408,7 @@ InterpolationResult interpolate(const std::string& name, const PointList& points
         for (const Preset& p : m.presets)
             if (p.name == name) {
                 ParameterText merged = values;
-                merged.insert(p.values.begin(), p.values.end());   // keeps what `values` gives
+                merged.insert(p.values.begin(), p.values.end());  // keeps what `values` gives
                 return interpolate(m, points, closed, parse_parameter_values(m.name, m.parameters, merged));
             }
     const Method& m = find_method(name);
@@ -449,8 +474,7 @@ std::string claims_text(const MethodClaims& c) {
 
 std::string parameters_text(const Method& m, const char* separator) {
     std::string s;
-    for (const Parameter& p : m.parameters)
-        s += (s.empty() ? "" : separator) + std::string("--") + p.name + (p.default_text.empty() ? "" : " " + p.default_text);
+    for (const Parameter& p : m.parameters) s += (s.empty() ? "" : separator) + std::string("--") + p.name + (p.default_text.empty() ? "" : " " + p.default_text);
     return s.empty() ? "none" : s;
 }
 
@@ -476,8 +500,7 @@ std::string registry_listing() {
         for (const std::string& a : m.aliases) s += " (alias " + a + ")";
         s += "  [" + m.paper + " " + m.source + "]  " + m.summary + "\n";
         s += "    claims: " + claims_text(m.claims(parse_parameter_values(m.name, m.parameters, {}))) + "\n";
-        for (const Parameter& p : m.parameters)
-            s += "    --" + p.name + "  " + p.domain() + (p.default_text.empty() ? "" : ", default " + p.default_text) + ": " + p.help + "\n";
+        for (const Parameter& p : m.parameters) s += "    --" + p.name + "  " + p.domain() + (p.default_text.empty() ? "" : ", default " + p.default_text) + ": " + p.help + "\n";
     }
     return s;
 }

@@ -63,24 +63,24 @@ enum class Invariance { none, translation_scale, similarity, affine };
 const char* to_string(Invariance i);
 
 struct MethodClaims {
-    int parametric_continuity = 0;   // k of "C^k in τ" (0: not claimed)
-    int geometric_continuity = 0;    // k of "G^k" (0: not claimed)
-    std::string parameter{};           // what τ is
+    int parametric_continuity = 0;  // k of "C^k in τ" (0: not claimed)
+    int geometric_continuity = 0;   // k of "G^k" (0: not claimed)
+    std::string parameter{};        // what τ is
     Invariance invariance = Invariance::none;
     bool supports_closed = true;
     int min_points = 2, min_points_closed = 3;
-    int max_dimension = 2;           // 2 or 3
+    int max_dimension = 2;  // 2 or 3
 };
 
 struct Interpolant {
     std::shared_ptr<const Curve> curve;
-    std::vector<double> node_parameters;   // u of each data point (closed: n + 1 values, the last = t_max)
-    std::vector<double> dtau_du;           // one per span (see above)
+    std::vector<double> node_parameters;  // u of each data point (closed: n + 1 values, the last = t_max)
+    std::vector<double> dtau_du;          // one per span (see above)
 };
 
 struct InterpolationResult {
     Outcome outcome;
-    std::optional<Interpolant> interpolant;   // present when outcome.ok()
+    std::optional<Interpolant> interpolant;  // present when outcome.ok()
     // What the method reports besides the curve, as "key,value…" lines (the curvature-profile
     // Newton history and its knot-difference list), in the order computed.
     std::vector<std::string> log;
@@ -90,28 +90,28 @@ struct InterpolationResult {
 };
 
 struct Preset {
-    std::string name{};     // e.g. "s-spline-m2"
+    std::string name{};  // e.g. "s-spline-m2"
     ParameterText values{};
 };
 
 struct Method {
     std::string name{};
-    std::vector<std::string> aliases{};   // older names still accepted
-    std::string paper{};                  // paper id, or "Boost.Math"
-    std::string source{};                 // equations and sections, or the Boost.Math class
-    std::string summary{};                // one line for help texts and the README table
+    std::vector<std::string> aliases{};  // older names still accepted
+    std::string paper{};                 // paper id, or "Boost.Math"
+    std::string source{};                // equations and sections, or the Boost.Math class
+    std::string summary{};               // one line for help texts and the README table
     std::vector<Parameter> parameters{};
     std::function<MethodClaims(const ParameterValues&)> claims{};
     // Builds the curve through points already checked against the claims.
     std::function<InterpolationResult(const PointList&, bool closed, const ParameterValues&)> build{};
-    std::vector<Preset> presets{};   // the comparison's configurations; none: the defaults, by name
+    std::vector<Preset> presets{};  // the comparison's configurations; none: the defaults, by name
 };
 
 // Every method, in the order of the tables.
 const std::vector<Method>& registry();
 // By name or alias; throws InvalidInput listing the known names.
 const Method& find_method(const std::string& name);
-std::vector<std::string> method_names();   // names and aliases, for a command line's choices
+std::vector<std::string> method_names();  // names and aliases, for a command line's choices
 
 // Checks the points against the method's claims (count, dimension, closed, finiteness,
 // coincident neighbours), then builds the curve.
@@ -125,7 +125,7 @@ struct Configuration {
     const Method* method = nullptr;
     ParameterValues values;
     MethodClaims claims;
-    std::string source() const;   // the method's source, and the preset's values
+    std::string source() const;  // the method's source, and the preset's values
 };
 // Every configuration, in registry order: a method's presets, or the method itself.
 const std::vector<Configuration>& configurations();

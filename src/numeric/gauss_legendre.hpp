@@ -16,12 +16,11 @@ class GaussLegendreRule {
 public:
     explicit GaussLegendreRule(int n);
     int size() const { return static_cast<int>(nodes_.size()); }
-    const std::vector<double>& nodes() const { return nodes_; }     // ascending, in (−1, 1)
+    const std::vector<double>& nodes() const { return nodes_; }  // ascending, in (−1, 1)
     const std::vector<double>& weights() const { return weights_; }
     double integrate(const std::function<double(double)>& f, double a, double b) const;
     // Sum of integrals over consecutive intervals [breaks[k], breaks[k+1]].
-    double integrate_piecewise(const std::function<double(double)>& f,
-                               const std::vector<double>& breaks) const;
+    double integrate_piecewise(const std::function<double(double)>& f, const std::vector<double>& breaks) const;
 
 private:
     std::vector<double> nodes_, weights_;

@@ -11,7 +11,6 @@
 
 namespace cagd::numeric {
 
-Eigen::MatrixXd solve_symmetric_pentadiagonal(const std::vector<double>& diag, const std::vector<double>& first, const std::vector<double>& second,
-                                              Eigen::MatrixXd rhs);
+Eigen::MatrixXd solve_symmetric_pentadiagonal(const std::vector<double>& diag, const std::vector<double>& first, const std::vector<double>& second, Eigen::MatrixXd rhs);
 
 }  // namespace cagd::numeric

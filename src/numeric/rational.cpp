@@ -8,8 +8,7 @@ namespace cagd::numeric {
 
 Fraction simplest_fraction_within(double x, double tol) {
     if (!std::isfinite(x) || !(tol > 0.0))
-        fail_input("cagd::numeric::simplest_fraction_within",
-                   "needs finite x and tol > 0, got x = " + full_precision(x) + ", tol = " + full_precision(tol));
+        fail_input("cagd::numeric::simplest_fraction_within", "needs finite x and tol > 0, got x = " + full_precision(x) + ", tol = " + full_precision(tol));
     const double lo = x - tol, hi = x + tol;
     const auto fl = static_cast<std::int64_t>(std::floor(lo));
     if (std::ceil(lo) <= hi) return {static_cast<std::int64_t>(std::ceil(lo)), 1};
@@ -18,9 +17,14 @@ Fraction simplest_fraction_within(double x, double tol) {
     for (int guard = 0; guard < 100000; ++guard) {
         const std::int64_t p = a + c, q = b + d;
         const double v = double(p) / double(q);
-        if (v < lo) { a = p; b = q; }
-        else if (v > hi) { c = p; d = q; }
-        else return {p, q};
+        if (v < lo) {
+            a = p;
+            b = q;
+        } else if (v > hi) {
+            c = p;
+            d = q;
+        } else
+            return {p, q};
     }
     fail_input("cagd::numeric::simplest_fraction_within", "tolerance " + full_precision(tol) + " too small");
 }

@@ -21,15 +21,14 @@ namespace cagd::numeric {
 
 struct RombergResult {
     double value = 0.0;
-    double error_estimate = 0.0;   // |R(k,k) − R(k−1,k−1)| at the last level
-    int levels = 0;                // k reached
+    double error_estimate = 0.0;  // |R(k,k) − R(k−1,k−1)| at the last level
+    int levels = 0;               // k reached
     long evaluations = 0;
     Outcome outcome;
 };
 
 // Preconditions: a, b finite; rel_tol > 0; abs_tol ≥ 0; 2 ≤ max_levels ≤ 30.
-RombergResult romberg(const std::function<double(double)>& f, double a, double b,
-                      double rel_tol = 1e-12, double abs_tol = 0.0, int max_levels = 24);
+RombergResult romberg(const std::function<double(double)>& f, double a, double b, double rel_tol = 1e-12, double abs_tol = 0.0, int max_levels = 24);
 
 // The same scheme for N integrals sharing one integrand evaluation, f(t) → std::array<double, N>:
 // converged when every component meets the test above at two consecutive levels, with the
@@ -44,16 +43,13 @@ struct RombergVectorResult {
 };
 
 template <std::size_t N, class F>
-RombergVectorResult<N> romberg_vector(const F& f, double a, double b, double rel_tol = 1e-12,
-                                      double abs_tol = 0.0, int max_levels = 24) {
+RombergVectorResult<N> romberg_vector(const F& f, double a, double b, double rel_tol = 1e-12, double abs_tol = 0.0, int max_levels = 24) {
     using Row = std::vector<std::array<double, N>>;
     const std::string who = "cagd::numeric::romberg_vector";
-    if (!std::isfinite(a) || !std::isfinite(b))
-        fail_input(who, "interval [" + full_precision(a) + ", " + full_precision(b) + "] must be finite");
+    if (!std::isfinite(a) || !std::isfinite(b)) fail_input(who, "interval [" + full_precision(a) + ", " + full_precision(b) + "] must be finite");
     if (!(rel_tol > 0.0)) fail_input(who, "rel_tol must be > 0, got " + full_precision(rel_tol));
     if (!(abs_tol >= 0.0)) fail_input(who, "abs_tol must be >= 0, got " + full_precision(abs_tol));
-    if (max_levels < 2 || max_levels > 30)
-        fail_input(who, "max_levels must be in [2, 30], got " + std::to_string(max_levels));
+    if (max_levels < 2 || max_levels > 30) fail_input(who, "max_levels must be in [2, 30], got " + std::to_string(max_levels));
     RombergVectorResult<N> r;
     const double h0 = b - a;
     const std::array<double, N> fa = f(a), fb = f(b);
@@ -85,8 +81,7 @@ RombergVectorResult<N> romberg_vector(const F& f, double a, double b, double rel
         double factor = 1.0;
         for (int j = 1; j <= k; ++j) {
             factor *= 4.0;
-            for (std::size_t c = 0; c < N; ++c)
-                cur[j][c] = cur[j - 1][c] + (cur[j - 1][c] - prev[j - 1][c]) / (factor - 1.0);
+            for (std::size_t c = 0; c < N; ++c) cur[j][c] = cur[j - 1][c] + (cur[j - 1][c] - prev[j - 1][c]) / (factor - 1.0);
         }
         bool small = true;
         for (std::size_t c = 0; c < N; ++c) {

@@ -28,7 +28,10 @@ public:
     TaylorJet& operator+=(const TaylorJet& b);
     TaylorJet& operator-=(const TaylorJet& b);
     TaylorJet& operator*=(double s);
-    TaylorJet& operator+=(double s) { a_[0] += s; return *this; }
+    TaylorJet& operator+=(double s) {
+        a_[0] += s;
+        return *this;
+    }
 
 private:
     std::vector<double> a_;
@@ -42,7 +45,7 @@ TaylorJet operator-(TaylorJet a, const TaylorJet& b);
 TaylorJet operator*(const TaylorJet& a, const TaylorJet& b);
 TaylorJet operator*(TaylorJet a, double s);
 TaylorJet operator*(double s, TaylorJet a);
-TaylorJet reciprocal(const TaylorJet& a);   // 1/f
+TaylorJet reciprocal(const TaylorJet& a);    // 1/f
 TaylorJet power(const TaylorJet& a, int n);  // f^n, any integer n (n < 0 via the reciprocal)
 // g(f(x)) from the derivatives of g at f(x0): outer_derivatives[r] = g^{(r)}(f(x0)), r = 0..N
 // (fewer entries: the missing derivatives are taken as zero, right for a polynomial g).

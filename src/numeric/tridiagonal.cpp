@@ -6,13 +6,12 @@
 
 namespace cagd::numeric {
 
-Eigen::MatrixXd solve_tridiagonal(const std::vector<double>& sub, const std::vector<double>& diag, const std::vector<double>& sup,
-                                  Eigen::MatrixXd rhs) {
+Eigen::MatrixXd solve_tridiagonal(const std::vector<double>& sub, const std::vector<double>& diag, const std::vector<double>& sup, Eigen::MatrixXd rhs) {
     const char* who = "cagd::numeric::solve_tridiagonal";
     const std::size_t n = diag.size();
     if (n == 0 || sub.size() != n || sup.size() != n || static_cast<std::size_t>(rhs.rows()) != n)
         fail_input(who, "needs sub, diag, sup and the right-hand side of one length n >= 1");
-    std::vector<double> c(n);   // modified super-diagonal
+    std::vector<double> c(n);  // modified super-diagonal
     double pivot = diag[0];
     for (std::size_t r = 0; r < n; ++r) {
         if (r > 0) {

@@ -10,7 +10,6 @@
 
 namespace cagd::numeric {
 
-Eigen::MatrixXd solve_tridiagonal(const std::vector<double>& sub, const std::vector<double>& diag, const std::vector<double>& sup,
-                                  Eigen::MatrixXd rhs);
+Eigen::MatrixXd solve_tridiagonal(const std::vector<double>& sub, const std::vector<double>& diag, const std::vector<double>& sup, Eigen::MatrixXd rhs);
 
 }  // namespace cagd::numeric

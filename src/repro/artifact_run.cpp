@@ -25,43 +25,37 @@ const char* to_string(ClaimStatus s) {
     return "failed";
 }
 
-ClaimStatus classify(const ReferenceRow& row, double ours, std::optional<double> ours_corrected,
-                     bool erratum_documented) {
+ClaimStatus classify(const ReferenceRow& row, double ours, std::optional<double> ours_corrected, bool erratum_documented) {
     if (!std::isfinite(ours)) return ClaimStatus::failed;
     if (std::abs(ours - row.paper_value) <= row.tolerance) return ClaimStatus::reproduced;
     if (row.erratum.empty() || !erratum_documented) return ClaimStatus::failed;
-    if (row.corrected_value)
-        return std::abs(ours - *row.corrected_value) <= row.tolerance ? ClaimStatus::deviates
-                                                                      : ClaimStatus::failed;
-    if (ours_corrected && std::abs(*ours_corrected - row.paper_value) <= row.tolerance)
-        return ClaimStatus::deviates;
+    if (row.corrected_value) return std::abs(ours - *row.corrected_value) <= row.tolerance ? ClaimStatus::deviates : ClaimStatus::failed;
+    if (ours_corrected && std::abs(*ours_corrected - row.paper_value) <= row.tolerance) return ClaimStatus::deviates;
     return ClaimStatus::failed;
 }
 
-ArtifactRun::ArtifactRun(std::string paper, std::string artifact, std::string section,
-                         std::string title, int argc, char** argv)
-    : paper_(std::move(paper)), artifact_(std::move(artifact)), section_(std::move(section)),
-      title_(std::move(title)), root_(CAGD_SOURCE_DIR) {
+ArtifactRun::ArtifactRun(std::string paper, std::string artifact, std::string section, std::string title, int argc, char** argv)
+    : paper_(std::move(paper)), artifact_(std::move(artifact)), section_(std::move(section)), title_(std::move(title)), root_(CAGD_SOURCE_DIR) {
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
-        if (a == "--check") check_mode_ = true;
-        else if (a == "--root" && i + 1 < argc) root_ = argv[++i];
-        else fail_input("experiment " + paper_ + "/" + artifact_,
-                        "unknown argument '" + a + "' (allowed: --check, --root DIR)");
+        if (a == "--check")
+            check_mode_ = true;
+        else if (a == "--root" && i + 1 < argc)
+            root_ = argv[++i];
+        else
+            fail_input("experiment " + paper_ + "/" + artifact_, "unknown argument '" + a + "' (allowed: --check, --root DIR)");
     }
     reference_ = load_reference(root_ + "/reference/" + paper_ + "/" + artifact_ + ".csv");
     for (const auto& id : load_erratum_ids(root_ + "/reference/ERRATA.md")) errata_.insert(id);
-    out_dir_ = check_mode_ ? (fs::temp_directory_path() / ("cagd-check-" + paper_ + "-" + artifact_)).string()
-                           : root_ + "/results/" + paper_;
+    out_dir_ = check_mode_ ? (fs::temp_directory_path() / ("cagd-check-" + paper_ + "-" + artifact_)).string() : root_ + "/results/" + paper_;
     fs::create_directories(out_dir_);
 }
 
 void ArtifactRun::check(const std::string& short_id, double ours) {
     const ReferenceRow& row = reference_.row(paper_ + "." + short_id);
     const bool documented = !row.erratum.empty() && errata_.count(row.erratum) > 0;
-    records_.push_back({"claim", row.id, row.description, row.paper_value, ours, row.tolerance,
-                        row.paper_text, row.tolerance_reason, row.erratum,
-                        classify(row, ours, std::nullopt, documented)});
+    records_.push_back(
+        {"claim", row.id, row.description, row.paper_value, ours, row.tolerance, row.paper_text, row.tolerance_reason, row.erratum, classify(row, ours, std::nullopt, documented)});
 }
 
 void ArtifactRun::check(const std::string& short_id, double ours, double ours_corrected) {
@@ -71,18 +65,13 @@ void ArtifactRun::check(const std::string& short_id, double ours, double ours_co
     records_.back().status = classify(row, ours, ours_corrected, documented);
 }
 
-void ArtifactRun::validate(const std::string& short_id, const std::string& description, double fast,
-                           double reference_value, double tolerance, const std::string& reason) {
-    CheckRecord r{"validation", paper_ + "." + short_id, description, reference_value, fast,
-                  tolerance, format_number(reference_value), reason, "", ClaimStatus::failed};
-    if (std::isfinite(fast) && std::abs(fast - reference_value) <= tolerance)
-        r.status = ClaimStatus::reproduced;
+void ArtifactRun::validate(const std::string& short_id, const std::string& description, double fast, double reference_value, double tolerance, const std::string& reason) {
+    CheckRecord r{"validation", paper_ + "." + short_id, description, reference_value, fast, tolerance, format_number(reference_value), reason, "", ClaimStatus::failed};
+    if (std::isfinite(fast) && std::abs(fast - reference_value) <= tolerance) r.status = ClaimStatus::reproduced;
     records_.push_back(r);
 }
 
-void ArtifactRun::figure(const std::string& name, const std::string& caption) {
-    figures_.emplace_back(name, caption);
-}
+void ArtifactRun::figure(const std::string& name, const std::string& caption) { figures_.emplace_back(name, caption); }
 
 void ArtifactRun::note(const std::string& text) { notes_.push_back(text); }
 
@@ -92,22 +81,16 @@ std::string ArtifactRun::cache_path(const std::string& file_name) const {
     return (dir / file_name).string();
 }
 
-std::string ArtifactRun::reference_path(const std::string& file_name) const {
-    return root_ + "/reference/" + paper_ + "/" + file_name;
-}
+std::string ArtifactRun::reference_path(const std::string& file_name) const { return root_ + "/reference/" + paper_ + "/" + file_name; }
 
-std::string ArtifactRun::data_path(const std::string& file_name) const {
-    return out_dir_ + "/" + file_name;
-}
+std::string ArtifactRun::data_path(const std::string& file_name) const { return out_dir_ + "/" + file_name; }
 
-CsvWriter ArtifactRun::table(const std::string& file_name, const std::vector<std::string>& header) const {
-    return CsvWriter(data_path(file_name), header);
-}
+CsvWriter ArtifactRun::table(const std::string& file_name, const std::vector<std::string>& header) const { return CsvWriter(data_path(file_name), header); }
 
-void ArtifactRun::timing(const std::string& short_id, const std::string& description, const std::vector<std::string>& rows_used,
-                         double paper_ratio, double lo, double hi, double ours) {
+void ArtifactRun::timing(const std::string& short_id, const std::string& description, const std::vector<std::string>& rows_used, double paper_ratio, double lo, double hi,
+                         double ours) {
     for (const auto& r : rows_used) {
-        reference_.row(paper_ + "." + r);   // throws if the row does not exist
+        reference_.row(paper_ + "." + r);  // throws if the row does not exist
         timing_rows_.insert(paper_ + "." + r);
     }
     timings_.push_back({paper_ + "." + short_id, description, paper_ratio, lo, hi, ours});
@@ -119,30 +102,24 @@ int ArtifactRun::finish() {
         bool seen = timing_rows_.count(row.id) > 0;
         for (const auto& r : records_) seen = seen || (r.kind == "claim" && r.id == row.id);
         if (!seen)
-            records_.push_back({"claim", row.id, row.description + " (NOT COMPUTED by the experiment)",
-                                row.paper_value, std::nan(""), row.tolerance, row.paper_text,
+            records_.push_back({"claim", row.id, row.description + " (NOT COMPUTED by the experiment)", row.paper_value, std::nan(""), row.tolerance, row.paper_text,
                                 row.tolerance_reason, row.erratum, ClaimStatus::failed});
     }
     {
-        CsvWriter w(data_path(artifact_ + ".checks.csv"),
-                    {"kind", "id", "paper_value", "ours", "abs_diff", "tolerance", "status", "erratum",
-                     "description", "tolerance_reason"});
+        CsvWriter w(data_path(artifact_ + ".checks.csv"), {"kind", "id", "paper_value", "ours", "abs_diff", "tolerance", "status", "erratum", "description", "tolerance_reason"});
         for (const auto& r : records_)
-            w.row_text({r.kind, r.id, r.paper_text, format_number(r.ours),
-                        format_number(std::abs(r.ours - r.paper), 3), format_number(r.tolerance, 3),
-                        to_string(r.status), r.erratum, r.description, r.tolerance_reason});
+            w.row_text({r.kind, r.id, r.paper_text, format_number(r.ours), format_number(std::abs(r.ours - r.paper), 3), format_number(r.tolerance, 3), to_string(r.status),
+                        r.erratum, r.description, r.tolerance_reason});
     }
     {
         std::ofstream meta(data_path(artifact_ + ".meta"));
-        meta << "title: " << title_ << "\nsection: " << section_ << "\nreference: reference/" << paper_
-             << "/" << artifact_ << ".csv\nexperiment: experiments/" << paper_ << "/" << artifact_
-             << ".cpp\n";
+        meta << "title: " << title_ << "\nsection: " << section_ << "\nreference: reference/" << paper_ << "/" << artifact_ << ".csv\nexperiment: experiments/" << paper_ << "/"
+             << artifact_ << ".cpp\n";
         for (const auto& line : reference_.provenance) meta << "provenance: " << line << "\n";
         for (const auto& [name, caption] : figures_) meta << "figure: " << name << "|" << caption << "\n";
         for (const auto& n : notes_) meta << "note: " << n << "\n";
         for (const auto& t : timings_)
-            meta << "timing: " << t.id << "|" << t.description << "|" << format_number(t.paper, 4) << "|" << format_number(t.lo, 4) << "|"
-                 << format_number(t.hi, 4) << "\n";
+            meta << "timing: " << t.id << "|" << t.description << "|" << format_number(t.paper, 4) << "|" << format_number(t.lo, 4) << "|" << format_number(t.hi, 4) << "\n";
     }
     if (!timings_.empty()) {
         const std::string dir = check_mode_ ? out_dir_ : root_ + "/results/timing";
@@ -152,19 +129,17 @@ int ArtifactRun::finish() {
             w.row_text({t.id, t.description, format_number(t.paper, 4), format_number(t.lo, 4), format_number(t.hi, 4), format_number(t.ours, 4),
                         t.ours >= t.lo && t.ours <= t.hi ? "yes" : "no"});
         for (const auto& t : timings_)
-            std::cout << "timing " << t.id << ": ours " << format_number(t.ours, 4) << ", paper " << format_number(t.paper, 4) << " in ["
-                      << format_number(t.lo, 4) << ", " << format_number(t.hi, 4) << "]: " << (t.ours >= t.lo && t.ours <= t.hi ? "within" : "outside")
-                      << "\n";
+            std::cout << "timing " << t.id << ": ours " << format_number(t.ours, 4) << ", paper " << format_number(t.paper, 4) << " in [" << format_number(t.lo, 4) << ", "
+                      << format_number(t.hi, 4) << "]: " << (t.ours >= t.lo && t.ours <= t.hi ? "within" : "outside") << "\n";
     }
     int counts[3] = {0, 0, 0};
     for (const auto& r : records_) {
         ++counts[static_cast<int>(r.status)];
         if (r.status == ClaimStatus::failed)
-            std::cerr << "FAILED " << r.kind << " " << r.id << ": paper " << r.paper_text << ", ours "
-                      << format_number(r.ours) << ", tolerance " << format_number(r.tolerance, 3) << "\n";
+            std::cerr << "FAILED " << r.kind << " " << r.id << ": paper " << r.paper_text << ", ours " << format_number(r.ours) << ", tolerance " << format_number(r.tolerance, 3)
+                      << "\n";
     }
-    std::cout << paper_ << "/" << artifact_ << ": " << counts[0] << " reproduced, " << counts[1]
-              << " deviates, " << counts[2] << " failed\n";
+    std::cout << paper_ << "/" << artifact_ << ": " << counts[0] << " reproduced, " << counts[1] << " deviates, " << counts[2] << " failed\n";
     return counts[2] > 0 ? 1 : 0;
 }
 

@@ -30,11 +30,10 @@ enum class ClaimStatus { reproduced, deviates, failed };
 const char* to_string(ClaimStatus s);
 
 // The classification rule above, as a pure function (unit-tested).
-ClaimStatus classify(const ReferenceRow& row, double ours, std::optional<double> ours_corrected,
-                     bool erratum_documented);
+ClaimStatus classify(const ReferenceRow& row, double ours, std::optional<double> ours_corrected, bool erratum_documented);
 
 struct CheckRecord {
-    std::string kind;   // "claim" or "validation"
+    std::string kind;  // "claim" or "validation"
     std::string id, description;
     double paper = 0.0, ours = 0.0, tolerance = 0.0;
     std::string paper_text, tolerance_reason, erratum;
@@ -44,28 +43,25 @@ struct CheckRecord {
 class ArtifactRun {
 public:
     // section: the paper's section/equation used to order artifacts in the report ("2.1").
-    ArtifactRun(std::string paper, std::string artifact, std::string section, std::string title,
-                int argc, char** argv);
+    ArtifactRun(std::string paper, std::string artifact, std::string section, std::string title, int argc, char** argv);
 
     const Reference& reference() const { return reference_; }
     // Check claim `<paper>.<short_id>` of the reference file against our value.
     void check(const std::string& short_id, double ours);
     void check(const std::string& short_id, double ours, double ours_corrected);
     // An independent recomputation of a library value: |fast − reference| ≤ tolerance.
-    void validate(const std::string& short_id, const std::string& description, double fast,
-                  double reference_value, double tolerance, const std::string& tolerance_reason);
+    void validate(const std::string& short_id, const std::string& description, double fast, double reference_value, double tolerance, const std::string& tolerance_reason);
 
     // A timing claim (DESIGN.md: timing is never pass/fail and never byte-stable): `ours` is
     // tested against the interval [lo, hi] the paper's printed digits allow. It is written to
     // <root>/results/timing/<paper>_<artifact>.csv (not committed, not compared by CI) and listed
     // in the report without the measured value; the reference rows in `rows_used` (the printed
     // times it is derived from) count as checked.
-    void timing(const std::string& short_id, const std::string& description, const std::vector<std::string>& rows_used,
-                double paper_ratio, double lo, double hi, double ours);
+    void timing(const std::string& short_id, const std::string& description, const std::vector<std::string>& rows_used, double paper_ratio, double lo, double hi, double ours);
 
     void figure(const std::string& name, const std::string& caption);
     void note(const std::string& text);
-    std::string data_path(const std::string& file_name) const;   // where to write data
+    std::string data_path(const std::string& file_name) const;  // where to write data
     // reference/<paper>/<file>: data transcribed from the paper (e.g. point tables).
     std::string reference_path(const std::string& file_name) const;
     // Where to keep an expensive intermediate (a lookup table) between runs:

@@ -33,8 +33,8 @@ std::vector<compare::MethodComparison> record_comparison(ArtifactRun& run, const
     for (const compare::MethodComparison& c : results) {
         if (!c.interpolant) continue;
         const double reference = analysis::adaptive_arc_length(*c.interpolant->curve, 1e-12);
-        run.validate(prefix + c.method + ".length", "compare table length of " + c.method + " (Gauss-Legendre) vs adaptive Gauss-Kronrod", c.length, reference,
-                     5e-8 * reference, "two quadratures of one curve; the table prints 8 significant digits, so it must be right to half a unit in the 8th (5e-8 relative)");
+        run.validate(prefix + c.method + ".length", "compare table length of " + c.method + " (Gauss-Legendre) vs adaptive Gauss-Kronrod", c.length, reference, 5e-8 * reference,
+                     "two quadratures of one curve; the table prints 8 significant digits, so it must be right to half a unit in the 8th (5e-8 relative)");
     }
     return results;
 }

@@ -3,8 +3,8 @@
 #include <fstream>
 #include <set>
 
-#include "core/errors.hpp"
 #include "core/csv.hpp"
+#include "core/errors.hpp"
 
 namespace cagd::repro {
 
@@ -44,21 +44,27 @@ Reference load_reference(const std::string& path) {
             }
             continue;
         }
-        if (fields.size() != header.size())
-            fail_input(who, where + ": " + std::to_string(fields.size()) + " fields, header has " +
-                                std::to_string(header.size()));
+        if (fields.size() != header.size()) fail_input(who, where + ": " + std::to_string(fields.size()) + " fields, header has " + std::to_string(header.size()));
         ReferenceRow r;
         for (std::size_t i = 0; i < header.size(); ++i) {
             const std::string& h = header[i];
             const std::string& v = fields[i];
             try {
-                if (h == "id") r.id = v;
-                else if (h == "paper_value") { r.paper_value = parse_number(v); r.paper_text = v; }
-                else if (h == "tolerance") r.tolerance = parse_number(v);
-                else if (h == "tolerance_reason") r.tolerance_reason = v;
-                else if (h == "erratum") r.erratum = v;
-                else if (h == "corrected_value") { if (!v.empty()) r.corrected_value = parse_number(v); }
-                else if (h == "description") r.description = v;
+                if (h == "id")
+                    r.id = v;
+                else if (h == "paper_value") {
+                    r.paper_value = parse_number(v);
+                    r.paper_text = v;
+                } else if (h == "tolerance")
+                    r.tolerance = parse_number(v);
+                else if (h == "tolerance_reason")
+                    r.tolerance_reason = v;
+                else if (h == "erratum")
+                    r.erratum = v;
+                else if (h == "corrected_value") {
+                    if (!v.empty()) r.corrected_value = parse_number(v);
+                } else if (h == "description")
+                    r.description = v;
             } catch (const InvalidInput& e) {
                 fail_input(who, where + ": column '" + h + "': " + e.what());
             }

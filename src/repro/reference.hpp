@@ -18,19 +18,19 @@ namespace cagd::repro {
 struct ReferenceRow {
     std::string id;
     double paper_value = 0.0;
-    std::string paper_text;        // as written in the file (e.g. "56/41")
+    std::string paper_text;  // as written in the file (e.g. "56/41")
     double tolerance = 0.0;
     std::string tolerance_reason;
-    std::string erratum;           // empty if none
+    std::string erratum;  // empty if none
     std::optional<double> corrected_value;
     std::string description;
 };
 
 struct Reference {
     std::string path;
-    std::vector<std::string> provenance;   // the '#' lines, without '#'
-    std::vector<ReferenceRow> rows;        // file order
-    const ReferenceRow& row(const std::string& id) const;   // InvalidInput if absent
+    std::vector<std::string> provenance;                   // the '#' lines, without '#'
+    std::vector<ReferenceRow> rows;                        // file order
+    const ReferenceRow& row(const std::string& id) const;  // InvalidInput if absent
 };
 
 // Throws InvalidInput naming the file and line on a malformed file (no provenance header,

@@ -1,14 +1,14 @@
 #include "repro/report.hpp"
 
 #include <algorithm>
-#include <iterator>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <sstream>
 
-#include "core/errors.hpp"
 #include "core/csv.hpp"
+#include "core/errors.hpp"
 
 namespace cagd::repro {
 
@@ -46,7 +46,10 @@ std::vector<Row> read_checks(const fs::path& p) {
     std::vector<Row> rows;
     while (std::getline(in, line)) {
         const auto f = split_csv_line(line);
-        if (header.empty()) { header = f; continue; }
+        if (header.empty()) {
+            header = f;
+            continue;
+        }
         Row r;
         for (std::size_t i = 0; i < header.size() && i < f.size(); ++i) r.f[header[i]] = f[i];
         rows.push_back(r);
@@ -64,13 +67,20 @@ Artifact read_artifact(const fs::path& meta, const std::string& paper) {
         const auto colon = line.find(": ");
         if (colon == std::string::npos) continue;
         const std::string k = line.substr(0, colon), v = line.substr(colon + 2);
-        if (k == "title") a.title = v;
-        else if (k == "section") a.section = v;
-        else if (k == "reference") a.reference = v;
-        else if (k == "experiment") a.experiment = v;
-        else if (k == "provenance") a.provenance.push_back(v);
-        else if (k == "note") a.notes.push_back(v);
-        else if (k == "timing") a.timings.push_back(v);
+        if (k == "title")
+            a.title = v;
+        else if (k == "section")
+            a.section = v;
+        else if (k == "reference")
+            a.reference = v;
+        else if (k == "experiment")
+            a.experiment = v;
+        else if (k == "provenance")
+            a.provenance.push_back(v);
+        else if (k == "note")
+            a.notes.push_back(v);
+        else if (k == "timing")
+            a.timings.push_back(v);
         else if (k == "figure") {
             const auto bar = v.find('|');
             a.figures.emplace_back(v.substr(0, bar), bar == std::string::npos ? "" : v.substr(bar + 1));
@@ -80,9 +90,14 @@ Artifact read_artifact(const fs::path& meta, const std::string& paper) {
     return a;
 }
 
-std::string md(const std::string& s) {   // escape table pipes
+std::string md(const std::string& s) {  // escape table pipes
     std::string o;
-    for (char c : s) { if (c == '|') o += "\\|"; else o += c; }
+    for (char c : s) {
+        if (c == '|')
+            o += "\\|";
+        else
+            o += c;
+    }
     return o;
 }
 
@@ -139,15 +154,13 @@ int write_report(const std::string& root) {
             if (e.path().extension() == ".meta") metas.push_back(e.path());
         std::sort(metas.begin(), metas.end());
         for (const auto& m : metas) arts.push_back(read_artifact(m, paper));
-        std::stable_sort(arts.begin(), arts.end(), [](const Artifact& x, const Artifact& y) {
-            return std::make_pair(x.section, x.name) < std::make_pair(y.section, y.name);
-        });
+        std::stable_sort(arts.begin(), arts.end(), [](const Artifact& x, const Artifact& y) { return std::make_pair(x.section, x.name) < std::make_pair(y.section, y.name); });
         int n = 0, rep = 0, dev = 0, fail = 0, val = 0, val_ok = 0;
         body << "\n<a id=\"" << paper << "\"></a>\n\n## `" << paper << "` — " << title << "\n";
         for (const auto& a : arts) {
             body << "\n### " << a.title << " (`" << a.name << "`)\n\n";
-            body << "Paper: " << a.section << ". Reference: [`" << a.reference << "`](../" << a.reference
-                 << "). Experiment: [`" << a.experiment << "`](../" << a.experiment << ").\n";
+            body << "Paper: " << a.section << ". Reference: [`" << a.reference << "`](../" << a.reference << "). Experiment: [`" << a.experiment << "`](../" << a.experiment
+                 << ").\n";
             for (const auto& p : a.provenance) body << "> " << p << "\n";
             if (!a.provenance.empty()) body << "\n";
             for (const auto& note : a.notes) body << "- " << note << "\n";
@@ -163,22 +176,17 @@ int write_report(const std::string& root) {
                     rep += status == "reproduced";
                     dev += status == "deviates";
                     fail += status == "failed";
-                    claims << csv_field(paper) << "," << csv_field(a.name) << "," << csv_field(r["id"]) << ","
-                           << csv_field(r["paper_value"]) << "," << r["ours"] << "," << r["abs_diff"] << ","
-                           << r["tolerance"] << "," << status << "," << r["erratum"] << "\n";
+                    claims << csv_field(paper) << "," << csv_field(a.name) << "," << csv_field(r["id"]) << "," << csv_field(r["paper_value"]) << "," << r["ours"] << ","
+                           << r["abs_diff"] << "," << r["tolerance"] << "," << status << "," << r["erratum"] << "\n";
                     std::string shown = status == "failed" ? "**failed**" : status;
-                    if (!r["erratum"].empty())
-                        shown += " ([" + r["erratum"] + "](../reference/ERRATA.md#" + anchor(r["erratum"]) + "))";
-                    body << "| `" << r["id"].substr(paper.size() + 1) << "` | " << md(r["description"]) << " | "
-                         << md(r["paper_value"]) << " | " << r["ours"] << " | " << r["abs_diff"] << " | "
-                         << r["tolerance"] << " | " << shown << " |\n";
+                    if (!r["erratum"].empty()) shown += " ([" + r["erratum"] + "](../reference/ERRATA.md#" + anchor(r["erratum"]) + "))";
+                    body << "| `" << r["id"].substr(paper.size() + 1) << "` | " << md(r["description"]) << " | " << md(r["paper_value"]) << " | " << r["ours"] << " | "
+                         << r["abs_diff"] << " | " << r["tolerance"] << " | " << shown << " |\n";
                 } else {
                     ++val;
                     val_ok += status == "reproduced";
-                    vals << "| `" << r["id"].substr(paper.size() + 1) << "` | " << md(r["description"]) << " | "
-                         << r["paper_value"] << " | " << r["ours"] << " | " << r["abs_diff"] << " | "
-                         << r["tolerance"] << " (" << md(r["tolerance_reason"]) << ") | "
-                         << (status == "reproduced" ? "passed" : "**failed**") << " |\n";
+                    vals << "| `" << r["id"].substr(paper.size() + 1) << "` | " << md(r["description"]) << " | " << r["paper_value"] << " | " << r["ours"] << " | " << r["abs_diff"]
+                         << " | " << r["tolerance"] << " (" << md(r["tolerance_reason"]) << ") | " << (status == "reproduced" ? "passed" : "**failed**") << " |\n";
                 }
                 failed += status == "failed";
             }
@@ -189,29 +197,28 @@ int write_report(const std::string& root) {
                      << vals.str();
             if (!a.timings.empty()) {
                 body << "\nTiming claims — measured in every run, never pass/fail, not byte-stable: the measured ratios are in "
-                        "`results/timing/" << paper << "_" << a.name << ".csv` (not committed).\n\n"
+                        "`results/timing/"
+                     << paper << "_" << a.name
+                     << ".csv` (not committed).\n\n"
                         "| claim | statement | paper ratio | interval the printed digits allow |\n|---|---|---:|---|\n";
                 for (const auto& t : a.timings) {
                     std::vector<std::string> f;
                     std::stringstream ss(t);
                     std::string x;
                     while (std::getline(ss, x, '|')) f.push_back(x);
-                    if (f.size() == 5)
-                        body << "| `" << f[0].substr(paper.size() + 1) << "` | " << md(f[1]) << " | " << f[2] << " | [" << f[3] << ", " << f[4] << "] |\n";
+                    if (f.size() == 5) body << "| `" << f[0].substr(paper.size() + 1) << "` | " << md(f[1]) << " | " << f[2] << " | [" << f[3] << ", " << f[4] << "] |\n";
                 }
             }
             for (const auto& [name, caption] : a.figures) {
                 const std::string script = "scripts/plot/" + paper + "_" + name + ".gp";
                 body << "\n![" << md(caption) << "](" << paper << "/" << name << ".png)\n\n*" << caption << "* — data:";
                 const std::vector<std::string> files = figure_data_files(fs::path(root), script, name);
-                for (std::size_t i = 0; i < files.size(); ++i)
-                    body << (i ? ", " : " ") << "[`" << paper << "/" << files[i] << "`](" << paper << "/" << files[i] << ")";
+                for (std::size_t i = 0; i < files.size(); ++i) body << (i ? ", " : " ") << "[`" << paper << "/" << files[i] << "`](" << paper << "/" << files[i] << ")";
                 if (files.empty()) body << " (none read by the script)";
                 body << "; script: [`" << script << "`](../" << script << ")\n";
             }
         }
-        summary << "| [`" << paper << "`](#" << paper << ") | " << n << " | " << rep << " | " << dev << " | "
-                << fail << " | " << val_ok << " / " << val << " |\n";
+        summary << "| [`" << paper << "`](#" << paper << ") | " << n << " | " << rep << " | " << dev << " | " << fail << " | " << val_ok << " / " << val << " |\n";
     }
     std::ofstream report(results / "REPORT.md");
     report << "# cagd-repro — reproduction report\n\n"

@@ -65,7 +65,7 @@ ElasticLine assemble_line(const std::vector<double>& x, const Eigen::MatrixXd& a
     Eigen::MatrixXd m = Eigen::MatrixXd::Zero(n + 1, a.cols());
     if (n > 1) m.middleRows(1, n - 1) = interior;
     Eigen::MatrixXd y = a;
-    for (Eigen::Index i = 0; i <= n; ++i) {   // δ²M_i, the terms beyond the ends dropped
+    for (Eigen::Index i = 0; i <= n; ++i) {  // δ²M_i, the terms beyond the ends dropped
         const std::size_t k = static_cast<std::size_t>(i);
         if (lambda[k] == 0.0) continue;
         if (i < n) y.row(i) -= lambda[k] * (m.row(i + 1) - m.row(i)) / (x[k + 1] - x[k]);
@@ -110,7 +110,7 @@ ElasticLine elastic_line(const std::vector<double>& x, const Eigen::MatrixXd& a,
     const char* who = "cagd::smoothing::elastic_line";
     require_data(x, a, who);
     const std::vector<double> lambda = per_point_lambda(lambda_in, x.size(), who);
-    const std::size_t n = x.size() - 1, inner = n - 1;   // interior unknowns M_1..M_{n−1}
+    const std::size_t n = x.size() - 1, inner = n - 1;  // interior unknowns M_1..M_{n−1}
     if (n == 1) return assemble_line(x, a, lambda, Eigen::MatrixXd(0, a.cols()));
     // (R + 6 QᵀΛQ) in its three bands: column c ↔ node k = c + 1, whose Q column has
     // (α_k, −α_k − α_{k+1}, α_{k+1}) at rows k − 1, k, k + 1, α_k = 1/l_k.
@@ -129,12 +129,9 @@ ElasticLine elastic_line(const std::vector<double>& x, const Eigen::MatrixXd& a,
     return assemble_line(x, a, lambda, numeric::solve_symmetric_pentadiagonal(diag, first, second, std::move(rhs)));
 }
 
-ElasticLine elastic_line(const std::vector<double>& x, const Eigen::MatrixXd& a, double lambda) {
-    return elastic_line(x, a, std::vector<double>{lambda});
-}
+ElasticLine elastic_line(const std::vector<double>& x, const Eigen::MatrixXd& a, double lambda) { return elastic_line(x, a, std::vector<double>{lambda}); }
 
-ElasticLineIteration elastic_line_iterative(const std::vector<double>& x, const Eigen::MatrixXd& a, const std::vector<double>& lambda_in,
-                                            double tolerance, int max_iterations) {
+ElasticLineIteration elastic_line_iterative(const std::vector<double>& x, const Eigen::MatrixXd& a, const std::vector<double>& lambda_in, double tolerance, int max_iterations) {
     const char* who = "cagd::smoothing::elastic_line_iterative";
     require_data(x, a, who);
     const std::vector<double> lambda = per_point_lambda(lambda_in, x.size(), who);
@@ -150,7 +147,7 @@ ElasticLineIteration elastic_line_iterative(const std::vector<double>& x, const 
     const Sparse qt = q.transpose();
     const Sparse coupling = 6.0 * (qt * weights.asDiagonal() * q);
     const Eigen::MatrixXd rhs = 6.0 * (qt * a);
-    Eigen::MatrixXd m = numeric::solve_tridiagonal(r.sub, r.diag, r.sup, rhs);   // λ = 0: the spline
+    Eigen::MatrixXd m = numeric::solve_tridiagonal(r.sub, r.diag, r.sup, rhs);  // λ = 0: the spline
     double previous = INFINITY;
     for (int k = 1; k <= max_iterations; ++k) {
         const Eigen::MatrixXd next = numeric::solve_tridiagonal(r.sub, r.diag, r.sup, rhs - coupling * m);
@@ -164,12 +161,11 @@ ElasticLineIteration elastic_line_iterative(const std::vector<double>& x, const 
             out.line = assemble_line(x, a, lambda, m);
             return out;
         }
-        if (k > 20 && out.contraction >= 1.0) break;   // growing corrections: ρ ≥ 1
+        if (k > 20 && out.contraction >= 1.0) break;  // growing corrections: ρ ≥ 1
         previous = step;
     }
-    out.outcome = Outcome{Status::no_convergence, "the iteration from lambda = 0 did not converge: ratio of successive corrections " +
-                                                      full_precision(out.contraction) + " after " + std::to_string(out.iterations) +
-                                                      " iterations (it converges only when 6 R^-1 Q^T Lambda Q has spectral radius < 1)"};
+    out.outcome = Outcome{Status::no_convergence, "the iteration from lambda = 0 did not converge: ratio of successive corrections " + full_precision(out.contraction) + " after " +
+                                                      std::to_string(out.iterations) + " iterations (it converges only when 6 R^-1 Q^T Lambda Q has spectral radius < 1)"};
     if (m.allFinite()) out.line = assemble_line(x, a, lambda, m);
     return out;
 }
@@ -185,15 +181,14 @@ ElasticLine elastic_line_parametric(const PointList& points, const std::vector<d
     return elastic_line(chord_parameters(points, "cagd::smoothing::elastic_line_parametric"), points, lambda);
 }
 
-HermiteElasticLine elastic_line_hermite(const std::vector<double>& x, const Eigen::VectorXd& a, const std::vector<double>& lambda_in,
-                                        const ElasticLineConstraints& constraints) {
+HermiteElasticLine elastic_line_hermite(const std::vector<double>& x, const Eigen::VectorXd& a, const std::vector<double>& lambda_in, const ElasticLineConstraints& constraints) {
     const char* who = "cagd::smoothing::elastic_line_hermite";
     require_data(x, a, who);
     const std::vector<double> lambda = per_point_lambda(lambda_in, x.size(), who);
-    const int nodes = static_cast<int>(x.size()), dofs = 2 * nodes;   // y_i at 2i, y'_i at 2i + 1
+    const int nodes = static_cast<int>(x.size()), dofs = 2 * nodes;  // y_i at 2i, y'_i at 2i + 1
 
     // Constraint rows: λ_i = 0 points, then fixed values, then slopes.
-    std::vector<std::pair<int, double>> rows;   // (dof, value)
+    std::vector<std::pair<int, double>> rows;  // (dof, value)
     std::set<int> fixed;
     const auto fix = [&](int dof, double value, const std::string& what) {
         if (!fixed.insert(dof).second) fail_input(who, what + " is constrained twice");
@@ -221,7 +216,7 @@ HermiteElasticLine elastic_line_hermite(const std::vector<double>& x, const Eige
     for (int s = 0; s + 1 < nodes; ++s) {
         const double l = x[static_cast<std::size_t>(s + 1)] - x[static_cast<std::size_t>(s)];
         const int dof[4] = {2 * s, 2 * s + 1, 2 * s + 2, 2 * s + 3};
-        const auto second = [&](int b, double u) {   // d²/dx² of the basis function of local dof b
+        const auto second = [&](int b, double u) {  // d²/dx² of the basis function of local dof b
             switch (b) {
                 case 0: return basis.p(0, u, 2) / (l * l);
                 case 1: return basis.p(1, u, 2) / l;
@@ -269,7 +264,7 @@ double elastic_line_energy(const spline::ExplicitSpline& curve, const Eigen::Vec
         if (lambda[static_cast<std::size_t>(i)] > 0.0) springs += std::pow(curve.values(i, column) - a(i), 2) / lambda[static_cast<std::size_t>(i)];
     for (std::size_t s = 0; s + 1 < curve.x.size(); ++s) {
         const int seg = static_cast<int>(s);
-        const double m0 = curve.evaluate_in(seg, 0.0, 2)(column), m1 = curve.evaluate_in(seg, 1.0, 2)(column);   // y'' is linear
+        const double m0 = curve.evaluate_in(seg, 0.0, 2)(column), m1 = curve.evaluate_in(seg, 1.0, 2)(column);  // y'' is linear
         bending += (m0 * m0 + m0 * m1 + m1 * m1) * (curve.x[s + 1] - curve.x[s]) / 3.0;
     }
     return 0.5 * springs + 0.5 * bending;

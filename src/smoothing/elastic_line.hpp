@@ -39,8 +39,8 @@
 namespace cagd::smoothing {
 
 struct ElasticLine {
-    spline::ExplicitSpline curve;         // eq (52): values y_i, slopes y'_i at the abscissae
-    Eigen::MatrixXd second_derivatives;   // M_i = y''_i, one row per abscissa (zero at both ends)
+    spline::ExplicitSpline curve;        // eq (52): values y_i, slopes y'_i at the abscissae
+    Eigen::MatrixXd second_derivatives;  // M_i = y''_i, one row per abscissa (zero at both ends)
     const std::vector<double>& x() const { return curve.x; }
     const Eigen::MatrixXd& values() const { return curve.values; }
 };
@@ -57,13 +57,13 @@ ElasticLine elastic_line(const std::vector<double>& x, const Eigen::MatrixXd& a,
 // observed ratio of successive corrections (an estimate of ρ). Outcome no_convergence when the
 // correction has not fallen below `tolerance` · max |M| after `max_iterations`, or grows.
 struct ElasticLineIteration {
-    ElasticLine line;   // the last iterate
+    ElasticLine line;  // the last iterate
     Outcome outcome;
     int iterations = 0;
     double contraction = 0.0;
 };
-ElasticLineIteration elastic_line_iterative(const std::vector<double>& x, const Eigen::MatrixXd& a, const std::vector<double>& lambda,
-                                            double tolerance = 1e-14, int max_iterations = 10000);
+ElasticLineIteration elastic_line_iterative(const std::vector<double>& x, const Eigen::MatrixXd& a, const std::vector<double>& lambda, double tolerance = 1e-14,
+                                            int max_iterations = 10000);
 
 // Smoothing a parametric curve (2-D or 3-D points): x(t), y(t) (, z(t)) each smoothed as above
 // over the chord-length parameter t_0 = 0, t_i = t_{i−1} + |P_i − P_{i−1}| (consecutive points
@@ -79,17 +79,16 @@ std::vector<double> chord_parameters(const PointList& points, const char* who);
 // (48) and (49): without slope constraints the minimiser is C2 and equals elastic_line's curve.
 // Solved as one sparse KKT system (Eigen SparseLU).
 struct ElasticLineConstraints {
-    std::vector<std::pair<int, double>> fixed_values;   // (index j, c_j): y(x_j) = c_j
-    std::optional<double> start_slope, end_slope;        // y'(x_0), y'(x_n)
+    std::vector<std::pair<int, double>> fixed_values;  // (index j, c_j): y(x_j) = c_j
+    std::optional<double> start_slope, end_slope;      // y'(x_0), y'(x_n)
 };
 struct HermiteElasticLine {
-    spline::ExplicitSpline curve;     // values y_i and slopes y'_i
-    Eigen::VectorXd multipliers;      // one Lagrange multiplier per constraint, in the order
-                                      // fixed values (λ_i = 0 points first, then fixed_values), slopes
-    double energy = 0.0;              // V / EI at the minimiser
+    spline::ExplicitSpline curve;  // values y_i and slopes y'_i
+    Eigen::VectorXd multipliers;   // one Lagrange multiplier per constraint, in the order
+                                   // fixed values (λ_i = 0 points first, then fixed_values), slopes
+    double energy = 0.0;           // V / EI at the minimiser
 };
-HermiteElasticLine elastic_line_hermite(const std::vector<double>& x, const Eigen::VectorXd& a, const std::vector<double>& lambda,
-                                        const ElasticLineConstraints& constraints = {});
+HermiteElasticLine elastic_line_hermite(const std::vector<double>& x, const Eigen::VectorXd& a, const std::vector<double>& lambda, const ElasticLineConstraints& constraints = {});
 
 // V / EI = ½ Σ (y_i − a_i)² / λ_i + ½ ∫ y''² dx of a curve through the abscissae (terms with λ_i = 0
 // are left out: those points are constrained), column `column` of the curve's values.

@@ -27,7 +27,7 @@ void hermite(const T* a, const T* b, int c, double h, double u, T& v, T& d1, T& 
 }
 
 struct BendingResidual {
-    double h, u, scale;   // scale = √(Gauss weight · h)
+    double h, u, scale;  // scale = √(Gauss weight · h)
     template <typename T>
     bool operator()(const T* a, const T* b, T* r) const {
         T y, y1, y2, z, z1, z2;
@@ -35,7 +35,7 @@ struct BendingResidual {
         hermite(a, b, 2, h, u, z, z1, z2);
         // r' = (1, y1, z1), r'' = (0, y2, z2); r' × r'' = (y1 z2 − z1 y2, −z2, y2).
         const T speed2 = 1.0 + y1 * y1 + z1 * z1;
-        const T factor = scale / pow(speed2, 1.25);   // 1 / |r'|^{5/2}
+        const T factor = scale / pow(speed2, 1.25);  // 1 / |r'|^{5/2}
         r[0] = (y1 * z2 - z1 * y2) * factor;
         r[1] = -z2 * factor;
         r[2] = y2 * factor;
@@ -44,7 +44,7 @@ struct BendingResidual {
 };
 
 struct SpringResidual {
-    double ay, az, weight;   // weight = 1/√λ
+    double ay, az, weight;  // weight = 1/√λ
     template <typename T>
     bool operator()(const T* k, T* r) const {
         r[0] = (k[0] - ay) * weight;
@@ -72,7 +72,7 @@ Eigen::MatrixXd ElasticSpaceCurve::jet(double at, int order) const {
         out(0, c + 1) = v;
         if (order >= 1) out(1, c + 1) = d1;
         if (order >= 2) out(2, c + 1) = d2;
-        if (order >= 3) {   // the third derivative is constant on a cubic piece
+        if (order >= 3) {  // the third derivative is constant on a cubic piece
             hermite(a, b, 2 * c, h, 0.0, v0, d10, d20);
             hermite(a, b, 2 * c, h, 1.0, v1, d11, d21);
             out(3, c + 1) = (d21 - d20) / h;
@@ -87,7 +87,7 @@ ElasticSpaceCurve elastic_space_curve(const std::vector<double>& x, const Eigen:
     const char* who = "cagd::smoothing::elastic_space_curve";
     if (a.cols() != 2) fail_input(who, "needs two value columns (y, z), got " + std::to_string(a.cols()));
     if (subdivisions < 1) fail_input(who, "needs subdivisions >= 1, got " + std::to_string(subdivisions));
-    const ElasticLine start = elastic_line(x, a, lambda_in);   // validates x, a, λ
+    const ElasticLine start = elastic_line(x, a, lambda_in);  // validates x, a, λ
     const std::vector<double> lambda = per_point_lambda(lambda_in, x.size(), who);
     for (std::size_t i = 0; i < lambda.size(); ++i)
         if (lambda[i] == 0.0) fail_input(who, "lambda[" + std::to_string(i) + "] = 0; the space elastic line needs finite springs (lambda > 0)");
@@ -109,8 +109,8 @@ ElasticSpaceCurve elastic_space_curve(const std::vector<double>& x, const Eigen:
         const double h = out.knots[k + 1] - out.knots[k];
         for (std::size_t q = 0; q < rule.nodes().size(); ++q) {
             const double u = 0.5 * (rule.nodes()[q] + 1.0), w = 0.5 * rule.weights()[q];
-            problem.AddResidualBlock(new ceres::AutoDiffCostFunction<BendingResidual, 3, 4, 4>(new BendingResidual{h, u, std::sqrt(w * h)}), nullptr,
-                                     block[k].data(), block[k + 1].data());
+            problem.AddResidualBlock(new ceres::AutoDiffCostFunction<BendingResidual, 3, 4, 4>(new BendingResidual{h, u, std::sqrt(w * h)}), nullptr, block[k].data(),
+                                     block[k + 1].data());
         }
     }
     for (std::size_t i = 0; i < x.size(); ++i)
@@ -131,8 +131,7 @@ ElasticSpaceCurve elastic_space_curve(const std::vector<double>& x, const Eigen:
     options.logging_type = ceres::SILENT;
     ceres::Solver::Summary summary;
     ceres::Solve(options, &problem, &summary);
-    if (summary.termination_type != ceres::CONVERGENCE)
-        out.outcome = Outcome{Status::no_convergence, "Ceres did not converge: " + summary.BriefReport()};
+    if (summary.termination_type != ceres::CONVERGENCE) out.outcome = Outcome{Status::no_convergence, "Ceres did not converge: " + summary.BriefReport()};
     out.energy = summary.final_cost;
     out.values.resize(knots, 2);
     out.slopes.resize(knots, 2);

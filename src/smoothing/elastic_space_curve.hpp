@@ -25,11 +25,11 @@ namespace cagd::smoothing {
 
 // The minimiser as a Curve r(x) = (x, y(x), z(x)) (so analysis/ measures it), parameter x.
 struct ElasticSpaceCurve final : Curve {
-    std::vector<double> knots;        // x of every Hermite knot (data abscissae and subdivisions)
-    Eigen::MatrixXd values, slopes;   // (y, z) and (y', z') at the knots
-    double energy = 0.0;              // ½ Σ springs + ½ ∫ κ² ds at the minimiser (Ceres' final cost)
+    std::vector<double> knots;       // x of every Hermite knot (data abscissae and subdivisions)
+    Eigen::MatrixXd values, slopes;  // (y, z) and (y', z') at the knots
+    double energy = 0.0;             // ½ Σ springs + ½ ∫ κ² ds at the minimiser (Ceres' final cost)
     Outcome outcome;
-    Eigen::RowVector2d evaluate(double x) const { return jet(x, 0).block<1, 2>(0, 1); }   // (y, z)(x)
+    Eigen::RowVector2d evaluate(double x) const { return jet(x, 0).block<1, 2>(0, 1); }  // (y, z)(x)
     int dimension() const override { return 3; }
     double t_min() const override { return knots.front(); }
     double t_max() const override { return knots.back(); }

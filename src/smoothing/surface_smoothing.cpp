@@ -19,14 +19,12 @@ using Sparse = Eigen::SparseMatrix<double>;
 using Triplets = std::vector<Eigen::Triplet<double>>;
 
 // Validates the grid and heights; returns λ expanded to one per node.
-Eigen::MatrixXd node_lambda(const std::vector<double>& x, const std::vector<double>& y, const Eigen::MatrixXd& a, const Eigen::MatrixXd& lambda,
-                            bool allow_zero, const char* who) {
+Eigen::MatrixXd node_lambda(const std::vector<double>& x, const std::vector<double>& y, const Eigen::MatrixXd& a, const Eigen::MatrixXd& lambda, bool allow_zero, const char* who) {
     require_increasing(x, 2, "x", who);
     require_increasing(y, 2, "y", who);
     const Eigen::Index nx = static_cast<Eigen::Index>(x.size()), ny = static_cast<Eigen::Index>(y.size());
     if (a.rows() != nx || a.cols() != ny)
-        fail_input(who, "heights must be " + std::to_string(nx) + " x " + std::to_string(ny) + " (x by y), got " + std::to_string(a.rows()) + " x " +
-                            std::to_string(a.cols()));
+        fail_input(who, "heights must be " + std::to_string(nx) + " x " + std::to_string(ny) + " (x by y), got " + std::to_string(a.rows()) + " x " + std::to_string(a.cols()));
     for (Eigen::Index i = 0; i < nx; ++i)
         for (Eigen::Index j = 0; j < ny; ++j)
             if (!std::isfinite(a(i, j))) fail_input(who, "height at node (" + std::to_string(i) + ", " + std::to_string(j) + ") is " + full_precision(a(i, j)));
@@ -121,7 +119,7 @@ ElasticNet elastic_net(const std::vector<double>& x, const std::vector<double>& 
     Sparse dm(nodes, unknowns), system(unknowns, unknowns);
     dm.setFromTriplets(d.begin(), d.end());
     system.setFromTriplets(r.begin(), r.end());
-    const Eigen::VectorXd weights = Eigen::Map<const Eigen::VectorXd>(lambda.data(), nodes);   // column-major: i + nx j
+    const Eigen::VectorXd weights = Eigen::Map<const Eigen::VectorXd>(lambda.data(), nodes);  // column-major: i + nx j
     const Eigen::VectorXd data = Eigen::Map<const Eigen::VectorXd>(a.data(), nodes);
     const Sparse dt = dm.transpose();
     system += 6.0 * (dt * weights.asDiagonal() * dm);
@@ -129,7 +127,7 @@ ElasticNet elastic_net(const std::vector<double>& x, const std::vector<double>& 
     if (ldlt.info() != Eigen::Success) fail_input(who, "the net's system (54) could not be factorised");
     const Eigen::VectorXd u = ldlt.solve(6.0 * (dt * data));
     out.factor_nonzeros = static_cast<long>(ldlt.matrixL().nestedExpression().nonZeros());
-    const Eigen::VectorXd reaction = dm * u;   // δ_i²ζ^(2,0) + δ_j²ζ^(0,2) at every node
+    const Eigen::VectorXd reaction = dm * u;  // δ_i²ζ^(2,0) + δ_j²ζ^(0,2) at every node
     for (long j = 0; j < ny; ++j)
         for (long i = 0; i < nx; ++i) {
             out.values(i, j) = a(i, j) - lambda(i, j) * reaction(i + nx * j);
@@ -173,8 +171,8 @@ double plate_energy(const surface::CartesianSurface& s, PlateEnergy energy, doub
     return total;
 }
 
-PlateSmoothing plate_smoothing(const std::vector<double>& x, const std::vector<double>& y, const Eigen::MatrixXd& a, const Eigen::MatrixXd& lambda_in,
-                               PlateEnergy energy, double nu) {
+PlateSmoothing plate_smoothing(const std::vector<double>& x, const std::vector<double>& y, const Eigen::MatrixXd& a, const Eigen::MatrixXd& lambda_in, PlateEnergy energy,
+                               double nu) {
     const char* who = "cagd::smoothing::plate_smoothing";
     const Eigen::MatrixXd lambda = node_lambda(x, y, a, lambda_in, false, who);
     const Eigen::Matrix3d c = plate_energy_form(energy, nu);
@@ -192,7 +190,7 @@ PlateSmoothing plate_smoothing(const std::vector<double>& x, const std::vector<d
                 for (std::size_t q = 0; q < rule.nodes().size(); ++q) {
                     const double u = 0.5 * (rule.nodes()[p] + 1), v = 0.5 * (rule.nodes()[q] + 1);
                     Eigen::Matrix<double, 3, 16> b;
-                    for (int l = 0; l < 16; ++l) {   // l = corner x (bit 0), corner y (bit 1), di (bit 2), dj (bit 3)
+                    for (int l = 0; l < 16; ++l) {  // l = corner x (bit 0), corner y (bit 1), di (bit 2), dj (bit 3)
                         const int ca = l & 1, cb = (l >> 1) & 1, di = (l >> 2) & 1, dj = (l >> 3) & 1;
                         b(0, l) = hermite1(basis, ca, di, hx, u, 2) * hermite1(basis, cb, dj, hy, v, 0);
                         b(1, l) = hermite1(basis, ca, di, hx, u, 0) * hermite1(basis, cb, dj, hy, v, 2);
@@ -202,8 +200,7 @@ PlateSmoothing plate_smoothing(const std::vector<double>& x, const std::vector<d
                 }
             for (int r = 0; r < 16; ++r)
                 for (int s = 0; s < 16; ++s)
-                    t.emplace_back(dof(cx + (r & 1), cy + ((r >> 1) & 1), (r >> 2) & 1, (r >> 3) & 1), dof(cx + (s & 1), cy + ((s >> 1) & 1), (s >> 2) & 1, (s >> 3) & 1),
-                                   k(r, s));
+                    t.emplace_back(dof(cx + (r & 1), cy + ((r >> 1) & 1), (r >> 2) & 1, (r >> 3) & 1), dof(cx + (s & 1), cy + ((s >> 1) & 1), (s >> 2) & 1, (s >> 3) & 1), k(r, s));
         }
     Eigen::VectorXd rhs = Eigen::VectorXd::Zero(unknowns);
     for (long j = 0; j < ny; ++j)
@@ -215,7 +212,7 @@ PlateSmoothing plate_smoothing(const std::vector<double>& x, const std::vector<d
     h.setFromTriplets(t.begin(), t.end());
     int terms = 0;
     const double floor = 1e-13 * h.coeffs().cwiseAbs().maxCoeff();
-    for (long col = 0; col < unknowns; ++col) {   // symmetric: columns are the equations
+    for (long col = 0; col < unknowns; ++col) {  // symmetric: columns are the equations
         int n = 0;
         for (Sparse::InnerIterator it(h, col); it; ++it) n += std::abs(it.value()) > floor;
         terms = std::max(terms, n);
@@ -235,8 +232,7 @@ PlateSmoothing plate_smoothing(const std::vector<double>& x, const std::vector<d
 
 // ---- method (ii) -----------------------------------------------------------------------------------
 
-BoundaryPlateSurface::BoundaryPlateSurface(int m, double y0, double y1, spline::ExplicitSpline boundary_data)
-    : basis_(m), y0_(y0), y1_(y1), data_(std::move(boundary_data)) {
+BoundaryPlateSurface::BoundaryPlateSurface(int m, double y0, double y1, spline::ExplicitSpline boundary_data) : basis_(m), y0_(y0), y1_(y1), data_(std::move(boundary_data)) {
     if (!(y1 > y0)) fail_input("cagd::smoothing::BoundaryPlateSurface", "needs y0 < y1, got " + full_precision(y0) + ", " + full_precision(y1));
     if (data_.values.cols() != 2 * (m + 1)) fail_input("cagd::smoothing::BoundaryPlateSurface", "needs 2(m+1) boundary functions");
 }
@@ -251,8 +247,8 @@ double BoundaryPlateSurface::derivative(double x, double y, int a, int b) const 
     return s / std::pow(l, b);
 }
 
-BoundaryPlateSmoothing boundary_plate_smoothing(const std::vector<double>& x, const std::vector<double>& y, const Eigen::MatrixXd& a,
-                                                const Eigen::MatrixXd& lambda_in, PlateEnergy energy, int m, double nu) {
+BoundaryPlateSmoothing boundary_plate_smoothing(const std::vector<double>& x, const std::vector<double>& y, const Eigen::MatrixXd& a, const Eigen::MatrixXd& lambda_in,
+                                                PlateEnergy energy, int m, double nu) {
     const char* who = "cagd::smoothing::boundary_plate_smoothing";
     const Eigen::MatrixXd lambda = node_lambda(x, y, a, lambda_in, false, who);
     if (m < 1 || m > 4) fail_input(who, "needs 1 <= m <= 4, got " + std::to_string(m));
@@ -270,7 +266,7 @@ BoundaryPlateSmoothing boundary_plate_smoothing(const std::vector<double>& x, co
     const Eigen::VectorXd upper = elastic_line(x, a.col(ny - 1), row_lambda(ny - 1)).values().col(0);
     const spline::ExplicitSpline cardinal = spline::hosaka_explicit_spline(x, Eigen::MatrixXd::Identity(nx, nx));
     const spline::ExplicitSpline known = spline::hosaka_explicit_spline(x, (Eigen::MatrixXd(nx, 2) << lower, upper).finished());
-    const Eigen::Index unknowns = 2 * m * nx;   // (side k, order j = 1..m, node u) → (k m + j − 1) nx + u
+    const Eigen::Index unknowns = 2 * m * nx;  // (side k, order j = 1..m, node u) → (k m + j − 1) nx + u
     // ζ and its three second derivatives at (x, y) as known part + row · c.
     const auto rows = [&](double xx, double yy, Eigen::Matrix<double, 4, Eigen::Dynamic>& phi, Eigen::Vector4d& zeta0) {
         const double v = (yy - y0) / l;
@@ -336,12 +332,12 @@ Eigen::MatrixXd discrete_orthonormal_polynomials(int points, int degree) {
     Eigen::VectorXd s(points);
     for (int k = 0; k < points; ++k) s(k) = k - 0.5 * (points - 1);
     Eigen::MatrixXd coefficients = Eigen::MatrixXd::Zero(degree + 1, degree + 1);
-    Eigen::MatrixXd values(points, degree + 1);   // ψ_i at the points
+    Eigen::MatrixXd values(points, degree + 1);  // ψ_i at the points
     for (int i = 0; i <= degree; ++i) {
         Eigen::RowVectorXd c = Eigen::RowVectorXd::Zero(degree + 1);
         c(i) = 1.0;
         Eigen::VectorXd v = s.array().pow(i);
-        for (int r = 0; r < 2; ++r)   // Gram–Schmidt, twice for accuracy
+        for (int r = 0; r < 2; ++r)  // Gram–Schmidt, twice for accuracy
             for (int k = 0; k < i; ++k) {
                 const double proj = values.col(k).dot(v);
                 v -= proj * values.col(k);
@@ -379,7 +375,7 @@ Eigen::MatrixXd window_energy_matrix(const Eigen::MatrixXd& psi, PlateEnergy ene
                             one[p][q](i, k) += 0.5 * rule.weights()[g] * polynomial(psi.row(i), s, p) * polynomial(psi.row(k), s, q);
                         }
         }
-    const int order[3][2] = {{2, 0}, {0, 2}, {1, 1}};   // ζxx, ζyy, ζxy
+    const int order[3][2] = {{2, 0}, {0, 2}, {1, 1}};  // ζxx, ζyy, ζxy
     const double scale[3] = {1 / (hx * hx), 1 / (hy * hy), 1 / (hx * hy)};
     Eigen::MatrixXd e = Eigen::MatrixXd::Zero(n * n, n * n);
     for (int i = 0; i < n; ++i)
@@ -389,8 +385,7 @@ Eigen::MatrixXd window_energy_matrix(const Eigen::MatrixXd& psi, PlateEnergy ene
                     double v = 0.0;
                     for (int r = 0; r < 3; ++r)
                         for (int s = 0; s < 3; ++s)
-                            if (c(r, s) != 0.0)
-                                v += c(r, s) * scale[r] * scale[s] * one[order[r][0]][order[s][0]](i, k) * one[order[r][1]][order[s][1]](j, l);
+                            if (c(r, s) != 0.0) v += c(r, s) * scale[r] * scale[s] * one[order[r][0]][order[s][0]](i, k) * one[order[r][1]][order[s][1]](j, l);
                     e(i + n * j, k + n * l) = hx * hy * v;
                 }
     return e;
@@ -432,8 +427,8 @@ std::vector<int> window_block_sizes(const Eigen::MatrixXd& psi, PlateEnergy ener
     return out;
 }
 
-surface::CartesianSurface local_orthogonal_smoothing(const std::vector<double>& x, const std::vector<double>& y, const Eigen::MatrixXd& a, double lambda,
-                                                     PlateEnergy energy, double nu) {
+surface::CartesianSurface local_orthogonal_smoothing(const std::vector<double>& x, const std::vector<double>& y, const Eigen::MatrixXd& a, double lambda, PlateEnergy energy,
+                                                     double nu) {
     const char* who = "cagd::smoothing::local_orthogonal_smoothing";
     node_lambda(x, y, a, Eigen::MatrixXd::Constant(1, 1, lambda), true, who);
     for (const auto* g : {&x, &y}) {
@@ -442,8 +437,8 @@ surface::CartesianSurface local_orthogonal_smoothing(const std::vector<double>& 
         const double step = ((*g).back() - (*g).front()) / static_cast<double>(g->size() - 1);
         for (std::size_t i = 1; i < g->size(); ++i)
             if (std::abs((*g)[i] - (*g)[i - 1] - step) > 1e-9 * step)
-                fail_input(who, std::string("needs equally spaced ") + name + " (eq 60's windows), step " + std::to_string(i) + " is " +
-                                    full_precision((*g)[i] - (*g)[i - 1]) + ", mean " + full_precision(step));
+                fail_input(who, std::string("needs equally spaced ") + name + " (eq 60's windows), step " + std::to_string(i) + " is " + full_precision((*g)[i] - (*g)[i - 1]) +
+                                    ", mean " + full_precision(step));
     }
     const double hx = x[1] - x[0], hy = y[1] - y[0];
     const Eigen::MatrixXd psi = discrete_orthonormal_polynomials(5, 3);

@@ -50,35 +50,35 @@ namespace cagd::smoothing {
 
 // ---- elastic net -------------------------------------------------------------------------------
 struct ElasticNet {
-    Eigen::MatrixXd values;   // ζ at the nodes (nx × ny)
-    Eigen::MatrixXd xx, yy;   // ζ^(2,0), ζ^(0,2) at the nodes
-    long system_size = 0, factor_nonzeros = 0;   // unknowns and nonzeros of the LDLᵀ factor
+    Eigen::MatrixXd values;                     // ζ at the nodes (nx × ny)
+    Eigen::MatrixXd xx, yy;                     // ζ^(2,0), ζ^(0,2) at the nodes
+    long system_size = 0, factor_nonzeros = 0;  // unknowns and nonzeros of the LDLᵀ factor
 };
 // lambda: 1 × 1 (all nodes) or nx × ny.
 ElasticNet elastic_net(const std::vector<double>& x, const std::vector<double>& y, const Eigen::MatrixXd& a, const Eigen::MatrixXd& lambda);
 
 // ---- plates ------------------------------------------------------------------------------------
-enum class PlateEnergy { poisson, no_poisson, no_twist, mean_curvature };   // eq 55, 56, 57, 58
+enum class PlateEnergy { poisson, no_poisson, no_twist, mean_curvature };  // eq 55, 56, 57, 58
 // The 3 × 3 form e = hᵀ C h, h = (ζxx, ζyy, ζxy), of each energy (corrected (55)).
 Eigen::Matrix3d plate_energy_form(PlateEnergy energy, double poisson_ratio = 0.3);
 // ∬ e dx dy of a Cartesian surface over its grid (4 × 4 Gauss per cell).
 double plate_energy(const surface::CartesianSurface& s, PlateEnergy energy, double poisson_ratio = 0.3);
 
 struct PlateSmoothing {
-    surface::CartesianSurface surface;   // m = 1 Cartesian patch (eq 30)
-    int max_equation_terms = 0;          // most nonzero coefficients in one equation (36 for m = 1 on an uneven
-                                         // grid; 25 on an equally spaced one, where value–own-slope couplings cancel)
+    surface::CartesianSurface surface;  // m = 1 Cartesian patch (eq 30)
+    int max_equation_terms = 0;         // most nonzero coefficients in one equation (36 for m = 1 on an uneven
+                                        // grid; 25 on an equally spaced one, where value–own-slope couplings cancel)
     long system_size = 0;
 };
-PlateSmoothing plate_smoothing(const std::vector<double>& x, const std::vector<double>& y, const Eigen::MatrixXd& a, const Eigen::MatrixXd& lambda,
-                               PlateEnergy energy, double poisson_ratio = 0.3);
+PlateSmoothing plate_smoothing(const std::vector<double>& x, const std::vector<double>& y, const Eigen::MatrixXd& a, const Eigen::MatrixXd& lambda, PlateEnergy energy,
+                               double poisson_ratio = 0.3);
 
 // Method (ii): eq (31) between the boundary lines y_0 and y_n.
 class BoundaryPlateSurface {
 public:
     BoundaryPlateSurface(int m, double y0, double y1, spline::ExplicitSpline boundary_data);
     double value(double x, double y) const { return derivative(x, y, 0, 0); }
-    double derivative(double x, double y, int a, int b) const;   // a ≤ 2 (splines in x), any b
+    double derivative(double x, double y, int a, int b) const;  // a ≤ 2 (splines in x), any b
     int m() const { return basis_.m(); }
 
 private:
@@ -91,8 +91,8 @@ struct BoundaryPlateSmoothing {
     BoundaryPlateSurface surface;
     long system_size = 0;
 };
-BoundaryPlateSmoothing boundary_plate_smoothing(const std::vector<double>& x, const std::vector<double>& y, const Eigen::MatrixXd& a,
-                                                const Eigen::MatrixXd& lambda, PlateEnergy energy, int m = 2, double poisson_ratio = 0.3);
+BoundaryPlateSmoothing boundary_plate_smoothing(const std::vector<double>& x, const std::vector<double>& y, const Eigen::MatrixXd& a, const Eigen::MatrixXd& lambda,
+                                                PlateEnergy energy, int m = 2, double poisson_ratio = 0.3);
 
 // ---- approximation 1 -----------------------------------------------------------------------------
 // Orthonormal polynomials on the points s = −(n−1)/2 .. (n−1)/2 (step 1), degrees 0..degree:
@@ -106,8 +106,8 @@ Eigen::MatrixXd discrete_gram_matrix(const Eigen::MatrixXd& psi, int points);
 // basis whose rows are given (orthonormal or not; the spring term is then the basis's Gram matrix).
 Eigen::MatrixXd window_energy_matrix(const Eigen::MatrixXd& psi, PlateEnergy energy, double hx, double hy, double poisson_ratio = 0.3);
 std::vector<int> window_block_sizes(const Eigen::MatrixXd& psi, PlateEnergy energy, double poisson_ratio = 0.3);
-surface::CartesianSurface local_orthogonal_smoothing(const std::vector<double>& x, const std::vector<double>& y, const Eigen::MatrixXd& a, double lambda,
-                                                     PlateEnergy energy, double poisson_ratio = 0.3);
+surface::CartesianSurface local_orthogonal_smoothing(const std::vector<double>& x, const std::vector<double>& y, const Eigen::MatrixXd& a, double lambda, PlateEnergy energy,
+                                                     double poisson_ratio = 0.3);
 
 // ---- approximation 2 -----------------------------------------------------------------------------
 surface::CartesianSurface net_spline_smoothing(const std::vector<double>& x, const std::vector<double>& y, const Eigen::MatrixXd& a, const Eigen::MatrixXd& lambda);

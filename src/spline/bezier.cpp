@@ -7,20 +7,17 @@
 
 namespace cagd {
 
-BezierCurve::BezierCurve(Eigen::MatrixXd control_points, double a, double b, BezierEvaluation method)
-    : control_(std::move(control_points)), a_(a), b_(b), method_(method) {
+BezierCurve::BezierCurve(Eigen::MatrixXd control_points, double a, double b, BezierEvaluation method) : control_(std::move(control_points)), a_(a), b_(b), method_(method) {
     const std::string who = "cagd::BezierCurve";
     if (control_.rows() < 1) fail_input(who, "needs at least one control point");
-    if (!std::isfinite(a) || !std::isfinite(b) || !(a < b))
-        fail_input(who, "parameter interval [" + full_precision(a) + ", " + full_precision(b) +
-                            "] must be finite with a < b");
+    if (!std::isfinite(a) || !std::isfinite(b) || !(a < b)) fail_input(who, "parameter interval [" + full_precision(a) + ", " + full_precision(b) + "] must be finite with a < b");
     if (method_ == BezierEvaluation::power_basis) {
         const int p = degree();
         monomial_ = Eigen::MatrixXd::Zero(p + 1, control_.cols());
         for (int k = 0; k <= p; ++k) {
-            double binom_pk = 1.0;   // C(p, k)
+            double binom_pk = 1.0;  // C(p, k)
             for (int i = 1; i <= k; ++i) binom_pk = binom_pk * (p - k + i) / i;
-            double binom_kj = 1.0;   // C(k, j), updated in j
+            double binom_kj = 1.0;  // C(k, j), updated in j
             for (int j = 0; j <= k; ++j) {
                 if (j > 0) binom_kj = binom_kj * (k - j + 1) / j;
                 const double sign = ((k - j) % 2 == 0) ? 1.0 : -1.0;
@@ -31,9 +28,7 @@ BezierCurve::BezierCurve(Eigen::MatrixXd control_points, double a, double b, Bez
 }
 
 Eigen::MatrixXd BezierCurve::jet(double t, int order) const {
-    if (!(t >= a_ && t <= b_))
-        fail_input("cagd::BezierCurve::jet", "t = " + full_precision(t) + " outside [" +
-                                                 full_precision(a_) + ", " + full_precision(b_) + "]");
+    if (!(t >= a_ && t <= b_)) fail_input("cagd::BezierCurve::jet", "t = " + full_precision(t) + " outside [" + full_precision(a_) + ", " + full_precision(b_) + "]");
     if (order < 0) fail_input("cagd::BezierCurve::jet", "order must be >= 0");
     const double s = std::min(1.0, std::max(0.0, (t - a_) / (b_ - a_)));
     const double scale = 1.0 / (b_ - a_);
@@ -52,7 +47,7 @@ Eigen::MatrixXd BezierCurve::jet(double t, int order) const {
         }
         return result;
     }
-    Eigen::MatrixXd diff = control_;   // k-th forward differences, scaled
+    Eigen::MatrixXd diff = control_;  // k-th forward differences, scaled
     double factor = 1.0;
     for (int k = 0; k <= order && k <= degree(); ++k) {
         if (k > 0) {
@@ -67,10 +62,9 @@ Eigen::MatrixXd BezierCurve::jet(double t, int order) const {
             result.row(k) = factor * acc;
             continue;
         }
-        Eigen::MatrixXd work = diff;   // de Casteljau
+        Eigen::MatrixXd work = diff;  // de Casteljau
         for (Eigen::Index r = work.rows() - 1; r > 0; --r)
-            for (Eigen::Index i = 0; i < r; ++i)
-                work.row(i) = (1.0 - s) * work.row(i) + s * work.row(i + 1);
+            for (Eigen::Index i = 0; i < r; ++i) work.row(i) = (1.0 - s) * work.row(i) + s * work.row(i + 1);
         result.row(k) = factor * work.row(0);
     }
     return result;

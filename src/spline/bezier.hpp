@@ -22,8 +22,7 @@ enum class BezierEvaluation { de_casteljau, bernstein, power_basis };
 
 class BezierCurve : public Curve {
 public:
-    explicit BezierCurve(Eigen::MatrixXd control_points, double a = 0.0, double b = 1.0,
-                         BezierEvaluation method = BezierEvaluation::de_casteljau);
+    explicit BezierCurve(Eigen::MatrixXd control_points, double a = 0.0, double b = 1.0, BezierEvaluation method = BezierEvaluation::de_casteljau);
     int degree() const { return static_cast<int>(control_.rows()) - 1; }
     const Eigen::MatrixXd& control_points() const { return control_; }
     BezierEvaluation evaluation() const { return method_; }
@@ -37,7 +36,7 @@ private:
     Eigen::MatrixXd control_;
     double a_, b_;
     BezierEvaluation method_;
-    Eigen::MatrixXd monomial_;   // power_basis only: row k = a_k
+    Eigen::MatrixXd monomial_;  // power_basis only: row k = a_k
 };
 
 }  // namespace cagd

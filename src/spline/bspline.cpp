@@ -18,31 +18,20 @@ double binomial(int n, int k) {
 }
 }  // namespace
 
-BSplineCurve::BSplineCurve(int degree, std::vector<double> knots, Eigen::MatrixXd control_points)
-    : degree_(degree), knots_(std::move(knots)), control_(std::move(control_points)) {
+BSplineCurve::BSplineCurve(int degree, std::vector<double> knots, Eigen::MatrixXd control_points) : degree_(degree), knots_(std::move(knots)), control_(std::move(control_points)) {
     if (degree_ < 0) fail_input(kWho, "degree must be >= 0, got " + std::to_string(degree_));
     const auto n = static_cast<std::size_t>(control_.rows());
-    if (control_.rows() < degree_ + 1)
-        fail_input(kWho, "needs at least degree+1 = " + std::to_string(degree_ + 1) +
-                             " control points, got " + std::to_string(n));
+    if (control_.rows() < degree_ + 1) fail_input(kWho, "needs at least degree+1 = " + std::to_string(degree_ + 1) + " control points, got " + std::to_string(n));
     if (knots_.size() != n + static_cast<std::size_t>(degree_) + 1)
-        fail_input(kWho, "knot count must be control points + degree + 1 = " +
-                             std::to_string(n + degree_ + 1) + ", got " +
-                             std::to_string(knots_.size()));
+        fail_input(kWho, "knot count must be control points + degree + 1 = " + std::to_string(n + degree_ + 1) + ", got " + std::to_string(knots_.size()));
     for (std::size_t i = 0; i < knots_.size(); ++i) {
-        if (!std::isfinite(knots_[i]))
-            fail_input(kWho, "knot " + std::to_string(i) + " is " + full_precision(knots_[i]));
+        if (!std::isfinite(knots_[i])) fail_input(kWho, "knot " + std::to_string(i) + " is " + full_precision(knots_[i]));
         if (i > 0 && knots_[i] < knots_[i - 1])
-            fail_input(kWho, "knots must be non-decreasing; knot " + std::to_string(i) + " = " +
-                                 full_precision(knots_[i]) + " < " + full_precision(knots_[i - 1]));
+            fail_input(kWho, "knots must be non-decreasing; knot " + std::to_string(i) + " = " + full_precision(knots_[i]) + " < " + full_precision(knots_[i - 1]));
         const auto pp1 = static_cast<std::size_t>(degree_) + 1;
-        if (i >= pp1 && knots_[i] == knots_[i - pp1])
-            fail_input(kWho, "knot " + full_precision(knots_[i]) + " has multiplicity > degree+1 = " +
-                                 std::to_string(degree_ + 1));
+        if (i >= pp1 && knots_[i] == knots_[i - pp1]) fail_input(kWho, "knot " + full_precision(knots_[i]) + " has multiplicity > degree+1 = " + std::to_string(degree_ + 1));
     }
-    if (!(t_min() < t_max()))
-        fail_input(kWho, "empty domain [" + full_precision(t_min()) + ", " +
-                             full_precision(t_max()) + "]");
+    if (!(t_min() < t_max())) fail_input(kWho, "empty domain [" + full_precision(t_min()) + ", " + full_precision(t_max()) + "]");
     if (!control_.allFinite()) fail_input(kWho, "control points must be finite");
 }
 
@@ -118,16 +107,13 @@ Eigen::MatrixXd basis_function_derivatives_a23(int p, const std::vector<double>&
 }  // namespace
 
 Eigen::MatrixXd basis_function_derivatives(int p, const std::vector<double>& U, int span, double u, int order) {
-    constexpr int kStackOrder = 8;   // degrees 0..7
-    return p + 1 <= kStackOrder ? basis_function_derivatives_a23<kStackOrder>(p, U, span, u, order)
-                                : basis_function_derivatives_a23<Eigen::Dynamic>(p, U, span, u, order);
+    constexpr int kStackOrder = 8;  // degrees 0..7
+    return p + 1 <= kStackOrder ? basis_function_derivatives_a23<kStackOrder>(p, U, span, u, order) : basis_function_derivatives_a23<Eigen::Dynamic>(p, U, span, u, order);
 }
 
 Eigen::MatrixXd BSplineCurve::jet(double t, int order) const {
     if (!(t >= t_min() && t <= t_max()))
-        fail_input("cagd::BSplineCurve::jet", "t = " + full_precision(t) + " outside [" +
-                                                  full_precision(t_min()) + ", " +
-                                                  full_precision(t_max()) + "]");
+        fail_input("cagd::BSplineCurve::jet", "t = " + full_precision(t) + " outside [" + full_precision(t_min()) + ", " + full_precision(t_max()) + "]");
     if (order < 0) fail_input("cagd::BSplineCurve::jet", "order must be >= 0");
     const int span = find_span(t);
     const Eigen::MatrixXd ders = basis_function_derivatives(degree_, knots_, span, t, order);
@@ -136,8 +122,7 @@ Eigen::MatrixXd BSplineCurve::jet(double t, int order) const {
 
 Eigen::MatrixXd BSplineCurve::jet_from_left(double t, int order) const {
     if (!(t > t_min() && t <= t_max()))
-        fail_input("cagd::BSplineCurve::jet_from_left", "t = " + full_precision(t) + " outside (" + full_precision(t_min()) + ", " +
-                                                             full_precision(t_max()) + "]");
+        fail_input("cagd::BSplineCurve::jet_from_left", "t = " + full_precision(t) + " outside (" + full_precision(t_min()) + ", " + full_precision(t_max()) + "]");
     if (order < 0) fail_input("cagd::BSplineCurve::jet_from_left", "order must be >= 0");
     // The last non-empty span [U_i, U_{i+1}) with U_i < t: the polynomial piece that ends at or after t.
     const int n = static_cast<int>(control_.rows());
@@ -156,8 +141,7 @@ std::vector<double> BSplineCurve::breakpoints() const {
 
 double bspline_basis(int p, const std::vector<double>& k, double t, int derivative) {
     if (p < 0 || k.size() != static_cast<std::size_t>(p) + 2)
-        fail_input("cagd::bspline_basis", "needs degree+2 = " + std::to_string(p + 2) +
-                                              " local knots, got " + std::to_string(k.size()));
+        fail_input("cagd::bspline_basis", "needs degree+2 = " + std::to_string(p + 2) + " local knots, got " + std::to_string(k.size()));
     if (derivative < 0) fail_input("cagd::bspline_basis", "derivative must be >= 0");
     if (derivative > p) return 0.0;
     if (t < k.front() || t > k.back()) return 0.0;
@@ -181,8 +165,7 @@ double bspline_basis(int p, const std::vector<double>& k, double t, int derivati
 
 BSplineCurve insert_knot(const BSplineCurve& c, double t) {
     // Boehm's algorithm.
-    if (!(t >= c.t_min() && t <= c.t_max()))
-        fail_input("cagd::insert_knot", "t = " + full_precision(t) + " outside the domain");
+    if (!(t >= c.t_min() && t <= c.t_max())) fail_input("cagd::insert_knot", "t = " + full_precision(t) + " outside the domain");
     const int p = c.degree();
     const auto& U = c.knots();
     const Eigen::MatrixXd& P = c.control_points();
@@ -194,8 +177,10 @@ BSplineCurve insert_knot(const BSplineCurve& c, double t) {
     V.insert(V.end(), U.begin() + k + 1, U.end());
     Eigen::MatrixXd Q(n + 1, P.cols());
     for (int i = 0; i <= n; ++i) {
-        if (i <= k - p) Q.row(i) = P.row(i);
-        else if (i > k) Q.row(i) = P.row(i - 1);
+        if (i <= k - p)
+            Q.row(i) = P.row(i);
+        else if (i > k)
+            Q.row(i) = P.row(i - 1);
         else {
             const double denom = U[i + p] - U[i];
             const double a = denom > 0 ? (t - U[i]) / denom : 0.0;
@@ -219,9 +204,8 @@ BSplineCurve elevate_degree(const BSplineCurve& c) {
     const auto last_a = static_cast<int>(std::upper_bound(L.begin(), L.end(), a) - L.begin()) - 1;
     const auto first_b = static_cast<int>(std::lower_bound(L.begin(), L.end(), b) - L.begin());
     std::vector<double> V;
-    for (int i = last_a - q; i < 0; ++i) V.push_back(L.front());   // pad (clamped input)
-    V.insert(V.end(), L.begin() + std::max(0, last_a - q),
-             L.begin() + std::min<int>(static_cast<int>(L.size()), first_b + q + 1));
+    for (int i = last_a - q; i < 0; ++i) V.push_back(L.front());  // pad (clamped input)
+    V.insert(V.end(), L.begin() + std::max(0, last_a - q), L.begin() + std::min<int>(static_cast<int>(L.size()), first_b + q + 1));
     while (static_cast<int>(V.size()) < (first_b - (last_a - q)) + q + 1) V.push_back(L.back());
     const int n_new = static_cast<int>(V.size()) - q - 1;
     // Least squares on q+1 Chebyshev samples per span: exact since r ∈ new space.
@@ -252,12 +236,15 @@ std::vector<BezierCurve> bezier_segments(const BSplineCurve& c) {
     std::vector<BezierCurve> segments;
     for (std::size_t s = 0; s + 1 < br.size(); ++s) {
         const double a = br[s], h = br[s + 1] - br[s];
-        const Eigen::MatrixXd J = c.jet(a, p);   // right-hand derivatives at the span start
+        const Eigen::MatrixXd J = c.jet(a, p);  // right-hand derivatives at the span start
         // Taylor coefficients in s ∈ [0,1]: c_k = h^k r^(k)(a) / k!;  b_j = Σ_k C(j,k)/C(p,k) c_k.
         Eigen::MatrixXd coef(p + 1, c.dimension());
         double hk = 1.0, fact = 1.0;
         for (int k = 0; k <= p; ++k) {
-            if (k > 0) { hk *= h; fact *= k; }
+            if (k > 0) {
+                hk *= h;
+                fact *= k;
+            }
             coef.row(k) = (hk / fact) * J.row(k);
         }
         Eigen::MatrixXd b = Eigen::MatrixXd::Zero(p + 1, c.dimension());

@@ -48,14 +48,12 @@ private:
 
 // Derivatives 0..order of the p+1 basis functions non-zero on span s at t:
 // result(k, j) = d^k N_{s−p+j, p}(t) / dt^k. (Piegl & Tiller A2.3.)
-Eigen::MatrixXd basis_function_derivatives(int degree, const std::vector<double>& knots,
-                                           int span, double t, int order);
+Eigen::MatrixXd basis_function_derivatives(int degree, const std::vector<double>& knots, int span, double t, int order);
 
 // One B-spline basis function of degree p given by its p+2 local knots
 // [κ_0, …, κ_{p+1}], or its derivative, at t; zero outside [κ_0, κ_{p+1}). Right-continuous,
 // except that t = κ_{p+1} is taken from the left (so closed supports evaluate symmetrically).
-double bspline_basis(int degree, const std::vector<double>& local_knots, double t,
-                     int derivative = 0);
+double bspline_basis(int degree, const std::vector<double>& local_knots, double t, int derivative = 0);
 
 BSplineCurve insert_knot(const BSplineCurve& curve, double t);
 BSplineCurve elevate_degree(const BSplineCurve& curve);

@@ -8,17 +8,14 @@
 
 namespace cagd::spline {
 
-PiecewiseHermiteCurve::PiecewiseHermiteCurve(Eigen::MatrixXd nodes, Eigen::MatrixXd d0, Eigen::MatrixXd d1)
-    : nodes_(std::move(nodes)), d0_(std::move(d0)), d1_(std::move(d1)) {
+PiecewiseHermiteCurve::PiecewiseHermiteCurve(Eigen::MatrixXd nodes, Eigen::MatrixXd d0, Eigen::MatrixXd d1) : nodes_(std::move(nodes)), d0_(std::move(d0)), d1_(std::move(d1)) {
     const char* who = "PiecewiseHermiteCurve";
     if (d0_.rows() < 1) fail_input(who, "needs at least one span");
     if (nodes_.rows() != d0_.rows() + 1 || d1_.rows() != d0_.rows())
-        fail_input(who, "needs K+1 nodes and K start/end derivatives, got " + std::to_string(nodes_.rows()) + ", " +
-                            std::to_string(d0_.rows()) + ", " + std::to_string(d1_.rows()));
-    if (d0_.cols() != nodes_.cols() || d1_.cols() != nodes_.cols())
-        fail_input(who, "nodes and derivatives must have the same dimension");
-    if (!nodes_.allFinite() || !d0_.allFinite() || !d1_.allFinite())
-        fail_input(who, "nodes and derivatives must be finite");
+        fail_input(who,
+                   "needs K+1 nodes and K start/end derivatives, got " + std::to_string(nodes_.rows()) + ", " + std::to_string(d0_.rows()) + ", " + std::to_string(d1_.rows()));
+    if (d0_.cols() != nodes_.cols() || d1_.cols() != nodes_.cols()) fail_input(who, "nodes and derivatives must have the same dimension");
+    if (!nodes_.allFinite() || !d0_.allFinite() || !d1_.allFinite()) fail_input(who, "nodes and derivatives must be finite");
 }
 
 std::vector<double> PiecewiseHermiteCurve::breakpoints() const { return unit_piece_breakpoints(spans()); }
@@ -35,14 +32,12 @@ Eigen::MatrixXd PiecewiseHermiteCurve::jet_from_left(double u, int order) const 
 
 Eigen::MatrixXd PiecewiseHermiteCurve::span_jet(int k, double t, int order) const {
     // Basis values and derivatives of H0..H3 at t (rows: derivative order 0..3).
-    const double H[4][4] = {
-        {2 * t * t * t - 3 * t * t + 1, -2 * t * t * t + 3 * t * t, t * t * t - 2 * t * t + t, t * t * t - t * t},
-        {6 * t * t - 6 * t, -6 * t * t + 6 * t, 3 * t * t - 4 * t + 1, 3 * t * t - 2 * t},
-        {12 * t - 6, -12 * t + 6, 6 * t - 4, 6 * t - 2},
-        {12, -12, 6, 6}};
+    const double H[4][4] = {{2 * t * t * t - 3 * t * t + 1, -2 * t * t * t + 3 * t * t, t * t * t - 2 * t * t + t, t * t * t - t * t},
+                            {6 * t * t - 6 * t, -6 * t * t + 6 * t, 3 * t * t - 4 * t + 1, 3 * t * t - 2 * t},
+                            {12 * t - 6, -12 * t + 6, 6 * t - 4, 6 * t - 2},
+                            {12, -12, 6, 6}};
     Eigen::MatrixXd out = Eigen::MatrixXd::Zero(order + 1, dimension());
-    for (int j = 0; j <= std::min(order, 3); ++j)
-        out.row(j) = H[j][0] * nodes_.row(k) + H[j][1] * nodes_.row(k + 1) + H[j][2] * d0_.row(k) + H[j][3] * d1_.row(k);
+    for (int j = 0; j <= std::min(order, 3); ++j) out.row(j) = H[j][0] * nodes_.row(k) + H[j][1] * nodes_.row(k + 1) + H[j][2] * d0_.row(k) + H[j][3] * d1_.row(k);
     return out;
 }
 
@@ -90,8 +85,8 @@ PiecewiseHermiteCurve cubic_spline_interpolant(const PointList& points, Paramete
             rhs.row(k) = 3.0 * delta.row(spans - 1) / h[static_cast<std::size_t>(spans - 1)];
             continue;
         }
-        const int prev = (k - 1 + spans) % spans;   // span ending at node k
-        const int next = k % spans;                 // span starting at node k
+        const int prev = (k - 1 + spans) % spans;  // span ending at node k
+        const int next = k % spans;                // span starting at node k
         const double hp = h[static_cast<std::size_t>(prev)], hn = h[static_cast<std::size_t>(next)];
         trip.emplace_back(k, (k - 1 + N) % N, hn);
         trip.emplace_back(k, k, 2.0 * (hp + hn));
@@ -113,19 +108,17 @@ PiecewiseHermiteCurve cubic_spline_interpolant(const PointList& points, Paramete
 }
 
 Eigen::MatrixXd hermite_tangent_directions(const PointList& points, TangentRule rule, bool closed) {
-    const char* who = rule == TangentRule::circle ? "hermite_tangent_directions (circle, Hermite B)"
-                                                  : "hermite_tangent_directions (chord of neighbours, Hermite A)";
+    const char* who = rule == TangentRule::circle ? "hermite_tangent_directions (circle, Hermite B)" : "hermite_tangent_directions (chord of neighbours, Hermite A)";
     require_valid_points(points, (closed || rule == TangentRule::circle) ? 3 : 2, true, closed, who);
     const Eigen::Index n = points.rows();
     Eigen::MatrixXd t(n, points.cols());
     const auto interior = [&](Eigen::Index i, Eigen::Index im, Eigen::Index ip) {
         const Eigen::RowVectorXd a = points.row(i) - points.row(im), b = points.row(ip) - points.row(i);
-        Eigen::RowVectorXd d = rule == TangentRule::circle ? Eigen::RowVectorXd(b.norm() / a.norm() * a + a.norm() / b.norm() * b)
-                                                           : Eigen::RowVectorXd(points.row(ip) - points.row(im));
+        Eigen::RowVectorXd d =
+            rule == TangentRule::circle ? Eigen::RowVectorXd(b.norm() / a.norm() * a + a.norm() / b.norm() * b) : Eigen::RowVectorXd(points.row(ip) - points.row(im));
         // A reversal leaves d = 0 (Hermite A: P_{i−1} = P_{i+1}) or tiny by cancellation.
         if (d.norm() <= 1e-14 * (a.norm() + b.norm()))
-            fail_input(who, "the curve reverses at point " + std::to_string(i) +
-                                " (turning angle π), where no tangent direction is defined");
+            fail_input(who, "the curve reverses at point " + std::to_string(i) + " (turning angle π), where no tangent direction is defined");
         return unit(d);
     };
     for (Eigen::Index i = 0; i < n; ++i) {
@@ -153,8 +146,7 @@ PiecewiseHermiteCurve hermite_interpolant(const PointList& points, const Eigen::
     const char* who = "hermite_interpolant";
     require_valid_points(points, closed ? 3 : 2, true, closed, who);
     if (directions.rows() != points.rows() || directions.cols() != points.cols())
-        fail_input(who, "needs one direction per point, got " + std::to_string(directions.rows()) + " for " +
-                            std::to_string(points.rows()) + " points");
+        fail_input(who, "needs one direction per point, got " + std::to_string(directions.rows()) + " for " + std::to_string(points.rows()) + " points");
     const Eigen::MatrixXd nodes = span_nodes(points, closed);
     const Eigen::Index spans = nodes.rows() - 1, n = points.rows();
     Eigen::MatrixXd d0(spans, points.cols()), d1(spans, points.cols());

@@ -62,7 +62,7 @@ public:
     std::vector<double> breakpoints() const override;
 
 private:
-    Eigen::MatrixXd span_jet(int k, double t, int order) const;   // span k at local t ∈ [0, 1]
+    Eigen::MatrixXd span_jet(int k, double t, int order) const;  // span k at local t ∈ [0, 1]
     Eigen::MatrixXd nodes_, d0_, d1_;
 };
 

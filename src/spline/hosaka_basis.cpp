@@ -29,12 +29,14 @@ RationalPolynomial basis_sum(int m, int i, Sign sign, Power t_power) {
 
 RationalPolynomial hosaka_p(int m, int i) {
     require_indices("cagd::spline::hosaka_p", m, i);
-    return basis_sum(m, i, [&](int j) { return (i + j - 1) % 2 == 0 ? 1 : -1; }, [&](int j) { return i + j; });
+    return basis_sum(
+        m, i, [&](int j) { return (i + j - 1) % 2 == 0 ? 1 : -1; }, [&](int j) { return i + j; });
 }
 
 RationalPolynomial hosaka_q(int m, int i) {
     require_indices("cagd::spline::hosaka_q", m, i);
-    return basis_sum(m, i, [&](int j) { return j % 2 == 0 ? 1 : -1; }, [&](int j) { return 2 * m + 1 - i - j; });
+    return basis_sum(
+        m, i, [&](int j) { return j % 2 == 0 ? 1 : -1; }, [&](int j) { return 2 * m + 1 - i - j; });
 }
 
 HosakaBasis::HosakaBasis(int m) : m_(m) {

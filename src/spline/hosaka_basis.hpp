@@ -18,7 +18,7 @@
 
 namespace cagd::spline {
 
-RationalPolynomial hosaka_p(int m, int i);   // eq (2), exact
+RationalPolynomial hosaka_p(int m, int i);  // eq (2), exact
 RationalPolynomial hosaka_q(int m, int i);
 
 class HosakaBasis {

@@ -18,8 +18,7 @@ Eigen::MatrixXd stack(int m, const std::vector<Eigen::MatrixXd>& parts, const ch
     Eigen::MatrixXd out(static_cast<Eigen::Index>(parts.size()) * (m + 1), dim);
     for (std::size_t s = 0; s < parts.size(); ++s) {
         if (parts[s].rows() != m + 1 || parts[s].cols() != dim)
-            fail_input(who, "segment " + std::to_string(s) + ": derivative sets must be (m+1) x dim = " + std::to_string(m + 1) + " x " +
-                                std::to_string(dim));
+            fail_input(who, "segment " + std::to_string(s) + ": derivative sets must be (m+1) x dim = " + std::to_string(m + 1) + " x " + std::to_string(dim));
         out.middleRows(static_cast<Eigen::Index>(s) * (m + 1), m + 1) = parts[s];
     }
     return out;
@@ -31,15 +30,13 @@ HosakaCurve::HosakaCurve(int m, const std::vector<Eigen::MatrixXd>& start, const
     validate();
 }
 
-HosakaCurve::HosakaCurve(int m, Eigen::MatrixXd start, Eigen::MatrixXd end) : basis_(m), start_(std::move(start)), end_(std::move(end)) {
-    validate();
-}
+HosakaCurve::HosakaCurve(int m, Eigen::MatrixXd start, Eigen::MatrixXd end) : basis_(m), start_(std::move(start)), end_(std::move(end)) { validate(); }
 
 void HosakaCurve::validate() const {
     const char* who = "cagd::spline::HosakaCurve";
     if (start_.rows() < m() + 1 || start_.rows() % (m() + 1) != 0 || end_.rows() != start_.rows() || end_.cols() != start_.cols() || start_.cols() < 1)
-        fail_input(who, "needs (m+1) rows per segment, the same for start and end derivatives, got " + std::to_string(start_.rows()) + " and " +
-                            std::to_string(end_.rows()) + " rows");
+        fail_input(who,
+                   "needs (m+1) rows per segment, the same for start and end derivatives, got " + std::to_string(start_.rows()) + " and " + std::to_string(end_.rows()) + " rows");
     if (!start_.allFinite() || !end_.allFinite()) fail_input(who, "derivatives must be finite");
 }
 
@@ -57,8 +54,8 @@ Eigen::MatrixXd HosakaCurve::jet_from_left(double u, int order) const {
 
 Eigen::MatrixXd HosakaCurve::segment_jet(int s, double t, int order) const {
     if (s < 0 || s >= segments() || !(t >= 0.0 && t <= 1.0) || order < 0)
-        fail_input("cagd::spline::HosakaCurve::segment_jet", "needs 0 <= s < " + std::to_string(segments()) + ", t in [0, 1], order >= 0; got s = " +
-                                                                  std::to_string(s) + ", t = " + full_precision(t) + ", order " + std::to_string(order));
+        fail_input("cagd::spline::HosakaCurve::segment_jet", "needs 0 <= s < " + std::to_string(segments()) + ", t in [0, 1], order >= 0; got s = " + std::to_string(s) +
+                                                                 ", t = " + full_precision(t) + ", order " + std::to_string(order));
     const Eigen::Index first = static_cast<Eigen::Index>(s) * (m() + 1);
     Eigen::MatrixXd out = Eigen::MatrixXd::Zero(order + 1, dimension());
     for (int k = 0; k <= order; ++k)
@@ -70,11 +67,10 @@ HosakaSpline hosaka_c2_spline(const PointList& points, const HosakaSplineOptions
     const char* who = "cagd::spline::hosaka_c2_spline";
     require_valid_points(points, o.closed ? 3 : 2, true, o.closed, who);
     const int np = static_cast<int>(points.rows()), dim = static_cast<int>(points.cols());
-    const int n = o.closed ? np : np - 1;   // segments
+    const int n = o.closed ? np : np - 1;  // segments
     if (!o.closed && o.end == HosakaEnd::tangent)
         for (const Eigen::VectorXd* v : {&o.start_tangent, &o.end_tangent})
-            if (v->size() != dim || !v->allFinite())
-                fail_input(who, "tangent ends need a finite start and end tangent of dimension " + std::to_string(dim));
+            if (v->size() != dim || !v->allFinite()) fail_input(who, "tangent ends need a finite start and end tangent of dimension " + std::to_string(dim));
     Eigen::MatrixXd A(n, dim);
     for (int i = 0; i < n; ++i) A.row(i) = points.row((i + 1) % np) - points.row(i);
     // k_i at the join after segment i (closed: every segment; open: i = 0..n−2).
@@ -88,19 +84,24 @@ HosakaSpline hosaka_c2_spline(const PointList& points, const HosakaSplineOptions
     std::vector<Eigen::Triplet<double>> trip;
     std::vector<double> sub(o.closed ? 0 : static_cast<std::size_t>(unknowns), 0.0), diag(sub), sup(sub);
     const auto add = [&](int r, int c, double v) {
-        if (o.closed) trip.emplace_back(r, c, v);
-        else (c == r - 1 ? sub : c == r ? diag : sup)[static_cast<std::size_t>(r)] += v;
+        if (o.closed)
+            trip.emplace_back(r, c, v);
+        else
+            (c == r - 1 ? sub : c == r ? diag : sup)[static_cast<std::size_t>(r)] += v;
     };
     Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(unknowns, dim);
     // Adds coefficient `c` times C_i to row r.
     const auto add_C = [&](int r, int i, double c) {
-        if (o.closed) add(r, (i + 1) % n, c * k[static_cast<std::size_t>(i)]);
-        else if (i == n - 1) add(r, n, c);
-        else add(r, i + 1, c * k[static_cast<std::size_t>(i)]);
+        if (o.closed)
+            add(r, (i + 1) % n, c * k[static_cast<std::size_t>(i)]);
+        else if (i == n - 1)
+            add(r, n, c);
+        else
+            add(r, i + 1, c * k[static_cast<std::size_t>(i)]);
     };
     int row = 0;
-    if (!o.closed) {   // start condition
-        if (o.end == HosakaEnd::natural) {   // R''(0) = 6A − 4B − 2C = 0
+    if (!o.closed) {                        // start condition
+        if (o.end == HosakaEnd::natural) {  // R''(0) = 6A − 4B − 2C = 0
             add(row, 0, 2.0);
             add_C(row, 0, 1.0);
             rhs.row(row) = 3.0 * A.row(0);
@@ -111,7 +112,7 @@ HosakaSpline hosaka_c2_spline(const PointList& points, const HosakaSplineOptions
         ++row;
     }
     const int joins = o.closed ? n : n - 1;
-    for (int j = 0; j < joins; ++j, ++row) {   // eq (20) at the join after segment j
+    for (int j = 0; j < joins; ++j, ++row) {  // eq (20) at the join after segment j
         const double kj = k[static_cast<std::size_t>(j)];
         const int next = (j + 1) % n;
         add(row, j, 1.0);
@@ -119,8 +120,8 @@ HosakaSpline hosaka_c2_spline(const PointList& points, const HosakaSplineOptions
         add_C(row, next, kj * kj);
         rhs.row(row) = 3.0 * (A.row(j) + kj * kj * A.row(next));
     }
-    if (!o.closed) {   // end condition
-        if (o.end == HosakaEnd::natural) {   // R''(1) = −6A + 2B + 4C = 0
+    if (!o.closed) {                        // end condition
+        if (o.end == HosakaEnd::natural) {  // R''(1) = −6A + 2B + 4C = 0
             add(row, n - 1, 1.0);
             add(row, n, 2.0);
             rhs.row(row) = 3.0 * A.row(n - 1);
@@ -147,9 +148,12 @@ HosakaSpline hosaka_c2_spline(const PointList& points, const HosakaSplineOptions
     Eigen::MatrixXd B(n, dim), C(n, dim);
     for (int i = 0; i < n; ++i) {
         B.row(i) = x.row(i);
-        if (o.closed) C.row(i) = k[static_cast<std::size_t>(i)] * x.row((i + 1) % n);
-        else if (i == n - 1) C.row(i) = x.row(n);
-        else C.row(i) = k[static_cast<std::size_t>(i)] * x.row(i + 1);
+        if (o.closed)
+            C.row(i) = k[static_cast<std::size_t>(i)] * x.row((i + 1) % n);
+        else if (i == n - 1)
+            C.row(i) = x.row(n);
+        else
+            C.row(i) = k[static_cast<std::size_t>(i)] * x.row(i + 1);
     }
     Eigen::MatrixXd start(2 * n, dim), end(2 * n, dim);
     for (int i = 0; i < n; ++i) {
@@ -202,16 +206,16 @@ HosakaCurve hosaka_spline(const PointList& points, int m, const HosakaSplineOpti
     for (int node = 0; node < np; ++node)
         for (int k = m + 1; k <= 2 * m; ++k, ++row) {
             const bool has_left = closed || node > 0, has_right = closed || node < np - 1;
-            if (has_left && has_right) {   // continuity of the k-th τ-derivative
+            if (has_left && has_right) {  // continuity of the k-th τ-derivative
                 add_derivative(row, (node - 1 + segs) % segs, 1.0, k, 1.0);
                 add_derivative(row, node % segs, 0.0, k, -1.0);
-            } else if (tangent_ends && k == 2 * m) {   // clamped end: the given t-derivative replaces order 2m
+            } else if (tangent_ends && k == 2 * m) {  // clamped end: the given t-derivative replaces order 2m
                 const int s = has_right ? 0 : segs - 1;
                 trip.emplace_back(row, unknown(node, 1), 1.0);
                 rhs.row(row) = (has_right ? o.start_tangent : o.end_tangent).transpose() / L[static_cast<std::size_t>(s)];
-            } else if (has_right) {        // natural start: the k-th derivative vanishes
+            } else if (has_right) {  // natural start: the k-th derivative vanishes
                 add_derivative(row, 0, 0.0, k, 1.0);
-            } else {                       // natural end
+            } else {  // natural end
                 add_derivative(row, segs - 1, 1.0, k, 1.0);
             }
         }
@@ -238,8 +242,7 @@ ExplicitSpline hosaka_explicit_spline(const std::vector<double>& x, const Eigen:
     const char* who = "cagd::spline::hosaka_explicit_spline";
     const int n = static_cast<int>(x.size());
     if (n < 2) fail_input(who, "needs at least 2 abscissae, got " + std::to_string(n));
-    if (values.rows() != n || values.cols() < 1)
-        fail_input(who, "needs one value row per abscissa, got " + std::to_string(values.rows()) + " rows for " + std::to_string(n));
+    if (values.rows() != n || values.cols() < 1) fail_input(who, "needs one value row per abscissa, got " + std::to_string(values.rows()) + " rows for " + std::to_string(n));
     if (!values.allFinite()) fail_input(who, "values must be finite");
     require_increasing(x, 2, "x", who);
     const auto h = [&](int i) { return x[static_cast<std::size_t>(i + 1)] - x[static_cast<std::size_t>(i)]; };
@@ -279,15 +282,15 @@ Eigen::RowVectorXd ExplicitSpline::evaluate_in(int i, double u, int k) const {
     static const HosakaBasis basis(1);
     const double l = x[static_cast<std::size_t>(i + 1)] - x[static_cast<std::size_t>(i)];
     // eq (21): l^j on the j-th end derivative; d/dx = (1/l) d/du.
-    return std::pow(l, -k) * (basis.p(0, u, k) * values.row(i) + basis.q(0, u, k) * values.row(i + 1) + l * basis.p(1, u, k) * slopes.row(i) +
-                              l * basis.q(1, u, k) * slopes.row(i + 1));
+    return std::pow(l, -k) *
+           (basis.p(0, u, k) * values.row(i) + basis.q(0, u, k) * values.row(i + 1) + l * basis.p(1, u, k) * slopes.row(i) + l * basis.q(1, u, k) * slopes.row(i + 1));
 }
 
 double ExplicitSpline::bending_energy() const {
     double e = 0.0;
     for (std::size_t i = 0; i + 1 < x.size(); ++i) {
         const Eigen::RowVectorXd y0 = evaluate_in(static_cast<int>(i), 0.0, 2), y1 = evaluate_in(static_cast<int>(i), 1.0, 2);
-        e += (x[i + 1] - x[i]) / 3.0 * (y0.squaredNorm() + y0.dot(y1) + y1.squaredNorm());   // ∫ of a linear function squared
+        e += (x[i + 1] - x[i]) / 3.0 * (y0.squaredNorm() + y0.dot(y1) + y1.squaredNorm());  // ∫ of a linear function squared
     }
     return e;
 }

@@ -53,24 +53,24 @@ public:
 
 private:
     HosakaBasis basis_;
-    Eigen::MatrixXd start_, end_;   // stacked, (m+1) rows per segment
+    Eigen::MatrixXd start_, end_;  // stacked, (m+1) rows per segment
     void validate() const;
 };
 
-enum class HosakaScale { chord, unit };   // k_i of eq (19), or k_i = 1
+enum class HosakaScale { chord, unit };  // k_i of eq (19), or k_i = 1
 enum class HosakaEnd { natural, tangent };
 
 struct HosakaSplineOptions {
     HosakaScale scale = HosakaScale::chord;
     HosakaEnd end = HosakaEnd::natural;
     bool closed = false;
-    Eigen::VectorXd start_tangent, end_tangent;   // B_1 and C_n for HosakaEnd::tangent
+    Eigen::VectorXd start_tangent, end_tangent;  // B_1 and C_n for HosakaEnd::tangent
 };
 
 struct HosakaSpline {
     HosakaCurve curve;
-    std::vector<double> k;          // k_i, one per join (closed: per segment, wrapping)
-    Eigen::MatrixXd B, C;           // one row per segment
+    std::vector<double> k;  // k_i, one per join (closed: per segment, wrapping)
+    Eigen::MatrixXd B, C;   // one row per segment
 };
 
 HosakaSpline hosaka_c2_spline(const PointList& points, const HosakaSplineOptions& options = {});
@@ -102,13 +102,13 @@ HosakaCurve hosaka_spline(const PointList& points, int m, const HosakaSplineOpti
 // Preconditions: strictly increasing finite abscissae, ≥ 2 of them, one value row per abscissa.
 struct ExplicitSpline {
     std::vector<double> x;
-    Eigen::MatrixXd values, slopes;   // one row per abscissa
+    Eigen::MatrixXd values, slopes;  // one row per abscissa
     // k-th x-derivative (k ≤ 3) at x ∈ [x_0, x_n] (InvalidInput outside); at an interior abscissa
     // the interval to its right is used.
     Eigen::RowVectorXd evaluate(double at, int k = 0) const;
     // The same on interval i = [x_i, x_{i+1}] at its local u ∈ [0, 1] (one-sided limits at the joins).
     Eigen::RowVectorXd evaluate_in(int interval, double u, int k = 0) const;
-    double bending_energy() const;   // Σ over columns of ∫ (d²/dx²)² dx, exact (y'' is linear per interval)
+    double bending_energy() const;  // Σ over columns of ∫ (d²/dx²)² dx, exact (y'' is linear per interval)
 };
 ExplicitSpline hosaka_explicit_spline(const std::vector<double>& x, const Eigen::MatrixXd& values);
 

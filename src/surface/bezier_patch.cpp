@@ -58,8 +58,8 @@ BezierPatch::BezierPatch(ControlNet net) : net_(std::move(net)) {
     if (net_[0].rows() < 1 || net_[0].cols() < 1) fail_input(kWho, "empty control net");
     for (const Eigen::MatrixXd& c : net_) {
         if (c.rows() != net_[0].rows() || c.cols() != net_[0].cols())
-            fail_input(kWho, "coordinate matrices of different sizes (" + std::to_string(c.rows()) + "x" + std::to_string(c.cols()) + " vs " + std::to_string(net_[0].rows()) + "x" +
-                                 std::to_string(net_[0].cols()) + ")");
+            fail_input(kWho, "coordinate matrices of different sizes (" + std::to_string(c.rows()) + "x" + std::to_string(c.cols()) + " vs " + std::to_string(net_[0].rows()) +
+                                 "x" + std::to_string(net_[0].cols()) + ")");
         if (!c.allFinite()) fail_input(kWho, "control points must be finite");
     }
 }
@@ -79,10 +79,9 @@ SurfaceGrid BezierPatch::evaluate_grid(const std::vector<double>& us, const std:
     constexpr int orders[6][2] = {{0, 0}, {1, 0}, {0, 1}, {2, 0}, {1, 1}, {0, 2}};
     SurfaceGrid g;
     for (std::size_t c = 0; c < 3; ++c) {
-        std::array<Eigen::MatrixXd, 3> left;   // Bu_k · P_c
+        std::array<Eigen::MatrixXd, 3> left;  // Bu_k · P_c
         for (std::size_t k = 0; k < 3; ++k) left[k] = bu[k] * net_[c];
-        for (std::size_t q = 0; q < 6; ++q)
-            g.quantity[q][c] = left[static_cast<std::size_t>(orders[q][0])] * bv[static_cast<std::size_t>(orders[q][1])].transpose();
+        for (std::size_t q = 0; q < 6; ++q) g.quantity[q][c] = left[static_cast<std::size_t>(orders[q][0])] * bv[static_cast<std::size_t>(orders[q][1])].transpose();
     }
     return g;
 }

@@ -22,8 +22,8 @@ TaylorJet jet_of(const DerivativeFunction& f, double x, int order) {
 void require_boundary(const BoundaryCurve& c, int m, const char* name, const char* who) {
     if (!c.y) fail_input(who, std::string(name) + " boundary: y(x) is missing");
     if (c.phi.size() != static_cast<std::size_t>(m) + 1)
-        fail_input(who, std::string(name) + " boundary: needs m+1 = " + std::to_string(m + 1) + " functions phi (z and the cross derivatives), got " +
-                            std::to_string(c.phi.size()));
+        fail_input(who,
+                   std::string(name) + " boundary: needs m+1 = " + std::to_string(m + 1) + " functions phi (z and the cross derivatives), got " + std::to_string(c.phi.size()));
     for (std::size_t j = 0; j < c.phi.size(); ++j)
         if (!c.phi[j]) fail_input(who, std::string(name) + " boundary: phi[" + std::to_string(j) + "] is missing");
     if (!std::isfinite(c.x_min) || !std::isfinite(c.x_max) || !(c.x_min < c.x_max))
@@ -40,7 +40,7 @@ DerivativeFunction polynomial_function(std::vector<double> coefficients) {
     return [c = std::move(coefficients)](double x, int k) {
         double s = 0.0;
         for (std::size_t d = c.size(); d-- > static_cast<std::size_t>(std::max(k, 0));) {
-            double falling = 1.0;   // d (d−1) … (d−k+1)
+            double falling = 1.0;  // d (d−1) … (d−k+1)
             for (int r = 0; r < k; ++r) falling *= static_cast<double>(d) - r;
             s = s * x + c[d] * falling;
         }
@@ -49,9 +49,7 @@ DerivativeFunction polynomial_function(std::vector<double> coefficients) {
 }
 
 DerivativeFunction sinusoid(double amplitude, double frequency, double phase, double offset) {
-    return [=](double x, int k) {
-        return amplitude * std::pow(frequency, k) * std::sin(frequency * x + phase + k * (std::numbers::pi / 2)) + (k == 0 ? offset : 0.0);
-    };
+    return [=](double x, int k) { return amplitude * std::pow(frequency, k) * std::sin(frequency * x + phase + k * (std::numbers::pi / 2)) + (k == 0 ? offset : 0.0); };
 }
 
 DerivativeFunction explicit_spline_function(std::shared_ptr<const spline::ExplicitSpline> spline, int column) {
@@ -74,8 +72,7 @@ BoundaryCurve boundary_through_points(const PointList& xyz, const std::vector<do
     return c;
 }
 
-BoundaryConformingSurface::BoundaryConformingSurface(int m, BoundaryCurve lower, BoundaryCurve upper)
-    : basis_(m), lower_(std::move(lower)), upper_(std::move(upper)) {
+BoundaryConformingSurface::BoundaryConformingSurface(int m, BoundaryCurve lower, BoundaryCurve upper) : basis_(m), lower_(std::move(lower)), upper_(std::move(upper)) {
     const char* who = "cagd::surface::BoundaryConformingSurface";
     require_boundary(lower_, m, "lower", who);
     require_boundary(upper_, m, "upper", who);
@@ -115,7 +112,7 @@ std::vector<double> BoundaryConformingSurface::characteristics(double x, int k, 
     const Inputs in = inputs(x, i);
     const TaylorJet l = in.y[1] - in.y[0];
     const TaylorJet l_inverse = numeric::reciprocal(l);
-    const double side = k;   // v at the boundary
+    const double side = k;  // v at the boundary
     // Level 0: _kφ_{0,j}, j = 0..jmax+i; j ≤ m given, j > m from eq (37) at v = k.
     std::vector<TaylorJet> level;
     for (int j = 0; j <= jmax + i; ++j) {
@@ -143,8 +140,7 @@ std::vector<double> BoundaryConformingSurface::characteristics(double x, int k, 
 
 double BoundaryConformingSurface::characteristic(double x, int k, int i, int j) const {
     const char* who = "cagd::surface::BoundaryConformingSurface::characteristic";
-    if (k < 0 || k > 1 || i < 0 || j < 0)
-        fail_input(who, "needs k in {0, 1}, i >= 0, j >= 0, got k=" + std::to_string(k) + " i=" + std::to_string(i) + " j=" + std::to_string(j));
+    if (k < 0 || k > 1 || i < 0 || j < 0) fail_input(who, "needs k in {0, 1}, i >= 0, j >= 0, got k=" + std::to_string(k) + " i=" + std::to_string(i) + " j=" + std::to_string(j));
     section_v(x, y_lower(x), who);
     return characteristics(x, k, i, j).back();
 }
@@ -155,8 +151,7 @@ double BoundaryConformingSurface::derivative(double x, double y, int i, int n) c
     const double v = section_v(x, y, who), l = y_upper(x) - y_lower(x);
     const std::vector<double> c0 = characteristics(x, 0, i, m()), c1 = characteristics(x, 1, i, m());
     double s = 0.0;
-    for (int j = 0; j <= m(); ++j)
-        s += std::pow(l, j - n) * (c0[static_cast<std::size_t>(j)] * basis_.p(j, v, n) + c1[static_cast<std::size_t>(j)] * basis_.q(j, v, n));
+    for (int j = 0; j <= m(); ++j) s += std::pow(l, j - n) * (c0[static_cast<std::size_t>(j)] * basis_.p(j, v, n) + c1[static_cast<std::size_t>(j)] * basis_.q(j, v, n));
     return s;
 }
 
@@ -166,16 +161,15 @@ double BoundaryConformingSurface::derivative_direct(double x, double y, int i, i
     const double v0 = section_v(x, y, who);
     const Inputs in = inputs(x, i);
     const TaylorJet l = in.y[1] - in.y[0];
-    const TaylorJet v = (TaylorJet(i, y) - in.y[0]) * numeric::reciprocal(l);   // v(x) at fixed y
+    const TaylorJet v = (TaylorJet(i, y) - in.y[0]) * numeric::reciprocal(l);  // v(x) at fixed y
     TaylorJet sum(i);
     for (int j = 0; j <= m(); ++j) {
-        std::vector<double> dp, dq;   // derivatives of p_j^{(n)}, q_j^{(n)} at v0
+        std::vector<double> dp, dq;  // derivatives of p_j^{(n)}, q_j^{(n)} at v0
         for (int r = 0; r <= i; ++r) {
             dp.push_back(basis_.p(j, v0, n + r));
             dq.push_back(basis_.q(j, v0, n + r));
         }
-        sum += numeric::power(l, j - n) *
-               (in.phi[0][static_cast<std::size_t>(j)] * numeric::compose(dp, v) + in.phi[1][static_cast<std::size_t>(j)] * numeric::compose(dq, v));
+        sum += numeric::power(l, j - n) * (in.phi[0][static_cast<std::size_t>(j)] * numeric::compose(dp, v) + in.phi[1][static_cast<std::size_t>(j)] * numeric::compose(dq, v));
     }
     return sum.derivative(i);
 }
@@ -183,35 +177,31 @@ double BoundaryConformingSurface::derivative_direct(double x, double y, int i, i
 RationalPolynomial identity40_bracket(int m, int j, int k, int s) {
     const char* who = "cagd::surface::identity40_bracket";
     if (m < 0 || j < 0 || j > m || k < 0 || k > 1 || s < 0 || s > 1)
-        fail_input(who, "needs m >= 0, 0 <= j <= m, k and s in {0, 1}, got m=" + std::to_string(m) + " j=" + std::to_string(j) + " k=" + std::to_string(k) +
-                            " s=" + std::to_string(s));
+        fail_input(who,
+                   "needs m >= 0, 0 <= j <= m, k and s in {0, 1}, got m=" + std::to_string(m) + " j=" + std::to_string(j) + " k=" + std::to_string(k) + " s=" + std::to_string(s));
     const RationalPolynomial b = k == 0 ? spline::hosaka_p(m, j) : spline::hosaka_q(m, j);
     const RationalPolynomial previous = j == 0 ? RationalPolynomial() : (k == 0 ? spline::hosaka_p(m, j - 1) : spline::hosaka_q(m, j - 1));
     const Rational high_0 = b.derivative(m + 1)(0), high_1 = b.derivative(m + 1)(1);
     const RationalPolynomial v = RationalPolynomial::monomial(1), v_minus_1 = RationalPolynomial::linear(-1, 1);
-    if (s == 0)
-        return Rational(-j) * b + (k == 0 ? previous : RationalPolynomial()) + b.derivative() * v_minus_1 + high_0 * spline::hosaka_p(m, m);
+    if (s == 0) return Rational(-j) * b + (k == 0 ? previous : RationalPolynomial()) + b.derivative() * v_minus_1 + high_0 * spline::hosaka_p(m, m);
     return Rational(j) * b + (k == 1 ? previous : RationalPolynomial()) - b.derivative() * v + high_1 * spline::hosaka_q(m, m);
 }
 
-SectionJoinedSurface::SectionJoinedSurface(const BoundaryConformingSurface& a, double x0, BoundaryCurve far)
-    : a_(std::make_shared<const BoundaryConformingSurface>(a)), x0_(x0) {
+SectionJoinedSurface::SectionJoinedSurface(const BoundaryConformingSurface& a, double x0, BoundaryCurve far) : a_(std::make_shared<const BoundaryConformingSurface>(a)), x0_(x0) {
     const char* who = "cagd::surface::SectionJoinedSurface";
     if (!(x0 >= a.x_min() && x0 <= a.x_max()))
-        fail_input(who, "the section x0 = " + full_precision(x0) + " lies outside the surface's range [" + full_precision(a.x_min()) + ", " +
-                            full_precision(a.x_max()) + "]");
+        fail_input(who, "the section x0 = " + full_precision(x0) + " lies outside the surface's range [" + full_precision(a.x_min()) + ", " + full_precision(a.x_max()) + "]");
     const double y0 = a.y_lower(x0), y1 = a.y_upper(x0), scale = 1.0 + std::max(std::abs(y0), std::abs(y1));
     if (std::abs(far.x_min - y0) > 1e-12 * scale || std::abs(far.x_max - y1) > 1e-12 * scale)
-        fail_input(who, "the far boundary L3 must span the section's y range [" + full_precision(y0) + ", " + full_precision(y1) + "], got [" +
-                            full_precision(far.x_min) + ", " + full_precision(far.x_max) + "]");
+        fail_input(who, "the far boundary L3 must span the section's y range [" + full_precision(y0) + ", " + full_precision(y1) + "], got [" + full_precision(far.x_min) + ", " +
+                            full_precision(far.x_max) + "]");
     BoundaryCurve near;
     near.x_min = y0;
     near.x_max = y1;
     near.y = [x0](double, int k) { return k == 0 ? x0 : 0.0; };
     const std::shared_ptr<const BoundaryConformingSurface> source = a_;
     // y clamped to the section: the far curve's range equals it only to 1e-12.
-    for (int i = 0; i <= a.m(); ++i)
-        near.phi.push_back([source, x0, i, y0, y1](double y, int r) { return source->derivative(x0, std::clamp(y, y0, y1), i, r); });
+    for (int i = 0; i <= a.m(); ++i) near.phi.push_back([source, x0, i, y0, y1](double y, int r) { return source->derivative(x0, std::clamp(y, y0, y1), i, r); });
     try {
         joined_ = std::make_shared<const BoundaryConformingSurface>(a.m(), std::move(near), std::move(far));
     } catch (const InvalidInput& e) {

@@ -51,7 +51,7 @@ using DerivativeFunction = std::function<double(double x, int k)>;
 
 // Simple boundary data with exact derivatives of every order.
 DerivativeFunction constant_function(double c);
-DerivativeFunction polynomial_function(std::vector<double> coefficients);                        // Σ c_k x^k
+DerivativeFunction polynomial_function(std::vector<double> coefficients);                          // Σ c_k x^k
 DerivativeFunction sinusoid(double amplitude, double frequency, double phase, double offset = 0);  // offset + A sin(ω x + φ)
 // Column `column` of an explicit spline (eq 21–23); piecewise cubic, so derivatives beyond 3 are 0
 // (at an interior abscissa, those of the interval to its right).
@@ -59,8 +59,8 @@ DerivativeFunction explicit_spline_function(std::shared_ptr<const spline::Explic
 
 struct BoundaryCurve {
     double x_min = 0.0, x_max = 1.0;
-    DerivativeFunction y;                    // y_k(x)
-    std::vector<DerivativeFunction> phi;     // phi[j] = ζ^{(0,j)}(x, y_k(x)), j = 0..m (phi[0] = z_k(x))
+    DerivativeFunction y;                 // y_k(x)
+    std::vector<DerivativeFunction> phi;  // phi[j] = ζ^{(0,j)}(x, y_k(x)), j = 0..m (phi[0] = z_k(x))
 };
 
 // A boundary through points (x, y, z), x strictly increasing: y(x), z(x) the explicit spline of
@@ -76,9 +76,9 @@ public:
     double y_lower(double x) const;
     double y_upper(double x) const;
     double value(double x, double y) const { return derivative(x, y, 0, 0); }
-    double derivative(double x, double y, int i, int n) const;           // ζ^{(i,n)}, eq (38)
-    double characteristic(double x, int k, int i, int j) const;          // _kφ_{i,j}(x), eq (35)–(37)
-    double derivative_direct(double x, double y, int i, int n) const;    // ζ^{(i,n)} without (34), (36)
+    double derivative(double x, double y, int i, int n) const;         // ζ^{(i,n)}, eq (38)
+    double characteristic(double x, int k, int i, int j) const;        // _kφ_{i,j}(x), eq (35)–(37)
+    double derivative_direct(double x, double y, int i, int n) const;  // ζ^{(i,n)} without (34), (36)
 
 private:
     spline::HosakaBasis basis_;
@@ -100,7 +100,7 @@ private:
 // (p_{−1} = q_{−1} = 0). The paper: "by (10) always 0" (erratum hosaka-E7 for the printed form).
 RationalPolynomial identity40_bracket(int m, int j, int k, int s);
 
-class SectionJoinedSurface {   // S^B of eq (43)
+class SectionJoinedSurface {  // S^B of eq (43)
 public:
     // `far` is L3 with x and y exchanged: far.x_min..x_max is its y range, far.y(y) = x3(y),
     // far.phi[0](y) = z3(y), far.phi[i](y) = ζ^{(i,0)}(x3(y), y).

@@ -14,8 +14,7 @@ namespace cagd::surface {
 namespace {
 
 void require_unit(const char* who, double u, double v, int a, int b) {
-    if (!(u >= 0.0 && u <= 1.0) || !(v >= 0.0 && v <= 1.0))
-        fail_input(who, "(u, v) must lie in [0, 1]², got (" + full_precision(u) + ", " + full_precision(v) + ")");
+    if (!(u >= 0.0 && u <= 1.0) || !(v >= 0.0 && v <= 1.0)) fail_input(who, "(u, v) must lie in [0, 1]², got (" + full_precision(u) + ", " + full_precision(v) + ")");
     if (a < 0 || b < 0) fail_input(who, "derivative orders must be >= 0, got (" + std::to_string(a) + ", " + std::to_string(b) + ")");
 }
 
@@ -73,8 +72,8 @@ CornerDerivatives::CornerDerivatives(int m, int dimension) : m_(m), dimension_(d
 
 std::size_t CornerDerivatives::index(int k, int l, int i, int j) const {
     if (k < 0 || k > 1 || l < 0 || l > 1 || i < 0 || i > m_ || j < 0 || j > m_)
-        fail_input("cagd::surface::CornerDerivatives::at", "need k, l in {0, 1} and i, j in [0, m], got k=" + std::to_string(k) + " l=" + std::to_string(l) +
-                                                               " i=" + std::to_string(i) + " j=" + std::to_string(j));
+        fail_input("cagd::surface::CornerDerivatives::at",
+                   "need k, l in {0, 1} and i, j in [0, m], got k=" + std::to_string(k) + " l=" + std::to_string(l) + " i=" + std::to_string(i) + " j=" + std::to_string(j));
     return static_cast<std::size_t>(((k * 2 + l) * (m_ + 1) + i) * (m_ + 1) + j);
 }
 
@@ -89,8 +88,7 @@ HosakaPatch::HosakaPatch(CornerDerivatives corners) : corners_(std::move(corners
                     const Eigen::VectorXd& s = corners_.at(k, l, i, j);
                     if (s.size() != corners_.dimension() || !s.allFinite())
                         fail_input("cagd::surface::HosakaPatch", "corner derivative S_" + std::to_string(k) + std::to_string(l) + "^(" + std::to_string(i) + "," +
-                                                                     std::to_string(j) + ") must be a finite vector of dimension " +
-                                                                     std::to_string(corners_.dimension()));
+                                                                     std::to_string(j) + ") must be a finite vector of dimension " + std::to_string(corners_.dimension()));
                 }
 }
 
@@ -113,8 +111,8 @@ spline::HosakaCurve HosakaPatch::edge(int which) const {
 }
 
 PatchEdges HosakaPatch::edges() const {
-    return {std::make_shared<spline::HosakaCurve>(edge(1)), std::make_shared<spline::HosakaCurve>(edge(2)),
-            std::make_shared<spline::HosakaCurve>(edge(3)), std::make_shared<spline::HosakaCurve>(edge(4))};
+    return {std::make_shared<spline::HosakaCurve>(edge(1)), std::make_shared<spline::HosakaCurve>(edge(2)), std::make_shared<spline::HosakaCurve>(edge(3)),
+            std::make_shared<spline::HosakaCurve>(edge(4))};
 }
 
 Eigen::MatrixXd unit_edge_jet(const Curve& edge, double s, int order) {
@@ -124,8 +122,7 @@ Eigen::MatrixXd unit_edge_jet(const Curve& edge, double s, int order) {
     return j;
 }
 
-EdgeFormPatch::EdgeFormPatch(int m, PatchEdges edges, CornerDerivatives twists)
-    : basis_(m), edges_(std::move(edges)), twists_(std::move(twists)) {
+EdgeFormPatch::EdgeFormPatch(int m, PatchEdges edges, CornerDerivatives twists) : basis_(m), edges_(std::move(edges)), twists_(std::move(twists)) {
     const char* who = "cagd::surface::EdgeFormPatch";
     require_edges(edges_, who);
     if (twists_.m() != m || twists_.dimension() != edges_.r1->dimension())
@@ -133,21 +130,20 @@ EdgeFormPatch::EdgeFormPatch(int m, PatchEdges edges, CornerDerivatives twists)
     corner_term_ = 0.5 * (chord(*edges_.r1) + chord(*edges_.r2) - chord(*edges_.r3) - chord(*edges_.r4));
 }
 
-EdgeFormPatch::EdgeFormPatch(int m, PatchEdges edges)
-    : EdgeFormPatch(m, edges, CornerDerivatives(m, edges.r1 ? edges.r1->dimension() : 1)) {}
+EdgeFormPatch::EdgeFormPatch(int m, PatchEdges edges) : EdgeFormPatch(m, edges, CornerDerivatives(m, edges.r1 ? edges.r1->dimension() : 1)) {}
 
 Eigen::VectorXd EdgeFormPatch::derivative(double u, double v, int a, int b) const {
     require_unit("cagd::surface::EdgeFormPatch::derivative", u, v, a, b);
     const auto f = [&](double t, int k) { return basis_.q(0, t, k); };
     const Curve &r1 = *edges_.r1, &r2 = *edges_.r2, &r3 = *edges_.r3, &r4 = *edges_.r4;
     Eigen::VectorXd s = Eigen::VectorXd::Zero(r1.dimension());
-    if (a == 0 && b == 0) s += r1.point(r1.t_min());   // S(0,0)
+    if (a == 0 && b == 0) s += r1.point(r1.t_min());  // S(0,0)
     if (b == 0) s += relative_edge(r1, u, a);
     s += (relative_edge(r3, u, a) - relative_edge(r1, u, a)) * f(v, b);
     if (a == 0) s += relative_edge(r2, v, b);
     s += (relative_edge(r4, v, b) - relative_edge(r2, v, b)) * f(u, a);
     s += corner_term_ * (f(u, a) * f(v, b));
-    if (m() >= 1) s += tensor_sum(twists_, basis_, u, v, a, b, 1);   // S0(u, v): the terms of eq (27) with i, j ≥ 1
+    if (m() >= 1) s += tensor_sum(twists_, basis_, u, v, a, b, 1);  // S0(u, v): the terms of eq (27) with i, j ≥ 1
     return s;
 }
 
@@ -158,8 +154,8 @@ Eigen::VectorXd coons_boolean_sum(const PatchEdges& e, int m, double u, double v
     const spline::HosakaBasis basis(m);
     const double fu = basis.q(0, u, 0), fv = basis.q(0, v, 0);
     const auto at = [](const Curve& c, double s) { return Eigen::VectorXd(unit_edge_jet(c, s, 0).row(0).transpose()); };
-    const Eigen::VectorXd ruled_u = (1 - fv) * at(*e.r1, u) + fv * at(*e.r3, u);   // P_v: blend of the u-edges
-    const Eigen::VectorXd ruled_v = (1 - fu) * at(*e.r2, v) + fu * at(*e.r4, v);   // P_u: blend of the v-edges
+    const Eigen::VectorXd ruled_u = (1 - fv) * at(*e.r1, u) + fv * at(*e.r3, u);  // P_v: blend of the u-edges
+    const Eigen::VectorXd ruled_v = (1 - fu) * at(*e.r2, v) + fu * at(*e.r4, v);  // P_u: blend of the v-edges
     const Eigen::VectorXd tensor = (1 - fu) * (1 - fv) * at(*e.r1, 0) + fu * (1 - fv) * at(*e.r1, 1) + (1 - fu) * fv * at(*e.r3, 0) + fu * fv * at(*e.r3, 1);
     return ruled_u + ruled_v - tensor;
 }
@@ -204,8 +200,8 @@ double CartesianSurface::derivative_in(int cx, int cy, double u, double v, int a
 double CartesianSurface::derivative(double x, double y, int a, int b) const {
     const char* who = "cagd::surface::CartesianSurface::derivative";
     if (!(x >= x_.front() && x <= x_.back()) || !(y >= y_.front() && y <= y_.back()))
-        fail_input(who, "(x, y) = (" + full_precision(x) + ", " + full_precision(y) + ") outside the grid [" + full_precision(x_.front()) + ", " +
-                            full_precision(x_.back()) + "] x [" + full_precision(y_.front()) + ", " + full_precision(y_.back()) + "]");
+        fail_input(who, "(x, y) = (" + full_precision(x) + ", " + full_precision(y) + ") outside the grid [" + full_precision(x_.front()) + ", " + full_precision(x_.back()) +
+                            "] x [" + full_precision(y_.front()) + ", " + full_precision(y_.back()) + "]");
     const auto cell = [](const std::vector<double>& g, double t) {
         const auto it = std::upper_bound(g.begin(), g.end(), t);
         return std::clamp(static_cast<int>(it - g.begin()) - 1, 0, static_cast<int>(g.size()) - 2);
@@ -219,12 +215,12 @@ double CartesianSurface::derivative(double x, double y, int a, int b) const {
 CartesianSurface cartesian_spline_surface(const std::vector<double>& x, const std::vector<double>& y, const Eigen::MatrixXd& z) {
     const char* who = "cagd::surface::cartesian_spline_surface";
     if (z.rows() != static_cast<Eigen::Index>(x.size()) || z.cols() != static_cast<Eigen::Index>(y.size()))
-        fail_input(who, "heights must be " + std::to_string(x.size()) + " x " + std::to_string(y.size()) + " (x by y), got " + std::to_string(z.rows()) +
-                            " x " + std::to_string(z.cols()));
+        fail_input(who, "heights must be " + std::to_string(x.size()) + " x " + std::to_string(y.size()) + " (x by y), got " + std::to_string(z.rows()) + " x " +
+                            std::to_string(z.cols()));
     // Columns of `values` are independent functions: splines along x for every y line, and so on.
-    const Eigen::MatrixXd zx = spline::hosaka_explicit_spline(x, z).slopes;                  // ζ^{(1,0)}, nx × ny
-    const Eigen::MatrixXd zy = spline::hosaka_explicit_spline(y, z.transpose()).slopes;      // ζ^{(0,1)}, ny × nx
-    const Eigen::MatrixXd zxy = spline::hosaka_explicit_spline(y, zx.transpose()).slopes;    // ζ^{(1,1)}, ny × nx
+    const Eigen::MatrixXd zx = spline::hosaka_explicit_spline(x, z).slopes;                // ζ^{(1,0)}, nx × ny
+    const Eigen::MatrixXd zy = spline::hosaka_explicit_spline(y, z.transpose()).slopes;    // ζ^{(0,1)}, ny × nx
+    const Eigen::MatrixXd zxy = spline::hosaka_explicit_spline(y, zx.transpose()).slopes;  // ζ^{(1,1)}, ny × nx
     std::vector<Eigen::MatrixXd> nodes;
     for (std::size_t b = 0; b < y.size(); ++b)
         for (std::size_t a = 0; a < x.size(); ++a) {

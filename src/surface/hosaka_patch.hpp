@@ -60,26 +60,26 @@ private:
 };
 
 struct PatchEdges {
-    std::shared_ptr<const Curve> r1, r2, r3, r4;   // S(u,0), S(0,v), S(u,1), S(1,v)
+    std::shared_ptr<const Curve> r1, r2, r3, r4;  // S(u,0), S(0,v), S(u,1), S(1,v)
 };
 
-class HosakaPatch {   // eq (27)
+class HosakaPatch {  // eq (27)
 public:
     explicit HosakaPatch(CornerDerivatives corners);
     int m() const { return corners_.m(); }
     const CornerDerivatives& corners() const { return corners_; }
     Eigen::VectorXd point(double u, double v) const { return derivative(u, v, 0, 0); }
-    Eigen::VectorXd derivative(double u, double v, int a, int b) const;   // S^{(a,b)}(u, v)
+    Eigen::VectorXd derivative(double u, double v, int a, int b) const;  // S^{(a,b)}(u, v)
     // Edge curve 1..4 (R1(u) = S(u,0), R2(v) = S(0,v), R3(u) = S(u,1), R4(v) = S(1,v)) on [0, 1].
     spline::HosakaCurve edge(int which) const;
-    PatchEdges edges() const;   // all four, for the edge-curve form
+    PatchEdges edges() const;  // all four, for the edge-curve form
 
 private:
     CornerDerivatives corners_;
     spline::HosakaBasis basis_;
 };
 
-class EdgeFormPatch {   // eq (28)
+class EdgeFormPatch {  // eq (28)
 public:
     // S0 from the corner derivatives with i, j ≥ 1 of `twists` (its other entries are ignored).
     EdgeFormPatch(int m, PatchEdges edges, CornerDerivatives twists);
@@ -93,7 +93,7 @@ private:
     spline::HosakaBasis basis_;
     PatchEdges edges_;
     CornerDerivatives twists_;
-    Eigen::VectorXd corner_term_;   // ½ {R11 + R21 − R31 − R41}
+    Eigen::VectorXd corner_term_;  // ½ {R11 + R21 − R31 − R41}
 };
 
 // Coons' bicubically blended patch in Coons' own Boolean-sum form, P_u ⊕ P_v = P_u + P_v − P_u P_v
@@ -103,7 +103,7 @@ Eigen::VectorXd coons_boolean_sum(const PatchEdges& edges, int m, double u, doub
 // The edges of `edges` evaluated on [0, 1] (row k: k-th derivative), as eq (28) sees them.
 Eigen::MatrixXd unit_edge_jet(const Curve& edge, double s, int order);
 
-class CartesianSurface {   // eq (30)
+class CartesianSurface {  // eq (30)
 public:
     // node_derivatives[a + (I+1) b] (node (x_a, y_b)): (m+1) × (m+1) matrix, entry (i, j) = ζ^{(i,j)}.
     CartesianSurface(int m, std::vector<double> x, std::vector<double> y, std::vector<Eigen::MatrixXd> node_derivatives);
@@ -111,7 +111,7 @@ public:
     const std::vector<double>& x() const { return x_; }
     const std::vector<double>& y() const { return y_; }
     double value(double x, double y) const { return derivative(x, y, 0, 0); }
-    double derivative(double x, double y, int a, int b) const;   // ζ^{(a,b)}(x, y)
+    double derivative(double x, double y, int a, int b) const;  // ζ^{(a,b)}(x, y)
     // The same on cell (cx, cy) at local (u, v) ∈ [0, 1]² (one-sided values on the cell's edges).
     double derivative_in(int cx, int cy, double u, double v, int a, int b) const;
     const Eigen::MatrixXd& node(int a, int b) const;

@@ -10,8 +10,8 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "methods/method_registry.hpp"
 #include "core/errors.hpp"
+#include "methods/method_registry.hpp"
 
 // Build the per-process caches (the pseudo-spline's 36-node table: seconds under ASan) before the
 // first timed input.
@@ -48,7 +48,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             for (double t : r.interpolant->node_parameters)
                 if (!r.interpolant->curve->point(t).allFinite()) std::abort();
         }
-    } catch (const InvalidInput&) {
-    }
+    } catch (const InvalidInput&) {}
     return 0;
 }

@@ -16,7 +16,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     try {
         const cagd::PointList p = cagd::read_points_csv(in, "fuzz");
         if (p.rows() < 1 || (p.cols() != 2 && p.cols() != 3) || !p.allFinite()) std::abort();
-    } catch (const cagd::InvalidInput&) {
-    }
+    } catch (const cagd::InvalidInput&) {}
     return 0;
 }
