@@ -18,7 +18,7 @@ export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 CAGD_PROPERTY_SETS="${CAGD_PROPERTY_SETS:-400}" "$build/cagd_sanitized_tests" --gtest_filter='-*MillionPoints*:*LongOpenSpline*' --gtest_brief=1
 
 seconds="${CAGD_FUZZ_SECONDS:-30}"
-for target in point_reader interpolate; do
+for target in readers interpolate; do
   # New inputs go to a scratch directory; the committed seed corpus is only read.
   scratch="$build/corpus-$target"
   log="$build/fuzz-$target.log"

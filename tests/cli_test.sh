@@ -55,7 +55,11 @@ j1=$(awk -F, 'NR==2 {print $3}' "$dir/e1.csv"); j2=$(awk -F, 'NR==2 {print $3}' 
 awk -v a="$j1" -v b="$j2" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(a > 0 && d < 1e-10 * a) }' || { echo "FAIL: J not symmetric: $j1 vs $j2"; fails=$((fails+1)); }
 "$cagd" energy-table --grid 6 --out "$dir/t6.txt" 2> "$dir/progress.txt" || { echo "FAIL: energy-table"; fails=$((fails+1)); }
 [ "$(grep -c '^[0-9]' "$dir/t6.txt")" -eq 36 ] || { echo "FAIL: energy-table rows"; fails=$((fails+1)); }
-grep -q 'nodes' "$dir/progress.txt" || { echo "FAIL: energy-table progress line"; fails=$((fails+1)); }
+[ ! -s "$dir/progress.txt" ] || { echo "FAIL: energy-table printed progress to a stderr that is not a terminal"; fails=$((fails+1)); }
+if command -v script > /dev/null; then   # on a terminal (script gives it one): progress, unless --quiet
+  script -qec "$cagd energy-table --grid 6 --out $dir/t7.txt" /dev/null | grep -q 'nodes' || { echo "FAIL: no progress on a terminal"; fails=$((fails+1)); }
+  script -qec "$cagd --quiet energy-table --grid 6 --out $dir/t7.txt" /dev/null | grep -q 'nodes' && { echo "FAIL: progress despite --quiet"; fails=$((fails+1)); }
+fi
 expect_bad "tangent without vec"  '0,0\n1,1\n2,0\n'    interpolate --end tangent --in "$dir/bad.csv" --out "$dir/o.csv"
 
 # pseudo_energy section 4.2 methods: the knot data of Table 3 through every method.
@@ -201,7 +205,7 @@ tail -1 "$dir/cp.csv" | awk -F, '{ exit !(($2-22)^2 + ($3-3)^2 < 1e-18) }' || { 
 # 150 points on y = sin x: a square system of 300 unknowns takes the sparse LU path.
 awk 'BEGIN { print "x,y"; for (i = 0; i < 150; ++i) printf "%.17g,%.17g\n", 0.5 * i, sin(0.5 * i) }' > "$dir/sine.csv"
 "$cagd" interpolate --method curvature-profile --in "$dir/sine.csv" --out "$dir/sine_c.csv" > "$dir/sine.txt" || { echo "FAIL: curvature-profile on 150 points"; fails=$((fails+1)); }
-grep -q '^equations,300,unknowns,300,rank,full (sparse LU)' "$dir/sine.txt" || { echo "FAIL: 150 points should take sparse LU steps"; grep equations "$dir/sine.txt"; fails=$((fails+1)); }
+grep -q '^rank,full (sparse LU)' "$dir/sine.txt" && grep -q '^unknowns,300$' "$dir/sine.txt" || { echo "FAIL: 150 points should take sparse LU steps"; grep equations "$dir/sine.txt"; fails=$((fails+1)); }
 tail -1 "$dir/sine_c.csv" | awk -F, -v y="$(awk 'BEGIN { printf "%.17g", sin(74.5) }')" '{ exit !(($2-74.5)^2 + ($3-y)^2 < 1e-18) }' || { echo "FAIL: sparse-path curve does not end at the last point"; tail -1 "$dir/sine_c.csv"; fails=$((fails+1)); }
 printf 'x,y\n0,0\n1,0\n2,1\n3,1\n' > "$dir/arc.csv"
 "$cagd" interpolate --method curvature-profile --in "$dir/arc.csv" --spans line,arc,line --out "$dir/o.csv" > /dev/null 2> "$dir/err.txt"

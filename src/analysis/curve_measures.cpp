@@ -82,9 +82,10 @@ double arc_length(const Curve& c, int pieces) { return arc_length(c, c.t_min(), 
 // absolute tolerance at the underflow edge only lets a zero-length piece converge.
 constexpr int kRombergLevels = 24;
 constexpr double kRombergAbsTol = 1e-300;
-// Adaptive Gauss–Kronrod (31 points) bisects to depth 15; as reference_arc_length's fallback, to rel 1e-10.
+// Adaptive Gauss–Kronrod (31 points) bisects to depth 15; accurate_arc_length asks rel 1e-12,
+// a few hundred ε: what the error estimate of a sum of pieces can still certify.
 constexpr int kKronrodDepth = 15;
-constexpr double kKronrodRelTol = 1e-10;
+constexpr double kAccurateRelTol = 1e-12;
 
 double adaptive_arc_length(const Curve& c, double rel_tol) {
     const std::vector<double> br = c.breakpoints();
@@ -108,14 +109,12 @@ numeric::RombergResult romberg_arc_length(const Curve& c, double rel_tol) {
     return total;
 }
 
-ArcLength reference_arc_length(const Curve& c) {
-    const numeric::RombergResult r = romberg_arc_length(c);
-    if (r.outcome.ok()) return {r.value, r.error_estimate, "romberg"};
-    ArcLength a{0.0, 0.0, "gauss-kronrod"};
+ArcLength accurate_arc_length(const Curve& c) {
+    ArcLength a;
     const std::vector<double> br = c.breakpoints();
     for (std::size_t k = 0; k + 1 < br.size(); ++k) {
         double error = 0.0;
-        a.value += boost::math::quadrature::gauss_kronrod<double, 31>::integrate([&](double t) { return speed(c, t); }, br[k], br[k + 1], kKronrodDepth, kKronrodRelTol, &error);
+        a.value += boost::math::quadrature::gauss_kronrod<double, 31>::integrate([&](double t) { return speed(c, t); }, br[k], br[k + 1], kKronrodDepth, kAccurateRelTol, &error);
         a.error_estimate += error;
     }
     return a;

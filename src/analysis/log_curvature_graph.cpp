@@ -1,7 +1,9 @@
 #include "analysis/log_curvature_graph.hpp"
 
+#include <algorithm>
 #include <cmath>
 
+#include "analysis/curve_measures.hpp"
 #include "core/errors.hpp"
 
 namespace cagd::analysis {
@@ -100,6 +102,26 @@ LcgSamples log_curvature_graph(const Curve& c, double t0, double t1, int samples
 
 double torsion(const Curve& c, double t) { return torsion_and_rate(c, t).tau; }
 double torsion_arc_derivative(const Curve& c, double t) { return torsion_and_rate(c, t).tau_s; }
+
+CurvatureTorsionExtremes curvature_torsion_extremes(const Curve& c, int samples_per_piece) {
+    if (samples_per_piece < 1) fail_input("cagd::analysis::curvature_torsion_extremes", "samples_per_piece = " + std::to_string(samples_per_piece) + " < 1");
+    // tau = (r' x r'') . r''' / |r' x r''|^2 grows without bound as kappa -> 0 (an inflection of a
+    // space curve): it is measured only where kappa >= kTorsionCurvatureFloor * max kappa.
+    constexpr double kTorsionCurvatureFloor = 1e-3;
+    CurvatureTorsionExtremes e;
+    std::vector<std::pair<double, double>> samples;  // (t, kappa)
+    const std::vector<double> br = c.breakpoints();
+    for (std::size_t p = 0; p + 1 < br.size(); ++p)
+        for (int k = 0; k <= samples_per_piece; ++k) {
+            const double t = br[p] + (br[p + 1] - br[p]) * k / samples_per_piece;
+            samples.emplace_back(t, curvature(c, t));
+            e.max_abs_curvature = std::max(e.max_abs_curvature, samples.back().second);
+        }
+    if (c.dimension() == 3)
+        for (const auto& [t, kappa] : samples)
+            if (kappa > 0.0 && kappa >= kTorsionCurvatureFloor * e.max_abs_curvature) e.max_abs_torsion = std::max(e.max_abs_torsion, std::abs(torsion_and_rate(c, t).tau));
+    return e;
+}
 
 LcgSamples log_torsion_graph(const Curve& c, double t0, double t1, int samples) {
     return log_rate_graph("cagd::analysis::log_torsion_graph", c, t0, t1, samples, [&c](double t) {

@@ -54,6 +54,15 @@ LineFit lcg_slope(const Curve& c, double t0, double t1, int samples);
 
 // Torsion τ(t) (0 where r' × r'' = 0) and dτ/ds, 3-D curves.
 double torsion(const Curve& c, double t);
+// The largest |κ| and, for a space curve, the largest |τ| over samples_per_piece + 1 uniform
+// samples of every piece (τ counts only where κ ≥ 1e-3 max κ: it is undefined where the curve is
+// straight and unbounded near an inflection).
+// Precondition: r'(t) ≠ 0 at the samples (InvalidInput names t).
+struct CurvatureTorsionExtremes {
+    double max_abs_curvature = 0.0;
+    double max_abs_torsion = 0.0;  // 0 for planar curves
+};
+CurvatureTorsionExtremes curvature_torsion_extremes(const Curve& c, int samples_per_piece = 32);
 double torsion_arc_derivative(const Curve& c, double t);
 // LTG samples: log_radius = log μ, log_gradient = log |μ ds/dμ|.
 LcgSamples log_torsion_graph(const Curve& c, double t0, double t1, int samples);

@@ -1,16 +1,18 @@
 // `cagd analyze CURVE.csv`: sampled measures of a curve CSV (analysis/sampled_curve_measures.hpp).
 // `cagd analyze --in P.csv --method M [method options] [--closed]`: the curve of any registered
-// method through the points, integrated: Romberg arc length to 1e-13 (adaptive Gauss–Kronrod where
-// Romberg does not converge; analysis::reference_arc_length), the exact polynomial area
+// method through the points, integrated: the arc length by adaptive Gauss–Kronrod to rel 1e-12 with
+// its error estimate (analysis::accurate_arc_length), the exact polynomial area
 // (closed by the chord from the last point to the first), and what the method computes itself
 // (the pseudo-spline's length, area and pseudo-energy from its tables, eq 16–21).
 #include <iostream>
 #include <memory>
 
 #include "analysis/curve_measures.hpp"
+#include "analysis/log_curvature_graph.hpp"
 #include "analysis/sampled_curve_measures.hpp"
 #include "cli/commands.hpp"
 #include "cli/method_options.hpp"
+#include "cli/output.hpp"
 #include "core/csv.hpp"
 #include "core/errors.hpp"
 #include "core/point_csv.hpp"
@@ -58,16 +60,18 @@ int analyze_samples(const std::string& path) {
     if (const int u = t.column("u"); u >= 0)
         for (const auto& r : t.rows) s.parameter.push_back(r[static_cast<std::size_t>(u)]);
     const analysis::SampledCurveMeasures m = analysis::sampled_curve_measures(s);
-    std::cout << "quantity,value\n"
-              << "samples," << m.samples << "\n"
-              << "polyline_length," << format_number(m.polyline_length, 12) << "\n";
-    if (m.enclosed_area) std::cout << "enclosed_area," << format_number(*m.enclosed_area, 12) << "\n";
-    if (m.has_curvature)
-        std::cout << "curvature_min," << format_number(m.curvature_min, 12) << "\n"
-                  << "curvature_min_at_u," << format_number(m.curvature_min_at, 12) << "\n"
-                  << "curvature_max," << format_number(m.curvature_max, 12) << "\n"
-                  << "curvature_max_at_u," << format_number(m.curvature_max_at, 12) << "\n"
-                  << "bending_energy," << format_number(m.bending_energy, 12) << "\n";
+    Quantities q;
+    q.add("samples", m.samples);
+    q.add("polyline_length", m.polyline_length);
+    if (m.enclosed_area) q.add("enclosed_area", *m.enclosed_area);
+    if (m.has_curvature) {
+        q.add("curvature_min", m.curvature_min);
+        q.add("curvature_min_at_u", m.curvature_min_at);
+        q.add("curvature_max", m.curvature_max);
+        q.add("curvature_max_at_u", m.curvature_max_at);
+        q.add("bending_energy", m.bending_energy);
+    }
+    q.commit();
     std::cerr << "cagd analyze: sample-based (polyline length, trapezoid energy); accuracy grows with the samples of cagd interpolate --samples\n";
     return 0;
 }
@@ -77,19 +81,19 @@ int analyze_method(const AnalyzeArgs& a) {
     const methods::Method& method = methods::find_method(a.method);
     const methods::ParameterValues values = methods::parse_parameter_values(method.name, method.parameters, given_parameters(a.options));
     const methods::InterpolationResult r = methods::interpolate(method, read_points_csv(a.in), a.closed, values);
-    if (!r.outcome.ok() || !r.interpolant) {
-        std::cerr << "cagd: no result: " << r.outcome.message << "\n";
-        return 1;
-    }
+    if (!r.outcome.ok() || !r.interpolant) throw NoResult(r.outcome.message);
     const Curve& c = *r.interpolant->curve;
-    const analysis::ArcLength length = analysis::reference_arc_length(c);
-    std::cout << "quantity,value\n"
-              << "spans," << r.interpolant->node_parameters.size() - 1 << "\n"
-              << "length_integrated," << format_number(length.value, 12) << "\n"
-              << "length_error_estimate," << format_number(length.error_estimate, 3) << "\n";
-    if (c.dimension() == 2) std::cout << "area_integrated," << format_number(analysis::area_closed_by_chord(c), 12) << "\n";
-    for (const auto& [name, value] : r.quantities) std::cout << name << "," << format_number(value, 12) << "\n";
-    if (std::string(length.method) != "romberg") std::cerr << "cagd analyze: Romberg did not converge (a near-cusp); length by adaptive Gauss-Kronrod to 1e-10\n";
+    const analysis::ArcLength length = analysis::accurate_arc_length(c);
+    Quantities q;
+    q.add("spans", static_cast<double>(r.interpolant->node_parameters.size() - 1));
+    q.add("length_integrated", length.value);
+    q.add("length_error_estimate", length.error_estimate, 3);
+    if (c.dimension() == 2) q.add("area_integrated", analysis::area_closed_by_chord(c));
+    const analysis::CurvatureTorsionExtremes e = analysis::curvature_torsion_extremes(c);
+    q.add("max_abs_curvature_sampled", e.max_abs_curvature);
+    if (c.dimension() == 3) q.add("max_abs_torsion_sampled", e.max_abs_torsion);
+    for (const auto& [name, value] : r.quantities) q.add(name, value);
+    q.commit();
     if (c.dimension() == 2) std::cerr << "cagd analyze: areas are signed (counter-clockwise positive); an open curve is closed by the line from its last point to its first\n";
     return 0;
 }
@@ -99,8 +103,8 @@ int analyze_method(const AnalyzeArgs& a) {
 Command add_analyze_command(CLI::App& app) {
     auto a = std::make_shared<AnalyzeArgs>();
     CLI::App* c = app.add_subcommand("analyze", "Length, enclosed area, curvature extrema and bending energy of a curve CSV, or of a method's curve through points");
-    CLI::Option* curve = c->add_option("curve", a->curve, "curve CSV as written by cagd interpolate (sample-based measures)");
-    CLI::Option* in = c->add_option("--in", a->in, "points CSV: build the curve with --method and integrate it");
+    CLI::Option* curve = c->add_option("curve", a->curve, "curve CSV as written by cagd interpolate (sample-based measures); - for stdin");
+    CLI::Option* in = c->add_option("--in", a->in, "points CSV: build the curve with --method and integrate it; - for stdin");
     add_method_options(c, a->method, a->options);
     c->add_flag("--closed", a->closed, "closed curve (with --in)");
     curve->excludes(in);

@@ -13,6 +13,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/compare_panels_script.hpp"
+#include "cli/output.hpp"
 #include "compare/method_comparison.hpp"
 #include "core/csv.hpp"
 #include "core/errors.hpp"
@@ -28,8 +29,9 @@ struct CompareArgs {
 };
 
 void write_rows(const std::string& path, const std::vector<std::string>& header, const std::vector<std::vector<double>>& rows) {
-    CsvWriter w(path, header);
+    CsvOutput w(path, header);
     for (const auto& r : rows) w.row(r, 12);
+    w.commit();
 }
 
 // A gnuplot string literal in single quotes ('' is a quote inside).
@@ -58,38 +60,55 @@ int run_compare(const CompareArgs& a) {
     }
     if (points.cols() != 2) fail_input(who, a.in + ": compares planar curves, the points have " + std::to_string(points.cols()) + " columns");
     std::error_code ec;
-    std::filesystem::create_directories(a.out, ec);
-    if (!std::filesystem::is_directory(a.out)) fail_input(who, "cannot create the output directory '" + a.out + "'");
-    std::cerr << "cagd compare: " << points.rows() << " points, " << (options.methods.empty() ? methods::configurations().size() : options.methods.size()) << " methods\n";
+    if (a.out.empty() || a.out == "-") fail_input(who, "--out '" + a.out + "': give a directory (compare writes several files)");
+    if (std::filesystem::exists(a.out, ec) && !std::filesystem::is_directory(a.out, ec)) fail_input(who, "--out '" + a.out + "' exists and is not a directory");
+    if (!std::filesystem::is_directory(std::filesystem::absolute(a.out, ec).parent_path(), ec)) fail_input(who, "--out '" + a.out + "': its parent directory does not exist");
+    const bool progress = progress_enabled();
+    if (progress)
+        std::cerr << "cagd compare: " << points.rows() << " points, " << (options.methods.empty() ? methods::configurations().size() : options.methods.size()) << " methods\n";
+    options.on_method = [progress](const compare::MethodComparison& r) {
+        if (progress) std::cerr << "cagd compare: " << r.method << ": " << r.status << (r.note.empty() ? "" : " (" + r.note + ")") << ", " << format_number(r.seconds, 3) << " s\n";
+    };
     const std::vector<compare::MethodComparison> results = compare::compare_methods(points, options);
-    for (const auto& r : results)
-        std::cerr << "cagd compare: " << r.method << ": " << r.status << (r.note.empty() ? "" : " (" + r.note + ")") << ", " << format_number(r.seconds, 3) << " s\n";
 
+    std::filesystem::create_directories(a.out, ec);  // after the work: nothing is left behind on bad input
+    if (!std::filesystem::is_directory(a.out)) fail_input(who, "cannot create the output directory '" + a.out + "'");
     const std::string dir = a.out + "/";
     {
-        CsvWriter w(dir + "measures.csv", compare::comparison_header(a.closed, true));
+        CsvOutput w(dir + "measures.csv", compare::comparison_header(a.closed, true));
         for (const auto& row : compare::comparison_rows(results, a.closed, true)) w.row_text(row);
+        w.commit();
     }
     const std::string md = compare::comparison_markdown(results, a.closed, true);
-    std::ofstream(dir + "measures.md") << md;
-    std::cout << md;
+    {
+        OutputFile f(dir + "measures.md");
+        f.stream() << md;
+        f.commit();
+    }
 
     // Figure data: at most about 10^4 samples per method whatever the input length (drawing time
     // grows with the samples: 10^5 points at 4·10^4 samples per method take gnuplot 35 s).
     const int spans = static_cast<int>(points.rows()) - (a.closed ? 0 : 1);
     const compare::FigureData fig = compare::comparison_figure_data(results, points, compare::figure_sampling(std::max(spans, 1), 10000));
     {
-        CsvWriter w(dir + "points.csv", {"x", "y"});
+        CsvOutput w(dir + "points.csv", {"x", "y"});
         for (Eigen::Index i = 0; i < points.rows(); ++i) w.row({points(i, 0), points(i, 1)}, 17);
+        w.commit();
     }
     write_rows(dir + "curves.csv", {"index", "x", "y"}, fig.curves);
     write_rows(dir + "curvature.csv", {"index", "s", "kappa"}, fig.profiles);
     write_rows(dir + "combs.csv", {"index", "x", "y", "tip_x", "tip_y"}, fig.combs);
     {
-        CsvWriter w(dir + "methods.csv", compare::figure_methods_header());
+        CsvOutput w(dir + "methods.csv", compare::figure_methods_header());
         for (const auto& row : compare::figure_methods_rows(results, fig)) w.row_text(row);
+        w.commit();
     }
-    std::ofstream(dir + "compare_panels.gp") << kComparePanelsScript;
+    {
+        OutputFile f(dir + "compare_panels.gp");
+        f.stream() << kComparePanelsScript;
+        f.commit();
+    }
+    std::cout << md;
     if (a.no_plot) return 0;
     const std::string settings = "datadir=" + gnuplot_quoted(a.out) + "; prefix=''; heading=" + gnuplot_quoted(std::filesystem::path(a.in).filename().string()) +
                                  "; formats='png'; point_every=" + std::to_string(std::max<Eigen::Index>(1, points.rows() / 5000));  // ≤ ~5000 dots per panel
@@ -98,11 +117,8 @@ int run_compare(const CompareArgs& a) {
         std::cerr << "cagd compare: gnuplot not found; the figure data and compare_panels.gp are in " << a.out << "\n";
         return 0;
     }
-    if (std::system(command.c_str()) != 0) {
-        std::cerr << "cagd compare: gnuplot failed: " << command << "\n";
-        return 1;
-    }
-    std::cerr << "cagd compare: figures " << dir << "{curves,combs,curvature}.png\n";
+    if (std::system(command.c_str()) != 0) throw NoResult("gnuplot failed: " + command + " (the tables and figure data are in " + a.out + ")");
+    if (progress) std::cerr << "cagd compare: figures " << dir << "{curves,combs,curvature}.png\n";
     return 0;
 }
 

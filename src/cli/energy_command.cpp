@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "cli/commands.hpp"
+#include "cli/output.hpp"
 #include "core/errors.hpp"
 #include "fairness/pseudo_energy_minimum.hpp"
 
@@ -27,10 +28,8 @@ int run_energy(const EnergyArgs& a) {
     fairness::require_tangent_angle(who, t1, "--theta1");
     const fairness::PseudoEnergyMinimum m = fairness::minimize_pseudo_energy(t0, t1);
     if (fairness::is_undefined_node(t0, t1)) fail_input("cagd energy", m.outcome.message);
-    if (!m.outcome.ok()) {
-        std::cerr << "cagd: no result: " << m.outcome.message << "\n";
-        return 1;
-    }
+    if (!m.outcome.ok()) throw NoResult(m.outcome.message);
+    for (const auto& [value, name] : {std::pair{m.pseudo_energy, "J"}, {m.r0, "r0"}, {m.r1, "r1"}, {m.length, "L"}, {m.area, "S"}}) finite_field(value, 17, name);
     std::printf("theta0,theta1,J,r0,r1,L,S,type\n%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%s\n", a.theta0, a.theta1, m.pseudo_energy, m.r0, m.r1, m.length, m.area,
                 fairness::to_string(m.type));
     return 0;

@@ -1,13 +1,16 @@
 // `cagd interpolate --method M [method options] [--closed] [--samples N] --in P.csv --out C.csv`:
 // any registered method (methods/method_registry.hpp) on the user's points; `--list-methods`
-// describes them. Writes the curve CSV (cli/curve_output.hpp); prints what the method reports
-// (the curvature-profile Newton history) on stdout; exit 1 with the outcome when no curve exists.
+// describes them. Writes the curve CSV (cli/curve_output.hpp; `-` for stdout), then what the method
+// reports (the curvature-profile Newton history) on stdout (stderr when the curve goes to stdout);
+// exit 1 with the outcome, and no output, when no curve exists.
 #include <iostream>
 #include <memory>
 
 #include "cli/commands.hpp"
 #include "cli/curve_output.hpp"
 #include "cli/method_options.hpp"
+#include "cli/output.hpp"
+#include "core/csv.hpp"
 #include "core/errors.hpp"
 #include "core/point_csv.hpp"
 #include "methods/method_registry.hpp"
@@ -33,13 +36,18 @@ int run_interpolate(const InterpolateArgs& a) {
     const methods::Method& method = methods::find_method(a.method);
     const methods::ParameterValues values = methods::parse_parameter_values(method.name, method.parameters, given_parameters(a.options));
     const PointList points = read_points_csv(a.in);
+    OutputFile out(a.out);  // checked before the work
     const methods::InterpolationResult r = methods::interpolate(method, points, a.closed, values);
-    for (const std::string& line : r.log) std::cout << line << "\n";
-    if (!r.outcome.ok() || !r.interpolant) {
-        std::cerr << "cagd: no result: " << r.outcome.message << "\n";
-        return 1;
+    if (!r.outcome.ok() || !r.interpolant) throw NoResult(r.outcome.message);
+    write_curve(*r.interpolant->curve, a.samples, out);
+    out.commit();
+    // What the method reports (the Newton history), after the curve: "quantity,value" lines on
+    // stdout, or on stderr when the curve is on stdout.
+    if (!r.report.empty()) {
+        std::ostream& report = a.out == "-" ? std::cerr : std::cout;
+        report << "quantity,value\n";
+        for (const auto& [name, value] : r.report) report << csv_field(name) << ',' << csv_field(value) << '\n';
     }
-    write_curve(*r.interpolant->curve, a.samples, a.out);
     return 0;
 }
 
@@ -52,9 +60,9 @@ Command add_interpolate_command(CLI::App& app) {
     c->add_flag("--list-methods", a->list, "describe every method: paper, equations, claims, parameters with defaults and ranges");
     c->add_flag("--markdown", a->markdown, "with --list-methods: the README's Markdown table");
     c->add_flag("--closed", a->closed, "closed curve");
-    c->add_option("--samples", a->samples, "samples per curve piece in the output")->check(CLI::Range(1, 100000));
-    c->add_option("--in", a->in, "points CSV: x,y[,z] per line, optional header");
-    c->add_option("--out", a->out, "curve CSV: u, position, 1st and 2nd derivative");
+    c->add_option("--samples", a->samples, "samples per curve piece in the output (samples x pieces <= 10^7 rows)")->check(CLI::Range(1, 100000));
+    c->add_option("--in", a->in, "points CSV: x,y[,z] per line, optional header of names; - for stdin");
+    c->add_option("--out", a->out, "curve CSV: u, position, 1st and 2nd derivative; - for stdout");
     return {c, [a] { return run_interpolate(*a); }};
 }
 

@@ -11,6 +11,7 @@
 #include "analysis/curve_measures.hpp"
 #include "analysis/log_curvature_graph.hpp"
 #include "cli/commands.hpp"
+#include "cli/output.hpp"
 #include "core/csv.hpp"
 #include "core/errors.hpp"
 #include "spline/bezier.hpp"
@@ -27,27 +28,37 @@ struct Lac3dArgs {
     bool slopes = false;
 };
 
+// Evaluation costs O(degree) per sample (Bernstein form above degree 60), torsion included.
+constexpr double kMaxDegreeTimesSamples = 2e8;
+
 int run_lac3d(const Lac3dArgs& a) {
+    if (static_cast<double>(a.degree) * a.samples > kMaxDegreeTimesSamples)
+        fail_input("cagd lac3d", "--degree " + std::to_string(a.degree) + " x --samples " + std::to_string(a.samples) + " exceeds 2e8 evaluations (seconds of work); lower one");
+    OutputFile file(a.out);
     const aesthetic::LogAestheticSpaceParameters p = aesthetic::normalized_log_aesthetic_space_parameters(a.alpha, a.beta, a.length, a.start);
     const aesthetic::SpaceTypicalPolygon poly = aesthetic::space_typical_polygon(p, a.degree, a.composition);
     const BezierCurve curve(poly.points, 0.0, 1.0, a.degree > 60 ? BezierEvaluation::bernstein : BezierEvaluation::de_casteljau);
-    std::ofstream out(a.out);
-    if (!out) fail_input("cagd lac3d", "cannot write '" + a.out + "'");
-    out << "kind,t,x,y,z,curvature,torsion\n";
+    CsvOutput out(file, {"kind", "t", "x", "y", "z", "curvature", "torsion"});
     for (Eigen::Index i = 0; i < poly.points.rows(); ++i)
-        out << "control," << i << ',' << format_number(poly.points(i, 0), 15) << ',' << format_number(poly.points(i, 1), 15) << ',' << format_number(poly.points(i, 2), 15)
-            << ",,\n";
+        out.row_text({"control", std::to_string(i), finite_field(poly.points(i, 0), 15, "control point x"), finite_field(poly.points(i, 1), 15, "control point y"),
+                      finite_field(poly.points(i, 2), 15, "control point z"), "", ""});
     for (int k = 0; k < a.samples; ++k) {
         const double t = static_cast<double>(k) / (a.samples - 1);
         const Eigen::VectorXd q = curve.point(t);
-        out << "curve," << format_number(t, 15) << ',' << format_number(q(0), 15) << ',' << format_number(q(1), 15) << ',' << format_number(q(2), 15) << ','
-            << format_number(analysis::curvature(curve, t), 15) << ',' << format_number(analysis::torsion(curve, t), 15) << '\n';
+        const std::string at = " at t = " + format_number(t);
+        out.row_text({"curve", format_number(t, 15), finite_field(q(0), 15, "x" + at), finite_field(q(1), 15, "y" + at), finite_field(q(2), 15, "z" + at),
+                      finite_field(analysis::curvature(curve, t), 15, "curvature" + at), finite_field(analysis::torsion(curve, t), 15, "torsion" + at)});
     }
+    Quantities slopes;
     if (a.slopes) {
         const analysis::LineFit k = analysis::lcg_slope(curve, 0.0, 1.0, 400), t = analysis::ltg_slope(curve, 0.0, 1.0, 400);
-        std::cout << "lcg_slope," << format_number(k.slope, 8) << "\nltg_slope," << format_number(t.slope, 8) << "\nlcg_max_residual," << format_number(k.max_residual, 4)
-                  << "\nltg_max_residual," << format_number(t.max_residual, 4) << '\n';
+        slopes.add("lcg_slope", k.slope, 8);
+        slopes.add("ltg_slope", t.slope, 8);
+        slopes.add("lcg_max_residual", k.max_residual, 4);
+        slopes.add("ltg_max_residual", t.max_residual, 4);
     }
+    out.commit();
+    if (a.slopes) slopes.commit();
     return 0;
 }
 
@@ -58,7 +69,7 @@ Command add_lac3d_command(CLI::App& app) {
     auto* c = app.add_subcommand("lac3d", "Typical Bezier space curve approximating a log-aesthetic space curve, frames turned by R_kappa (x) R_tau (typical_curves section 4)");
     c->add_option("--alpha", a->alpha, "LCG slope alpha (not 0 or 1; < 0 or > 1 when --start 0)")->required();
     c->add_option("--beta", a->beta, "LTG slope beta (not 0 or 1; < 0 or > 1 when --start 0)")->required();
-    c->add_option("--degree", a->degree, "Bezier degree n >= 3 (torsion needs four control points)")->required();
+    c->add_option("--degree", a->degree, "Bezier degree n >= 3 (torsion needs four control points; degree x samples <= 2e8)")->required()->check(CLI::Range(3, 100000));
     c->add_option("--length", a->length, "arc length L of the target piece (> 0)");
     c->add_option("--start", a->start, "the piece starts at sigma = s0 of kappa = |alpha-1| sigma^(-1/alpha), tau = |beta-1| sigma^(-1/beta) (>= 0)");
     add_enum_option(c, "--composition", a->composition,
@@ -67,7 +78,7 @@ Command add_lac3d_command(CLI::App& app) {
                      {"tau_then_kappa", aesthetic::FrenetComposition::tau_then_kappa}},
                     "alexa (eq 37) | kappa_then_tau | tau_then_kappa");
     c->add_option("--samples", a->samples, "curve samples in the output")->check(CLI::Range(2, 1000000));
-    c->add_option("--out", a->out, "CSV: kind (control|curve), t, x, y, z, curvature, torsion")->required();
+    c->add_option("--out", a->out, "CSV: kind (control|curve), t, x, y, z, curvature, torsion; - for stdout")->required();
     c->add_flag("--slopes", a->slopes, "print the LCG and LTG slopes (least squares over t in [0, 1], 400 samples) on stdout");
     return {c, [a] { return run_lac3d(*a); }};
 }

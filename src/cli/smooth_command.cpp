@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "cli/commands.hpp"
+#include "cli/output.hpp"
 #include "core/csv.hpp"
 #include "core/errors.hpp"
 #include "core/point_csv.hpp"
@@ -26,9 +27,11 @@ struct SmoothArgs {
 int run_smooth(const SmoothArgs& a) {
     const char* who = "cagd smooth";
     if (a.lambda_given == !a.lambda_file.empty()) fail_input(who, "give exactly one of --lambda and --lambda-file");
-    const PointList points = read_points_csv(a.in);
+    const PointList points = read_data_points(a.in);
     std::vector<double> lambda{a.lambda};
     if (!a.lambda_file.empty()) lambda = read_values_csv(a.lambda_file);
+    require_output_rows(static_cast<double>(a.samples) * static_cast<double>(points.rows()) + 1, "--samples " + std::to_string(a.samples));
+    OutputFile out(a.out);
     const char* names = "xyz";
     if (a.form == SmoothForm::yx) {  // rows x, y[, z]: y(x) (and z(x)) smoothed
         if (points.cols() < 2) fail_input(who, "--form yx needs rows x,y or x,y,z");
@@ -37,7 +40,7 @@ int run_smooth(const SmoothArgs& a) {
         std::vector<std::string> header{"x"};
         for (const char* prefix : {"", "d", "dd"})
             for (Eigen::Index k = 1; k < points.cols(); ++k) header.push_back(std::string(prefix) + names[k]);
-        CsvWriter w(a.out, header);
+        CsvOutput w(out, header);
         for (std::size_t i = 0; i + 1 < x.size(); ++i)
             for (int k = 0; k < a.samples || (i + 2 == x.size() && k == a.samples); ++k) {
                 const double u = double(k) / a.samples;
@@ -48,13 +51,14 @@ int run_smooth(const SmoothArgs& a) {
                 }
                 w.row(row, 15);
             }
+        out.commit();
         return 0;
     }
     // parametric: x(t), y(t)[, z(t)] over the chord-length parameter
     const smoothing::ElasticLine line = smoothing::elastic_line_parametric(points, lambda);
     std::vector<std::string> header{"t"};
     for (Eigen::Index k = 0; k < points.cols(); ++k) header.push_back(std::string(1, names[k]));
-    CsvWriter w(a.out, header);
+    CsvOutput w(out, header);
     for (std::size_t i = 0; i + 1 < line.x().size(); ++i)
         for (int k = 0; k < a.samples || (i + 2 == line.x().size() && k == a.samples); ++k) {
             const double u = double(k) / a.samples;
@@ -63,6 +67,7 @@ int run_smooth(const SmoothArgs& a) {
             row.insert(row.end(), v.data(), v.data() + v.size());
             w.row(row, 15);
         }
+    out.commit();
     return 0;
 }
 
@@ -76,8 +81,8 @@ Command add_smooth_command(CLI::App& app) {
     add_enum_option(c, "--form", a->form, {{"yx", SmoothForm::yx}, {"parametric", SmoothForm::parametric}},
                     "yx: rows x,y[,z], x strictly increasing | parametric: 2-D/3-D points, chord parameter");
     c->add_option("--samples", a->samples, "samples per interval")->check(CLI::Range(1, 100000));
-    c->add_option("--in", a->in, "data CSV")->required();
-    c->add_option("--out", a->out, "smoothed curve CSV (yx: x, values, first and second derivatives)")->required();
+    c->add_option("--in", a->in, "data CSV; - for stdin")->required();
+    c->add_option("--out", a->out, "smoothed curve CSV (yx: x, values, first and second derivatives); - for stdout")->required();
     return {c, [a, lambda] {
                 a->lambda_given = lambda->count() > 0;
                 return run_smooth(*a);

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "cli/commands.hpp"
+#include "cli/output.hpp"
 #include "core/csv.hpp"
 #include "core/errors.hpp"
 #include "core/point_csv.hpp"
@@ -26,17 +27,19 @@ struct SmoothSurfaceArgs {
 };
 
 int run_smooth_surface(const SmoothSurfaceArgs& a) {
-    const surface::GridHeights g = surface::grid_from_points(read_points_csv(a.in));
+    const surface::GridHeights g = surface::grid_from_points(read_data_points(a.in));
     const Eigen::MatrixXd lambda = Eigen::MatrixXd::Constant(1, 1, a.lambda);
+    OutputFile out(a.out);
     if (a.method == SurfaceSmoothing::net) {  // the net's own unknowns at the nodes
         if (a.samples > 0) fail_input("cagd smooth-surface", "--method net gives node values only; use approx2 for a surface to sample");
         const smoothing::ElasticNet net = smoothing::elastic_net(g.x, g.y, g.z, lambda);
-        CsvWriter w(a.out, {"x", "y", "z", "zxx", "zyy"});
+        CsvOutput w(out, {"x", "y", "z", "zxx", "zyy"});
         for (std::size_t i = 0; i < g.x.size(); ++i)
             for (std::size_t j = 0; j < g.y.size(); ++j) {
                 const Eigen::Index r = static_cast<Eigen::Index>(i), c = static_cast<Eigen::Index>(j);
                 w.row({g.x[i], g.y[j], net.values(r, c), net.xx(r, c), net.yy(r, c)}, 15);
             }
+        out.commit();
         return 0;
     }
     std::function<double(double, double, int, int)> s;
@@ -49,16 +52,18 @@ int run_smooth_surface(const SmoothSurfaceArgs& a) {
                                                                                     : smoothing::net_spline_smoothing(g.x, g.y, g.z, lambda);
         s = [c](double x, double y, int i, int j) { return c.derivative(x, y, i, j); };
     }
-    CsvWriter w(a.out, {"x", "y", "z", "zx", "zy", "zxy"});
+    CsvOutput w(out, {"x", "y", "z", "zx", "zy", "zxy"});
     const auto emit = [&](double x, double y) { w.row({x, y, s(x, y, 0, 0), s(x, y, 1, 0), s(x, y, 0, 1), s(x, y, 1, 1)}, 15); };
     if (a.samples == 0) {
         for (double x : g.x)
             for (double y : g.y) emit(x, y);
+        out.commit();
         return 0;
     }
     for (int i = 0; i <= a.samples; ++i)
         for (int j = 0; j <= a.samples; ++j)
             emit(std::min(g.x.front() + (g.x.back() - g.x.front()) * i / a.samples, g.x.back()), std::min(g.y.front() + (g.y.back() - g.y.front()) * j / a.samples, g.y.back()));
+    out.commit();
     return 0;
 }
 
@@ -84,9 +89,9 @@ Command add_smooth_surface_command(CLI::App& app) {
                     "plate energy: eq 55 (with --poisson), 56, 57, 58");
     c->add_option("--poisson", a->poisson, "Poisson's ratio for --energy 55, in [0, 0.5)");
     c->add_option("--m", a->m, "plate-boundary: order m of eq (31), 1..4");
-    c->add_option("--samples", a->samples, "sample the surface on an (N+1)^2 grid instead of the data nodes (0: the nodes)")->check(CLI::Range(0, 10000));
-    c->add_option("--in", a->in, "heights CSV, x,y,z per line covering a rectangular grid")->required();
-    c->add_option("--out", a->out, "CSV: x, y, z and derivatives at the nodes (or samples)")->required();
+    c->add_option("--samples", a->samples, "sample the surface on an (N+1)^2 grid instead of the data nodes (0: the nodes)")->check(CLI::Range(0, 3000));
+    c->add_option("--in", a->in, "heights CSV, x,y,z per line covering a rectangular grid; - for stdin")->required();
+    c->add_option("--out", a->out, "CSV: x, y, z and derivatives at the nodes (or samples); - for stdout")->required();
     return {c, [a] { return run_smooth_surface(*a); }};
 }
 

@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "cli/commands.hpp"
+#include "cli/output.hpp"
 #include "core/csv.hpp"
 #include "core/errors.hpp"
 #include "core/point_csv.hpp"
@@ -27,11 +28,11 @@ void require(const std::string& value, const char* kind, const char* option) {
 }
 
 // eq (30), m = 1, node derivatives from splines along the grid lines.
-void write_tensor(const SurfaceArgs& a) {
+void write_tensor(const SurfaceArgs& a, OutputFile& out) {
     require(a.in, "tensor", "--in");
     const int n = a.samples;
-    const surface::CartesianSurface s = surface::cartesian_spline_surface(read_points_csv(a.in));
-    CsvWriter w(a.out, {"x", "y", "z", "zx", "zy"});
+    const surface::CartesianSurface s = surface::cartesian_spline_surface(read_data_points(a.in));
+    CsvOutput w(out, {"x", "y", "z", "zx", "zy"});
     for (int i = 0; i <= n; ++i)
         for (int j = 0; j <= n; ++j) {
             const double x = s.x().front() + (s.x().back() - s.x().front()) * i / n, y = s.y().front() + (s.y().back() - s.y().front()) * j / n;
@@ -40,14 +41,14 @@ void write_tensor(const SurfaceArgs& a) {
 }
 
 // eq (28) with S0 = 0.
-void write_coons(const SurfaceArgs& a) {
+void write_coons(const SurfaceArgs& a, OutputFile& out) {
     for (const auto& [v, o] : {std::pair{a.bottom, "--bottom"}, {a.left, "--left"}, {a.top, "--top"}, {a.right, "--right"}}) require(v, "coons", o);
     const int n = a.samples;
-    const surface::EdgeFormPatch s(1, surface::edges_through_points(read_points_csv(a.bottom), read_points_csv(a.left), read_points_csv(a.top), read_points_csv(a.right)));
+    const surface::EdgeFormPatch s(1, surface::edges_through_points(read_data_points(a.bottom), read_data_points(a.left), read_data_points(a.top), read_data_points(a.right)));
     const Eigen::VectorXd probe = s.point(0, 0);
     std::vector<std::string> header{"u", "v", "x", "y"};
     if (probe.size() == 3) header.push_back("z");
-    CsvWriter w(a.out, header);
+    CsvOutput w(out, header);
     for (int i = 0; i <= n; ++i)
         for (int j = 0; j <= n; ++j) {
             const Eigen::VectorXd p = s.point(double(i) / n, double(j) / n);
@@ -58,7 +59,7 @@ void write_coons(const SurfaceArgs& a) {
 }
 
 // eq (31) between two boundary curves.
-void write_boundary(const SurfaceArgs& a) {
+void write_boundary(const SurfaceArgs& a, OutputFile& out) {
     require(a.lower, "boundary", "--lower");
     require(a.upper, "boundary", "--upper");
     const int n = a.samples;
@@ -67,9 +68,9 @@ void write_boundary(const SurfaceArgs& a) {
         lower_d.push_back(a.lower_curvature);
         upper_d.push_back(a.upper_curvature);
     }
-    const surface::BoundaryConformingSurface s(a.m, surface::boundary_through_points(read_points_csv(a.lower), lower_d),
-                                               surface::boundary_through_points(read_points_csv(a.upper), upper_d));
-    CsvWriter w(a.out, {"x", "y", "z"});
+    const surface::BoundaryConformingSurface s(a.m, surface::boundary_through_points(read_data_points(a.lower), lower_d),
+                                               surface::boundary_through_points(read_data_points(a.upper), upper_d));
+    CsvOutput w(out, {"x", "y", "z"});
     for (int i = 0; i <= n; ++i) {
         const double x = std::min(s.x_min() + (s.x_max() - s.x_min()) * i / n, s.x_max());
         for (int j = 0; j <= n; ++j) {
@@ -97,14 +98,16 @@ Command add_surface_command(CLI::App& app) {
     c->add_option("--upper-slope", a->upper_slope, "boundary: cross slope dz/dy along L1 (constant)");
     c->add_option("--lower-curvature", a->lower_curvature, "boundary, m = 2: d2z/dy2 along L0 (constant)");
     c->add_option("--upper-curvature", a->upper_curvature, "boundary, m = 2: d2z/dy2 along L1 (constant)");
-    c->add_option("--samples", a->samples, "samples per direction")->check(CLI::Range(1, 10000));
-    c->add_option("--out", a->out, "grid CSV")->required();
+    c->add_option("--samples", a->samples, "samples per direction ((N+1)^2 rows)")->check(CLI::Range(1, 3000));
+    c->add_option("--out", a->out, "grid CSV; - for stdout")->required();
     return {c, [a] {
+                OutputFile out(a->out);
                 switch (a->kind) {
-                    case SurfaceKind::tensor: write_tensor(*a); break;
-                    case SurfaceKind::coons: write_coons(*a); break;
-                    case SurfaceKind::boundary: write_boundary(*a); break;
+                    case SurfaceKind::tensor: write_tensor(*a, out); break;
+                    case SurfaceKind::coons: write_coons(*a, out); break;
+                    case SurfaceKind::boundary: write_boundary(*a, out); break;
                 }
+                out.commit();
                 return 0;
             }};
 }

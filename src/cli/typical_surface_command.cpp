@@ -10,6 +10,7 @@
 #include "aesthetic/typical_surface.hpp"
 #include "analysis/surface_curvature.hpp"
 #include "cli/commands.hpp"
+#include "cli/output.hpp"
 #include "core/csv.hpp"
 #include "core/errors.hpp"
 
@@ -23,32 +24,36 @@ struct TypicalSurfaceArgs {
     std::string out, net_out;
 };
 
+// The patch of bi-degree n − 1 evaluated on a grid² costs about (n · grid)² operations.
+constexpr double kMaxNTimesGrid = 1e5;
+
 int run_typical_surface(const TypicalSurfaceArgs& a) {
-    if (a.n < 3) fail_input("cagd typical-surface", "--n must be >= 3 (control points per direction), got " + std::to_string(a.n));
-    if (!std::isfinite(a.angle_deg)) fail_input("cagd typical-surface", "--angle-deg = " + full_precision(a.angle_deg) + " is not finite");
+    const char* who = "cagd typical-surface";
+    if (!std::isfinite(a.angle_deg)) fail_input(who, "--angle-deg = " + full_precision(a.angle_deg) + " is not finite");
+    if (static_cast<double>(a.n) * a.grid > kMaxNTimesGrid)
+        fail_input(who, "--n " + std::to_string(a.n) + " x --grid " + std::to_string(a.grid) + " exceeds 1e5 ((n grid)^2 operations: minutes); lower one");
+    OutputFile file(a.out);
+    std::unique_ptr<OutputFile> net_file;
+    if (!a.net_out.empty()) net_file = std::make_unique<OutputFile>(a.net_out, "--net-out");
     const surface::ControlNet net = aesthetic::log_aesthetic_typical_net(a.alpha_u, a.alpha_v, a.length, a.n - 1, a.angle_deg * std::numbers::pi / 180.0);
     const surface::BezierPatch patch(net);
     std::vector<double> ts;
     for (int k = 0; k < a.grid; ++k) ts.push_back(static_cast<double>(k) / (a.grid - 1));
     const surface::SurfaceGrid g = patch.evaluate_grid(ts, ts);
-    std::ofstream out(a.out);
-    if (!out) fail_input("cagd typical-surface", "cannot write '" + a.out + "'");
-    out << "u,v,x,y,z,gaussian,mean\n";
+    CsvOutput out(file, {"u", "v", "x", "y", "z", "gaussian", "mean"});
     for (Eigen::Index i = 0; i < a.grid; ++i)
         for (Eigen::Index j = 0; j < a.grid; ++j) {
             const analysis::SurfaceJet2 jet = g.jet(i, j);
             const analysis::SurfaceCurvatures c = analysis::surface_curvatures(jet);
-            out << format_number(ts[static_cast<std::size_t>(i)], 15) << ',' << format_number(ts[static_cast<std::size_t>(j)], 15) << ',' << format_number(jet.s(0), 15) << ','
-                << format_number(jet.s(1), 15) << ',' << format_number(jet.s(2), 15) << ',' << format_number(c.gaussian, 15) << ',' << format_number(c.mean, 15) << '\n';
+            out.row({ts[static_cast<std::size_t>(i)], ts[static_cast<std::size_t>(j)], jet.s(0), jet.s(1), jet.s(2), c.gaussian, c.mean}, 15);
         }
-    if (!a.net_out.empty()) {
-        std::ofstream nout(a.net_out);
-        if (!nout) fail_input("cagd typical-surface", "cannot write '" + a.net_out + "'");
-        nout << "i,j,x,y,z\n";
+    if (net_file) {
+        CsvOutput nout(*net_file, {"i", "j", "x", "y", "z"});
         for (Eigen::Index i = 0; i < net[0].rows(); ++i)
-            for (Eigen::Index j = 0; j < net[0].cols(); ++j)
-                nout << i << ',' << j << ',' << format_number(net[0](i, j), 15) << ',' << format_number(net[1](i, j), 15) << ',' << format_number(net[2](i, j), 15) << '\n';
+            for (Eigen::Index j = 0; j < net[0].cols(); ++j) nout.row({double(i), double(j), net[0](i, j), net[1](i, j), net[2](i, j)}, 15);
     }
+    out.commit();
+    if (net_file) net_file->commit();
     return 0;
 }
 
@@ -58,14 +63,14 @@ Command add_typical_surface_command(CLI::App& app) {
     auto a = std::make_shared<TypicalSurfaceArgs>();
     auto* c = app.add_subcommand(
         "typical-surface", "Nonstationary typical surface: net with fixed edges, polygons turned about their diagonals; Bezier patch with K and H (typical_curves section 5)");
-    c->add_option("--n", a->n, "control points per direction (>= 3; the patch has bi-degree n - 1)")->required();
+    c->add_option("--n", a->n, "control points per direction (the patch has bi-degree n - 1; n x grid <= 1e5)")->required()->check(CLI::Range(3, 10000));
     c->add_option("--alpha-u", a->alpha_u, "alpha of the v = 0 boundary P(i,0) (< 0 or > 1)")->required();
     c->add_option("--alpha-v", a->alpha_v, "alpha of the u = 0 boundary P(0,j) (< 0 or > 1)")->required();
     c->add_option("--angle-deg", a->angle_deg, "rotation of every control polygon about its diagonal, degrees")->required();
     c->add_option("--length", a->length, "length of each boundary polygon (> 0)");
-    c->add_option("--grid", a->grid, "parameter grid points per direction")->check(CLI::Range(2, 100000));
-    c->add_option("--out", a->out, "CSV: u, v, x, y, z, gaussian, mean")->required();
-    c->add_option("--net-out", a->net_out, "optional CSV of the control net: i, j, x, y, z");
+    c->add_option("--grid", a->grid, "parameter grid points per direction (grid^2 rows)")->check(CLI::Range(2, 3000));
+    c->add_option("--out", a->out, "CSV: u, v, x, y, z, gaussian, mean; - for stdout")->required();
+    c->add_option("--net-out", a->net_out, "optional CSV of the control net: i, j, x, y, z; - for stdout");
     return {c, [a] { return run_typical_surface(*a); }};
 }
 

@@ -93,6 +93,7 @@ const MethodComparison& find_comparison(const std::vector<MethodComparison>& c, 
 std::vector<MethodComparison> compare_methods(const PointList& points, const ComparisonOptions& options) {
     const char* who = "cagd::compare::compare_methods";
     if (points.cols() != 2) fail_input(who, "compares planar curves: needs 2 columns (x, y), got " + std::to_string(points.cols()));
+    if (points.rows() < 2) fail_input(who, "needs at least 2 points, got " + std::to_string(points.rows()));
     std::vector<methods::Configuration> configurations;
     for (const std::string& name : options.methods) configurations.push_back(methods::find_configuration(name));
     if (options.methods.empty()) configurations = methods::configurations();
@@ -104,6 +105,7 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
         c.note = applicability(configuration.claims, points, options.closed);
         if (!c.note.empty()) {
             c.status = "not applicable";
+            if (options.on_method) options.on_method(c);
             out.push_back(std::move(c));
             continue;
         }
@@ -113,6 +115,7 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
         if (!r.outcome.ok() || !r.interpolant) {
             c.status = "no result";
             c.note = r.outcome.message;
+            if (options.on_method) options.on_method(c);
             out.push_back(std::move(c));
             continue;
         }
@@ -140,6 +143,7 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
             } catch (const InvalidInput&) {  // the moved point made the input invalid for this method
             }
         }
+        if (options.on_method) options.on_method(c);
         out.push_back(std::move(c));
     }
     return out;

@@ -19,6 +19,7 @@
 // curvature there, and its κ measures are left empty with that note. Nothing is NaN.
 // Sampling: `samples` and `quadrature_pieces` per piece default to 128 and 16, reduced for long
 // inputs so that a method measures about 2·10⁶ samples in all (at least 8 and 2 per piece).
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -32,10 +33,13 @@ namespace cagd::compare {
 using methods::Interpolant;
 using methods::InterpolationResult;
 
+struct MethodComparison;
+
 struct ComparisonOptions {
     std::vector<std::string> methods;  // configuration or method names (methods::find_configuration); empty: every configuration
     bool closed = false;
     bool locality = true;
+    std::function<void(const MethodComparison&)> on_method;  // called as each method is done (progress)
 };
 
 struct MethodComparison {

@@ -1,8 +1,11 @@
 #include "core/csv.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
+#include <iostream>
 
 #include "core/errors.hpp"
 
@@ -97,35 +100,90 @@ int NumericTable::column(const std::string& name) const {
     return -1;
 }
 
+std::string clean_csv_line(std::string line, int line_no) {
+    if (line_no == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);  // UTF-8 byte-order mark
+    const auto hash = line.find('#');
+    if (hash != std::string::npos) line.erase(hash);
+    const auto b = line.find_first_not_of(" \t\r"), e = line.find_last_not_of(" \t\r");
+    return b == std::string::npos ? std::string() : line.substr(b, e - b + 1);
+}
+
+std::vector<std::string> split_fields(const std::string& line) {
+    std::vector<std::string> fields{""};
+    for (char c : line) {
+        if (c == ',')
+            fields.emplace_back();
+        else
+            fields.back() += c;
+    }
+    for (std::string& f : fields) {
+        const auto b = f.find_first_not_of(" \t"), e = f.find_last_not_of(" \t");
+        f = b == std::string::npos ? std::string() : f.substr(b, e - b + 1);
+    }
+    return fields;
+}
+
+bool is_column_name(const std::string& field) {
+    if (field.empty() || !(std::isalpha(static_cast<unsigned char>(field[0])) || field[0] == '_')) return false;
+    for (char c : field)
+        if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.')) return false;
+    try {
+        parse_number(field);
+        return false;  // "nan", "inf", "infinity" read as numbers
+    } catch (const InvalidInput&) {
+        return true;
+    }
+}
+
+std::string excerpt(const std::string& text) { return text.size() <= 40 ? text : text.substr(0, 37) + "..."; }
+
+InputFile::InputFile(const std::string& path) : path_(path), name_(path == "-" ? "stdin" : path) {
+    if (path == "-") {
+        stdin_ = &std::cin;
+        return;
+    }
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) fail_input("cagd::InputFile", "'" + path + "' is a directory, not a file");
+    file_.open(path);
+    if (!file_) fail_input("cagd::InputFile", "cannot open '" + path + "'");
+}
+
 NumericTable read_numeric_table(const std::string& path) {
+    InputFile in(path);
+    return read_numeric_table(in.stream(), in.name());
+}
+
+NumericTable read_numeric_table(std::istream& stream, const std::string& name) {
     const char* who = "cagd::read_numeric_table";
-    std::ifstream in(path);
-    if (!in) fail_input(who, "cannot open '" + path + "'");
     NumericTable t;
     std::string line;
     int line_no = 0;
-    while (std::getline(in, line)) {
-        ++line_no;
-        if (line_no == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);  // UTF-8 byte-order mark
-        if (!line.empty() && line.back() == '\r') line.pop_back();
-        if (line.empty() || line[0] == '#') continue;
-        const std::vector<std::string> fields = split_csv_line(line);
+    while (std::getline(stream, line)) {
+        line = clean_csv_line(std::move(line), ++line_no);
+        if (line.empty()) continue;
+        const std::vector<std::string> fields = split_fields(line);
+        const std::string where = name + ":" + std::to_string(line_no) + ": ";
         if (t.header.empty()) {
+            for (const std::string& f : fields)
+                if (!is_column_name(f)) fail_input(who, where + "needs a header line of column names, got '" + excerpt(line) + "'");
             t.header = fields;
             continue;
         }
         std::vector<double> row;
         for (const std::string& f : fields) {
+            double v = 0.0;
             try {
-                row.push_back(parse_number(f));
+                v = parse_number(f);
             } catch (const InvalidInput&) {
-                fail_input(who, path + ":" + std::to_string(line_no) + ": '" + f + "' is not a number");
+                fail_input(who, where + "'" + excerpt(f) + "' is not a number");
             }
+            if (!std::isfinite(v)) fail_input(who, where + "'" + excerpt(f) + "' is not finite");
+            row.push_back(v);
         }
-        if (row.size() != t.header.size())
-            fail_input(who, path + ":" + std::to_string(line_no) + ": " + std::to_string(row.size()) + " fields, header has " + std::to_string(t.header.size()));
+        if (row.size() != t.header.size()) fail_input(who, where + std::to_string(row.size()) + " fields, the header has " + std::to_string(t.header.size()));
         t.rows.push_back(std::move(row));
     }
+    if (t.header.empty()) fail_input(who, name + ": empty (no header line)");
     return t;
 }
 

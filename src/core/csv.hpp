@@ -15,15 +15,37 @@ std::string format_number(double value, int significant = 10);
 // Throws InvalidInput naming the text.
 double parse_number(const std::string& text);
 
-// A CSV of numbers under a header line of names ('#' comments and blank lines skipped), e.g. a
-// curve written by `cagd interpolate`. InvalidInput names path:line and the field when a field is
-// not a number or a row's field count differs from the header's.
+// The record rules of every reader (core/point_csv.hpp): a line with its byte-order mark (line 1),
+// CR, '#' comment and surrounding blanks removed; its comma-separated fields, trimmed; whether a
+// field is a name (a header field); an excerpt of a line for messages (at most 40 characters).
+std::string clean_csv_line(std::string line, int line_no);
+std::vector<std::string> split_fields(const std::string& line);
+bool is_column_name(const std::string& field);
+std::string excerpt(const std::string& text);
+// `path`, or standard input for "-"; InvalidInput naming the path if it cannot be opened (or is a
+// directory).
+class InputFile {
+public:
+    explicit InputFile(const std::string& path);
+    std::istream& stream() { return path_ == "-" ? *stdin_ : file_; }
+    const std::string& name() const { return name_; }
+
+private:
+    std::string path_, name_;
+    std::ifstream file_;
+    std::istream* stdin_ = nullptr;
+};
+
+// A CSV of numbers under a header line of names, e.g. a curve written by `cagd interpolate`, read
+// by the rules above (the header is required). InvalidInput names path:line and the field when a
+// field is not a number or not finite, or a row's field count differs from the header's.
 struct NumericTable {
     std::vector<std::string> header;
     std::vector<std::vector<double>> rows;
     int column(const std::string& name) const;  // −1 when absent
 };
 NumericTable read_numeric_table(const std::string& path);
+NumericTable read_numeric_table(std::istream& in, const std::string& source_name);
 
 class CsvWriter {
 public:

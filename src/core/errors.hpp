@@ -15,7 +15,9 @@ public:
     using std::invalid_argument::invalid_argument;
 };
 
-enum class Status { ok, no_convergence, no_solution };
+// not_representable: the result overflows or underflows double precision for these inputs (e.g.
+// coordinates near 1e308, whose differences overflow).
+enum class Status { ok, no_convergence, no_solution, not_representable };
 
 struct Outcome {
     Status status = Status::ok;

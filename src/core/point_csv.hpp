@@ -1,9 +1,16 @@
 #pragma once
-// Reading point lists from CSV (the `cagd` tool's input format).
-// One point per line, 2 or 3 comma-separated numbers; an optional header line of names
-// before the first point; '#' comments and blank lines ignored; spaces around fields
-// ignored. Every data line must have the same number of columns.
-// Errors (InvalidInput) name the source, the line number and the offending text.
+// Reading point lists and value lists from CSV (the `cagd` command's input format). The rules,
+// shared by every reader (also read_numeric_table in core/csv.hpp):
+//   - one record per line; fields separated by commas, spaces and tabs around a field ignored
+//     (a line of whitespace-separated numbers is therefore one unreadable field, an error);
+//   - a UTF-8 byte-order mark at the start of line 1 is stripped; CRLF line ends are accepted;
+//   - '#' starts a comment (to the end of the line); blank lines are skipped;
+//   - the first record is a header only if every field is a name: a letter or '_' first, then
+//     letters, digits, '_', '-', '.', and not a number itself (so "nan" or "inf" is not a name);
+//     any other record that is not all numbers is an error, the first one included;
+//   - every record has the same number of fields; every number is finite.
+// Errors (InvalidInput) name the source, the line number and (the first 40 characters of) the
+// offending text. The path "-" reads standard input (named "stdin" in messages).
 #include <istream>
 #include <string>
 #include <vector>
@@ -16,5 +23,6 @@ PointList read_points_csv(std::istream& in, const std::string& source_name);
 PointList read_points_csv(const std::string& path);
 // One finite number per line (optional header, # comments), e.g. per-point smoothing weights.
 std::vector<double> read_values_csv(const std::string& path);
+std::vector<double> read_values_csv(std::istream& in, const std::string& source_name);
 
 }  // namespace cagd

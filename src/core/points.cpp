@@ -18,7 +18,7 @@ void require_valid_points(const PointList& points, Eigen::Index min_count, bool 
     const Eigen::Index pairs = closed ? n : n - 1;
     for (Eigen::Index i = 0; i < pairs; ++i) {
         const Eigen::Index j = (i + 1) % n;
-        if ((points.row(i) - points.row(j)).norm() == 0.0)
+        if (points.row(i) == points.row(j))
             fail_input(who, "points " + std::to_string(i) + " and " + std::to_string(j) + " coincide (zero-length chord); consecutive points must differ");
     }
 }

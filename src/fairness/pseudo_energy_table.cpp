@@ -182,23 +182,27 @@ std::string PseudoEnergyTable::header_line() const {
     return s.str();
 }
 
+void PseudoEnergyTable::save(std::ostream& out) const {
+    out << header_line() << "\n";
+    out << "i,j,theta0,theta1,J,r0,r1,L,S,E,type,local_minima,runner_up,status\n";
+    char buf[512];
+    const int n = grid_.n;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            const PseudoEnergyMinimum& m = node(i, j);
+            std::snprintf(buf, sizeof buf, "%d,%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%s,%d,%.17g,%d\n", i, j, m.theta0, m.theta1, m.pseudo_energy, m.r0, m.r1,
+                          m.length, m.area, m.strain_energy, to_string(m.type), m.local_minima, m.runner_up, static_cast<int>(m.outcome.status));
+            out << buf;
+        }
+}
+
 void PseudoEnergyTable::save(const std::string& path) const {
     // A temporary name of this process, renamed at the end: concurrent builders never mix their lines.
     const std::string tmp = path + ".tmp." + std::to_string(::getpid());
     {
         std::ofstream out(tmp);
         if (!out) fail_input("cagd::fairness::PseudoEnergyTable::save", "cannot write '" + tmp + "'");
-        out << header_line() << "\n";
-        out << "i,j,theta0,theta1,J,r0,r1,L,S,E,type,local_minima,runner_up,status\n";
-        char buf[512];
-        const int n = grid_.n;
-        for (int i = 0; i < n; ++i)
-            for (int j = 0; j < n; ++j) {
-                const PseudoEnergyMinimum& m = node(i, j);
-                std::snprintf(buf, sizeof buf, "%d,%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%s,%d,%.17g,%d\n", i, j, m.theta0, m.theta1, m.pseudo_energy, m.r0, m.r1,
-                              m.length, m.area, m.strain_energy, to_string(m.type), m.local_minima, m.runner_up, static_cast<int>(m.outcome.status));
-                out << buf;
-            }
+        save(out);
     }
     std::rename(tmp.c_str(), path.c_str());
 }

@@ -29,6 +29,7 @@
 // Cache: a text file whose first line records format version, grid, placement and method; `load`
 // refuses a file whose line differs, so a changed grid or method rebuilds.
 #include <functional>
+#include <ostream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -77,6 +78,9 @@ public:
     TableValue lookup(double theta0, double theta1, bool same_type_only = true) const;
 
     void save(const std::string& path) const;
+    // The same text to a stream. Undefined nodes (θ0 or θ1 at 0 or ±π, eq 8) and nodes without a
+    // second minimum carry inf in J and runner_up: the format's own marks, read back by load().
+    void save(std::ostream& out) const;
     std::string header_line() const;
 
 private:

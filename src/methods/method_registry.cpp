@@ -141,8 +141,9 @@ InterpolationResult build_locality(const PointList& points, bool closed, const P
 
 // ---- hosaka -------------------------------------------------------------------------------
 
-// Order 50 already takes about 10 s on 10 points (a dense system of 2m unknowns per point).
-constexpr int kMaxHosakaOrder = 50;
+// Order 30 takes about 1.4 s on 6 points and order 50 about 10 s (2m unknowns per point):
+// 30 keeps a run within seconds.
+constexpr int kMaxHosakaOrder = 30;
 
 InterpolationResult build_hosaka(const PointList& points, bool closed, const ParameterValues& v) {
     spline::HosakaSplineOptions o;
@@ -181,19 +182,22 @@ InterpolationResult build_curvature_profile(const PointList& points, bool closed
     InterpolationResult r;
     r.outcome = sol.outcome;
     for (const auto& h : sol.history) {
-        std::ostringstream line;
-        line << "newton," << h.iteration << ",residual," << h.residual << ",rank," << h.rank;
-        r.log.push_back(line.str());
+        std::ostringstream residual;
+        residual << h.residual;
+        r.report.emplace_back("newton_" + std::to_string(h.iteration) + "_residual", residual.str());
+        r.report.emplace_back("newton_" + std::to_string(h.iteration) + "_rank", std::to_string(h.rank));
     }
     if (!sol.outcome.ok() || !sol.curve) return r;
     const int m = design_equations(problem), N = design_unknowns(problem);
-    r.log.push_back("equations," + std::to_string(m) + ",unknowns," + std::to_string(N) + ",rank," + (sol.rank < 0 ? std::string("full (sparse LU)") : std::to_string(sol.rank)) +
-                    (m < N || (sol.rank >= 0 && sol.rank < N) ? ",minimum-norm Newton steps chose one of several solutions" : ""));
+    r.report.emplace_back("equations", std::to_string(m));
+    r.report.emplace_back("unknowns", std::to_string(N));
+    r.report.emplace_back("rank", sol.rank < 0 ? std::string("full (sparse LU)") : std::to_string(sol.rank));
+    if (m < N || (sol.rank >= 0 && sol.rank < N)) r.report.emplace_back("solution", "minimum-norm Newton steps chose one of several solutions");
     // Four decimals as the paper prints, more where the shortest span needs them to stay nonzero.
     const std::vector<double> lengths = sol.segment_lengths();
     const double shortest = *std::min_element(lengths.begin(), lengths.end());
     const int decimals = std::clamp(static_cast<int>(std::ceil(-std::log10(shortest))) + 1, 4, 17);
-    if (shortest >= 1e-17) r.log.push_back("knot_difference_list,\"" + format_knot_difference_list(layout, lengths, decimals) + "\"");
+    if (shortest >= 1e-17) r.report.emplace_back("knot_difference_list", format_knot_difference_list(layout, lengths, decimals));
     const std::vector<double>& w = sol.curve->breakpoints();
     std::vector<double> nodes;
     for (int j = 0; j <= layout.spans(); ++j) nodes.push_back(w[static_cast<std::size_t>(layout.first_segment(j))]);
@@ -389,6 +393,17 @@ const Method& find_method(const std::string& name) {
     fail_input("cagd::methods::find_method", "unknown method '" + name + "'; known: " + known);
 }
 
+namespace {
+
+// Squared distances must stay finite and nonzero: coordinates beyond 1e150 overflow them (and the
+// methods' products of differences; Boost's centripetal parameter read past its knots at 4e289,
+// found by fuzz_interpolate), chords below 1e-150 (relative to the coordinates' size when that
+// exceeds 1) underflow them.
+constexpr double kLargestCoordinate = 1e150;
+constexpr double kShortestChord = 1e-150;
+
+}  // namespace
+
 InterpolationResult interpolate(const Method& method, const PointList& points, bool closed, const ParameterValues& values) {
     const MethodClaims claims = method.claims(values);
     const std::string who = "cagd::methods::interpolate(" + method.name + ")";
@@ -396,6 +411,27 @@ InterpolationResult interpolate(const Method& method, const PointList& points, b
     require_valid_points(points, closed ? claims.min_points_closed : claims.min_points, true, closed, who);
     if (points.cols() < 2 || points.cols() > claims.max_dimension)
         fail_input(who, "needs points of dimension 2" + std::string(claims.max_dimension == 3 ? " or 3" : "") + ", got " + std::to_string(points.cols()));
+    // Valid points whose arithmetic leaves double precision: differences of coordinates near 1e308
+    // overflow, and chords below 1e-150 square to 0 (their norm underflows). The result is not
+    // representable: an outcome, not bad input.
+    const double largest = points.cwiseAbs().maxCoeff();
+    if (largest > kLargestCoordinate) {
+        InterpolationResult r;
+        r.outcome = {Status::not_representable, method.name + ": coordinates up to " + full_precision(largest) +
+                                                    " overflow its arithmetic (at most 1e150: squared distances must stay finite); scale the points down"};
+        return r;
+    }
+    for (Eigen::Index i = 0; i + 1 < points.rows() || (closed && i < points.rows()); ++i) {
+        const Eigen::RowVectorXd d = points.row((i + 1) % points.rows()) - points.row(i);
+        const double chord = d.norm();
+        if (!(chord >= kShortestChord * std::max(1.0, largest))) {
+            InterpolationResult r;
+            r.outcome = {Status::not_representable, method.name + ": points " + std::to_string(i) + " and " + std::to_string((i + 1) % points.rows()) + " differ by " +
+                                                        full_precision(d.cwiseAbs().maxCoeff()) +
+                                                        " at most per coordinate: below 1e-150 (times the coordinates' size) the chord's square underflows; scale the points up"};
+            return r;
+        }
+    }
     try {
         return method.build(points, closed, values);
     } catch (const std::domain_error& e) {  // Boost.Math's own precondition checks

@@ -81,9 +81,10 @@ struct Interpolant {
 struct InterpolationResult {
     Outcome outcome;
     std::optional<Interpolant> interpolant;  // present when outcome.ok()
-    // What the method reports besides the curve, as "key,value…" lines (the curvature-profile
-    // Newton history and its knot-difference list), in the order computed.
-    std::vector<std::string> log;
+    // What the method reports besides the curve, as (quantity, value) text in the order computed:
+    // the curvature-profile Newton history (newton_<i>_residual, newton_<i>_rank), equations,
+    // unknowns, rank, and its knot-difference list.
+    std::vector<std::pair<std::string, std::string>> report;
     // Quantities the method computes along the way, by name (the pseudo-spline's length, area
     // and pseudo-energy from its tables, eq 16–21).
     std::vector<std::pair<std::string, double>> quantities;

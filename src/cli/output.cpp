@@ -1,0 +1,150 @@
+#include "cli/output.hpp"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <system_error>
+
+#include "core/csv.hpp"
+#include "core/errors.hpp"
+#include "core/point_csv.hpp"
+
+namespace cagd::cli {
+
+namespace {
+
+bool quiet_flag = false;
+
+// A fresh temporary file name in `dir` (created empty, so two runs never share one).
+std::filesystem::path make_temp(const std::filesystem::path& dir, const std::string& stem, const std::string& path, const std::string& option) {
+    std::string pattern = (dir / ("." + stem + ".cagd-XXXXXX")).string();
+    const int fd = mkstemp(pattern.data());
+    if (fd < 0) fail_input("cagd", option + " '" + path + "': cannot write in '" + dir.string() + "': " + std::error_code(errno, std::generic_category()).message());
+    close(fd);
+    return pattern;
+}
+
+}  // namespace
+
+OutputFile::OutputFile(const std::string& path, const std::string& option) : path_(path), option_(option) {
+    namespace fs = std::filesystem;
+    if (path.empty()) fail_input("cagd", option + " is empty; give a file path or - for standard output");
+    std::error_code ec;
+    if (path == "-") {
+        target_ = Target::standard_output;
+        const char* tmp = std::getenv("TMPDIR");
+        temp_path_ = make_temp(tmp && *tmp ? tmp : "/tmp", "stdout", path, option);
+    } else {
+        fs::path p = path;
+        if (fs::is_symlink(p, ec)) p = fs::canonical(p, ec);  // replace the link's target, keep the link
+        if (fs::is_directory(p, ec)) fail_input("cagd", option + " '" + path + "' is a directory; give a file path");
+        const bool exists = fs::exists(p, ec);
+        if (exists && !fs::is_regular_file(p, ec)) {
+            target_ = Target::special;  // a device or a pipe: written in place at commit()
+            const char* tmp = std::getenv("TMPDIR");
+            temp_path_ = make_temp(tmp && *tmp ? tmp : "/tmp", "special", path, option);
+        } else {
+            const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
+            if (!fs::is_directory(dir, ec)) fail_input("cagd", option + " '" + path + "': the directory '" + dir.string() + "' does not exist");
+            temp_path_ = make_temp(dir, p.filename().string(), path, option);
+        }
+        final_ = p;
+    }
+    temp_.open(temp_path_, std::ios::binary | std::ios::trunc);
+    if (!temp_) fail_input("cagd", option + " '" + path + "': cannot write the temporary file '" + temp_path_.string() + "'");
+}
+
+OutputFile::~OutputFile() {
+    if (committed_) return;
+    temp_.close();
+    std::error_code ec;
+    std::filesystem::remove(temp_path_, ec);
+}
+
+void OutputFile::commit() {
+    temp_.close();
+    if (!temp_) throw NoResult(option_ + " '" + path_ + "': writing failed (disk full?)");
+    std::error_code ec;
+    if (target_ == Target::regular) {
+        std::filesystem::rename(temp_path_, final_, ec);
+        if (ec) throw NoResult(option_ + " '" + path_ + "': cannot replace it: " + ec.message());
+        committed_ = true;
+        return;
+    }
+    std::ifstream in(temp_path_, std::ios::binary);
+    if (target_ == Target::standard_output) {
+        std::cout << in.rdbuf();
+        std::cout.flush();
+    } else {
+        std::ofstream out(final_, std::ios::binary);  // opened for writing only: no truncation of a device matters
+        if (!out) throw NoResult(option_ + " '" + path_ + "': cannot open it for writing");
+        out << in.rdbuf();
+    }
+    in.close();
+    std::filesystem::remove(temp_path_, ec);
+    committed_ = true;
+}
+
+std::string finite_field(double value, int significant, const std::string& what) {
+    if (!std::isfinite(value)) throw NoResult("the result is not representable: " + what + " is " + full_precision(value));
+    return format_number(value, significant);
+}
+
+CsvOutput::CsvOutput(const std::string& path, std::vector<std::string> header, const std::string& option)
+    : owned_(std::make_unique<OutputFile>(path, option)), file_(owned_.get()), header_(std::move(header)) {
+    write_header();
+}
+
+CsvOutput::CsvOutput(OutputFile& file, std::vector<std::string> header) : file_(&file), header_(std::move(header)) { write_header(); }
+
+void CsvOutput::write_header() {
+    for (std::size_t i = 0; i < header_.size(); ++i) file_->stream() << (i ? "," : "") << csv_field(header_[i]);
+    file_->stream() << '\n';
+}
+
+void CsvOutput::row(const std::vector<double>& values, int significant) {
+    std::vector<std::string> fields;
+    for (std::size_t i = 0; i < values.size(); ++i)
+        fields.push_back(finite_field(values[i], significant, (i < header_.size() ? header_[i] : "a column") + " of row " + std::to_string(rows_ + 1)));
+    row_text(fields);
+}
+
+void CsvOutput::row_text(const std::vector<std::string>& fields) {
+    if (fields.size() != header_.size())
+        throw std::logic_error("cagd::cli::CsvOutput: a row of " + std::to_string(fields.size()) + " fields under " + std::to_string(header_.size()));
+    for (std::size_t i = 0; i < fields.size(); ++i) file_->stream() << (i ? "," : "") << csv_field(fields[i]);
+    file_->stream() << '\n';
+    ++rows_;
+}
+
+void Quantities::add(const std::string& name, double value, int significant) { rows_.emplace_back(name, finite_field(value, significant, name)); }
+
+void Quantities::add_text(const std::string& name, const std::string& value) { rows_.emplace_back(name, value); }
+
+void Quantities::commit() {
+    std::cout << "quantity,value\n";
+    for (const auto& [name, value] : rows_) std::cout << csv_field(name) << ',' << csv_field(value) << '\n';
+    std::cout.flush();
+}
+
+PointList read_data_points(const std::string& path) {
+    PointList p = read_points_csv(path);
+    const double largest = p.cwiseAbs().maxCoeff();
+    if (largest > 1e150)
+        throw NoResult(path + ": values up to " + full_precision(largest) + " overflow the arithmetic (at most 1e150: squares must stay finite); scale the data down");
+    return p;
+}
+
+bool progress_enabled() { return !quiet_flag && isatty(fileno(stderr)); }
+
+void set_quiet(bool quiet) { quiet_flag = quiet; }
+
+void require_output_rows(double rows, const std::string& what) {
+    if (!(rows <= static_cast<double>(kMaxOutputRows)))
+        fail_input("cagd", what + " would write " + format_number(rows, 3) + " rows; at most " + std::to_string(kMaxOutputRows) + " (about 1 GB of CSV)");
+}
+
+}  // namespace cagd::cli

@@ -1,0 +1,102 @@
+#pragma once
+// How the `cagd` command writes (the contract in main.cpp and the README):
+//   - `-` is standard output; output appears only after success: everything is written to a
+//     temporary file first, and published by commit();
+//   - a regular target (or a new path) is replaced atomically: the temporary file sits beside it
+//     and is renamed over it; a symbolic link is followed, so its target is replaced;
+//   - a target that exists and is not a regular file (a device, a pipe) is written directly at
+//     commit() from the temporary copy, never renamed over or removed;
+//   - a directory where a file is expected, or a place that cannot be written, is bad input, found
+//     when the OutputFile is made — before any work;
+//   - an OutputFile destroyed without commit() (an error) removes its temporary file.
+// CsvOutput is a CSV result of finite numbers: a non-finite value is a numerical outcome (NoResult,
+// exit 1), naming its column and row, and nothing is written.
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/points.hpp"
+
+namespace cagd::cli {
+
+// A numerical outcome for valid input (no solution, no convergence, a value that is not
+// representable): main.cpp prints "cagd: no result: …" and exits 1.
+class NoResult : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+class OutputFile {
+public:
+    // `option` names the option in messages ("--out").
+    OutputFile(const std::string& path, const std::string& option = "--out");
+    OutputFile(const OutputFile&) = delete;
+    OutputFile& operator=(const OutputFile&) = delete;
+    ~OutputFile();
+    std::ostream& stream() { return temp_; }
+    void commit();
+
+private:
+    enum class Target { standard_output, regular, special };
+    std::string path_, option_;
+    Target target_ = Target::regular;
+    std::filesystem::path final_, temp_path_;
+    std::ofstream temp_;
+    bool committed_ = false;
+};
+
+// `value` formatted to `significant` digits (core/csv.hpp format_number), or NoResult naming
+// `what` when it is not finite.
+std::string finite_field(double value, int significant, const std::string& what);
+
+class CsvOutput {
+public:
+    // Owns its file (checked now, published by commit()).
+    CsvOutput(const std::string& path, std::vector<std::string> header, const std::string& option = "--out");
+    // Writes into `file`, opened (and so checked) before the work; commit() publishes it.
+    CsvOutput(OutputFile& file, std::vector<std::string> header);
+    void row(const std::vector<double>& values, int significant = 15);
+    void row_text(const std::vector<std::string>& fields);
+    void end_scan() { file_->stream() << '\n'; }  // a blank line: ends a gnuplot scan line
+    void commit() { file_->commit(); }
+    long rows() const { return rows_; }
+
+private:
+    void write_header();
+    std::unique_ptr<OutputFile> owned_;
+    OutputFile* file_;
+    std::vector<std::string> header_;
+    long rows_ = 0;
+};
+
+// "quantity,value" lines for standard output, printed at commit() — after success only.
+class Quantities {
+public:
+    void add(const std::string& name, double value, int significant = 12);
+    void add_text(const std::string& name, const std::string& value);
+    void commit();
+
+private:
+    std::vector<std::pair<std::string, std::string>> rows_;
+};
+
+// The points of a data file (core/point_csv.hpp rules), with coordinates at most 1e150 in
+// magnitude: beyond, the surfaces' and smoothers' arithmetic overflows, so larger data is a
+// numerical outcome (NoResult naming the largest value), not bad input.
+PointList read_data_points(const std::string& path);
+
+// Progress on standard error for work longer than a second: only when stderr is a terminal and
+// `--quiet` was not given (set_quiet).
+bool progress_enabled();
+void set_quiet(bool quiet);
+
+// Sizes are checked before anything is allocated: rows of output at most kMaxOutputRows (about a
+// gigabyte of CSV; the limits of --samples and --grid in --help follow from it).
+constexpr long kMaxOutputRows = 10'000'000;
+void require_output_rows(double rows, const std::string& what);
+
+}  // namespace cagd::cli

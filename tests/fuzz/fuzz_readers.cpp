@@ -1,0 +1,68 @@
+// libFuzzer target: every reader of user input on arbitrary bytes. The first byte picks the reader
+// (modulo 7), the rest is its text:
+//   0 points (core/point_csv)   1 values (λ files)   2 numeric tables (curve CSV of cagd analyze)
+//   3 m-vectors (sb2_locality)  4 knot-difference lists (degree 2 or 3)   5 span-shape lists
+//   6 method parameters: the registry's typed options of a method (second byte), "name=value" lines
+// Contract checked: each returns (points: 1+ rows of 2 or 3 finite columns; values and tables:
+// finite numbers, rows as long as the header) or throws cagd::InvalidInput; nothing else escapes,
+// and ASan/UBSan see no memory error or undefined behaviour. Seed corpus: tests/fuzz/corpus/readers.
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <sstream>
+#include <string>
+
+#include "core/csv.hpp"
+#include "core/errors.hpp"
+#include "core/point_csv.hpp"
+#include "intrinsic/curvature_profile_design.hpp"
+#include "intrinsic/knot_difference_list.hpp"
+#include "locality/locality_spline.hpp"
+#include "methods/method_registry.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    using namespace cagd;
+    if (size < 1) return 0;
+    const int reader = data[0] % 7;
+    const std::string text(reinterpret_cast<const char*>(data + 1), size - 1);
+    std::istringstream in(text);
+    try {
+        switch (reader) {
+            case 0: {
+                const PointList p = read_points_csv(in, "fuzz");
+                if (p.rows() < 1 || (p.cols() != 2 && p.cols() != 3) || !p.allFinite()) std::abort();
+                break;
+            }
+            case 1:
+                for (double v : read_values_csv(in, "fuzz"))
+                    if (!std::isfinite(v)) std::abort();
+                break;
+            case 2: {
+                const NumericTable t = read_numeric_table(in, "fuzz");
+                for (const auto& row : t.rows) {
+                    if (row.size() != t.header.size()) std::abort();
+                    for (double v : row)
+                        if (!std::isfinite(v)) std::abort();
+                }
+                break;
+            }
+            case 3: locality::parse_m_vector(text); break;
+            case 4: intrinsic::parse_knot_difference_list(text.substr(text.empty() ? 0 : 1), text.empty() || text[0] % 2 ? 2 : 3); break;
+            case 5: intrinsic::parse_span_shapes(text); break;
+            case 6: {
+                if (text.empty()) break;
+                const methods::Method& m = methods::registry()[static_cast<unsigned char>(text[0]) % methods::registry().size()];
+                methods::ParameterText given;
+                std::istringstream lines(text.substr(1));
+                std::string line;
+                while (std::getline(lines, line)) {
+                    const auto eq = line.find('=');
+                    if (eq != std::string::npos) given[line.substr(0, eq)] = line.substr(eq + 1);
+                }
+                methods::parse_parameter_values(m.name, m.parameters, given);
+                break;
+            }
+        }
+    } catch (const InvalidInput&) {}
+    return 0;
+}
