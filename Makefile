@@ -20,7 +20,7 @@ test: build
 	@cd $(BUILD) && ctest --output-on-failure -j$(JOBS)
 
 reproduce: build
-	@bash scripts/reproduce.sh $(BUILD)
+	@JOBS=$(JOBS) bash scripts/reproduce.sh $(BUILD)
 
 bench: build
 	@cmake --build $(BUILD) -j$(JOBS) --target cagd_bench

@@ -255,5 +255,18 @@ expect_bad "m and m-vector"           '0,0\n1,1\n2,0\n'  interpolate --m 1 --m-v
 "$cagd" --version | grep -q '^cagd [0-9]' || { echo "FAIL: --version"; fails=$((fails+1)); }
 "$cagd" energy-table --help | grep -q 'periodic' || { echo "FAIL: energy-table --help shows no default placement"; fails=$((fails+1)); }
 
+# Writers: a symbolic link (even dangling) keeps pointing at the replaced file; a replaced file
+# keeps its mode, a new one gets 0666 less the umask; /dev/stdout on a pipe is written, not replaced.
+ln -s target.csv "$dir/link.csv"
+"$cagd" interpolate --in "$dir/pts.csv" --out "$dir/link.csv" --samples 1 || { echo "FAIL: output through a dangling link"; fails=$((fails+1)); }
+{ [ -L "$dir/link.csv" ] && [ -s "$dir/target.csv" ]; } || { echo "FAIL: the link was replaced or its target not written"; fails=$((fails+1)); }
+echo old > "$dir/mode.csv"; chmod 640 "$dir/mode.csv"
+"$cagd" interpolate --in "$dir/pts.csv" --out "$dir/mode.csv" --samples 1
+[ "$(stat -c %a "$dir/mode.csv")" = 640 ] || { echo "FAIL: mode of a replaced file: $(stat -c %a "$dir/mode.csv")"; fails=$((fails+1)); }
+(umask 022; "$cagd" interpolate --in "$dir/pts.csv" --out "$dir/new_mode.csv" --samples 1)
+[ "$(stat -c %a "$dir/new_mode.csv")" = 644 ] || { echo "FAIL: mode of a new file: $(stat -c %a "$dir/new_mode.csv")"; fails=$((fails+1)); }
+"$cagd" interpolate --in "$dir/pts.csv" --out /dev/stdout --samples 1 | grep -q '^u,x,y' || { echo "FAIL: --out /dev/stdout on a pipe"; fails=$((fails+1)); }
+[ -L /dev/stdout ] || [ -c /dev/stdout ] || { echo "FAIL: /dev/stdout is no longer a link or device"; fails=$((fails+1)); }
+
 if [ "$fails" -eq 0 ]; then echo "cli: all checks passed"; fi
 exit $((fails > 0))

@@ -8,7 +8,8 @@
 // exception is caught here. Output appears only after success (cli/output.hpp: `-` is stdout,
 // regular files are replaced atomically, devices and pipes written directly). Sizes are checked
 // against their limits (in --help) before anything is allocated. Progress goes to stderr for long
-// work, only when stderr is a terminal and --quiet is not given.
+// work, only when stderr is a terminal and --quiet is not given. CMake defines CAGD_VERSION and
+// CAGD_REVISION (the git revision at configure time).
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <new>
@@ -17,10 +18,6 @@
 #include "cli/commands.hpp"
 #include "cli/output.hpp"
 #include "core/errors.hpp"
-
-#if !defined(CAGD_VERSION) || !defined(CAGD_REVISION)
-#error "CMake defines CAGD_VERSION and CAGD_REVISION"
-#endif
 
 int main(int argc, char** argv) {
     using namespace cagd::cli;

@@ -1,5 +1,6 @@
 #include "cli/output.hpp"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -39,19 +40,35 @@ OutputFile::OutputFile(const std::string& path, const std::string& option) : pat
         temp_path_ = make_temp(tmp && *tmp ? tmp : "/tmp", "stdout", path, option);
     } else {
         fs::path p = path;
-        if (fs::is_symlink(p, ec)) p = fs::canonical(p, ec);  // replace the link's target, keep the link
-        if (fs::is_directory(p, ec)) fail_input("cagd", option + " '" + path + "' is a directory; give a file path");
-        const bool exists = fs::exists(p, ec);
-        if (exists && !fs::is_regular_file(p, ec)) {
-            target_ = Target::special;  // a device or a pipe: written in place at commit()
+        const fs::file_status status = fs::status(p, ec);  // follows symbolic links
+        if (fs::is_directory(status)) fail_input("cagd", option + " '" + path + "' is a directory; give a file path");
+        if (fs::exists(status) && !fs::is_regular_file(status)) {
+            target_ = Target::special;  // a device or a pipe (also /dev/stdout on a pipe): written in place at commit()
             const char* tmp = std::getenv("TMPDIR");
             temp_path_ = make_temp(tmp && *tmp ? tmp : "/tmp", "special", path, option);
         } else {
+            // A symbolic link (even a dangling one) keeps pointing where it did: its target is replaced.
+            for (int hops = 0; hops < 40 && fs::is_symlink(fs::symlink_status(p, ec)); ++hops) {
+                const fs::path target = fs::read_symlink(p, ec);
+                if (ec) break;
+                p = (target.is_absolute() ? target : p.parent_path() / target).lexically_normal();
+            }
             const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
             if (!fs::is_directory(dir, ec)) fail_input("cagd", option + " '" + path + "': the directory '" + dir.string() + "' does not exist");
             temp_path_ = make_temp(dir, p.filename().string(), path, option);
         }
-        final_ = p;
+        final_ = target_ == Target::special ? fs::path(path) : p;
+        // mkstemp creates 0600: give the file the mode the replaced one had, or a new file's (0666 less the umask).
+        const fs::file_status old_status = fs::status(final_, ec);
+        fs::perms mode = fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read | fs::perms::group_write | fs::perms::others_read | fs::perms::others_write;
+        if (target_ == Target::regular && fs::is_regular_file(old_status)) {
+            mode = old_status.permissions();
+        } else {
+            const mode_t mask = umask(0);
+            umask(mask);
+            mode &= ~static_cast<fs::perms>(mask);
+        }
+        if (target_ == Target::regular) fs::permissions(temp_path_, mode, ec);
     }
     temp_.open(temp_path_, std::ios::binary | std::ios::trunc);
     if (!temp_) fail_input("cagd", option + " '" + path + "': cannot write the temporary file '" + temp_path_.string() + "'");
