@@ -2,7 +2,9 @@
 // the lookup tables (section 4.1).
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <numbers>
@@ -172,4 +174,27 @@ TEST(RombergVector, SharedEvaluationsConvergePerComponent) {
     EXPECT_NEAR(r.value[0], 1 - std::cos(1.0), 1e-14);
     EXPECT_NEAR(r.value[1], std::sin(1.0) - std::cos(1.0), 1e-14) << "a component near 0 still converges";
     EXPECT_NEAR(r.value[2], 1.0 / 3.0, 1e-15);
+}
+
+// The θ-table cache (fig8_fig9): a load equals the build bit for bit, and a file of another grid
+// is rebuilt, not misread.
+TEST(AngleMinimumTable, CacheRoundTripsExactly) {
+    const std::string path = ::testing::TempDir() + "/angle6_cache_test.txt";
+    std::remove(path.c_str());
+    const AngleGrid grid{6, NodePlacement::periodic};
+    const AngleMinimumTable built = AngleMinimumTable::load_or_build(path, grid);   // no file yet: built, saved
+    const AngleMinimumTable loaded = AngleMinimumTable::load_or_build(path, grid);
+    ASSERT_EQ(loaded.values().size(), 6u);
+    ASSERT_EQ(built.values().size(), 6u);
+    for (std::size_t k = 0; k < built.values().size(); ++k) {
+        const AngleMinimum &a = built.values()[k], &b = loaded.values()[k];
+        EXPECT_EQ(std::bit_cast<std::uint64_t>(a.theta1), std::bit_cast<std::uint64_t>(b.theta1)) << k;
+        EXPECT_EQ(std::bit_cast<std::uint64_t>(a.pseudo_energy), std::bit_cast<std::uint64_t>(b.pseudo_energy)) << k;
+        EXPECT_EQ(a.outcome.status, b.outcome.status) << k;
+        EXPECT_EQ(a.outcome.message, b.outcome.message) << k;
+    }
+    const AngleMinimumTable other = AngleMinimumTable::load_or_build(path, {4, NodePlacement::periodic});   // another grid: rebuilt
+    EXPECT_EQ(other.values().size(), 4u);
+    EXPECT_EQ(other.nodes(), (AngleGrid{4, NodePlacement::periodic}).nodes());
+    std::remove(path.c_str());
 }

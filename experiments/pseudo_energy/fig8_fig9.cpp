@@ -31,7 +31,7 @@ int main(int argc, char** argv) {
     }
     run.figure("fig8", "Fig. 8 — log10 J(θ0, θ1) over (−180°, 180°)² (1° fast table, every 4th node); undefined nodes blank.");
 
-    const AngleMinimumTable angle = AngleMinimumTable::build({180, NodePlacement::periodic});
+    const AngleMinimumTable angle = AngleMinimumTable::load_or_build(run.cache_path("angle180_exact.txt"), {180, NodePlacement::periodic});
     CsvWriter out = run.table("fig9.csv", {"theta_deg", "J", "theta1_deg"});
     double sym_j = 0, sym_t = 0, j_at_zero = NAN;
     const auto& nodes = angle.nodes();

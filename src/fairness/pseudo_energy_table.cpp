@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <limits>
 #include <numbers>
@@ -342,6 +343,51 @@ AngleMinimumTable AngleMinimumTable::build(const AngleGrid& grid, int threads) {
     t.values_.assign(t.nodes_.size(), AngleMinimum{});
     parallel_for(static_cast<long>(t.nodes_.size()), threads,
                  [&](long k) { t.values_[static_cast<std::size_t>(k)] = minimize_over_end_angle(t.nodes_[static_cast<std::size_t>(k)]); }, {});
+    return t;
+}
+
+AngleMinimumTable AngleMinimumTable::load_or_build(const std::string& path, const AngleGrid& grid, int threads) {
+    std::ostringstream header;
+    header << "# cagd pseudo_energy angle-minimum table format 1 grid " << grid.n << " placement " << to_string(grid.placement);
+    {
+        std::ifstream in(path);
+        std::string line;
+        if (in && std::getline(in, line) && line == header.str() && std::getline(in, line)) {
+            AngleMinimumTable t;
+            t.grid_ = grid;
+            t.nodes_ = grid.nodes();
+            while (t.values_.size() < t.nodes_.size() && std::getline(in, line)) {
+                // theta,theta1,J,status,message (the message last: it may hold commas)
+                std::istringstream row(line);
+                std::string f[4];
+                for (std::string& x : f)
+                    if (!std::getline(row, x, ',')) break;
+                AngleMinimum m;
+                char* end = nullptr;
+                m.theta = std::strtod(f[0].c_str(), &end);
+                m.theta1 = std::strtod(f[1].c_str(), &end);
+                m.pseudo_energy = std::strtod(f[2].c_str(), &end);
+                m.outcome.status = static_cast<Status>(std::atoi(f[3].c_str()));
+                std::getline(row, m.outcome.message);
+                if (m.theta != t.nodes_[t.values_.size()]) break;  // another grid: rebuild
+                t.values_.push_back(m);
+            }
+            if (t.values_.size() == t.nodes_.size()) return t;
+        }
+    }
+    const AngleMinimumTable t = build(grid, threads);
+    const std::string tmp = path + ".tmp." + std::to_string(::getpid());
+    {
+        std::ofstream out(tmp);
+        if (!out) fail_input("cagd::fairness::AngleMinimumTable::load_or_build", "cannot write '" + tmp + "'");
+        out << header.str() << "\ntheta,theta1,J,status,message\n";
+        char buf[128];
+        for (const AngleMinimum& m : t.values_) {
+            std::snprintf(buf, sizeof buf, "%.17g,%.17g,%.17g,%d,", m.theta, m.theta1, m.pseudo_energy, static_cast<int>(m.outcome.status));
+            out << buf << m.outcome.message << "\n";
+        }
+    }
+    std::rename(tmp.c_str(), path.c_str());
     return t;
 }
 

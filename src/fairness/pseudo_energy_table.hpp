@@ -101,6 +101,9 @@ class AngleMinimumTable {
 public:
     static AngleMinimumTable build(const AngleGrid& grid, int threads = 2);
     static AngleMinimumTable from_energy_table(const PseudoEnergyTable& table);
+    // build(), kept in `path`: loaded when the file holds this grid's table (values at %.17g, so a
+    // load equals a build bit for bit), otherwise built and saved (temporary file, then rename).
+    static AngleMinimumTable load_or_build(const std::string& path, const AngleGrid& grid, int threads = 2);
     const std::vector<double>& nodes() const { return nodes_; }
     const std::vector<AngleMinimum>& values() const { return values_; }
     // Linear interpolation; throws InvalidInput outside [−π, π]. Returns {J(θ), θ1(θ)}.
