@@ -15,6 +15,7 @@ packages=(
   libcli11-dev           # command line of the cagd tool
   gnuplot-nox            # figures (pngcairo and svg terminals)
   clang libclang-rt-14-dev         # make sanitize: ASan/UBSan and libFuzzer runtimes
+  python3                # make test: the claim-id and folder-dependency checks (standard library only)
 )
 
 missing=()

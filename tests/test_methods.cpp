@@ -165,8 +165,9 @@ TEST(Methods, PseudoSplineReportsTableQuantities) {
     const InterpolationResult r = interpolate("pseudo-spline", wave(5), false);
     ASSERT_EQ(r.quantities.size(), 3u);
     EXPECT_EQ(r.quantities[0].first, "length_from_tables");
-    // eq (16)-(17) from the 36-node table vs the integrated curve: the table's interpolation error.
-    EXPECT_NEAR(r.quantities[0].second, analysis::arc_length(*r.interpolant->curve, 16), 1e-2 * r.quantities[0].second);
+    // eq (16)-(17) from the 36-node table vs the integrated curve differ by the table's interpolation
+    // error: measured 1.4e-3 relative on these points, bounded by 3e-3.
+    EXPECT_NEAR(r.quantities[0].second, analysis::arc_length(*r.interpolant->curve, 16), 3e-3 * r.quantities[0].second);
 }
 
 TEST(Methods, CurvatureProfileLogsNewton) {

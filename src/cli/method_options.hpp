@@ -17,7 +17,7 @@ struct MethodOptions {
     std::map<std::string, CLI::Option*> options;  // by parameter name
 };
 
-// Registers --method (default `default_method`) and every parameter's option on `app`.
+// Registers --method (its default is the value `method` holds) and every parameter's option on `app`.
 CLI::Option* add_method_options(CLI::App* app, std::string& method, MethodOptions& options);
 // The options the user gave.
 methods::ParameterText given_parameters(const MethodOptions& options);

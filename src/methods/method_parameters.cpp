@@ -75,12 +75,6 @@ const std::string& ParameterValues::text(const std::string& name) const {
     return it == values_.end() ? absent : at(name, ParameterType::text).text;
 }
 
-std::string ParameterValues::describe() const {
-    std::string s;
-    for (const auto& [name, v] : values_) s += (s.empty() ? "" : ", ") + name + "=" + v.text;
-    return s;
-}
-
 ParameterValues parse_parameter_values(const std::string& method, const std::vector<Parameter>& parameters, const ParameterText& given) {
     const std::string who = "cagd::methods(" + method + ")";
     for (const auto& [name, text] : given) {

@@ -51,8 +51,6 @@ public:
     double real(const std::string& name) const;
     const std::string& text(const std::string& name) const;  // choice or text; "" when absent
     const Eigen::VectorXd& vector(const std::string& name) const;
-    // The values as text (defaults included), for messages and tables: "m=2, end=natural".
-    std::string describe() const;
 
 private:
     struct Value {

@@ -451,11 +451,6 @@ InterpolationResult interpolate(const std::string& name, const PointList& points
     return interpolate(m, points, closed, parse_parameter_values(m.name, m.parameters, values));
 }
 
-std::string Configuration::source() const {
-    const std::string given = values.describe();
-    return method->paper + " " + method->source + (given.empty() ? "" : "; " + given);
-}
-
 namespace {
 
 Configuration configure(const Method& m, const std::string& name, const ParameterText& text) {

@@ -126,7 +126,6 @@ struct Configuration {
     const Method* method = nullptr;
     ParameterValues values;
     MethodClaims claims;
-    std::string source() const;  // the method's source, and the preset's values
 };
 // Every configuration, in registry order: a method's presets, or the method itself.
 const std::vector<Configuration>& configurations();
