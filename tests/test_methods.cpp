@@ -80,6 +80,34 @@ TEST(Methods, EveryMethodInterpolatesWithItsDefaults) {
     }
 }
 
+TEST(Methods, AllocationFreeJetsEqualTheAllocatingOnes) {
+    // Curve::jet_into / derivatives_into (overridden by the piecewise Hermite curves, the default
+    // elsewhere) give jet() / derivatives() bit for bit, at breakpoints and between them.
+    const PointList p = wave(6);
+    for (const Method& m : registry()) {
+        const InterpolationResult r = interpolate(m.name, p, false);
+        ASSERT_TRUE(r.interpolant) << m.name;
+        const Curve& c = *r.interpolant->curve;
+        JetMatrix J;
+        for (int k = 0; k <= 40; ++k) {
+            const double t = c.t_min() + (c.t_max() - c.t_min()) * k / 40.0;
+            for (int order = 0; order < kJetCapacity; ++order) {
+                c.jet_into(t, order, J);
+                const Eigen::MatrixXd expected = c.jet(t, order);
+                ASSERT_EQ(J.rows(), expected.rows()) << m.name;
+                ASSERT_EQ(J.cols(), expected.cols()) << m.name;
+                EXPECT_TRUE((J.array() == expected.array()).all()) << m.name << " jet, t = " << t << ", order " << order;
+                if (order == 0) continue;
+                c.derivatives_into(t, order, J);
+                EXPECT_TRUE((J.array() == c.derivatives(t, order).array()).all()) << m.name << " derivatives, t = " << t << ", order " << order;
+            }
+        }
+        EXPECT_THROW(c.jet_into(c.t_min(), kJetCapacity, J), InvalidInput) << m.name;
+        EXPECT_THROW(c.derivatives_into(c.t_min(), 0, J), InvalidInput) << m.name;
+        EXPECT_THROW(c.jet_into(c.t_max() + 1.0, 1, J), InvalidInput) << m.name;
+    }
+}
+
 TEST(Methods, ReadmeTableIsTheRegistry) {
     std::ifstream in(std::string(CAGD_SOURCE_DIR) + "/README.md");
     std::stringstream ss;

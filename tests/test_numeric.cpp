@@ -126,6 +126,29 @@ TEST(Tridiagonal, MatchesADenseSolveAndRejectsAZeroPivot) {
     EXPECT_THROW(cagd::numeric::solve_tridiagonal({0, 1}, {0, 1}, {1, 0}, Eigen::MatrixXd::Ones(2, 1)), cagd::InvalidInput);
 }
 
+TEST(CyclicTridiagonal, MatchesDenseLuWithCornerEntries) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    for (int n : {3, 4, 40}) {
+        std::vector<double> sub(static_cast<std::size_t>(n)), diag(sub), sup(sub);
+        Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n, n), R(n, 3);
+        for (int r = 0; r < n; ++r) {
+            const auto k = static_cast<std::size_t>(r);
+            sub[k] = u(rng);
+            sup[k] = u(rng);
+            diag[k] = 2.5 + u(rng);
+            A(r, r) = diag[k];
+            A(r, (r + n - 1) % n) += sub[k];  // row 0: the corner A(0, n−1)
+            A(r, (r + 1) % n) += sup[k];      // row n−1: the corner A(n−1, 0)
+            R.row(r) << u(rng), u(rng), u(rng);
+        }
+        const Eigen::MatrixXd X = cagd::numeric::solve_cyclic_tridiagonal(sub, diag, sup, R);
+        EXPECT_LT((A * X - R).norm(), 1e-13) << n;
+        EXPECT_LT((X - A.partialPivLu().solve(R)).norm(), 1e-13) << n;
+    }
+    EXPECT_THROW(cagd::numeric::solve_cyclic_tridiagonal({1, 1}, {3, 3}, {1, 1}, Eigen::MatrixXd::Ones(2, 1)), cagd::InvalidInput);
+}
+
 TEST(OneSidedDerivatives, ExactForPolynomialsAndAccurateForSine) {
     const auto cubic = [](double x) { return 2 - x + 3 * x * x * x; };
     for (int side : {-1, 1}) {

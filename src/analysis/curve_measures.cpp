@@ -33,13 +33,18 @@ std::vector<double> clipped_breaks(const Curve& c, double a, double b) {
     return out;
 }
 
-double speed(const Curve& c, double t) { return c.derivatives(t, 1).row(0).norm(); }
+// The integrands below fill a JetMatrix (no allocation per quadrature node).
+double speed(const Curve& c, double t) {
+    JetMatrix D;
+    c.derivatives_into(t, 1, D);
+    return D.row(0).norm();
+}
 }  // namespace
 
 namespace {
 // |r' × r''|² / |r'|⁶ from the first two derivatives (rows 0, 1 of Curve::derivatives); throws
 // naming `who` at a singular point.
-double squared_curvature(const Eigen::MatrixXd& D, double t, const char* who) {
+double squared_curvature(const JetMatrix& D, double t, const char* who) {
     const double s2 = D.row(0).squaredNorm();
     if (!(s2 > 0.0)) fail_input(who, "r'(t) = 0 at t = " + full_precision(t) + "; curvature undefined at a singular point");
     const double cross2 = std::max(0.0, s2 * D.row(1).squaredNorm() - std::pow(D.row(0).dot(D.row(1)), 2));
@@ -47,12 +52,17 @@ double squared_curvature(const Eigen::MatrixXd& D, double t, const char* who) {
 }
 
 double bending_density(const Curve& c, double t) {  // κ² |r'|, the integrand of ∫ κ² ds in t
-    const Eigen::MatrixXd D = c.derivatives(t, 2);
+    JetMatrix D;
+    c.derivatives_into(t, 2, D);
     return squared_curvature(D, t, "cagd::analysis::curvature") * D.row(0).norm();
 }
 }  // namespace
 
-double curvature(const Curve& c, double t) { return std::sqrt(squared_curvature(c.derivatives(t, 2), t, "cagd::analysis::curvature")); }
+double curvature(const Curve& c, double t) {
+    JetMatrix D;
+    c.derivatives_into(t, 2, D);
+    return std::sqrt(squared_curvature(D, t, "cagd::analysis::curvature"));
+}
 
 Eigen::VectorXd curvature_vector(const Eigen::MatrixXd& J) {
     if (J.rows() < 3) fail_input("cagd::analysis::curvature_vector", "needs a jet of order >= 2, got " + std::to_string(J.rows() - 1));
@@ -64,7 +74,8 @@ Eigen::VectorXd curvature_vector(const Eigen::MatrixXd& J) {
 
 double signed_curvature(const Curve& c, double t) {
     if (c.dimension() != 2) fail_input("cagd::analysis::signed_curvature", "needs a planar curve, dimension is " + std::to_string(c.dimension()));
-    const Eigen::MatrixXd D = c.derivatives(t, 2);
+    JetMatrix D;
+    c.derivatives_into(t, 2, D);
     const double s2 = D.row(0).squaredNorm();
     if (!(s2 > 0.0)) fail_input("cagd::analysis::signed_curvature", "r'(t) = 0 at t = " + full_precision(t) + "; curvature undefined");
     return (D(0, 0) * D(1, 1) - D(0, 1) * D(1, 0)) / (s2 * std::sqrt(s2));
@@ -129,7 +140,8 @@ double enclosed_area(const Curve& c) {
     if (c.dimension() != 2) fail_input("cagd::analysis::enclosed_area", "needs a planar curve, dimension is " + std::to_string(c.dimension()));
     return 0.5 * rule20().integrate_piecewise(
                      [&](double t) {
-                         const Eigen::MatrixXd J = c.jet(t, 1);
+                         JetMatrix J;
+                         c.jet_into(t, 1, J);
                          return J(0, 0) * J(1, 1) - J(0, 1) * J(1, 0);
                      },
                      c.breakpoints());

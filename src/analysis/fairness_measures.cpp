@@ -33,9 +33,10 @@ FairnessMeasures fairness_measures(const Curve& c, const PointList& data, const 
         m.pseudo_energy += len * len * energy;
         const double chord = (c.point(b) - c.point(a)).norm();
         double spike = 0.0;
+        JetMatrix J;
         for (int j = 0; j <= samples; ++j) {
             const double u = a + (b - a) * j / samples;
-            const Eigen::MatrixXd J = c.jet(u, 3);
+            c.jet_into(u, 3, J);
             const double x1 = J(1, 0), y1 = J(1, 1), v2 = x1 * x1 + y1 * y1;
             if (!(v2 > 0.0)) fail_input(who, "zero speed (a cusp) at t = " + full_precision(u) + ": curvature is undefined there");
             const double cross = x1 * J(2, 1) - y1 * J(2, 0), v = std::sqrt(v2);

@@ -34,6 +34,21 @@ Eigen::MatrixXd Curve::derivatives(double t, int order) const {
     return jet(t, order).bottomRows(order);
 }
 
+void require_jet_capacity(const char* who, int rows, int dimension) {
+    if (rows < 1 || rows > kJetCapacity || dimension < 1 || dimension > JetMatrix::MaxColsAtCompileTime)
+        fail_input(who, "a JetMatrix holds 1.." + std::to_string(kJetCapacity) + " rows and 1..3 columns, asked for " + std::to_string(rows) + " x " + std::to_string(dimension));
+}
+
+void Curve::jet_into(double t, int order, JetMatrix& out) const {
+    require_jet_capacity("cagd::Curve::jet_into", order + 1, dimension());
+    out = jet(t, order);
+}
+
+void Curve::derivatives_into(double t, int order, JetMatrix& out) const {
+    require_jet_capacity("cagd::Curve::derivatives_into", order, dimension());
+    out = derivatives(t, order);
+}
+
 Eigen::MatrixXd Curve::jet_from_left(double t, int order) const {
     if (breakpoints().size() > 2) throw std::logic_error("cagd::Curve::jet_from_left: a curve of several pieces must override it");
     if (!(t > t_min() && t <= t_max()))

@@ -7,6 +7,11 @@
 
 namespace cagd {
 
+// Fixed-capacity storage for a jet: up to kJetCapacity rows (derivative orders 0..kJetCapacity−1)
+// and 3 columns, held inline, so filling one never allocates.
+inline constexpr int kJetCapacity = 4;
+using JetMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, kJetCapacity, 3>;
+
 class Curve {
 public:
     virtual ~Curve() = default;
@@ -29,9 +34,19 @@ public:
     // these. The default slices jet(); a curve whose position is costly (IntrinsicCurve: a
     // quadrature per point) overrides it.
     virtual Eigen::MatrixXd derivatives(double t, int order) const;
+    // jet(t, order) written into `out` (resized to order + 1 rows × dimension()), for
+    // 0 ≤ order < kJetCapacity (InvalidInput otherwise) and dimension() ≤ 3: the allocation-free
+    // form for loops over many parameters. The default copies jet(); the piecewise polynomial
+    // curves override it without allocating.
+    virtual void jet_into(double t, int order, JetMatrix& out) const;
+    // derivatives(t, order) likewise, for 1 ≤ order ≤ kJetCapacity.
+    virtual void derivatives_into(double t, int order, JetMatrix& out) const;
 
     Eigen::VectorXd point(double t) const { return jet(t, 0).row(0).transpose(); }
 };
+
+// Throws InvalidInput naming `who` unless `rows` × `dimension` fits a JetMatrix.
+void require_jet_capacity(const char* who, int rows, int dimension);
 
 // Helpers for curves made of K pieces of unit parameter length, piece s on u ∈ [s, s+1]
 // (piecewise Hermite curves, Hosaka curves).

@@ -152,6 +152,8 @@ constexpr double kCgFunctionTolerance = 1e-14, kCgGradientTolerance = 1e-11, kCg
 // |∇J| ~ sqrt(quadrature noise · J · λ), so it counts as converged at kLbfgsGradient · (1 + J).
 constexpr double kLbfgsBound = 1e4, kLbfgsFtolRel = 1e-15, kLbfgsXtolRel = 1e-12, kLbfgsGradient = 1e-6;
 constexpr int kLbfgsEvaluations = 300;
+// Its first step in ρ = log r is at most this (a factor e in r); see the objective's scale.
+constexpr double kLbfgsFirstStep = 1.0;
 // Its objective: the Romberg energy to rel 1e-13, as the reference path's (DESIGN.md).
 constexpr double kLbfgsRombergRelTol = 1e-13;
 // Brent's minimiser on J(θ, θ1) over θ1 keeps 40 bits: more than the 26 a smooth minimum's
@@ -348,10 +350,17 @@ PseudoEnergyMinimum minimize_pseudo_energy_nlopt(double theta0, double theta1, c
     const std::vector<ScanPoint> starts = scan_minima(theta0, theta1, box, evaluations);
     std::vector<Descent> runs;
     for (std::size_t si = 0; si < starts.size() && si < 6; ++si) {
+        // NLopt's L-BFGS (Lukšan) opens with a unit steepest-descent step, Δρ = −∇J, which at a
+        // steep seed lands on the bounds, where a Romberg energy costs ~0.6 s. Dividing J by
+        // max(1, |∇J(seed)| / kLbfgsFirstStep) bounds that first step to kLbfgsFirstStep in ρ; the
+        // quasi-Newton steps after it, ftol_rel and the minimiser do not change with the scale.
+        const SegmentEnergy at_seed = segment_energy_reference(UnitChordHermite(theta0, theta1, std::exp(starts[si].rho0), std::exp(starts[si].rho1)), kLbfgsRombergRelTol, true);
+        ++evaluations;
+        const double scale = std::max(1.0, std::hypot(at_seed.dj_dlog_r0, at_seed.dj_dlog_r1) / kLbfgsFirstStep);
         struct Data {
-            double theta0, theta1;
+            double theta0, theta1, scale;
             long* evaluations;
-        } data{theta0, theta1, &evaluations};
+        } data{theta0, theta1, scale, &evaluations};
         nlopt::opt opt(nlopt::LD_LBFGS, 2);
         opt.set_min_objective(
             [](const std::vector<double>& rho, std::vector<double>& grad, void* p) -> double {
@@ -360,10 +369,10 @@ PseudoEnergyMinimum minimize_pseudo_energy_nlopt(double theta0, double theta1, c
                 const UnitChordHermite seg(dd.theta0, dd.theta1, std::exp(rho[0]), std::exp(rho[1]));
                 const SegmentEnergy e = segment_energy_reference(seg, kLbfgsRombergRelTol, !grad.empty());
                 if (!grad.empty()) {
-                    grad[0] = e.dj_dlog_r0;
-                    grad[1] = e.dj_dlog_r1;
+                    grad[0] = e.dj_dlog_r0 / dd.scale;
+                    grad[1] = e.dj_dlog_r1 / dd.scale;
                 }
-                return e.pseudo_energy;
+                return e.pseudo_energy / dd.scale;
             },
             &data);
         // Bounds r ∈ [1e-4, 1e4]: the minimisers of the 1° grid lie in [0.002, 10]; wider bounds let

@@ -12,4 +12,12 @@ namespace cagd::numeric {
 
 Eigen::MatrixXd solve_tridiagonal(const std::vector<double>& sub, const std::vector<double>& diag, const std::vector<double>& sup, Eigen::MatrixXd rhs);
 
+// The cyclic (periodic) system: as above, with the corner entries A(0, n−1) = sub[0] and
+// A(n−1, 0) = sup[n−1], n ≥ 3. Sherman–Morrison on the Thomas solve: A = A' + u vᵀ with
+// u = (γ, 0, …, 0, sup[n−1]), v = (1, 0, …, 0, sub[0]/γ), γ = −diag[0], and one Thomas pass
+// with one extra right-hand side (A' z = u). O(n). Same stability condition as above, for A'
+// (whose first and last pivots are 2 diag[0] and diag[n−1] − sub[0] sup[n−1]/diag[0]);
+// a singular correction (1 + vᵀz = 0) throws InvalidInput.
+Eigen::MatrixXd solve_cyclic_tridiagonal(const std::vector<double>& sub, const std::vector<double>& diag, const std::vector<double>& sup, const Eigen::MatrixXd& rhs);
+
 }  // namespace cagd::numeric

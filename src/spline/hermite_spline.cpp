@@ -1,10 +1,10 @@
 #include "spline/hermite_spline.hpp"
 
-#include <Eigen/Sparse>
 #include <cmath>
 #include <string>
 
 #include "core/errors.hpp"
+#include "numeric/tridiagonal.hpp"
 
 namespace cagd::spline {
 
@@ -30,15 +30,45 @@ Eigen::MatrixXd PiecewiseHermiteCurve::jet_from_left(double u, int order) const 
     return span_jet(k, t, order);
 }
 
+namespace {
+// Row j: the j-th derivatives of the basis H0..H3 at t.
+struct HermiteBasis {
+    double H[4][4];
+    explicit HermiteBasis(double t)
+        : H{{2 * t * t * t - 3 * t * t + 1, -2 * t * t * t + 3 * t * t, t * t * t - 2 * t * t + t, t * t * t - t * t},
+            {6 * t * t - 6 * t, -6 * t * t + 6 * t, 3 * t * t - 4 * t + 1, 3 * t * t - 2 * t},
+            {12 * t - 6, -12 * t + 6, 6 * t - 4, 6 * t - 2},
+            {12, -12, 6, 6}} {}
+};
+}  // namespace
+
 Eigen::MatrixXd PiecewiseHermiteCurve::span_jet(int k, double t, int order) const {
-    // Basis values and derivatives of H0..H3 at t (rows: derivative order 0..3).
-    const double H[4][4] = {{2 * t * t * t - 3 * t * t + 1, -2 * t * t * t + 3 * t * t, t * t * t - 2 * t * t + t, t * t * t - t * t},
-                            {6 * t * t - 6 * t, -6 * t * t + 6 * t, 3 * t * t - 4 * t + 1, 3 * t * t - 2 * t},
-                            {12 * t - 6, -12 * t + 6, 6 * t - 4, 6 * t - 2},
-                            {12, -12, 6, 6}};
+    const HermiteBasis b(t);
     Eigen::MatrixXd out = Eigen::MatrixXd::Zero(order + 1, dimension());
-    for (int j = 0; j <= std::min(order, 3); ++j) out.row(j) = H[j][0] * nodes_.row(k) + H[j][1] * nodes_.row(k + 1) + H[j][2] * d0_.row(k) + H[j][3] * d1_.row(k);
+    for (int j = 0; j <= std::min(order, 3); ++j) out.row(j) = b.H[j][0] * nodes_.row(k) + b.H[j][1] * nodes_.row(k + 1) + b.H[j][2] * d0_.row(k) + b.H[j][3] * d1_.row(k);
     return out;
+}
+
+void PiecewiseHermiteCurve::span_jet_rows(int k, double t, int first, int last, JetMatrix& out) const {
+    const HermiteBasis b(t);
+    const int dim = dimension();
+    out.resize(last - first + 1, dim);
+    for (int j = first; j <= last; ++j)
+        for (int c = 0; c < dim; ++c) out(j - first, c) = j > 3 ? 0.0 : b.H[j][0] * nodes_(k, c) + b.H[j][1] * nodes_(k + 1, c) + b.H[j][2] * d0_(k, c) + b.H[j][3] * d1_(k, c);
+}
+
+void PiecewiseHermiteCurve::jet_into(double u, int order, JetMatrix& out) const {
+    const char* who = "cagd::spline::PiecewiseHermiteCurve::jet_into";
+    require_jet_capacity(who, order + 1, dimension());
+    const auto [k, t] = locate_unit_piece(who, u, spans(), order);
+    span_jet_rows(k, t, 0, order, out);
+}
+
+void PiecewiseHermiteCurve::derivatives_into(double u, int order, JetMatrix& out) const {
+    const char* who = "cagd::spline::PiecewiseHermiteCurve::derivatives_into";
+    require_jet_capacity(who, order, dimension());
+    const auto [k, t] = locate_unit_piece(who, u, spans(), order);
+    span_jet_rows(k, t, 1, order, out);
 }
 
 namespace {
@@ -67,37 +97,37 @@ PiecewiseHermiteCurve cubic_spline_interpolant(const PointList& points, Paramete
         delta.row(k) = nodes.row(k + 1) - nodes.row(k);
         h[static_cast<std::size_t>(k)] = spacing == ParameterSpacing::uniform ? 1.0 : delta.row(k).norm();
     }
-    // Unknowns m_0..m_{N−1}: N = n+1 for open, N = spans (m_K = m_0) for closed.
+    // Unknowns m_0..m_{N−1}: N = n+1 for open, N = spans (m_K = m_0) for closed. Row k holds
+    // hn m_{k−1} + 2(hp + hn) m_k + hp m_{k+1}: strictly diagonally dominant, so the Thomas
+    // algorithm needs no pivoting (numeric/tridiagonal.hpp); closed: cyclic, the corners
+    // A(0, N−1) = sub[0] and A(N−1, 0) = sup[N−1].
     const int N = closed ? spans : spans + 1;
-    std::vector<Eigen::Triplet<double>> trip;
-    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(N, dim);
+    const auto size = static_cast<std::size_t>(N);
+    std::vector<double> sub(size), diag(size), sup(size);
+    Eigen::MatrixXd rhs(N, dim);
     for (int k = 0; k < N; ++k) {
-        const bool first = !closed && k == 0, last = !closed && k == N - 1;
-        if (first) {
-            trip.emplace_back(0, 0, 2.0);
-            trip.emplace_back(0, 1, 1.0);
+        const auto r = static_cast<std::size_t>(k);
+        if (!closed && k == 0) {
+            diag[0] = 2.0;
+            sup[0] = 1.0;
             rhs.row(0) = 3.0 * delta.row(0) / h[0];
             continue;
         }
-        if (last) {
-            trip.emplace_back(k, k - 1, 1.0);
-            trip.emplace_back(k, k, 2.0);
+        if (!closed && k == N - 1) {
+            sub[r] = 1.0;
+            diag[r] = 2.0;
             rhs.row(k) = 3.0 * delta.row(spans - 1) / h[static_cast<std::size_t>(spans - 1)];
             continue;
         }
         const int prev = (k - 1 + spans) % spans;  // span ending at node k
         const int next = k % spans;                // span starting at node k
         const double hp = h[static_cast<std::size_t>(prev)], hn = h[static_cast<std::size_t>(next)];
-        trip.emplace_back(k, (k - 1 + N) % N, hn);
-        trip.emplace_back(k, k, 2.0 * (hp + hn));
-        trip.emplace_back(k, (k + 1) % N, hp);
+        sub[r] = hn;
+        diag[r] = 2.0 * (hp + hn);
+        sup[r] = hp;
         rhs.row(k) = 3.0 * (hn * delta.row(prev) / hp + hp * delta.row(next) / hn);
     }
-    Eigen::SparseMatrix<double> A(N, N);
-    A.setFromTriplets(trip.begin(), trip.end());
-    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu(A);
-    if (lu.info() != Eigen::Success) fail_input(who, "singular spline system (degenerate points)");
-    const Eigen::MatrixXd m = lu.solve(rhs);
+    const Eigen::MatrixXd m = closed ? numeric::solve_cyclic_tridiagonal(sub, diag, sup, rhs) : numeric::solve_tridiagonal(sub, diag, sup, std::move(rhs));
     Eigen::MatrixXd d0(spans, dim), d1(spans, dim);
     for (int k = 0; k < spans; ++k) {
         const double hk = h[static_cast<std::size_t>(k)];

@@ -19,7 +19,8 @@
 //                              natural ends (r''(τ) = 0 at P_0, P_n: 2m_0 + m_1 = 3Δ_0/h_0 and
 //                              m_{n−1} + 2m_n = 3Δ_{n−1}/h_{n−1}) or periodic (closed); span k has
 //                              d0 = h_k m_k, d1 = h_k m_{k+1}. The paper cites [5] and states no
-//                              end condition; natural ends are our choice.
+//                              end condition; natural ends are our choice. Solved in O(n) by the
+//                              Thomas algorithm (cyclic: Sherman–Morrison), numeric/tridiagonal.
 //   hermite_tangent_directions unit tangent directions per point:
 //     chord_of_neighbours ("Hermite A"): t_i ∥ P_{i+1} − P_{i−1}; at an open end the chord to the
 //                              adjacent point, t_0 ∥ P_1 − P_0, t_n ∥ P_n − P_{n−1}.
@@ -59,10 +60,14 @@ public:
     double t_max() const override { return spans(); }
     Eigen::MatrixXd jet(double u, int order) const override;
     Eigen::MatrixXd jet_from_left(double u, int order) const override;
+    void jet_into(double u, int order, JetMatrix& out) const override;
+    void derivatives_into(double u, int order, JetMatrix& out) const override;
     std::vector<double> breakpoints() const override;
 
 private:
     Eigen::MatrixXd span_jet(int k, double t, int order) const;  // span k at local t ∈ [0, 1]
+    // Rows first..last of span k's jet at local t into out (rows last − first + 1).
+    void span_jet_rows(int k, double t, int first, int last, JetMatrix& out) const;
     Eigen::MatrixXd nodes_, d0_, d1_;
 };
 
