@@ -26,6 +26,7 @@ bench: build
 	@cmake --build $(BUILD) -j$(JOBS) --target cagd_bench
 	@mkdir -p results/timing
 	@$(BUILD)/bench/cagd_bench --benchmark_out=results/timing/bench.json --benchmark_out_format=json
+	@python3 scripts/bench-targets.py $(BUILD)
 
 # ASan + UBSan tests of the compare modules and a minute of libFuzzer (clang; build-sanitize/).
 sanitize: deps

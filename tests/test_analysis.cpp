@@ -27,6 +27,21 @@ TEST(Analysis, ParabolaCurvatureAndLength) {
     EXPECT_NEAR(r.value, L, 1e-13);
 }
 
+TEST(Analysis, OnePassLengthAndEnergyEqualTheSeparatePasses) {
+    // piece_length_and_bending_energy evaluates the derivatives once per node; its two sums must be
+    // piece_arc_length and piece_bending_energy bit for bit (the comparison table depends on it).
+    Eigen::MatrixXd control(5, 2);
+    control << 0, 0, 1, 2, 3, -1, 4, 1, 6, 0;
+    const BSplineCurve curve(3, {0, 0, 0, 0, 0.4, 1, 1, 1, 1}, control);
+    for (const auto& [a, b] : {std::pair{0.0, 0.4}, std::pair{0.4, 1.0}, std::pair{0.1, 0.3}})
+        for (int pieces : {1, 2, 5}) {
+            const auto [length, energy] = analysis::piece_length_and_bending_energy(curve, a, b, pieces);
+            EXPECT_EQ(length, analysis::piece_arc_length(curve, a, b, pieces)) << a << " " << pieces;
+            EXPECT_EQ(energy, analysis::piece_bending_energy(curve, a, b, pieces)) << a << " " << pieces;
+            EXPECT_GT(energy, 0.0);
+        }
+}
+
 TEST(Analysis, AreaOfClosedPolylineSquareIsOne) {
     Eigen::MatrixXd p(5, 2);
     p << 0, 0, 1, 0, 1, 1, 0, 1, 0, 0;

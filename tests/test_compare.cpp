@@ -144,9 +144,11 @@ void check_properties(const Configuration& m, const PointList& p, bool closed, P
     }
 }
 
-class EveryMethod : public ::testing::TestWithParam<std::string> {};
-
 }  // namespace
+
+// Outside the anonymous namespace: the TEST_P classes derived from it have external linkage
+// (GCC's -Wsubobject-linkage in a unity build).
+class EveryMethod : public ::testing::TestWithParam<std::string> {};
 
 // Seeded random sets: interpolation, claimed continuity, invariance, finiteness. Bounds: 1e-9
 // relative (interpolation and invariance: rounding and the Newton tolerance 1e-12 of the

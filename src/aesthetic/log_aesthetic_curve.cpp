@@ -9,7 +9,7 @@
 namespace cagd::aesthetic {
 
 namespace {
-const char* kWho = "cagd::aesthetic::LogAestheticCurve";
+const char* kPlanarCurveWho = "cagd::aesthetic::LogAestheticCurve";
 bool finite_turning_at_zero_base(double alpha) { return alpha < 0.0 || alpha > 1.0; }
 }  // namespace
 
@@ -54,26 +54,29 @@ double LogAestheticRate::antiderivative(double s) const {
 
 LogAestheticCurve::LogAestheticCurve(const LogAestheticParameters& p) : p_(p), rate_{p.alpha, p.c0, p.c1} {
     for (const auto& [name, v] : {std::pair{"start_angle", p.start_angle}, {"start.x", p.start.x()}, {"start.y", p.start.y()}})
-        if (!std::isfinite(v)) fail_input(kWho, std::string(name) + " = " + full_precision(v) + " is not finite");
-    if (p.turn != 1 && p.turn != -1) fail_input(kWho, "turn = " + std::to_string(p.turn) + " must be +1 or -1");
-    rate_.validate(kWho, "curvature", p.length);
+        if (!std::isfinite(v)) fail_input(kPlanarCurveWho, std::string(name) + " = " + full_precision(v) + " is not finite");
+    if (p.turn != 1 && p.turn != -1) fail_input(kPlanarCurveWho, "turn = " + std::to_string(p.turn) + " must be +1 or -1");
+    rate_.validate(kPlanarCurveWho, "curvature", p.length);
     theta_origin_ = rate_.antiderivative(0.0);
 }
 
 double LogAestheticCurve::tangent_angle(double s) const {
-    if (!(s >= 0.0 && s <= p_.length)) fail_input(kWho, "s = " + full_precision(s) + " outside [0, L]");
+    if (!(s >= 0.0 && s <= p_.length)) fail_input(kPlanarCurveWho, "s = " + full_precision(s) + " outside [0, L]");
     return p_.start_angle + p_.turn * (rate_.antiderivative(s) - theta_origin_);
 }
 
 double LogAestheticCurve::curvature(double s) const {
-    if (p_.alpha != 0.0 && rate_.base(s) == 0.0 && p_.alpha > 0.0) fail_input(kWho, "curvature is unbounded at s = " + full_precision(s) + " (c0 s + c1 = 0, alpha > 1)");
+    if (p_.alpha != 0.0 && rate_.base(s) == 0.0 && p_.alpha > 0.0)
+        fail_input(kPlanarCurveWho, "curvature is unbounded at s = " + full_precision(s) + " (c0 s + c1 = 0, alpha > 1)");
     return p_.turn * rate_.value(s);
 }
 
 double LogAestheticCurve::curvature_derivative(double s) const {
-    if (p_.alpha != 0.0 && rate_.base(s) == 0.0 && p_.alpha > 0.0) fail_input(kWho, "curvature is unbounded at s = " + full_precision(s) + " (c0 s + c1 = 0, alpha > 1)");
+    if (p_.alpha != 0.0 && rate_.base(s) == 0.0 && p_.alpha > 0.0)
+        fail_input(kPlanarCurveWho, "curvature is unbounded at s = " + full_precision(s) + " (c0 s + c1 = 0, alpha > 1)");
     const double d = p_.turn * rate_.derivative(s);
-    if (!std::isfinite(d)) fail_input(kWho, "dkappa/ds is unbounded at s = " + full_precision(s) + " (c0 s + c1 = 0 with alpha < -1: alpha = " + full_precision(p_.alpha) + ")");
+    if (!std::isfinite(d))
+        fail_input(kPlanarCurveWho, "dkappa/ds is unbounded at s = " + full_precision(s) + " (c0 s + c1 = 0 with alpha < -1: alpha = " + full_precision(p_.alpha) + ")");
     return d;
 }
 
@@ -89,8 +92,8 @@ Eigen::Vector2d LogAestheticCurve::integrate(double a, double b) const {
 }
 
 Eigen::MatrixXd LogAestheticCurve::jet(double s, int order) const {
-    if (!(s >= 0.0 && s <= p_.length)) fail_input(kWho, "s = " + full_precision(s) + " outside [0, L = " + full_precision(p_.length) + "]");
-    if (order < 0 || order > 3) fail_input(kWho, "jet order " + std::to_string(order) + " outside 0..3");
+    if (!(s >= 0.0 && s <= p_.length)) fail_input(kPlanarCurveWho, "s = " + full_precision(s) + " outside [0, L = " + full_precision(p_.length) + "]");
+    if (order < 0 || order > 3) fail_input(kPlanarCurveWho, "jet order " + std::to_string(order) + " outside 0..3");
     Eigen::MatrixXd j(order + 1, 2);
     j.row(0) = (p_.start + integrate(0.0, s)).transpose();
     const double th = tangent_angle(s);
@@ -105,7 +108,7 @@ Eigen::MatrixXd LogAestheticCurve::jet(double s, int order) const {
 }
 
 Eigen::MatrixXd LogAestheticCurve::sample_points(int count) const {
-    if (count < 2) fail_input(kWho, "sample count " + std::to_string(count) + " < 2");
+    if (count < 2) fail_input(kPlanarCurveWho, "sample count " + std::to_string(count) + " < 2");
     Eigen::MatrixXd pts(count, 2);
     Eigen::Vector2d acc = p_.start;
     pts.row(0) = acc.transpose();
@@ -118,7 +121,7 @@ Eigen::MatrixXd LogAestheticCurve::sample_points(int count) const {
 }
 
 std::optional<Eigen::Vector2d> LogAestheticCurve::closed_form_point(double s) const {
-    if (!(s >= 0.0 && s <= p_.length)) fail_input(kWho, "s = " + full_precision(s) + " outside [0, L]");
+    if (!(s >= 0.0 && s <= p_.length)) fail_input(kPlanarCurveWho, "s = " + full_precision(s) + " outside [0, L]");
     using C = std::complex<double>;
     const C i(0.0, 1.0);
     const C start_dir = std::exp(i * p_.start_angle);

@@ -10,7 +10,7 @@ namespace cagd::aesthetic {
 
 namespace {
 
-const char* kWho = "cagd::aesthetic::LogAestheticSpaceCurve";
+const char* kSpaceCurveWho = "cagd::aesthetic::LogAestheticSpaceCurve";
 constexpr int kNodes = 257;
 constexpr double kTolerance = 1e-13;
 
@@ -69,11 +69,11 @@ LogAestheticSpaceParameters normalized_log_aesthetic_space_parameters(double alp
 }
 
 LogAestheticSpaceCurve::LogAestheticSpaceCurve(const LogAestheticSpaceParameters& p) : p_(p) {
-    p.curvature.validate(kWho, "curvature", p.length);
-    p.torsion.validate(kWho, "torsion", p.length);
+    p.curvature.validate(kSpaceCurveWho, "curvature", p.length);
+    p.torsion.validate(kSpaceCurveWho, "torsion", p.length);
     for (const auto& [name, r] : {std::pair{"curvature", p.curvature}, {"torsion", p.torsion}})
         if (r.alpha != 0.0 && r.base(p.length) == 0.0)
-            fail_input(kWho,
+            fail_input(kSpaceCurveWho,
                        std::string(name) + ": c s + d = 0 at s = L = " + full_precision(p.length) + " (a singular end is not supported; reverse the curve so that it is at s = 0)");
     for (const LogAestheticRate& r : {p.curvature, p.torsion})
         if (vanishes_at_start(r)) exponent_ = std::max({exponent_, 2, r.alpha > 1.0 ? static_cast<int>(std::ceil(2.0 * r.alpha / (r.alpha - 1.0))) : 2});
@@ -90,7 +90,7 @@ LogAestheticSpaceCurve::LogAestheticSpaceCurve(const LogAestheticSpaceParameters
 }
 
 void LogAestheticSpaceCurve::check_s(double s) const {
-    if (!(s >= 0.0 && s <= p_.length)) fail_input(kWho, "s = " + full_precision(s) + " outside [0, L = " + full_precision(p_.length) + "]");
+    if (!(s >= 0.0 && s <= p_.length)) fail_input(kSpaceCurveWho, "s = " + full_precision(s) + " outside [0, L = " + full_precision(p_.length) + "]");
 }
 
 LogAestheticSpaceCurve::State LogAestheticSpaceCurve::state_at(double s) const {
@@ -127,7 +127,7 @@ Eigen::Matrix3d LogAestheticSpaceCurve::frame(double s) const {
 }
 
 Eigen::MatrixXd LogAestheticSpaceCurve::jet(double s, int order) const {
-    if (order < 0 || order > 4) fail_input(kWho, "jet order " + std::to_string(order) + " outside 0..4");
+    if (order < 0 || order > 4) fail_input(kSpaceCurveWho, "jet order " + std::to_string(order) + " outside 0..4");
     const State x = state_at(s);
     Eigen::MatrixXd j(order + 1, 3);
     const Eigen::Vector3d r(x[0], x[1], x[2]), t(x[3], x[4], x[5]), n(x[6], x[7], x[8]), b(x[9], x[10], x[11]);
@@ -135,15 +135,15 @@ Eigen::MatrixXd LogAestheticSpaceCurve::jet(double s, int order) const {
     if (order >= 1) j.row(1) = t.transpose();
     if (order >= 2) {
         const double k = curvature(s);
-        if (!std::isfinite(k)) fail_input(kWho, "curvature is unbounded at s = " + full_precision(s));
+        if (!std::isfinite(k)) fail_input(kSpaceCurveWho, "curvature is unbounded at s = " + full_precision(s));
         j.row(2) = (k * n).transpose();
         if (order >= 3) {
             const double dk = p_.curvature.derivative(s), tau = torsion(s);
-            if (!std::isfinite(dk) || !std::isfinite(tau)) fail_input(kWho, "dkappa/ds or torsion is unbounded at s = " + full_precision(s));
+            if (!std::isfinite(dk) || !std::isfinite(tau)) fail_input(kSpaceCurveWho, "dkappa/ds or torsion is unbounded at s = " + full_precision(s));
             j.row(3) = (-k * k * t + dk * n + k * tau * b).transpose();
             if (order >= 4) {
                 const double ddk = p_.curvature.second_derivative(s), dtau = p_.torsion.derivative(s);
-                if (!std::isfinite(ddk) || !std::isfinite(dtau)) fail_input(kWho, "a derivative of curvature or torsion is unbounded at s = " + full_precision(s));
+                if (!std::isfinite(ddk) || !std::isfinite(dtau)) fail_input(kSpaceCurveWho, "a derivative of curvature or torsion is unbounded at s = " + full_precision(s));
                 j.row(4) = (-3.0 * k * dk * t + (ddk - k * k * k - k * tau * tau) * n + (2.0 * dk * tau + k * dtau) * b).transpose();
             }
         }

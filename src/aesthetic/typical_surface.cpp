@@ -9,15 +9,15 @@
 namespace cagd::aesthetic {
 
 namespace {
-const char* kWho = "cagd::aesthetic::typical_surface_net";
+const char* kSurfaceNetWho = "cagd::aesthetic::typical_surface_net";
 
 void check_boundary(const Eigen::MatrixXd& b, const char* name) {
     if (b.cols() != 3 || b.rows() < 2)
-        fail_input(kWho, std::string(name) + " boundary must be at least 2 points in 3-D, got " + std::to_string(b.rows()) + "x" + std::to_string(b.cols()));
-    if (!b.allFinite()) fail_input(kWho, std::string(name) + " boundary points must be finite");
+        fail_input(kSurfaceNetWho, std::string(name) + " boundary must be at least 2 points in 3-D, got " + std::to_string(b.rows()) + "x" + std::to_string(b.cols()));
+    if (!b.allFinite()) fail_input(kSurfaceNetWho, std::string(name) + " boundary points must be finite");
     for (Eigen::Index i = 0; i + 1 < b.rows(); ++i)
         if ((b.row(i + 1) - b.row(i)).norm() == 0.0)
-            fail_input(kWho, std::string(name) + " boundary: zero-length edge between points " + std::to_string(i) + " and " + std::to_string(i + 1));
+            fail_input(kSurfaceNetWho, std::string(name) + " boundary: zero-length edge between points " + std::to_string(i) + " and " + std::to_string(i + 1));
 }
 }  // namespace
 
@@ -33,10 +33,10 @@ Eigen::Vector3d rotated_fourth_point(const Eigen::Vector3d& p00, const Eigen::Ve
 surface::ControlNet typical_surface_net(const Eigen::MatrixXd& u_boundary, const Eigen::MatrixXd& v_boundary, double angle) {
     check_boundary(u_boundary, "u (P(i,0))");
     check_boundary(v_boundary, "v (P(0,j))");
-    if (!std::isfinite(angle)) fail_input(kWho, "angle = " + full_precision(angle) + " is not finite");
+    if (!std::isfinite(angle)) fail_input(kSurfaceNetWho, "angle = " + full_precision(angle) + " is not finite");
     const double size = std::max(u_boundary.cwiseAbs().maxCoeff(), v_boundary.cwiseAbs().maxCoeff());
     if ((u_boundary.row(0) - v_boundary.row(0)).norm() > 1e-12 * std::max(size, 1.0))
-        fail_input(kWho, "the boundaries do not share P(0,0): distance " + full_precision((u_boundary.row(0) - v_boundary.row(0)).norm()));
+        fail_input(kSurfaceNetWho, "the boundaries do not share P(0,0): distance " + full_precision((u_boundary.row(0) - v_boundary.row(0)).norm()));
     const Eigen::Index m = u_boundary.rows() - 1, n = v_boundary.rows() - 1;
     std::vector<std::vector<Eigen::Vector3d>> p(static_cast<std::size_t>(m + 1), std::vector<Eigen::Vector3d>(static_cast<std::size_t>(n + 1)));
     for (Eigen::Index i = 0; i <= m; ++i) p[static_cast<std::size_t>(i)][0] = u_boundary.row(i).transpose();

@@ -161,6 +161,17 @@ double piece_bending_energy(const Curve& c, double a, double b, int pieces) {
     return rule20().integrate_piecewise([&](double t) { return bending_density(c, t); }, subdivided({a, b}, pieces));
 }
 
+std::pair<double, double> piece_length_and_bending_energy(const Curve& c, double a, double b, int pieces) {
+    return rule20().integrate_piecewise(
+        [&](double t) {
+            JetMatrix D;
+            c.derivatives_into(t, 2, D);
+            const double speed = D.row(0).norm();
+            return std::pair<double, double>{speed, squared_curvature(D, t, "cagd::analysis::curvature") * speed};
+        },
+        subdivided({a, b}, pieces));
+}
+
 double bending_energy(const Curve& c, int pieces) { return bending_energy(c, c.t_min(), c.t_max(), pieces); }
 
 double max_distance_same_parameter(const Curve& a, const Curve& b, double t0, double t1, int samples) {

@@ -43,6 +43,9 @@ double bending_energy(const Curve& c, int pieces = 4);
 // O(pieces) evaluations and no breakpoint search, for loops over the pieces of long curves.
 double piece_arc_length(const Curve& c, double a, double b, int pieces);
 double piece_bending_energy(const Curve& c, double a, double b, int pieces);
+// Both from one derivative evaluation per quadrature node: {piece_arc_length, piece_bending_energy}
+// bit for bit.
+std::pair<double, double> piece_length_and_bending_energy(const Curve& c, double a, double b, int pieces);
 double bending_energy(const Curve& c, double a, double b, int pieces = 4);
 
 // max_t |a(t) − b(t)| over `samples_per_piece` uniform samples between the breakpoints of

@@ -24,8 +24,7 @@ FairnessMeasures fairness_measures(const Curve& c, const PointList& data, const 
     int last_sign = 0;
     for (std::size_t k = 0; k + 1 < br.size(); ++k) {
         const double a = br[k], b = br[k + 1];
-        const double len = piece_arc_length(c, a, b, pieces);
-        const double energy = piece_bending_energy(c, a, b, pieces);
+        const auto [len, energy] = piece_length_and_bending_energy(c, a, b, pieces);
         m.length += len;
         m.bending_energy += energy;
         m.piece_lengths.push_back(len);

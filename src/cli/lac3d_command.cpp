@@ -28,9 +28,6 @@ struct Lac3dArgs {
     bool slopes = false;
 };
 
-// Evaluation costs O(degree) per sample (Bernstein form above degree 60), torsion included.
-constexpr double kMaxDegreeTimesSamples = 2e8;
-
 int run_lac3d(const Lac3dArgs& a) {
     if (static_cast<double>(a.degree) * a.samples > kMaxDegreeTimesSamples)
         fail_input("cagd lac3d", "--degree " + std::to_string(a.degree) + " x --samples " + std::to_string(a.samples) + " exceeds 2e8 evaluations (seconds of work); lower one");

@@ -30,10 +30,6 @@ struct LacArgs {
     bool lcg = false;
 };
 
-// Evaluation costs O(degree) per sample (Bernstein form above degree 60): degree x samples is
-// bounded so that a run stays within seconds.
-constexpr double kMaxDegreeTimesSamples = 2e8;
-
 int run_lac(const LacArgs& a) {
     const char* who = "cagd lac";
     if (static_cast<double>(a.degree) * a.samples > kMaxDegreeTimesSamples)

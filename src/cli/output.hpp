@@ -97,6 +97,9 @@ void set_quiet(bool quiet);
 // Sizes are checked before anything is allocated: rows of output at most kMaxOutputRows (about a
 // gigabyte of CSV; the limits of --samples and --grid in --help follow from it).
 constexpr long kMaxOutputRows = 10'000'000;
+// A typical Bézier curve costs O(degree) per sample (Bernstein form above degree 60; lac3d adds
+// torsion): `cagd lac` and `cagd lac3d` bound degree × samples so that a run stays within seconds.
+constexpr double kMaxDegreeTimesSamples = 2e8;
 void require_output_rows(double rows, const std::string& what);
 
 }  // namespace cagd::cli

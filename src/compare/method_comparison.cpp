@@ -22,10 +22,13 @@ double span_parameter(const Interpolant& a, std::size_t k, double f) {
 // Spans of a and b (same points but one moved) that differ by more than `tolerance` somewhere.
 int spans_moved(const Interpolant& a, const Interpolant& b, double tolerance) {
     int count = 0;
+    JetMatrix pa, pb;
     for (std::size_t k = 0; k + 1 < a.node_parameters.size(); ++k)
         for (int j = 0; j <= 8; ++j) {
             const double f = j / 8.0;
-            if ((a.curve->point(span_parameter(a, k, f)) - b.curve->point(span_parameter(b, k, f))).norm() > tolerance) {
+            a.curve->jet_into(span_parameter(a, k, f), 0, pa);
+            b.curve->jet_into(span_parameter(b, k, f), 0, pb);
+            if ((pa - pb).norm() > tolerance) {
                 ++count;
                 break;
             }
@@ -57,12 +60,14 @@ double span_pseudo_energy(const Interpolant& a, const analysis::FairnessMeasures
         double L = 0.0, E = 0.0, from = t0;
         while (b < br.size() && br[b] <= t0) ++b;
         for (; b < br.size() && br[b] < t1; ++b) {
-            L += analysis::piece_arc_length(c, from, br[b], pieces);
-            E += analysis::piece_bending_energy(c, from, br[b], pieces);
+            const auto [l, e] = analysis::piece_length_and_bending_energy(c, from, br[b], pieces);
+            L += l;
+            E += e;
             from = br[b];
         }
-        L += analysis::piece_arc_length(c, from, t1, pieces);
-        E += analysis::piece_bending_energy(c, from, t1, pieces);
+        const auto [l, e] = analysis::piece_length_and_bending_energy(c, from, t1, pieces);
+        L += l;
+        E += e;
         total += L * L * E;
     }
     return total;

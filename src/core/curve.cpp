@@ -15,11 +15,9 @@ std::vector<double> unit_piece_breakpoints(int pieces) {
     return b;
 }
 
-PieceLocation locate_unit_piece(const char* who, double u, int pieces, int order) {
+void reject_unit_piece(const char* who, double u, int pieces, int order) {
     if (!(u >= 0.0 && u <= pieces)) fail_input(who, "u = " + full_precision(u) + " outside [0, " + std::to_string(pieces) + "]");
-    if (order < 0) fail_input(who, "order must be >= 0, got " + std::to_string(order));
-    const int s = std::min(static_cast<int>(std::floor(u)), pieces - 1);
-    return {s, u - s};
+    fail_input(who, "order must be >= 0, got " + std::to_string(order));
 }
 
 PieceLocation locate_unit_piece_from_left(const char* who, double u, int pieces, int order) {
@@ -34,9 +32,8 @@ Eigen::MatrixXd Curve::derivatives(double t, int order) const {
     return jet(t, order).bottomRows(order);
 }
 
-void require_jet_capacity(const char* who, int rows, int dimension) {
-    if (rows < 1 || rows > kJetCapacity || dimension < 1 || dimension > JetMatrix::MaxColsAtCompileTime)
-        fail_input(who, "a JetMatrix holds 1.." + std::to_string(kJetCapacity) + " rows and 1..3 columns, asked for " + std::to_string(rows) + " x " + std::to_string(dimension));
+void reject_jet_capacity(const char* who, int rows, int dimension) {
+    fail_input(who, "a JetMatrix holds 1.." + std::to_string(kJetCapacity) + " rows and 1..3 columns, asked for " + std::to_string(rows) + " x " + std::to_string(dimension));
 }
 
 void Curve::jet_into(double t, int order, JetMatrix& out) const {

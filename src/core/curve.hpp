@@ -3,6 +3,8 @@
 // Everything in analysis/ (curvature, length, area, distances) works on a Curve, so it is
 // written once for all curve types. Modelled on GTE's ParametricCurve::Evaluate(t, order).
 #include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace cagd {
@@ -46,7 +48,12 @@ public:
 };
 
 // Throws InvalidInput naming `who` unless `rows` × `dimension` fits a JetMatrix.
-void require_jet_capacity(const char* who, int rows, int dimension);
+// (Inline: it sits in every jet_into; the throwing path is out of line.)
+[[noreturn]] void reject_jet_capacity(const char* who, int rows, int dimension);
+inline void require_jet_capacity(const char* who, int rows, int dimension) {
+    if (rows < 1 || rows > kJetCapacity || dimension < 1 || dimension > JetMatrix::MaxColsAtCompileTime) [[unlikely]]
+        reject_jet_capacity(who, rows, dimension);
+}
 
 // Helpers for curves made of K pieces of unit parameter length, piece s on u ∈ [s, s+1]
 // (piecewise Hermite curves, Hosaka curves).
@@ -56,7 +63,13 @@ struct PieceLocation {
     double t;   // u − s ∈ [0, 1]
 };
 // Throws InvalidInput naming `who` for u outside [0, K] (or NaN) or order < 0.
-PieceLocation locate_unit_piece(const char* who, double u, int pieces, int order);
+[[noreturn]] void reject_unit_piece(const char* who, double u, int pieces, int order);
+inline PieceLocation locate_unit_piece(const char* who, double u, int pieces, int order) {
+    if (!(u >= 0.0 && u <= pieces) || order < 0) [[unlikely]]
+        reject_unit_piece(who, u, pieces, order);
+    const int s = std::min(static_cast<int>(std::floor(u)), pieces - 1);
+    return {s, u - s};
+}
 // The piece that ends at u for u ∈ (0, K] (t = 1 at a breakpoint): for Curve::jet_from_left.
 PieceLocation locate_unit_piece_from_left(const char* who, double u, int pieces, int order);
 

@@ -62,7 +62,7 @@ bool KnotLayout::operator==(const KnotLayout& o) const {
 
 namespace {
 
-const char* kWho = "intrinsic::parse_knot_difference_list";
+const char* kKnotListWho = "intrinsic::parse_knot_difference_list";
 
 struct Token {
     enum Kind { open, close, comma, number, name, end } kind;
@@ -105,7 +105,7 @@ std::vector<Token> tokenize(const std::string& s) {
             out.push_back({Token::number, s.substr(start, i - start), start});
             continue;
         }
-        fail_input(kWho, "unexpected character '" + std::string(1, c) + "' at position " + std::to_string(i) + " of \"" + s + "\" (allowed: { } , numbers, names)");
+        fail_input(kKnotListWho, "unexpected character '" + std::string(1, c) + "' at position " + std::to_string(i) + " of \"" + s + "\" (allowed: { } , numbers, names)");
     }
     out.push_back({Token::end, "", s.size()});
     return out;
@@ -127,20 +127,20 @@ public:
         expect(Token::open, "the list must start with '{'");
         std::vector<Entry> items = parse_items(0);
         if (tokens_[pos_].kind != Token::end)
-            fail_input(kWho, "unexpected '" + tokens_[pos_].text + "' after the closing '}' at position " + std::to_string(tokens_[pos_].position));
+            fail_input(kKnotListWho, "unexpected '" + tokens_[pos_].text + "' after the closing '}' at position " + std::to_string(tokens_[pos_].position));
         return items;
     }
 
 private:
     std::vector<Entry> parse_items(int depth) {
         std::vector<Entry> items;
-        if (tokens_[pos_].kind == Token::close) fail_input(kWho, "empty list at position " + std::to_string(tokens_[pos_].position) + " of \"" + text_ + "\"");
+        if (tokens_[pos_].kind == Token::close) fail_input(kKnotListWho, "empty list at position " + std::to_string(tokens_[pos_].position) + " of \"" + text_ + "\"");
         while (true) {
             const Token& t = tokens_[pos_];
             Entry e;
             e.position = t.position;
             if (t.kind == Token::open) {
-                if (depth > 0) fail_input(kWho, "sub-lists cannot nest (position " + std::to_string(t.position) + " of \"" + text_ + "\")");
+                if (depth > 0) fail_input(kKnotListWho, "sub-lists cannot nest (position " + std::to_string(t.position) + " of \"" + text_ + "\")");
                 ++pos_;
                 e.is_list = true;
                 e.children = parse_items(depth + 1);
@@ -148,7 +148,7 @@ private:
                 char* endp = nullptr;
                 const double v = std::strtod(t.text.c_str(), &endp);
                 if (endp != t.text.c_str() + t.text.size() || !std::isfinite(v) || v < 0)
-                    fail_input(kWho,
+                    fail_input(kKnotListWho,
                                "entry \"" + t.text + "\" at position " + std::to_string(t.position) + " is not a finite number ≥ 0 (\"…\" is not accepted: write every entry)");
                 if (v == 0.0)
                     e.zero = true;
@@ -159,8 +159,8 @@ private:
                 e.label = t.text;
                 ++pos_;
             } else {
-                fail_input(kWho, "expected an entry at position " + std::to_string(t.position) + " of \"" + text_ + "\", found '" +
-                                     (t.kind == Token::end ? std::string("end of text") : t.text) + "'");
+                fail_input(kKnotListWho, "expected an entry at position " + std::to_string(t.position) + " of \"" + text_ + "\", found '" +
+                                             (t.kind == Token::end ? std::string("end of text") : t.text) + "'");
             }
             items.push_back(std::move(e));
             const Token& sep = tokens_[pos_];
@@ -172,11 +172,11 @@ private:
                 ++pos_;
                 return items;
             }
-            fail_input(kWho, "expected ',' or '}' at position " + std::to_string(sep.position) + " of \"" + text_ + "\"");
+            fail_input(kKnotListWho, "expected ',' or '}' at position " + std::to_string(sep.position) + " of \"" + text_ + "\"");
         }
     }
     void expect(Token::Kind k, const std::string& what) {
-        if (tokens_[pos_].kind != k) fail_input(kWho, what + " (\"" + text_ + "\")");
+        if (tokens_[pos_].kind != k) fail_input(kKnotListWho, what + " (\"" + text_ + "\")");
         ++pos_;
     }
     std::string text_;
@@ -193,7 +193,7 @@ std::string fixed(double v, int decimals) {
 }  // namespace
 
 KnotDifferenceList parse_knot_difference_list(const std::string& text, int degree) {
-    if (degree < 2 || degree > 3) fail_input(kWho, "degree must be 2 or 3, got " + std::to_string(degree));
+    if (degree < 2 || degree > 3) fail_input(kKnotListWho, "degree must be 2 or 3, got " + std::to_string(degree));
     const std::vector<Entry> items = Parser(text).parse_top();
     std::vector<int> per_span, mult, length_index;
     std::vector<std::string> labels;
@@ -216,8 +216,8 @@ KnotDifferenceList parse_knot_difference_list(const std::string& text, int degre
     int zeros = 0;
     while (i < items.size() && items[i].zero) ++zeros, ++i;
     if (zeros != degree - 1)
-        fail_input(kWho, "a degree-" + std::to_string(degree) + " list starts with " + std::to_string(degree - 1) + " zero(s) (end knot of multiplicity " + std::to_string(degree) +
-                             "), \"" + text + "\" starts with " + std::to_string(zeros));
+        fail_input(kKnotListWho, "a degree-" + std::to_string(degree) + " list starts with " + std::to_string(degree - 1) + " zero(s) (end knot of multiplicity " +
+                                     std::to_string(degree) + "), \"" + text + "\" starts with " + std::to_string(zeros));
     mult.push_back(degree);
     bool after_span = false;
     int pending = 0;  // zeros since the last span
@@ -229,8 +229,8 @@ KnotDifferenceList parse_knot_difference_list(const std::string& text, int degre
         }
         if (after_span) {
             if (pending + 1 > degree)
-                fail_input(kWho, std::to_string(pending) + " consecutive zeros before position " + std::to_string(e.position) + " make a knot of multiplicity " +
-                                     std::to_string(pending + 1) + " > p = " + std::to_string(degree));
+                fail_input(kKnotListWho, std::to_string(pending) + " consecutive zeros before position " + std::to_string(e.position) + " make a knot of multiplicity " +
+                                             std::to_string(pending + 1) + " > p = " + std::to_string(degree));
             mult.push_back(pending + 1);
         }
         pending = 0;
@@ -240,7 +240,8 @@ KnotDifferenceList parse_knot_difference_list(const std::string& text, int degre
         } else {
             const auto& c = e.children;
             if (c.front().zero || c.back().zero)
-                fail_input(kWho, "the sub-list at position " + std::to_string(e.position) + " must begin and end with a segment length (its zeros mark knots inside the span)");
+                fail_input(kKnotListWho,
+                           "the sub-list at position " + std::to_string(e.position) + " must begin and end with a segment length (its zeros mark knots inside the span)");
             int segs = 0, inner = 0;
             for (std::size_t m = 0; m < c.size(); ++m) {
                 if (c[m].zero) {
@@ -249,8 +250,8 @@ KnotDifferenceList parse_knot_difference_list(const std::string& text, int degre
                 }
                 if (segs > 0) {
                     if (inner + 1 > degree)
-                        fail_input(kWho, std::to_string(inner) + " consecutive zeros inside the sub-list at position " + std::to_string(e.position) +
-                                             " exceed multiplicity p = " + std::to_string(degree));
+                        fail_input(kKnotListWho, std::to_string(inner) + " consecutive zeros inside the sub-list at position " + std::to_string(e.position) +
+                                                     " exceed multiplicity p = " + std::to_string(degree));
                     mult.push_back(inner + 1);
                 }
                 inner = 0;
@@ -261,9 +262,9 @@ KnotDifferenceList parse_knot_difference_list(const std::string& text, int degre
         }
         after_span = true;
     }
-    if (per_span.empty()) fail_input(kWho, "\"" + text + "\" has no segment");
+    if (per_span.empty()) fail_input(kKnotListWho, "\"" + text + "\" has no segment");
     if (pending != degree - 1)
-        fail_input(kWho,
+        fail_input(kKnotListWho,
                    "a degree-" + std::to_string(degree) + " list ends with " + std::to_string(degree - 1) + " zero(s), \"" + text + "\" ends with " + std::to_string(pending));
     mult.push_back(degree);
     return {KnotLayout(degree, per_span, mult, length_index), labels, values};

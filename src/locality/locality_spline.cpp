@@ -10,7 +10,7 @@
 namespace cagd::locality {
 
 namespace {
-const char* const kWho = "cagd::locality::interpolate";
+const char* const kLocalityWho = "cagd::locality::interpolate";
 
 void require_locality(SegmentLocality m, const std::string& who) {
     for (int v : {m.left, m.right})
@@ -47,8 +47,8 @@ Eigen::VectorXd unit_tangent(const EndCondition& end, const PointList& p, bool a
     Eigen::VectorXd t;
     if (end.kind == EndKind::tangent) {
         t = end.tangent;
-        if (t.size() != p.cols()) fail_input(kWho, which + " tangent has " + std::to_string(t.size()) + " coordinates; the points have " + std::to_string(p.cols()));
-        if (!t.allFinite() || t.norm() == 0.0) fail_input(kWho, which + " tangent must be finite and non-zero");
+        if (t.size() != p.cols()) fail_input(kLocalityWho, which + " tangent has " + std::to_string(t.size()) + " coordinates; the points have " + std::to_string(p.cols()));
+        if (!t.allFinite() || t.norm() == 0.0) fail_input(kLocalityWho, which + " tangent must be finite and non-zero");
     } else {
         t = at_start ? bessel_tangent(p) : bessel_tangent(p.colwise().reverse().eval());
     }
@@ -211,13 +211,13 @@ Eigen::VectorXd bessel_tangent(const PointList& p) {
 }
 
 LocalitySpline interpolate(const PointList& points, const Options& o) {
-    require_valid_points(points, o.closed ? 3 : 2, true, o.closed, kWho);
+    require_valid_points(points, o.closed ? 3 : 2, true, o.closed, kLocalityWho);
     const long n = points.rows();
     const long segments = o.closed ? n : n - 1;
     if (o.m.size() != 1 && static_cast<long>(o.m.size()) != segments)
-        fail_input(kWho, "m-vector has " + std::to_string(o.m.size()) + " entries; this " + (o.closed ? "closed" : "open") + " curve through " + std::to_string(n) +
-                             " points has " + std::to_string(segments) + " segments (give 1 or " + std::to_string(segments) + ")");
-    for (const auto& m : o.m) require_locality(m, kWho);
+        fail_input(kLocalityWho, "m-vector has " + std::to_string(o.m.size()) + " entries; this " + (o.closed ? "closed" : "open") + " curve through " + std::to_string(n) +
+                                     " points has " + std::to_string(segments) + " segments (give 1 or " + std::to_string(segments) + ")");
+    for (const auto& m : o.m) require_locality(m, kLocalityWho);
 
     const ExtendedPoints P = make_extended_points(points, o);
     const auto m_of = [&](long seg) -> SegmentLocality {
@@ -236,7 +236,7 @@ LocalitySpline interpolate(const PointList& points, const Options& o) {
             case ExtraPointRule::fmill: {  // eq (17)
                 const auto tangent = [&](long k) {
                     const Eigen::RowVectorXd c = P(k + 1) - P(k - 1);
-                    if (c.norm() == 0.0) fail_input(kWho, "FMILL tangent at point " + std::to_string(k) + " undefined: its neighbours coincide");
+                    if (c.norm() == 0.0) fail_input(kLocalityWho, "FMILL tangent at point " + std::to_string(k) + " undefined: its neighbours coincide");
                     return Eigen::RowVectorXd(c.normalized());
                 };
                 return q0 + (tangent(i) - tangent(i + 1)) * (P(i + 1) - P(i)).norm() / 6.0;

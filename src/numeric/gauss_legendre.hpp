@@ -8,6 +8,7 @@
 // one Newton step on P_n (three-term recurrence) so the nodes are accurate to ~1 ulp.
 // Exact for polynomials of degree ≤ 2n − 1. Precondition: 1 ≤ n ≤ 200.
 #include <functional>
+#include <utility>
 #include <vector>
 
 namespace cagd::numeric {
@@ -21,6 +22,9 @@ public:
     double integrate(const std::function<double(double)>& f, double a, double b) const;
     // Sum of integrals over consecutive intervals [breaks[k], breaks[k+1]].
     double integrate_piecewise(const std::function<double(double)>& f, const std::vector<double>& breaks) const;
+    // Two integrands from one evaluation per node (f returns both values), each summed exactly as
+    // integrate_piecewise sums it alone.
+    std::pair<double, double> integrate_piecewise(const std::function<std::pair<double, double>(double)>& f, const std::vector<double>& breaks) const;
 
 private:
     std::vector<double> nodes_, weights_;

@@ -9,9 +9,9 @@
 namespace cagd {
 
 namespace {
-const char* const kWho = "cagd::BSplineCurve";
+const char* const kBSplineWho = "cagd::BSplineCurve";
 
-double binomial(int n, int k) {
+double binomial_coefficient(int n, int k) {
     double r = 1.0;
     for (int i = 1; i <= k; ++i) r = r * (n - k + i) / i;
     return r;
@@ -19,20 +19,21 @@ double binomial(int n, int k) {
 }  // namespace
 
 BSplineCurve::BSplineCurve(int degree, std::vector<double> knots, Eigen::MatrixXd control_points) : degree_(degree), knots_(std::move(knots)), control_(std::move(control_points)) {
-    if (degree_ < 0) fail_input(kWho, "degree must be >= 0, got " + std::to_string(degree_));
+    if (degree_ < 0) fail_input(kBSplineWho, "degree must be >= 0, got " + std::to_string(degree_));
     const auto n = static_cast<std::size_t>(control_.rows());
-    if (control_.rows() < degree_ + 1) fail_input(kWho, "needs at least degree+1 = " + std::to_string(degree_ + 1) + " control points, got " + std::to_string(n));
+    if (control_.rows() < degree_ + 1) fail_input(kBSplineWho, "needs at least degree+1 = " + std::to_string(degree_ + 1) + " control points, got " + std::to_string(n));
     if (knots_.size() != n + static_cast<std::size_t>(degree_) + 1)
-        fail_input(kWho, "knot count must be control points + degree + 1 = " + std::to_string(n + degree_ + 1) + ", got " + std::to_string(knots_.size()));
+        fail_input(kBSplineWho, "knot count must be control points + degree + 1 = " + std::to_string(n + degree_ + 1) + ", got " + std::to_string(knots_.size()));
     for (std::size_t i = 0; i < knots_.size(); ++i) {
-        if (!std::isfinite(knots_[i])) fail_input(kWho, "knot " + std::to_string(i) + " is " + full_precision(knots_[i]));
+        if (!std::isfinite(knots_[i])) fail_input(kBSplineWho, "knot " + std::to_string(i) + " is " + full_precision(knots_[i]));
         if (i > 0 && knots_[i] < knots_[i - 1])
-            fail_input(kWho, "knots must be non-decreasing; knot " + std::to_string(i) + " = " + full_precision(knots_[i]) + " < " + full_precision(knots_[i - 1]));
+            fail_input(kBSplineWho, "knots must be non-decreasing; knot " + std::to_string(i) + " = " + full_precision(knots_[i]) + " < " + full_precision(knots_[i - 1]));
         const auto pp1 = static_cast<std::size_t>(degree_) + 1;
-        if (i >= pp1 && knots_[i] == knots_[i - pp1]) fail_input(kWho, "knot " + full_precision(knots_[i]) + " has multiplicity > degree+1 = " + std::to_string(degree_ + 1));
+        if (i >= pp1 && knots_[i] == knots_[i - pp1])
+            fail_input(kBSplineWho, "knot " + full_precision(knots_[i]) + " has multiplicity > degree+1 = " + std::to_string(degree_ + 1));
     }
-    if (!(t_min() < t_max())) fail_input(kWho, "empty domain [" + full_precision(t_min()) + ", " + full_precision(t_max()) + "]");
-    if (!control_.allFinite()) fail_input(kWho, "control points must be finite");
+    if (!(t_min() < t_max())) fail_input(kBSplineWho, "empty domain [" + full_precision(t_min()) + ", " + full_precision(t_max()) + "]");
+    if (!control_.allFinite()) fail_input(kBSplineWho, "control points must be finite");
 }
 
 int BSplineCurve::find_span(double t) const {
@@ -50,8 +51,8 @@ namespace {
 
 // Piegl & Tiller, The NURBS Book (2nd ed.), algorithm A2.3. The work arrays have at most `Max`
 // rows and columns (Eigen::Dynamic: unbounded): on the stack for the usual low degrees.
-template <int Max>
-Eigen::MatrixXd basis_function_derivatives_a23(int p, const std::vector<double>& U, int span, double u, int order) {
+template <int Max, class Ders>
+void basis_function_derivatives_a23(int p, const std::vector<double>& U, int span, double u, int order, Ders& ders) {
     using Work = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, Max, Max>;
     using WorkVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, Max, 1>;
     const int nd = std::min(order, p);
@@ -70,7 +71,7 @@ Eigen::MatrixXd basis_function_derivatives_a23(int p, const std::vector<double>&
         }
         ndu(j, j) = saved;
     }
-    Eigen::MatrixXd ders = Eigen::MatrixXd::Zero(order + 1, p + 1);
+    ders.setZero(order + 1, p + 1);
     for (int j = 0; j <= p; ++j) ders(0, j) = ndu(j, p);
     for (int r = 0; r <= p; ++r) {
         int s1 = 0, s2 = 1;
@@ -101,14 +102,37 @@ Eigen::MatrixXd basis_function_derivatives_a23(int p, const std::vector<double>&
         ders.row(k) *= factor;
         factor *= (p - k);
     }
-    return ders;
 }
+
+constexpr int kStackOrder = 8;  // degrees 0..7 keep the work arrays on the stack
 
 }  // namespace
 
 Eigen::MatrixXd basis_function_derivatives(int p, const std::vector<double>& U, int span, double u, int order) {
-    constexpr int kStackOrder = 8;  // degrees 0..7
-    return p + 1 <= kStackOrder ? basis_function_derivatives_a23<kStackOrder>(p, U, span, u, order) : basis_function_derivatives_a23<Eigen::Dynamic>(p, U, span, u, order);
+    Eigen::MatrixXd ders;
+    if (p + 1 <= kStackOrder)
+        basis_function_derivatives_a23<kStackOrder>(p, U, span, u, order, ders);
+    else
+        basis_function_derivatives_a23<Eigen::Dynamic>(p, U, span, u, order, ders);
+    return ders;
+}
+
+void BSplineCurve::jet_into(double t, int order, JetMatrix& out) const {
+    const char* who = "cagd::BSplineCurve::jet_into";
+    require_jet_capacity(who, order + 1, dimension());
+    if (degree_ + 1 > kStackOrder) return Curve::jet_into(t, order, out);
+    if (!(t >= t_min() && t <= t_max())) fail_input(who, "t = " + full_precision(t) + " outside [" + full_precision(t_min()) + ", " + full_precision(t_max()) + "]");
+    const int span = find_span(t);
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kJetCapacity, kStackOrder> ders;
+    basis_function_derivatives_a23<kStackOrder>(degree_, knots_, span, t, order, ders);
+    out.noalias() = ders * control_.middleRows(span - degree_, degree_ + 1);
+}
+
+void BSplineCurve::derivatives_into(double t, int order, JetMatrix& out) const {
+    require_jet_capacity("cagd::BSplineCurve::derivatives_into", order, dimension());
+    JetMatrix jet;
+    jet_into(t, order, jet);
+    out = jet.bottomRows(order);
 }
 
 Eigen::MatrixXd BSplineCurve::jet(double t, int order) const {
@@ -249,7 +273,7 @@ std::vector<BezierCurve> bezier_segments(const BSplineCurve& c) {
         }
         Eigen::MatrixXd b = Eigen::MatrixXd::Zero(p + 1, c.dimension());
         for (int j = 0; j <= p; ++j)
-            for (int k = 0; k <= j; ++k) b.row(j) += binomial(j, k) / binomial(p, k) * coef.row(k);
+            for (int k = 0; k <= j; ++k) b.row(j) += binomial_coefficient(j, k) / binomial_coefficient(p, k) * coef.row(k);
         segments.emplace_back(b, br[s], br[s + 1]);
     }
     return segments;

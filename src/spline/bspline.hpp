@@ -35,6 +35,9 @@ public:
     double t_max() const override { return knots_[control_.rows()]; }
     Eigen::MatrixXd jet(double t, int order) const override;
     Eigen::MatrixXd jet_from_left(double t, int order) const override;
+    // Allocation-free for degree ≤ 7 (the basis work arrays on the stack); higher degrees copy jet().
+    void jet_into(double t, int order, JetMatrix& out) const override;
+    void derivatives_into(double t, int order, JetMatrix& out) const override;
     std::vector<double> breakpoints() const override;
 
     // Index s with t_s ≤ t < t_{s+1}, p ≤ s ≤ n−1 (t = t_max: the last non-empty span).

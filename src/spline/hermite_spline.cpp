@@ -32,41 +32,62 @@ Eigen::MatrixXd PiecewiseHermiteCurve::jet_from_left(double u, int order) const 
 
 namespace {
 // Row j: the j-th derivatives of the basis H0..H3 at t.
-struct HermiteBasis {
-    double H[4][4];
-    explicit HermiteBasis(double t)
-        : H{{2 * t * t * t - 3 * t * t + 1, -2 * t * t * t + 3 * t * t, t * t * t - 2 * t * t + t, t * t * t - t * t},
-            {6 * t * t - 6 * t, -6 * t * t + 6 * t, 3 * t * t - 4 * t + 1, 3 * t * t - 2 * t},
-            {12 * t - 6, -12 * t + 6, 6 * t - 4, 6 * t - 2},
-            {12, -12, 6, 6}} {}
-};
+// Row j of the basis: the j-th derivatives of H0..H3 at t (zero for j > 3).
+[[gnu::always_inline]] inline void hermite_basis_row(int j, double t, double h[4]) {
+    switch (j) {
+        case 0: h[0] = 2 * t * t * t - 3 * t * t + 1, h[1] = -2 * t * t * t + 3 * t * t, h[2] = t * t * t - 2 * t * t + t, h[3] = t * t * t - t * t; return;
+        case 1: h[0] = 6 * t * t - 6 * t, h[1] = -6 * t * t + 6 * t, h[2] = 3 * t * t - 4 * t + 1, h[3] = 3 * t * t - 2 * t; return;
+        case 2: h[0] = 12 * t - 6, h[1] = -12 * t + 6, h[2] = 6 * t - 4, h[3] = 6 * t - 2; return;
+        case 3: h[0] = 12, h[1] = -12, h[2] = 6, h[3] = 6; return;
+        default: h[0] = h[1] = h[2] = h[3] = 0.0;
+    }
+}
+
+// Rows first..last of span k's jet at local t (see span_jet_rows), with the column count known at
+// compile time (Dim ≤ 3), inlined into the jet_into overrides.
+template <int Dim>
+[[gnu::always_inline]] inline void hermite_jet_rows(const Eigen::MatrixXd& nodes, const Eigen::MatrixXd& d0, const Eigen::MatrixXd& d1, int k, double t, int first, int last,
+                                                    JetMatrix& out) {
+    out.resize(last - first + 1, Dim);
+    double p0[Dim], p1[Dim], a[Dim], b[Dim];
+    for (int c = 0; c < Dim; ++c) p0[c] = nodes(k, c), p1[c] = nodes(k + 1, c), a[c] = d0(k, c), b[c] = d1(k, c);
+    double h[4];
+    for (int j = first; j <= last; ++j) {
+        hermite_basis_row(j, t, h);
+        for (int c = 0; c < Dim; ++c) out(j - first, c) = h[0] * p0[c] + h[1] * p1[c] + h[2] * a[c] + h[3] * b[c];
+    }
+}
 }  // namespace
 
 Eigen::MatrixXd PiecewiseHermiteCurve::span_jet(int k, double t, int order) const {
-    const HermiteBasis b(t);
     Eigen::MatrixXd out = Eigen::MatrixXd::Zero(order + 1, dimension());
-    for (int j = 0; j <= std::min(order, 3); ++j) out.row(j) = b.H[j][0] * nodes_.row(k) + b.H[j][1] * nodes_.row(k + 1) + b.H[j][2] * d0_.row(k) + b.H[j][3] * d1_.row(k);
+    double h[4];
+    for (int j = 0; j <= std::min(order, 3); ++j) {
+        hermite_basis_row(j, t, h);
+        out.row(j) = h[0] * nodes_.row(k) + h[1] * nodes_.row(k + 1) + h[2] * d0_.row(k) + h[3] * d1_.row(k);
+    }
     return out;
 }
 
-void PiecewiseHermiteCurve::span_jet_rows(int k, double t, int first, int last, JetMatrix& out) const {
-    const HermiteBasis b(t);
-    const int dim = dimension();
-    out.resize(last - first + 1, dim);
-    for (int j = first; j <= last; ++j)
-        for (int c = 0; c < dim; ++c) out(j - first, c) = j > 3 ? 0.0 : b.H[j][0] * nodes_(k, c) + b.H[j][1] * nodes_(k + 1, c) + b.H[j][2] * d0_(k, c) + b.H[j][3] * d1_(k, c);
+inline void PiecewiseHermiteCurve::span_jet_rows(int k, double t, int first, int last, JetMatrix& out) const {
+    const int dim = static_cast<int>(nodes_.cols());
+    switch (dim) {  // dimension() ≤ 3 (require_jet_capacity)
+        case 1: return hermite_jet_rows<1>(nodes_, d0_, d1_, k, t, first, last, out);
+        case 2: return hermite_jet_rows<2>(nodes_, d0_, d1_, k, t, first, last, out);
+        default: return hermite_jet_rows<3>(nodes_, d0_, d1_, k, t, first, last, out);
+    }
 }
 
 void PiecewiseHermiteCurve::jet_into(double u, int order, JetMatrix& out) const {
     const char* who = "cagd::spline::PiecewiseHermiteCurve::jet_into";
-    require_jet_capacity(who, order + 1, dimension());
+    require_jet_capacity(who, order + 1, static_cast<int>(nodes_.cols()));  // not the virtual dimension()
     const auto [k, t] = locate_unit_piece(who, u, spans(), order);
     span_jet_rows(k, t, 0, order, out);
 }
 
 void PiecewiseHermiteCurve::derivatives_into(double u, int order, JetMatrix& out) const {
     const char* who = "cagd::spline::PiecewiseHermiteCurve::derivatives_into";
-    require_jet_capacity(who, order, dimension());
+    require_jet_capacity(who, order, static_cast<int>(nodes_.cols()));
     const auto [k, t] = locate_unit_piece(who, u, spans(), order);
     span_jet_rows(k, t, 1, order, out);
 }

@@ -11,7 +11,7 @@ namespace cagd::surface {
 
 namespace {
 
-const char* kWho = "cagd::surface::BezierPatch";
+const char* kPatchWho = "cagd::surface::BezierPatch";
 
 // Rows a: the values (order 0), first or second derivatives of B_{i,d} at ts[a], i = 0 … d.
 Eigen::MatrixXd basis_rows(int d, const std::vector<double>& ts, int order) {
@@ -41,7 +41,7 @@ Eigen::MatrixXd basis_rows(int d, const std::vector<double>& ts, int order) {
 
 void check_parameters(const std::vector<double>& ts, const char* name) {
     for (double t : ts)
-        if (!(t >= 0.0 && t <= 1.0)) fail_input(kWho, std::string(name) + " = " + full_precision(t) + " outside [0, 1]");
+        if (!(t >= 0.0 && t <= 1.0)) fail_input(kPatchWho, std::string(name) + " = " + full_precision(t) + " outside [0, 1]");
 }
 
 }  // namespace
@@ -55,17 +55,17 @@ analysis::SurfaceJet2 SurfaceGrid::jet(Eigen::Index a, Eigen::Index b) const {
 }
 
 BezierPatch::BezierPatch(ControlNet net) : net_(std::move(net)) {
-    if (net_[0].rows() < 1 || net_[0].cols() < 1) fail_input(kWho, "empty control net");
+    if (net_[0].rows() < 1 || net_[0].cols() < 1) fail_input(kPatchWho, "empty control net");
     for (const Eigen::MatrixXd& c : net_) {
         if (c.rows() != net_[0].rows() || c.cols() != net_[0].cols())
-            fail_input(kWho, "coordinate matrices of different sizes (" + std::to_string(c.rows()) + "x" + std::to_string(c.cols()) + " vs " + std::to_string(net_[0].rows()) +
-                                 "x" + std::to_string(net_[0].cols()) + ")");
-        if (!c.allFinite()) fail_input(kWho, "control points must be finite");
+            fail_input(kPatchWho, "coordinate matrices of different sizes (" + std::to_string(c.rows()) + "x" + std::to_string(c.cols()) + " vs " + std::to_string(net_[0].rows()) +
+                                      "x" + std::to_string(net_[0].cols()) + ")");
+        if (!c.allFinite()) fail_input(kPatchWho, "control points must be finite");
     }
 }
 
 Eigen::Vector3d BezierPatch::control_point(int i, int j) const {
-    if (i < 0 || j < 0 || i > degree_u() || j > degree_v()) fail_input(kWho, "control point (" + std::to_string(i) + ", " + std::to_string(j) + ") outside the net");
+    if (i < 0 || j < 0 || i > degree_u() || j > degree_v()) fail_input(kPatchWho, "control point (" + std::to_string(i) + ", " + std::to_string(j) + ") outside the net");
     return {net_[0](i, j), net_[1](i, j), net_[2](i, j)};
 }
 

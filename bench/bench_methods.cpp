@@ -1,0 +1,110 @@
+// make bench, issue 24 targets for construction and evaluation; nothing here passes or fails
+// (scripts/bench-targets.py turns the figures into ratios against the peers and baselines below):
+//  - BM_Construct/<method>/n: methods::interpolate with the method's defaults (input checks,
+//    solve, the curve) on a seeded random walk of n points, for every registered method.
+//    Target: cubic-a/cubic-b ≥ 20 M points/s at 10^5 and within 2× of the peer
+//    BM_boost_cardinal_cubic_b_spline_xy (bench_hosaka.cpp, two coordinates); every method but
+//    curvature-profile (and the pseudo-spline's exact mode) ≥ 5 M points/s at 10^6.
+//  - BM_Jet/<method>: Curve::jet_into(u, 2) at 10^6 parameters of the curve through 10^4 points.
+//    Baseline BM_JetHandLoop: the same jets by an inline loop over the same node and derivative
+//    arrays, without virtual calls or checks. Target: within 1.5× of it.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "methods/method_registry.hpp"
+#include "random_walk.hpp"
+#include "spline/hermite_spline.hpp"
+
+using namespace cagd;
+
+namespace {
+
+PointList walk(long n) { return bench::random_walk(n, 7, 0.1, 2.0, 1.0); }
+
+void BM_Construct(benchmark::State& state, const std::string& method) {
+    const PointList p = walk(state.range(0));
+    methods::interpolate(method, walk(20), false);  // per-process tables, outside the timing
+    for (auto _ : state) {
+        const methods::InterpolationResult r = methods::interpolate(method, p, false);
+        if (!r.outcome.ok()) state.SkipWithError((method + ": " + r.outcome.message).c_str());
+        benchmark::DoNotOptimize(r.interpolant);
+    }
+    state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+
+constexpr long kJetPoints = 10000, kJetParameters = 1000000;
+
+std::vector<double> jet_parameters(double t_max) {
+    std::vector<double> u(static_cast<std::size_t>(kJetParameters));
+    for (std::size_t i = 0; i < u.size(); ++i) u[i] = t_max * static_cast<double>(i) / static_cast<double>(u.size() - 1);
+    return u;
+}
+
+void BM_Jet(benchmark::State& state, const std::string& method) {
+    const methods::InterpolationResult r = methods::interpolate(method, walk(kJetPoints), false);
+    const Curve& c = *r.interpolant->curve;
+    const std::vector<double> u = jet_parameters(c.t_max());
+    JetMatrix J;
+    for (auto _ : state) {
+        double sum = 0.0;
+        for (double t : u) {
+            c.jet_into(t, 2, J);
+            sum += J(0, 0) + J(0, 1) + J(1, 0) + J(1, 1) + J(2, 0) + J(2, 1);
+        }
+        benchmark::DoNotOptimize(sum);
+    }
+    state.SetItemsProcessed(state.iterations() * kJetParameters);
+}
+
+// The baseline: the cubic-a curve's spans as plain arrays, the Hermite basis inline.
+void BM_JetHandLoop(benchmark::State& state) {
+    const methods::InterpolationResult r = methods::interpolate("cubic-a", walk(kJetPoints), false);
+    const auto& c = dynamic_cast<const spline::PiecewiseHermiteCurve&>(*r.interpolant->curve);
+    const int spans = c.spans();
+    std::vector<double> px(static_cast<std::size_t>(spans + 1)), py(px.size()), ax(static_cast<std::size_t>(spans)), ay(ax.size()), bx(ax.size()), by(ax.size());
+    for (int k = 0; k <= spans; ++k) {
+        px[static_cast<std::size_t>(k)] = c.nodes()(k, 0);
+        py[static_cast<std::size_t>(k)] = c.nodes()(k, 1);
+    }
+    for (int k = 0; k < spans; ++k) {
+        ax[static_cast<std::size_t>(k)] = c.start_derivatives()(k, 0);
+        ay[static_cast<std::size_t>(k)] = c.start_derivatives()(k, 1);
+        bx[static_cast<std::size_t>(k)] = c.end_derivatives()(k, 0);
+        by[static_cast<std::size_t>(k)] = c.end_derivatives()(k, 1);
+    }
+    const std::vector<double> u = jet_parameters(spans);
+    for (auto _ : state) {
+        double sum = 0.0;
+        for (double v : u) {
+            const int k = std::min(static_cast<int>(v), spans - 1);
+            const double t = v - k;
+            const auto s = static_cast<std::size_t>(k);
+            const double h0 = 2 * t * t * t - 3 * t * t + 1, h1 = -2 * t * t * t + 3 * t * t, h2 = t * t * t - 2 * t * t + t, h3 = t * t * t - t * t;
+            const double d1 = -6 * t * t + 6 * t, d3 = 3 * t * t - 2 * t, d2 = 3 * t * t - 4 * t + 1;  // H0' = −H1'
+            const double e0 = 12 * t - 6, e2 = 6 * t - 4, e3 = 6 * t - 2;                              // H1'' = −H0''
+            const double x = h0 * px[s] + h1 * px[s + 1] + h2 * ax[s] + h3 * bx[s], y = h0 * py[s] + h1 * py[s + 1] + h2 * ay[s] + h3 * by[s];
+            const double x1 = -d1 * px[s] + d1 * px[s + 1] + d2 * ax[s] + d3 * bx[s], y1 = -d1 * py[s] + d1 * py[s + 1] + d2 * ay[s] + d3 * by[s];
+            const double x2 = e0 * px[s] - e0 * px[s + 1] + e2 * ax[s] + e3 * bx[s], y2 = e0 * py[s] - e0 * py[s + 1] + e2 * ay[s] + e3 * by[s];
+            sum += x + y + x1 + y1 + x2 + y2;
+        }
+        benchmark::DoNotOptimize(sum);
+    }
+    state.SetItemsProcessed(state.iterations() * kJetParameters);
+}
+
+const int registered = [] {
+    for (const methods::Method& m : methods::registry()) {
+        if (m.name == "curvature-profile") continue;  // a Newton solve; excluded by the target
+        benchmark::RegisterBenchmark(("BM_Construct/" + m.name).c_str(), BM_Construct, m.name)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
+    }
+    for (const char* m : {"cubic-a", "cubic-b", "hermite-a", "hermite-b"})
+        benchmark::RegisterBenchmark((std::string("BM_Jet/") + m).c_str(), BM_Jet, std::string(m))->Unit(benchmark::kMillisecond);
+    return 0;
+}();
+
+}  // namespace
+
+BENCHMARK(BM_JetHandLoop)->Unit(benchmark::kMillisecond);

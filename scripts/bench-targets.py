@@ -1,0 +1,135 @@
+#!/usr/bin/env python3
+"""The performance targets of issue 24 as ratios, from one `make bench` run.
+
+Reads results/timing/bench.json (Google Benchmark, written by make bench), times the `cagd`
+command on two whole runs with a baseline command beside each, times scipy's CubicSpline as a
+peer where scipy is installed, and writes results/timing/targets.md. Every figure is a ratio
+against a baseline or peer measured in the same run (the whole-run targets are wall-clock seconds,
+stated with their baseline). Nothing here passes or fails: the table says met / not met.
+
+usage: bench-targets.py BUILD_DIR
+"""
+import json
+import math
+import os
+import random
+import subprocess
+import sys
+import tempfile
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
+def load_benchmarks(path):
+    with open(path, encoding="utf-8") as f:
+        data = json.load(f)
+    return {b["name"]: b for b in data["benchmarks"] if b.get("run_type", "iteration") == "iteration"}
+
+
+def seconds(b):
+    """Real time per iteration in seconds."""
+    scale = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}[b.get("time_unit", "ns")]
+    return b["real_time"] * scale
+
+
+def random_walk(n, seed=7):
+    rng = random.Random(seed)
+    x = y = heading = 0.0
+    rows = [(0.0, 0.0)]
+    for _ in range(n - 1):
+        heading += rng.uniform(-1.0, 1.0)
+        step = rng.uniform(0.1, 2.0)
+        x += step * math.cos(heading)
+        y += step * math.sin(heading)
+        rows.append((x, y))
+    return rows
+
+
+def wall(cmd, repeats=3):
+    """Best wall-clock time of `repeats` runs of a command that must succeed."""
+    best = math.inf
+    for _ in range(repeats):
+        start = time.perf_counter()
+        subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        best = min(best, time.perf_counter() - start)
+    return best
+
+
+def scipy_cubic_spline_rate(points):
+    try:
+        import numpy as np
+        from scipy.interpolate import CubicSpline
+    except ImportError:
+        return None
+    p = np.asarray(points)
+    d = np.hypot(*np.diff(p, axis=0).T)
+    tau = np.concatenate([[0.0], np.cumsum(d)])
+    best = math.inf
+    for _ in range(5):
+        start = time.perf_counter()
+        CubicSpline(tau, p, bc_type="natural")
+        best = min(best, time.perf_counter() - start)
+    return len(points) / best
+
+
+def main():
+    build = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build")
+    bench = load_benchmarks(os.path.join(ROOT, "results", "timing", "bench.json"))
+    rows = []  # (target, figure, baseline or peer, verdict)
+
+    def rate(name):
+        return bench[name]["items_per_second"] if name in bench else None
+
+    boost = rate("BM_boost_cardinal_cubic_b_spline_xy/100000")
+    for m in ("cubic-a", "cubic-b"):
+        r = rate(f"BM_Construct/{m}/100000")
+        if r is None or boost is None:
+            continue
+        rows.append((f"{m} construction at 10^5 ≥ 20 M points/s", f"{r / 1e6:.1f} M points/s", "—", "met" if r >= 2e7 else "not met"))
+        rows.append((f"{m} within 2× of Boost's cardinal cubic B-spline (10^5)", f"{boost / r:.2f}× Boost's time", f"Boost {boost / 1e6:.1f} M points/s", "met" if boost / r <= 2 else "not met"))
+    for name, b in sorted(bench.items()):
+        if name.startswith("BM_Construct/") and name.endswith("/1000000"):
+            m = name.split("/")[1]
+            r = b["items_per_second"]
+            rows.append((f"{m} construction at 10^6 ≥ 5 M points/s", f"{r / 1e6:.1f} M points/s", "—", "met" if r >= 5e6 else "not met"))
+    hand = bench.get("BM_JetHandLoop")
+    for name, b in sorted(bench.items()):
+        if name.startswith("BM_Jet/") and hand:
+            ratio = seconds(b) / seconds(hand)
+            rows.append((f"{name.split('/')[1]} jet (order 2) within 1.5× of a hand loop", f"{ratio:.2f}×", f"hand loop {seconds(hand) * 1e9 / 1e6:.1f} ns/jet", "met" if ratio <= 1.5 else "not met"))
+
+    cagd = os.path.join(build, "cagd")
+    with tempfile.TemporaryDirectory() as tmp:
+        walk = os.path.join(tmp, "walk.csv")
+        with open(walk, "w", encoding="utf-8") as f:
+            f.write("x,y\n")
+            for x, y in random_walk(100000):
+                f.write(f"{x!r},{y!r}\n")
+        out = os.path.join(tmp, "out")
+        t_all = wall([cagd, "compare", "--in", walk, "--out", out, "--quiet"], repeats=1)
+        t_one = wall([cagd, "compare", "--in", walk, "--out", out + "1", "--quiet", "--methods", "hermite-a"], repeats=1)
+        rows.append(("`cagd compare` on 10^5 random-walk points ≤ 10 s", f"{t_all:.1f} s", f"hermite-a only: {t_one:.1f} s", "met" if t_all <= 10 else "not met"))
+        table1 = os.path.join(ROOT, "reference", "pseudo_energy", "data", "table1.csv")
+        t_ps = wall([cagd, "analyze", "--in", table1, "--method", "pseudo-spline"])
+        t_cb = wall([cagd, "analyze", "--in", table1, "--method", "cubic-b"])
+        rows.append(("`cagd analyze --in table1 --method pseudo-spline` ≤ 0.2 s", f"{t_ps:.3f} s", f"cubic-b: {t_cb:.3f} s", "met" if t_ps <= 0.2 else "not met"))
+
+    scipy = scipy_cubic_spline_rate(random_walk(100000))
+    cubic_b = rate("BM_Construct/cubic-b/100000")
+    if scipy and cubic_b:
+        rows.append(("peer: scipy CubicSpline (natural, chord length) at 10^5", f"cubic-b {cubic_b / scipy:.2f}× scipy's rate", f"scipy {scipy / 1e6:.1f} M points/s", "—"))
+    elif not scipy:
+        rows.append(("peer: scipy CubicSpline", "scipy not installed", "—", "—"))
+
+    path = os.path.join(ROOT, "results", "timing", "targets.md")
+    with open(path, "w", encoding="utf-8") as f:
+        f.write("# Performance targets (issue 24), one `make bench` run\n\n")
+        f.write("| target | measured | baseline / peer in the same run | verdict |\n|---|---|---|---|\n")
+        for r in rows:
+            f.write("| " + " | ".join(r) + " |\n")
+    print(open(path, encoding="utf-8").read())
+
+
+if __name__ == "__main__":
+    main()
