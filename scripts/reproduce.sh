@@ -18,16 +18,16 @@ last=pseudo_energy__table4_timing
 run_one "$first" || status=1
 grep -v -x -e "$first" -e "$last" -e '' "$build/experiments.txt" | xargs -P "${JOBS:-2}" -I{} bash -c 'run_one "$1"' _ {} || status=1
 run_one "$last" || status=1
-for gp in scripts/plot/*.gp; do
-  name=$(basename "$gp" .gp)
-  [ "$name" = style ] && continue
-  [ "$name" = compare_panels ] && continue   # loaded by the comparison figures, not a figure itself
+# Figures, $JOBS gnuplot processes at a time (each script writes its own files).
+render_one() {
+  local name paper
+  name=$(basename "$1" .gp)
   paper=${name%%_fig*}
-  if ! gnuplot -e "datadir='results/$paper'" "$gp"; then
-    echo "reproduce: gnuplot failed on $gp" >&2
-    status=1
-  fi
-done
+  gnuplot -e "datadir='results/$paper'" "$1" || { echo "reproduce: gnuplot failed on $1" >&2; return 1; }
+}
+export -f render_one
+# style.gp and compare_panels.gp are loaded by the figure scripts, not figures themselves.
+ls scripts/plot/*.gp | grep -v -e '/style\.gp$' -e '/compare_panels\.gp$' | xargs -P "${JOBS:-2}" -I{} bash -c 'render_one "$1"' _ {} || status=1
 bash scripts/update-readme-methods.sh "$build" || status=1   # README's method table, from the registry
 "$build/cagd_report" "$root" || status=1
 {
