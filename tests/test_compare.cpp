@@ -15,10 +15,12 @@ using std::isnan;
 #include <numbers>
 #include <random>
 #include <sstream>
+#include <stdexcept>
 
 #include "analysis/curve_measures.hpp"
 #include "analysis/fairness_measures.hpp"
 #include "compare/method_comparison.hpp"
+#include "core/parallel.hpp"
 #include "core/point_csv.hpp"
 #include "methods/method_registry.hpp"
 #include "random_walk.hpp"
@@ -278,6 +280,43 @@ INSTANTIATE_TEST_SUITE_P(Compare, EveryMethod, ::testing::ValuesIn([] {
 
 // Boost's interpolants converted to Hermite form are the same curves: evaluated by Boost itself at
 // the middle of every span (in its own parameter τ) and by our curve at the same τ.
+TEST(Compare, ResultsDoNotDependOnTheThreadCount) {
+    // compare_methods measures the methods in parallel (iterative ones first); each row must be the
+    // same, bit for bit, with one thread or three, and the figure data likewise.
+    const PointList p = bench::random_walk(300, 5, 0.2, 1.0, 1.2);
+    compare::ComparisonOptions one, three;
+    one.threads = 1;
+    three.threads = 3;
+    const std::vector<compare::MethodComparison> a = compare::compare_methods(p, one), b = compare::compare_methods(p, three);
+    ASSERT_EQ(a.size(), b.size());
+    const auto rows_a = compare::comparison_rows(a, false, false, 17), rows_b = compare::comparison_rows(b, false, false, 17);
+    EXPECT_EQ(rows_a, rows_b);
+    const compare::FigureSampling sampling = compare::figure_sampling(299, 2000);
+    const compare::FigureData fa = compare::comparison_figure_data(a, p, sampling), fb = compare::comparison_figure_data(b, p, sampling);
+    EXPECT_EQ(fa.curves, fb.curves);
+    EXPECT_EQ(fa.profiles, fb.profiles);
+    EXPECT_EQ(fa.combs, fb.combs);
+}
+
+TEST(Parallel, TheLowestFailingIndexIsRethrownWhateverTheThreadCount) {
+    for (int threads : {1, 2, 5}) {
+        std::vector<int> ran(40, 0);
+        try {
+            cagd::parallel_for(40, threads, [&](long k) {
+                ran[static_cast<std::size_t>(k)] = 1;
+                if (k == 7 || k == 23) throw std::runtime_error("index " + std::to_string(k));
+            });
+            ADD_FAILURE() << "no exception with " << threads << " threads";
+        } catch (const std::runtime_error& e) {
+            EXPECT_EQ(std::string(e.what()), "index 7") << threads << " threads";
+        }
+        for (int k = 0; k <= 7; ++k) EXPECT_EQ(ran[static_cast<std::size_t>(k)], 1) << "index " << k << " with " << threads << " threads";
+    }
+    std::vector<long> square(1000);
+    cagd::parallel_for(1000, 3, [&](long k) { square[static_cast<std::size_t>(k)] = k * k; });
+    for (long k = 0; k < 1000; ++k) ASSERT_EQ(square[static_cast<std::size_t>(k)], k * k);
+}
+
 TEST(Compare, BoostPeersAreRepresentedExactly) {
     std::mt19937_64 rng(3);
     const PointList p = random_points(rng, 8, false);

@@ -3,11 +3,16 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iterator>
+#include <mutex>
+#include <numeric>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 
 #include "analysis/curve_measures.hpp"
 #include "core/csv.hpp"
+#include "core/parallel.hpp"
 
 namespace cagd::compare {
 
@@ -103,16 +108,13 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
     for (const std::string& name : options.methods) configurations.push_back(methods::find_configuration(name));
     if (options.methods.empty()) configurations = methods::configurations();
     const double diagonal = bounding_box_diagonal(points);
-    std::vector<MethodComparison> out;
-    for (const methods::Configuration& configuration : configurations) {
+    const auto measure = [&](const methods::Configuration& configuration) {
         MethodComparison c;
         c.method = configuration.name;
         c.note = applicability(configuration.claims, points, options.closed);
         if (!c.note.empty()) {
             c.status = "not applicable";
-            if (options.on_method) options.on_method(c);
-            out.push_back(std::move(c));
-            continue;
+            return c;
         }
         const auto start = std::chrono::steady_clock::now();
         InterpolationResult r = methods::interpolate(configuration, points, options.closed);
@@ -120,9 +122,7 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
         if (!r.outcome.ok() || !r.interpolant) {
             c.status = "no result";
             c.note = r.outcome.message;
-            if (options.on_method) options.on_method(c);
-            out.push_back(std::move(c));
-            continue;
+            return c;
         }
         c.interpolant = std::move(r.interpolant);
         const Curve& curve = *c.interpolant->curve;
@@ -148,9 +148,21 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
             } catch (const InvalidInput&) {  // the moved point made the input invalid for this method
             }
         }
-        if (options.on_method) options.on_method(c);
-        out.push_back(std::move(c));
-    }
+        return c;
+    };
+    // The iterative methods are started first; the rows keep the configurations' order.
+    std::vector<std::size_t> order(configurations.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::stable_partition(order.begin(), order.end(), [&](std::size_t k) { return configurations[k].method->iterative; });
+    std::vector<MethodComparison> out(configurations.size());
+    std::mutex report;
+    const int threads = options.threads > 0 ? options.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    parallel_for(static_cast<long>(order.size()), threads, [&](long slot) {
+        const std::size_t k = order[static_cast<std::size_t>(slot)];
+        out[k] = measure(configurations[k]);
+        const std::lock_guard<std::mutex> lock(report);
+        if (options.on_method) options.on_method(out[k]);
+    });
     return out;
 }
 
@@ -218,10 +230,13 @@ FigureData comparison_figure_data(const std::vector<MethodComparison>& cs, const
     const int per_span = sampling.per_span, stride = sampling.span_stride;
     if (per_span < 1 || stride < 1)
         fail_input("cagd::compare::comparison_figure_data", "per_span and span_stride must be >= 1, got " + std::to_string(per_span) + " and " + std::to_string(stride));
-    FigureData d;
     const double diagonal = bounding_box_diagonal(points);
-    for (std::size_t i = 0; i < cs.size(); ++i) {
-        if (!cs[i].interpolant) continue;
+    // One part per method, computed in parallel and joined in the methods' order.
+    std::vector<FigureData> parts(cs.size());
+    parallel_for(static_cast<long>(cs.size()), static_cast<int>(std::max(1u, std::thread::hardware_concurrency())), [&](long method) {
+        const auto i = static_cast<std::size_t>(method);
+        FigureData& d = parts[i];
+        if (!cs[i].interpolant) return;
         const Interpolant& a = *cs[i].interpolant;
         const double index = static_cast<double>(i);
         struct Sample {
@@ -251,13 +266,19 @@ FigureData comparison_figure_data(const std::vector<MethodComparison>& cs, const
                 samples.push_back({J(0, 0), J(0, 1), -J(1, 1) / v, J(1, 0) / v, kappa});
             }
         }
-        if (samples.empty()) continue;
+        if (samples.empty()) return;
         std::vector<double> magnitudes;
         for (const Sample& q : samples) magnitudes.push_back(std::abs(q.kappa));
         const auto p95 = magnitudes.begin() + static_cast<std::ptrdiff_t>(0.95 * static_cast<double>(magnitudes.size() - 1));
         std::nth_element(magnitudes.begin(), p95, magnitudes.end());
         const double scale = *p95 > 0.0 ? 0.1 * diagonal / *p95 : 0.0;
         for (const Sample& q : samples) d.combs.push_back({index, q.x, q.y, q.x - scale * q.kappa * q.nx, q.y - scale * q.kappa * q.ny});
+    });
+    FigureData d;
+    for (FigureData& part : parts) {
+        std::move(part.curves.begin(), part.curves.end(), std::back_inserter(d.curves));
+        std::move(part.profiles.begin(), part.profiles.end(), std::back_inserter(d.profiles));
+        std::move(part.combs.begin(), part.combs.end(), std::back_inserter(d.combs));
     }
     return d;
 }

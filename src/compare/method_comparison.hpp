@@ -39,7 +39,11 @@ struct ComparisonOptions {
     std::vector<std::string> methods;  // configuration or method names (methods::find_configuration); empty: every configuration
     bool closed = false;
     bool locality = true;
-    std::function<void(const MethodComparison&)> on_method;  // called as each method is done (progress)
+    // Called as each method is done (progress), one call at a time, in completion order.
+    std::function<void(const MethodComparison&)> on_method;
+    // Methods measured in parallel, one per thread (0: the hardware's thread count). The results,
+    // in the configurations' order, do not depend on it (the `seconds` timings aside).
+    int threads = 0;
 };
 
 struct MethodComparison {

@@ -12,6 +12,8 @@
 #include <sstream>
 #include <thread>
 
+#include "core/parallel.hpp"
+
 namespace cagd::fairness {
 
 namespace {
@@ -40,23 +42,6 @@ inline void locate(const std::vector<double>& nodes, double inv_h, double theta,
     const double left = nodes[static_cast<std::size_t>(i)];
     const double right = i + 1 < n ? nodes[static_cast<std::size_t>(i + 1)] : x0 + 2 * std::numbers::pi;
     u = std::clamp((theta - left) / (right - left), 0.0, 1.0);
-}
-
-// Parallel loop over [0, count) with `threads` workers taking indices by striding (deterministic).
-template <class F>
-void parallel_for(long count, int threads, const F& body, const std::function<void(long, long)>& progress) {
-    std::atomic<long> done{0};
-    const auto worker = [&](int w) {
-        for (long k = w; k < count; k += threads) {
-            body(k);
-            const long d = ++done;
-            if (progress && (d % 256 == 0 || d == count)) progress(d, count);
-        }
-    };
-    std::vector<std::thread> pool;
-    for (int w = 1; w < threads; ++w) pool.emplace_back(worker, w);
-    worker(0);
-    for (std::thread& t : pool) t.join();
 }
 
 }  // namespace

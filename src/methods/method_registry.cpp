@@ -333,6 +333,7 @@ std::vector<Method> make_registry() {
                        {.name = "degree", .type = P::integer, .lower = 2, .upper = 3, .help = "degree of psi for --knots: 2 (clothoid) or 3 (the paper's cubic; absent: 2)"}},
         .claims = fixed({.parametric_continuity = 2, .geometric_continuity = 2, .parameter = "arc length", .invariance = Invariance::similarity}),
         .build = build_curvature_profile,
+        .iterative = true,
     });
     r.push_back({
         .name = "boost-pchip",

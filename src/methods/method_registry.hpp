@@ -106,6 +106,9 @@ struct Method {
     // Builds the curve through points already checked against the claims.
     std::function<InterpolationResult(const PointList&, bool closed, const ParameterValues&)> build{};
     std::vector<Preset> presets{};  // the comparison's configurations; none: the defaults, by name
+    // Builds by an iterative nonlinear solve, several times the cost of the direct methods on long
+    // inputs: a parallel comparison starts these first so that they do not finish last alone.
+    bool iterative = false;
 };
 
 // Every method, in the order of the tables.

@@ -1,0 +1,46 @@
+#pragma once
+// A parallel loop: body(k) for k in [0, count) on `threads` workers (the calling thread is one of
+// them), each taking the next unclaimed index in increasing order (dynamic scheduling, so a few
+// long bodies do not leave a worker idle). Results are deterministic when body(k) writes only what
+// belongs to index k and depends on nothing another index writes. progress(done, count) is called
+// from the workers now and then (every 256 and at the end; may be empty). If body throws, the
+// workers still run every index below the lowest failed one (and skip those above it); after all
+// have joined, the exception of the lowest failed index is rethrown: the one a serial loop would
+// have thrown, whatever the thread count.
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <functional>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace cagd {
+
+template <class Body>
+void parallel_for(long count, int threads, const Body& body, const std::function<void(long, long)>& progress = {}) {
+    threads = static_cast<int>(std::clamp<long>(threads, 1, std::max(count, 1L)));
+    std::atomic<long> next{0}, done{0}, error_index{count};
+    std::mutex error_mutex;
+    std::exception_ptr error;
+    const auto worker = [&] {
+        for (long k = next++; k < count && k < error_index.load(); k = next++) {
+            try {
+                body(k);
+            } catch (...) {
+                const std::lock_guard<std::mutex> lock(error_mutex);
+                if (k < error_index.load()) error_index = k, error = std::current_exception();
+                return;
+            }
+            const long d = ++done;
+            if (progress && (d % 256 == 0 || d == count)) progress(d, count);
+        }
+    };
+    std::vector<std::thread> pool;
+    for (int w = 1; w < threads; ++w) pool.emplace_back(worker);
+    worker();
+    for (std::thread& t : pool) t.join();
+    if (error) std::rethrow_exception(error);
+}
+
+}  // namespace cagd
