@@ -423,7 +423,7 @@ InterpolationResult interpolate(const Method& method, const PointList& points, b
         return r;
     }
     for (Eigen::Index i = 0; i + 1 < points.rows() || (closed && i < points.rows()); ++i) {
-        const Eigen::RowVectorXd d = points.row((i + 1) % points.rows()) - points.row(i);
+        const auto d = points.row((i + 1) % points.rows()) - points.row(i);  // an expression: no allocation per point
         const double chord = d.norm();
         if (!(chord >= kShortestChord * std::max(1.0, largest))) {
             InterpolationResult r;

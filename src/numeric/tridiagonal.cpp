@@ -11,18 +11,23 @@ Eigen::MatrixXd solve_tridiagonal(const std::vector<double>& sub, const std::vec
     const std::size_t n = diag.size();
     if (n == 0 || sub.size() != n || sup.size() != n || static_cast<std::size_t>(rhs.rows()) != n)
         fail_input(who, "needs sub, diag, sup and the right-hand side of one length n >= 1");
-    std::vector<double> c(n);  // modified super-diagonal
-    double pivot = diag[0];
+    // The pivots and the modified super-diagonal once, then each column (contiguous in memory) by
+    // the same elimination: row r −= sub[r] · row r−1, row r /= pivot r; back-substitution.
+    std::vector<double> c(n), pivot(n);
     for (std::size_t r = 0; r < n; ++r) {
-        if (r > 0) {
-            pivot = diag[r] - sub[r] * c[r - 1];
-            rhs.row(static_cast<Eigen::Index>(r)) -= sub[r] * rhs.row(static_cast<Eigen::Index>(r - 1));
-        }
-        if (pivot == 0.0) fail_input(who, "zero pivot at row " + std::to_string(r) + " (the matrix needs pivoting)");
-        c[r] = r + 1 < n ? sup[r] / pivot : 0.0;
-        rhs.row(static_cast<Eigen::Index>(r)) /= pivot;
+        pivot[r] = r == 0 ? diag[0] : diag[r] - sub[r] * c[r - 1];
+        if (pivot[r] == 0.0) fail_input(who, "zero pivot at row " + std::to_string(r) + " (the matrix needs pivoting)");
+        c[r] = r + 1 < n ? sup[r] / pivot[r] : 0.0;
     }
-    for (std::size_t r = n - 1; r-- > 0;) rhs.row(static_cast<Eigen::Index>(r)) -= c[r] * rhs.row(static_cast<Eigen::Index>(r + 1));
+    for (Eigen::Index col = 0; col < rhs.cols(); ++col) {
+        double* x = rhs.col(col).data();
+        x[0] /= pivot[0];
+        for (std::size_t r = 1; r < n; ++r) {
+            x[r] -= sub[r] * x[r - 1];
+            x[r] /= pivot[r];
+        }
+        for (std::size_t r = n - 1; r-- > 0;) x[r] -= c[r] * x[r + 1];
+    }
     return rhs;
 }
 

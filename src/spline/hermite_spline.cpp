@@ -109,15 +109,14 @@ Eigen::RowVectorXd unit(const Eigen::RowVectorXd& v) { return v / v.norm(); }
 PiecewiseHermiteCurve cubic_spline_interpolant(const PointList& points, ParameterSpacing spacing, bool closed) {
     const char* who = "cubic_spline_interpolant";
     require_valid_points(points, closed ? 3 : 2, true, closed, who);
-    const Eigen::MatrixXd nodes = span_nodes(points, closed);
+    Eigen::MatrixXd nodes = span_nodes(points, closed);
     const int spans = static_cast<int>(nodes.rows()) - 1;
     const int dim = static_cast<int>(points.cols());
     std::vector<double> h(static_cast<std::size_t>(spans));
-    Eigen::MatrixXd delta(spans, dim);
-    for (int k = 0; k < spans; ++k) {
-        delta.row(k) = nodes.row(k + 1) - nodes.row(k);
-        h[static_cast<std::size_t>(k)] = spacing == ParameterSpacing::uniform ? 1.0 : delta.row(k).norm();
-    }
+    // Δ_k = P_{k+1} − P_k, formed where it is used (no n × dim temporary: at 10^5 points and more
+    // the cost of a construction is mostly fresh memory).
+    const auto delta = [&](int k) { return nodes.row(k + 1) - nodes.row(k); };
+    for (int k = 0; k < spans; ++k) h[static_cast<std::size_t>(k)] = spacing == ParameterSpacing::uniform ? 1.0 : delta(k).norm();
     // Unknowns m_0..m_{N−1}: N = n+1 for open, N = spans (m_K = m_0) for closed. Row k holds
     // hn m_{k−1} + 2(hp + hn) m_k + hp m_{k+1}: strictly diagonally dominant, so the Thomas
     // algorithm needs no pivoting (numeric/tridiagonal.hpp); closed: cyclic, the corners
@@ -131,13 +130,13 @@ PiecewiseHermiteCurve cubic_spline_interpolant(const PointList& points, Paramete
         if (!closed && k == 0) {
             diag[0] = 2.0;
             sup[0] = 1.0;
-            rhs.row(0) = 3.0 * delta.row(0) / h[0];
+            rhs.row(0) = 3.0 * delta(0) / h[0];
             continue;
         }
         if (!closed && k == N - 1) {
             sub[r] = 1.0;
             diag[r] = 2.0;
-            rhs.row(k) = 3.0 * delta.row(spans - 1) / h[static_cast<std::size_t>(spans - 1)];
+            rhs.row(k) = 3.0 * delta(spans - 1) / h[static_cast<std::size_t>(spans - 1)];
             continue;
         }
         const int prev = (k - 1 + spans) % spans;  // span ending at node k
@@ -146,7 +145,7 @@ PiecewiseHermiteCurve cubic_spline_interpolant(const PointList& points, Paramete
         sub[r] = hn;
         diag[r] = 2.0 * (hp + hn);
         sup[r] = hp;
-        rhs.row(k) = 3.0 * (hn * delta.row(prev) / hp + hp * delta.row(next) / hn);
+        rhs.row(k) = 3.0 * (hn * delta(prev) / hp + hp * delta(next) / hn);
     }
     const Eigen::MatrixXd m = closed ? numeric::solve_cyclic_tridiagonal(sub, diag, sup, rhs) : numeric::solve_tridiagonal(sub, diag, sup, std::move(rhs));
     Eigen::MatrixXd d0(spans, dim), d1(spans, dim);
@@ -155,7 +154,7 @@ PiecewiseHermiteCurve cubic_spline_interpolant(const PointList& points, Paramete
         d0.row(k) = hk * m.row(k);
         d1.row(k) = hk * m.row((k + 1) % N);
     }
-    return PiecewiseHermiteCurve(nodes, d0, d1);
+    return PiecewiseHermiteCurve(std::move(nodes), std::move(d0), std::move(d1));
 }
 
 Eigen::MatrixXd hermite_tangent_directions(const PointList& points, TangentRule rule, bool closed) {
