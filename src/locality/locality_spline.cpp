@@ -3,6 +3,7 @@
 #include <Eigen/SparseLU>
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <sstream>
 
 #include "core/errors.hpp"
@@ -18,12 +19,15 @@ void require_locality(SegmentLocality m, const std::string& who) {
 }
 
 // Virtual points of section 3.3 as an index → point map over all integers.
+// A point as a row of at most 3 coordinates, held inline (no allocation per point).
+using PointRow = Eigen::Matrix<double, 1, Eigen::Dynamic, Eigen::RowMajor, 1, 3>;
+
 class ExtendedPoints {
 public:
     ExtendedPoints(const PointList& p, bool closed, Eigen::VectorXd start_normal, Eigen::VectorXd end_normal, bool start_mirror, bool end_mirror)
         : p_(p), closed_(closed), start_normal_(std::move(start_normal)), end_normal_(std::move(end_normal)), start_mirror_(start_mirror), end_mirror_(end_mirror) {}
 
-    Eigen::RowVectorXd operator()(long k) const {
+    PointRow operator()(long k) const {
         const long n = p_.rows();
         if (closed_) return p_.row(((k % n) + n) % n);
         if (k >= 0 && k <= n - 1) return p_.row(k);
@@ -32,7 +36,7 @@ public:
     }
 
 private:
-    static Eigen::RowVectorXd reflect(const Eigen::RowVectorXd& x, const Eigen::RowVectorXd& centre, const Eigen::VectorXd& unit_normal, bool mirror) {
+    static PointRow reflect(const PointRow& x, const PointRow& centre, const Eigen::VectorXd& unit_normal, bool mirror) {
         if (!mirror) return 2.0 * centre - x;  // point symmetry (natural end)
         const double s = (x - centre).dot(unit_normal.transpose());
         return x - 2.0 * s * unit_normal.transpose();  // mirror ⟂ tangent
@@ -227,24 +231,27 @@ LocalitySpline interpolate(const PointList& points, const Options& o) {
         if (seg >= segments) return swapped(o.m.back());
         return o.m[static_cast<std::size_t>(seg)];
     };
-    const auto extra_point = [&](long i) -> Eigen::RowVectorXd {
-        const Eigen::RowVectorXd q0 = 0.5 * (P(i) + P(i + 1));
+    // One set of weights when every segment has the same locality (the usual case).
+    const std::optional<SegmentWeights> uniform_weights = o.m.size() == 1 ? std::optional<SegmentWeights>(extra_point_weights(o.m[0])) : std::nullopt;
+    const auto extra_point = [&](long i) -> PointRow {
+        const PointRow q0 = 0.5 * (P(i) + P(i + 1));
         switch (o.rule) {
             case ExtraPointRule::method_I: return q0;  // eq (15)
             case ExtraPointRule::method_IIa:           // eq (16)
                 return 1.25 * q0 - 0.25 * (0.5 * (P(i - 1) + P(i + 2)));
             case ExtraPointRule::fmill: {  // eq (17)
                 const auto tangent = [&](long k) {
-                    const Eigen::RowVectorXd c = P(k + 1) - P(k - 1);
+                    const PointRow c = P(k + 1) - P(k - 1);
                     if (c.norm() == 0.0) fail_input(kLocalityWho, "FMILL tangent at point " + std::to_string(k) + " undefined: its neighbours coincide");
-                    return Eigen::RowVectorXd(c.normalized());
+                    return PointRow(c.normalized());
                 };
                 return q0 + (tangent(i) - tangent(i + 1)) * (P(i + 1) - P(i)).norm() / 6.0;
             }
             case ExtraPointRule::locality: break;
         }
-        const SegmentWeights w = extra_point_weights(m_of(i));  // eq (12)
-        Eigen::RowVectorXd d = Eigen::RowVectorXd::Zero(points.cols());
+        SegmentWeights own;
+        const SegmentWeights& w = uniform_weights ? *uniform_weights : (own = extra_point_weights(m_of(i)));  // eq (12)
+        PointRow d = PointRow::Zero(points.cols());
         for (long j = 0; j < w.left.size(); ++j) d += w.left(j) * P(i - j);
         for (long j = 0; j < w.right.size(); ++j) d += w.right(j) * P(i + 1 + j);
         return d;
