@@ -1,7 +1,7 @@
 #pragma once
 // Differential and integral measures of any Curve (DESIGN.md: computed once, here).
 //
-//   curvature κ(t) = sqrt(|r'|²|r''|² − (r'·r'')²) / |r'|³        (any dimension ≥ 2)
+//   curvature κ(t) = sqrt(|r'|²|r''|² − (r'·r'')²) / |r'|³        (dimension 2 or 3)
 //   signed curvature (planar) κ(t) = (x'y'' − y'x'') / |r'|³
 //   arc length L = ∫ |r'(t)| dt,  enclosed (signed) area A = ½ ∮ (x y' − y x') dt,
 //   bending energy E = ∫ κ² ds = ∫ κ² |r'| dt.
@@ -9,7 +9,9 @@
 // Gauss–Legendre rule split into `pieces` sub-intervals (fast path), or with Romberg to
 // rel 1e-13 (reference path, `romberg_arc_length`). For polynomial curves the area
 // integrand is a polynomial and the rule is exact to rounding for degree ≤ 19.
-// Preconditions: |r'(t)| > 0 where curvature is asked (InvalidInput names t otherwise).
+// Preconditions: |r'(t)| > 0 where curvature is asked (InvalidInput names t otherwise); curves of
+// dimension 1–3 (the integrands evaluate into a fixed-capacity JetMatrix, core/curve.hpp; a
+// higher dimension throws InvalidInput).
 #include "core/curve.hpp"
 #include "numeric/romberg.hpp"
 

@@ -8,7 +8,6 @@
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
-#include <thread>
 
 #include "analysis/curve_measures.hpp"
 #include "core/csv.hpp"
@@ -156,7 +155,7 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
     std::stable_partition(order.begin(), order.end(), [&](std::size_t k) { return configurations[k].method->iterative; });
     std::vector<MethodComparison> out(configurations.size());
     std::mutex report;
-    const int threads = options.threads > 0 ? options.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    const int threads = options.threads > 0 ? options.threads : hardware_threads();
     parallel_for(static_cast<long>(order.size()), threads, [&](long slot) {
         const std::size_t k = order[static_cast<std::size_t>(slot)];
         out[k] = measure(configurations[k]);
@@ -233,7 +232,7 @@ FigureData comparison_figure_data(const std::vector<MethodComparison>& cs, const
     const double diagonal = bounding_box_diagonal(points);
     // One part per method, computed in parallel and joined in the methods' order.
     std::vector<FigureData> parts(cs.size());
-    parallel_for(static_cast<long>(cs.size()), static_cast<int>(std::max(1u, std::thread::hardware_concurrency())), [&](long method) {
+    parallel_for(static_cast<long>(cs.size()), hardware_threads(), [&](long method) {
         const auto i = static_cast<std::size_t>(method);
         FigureData& d = parts[i];
         if (!cs[i].interpolant) return;

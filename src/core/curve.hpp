@@ -38,8 +38,8 @@ public:
     virtual Eigen::MatrixXd derivatives(double t, int order) const;
     // jet(t, order) written into `out` (resized to order + 1 rows × dimension()), for
     // 0 ≤ order < kJetCapacity (InvalidInput otherwise) and dimension() ≤ 3: the allocation-free
-    // form for loops over many parameters. The default copies jet(); the piecewise polynomial
-    // curves override it without allocating.
+    // form for loops over many parameters. The default copies jet(); PiecewiseHermiteCurve and
+    // BSplineCurve (degree ≤ 7) override it without allocating.
     virtual void jet_into(double t, int order, JetMatrix& out) const;
     // derivatives(t, order) likewise, for 1 ≤ order ≤ kJetCapacity.
     virtual void derivatives_into(double t, int order, JetMatrix& out) const;

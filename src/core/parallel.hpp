@@ -17,6 +17,9 @@
 
 namespace cagd {
 
+// The hardware's thread count (at least 1): the default for the callers' `threads`.
+inline int hardware_threads() { return static_cast<int>(std::max(1u, std::thread::hardware_concurrency())); }
+
 template <class Body>
 void parallel_for(long count, int threads, const Body& body, const std::function<void(long, long)>& progress = {}) {
     threads = static_cast<int>(std::clamp<long>(threads, 1, std::max(count, 1L)));

@@ -130,6 +130,7 @@ void BSplineCurve::jet_into(double t, int order, JetMatrix& out) const {
 
 void BSplineCurve::derivatives_into(double t, int order, JetMatrix& out) const {
     require_jet_capacity("cagd::BSplineCurve::derivatives_into", order, dimension());
+    if (order + 1 > kJetCapacity) return Curve::derivatives_into(t, order, out);  // the jet would not fit
     JetMatrix jet;
     jet_into(t, order, jet);
     out = jet.bottomRows(order);

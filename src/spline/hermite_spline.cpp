@@ -31,7 +31,6 @@ Eigen::MatrixXd PiecewiseHermiteCurve::jet_from_left(double u, int order) const 
 }
 
 namespace {
-// Row j: the j-th derivatives of the basis H0..H3 at t.
 // Row j of the basis: the j-th derivatives of H0..H3 at t (zero for j > 3).
 [[gnu::always_inline]] inline void hermite_basis_row(int j, double t, double h[4]) {
     switch (j) {
