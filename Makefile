@@ -1,9 +1,20 @@
-# cagd-repro — every target drives CMake in build/ (Release).
+# cagd-repro — every target drives CMake in build/ (Release), turning on what it needs
+# (CMake options CAGD_BUILD_TESTS, _EXPERIMENTS, _CLI, _BENCH, _PYTHON; see CMakeLists.txt).
 BUILD   ?= build
 JOBS    ?= 2
+PREFIX  ?= /usr/local
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 
-.PHONY: all deps configure build test reproduce bench sanitize clean
+# What each target needs built.
+ALL_ON        = -DCAGD_BUILD_TESTS=ON -DCAGD_BUILD_EXPERIMENTS=ON -DCAGD_BUILD_CLI=ON -DCAGD_BUILD_PYTHON=ON
+REPRODUCE_ON  = -DCAGD_BUILD_EXPERIMENTS=ON -DCAGD_BUILD_CLI=ON
+BENCH_ON      = -DCAGD_BUILD_BENCH=ON -DCAGD_BUILD_CLI=ON -DCAGD_BUILD_PYTHON=ON
+PYTHON_ON     = -DCAGD_BUILD_PYTHON=ON
+# make install: the library, its headers, CMake config and pkg-config file, the cagd command and
+# the Python package, into $(PREFIX), from a build of its own (no tests, experiments, benchmarks).
+INSTALL_FLAGS = -DCAGD_BUILD_TESTS=OFF -DCAGD_BUILD_EXPERIMENTS=OFF -DCAGD_BUILD_BENCH=OFF -DCAGD_BUILD_CLI=ON -DCAGD_BUILD_PYTHON=ON
+
+.PHONY: all deps configure build test reproduce bench python install sanitize clean
 
 all: build
 
@@ -11,7 +22,7 @@ deps:
 	@bash scripts/install-deps.sh
 
 configure: deps
-	@cmake -S . -B $(BUILD) $(CMAKE_FLAGS) >/dev/null
+	@cmake -S . -B $(BUILD) $(CMAKE_FLAGS) $(ALL_ON) >/dev/null
 
 build: configure
 	@cmake --build $(BUILD) -j$(JOBS)
@@ -19,18 +30,32 @@ build: configure
 test: build
 	@cd $(BUILD) && ctest --output-on-failure -j$(JOBS)
 
-reproduce: build
+reproduce: deps
+	@cmake -S . -B $(BUILD) $(CMAKE_FLAGS) $(REPRODUCE_ON) >/dev/null
+	@cmake --build $(BUILD) -j$(JOBS)
 	@JOBS=$(JOBS) bash scripts/reproduce.sh $(BUILD)
 
-bench: build
+bench: deps
+	@cmake -S . -B $(BUILD) $(CMAKE_FLAGS) $(BENCH_ON) >/dev/null
+	@cmake --build $(BUILD) -j$(JOBS)
 	@cmake --build $(BUILD) -j$(JOBS) --target cagd_bench
 	@mkdir -p results/timing
 	@$(BUILD)/bench/cagd_bench --benchmark_out=results/timing/bench.json --benchmark_out_format=json
 	@python3 scripts/bench-targets.py $(BUILD)
+
+# The Python module alone: then PYTHONPATH=$(BUILD)/python /usr/bin/python3 -c 'import cagd'
+python: deps
+	@cmake -S . -B $(BUILD) $(CMAKE_FLAGS) $(PYTHON_ON) >/dev/null
+	@cmake --build $(BUILD) -j$(JOBS) --target cagd_python
+
+install: deps
+	@cmake -S . -B $(BUILD)-install $(CMAKE_FLAGS) $(INSTALL_FLAGS) -DCMAKE_INSTALL_PREFIX=$(PREFIX) >/dev/null
+	@cmake --build $(BUILD)-install -j$(JOBS)
+	@cmake --install $(BUILD)-install
 
 # ASan + UBSan tests of the compare modules and a minute of libFuzzer (clang; build-sanitize/).
 sanitize: deps
 	@JOBS=$(JOBS) bash scripts/sanitize.sh $(CURDIR)/build-sanitize
 
 clean:
-	@rm -rf $(BUILD)
+	@rm -rf $(BUILD) $(BUILD)-install

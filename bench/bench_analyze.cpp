@@ -8,10 +8,10 @@
 //    (seconds per span: the reason for the change), on the cubic-b curve, as the baseline.
 #include <benchmark/benchmark.h>
 
-#include "analysis/curve_measures.hpp"
-#include "analysis/log_curvature_graph.hpp"
-#include "core/point_csv.hpp"
-#include "methods/method_registry.hpp"
+#include "cagd/analysis/curve_measures.hpp"
+#include "cagd/analysis/log_curvature_graph.hpp"
+#include "cagd/core/point_csv.hpp"
+#include "cagd/methods/method_registry.hpp"
 
 using namespace cagd;
 

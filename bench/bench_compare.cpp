@@ -7,7 +7,7 @@
 //    other 18 cost, the curvature-profile Newton above all.
 #include <benchmark/benchmark.h>
 
-#include "compare/method_comparison.hpp"
+#include "cagd/compare/method_comparison.hpp"
 #include "random_walk.hpp"
 
 using namespace cagd;

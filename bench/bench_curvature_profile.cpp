@@ -10,7 +10,7 @@
 #include <Eigen/SparseLU>
 #include <cmath>
 
-#include "intrinsic/curvature_profile_design.hpp"
+#include "cagd/intrinsic/curvature_profile_design.hpp"
 
 using namespace cagd;
 using namespace cagd::intrinsic;

@@ -9,8 +9,8 @@
 #include <random>
 #include <vector>
 
+#include "cagd/spline/hosaka_spline.hpp"
 #include "random_walk.hpp"
-#include "spline/hosaka_spline.hpp"
 
 namespace {
 cagd::PointList walk(long n) { return cagd::bench::random_walk(n, 11, 0.1, 2.0, 1.0); }

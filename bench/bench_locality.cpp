@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "locality/locality_spline.hpp"
+#include "cagd/locality/locality_spline.hpp"
 
 namespace {
 cagd::PointList wave(long n) {

@@ -14,9 +14,9 @@
 #include <string>
 #include <vector>
 
-#include "methods/method_registry.hpp"
+#include "cagd/methods/method_registry.hpp"
+#include "cagd/spline/hermite_spline.hpp"
 #include "random_walk.hpp"
-#include "spline/hermite_spline.hpp"
 
 using namespace cagd;
 
@@ -94,6 +94,27 @@ void BM_JetHandLoop(benchmark::State& state) {
     }
     state.SetItemsProcessed(state.iterations() * kJetParameters);
 }
+
+// The loop behind the Python module's Curve.evaluate (python/cagd_module.cpp), in C++: positions of
+// a cubic-b curve through 1000 points at 10^6 parameters into one array. scripts/bench-targets.py
+// times the module's evaluate on the same curve size and count against it.
+void BM_EvaluateMillion(benchmark::State& state) {
+    const auto c = methods::interpolate("cubic-b", walk(1000), false).interpolant->curve;
+    const int count = 1000000;
+    std::vector<double> t(count), out(2 * static_cast<std::size_t>(count));
+    for (int k = 0; k < count; ++k) t[static_cast<std::size_t>(k)] = c->t_min() + (c->t_max() - c->t_min()) * k / (count - 1);
+    JetMatrix jet;
+    for (auto _ : state) {
+        for (std::size_t k = 0; k < t.size(); ++k) {
+            c->jet_into(t[k], 0, jet);
+            out[2 * k] = jet(0, 0);
+            out[2 * k + 1] = jet(0, 1);
+        }
+        benchmark::DoNotOptimize(out.data());
+    }
+    state.SetItemsProcessed(state.iterations() * count);
+}
+BENCHMARK(BM_EvaluateMillion)->Unit(benchmark::kMillisecond);
 
 const int registered = [] {
     for (const methods::Method& m : methods::registry()) {

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "fairness/pseudo_energy_table.hpp"
+#include "cagd/fairness/pseudo_energy_table.hpp"
 
 namespace {
 using namespace cagd::fairness;

@@ -14,10 +14,10 @@
 #include <random>
 #include <vector>
 
-#include "analysis/curve_measures.hpp"
-#include "fairness/pseudo_spline.hpp"
+#include "cagd/analysis/curve_measures.hpp"
+#include "cagd/fairness/pseudo_spline.hpp"
+#include "cagd/spline/hermite_spline.hpp"
 #include "random_walk.hpp"
-#include "spline/hermite_spline.hpp"
 
 namespace {
 using namespace cagd;

@@ -11,8 +11,8 @@
 #include <random>
 #include <vector>
 
-#include "smoothing/elastic_line.hpp"
-#include "smoothing/surface_smoothing.hpp"
+#include "cagd/smoothing/elastic_line.hpp"
+#include "cagd/smoothing/surface_smoothing.hpp"
 
 namespace {
 

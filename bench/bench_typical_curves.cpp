@@ -12,9 +12,9 @@
 #include <numbers>
 #include <vector>
 
-#include "aesthetic/cubic_bspline_monotonicity.hpp"
-#include "aesthetic/typical_bezier.hpp"
-#include "spline/bezier.hpp"
+#include "cagd/aesthetic/cubic_bspline_monotonicity.hpp"
+#include "cagd/aesthetic/typical_bezier.hpp"
+#include "cagd/spline/bezier.hpp"
 
 namespace {
 

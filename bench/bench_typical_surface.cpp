@@ -10,9 +10,9 @@
 #include <numbers>
 #include <vector>
 
-#include "aesthetic/typical_surface.hpp"
-#include "analysis/surface_curvature.hpp"
-#include "surface/bezier_patch.hpp"
+#include "cagd/aesthetic/typical_surface.hpp"
+#include "cagd/analysis/surface_curvature.hpp"
+#include "cagd/surface/bezier_patch.hpp"
 
 namespace {
 

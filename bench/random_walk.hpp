@@ -4,7 +4,7 @@
 #include <cmath>
 #include <random>
 
-#include "core/points.hpp"
+#include "cagd/core/points.hpp"
 
 namespace cagd::bench {
 

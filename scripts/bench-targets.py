@@ -73,6 +73,23 @@ def scipy_cubic_spline_rate(points):
     return len(points) / best
 
 
+def python_evaluate_seconds(build):
+    """Best of 5: the Python module's Curve.evaluate of a cubic-b curve through 1000 points at 10^6
+    parameters (the C++ loop is BM_EvaluateMillion), in the system interpreter."""
+    script = (
+        "import time, numpy as np, cagd\n"
+        "rng = np.random.default_rng(7)\n"
+        "h = np.cumsum(rng.uniform(-1, 1, 1000)); s = rng.uniform(0.1, 2.0, 1000)\n"
+        "p = np.column_stack([np.cumsum(s * np.cos(h)), np.cumsum(s * np.sin(h))])\n"
+        "c = cagd.interpolate(p, 'cubic-b')\n"
+        "t = np.linspace(*c.parameter_range, 1000000)\n"
+        "best = min((lambda a: (c.evaluate(t), time.perf_counter() - a)[1])(time.perf_counter()) for _ in range(5))\n"
+        "print(best)\n")
+    env = dict(os.environ, PYTHONPATH=os.path.join(build, "python"))
+    r = subprocess.run(["/usr/bin/python3", "-c", script], env=env, capture_output=True, text=True)
+    return float(r.stdout) if r.returncode == 0 else None
+
+
 def main():
     build = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build")
     bench = load_benchmarks(os.path.join(ROOT, "results", "timing", "bench.json"))
@@ -114,6 +131,15 @@ def main():
         t_ps = wall([cagd, "analyze", "--in", table1, "--method", "pseudo-spline"])
         t_cb = wall([cagd, "analyze", "--in", table1, "--method", "cubic-b"])
         rows.append(("`cagd analyze --in table1 --method pseudo-spline` ≤ 0.2 s", f"{t_ps:.3f} s", f"cubic-b: {t_cb:.3f} s", "met" if t_ps <= 0.2 else "not met"))
+
+    cpp_eval = bench.get("BM_EvaluateMillion")
+    py_eval = python_evaluate_seconds(build)
+    if cpp_eval and py_eval:
+        ratio = py_eval / seconds(cpp_eval)
+        rows.append(("Python `Curve.evaluate` on 10^6 parameters within 2× of the C++ loop (issue 25)", f"{py_eval * 1e3:.1f} ms ({ratio:.2f}×)",
+                     f"C++ loop {seconds(cpp_eval) * 1e3:.1f} ms", "met" if ratio <= 2 else "not met"))
+    elif not py_eval:
+        rows.append(("Python `Curve.evaluate` on 10^6 parameters", "module not built or numpy missing", "—", "—"))
 
     scipy = scipy_cubic_spline_rate(random_walk(100000))
     cubic_b = rate("BM_Construct/cubic-b/100000")

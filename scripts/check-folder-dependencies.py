@@ -15,7 +15,7 @@ for folder, _, files in os.walk(src):
     owner = os.path.relpath(folder, src).split(os.sep)[0]
     for f in files:
         if f.endswith((".cpp", ".hpp", ".in")):
-            for used in re.findall(r'#include "([a-z_]+)/', open(os.path.join(folder, f), encoding="utf-8").read()):
+            for used in re.findall(r'#include "cagd/([a-z_]+)/', open(os.path.join(folder, f), encoding="utf-8").read()):
                 if used != owner:
                     deps[owner].add(used)
 

@@ -16,6 +16,9 @@ packages=(
   gnuplot-nox            # figures (pngcairo and svg terminals)
   clang libclang-rt-14-dev         # make sanitize: ASan/UBSan and libFuzzer runtimes
   python3                # make test: the claim-id and folder-dependency checks (standard library only)
+  python3-dev pybind11-dev python3-numpy   # the Python module `cagd` (python/), built for /usr/bin/python3
+  python3-pytest         # make test: the Python module's tests
+  python3-nbclient python3-ipykernel python3-matplotlib   # make test: runs examples/curvature_combs.ipynb
 )
 
 missing=()

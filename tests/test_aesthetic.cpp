@@ -7,15 +7,15 @@
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 
-#include "aesthetic/class_a.hpp"
-#include "aesthetic/cubic_bspline_monotonicity.hpp"
-#include "aesthetic/log_aesthetic_curve.hpp"
-#include "aesthetic/typical_bezier.hpp"
-#include "analysis/curvature_monotonicity.hpp"
-#include "analysis/curve_measures.hpp"
-#include "analysis/log_curvature_graph.hpp"
-#include "core/bernstein_polynomial.hpp"
-#include "core/errors.hpp"
+#include "cagd/aesthetic/class_a.hpp"
+#include "cagd/aesthetic/cubic_bspline_monotonicity.hpp"
+#include "cagd/aesthetic/log_aesthetic_curve.hpp"
+#include "cagd/aesthetic/typical_bezier.hpp"
+#include "cagd/analysis/curvature_monotonicity.hpp"
+#include "cagd/analysis/curve_measures.hpp"
+#include "cagd/analysis/log_curvature_graph.hpp"
+#include "cagd/core/bernstein_polynomial.hpp"
+#include "cagd/core/errors.hpp"
 
 using namespace cagd;
 using namespace cagd::aesthetic;

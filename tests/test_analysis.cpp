@@ -5,11 +5,11 @@
 #include <limits>
 #include <numbers>
 
-#include "analysis/curve_measures.hpp"
-#include "analysis/sampled_curve_measures.hpp"
-#include "core/errors.hpp"
-#include "spline/bezier.hpp"
-#include "spline/bspline.hpp"
+#include "cagd/analysis/curve_measures.hpp"
+#include "cagd/analysis/sampled_curve_measures.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/spline/bezier.hpp"
+#include "cagd/spline/bspline.hpp"
 
 using namespace cagd;
 

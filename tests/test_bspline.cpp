@@ -3,9 +3,9 @@
 
 #include <random>
 
-#include "analysis/curve_measures.hpp"
-#include "core/errors.hpp"
-#include "spline/bspline.hpp"
+#include "cagd/analysis/curve_measures.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/spline/bspline.hpp"
 
 using namespace cagd;
 

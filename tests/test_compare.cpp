@@ -17,12 +17,12 @@ using std::isnan;
 #include <sstream>
 #include <stdexcept>
 
-#include "analysis/curve_measures.hpp"
-#include "analysis/fairness_measures.hpp"
-#include "compare/method_comparison.hpp"
-#include "core/parallel.hpp"
-#include "core/point_csv.hpp"
-#include "methods/method_registry.hpp"
+#include "cagd/analysis/curve_measures.hpp"
+#include "cagd/analysis/fairness_measures.hpp"
+#include "cagd/compare/method_comparison.hpp"
+#include "cagd/core/parallel.hpp"
+#include "cagd/core/point_csv.hpp"
+#include "cagd/methods/method_registry.hpp"
 #include "random_walk.hpp"
 
 using namespace cagd;

@@ -7,8 +7,8 @@
 #include <numbers>
 #include <random>
 
-#include "core/errors.hpp"
-#include "intrinsic/design_verification.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/intrinsic/design_verification.hpp"
 #include "random_walk.hpp"
 
 using namespace cagd;

@@ -5,12 +5,12 @@
 #include <cmath>
 #include <random>
 
-#include "analysis/curve_measures.hpp"
-#include "core/errors.hpp"
-#include "core/rational_polynomial.hpp"
-#include "spline/hermite_spline.hpp"
-#include "spline/hosaka_basis.hpp"
-#include "spline/hosaka_spline.hpp"
+#include "cagd/analysis/curve_measures.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/core/rational_polynomial.hpp"
+#include "cagd/spline/hermite_spline.hpp"
+#include "cagd/spline/hosaka_basis.hpp"
+#include "cagd/spline/hosaka_spline.hpp"
 
 using namespace cagd;
 

@@ -7,10 +7,10 @@
 #include <numbers>
 #include <random>
 
-#include "core/errors.hpp"
-#include "numeric/taylor_jet.hpp"
-#include "surface/boundary_surface.hpp"
-#include "surface/hosaka_patch.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/numeric/taylor_jet.hpp"
+#include "cagd/surface/boundary_surface.hpp"
+#include "cagd/surface/hosaka_patch.hpp"
 
 using namespace cagd;
 using namespace cagd::surface;

@@ -4,9 +4,9 @@
 
 #include <sstream>
 
-#include "core/csv.hpp"
-#include "core/errors.hpp"
-#include "core/point_csv.hpp"
+#include "cagd/core/csv.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/core/point_csv.hpp"
 
 using namespace cagd;
 

@@ -5,10 +5,10 @@
 #include <random>
 #include <sstream>
 
-#include "analysis/curve_measures.hpp"
-#include "core/errors.hpp"
-#include "core/point_csv.hpp"
-#include "locality/locality_spline.hpp"
+#include "cagd/analysis/curve_measures.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/core/point_csv.hpp"
+#include "cagd/locality/locality_spline.hpp"
 
 using namespace cagd;
 using namespace cagd::locality;

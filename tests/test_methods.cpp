@@ -7,9 +7,9 @@
 #include <set>
 #include <sstream>
 
-#include "analysis/curve_measures.hpp"
-#include "locality/locality_spline.hpp"
-#include "methods/method_registry.hpp"
+#include "cagd/analysis/curve_measures.hpp"
+#include "cagd/locality/locality_spline.hpp"
+#include "cagd/methods/method_registry.hpp"
 
 using namespace cagd;
 using namespace cagd::methods;

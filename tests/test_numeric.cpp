@@ -9,11 +9,11 @@
 
 #include <numbers>
 #include <random>
-#include "core/errors.hpp"
-#include "numeric/finite_difference.hpp"
-#include "numeric/gauss_legendre.hpp"
-#include "numeric/pentadiagonal.hpp"
-#include "numeric/romberg.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/numeric/finite_difference.hpp"
+#include "cagd/numeric/gauss_legendre.hpp"
+#include "cagd/numeric/pentadiagonal.hpp"
+#include "cagd/numeric/romberg.hpp"
 
 using cagd::numeric::GaussLegendreRule;
 using cagd::numeric::romberg;
@@ -88,7 +88,7 @@ TEST(GaussLegendre, AgreesWithGaussKronrodOnAnalyticIntegrand) {
     EXPECT_THROW(GaussLegendreRule(0), cagd::InvalidInput);
 }
 
-#include "numeric/rational.hpp"
+#include "cagd/numeric/rational.hpp"
 
 TEST(Rational, SimplestFractionWithinTolerance) {
     const auto f = cagd::numeric::simplest_fraction_within(std::numbers::pi, 0.002);
@@ -103,7 +103,7 @@ TEST(Rational, SimplestFractionWithinTolerance) {
     EXPECT_THROW(cagd::numeric::simplest_fraction_within(1.0, 0.0), cagd::InvalidInput);
 }
 
-#include "numeric/tridiagonal.hpp"
+#include "cagd/numeric/tridiagonal.hpp"
 
 TEST(Tridiagonal, MatchesADenseSolveAndRejectsAZeroPivot) {
     std::mt19937 rng(5);

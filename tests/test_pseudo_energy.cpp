@@ -9,9 +9,9 @@
 #include <filesystem>
 #include <numbers>
 
-#include "analysis/curve_measures.hpp"
-#include "fairness/pseudo_energy_table.hpp"
-#include "numeric/romberg.hpp"
+#include "cagd/analysis/curve_measures.hpp"
+#include "cagd/fairness/pseudo_energy_table.hpp"
+#include "cagd/numeric/romberg.hpp"
 
 using namespace cagd;
 using namespace cagd::fairness;
@@ -182,7 +182,7 @@ TEST(AngleMinimumTable, CacheRoundTripsExactly) {
     const std::string path = ::testing::TempDir() + "/angle6_cache_test.txt";
     std::remove(path.c_str());
     const AngleGrid grid{6, NodePlacement::periodic};
-    const AngleMinimumTable built = AngleMinimumTable::load_or_build(path, grid);   // no file yet: built, saved
+    const AngleMinimumTable built = AngleMinimumTable::load_or_build(path, grid);  // no file yet: built, saved
     const AngleMinimumTable loaded = AngleMinimumTable::load_or_build(path, grid);
     ASSERT_EQ(loaded.values().size(), 6u);
     ASSERT_EQ(built.values().size(), 6u);
@@ -193,7 +193,7 @@ TEST(AngleMinimumTable, CacheRoundTripsExactly) {
         EXPECT_EQ(a.outcome.status, b.outcome.status) << k;
         EXPECT_EQ(a.outcome.message, b.outcome.message) << k;
     }
-    const AngleMinimumTable other = AngleMinimumTable::load_or_build(path, {4, NodePlacement::periodic});   // another grid: rebuilt
+    const AngleMinimumTable other = AngleMinimumTable::load_or_build(path, {4, NodePlacement::periodic});  // another grid: rebuilt
     EXPECT_EQ(other.values().size(), 4u);
     EXPECT_EQ(other.nodes(), (AngleGrid{4, NodePlacement::periodic}).nodes());
     std::remove(path.c_str());

@@ -8,12 +8,12 @@
 #include <numbers>
 #include <random>
 
-#include "analysis/curve_measures.hpp"
-#include "analysis/fairness_measures.hpp"
-#include "core/errors.hpp"
-#include "fairness/pseudo_spline.hpp"
-#include "locality/locality_spline.hpp"
-#include "spline/hermite_spline.hpp"
+#include "cagd/analysis/curve_measures.hpp"
+#include "cagd/analysis/fairness_measures.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/fairness/pseudo_spline.hpp"
+#include "cagd/locality/locality_spline.hpp"
+#include "cagd/spline/hermite_spline.hpp"
 
 using namespace cagd;
 using namespace cagd::fairness;

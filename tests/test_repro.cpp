@@ -5,10 +5,10 @@
 #include <filesystem>
 #include <fstream>
 
-#include "core/csv.hpp"
-#include "core/errors.hpp"
-#include "repro/artifact_run.hpp"
-#include "repro/reference.hpp"
+#include "cagd/core/csv.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/repro/artifact_run.hpp"
+#include "cagd/repro/reference.hpp"
 
 using namespace cagd;
 using namespace cagd::repro;

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <random>
 
-#include "core/errors.hpp"
-#include "smoothing/elastic_line.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/smoothing/elastic_line.hpp"
 
 using namespace cagd;
 using namespace cagd::smoothing;
@@ -168,7 +168,7 @@ TEST(ElasticLine, BadInputThrows) {
 }
 
 // ---- surfaces (eq 53–60) ----
-#include "smoothing/surface_smoothing.hpp"
+#include "cagd/smoothing/surface_smoothing.hpp"
 
 namespace {
 struct Grid {

@@ -5,15 +5,15 @@
 #include <cmath>
 #include <numbers>
 
-#include "aesthetic/log_aesthetic_space_curve.hpp"
-#include "aesthetic/space_typical_bezier.hpp"
-#include "aesthetic/typical_surface.hpp"
-#include "analysis/log_curvature_graph.hpp"
-#include "analysis/surface_curvature.hpp"
-#include "core/errors.hpp"
-#include "numeric/alexa_product.hpp"
-#include "spline/bezier.hpp"
-#include "surface/bezier_patch.hpp"
+#include "cagd/aesthetic/log_aesthetic_space_curve.hpp"
+#include "cagd/aesthetic/space_typical_bezier.hpp"
+#include "cagd/aesthetic/typical_surface.hpp"
+#include "cagd/analysis/log_curvature_graph.hpp"
+#include "cagd/analysis/surface_curvature.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/numeric/alexa_product.hpp"
+#include "cagd/spline/bezier.hpp"
+#include "cagd/surface/bezier_patch.hpp"
 
 using namespace cagd;
 using namespace cagd::aesthetic;

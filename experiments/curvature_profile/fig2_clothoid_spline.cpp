@@ -4,9 +4,9 @@
 #include <Eigen/Dense>
 #include <cmath>
 
-#include "core/point_csv.hpp"
-#include "intrinsic/design_verification.hpp"
-#include "repro/artifact_run.hpp"
+#include "cagd/core/point_csv.hpp"
+#include "cagd/intrinsic/design_verification.hpp"
+#include "cagd/repro/artifact_run.hpp"
 
 using namespace cagd;
 using namespace cagd::intrinsic;

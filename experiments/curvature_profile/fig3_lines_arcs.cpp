@@ -10,9 +10,9 @@
 #include <cstdio>
 #include <fstream>
 
-#include "core/point_csv.hpp"
-#include "intrinsic/design_verification.hpp"
-#include "repro/artifact_run.hpp"
+#include "cagd/core/point_csv.hpp"
+#include "cagd/intrinsic/design_verification.hpp"
+#include "cagd/repro/artifact_run.hpp"
 
 using namespace cagd;
 using namespace cagd::intrinsic;

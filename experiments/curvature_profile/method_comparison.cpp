@@ -2,8 +2,8 @@
 // reference/curvature_profile/data/fig3_points.csv), every span free: the table of `cagd compare`
 // and its figures. The paper's own curve on these points (lines and arcs) is experiment
 // fig3_lines_arcs; no claims of the paper are checked here, the validations check the measurements.
-#include "core/point_csv.hpp"
-#include "repro/comparison_record.hpp"
+#include "cagd/core/point_csv.hpp"
+#include "cagd/repro/comparison_record.hpp"
 
 using namespace cagd;
 

@@ -6,9 +6,9 @@
 #include <functional>
 #include <string>
 
-#include "core/rational_polynomial.hpp"
-#include "repro/artifact_run.hpp"
-#include "spline/hosaka_basis.hpp"
+#include "cagd/core/rational_polynomial.hpp"
+#include "cagd/repro/artifact_run.hpp"
+#include "cagd/spline/hosaka_basis.hpp"
 
 using namespace cagd;
 using cagd::spline::hosaka_p;

@@ -10,9 +10,9 @@
 #include <numbers>
 #include <string>
 
-#include "numeric/finite_difference.hpp"
-#include "repro/artifact_run.hpp"
-#include "surface/boundary_surface.hpp"
+#include "cagd/numeric/finite_difference.hpp"
+#include "cagd/repro/artifact_run.hpp"
+#include "cagd/surface/boundary_surface.hpp"
 
 using namespace cagd;
 using namespace cagd::surface;

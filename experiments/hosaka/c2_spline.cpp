@@ -5,12 +5,12 @@
 //   even    seven points of y = sin x at x = 0..6 (chords 1.0 to 1.5, k_i near 1)
 #include <cmath>
 
-#include "analysis/curve_measures.hpp"
-#include "analysis/fairness_measures.hpp"
+#include "cagd/analysis/curve_measures.hpp"
+#include "cagd/analysis/fairness_measures.hpp"
+#include "cagd/repro/artifact_run.hpp"
+#include "cagd/spline/hermite_spline.hpp"
+#include "cagd/spline/hosaka_spline.hpp"
 #include "curve_data.hpp"
-#include "repro/artifact_run.hpp"
-#include "spline/hermite_spline.hpp"
-#include "spline/hosaka_spline.hpp"
 
 using namespace cagd;
 using namespace cagd::spline;

@@ -5,7 +5,7 @@
 //   even    seven points of y = sin x at x = 0..6 (k_i near 1)
 #include <cmath>
 
-#include "core/points.hpp"
+#include "cagd/core/points.hpp"
 
 namespace cagd::hosaka_data {
 

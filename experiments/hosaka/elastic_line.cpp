@@ -12,9 +12,9 @@
 #include <cmath>
 #include <random>
 
-#include "repro/artifact_run.hpp"
-#include "smoothing/elastic_line.hpp"
-#include "spline/hosaka_basis.hpp"
+#include "cagd/repro/artifact_run.hpp"
+#include "cagd/smoothing/elastic_line.hpp"
+#include "cagd/spline/hosaka_basis.hpp"
 
 using namespace cagd;
 using namespace cagd::smoothing;

@@ -10,9 +10,9 @@
 #include <cmath>
 #include <random>
 
-#include "numeric/gauss_legendre.hpp"
-#include "repro/artifact_run.hpp"
-#include "spline/hosaka_spline.hpp"
+#include "cagd/numeric/gauss_legendre.hpp"
+#include "cagd/repro/artifact_run.hpp"
+#include "cagd/spline/hosaka_spline.hpp"
 
 using namespace cagd;
 using namespace cagd::spline;

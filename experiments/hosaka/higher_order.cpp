@@ -4,10 +4,10 @@
 // Data (ours): the uneven points of experiment c2_spline, and the even ones (y = sin x).
 #include <cmath>
 
-#include "analysis/curve_measures.hpp"
+#include "cagd/analysis/curve_measures.hpp"
+#include "cagd/repro/artifact_run.hpp"
+#include "cagd/spline/hosaka_spline.hpp"
 #include "curve_data.hpp"
-#include "repro/artifact_run.hpp"
-#include "spline/hosaka_spline.hpp"
 
 using namespace cagd;
 using namespace cagd::spline;

@@ -12,9 +12,9 @@
 #include <numbers>
 #include <string>
 
-#include "repro/artifact_run.hpp"
-#include "surface/boundary_surface.hpp"
-#include "surface/hosaka_patch.hpp"
+#include "cagd/repro/artifact_run.hpp"
+#include "cagd/surface/boundary_surface.hpp"
+#include "cagd/surface/hosaka_patch.hpp"
 
 using namespace cagd;
 using namespace cagd::surface;

@@ -7,9 +7,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "analysis/curve_measures.hpp"
-#include "repro/artifact_run.hpp"
-#include "spline/hosaka_spline.hpp"
+#include "cagd/analysis/curve_measures.hpp"
+#include "cagd/repro/artifact_run.hpp"
+#include "cagd/spline/hosaka_spline.hpp"
 
 using namespace cagd;
 using namespace cagd::spline;

@@ -7,10 +7,10 @@
 #include <cmath>
 #include <random>
 
-#include "analysis/curve_measures.hpp"
-#include "repro/artifact_run.hpp"
-#include "smoothing/elastic_line.hpp"
-#include "smoothing/elastic_space_curve.hpp"
+#include "cagd/analysis/curve_measures.hpp"
+#include "cagd/repro/artifact_run.hpp"
+#include "cagd/smoothing/elastic_line.hpp"
+#include "cagd/smoothing/elastic_space_curve.hpp"
 
 using namespace cagd;
 using namespace cagd::smoothing;

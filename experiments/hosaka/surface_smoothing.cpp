@@ -12,9 +12,9 @@
 #include <functional>
 #include <random>
 
-#include "repro/artifact_run.hpp"
-#include "smoothing/elastic_line.hpp"
-#include "smoothing/surface_smoothing.hpp"
+#include "cagd/repro/artifact_run.hpp"
+#include "cagd/smoothing/elastic_line.hpp"
+#include "cagd/smoothing/surface_smoothing.hpp"
 
 using namespace cagd;
 using namespace cagd::smoothing;

@@ -11,9 +11,9 @@
 #include <numbers>
 #include <string>
 
-#include "analysis/curve_measures.hpp"
-#include "fairness/pseudo_spline.hpp"
-#include "repro/artifact_run.hpp"
+#include "cagd/analysis/curve_measures.hpp"
+#include "cagd/fairness/pseudo_spline.hpp"
+#include "cagd/repro/artifact_run.hpp"
 
 using namespace cagd;
 using namespace cagd::fairness;

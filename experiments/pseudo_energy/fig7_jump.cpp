@@ -5,8 +5,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "fairness/pseudo_energy_minimum.hpp"
-#include "repro/artifact_run.hpp"
+#include "cagd/fairness/pseudo_energy_minimum.hpp"
+#include "cagd/repro/artifact_run.hpp"
 
 using namespace cagd;
 using namespace cagd::fairness;

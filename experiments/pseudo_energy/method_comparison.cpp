@@ -2,9 +2,9 @@
 // `cagd compare` and its figures, so the paper's five curves can be judged beside the other papers'
 // methods and Boost's peers. No claims of the paper are checked here (spline_curves does that);
 // the validations check the comparison's own measurements.
-#include "analysis/curve_measures.hpp"
-#include "core/point_csv.hpp"
-#include "repro/comparison_record.hpp"
+#include "cagd/analysis/curve_measures.hpp"
+#include "cagd/core/point_csv.hpp"
+#include "cagd/repro/comparison_record.hpp"
 
 using namespace cagd;
 

@@ -7,8 +7,8 @@
 #include <cstdio>
 #include <numbers>
 
-#include "fairness/pseudo_energy_table.hpp"
-#include "repro/artifact_run.hpp"
+#include "cagd/fairness/pseudo_energy_table.hpp"
+#include "cagd/repro/artifact_run.hpp"
 
 using namespace cagd;
 using namespace cagd::fairness;

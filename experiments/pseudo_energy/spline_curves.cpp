@@ -7,12 +7,12 @@
 #include <numbers>
 #include <string>
 
-#include "analysis/curve_measures.hpp"
-#include "analysis/fairness_measures.hpp"
-#include "core/point_csv.hpp"
-#include "fairness/pseudo_spline.hpp"
-#include "locality/locality_spline.hpp"
-#include "repro/artifact_run.hpp"
+#include "cagd/analysis/curve_measures.hpp"
+#include "cagd/analysis/fairness_measures.hpp"
+#include "cagd/core/point_csv.hpp"
+#include "cagd/fairness/pseudo_spline.hpp"
+#include "cagd/locality/locality_spline.hpp"
+#include "cagd/repro/artifact_run.hpp"
 
 using namespace cagd;
 using namespace cagd::fairness;

@@ -9,9 +9,9 @@
 #include <limits>
 #include <numbers>
 
-#include "analysis/curve_measures.hpp"
-#include "fairness/hermite_segment.hpp"
-#include "repro/artifact_run.hpp"
+#include "cagd/analysis/curve_measures.hpp"
+#include "cagd/fairness/hermite_segment.hpp"
+#include "cagd/repro/artifact_run.hpp"
 
 using namespace cagd;
 using namespace cagd::fairness;

@@ -9,9 +9,9 @@
 #include <chrono>
 #include <vector>
 
-#include "core/point_csv.hpp"
-#include "fairness/pseudo_spline.hpp"
-#include "repro/artifact_run.hpp"
+#include "cagd/core/point_csv.hpp"
+#include "cagd/fairness/pseudo_spline.hpp"
+#include "cagd/repro/artifact_run.hpp"
 
 using namespace cagd;
 using namespace cagd::fairness;

@@ -6,9 +6,9 @@
 #include <cmath>
 #include <functional>
 
-#include "locality/locality_spline.hpp"
-#include "numeric/gauss_legendre.hpp"
-#include "repro/artifact_run.hpp"
+#include "cagd/locality/locality_spline.hpp"
+#include "cagd/numeric/gauss_legendre.hpp"
+#include "cagd/repro/artifact_run.hpp"
 
 using namespace cagd;
 using namespace cagd::locality;

@@ -4,9 +4,9 @@
 // Data: the 10 points of the earlier-methods experiment (chosen).
 #include <cmath>
 
-#include "analysis/curve_measures.hpp"
-#include "locality/locality_spline.hpp"
-#include "repro/artifact_run.hpp"
+#include "cagd/analysis/curve_measures.hpp"
+#include "cagd/locality/locality_spline.hpp"
+#include "cagd/repro/artifact_run.hpp"
 
 using namespace cagd;
 using namespace cagd::locality;

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "locality/locality_spline.hpp"
-#include "repro/artifact_run.hpp"
-#include "spline/bspline.hpp"
+#include "cagd/locality/locality_spline.hpp"
+#include "cagd/repro/artifact_run.hpp"
+#include "cagd/spline/bspline.hpp"
 
 using namespace cagd;
 using namespace cagd::locality;

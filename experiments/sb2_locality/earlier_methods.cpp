@@ -3,10 +3,10 @@
 // Data (chosen; the paper gives none): 10 open points of a wavy curve, unevenly spaced.
 #include <cmath>
 
-#include "analysis/curve_measures.hpp"
-#include "locality/locality_spline.hpp"
-#include "numeric/rational.hpp"
-#include "repro/artifact_run.hpp"
+#include "cagd/analysis/curve_measures.hpp"
+#include "cagd/locality/locality_spline.hpp"
+#include "cagd/numeric/rational.hpp"
+#include "cagd/repro/artifact_run.hpp"
 
 using namespace cagd;
 using namespace cagd::locality;

@@ -3,9 +3,9 @@
 // given, so we use 21 points of a winding curve starting at the upper left (chosen).
 #include <cmath>
 
-#include "analysis/curve_measures.hpp"
-#include "locality/locality_spline.hpp"
-#include "repro/artifact_run.hpp"
+#include "cagd/analysis/curve_measures.hpp"
+#include "cagd/locality/locality_spline.hpp"
+#include "cagd/repro/artifact_run.hpp"
 
 using namespace cagd;
 using namespace cagd::locality;

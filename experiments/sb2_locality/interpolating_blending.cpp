@@ -2,9 +2,9 @@
 // B2- and S-spline (the interpolant of p_i = δ_{i0}) and their difference, measured per span.
 #include <cmath>
 
-#include "analysis/curve_measures.hpp"
-#include "locality/locality_spline.hpp"
-#include "repro/artifact_run.hpp"
+#include "cagd/analysis/curve_measures.hpp"
+#include "cagd/locality/locality_spline.hpp"
+#include "cagd/repro/artifact_run.hpp"
 
 using namespace cagd;
 using namespace cagd::locality;

@@ -5,8 +5,8 @@
 // eq (12) weight vectors (truncation_weights_by_stencil).
 #include <cmath>
 
-#include "locality/locality_spline.hpp"
-#include "repro/artifact_run.hpp"
+#include "cagd/locality/locality_spline.hpp"
+#include "cagd/repro/artifact_run.hpp"
 
 using namespace cagd;
 using namespace cagd::locality;

@@ -10,10 +10,10 @@
 #include <numbers>
 #include <random>
 
-#include "aesthetic/cubic_bspline_monotonicity.hpp"
-#include "aesthetic/typical_bezier.hpp"
-#include "analysis/curve_measures.hpp"
-#include "repro/artifact_run.hpp"
+#include "cagd/aesthetic/cubic_bspline_monotonicity.hpp"
+#include "cagd/aesthetic/typical_bezier.hpp"
+#include "cagd/analysis/curve_measures.hpp"
+#include "cagd/repro/artifact_run.hpp"
 
 using namespace cagd;
 using namespace cagd::aesthetic;

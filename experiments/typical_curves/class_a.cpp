@@ -9,10 +9,10 @@
 #include <numbers>
 #include <random>
 
-#include "aesthetic/class_a.hpp"
-#include "analysis/curvature_monotonicity.hpp"
-#include "repro/artifact_run.hpp"
-#include "spline/bezier.hpp"
+#include "cagd/aesthetic/class_a.hpp"
+#include "cagd/analysis/curvature_monotonicity.hpp"
+#include "cagd/repro/artifact_run.hpp"
+#include "cagd/spline/bezier.hpp"
 
 using namespace cagd;
 using namespace cagd::aesthetic;

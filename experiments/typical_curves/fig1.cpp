@@ -7,13 +7,13 @@
 // first and last three control points); the dependence on L and on the fit range is tabulated.
 #include <cmath>
 
-#include "aesthetic/log_aesthetic_curve.hpp"
-#include "aesthetic/typical_bezier.hpp"
-#include "analysis/curvature_monotonicity.hpp"
-#include "analysis/curve_measures.hpp"
-#include "analysis/log_curvature_graph.hpp"
-#include "repro/artifact_run.hpp"
-#include "spline/bezier.hpp"
+#include "cagd/aesthetic/log_aesthetic_curve.hpp"
+#include "cagd/aesthetic/typical_bezier.hpp"
+#include "cagd/analysis/curvature_monotonicity.hpp"
+#include "cagd/analysis/curve_measures.hpp"
+#include "cagd/analysis/log_curvature_graph.hpp"
+#include "cagd/repro/artifact_run.hpp"
+#include "cagd/spline/bezier.hpp"
 
 using namespace cagd;
 using namespace cagd::aesthetic;

@@ -10,12 +10,12 @@
 #include <cmath>
 #include <numbers>
 
-#include "aesthetic/typical_surface.hpp"
-#include "analysis/log_curvature_graph.hpp"
-#include "analysis/surface_curvature.hpp"
-#include "repro/artifact_run.hpp"
-#include "spline/bezier.hpp"
-#include "surface/bezier_patch.hpp"
+#include "cagd/aesthetic/typical_surface.hpp"
+#include "cagd/analysis/log_curvature_graph.hpp"
+#include "cagd/analysis/surface_curvature.hpp"
+#include "cagd/repro/artifact_run.hpp"
+#include "cagd/spline/bezier.hpp"
+#include "cagd/surface/bezier_patch.hpp"
 
 using namespace cagd;
 

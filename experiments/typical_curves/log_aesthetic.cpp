@@ -5,10 +5,10 @@
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <cmath>
 
-#include "aesthetic/log_aesthetic_curve.hpp"
-#include "analysis/log_curvature_graph.hpp"
-#include "numeric/gauss_legendre.hpp"
-#include "repro/artifact_run.hpp"
+#include "cagd/aesthetic/log_aesthetic_curve.hpp"
+#include "cagd/analysis/log_curvature_graph.hpp"
+#include "cagd/numeric/gauss_legendre.hpp"
+#include "cagd/repro/artifact_run.hpp"
 
 using namespace cagd;
 using namespace cagd::aesthetic;

@@ -11,13 +11,13 @@
 // the two rotations is tabulated (space_slope_dependence.csv).
 #include <cmath>
 
-#include "aesthetic/space_typical_bezier.hpp"
-#include "analysis/curvature_monotonicity.hpp"
-#include "analysis/curve_measures.hpp"
-#include "analysis/log_curvature_graph.hpp"
-#include "numeric/alexa_product.hpp"
-#include "repro/artifact_run.hpp"
-#include "spline/bezier.hpp"
+#include "cagd/aesthetic/space_typical_bezier.hpp"
+#include "cagd/analysis/curvature_monotonicity.hpp"
+#include "cagd/analysis/curve_measures.hpp"
+#include "cagd/analysis/log_curvature_graph.hpp"
+#include "cagd/numeric/alexa_product.hpp"
+#include "cagd/repro/artifact_run.hpp"
+#include "cagd/spline/bezier.hpp"
 
 using namespace cagd;
 using namespace cagd::aesthetic;

@@ -4,12 +4,12 @@
 // log spiral a = 0.2, b = 1, Δθ = 0.1; clothoid θ = a²s²/2 with a = 1.3, Δs = 0.01, Δθ = −0.02.
 #include <cmath>
 
-#include "aesthetic/class_a.hpp"
-#include "aesthetic/log_aesthetic_curve.hpp"
-#include "aesthetic/typical_bezier.hpp"
-#include "analysis/log_curvature_graph.hpp"
-#include "repro/artifact_run.hpp"
-#include "spline/bezier.hpp"
+#include "cagd/aesthetic/class_a.hpp"
+#include "cagd/aesthetic/log_aesthetic_curve.hpp"
+#include "cagd/aesthetic/typical_bezier.hpp"
+#include "cagd/analysis/log_curvature_graph.hpp"
+#include "cagd/repro/artifact_run.hpp"
+#include "cagd/spline/bezier.hpp"
 
 using namespace cagd;
 using namespace cagd::aesthetic;

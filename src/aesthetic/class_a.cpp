@@ -1,8 +1,8 @@
-#include "aesthetic/class_a.hpp"
+#include "cagd/aesthetic/class_a.hpp"
 
 #include <cmath>
 
-#include "core/errors.hpp"
+#include "cagd/core/errors.hpp"
 
 namespace cagd::aesthetic {
 

@@ -1,10 +1,10 @@
-#include "aesthetic/cubic_bspline_monotonicity.hpp"
+#include "cagd/aesthetic/cubic_bspline_monotonicity.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
-#include "core/errors.hpp"
+#include "cagd/core/errors.hpp"
 
 namespace cagd::aesthetic {
 

@@ -31,8 +31,8 @@
 #include <string>
 #include <vector>
 
-#include "analysis/curvature_monotonicity.hpp"
-#include "spline/bspline.hpp"
+#include "cagd/analysis/curvature_monotonicity.hpp"
+#include "cagd/spline/bspline.hpp"
 
 namespace cagd::aesthetic {
 

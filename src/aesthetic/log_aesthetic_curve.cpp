@@ -1,10 +1,10 @@
-#include "aesthetic/log_aesthetic_curve.hpp"
+#include "cagd/aesthetic/log_aesthetic_curve.hpp"
 
 #include <boost/math/quadrature/tanh_sinh.hpp>
 #include <cmath>
 #include <complex>
 
-#include "core/errors.hpp"
+#include "cagd/core/errors.hpp"
 
 namespace cagd::aesthetic {
 

@@ -26,7 +26,7 @@
 #include <Eigen/Dense>
 #include <optional>
 
-#include "core/curve.hpp"
+#include "cagd/core/curve.hpp"
 
 namespace cagd::aesthetic {
 

@@ -1,10 +1,10 @@
-#include "aesthetic/log_aesthetic_space_curve.hpp"
+#include "cagd/aesthetic/log_aesthetic_space_curve.hpp"
 
 #include <boost/numeric/odeint.hpp>
 #include <cmath>
 #include <string>
 
-#include "core/errors.hpp"
+#include "cagd/core/errors.hpp"
 
 namespace cagd::aesthetic {
 

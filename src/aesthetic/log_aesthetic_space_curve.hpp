@@ -33,8 +33,8 @@
 #include <array>
 #include <vector>
 
-#include "aesthetic/log_aesthetic_curve.hpp"
-#include "core/curve.hpp"
+#include "cagd/aesthetic/log_aesthetic_curve.hpp"
+#include "cagd/core/curve.hpp"
 
 namespace cagd::aesthetic {
 

@@ -1,11 +1,11 @@
-#include "aesthetic/space_typical_bezier.hpp"
+#include "cagd/aesthetic/space_typical_bezier.hpp"
 
 #include <cmath>
 #include <numbers>
 #include <string>
 
-#include "core/errors.hpp"
-#include "numeric/alexa_product.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/numeric/alexa_product.hpp"
 
 namespace cagd::aesthetic {
 

@@ -31,7 +31,7 @@
 #include <Eigen/Dense>
 #include <vector>
 
-#include "aesthetic/log_aesthetic_space_curve.hpp"
+#include "cagd/aesthetic/log_aesthetic_space_curve.hpp"
 
 namespace cagd::aesthetic {
 

@@ -1,9 +1,9 @@
-#include "aesthetic/typical_bezier.hpp"
+#include "cagd/aesthetic/typical_bezier.hpp"
 
 #include <cmath>
 
-#include "aesthetic/class_a.hpp"
-#include "core/errors.hpp"
+#include "cagd/aesthetic/class_a.hpp"
+#include "cagd/core/errors.hpp"
 
 namespace cagd::aesthetic {
 

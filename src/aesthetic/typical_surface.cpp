@@ -1,10 +1,10 @@
-#include "aesthetic/typical_surface.hpp"
+#include "cagd/aesthetic/typical_surface.hpp"
 
 #include <cmath>
 #include <string>
 
-#include "aesthetic/typical_bezier.hpp"
-#include "core/errors.hpp"
+#include "cagd/aesthetic/typical_bezier.hpp"
+#include "cagd/core/errors.hpp"
 
 namespace cagd::aesthetic {
 

@@ -24,7 +24,7 @@
 // a non-degenerate diagonal (P_{i+1,j} ≠ P_{i,j+1}).
 #include <Eigen/Dense>
 
-#include "surface/bezier_patch.hpp"
+#include "cagd/surface/bezier_patch.hpp"
 
 namespace cagd::aesthetic {
 

@@ -1,6 +1,6 @@
-#include "analysis/curvature_monotonicity.hpp"
+#include "cagd/analysis/curvature_monotonicity.hpp"
 
-#include "core/errors.hpp"
+#include "cagd/core/errors.hpp"
 
 namespace cagd::analysis {
 

@@ -10,8 +10,8 @@
 // The numerators are products of the hodographs' Bernstein polynomials (no rounding beyond the
 // products themselves); their sign on [0, 1] is decided by core/sign_on_unit_interval.
 // Preconditions: degree ≥ 2 (≥ 3 for torsion), dimension 2 (signed) / 2–3 / 3 (InvalidInput).
-#include "core/bernstein_polynomial.hpp"
-#include "spline/bezier.hpp"
+#include "cagd/core/bernstein_polynomial.hpp"
+#include "cagd/spline/bezier.hpp"
 
 namespace cagd::analysis {
 

@@ -1,12 +1,12 @@
-#include "analysis/curve_measures.hpp"
+#include "cagd/analysis/curve_measures.hpp"
 
 #include <algorithm>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <cmath>
 #include <set>
 
-#include "core/errors.hpp"
-#include "numeric/gauss_legendre.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/numeric/gauss_legendre.hpp"
 
 namespace cagd::analysis {
 

@@ -12,8 +12,8 @@
 // Preconditions: |r'(t)| > 0 where curvature is asked (InvalidInput names t otherwise); curves of
 // dimension 1–3 (the integrands evaluate into a fixed-capacity JetMatrix, core/curve.hpp; a
 // higher dimension throws InvalidInput).
-#include "core/curve.hpp"
-#include "numeric/romberg.hpp"
+#include "cagd/core/curve.hpp"
+#include "cagd/numeric/romberg.hpp"
 
 namespace cagd::analysis {
 

@@ -1,10 +1,10 @@
-#include "analysis/fairness_measures.hpp"
+#include "cagd/analysis/fairness_measures.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "analysis/curve_measures.hpp"
-#include "core/errors.hpp"
+#include "cagd/analysis/curve_measures.hpp"
+#include "cagd/core/errors.hpp"
 
 namespace cagd::analysis {
 

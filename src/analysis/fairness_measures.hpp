@@ -22,8 +22,8 @@
 // Precondition: planar curve, r'(u) ≠ 0 at the samples (a sample on an exact cusp throws).
 #include <vector>
 
-#include "core/curve.hpp"
-#include "core/points.hpp"
+#include "cagd/core/curve.hpp"
+#include "cagd/core/points.hpp"
 
 namespace cagd::analysis {
 

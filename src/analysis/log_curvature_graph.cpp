@@ -1,10 +1,10 @@
-#include "analysis/log_curvature_graph.hpp"
+#include "cagd/analysis/log_curvature_graph.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "analysis/curve_measures.hpp"
-#include "core/errors.hpp"
+#include "cagd/analysis/curve_measures.hpp"
+#include "cagd/core/errors.hpp"
 
 namespace cagd::analysis {
 

@@ -23,7 +23,7 @@
 // torsion and LTG: 3-D curves.
 #include <vector>
 
-#include "core/curve.hpp"
+#include "cagd/core/curve.hpp"
 
 namespace cagd::analysis {
 

@@ -1,10 +1,10 @@
-#include "analysis/sampled_curve_measures.hpp"
+#include "cagd/analysis/sampled_curve_measures.hpp"
 
 #include <cmath>
 #include <limits>
 #include <string>
 
-#include "core/errors.hpp"
+#include "cagd/core/errors.hpp"
 
 namespace cagd::analysis {
 

@@ -1,6 +1,6 @@
-#include "analysis/surface_curvature.hpp"
+#include "cagd/analysis/surface_curvature.hpp"
 
-#include "core/errors.hpp"
+#include "cagd/core/errors.hpp"
 
 namespace cagd::analysis {
 

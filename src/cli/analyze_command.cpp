@@ -7,16 +7,16 @@
 #include <iostream>
 #include <memory>
 
-#include "analysis/curve_measures.hpp"
-#include "analysis/log_curvature_graph.hpp"
-#include "analysis/sampled_curve_measures.hpp"
-#include "cli/commands.hpp"
-#include "cli/method_options.hpp"
-#include "cli/output.hpp"
-#include "core/csv.hpp"
-#include "core/errors.hpp"
-#include "core/point_csv.hpp"
-#include "methods/method_registry.hpp"
+#include "cagd/analysis/curve_measures.hpp"
+#include "cagd/analysis/log_curvature_graph.hpp"
+#include "cagd/analysis/sampled_curve_measures.hpp"
+#include "cagd/cli/commands.hpp"
+#include "cagd/cli/method_options.hpp"
+#include "cagd/cli/output.hpp"
+#include "cagd/core/csv.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/core/point_csv.hpp"
+#include "cagd/methods/method_registry.hpp"
 
 namespace cagd::cli {
 

@@ -11,13 +11,13 @@
 #include <memory>
 #include <sstream>
 
-#include "cli/commands.hpp"
-#include "cli/compare_panels_script.hpp"
-#include "cli/output.hpp"
-#include "compare/method_comparison.hpp"
-#include "core/csv.hpp"
-#include "core/errors.hpp"
-#include "core/point_csv.hpp"
+#include "cagd/cli/commands.hpp"
+#include "cagd/cli/compare_panels_script.hpp"
+#include "cagd/cli/output.hpp"
+#include "cagd/compare/method_comparison.hpp"
+#include "cagd/core/csv.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/core/point_csv.hpp"
 
 namespace cagd::cli {
 

@@ -6,10 +6,10 @@
 #include <memory>
 #include <numbers>
 
-#include "cli/commands.hpp"
-#include "cli/output.hpp"
-#include "core/errors.hpp"
-#include "fairness/pseudo_energy_minimum.hpp"
+#include "cagd/cli/commands.hpp"
+#include "cagd/cli/output.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/fairness/pseudo_energy_minimum.hpp"
 
 namespace cagd::cli {
 

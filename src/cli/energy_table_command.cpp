@@ -4,10 +4,10 @@
 #include <cstdio>
 #include <memory>
 
-#include "cli/commands.hpp"
-#include "cli/output.hpp"
-#include "core/errors.hpp"
-#include "fairness/pseudo_energy_table.hpp"
+#include "cagd/cli/commands.hpp"
+#include "cagd/cli/output.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/fairness/pseudo_energy_table.hpp"
 
 namespace cagd::cli {
 

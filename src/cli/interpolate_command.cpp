@@ -6,14 +6,14 @@
 #include <iostream>
 #include <memory>
 
-#include "cli/commands.hpp"
-#include "cli/curve_output.hpp"
-#include "cli/method_options.hpp"
-#include "cli/output.hpp"
-#include "core/csv.hpp"
-#include "core/errors.hpp"
-#include "core/point_csv.hpp"
-#include "methods/method_registry.hpp"
+#include "cagd/cli/commands.hpp"
+#include "cagd/cli/curve_output.hpp"
+#include "cagd/cli/method_options.hpp"
+#include "cagd/cli/output.hpp"
+#include "cagd/core/csv.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/core/point_csv.hpp"
+#include "cagd/methods/method_registry.hpp"
 
 namespace cagd::cli {
 

@@ -7,14 +7,14 @@
 #include <memory>
 #include <numbers>
 
-#include "aesthetic/typical_bezier.hpp"
-#include "analysis/curve_measures.hpp"
-#include "analysis/log_curvature_graph.hpp"
-#include "cli/commands.hpp"
-#include "cli/output.hpp"
-#include "core/csv.hpp"
-#include "core/errors.hpp"
-#include "spline/bezier.hpp"
+#include "cagd/aesthetic/typical_bezier.hpp"
+#include "cagd/analysis/curve_measures.hpp"
+#include "cagd/analysis/log_curvature_graph.hpp"
+#include "cagd/cli/commands.hpp"
+#include "cagd/cli/output.hpp"
+#include "cagd/core/csv.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/spline/bezier.hpp"
 
 namespace cagd::cli {
 

@@ -15,9 +15,9 @@
 #include <new>
 #include <vector>
 
-#include "cli/commands.hpp"
-#include "cli/output.hpp"
-#include "core/errors.hpp"
+#include "cagd/cli/commands.hpp"
+#include "cagd/cli/output.hpp"
+#include "cagd/core/errors.hpp"
 
 int main(int argc, char** argv) {
     using namespace cagd::cli;

@@ -1,9 +1,9 @@
-#include "cli/method_options.hpp"
+#include "cagd/cli/method_options.hpp"
 
 #include <set>
 #include <vector>
 
-#include "methods/method_registry.hpp"
+#include "cagd/methods/method_registry.hpp"
 
 namespace cagd::cli {
 

@@ -8,7 +8,7 @@
 #include <map>
 #include <string>
 
-#include "methods/method_parameters.hpp"
+#include "cagd/methods/method_parameters.hpp"
 
 namespace cagd::cli {
 

@@ -7,13 +7,13 @@
 #include <numbers>
 #include <sstream>
 
-#include "aesthetic/cubic_bspline_monotonicity.hpp"
-#include "analysis/curvature_monotonicity.hpp"
-#include "cli/commands.hpp"
-#include "cli/output.hpp"
-#include "core/csv.hpp"
-#include "core/errors.hpp"
-#include "core/point_csv.hpp"
+#include "cagd/aesthetic/cubic_bspline_monotonicity.hpp"
+#include "cagd/analysis/curvature_monotonicity.hpp"
+#include "cagd/cli/commands.hpp"
+#include "cagd/cli/output.hpp"
+#include "cagd/core/csv.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/core/point_csv.hpp"
 
 namespace cagd::cli {
 

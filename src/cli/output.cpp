@@ -1,4 +1,4 @@
-#include "cli/output.hpp"
+#include "cagd/cli/output.hpp"
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -9,9 +9,9 @@
 #include <iostream>
 #include <system_error>
 
-#include "core/csv.hpp"
-#include "core/errors.hpp"
-#include "core/point_csv.hpp"
+#include "cagd/core/csv.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/core/point_csv.hpp"
 
 namespace cagd::cli {
 

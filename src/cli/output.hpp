@@ -19,7 +19,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/points.hpp"
+#include "cagd/core/points.hpp"
 
 namespace cagd::cli {
 

@@ -3,12 +3,12 @@
 // point list.
 #include <memory>
 
-#include "cli/commands.hpp"
-#include "cli/output.hpp"
-#include "core/csv.hpp"
-#include "core/errors.hpp"
-#include "core/point_csv.hpp"
-#include "smoothing/elastic_line.hpp"
+#include "cagd/cli/commands.hpp"
+#include "cagd/cli/output.hpp"
+#include "cagd/core/csv.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/core/point_csv.hpp"
+#include "cagd/smoothing/elastic_line.hpp"
 
 namespace cagd::cli {
 

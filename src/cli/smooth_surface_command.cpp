@@ -4,13 +4,13 @@
 #include <functional>
 #include <memory>
 
-#include "cli/commands.hpp"
-#include "cli/output.hpp"
-#include "core/csv.hpp"
-#include "core/errors.hpp"
-#include "core/point_csv.hpp"
-#include "smoothing/surface_smoothing.hpp"
-#include "surface/hosaka_patch.hpp"
+#include "cagd/cli/commands.hpp"
+#include "cagd/cli/output.hpp"
+#include "cagd/core/csv.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/core/point_csv.hpp"
+#include "cagd/smoothing/surface_smoothing.hpp"
+#include "cagd/surface/hosaka_patch.hpp"
 
 namespace cagd::cli {
 

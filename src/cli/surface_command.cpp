@@ -2,13 +2,13 @@
 // take simple inputs, sampled on a (samples+1)² grid.
 #include <memory>
 
-#include "cli/commands.hpp"
-#include "cli/output.hpp"
-#include "core/csv.hpp"
-#include "core/errors.hpp"
-#include "core/point_csv.hpp"
-#include "surface/boundary_surface.hpp"
-#include "surface/hosaka_patch.hpp"
+#include "cagd/cli/commands.hpp"
+#include "cagd/cli/output.hpp"
+#include "cagd/core/csv.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/core/point_csv.hpp"
+#include "cagd/surface/boundary_surface.hpp"
+#include "cagd/surface/hosaka_patch.hpp"
 
 namespace cagd::cli {
 

@@ -7,12 +7,12 @@
 #include <memory>
 #include <numbers>
 
-#include "aesthetic/typical_surface.hpp"
-#include "analysis/surface_curvature.hpp"
-#include "cli/commands.hpp"
-#include "cli/output.hpp"
-#include "core/csv.hpp"
-#include "core/errors.hpp"
+#include "cagd/aesthetic/typical_surface.hpp"
+#include "cagd/analysis/surface_curvature.hpp"
+#include "cagd/cli/commands.hpp"
+#include "cagd/cli/output.hpp"
+#include "cagd/core/csv.hpp"
+#include "cagd/core/errors.hpp"
 
 namespace cagd::cli {
 

@@ -1,4 +1,4 @@
-#include "compare/method_comparison.hpp"
+#include "cagd/compare/method_comparison.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -9,9 +9,9 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "analysis/curve_measures.hpp"
-#include "core/csv.hpp"
-#include "core/parallel.hpp"
+#include "cagd/analysis/curve_measures.hpp"
+#include "cagd/core/csv.hpp"
+#include "cagd/core/parallel.hpp"
 
 namespace cagd::compare {
 

@@ -25,8 +25,8 @@
 #include <string>
 #include <vector>
 
-#include "analysis/fairness_measures.hpp"
-#include "methods/method_registry.hpp"
+#include "cagd/analysis/fairness_measures.hpp"
+#include "cagd/methods/method_registry.hpp"
 
 namespace cagd::compare {
 

@@ -1,10 +1,10 @@
-#include "core/bernstein_polynomial.hpp"
+#include "cagd/core/bernstein_polynomial.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "core/errors.hpp"
+#include "cagd/core/errors.hpp"
 
 namespace cagd {
 

@@ -1,4 +1,4 @@
-#include "core/csv.hpp"
+#include "cagd/core/csv.hpp"
 
 #include <cctype>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <fstream>
 #include <iostream>
 
-#include "core/errors.hpp"
+#include "cagd/core/errors.hpp"
 
 namespace cagd {
 

@@ -1,11 +1,11 @@
-#include "core/curve.hpp"
+#include "cagd/core/curve.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
-#include "core/errors.hpp"
+#include "cagd/core/errors.hpp"
 
 namespace cagd {
 

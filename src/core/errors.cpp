@@ -1,4 +1,4 @@
-#include "core/errors.hpp"
+#include "cagd/core/errors.hpp"
 
 #include <cstdio>
 

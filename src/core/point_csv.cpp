@@ -1,12 +1,12 @@
-#include "core/point_csv.hpp"
+#include "cagd/core/point_csv.hpp"
 
 #include <cmath>
 #include <fstream>
 #include <sstream>
 #include <vector>
 
-#include "core/csv.hpp"
-#include "core/errors.hpp"
+#include "cagd/core/csv.hpp"
+#include "cagd/core/errors.hpp"
 
 namespace cagd {
 

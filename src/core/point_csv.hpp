@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "core/points.hpp"
+#include "cagd/core/points.hpp"
 
 namespace cagd {
 

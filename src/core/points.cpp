@@ -1,8 +1,8 @@
-#include "core/points.hpp"
+#include "cagd/core/points.hpp"
 
 #include <cmath>
 
-#include "core/errors.hpp"
+#include "cagd/core/errors.hpp"
 
 namespace cagd {
 

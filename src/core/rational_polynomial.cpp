@@ -1,8 +1,8 @@
-#include "core/rational_polynomial.hpp"
+#include "cagd/core/rational_polynomial.hpp"
 
 #include <sstream>
 
-#include "core/errors.hpp"
+#include "cagd/core/errors.hpp"
 
 namespace cagd {
 

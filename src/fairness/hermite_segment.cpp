@@ -1,4 +1,4 @@
-#include "fairness/hermite_segment.hpp"
+#include "cagd/fairness/hermite_segment.hpp"
 
 #include <algorithm>
 #include <array>
@@ -6,8 +6,8 @@
 #include <limits>
 #include <numbers>
 
-#include "numeric/gauss_legendre.hpp"
-#include "numeric/romberg.hpp"
+#include "cagd/numeric/gauss_legendre.hpp"
+#include "cagd/numeric/romberg.hpp"
 
 namespace cagd::fairness {
 

@@ -34,8 +34,8 @@
 #include <string>
 #include <vector>
 
-#include "core/errors.hpp"
-#include "spline/bezier.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/spline/bezier.hpp"
 
 namespace cagd::fairness {
 

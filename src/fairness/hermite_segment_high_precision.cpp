@@ -2,7 +2,7 @@
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
-#include "fairness/hermite_segment.hpp"
+#include "cagd/fairness/hermite_segment.hpp"
 
 namespace cagd::fairness {
 

@@ -1,4 +1,4 @@
-#include "fairness/pseudo_energy_minimum.hpp"
+#include "cagd/fairness/pseudo_energy_minimum.hpp"
 
 #include <ceres/gradient_problem.h>
 #include <ceres/gradient_problem_solver.h>

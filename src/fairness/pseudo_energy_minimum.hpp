@@ -39,8 +39,8 @@
 #include <numbers>
 #include <vector>
 
-#include "core/errors.hpp"
-#include "fairness/hermite_segment.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/fairness/hermite_segment.hpp"
 
 namespace cagd::fairness {
 

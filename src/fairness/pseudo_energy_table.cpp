@@ -1,4 +1,4 @@
-#include "fairness/pseudo_energy_table.hpp"
+#include "cagd/fairness/pseudo_energy_table.hpp"
 
 #include <unistd.h>
 #include <algorithm>
@@ -12,7 +12,7 @@
 #include <sstream>
 #include <thread>
 
-#include "core/parallel.hpp"
+#include "cagd/core/parallel.hpp"
 
 namespace cagd::fairness {
 

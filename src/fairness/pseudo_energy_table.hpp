@@ -34,7 +34,7 @@
 #include <utility>
 #include <vector>
 
-#include "fairness/pseudo_energy_minimum.hpp"
+#include "cagd/fairness/pseudo_energy_minimum.hpp"
 
 namespace cagd::fairness {
 

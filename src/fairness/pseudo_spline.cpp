@@ -1,4 +1,4 @@
-#include "fairness/pseudo_spline.hpp"
+#include "cagd/fairness/pseudo_spline.hpp"
 
 #include <algorithm>
 #include <boost/math/tools/minima.hpp>
@@ -8,7 +8,7 @@
 #include <numbers>
 #include <string>
 
-#include "core/errors.hpp"
+#include "cagd/core/errors.hpp"
 
 namespace cagd::fairness {
 

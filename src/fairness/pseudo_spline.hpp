@@ -59,9 +59,9 @@
 #include <utility>
 #include <vector>
 
-#include "core/points.hpp"
-#include "fairness/pseudo_energy_table.hpp"
-#include "spline/hermite_spline.hpp"
+#include "cagd/core/points.hpp"
+#include "cagd/fairness/pseudo_energy_table.hpp"
+#include "cagd/spline/hermite_spline.hpp"
 
 namespace cagd::fairness {
 

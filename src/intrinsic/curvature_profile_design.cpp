@@ -1,4 +1,4 @@
-#include "intrinsic/curvature_profile_design.hpp"
+#include "cagd/intrinsic/curvature_profile_design.hpp"
 
 #include <ceres/ceres.h>
 #include <ceres/jet.h>
@@ -10,9 +10,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "analysis/curve_measures.hpp"
-#include "intrinsic/detail/bezier_extraction.hpp"
-#include "spline/hermite_spline.hpp"
+#include "cagd/analysis/curve_measures.hpp"
+#include "cagd/intrinsic/detail/bezier_extraction.hpp"
+#include "cagd/spline/hermite_spline.hpp"
 
 namespace cagd::intrinsic {
 

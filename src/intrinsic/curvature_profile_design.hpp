@@ -50,10 +50,10 @@
 #include <string>
 #include <vector>
 
-#include "core/errors.hpp"
-#include "core/points.hpp"
-#include "intrinsic/intrinsic_curve.hpp"
-#include "intrinsic/knot_difference_list.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/core/points.hpp"
+#include "cagd/intrinsic/intrinsic_curve.hpp"
+#include "cagd/intrinsic/knot_difference_list.hpp"
 
 namespace cagd::intrinsic {
 

@@ -1,4 +1,4 @@
-#include "intrinsic/design_verification.hpp"
+#include "cagd/intrinsic/design_verification.hpp"
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <cmath>

@@ -10,7 +10,7 @@
 //   g2_curvature_jump     max |κ(w_g^+) − κ(w_g^−)| over breakpoints of continuity ≥ G2;
 //   g1_curvature_jump     max |κ(w_g^+) − κ(w_g^−)| over G1 breakpoints (may be large: κ may jump);
 //   closing_angle, closing_curvature   ψ(L) − ψ(0) − 2π·turns and κ(L) − κ(0) (closed; else 0).
-#include "intrinsic/curvature_profile_design.hpp"
+#include "cagd/intrinsic/curvature_profile_design.hpp"
 
 namespace cagd::intrinsic {
 

@@ -1,9 +1,9 @@
-#include "intrinsic/intrinsic_curve.hpp"
+#include "cagd/intrinsic/intrinsic_curve.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "core/errors.hpp"
+#include "cagd/core/errors.hpp"
 
 namespace cagd::intrinsic {
 

@@ -9,8 +9,8 @@
 #include <Eigen/Dense>
 #include <vector>
 
-#include "core/curve.hpp"
-#include "intrinsic/tangent_angle_spline.hpp"
+#include "cagd/core/curve.hpp"
+#include "cagd/intrinsic/tangent_angle_spline.hpp"
 
 namespace cagd::intrinsic {
 

@@ -1,4 +1,4 @@
-#include "intrinsic/knot_difference_list.hpp"
+#include "cagd/intrinsic/knot_difference_list.hpp"
 
 #include <cctype>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <map>
 
-#include "core/errors.hpp"
+#include "cagd/core/errors.hpp"
 
 namespace cagd::intrinsic {
 

@@ -1,13 +1,13 @@
-#include "intrinsic/tangent_angle_spline.hpp"
+#include "cagd/intrinsic/tangent_angle_spline.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "core/bernstein_polynomial.hpp"
-#include "core/errors.hpp"
-#include "intrinsic/detail/bezier_extraction.hpp"
-#include "numeric/gauss_legendre.hpp"
-#include "spline/bspline.hpp"
+#include "cagd/core/bernstein_polynomial.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/intrinsic/detail/bezier_extraction.hpp"
+#include "cagd/numeric/gauss_legendre.hpp"
+#include "cagd/spline/bspline.hpp"
 
 namespace cagd::intrinsic {
 

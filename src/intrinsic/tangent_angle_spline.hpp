@@ -20,7 +20,7 @@
 #include <Eigen/Dense>
 #include <vector>
 
-#include "intrinsic/knot_difference_list.hpp"
+#include "cagd/intrinsic/knot_difference_list.hpp"
 
 namespace cagd::intrinsic {
 

@@ -1,4 +1,4 @@
-#include "locality/locality_spline.hpp"
+#include "cagd/locality/locality_spline.hpp"
 
 #include <Eigen/SparseLU>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <optional>
 #include <sstream>
 
-#include "core/errors.hpp"
+#include "cagd/core/errors.hpp"
 
 namespace cagd::locality {
 

@@ -37,8 +37,8 @@
 #include <string>
 #include <vector>
 
-#include "core/points.hpp"
-#include "spline/bspline.hpp"
+#include "cagd/core/points.hpp"
+#include "cagd/spline/bspline.hpp"
 
 namespace cagd::locality {
 

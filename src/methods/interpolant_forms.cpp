@@ -1,4 +1,4 @@
-#include "methods/interpolant_forms.hpp"
+#include "cagd/methods/interpolant_forms.hpp"
 
 #include <array>
 #include <cmath>
@@ -9,7 +9,7 @@ using std::isnan;
 #include <boost/math/interpolators/makima.hpp>
 #include <boost/math/interpolators/pchip.hpp>
 
-#include "spline/hermite_spline.hpp"
+#include "cagd/spline/hermite_spline.hpp"
 
 namespace cagd::methods {
 

@@ -5,9 +5,9 @@
 #include <memory>
 #include <vector>
 
-#include "core/curve.hpp"
-#include "core/points.hpp"
-#include "methods/method_registry.hpp"
+#include "cagd/core/curve.hpp"
+#include "cagd/core/points.hpp"
+#include "cagd/methods/method_registry.hpp"
 
 namespace cagd::methods {
 

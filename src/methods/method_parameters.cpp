@@ -1,11 +1,11 @@
-#include "methods/method_parameters.hpp"
+#include "cagd/methods/method_parameters.hpp"
 
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
 
-#include "core/csv.hpp"
-#include "core/errors.hpp"
+#include "cagd/core/csv.hpp"
+#include "cagd/core/errors.hpp"
 
 namespace cagd::methods {
 

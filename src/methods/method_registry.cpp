@@ -1,17 +1,17 @@
-#include "methods/method_registry.hpp"
+#include "cagd/methods/method_registry.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
 
-#include "fairness/pseudo_spline.hpp"
-#include "intrinsic/curvature_profile_design.hpp"
-#include "intrinsic/knot_difference_list.hpp"
-#include "locality/locality_spline.hpp"
-#include "methods/interpolant_forms.hpp"
-#include "spline/hermite_spline.hpp"
-#include "spline/hosaka_spline.hpp"
+#include "cagd/fairness/pseudo_spline.hpp"
+#include "cagd/intrinsic/curvature_profile_design.hpp"
+#include "cagd/intrinsic/knot_difference_list.hpp"
+#include "cagd/locality/locality_spline.hpp"
+#include "cagd/methods/interpolant_forms.hpp"
+#include "cagd/spline/hermite_spline.hpp"
+#include "cagd/spline/hosaka_spline.hpp"
 
 namespace cagd::methods {
 

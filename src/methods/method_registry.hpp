@@ -52,10 +52,10 @@
 #include <utility>
 #include <vector>
 
-#include "core/curve.hpp"
-#include "core/errors.hpp"
-#include "core/points.hpp"
-#include "methods/method_parameters.hpp"
+#include "cagd/core/curve.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/core/points.hpp"
+#include "cagd/methods/method_parameters.hpp"
 
 namespace cagd::methods {
 

@@ -1,10 +1,10 @@
-#include "numeric/alexa_product.hpp"
+#include "cagd/numeric/alexa_product.hpp"
 
 #include <cmath>
 #include <string>
 #include <unsupported/Eigen/MatrixFunctions>
 
-#include "core/errors.hpp"
+#include "cagd/core/errors.hpp"
 
 namespace cagd::numeric {
 

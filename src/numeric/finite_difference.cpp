@@ -1,10 +1,10 @@
-#include "numeric/finite_difference.hpp"
+#include "cagd/numeric/finite_difference.hpp"
 
 #include <Eigen/Dense>
 #include <cmath>
 #include <string>
 
-#include "core/errors.hpp"
+#include "cagd/core/errors.hpp"
 
 namespace cagd::numeric {
 

@@ -1,9 +1,9 @@
-#include "numeric/gauss_legendre.hpp"
+#include "cagd/numeric/gauss_legendre.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <cmath>
 
-#include "core/errors.hpp"
+#include "cagd/core/errors.hpp"
 
 namespace cagd::numeric {
 

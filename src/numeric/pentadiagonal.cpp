@@ -1,8 +1,8 @@
-#include "numeric/pentadiagonal.hpp"
+#include "cagd/numeric/pentadiagonal.hpp"
 
 #include <string>
 
-#include "core/errors.hpp"
+#include "cagd/core/errors.hpp"
 
 namespace cagd::numeric {
 

@@ -1,8 +1,8 @@
-#include "numeric/rational.hpp"
+#include "cagd/numeric/rational.hpp"
 
 #include <cmath>
 
-#include "core/errors.hpp"
+#include "cagd/core/errors.hpp"
 
 namespace cagd::numeric {
 

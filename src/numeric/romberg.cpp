@@ -1,4 +1,4 @@
-#include "numeric/romberg.hpp"
+#include "cagd/numeric/romberg.hpp"
 
 #include <cmath>
 #include <string>

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "core/errors.hpp"
+#include "cagd/core/errors.hpp"
 
 namespace cagd::numeric {
 

@@ -1,9 +1,9 @@
-#include "numeric/taylor_jet.hpp"
+#include "cagd/numeric/taylor_jet.hpp"
 
 #include <algorithm>
 #include <string>
 
-#include "core/errors.hpp"
+#include "cagd/core/errors.hpp"
 
 namespace cagd::numeric {
 

@@ -1,8 +1,8 @@
-#include "numeric/tridiagonal.hpp"
+#include "cagd/numeric/tridiagonal.hpp"
 
 #include <string>
 
-#include "core/errors.hpp"
+#include "cagd/core/errors.hpp"
 
 namespace cagd::numeric {
 

@@ -1,4 +1,4 @@
-#include "repro/artifact_run.hpp"
+#include "cagd/repro/artifact_run.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -6,7 +6,7 @@
 #include <fstream>
 #include <iostream>
 
-#include "core/errors.hpp"
+#include "cagd/core/errors.hpp"
 
 #ifndef CAGD_SOURCE_DIR
 #define CAGD_SOURCE_DIR "."

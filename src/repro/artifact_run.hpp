@@ -21,8 +21,8 @@
 #include <string>
 #include <vector>
 
-#include "core/csv.hpp"
-#include "repro/reference.hpp"
+#include "cagd/core/csv.hpp"
+#include "cagd/repro/reference.hpp"
 
 namespace cagd::repro {
 

@@ -1,8 +1,8 @@
-#include "repro/comparison_record.hpp"
+#include "cagd/repro/comparison_record.hpp"
 
 #include <cmath>
 
-#include "analysis/curve_measures.hpp"
+#include "cagd/analysis/curve_measures.hpp"
 
 namespace cagd::repro {
 

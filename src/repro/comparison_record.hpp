@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "compare/method_comparison.hpp"
-#include "repro/artifact_run.hpp"
+#include "cagd/compare/method_comparison.hpp"
+#include "cagd/repro/artifact_run.hpp"
 
 namespace cagd::repro {
 

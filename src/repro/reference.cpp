@@ -1,10 +1,10 @@
-#include "repro/reference.hpp"
+#include "cagd/repro/reference.hpp"
 
 #include <fstream>
 #include <set>
 
-#include "core/csv.hpp"
-#include "core/errors.hpp"
+#include "cagd/core/csv.hpp"
+#include "cagd/core/errors.hpp"
 
 namespace cagd::repro {
 

@@ -1,4 +1,4 @@
-#include "repro/report.hpp"
+#include "cagd/repro/report.hpp"
 
 #include <algorithm>
 #include <filesystem>
@@ -7,8 +7,8 @@
 #include <map>
 #include <sstream>
 
-#include "core/csv.hpp"
-#include "core/errors.hpp"
+#include "cagd/core/csv.hpp"
+#include "cagd/core/errors.hpp"
 
 namespace cagd::repro {
 

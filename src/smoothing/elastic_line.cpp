@@ -1,4 +1,4 @@
-#include "smoothing/elastic_line.hpp"
+#include "cagd/smoothing/elastic_line.hpp"
 
 #include <Eigen/Sparse>
 #include <algorithm>
@@ -6,10 +6,10 @@
 #include <set>
 #include <string>
 
-#include "numeric/gauss_legendre.hpp"
-#include "numeric/pentadiagonal.hpp"
-#include "numeric/tridiagonal.hpp"
-#include "spline/hosaka_basis.hpp"
+#include "cagd/numeric/gauss_legendre.hpp"
+#include "cagd/numeric/pentadiagonal.hpp"
+#include "cagd/numeric/tridiagonal.hpp"
+#include "cagd/spline/hosaka_basis.hpp"
 
 namespace cagd::smoothing {
 

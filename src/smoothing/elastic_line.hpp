@@ -32,9 +32,9 @@
 #include <optional>
 #include <vector>
 
-#include "core/errors.hpp"
-#include "core/points.hpp"
-#include "spline/hosaka_spline.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/core/points.hpp"
+#include "cagd/spline/hosaka_spline.hpp"
 
 namespace cagd::smoothing {
 

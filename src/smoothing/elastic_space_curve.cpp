@@ -1,4 +1,4 @@
-#include "smoothing/elastic_space_curve.hpp"
+#include "cagd/smoothing/elastic_space_curve.hpp"
 
 #include <ceres/ceres.h>
 
@@ -7,8 +7,8 @@
 #include <cmath>
 #include <string>
 
-#include "numeric/gauss_legendre.hpp"
-#include "smoothing/elastic_line.hpp"
+#include "cagd/numeric/gauss_legendre.hpp"
+#include "cagd/smoothing/elastic_line.hpp"
 
 namespace cagd::smoothing {
 

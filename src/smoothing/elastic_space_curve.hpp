@@ -18,8 +18,8 @@
 #include <Eigen/Dense>
 #include <vector>
 
-#include "core/curve.hpp"
-#include "core/errors.hpp"
+#include "cagd/core/curve.hpp"
+#include "cagd/core/errors.hpp"
 
 namespace cagd::smoothing {
 

@@ -1,4 +1,4 @@
-#include "smoothing/surface_smoothing.hpp"
+#include "cagd/smoothing/surface_smoothing.hpp"
 
 #include <Eigen/Sparse>
 #include <algorithm>
@@ -6,10 +6,10 @@
 #include <numeric>
 #include <string>
 
-#include "core/errors.hpp"
-#include "core/points.hpp"
-#include "numeric/gauss_legendre.hpp"
-#include "smoothing/elastic_line.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/core/points.hpp"
+#include "cagd/numeric/gauss_legendre.hpp"
+#include "cagd/smoothing/elastic_line.hpp"
 
 namespace cagd::smoothing {
 

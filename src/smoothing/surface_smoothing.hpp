@@ -42,9 +42,9 @@
 #include <Eigen/Dense>
 #include <vector>
 
-#include "spline/hosaka_basis.hpp"
-#include "spline/hosaka_spline.hpp"
-#include "surface/hosaka_patch.hpp"
+#include "cagd/spline/hosaka_basis.hpp"
+#include "cagd/spline/hosaka_spline.hpp"
+#include "cagd/surface/hosaka_patch.hpp"
 
 namespace cagd::smoothing {
 

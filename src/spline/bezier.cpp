@@ -1,9 +1,9 @@
-#include "spline/bezier.hpp"
+#include "cagd/spline/bezier.hpp"
 
 #include <cmath>
 
-#include "core/bernstein_polynomial.hpp"
-#include "core/errors.hpp"
+#include "cagd/core/bernstein_polynomial.hpp"
+#include "cagd/core/errors.hpp"
 
 namespace cagd {
 

@@ -14,7 +14,7 @@
 #include <Eigen/Dense>
 #include <vector>
 
-#include "core/curve.hpp"
+#include "cagd/core/curve.hpp"
 
 namespace cagd {
 

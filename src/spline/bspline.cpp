@@ -1,10 +1,10 @@
-#include "spline/bspline.hpp"
+#include "cagd/spline/bspline.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
-#include "core/errors.hpp"
+#include "cagd/core/errors.hpp"
 
 namespace cagd {
 

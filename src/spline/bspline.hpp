@@ -17,8 +17,8 @@
 #include <Eigen/Dense>
 #include <vector>
 
-#include "core/curve.hpp"
-#include "spline/bezier.hpp"
+#include "cagd/core/curve.hpp"
+#include "cagd/spline/bezier.hpp"
 
 namespace cagd {
 

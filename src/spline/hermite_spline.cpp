@@ -1,10 +1,10 @@
-#include "spline/hermite_spline.hpp"
+#include "cagd/spline/hermite_spline.hpp"
 
 #include <cmath>
 #include <string>
 
-#include "core/errors.hpp"
-#include "numeric/tridiagonal.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/numeric/tridiagonal.hpp"
 
 namespace cagd::spline {
 

@@ -40,8 +40,8 @@
 #include <Eigen/Dense>
 #include <vector>
 
-#include "core/curve.hpp"
-#include "core/points.hpp"
+#include "cagd/core/curve.hpp"
+#include "cagd/core/points.hpp"
 
 namespace cagd::spline {
 

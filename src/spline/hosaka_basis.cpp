@@ -1,8 +1,8 @@
-#include "spline/hosaka_basis.hpp"
+#include "cagd/spline/hosaka_basis.hpp"
 
 #include <string>
 
-#include "core/errors.hpp"
+#include "cagd/core/errors.hpp"
 
 namespace cagd::spline {
 

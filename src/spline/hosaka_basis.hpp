@@ -14,7 +14,7 @@
 // Preconditions: m ≥ 0, 0 ≤ i ≤ m, derivative order k ≥ 0 (InvalidInput otherwise).
 #include <vector>
 
-#include "core/rational_polynomial.hpp"
+#include "cagd/core/rational_polynomial.hpp"
 
 namespace cagd::spline {
 

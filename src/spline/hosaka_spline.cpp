@@ -1,13 +1,13 @@
-#include "spline/hosaka_spline.hpp"
+#include "cagd/spline/hosaka_spline.hpp"
 
 #include <Eigen/Sparse>
 #include <algorithm>
 #include <cmath>
 #include <string>
 
-#include "core/errors.hpp"
-#include "core/points.hpp"
-#include "numeric/tridiagonal.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/core/points.hpp"
+#include "cagd/numeric/tridiagonal.hpp"
 
 namespace cagd::spline {
 

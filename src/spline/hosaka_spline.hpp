@@ -25,9 +25,9 @@
 #include <Eigen/Dense>
 #include <vector>
 
-#include "core/curve.hpp"
-#include "core/points.hpp"
-#include "spline/hosaka_basis.hpp"
+#include "cagd/core/curve.hpp"
+#include "cagd/core/points.hpp"
+#include "cagd/spline/hosaka_basis.hpp"
 
 namespace cagd::spline {
 

@@ -1,11 +1,11 @@
-#include "surface/bezier_patch.hpp"
+#include "cagd/surface/bezier_patch.hpp"
 
 #include <cmath>
 #include <string>
 
-#include "core/bernstein_polynomial.hpp"
-#include "core/errors.hpp"
-#include "spline/bezier.hpp"
+#include "cagd/core/bernstein_polynomial.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/spline/bezier.hpp"
 
 namespace cagd::surface {
 

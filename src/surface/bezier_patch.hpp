@@ -14,7 +14,7 @@
 #include <array>
 #include <vector>
 
-#include "analysis/surface_curvature.hpp"
+#include "cagd/analysis/surface_curvature.hpp"
 
 namespace cagd::surface {
 

@@ -1,11 +1,11 @@
-#include "surface/boundary_surface.hpp"
+#include "cagd/surface/boundary_surface.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
 
-#include "core/errors.hpp"
+#include "cagd/core/errors.hpp"
 
 namespace cagd::surface {
 

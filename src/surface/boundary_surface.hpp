@@ -38,11 +38,11 @@
 #include <memory>
 #include <vector>
 
-#include "core/points.hpp"
-#include "core/rational_polynomial.hpp"
-#include "numeric/taylor_jet.hpp"
-#include "spline/hosaka_basis.hpp"
-#include "spline/hosaka_spline.hpp"
+#include "cagd/core/points.hpp"
+#include "cagd/core/rational_polynomial.hpp"
+#include "cagd/numeric/taylor_jet.hpp"
+#include "cagd/spline/hosaka_basis.hpp"
+#include "cagd/spline/hosaka_spline.hpp"
 
 namespace cagd::surface {
 

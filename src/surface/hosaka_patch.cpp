@@ -1,4 +1,4 @@
-#include "surface/hosaka_patch.hpp"
+#include "cagd/surface/hosaka_patch.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +6,8 @@
 #include <set>
 #include <string>
 
-#include "core/errors.hpp"
-#include "core/points.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/core/points.hpp"
 
 namespace cagd::surface {
 

@@ -37,10 +37,10 @@
 #include <memory>
 #include <vector>
 
-#include "core/curve.hpp"
-#include "core/points.hpp"
-#include "spline/hosaka_basis.hpp"
-#include "spline/hosaka_spline.hpp"
+#include "cagd/core/curve.hpp"
+#include "cagd/core/points.hpp"
+#include "cagd/spline/hosaka_basis.hpp"
+#include "cagd/spline/hosaka_spline.hpp"
 
 namespace cagd::surface {
 

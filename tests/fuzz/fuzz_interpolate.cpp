@@ -10,8 +10,8 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "core/errors.hpp"
-#include "methods/method_registry.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/methods/method_registry.hpp"
 
 // Build the per-process caches (the pseudo-spline's 36-node table: seconds under ASan) before the
 // first timed input.

@@ -12,13 +12,13 @@
 #include <sstream>
 #include <string>
 
-#include "core/csv.hpp"
-#include "core/errors.hpp"
-#include "core/point_csv.hpp"
-#include "intrinsic/curvature_profile_design.hpp"
-#include "intrinsic/knot_difference_list.hpp"
-#include "locality/locality_spline.hpp"
-#include "methods/method_registry.hpp"
+#include "cagd/core/csv.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/core/point_csv.hpp"
+#include "cagd/intrinsic/curvature_profile_design.hpp"
+#include "cagd/intrinsic/knot_difference_list.hpp"
+#include "cagd/locality/locality_spline.hpp"
+#include "cagd/methods/method_registry.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     using namespace cagd;

@@ -1,0 +1,113 @@
+"""cagd — interpolating curves from five Japanese CAGD papers (cagd-repro), from Python.
+
+Every value is computed by the C++ library (the same code as the ``cagd`` command and the
+reproduction harness); this package only converts NumPy arrays and names.
+
+Methods
+    methods()                       the registry: name, paper, parameters, presets, claims
+    interpolate(points, method, closed=False, **params) -> Curve
+    interpolate_result(...)         -> Interpolation (status, message, curve, method's report)
+
+Curves (``Curve``)
+    evaluate(t, derivatives=0)      positions (m, dim) or jets (m, k + 1, dim), vectorised
+    curvature(t), torsion(t)        signed κ for planar curves, |κ| in space; τ (space)
+    arc_length(), area(), bending_energy(), parameter_range, node_parameters, breakpoints()
+
+The rest of the library
+    compare(points, closed=False, methods=None)   the measures of ``cagd compare`` as arrays
+    pseudo_energy(theta0, theta1, method="fast"), segment_measures(...), PseudoEnergyTable
+    log_aesthetic_curve, normalized_log_aesthetic_curve, log_aesthetic_space_curve
+    typical_curve, space_typical_curve            typical Bézier curves (typical_curves)
+    elastic_line, smooth_curve, elastic_space_curve   Hosaka's smoothing (section 6)
+
+Errors
+    Bad input raises ``ValueError`` with the library's message (naming the value and what is
+    allowed). A numerical outcome for valid input — no solution, no convergence (e.g. the
+    curvature-profile Newton) — raises ``cagd.NoSolution`` (a ``RuntimeError``) from the functions
+    that return a result; ``interpolate_result`` returns it as a status instead.
+
+Parameters of a method are given as keyword arguments, with ``_`` for ``-`` in their names
+(``interpolate(p, "s-spline", m=3, ends="free")``); they are checked by the registry exactly as
+the command line's options are.
+"""
+import numpy as _np
+
+from ._cagd import (  # noqa: F401  (re-exported)
+    Curve,
+    ExplicitSpline,
+    Interpolation,
+    NoSolution,
+    PseudoEnergyTable,
+    elastic_line,
+    elastic_space_curve,
+    log_aesthetic_curve,
+    log_aesthetic_space_curve,
+    normalized_log_aesthetic_curve,
+    pseudo_energy,
+    segment_measures,
+    smooth_curve,
+    space_typical_curve,
+    typical_curve,
+)
+from . import _cagd
+
+__all__ = [
+    "Curve", "ExplicitSpline", "Interpolation", "NoSolution", "PseudoEnergyTable",
+    "methods", "interpolate", "interpolate_result", "compare",
+    "pseudo_energy", "segment_measures",
+    "log_aesthetic_curve", "normalized_log_aesthetic_curve", "log_aesthetic_space_curve",
+    "typical_curve", "space_typical_curve",
+    "elastic_line", "smooth_curve", "elastic_space_curve",
+]
+
+
+def methods():
+    """The registry of interpolation methods, in the order of the tables: a list of dicts with
+    name, aliases, paper, source, summary, parameters (name, type, default, domain, help),
+    presets (the comparison's configurations) and claims (at the default parameters)."""
+    return _cagd._methods()
+
+
+def _points(points):
+    a = _np.asarray(points, dtype=float)
+    if a.ndim != 2 or a.shape[1] not in (2, 3):
+        raise ValueError(f"points: expected an (n, 2) or (n, 3) array, got shape {a.shape}")
+    return a
+
+
+def interpolate_result(points, method, closed=False, **params):
+    """The interpolation with its outcome: an ``Interpolation`` whose ``status`` is "ok" (and
+    ``curve`` the curve) or the numerical outcome ("no_solution", "no_convergence") with its
+    ``message``; ``report`` and ``quantities`` hold what the method reports (e.g. the
+    curvature-profile Newton history, the pseudo-spline's table length and area).
+    Bad input raises ValueError."""
+    return _cagd._interpolate_result(_points(points), str(method), bool(closed), **params)
+
+
+def interpolate(points, method, closed=False, **params):
+    """The curve of ``method`` (a name of ``methods()`` or a preset such as "s-spline-m2") through
+    ``points`` ((n, 2) or (n, 3)). Raises ValueError for bad input and NoSolution when the method
+    finds no curve for valid input."""
+    r = interpolate_result(points, method, closed, **params)
+    if not r.ok:
+        raise NoSolution(f"{method}: {r.message}")
+    return r.curve
+
+
+def compare(points, closed=False, methods=None, locality=True, threads=0):
+    """Every method (or the named configurations) on the same planar points, measured as by
+    ``cagd compare``: a dict of arrays, one entry per configuration. ``method``, ``status``
+    ("ok", "not applicable", "no result", "cusp") and ``note`` are lists of str; each measure
+    (length, area, pseudo_energy, bending_energy, curvature_sign_changes, max_abs_curvature,
+    max_abs_curvature_derivative, overshoot, spans, locality_footprint, seconds) is a
+    ``numpy.ma.MaskedArray``, masked where the measure does not exist (method not applicable, no
+    result, a cusp's curvature, an open curve's area), never NaN."""
+    raw = _cagd._compare(_points(points), bool(closed), list(methods or []), bool(locality), int(threads))
+    out = {}
+    for name, value in raw.items():
+        if isinstance(value, tuple):
+            values, valid = value
+            out[name] = _np.ma.MaskedArray(values, mask=~valid)
+        else:
+            out[name] = value
+    return out

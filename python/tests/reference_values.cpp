@@ -1,0 +1,103 @@
+// The C++ side of the Python module's test (python/tests/test_cagd.py): the library's
+// values for the computations the test repeats through `cagd`, one "key value" line each, with
+// 17 significant digits. Usage: python_reference_values SOURCE_DIR
+//
+// Data: the pseudo_energy paper's Table 1 points (open and closed), and the same points lifted to
+// 3-D by z = (x − y)/4 (exact in binary floating point, so Python forms the same numbers).
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cagd/aesthetic/log_aesthetic_curve.hpp"
+#include "cagd/aesthetic/typical_bezier.hpp"
+#include "cagd/analysis/curve_measures.hpp"
+#include "cagd/analysis/log_curvature_graph.hpp"
+#include "cagd/compare/method_comparison.hpp"
+#include "cagd/core/point_csv.hpp"
+#include "cagd/fairness/pseudo_energy_minimum.hpp"
+#include "cagd/methods/method_registry.hpp"
+#include "cagd/smoothing/elastic_line.hpp"
+#include "cagd/spline/bezier.hpp"
+
+namespace {
+
+void put(const std::string& key, double value) { std::printf("%s %.17g\n", key.c_str(), value); }
+
+// The fractions of the parameter range the test evaluates at.
+const double kFractions[] = {0.0, 0.1, 0.37, 0.5, 0.93, 1.0};
+
+void curve_values(const std::string& key, const cagd::Curve& c) {
+    put(key + ".length", cagd::analysis::accurate_arc_length(c).value);
+    if (c.dimension() == 2) put(key + ".area", cagd::analysis::area_closed_by_chord(c));
+    put(key + ".bending_energy", cagd::analysis::bending_energy(c));
+    for (int f = 0; f < 6; ++f) {
+        const double t = c.t_min() + kFractions[f] * (c.t_max() - c.t_min());
+        const Eigen::MatrixXd jet = c.jet(t, 2);
+        for (int r = 0; r < 3; ++r)
+            for (int d = 0; d < c.dimension(); ++d) put(key + ".jet" + std::to_string(f) + "." + std::to_string(r) + "." + std::to_string(d), jet(r, d));
+        put(key + ".curvature" + std::to_string(f), c.dimension() == 2 ? cagd::analysis::signed_curvature(c, t) : cagd::analysis::curvature(c, t));
+        if (c.dimension() == 3) put(key + ".torsion" + std::to_string(f), cagd::analysis::torsion(c, t));
+    }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc != 2) {
+        std::cerr << "usage: python_reference_values SOURCE_DIR\n";
+        return 2;
+    }
+    const cagd::PointList plane = cagd::read_points_csv(std::string(argv[1]) + "/reference/pseudo_energy/data/table1.csv");
+    cagd::PointList space(plane.rows(), 3);
+    space.leftCols(2) = plane;
+    space.col(2) = (plane.col(0) - plane.col(1)) / 4.0;
+
+    for (const cagd::methods::Method& m : cagd::methods::registry()) {
+        const cagd::methods::ParameterValues defaults = cagd::methods::parse_parameter_values(m.name, m.parameters, {});
+        const cagd::methods::MethodClaims claims = m.claims(defaults);
+        for (const bool closed : {false, true}) {
+            if (closed && !claims.supports_closed) continue;
+            for (const int dim : {2, 3}) {
+                if (dim > claims.max_dimension) continue;
+                const cagd::methods::InterpolationResult r = cagd::methods::interpolate(m, dim == 2 ? plane : space, closed, defaults);
+                const std::string key = m.name + (closed ? ".closed" : ".open") + "." + std::to_string(dim) + "d";
+                put(key + ".ok", r.outcome.ok() ? 1.0 : 0.0);
+                if (r.outcome.ok()) curve_values(key, *r.interpolant->curve);
+            }
+        }
+    }
+
+    const std::vector<std::pair<double, double>> angles = {{0.3, 0.7}, {-1.2, 2.5}, {2.9, -0.4}};
+    for (std::size_t i = 0; i < angles.size(); ++i) {
+        const cagd::fairness::PseudoEnergyMinimum e = cagd::fairness::minimize_pseudo_energy(angles[i].first, angles[i].second);
+        const std::string key = "pseudo_energy." + std::to_string(i);
+        put(key + ".J", e.pseudo_energy);
+        put(key + ".r0", e.r0);
+        put(key + ".r1", e.r1);
+        put(key + ".length", e.length);
+        put(key + ".area", e.area);
+    }
+
+    const cagd::aesthetic::LogAestheticCurve lac = cagd::aesthetic::normalized_log_aesthetic_curve(-1.0, 2.0);
+    curve_values("lac", lac);
+    const cagd::aesthetic::TypicalPolygon typical = cagd::aesthetic::constant_rotation_typical_polygon(-1.0, 2.0, 9);
+    curve_values("typical", cagd::BezierCurve(typical.points));
+
+    const std::vector<double> x(plane.col(0).data(), plane.col(0).data() + plane.rows());
+    std::vector<double> xs = x;
+    for (std::size_t i = 0; i < xs.size(); ++i) xs[i] = static_cast<double>(i);  // strictly increasing abscissae
+    const cagd::smoothing::ElasticLine line = cagd::smoothing::elastic_line(xs, plane.col(1), 0.1);
+    for (Eigen::Index i = 0; i < line.values().rows(); ++i) put("elastic_line.y" + std::to_string(i), line.values()(i, 0));
+
+    cagd::compare::ComparisonOptions options;
+    options.threads = 1;
+    for (const cagd::compare::MethodComparison& c : cagd::compare::compare_methods(plane, options)) {
+        if (!c.interpolant) continue;
+        put("compare." + c.method + ".length", c.length);
+        put("compare." + c.method + ".pseudo_energy", c.pseudo_energy);
+        if (c.fairness) put("compare." + c.method + ".bending_energy", c.fairness->bending_energy);
+    }
+    return 0;
+}

@@ -1,0 +1,260 @@
+"""The Python module against the C++ library on the papers' data (make test, ctest python.module).
+
+The C++ values come from two places: the program python_reference_values (the same computations
+written in C++, 17 digits) and the `cagd` command. Both must agree with the module to 1e-12
+(relative, with an absolute floor of 1e-12 times the data's scale): the module converts, it does
+not compute. Environment (set by ctest): CAGD_SOURCE_DIR, CAGD_REFERENCE_VALUES, CAGD_CLI.
+"""
+import csv
+import io
+import math
+import os
+import subprocess
+
+import numpy as np
+import pytest
+
+import cagd
+
+ROOT = os.environ.get("CAGD_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
+TABLE1 = os.path.join(ROOT, "reference", "pseudo_energy", "data", "table1.csv")
+FRACTIONS = [0.0, 0.1, 0.37, 0.5, 0.93, 1.0]
+TOL = 1e-12
+
+
+def table1():
+    return np.loadtxt(TABLE1, delimiter=",", comments="#", skiprows=3)
+
+
+def lifted(points):
+    """Table 1 in 3-D: z = (x - y)/4, exact in binary floating point (as the C++ side)."""
+    return np.column_stack([points, (points[:, 0] - points[:, 1]) / 4.0])
+
+
+@pytest.fixture(scope="module")
+def cpp():
+    exe = os.environ.get("CAGD_REFERENCE_VALUES")
+    if not exe:
+        pytest.fail("CAGD_REFERENCE_VALUES is not set (run through ctest)")
+    out = subprocess.run([exe, ROOT], check=True, capture_output=True, text=True).stdout
+    values = {}
+    for line in out.splitlines():
+        key, value = line.rsplit(" ", 1)
+        values[key] = float(value)
+    assert len(values) > 1000, "the C++ side wrote too few values"
+    return values
+
+
+def close(ours, theirs, scale=1.0):
+    return abs(ours - theirs) <= TOL * max(abs(theirs), scale)
+
+
+def curve_values(key, c):
+    """The same values as curve_values() in reference_values.cpp."""
+    out = {key + ".length": c.arc_length(), key + ".bending_energy": c.bending_energy()}
+    if c.dimension == 2:
+        out[key + ".area"] = c.area()
+    t0, t1 = c.parameter_range
+    ts = np.array([t0 + f * (t1 - t0) for f in FRACTIONS])
+    jets = c.evaluate(ts, derivatives=2)
+    kappa = c.curvature(ts)
+    tau = c.torsion(ts) if c.dimension == 3 else None
+    for f in range(len(FRACTIONS)):
+        for r in range(3):
+            for d in range(c.dimension):
+                out[f"{key}.jet{f}.{r}.{d}"] = jets[f, r, d]
+        out[f"{key}.curvature{f}"] = kappa[f]
+        if tau is not None:
+            out[f"{key}.torsion{f}"] = tau[f]
+    return out
+
+
+def check_all(values, cpp, scale):
+    assert values
+    bad = [(k, v, cpp[k]) for k, v in values.items() if not close(v, cpp[k], scale)]
+    assert not bad, f"{len(bad)} of {len(values)} values differ from C++, e.g. {bad[:3]}"
+
+
+def test_every_method_open_closed_2d_3d_equals_cpp(cpp):
+    plane = table1()
+    checked = 0
+    for m in cagd.methods():
+        claims = m["claims"]
+        for closed in (False, True):
+            if closed and not claims["supports_closed"]:
+                continue
+            for dim in (2, 3):
+                if dim > claims["max_dimension"]:
+                    continue
+                key = f"{m['name']}.{'closed' if closed else 'open'}.{dim}d"
+                r = cagd.interpolate_result(plane if dim == 2 else lifted(plane), m["name"], closed=closed)
+                assert float(r.ok) == cpp[key + ".ok"], key
+                if r.ok:
+                    check_all(curve_values(key, r.curve), cpp, scale=10.0)
+                    checked += 1
+    # Every method builds at least its open planar curve on Table 1.
+    assert checked >= len(cagd.methods())
+
+
+def test_pseudo_energy_equals_cpp(cpp):
+    for i, (t0, t1) in enumerate([(0.3, 0.7), (-1.2, 2.5), (2.9, -0.4)]):
+        e = cagd.pseudo_energy(t0, t1)
+        key = f"pseudo_energy.{i}"
+        for name, field in [("J", "pseudo_energy"), ("r0", "r0"), ("r1", "r1"), ("length", "length"), ("area", "area")]:
+            assert close(e[field], cpp[f"{key}.{name}"]), (key, name)
+
+
+def test_aesthetic_and_typical_curves_equal_cpp(cpp):
+    check_all(curve_values("lac", cagd.normalized_log_aesthetic_curve(-1.0, 2.0)), cpp, scale=1.0)
+    typical = cagd.typical_curve(-1.0, 2.0, 9, kind="constant-rotation")
+    check_all(curve_values("typical", typical["curve"]), cpp, scale=1.0)
+    assert typical["control_points"].shape == (10, 2)
+
+
+def test_elastic_line_equals_cpp(cpp):
+    plane = table1()
+    spline, second = cagd.elastic_line(np.arange(len(plane), dtype=float), plane[:, 1], 0.1)
+    values = {f"elastic_line.y{i}": y for i, y in enumerate(spline.values[:, 0])}
+    check_all(values, cpp, scale=1.0)
+    assert second.shape == (len(plane), 1) and second[0, 0] == 0.0 and second[-1, 0] == 0.0
+
+
+def test_compare_equals_cpp(cpp):
+    r = cagd.compare(table1(), threads=1)
+    checked = 0
+    for i, name in enumerate(r["method"]):
+        if r["length"].mask[i]:
+            assert r["status"][i] != "ok"
+            continue
+        assert close(r["length"][i], cpp[f"compare.{name}.length"], 10.0)
+        assert close(r["pseudo_energy"][i], cpp[f"compare.{name}.pseudo_energy"], 10.0)
+        if not r["bending_energy"].mask[i]:
+            assert close(r["bending_energy"][i], cpp[f"compare.{name}.bending_energy"], 10.0)
+        checked += 1
+    assert checked >= 15
+    # An open curve has no enclosed area: masked, never NaN.
+    assert r["area"].mask.all()
+    assert not any(np.isnan(r[k].data).any() for k in r if isinstance(r[k], np.ma.MaskedArray))
+
+
+def cli_quantities(*args):
+    out = subprocess.run([os.environ["CAGD_CLI"], *args], check=True, capture_output=True, text=True).stdout
+    return {row["quantity"]: row["value"] for row in csv.DictReader(io.StringIO(out))}
+
+
+@pytest.mark.parametrize("method", ["pseudo-spline", "cubic-b", "s-spline", "hosaka", "boost-makima"])
+def test_length_and_area_equal_the_command(method):
+    # `cagd analyze --in` prints 12 significant digits: agreement to that print.
+    q = cli_quantities("analyze", "--in", TABLE1, "--method", method)
+    c = cagd.interpolate(table1(), method)
+    assert float(q["length_integrated"]) == pytest.approx(c.arc_length(), rel=1e-11)
+    assert float(q["area_integrated"]) == pytest.approx(c.area(), rel=1e-11)
+
+
+def test_methods_are_the_registry_of_the_command():
+    listing = subprocess.run([os.environ["CAGD_CLI"], "interpolate", "--list-methods"], check=True, capture_output=True, text=True).stdout
+    names = [line.split()[0] for line in listing.splitlines() if line and not line[0].isspace()]
+    assert [m["name"] for m in cagd.methods()] == names
+    s = next(m for m in cagd.methods() if m["name"] == "s-spline")
+    assert "m" in [p["name"] for p in s["parameters"]]
+    assert "s-spline-m2" in s["presets"]
+
+
+def test_evaluate_is_vectorised_and_shaped():
+    c = cagd.interpolate(table1(), "cubic-b")
+    t = np.linspace(*c.parameter_range, 101)
+    pos = c.evaluate(t)
+    jets = c.evaluate(t, derivatives=3)
+    assert pos.shape == (101, 2) and jets.shape == (101, 4, 2)
+    assert np.array_equal(jets[:, 0, :], pos)
+    assert np.array_equal(c.evaluate(float(t[7])), pos[7])
+    assert c.evaluate(0.5, derivatives=1).shape == (2, 2)
+    # The curve interpolates: positions at the node parameters are the data points.
+    assert np.allclose(c.evaluate(c.node_parameters), table1(), rtol=0, atol=1e-12)
+    # Derivatives against central differences of the positions, away from the nodes (the
+    # derivative in u jumps there by the change of dτ/du).
+    h = 1e-6
+    inner = t[:-1] + 0.0537
+    fd = (c.evaluate(inner + h) - c.evaluate(inner - h)) / (2 * h)
+    assert np.allclose(fd, c.evaluate(inner, derivatives=1)[:, 1, :], atol=1e-6)
+    # A closed curve returns to its start.
+    closed = cagd.interpolate(table1(), "cubic-b", closed=True)
+    a, b = closed.parameter_range
+    assert np.allclose(closed.evaluate(a), closed.evaluate(b), atol=1e-12)
+
+
+def test_bad_input_is_value_error_with_the_library_message():
+    p = table1()
+    with pytest.raises(ValueError, match="unknown method 'nope'"):
+        cagd.interpolate(p, "nope")
+    bad = p.copy()
+    bad[3, 1] = float("nan")
+    with pytest.raises(ValueError, match="point 3"):
+        cagd.interpolate(bad, "cubic-b")
+    with pytest.raises(ValueError, match="out of range"):
+        cagd.interpolate(p, "s-spline", m=-3)
+    with pytest.raises(ValueError, match=r"\(n, 2\) or \(n, 3\)"):
+        cagd.interpolate(np.zeros((4, 4)), "cubic-b")
+    c = cagd.interpolate(p, "cubic-b")
+    with pytest.raises(ValueError, match="outside"):
+        c.evaluate(1e9)
+    with pytest.raises(ValueError):
+        cagd.pseudo_energy(4.0, 0.5)  # outside [-π, π]
+    with pytest.raises(ValueError):
+        cagd.interpolate(lifted(p), "pseudo-spline")  # a planar method given 3-D points
+
+
+def test_numerical_outcome_is_no_solution_or_a_status():
+    # Line, arc, line through these points is impossible (curvature_profile; the C++ test
+    # InconsistentArcIsNoSolutionNotAWrongCurve).
+    p = np.array([[0.0, 0.0], [1.0, 0.0], [2.0, 1.0], [3.0, 1.0]])
+    r = cagd.interpolate_result(p, "curvature-profile", spans="line,arc,line")
+    assert not r.ok and r.status == "no_solution" and r.curve is None and r.message
+    with pytest.raises(cagd.NoSolution, match="inconsistent"):
+        cagd.interpolate(p, "curvature-profile", spans="line,arc,line")
+    assert issubclass(cagd.NoSolution, RuntimeError)
+    with pytest.raises(cagd.NoSolution, match="undefined node"):
+        cagd.pseudo_energy(0.0, 0.0)
+
+
+def test_curvature_profile_reports_its_newton_history():
+    x = np.arange(0.0, 8.0)
+    r = cagd.interpolate_result(np.column_stack([x, np.sin(x)]), "curvature-profile")
+    assert r.ok
+    keys = [k for k, _ in r.report]
+    assert "unknowns" in keys and any(k.startswith("newton_") for k in keys)
+
+
+def test_pseudo_spline_quantities_and_table_lookup():
+    r = cagd.interpolate_result(table1(), "pseudo-spline")
+    assert "length" in " ".join(r.quantities)
+    table = cagd.PseudoEnergyTable.build(n=36, threads=2)
+    v = table.lookup(0.3, 0.7)
+    assert set(v) >= {"pseudo_energy", "r0", "r1", "length", "area", "type"}
+    assert len(table.nodes) == 36
+    # The paper's 10° table interpolates J to about 1 % here (a property, not equality).
+    assert v["pseudo_energy"] == pytest.approx(cagd.pseudo_energy(0.3, 0.7)["pseudo_energy"], rel=0.02)
+    assert table.node(3, 4)["pseudo_energy"] > 0
+    with pytest.raises(ValueError):
+        table.node(36, 0)
+
+
+def test_space_curves_have_torsion():
+    helix = np.array([[math.cos(0.5 * k), math.sin(0.5 * k), 0.1 * k] for k in range(12)])
+    c = cagd.interpolate(helix, "hosaka")
+    tau = c.torsion(np.linspace(*c.parameter_range, 9)[2:-2])
+    assert (tau > 0).all()  # a right-handed helix
+    lac = cagd.log_aesthetic_space_curve(1.5, 1.2, 1.0)
+    assert lac.dimension == 3
+    s = cagd.space_typical_curve(1.5, 1.2, 1.0, 8)
+    assert s["control_points"].shape == (9, 3)
+
+
+def test_smoothing():
+    p = table1()
+    spline = cagd.smooth_curve(p, 0.0)  # λ = 0: interpolation
+    assert np.allclose(spline.values, p, atol=1e-12)
+    x = np.arange(8.0)
+    a = np.column_stack([np.sin(x), np.cos(x)])
+    curve, energy = cagd.elastic_space_curve(x, a, 0.05)
+    assert curve.dimension == 3 and energy > 0
