@@ -150,6 +150,42 @@ TEST(PseudoEnergyTable, LookupReproducesNodesWrapsAndRejects) {
     EXPECT_THROW(parse_node_placement("uniform"), InvalidInput);
 }
 
+TEST(PseudoEnergyTable, ReadingsOfTheTable) {
+    const PseudoEnergyTable t = PseudoEnergyTable::build({12, NodePlacement::periodic}, TableMethod::fast, 2, true);
+    const auto& nodes = t.nodes();
+    const double a = nodes[3] + 0.3 * (nodes[4] - nodes[3]), b = nodes[8] + 0.5 * (nodes[9] - nodes[8]);  // b half-way
+    // The default reading and plain bilinear are the two lookups, bit for bit.
+    const TableValue same = t.lookup(a, b, TableReading{}), all = t.lookup(a, b, TableReading{CellRule::all_corners, false, 0.0});
+    EXPECT_EQ(same.length, t.lookup(a, b, true).length);
+    EXPECT_EQ(all.length, t.lookup(a, b, false).length);
+    EXPECT_EQ(all.area, t.lookup(a, b, false).area);
+    // Nearest node: θ0 goes to node 3; θ1 is half-way, so down takes node 8 and up node 9.
+    const TableValue down = t.lookup(a, b, TableReading{CellRule::nearest_node_down, false, 0.0});
+    const TableValue up = t.lookup(a, b, TableReading{CellRule::nearest_node_up, false, 0.0});
+    EXPECT_EQ(down.length, t.node(3, 8).length);
+    EXPECT_EQ(up.length, t.node(3, 9).length);
+    // r0, r1 interpolated: J, L, S are those of the segment they make.
+    const TableValue radii = t.lookup(a, b, TableReading{CellRule::all_corners, true, 0.0});
+    const PseudoEnergyMinimum m = measure_segment(a, b, all.r0, all.r1);
+    EXPECT_EQ(radii.r0, all.r0);
+    EXPECT_EQ(radii.length, m.length);
+    EXPECT_EQ(radii.pseudo_energy, m.pseudo_energy);
+    // A runner-up tolerance that no node meets changes nothing; a node that meets it holds its
+    // second minimum (measured at the runner-up's r0, r1).
+    EXPECT_EQ(t.lookup(a, b, TableReading{CellRule::all_corners, false, 1e-300}).length, all.length);
+    for (int i = 0; i < 12; ++i)
+        for (int j = 0; j < 12; ++j) {
+            const PseudoEnergyMinimum& n = t.node(i, j);
+            if (n.type == SegmentType::x || !std::isfinite(n.runner_up)) continue;
+            const TableValue second = t.lookup(nodes[i], nodes[j], TableReading{CellRule::nearest_node_down, false, n.runner_up - n.pseudo_energy + 1e-12});
+            EXPECT_NEAR(second.pseudo_energy, n.runner_up, 1e-9 * n.runner_up) << i << "," << j;
+            EXPECT_EQ(second.r0, measure_segment(nodes[i], nodes[j], n.runner_up_r0, n.runner_up_r1).r0);
+            EXPECT_EQ(t.runner_up_nodes(-1.0), 0);
+            return;  // one node with a second minimum is enough
+        }
+    FAIL() << "no node of the 12-node table has a second local minimum";
+}
+
 TEST(PseudoEnergyTable, CacheRoundTripAndVersionedHeader) {
     const AngleGrid g{8, NodePlacement::midpoints};
     const std::string path = (std::filesystem::temp_directory_path() / "cagd_table_test.txt").string();
@@ -162,6 +198,8 @@ TEST(PseudoEnergyTable, CacheRoundTripAndVersionedHeader) {
             EXPECT_EQ(loaded.node(i, j).pseudo_energy, built.node(i, j).pseudo_energy);
             EXPECT_EQ(loaded.node(i, j).r1, built.node(i, j).r1);
             EXPECT_EQ(loaded.node(i, j).type, built.node(i, j).type);
+            EXPECT_EQ(loaded.node(i, j).runner_up_r0, built.node(i, j).runner_up_r0);  // format 5
+            EXPECT_EQ(loaded.node(i, j).runner_up_r1, built.node(i, j).runner_up_r1);
         }
     EXPECT_NE(built.header_line().find("grid 8 placement midpoints method fast"), std::string::npos);
     std::remove(path.c_str());

@@ -30,6 +30,18 @@ TEST(Repro, ClassifiesReproducedDeviatesFailed) {
     EXPECT_EQ(classify(r, std::nan(""), std::nullopt, true), ClaimStatus::failed);
 }
 
+TEST(Repro, ClaimDependsOnAChoiceOnlyWhenTheVerdictsDiffer) {
+    // Every choice within tolerance, or every one outside it: the stated status stands.
+    EXPECT_EQ(classify_over_choices(ClaimStatus::reproduced, {true, true, true}), ClaimStatus::reproduced);
+    EXPECT_EQ(classify_over_choices(ClaimStatus::deviates, {false, false}), ClaimStatus::deviates);
+    // The verdict changes with the choice, whichever way round.
+    EXPECT_EQ(classify_over_choices(ClaimStatus::reproduced, {true, false}), ClaimStatus::depends);
+    EXPECT_EQ(classify_over_choices(ClaimStatus::deviates, {false, true, false}), ClaimStatus::depends);
+    // A failure at the stated choice is a failure, whatever other choices give.
+    EXPECT_EQ(classify_over_choices(ClaimStatus::failed, {false, true}), ClaimStatus::failed);
+    EXPECT_EQ(classify_over_choices(ClaimStatus::reproduced, {}), ClaimStatus::reproduced);
+}
+
 TEST(Repro, LoadsReferenceWithProvenanceAndFractions) {
     const auto path = std::filesystem::temp_directory_path() / "cagd_ref_test.csv";
     std::ofstream(path) << "# source: eq (18)\nid,paper_value,tolerance,tolerance_reason,description\n"

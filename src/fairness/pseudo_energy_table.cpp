@@ -23,7 +23,7 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 namespace {
 
 // Bumped whenever a minimiser or the file layout changes, so stale caches are rebuilt.
-constexpr int kCacheFormat = 4;
+constexpr int kCacheFormat = 5;  // 5: the runner-up's r0, r1 (TableReading::runner_up_within)
 
 // Index i and weight u ∈ [0, 1) of θ in the periodically extended node list: θ lies between
 // node i and node (i + 1) mod n (adding 2π to the latter when it wraps).
@@ -170,14 +170,15 @@ std::string PseudoEnergyTable::header_line() const {
 
 void PseudoEnergyTable::save(std::ostream& out) const {
     out << header_line() << "\n";
-    out << "i,j,theta0,theta1,J,r0,r1,L,S,E,type,local_minima,runner_up,status\n";
+    out << "i,j,theta0,theta1,J,r0,r1,L,S,E,type,local_minima,runner_up,status,runner_up_r0,runner_up_r1\n";
     char buf[512];
     const int n = grid_.n;
     for (int i = 0; i < n; ++i)
         for (int j = 0; j < n; ++j) {
             const PseudoEnergyMinimum& m = node(i, j);
-            std::snprintf(buf, sizeof buf, "%d,%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%s,%d,%.17g,%d\n", i, j, m.theta0, m.theta1, m.pseudo_energy, m.r0, m.r1,
-                          m.length, m.area, m.strain_energy, to_string(m.type), m.local_minima, m.runner_up, static_cast<int>(m.outcome.status));
+            std::snprintf(buf, sizeof buf, "%d,%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%s,%d,%.17g,%d,%.17g,%.17g\n", i, j, m.theta0, m.theta1, m.pseudo_energy, m.r0,
+                          m.r1, m.length, m.area, m.strain_energy, to_string(m.type), m.local_minima, m.runner_up, static_cast<int>(m.outcome.status), m.runner_up_r0,
+                          m.runner_up_r1);
             out << buf;
         }
 }
@@ -203,7 +204,7 @@ bool read_node_rows(std::istream& in, int n, std::vector<PseudoEnergyMinimum>& v
     long read = 0;
     while (std::getline(in, line)) {
         std::istringstream s(line);
-        std::string f[14];
+        std::string f[16];
         for (auto& x : f) std::getline(s, x, ',');
         try {
             const int i = std::stoi(f[0]), j = std::stoi(f[1]);
@@ -221,6 +222,8 @@ bool read_node_rows(std::istream& in, int n, std::vector<PseudoEnergyMinimum>& v
             m.local_minima = std::stoi(f[11]);
             m.runner_up = std::stod(f[12]);
             m.outcome.status = static_cast<Status>(std::stoi(f[13]));
+            m.runner_up_r0 = std::stod(f[14]);
+            m.runner_up_r1 = std::stod(f[15]);
         } catch (const std::exception&) {
             return false;
         }
@@ -272,24 +275,29 @@ PseudoEnergyTable PseudoEnergyTable::load(const std::string& path) {
     return t;
 }
 
-TableValue PseudoEnergyTable::lookup(double theta0, double theta1, bool same_type_only) const {
+PseudoEnergyTable::CellPosition PseudoEnergyTable::locate_cell(double theta0, double theta1) const {
     const char* who = "cagd::fairness::PseudoEnergyTable::lookup";
     require_tangent_angle(who, theta0, "theta0");
     require_tangent_angle(who, theta1, "theta1");
     if (is_undefined_node(theta0, theta1))
         fail_input(who,
                    "(" + full_precision(theta0) + ", " + full_precision(theta1) + ") is an undefined node (theta0, theta1 in {0, +-pi}): r0, r1 do not exist there (paper §4.1)");
-    const int n = grid_.n;
-    int i = 0, j = 0;
-    double u = 0.0, v = 0.0;
+    CellPosition c;
     const double inv_h = 1.0 / (nodes_[1] - nodes_[0]);
-    locate(nodes_, inv_h, theta0, i, u);
-    locate(nodes_, inv_h, theta1, j, v);
+    locate(nodes_, inv_h, theta0, c.i, c.u);
+    locate(nodes_, inv_h, theta1, c.j, c.v);
+    return c;
+}
+
+namespace {
+
+// Bilinear blend of the cell (i, j) at local (u, v) over its defined corners of type `want`
+// (x: every defined corner), the weights renormalised; `at(a, b)` gives a node's value.
+template <class NodeValue>
+TableValue blend_cell(int n, int i, int j, double u, double v, SegmentType want, const NodeValue& at, double theta0, double theta1) {
     const int i1 = (i + 1) % n, j1 = (j + 1) % n;
     const int ci[4] = {i, i1, i, i1}, cj[4] = {j, j, j1, j1};
     const double w[4] = {(1 - u) * (1 - v), u * (1 - v), (1 - u) * v, u * v};
-    const auto at = [&](int a, int b) -> const TableValue& { return packed_[static_cast<std::size_t>(a * n + b)]; };
-    const SegmentType want = same_type_only ? at(u < 0.5 ? i : i1, v < 0.5 ? j : j1).type : SegmentType::x;
     TableValue out;
     double wsum = 0.0;
     for (int k = 0; k < 4; ++k) {
@@ -310,7 +318,7 @@ TableValue PseudoEnergyTable::lookup(double theta0, double theta1, bool same_typ
             const TableValue& m = at(ci[k], cj[k]);
             if (m.type != SegmentType::x && (want == SegmentType::x || m.type == want)) return m;
         }
-        fail_input(who, "no defined table node near (" + full_precision(theta0) + ", " + full_precision(theta1) + ")");
+        fail_input("cagd::fairness::PseudoEnergyTable::lookup", "no defined table node near (" + full_precision(theta0) + ", " + full_precision(theta1) + ")");
     }
     out.pseudo_energy /= wsum;
     out.r0 /= wsum;
@@ -318,6 +326,70 @@ TableValue PseudoEnergyTable::lookup(double theta0, double theta1, bool same_typ
     out.length /= wsum;
     out.area /= wsum;
     out.type = want;
+    return out;
+}
+
+}  // namespace
+
+TableValue PseudoEnergyTable::lookup(double theta0, double theta1, bool same_type_only) const {
+    const auto [i, j, u, v] = locate_cell(theta0, theta1);
+    const int n = grid_.n;
+    const auto at = [&](int a, int b) -> const TableValue& { return packed_[static_cast<std::size_t>(a * n + b)]; };
+    const SegmentType want = same_type_only ? at(u < 0.5 ? i : (i + 1) % n, v < 0.5 ? j : (j + 1) % n).type : SegmentType::x;
+    return blend_cell(n, i, j, u, v, want, at, theta0, theta1);
+}
+
+const char* to_string(CellRule c) {
+    switch (c) {
+        case CellRule::same_type: return "same_type";
+        case CellRule::all_corners: return "all_corners";
+        case CellRule::nearest_node_down: return "nearest_node_down";
+        case CellRule::nearest_node_up: return "nearest_node_up";
+    }
+    return "?";
+}
+
+TableValue PseudoEnergyTable::node_value(int i, int j, double runner_up_within) const {
+    const auto k = static_cast<std::size_t>(i * grid_.n + j);
+    const TableValue& v = packed_[k];
+    const PseudoEnergyMinimum& m = values_[k];
+    if (!(runner_up_within > 0.0) || v.type == SegmentType::x || !std::isfinite(m.runner_up) || m.runner_up - m.pseudo_energy > runner_up_within) return v;
+    if (!(m.runner_up_r0 > 0.0 && m.runner_up_r1 > 0.0))
+        fail_input("cagd::fairness::PseudoEnergyTable::lookup", "node (" + full_precision(m.theta0) + ", " + full_precision(m.theta1) + ") has no runner-up r0, r1 stored");
+    const PseudoEnergyMinimum r = measure_segment(m.theta0, m.theta1, m.runner_up_r0, m.runner_up_r1);
+    return {r.pseudo_energy, r.r0, r.r1, r.length, r.area, r.type};
+}
+
+int PseudoEnergyTable::runner_up_nodes(double within) const {
+    int count = 0;
+    for (std::size_t k = 0; k < values_.size(); ++k)
+        count += packed_[k].type != SegmentType::x && std::isfinite(values_[k].runner_up) && values_[k].runner_up - values_[k].pseudo_energy <= within;
+    return count;
+}
+
+TableValue PseudoEnergyTable::lookup(double theta0, double theta1, const TableReading& reading) const {
+    if (reading.is_default()) return lookup(theta0, theta1, true);
+    const auto [i, j, u, v] = locate_cell(theta0, theta1);
+    const int n = grid_.n;
+    const auto at = [&](int a, int b) { return node_value(a, b, reading.runner_up_within); };
+    TableValue out;
+    bool done = false;
+    if (reading.cell == CellRule::nearest_node_down || reading.cell == CellRule::nearest_node_up) {
+        const bool up = reading.cell == CellRule::nearest_node_up;
+        const auto pick = [&](int lower, double t) { return (std::abs(t - 0.5) <= 1e-9 ? up : t > 0.5) ? (lower + 1) % n : lower; };
+        out = at(pick(i, u), pick(j, v));
+        done = out.type != SegmentType::x;
+    }
+    if (!done) {
+        const SegmentType want = reading.cell == CellRule::same_type ? at(u < 0.5 ? i : (i + 1) % n, v < 0.5 ? j : (j + 1) % n).type : SegmentType::x;
+        out = blend_cell(n, i, j, u, v, want, at, theta0, theta1);
+    }
+    if (reading.radii) {
+        const PseudoEnergyMinimum m = measure_segment(theta0, theta1, out.r0, out.r1);
+        out.pseudo_energy = m.pseudo_energy;
+        out.length = m.length;
+        out.area = m.area;
+    }
     return out;
 }
 
@@ -376,14 +448,18 @@ AngleMinimumTable AngleMinimumTable::load_or_build(const std::string& path, cons
     return t;
 }
 
-AngleMinimumTable AngleMinimumTable::from_energy_table(const PseudoEnergyTable& table) {
+AngleMinimumTable AngleMinimumTable::from_energy_table(const PseudoEnergyTable& table) { return from_energy_table(table, TableReading{}); }
+
+AngleMinimumTable AngleMinimumTable::from_energy_table(const PseudoEnergyTable& table, const TableReading& reading_in) {
+    TableReading reading = reading_in;
+    reading.radii = false;  // J(θ) minimises the interpolated J
     AngleMinimumTable t;
     t.grid_ = table.grid();
     t.nodes_ = table.nodes();
     for (double theta : t.nodes_) {
         const auto j_of = [&](double theta1) {
             if (is_undefined_node(theta, theta1)) return std::abs(theta) + std::abs(theta1) == 0.0 ? 0.0 : kInfinity;
-            return table.lookup(theta, theta1).pseudo_energy;
+            return table.lookup(theta, theta1, reading).pseudo_energy;
         };
         t.values_.push_back(minimize_over_end_angle(theta, j_of, std::numbers::pi / 720));
     }

@@ -57,6 +57,29 @@ struct TableValue {
     SegmentType type = SegmentType::x;  // the type whose nodes were used
 };
 
+// How a table is read between its nodes. Section 4.1 says the values are interpolated; what is
+// interpolated, over which corners, and which minimum a node holds are left open (erratum
+// pseudo_energy-E4 compares every combination with Tables 5–6):
+//   cell              same_type: bilinear over the corners of the nearest corner's type (our
+//                     reading, lookup(θ0, θ1, true)); all_corners: plain bilinear over the defined
+//                     corners (lookup(θ0, θ1, false)); nearest_node_down / _up: the value of the
+//                     nearest node, a coordinate half-way between two nodes (to 1e-9 of the
+//                     spacing) going to the lower / upper one (an undefined nearest node falls back
+//                     to all_corners)
+//   radii             interpolate r0, r1 only and measure J, L, S of the segment they make (fast
+//                     quadrature) — else J, L, S are interpolated themselves (eq 17, 20)
+//   runner_up_within  > 0: a node whose second local minimum is within this of the global one in J
+//                     holds the second instead (as a minimiser that stopped in the other basin
+//                     would); its J, L, S measured at the runner-up's r0, r1
+enum class CellRule { same_type, all_corners, nearest_node_down, nearest_node_up };
+const char* to_string(CellRule c);
+struct TableReading {
+    CellRule cell = CellRule::same_type;
+    bool radii = false;
+    double runner_up_within = 0.0;
+    bool is_default() const { return cell == CellRule::same_type && !radii && !(runner_up_within > 0.0); }
+};
+
 class PseudoEnergyTable {
 public:
     // progress(done, total) is called from the building threads now and then (may be empty).
@@ -76,6 +99,10 @@ public:
     // angles, or at an undefined node. same_type_only = false gives plain bilinear interpolation
     // over all defined corners (for comparison with the paper's rule).
     TableValue lookup(double theta0, double theta1, bool same_type_only = true) const;
+    // The same under any reading (TableReading above); the default reading is lookup(θ0, θ1).
+    TableValue lookup(double theta0, double theta1, const TableReading& reading) const;
+    // Nodes whose second local minimum is within `within` of the global one in J.
+    int runner_up_nodes(double within) const;
 
     void save(const std::string& path) const;
     // The same text to a stream. Undefined nodes (θ0 or θ1 at 0 or ±π, eq 8) and nodes without a
@@ -90,6 +117,13 @@ private:
     std::vector<PseudoEnergyMinimum> values_;
     std::vector<TableValue> packed_;  // what lookup reads: J, r0, r1, L, S, type (x = unusable), 48 bytes a node
     void pack();
+    // The cell of (θ0, θ1): lower-left node (i, j) and local coordinates (u, v) ∈ [0, 1); checks the angles.
+    struct CellPosition {
+        int i = 0, j = 0;
+        double u = 0.0, v = 0.0;
+    };
+    CellPosition locate_cell(double theta0, double theta1) const;
+    TableValue node_value(int i, int j, double runner_up_within) const;
 };
 
 // J(θ) and θ1(θ) of eq (11) at the nodes of a grid, and their linear interpolation. Two builds:
@@ -101,6 +135,9 @@ class AngleMinimumTable {
 public:
     static AngleMinimumTable build(const AngleGrid& grid, int threads = 2);
     static AngleMinimumTable from_energy_table(const PseudoEnergyTable& table);
+    // The same with J(Θ_i, θ1) read by `reading` (its cell rule and runner-up choice; J itself is
+    // interpolated even when reading.radii asks for r0, r1).
+    static AngleMinimumTable from_energy_table(const PseudoEnergyTable& table, const TableReading& reading);
     // build(), kept in `path`: loaded when the file holds this grid's table (values at %.17g, so a
     // load equals a build bit for bit), otherwise built and saved (temporary file, then rename).
     static AngleMinimumTable load_or_build(const std::string& path, const AngleGrid& grid, int threads = 2);

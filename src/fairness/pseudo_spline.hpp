@@ -82,14 +82,19 @@ public:
 
 class TableOracle : public SegmentOracle {
 public:
-    TableOracle(const PseudoEnergyTable& energy, const AngleMinimumTable& angle) : energy_(energy), angle_(angle) {}
-    TableValue segment(double theta0, double theta1) const override { return energy_.lookup(theta0, theta1); }
+    // `reading`: how the energy table is read between nodes (pseudo_energy_table.hpp); the angle
+    // table should be derived under the same reading (AngleMinimumTable::from_energy_table).
+    TableOracle(const PseudoEnergyTable& energy, const AngleMinimumTable& angle, const TableReading& reading = {})
+        : energy_(energy), angle_(angle), reading_(reading), default_reading_(reading.is_default()) {}
+    TableValue segment(double theta0, double theta1) const override { return default_reading_ ? energy_.lookup(theta0, theta1) : energy_.lookup(theta0, theta1, reading_); }
     std::pair<double, double> angle_minimum(double theta) const override { return angle_.lookup(theta); }
     double angle_energy(double theta) const override { return angle_.pseudo_energy(theta); }
 
 private:
     const PseudoEnergyTable& energy_;
     const AngleMinimumTable& angle_;
+    TableReading reading_;
+    bool default_reading_ = true;
 };
 
 // The two tables the paper's method reads: J, r0, r1, L, S over direction pairs, and J(θ), θ1(θ)

@@ -1,5 +1,6 @@
 #include "cagd/repro/artifact_run.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -20,6 +21,7 @@ const char* to_string(ClaimStatus s) {
     switch (s) {
         case ClaimStatus::reproduced: return "reproduced";
         case ClaimStatus::deviates: return "deviates";
+        case ClaimStatus::depends: return "depends";
         case ClaimStatus::failed: return "failed";
     }
     return "failed";
@@ -32,6 +34,13 @@ ClaimStatus classify(const ReferenceRow& row, double ours, std::optional<double>
     if (row.corrected_value) return std::abs(ours - *row.corrected_value) <= row.tolerance ? ClaimStatus::deviates : ClaimStatus::failed;
     if (ours_corrected && std::abs(*ours_corrected - row.paper_value) <= row.tolerance) return ClaimStatus::deviates;
     return ClaimStatus::failed;
+}
+
+ClaimStatus classify_over_choices(ClaimStatus stated, const std::vector<bool>& within) {
+    if (stated == ClaimStatus::failed || within.empty()) return stated;
+    for (bool w : within)
+        if (w != within.front()) return ClaimStatus::depends;
+    return stated;
 }
 
 ArtifactRun::ArtifactRun(std::string paper, std::string artifact, std::string section, std::string title, int argc, char** argv)
@@ -63,6 +72,35 @@ void ArtifactRun::check(const std::string& short_id, double ours, double ours_co
     const ReferenceRow& row = reference_.row(paper_ + "." + short_id);
     const bool documented = !row.erratum.empty() && errata_.count(row.erratum) > 0;
     records_.back().status = classify(row, ours, ours_corrected, documented);
+}
+
+void ArtifactRun::check_over_choices(const std::string& short_id, double ours, const std::string& stated, const std::vector<ChoiceValue>& others) {
+    check(short_id, ours);
+    CheckRecord& r = records_.back();
+    std::vector<ChoiceValue> all{{stated + " (stated)", ours, std::nullopt}};
+    all.insert(all.end(), others.begin(), others.end());
+    std::vector<bool> within;
+    double lo = ours, hi = ours;
+    // Group the choices by verdict, naming the first few of each group (the stated one first); the
+    // experiment's own dependence table lists them all.
+    constexpr int kNamed = 4;
+    std::string text[2];
+    int count[2] = {0, 0};
+    for (const ChoiceValue& c : all) {
+        const bool w = std::isfinite(c.ours) && std::abs(c.ours - r.paper) <= c.tolerance.value_or(r.tolerance);
+        within.push_back(w);
+        lo = std::min(lo, c.ours);
+        hi = std::max(hi, c.ours);
+        if (count[w]++ < kNamed)
+            text[w] += (text[w].empty() ? "" : "; ") + c.label + (c.tolerance ? " (tolerance " + format_number(*c.tolerance, 3) + ")" : "") + ": " + format_number(c.ours, 6);
+    }
+    r.status = classify_over_choices(r.status, within);
+    r.ours_range = "[" + format_number(lo, 6) + ", " + format_number(hi, 6) + "]";
+    const auto group = [&](int w) {
+        const std::string more = count[w] > kNamed ? "; " + std::to_string(count[w] - kNamed) + " more" : "";
+        return std::to_string(count[w]) + (count[w] ? " (" + text[w] + more + ")" : "");
+    };
+    r.choices = std::to_string(all.size()) + " choices; within tolerance of the paper at " + group(1) + "; outside it at " + group(0);
 }
 
 void ArtifactRun::validate(const std::string& short_id, const std::string& description, double fast, double reference_value, double tolerance, const std::string& reason) {
@@ -106,10 +144,11 @@ int ArtifactRun::finish() {
                                 row.tolerance_reason, row.erratum, ClaimStatus::failed});
     }
     {
-        CsvWriter w(data_path(artifact_ + ".checks.csv"), {"kind", "id", "paper_value", "ours", "abs_diff", "tolerance", "status", "erratum", "description", "tolerance_reason"});
+        CsvWriter w(data_path(artifact_ + ".checks.csv"),
+                    {"kind", "id", "paper_value", "ours", "abs_diff", "tolerance", "status", "erratum", "description", "tolerance_reason", "ours_range", "choices"});
         for (const auto& r : records_)
             w.row_text({r.kind, r.id, r.paper_text, format_number(r.ours), format_number(std::abs(r.ours - r.paper), 3), format_number(r.tolerance, 3), to_string(r.status),
-                        r.erratum, r.description, r.tolerance_reason});
+                        r.erratum, r.description, r.tolerance_reason, r.ours_range, r.choices});
     }
     {
         std::ofstream meta(data_path(artifact_ + ".meta"));
@@ -132,15 +171,16 @@ int ArtifactRun::finish() {
             std::cout << "timing " << t.id << ": ours " << format_number(t.ours, 4) << ", paper " << format_number(t.paper, 4) << " in [" << format_number(t.lo, 4) << ", "
                       << format_number(t.hi, 4) << "]: " << (t.ours >= t.lo && t.ours <= t.hi ? "within" : "outside") << "\n";
     }
-    int counts[3] = {0, 0, 0};
+    int counts[4] = {0, 0, 0, 0};
     for (const auto& r : records_) {
         ++counts[static_cast<int>(r.status)];
         if (r.status == ClaimStatus::failed)
             std::cerr << "FAILED " << r.kind << " " << r.id << ": paper " << r.paper_text << ", ours " << format_number(r.ours) << ", tolerance " << format_number(r.tolerance, 3)
                       << "\n";
     }
-    std::cout << paper_ << "/" << artifact_ << ": " << counts[0] << " reproduced, " << counts[1] << " deviates, " << counts[2] << " failed\n";
-    return counts[2] > 0 ? 1 : 0;
+    std::cout << paper_ << "/" << artifact_ << ": " << counts[0] << " reproduced, " << counts[1] << " deviates, " << counts[2] << " depend on a choice, " << counts[3]
+              << " failed\n";
+    return counts[3] > 0 ? 1 : 0;
 }
 
 }  // namespace cagd::repro

@@ -11,8 +11,14 @@
 //               and the corrected statement holds: |ours − corrected_value| ≤ tolerance, or
 //               (for a misprinted formula) the experiment's value computed with the corrected
 //               formula, ours_corrected, satisfies |ours_corrected − paper| ≤ tolerance
+//   depends     a claim checked under every choice the paper leaves open (a free constant, a fit
+//               range, a threshold, a reading of the text; check_over_choices): reproduced or
+//               deviates under our stated choice, but whether |ours − paper| ≤ tolerance holds
+//               differs between the choices. The report gives the range of ours over the choices
+//               and which choices decide. When every choice agrees, the stated status stands and
+//               the claim is unconditional (its range is still shown).
 //   failed      anything else, including a reference row the experiment never checked.
-// Any failed claim or validation makes finish() return 1.
+// Any failed claim or validation makes finish() return 1; depends does not.
 //
 // Command line of every experiment: [--check] [--root DIR]. --check computes and checks
 // everything but writes under a temporary directory instead of results/.
@@ -26,11 +32,23 @@
 
 namespace cagd::repro {
 
-enum class ClaimStatus { reproduced, deviates, failed };
+enum class ClaimStatus { reproduced, deviates, depends, failed };
 const char* to_string(ClaimStatus s);
 
 // The classification rule above, as a pure function (unit-tested).
 ClaimStatus classify(const ReferenceRow& row, double ours, std::optional<double> ours_corrected, bool erratum_documented);
+
+// One allowed choice and our value under it. `tolerance`, when given, replaces the row's (a choice
+// of threshold: "visible" = 0.1 % instead of 0.2 % of the diagonal).
+struct ChoiceValue {
+    std::string label;  // "s0 = 0, L = 1, fit t in [0, 1]"
+    double ours = 0.0;
+    std::optional<double> tolerance{};
+};
+// The status over choices (rule `depends` above): `stated` is the status under our stated choice;
+// `within` says, for the stated choice and then each alternative, whether |ours − paper| ≤ its
+// tolerance.
+ClaimStatus classify_over_choices(ClaimStatus stated, const std::vector<bool>& within);
 
 struct CheckRecord {
     std::string kind;  // "claim" or "validation"
@@ -38,6 +56,8 @@ struct CheckRecord {
     double paper = 0.0, ours = 0.0, tolerance = 0.0;
     std::string paper_text, tolerance_reason, erratum;
     ClaimStatus status = ClaimStatus::failed;
+    // Checked over choices: the range of ours over them (stated included) and, per verdict, which.
+    std::string ours_range{}, choices{};
 };
 
 class ArtifactRun {
@@ -49,6 +69,9 @@ public:
     // Check claim `<paper>.<short_id>` of the reference file against our value.
     void check(const std::string& short_id, double ours);
     void check(const std::string& short_id, double ours, double ours_corrected);
+    // A claim whose value depends on a choice the paper leaves open: ours under our stated choice
+    // (named by `stated`, the value the report shows) and under every other allowed choice.
+    void check_over_choices(const std::string& short_id, double ours, const std::string& stated, const std::vector<ChoiceValue>& others);
     // An independent recomputation of a library value: |fast − reference| ≤ tolerance.
     void validate(const std::string& short_id, const std::string& description, double fast, double reference_value, double tolerance, const std::string& tolerance_reason);
 
