@@ -332,7 +332,9 @@ TableValue blend_cell(int n, int i, int j, double u, double v, SegmentType want,
 }  // namespace
 
 TableValue PseudoEnergyTable::lookup(double theta0, double theta1, bool same_type_only) const {
-    const auto [i, j, u, v] = locate_cell(theta0, theta1);
+    const CellPosition cell = locate_cell(theta0, theta1);  // (not a structured binding: the lambdas below capture i, j)
+    const int i = cell.i, j = cell.j;
+    const double u = cell.u, v = cell.v;
     const int n = grid_.n;
     const auto at = [&](int a, int b) -> const TableValue& { return packed_[static_cast<std::size_t>(a * n + b)]; };
     const SegmentType want = same_type_only ? at(u < 0.5 ? i : (i + 1) % n, v < 0.5 ? j : (j + 1) % n).type : SegmentType::x;
@@ -369,7 +371,9 @@ int PseudoEnergyTable::runner_up_nodes(double within) const {
 
 TableValue PseudoEnergyTable::lookup(double theta0, double theta1, const TableReading& reading) const {
     if (reading.is_default()) return lookup(theta0, theta1, true);
-    const auto [i, j, u, v] = locate_cell(theta0, theta1);
+    const CellPosition cell = locate_cell(theta0, theta1);  // (not a structured binding: the lambdas below capture i, j)
+    const int i = cell.i, j = cell.j;
+    const double u = cell.u, v = cell.v;
     const int n = grid_.n;
     const auto at = [&](int a, int b) { return node_value(a, b, reading.runner_up_within); };
     TableValue out;
