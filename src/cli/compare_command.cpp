@@ -10,6 +10,8 @@
 #include <iostream>
 #include <memory>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "cagd/cli/commands.hpp"
 #include "cagd/cli/compare_panels_script.hpp"
@@ -17,6 +19,7 @@
 #include "cagd/compare/method_comparison.hpp"
 #include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
+#include "cagd/core/parallel.hpp"
 #include "cagd/core/point_csv.hpp"
 
 namespace cagd::cli {
@@ -110,14 +113,24 @@ int run_compare(const CompareArgs& a) {
     }
     std::cout << md;
     if (a.no_plot) return 0;
-    const std::string settings = "datadir=" + gnuplot_quoted(a.out) + "; prefix=''; heading=" + gnuplot_quoted(std::filesystem::path(a.in).filename().string()) +
-                                 "; formats='png'; point_every=" + std::to_string(std::max<Eigen::Index>(1, points.rows() / 5000));  // ≤ ~5000 dots per panel
-    const std::string command = "gnuplot -e " + shell_quoted(settings) + " " + shell_quoted(dir + "compare_panels.gp");
     if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) {
         std::cerr << "cagd compare: gnuplot not found; the figure data and compare_panels.gp are in " << a.out << "\n";
         return 0;
     }
-    if (std::system(command.c_str()) != 0) throw NoResult("gnuplot failed: " + command + " (the tables and figure data are in " + a.out + ")");
+    // The three figures are independent: one gnuplot each, as many at a time as there are cores.
+    const std::vector<std::string> figures = {"combs", "curvature", "curves"};  // the slowest first
+    std::vector<std::string> commands;
+    for (const std::string& figure : figures) {
+        const std::string settings = "datadir=" + gnuplot_quoted(a.out) + "; prefix=''; heading=" + gnuplot_quoted(std::filesystem::path(a.in).filename().string()) +
+                                     "; formats='png'; figures='" + figure +
+                                     "'; point_every=" + std::to_string(std::max<Eigen::Index>(1, points.rows() / 5000));  // ≤ ~5000 dots per panel
+        commands.push_back("gnuplot -e " + shell_quoted(settings) + " " + shell_quoted(dir + "compare_panels.gp"));
+    }
+    std::vector<int> status(commands.size(), 0);
+    parallel_for(static_cast<long>(commands.size()), hardware_threads(),
+                 [&](long k) { status[static_cast<std::size_t>(k)] = std::system(commands[static_cast<std::size_t>(k)].c_str()); }, {});
+    for (std::size_t k = 0; k < commands.size(); ++k)
+        if (status[k] != 0) throw NoResult("gnuplot failed: " + commands[k] + " (the tables and figure data are in " + a.out + ")");
     if (progress) std::cerr << "cagd compare: figures " << dir << "{curves,combs,curvature}.png\n";
     return 0;
 }
