@@ -17,22 +17,6 @@ namespace {
 
 double cross(const Eigen::Vector2d& p, const Eigen::Vector2d& q) { return p.x() * q.y() - p.y() * q.x(); }
 
-// cos/sin that are exact at multiples of π/2 given in floating point (±π, ±π/2, 0), so the
-// collinear configurations of §4.1 are collinear to the last bit.
-Eigen::Vector2d unit_direction(double theta) {
-    const double q = theta / (std::numbers::pi / 2);
-    const double nearest = std::round(q);
-    if (std::abs(q - nearest) < 1e-15 * 4) {
-        switch (((static_cast<int>(nearest) % 4) + 4) % 4) {
-            case 0: return {1.0, 0.0};
-            case 1: return {0.0, 1.0};
-            case 2: return {-1.0, 0.0};
-            default: return {0.0, -1.0};
-        }
-    }
-    return {std::cos(theta), std::sin(theta)};
-}
-
 using detail::Integrands;
 
 // The six integrands at t (detail/segment_quadrature.hpp) for the plane: k²/|P'|⁵ with k of eq (15).
@@ -96,8 +80,8 @@ UnitChordHermite::UnitChordHermite(double theta0, double theta1, double r0, doub
     require_tangent_angle(who.c_str(), theta1, "theta1");
     if (!std::isfinite(r0) || !(r0 > 0.0)) fail_input(who, "r0 must be finite and > 0, got " + full_precision(r0));
     if (!std::isfinite(r1) || !(r1 > 0.0)) fail_input(who, "r1 must be finite and > 0, got " + full_precision(r1));
-    u0_ = unit_direction(theta0);
-    u1_ = unit_direction(theta1);
+    u0_ = detail::exact_unit_direction(theta0);
+    u1_ = detail::exact_unit_direction(theta1);
     const Eigen::Vector2d e1(1.0, 0.0);
     // P' = b'(t) e1 + r0 c'(t) u0 + r1 d'(t) u1 with b' = 6t − 6t², c' = 1 − 4t + 3t², d' = −2t + 3t².
     a_ = r0 * u0_;

@@ -63,27 +63,7 @@ PseudoEnergyMinimum choose(double theta0, double theta1, const std::vector<Desce
     PseudoEnergyMinimum m;
     m.theta0 = theta0;
     m.theta1 = theta1;
-    m.evaluations = evaluations;
-    m.runner_up = kInf;
-    const std::vector<const Descent*> distinct = distinct_minima(runs);
-    m.local_minima = static_cast<int>(distinct.size());
-    if (distinct.empty()) {
-        m.type = SegmentType::x;
-        m.pseudo_energy = kInf;
-        std::string why = runs.empty() ? "the scan found no interior local minimum" : runs.front().message;
-        m.outcome = {Status::no_convergence, "no descent converged: " + why};
-        return m;
-    }
-    const Descent& best = *distinct.front();
-    fill_measures(m, std::exp(best.rho0), std::exp(best.rho1), best.energy);
-    if (distinct.size() > 1) {
-        m.runner_up = distinct[1]->j;
-        m.runner_up_r0 = std::exp(distinct[1]->rho0);
-        m.runner_up_r1 = std::exp(distinct[1]->rho1);
-    }
-    if (std::min(m.r0, m.r1) < kRunawayLow || std::max(m.r0, m.r1) > kRunawayHigh)
-        m.outcome = {Status::no_solution, "minimiser runs off to the boundary of r > 0 (r0 = " + full_precision(m.r0) + ", r1 = " + full_precision(m.r1) + ")"};
-    return m;
+    return choose_minimum(m, runs, evaluations, [&](PseudoEnergyMinimum& out, const Descent& best) { fill_measures(out, std::exp(best.rho0), std::exp(best.rho1), best.energy); });
 }
 
 }  // namespace

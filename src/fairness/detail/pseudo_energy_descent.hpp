@@ -279,4 +279,31 @@ inline std::vector<const Descent*> distinct_minima(const std::vector<Descent>& r
     return distinct;
 }
 
+// The answer among the descents (planar PseudoEnergyMinimum or its space form): the lowest distinct
+// minimum, measured by fill(m, best); the runner-up; no_convergence when no descent converged,
+// no_solution when the minimiser runs off towards r = 0 or ∞.
+template <class Minimum, class Fill>
+Minimum choose_minimum(Minimum m, const std::vector<Descent>& runs, long evaluations, const Fill& fill) {
+    m.evaluations = evaluations;
+    m.runner_up = kInf;
+    const std::vector<const Descent*> distinct = distinct_minima(runs);
+    m.local_minima = static_cast<int>(distinct.size());
+    if (distinct.empty()) {
+        m.type = SegmentType::x;
+        m.pseudo_energy = kInf;
+        std::string why = runs.empty() ? "the scan found no interior local minimum" : runs.front().message;
+        m.outcome = {Status::no_convergence, "no descent converged: " + why};
+        return m;
+    }
+    fill(m, *distinct.front());
+    if (distinct.size() > 1) {
+        m.runner_up = distinct[1]->j;
+        m.runner_up_r0 = std::exp(distinct[1]->rho0);
+        m.runner_up_r1 = std::exp(distinct[1]->rho1);
+    }
+    if (std::min(m.r0, m.r1) < kRunawayLow || std::max(m.r0, m.r1) > kRunawayHigh)
+        m.outcome = {Status::no_solution, "minimiser runs off to the boundary of r > 0 (r0 = " + full_precision(m.r0) + ", r1 = " + full_precision(m.r1) + ")"};
+    return m;
+}
+
 }  // namespace cagd::fairness::detail

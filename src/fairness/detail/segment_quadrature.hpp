@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <vector>
 
 #include "cagd/fairness/hermite_segment.hpp"
@@ -18,6 +19,22 @@
 namespace cagd::fairness::detail {
 
 constexpr double kCuspSpeed = 1e-13;  // relative to 1 + r0 + r1
+
+// cos/sin that are exact at multiples of π/2 given in floating point (±π, ±π/2, 0), so the
+// collinear configurations of §4.1 are collinear to the last bit.
+inline Eigen::Vector2d exact_unit_direction(double theta) {
+    const double q = theta / (std::numbers::pi / 2);
+    const double nearest = std::round(q);
+    if (std::abs(q - nearest) < 1e-15 * 4) {
+        switch (((static_cast<int>(nearest) % 4) + 4) % 4) {
+            case 0: return {1.0, 0.0};
+            case 1: return {0.0, 1.0};
+            case 2: return {-1.0, 0.0};
+            default: return {0.0, -1.0};
+        }
+    }
+    return {std::cos(theta), std::sin(theta)};
+}
 
 // The six integrands at t: |P'|, κ²|P'|, and their derivatives with respect to r0, r1.
 using Integrands = std::array<double, 6>;

@@ -1,0 +1,126 @@
+// The space pseudo-energy (issue 26, part 1): the 3-D unit-chord segment, its energies and the
+// minimum of J = L²E over r0, r1; checked against the planar segment at φ = 0 and π, its
+// symmetries, finite differences, the generic analysis module and the reference path.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "cagd/analysis/curve_measures.hpp"
+#include "cagd/fairness/pseudo_energy_minimum.hpp"
+#include "cagd/fairness/space_pseudo_energy.hpp"
+#include "cagd/spline/bezier.hpp"
+
+using namespace cagd;
+using namespace cagd::fairness;
+
+namespace {
+constexpr double kPi = std::numbers::pi;
+const double kAngles[][2] = {{0.3, 0.7}, {1.2, 2.5}, {2.9, 0.4}, {0.8, 0.8}, {kPi / 2, kPi / 3}};
+}  // namespace
+
+TEST(SpacePseudoEnergy, PlanarAtPhiZeroAndPi) {
+    for (const auto& a : kAngles) {
+        // φ = 0 is the planar (θ0, θ1), φ = π the planar (θ0, −θ1).
+        for (const auto& [phi, sign] : {std::pair{0.0, 1.0}, {kPi, -1.0}}) {
+            const SpacePseudoEnergyMinimum s = minimize_space_pseudo_energy(a[0], a[1], phi);
+            const PseudoEnergyMinimum p = minimize_pseudo_energy(a[0], sign * a[1]);
+            ASSERT_TRUE(s.outcome.ok()) << s.outcome.message;
+            ASSERT_TRUE(p.outcome.ok()) << p.outcome.message;
+            EXPECT_NEAR(s.pseudo_energy, p.pseudo_energy, 1e-12 * (1 + p.pseudo_energy)) << a[0] << " " << a[1] << " " << phi;
+            EXPECT_NEAR(s.r0, p.r0, 1e-12 * p.r0);
+            EXPECT_NEAR(s.r1, p.r1, 1e-12 * p.r1);
+            EXPECT_NEAR(s.length, p.length, 1e-12);
+            EXPECT_EQ(s.type, p.type);
+        }
+    }
+}
+
+TEST(SpacePseudoEnergy, SegmentEnergiesEqualThePlanarOnesAndTheGenericQuadrature) {
+    const double r0 = 0.9, r1 = 1.3;
+    for (const auto& a : kAngles) {
+        const SegmentEnergy s = space_segment_energy_fast(SpaceUnitChordHermite(a[0], a[1], 0.0, r0, r1));
+        const SegmentEnergy p = segment_energy_fast(UnitChordHermite(a[0], a[1], r0, r1));
+        EXPECT_NEAR(s.pseudo_energy, p.pseudo_energy, 1e-14 * p.pseudo_energy);
+        EXPECT_NEAR(s.dj_dlog_r0, p.dj_dlog_r0, 1e-13 * (1 + std::abs(p.dj_dlog_r0)));
+        // A true space segment against analysis/ on the same cubic as a Bézier curve (independent
+        // curvature formula and adaptive quadrature).
+        const SpaceUnitChordHermite seg(a[0], a[1], 1.1, r0, r1);
+        Eigen::MatrixXd cp(4, 3);
+        cp.row(0).setZero();
+        cp.row(1) = (r0 * seg.u0() / 3.0).transpose();
+        cp.row(2) = (Eigen::Vector3d(1, 0, 0) - r1 * seg.u1() / 3.0).transpose();
+        cp.row(3) << 1, 0, 0;
+        const BezierCurve bez(cp);
+        EXPECT_NEAR((bez.point(0.37) - seg.position(0.37)).norm(), 0.0, 1e-15);
+        const SegmentEnergy e = space_segment_energy_fast(seg);
+        EXPECT_NEAR(e.length, analysis::arc_length(bez, 64), 1e-12);
+        EXPECT_NEAR(e.strain_energy, analysis::bending_energy(bez, 64), 1e-10 * e.strain_energy);
+        // The reference path (Romberg) agrees with the fast one.
+        const SegmentEnergy ref = space_segment_energy_reference(seg);
+        EXPECT_NEAR(ref.pseudo_energy, e.pseudo_energy, 1e-12 * e.pseudo_energy);
+    }
+}
+
+TEST(SpacePseudoEnergy, GradientMatchesCentralDifferences) {
+    const double h = 1e-6;
+    for (const auto& a : kAngles)
+        for (double phi : {0.4, 2.0, 4.5}) {
+            const double r0 = 0.8, r1 = 1.1;
+            const SegmentEnergy e = space_segment_energy_fast(SpaceUnitChordHermite(a[0], a[1], phi, r0, r1));
+            const auto J = [&](double x0, double x1) { return space_segment_energy_fast(SpaceUnitChordHermite(a[0], a[1], phi, std::exp(x0), std::exp(x1)), false).pseudo_energy; };
+            const double g0 = (J(std::log(r0) + h, std::log(r1)) - J(std::log(r0) - h, std::log(r1))) / (2 * h);
+            const double g1 = (J(std::log(r0), std::log(r1) + h) - J(std::log(r0), std::log(r1) - h)) / (2 * h);
+            EXPECT_NEAR(e.dj_dlog_r0, g0, 1e-7 * (1 + std::abs(g0)));
+            EXPECT_NEAR(e.dj_dlog_r1, g1, 1e-7 * (1 + std::abs(g1)));
+        }
+}
+
+TEST(SpacePseudoEnergy, SymmetriesReflectionAndReversal) {
+    for (const auto& a : kAngles)
+        for (double phi : {0.5, 1.7, 2.6}) {
+            const SpacePseudoEnergyMinimum m = minimize_space_pseudo_energy(a[0], a[1], phi);
+            // Reflection in the x–y plane: φ → 2π − φ.
+            const SpacePseudoEnergyMinimum refl = minimize_space_pseudo_energy(a[0], a[1], 2 * kPi - phi);
+            EXPECT_NEAR(refl.pseudo_energy, m.pseudo_energy, 1e-12 * m.pseudo_energy);
+            EXPECT_NEAR(refl.r0, m.r0, 1e-9 * m.r0);
+            // Reversal: (θ0, θ1, φ) → (θ1, θ0, φ), r0 ↔ r1.
+            const SpacePseudoEnergyMinimum rev = minimize_space_pseudo_energy(a[1], a[0], phi);
+            EXPECT_NEAR(rev.pseudo_energy, m.pseudo_energy, 1e-12 * m.pseudo_energy);
+            EXPECT_NEAR(rev.r0, m.r1, 1e-9 * m.r1);
+            EXPECT_NEAR(rev.r1, m.r0, 1e-9 * m.r0);
+            EXPECT_NEAR(rev.length, m.length, 1e-12);
+        }
+}
+
+TEST(SpacePseudoEnergy, FastAgreesWithReferenceOnRandomDirections) {
+    std::mt19937 rng(26);
+    std::uniform_real_distribution<double> theta(0.05, kPi - 0.05), phi(0.0, 2 * kPi);
+    for (int k = 0; k < 3; ++k) {
+        const double t0 = theta(rng), t1 = theta(rng), p = phi(rng);
+        const SpacePseudoEnergyMinimum f = minimize_space_pseudo_energy(t0, t1, p);
+        const SpacePseudoEnergyMinimum r = minimize_space_pseudo_energy_reference(t0, t1, p);
+        ASSERT_TRUE(f.outcome.ok() && r.outcome.ok());
+        EXPECT_NEAR(f.pseudo_energy, r.pseudo_energy, 1e-10 * (1 + r.pseudo_energy)) << t0 << " " << t1 << " " << p;
+        EXPECT_NEAR(f.r0, r.r0, 1e-6 * r.r0);
+        EXPECT_NEAR(f.r1, r.r1, 1e-6 * r.r1);
+        EXPECT_NEAR(f.length, r.length, 1e-10);
+    }
+}
+
+TEST(SpacePseudoEnergy, TypesAndUndefinedDirectionsAndBadInput) {
+    // The type is the planar eq (14) in the plane and the binormal rule in space.
+    EXPECT_EQ(SpaceUnitChordHermite(0.5, 0.5, kPi, 1, 1).type(), SegmentType::c);  // planar (0.5, −0.5): an arc
+    EXPECT_EQ(SpaceUnitChordHermite(0.5, 0.5, 0.0, 1, 1).type(), SegmentType::s);  // planar (0.5, 0.5): an S
+    const SpacePseudoEnergyMinimum straight = minimize_space_pseudo_energy(0.0, 0.0, 1.0);
+    EXPECT_EQ(straight.outcome.status, Status::no_solution);
+    EXPECT_EQ(straight.pseudo_energy, 0.0);
+    EXPECT_EQ(minimize_space_pseudo_energy(kPi, 0.0, 2.0).outcome.status, Status::no_solution);
+    EXPECT_THROW(SpaceUnitChordHermite(-0.1, 1, 1, 1, 1), InvalidInput);
+    EXPECT_THROW(SpaceUnitChordHermite(0.1, 3.5, 1, 1, 1), InvalidInput);
+    EXPECT_THROW(SpaceUnitChordHermite(0.1, 1, 7, 1, 1), InvalidInput);
+    EXPECT_THROW(SpaceUnitChordHermite(0.1, 1, NAN, 1, 1), InvalidInput);
+    EXPECT_THROW(SpaceUnitChordHermite(0.1, 1, 1, 0, 1), InvalidInput);
+    EXPECT_THROW(minimize_space_pseudo_energy(0.1, 1.0, -1.0), InvalidInput);
+}
