@@ -3,7 +3,10 @@
 // symmetries, finite differences, the generic analysis module and the reference path.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <numbers>
 #include <random>
 
@@ -123,4 +126,75 @@ TEST(SpacePseudoEnergy, TypesAndUndefinedDirectionsAndBadInput) {
     EXPECT_THROW(SpaceUnitChordHermite(0.1, 1, NAN, 1, 1), InvalidInput);
     EXPECT_THROW(SpaceUnitChordHermite(0.1, 1, 1, 0, 1), InvalidInput);
     EXPECT_THROW(minimize_space_pseudo_energy(0.1, 1.0, -1.0), InvalidInput);
+}
+
+// ---- the 3-D table (part 2) -------------------------------------------------------------------
+
+#include <sstream>
+
+#include "cagd/fairness/space_pseudo_energy_table.hpp"
+
+TEST(SpacePseudoEnergyTable, SameBytesForAnyThreadCountAndRoundTrip) {
+    const SpaceAngleGrid g{6, 8};
+    std::ostringstream one, three;
+    SpacePseudoEnergyTable::build(g, TableMethod::fast, 1).save(one);
+    const SpacePseudoEnergyTable t = SpacePseudoEnergyTable::build(g, TableMethod::fast, 3);
+    t.save(three);
+    EXPECT_EQ(one.str(), three.str());
+    const std::string path = (std::filesystem::temp_directory_path() / "cagd_space_table_test.txt").string();
+    t.save(path);
+    std::ostringstream again;
+    SpacePseudoEnergyTable::load(path).save(again);
+    EXPECT_EQ(again.str(), three.str());
+    std::ofstream(path) << "# something else\n";
+    EXPECT_THROW(SpacePseudoEnergyTable::load(path), InvalidInput);
+    std::filesystem::remove(path);
+}
+
+TEST(SpacePseudoEnergyTable, NodesSymmetriesAndThePlane) {
+    const SpaceAngleGrid g{6, 8};
+    const SpacePseudoEnergyTable t = SpacePseudoEnergyTable::build(g, TableMethod::fast, 2);
+    const std::vector<double> th = g.theta_nodes(), ph = g.phi_nodes();
+    for (int i = 0; i < 6; ++i)
+        for (int j = 0; j < 6; ++j)
+            for (int k = 0; k < 8; ++k) {
+                const SpaceTableValue& v = t.node(i, j, k);
+                // Lookup at a node returns the node; the filled symmetric nodes equal direct minima.
+                const SpaceTableValue l = t.lookup(th[i], th[j], ph[k]);
+                EXPECT_NEAR(l.pseudo_energy, v.pseudo_energy, 1e-12 * v.pseudo_energy);
+                if ((i + j + k) % 7 == 0) {
+                    const SpacePseudoEnergyMinimum m = minimize_space_pseudo_energy(th[i], th[j], ph[k]);
+                    EXPECT_NEAR(m.pseudo_energy, v.pseudo_energy, 1e-10 * v.pseudo_energy) << i << j << k;
+                    EXPECT_NEAR(m.r0, v.r0, 1e-6 * v.r0);
+                }
+            }
+    // φ = 0 is the planar table's direction pair (θ0, θ1).
+    const PseudoEnergyMinimum p = minimize_pseudo_energy(th[1], th[4]);
+    EXPECT_NEAR(t.node(1, 4, 0).pseudo_energy, p.pseudo_energy, 1e-12 * p.pseudo_energy);
+    // φ is periodic; θ outside [0, π] is refused.
+    EXPECT_NEAR(t.lookup(1.0, 2.0, 0.3).pseudo_energy, t.lookup(1.0, 2.0, 0.3 + 2 * kPi).pseudo_energy, 1e-12);
+    EXPECT_THROW(t.lookup(-0.1, 1.0, 0.0), InvalidInput);
+    EXPECT_THROW(t.lookup(1.0, 1.0, NAN), InvalidInput);
+    EXPECT_THROW(SpacePseudoEnergyTable::build({6, 7}, TableMethod::fast, 1), InvalidInput);
+}
+
+TEST(SpacePseudoEnergyTable, InterpolationErrorFallsWithTheGrid) {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> theta(0.4, kPi - 0.4), phi(0.0, 2 * kPi);
+    std::vector<std::array<double, 4>> probes;  // θ0, θ1, φ, exact J
+    while (probes.size() < 30) {
+        const double a = theta(rng), b = theta(rng), c = phi(rng);
+        const SpacePseudoEnergyMinimum m = minimize_space_pseudo_energy(a, b, c);
+        if (m.outcome.ok()) probes.push_back({a, b, c, m.pseudo_energy});
+    }
+    double err[2] = {0, 0};
+    int level = 0;
+    for (const SpaceAngleGrid g : {SpaceAngleGrid{8, 16}, SpaceAngleGrid{16, 32}}) {
+        const SpacePseudoEnergyTable t = SpacePseudoEnergyTable::build(g, TableMethod::fast, 2);
+        for (const auto& p : probes) err[level] = std::max(err[level], std::abs(t.lookup(p[0], p[1], p[2]).pseudo_energy - p[3]) / p[3]);
+        ++level;
+    }
+    EXPECT_LT(err[1], 0.5 * err[0]) << err[0] << " " << err[1];
+    RecordProperty("relative_error_8_16", std::to_string(err[0]) + " " + std::to_string(err[1]));
+    EXPECT_LT(err[1], 0.1);
 }

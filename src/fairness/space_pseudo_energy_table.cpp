@@ -1,0 +1,226 @@
+#include "cagd/fairness/space_pseudo_energy_table.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+
+#include "cagd/core/errors.hpp"
+#include "cagd/core/parallel.hpp"
+
+namespace cagd::fairness {
+
+namespace {
+
+constexpr int kSpaceTableFormat = 1;
+const char* const kWho = "cagd::fairness::SpacePseudoEnergyTable";
+
+void require_grid(const SpaceAngleGrid& g) {
+    if (g.n_theta < 2) fail_input(kWho, "n_theta must be >= 2, got " + std::to_string(g.n_theta));
+    if (g.n_phi < 4 || g.n_phi % 2 != 0) fail_input(kWho, "n_phi must be even and >= 4, got " + std::to_string(g.n_phi));
+    if (g.size() > 200'000'000L) fail_input(kWho, "grid of " + std::to_string(g.size()) + " nodes is larger than 2e8");
+}
+
+// The orbit representative of node (i, j, k): i ≤ j (reversal), k ≤ M/2 (reflection).
+struct Orbit {
+    int i, j, k;
+    bool swapped;  // the node is the reversal of its representative: r0 ↔ r1
+};
+Orbit orbit_of(int i, int j, int k, int m) { return {std::min(i, j), std::max(i, j), std::min(k, (m - k) % m), i > j}; }
+
+}  // namespace
+
+std::vector<double> SpaceAngleGrid::theta_nodes() const {
+    std::vector<double> t(static_cast<std::size_t>(n_theta));
+    for (int k = 0; k < n_theta; ++k) t[static_cast<std::size_t>(k)] = (k + 0.5) * std::numbers::pi / n_theta;
+    return t;
+}
+
+std::vector<double> SpaceAngleGrid::phi_nodes() const {
+    std::vector<double> p(static_cast<std::size_t>(n_phi));
+    for (int k = 0; k < n_phi; ++k) p[static_cast<std::size_t>(k)] = 2 * std::numbers::pi * k / n_phi;
+    return p;
+}
+
+std::vector<long> SpacePseudoEnergyTable::orbit_nodes(const SpaceAngleGrid& grid) {
+    require_grid(grid);
+    std::vector<long> out;
+    for (int i = 0; i < grid.n_theta; ++i)
+        for (int j = i; j < grid.n_theta; ++j)
+            for (int k = 0; k <= grid.n_phi / 2; ++k) out.push_back((static_cast<long>(i) * grid.n_theta + j) * grid.n_phi + k);
+    return out;
+}
+
+std::vector<SpacePseudoEnergyMinimum> SpacePseudoEnergyTable::compute_orbits(const SpaceAngleGrid& grid, TableMethod method, long begin, long end, int threads,
+                                                                             const std::function<void(long, long)>& progress) {
+    if (method == TableMethod::nlopt) fail_input(kWho, "the space table is built by the fast or the reference minimiser (method nlopt is planar only)");
+    const std::vector<long> orbits = orbit_nodes(grid);
+    if (begin < 0 || end > static_cast<long>(orbits.size()) || begin > end)
+        fail_input(kWho, "orbit range [" + std::to_string(begin) + ", " + std::to_string(end) + ") outside [0, " + std::to_string(orbits.size()) + "]");
+    const std::vector<double> theta = grid.theta_nodes(), phi = grid.phi_nodes();
+    std::vector<SpacePseudoEnergyMinimum> out(static_cast<std::size_t>(end - begin));
+    parallel_for(
+        end - begin, std::max(1, threads),
+        [&](long q) {
+            const long node = orbits[static_cast<std::size_t>(begin + q)];
+            const auto k = static_cast<std::size_t>(node % grid.n_phi), j = static_cast<std::size_t>((node / grid.n_phi) % grid.n_theta),
+                       i = static_cast<std::size_t>(node / grid.n_phi / grid.n_theta);
+            out[static_cast<std::size_t>(q)] =
+                method == TableMethod::reference ? minimize_space_pseudo_energy_reference(theta[i], theta[j], phi[k]) : minimize_space_pseudo_energy(theta[i], theta[j], phi[k]);
+        },
+        progress);
+    return out;
+}
+
+SpacePseudoEnergyTable SpacePseudoEnergyTable::assemble(const SpaceAngleGrid& grid, TableMethod method, const std::vector<SpacePseudoEnergyMinimum>& orbits) {
+    const std::vector<long> nodes = orbit_nodes(grid);
+    if (orbits.size() != nodes.size()) fail_input(kWho, "assemble needs " + std::to_string(nodes.size()) + " orbit minima, got " + std::to_string(orbits.size()));
+    SpacePseudoEnergyTable t;
+    t.grid_ = grid;
+    t.method_ = method;
+    t.theta_ = grid.theta_nodes();
+    t.phi_ = grid.phi_nodes();
+    // Position of each representative in the orbit list.
+    std::vector<long> where(static_cast<std::size_t>(grid.size()), -1);
+    for (std::size_t q = 0; q < nodes.size(); ++q) where[static_cast<std::size_t>(nodes[q])] = static_cast<long>(q);
+    t.values_.resize(static_cast<std::size_t>(grid.size()));
+    for (int i = 0; i < grid.n_theta; ++i)
+        for (int j = 0; j < grid.n_theta; ++j)
+            for (int k = 0; k < grid.n_phi; ++k) {
+                const Orbit o = orbit_of(i, j, k, grid.n_phi);
+                const SpacePseudoEnergyMinimum& m = orbits[static_cast<std::size_t>(where[static_cast<std::size_t>(t.index(o.i, o.j, o.k))])];
+                SpaceTableValue v{m.pseudo_energy, o.swapped ? m.r1 : m.r0, o.swapped ? m.r0 : m.r1, m.length, m.outcome.ok() ? m.type : SegmentType::x};
+                t.values_[static_cast<std::size_t>(t.index(i, j, k))] = v;
+            }
+    return t;
+}
+
+SpacePseudoEnergyTable SpacePseudoEnergyTable::build(const SpaceAngleGrid& grid, TableMethod method, int threads, const std::function<void(long, long)>& progress) {
+    const long orbits = static_cast<long>(orbit_nodes(grid).size());
+    return assemble(grid, method, compute_orbits(grid, method, 0, orbits, threads, progress));
+}
+
+std::string SpacePseudoEnergyTable::header_line() const {
+    std::ostringstream s;
+    s << "# cagd space pseudo-energy table format " << kSpaceTableFormat << " grid " << grid_.n_theta << " " << grid_.n_phi << " method " << to_string(method_);
+    return s.str();
+}
+
+void SpacePseudoEnergyTable::save(std::ostream& out) const {
+    out << header_line() << "\ni,j,k,J,r0,r1,L,type\n";
+    char buf[256];
+    for (int i = 0; i < grid_.n_theta; ++i)
+        for (int j = 0; j < grid_.n_theta; ++j)
+            for (int k = 0; k < grid_.n_phi; ++k) {
+                const SpaceTableValue& v = node(i, j, k);
+                std::snprintf(buf, sizeof buf, "%d,%d,%d,%.17g,%.17g,%.17g,%.17g,%s\n", i, j, k, v.pseudo_energy, v.r0, v.r1, v.length, to_string(v.type));
+                out << buf;
+            }
+}
+
+void SpacePseudoEnergyTable::save(const std::string& path) const {
+    const std::string tmp = path + ".tmp." + std::to_string(::getpid());
+    {
+        std::ofstream out(tmp);
+        if (!out) fail_input(kWho, "cannot write '" + tmp + "'");
+        save(out);
+        if (!out) fail_input(kWho, "writing '" + tmp + "' failed");
+    }
+    std::rename(tmp.c_str(), path.c_str());
+}
+
+SpacePseudoEnergyTable SpacePseudoEnergyTable::load(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) fail_input(kWho, "cannot open '" + path + "'");
+    std::string line;
+    std::getline(in, line);
+    std::istringstream h(line);
+    std::string hash, cagd, space, pe, table, format, grid_word, method_word, method;
+    int version = 0, n = 0, m = 0;
+    h >> hash >> cagd >> space >> pe >> table >> format >> version >> grid_word >> n >> m >> method_word >> method;
+    if (hash != "#" || space != "space" || grid_word != "grid" || method_word != "method" || version != kSpaceTableFormat)
+        fail_input(kWho, "'" + path + "' is not a space pseudo-energy table of format " + std::to_string(kSpaceTableFormat) + " (first line: '" + line + "')");
+    SpacePseudoEnergyTable t;
+    t.grid_ = {n, m};
+    require_grid(t.grid_);
+    t.method_ = method == "reference" ? TableMethod::reference : TableMethod::fast;
+    t.theta_ = t.grid_.theta_nodes();
+    t.phi_ = t.grid_.phi_nodes();
+    t.values_.assign(static_cast<std::size_t>(t.grid_.size()), {});
+    std::getline(in, line);  // column names
+    long rows = 0;
+    while (std::getline(in, line)) {
+        int i = 0, j = 0, k = 0;
+        double jv = 0, r0 = 0, r1 = 0, len = 0;
+        char type[4] = {0};
+        if (std::sscanf(line.c_str(), "%d,%d,%d,%lf,%lf,%lf,%lf,%1s", &i, &j, &k, &jv, &r0, &r1, &len, type) != 8 || i < 0 || j < 0 || k < 0 || i >= n || j >= n || k >= m)
+            fail_input(kWho, "'" + path + "': malformed row " + std::to_string(rows + 3));
+        t.values_[static_cast<std::size_t>(t.index(i, j, k))] = {jv, r0, r1, len, type[0] == 'c' ? SegmentType::c : type[0] == 's' ? SegmentType::s : SegmentType::x};
+        ++rows;
+    }
+    if (rows != t.grid_.size()) fail_input(kWho, "'" + path + "': expected " + std::to_string(t.grid_.size()) + " rows, got " + std::to_string(rows));
+    return t;
+}
+
+SpacePseudoEnergyTable SpacePseudoEnergyTable::load_or_build(const std::string& path, const SpaceAngleGrid& grid, TableMethod method, int threads) {
+    try {
+        SpacePseudoEnergyTable t = load(path);
+        if (t.grid_.n_theta == grid.n_theta && t.grid_.n_phi == grid.n_phi && t.method_ == method) return t;
+    } catch (const InvalidInput&) {
+        // missing or foreign: build
+    }
+    SpacePseudoEnergyTable t = build(grid, method, threads);
+    t.save(path);
+    return t;
+}
+
+SpaceTableValue SpacePseudoEnergyTable::lookup(double theta0, double theta1, double phi) const {
+    const char* who = "cagd::fairness::SpacePseudoEnergyTable::lookup";
+    for (const auto& [v, name] : {std::pair{theta0, "theta0"}, {theta1, "theta1"}})
+        if (!(v >= -1e-12 && v <= std::numbers::pi + 1e-12)) fail_input(who, std::string(name) + " must be a finite angle in [0, pi], got " + full_precision(v));
+    if (!std::isfinite(phi)) fail_input(who, "phi must be finite, got " + full_precision(phi));
+    const int n = grid_.n_theta, m = grid_.n_phi;
+    // θ: cell between midpoint nodes, clamped at the ends; φ: periodic.
+    const auto locate_theta = [&](double th, int& i, double& f) {
+        const double u = th / (std::numbers::pi / n) - 0.5;
+        i = std::clamp(static_cast<int>(std::floor(u)), 0, n - 2);
+        f = std::clamp(u - i, 0.0, 1.0);
+    };
+    int i = 0, j = 0;
+    double fu = 0, fv = 0;
+    locate_theta(theta0, i, fu);
+    locate_theta(theta1, j, fv);
+    const double turns = phi / (2 * std::numbers::pi);
+    const double w = (turns - std::floor(turns)) * m;
+    const int k = std::min(static_cast<int>(w), m - 1);
+    const double fw = w - k;
+    const int k1 = (k + 1) % m;
+    const SegmentType want = node(fu < 0.5 ? i : i + 1, fv < 0.5 ? j : j + 1, fw < 0.5 ? k : k1).type;
+    SpaceTableValue out;
+    double wsum = 0;
+    for (int c = 0; c < 8; ++c) {
+        const int a = i + (c & 1), b = j + ((c >> 1) & 1), p = (c & 4) ? k1 : k;
+        const SpaceTableValue& v = node(a, b, p);
+        if (v.type == SegmentType::x || (want != SegmentType::x && v.type != want)) continue;
+        const double wt = ((c & 1) ? fu : 1 - fu) * (((c >> 1) & 1) ? fv : 1 - fv) * ((c & 4) ? fw : 1 - fw);
+        wsum += wt;
+        out.pseudo_energy += wt * v.pseudo_energy;
+        out.r0 += wt * v.r0;
+        out.r1 += wt * v.r1;
+        out.length += wt * v.length;
+    }
+    if (!(wsum > 0.0))
+        fail_input(who, "no defined table node of the nearest node's type around (" + full_precision(theta0) + ", " + full_precision(theta1) + ", " + full_precision(phi) + ")");
+    out.pseudo_energy /= wsum;
+    out.r0 /= wsum;
+    out.r1 /= wsum;
+    out.length /= wsum;
+    out.type = want;
+    return out;
+}
+
+}  // namespace cagd::fairness
