@@ -19,6 +19,7 @@ packages=(
   python3-dev pybind11-dev python3-numpy   # the Python module `cagd` (python/), built for /usr/bin/python3
   python3-pytest         # make test: the Python module's tests
   python3-nbclient python3-ipykernel python3-matplotlib   # make test: runs examples/curvature_combs.ipynb
+  libopenmpi-dev openmpi-bin   # the space pseudo-energy table on MPI (optional in CMake; make test runs mpirun -np 2)
 )
 
 missing=()
