@@ -198,3 +198,114 @@ TEST(SpacePseudoEnergyTable, InterpolationErrorFallsWithTheGrid) {
     RecordProperty("relative_error_8_16", std::to_string(err[0]) + " " + std::to_string(err[1]));
     EXPECT_LT(err[1], 0.1);
 }
+
+// ---- the space pseudo-spline (part 3) ---------------------------------------------------------
+
+#include "cagd/core/point_csv.hpp"
+#include "cagd/fairness/space_pseudo_spline.hpp"
+
+namespace {
+// Exact segments, J(θ) from the 36-node fast tables (ExactOracle's J(θ) costs 0.15 s a value).
+struct PlanarHybrid final : SegmentOracle {
+    PseudoSplineTables tables = PseudoSplineTables::from(PseudoEnergyTable::build({36, NodePlacement::periodic}, TableMethod::fast, 2));
+    TableValue segment(double t0, double t1) const override { return ExactOracle{}.segment(t0, t1); }
+    std::pair<double, double> angle_minimum(double t) const override { return tables.angle.lookup(t); }
+    double angle_energy(double t) const override { return tables.angle.pseudo_energy(t); }
+};
+struct SpaceHybrid final : SpaceSegmentOracle {
+    explicit SpaceHybrid(const PlanarHybrid& p) : planar_(p) {}
+    SpaceTableValue segment(double t0, double t1, double phi) const override { return ExactSpaceOracle{}.segment(t0, t1, phi); }
+    const SegmentOracle& planar() const override { return planar_; }
+    const PlanarHybrid& planar_;
+};
+const PlanarHybrid& hybrid() {
+    static const PlanarHybrid h;
+    return h;
+}
+}  // namespace
+
+TEST(SpacePseudoSpline, FarEndOptimumIsPlanarAndJOfThetaGrows) {
+    // (a) of space_pseudo_spline.hpp: over φ the energy is least at φ = 0 or π.
+    for (double t0 : {0.3, 1.0, 2.0})
+        for (double t1 : {0.4, 1.3, 2.6}) {
+            const double plane = std::min(minimize_space_pseudo_energy(t0, t1, 0.0).pseudo_energy, minimize_space_pseudo_energy(t0, t1, kPi).pseudo_energy);
+            for (int k = 1; k < 12; ++k) EXPECT_GE(minimize_space_pseudo_energy(t0, t1, kPi * k / 6).pseudo_energy, plane * (1 - 1e-12)) << t0 << " " << t1 << " " << k;
+        }
+    // (b): J(θ) grows on [0, π].
+    double prev = -1.0;
+    for (int k = 0; k <= 36; ++k) {
+        const double j = hybrid().angle_energy(kPi * k / 36 * 0.999);
+        EXPECT_GT(j, prev) << k;
+        prev = j;
+    }
+}
+
+TEST(SpacePseudoSpline, PlanarPointsGiveThePlanarPseudoSpline) {
+    const PointList p = read_points_csv(std::string(CAGD_SOURCE_DIR) + "/reference/pseudo_energy/data/table1.csv");
+    const SpaceHybrid space(hybrid());
+    for (bool closed : {false, true})
+        for (TangentOptimization mode : {TangentOptimization::none, TangentOptimization::exact, TangentOptimization::approximate}) {
+            const PseudoSpline plane = pseudo_spline(p, hybrid(), mode, closed);
+            const SpacePseudoSpline s = space_pseudo_spline(p, space, mode, closed);
+            const double scale = bounding_box_diagonal(p);
+            for (int k = 0; k <= 400; ++k) {
+                const double u = plane.curve.t_max() * k / 400;
+                const Eigen::VectorXd a = plane.curve.point(u), b = s.curve.point(u);
+                // Exact mode: Brent stops at a relative 2^-26 of the tangent angle (method_registry.hpp), and
+                // the two constructions evaluate w at different angles (signed in the plane, turned in space).
+                const double tol = mode == TangentOptimization::exact ? 1e-7 : 1e-12;
+                EXPECT_NEAR((b.head<2>() - a).norm(), 0.0, tol * scale) << to_string(mode) << " closed " << closed << " u " << u;
+                EXPECT_EQ(b(2), 0.0);
+            }
+            EXPECT_NEAR(s.length_from_tables(), plane.length_from_tables(), 1e-9 * plane.length_from_tables());
+        }
+}
+
+TEST(SpacePseudoSpline, InterpolatesIsInvariantAndInPlaneOptimal) {
+    // A space polygon (a sampled helix with a kink), open.
+    PointList p(9, 3);
+    for (int i = 0; i < 9; ++i) p.row(i) << std::cos(0.7 * i), std::sin(0.7 * i), 0.25 * i + (i == 4 ? 0.3 : 0.0);
+    const SpaceHybrid space(hybrid());
+    const SpacePseudoSpline s = space_pseudo_spline(p, space, TangentOptimization::exact, false);
+    for (int i = 0; i < 9; ++i) EXPECT_NEAR((s.curve.point(i) - p.row(i).transpose()).norm(), 0.0, 1e-12);
+    // The tangent minimises w over the sphere: random directions never do better.
+    std::mt19937 rng(5);
+    std::normal_distribution<double> N;
+    for (int i = 1; i < 8; ++i) {
+        const Eigen::Vector3d in = (p.row(i) - p.row(i - 1)).transpose(), out = (p.row(i + 1) - p.row(i)).transpose();
+        const auto w = [&](const Eigen::Vector3d& t) {
+            const auto ang = [&](const Eigen::Vector3d& c) { return std::atan2(c.cross(t).norm(), c.dot(t)); };
+            return in.norm() * hybrid().angle_energy(ang(in)) + out.norm() * hybrid().angle_energy(ang(out));
+        };
+        const double best = w(s.tangent[static_cast<std::size_t>(i)]);
+        for (int k = 0; k < 2000; ++k) {
+            const Eigen::Vector3d t = Eigen::Vector3d(N(rng), N(rng), N(rng)).normalized();
+            EXPECT_GE(w(t), best * (1 - 1e-9)) << "point " << i;
+        }
+    }
+    // Similarity: rotate, scale and translate the points; the curve follows. With the tables' J(θ)
+    // (linear between nodes) w can be flat over an interval, where Brent's answer is decided by
+    // rounding; a smooth J(θ) isolates the construction: J(θ) = θ²(1 + θ²/10), θ1(θ) = −θ/2.
+    struct SmoothJ final : SegmentOracle {
+        TableValue segment(double t0, double t1) const override { return ExactOracle{}.segment(t0, t1); }
+        std::pair<double, double> angle_minimum(double t) const override { return {angle_energy(t), -t / 2}; }
+        double angle_energy(double t) const override { return t * t * (1 + t * t / 10); }
+    } smooth;
+    struct SmoothSpace final : SpaceSegmentOracle {
+        explicit SmoothSpace(const SegmentOracle& p) : planar_(p) {}
+        SpaceTableValue segment(double t0, double t1, double phi) const override { return ExactSpaceOracle{}.segment(t0, t1, phi); }
+        const SegmentOracle& planar() const override { return planar_; }
+        const SegmentOracle& planar_;
+    } smooth_space(smooth);
+    const SpacePseudoSpline sm = space_pseudo_spline(p, smooth_space, TangentOptimization::exact, false);
+    const Eigen::Matrix3d R = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+    const Eigen::Vector3d shift(3, -1, 2);
+    PointList q(9, 3);
+    for (int i = 0; i < 9; ++i) q.row(i) = (2.5 * R * p.row(i).transpose() + shift).transpose();
+    const SpacePseudoSpline sq = space_pseudo_spline(q, smooth_space, TangentOptimization::exact, false);
+    for (int k = 0; k <= 80; ++k) {
+        const double u = 8.0 * k / 80;
+        EXPECT_NEAR((sq.curve.point(u) - (2.5 * R * sm.curve.point(u) + shift)).norm(), 0.0, 1e-7 * 2.5 * bounding_box_diagonal(p)) << u;
+    }
+    EXPECT_THROW(space_pseudo_spline(PointList::Zero(3, 4), space, TangentOptimization::exact, false), InvalidInput);
+}

@@ -1,0 +1,83 @@
+#pragma once
+// The space pseudo-spline (issue 26, part 3): the cubic Hermite curve through points in 3-D whose
+// spans are minimum pseudo-energy space segments (space_pseudo_energy.hpp), the generalisation of
+// pseudo_energy section 3 (eq 9–13) that section 6 proposes.
+//
+// Tangents (eq 11–12 in space). At an interior point P_i with chords c_{i−1} (in) and c_i (out),
+// the unit tangent T minimises w(T) = l_{i−1} J(∠(T, c_{i−1})) + l_i J(∠(T, c_i)) over the sphere,
+// J(θ) = min over the far end's direction of J. Two facts reduce this to the plane:
+//  (a) J(θ) in space is the planar J(θ) of eq (11): the best far-end direction for a given near-end
+//      angle lies in a plane through the chord (checked numerically in the tests: over φ the
+//      segment energy is least at φ = 0 or π);
+//  (b) J(θ) grows with θ ∈ [0, π], so for any T off the plane of c_{i−1} and c_i, its projection onto
+//      that plane (normalised) makes both angles smaller (cos ∠(T, a) = T∥·a ≤ T∥·a / |T∥| for a in
+//      the plane, when T∥·a > 0), hence w smaller: the minimiser lies in that plane.
+// So T is the planar tangent of the three points in their own plane: α ∈ [−τ, 0] from the outgoing
+// chord, τ the turn, by Brent (exact), the paper's 3-point parabola (approx) or the direction of
+// P_{i+1} − P_{i−1} (none) — pseudo_spline.hpp's rules, applied in each point's plane. Collinear
+// chords give T along them; a turn of π (hairpin) is refused as in the plane.
+// Ends (eq 13): the end tangent lies in the plane of the end chord and the neighbouring tangent, at
+// the angle θ1(θ) that eq (11) gives for that tangent's angle θ with the chord.
+// Spans (eq 9–10): in span i's frame, θ0 = ∠(T_i, c_i), θ1 = ∠(T_{i+1}, c_i) ∈ [0, π] and φ the
+// dihedral angle about c_i from the plane (c_i, T_i) to (c_i, T_{i+1}); (r0, r1) from the space
+// oracle; derivatives l_i r0 T_i and l_i r1 T_{i+1}. Points in a plane give the planar
+// pseudo-spline (φ = 0 or π, the planar J by symmetry; tested to 1e-9 with the exact oracles).
+// Length (eq 16–17): L = Σ l_i L_i. A space curve encloses no area; none is reported.
+#include <Eigen/Dense>
+#include <vector>
+
+#include "cagd/core/points.hpp"
+#include "cagd/fairness/pseudo_spline.hpp"
+#include "cagd/fairness/space_pseudo_energy_table.hpp"
+#include "cagd/spline/hermite_spline.hpp"
+
+namespace cagd::fairness {
+
+class SpaceSegmentOracle {
+public:
+    virtual ~SpaceSegmentOracle() = default;
+    // J, r0, r1, L, type of the segment (θ0, θ1, φ), θ0, θ1 ∈ [0, π] not both in {0, π}.
+    virtual SpaceTableValue segment(double theta0, double theta1, double phi) const = 0;
+    // The planar eq (11) source: J(θ) and θ1(θ) (see (a) above).
+    virtual const SegmentOracle& planar() const = 0;
+};
+
+// The fast minimiser at the exact angles, and ExactOracle for J(θ).
+class ExactSpaceOracle : public SpaceSegmentOracle {
+public:
+    SpaceTableValue segment(double theta0, double theta1, double phi) const override;
+    const SegmentOracle& planar() const override { return planar_; }
+
+private:
+    ExactOracle planar_;
+};
+
+// A 3-D table for the segments and a planar oracle (its tables) for J(θ). Keep both alive.
+class TableSpaceOracle : public SpaceSegmentOracle {
+public:
+    TableSpaceOracle(const SpacePseudoEnergyTable& table, const SegmentOracle& planar) : table_(table), planar_(planar) {}
+    SpaceTableValue segment(double theta0, double theta1, double phi) const override { return table_.lookup(theta0, theta1, phi); }
+    const SegmentOracle& planar() const override { return planar_; }
+
+private:
+    const SpacePseudoEnergyTable& table_;
+    const SegmentOracle& planar_;
+};
+
+struct SpacePseudoSplineSpan {
+    double theta0 = 0.0, theta1 = 0.0, phi = 0.0;
+    SpaceTableValue value;
+};
+
+struct SpacePseudoSpline {
+    spline::PiecewiseHermiteCurve curve;
+    std::vector<Eigen::Vector3d> tangent;  // unit tangent at every point
+    std::vector<double> chord_length;      // l_i, one per span
+    std::vector<SpacePseudoSplineSpan> spans;
+    double length_from_tables() const;  // eq (16), (17)
+};
+
+// Points n × 3 (2 columns are taken as z = 0). Open: at least 2 points; closed: at least 3.
+SpacePseudoSpline space_pseudo_spline(const PointList& points, const SpaceSegmentOracle& oracle, TangentOptimization mode, bool closed);
+
+}  // namespace cagd::fairness
