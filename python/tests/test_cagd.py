@@ -201,7 +201,7 @@ def test_bad_input_is_value_error_with_the_library_message():
     with pytest.raises(ValueError):
         cagd.pseudo_energy(4.0, 0.5)  # outside [-π, π]
     with pytest.raises(ValueError):
-        cagd.interpolate(lifted(p), "pseudo-spline")  # a planar method given 3-D points
+        cagd.interpolate(lifted(p), "curvature-profile")  # a planar method given 3-D points
 
 
 def test_numerical_outcome_is_no_solution_or_a_status():

@@ -42,14 +42,18 @@ public:
     virtual const SegmentOracle& planar() const = 0;
 };
 
-// The fast minimiser at the exact angles, and ExactOracle for J(θ).
+// The fast minimiser at the exact angles; J(θ) from ExactOracle (0.15 s a value), or from a given
+// planar oracle (its tables: what `cagd interpolate --method pseudo-spline` does on 3-D points).
 class ExactSpaceOracle : public SpaceSegmentOracle {
 public:
+    ExactSpaceOracle() = default;
+    explicit ExactSpaceOracle(const SegmentOracle& planar) : planar_ref_(&planar) {}
     SpaceTableValue segment(double theta0, double theta1, double phi) const override;
-    const SegmentOracle& planar() const override { return planar_; }
+    const SegmentOracle& planar() const override { return planar_ref_ ? *planar_ref_ : exact_; }
 
 private:
-    ExactOracle planar_;
+    ExactOracle exact_;
+    const SegmentOracle* planar_ref_ = nullptr;
 };
 
 // A 3-D table for the segments and a planar oracle (its tables) for J(θ). Keep both alive.

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "cagd/fairness/pseudo_spline.hpp"
+#include "cagd/fairness/space_pseudo_spline.hpp"
 #include "cagd/intrinsic/curvature_profile_design.hpp"
 #include "cagd/intrinsic/knot_difference_list.hpp"
 #include "cagd/locality/locality_spline.hpp"
@@ -62,8 +63,29 @@ const fairness::PseudoSplineTables& default_pseudo_spline_tables() {
     return tables;
 }
 
+// Space points (issue 26): the space pseudo-spline, tangents by the planar tables' J(θ), spans by
+// the space minimiser at the exact angles or from a space table (--space-table).
+InterpolationResult build_space_pseudo_spline(const PointList& points, bool closed, const ParameterValues& v, const fairness::PseudoSplineTables& planar) {
+    const auto mode = fairness::parse_tangent_optimization(v.text("optimize"));
+    const fairness::TableOracle planar_oracle = planar.oracle();
+    fairness::SpacePseudoSpline ps = [&] {
+        if (v.has("space-table")) {
+            const fairness::SpacePseudoEnergyTable table = fairness::SpacePseudoEnergyTable::load(v.text("space-table"));
+            return fairness::space_pseudo_spline(points, fairness::TableSpaceOracle(table, planar_oracle), mode, closed);
+        }
+        return fairness::space_pseudo_spline(points, fairness::ExactSpaceOracle(planar_oracle), mode, closed);
+    }();
+    InterpolationResult r = result_of(unit_span_interpolant(std::make_shared<spline::PiecewiseHermiteCurve>(ps.curve), node_count(points, closed), unit_lengths(points, closed)));
+    r.quantities = {{"length_from_tables", ps.length_from_tables()}};
+    return r;
+}
+
 InterpolationResult build_pseudo_spline(const PointList& points, bool closed, const ParameterValues& v) {
     const auto mode = fairness::parse_tangent_optimization(v.text("optimize"));
+    if (points.cols() == 3)
+        return v.has("table") ? build_space_pseudo_spline(points, closed, v, fairness::PseudoSplineTables::from(fairness::PseudoEnergyTable::load(v.text("table"))))
+                              : build_space_pseudo_spline(points, closed, v, default_pseudo_spline_tables());
+    if (v.has("space-table")) fail_input("cagd::methods(pseudo-spline)", "--space-table is for 3-D points; these have 2 coordinates");
     const auto make = [&](const fairness::PseudoSplineTables& t) { return fairness::pseudo_spline(points, t.oracle(), mode, closed); };
     const fairness::PseudoSpline ps =
         v.has("table") ? make(fairness::PseudoSplineTables::from(fairness::PseudoEnergyTable::load(v.text("table")))) : make(default_pseudo_spline_tables());
@@ -230,11 +252,17 @@ std::vector<Method> make_registry() {
                         .default_text = "exact",
                         .choices = {"none", "exact", "approx"},
                         .help = "tangent optimisation of eq (12): none, exact (Brent) or approx (3-point parabola, Table 4)"},
-                       {.name = "table", .type = P::text, .help = "pseudo-energy table written by cagd energy-table (absent: the 36-node fast table, built in memory)"}},
+                       {.name = "table", .type = P::text, .help = "pseudo-energy table written by cagd energy-table (absent: the 36-node fast table, built in memory)"},
+                       {.name = "space-table",
+                        .type = P::text,
+                        .help = "3-D points: space pseudo-energy table (SpacePseudoEnergyTable, e.g. from cagd_space_table_mpi) for the spans (absent: the space minimiser at "
+                                "each span's angles)"}},
         .claims =
             [](const ParameterValues& v) {
-                return MethodClaims{
-                    .geometric_continuity = 1, .parameter = "u (unit spans)", .invariance = v.text("optimize") == "exact" ? Invariance::none : Invariance::similarity};
+                return MethodClaims{.geometric_continuity = 1,
+                                    .parameter = "u (unit spans)",
+                                    .invariance = v.text("optimize") == "exact" ? Invariance::none : Invariance::similarity,
+                                    .max_dimension = 3};
             },
         .build = build_pseudo_spline,
         .presets = {{"pseudo-spline-none", {{"optimize", "none"}}}, {"pseudo-spline-exact", {{"optimize", "exact"}}}, {"pseudo-spline-approx", {{"optimize", "approx"}}}},

@@ -8,7 +8,8 @@
 //
 //   method              source                                                 claims
 //   pseudo-spline       pseudo_energy eq (4)–(12), tangents by --optimize            G1
-//                       (none | exact | approx: Table 4's 3-point approximation)
+//                       (none | exact | approx: Table 4's 3-point approximation);
+//                       3-D points: the space pseudo-spline of section 6 (fairness/space_pseudo_spline.hpp)
 //   cubic-a, cubic-b    C2 cubic spline, uniform / chord-length τ (sec 4.2)         C2 in τ
 //   hermite-a, -b       Hermite curves A and B (sec 4.2)                            G1
 //   s-spline, b2-spline sb2_locality eq (12)–(13), locality m, ends, extra-point rule C2 in u
