@@ -115,6 +115,19 @@ public:
     std::pair<double, double> angle_minimum(double theta) const override;
 };
 
+// Segments by the minimiser at the exact angles (as ExactOracle), J(θ) and θ1(θ) from another oracle
+// (its tables): the planar counterpart of ExactSpaceOracle(planar), for comparing the two.
+class ExactSegmentOracle : public SegmentOracle {
+public:
+    explicit ExactSegmentOracle(const SegmentOracle& angles) : angles_(angles) {}
+    TableValue segment(double theta0, double theta1) const override { return ExactOracle{}.segment(theta0, theta1); }
+    std::pair<double, double> angle_minimum(double theta) const override { return angles_.angle_minimum(theta); }
+    double angle_energy(double theta) const override { return angles_.angle_energy(theta); }
+
+private:
+    const SegmentOracle& angles_;
+};
+
 struct PseudoSplineSpan {
     double theta0 = 0.0, theta1 = 0.0;  // unit-chord frame angles (eq 9)
     TableValue value;                   // r0, r1, J, L, S used for the span
