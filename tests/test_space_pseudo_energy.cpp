@@ -309,3 +309,26 @@ TEST(SpacePseudoSpline, InterpolatesIsInvariantAndInPlaneOptimal) {
     }
     EXPECT_THROW(space_pseudo_spline(PointList::Zero(3, 4), space, TangentOptimization::exact, false), InvalidInput);
 }
+
+#include "cagd/methods/method_registry.hpp"
+
+TEST(SpacePseudoSpline, ThroughTheRegistryWithAndWithoutASpaceTable) {
+    PointList p(7, 3);
+    for (int i = 0; i < 7; ++i) p.row(i) << std::cos(0.8 * i), std::sin(0.8 * i), 0.2 * i;
+    const methods::InterpolationResult exact = methods::interpolate("pseudo-spline", p, false);
+    ASSERT_TRUE(exact.outcome.ok());
+    const std::string path = (std::filesystem::temp_directory_path() / "cagd_space_table_registry.txt").string();
+    SpacePseudoEnergyTable::build({12, 24}, TableMethod::fast, 2).save(path);
+    const methods::InterpolationResult table = methods::interpolate("pseudo-spline", p, false, {{"space-table", path}});
+    ASSERT_TRUE(table.outcome.ok());
+    for (int i = 0; i < 7; ++i) {
+        EXPECT_NEAR((exact.interpolant->curve->point(i) - p.row(i).transpose()).norm(), 0.0, 1e-12);
+        EXPECT_NEAR((table.interpolant->curve->point(i) - p.row(i).transpose()).norm(), 0.0, 1e-12);
+    }
+    // The same tangents; the spans' magnitudes from a 15° table differ a little from the exact ones.
+    const double le = exact.quantities.front().second, lt = table.quantities.front().second;
+    EXPECT_NEAR(lt, le, 1e-2 * le);
+    EXPECT_NE(lt, le);
+    EXPECT_THROW(methods::interpolate("pseudo-spline", p.leftCols(2), false, {{"space-table", path}}), InvalidInput);
+    std::filesystem::remove(path);
+}
