@@ -206,20 +206,10 @@ TEST(SpacePseudoEnergyTable, InterpolationErrorFallsWithTheGrid) {
 
 namespace {
 // Exact segments, J(θ) from the 36-node fast tables (ExactOracle's J(θ) costs 0.15 s a value).
-struct PlanarHybrid final : SegmentOracle {
-    PseudoSplineTables tables = PseudoSplineTables::from(PseudoEnergyTable::build({36, NodePlacement::periodic}, TableMethod::fast, 2));
-    TableValue segment(double t0, double t1) const override { return ExactOracle{}.segment(t0, t1); }
-    std::pair<double, double> angle_minimum(double t) const override { return tables.angle.lookup(t); }
-    double angle_energy(double t) const override { return tables.angle.pseudo_energy(t); }
-};
-struct SpaceHybrid final : SpaceSegmentOracle {
-    explicit SpaceHybrid(const PlanarHybrid& p) : planar_(p) {}
-    SpaceTableValue segment(double t0, double t1, double phi) const override { return ExactSpaceOracle{}.segment(t0, t1, phi); }
-    const SegmentOracle& planar() const override { return planar_; }
-    const PlanarHybrid& planar_;
-};
-const PlanarHybrid& hybrid() {
-    static const PlanarHybrid h;
+const SegmentOracle& hybrid() {
+    static const PseudoSplineTables tables = PseudoSplineTables::from(PseudoEnergyTable::build({36, NodePlacement::periodic}, TableMethod::fast, 2));
+    static const TableOracle angles = tables.oracle();
+    static const ExactSegmentOracle h(angles);
     return h;
 }
 }  // namespace
@@ -242,7 +232,7 @@ TEST(SpacePseudoSpline, FarEndOptimumIsPlanarAndJOfThetaGrows) {
 
 TEST(SpacePseudoSpline, PlanarPointsGiveThePlanarPseudoSpline) {
     const PointList p = read_points_csv(std::string(CAGD_SOURCE_DIR) + "/reference/pseudo_energy/data/table1.csv");
-    const SpaceHybrid space(hybrid());
+    const ExactSpaceOracle space(hybrid());
     for (bool closed : {false, true})
         for (TangentOptimization mode : {TangentOptimization::none, TangentOptimization::exact, TangentOptimization::approximate}) {
             const PseudoSpline plane = pseudo_spline(p, hybrid(), mode, closed);
@@ -265,7 +255,7 @@ TEST(SpacePseudoSpline, InterpolatesIsInvariantAndInPlaneOptimal) {
     // A space polygon (a sampled helix with a kink), open.
     PointList p(9, 3);
     for (int i = 0; i < 9; ++i) p.row(i) << std::cos(0.7 * i), std::sin(0.7 * i), 0.25 * i + (i == 4 ? 0.3 : 0.0);
-    const SpaceHybrid space(hybrid());
+    const ExactSpaceOracle space(hybrid());
     const SpacePseudoSpline s = space_pseudo_spline(p, space, TangentOptimization::exact, false);
     for (int i = 0; i < 9; ++i) EXPECT_NEAR((s.curve.point(i) - p.row(i).transpose()).norm(), 0.0, 1e-12);
     // The tangent minimises w over the sphere: random directions never do better.
@@ -291,12 +281,7 @@ TEST(SpacePseudoSpline, InterpolatesIsInvariantAndInPlaneOptimal) {
         std::pair<double, double> angle_minimum(double t) const override { return {angle_energy(t), -t / 2}; }
         double angle_energy(double t) const override { return t * t * (1 + t * t / 10); }
     } smooth;
-    struct SmoothSpace final : SpaceSegmentOracle {
-        explicit SmoothSpace(const SegmentOracle& p) : planar_(p) {}
-        SpaceTableValue segment(double t0, double t1, double phi) const override { return ExactSpaceOracle{}.segment(t0, t1, phi); }
-        const SegmentOracle& planar() const override { return planar_; }
-        const SegmentOracle& planar_;
-    } smooth_space(smooth);
+    const ExactSpaceOracle smooth_space(smooth);
     const SpacePseudoSpline sm = space_pseudo_spline(p, smooth_space, TangentOptimization::exact, false);
     const Eigen::Matrix3d R = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
     const Eigen::Vector3d shift(3, -1, 2);

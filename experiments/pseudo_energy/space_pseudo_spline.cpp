@@ -5,8 +5,10 @@
 // curvature and torsion against the helix's), and a trefoil knot drawn by every 3-D method.
 // Oracles: J(θ) from the 36-node reference tables (as the planar experiments), spans by the space
 // minimiser at their exact angles; the planar comparisons use the same J(θ) with exact planar spans.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "cagd/analysis/curve_measures.hpp"
 #include "cagd/analysis/log_curvature_graph.hpp"
@@ -121,9 +123,11 @@ int main(int argc, char** argv) {
     const double kappa = 1.0 / (1.0 + c * c), tau = c / (1.0 + c * c), turn_length = 2 * kPi * std::sqrt(1.0 + c * c);
     CsvWriter h = run.table("space_helix.csv", {"mode", "points_per_turn", "length_error", "polygon_length_error", "max_curvature_deviation", "max_torsion_deviation"});
     CsvWriter prof = run.table("space_helix_profile.csv", {"points_per_turn", "s", "curvature", "torsion", "helix_curvature", "helix_torsion"});
-    std::string summary;
+    std::string summary, trends;
     for (TangentOptimization mode : {TangentOptimization::none, TangentOptimization::exact}) {
         summary += std::string(summary.empty() ? "" : "; ") + to_string(mode) + ":";
+        std::vector<double> errs, kds, tds;
+        double tau_ratio = 0.0;  // mean τ over the middle turn / the helix's, at the largest n
         for (int n : {4, 6, 8, 12, 16}) {
             const PointList p = helix_points(n, 2, pitch);
             const SpacePseudoSpline s = space_pseudo_spline(p, space, mode, false);
@@ -131,12 +135,13 @@ int main(int argc, char** argv) {
             double polygon = 0.0;
             for (Eigen::Index i = 0; i + 1 < p.rows(); ++i) polygon += (p.row(i + 1) - p.row(i)).norm();
             const bool profile = mode == TangentOptimization::none && (n == 6 || n == 16);
-            double kd = 0.0, td = 0.0;
+            double kd = 0.0, td = 0.0, tau_sum = 0.0;
             for (int k = 0; k <= 40 * n; ++k) {
                 const double u = n / 2.0 + n * static_cast<double>(k) / (40.0 * n);
                 const double ku = analysis::curvature(s.curve, u), tu = analysis::torsion(s.curve, u);
                 kd = std::max(kd, std::abs(ku / kappa - 1.0));
                 td = std::max(td, std::abs(tu / tau - 1.0));
+                tau_sum += tu;
                 if (profile) prof.row({double(n), analysis::arc_length(s.curve, 0.0, u), ku, tu, kappa, tau});
             }
             if (profile) {
@@ -147,14 +152,21 @@ int main(int argc, char** argv) {
             h.row_text({to_string(mode), std::to_string(n), format_number(e, 6), format_number(std::abs(polygon - 2 * turn_length) / (2 * turn_length), 6), format_number(kd, 4),
                         format_number(td, 4)});
             summary += " n = " + std::to_string(n) + ": length " + format_number(e, 2) + ", κ " + format_number(kd, 2) + ", τ " + format_number(td, 2) + ";";
+            errs.push_back(e);
+            kds.push_back(kd);
+            tds.push_back(td);
+            tau_ratio = tau_sum / (40 * n + 1) / tau;
         }
+        const auto falls = [](const std::vector<double>& v) { return std::is_sorted(v.rbegin(), v.rend()) ? "falls" : "does not fall monotonically"; };
+        trends += std::string(trends.empty() ? "" : "; ") + "mode " + to_string(mode) + ": the length error " + falls(errs) + ", the κ deviation " + falls(kds) +
+                  ", the τ deviation " + falls(tds) + " with n, and at n = 16 the mean torsion is " + format_number(tau_ratio, 3) + " times the helix's";
     }
     run.note("Helix (radius 1, pitch 1.5, 2 turns), relative length error and largest relative deviations of κ and τ over the middle turn (space_helix.csv) — " + summary +
-             " Measured, not claimed: the claims first stated for the helix (length error decreasing with n under exact optimisation; curvature and torsion converging "
-             "to the helix's) do not all hold. With the bisector tangents (mode none) the length error and the curvature converge; with the tables' J(θ) the exact "
-             "optimisation leaves the bisector (as in erratum pseudo_energy-E4) and the length error is not monotone; the torsion stays near three times the helix's "
-             "in both modes. Torsion rests on the out-of-plane part of the third derivative, third order in the span, which the minimising magnitudes r0, r1 do not "
-             "match to that order: a property of G1 cubic spans of minimum pseudo-energy, still to be analysed (issue 26).");
+             " From these numbers: " + trends +
+             ". Measured, not claimed: the claims first stated for the helix (length error decreasing with n under exact optimisation; curvature and torsion converging "
+             "to the helix's) do not all hold. Our reading, still to be analysed (issue 26): the exact optimisation on the tables' J(θ) leaves the bisector (as in "
+             "erratum pseudo_energy-E4), and the torsion rests on the out-of-plane part of the third derivative, which the minimising magnitudes r0, r1 of G1 cubic "
+             "spans do not match to that order.");
     run.figure("fig_space_helix",
                "The space pseudo-spline (bisector tangents) through a circular helix with 6 and 16 points per turn: curvature and torsion against arc length, "
                "with the helix's constants.");

@@ -16,8 +16,6 @@ using detail::Descent;
 using detail::Integrands;
 using detail::ScanPoint;
 
-bool near_zero_or_pi(double theta) { return std::abs(theta) < 1e-12 || std::abs(theta - std::numbers::pi) < 1e-12; }
-
 void require_space_angles(const char* who, double theta0, double theta1, double phi) {
     const auto check = [&](double v, const char* name, double hi) {
         if (!(v >= -1e-12 && v <= hi + 1e-12))
@@ -128,7 +126,8 @@ SegmentEnergy space_segment_energy_fast(const SpaceUnitChordHermite& seg, bool w
         seg, [&](double t) { return space_integrands(seg, t, with_gradient); }, rule_nodes == 8 ? rule8 : rule20);
 }
 
-bool is_undefined_space_direction(double theta0, double theta1) { return near_zero_or_pi(theta0) && near_zero_or_pi(theta1); }
+// The planar undefined nodes' rule on θ0, θ1 ∈ [0, π] (φ plays no part when both tangents lie on the chord).
+bool is_undefined_space_direction(double theta0, double theta1) { return is_undefined_node(theta0, theta1); }
 
 SpacePseudoEnergyMinimum minimize_space_pseudo_energy(double theta0, double theta1, double phi, const FastMinimizerOptions& opt) {
     require_space_angles("cagd::fairness::minimize_space_pseudo_energy", theta0, theta1, phi);
