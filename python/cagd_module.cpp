@@ -244,13 +244,13 @@ cagd::fairness::TableMethod table_method(const std::string& name) {
     throw cagd::InvalidInput("method = '" + name + "'; allowed fast | reference | nlopt");
 }
 
-py::dict comparison_dict(const std::vector<cagd::compare::MethodComparison>& rows, bool closed) {
+py::dict comparison_dict(const std::vector<cagd::compare::MethodComparison>& rows, bool closed, int dimension) {
     const auto n = static_cast<py::ssize_t>(rows.size());
     std::vector<std::string> method, status, note;
     // Each measure with a validity mask (cagd.compare turns the pairs into masked arrays).
     const std::vector<std::string> names = {
         "length",    "area",  "pseudo_energy",      "bending_energy", "curvature_sign_changes", "max_abs_curvature", "max_abs_curvature_derivative",
-        "overshoot", "spans", "locality_footprint", "seconds"};
+        "overshoot", "spans", "locality_footprint", "seconds",        "max_abs_torsion"};
     std::vector<py::array_t<double>> values;
     std::vector<py::array_t<bool>> valid;
     for (std::size_t k = 0; k < names.size(); ++k) {
@@ -266,16 +266,17 @@ py::dict comparison_dict(const std::vector<cagd::compare::MethodComparison>& row
         const bool measured = c.fairness.has_value();
         const std::optional<double> v[] = {
             built ? std::optional<double>(c.length) : std::nullopt,
-            built && closed ? std::optional<double>(c.area) : std::nullopt,
+            built && closed && dimension == 2 ? std::optional<double>(c.area) : std::nullopt,
             built ? std::optional<double>(c.pseudo_energy) : std::nullopt,
             measured ? std::optional<double>(c.fairness->bending_energy) : std::nullopt,
-            measured ? std::optional<double>(c.fairness->curvature_sign_changes) : std::nullopt,
+            measured && dimension == 2 ? std::optional<double>(c.fairness->curvature_sign_changes) : std::nullopt,
             measured ? std::optional<double>(c.fairness->max_abs_curvature) : std::nullopt,
             measured ? std::optional<double>(c.fairness->max_abs_curvature_derivative) : std::nullopt,
             measured ? std::optional<double>(c.fairness->overshoot) : std::nullopt,
             built ? std::optional<double>(c.spans) : std::nullopt,
             c.locality_footprint ? std::optional<double>(*c.locality_footprint) : std::nullopt,
             built ? std::optional<double>(c.seconds) : std::nullopt,
+            measured && dimension == 3 ? std::optional<double>(c.fairness->max_abs_torsion) : std::nullopt,
         };
         for (std::size_t k = 0; k < names.size(); ++k) {
             values[k].mutable_data()[i] = v[k].value_or(0.0);
@@ -434,7 +435,7 @@ PYBIND11_MODULE(_cagd, m) {
                 py::gil_scoped_release release;
                 rows = cagd::compare::compare_methods(p, o);
             }
-            return comparison_dict(rows, closed);
+            return comparison_dict(rows, closed, static_cast<int>(p.cols()));
         },
         py::arg("points"), py::arg("closed") = false, py::arg("methods") = std::vector<std::string>{}, py::arg("locality") = true, py::arg("threads") = 0);
 

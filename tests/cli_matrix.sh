@@ -133,11 +133,12 @@ for c in curve_nan curve_noheader curve_zero_speed empty header_only garbage lon
 run 2 "" analyze "$dir/adir"
 
 # ---- compare -----------------------------------------------------------------------------------
-for c in empty header_only garbage typo_first spaces columns nan inf one_point repeated space long_line missing; do
+for c in empty header_only garbage typo_first spaces columns nan inf one_point repeated long_line missing; do
     run 2 "" compare --in "$dir/$c.csv" --out "$dir/cmp_$c" --no-plot
     [ ! -e "$dir/cmp_$c" ] || fail "compare on $c left $dir/cmp_$c"
 done
 run 0 "" compare --in "$dir/good.csv" --out "$dir/cmp_good" --no-plot --methods cubic-b,hosaka,s-spline-m2
+run 0 "" compare --in "$dir/space.csv" --out "$dir/cmp_space" --no-plot --methods cubic-b,hosaka,pseudo-spline-approx,curvature-profile
 for c in huge tiny; do run any "" compare --in "$dir/$c.csv" --out "$dir/cmp_$c" --no-plot --methods cubic-b,hermite-a; done
 echo x > "$o"
 run 2 "" compare --in "$dir/good.csv" --out "$o" --no-plot   # a file where a directory is expected

@@ -233,7 +233,17 @@ else
 fi
 "$cagd" compare --in "$dir/zig.csv" --closed --methods boost-pchip,cubic-b --out "$dir/cmp2" --no-plot > "$dir/cmp2.md" 2> /dev/null
 grep -q '^| boost-pchip | not applicable |' "$dir/cmp2.md" || { echo "FAIL: compare --closed must list boost-pchip as not applicable"; fails=$((fails+1)); }
-expect_bad "compare 3-D points"    '0,0,0\n1,1,1\n2,0,0\n3,1,1\n'  compare --in "$dir/bad.csv" --out "$dir/cmp3" --no-plot
+# Space points: the space columns (max_abs_torsion, no area), τ in the curvature file.
+printf 'x,y,z\n1,0,0\n0,1,0.4\n-1,0,0.8\n0,-1,1.2\n1,0,1.6\n0,1,2\n' > "$dir/helix.csv"
+if "$cagd" compare --in "$dir/helix.csv" --methods pseudo-spline-approx,hosaka-c2-chord,curvature-profile --out "$dir/cmp3d" --no-plot > "$dir/cmp3d.md" 2> /dev/null; then
+  head -1 "$dir/cmp3d/measures.csv" | grep -q 'max_abs_torsion' || { echo "FAIL: compare on 3-D points lacks max_abs_torsion"; fails=$((fails+1)); }
+  head -1 "$dir/cmp3d/curvature.csv" | grep -q '^index,s,kappa,tau' || { echo "FAIL: compare on 3-D points writes no torsion profile"; fails=$((fails+1)); }
+  grep -q '^| pseudo-spline-approx | ok |' "$dir/cmp3d.md" || { echo "FAIL: compare on 3-D points lacks the space pseudo-spline"; fails=$((fails+1)); }
+  grep -q '^| curvature-profile | not applicable |' "$dir/cmp3d.md" || { echo "FAIL: compare on 3-D points must list curvature-profile as not applicable"; fails=$((fails+1)); }
+else
+  echo "FAIL: compare on 3-D points exited non-zero"; fails=$((fails+1))
+fi
+expect_bad "compare 4-D points"    '0,0,0,0\n1,1,1,1\n2,0,0,0\n3,1,1,1\n'  compare --in "$dir/bad.csv" --out "$dir/cmp3" --no-plot
 expect_bad "compare unknown method" '0,0\n1,1\n2,0\n3,1\n'        compare --in "$dir/bad.csv" --methods cubic-z --out "$dir/cmp3" --no-plot
 
 # Every registered method is reachable from interpolate, analyze --in and compare by name (the

@@ -3,6 +3,7 @@
 // the point reader, and the measurements of `cagd compare`.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 // Boost 1.74's pchip.hpp and makima.hpp need std::isnan visible where they are defined.
@@ -19,6 +20,7 @@ using std::isnan;
 
 #include "cagd/analysis/curve_measures.hpp"
 #include "cagd/analysis/fairness_measures.hpp"
+#include "cagd/analysis/log_curvature_graph.hpp"
 #include "cagd/compare/method_comparison.hpp"
 #include "cagd/core/parallel.hpp"
 #include "cagd/core/point_csv.hpp"
@@ -405,8 +407,81 @@ TEST(Compare, TableOnTable1DataHasEveryMethod) {
         if (!find_configuration(m.method).claims.supports_closed) {
             EXPECT_EQ(m.status, "not applicable") << m.method;
         }
-    EXPECT_THROW(compare_methods(PointList::Zero(5, 3), {}), InvalidInput);
+    EXPECT_THROW(compare_methods(PointList::Zero(5, 4), {}), InvalidInput);
     EXPECT_THROW(find_configuration("no-such-method"), InvalidInput);
+}
+
+// Space curves: |κ|, d|κ|/ds and |τ| of fairness_measures against analysis::curvature and torsion and
+// a central difference of |κ| along the arc length.
+TEST(Compare, SpaceFairnessMeasuresMatchTheCurvesOwnCurvatureAndTorsion) {
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    PointList p(7, 3);
+    for (Eigen::Index i = 0; i < p.rows(); ++i) p.row(i) << static_cast<double>(i) + 0.3 * u(rng), u(rng), u(rng);
+    const Interpolant a = *interpolate("cubic-b", p, false).interpolant;
+    const Curve& c = *a.curve;
+    double worst = 0.0, largest = 0.0, kappa_max = 0.0, tau_max = 0.0;
+    for (double t : {0.3, 1.7, 2.45, 3.9, 5.2}) {
+        const double h = 1e-5;
+        const double ds = analysis::arc_length(c, t - h, t + h, 4);
+        const double fd = (analysis::curvature(c, t + h) - analysis::curvature(c, t - h)) / ds;
+        const Eigen::MatrixXd J = c.jet(t, 3);
+        const Eigen::Vector3d d1 = J.row(1).transpose(), d2 = J.row(2).transpose(), d3 = J.row(3).transpose(), cr = d1.cross(d2);
+        const double v2 = d1.squaredNorm();
+        const double exact = (cr.dot(d1.cross(d3)) / cr.norm() - 3.0 * cr.norm() * d1.dot(d2) / v2) / (v2 * v2);
+        worst = std::max(worst, std::abs(fd - exact));
+        largest = std::max(largest, std::abs(exact));
+    }
+    EXPECT_LE(worst, 1e-6 * std::max(1.0, largest));
+    const analysis::FairnessMeasures f = analysis::fairness_measures(c, p, 512);
+    EXPECT_EQ(f.dimension, 3);
+    EXPECT_EQ(f.curvature_sign_changes, 0);
+    EXPECT_GE(f.max_abs_curvature_derivative, largest * (1 - 1e-12));
+    // The maxima at the same samples, from the curve measures.
+    for (std::size_t k = 0; k + 1 < c.breakpoints().size(); ++k)
+        for (int j = 0; j <= 512; ++j) {
+            const double t = c.breakpoints()[k] + (c.breakpoints()[k + 1] - c.breakpoints()[k]) * j / 512;
+            const double kappa = analysis::curvature(c, t);
+            kappa_max = std::max(kappa_max, kappa);
+            // τ is undefined at a straight point (the natural ends): skipped as fairness_measures does
+            if (kappa * bounding_box_diagonal(p) > 1e-9) tau_max = std::max(tau_max, std::abs(analysis::torsion(c, t)));
+        }
+    EXPECT_NEAR(f.max_abs_curvature, kappa_max, 1e-12 * kappa_max);
+    EXPECT_NEAR(f.max_abs_torsion, tau_max, 1e-9 * tau_max);
+    EXPECT_GT(f.max_abs_torsion, 0.0);
+    EXPECT_THROW(analysis::fairness_measures(c, p.leftCols(2), 64), InvalidInput);
+}
+
+TEST(Compare, SpacePointsGetTheSpaceColumnsAndFigureData) {
+    PointList p(24, 3);
+    for (int i = 0; i < 24; ++i) {
+        const double t = 2 * std::numbers::pi * i / 24;
+        p.row(i) << std::sin(t) + 2 * std::sin(2 * t), std::cos(t) - 2 * std::cos(2 * t), -std::sin(3 * t);
+    }
+    ComparisonOptions o;
+    o.closed = true;
+    const std::vector<MethodComparison> c = compare_methods(p, o);
+    const std::vector<std::string> header = comparison_header(true, false, 3);
+    EXPECT_EQ(std::count(header.begin(), header.end(), "area"), 0);
+    EXPECT_EQ(std::count(header.begin(), header.end(), "inflections"), 0);
+    EXPECT_EQ(std::count(header.begin(), header.end(), "max_abs_torsion"), 1);
+    for (const auto& row : comparison_rows(c, true, false, 8, 3)) EXPECT_EQ(row.size(), header.size());
+    EXPECT_EQ(find_comparison(c, "curvature-profile").status, "not applicable");
+    EXPECT_EQ(find_comparison(c, "curvature-profile").note, "planar points only");
+    for (const char* m : {"pseudo-spline-approx", "hosaka-c2-chord", "cubic-b", "hermite-b"}) {
+        const MethodComparison& r = find_comparison(c, m);
+        ASSERT_EQ(r.status, "ok") << m << ": " << r.note;
+        EXPECT_GT(r.fairness->max_abs_torsion, 0.0) << m;
+        EXPECT_EQ(r.area, 0.0) << m;
+        ASSERT_TRUE(r.locality_footprint.has_value()) << m;
+    }
+    // hosaka-c2-chord is the chord-length C2 spline, as cubic-b: the same row.
+    EXPECT_NEAR(find_comparison(c, "hosaka-c2-chord").fairness->max_abs_torsion, find_comparison(c, "cubic-b").fairness->max_abs_torsion, 1e-9);
+    const FigureData d = comparison_figure_data(c, p, figure_sampling(24, 2000));
+    ASSERT_FALSE(d.curves.empty());
+    EXPECT_EQ(d.curves.front().size(), 4u);    // index, x, y, z
+    EXPECT_EQ(d.profiles.front().size(), 4u);  // index, s, κ, τ
+    EXPECT_TRUE(d.combs.empty());
 }
 
 TEST(Compare, PseudoEnergyFromMeasuredPiecesEqualsSpanIntegration) {

@@ -289,6 +289,48 @@ TEST(PseudoSpline, EquivalentPolygonPointsIsTheFirstPolygonBelowTheError) {
     EXPECT_THROW(equivalent_polygon_points(0.0, CircleMeasure::area), InvalidInput);
 }
 
+// Equal chords with small turns put both angles of w in one 10° cell of the table, where w is flat:
+// every mode must still give the bisector (exact: the middle of the tie; approx: a flat parabola,
+// though the equal chords differ by rounding). Brent alone stopped up to 4.5° off on a helix and the
+// 64 ε flatness bound of approx sent every tangent along a chord on a circle of 96 points.
+TEST(PseudoSpline, FlatTableEnergyGivesTheBisectorInEveryMode) {
+    for (int n : {4, 8, 64, 96, 128}) {
+        PointList circle(n, 2);
+        for (int i = 0; i < n; ++i) circle.row(i) << 5.0 * std::cos(2 * std::numbers::pi * i / n) + 3.0, 5.0 * std::sin(2 * std::numbers::pi * i / n) - 1.0;
+        const PseudoSpline none = pseudo_spline(circle, oracle(), TangentOptimization::none, true);
+        for (TangentOptimization mode : {TangentOptimization::exact, TangentOptimization::approximate}) {
+            const PseudoSpline p = pseudo_spline(circle, oracle(), mode, true);
+            for (int i = 0; i < n; ++i)
+                EXPECT_NEAR(p.alpha[static_cast<std::size_t>(i)], none.alpha[static_cast<std::size_t>(i)], 1e-9) << "n = " << n << ", mode " << to_string(mode) << ", point " << i;
+        }
+        // The tie's ends: any stop is a minimum of the table's w, the ends symmetric about the bisector.
+        const double lower = pseudo_spline(circle, oracle(), TangentOptimization::exact, true, TangentTie{0.0}).alpha[0];
+        const double upper = pseudo_spline(circle, oracle(), TangentOptimization::exact, true, TangentTie{1.0}).alpha[0];
+        EXPECT_NEAR(0.5 * (lower + upper), none.alpha[0], 1e-9) << n;
+        EXPECT_LT(lower, upper) << n;
+    }
+    EXPECT_THROW(pseudo_spline(points({{0, 0}, {1, 1}, {2, 0}}), oracle(), TangentOptimization::exact, false, TangentTie{1.5}), InvalidInput);
+}
+
+TEST(PseudoSpline, EquivalentHelixPolygonPointsMeasuresThePolygonAgainstTheHelix) {
+    // No rise: the circle's perimeter rule relative to 2π.
+    for (double err : {0.05, 3e-3, 2e-6}) EXPECT_EQ(equivalent_helix_polygon_points(err / (2 * std::numbers::pi), 0.0), equivalent_polygon_points(err, CircleMeasure::perimeter));
+    // A rise of 1.5 per turn: the polygon's length from its vertices, against the helix's.
+    const double p = 1.5, turn = std::sqrt(4 * std::numbers::pi * std::numbers::pi + p * p);
+    const auto polygon_error = [&](long n) {
+        const double t = 2 * std::numbers::pi / static_cast<double>(n);
+        const Eigen::Vector3d a(1, 0, 0), b(std::cos(t), std::sin(t), p / static_cast<double>(n));
+        return 1.0 - static_cast<double>(n) * (b - a).norm() / turn;
+    };
+    for (double err : {0.02, 1e-4, 1.7e-6}) {
+        const long n = equivalent_helix_polygon_points(err, p);
+        EXPECT_LT(polygon_error(n), err);
+        EXPECT_GE(polygon_error(n - 1), err);
+    }
+    EXPECT_THROW(equivalent_helix_polygon_points(1e-3, -1.0), InvalidInput);
+    EXPECT_THROW(equivalent_helix_polygon_points(0.0, 1.0), InvalidInput);
+}
+
 TEST(AngleMinimumTable, FromTheEnergyTableIsSymmetricAndZeroAtZero) {
     const PseudoEnergyTable t = PseudoEnergyTable::build({36, NodePlacement::periodic}, TableMethod::fast);
     const AngleMinimumTable a = AngleMinimumTable::from_energy_table(t);

@@ -6,7 +6,7 @@
 //   table  the paper's procedure: 36-node reference table, J(θ) derived from it, exact tangent
 //          optimisation, L and S interpolated (eq 17, 20), same-type rule of section 4.1; also
 //          plain bilinear interpolation, and the length/area of the curve the tables draw.
-//   readings  the table procedure under every reading sections 4.1 and 5 allow (48: tangents, cell
+//   readings  the table procedure under every reading sections 4.1 and 5 allow (176: tangents, cell
 //          rule, what is interpolated, which minimum a node holds), n = 3..10, against the print.
 // The claims take the exact values, checked over the readings as alternative choices (a reading
 // that gives the printed number makes the claim `depends`); erratum pseudo_energy-E4 rests on the
@@ -45,37 +45,49 @@ int main(int argc, char** argv) {
 
     // The readings of sections 4.1 and 5 the text allows (erratum pseudo_energy-E4): tangents fixed
     // at the circle's tangent (mode none: the bisector) or optimised on the table's J(θ), exactly or
-    // by the 3-point parabola; the table read over same-type corners, all corners, or at the nearest
+    // by the 3-point parabola (exactly: where w is flat over a stretch, at its middle or at eight
+    // other points a minimiser could stop at — TangentTie); the table read over same-type corners, all corners, or at the nearest
     // node (a half-way coordinate going down or up); L and S interpolated, or r0, r1 interpolated and
     // L, S measured; every node at its global minimum, or at its second minimum where that is within
     // 1e-4 in J. Each reading gives the paper's procedure's length and area for n = 3..10.
     struct Reading {
         std::string name;
         TangentOptimization tangent;
+        TangentTie tie;
         TableReading table;
     };
+    struct TangentRule {
+        std::string name;
+        TangentOptimization mode;
+        TangentTie tie;
+    };
+    std::vector<TangentRule> tangent_rules{{"bisector", TangentOptimization::none, {}}, {"exact", TangentOptimization::exact, {}}};
+    // Where w is flat, the stops k/16 of the way along the stretch, k = 0..7 (8/16 is the middle,
+    // "exact"; k/16 and 1 − k/16 give mirror-image circles, of the same length and area).
+    for (int k = 0; k < 8; ++k) tangent_rules.push_back({"exact tie " + std::to_string(k) + "/16", TangentOptimization::exact, {k / 16.0}});
+    tangent_rules.push_back({"approx", TangentOptimization::approximate, {}});
     std::vector<Reading> readings;
-    for (TangentOptimization t : {TangentOptimization::none, TangentOptimization::exact, TangentOptimization::approximate})
+    for (const TangentRule& t : tangent_rules)
         for (CellRule c : {CellRule::same_type, CellRule::all_corners, CellRule::nearest_node_down, CellRule::nearest_node_up})
             for (bool radii : {false, true})
                 for (double within : {0.0, 1e-4})
-                    readings.push_back({std::string("tangent ") + (t == TangentOptimization::none ? "bisector" : to_string(t)) + ", " + to_string(c) + ", " +
-                                            (radii ? "r0 r1 interpolated" : "L S interpolated") + ", " + (within > 0 ? "runner-up within 1e-4" : "global minima"),
-                                        t, TableReading{c, radii, within}});
+                    readings.push_back({std::string("tangent ") + t.name + ", " + to_string(c) + ", " + (radii ? "r0 r1 interpolated" : "L S interpolated") + ", " +
+                                            (within > 0 ? "runner-up within 1e-4" : "global minima"),
+                                        t.mode, t.tie, TableReading{c, radii, within}});
     std::vector<std::vector<std::pair<double, double>>> reading_values(readings.size());  // [reading][n − 3] = (L, S)
+    std::map<std::pair<int, double>, AngleMinimumTable> angle_tables;                     // J(θ) per cell rule and minimum choice
+    for (const Reading& r : readings) {
+        const auto key = std::make_pair(static_cast<int>(r.table.cell), r.table.runner_up_within);
+        if (!angle_tables.count(key)) angle_tables.emplace(key, AngleMinimumTable::from_energy_table(table, r.table));
+    }
     {
-        std::map<std::pair<int, double>, AngleMinimumTable> angle_tables;  // J(θ) per cell rule and minimum choice
-        for (const Reading& r : readings) {
-            const auto key = std::make_pair(static_cast<int>(r.table.cell), r.table.runner_up_within);
-            if (!angle_tables.count(key)) angle_tables.emplace(key, AngleMinimumTable::from_energy_table(table, r.table));
-        }
         CsvWriter w =
             run.table("table5_table6_readings.csv", {"reading", "n", "length", "area", "length_minus_printed", "area_minus_printed", "length_equivalent", "area_equivalent"});
         for (std::size_t k = 0; k < readings.size(); ++k) {
             const Reading& r = readings[k];
             const TableOracle reading_oracle(table, angle_tables.at({static_cast<int>(r.table.cell), r.table.runner_up_within}), r.table);
             for (int n = 3; n <= 10; ++n) {
-                const PseudoSpline ps = pseudo_spline(circle_points(n), reading_oracle, r.tangent, true);
+                const PseudoSpline ps = pseudo_spline(circle_points(n), reading_oracle, r.tangent, true, r.tie);
                 const double L = ps.length_from_tables(), S = ps.area_from_tables();
                 reading_values[k].emplace_back(L, S);
                 const double pl = run.reference().row("pseudo_energy.table5.n" + std::to_string(n) + ".length").paper_value;
@@ -112,14 +124,56 @@ int main(int argc, char** argv) {
                  best_name + ", largest |residual| " + format_number(best, 3) +
                  ". Nodes whose second minimum is within 1e-4 of the first in J: " + std::to_string(table.runner_up_nodes(1e-4)) + ".");
     }
+    const auto count = [](double v, bool area) {
+        return double(equivalent_polygon_points(std::abs((area ? std::numbers::pi : 2 * std::numbers::pi) - v), area ? CircleMeasure::area : CircleMeasure::perimeter));
+    };
+    // The stops of a tie form a continuum, which the sixteenths sample as readings fixed in advance.
+    // Tuning the stop to the print is not a reading (one free parameter meets any single value in its
+    // range), but it tells whether one stop can give a row's length and area together: where the
+    // length (or area) crosses its print between two adjacent stops, bisection finds the stop that
+    // gives it, and the note reports how far the other measure is there. The first such stop per n
+    // and measure, over the table readings in order.
+    std::string tuned;
+    const auto tuned_stop = [&](int n, bool area) {
+        const auto printed_value = [&](bool a) {
+            return run.reference().row(std::string("pseudo_energy.") + (a ? "table6.n" : "table5.n") + std::to_string(n) + (a ? ".area" : ".length")).paper_value;
+        };
+        for (const Reading& r : readings) {
+            if (r.tangent != TangentOptimization::exact || r.tie.position != 0.5) continue;  // one per table reading
+            const TableOracle reading_oracle(table, angle_tables.at({static_cast<int>(r.table.cell), r.table.runner_up_within}), r.table);
+            const auto values = [&](double position) {
+                const PseudoSpline ps = pseudo_spline(circle_points(n), reading_oracle, TangentOptimization::exact, true, TangentTie{position});
+                return std::make_pair(ps.length_from_tables() - printed_value(false), ps.area_from_tables() - printed_value(true));
+            };
+            const auto f = [&](double position) { return area ? values(position).second : values(position).first; };
+            for (int s = 0; s < 8; ++s) {
+                double a = s / 16.0, b = (s + 1) / 16.0, fa = f(a);
+                if (fa * f(b) > 0.0) continue;
+                for (int it = 0; it < 60; ++it) {
+                    const double m = 0.5 * (a + b), fm = f(m);
+                    if (fm * fa > 0.0) {
+                        a = m;
+                        fa = fm;
+                    } else {
+                        b = m;
+                    }
+                }
+                const auto [dl, da] = values(0.5 * (a + b));
+                if (std::abs(area ? da : dl) > 5e-9) continue;  // a jump, not a crossing
+                tuned += "; n = " + std::to_string(n) + ", the " + (area ? "area" : "length") + " at stop " + format_number(0.5 * (a + b), 4) + " of " +
+                         r.name.substr(r.name.find(',') + 2) + ", where the " + (area ? "length" : "area") + " misses its print by " + format_number(area ? dl : da, 2);
+                return;
+            }
+        }
+    };
+    for (int n = 3; n <= 10; ++n)
+        for (bool area : {false, true}) tuned_stop(n, area);
     const auto reading_choices = [&](int n, bool area, bool equivalent) {
         std::vector<repro::ChoiceValue> out;
         for (std::size_t k = 0; k < readings.size(); ++k) {
             const auto [L, S] = reading_values[k][static_cast<std::size_t>(n - 3)];
             const double v = area ? S : L;
-            out.push_back({readings[k].name, equivalent ? double(equivalent_polygon_points(std::abs((area ? std::numbers::pi : 2 * std::numbers::pi) - v),
-                                                                                           area ? CircleMeasure::area : CircleMeasure::perimeter))
-                                                        : v});
+            out.push_back({readings[k].name, equivalent ? count(v, area) : v});
         }
         return out;
     };
@@ -128,9 +182,9 @@ int main(int argc, char** argv) {
     run.check("table6.true_value", std::numbers::pi);
     CsvWriter out = run.table("table5_table6.csv", {"n", "length_exact", "length_reference_path", "length_table", "length_table_bilinear", "length_of_table_curve",
                                                     "equivalent_exact", "equivalent_table", "area_exact", "area_reference_path", "area_table", "area_table_bilinear",
-                                                    "area_of_table_curve", "area_equivalent_exact", "area_equivalent_table", "alpha_offset_table_deg"});
+                                                    "area_of_table_curve", "area_equivalent_exact", "area_equivalent_table", "tie_half_width_deg"});
     double assembly_length = 0, assembly_area = 0, ref_gap = 0, quadrature_error = 0;
-    std::string off_bisector;  // the n whose table-procedure tangent leaves the bisector
+    std::string ties;  // the n where the table's w is flat over a stretch around the bisector
     int bisector_minimises = 0;
     for (int n = 3; n <= 10; ++n) {
         const PointList p = circle_points(n);
@@ -169,10 +223,9 @@ int main(int argc, char** argv) {
             S_bil -= tb.chord_length[i] * tb.chord_length[i] * v.area;
         }
         const double L_tab = tb.length_from_tables(), S_tab = tb.area_from_tables();
-        if (std::abs(tb.alpha[0] - centre) * 180 / std::numbers::pi > 0.01) {
-            off_bisector += ' ';
-            off_bisector += std::to_string(n);
-        }
+        // The end of w's flat stretch, if any (every point of it minimises the table's w).
+        const double tie_half_width = std::abs(pseudo_spline(p, oracle, TangentOptimization::exact, true, TangentTie{0.0}).alpha[0] - centre) * 180 / std::numbers::pi;
+        if (tie_half_width > 0.01) ties += " " + std::to_string(n) + " (±" + format_number(tie_half_width, 3) + "°)";
         const std::string table5 = "table5." + id, table6 = "table6." + id;  // table5.n<n>.*, table6.n<n>.*
         // Ours: the exact value; the alternatives: the paper's table procedure under every reading.
         const std::string exact_label = "exact minimisers (no table)";
@@ -192,7 +245,7 @@ int main(int argc, char** argv) {
         out.row({double(n), L, L_ref, L_tab, L_bil, table_curve_length.value, double(equivalent_polygon_points(std::abs(2 * std::numbers::pi - L), CircleMeasure::perimeter)),
                  double(equivalent_polygon_points(std::abs(2 * std::numbers::pi - L_tab), CircleMeasure::perimeter)), S, S_ref, S_tab, S_bil, analysis::enclosed_area(tb.curve),
                  double(equivalent_polygon_points(std::abs(std::numbers::pi - S), CircleMeasure::area)),
-                 double(equivalent_polygon_points(std::abs(std::numbers::pi - S_tab), CircleMeasure::area)), (tb.alpha[0] - centre) * 180 / std::numbers::pi},
+                 double(equivalent_polygon_points(std::abs(std::numbers::pi - S_tab), CircleMeasure::area)), tie_half_width},
                 10);
     }
     run.validate("sec5.bisector_minimises_w", "exact J(θ): the bisector minimises w of eq (12) for n = 3..10 (count of n)", bisector_minimises, 8, 0, "count");
@@ -208,8 +261,11 @@ int main(int argc, char** argv) {
         "Our 'length' and 'area' are exact (minimisers at the exact angles, no table); the table columns of table5_table6.csv follow the paper's procedure (36-node reference "
         "table, same-type bilinear rule; J(θ) from the table; exact tangent optimisation) and show where the paper's values come from (erratum pseudo_energy-E4).");
     run.note(
-        "alpha_offset_table_deg: the tangent direction the table procedure chooses minus the bisector. With J(θ) interpolated linearly, w of eq (12) is piecewise linear and its "
-        "minimum can leave the bisector (by more than 0.01° for n =" +
-        off_bisector + "), which makes the spans asymmetric.");
+        "tie_half_width_deg: with J(θ) interpolated linearly, w of eq (12) is piecewise linear, and where both of its angles stay in one cell it is flat over a stretch "
+        "around the bisector, every point of which minimises the table's w: for n =" +
+        (ties.empty() ? std::string(" none") : ties) +
+        ". The table columns take the middle of the stretch (the bisector); the readings 'tangent exact tie k/16' stop k/16 of the way along it.");
+    run.note("A stop tuned within a tie to give one printed value (not a reading: see the experiment), and the other measure there" +
+             (tuned.empty() ? std::string(": none") : ": " + tuned.substr(2)) + ".");
     return run.finish();
 }

@@ -95,13 +95,14 @@ def interpolate(points, method, closed=False, **params):
 
 
 def compare(points, closed=False, methods=None, locality=True, threads=0):
-    """Every method (or the named configurations) on the same planar points, measured as by
-    ``cagd compare``: a dict of arrays, one entry per configuration. ``method``, ``status``
+    """Every method (or the named configurations) on the same planar or space points, measured as
+    by ``cagd compare``: a dict of arrays, one entry per configuration. ``method``, ``status``
     ("ok", "not applicable", "no result", "cusp") and ``note`` are lists of str; each measure
     (length, area, pseudo_energy, bending_energy, curvature_sign_changes, max_abs_curvature,
-    max_abs_curvature_derivative, overshoot, spans, locality_footprint, seconds) is a
-    ``numpy.ma.MaskedArray``, masked where the measure does not exist (method not applicable, no
-    result, a cusp's curvature, an open curve's area), never NaN."""
+    max_abs_curvature_derivative, overshoot, spans, locality_footprint, seconds, max_abs_torsion)
+    is a ``numpy.ma.MaskedArray``, masked where the measure does not exist (method not applicable,
+    no result, a cusp's curvature, an open curve's area; area and curvature_sign_changes for space
+    points, max_abs_torsion for planar ones), never NaN."""
     raw = _cagd._compare(_points(points), bool(closed), list(methods or []), bool(locality), int(threads))
     out = {}
     for name, value in raw.items():

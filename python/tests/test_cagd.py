@@ -135,6 +135,21 @@ def test_compare_equals_cpp(cpp):
     # An open curve has no enclosed area: masked, never NaN.
     assert r["area"].mask.all()
     assert not any(np.isnan(r[k].data).any() for k in r if isinstance(r[k], np.ma.MaskedArray))
+    assert r["max_abs_torsion"].mask.all()
+
+
+def test_compare_on_space_points():
+    t = np.linspace(0.0, 2.0 * np.pi, 24, endpoint=False)
+    knot = np.c_[np.sin(t) + 2 * np.sin(2 * t), np.cos(t) - 2 * np.cos(2 * t), -np.sin(3 * t)]
+    r = cagd.compare(knot, closed=True, methods=["pseudo-spline-approx", "cubic-b", "curvature-profile"], threads=1)
+    assert r["status"] == ["ok", "ok", "not applicable"]
+    assert r["area"].mask.all() and r["curvature_sign_changes"].mask.all()
+    assert not r["max_abs_torsion"].mask[0] and r["max_abs_torsion"][0] > 0.0
+    # the table's torsion is the largest |τ| of the curve at the same samples (128 per span)
+    c = cagd.interpolate(knot, "cubic-b", closed=True)
+    br = c.breakpoints()
+    u = np.concatenate([np.linspace(br[k], br[k + 1], 129) for k in range(len(br) - 1)])
+    assert r["max_abs_torsion"][1] == pytest.approx(np.max(np.abs(c.torsion(u))), rel=1e-9)
 
 
 def cli_quantities(*args):

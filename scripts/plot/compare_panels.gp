@@ -5,8 +5,10 @@
 # f_points, f_curves, f_combs, f_kappa. Reads prefix.'methods.csv' (index, method, and per figure
 # file the first row and row count of each method: compare/method_comparison.hpp), 'points.csv'
 # (x,y), 'curves.csv' (index,x,y), 'combs.csv' (index,x,y,tip_x,tip_y) and 'curvature.csv'
-# (index,s,kappa); writes prefix.'curves', 'combs' and 'curvature' in each format. A method's rows
-# are read with `every ::first::last` (gnuplot stops reading there). gnuplot only draws.
+# (index,s,kappa); writes prefix.'curves', 'combs' and 'curvature' in each format. With space = 1
+# (space points: points.csv x,y,z, curves.csv index,x,y,z, curvature.csv index,s,kappa,tau) the
+# curves are drawn in a 3-D view, and figure 'torsion' draws τ(s); there are no combs. A method's
+# rows are read with `every ::first::last` (gnuplot stops reading there). gnuplot only draws.
 # This file is not a figure of its own: scripts/reproduce.sh skips it, and `cagd compare` embeds it.
 set datafile separator ','
 set grid lc rgb '#dddddd'
@@ -19,6 +21,7 @@ if (!exists("f_curves")) f_curves = datadir.'/'.prefix.'curves.csv'
 if (!exists("f_combs")) f_combs = datadir.'/'.prefix.'combs.csv'
 if (!exists("f_kappa")) f_kappa = datadir.'/'.prefix.'curvature.csv'
 if (!exists("point_every")) point_every = 1
+if (!exists("space")) space = 0
 column_words(k) = system("tail -n +2 '".f_methods."' | cut -d, -f".k." | tr '\n' ' '")
 names = column_words(2)
 curves_first = column_words(3); curves_count = column_words(4)
@@ -40,12 +43,22 @@ do for [t in formats] {
   set key outside right top noenhanced
   set xlabel 'x'
   set ylabel 'y'
-  plot for [i=1:n] f_curves skip 1 every ::first(curves_first, i)::last(curves_first, curves_count, i) using 2:3 with lines lw 1.5 lc i title word(names, i), \
-       f_points skip 1 every point_every using 1:2 with points pt 7 ps 0.8 lc rgb '#000000' title 'data'
+  if (space) {
+    set size noratio
+    set view equal xyz
+    set zlabel 'z'
+    splot for [i=1:n] f_curves skip 1 every ::first(curves_first, i)::last(curves_first, curves_count, i) using 2:3:4 with lines lw 1.5 lc i title word(names, i), \
+          f_points skip 1 every point_every using 1:2:3 with points pt 7 ps 0.8 lc rgb '#000000' title 'data'
+    unset view
+    unset zlabel
+  } else {
+    plot for [i=1:n] f_curves skip 1 every ::first(curves_first, i)::last(curves_first, curves_count, i) using 2:3 with lines lw 1.5 lc i title word(names, i), \
+         f_points skip 1 every point_every using 1:2 with points pt 7 ps 0.8 lc rgb '#000000' title 'data'
+  }
   unset output
   }
   # 2. per method: curve and curvature comb
-  if (strstrt(figures, "combs") > 0) {
+  if (!space && strstrt(figures, "combs") > 0) {
   set size ratio -1
   if (t eq "png") { set terminal pngcairo size 360*cols,300*rows enhanced font 'DejaVu Sans,9' } else { set terminal svg size 360*cols,300*rows enhanced font 'DejaVu Sans,9' }
   set output datadir.'/'.prefix.'combs.'.t
@@ -90,6 +103,30 @@ do for [t in formats] {
       plot f_kappa skip 1 every ::first(kappa_first, i)::last(kappa_first, kappa_count, i) using 2:3 with lines lw 1.2 lc rgb '#d62728'
     } else {
       set label 1 'no curvature (see the table)' at graph 0.5, graph 0.5 center
+      plot [0:1] [-1:1] NaN notitle
+      unset label 1
+    }
+  }
+  unset multiplot
+  unset output
+  unset xlabel
+  unset ylabel
+  }
+  # 4. per method (space): torsion profile τ(s)
+  if (space && strstrt(figures, "torsion") > 0) {
+  if (t eq "png") { set terminal pngcairo size 360*cols,300*rows enhanced font 'DejaVu Sans,9' } else { set terminal svg size 360*cols,300*rows enhanced font 'DejaVu Sans,9' }
+  unset key
+  set output datadir.'/'.prefix.'torsion.'.t
+  set size noratio
+  set multiplot layout rows,cols title heading.': torsion τ against arc length s' noenhanced
+  do for [i=1:n] {
+    set title word(names, i) noenhanced
+    set xlabel 's'
+    set ylabel 'τ'
+    if (int(word(kappa_count, i)) > 0) {
+      plot f_kappa skip 1 every ::first(kappa_first, i)::last(kappa_first, kappa_count, i) using 2:4 with lines lw 1.2 lc rgb '#2ca02c'
+    } else {
+      set label 1 'no torsion (see the table)' at graph 0.5, graph 0.5 center
       plot [0:1] [-1:1] NaN notitle
       unset label 1
     }

@@ -1,5 +1,6 @@
-# The space pseudo-spline through a circular helix (bisector tangents), 6 and 16 points per turn:
-# curvature and torsion against arc length, with the helix's constants.
+# The space pseudo-spline through a circular helix (bisector tangents), 6 and 16 points per turn,
+# the middle turn: curvature and torsion against arc length, with the helix's constants and the
+# torsion's limit, three times the helix's.
 # Columns of space_helix_profile.csv: points_per_turn, s, curvature, torsion, helix_curvature, helix_torsion.
 load 'scripts/plot/style.gp'
 f = datadir.'/space_helix_profile.csv'
@@ -13,7 +14,8 @@ do for [t in "png svg"] {
   set title 'curvature κ(s)'
   plot f index 0 skip 1 u 2:3 w l ls 1 t '6 points per turn', f index 1 skip 1 u 2:3 w l ls 2 t '16 points per turn', f index 0 skip 1 u 2:5 w l ls 5 dt 2 t 'helix'
   set title 'torsion τ(s)'
-  plot f index 0 skip 1 u 2:4 w l ls 1 t '6 points per turn', f index 1 skip 1 u 2:4 w l ls 2 t '16 points per turn', f index 0 skip 1 u 2:6 w l ls 5 dt 2 t 'helix'
+  set key center right
+  plot f index 0 skip 1 u 2:4 w l ls 1 t '6 points per turn', f index 1 skip 1 u 2:4 w l ls 2 t '16 points per turn', f index 0 skip 1 u 2:6 w l ls 5 dt 2 t 'helix', f index 0 skip 1 u 2:($6*3) w l ls 4 dt 3 t '3 × helix (the limit)'
   unset multiplot
   unset output
 }

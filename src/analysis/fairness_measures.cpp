@@ -14,12 +14,14 @@ FairnessMeasures fairness_measures(const Curve& c, const PointList& data, const 
     const char* who = "cagd::analysis::fairness_measures";
     const int samples = sampling.samples, pieces = sampling.quadrature_pieces;
     if (pieces < 1) fail_input(who, "quadrature_pieces must be >= 1, got " + std::to_string(pieces));
-    if (c.dimension() != 2) fail_input(who, "needs a planar curve, dimension is " + std::to_string(c.dimension()));
-    if (data.cols() != 2 || data.rows() < 1) fail_input(who, "needs planar data points");
+    const int dim = c.dimension();
+    if (dim != 2 && dim != 3) fail_input(who, "needs a planar or space curve, dimension is " + std::to_string(dim));
+    if (data.cols() != dim || data.rows() < 1) fail_input(who, "needs data points of the curve's dimension " + std::to_string(dim));
     if (samples < 2) fail_input(who, "samples must be >= 2, got " + std::to_string(samples));
-    const Eigen::RowVector2d lo = data.colwise().minCoeff(), hi = data.colwise().maxCoeff();
+    const Eigen::RowVectorXd lo = data.colwise().minCoeff(), hi = data.colwise().maxCoeff();
     const double diagonal = (hi - lo).norm();
     FairnessMeasures m;
+    m.dimension = dim;
     const std::vector<double> br = c.breakpoints();
     int last_sign = 0;
     for (std::size_t k = 0; k + 1 < br.size(); ++k) {
@@ -36,22 +38,42 @@ FairnessMeasures fairness_measures(const Curve& c, const PointList& data, const 
         for (int j = 0; j <= samples; ++j) {
             const double u = a + (b - a) * j / samples;
             c.jet_into(u, 3, J);
-            const double x1 = J(1, 0), y1 = J(1, 1), v2 = x1 * x1 + y1 * y1;
-            if (!(v2 > 0.0)) fail_input(who, "zero speed (a cusp) at t = " + full_precision(u) + ": curvature is undefined there");
-            const double cross = x1 * J(2, 1) - y1 * J(2, 0), v = std::sqrt(v2);
-            const double kappa = cross / (v2 * v);
-            const double dkappa_ds = ((x1 * J(3, 1) - y1 * J(3, 0)) * v2 - 3.0 * cross * (x1 * J(2, 0) + y1 * J(2, 1))) / (v2 * v2 * v2);
-            m.max_abs_curvature_derivative = std::max(m.max_abs_curvature_derivative, std::abs(dkappa_ds));
+            double kappa = 0.0;  // signed in the plane, |κ| in space
+            if (dim == 2) {
+                const double x1 = J(1, 0), y1 = J(1, 1), v2 = x1 * x1 + y1 * y1;
+                if (!(v2 > 0.0)) fail_input(who, "zero speed (a cusp) at t = " + full_precision(u) + ": curvature is undefined there");
+                const double cross = x1 * J(2, 1) - y1 * J(2, 0), v = std::sqrt(v2);
+                kappa = cross / (v2 * v);
+                const double dkappa_ds = ((x1 * J(3, 1) - y1 * J(3, 0)) * v2 - 3.0 * cross * (x1 * J(2, 0) + y1 * J(2, 1))) / (v2 * v2 * v2);
+                m.max_abs_curvature_derivative = std::max(m.max_abs_curvature_derivative, std::abs(dkappa_ds));
+            } else {
+                const Eigen::Vector3d d1 = J.row(1).head<3>().transpose(), d2 = J.row(2).head<3>().transpose(), d3 = J.row(3).head<3>().transpose();
+                const double v2 = d1.squaredNorm();
+                if (!(v2 > 0.0)) fail_input(who, "zero speed (a cusp) at t = " + full_precision(u) + ": curvature is undefined there");
+                const Eigen::Vector3d cr = d1.cross(d2), cr1 = d1.cross(d3);
+                const double v = std::sqrt(v2), cn = cr.norm();
+                kappa = cn / (v2 * v);
+                if (std::abs(kappa) * std::max(diagonal, 1e-300) > 1e-9) {
+                    const double dkappa_ds = (cr.dot(cr1) / cn - 3.0 * cn * d1.dot(d2) / v2) / (v2 * v2);
+                    m.max_abs_curvature_derivative = std::max(m.max_abs_curvature_derivative, std::abs(dkappa_ds));
+                    m.max_abs_torsion = std::max(m.max_abs_torsion, std::abs(cr.dot(d3)) / (cn * cn));
+                }
+            }
             m.max_abs_curvature = std::max(m.max_abs_curvature, std::abs(kappa));
             spike = std::max(spike, std::abs(kappa) * chord);
-            const int sign = std::abs(kappa) * std::max(diagonal, 1e-300) <= 1e-9 ? 0 : (kappa > 0 ? 1 : -1);
-            if (sign != 0) {
-                if (last_sign != 0 && sign != last_sign) ++m.curvature_sign_changes;
-                last_sign = sign;
+            if (dim == 2) {
+                const int sign = std::abs(kappa) * std::max(diagonal, 1e-300) <= 1e-9 ? 0 : (kappa > 0 ? 1 : -1);
+                if (sign != 0) {
+                    if (last_sign != 0 && sign != last_sign) ++m.curvature_sign_changes;
+                    last_sign = sign;
+                }
             }
-            const Eigen::Vector2d p = J.row(0).transpose();
-            const double dx = std::max({lo.x() - p.x(), p.x() - hi.x(), 0.0}), dy = std::max({lo.y() - p.y(), p.y() - hi.y(), 0.0});
-            m.overshoot = std::max(m.overshoot, std::hypot(dx, dy) / diagonal);
+            double outside = 0.0;  // distance from the data's bounding box
+            for (int d = 0; d < dim; ++d) {
+                const double e = std::max({lo(d) - J(0, d), J(0, d) - hi(d), 0.0});
+                outside += e * e;
+            }
+            m.overshoot = std::max(m.overshoot, std::sqrt(outside) / diagonal);
         }
         m.max_spike = std::max(m.max_spike, spike);
         if (spike > kCornerThreshold) ++m.corners;

@@ -1,6 +1,6 @@
 #pragma once
-// Measured fairness of a planar curve through data points (pseudo_energy section 4.2 judges
-// curves "natural-looking" by eye; these numbers are the measurable form of that judgement).
+// Measured fairness of a planar or space curve through data points (pseudo_energy section 4.2
+// judges curves "natural-looking" by eye; these numbers are the measurable form of that judgement).
 //
 //   bending energy      ∫ κ² ds                          (Gauss–Legendre, 64 sub-pieces per span)
 //   pseudo-energy       Σ_pieces L_k² E_k, L_k, E_k the length and ∫κ² ds of piece k between
@@ -18,8 +18,14 @@
 //   curvature spike     the largest |κ| · l over the samples of each span, l the span's chord
 //                       length: a radius of curvature below l/100 (value > 100) is a "corner"
 //                       by our definition — at a cusp it is unbounded
+// Space curves (dimension 3): κ = |r' × r''|/|r'|³ ≥ 0 has no sign, so no sign changes are counted
+// (inflections are a planar notion); dκ/ds = [(c·c')/|c| − 3|c|(r'·r'')/|r'|²]/|r'|⁴ with
+// c = r' × r'', c' = r' × r⁽³⁾ (skipped where c = 0, a straight point, where |c| has no derivative);
+// and the torsion τ = det(r', r'', r⁽³⁾)/|c|², its largest |τ| over the samples where
+// |κ| · diagonal > 1e-9 (undefined at a straight point).
 // Accuracy: sampled maxima and counts resolve features wider than 1/samples of a span.
-// Precondition: planar curve, r'(u) ≠ 0 at the samples (a sample on an exact cusp throws).
+// Precondition: a curve of dimension 2 or 3 and data of the same dimension, r'(u) ≠ 0 at the
+// samples (a sample on an exact cusp throws).
 #include <vector>
 
 #include "cagd/core/curve.hpp"
@@ -35,6 +41,8 @@ struct FairnessMeasures {
     double overshoot = 0.0;                     // relative to the data's bounding-box diagonal
     double max_spike = 0.0;                     // max over spans of max |κ| · chord
     int corners = 0;                            // spans with |κ| · chord > corner_threshold
+    int dimension = 2;
+    double max_abs_torsion = 0.0;  // space curves; 0 for planar ones
     // Per piece between consecutive breakpoints (what the totals above sum): length L_k and ∫κ² ds E_k.
     std::vector<double> piece_lengths, piece_energies;
 };

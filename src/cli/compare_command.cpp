@@ -1,7 +1,9 @@
 // `cagd compare --in P.csv [--closed] [--methods a,b,…] [--no-plot] --out DIR`: every configuration
-// of the method registry on the user's points (compare/method_comparison). Writes DIR/measures.csv
-// and DIR/measures.md (one row per method), the figure data DIR/{points,curves,curvature,combs}.csv,
-// DIR/compare_panels.gp, and with gnuplot on the PATH the figures DIR/{curves,combs,curvature}.png.
+// of the method registry on the user's points (compare/method_comparison), planar or in space.
+// Writes DIR/measures.csv and DIR/measures.md (one row per method), the figure data
+// DIR/{points,curves,curvature,combs}.csv, DIR/compare_panels.gp, and with gnuplot on the PATH the
+// figures DIR/{curves,combs,curvature}.png (space points: DIR/{curves,curvature,torsion}.png, the
+// curvature file holding τ too and combs.csv only its header).
 // Prints the Markdown table on stdout and one progress line per method on stderr.
 
 #include <cstdlib>
@@ -61,7 +63,8 @@ int run_compare(const CompareArgs& a) {
         std::string m;
         while (std::getline(ss, m, ',')) options.methods.push_back(methods::find_configuration(m).name);
     }
-    if (points.cols() != 2) fail_input(who, a.in + ": compares planar curves, the points have " + std::to_string(points.cols()) + " columns");
+    if (points.cols() != 2 && points.cols() != 3) fail_input(who, a.in + ": compares planar or space curves, the points have " + std::to_string(points.cols()) + " columns");
+    const int dimension = static_cast<int>(points.cols());
     std::error_code ec;
     if (a.out.empty() || a.out == "-") fail_input(who, "--out '" + a.out + "': give a directory (compare writes several files)");
     if (std::filesystem::exists(a.out, ec) && !std::filesystem::is_directory(a.out, ec)) fail_input(who, "--out '" + a.out + "' exists and is not a directory");
@@ -78,11 +81,11 @@ int run_compare(const CompareArgs& a) {
     if (!std::filesystem::is_directory(a.out)) fail_input(who, "cannot create the output directory '" + a.out + "'");
     const std::string dir = a.out + "/";
     {
-        CsvOutput w(dir + "measures.csv", compare::comparison_header(a.closed, true));
-        for (const auto& row : compare::comparison_rows(results, a.closed, true)) w.row_text(row);
+        CsvOutput w(dir + "measures.csv", compare::comparison_header(a.closed, true, dimension));
+        for (const auto& row : compare::comparison_rows(results, a.closed, true, 8, dimension)) w.row_text(row);
         w.commit();
     }
-    const std::string md = compare::comparison_markdown(results, a.closed, true);
+    const std::string md = compare::comparison_markdown(results, a.closed, true, 6, dimension);
     {
         OutputFile f(dir + "measures.md");
         f.stream() << md;
@@ -94,12 +97,20 @@ int run_compare(const CompareArgs& a) {
     const int spans = static_cast<int>(points.rows()) - (a.closed ? 0 : 1);
     const compare::FigureData fig = compare::comparison_figure_data(results, points, compare::figure_sampling(std::max(spans, 1), 10000));
     {
-        CsvOutput w(dir + "points.csv", {"x", "y"});
-        for (Eigen::Index i = 0; i < points.rows(); ++i) w.row({points(i, 0), points(i, 1)}, 17);
+        CsvOutput w(dir + "points.csv", dimension == 2 ? std::vector<std::string>{"x", "y"} : std::vector<std::string>{"x", "y", "z"});
+        for (Eigen::Index i = 0; i < points.rows(); ++i) {
+            const Eigen::RowVectorXd p = points.row(i);
+            w.row(std::vector<double>(p.data(), p.data() + p.size()), 17);
+        }
         w.commit();
     }
-    write_rows(dir + "curves.csv", {"index", "x", "y"}, fig.curves);
-    write_rows(dir + "curvature.csv", {"index", "s", "kappa"}, fig.profiles);
+    if (dimension == 2) {
+        write_rows(dir + "curves.csv", {"index", "x", "y"}, fig.curves);
+        write_rows(dir + "curvature.csv", {"index", "s", "kappa"}, fig.profiles);
+    } else {
+        write_rows(dir + "curves.csv", {"index", "x", "y", "z"}, fig.curves);
+        write_rows(dir + "curvature.csv", {"index", "s", "kappa", "tau"}, fig.profiles);
+    }
     write_rows(dir + "combs.csv", {"index", "x", "y", "tip_x", "tip_y"}, fig.combs);
     {
         CsvOutput w(dir + "methods.csv", compare::figure_methods_header());
@@ -118,11 +129,12 @@ int run_compare(const CompareArgs& a) {
         return 0;
     }
     // The three figures are independent: one gnuplot each, as many at a time as there are cores.
-    const std::vector<std::string> figures = {"combs", "curvature", "curves"};  // the slowest first
+    const std::vector<std::string> figures =
+        dimension == 2 ? std::vector<std::string>{"combs", "curvature", "curves"} : std::vector<std::string>{"curvature", "torsion", "curves"};  // the slowest first
     std::vector<std::string> commands;
     for (const std::string& figure : figures) {
-        const std::string settings = "datadir=" + gnuplot_quoted(a.out) + "; prefix=''; heading=" + gnuplot_quoted(std::filesystem::path(a.in).filename().string()) +
-                                     "; formats='png'; figures='" + figure +
+        const std::string settings = "datadir=" + gnuplot_quoted(a.out) + "; prefix=''; space=" + std::to_string(dimension == 3 ? 1 : 0) +
+                                     "; heading=" + gnuplot_quoted(std::filesystem::path(a.in).filename().string()) + "; formats='png'; figures='" + figure +
                                      "'; point_every=" + std::to_string(std::max<Eigen::Index>(1, points.rows() / 5000));  // ≤ ~5000 dots per panel
         commands.push_back("gnuplot -e " + shell_quoted(settings) + " " + shell_quoted(dir + "compare_panels.gp"));
     }
@@ -131,7 +143,7 @@ int run_compare(const CompareArgs& a) {
                  [&](long k) { status[static_cast<std::size_t>(k)] = std::system(commands[static_cast<std::size_t>(k)].c_str()); }, {});
     for (std::size_t k = 0; k < commands.size(); ++k)
         if (status[k] != 0) throw NoResult("gnuplot failed: " + commands[k] + " (the tables and figure data are in " + a.out + ")");
-    if (progress) std::cerr << "cagd compare: figures " << dir << "{curves,combs,curvature}.png\n";
+    if (progress) std::cerr << "cagd compare: figures " << dir << (dimension == 2 ? "{curves,combs,curvature}.png\n" : "{curves,curvature,torsion}.png\n");
     return 0;
 }
 
@@ -140,7 +152,7 @@ int run_compare(const CompareArgs& a) {
 Command add_compare_command(CLI::App& app) {
     auto a = std::make_shared<CompareArgs>();
     CLI::App* c = app.add_subcommand("compare", "Every interpolation method on the same points: fairness table (CSV, Markdown) and figures");
-    c->add_option("--in", a->in, "points CSV: x,y per line, optional header")->required();
+    c->add_option("--in", a->in, "points CSV: x,y or x,y,z per line, optional header")->required();
     c->add_option("--out", a->out, "output directory (created)")->required();
     c->add_flag("--closed", a->closed, "closed curves (methods that draw open curves only are listed as not applicable)");
     c->add_option("--methods", a->methods, "comma-separated presets or methods (a method runs with its defaults), e.g. pseudo-spline-exact,cubic-b,hosaka (default: every preset)");

@@ -81,7 +81,7 @@ std::string applicability(const methods::MethodClaims& m, const PointList& point
     if (closed && !m.supports_closed) return "open curves only";
     const int need = closed ? m.min_points_closed : m.min_points;
     if (points.rows() < need) return "needs at least " + std::to_string(need) + " points";
-    if (points.cols() > m.max_dimension) return "planar points only";
+    if (points.cols() > m.max_dimension) return m.max_dimension == 2 ? "planar points only" : "at most " + std::to_string(m.max_dimension) + " dimensions";
     return "";
 }
 
@@ -101,7 +101,7 @@ const MethodComparison& find_comparison(const std::vector<MethodComparison>& c, 
 
 std::vector<MethodComparison> compare_methods(const PointList& points, const ComparisonOptions& options) {
     const char* who = "cagd::compare::compare_methods";
-    if (points.cols() != 2) fail_input(who, "compares planar curves: needs 2 columns (x, y), got " + std::to_string(points.cols()));
+    if (points.cols() != 2 && points.cols() != 3) fail_input(who, "compares planar or space curves: needs 2 or 3 columns (x, y[, z]), got " + std::to_string(points.cols()));
     if (points.rows() < 2) fail_input(who, "needs at least 2 points, got " + std::to_string(points.rows()));
     std::vector<methods::Configuration> configurations;
     for (const std::string& name : options.methods) configurations.push_back(methods::find_configuration(name));
@@ -127,7 +127,7 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
         const Curve& curve = *c.interpolant->curve;
         c.spans = static_cast<int>(c.interpolant->node_parameters.size()) - 1;
         const analysis::FairnessSampling sampling = comparison_sampling(static_cast<int>(curve.breakpoints().size()) - 1);
-        if (options.closed) c.area = analysis::enclosed_area(curve);
+        if (options.closed && points.cols() == 2) c.area = analysis::enclosed_area(curve);
         try {
             c.fairness = analysis::fairness_measures(curve, points, sampling);
             c.length = c.fairness->length;
@@ -165,26 +165,35 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
     return out;
 }
 
-std::vector<std::string> comparison_header(bool closed, bool timing) {
+std::vector<std::string> comparison_header(bool closed, bool timing, int dimension) {
     std::vector<std::string> h{"method", "status", "spans", "length"};
-    if (closed) h.push_back("area");
-    for (const char* n : {"bending_energy", "pseudo_energy", "inflections", "max_abs_curvature", "max_abs_dcurvature_ds", "overshoot", "locality_footprint"}) h.push_back(n);
+    if (closed && dimension == 2) h.push_back("area");
+    if (dimension == 2)
+        for (const char* n : {"bending_energy", "pseudo_energy", "inflections", "max_abs_curvature", "max_abs_dcurvature_ds", "overshoot", "locality_footprint"}) h.push_back(n);
+    else
+        for (const char* n : {"bending_energy", "pseudo_energy", "max_abs_curvature", "max_abs_dcurvature_ds", "max_abs_torsion", "overshoot", "locality_footprint"})
+            h.push_back(n);
     if (timing) h.push_back("seconds");
     h.push_back("note");
     return h;
 }
 
-std::vector<std::vector<std::string>> comparison_rows(const std::vector<MethodComparison>& cs, bool closed, bool timing, int digits) {
+std::vector<std::vector<std::string>> comparison_rows(const std::vector<MethodComparison>& cs, bool closed, bool timing, int digits, int dimension) {
     std::vector<std::vector<std::string>> rows;
     const auto num = [&](double v) { return format_number(v, digits); };
     for (const MethodComparison& c : cs) {
         const bool built = c.interpolant.has_value();
         std::vector<std::string> r{c.method, c.status, built ? std::to_string(c.spans) : "", built ? num(c.length) : ""};
-        if (closed) r.push_back(built ? num(c.area) : "");
-        if (c.fairness) {
+        if (closed && dimension == 2) r.push_back(built ? num(c.area) : "");
+        if (c.fairness && dimension == 2) {
             const analysis::FairnessMeasures& f = *c.fairness;
             for (const std::string& v : {num(f.bending_energy), num(c.pseudo_energy), std::to_string(f.curvature_sign_changes), num(f.max_abs_curvature),
                                          num(f.max_abs_curvature_derivative), num(f.overshoot)})
+                r.push_back(v);
+        } else if (c.fairness) {
+            const analysis::FairnessMeasures& f = *c.fairness;
+            for (const std::string& v :
+                 {num(f.bending_energy), num(c.pseudo_energy), num(f.max_abs_curvature), num(f.max_abs_curvature_derivative), num(f.max_abs_torsion), num(f.overshoot)})
                 r.push_back(v);
         } else {
             r.insert(r.end(), 6, "");
@@ -197,15 +206,15 @@ std::vector<std::vector<std::string>> comparison_rows(const std::vector<MethodCo
     return rows;
 }
 
-std::string comparison_markdown(const std::vector<MethodComparison>& cs, bool closed, bool timing, int digits) {
-    const std::vector<std::string> header = comparison_header(closed, timing);
+std::string comparison_markdown(const std::vector<MethodComparison>& cs, bool closed, bool timing, int digits, int dimension) {
+    const std::vector<std::string> header = comparison_header(closed, timing, dimension);
     std::ostringstream md;
     md << "|";
     for (const std::string& h : header) md << " " << h << " |";
     md << "\n|";
     for (std::size_t i = 0; i < header.size(); ++i) md << (i == 0 || i + 1 == header.size() || i == 1 ? "---|" : "---:|");
     md << "\n";
-    for (const auto& row : comparison_rows(cs, closed, timing, digits)) {
+    for (const auto& row : comparison_rows(cs, closed, timing, digits, dimension)) {
         md << "|";
         for (std::string f : row) {
             std::replace(f.begin(), f.end(), '|', '/');
@@ -230,6 +239,7 @@ FigureData comparison_figure_data(const std::vector<MethodComparison>& cs, const
     if (per_span < 1 || stride < 1)
         fail_input("cagd::compare::comparison_figure_data", "per_span and span_stride must be >= 1, got " + std::to_string(per_span) + " and " + std::to_string(stride));
     const double diagonal = bounding_box_diagonal(points);
+    const bool space = points.cols() == 3;  // curves x, y, z; profiles s, κ, τ; no combs
     // One part per method, computed in parallel and joined in the methods' order.
     std::vector<FigureData> parts(cs.size());
     parallel_for(static_cast<long>(cs.size()), hardware_threads(), [&](long method) {
@@ -252,7 +262,20 @@ FigureData comparison_figure_data(const std::vector<MethodComparison>& cs, const
             double previous = a.node_parameters[k];
             for (int j = 0; j <= per_span; ++j) {
                 const double t = span_parameter(a, k, double(j) / per_span);
-                const Eigen::MatrixXd J = j == per_span && t > a.curve->t_min() ? a.curve->jet_from_left(t, 2) : a.curve->jet(t, 2);
+                const Eigen::MatrixXd J = j == per_span && t > a.curve->t_min() ? a.curve->jet_from_left(t, space ? 3 : 2) : a.curve->jet(t, space ? 3 : 2);
+                if (space) {
+                    if (j < per_span || last) d.curves.push_back({index, J(0, 0), J(0, 1), J(0, 2)});
+                    if (t > previous) s += analysis::piece_arc_length(*a.curve, previous, t, 1);
+                    previous = t;
+                    if (!cs[i].fairness) continue;
+                    const Eigen::Vector3d d1 = J.row(1).transpose(), d2 = J.row(2).transpose();
+                    const Eigen::Vector3d cr = d1.cross(d2);
+                    const double v = d1.norm(), cn = cr.norm();
+                    // τ is undefined where κ = 0 (a straight point): left at 0 there, as the table's maximum skips it.
+                    const double kappa = cn / (v * v * v), tau = kappa * diagonal > 1e-9 ? cr.dot(J.row(3).transpose()) / (cn * cn) : 0.0;
+                    d.profiles.push_back({index, s, kappa, tau});
+                    continue;
+                }
                 if (j < per_span || last) d.curves.push_back({index, J(0, 0), J(0, 1)});
                 // One 20-point rule per sample step (analysis::arc_length would search all breakpoints
                 // per call: O(n²) on long inputs); a step across a breakpoint costs plot accuracy only.

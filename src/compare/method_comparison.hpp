@@ -1,5 +1,5 @@
 #pragma once
-// Every interpolation method on the same planar points, measured the same way (`cagd compare`):
+// Every interpolation method on the same planar or space points, measured the same way (`cagd compare`):
 //
 //   length, enclosed area (closed)   ∫|r'| dt, ½∮(x y' − y x') dt (analysis/curve_measures)
 //   pseudo-energy                    Σ_k L_k² E_k over the data spans k (L_k, E_k = ∫κ² ds on span k;
@@ -13,6 +13,8 @@
 //                                    10⁻⁹ × diagonal (9 samples per span)
 //   seconds                          wall time of interpolate() (not deterministic)
 //
+// Space points (3 columns): no enclosed area and no inflections; the largest |τ| instead
+// (analysis/fairness_measures); the figure data are the curves in 3-D and κ(s), τ(s), no combs.
 // A method that does not apply (too few points, closed curves unsupported, 3-D) is listed with
 // the reason; a returned outcome (the curvature-profile Newton) is listed with its message; a curve
 // with a point of zero speed (a cusp: Boost's pchip does this where x and y turn together) has no
@@ -66,11 +68,13 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
 
 // The table: one row per method, numbers to `digits` significant digits, empty where undefined.
 // With timing = false the seconds column is left out (deterministic output).
-std::vector<std::string> comparison_header(bool closed, bool timing);
-std::vector<std::vector<std::string>> comparison_rows(const std::vector<MethodComparison>& c, bool closed, bool timing, int digits = 8);
-std::string comparison_markdown(const std::vector<MethodComparison>& c, bool closed, bool timing, int digits = 6);
+// `dimension` 3: the space columns (no area, no inflections, max_abs_torsion).
+std::vector<std::string> comparison_header(bool closed, bool timing, int dimension = 2);
+std::vector<std::vector<std::string>> comparison_rows(const std::vector<MethodComparison>& c, bool closed, bool timing, int digits = 8, int dimension = 2);
+std::string comparison_markdown(const std::vector<MethodComparison>& c, bool closed, bool timing, int digits = 6, int dimension = 2);
 
-// Figure data. Curve samples (method index, method, x, y), `per_span` per span; the curvature
+// Figure data (planar; for space points see above: curves (index, x, y, z), profiles (index, s, κ,
+// τ), no combs). Curve samples (method index, method, x, y), `per_span` per span; the curvature
 // profile (method index, s, κ), `per_span` per span with both ends of every span; the curvature
 // comb (method index, x, y, tooth end x, y), the tooth r − c·κ·n (n the left unit normal), c per
 // method such that the 95th percentile of |κ| draws 10 % of the data diagonal (a spike shows as a

@@ -79,10 +79,11 @@ using detail::minimise_w;
 
 }  // namespace
 
-PseudoSpline pseudo_spline(const PointList& points, const SegmentOracle& oracle, TangentOptimization mode, bool closed) {
+PseudoSpline pseudo_spline(const PointList& points, const SegmentOracle& oracle, TangentOptimization mode, bool closed, TangentTie tie) {
     const char* who = "cagd::fairness::pseudo_spline";
     require_valid_points(points, closed ? 3 : 2, true, closed, who);
     if (points.cols() != 2) fail_input(who, "needs planar points (2 columns), got " + std::to_string(points.cols()));
+    if (!(tie.position >= 0.0 && tie.position <= 1.0)) fail_input(who, "tie.position must lie in [0, 1], got " + full_precision(tie.position));
     const Eigen::Index np = points.rows();
     const Eigen::Index spans = closed ? np : np - 1;
     const auto next = [&](Eigen::Index i) { return (i + 1) % np; };
@@ -129,7 +130,7 @@ PseudoSpline pseudo_spline(const PointList& points, const SegmentOracle& oracle,
                 a = wrap_angle(std::atan2(d.y(), d.x()) - phi[out]);
             } else {
                 const auto w = [&](double alpha) { return len[in] * J(alpha + tau) + len[out] * J(alpha); };
-                a = minimise_w(w, std::min(0.0, -tau), std::max(0.0, -tau), mode);
+                a = minimise_w(w, std::min(0.0, -tau), std::max(0.0, -tau), mode, tie);
             }
         }
         ps.alpha[static_cast<std::size_t>(i)] = a;
@@ -184,26 +185,44 @@ PseudoSpline pseudo_spline(const PointList& points, const SegmentOracle& oracle,
     return ps;
 }
 
-long equivalent_polygon_points(double spline_error, CircleMeasure measure) {
-    if (!(spline_error > 0.0 && std::isfinite(spline_error)))
-        fail_input("cagd::fairness::equivalent_polygon_points", "spline_error must be positive and finite, got " + full_precision(spline_error));
-    const auto polygon_error = [&](long n) {
-        const double nd = static_cast<double>(n), x = std::numbers::pi / nd;
-        return measure == CircleMeasure::perimeter ? 2.0 * std::numbers::pi - 2.0 * nd * std::sin(x) : std::numbers::pi - 0.5 * nd * std::sin(2.0 * x);
-    };
-    // The polygon error decreases monotonically in N: bisection on the first N below spline_error.
+namespace {
+
+// The smallest N ≥ 3 with polygon_error(N) < spline_error; polygon_error decreases in N.
+template <class PolygonError>
+long first_closer_polygon(const char* who, double spline_error, const PolygonError& polygon_error) {
+    if (!(spline_error > 0.0 && std::isfinite(spline_error))) fail_input(who, "spline_error must be positive and finite, got " + full_precision(spline_error));
     long lo = 2, hi = 3;  // invariant: polygon_error(lo) ≥ spline_error (or lo = 2), search hi
     while (polygon_error(hi) >= spline_error) {
         lo = hi;
         hi *= 2;
-        if (hi > 1000000000L)
-            fail_input("cagd::fairness::equivalent_polygon_points", "spline_error " + full_precision(spline_error) + " is below every polygon error up to N = 1e9");
+        if (hi > 1000000000L) fail_input(who, "spline_error " + full_precision(spline_error) + " is below every polygon error up to N = 1e9");
     }
-    while (hi - lo > 1) {
+    while (hi - lo > 1) {  // bisection on the first N below spline_error
         const long mid = lo + (hi - lo) / 2;
         (polygon_error(mid) >= spline_error ? lo : hi) = mid;
     }
     return hi;
+}
+
+}  // namespace
+
+long equivalent_polygon_points(double spline_error, CircleMeasure measure) {
+    return first_closer_polygon("cagd::fairness::equivalent_polygon_points", spline_error, [&](long n) {
+        const double nd = static_cast<double>(n), x = std::numbers::pi / nd;
+        return measure == CircleMeasure::perimeter ? 2.0 * std::numbers::pi - 2.0 * nd * std::sin(x) : std::numbers::pi - 0.5 * nd * std::sin(2.0 * x);
+    });
+}
+
+long equivalent_helix_polygon_points(double relative_error, double rise_over_radius) {
+    const char* who = "cagd::fairness::equivalent_helix_polygon_points";
+    if (!(rise_over_radius >= 0.0 && std::isfinite(rise_over_radius))) fail_input(who, "rise_over_radius must be finite and ≥ 0, got " + full_precision(rise_over_radius));
+    const double p = rise_over_radius, turn = std::sqrt(4.0 * std::numbers::pi * std::numbers::pi + p * p);
+    return first_closer_polygon(who, relative_error, [&](long n) {
+        const double nd = static_cast<double>(n), half_chord = std::sin(std::numbers::pi / nd), rise = p / nd;
+        // 1 − N·chord / turn, with turn − N·chord written without cancellation
+        const double chord = std::sqrt(4.0 * half_chord * half_chord + rise * rise);
+        return (turn * turn - nd * nd * chord * chord) / (turn * (turn + nd * chord));
+    });
 }
 
 const char* to_string(InterpolationMethod m) {

@@ -23,7 +23,11 @@
 // first term uses it for the end of span i−1. Open ends (eq 13): α_0 = θ1(α_1 + φ_1 − φ_0) and the
 // end direction at P_n is φ_{n−1} + θ1(α_{n−1}); we store alpha[n] = θ1(α_{n−1}), relative to the
 // incoming chord φ_{n−1} (the paper's α_n = φ_{n−1} + θ1(α_{n−1}) is the absolute angle).
-//   exact        Brent's method (Boost.Math) on w over the search interval.
+//   exact        Brent's method (Boost.Math) on w over the search interval. Where w is flat over a
+//                stretch (relative differences below 1e-10: J(θ) read linearly from a table with both
+//                angles in one cell), Brent stops anywhere in it as rounding decides (on a circle of
+//                4 points, 3.6° off the bisector; on a dense helix, any of a 5° stretch); we take
+//                the middle of the stretch (TangentTie), which keeps equal-chord data symmetric.
 //   approximate  the paper's "three interior points and quadratic interpolation": w at ¼, ½, ¾
 //                of the interval, the vertex of the parabola through them, clamped to the interval.
 //                The paper does not say what to do when the parabola is not convex; we take its
@@ -66,6 +70,14 @@
 namespace cagd::fairness {
 
 enum class TangentOptimization { none, exact, approximate };
+// Exact mode, where w is flat over a stretch (J(θ) read linearly from a table: both angles of w in one
+// cell): every point of the stretch is a minimum, and `position` says which one, from 0 (its lower
+// α end) through 0.5 (the middle: the default, for equal chords the bisector) to 1 (its upper end).
+// Other positions are readings of the paper's procedure for erratum pseudo_energy-E4 (where a
+// minimiser might stop), not a method; InvalidInput outside [0, 1].
+struct TangentTie {
+    double position = 0.5;
+};
 const char* to_string(TangentOptimization m);
 TangentOptimization parse_tangent_optimization(const std::string& text);  // none | exact | approx
 
@@ -146,7 +158,7 @@ struct PseudoSpline {
     double polygon_area() const;               // S_0 of eq (21)
 };
 
-PseudoSpline pseudo_spline(const PointList& points, const SegmentOracle& oracle, TangentOptimization mode, bool closed);
+PseudoSpline pseudo_spline(const PointList& points, const SegmentOracle& oracle, TangentOptimization mode, bool closed, TangentTie tie = {});
 
 // The five curves of section 4.2 through the same points: cubic spline A (uniform parameter),
 // cubic spline B (chord length), Hermite A, Hermite B (spline/hermite_spline.hpp) and the
@@ -164,6 +176,12 @@ spline::PiecewiseHermiteCurve section42_interpolant(const PointList& points, Int
 // positive and finite (no polygon is worse than a perfect value) or N would exceed 10^9.
 enum class CircleMeasure { perimeter, area };
 long equivalent_polygon_points(double spline_error, CircleMeasure measure);
+// The analogue for a circular helix of radius a rising p per turn (p/a = rise_over_radius ≥ 0): the
+// smallest N ≥ 3 for which the polygon through N equally spaced points per turn has a smaller
+// relative length error than `relative_error` (> 0), the polygon's being
+// 1 − N sqrt(4 sin²(π/N) + (p/(aN))²) / sqrt(4π² + (p/a)²). At p = 0 it is the circle's perimeter
+// rule relative to 2π.
+long equivalent_helix_polygon_points(double relative_error, double rise_over_radius);
 
 // The turn φ_i − φ_{i−1} wrapped to (−π, π] between two chord directions given as vectors.
 double turning_angle(const Eigen::Vector2d& incoming, const Eigen::Vector2d& outgoing);

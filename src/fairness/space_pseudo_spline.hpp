@@ -23,6 +23,38 @@
 // oracle; derivatives l_i r0 T_i and l_i r1 T_{i+1}. Points in a plane give the planar
 // pseudo-spline (φ = 0 or π, the planar J by symmetry; tested to 1e-9 with the exact oracles).
 // Length (eq 16–17): L = Σ l_i L_i. A space curve encloses no area; none is reported.
+//
+// Accuracy on a helix (the claims of experiment space_pseudo_spline). Take the circular helix
+// H(t) = (cos t, sin t, b t) (radius 1), points P_i = H(ih), h = 2π/n for n points per turn.
+//  - Congruence. The screw motion t → t + h maps the points onto themselves, so every interior span
+//    has the same (θ0 = θ1, φ) and the same r0 = r1, L, J.
+//  - The tangent. The half-turn about the principal normal at P_i swaps P_{i−1} and P_{i+1}; w is
+//    symmetric under it and its minimiser (when unique) is the bisector of the equal chords,
+//    P_{i+1} − P_{i−1} ∝ (−σ sin t_i, σ cos t_i, b), σ = sin h / h = 1 − h²/6 + …: the helix's
+//    tangent (−sin t_i, cos t_i, b) with its horizontal part shrunk, leaning toward the axis by
+//    O(h²) in the plane of the tangent and the binormal.
+//  - Torsion. On the span t ∈ [−h/2, h/2] (unit parameter u) the end derivatives are
+//    ρ(σ(−sin t±, cos t±), b) with ρ = h(1 + αh² + …), α anything (magnitudes right to relative
+//    O(h²)). Against the Hermite cubic with the helix's own derivatives h(−sin t±, cos t±, b), whose
+//    third derivative is h³(0, −1, 0) + O(h⁴), the third derivative 12(P0 − P1) + 6(T0 + T1) gains
+//    6(δ0 + δ1) (δ the differences of the end derivatives)
+//      = 6[(ρσ − h)·2cos(h/2)·(0, 1, 0) + 2(ρ − h)·(0, 0, b)] = h³[12α(0, 1, b) − 2(0, 1, 0)] + O(h⁵).
+//    The part along the tangent (0, 1, b) does not enter det(P', P'', P'''); what is left is
+//    −2h³(0, 1, 0) beside the helix's −h³(0, 1, 0). With P' = h(0, 1, b) and P'' = −h²(1, 0, 0) to
+//    leading order, τ = det(P', P'', P''')/|P' × P''|² → 3b/(1 + b²) = 3τ_helix, uniformly along the
+//    span, whatever α. Any cubic Hermite interpolant with tangents along P_{i+1} − P_{i−1} (Hermite A,
+//    Catmull–Rom, and Hermite B on equal chords) shares the factor 3; a C² cubic spline, whose third derivative converges to
+//    the helix's, does not.
+//  - Curvature. The differences δ are O(h³): relative O(h²) against P' = O(h), but relative O(h)
+//    against P'' = O(h²). That O(h) part of P'' is along the tangent (no effect on P' × P'') or along
+//    the binormal (the remainder of (0, 1, 0) once its tangent part is taken out), and P' × (binormal)
+//    lies along the normal, perpendicular to P' × P'' (along the binormal): |P' × P''| changes at
+//    second order, so |κ/κ_helix − 1| = O(h²).
+//  - Length. The displacement Δ from the helix's Hermite cubic is O(h³), but its normal part is
+//    O(h⁴) (δ0 and δ1 differ by O(h⁴) along the normal). The first variation ∫ κ N·Δ ds and the
+//    second order ∫ |Δ'|²/|P'| are both O(h⁵) on a span of length O(h); the helix's Hermite cubic
+//    errs by as much: the relative length error is O(h⁴). The inscribed polygon's is O(N⁻²), so the
+//    polygon as accurate as the spline (the equivalent points) has N growing as n².
 #include <Eigen/Dense>
 #include <vector>
 
