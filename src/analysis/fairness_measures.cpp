@@ -32,9 +32,11 @@ FairnessMeasures fairness_measures(const Curve& c, const PointList& data, const 
         m.piece_lengths.push_back(len);
         m.piece_energies.push_back(energy);
         m.pseudo_energy += len * len * energy;
-        const double chord = (c.point(b) - c.point(a)).norm();
+        JetMatrix J, Jb;
+        c.jet_into(a, 0, J);
+        c.jet_into(b, 0, Jb);
+        const double chord = (Jb.row(0) - J.row(0)).norm();
         double spike = 0.0;
-        JetMatrix J;
         for (int j = 0; j <= samples; ++j) {
             const double u = a + (b - a) * j / samples;
             c.jet_into(u, 3, J);

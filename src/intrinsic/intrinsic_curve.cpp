@@ -27,7 +27,8 @@ Eigen::MatrixXd IntrinsicCurve::jet_from_left(double s, int order) const {
 
 namespace {
 // Rows first.. of a jet: d^k r/ds^k, k = 1..order, from the ψ jet a = (ψ, ψ', …) of segment j.
-void write_derivative_rows(const Eigen::VectorXd& a, int order, Eigen::MatrixXd& out, int first) {
+template <class Jet, class Out>
+void write_derivative_rows(const Jet& a, int order, Out& out, int first) {
     const Eigen::RowVector2d e(std::cos(a(0)), std::sin(a(0))), n(-std::sin(a(0)), std::cos(a(0)));
     out.row(first) = e;
     if (order >= 2) out.row(first + 1) = a(1) * n;
@@ -45,6 +46,29 @@ Eigen::MatrixXd IntrinsicCurve::jet_in_segment(int j, double s, int order) const
     if (order == 0) return out;
     write_derivative_rows(psi_.jet_in_segment(j, s, order - 1), order, out, 1);
     return out;
+}
+
+void IntrinsicCurve::jet_into(double s, int order, JetMatrix& out) const {
+    if (order < 0 || order > 4) fail_input("intrinsic::IntrinsicCurve::jet", "order must be in 0..4, got " + std::to_string(order));
+    require_jet_capacity("intrinsic::IntrinsicCurve::jet_into", order + 1, 2);
+    const int j = psi_.segment_at(s);
+    const double w = psi_.breakpoints()[static_cast<std::size_t>(j)], d = psi_.segment_lengths()[static_cast<std::size_t>(j)];
+    const double tau = std::min(1.0, std::max(0.0, (s - w) / d));
+    out.resize(order + 1, 2);
+    out.row(0) = points_.row(j) + d * direction_integrals(psi_.bezier().row(j).transpose(), tau).transpose();
+    if (order == 0) return;
+    double a[4];
+    psi_.jet_in_segment_into(j, s, order - 1, a);
+    write_derivative_rows(Eigen::Map<const Eigen::VectorXd>(a, order), order, out, 1);
+}
+
+void IntrinsicCurve::derivatives_into(double s, int order, JetMatrix& out) const {
+    if (order < 1 || order > 4) fail_input("intrinsic::IntrinsicCurve::derivatives", "order must be in 1..4, got " + std::to_string(order));
+    require_jet_capacity("intrinsic::IntrinsicCurve::derivatives_into", order, 2);
+    out.resize(order, 2);
+    double a[4];
+    psi_.jet_in_segment_into(psi_.segment_at(s), s, order - 1, a);
+    write_derivative_rows(Eigen::Map<const Eigen::VectorXd>(a, order), order, out, 0);
 }
 
 Eigen::MatrixXd IntrinsicCurve::derivatives(double s, int order) const {

@@ -31,6 +31,9 @@ public:
     // r', r'', … from ψ alone (e = (cos ψ, sin ψ), n = e rotated by π/2; r' = e, r'' = ψ' n, …):
     // no position quadrature, so speed and curvature integrals cost a B-spline evaluation each.
     Eigen::MatrixXd derivatives(double s, int order) const override;
+    // The same two without allocating (the measures' hot path), bit for bit as jet and derivatives.
+    void jet_into(double s, int order, JetMatrix& out) const override;
+    void derivatives_into(double s, int order, JetMatrix& out) const override;
     std::vector<double> breakpoints() const override { return psi_.breakpoints(); }
 
 private:

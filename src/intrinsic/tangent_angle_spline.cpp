@@ -97,18 +97,37 @@ int TangentAngleSpline::segment_at(double s) const {
 Eigen::VectorXd TangentAngleSpline::jet(double s, int order) const { return jet_in_segment(segment_at(s), s, order); }
 
 Eigen::VectorXd TangentAngleSpline::jet_in_segment(int j, double s, int order) const {
-    const std::string who = "intrinsic::TangentAngleSpline::jet";
-    if (order < 0) fail_input(who, "order must be ≥ 0, got " + std::to_string(order));
-    if (j < 0 || j >= segments()) fail_input(who, "segment " + std::to_string(j) + " outside 0.." + std::to_string(segments() - 1));
-    const double lo = w_[static_cast<std::size_t>(j)], hi = w_[static_cast<std::size_t>(j) + 1];
-    if (!(s >= lo && s <= hi)) fail_input(who, "s = " + full_precision(s) + " outside segment " + std::to_string(j) + " [" + full_precision(lo) + ", " + full_precision(hi) + "]");
-    const int p = degree();
-    const int span = layout_.last_knot_of_breakpoint(j) + 1;
+    if (order < 0) fail_input("intrinsic::TangentAngleSpline::jet", "order must be ≥ 0, got " + std::to_string(order));
+    Eigen::VectorXd out(order + 1);
+    if (order <= 7) {
+        jet_in_segment_into(j, s, order, out.data());
+        return out;
+    }
+    const int p = degree(), span = checked_span(j, s);
     const Eigen::MatrixXd N = basis_function_derivatives(p, basis_knots_, span, s, order);
-    Eigen::VectorXd out = Eigen::VectorXd::Zero(order + 1);
+    out.setZero();
     for (int d = 0; d <= order; ++d)
         for (int m = 0; m <= p; ++m) out(d) += N(d, m) * de_boor_(span - p + m);
     return out;
+}
+
+int TangentAngleSpline::checked_span(int j, double s) const {
+    const char* who = "intrinsic::TangentAngleSpline::jet";
+    if (j < 0 || j >= segments()) fail_input(who, "segment " + std::to_string(j) + " outside 0.." + std::to_string(segments() - 1));
+    const double lo = w_[static_cast<std::size_t>(j)], hi = w_[static_cast<std::size_t>(j) + 1];
+    if (!(s >= lo && s <= hi)) fail_input(who, "s = " + full_precision(s) + " outside segment " + std::to_string(j) + " [" + full_precision(lo) + ", " + full_precision(hi) + "]");
+    return layout_.last_knot_of_breakpoint(j) + 1;
+}
+
+void TangentAngleSpline::jet_in_segment_into(int j, double s, int order, double* out) const {
+    if (order < 0 || order > 7) fail_input("intrinsic::TangentAngleSpline::jet_in_segment_into", "order must be 0..7, got " + std::to_string(order));
+    const int p = degree(), span = checked_span(j, s);
+    BasisDerivatives N;
+    basis_function_derivatives_into(p, basis_knots_, span, s, order, N);
+    for (int d = 0; d <= order; ++d) {
+        out[d] = 0.0;
+        for (int m = 0; m <= p; ++m) out[d] += N(d, m) * de_boor_(span - p + m);
+    }
 }
 
 double TangentAngleSpline::angle(int segment, bool at_end) const { return at_end ? bezier_(segment, degree()) : bezier_(segment, 0); }
@@ -119,7 +138,7 @@ double TangentAngleSpline::curvature(int segment, bool at_end) const {
     return at_end ? p * (bezier_(segment, p) - bezier_(segment, p - 1)) / d : p * (bezier_(segment, 1) - bezier_(segment, 0)) / d;
 }
 
-Eigen::Vector2d direction_integrals(const Eigen::VectorXd& b, double tau, Eigen::Matrix<double, 2, Eigen::Dynamic>* weights) {
+Eigen::Vector2d direction_integrals(const Eigen::Ref<const Eigen::VectorXd, 0, Eigen::InnerStride<>>& b, double tau, Eigen::Matrix<double, 2, Eigen::Dynamic>* weights) {
     const int p = static_cast<int>(b.size()) - 1;
     if (p < 0 || p > 3) fail_input("intrinsic::direction_integrals", "Bézier degree must be 0..3, got " + std::to_string(p));
     if (!(tau >= 0.0 && tau <= 1.0)) fail_input("intrinsic::direction_integrals", "tau = " + full_precision(tau) + " outside [0, 1]");

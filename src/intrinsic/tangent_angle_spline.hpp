@@ -50,13 +50,16 @@ public:
     Eigen::VectorXd jet(double s, int order) const;
     // The same for the polynomial of segment j, s ∈ [w_j, w_{j+1}] (one-sided limits at its ends).
     Eigen::VectorXd jet_in_segment(int segment, double s, int order) const;
+    // The same into out[0..order] (order ≤ 7), without allocating: the hot path of positions.
+    void jet_in_segment_into(int segment, double s, int order, double* out) const;
     int segment_at(double s) const;  // j with w_j ≤ s < w_{j+1} (the last segment at s = length)
     // From the Bézier form: ψ and κ at the start (t = 0) or end (t = 1) of segment j.
     double angle(int segment, bool at_end) const;
     double curvature(int segment, bool at_end) const;
 
 private:
-    std::vector<double> basis_knots_;  // farin_knots() with w_0 and w_k added: the knot vector of jet_in_segment
+    int checked_span(int segment, double s) const;  // the knot span of segment j; InvalidInput if s is outside it
+    std::vector<double> basis_knots_;               // farin_knots() with w_0 and w_k added: the knot vector of jet_in_segment
     KnotLayout layout_;
     std::vector<double> lengths_, w_;
     Eigen::VectorXd de_boor_;
@@ -66,6 +69,8 @@ private:
 // ∫_0^τ (cos ψ(t), sin ψ(t)) dt for the Bézier polynomial ψ with ordinates b (degree = size − 1,
 // ≤ 3), 0 ≤ τ ≤ 1, by the rule above. With `weights`, also W(0, r) = ∫_0^1 cos ψ B^p_r dt and
 // W(1, r) = ∫_0^1 sin ψ B^p_r dt (τ must be 1), the derivatives' building blocks.
-Eigen::Vector2d direction_integrals(const Eigen::VectorXd& b, double tau = 1.0, Eigen::Matrix<double, 2, Eigen::Dynamic>* weights = nullptr);
+// b may be a row of bezier() (any inner stride: no copy).
+Eigen::Vector2d direction_integrals(const Eigen::Ref<const Eigen::VectorXd, 0, Eigen::InnerStride<>>& b, double tau = 1.0,
+                                    Eigen::Matrix<double, 2, Eigen::Dynamic>* weights = nullptr);
 
 }  // namespace cagd::intrinsic

@@ -52,6 +52,9 @@ private:
 // Derivatives 0..order of the p+1 basis functions non-zero on span s at t:
 // result(k, j) = d^k N_{s−p+j, p}(t) / dt^k. (Piegl & Tiller A2.3.)
 Eigen::MatrixXd basis_function_derivatives(int degree, const std::vector<double>& knots, int span, double t, int order);
+// The same into a matrix on the stack (degree ≤ 7, order ≤ 7; InvalidInput otherwise), bit for bit.
+using BasisDerivatives = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 8, 8>;
+void basis_function_derivatives_into(int degree, const std::vector<double>& knots, int span, double t, int order, BasisDerivatives& ders);
 
 // One B-spline basis function of degree p given by its p+2 local knots
 // [κ_0, …, κ_{p+1}], or its derivative, at t; zero outside [κ_0, κ_{p+1}). Right-continuous,

@@ -52,15 +52,31 @@ Eigen::MatrixXd HosakaCurve::jet_from_left(double u, int order) const {
     return segment_jet(s, t, order);
 }
 
+namespace {
+
+template <class Out>
+void hosaka_segment_jet(const HosakaBasis& basis, const Eigen::MatrixXd& start, const Eigen::MatrixXd& end, int m, int s, double t, int order, Out& out) {
+    const Eigen::Index first = static_cast<Eigen::Index>(s) * (m + 1);
+    out.setZero(order + 1, start.cols());
+    for (int k = 0; k <= order; ++k)
+        for (int i = 0; i <= m; ++i) out.row(k) += basis.p(i, t, k) * start.row(first + i) + basis.q(i, t, k) * end.row(first + i);
+}
+
+}  // namespace
+
 Eigen::MatrixXd HosakaCurve::segment_jet(int s, double t, int order) const {
     if (s < 0 || s >= segments() || !(t >= 0.0 && t <= 1.0) || order < 0)
         fail_input("cagd::spline::HosakaCurve::segment_jet", "needs 0 <= s < " + std::to_string(segments()) + ", t in [0, 1], order >= 0; got s = " + std::to_string(s) +
                                                                  ", t = " + full_precision(t) + ", order " + std::to_string(order));
-    const Eigen::Index first = static_cast<Eigen::Index>(s) * (m() + 1);
-    Eigen::MatrixXd out = Eigen::MatrixXd::Zero(order + 1, dimension());
-    for (int k = 0; k <= order; ++k)
-        for (int i = 0; i <= m(); ++i) out.row(k) += basis_.p(i, t, k) * start_.row(first + i) + basis_.q(i, t, k) * end_.row(first + i);
+    Eigen::MatrixXd out;
+    hosaka_segment_jet(basis_, start_, end_, m(), s, t, order, out);
     return out;
+}
+
+void HosakaCurve::jet_into(double u, int order, JetMatrix& out) const {
+    require_jet_capacity("cagd::spline::HosakaCurve::jet_into", order + 1, dimension());
+    const auto [s, t] = locate_unit_piece("cagd::spline::HosakaCurve::jet", u, segments(), order);
+    hosaka_segment_jet(basis_, start_, end_, m(), s, t, order, out);
 }
 
 HosakaSpline hosaka_c2_spline(const PointList& points, const HosakaSplineOptions& o) {
