@@ -182,21 +182,71 @@ void basis_function_derivatives_into(int p, const std::vector<double>& U, int sp
     }
 }
 
+double BSplineCurve::span_middle(int span) const { return 0.5 * (knots_[static_cast<std::size_t>(span)] + knots_[static_cast<std::size_t>(span) + 1]); }
+
+const double* BSplineCurve::taylor(int span) const {
+    std::call_once(*taylor_.once, [&] {
+        const int p = degree_, dim = dimension(), n = static_cast<int>(control_.rows());
+        std::vector<double> c(static_cast<std::size_t>((n - p) * (p + 1) * dim), 0.0);
+        for (int s = p; s < n; ++s) {
+            if (!(knots_[static_cast<std::size_t>(s)] < knots_[static_cast<std::size_t>(s) + 1])) continue;  // empty span: never located
+            const Eigen::MatrixXd ders = basis_function_derivatives(p, knots_, s, span_middle(s), p);
+            const Eigen::MatrixXd d = ders * control_.middleRows(s - p, p + 1);
+            double factorial = 1.0;
+            for (int k = 0; k <= p; ++k) {
+                if (k > 0) factorial *= k;
+                for (int e = 0; e < dim; ++e) c[static_cast<std::size_t>(((s - p) * (p + 1) + k) * dim + e)] = d(k, e) / factorial;
+            }
+        }
+        taylor_.coefficients = std::move(c);
+    });
+    return taylor_.coefficients.data() + static_cast<std::size_t>((span - degree_) * (degree_ + 1) * dimension());
+}
+
+// Rows 0..order of the jet at t from the Taylor coefficients of `span`: r^(d)(t) = Σ_{k≥d}
+// k!/(k−d)! c_k h^{k−d}, h = t − (the span's middle), by Horner; rows beyond the degree are zero.
+template <class Out>
+void BSplineCurve::taylor_jet(int span, double t, int order, Out& out) const {
+    const int p = degree_, dim = dimension();
+    if (t == knots_[static_cast<std::size_t>(span)] || t == knots_[static_cast<std::size_t>(span) + 1]) {
+        // At a knot (the curve's ends, the joins) A2.3 itself: there the basis functions whose
+        // support ends are exactly zero, so an end reproduces its data point and a control point
+        // changes nothing beyond its support, bit for bit (the Taylor form leaves ε there).
+        if (p + 1 <= kStackOrder && order + 1 <= kStackOrder) {
+            BasisDerivatives ders;
+            basis_function_derivatives_into(p, knots_, span, t, order, ders);
+            out.noalias() = ders * control_.middleRows(span - p, p + 1);
+        } else {
+            out.noalias() = basis_function_derivatives(p, knots_, span, t, order) * control_.middleRows(span - p, p + 1);
+        }
+        return;
+    }
+    const double* c = taylor(span);
+    const double h = t - span_middle(span);
+    out.resize(order + 1, dim);
+    for (int d = 0; d <= order; ++d)
+        for (int e = 0; e < dim; ++e) {
+            if (d > p) {
+                out(d, e) = 0.0;
+                continue;
+            }
+            // falling factorial k!/(k−d)! for k = p, p−1, …, d
+            const auto falling = [d](int k) {
+                double f = 1.0;
+                for (int i = 0; i < d; ++i) f *= k - i;
+                return f;
+            };
+            double v = falling(p) * c[p * dim + e];
+            for (int k = p - 1; k >= d; --k) v = v * h + falling(k) * c[k * dim + e];
+            out(d, e) = v;
+        }
+}
+
 void BSplineCurve::jet_into(double t, int order, JetMatrix& out) const {
     const char* who = "cagd::BSplineCurve::jet_into";
     require_jet_capacity(who, order + 1, dimension());
-    if (degree_ + 1 > kStackOrder) return Curve::jet_into(t, order, out);
     if (!(t >= t_min() && t <= t_max())) fail_input(who, "t = " + full_precision(t) + " outside [" + full_precision(t_min()) + ", " + full_precision(t_max()) + "]");
-    const int span = find_span(t);
-    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kJetCapacity, kStackOrder> ders;
-    switch (degree_) {  // the degrees of the library's splines (B2: 3, S: 4, Hosaka: 3), unrolled
-        case 2: basis_function_derivatives_fixed<2>(knots_, span, t, order, ders); break;
-        case 3: basis_function_derivatives_fixed<3>(knots_, span, t, order, ders); break;
-        case 4: basis_function_derivatives_fixed<4>(knots_, span, t, order, ders); break;
-        case 5: basis_function_derivatives_fixed<5>(knots_, span, t, order, ders); break;
-        default: basis_function_derivatives_a23<kStackOrder>(degree_, knots_, span, t, order, ders);
-    }
-    out.noalias() = ders * control_.middleRows(span - degree_, degree_ + 1);
+    taylor_jet(find_span(t), t, order, out);
 }
 
 void BSplineCurve::derivatives_into(double t, int order, JetMatrix& out) const {
@@ -211,9 +261,9 @@ Eigen::MatrixXd BSplineCurve::jet(double t, int order) const {
     if (!(t >= t_min() && t <= t_max()))
         fail_input("cagd::BSplineCurve::jet", "t = " + full_precision(t) + " outside [" + full_precision(t_min()) + ", " + full_precision(t_max()) + "]");
     if (order < 0) fail_input("cagd::BSplineCurve::jet", "order must be >= 0");
-    const int span = find_span(t);
-    const Eigen::MatrixXd ders = basis_function_derivatives(degree_, knots_, span, t, order);
-    return ders * control_.middleRows(span - degree_, degree_ + 1);
+    Eigen::MatrixXd out;
+    taylor_jet(find_span(t), t, order, out);
+    return out;
 }
 
 Eigen::MatrixXd BSplineCurve::jet_from_left(double t, int order) const {
@@ -224,8 +274,9 @@ Eigen::MatrixXd BSplineCurve::jet_from_left(double t, int order) const {
     const int n = static_cast<int>(control_.rows());
     const auto it = std::lower_bound(knots_.begin() + degree_, knots_.begin() + n + 1, t);
     const int span = static_cast<int>(it - knots_.begin()) - 1;
-    const Eigen::MatrixXd ders = basis_function_derivatives(degree_, knots_, span, t, order);
-    return ders * control_.middleRows(span - degree_, degree_ + 1);
+    Eigen::MatrixXd out;
+    taylor_jet(span, t, order, out);
+    return out;
 }
 
 std::vector<double> BSplineCurve::breakpoints() const {
@@ -256,7 +307,10 @@ double bspline_basis(int p, const std::vector<double>& k, double t, int derivati
     Eigen::MatrixXd control = Eigen::MatrixXd::Zero(2 * p + 1, 1);
     control(p, 0) = 1.0;
     const BSplineCurve curve(p, U, control);
-    return curve.jet(t, derivative)(derivative, 0);
+    // A2.3 at t itself (not the curve's Taylor form): exact zeros at the ends of the support.
+    const int span = curve.find_span(t);
+    const Eigen::MatrixXd ders = basis_function_derivatives(p, U, span, t, derivative);
+    return (ders * control.middleRows(span - p, p + 1))(derivative, 0);
 }
 
 BSplineCurve insert_knot(const BSplineCurve& c, double t) {

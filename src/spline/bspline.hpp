@@ -3,8 +3,13 @@
 //
 //   r(t) = Σ_{i=0}^{n−1} N_{i,p}(t) d_i,   t ∈ [t_p, t_n],
 // with knots t_0 ≤ … ≤ t_{n+p} (n + p + 1 of them) and Cox–de Boor basis N_{i,p}.
-// Evaluation with derivatives: basis-function derivatives by Piegl & Tiller, The NURBS
-// Book, algorithm A2.3, then a (p+1)-term combination: O(p²) per point.
+// Evaluation with derivatives: per non-empty span, the Taylor coefficients at its middle m_s,
+// c_k = r^(k)(m_s)/k! (basis-function derivatives by Piegl & Tiller, The NURBS Book, algorithm
+// A2.3, once per span, on the first evaluation: thread-safe), then Horner in h = t − m_s
+// (|h| ≤ half the span, which keeps the rounding at the ends small): O(p·order) per point. At a
+// knot itself A2.3 directly, as before: the ends reproduce their data points exactly and a
+// control point changes nothing beyond its support, bit for bit. (A2.3 at every point, as before 2026-11-24, cost 3–4 times as much; the
+// two agree to rounding, a few ε of the jet's terms.)
 // Knot insertion: Boehm's algorithm (exact, convex combinations). Degree elevation:
 // the elevated curve lies exactly in the spline space of degree p+1 whose knots are
 // the old ones with every multiplicity raised by one; its control points are found by
@@ -15,6 +20,8 @@
 // Preconditions (InvalidInput otherwise): p ≥ 0; knots non-decreasing and finite;
 // control point count n = knots − p − 1 ≥ p + 1; t_p < t_n; no knot of multiplicity > p+1.
 #include <Eigen/Dense>
+#include <memory>
+#include <mutex>
 #include <vector>
 
 #include "cagd/core/curve.hpp"
@@ -35,7 +42,7 @@ public:
     double t_max() const override { return knots_[control_.rows()]; }
     Eigen::MatrixXd jet(double t, int order) const override;
     Eigen::MatrixXd jet_from_left(double t, int order) const override;
-    // Allocation-free for degree ≤ 7 (the basis work arrays on the stack); higher degrees copy jet().
+    // Allocation-free (after the first evaluation builds the Taylor coefficients).
     void jet_into(double t, int order, JetMatrix& out) const override;
     void derivatives_into(double t, int order, JetMatrix& out) const override;
     std::vector<double> breakpoints() const override;
@@ -44,9 +51,29 @@ public:
     int find_span(double t) const;
 
 private:
+    // Taylor coefficients of every span, built once on first use (a copy builds its own).
+    struct TaylorCache {
+        std::unique_ptr<std::once_flag> once = std::make_unique<std::once_flag>();
+        std::vector<double> coefficients;  // span s − p: (p + 1) × dimension, c_0 … c_p, row-major
+        TaylorCache() = default;
+        TaylorCache(const TaylorCache&) : once(std::make_unique<std::once_flag>()) {}
+        TaylorCache& operator=(const TaylorCache&) {
+            once = std::make_unique<std::once_flag>();
+            coefficients.clear();
+            return *this;
+        }
+        TaylorCache(TaylorCache&&) noexcept = default;
+        TaylorCache& operator=(TaylorCache&&) noexcept = default;
+    };
+    const double* taylor(int span) const;  // c_0 … c_p of `span`
+    double span_middle(int span) const;
+    template <class Out>
+    void taylor_jet(int span, double t, int order, Out& out) const;
+
     int degree_;
     std::vector<double> knots_;
     Eigen::MatrixXd control_;
+    mutable TaylorCache taylor_;
 };
 
 // Derivatives 0..order of the p+1 basis functions non-zero on span s at t:
