@@ -88,11 +88,12 @@ PseudoSpline pseudo_spline(const PointList& points, const SegmentOracle& oracle,
     const Eigen::Index spans = closed ? np : np - 1;
     const auto next = [&](Eigen::Index i) { return (i + 1) % np; };
 
+    // (Chords and tangents are recomputed where needed rather than stored: at 10^6 points the
+    // fresh memory of every array costs page faults, a quarter of the construction's time.)
+    const auto chord = [&](Eigen::Index i) -> Eigen::Vector2d { return (points.row(next(i)) - points.row(i)).transpose(); };
     std::vector<double> phi(static_cast<std::size_t>(spans)), len(static_cast<std::size_t>(spans));
-    std::vector<Eigen::Vector2d> chord(static_cast<std::size_t>(spans));
     for (Eigen::Index i = 0; i < spans; ++i) {
-        const Eigen::Vector2d c = (points.row(next(i)) - points.row(i)).transpose();
-        chord[static_cast<std::size_t>(i)] = c;
+        const Eigen::Vector2d c = chord(i);
         phi[static_cast<std::size_t>(i)] = std::atan2(c.y(), c.x());
         len[static_cast<std::size_t>(i)] = c.norm();
     }
@@ -126,7 +127,7 @@ PseudoSpline pseudo_spline(const PointList& points, const SegmentOracle& oracle,
         double a = 0.0;
         if (std::abs(tau) > 0.0) {
             if (mode == TangentOptimization::none) {
-                const Eigen::Vector2d d = chord[in] + chord[out];  // P_{i+1} − P_{i−1}
+                const Eigen::Vector2d d = chord(static_cast<Eigen::Index>(in)) + chord(static_cast<Eigen::Index>(out));  // P_{i+1} − P_{i−1}
                 a = wrap_angle(std::atan2(d.y(), d.x()) - phi[out]);
             } else {
                 const auto w = [&](double alpha) { return len[in] * J(alpha + tau) + len[out] * J(alpha); };
@@ -147,14 +148,14 @@ PseudoSpline pseudo_spline(const PointList& points, const SegmentOracle& oracle,
         }
     }
 
-    // Unit tangent at every point, once: direction φ_i + α_i (the last point of an open curve:
-    // φ_{n−1} + α_n, α_n being relative to the incoming chord).
-    std::vector<Eigen::Vector2d> tangent(static_cast<std::size_t>(np));
-    for (Eigen::Index i = 0; i < np; ++i) {
-        const std::size_t k = static_cast<std::size_t>(i);
-        const double psi = phi[static_cast<std::size_t>(std::min<Eigen::Index>(i, spans - 1))] + ps.alpha[k];
-        tangent[k] = Eigen::Vector2d(std::cos(psi), std::sin(psi));
-    }
+    // Unit tangent at a point: direction φ_i + α_i (the last point of an open curve: φ_{n−1} + α_n,
+    // α_n being relative to the incoming chord). The span loop carries each from the span that
+    // ends at a point to the one that starts there.
+    const auto tangent = [&](Eigen::Index i) {
+        const double psi = phi[static_cast<std::size_t>(std::min<Eigen::Index>(i, spans - 1))] + ps.alpha[static_cast<std::size_t>(i)];
+        return Eigen::Vector2d(std::cos(psi), std::sin(psi));
+    };
+    Eigen::Vector2d start_tangent = tangent(0);
     // Spans (eq 9, 10).
     Eigen::MatrixXd nodes(spans + 1, 2), d0(spans, 2), d1(spans, 2);
     for (Eigen::Index i = 0; i < spans; ++i) {
@@ -173,11 +174,13 @@ PseudoSpline pseudo_spline(const PointList& points, const SegmentOracle& oracle,
             }
         }
         const double l = len[k];
-        nodes.row(i) = points.row(i);
-        d0.row(i) = (l * s.value.r0) * tangent[k].transpose();
-        d1.row(i) = (l * s.value.r1) * tangent[static_cast<std::size_t>(next(i))].transpose();
+        const Eigen::Vector2d end_tangent = tangent(next(i));
+        d0.row(i) = (l * s.value.r0) * start_tangent.transpose();
+        d1.row(i) = (l * s.value.r1) * end_tangent.transpose();
+        start_tangent = end_tangent;
         ps.spans.push_back(s);
     }
+    nodes.topRows(spans) = points.topRows(spans);
     nodes.row(spans) = points.row(closed ? 0 : spans);
     ps.curve = spline::PiecewiseHermiteCurve(std::move(nodes), std::move(d0), std::move(d1));
     ps.chord_angle = std::move(phi);

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <utility>
 
 #include "cagd/fairness/pseudo_spline.hpp"
 
@@ -25,7 +26,8 @@ double minimise_w(const W& w, double lo, double hi, TangentOptimization mode, Ta
     if (hi - lo <= 0.0) return lo;
     if (mode == TangentOptimization::exact) {
         std::uintmax_t iters = 200;
-        const auto [x, wx] = boost::math::tools::brent_find_minima(w, lo, hi, std::numeric_limits<double>::digits / 2, iters);
+        const std::pair<double, double> found = boost::math::tools::brent_find_minima(w, lo, hi, std::numeric_limits<double>::digits / 2, iters);
+        const double x = found.first, wx = found.second;  // (not a structured binding: the lambdas below capture them)
         // J(θ) read linearly between a table's nodes makes w piecewise linear: where both of its
         // angles stay in one cell over a stretch, w is flat there and Brent stops anywhere in it,
         // as rounding decides (on a helix with 32 points per turn, 4.5° off the bisector). Take the
