@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -96,27 +97,32 @@ int run_compare(const CompareArgs& a) {
     // grows with the samples: 10^5 points at 4·10^4 samples per method take gnuplot 35 s).
     const int spans = static_cast<int>(points.rows()) - (a.closed ? 0 : 1);
     const compare::FigureData fig = compare::comparison_figure_data(results, points, compare::figure_sampling(std::max(spans, 1), 10000));
-    {
-        CsvOutput w(dir + "points.csv", dimension == 2 ? std::vector<std::string>{"x", "y"} : std::vector<std::string>{"x", "y", "z"});
-        for (Eigen::Index i = 0; i < points.rows(); ++i) {
-            const Eigen::RowVectorXd p = points.row(i);
-            w.row(std::vector<double>(p.data(), p.data() + p.size()), 17);
-        }
-        w.commit();
-    }
-    if (dimension == 2) {
-        write_rows(dir + "curves.csv", {"index", "x", "y"}, fig.curves);
-        write_rows(dir + "curvature.csv", {"index", "s", "kappa"}, fig.profiles);
-    } else {
-        write_rows(dir + "curves.csv", {"index", "x", "y", "z"}, fig.curves);
-        write_rows(dir + "curvature.csv", {"index", "s", "kappa", "tau"}, fig.profiles);
-    }
-    write_rows(dir + "combs.csv", {"index", "x", "y", "tip_x", "tip_y"}, fig.combs);
-    {
-        CsvOutput w(dir + "methods.csv", compare::figure_methods_header());
-        for (const auto& row : compare::figure_methods_rows(results, fig)) w.row_text(row);
-        w.commit();
-    }
+    // The figure files are independent: written in parallel (at 10^5 points, 0.9 s one after another).
+    const std::vector<std::function<void()>> writes = {
+        [&] {
+            write_rows(dir + "combs.csv", {"index", "x", "y", "tip_x", "tip_y"}, fig.combs);
+        },
+        [&] {
+            write_rows(dir + "curvature.csv", dimension == 2 ? std::vector<std::string>{"index", "s", "kappa"} : std::vector<std::string>{"index", "s", "kappa", "tau"},
+                       fig.profiles);
+        },
+        [&] {
+            write_rows(dir + "curves.csv", dimension == 2 ? std::vector<std::string>{"index", "x", "y"} : std::vector<std::string>{"index", "x", "y", "z"}, fig.curves);
+        },
+        [&] {
+            CsvOutput w(dir + "points.csv", dimension == 2 ? std::vector<std::string>{"x", "y"} : std::vector<std::string>{"x", "y", "z"});
+            for (Eigen::Index i = 0; i < points.rows(); ++i) {
+                const Eigen::RowVectorXd p = points.row(i);
+                w.row(std::vector<double>(p.data(), p.data() + p.size()), 17);
+            }
+            w.commit();
+        },
+        [&] {
+            CsvOutput w(dir + "methods.csv", compare::figure_methods_header());
+            for (const auto& row : compare::figure_methods_rows(results, fig)) w.row_text(row);
+            w.commit();
+        }};
+    parallel_for(static_cast<long>(writes.size()), hardware_threads(), [&](long k) { writes[static_cast<std::size_t>(k)](); });
     {
         OutputFile f(dir + "compare_panels.gp");
         f.stream() << kComparePanelsScript;

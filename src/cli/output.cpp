@@ -1,5 +1,7 @@
 #include "cagd/cli/output.hpp"
 
+#include <charconv>
+
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -123,10 +125,25 @@ void CsvOutput::write_header() {
 }
 
 void CsvOutput::row(const std::vector<double>& values, int significant) {
-    std::vector<std::string> fields;
-    for (std::size_t i = 0; i < values.size(); ++i)
-        fields.push_back(finite_field(values[i], significant, (i < header_.size() ? header_[i] : "a column") + " of row " + std::to_string(rows_ + 1)));
-    row_text(fields);
+    for (std::size_t i = 0; i < values.size(); ++i)  // the label is built only for the error
+        if (!std::isfinite(values[i])) finite_field(values[i], significant, (i < header_.size() ? header_[i] : "a column") + " of row " + std::to_string(rows_ + 1));
+    if (values.size() != header_.size())
+        throw std::logic_error("cagd::cli::CsvOutput: a row of " + std::to_string(values.size()) + " fields under " + std::to_string(header_.size()));
+    // format_number's text ("%.*g", 0 as "0"), by std::to_chars, which the standard defines as printf's
+    // conversion: the same bytes without a string per field (a 10^5-point compare writes 2·10^6 numbers).
+    std::ostream& out = file_->stream();
+    char buf[64];
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        if (i) out.put(',');
+        if (values[i] == 0.0) {
+            out.put('0');
+            continue;
+        }
+        const std::to_chars_result r = std::to_chars(buf, buf + sizeof buf, values[i], std::chars_format::general, significant);
+        out.write(buf, r.ptr - buf);
+    }
+    out.put('\n');
+    ++rows_;
 }
 
 void CsvOutput::row_text(const std::vector<std::string>& fields) {
