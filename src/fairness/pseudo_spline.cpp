@@ -6,6 +6,7 @@
 #include <limits>
 #include <numbers>
 #include <string>
+#include <typeinfo>
 
 #include "cagd/core/errors.hpp"
 #include "cagd/fairness/detail/tangent_minimisation.hpp"
@@ -114,9 +115,13 @@ PseudoSpline pseudo_spline(const PointList& points, const SegmentOracle& oracle,
                     {},
                     0};
     ps.spans.reserve(static_cast<std::size_t>(spans));
+    // The paper's tables (TableOracle itself, not a subclass) are called without the virtual call:
+    // eq (12) reads J(θ) six times per point in the approximate mode.
+    const TableOracle* table = typeid(oracle) == typeid(TableOracle) ? static_cast<const TableOracle*>(&oracle) : nullptr;
     const auto J = [&](double theta) {
         ++ps.oracle_calls;
-        return oracle.angle_energy(wrap_angle(theta));
+        const double t = wrap_angle(theta);
+        return table ? table->TableOracle::angle_energy(t) : oracle.angle_energy(t);
     };
 
     // Interior tangent directions (eq 12).
