@@ -108,59 +108,6 @@ constexpr int kStackOrder = 8;  // degrees 0..7 keep the work arrays on the stac
 
 }  // namespace
 
-// A2.3 for a degree P known at compile time: the same operations in the same order as the
-// general version (so the same bits), on fixed-size work arrays whose loops the compiler unrolls.
-// Row k of `ders` is the k-th derivative of the P + 1 basis functions that are non-zero on `span`.
-template <int P, class Ders>
-void basis_function_derivatives_fixed(const std::vector<double>& U, int span, double u, int order, Ders& ders) {
-    const int nd = std::min(order, P);
-    double ndu[P + 1][P + 1], a[2][P + 1], left[P + 1], right[P + 1];
-    ndu[0][0] = 1.0;
-    for (int j = 1; j <= P; ++j) {
-        left[j] = u - U[span + 1 - j];
-        right[j] = U[span + j] - u;
-        double saved = 0.0;
-        for (int r = 0; r < j; ++r) {
-            ndu[j][r] = right[r + 1] + left[j - r];
-            const double temp = ndu[r][j - 1] / ndu[j][r];
-            ndu[r][j] = saved + right[r + 1] * temp;
-            saved = left[j - r] * temp;
-        }
-        ndu[j][j] = saved;
-    }
-    ders.setZero(order + 1, P + 1);
-    for (int j = 0; j <= P; ++j) ders(0, j) = ndu[j][P];
-    for (int r = 0; r <= P; ++r) {
-        int s1 = 0, s2 = 1;
-        a[0][0] = 1.0;
-        for (int k = 1; k <= nd; ++k) {
-            double d = 0.0;
-            const int rk = r - k, pk = P - k;
-            if (r >= k) {
-                a[s2][0] = a[s1][0] / ndu[pk + 1][rk];
-                d = a[s2][0] * ndu[rk][pk];
-            }
-            const int j1 = (rk >= -1) ? 1 : -rk;
-            const int j2 = (r - 1 <= pk) ? k - 1 : P - r;
-            for (int j = j1; j <= j2; ++j) {
-                a[s2][j] = (a[s1][j] - a[s1][j - 1]) / ndu[pk + 1][rk + j];
-                d += a[s2][j] * ndu[rk + j][pk];
-            }
-            if (r <= pk) {
-                a[s2][k] = -a[s1][k - 1] / ndu[pk + 1][r];
-                d += a[s2][k] * ndu[r][pk];
-            }
-            ders(k, r) = d;
-            std::swap(s1, s2);
-        }
-    }
-    double factor = P;
-    for (int k = 1; k <= nd; ++k) {
-        ders.row(k) *= factor;
-        factor *= (P - k);
-    }
-}
-
 Eigen::MatrixXd basis_function_derivatives(int p, const std::vector<double>& U, int span, double u, int order) {
     Eigen::MatrixXd ders;
     if (p + 1 <= kStackOrder)
@@ -173,13 +120,7 @@ Eigen::MatrixXd basis_function_derivatives(int p, const std::vector<double>& U, 
 void basis_function_derivatives_into(int p, const std::vector<double>& U, int span, double u, int order, BasisDerivatives& ders) {
     if (p < 0 || p + 1 > kStackOrder || order < 0 || order + 1 > kStackOrder)
         fail_input("cagd::basis_function_derivatives_into", "needs degree 0..7 and order 0..7, got " + std::to_string(p) + " and " + std::to_string(order));
-    switch (p) {
-        case 2: basis_function_derivatives_fixed<2>(U, span, u, order, ders); break;
-        case 3: basis_function_derivatives_fixed<3>(U, span, u, order, ders); break;
-        case 4: basis_function_derivatives_fixed<4>(U, span, u, order, ders); break;
-        case 5: basis_function_derivatives_fixed<5>(U, span, u, order, ders); break;
-        default: basis_function_derivatives_a23<kStackOrder>(p, U, span, u, order, ders);
-    }
+    basis_function_derivatives_a23<kStackOrder>(p, U, span, u, order, ders);
 }
 
 double BSplineCurve::span_middle(int span) const { return 0.5 * (knots_[static_cast<std::size_t>(span)] + knots_[static_cast<std::size_t>(span) + 1]); }
