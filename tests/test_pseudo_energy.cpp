@@ -216,6 +216,35 @@ TEST(RombergVector, SharedEvaluationsConvergePerComponent) {
 
 // The θ-table cache (fig8_fig9): a load equals the build bit for bit, and a file of another grid
 // is rebuilt, not misread.
+// build() with a scan source reads the 2° scan off a fast table's nodes, so the table must hold
+// it: a fast table on an endpoints grid of 180·k + 1 nodes. Anything else is refused, by name.
+// (fig8_fig9 validates the table-scan result against fresh scans on the 361-node table.)
+TEST(AngleMinimumTable, ScanSourceMustHoldTheTwoDegreeScan) {
+    const PseudoEnergyTable small = PseudoEnergyTable::build({5, NodePlacement::endpoints}, TableMethod::fast, 1);
+    try {
+        (void)AngleMinimumTable::build({6, NodePlacement::periodic}, small, 1);
+        ADD_FAILURE() << "a 5-node table cannot hold the 2° scan";
+    } catch (const InvalidInput& e) {
+        EXPECT_NE(std::string(e.what()).find("grid 5 endpoints fast"), std::string::npos) << e.what();
+    }
+}
+
+// The refinement alone, given the scan that minimize_over_end_angle makes itself, is that function.
+TEST(AngleMinimumTable, RefinementOfAGivenScanIsTheEndAngleMinimum) {
+    const double theta = 0.7;
+    const auto j_of = [theta](double theta1) { return end_angle_energy(minimize_pseudo_energy(theta, theta1)); };
+    std::vector<double> t, v;
+    for (int i = 0; i <= 180; ++i) {
+        t.push_back(-std::numbers::pi + 2 * std::numbers::pi * i / 180);
+        v.push_back(j_of(t.back()));
+    }
+    const AngleMinimum a = refine_end_angle_scan(theta, t, v, j_of), b = minimize_over_end_angle(theta);
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(a.pseudo_energy), std::bit_cast<std::uint64_t>(b.pseudo_energy));
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(a.theta1), std::bit_cast<std::uint64_t>(b.theta1));
+    EXPECT_GT(a.pseudo_energy, 0.0);
+    EXPECT_THROW(refine_end_angle_scan(theta, {0.0}, {1.0}, j_of), InvalidInput);
+}
+
 TEST(AngleMinimumTable, CacheRoundTripsExactly) {
     const std::string path = ::testing::TempDir() + "/angle6_cache_test.txt";
     std::remove(path.c_str());

@@ -173,13 +173,14 @@ PseudoEnergyMinimum measure_segment(double theta0, double theta1, double r0, dou
     return m;
 }
 
+double end_angle_energy(const PseudoEnergyMinimum& m) {
+    if (is_undefined_node(m.theta0, m.theta1)) return m.pseudo_energy;  // 0 at (0, 0), +∞ elsewhere
+    return m.outcome.ok() ? m.pseudo_energy : kInf;
+}
+
 AngleMinimum minimize_over_end_angle(double theta, double scan_step) {
     require_angles("minimize_over_end_angle", theta, 0.0);
-    const auto j_of = [&](double theta1) {
-        const PseudoEnergyMinimum m = minimize_pseudo_energy(theta, theta1);
-        if (is_undefined_node(theta, theta1)) return m.pseudo_energy;  // 0 at (0, 0), +∞ elsewhere
-        return m.outcome.ok() ? m.pseudo_energy : kInf;
-    };
+    const auto j_of = [&](double theta1) { return end_angle_energy(minimize_pseudo_energy(theta, theta1)); };
     return minimize_over_end_angle(theta, j_of, scan_step);
 }
 
@@ -192,6 +193,11 @@ AngleMinimum minimize_over_end_angle(double theta, const std::function<double(do
         t[static_cast<std::size_t>(i)] = -std::numbers::pi + 2 * std::numbers::pi * i / n;
         v[static_cast<std::size_t>(i)] = j_of(t[static_cast<std::size_t>(i)]);
     }
+    return refine_end_angle_scan(theta, t, v, j_of);
+}
+
+AngleMinimum refine_end_angle_scan(double theta, const std::vector<double>& t, const std::vector<double>& v, const std::function<double(double)>& j_of) {
+    if (t.size() < 2 || t.size() != v.size()) fail_input("cagd::fairness::refine_end_angle_scan", "needs >= 2 scan angles with one J each");
     const auto best = static_cast<std::size_t>(std::min_element(v.begin(), v.end()) - v.begin());
     AngleMinimum out;
     out.theta = theta;

@@ -102,5 +102,12 @@ AngleMinimum minimize_over_end_angle(double theta, double scan_step = std::numbe
 // The same scan and Brent refinement on a given J(θ, ·) (e.g. an interpolated table); j_of returns
 // +∞ where J is undefined.
 AngleMinimum minimize_over_end_angle(double theta, const std::function<double(double)>& j_of, double scan_step);
+// The second half of both: given J at the scan angles t (increasing, J = +∞ where undefined), Brent's
+// method on j_of over the bracket around the smallest; the scan's best point is kept when Brent's
+// is not lower. Lets a caller take the scan from values it already has (a table's nodes).
+AngleMinimum refine_end_angle_scan(double theta, const std::vector<double>& t, const std::vector<double>& v, const std::function<double(double)>& j_of);
+// The J that the end-angle scan uses for one fast minimum: its J, +∞ where it failed, and at the
+// undefined nodes 0 (straight, θ = θ1 = 0) or +∞.
+double end_angle_energy(const PseudoEnergyMinimum& m);
 
 }  // namespace cagd::fairness

@@ -9,9 +9,11 @@
 #include <fstream>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <sstream>
 #include <thread>
 
+#include "cagd/core/file_lock.hpp"
 #include "cagd/core/parallel.hpp"
 
 namespace cagd::fairness {
@@ -239,12 +241,16 @@ PseudoEnergyTable PseudoEnergyTable::load_or_build(const std::string& path, cons
     t.grid_ = grid;
     t.method_ = method;
     t.nodes_ = grid.nodes();
-    std::ifstream in(path);
-    std::string line;
-    if (in && std::getline(in, line) && line == t.header_line() && read_node_rows(in, grid.n, t.values_)) {
+    const auto load_cached = [&] {
+        std::ifstream in(path);
+        std::string line;
+        if (!(in && std::getline(in, line) && line == t.header_line() && read_node_rows(in, grid.n, t.values_))) return false;
         t.pack();
-        return t;
-    }
+        return true;
+    };
+    if (load_cached()) return t;
+    const FileLock lock(path + ".lock");  // one builder; the others wait and load its table
+    if (load_cached()) return t;
     t = build(grid, method, threads, method == TableMethod::fast);
     t.save(path);
     return t;
@@ -397,20 +403,61 @@ TableValue PseudoEnergyTable::lookup(double theta0, double theta1, const TableRe
     return out;
 }
 
-AngleMinimumTable AngleMinimumTable::build(const AngleGrid& grid, int threads) {
+AngleMinimumTable AngleMinimumTable::build(const AngleGrid& grid, int threads) { return build(grid, nullptr, threads); }
+
+AngleMinimumTable AngleMinimumTable::build(const AngleGrid& grid, const PseudoEnergyTable& scan_source, int threads) { return build(grid, &scan_source, threads); }
+
+AngleMinimumTable AngleMinimumTable::build(const AngleGrid& grid, const PseudoEnergyTable* scan_source, int threads) {
+    // The scan of minimize_over_end_angle: 2° steps from −π to π, 181 angles.
+    constexpr int kScanSteps = 180;
+    int stride = 0;
+    if (scan_source) {
+        const AngleGrid& g = scan_source->grid();
+        if (scan_source->method() != TableMethod::fast || g.placement != NodePlacement::endpoints || (g.n - 1) % kScanSteps != 0)
+            fail_input("cagd::fairness::AngleMinimumTable::build",
+                       "the scan source must be a fast table on an endpoints grid of 180·k + 1 nodes (its nodes then hold the 2° scan), got grid " + std::to_string(g.n) + " " +
+                           to_string(g.placement) + " " + to_string(scan_source->method()));
+        stride = (g.n - 1) / kScanSteps;
+    }
     AngleMinimumTable t;
     t.grid_ = grid;
     t.nodes_ = grid.nodes();
     t.values_.assign(t.nodes_.size(), AngleMinimum{});
     parallel_for(static_cast<long>(t.nodes_.size()), threads,
-                 [&](long k) { t.values_[static_cast<std::size_t>(k)] = minimize_over_end_angle(t.nodes_[static_cast<std::size_t>(k)]); }, {});
+                 [&](long k) {
+                     const double theta = t.nodes_[static_cast<std::size_t>(k)];
+                     AngleMinimum& out = t.values_[static_cast<std::size_t>(k)];
+                     const std::vector<double>* source_nodes = scan_source ? &scan_source->nodes() : nullptr;
+                     const auto row = source_nodes ? std::find(source_nodes->begin(), source_nodes->end(), theta) : std::vector<double>::const_iterator{};
+                     if (!source_nodes || row == source_nodes->end()) {
+                         out = minimize_over_end_angle(theta);
+                         return;
+                     }
+                     // θ is a node of the source: its scan is the source's row (θ, every stride-th θ1).
+                     const int i = static_cast<int>(row - source_nodes->begin());
+                     std::vector<double> ts, vs;
+                     for (int j = 0; j < scan_source->grid().n; j += stride) {
+                         ts.push_back((*source_nodes)[static_cast<std::size_t>(j)]);
+                         vs.push_back(end_angle_energy(scan_source->node(i, j)));
+                     }
+                     out = refine_end_angle_scan(theta, ts, vs, [theta](double theta1) { return end_angle_energy(minimize_pseudo_energy(theta, theta1)); });
+                 },
+                 {});
     return t;
 }
 
-AngleMinimumTable AngleMinimumTable::load_or_build(const std::string& path, const AngleGrid& grid, int threads) {
+AngleMinimumTable AngleMinimumTable::load_or_build(const std::string& path, const AngleGrid& grid, int threads) { return load_or_build(path, grid, nullptr, threads); }
+
+AngleMinimumTable AngleMinimumTable::load_or_build(const std::string& path, const AngleGrid& grid, const PseudoEnergyTable& scan_source, int threads) {
+    return load_or_build(path, grid, &scan_source, threads);
+}
+
+AngleMinimumTable AngleMinimumTable::load_or_build(const std::string& path, const AngleGrid& grid, const PseudoEnergyTable* scan_source, int threads) {
     std::ostringstream header;
     header << "# cagd pseudo_energy angle-minimum table format 1 grid " << grid.n << " placement " << to_string(grid.placement);
-    {
+    std::optional<FileLock> lock;
+    for (int attempt = 0; attempt < 2; ++attempt) {
+        if (attempt == 1) lock.emplace(path + ".lock");  // one builder; the others wait and load its table
         std::ifstream in(path);
         std::string line;
         if (in && std::getline(in, line) && line == header.str() && std::getline(in, line)) {
@@ -436,7 +483,7 @@ AngleMinimumTable AngleMinimumTable::load_or_build(const std::string& path, cons
             if (t.values_.size() == t.nodes_.size()) return t;
         }
     }
-    const AngleMinimumTable t = build(grid, threads);
+    const AngleMinimumTable t = build(grid, scan_source, threads);
     const std::string tmp = path + ".tmp." + std::to_string(::getpid());
     {
         std::ofstream out(tmp);

@@ -128,12 +128,18 @@ private:
 
 // J(θ) and θ1(θ) of eq (11) at the nodes of a grid, and their linear interpolation. Two builds:
 //   build            exact minimisation over θ1 at each node (fast minimiser, scan step 2°, Brent);
+//                    given a fast table on 1° nodes (endpoints placement, 361 nodes, or any
+//                    180·k + 1), the 2° scan at each of its nodes θ is read from the table instead
+//                    of recomputed (the same minimiser at the same angles: 181 of the ~190
+//                    minimisations per node), and only Brent's refinement minimises afresh;
 //   from_energy_table the paper's construction (section 4.1): at each node Θ_i, minimise the
 //                    *interpolated* J(Θ_i, θ1) of the 2-D table over θ1 (scan step 0.25°, Brent),
 //                    so J(θ) inherits the table's interpolation error. Cheap (no quadrature).
 class AngleMinimumTable {
 public:
     static AngleMinimumTable build(const AngleGrid& grid, int threads = 2);
+    // Throws InvalidInput unless scan_source is a fast table on an endpoints grid of 180·k + 1 nodes.
+    static AngleMinimumTable build(const AngleGrid& grid, const PseudoEnergyTable& scan_source, int threads = 2);
     static AngleMinimumTable from_energy_table(const PseudoEnergyTable& table);
     // The same with J(Θ_i, θ1) read by `reading` (its cell rule and runner-up choice; J itself is
     // interpolated even when reading.radii asks for r0, r1).
@@ -141,6 +147,7 @@ public:
     // build(), kept in `path`: loaded when the file holds this grid's table (values at %.17g, so a
     // load equals a build bit for bit), otherwise built and saved (temporary file, then rename).
     static AngleMinimumTable load_or_build(const std::string& path, const AngleGrid& grid, int threads = 2);
+    static AngleMinimumTable load_or_build(const std::string& path, const AngleGrid& grid, const PseudoEnergyTable& scan_source, int threads = 2);
     const std::vector<double>& nodes() const { return nodes_; }
     const std::vector<AngleMinimum>& values() const { return values_; }
     // Linear interpolation; throws InvalidInput outside [−π, π]. Returns {J(θ), θ1(θ)}.
@@ -151,6 +158,8 @@ private:
     AngleGrid grid_;
     std::vector<double> nodes_;
     std::vector<AngleMinimum> values_;
+    static AngleMinimumTable build(const AngleGrid& grid, const PseudoEnergyTable* scan_source, int threads);
+    static AngleMinimumTable load_or_build(const std::string& path, const AngleGrid& grid, const PseudoEnergyTable* scan_source, int threads);
 };
 
 }  // namespace cagd::fairness

@@ -7,9 +7,11 @@
 #include <cstdio>
 #include <fstream>
 #include <numbers>
+#include <optional>
 #include <sstream>
 
 #include "cagd/core/errors.hpp"
+#include "cagd/core/file_lock.hpp"
 #include "cagd/core/parallel.hpp"
 
 namespace cagd::fairness {
@@ -167,11 +169,15 @@ SpacePseudoEnergyTable SpacePseudoEnergyTable::load(const std::string& path) {
 }
 
 SpacePseudoEnergyTable SpacePseudoEnergyTable::load_or_build(const std::string& path, const SpaceAngleGrid& grid, TableMethod method, int threads) {
-    try {
-        SpacePseudoEnergyTable t = load(path);
-        if (t.grid_.n_theta == grid.n_theta && t.grid_.n_phi == grid.n_phi && t.method_ == method) return t;
-    } catch (const InvalidInput&) {
-        // missing or foreign: build
+    std::optional<FileLock> lock;
+    for (int attempt = 0; attempt < 2; ++attempt) {
+        if (attempt == 1) lock.emplace(path + ".lock");  // one builder; the others wait and load its table
+        try {
+            SpacePseudoEnergyTable t = load(path);
+            if (t.grid_.n_theta == grid.n_theta && t.grid_.n_phi == grid.n_phi && t.method_ == method) return t;
+        } catch (const InvalidInput&) {
+            // missing or foreign: build
+        }
     }
     SpacePseudoEnergyTable t = build(grid, method, threads);
     t.save(path);
