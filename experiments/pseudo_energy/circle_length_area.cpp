@@ -225,7 +225,7 @@ int main(int argc, char** argv) {
         const double L_tab = tb.length_from_tables(), S_tab = tb.area_from_tables();
         // The end of w's flat stretch, if any (every point of it minimises the table's w).
         const double tie_half_width = std::abs(pseudo_spline(p, oracle, TangentOptimization::exact, true, TangentTie{0.0}).alpha[0] - centre) * 180 / std::numbers::pi;
-        if (tie_half_width > 0.01) ties += " " + std::to_string(n) + " (±" + format_number(tie_half_width, 3) + "°)";
+        if (tie_half_width > 0.01) ties.append(" ").append(std::to_string(n)).append(" (±").append(format_number(tie_half_width, 3)).append("°)");
         const std::string table5 = "table5." + id, table6 = "table6." + id;  // table5.n<n>.*, table6.n<n>.*
         // Ours: the exact value; the alternatives: the paper's table procedure under every reading.
         const std::string exact_label = "exact minimisers (no table)";

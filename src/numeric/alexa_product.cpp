@@ -1,6 +1,7 @@
 #include "cagd/numeric/alexa_product.hpp"
 
 #include <cmath>
+#include <complex>
 #include <string>
 #include <unsupported/Eigen/MatrixFunctions>
 
@@ -10,13 +11,18 @@ namespace cagd::numeric {
 
 namespace {
 
+// The eigenvalues of the check from the complex Schur form, Eigen::ComplexSchur<MatrixXcd>, the one
+// the logarithm's Schur–Parlett method instantiates anyway (EigenSolver would add about 9 s of
+// compile time).
+Eigen::VectorXcd eigenvalues(const Eigen::MatrixXd& m) { return Eigen::ComplexSchur<Eigen::MatrixXcd>(m.cast<std::complex<double>>(), false).matrixT().diagonal(); }
+
 void check_pair(const char* who, const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
     if (a.rows() != a.cols() || b.rows() != b.cols() || a.rows() != b.rows() || a.rows() == 0)
         fail_input(who, "needs two square matrices of one size, got " + std::to_string(a.rows()) + "x" + std::to_string(a.cols()) + " and " + std::to_string(b.rows()) + "x" +
                             std::to_string(b.cols()));
     if (!a.allFinite() || !b.allFinite()) fail_input(who, "matrix entries must be finite");
     for (const Eigen::MatrixXd* m : {&a, &b}) {
-        const Eigen::VectorXcd ev = m->eigenvalues();
+        const Eigen::VectorXcd ev = eigenvalues(*m);
         for (Eigen::Index i = 0; i < ev.size(); ++i)
             if (ev(i).real() <= 0.0 && std::abs(ev(i).imag()) <= 1e-12 * (1.0 + std::abs(ev(i))))
                 fail_input(who, "eigenvalue " + full_precision(ev(i).real()) + (ev(i).imag() == 0.0 ? "" : " + " + full_precision(ev(i).imag()) + "i") +
