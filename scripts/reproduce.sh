@@ -6,13 +6,30 @@ build=${1:-build}
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 status=0
+# Figures: scripts/plot/<paper>_<figure>.gp renders what an experiment wrote for its figure.
+render_one() {
+  local name paper
+  name=$(basename "$1" .gp)
+  paper=${name%%_fig*}
+  echo "$name" >> "$rendered"
+  gnuplot -e "datadir='results/$paper'" "$1" || { echo "reproduce: gnuplot failed on $1" >&2; return 1; }
+}
 # The experiments: the 36-node reference table first (three others read its cache), the timing
-# experiment last and alone (no other load distorts its ratios), the rest $JOBS at a time.
+# experiment last and alone (no other load distorts its ratios), the rest $JOBS at a time. Each
+# experiment's figures (the ones its .meta file names) are rendered by its worker as soon as it has
+# finished, while the other workers go on with experiments.
 run_one() {
   "$build/experiments/$1" --root "$root" || { echo "reproduce: experiment $1 reported failed checks" >&2; return 1; }
+  local paper=${1%%__*} artifact=${1#*__} figure ok=0
+  for figure in $(sed -n 's/^figure: \([^|]*\)|.*/\1/p' "results/$paper/$artifact.meta"); do
+    [ -f "scripts/plot/${paper}_$figure.gp" ] && { render_one "scripts/plot/${paper}_$figure.gp" || ok=1; }
+  done
+  return $ok
 }
-export -f run_one
-export build root
+rendered=$(mktemp)
+trap 'rm -f "$rendered"' EXIT
+export -f run_one render_one
+export build root rendered
 first=pseudo_energy__minimum_table
 last=pseudo_energy__table4_timing
 run_one "$first" || status=1
@@ -22,16 +39,10 @@ slow="pseudo_energy__circle_length_area pseudo_energy__fine_grid pseudo_energy__
   grep -v -x -e "$first" -e "$last" -e '' $(for e in $slow; do printf -- '-e %s ' "$e"; done) "$build/experiments.txt"; } |
   xargs -P "${JOBS:-2}" -I{} bash -c 'run_one "$1"' _ {} || status=1
 run_one "$last" || status=1
-# Figures, $JOBS gnuplot processes at a time (each script writes its own files).
-render_one() {
-  local name paper
-  name=$(basename "$1" .gp)
-  paper=${name%%_fig*}
-  gnuplot -e "datadir='results/$paper'" "$1" || { echo "reproduce: gnuplot failed on $1" >&2; return 1; }
-}
-export -f render_one
-# style.gp and compare_panels.gp are loaded by the figure scripts, not figures themselves.
-ls scripts/plot/*.gp | grep -v -e '/style\.gp$' -e '/compare_panels\.gp$' | xargs -P "${JOBS:-2}" -I{} bash -c 'render_one "$1"' _ {} || status=1
+# Any figure script no experiment named (style.gp and compare_panels.gp are loaded by the figure
+# scripts, not figures themselves), $JOBS gnuplot processes at a time.
+ls scripts/plot/*.gp | grep -v -e '/style\.gp$' -e '/compare_panels\.gp$' | grep -v -x -F -f <(sed 's|.*|scripts/plot/&.gp|' "$rendered") |
+  xargs -r -P "${JOBS:-2}" -I{} bash -c 'render_one "$1"' _ {} || status=1
 bash scripts/update-readme-methods.sh "$build" || status=1   # README's method table, from the registry
 "$build/cagd_report" "$root" || status=1
 {

@@ -6,6 +6,14 @@ f = datadir.'/fig15_19.csv'
 titles = "'cubic spline A (uniform t)' 'cubic spline B (chord length)' 'Hermite curve A' 'Hermite curve B' 'pseudo-spline (exact optimisation)'"
 set palette defined (0 '#1f77b4', 1 '#2ca02c', 2 '#bcbd22', 3 '#ff7f0e', 4 '#d62728', 5 '#7f7f7f')
 set cbrange [0:5]
+# The rows come in 30 blocks of equal length, a = 0..5 and within each a the methods 1..5: each
+# curve reads the rows of its block (every ::start::end, one row of slack either side, as the header
+# line may count as a point), not the whole file; the conditions in `using` keep only its own rows.
+stats f u 1 nooutput
+block = STATS_records / 30
+if (STATS_records != 30 * block) { print 'fig15_19.csv: ', STATS_records, ' rows, not 30 equal blocks'; exit status 1 }
+first(m, a) = (a * 5 + m - 1) * block
+last(m, a) = first(m, a) + block + 1
 do for [t in "png svg"] {
   if (t eq "png") { set terminal pngcairo size 2000,800 enhanced font 'DejaVu Sans,11' } else { set terminal svg size 2000,800 enhanced font 'DejaVu Sans,11' }
   set output datadir.'/fig15_19.'.t
@@ -17,8 +25,8 @@ do for [t in "png svg"] {
     set yrange [-1.5:6.5]
     unset key
     unset colorbox
-    plot for [a=0:5] f u ($1==m && $2==a ? $4 : 1/0):($1==m && $2==a ? $5 : 1/0):(a) w l lw 2 lc palette, \
-         for [a=0:5] f u ($1==m && $2==a && $3==int($3) ? $4 : 1/0):($1==m && $2==a && $3==int($3) ? $5 : 1/0) w p ls 5
+    plot for [a=0:5] f every ::(first(m, a))::(last(m, a)) u ($1==m && $2==a ? $4 : 1/0):($1==m && $2==a ? $5 : 1/0):(a) w l lw 2 lc palette, \
+         for [a=0:5] f every ::(first(m, a))::(last(m, a)) u ($1==m && $2==a && $3==int($3) ? $4 : 1/0):($1==m && $2==a && $3==int($3) ? $5 : 1/0) w p ls 5
   }
   set autoscale y
   do for [m=1:5] {
@@ -26,7 +34,7 @@ do for [t in "png svg"] {
     set xlabel 'arc length s'
     set ylabel 'κ'
     unset key
-    plot for [a=0:5] f u ($1==m && $2==a ? $6 : 1/0):($1==m && $2==a ? $7 : 1/0):(a) w l lw 1.5 lc palette
+    plot for [a=0:5] f every ::(first(m, a))::(last(m, a)) u ($1==m && $2==a ? $6 : 1/0):($1==m && $2==a ? $7 : 1/0):(a) w l lw 1.5 lc palette
   }
   unset multiplot
   unset output
