@@ -232,10 +232,10 @@ TEST(AngleMinimumTable, ScanSourceMustHoldTheTwoDegreeScan) {
 // The refinement alone, given the scan that minimize_over_end_angle makes itself, is that function.
 TEST(AngleMinimumTable, RefinementOfAGivenScanIsTheEndAngleMinimum) {
     const double theta = 0.7;
-    const auto j_of = [theta](double theta1) { return end_angle_energy(minimize_pseudo_energy(theta, theta1)); };
+    const auto j_of = [theta](double theta1) { return end_angle_energy(theta, theta1); };
     std::vector<double> t, v;
-    for (int i = 0; i <= 180; ++i) {
-        t.push_back(-std::numbers::pi + 2 * std::numbers::pi * i / 180);
+    for (int i = 0; i <= kEndAngleScanSteps; ++i) {
+        t.push_back(-std::numbers::pi + 2 * std::numbers::pi * i / kEndAngleScanSteps);
         v.push_back(j_of(t.back()));
     }
     const AngleMinimum a = refine_end_angle_scan(theta, t, v, j_of), b = minimize_over_end_angle(theta);

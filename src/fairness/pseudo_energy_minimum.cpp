@@ -178,9 +178,11 @@ double end_angle_energy(const PseudoEnergyMinimum& m) {
     return m.outcome.ok() ? m.pseudo_energy : kInf;
 }
 
+double end_angle_energy(double theta, double theta1) { return end_angle_energy(minimize_pseudo_energy(theta, theta1)); }
+
 AngleMinimum minimize_over_end_angle(double theta, double scan_step) {
     require_angles("minimize_over_end_angle", theta, 0.0);
-    const auto j_of = [&](double theta1) { return end_angle_energy(minimize_pseudo_energy(theta, theta1)); };
+    const auto j_of = [&](double theta1) { return end_angle_energy(theta, theta1); };
     return minimize_over_end_angle(theta, j_of, scan_step);
 }
 

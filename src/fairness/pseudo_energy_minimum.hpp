@@ -98,7 +98,9 @@ struct AngleMinimum {
     double theta = 0.0, theta1 = 0.0, pseudo_energy = 0.0;
     Outcome outcome;
 };
-AngleMinimum minimize_over_end_angle(double theta, double scan_step = std::numbers::pi / 90);
+// The default scan: kEndAngleScanSteps steps of 2° from −π to π (181 angles).
+constexpr int kEndAngleScanSteps = 180;
+AngleMinimum minimize_over_end_angle(double theta, double scan_step = 2 * std::numbers::pi / kEndAngleScanSteps);
 // The same scan and Brent refinement on a given J(θ, ·) (e.g. an interpolated table); j_of returns
 // +∞ where J is undefined.
 AngleMinimum minimize_over_end_angle(double theta, const std::function<double(double)>& j_of, double scan_step);
@@ -109,5 +111,7 @@ AngleMinimum refine_end_angle_scan(double theta, const std::vector<double>& t, c
 // The J that the end-angle scan uses for one fast minimum: its J, +∞ where it failed, and at the
 // undefined nodes 0 (straight, θ = θ1 = 0) or +∞.
 double end_angle_energy(const PseudoEnergyMinimum& m);
+// The same for the fast minimum at (θ, θ1), minimised here.
+double end_angle_energy(double theta, double theta1);
 
 }  // namespace cagd::fairness

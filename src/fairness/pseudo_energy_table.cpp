@@ -237,23 +237,22 @@ bool read_node_rows(std::istream& in, int n, std::vector<PseudoEnergyMinimum>& v
 }  // namespace
 
 PseudoEnergyTable PseudoEnergyTable::load_or_build(const std::string& path, const AngleGrid& grid, TableMethod method, int threads) {
-    PseudoEnergyTable t;
-    t.grid_ = grid;
-    t.method_ = method;
-    t.nodes_ = grid.nodes();
-    const auto load_cached = [&] {
+    const auto try_load = [&]() -> std::optional<PseudoEnergyTable> {
+        PseudoEnergyTable t;
+        t.grid_ = grid;
+        t.method_ = method;
+        t.nodes_ = grid.nodes();
         std::ifstream in(path);
         std::string line;
-        if (!(in && std::getline(in, line) && line == t.header_line() && read_node_rows(in, grid.n, t.values_))) return false;
+        if (!(in && std::getline(in, line) && line == t.header_line() && read_node_rows(in, grid.n, t.values_))) return std::nullopt;
         t.pack();
-        return true;
+        return t;
     };
-    if (load_cached()) return t;
-    const FileLock lock(path + ".lock");  // one builder; the others wait and load its table
-    if (load_cached()) return t;
-    t = build(grid, method, threads, method == TableMethod::fast);
-    t.save(path);
-    return t;
+    return load_or_build_locked(path, try_load, [&] {
+        PseudoEnergyTable built = build(grid, method, threads, method == TableMethod::fast);
+        built.save(path);
+        return built;
+    });
 }
 
 PseudoEnergyTable PseudoEnergyTable::load(const std::string& path) {
@@ -408,16 +407,14 @@ AngleMinimumTable AngleMinimumTable::build(const AngleGrid& grid, int threads) {
 AngleMinimumTable AngleMinimumTable::build(const AngleGrid& grid, const PseudoEnergyTable& scan_source, int threads) { return build(grid, &scan_source, threads); }
 
 AngleMinimumTable AngleMinimumTable::build(const AngleGrid& grid, const PseudoEnergyTable* scan_source, int threads) {
-    // The scan of minimize_over_end_angle: 2° steps from −π to π, 181 angles.
-    constexpr int kScanSteps = 180;
     int stride = 0;
     if (scan_source) {
         const AngleGrid& g = scan_source->grid();
-        if (scan_source->method() != TableMethod::fast || g.placement != NodePlacement::endpoints || (g.n - 1) % kScanSteps != 0)
+        if (scan_source->method() != TableMethod::fast || g.placement != NodePlacement::endpoints || (g.n - 1) % kEndAngleScanSteps != 0)
             fail_input("cagd::fairness::AngleMinimumTable::build",
                        "the scan source must be a fast table on an endpoints grid of 180·k + 1 nodes (its nodes then hold the 2° scan), got grid " + std::to_string(g.n) + " " +
                            to_string(g.placement) + " " + to_string(scan_source->method()));
-        stride = (g.n - 1) / kScanSteps;
+        stride = (g.n - 1) / kEndAngleScanSteps;
     }
     AngleMinimumTable t;
     t.grid_ = grid;
@@ -440,7 +437,7 @@ AngleMinimumTable AngleMinimumTable::build(const AngleGrid& grid, const PseudoEn
                          ts.push_back((*source_nodes)[static_cast<std::size_t>(j)]);
                          vs.push_back(end_angle_energy(scan_source->node(i, j)));
                      }
-                     out = refine_end_angle_scan(theta, ts, vs, [theta](double theta1) { return end_angle_energy(minimize_pseudo_energy(theta, theta1)); });
+                     out = refine_end_angle_scan(theta, ts, vs, [theta](double theta1) { return end_angle_energy(theta, theta1); });
                  },
                  {});
     return t;
@@ -455,48 +452,48 @@ AngleMinimumTable AngleMinimumTable::load_or_build(const std::string& path, cons
 AngleMinimumTable AngleMinimumTable::load_or_build(const std::string& path, const AngleGrid& grid, const PseudoEnergyTable* scan_source, int threads) {
     std::ostringstream header;
     header << "# cagd pseudo_energy angle-minimum table format 1 grid " << grid.n << " placement " << to_string(grid.placement);
-    std::optional<FileLock> lock;
-    for (int attempt = 0; attempt < 2; ++attempt) {
-        if (attempt == 1) lock.emplace(path + ".lock");  // one builder; the others wait and load its table
+    const auto try_load = [&]() -> std::optional<AngleMinimumTable> {
         std::ifstream in(path);
         std::string line;
-        if (in && std::getline(in, line) && line == header.str() && std::getline(in, line)) {
-            AngleMinimumTable t;
-            t.grid_ = grid;
-            t.nodes_ = grid.nodes();
-            while (t.values_.size() < t.nodes_.size() && std::getline(in, line)) {
-                // theta,theta1,J,status,message (the message last: it may hold commas)
-                std::istringstream row(line);
-                std::string f[4];
-                for (std::string& x : f)
-                    if (!std::getline(row, x, ',')) break;
-                AngleMinimum m;
-                char* end = nullptr;
-                m.theta = std::strtod(f[0].c_str(), &end);
-                m.theta1 = std::strtod(f[1].c_str(), &end);
-                m.pseudo_energy = std::strtod(f[2].c_str(), &end);
-                m.outcome.status = static_cast<Status>(std::atoi(f[3].c_str()));
-                std::getline(row, m.outcome.message);
-                if (m.theta != t.nodes_[t.values_.size()]) break;  // another grid: rebuild
-                t.values_.push_back(m);
+        if (!(in && std::getline(in, line) && line == header.str() && std::getline(in, line))) return std::nullopt;
+        AngleMinimumTable t;
+        t.grid_ = grid;
+        t.nodes_ = grid.nodes();
+        while (t.values_.size() < t.nodes_.size() && std::getline(in, line)) {
+            // theta,theta1,J,status,message (the message last: it may hold commas)
+            std::istringstream row(line);
+            std::string f[4];
+            for (std::string& x : f)
+                if (!std::getline(row, x, ',')) break;
+            AngleMinimum m;
+            char* end = nullptr;
+            m.theta = std::strtod(f[0].c_str(), &end);
+            m.theta1 = std::strtod(f[1].c_str(), &end);
+            m.pseudo_energy = std::strtod(f[2].c_str(), &end);
+            m.outcome.status = static_cast<Status>(std::atoi(f[3].c_str()));
+            std::getline(row, m.outcome.message);
+            if (m.theta != t.nodes_[t.values_.size()]) break;  // another grid: rebuild
+            t.values_.push_back(m);
+        }
+        if (t.values_.size() != t.nodes_.size()) return std::nullopt;
+        return t;
+    };
+    return load_or_build_locked(path, try_load, [&] {
+        const AngleMinimumTable t = build(grid, scan_source, threads);
+        const std::string tmp = path + ".tmp." + std::to_string(::getpid());
+        {
+            std::ofstream out(tmp);
+            if (!out) fail_input("cagd::fairness::AngleMinimumTable::load_or_build", "cannot write '" + tmp + "'");
+            out << header.str() << "\ntheta,theta1,J,status,message\n";
+            char buf[128];
+            for (const AngleMinimum& m : t.values_) {
+                std::snprintf(buf, sizeof buf, "%.17g,%.17g,%.17g,%d,", m.theta, m.theta1, m.pseudo_energy, static_cast<int>(m.outcome.status));
+                out << buf << m.outcome.message << "\n";
             }
-            if (t.values_.size() == t.nodes_.size()) return t;
         }
-    }
-    const AngleMinimumTable t = build(grid, scan_source, threads);
-    const std::string tmp = path + ".tmp." + std::to_string(::getpid());
-    {
-        std::ofstream out(tmp);
-        if (!out) fail_input("cagd::fairness::AngleMinimumTable::load_or_build", "cannot write '" + tmp + "'");
-        out << header.str() << "\ntheta,theta1,J,status,message\n";
-        char buf[128];
-        for (const AngleMinimum& m : t.values_) {
-            std::snprintf(buf, sizeof buf, "%.17g,%.17g,%.17g,%d,", m.theta, m.theta1, m.pseudo_energy, static_cast<int>(m.outcome.status));
-            out << buf << m.outcome.message << "\n";
-        }
-    }
-    std::rename(tmp.c_str(), path.c_str());
-    return t;
+        std::rename(tmp.c_str(), path.c_str());
+        return t;
+    });
 }
 
 AngleMinimumTable AngleMinimumTable::from_energy_table(const PseudoEnergyTable& table) { return from_energy_table(table, TableReading{}); }

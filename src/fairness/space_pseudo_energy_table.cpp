@@ -169,19 +169,20 @@ SpacePseudoEnergyTable SpacePseudoEnergyTable::load(const std::string& path) {
 }
 
 SpacePseudoEnergyTable SpacePseudoEnergyTable::load_or_build(const std::string& path, const SpaceAngleGrid& grid, TableMethod method, int threads) {
-    std::optional<FileLock> lock;
-    for (int attempt = 0; attempt < 2; ++attempt) {
-        if (attempt == 1) lock.emplace(path + ".lock");  // one builder; the others wait and load its table
+    const auto try_load = [&]() -> std::optional<SpacePseudoEnergyTable> {
         try {
             SpacePseudoEnergyTable t = load(path);
             if (t.grid_.n_theta == grid.n_theta && t.grid_.n_phi == grid.n_phi && t.method_ == method) return t;
         } catch (const InvalidInput&) {
             // missing or foreign: build
         }
-    }
-    SpacePseudoEnergyTable t = build(grid, method, threads);
-    t.save(path);
-    return t;
+        return std::nullopt;
+    };
+    return load_or_build_locked(path, try_load, [&] {
+        SpacePseudoEnergyTable t = build(grid, method, threads);
+        t.save(path);
+        return t;
+    });
 }
 
 SpaceTableValue SpacePseudoEnergyTable::lookup(double theta0, double theta1, double phi) const {
