@@ -4,6 +4,10 @@ BUILD   ?= build
 JOBS    ?= 2
 PREFIX  ?= /usr/local
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
+# A new build tree uses Ninja when it is installed (install-deps.sh installs it): it compiles a
+# target's files while the libraries it links are still being built, which keeps both cores busy.
+# A tree configured before keeps the generator it has.
+generator_for = $(if $(wildcard $(1)/CMakeCache.txt),,$(if $(shell command -v ninja 2>/dev/null),-G Ninja,))
 
 # What each target needs built.
 ALL_ON        = -DCAGD_BUILD_TESTS=ON -DCAGD_BUILD_EXPERIMENTS=ON -DCAGD_BUILD_CLI=ON -DCAGD_BUILD_PYTHON=ON
@@ -22,7 +26,7 @@ deps:
 	@bash scripts/install-deps.sh
 
 configure: deps
-	@cmake -S . -B $(BUILD) $(CMAKE_FLAGS) $(ALL_ON) >/dev/null
+	@cmake -S . -B $(BUILD) $(call generator_for,$(BUILD)) $(CMAKE_FLAGS) $(ALL_ON) >/dev/null
 
 build: configure
 	@cmake --build $(BUILD) -j$(JOBS)
@@ -31,12 +35,12 @@ test: build
 	@cd $(BUILD) && ctest --output-on-failure -j$(JOBS)
 
 reproduce: deps
-	@cmake -S . -B $(BUILD) $(CMAKE_FLAGS) $(REPRODUCE_ON) >/dev/null
+	@cmake -S . -B $(BUILD) $(call generator_for,$(BUILD)) $(CMAKE_FLAGS) $(REPRODUCE_ON) >/dev/null
 	@cmake --build $(BUILD) -j$(JOBS)
 	@JOBS=$(JOBS) bash scripts/reproduce.sh $(BUILD)
 
 bench: deps
-	@cmake -S . -B $(BUILD) $(CMAKE_FLAGS) $(BENCH_ON) >/dev/null
+	@cmake -S . -B $(BUILD) $(call generator_for,$(BUILD)) $(CMAKE_FLAGS) $(BENCH_ON) >/dev/null
 	@cmake --build $(BUILD) -j$(JOBS)
 	@cmake --build $(BUILD) -j$(JOBS) --target cagd_bench
 	@mkdir -p results/timing
@@ -45,11 +49,11 @@ bench: deps
 
 # The Python module alone: then PYTHONPATH=$(BUILD)/python /usr/bin/python3 -c 'import cagd'
 python: deps
-	@cmake -S . -B $(BUILD) $(CMAKE_FLAGS) $(PYTHON_ON) >/dev/null
+	@cmake -S . -B $(BUILD) $(call generator_for,$(BUILD)) $(CMAKE_FLAGS) $(PYTHON_ON) >/dev/null
 	@cmake --build $(BUILD) -j$(JOBS) --target cagd_python
 
 install: deps
-	@cmake -S . -B $(BUILD)-install $(CMAKE_FLAGS) $(INSTALL_FLAGS) -DCMAKE_INSTALL_PREFIX=$(PREFIX) >/dev/null
+	@cmake -S . -B $(BUILD)-install $(call generator_for,$(BUILD)-install) $(CMAKE_FLAGS) $(INSTALL_FLAGS) -DCMAKE_INSTALL_PREFIX=$(PREFIX) >/dev/null
 	@cmake --build $(BUILD)-install -j$(JOBS)
 	@cmake --install $(BUILD)-install
 

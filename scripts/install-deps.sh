@@ -5,6 +5,7 @@ set -euo pipefail
 
 packages=(
   cmake g++ make pkg-config
+  ninja-build            # the build's generator (make test compiles with both cores busy)
   libeigen3-dev          # linear algebra, point types
   libboost-dev libboost-math-dev   # Boost.Math quadrature/interpolators, Boost.Multiprecision (headers)
   libceres-dev           # nonlinear least squares, gradient solvers (pseudo_energy reference CG)

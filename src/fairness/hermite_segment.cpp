@@ -19,28 +19,69 @@ double cross(const Eigen::Vector2d& p, const Eigen::Vector2d& q) { return p.x() 
 
 using detail::Integrands;
 
-// The six integrands at t (detail/segment_quadrature.hpp) for the plane: k²/|P'|⁵ with k of eq (15).
-Integrands integrands(const UnitChordHermite& s, double t, bool with_gradient) {
-    const Eigen::Vector2d d1 = s.a() + t * (s.b() + t * s.c());
-    const Eigen::Vector2d d2 = s.b() + 2.0 * t * s.c();
-    const double g = d1.squaredNorm();
-    const double speed = std::sqrt(g);
-    const double k = cross(d2, d1);
-    const double inv5 = 1.0 / (g * g * speed);
-    Integrands out{speed, k * k * inv5, 0, 0, 0, 0};
-    if (!with_gradient) return out;
-    // ∂P'/∂r0 = c'(t) u0, ∂P''/∂r0 = c''(t) u0;  ∂P'/∂r1 = d'(t) u1, ∂P''/∂r1 = d''(t) u1.
-    const double dc1 = 1.0 - 4.0 * t + 3.0 * t * t, dc2 = 6.0 * t - 4.0;
-    const double dd1 = -2.0 * t + 3.0 * t * t, dd2 = 6.0 * t - 2.0;
-    const Eigen::Vector2d D0 = dc1 * s.u0(), D0p = dc2 * s.u0();
-    const Eigen::Vector2d D1 = dd1 * s.u1(), D1p = dd2 * s.u1();
-    const double p0 = d1.dot(D0), p1 = d1.dot(D1);
-    const double k0 = cross(D0p, d1) + cross(d2, D0), k1 = cross(D1p, d1) + cross(d2, D1);
-    out[2] = p0 / speed;
-    out[3] = p1 / speed;
-    out[4] = 2.0 * k * k0 * inv5 - 5.0 * k * k * p0 * inv5 / g;
-    out[5] = 2.0 * k * k1 * inv5 - 5.0 * k * k * p1 * inv5 / g;
-    return out;
+// The six integrands (detail/segment_quadrature.hpp) for the plane at m points t: k²/|P'|⁵ with
+// k of eq (15), and |P'|, with their derivatives with respect to r0, r1. Scalar loops over the
+// points, so the compiler evaluates two at a time (sqrt and division are exact in every lane);
+// each value is computed by the same operations in the same order as the vector form
+// d1 = A + t(B + tC), d2 = B + 2tC, k = d2 × d1.
+// Points per pass: the values are computed into arrays of this length (structure of arrays, which
+// the compiler vectorises), then copied out.
+constexpr std::size_t kIntegrandPass = 32;
+
+// P'(t), P''(t), g = |P'|², |P'|, k and 1/|P'|⁵ at t from the power-form coefficients.
+struct Derivatives {
+    double d1x, d1y, d2x, d2y, g, speed, k, inv5;
+};
+[[gnu::always_inline]] inline Derivatives derivatives_at(const std::array<double, 6>& abc, double ti) {
+    const auto [ax, ay, bx, by, cx, cy] = abc;
+    Derivatives d{};
+    d.d1x = ax + ti * (bx + ti * cx);
+    d.d1y = ay + ti * (by + ti * cy);
+    d.d2x = bx + 2.0 * ti * cx;
+    d.d2y = by + 2.0 * ti * cy;
+    d.g = d.d1x * d.d1x + d.d1y * d.d1y;
+    d.speed = std::sqrt(d.g);
+    d.k = d.d2x * d.d1y - d.d2y * d.d1x;
+    d.inv5 = 1.0 / (d.g * d.g * d.speed);
+    return d;
+}
+
+void integrands_pass(const UnitChordHermite& s, const double* t, std::size_t m, bool with_gradient, Integrands* out) {
+    const std::array<double, 6> abc{s.a().x(), s.a().y(), s.b().x(), s.b().y(), s.c().x(), s.c().y()};
+    std::array<std::array<double, kIntegrandPass>, 6> v;
+    if (!with_gradient) {
+        for (std::size_t i = 0; i < m; ++i) {
+            const Derivatives d = derivatives_at(abc, t[i]);
+            v[0][i] = d.speed;
+            v[1][i] = d.k * d.k * d.inv5;
+        }
+        for (std::size_t i = 0; i < m; ++i) out[i] = {v[0][i], v[1][i], 0, 0, 0, 0};
+        return;
+    }
+    const double u0x = s.u0().x(), u0y = s.u0().y(), u1x = s.u1().x(), u1y = s.u1().y();
+    for (std::size_t i = 0; i < m; ++i) {
+        const double ti = t[i];
+        const Derivatives d = derivatives_at(abc, ti);
+        // ∂P'/∂r0 = c'(t) u0, ∂P''/∂r0 = c''(t) u0;  ∂P'/∂r1 = d'(t) u1, ∂P''/∂r1 = d''(t) u1.
+        const double dc1 = 1.0 - 4.0 * ti + 3.0 * ti * ti, dc2 = 6.0 * ti - 4.0;
+        const double dd1 = -2.0 * ti + 3.0 * ti * ti, dd2 = 6.0 * ti - 2.0;
+        const double D0x = dc1 * u0x, D0y = dc1 * u0y, D0px = dc2 * u0x, D0py = dc2 * u0y;
+        const double D1x = dd1 * u1x, D1y = dd1 * u1y, D1px = dd2 * u1x, D1py = dd2 * u1y;
+        const double p0 = d.d1x * D0x + d.d1y * D0y, p1 = d.d1x * D1x + d.d1y * D1y;
+        const double k0 = (D0px * d.d1y - D0py * d.d1x) + (d.d2x * D0y - d.d2y * D0x);
+        const double k1 = (D1px * d.d1y - D1py * d.d1x) + (d.d2x * D1y - d.d2y * D1x);
+        v[0][i] = d.speed;
+        v[1][i] = d.k * d.k * d.inv5;
+        v[2][i] = p0 / d.speed;
+        v[3][i] = p1 / d.speed;
+        v[4][i] = 2.0 * d.k * k0 * d.inv5 - 5.0 * d.k * d.k * p0 * d.inv5 / d.g;
+        v[5][i] = 2.0 * d.k * k1 * d.inv5 - 5.0 * d.k * d.k * p1 * d.inv5 / d.g;
+    }
+    for (std::size_t i = 0; i < m; ++i) out[i] = {v[0][i], v[1][i], v[2][i], v[3][i], v[4][i], v[5][i]};
+}
+
+void integrands(const UnitChordHermite& s, const double* t, std::size_t m, bool with_gradient, Integrands* out) {
+    for (std::size_t i0 = 0; i0 < m; i0 += kIntegrandPass) integrands_pass(s, t + i0, std::min(kIntegrandPass, m - i0), with_gradient, out + i0);
 }
 
 }  // namespace
@@ -75,9 +116,9 @@ void fail_tangent_angle(const char* who, double theta, const char* name) {
 }
 
 UnitChordHermite::UnitChordHermite(double theta0, double theta1, double r0, double r1) : theta0_(theta0), theta1_(theta1), r0_(r0), r1_(r1) {
-    const std::string who = "cagd::fairness::UnitChordHermite";
-    require_tangent_angle(who.c_str(), theta0, "theta0");
-    require_tangent_angle(who.c_str(), theta1, "theta1");
+    const char* who = "cagd::fairness::UnitChordHermite";
+    require_tangent_angle(who, theta0, "theta0");
+    require_tangent_angle(who, theta1, "theta1");
     if (!std::isfinite(r0) || !(r0 > 0.0)) fail_input(who, "r0 must be finite and > 0, got " + full_precision(r0));
     if (!std::isfinite(r1) || !(r1 > 0.0)) fail_input(who, "r1 must be finite and > 0, got " + full_precision(r1));
     u0_ = detail::exact_unit_direction(theta0);
@@ -105,23 +146,29 @@ BezierCurve UnitChordHermite::bezier() const {
     return BezierCurve(cp, 0.0, 1.0);
 }
 
-std::vector<SpeedMinimum> speed_minima(const UnitChordHermite& seg) { return detail::speed_minima(seg); }
+std::vector<SpeedMinimum> speed_minima(const UnitChordHermite& seg) {
+    const detail::SpeedMinimaList m = detail::speed_minima(seg);
+    return {m.begin(), m.end()};
+}
 
-bool has_cusp(const UnitChordHermite& seg) { return detail::cusp_among(seg, speed_minima(seg)); }
+bool has_cusp(const UnitChordHermite& seg) { return detail::cusp_among(seg, detail::speed_minima(seg)); }
 
-std::vector<double> integration_breaks(const UnitChordHermite& seg) { return detail::breaks_for(seg, speed_minima(seg)); }
+std::vector<double> integration_breaks(const UnitChordHermite& seg) {
+    const detail::BreakList br = detail::breaks_for(seg, detail::speed_minima(seg));
+    return {br.begin(), br.end()};
+}
 
 SegmentEnergy segment_energy_reference(const UnitChordHermite& seg, double rel_tol, bool with_gradient) {
     if (!(rel_tol > 0.0 && rel_tol <= 1e-12)) fail_input("cagd::fairness::segment_energy_reference", "rel_tol must be in (0, 1e-12], got " + full_precision(rel_tol));
     return detail::energy_reference(
-        seg, [&](double t) { return integrands(seg, t, with_gradient); }, rel_tol);
+        seg, [&](const double* t, std::size_t m, Integrands* out) { integrands(seg, t, m, with_gradient, out); }, rel_tol);
 }
 
 SegmentEnergy segment_energy_fast(const UnitChordHermite& seg, bool with_gradient, int rule_nodes) {
     static const numeric::GaussLegendreRule rule20(20), rule8(8);
     if (rule_nodes != 8 && rule_nodes != 20) fail_input("cagd::fairness::segment_energy_fast", "rule_nodes must be 8 or 20, got " + std::to_string(rule_nodes));
     return detail::energy_fast(
-        seg, [&](double t) { return integrands(seg, t, with_gradient); }, rule_nodes == 8 ? rule8 : rule20);
+        seg, [&](const double* t, std::size_t m, Integrands* out) { integrands(seg, t, m, with_gradient, out); }, rule_nodes == 8 ? rule8 : rule20);
 }
 
 double signed_area(const UnitChordHermite& seg) {

@@ -9,8 +9,10 @@
 // Accuracy: O(h^{2k+2}) for integrands smooth on [a, b]; integrate piecewise smooth
 // functions piece by piece. Cost: 2^max_levels + 1 evaluations at most.
 // Not converging within max_levels is an Outcome, not an exception.
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <functional>
 #include <string>
 #include <vector>
@@ -42,8 +44,14 @@ struct RombergVectorResult {
     Outcome outcome;
 };
 
-template <std::size_t N, class F>
-RombergVectorResult<N> romberg_vector(const F& f, double a, double b, double rel_tol = 1e-12, double abs_tol = 0.0, int max_levels = 24) {
+// The points of a level are handed to the integrand in batches of up to kRombergBatch:
+// fb(const double* t, std::size_t m, std::array<double, N>* out) fills out[0..m), so an integrand
+// can evaluate them together (vectorised); the sums still run point by point in order, so the
+// result is that of romberg_vector with the same integrand one point at a time.
+inline constexpr std::size_t kRombergBatch = 16;
+
+template <std::size_t N, class FB>
+RombergVectorResult<N> romberg_vector_batched(const FB& fb, double a, double b, double rel_tol = 1e-12, double abs_tol = 0.0, int max_levels = 24) {
     using Row = std::vector<std::array<double, N>>;
     const std::string who = "cagd::numeric::romberg_vector";
     if (!std::isfinite(a) || !std::isfinite(b)) fail_input(who, "interval [" + full_precision(a) + ", " + full_precision(b) + "] must be finite");
@@ -52,12 +60,15 @@ RombergVectorResult<N> romberg_vector(const F& f, double a, double b, double rel
     if (max_levels < 2 || max_levels > 30) fail_input(who, "max_levels must be in [2, 30], got " + std::to_string(max_levels));
     RombergVectorResult<N> r;
     const double h0 = b - a;
-    const std::array<double, N> fa = f(a), fb = f(b);
+    const std::array<double, 2> ends{a, b};
+    std::array<std::array<double, N>, 2> f_ends;
+    fb(ends.data(), 2, f_ends.data());
+    const std::array<double, N>&fa = f_ends[0], &f_b = f_ends[1];
     Row prev(1), cur;
     std::array<double, N> abs_trap{};
     for (std::size_t c = 0; c < N; ++c) {
-        prev[0][c] = 0.5 * h0 * (fa[c] + fb[c]);
-        abs_trap[c] = 0.5 * h0 * (std::abs(fa[c]) + std::abs(fb[c]));
+        prev[0][c] = 0.5 * h0 * (fa[c] + f_b[c]);
+        abs_trap[c] = 0.5 * h0 * (std::abs(fa[c]) + std::abs(f_b[c]));
     }
     r.evaluations = 2;
     int small_in_a_row = 0;
@@ -65,12 +76,17 @@ RombergVectorResult<N> romberg_vector(const F& f, double a, double b, double rel
         const long n_new = 1L << (k - 1);
         const double h = h0 / static_cast<double>(1L << k);
         std::array<double, N> sum{}, abs_sum{};
-        for (long i = 0; i < n_new; ++i) {
-            const std::array<double, N> v = f(a + static_cast<double>(2 * i + 1) * h);
-            for (std::size_t c = 0; c < N; ++c) {
-                sum[c] += v[c];
-                abs_sum[c] += std::abs(v[c]);
-            }
+        std::array<double, kRombergBatch> t;
+        std::array<std::array<double, N>, kRombergBatch> v;
+        for (long i0 = 0; i0 < n_new; i0 += static_cast<long>(kRombergBatch)) {
+            const std::size_t m = static_cast<std::size_t>(std::min<long>(static_cast<long>(kRombergBatch), n_new - i0));
+            for (std::size_t i = 0; i < m; ++i) t[i] = a + static_cast<double>(2 * (i0 + static_cast<long>(i)) + 1) * h;
+            fb(t.data(), m, v.data());
+            for (std::size_t i = 0; i < m; ++i)
+                for (std::size_t c = 0; c < N; ++c) {
+                    sum[c] += v[i][c];
+                    abs_sum[c] += std::abs(v[i][c]);
+                }
         }
         r.evaluations += n_new;
         cur.assign(static_cast<std::size_t>(k + 1), std::array<double, N>{});
@@ -101,6 +117,16 @@ RombergVectorResult<N> romberg_vector(const F& f, double a, double b, double rel
     }
     r.outcome = {Status::no_convergence, who + ": no convergence after " + std::to_string(max_levels) + " levels"};
     return r;
+}
+
+// The same with an integrand of one point, f(t) → std::array<double, N>.
+template <std::size_t N, class F>
+RombergVectorResult<N> romberg_vector(const F& f, double a, double b, double rel_tol = 1e-12, double abs_tol = 0.0, int max_levels = 24) {
+    return romberg_vector_batched<N>(
+        [&f](const double* t, std::size_t m, std::array<double, N>* out) {
+            for (std::size_t i = 0; i < m; ++i) out[i] = f(t[i]);
+        },
+        a, b, rel_tol, abs_tol, max_levels);
 }
 
 }  // namespace cagd::numeric

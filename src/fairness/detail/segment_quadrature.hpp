@@ -2,12 +2,16 @@
 // The quadrature of a unit-chord Hermite segment's energies, for any dimension (the plane:
 // hermite_segment.cpp; space: space_hermite_segment.cpp). A Segment provides a(), b(), c() (the
 // power-form coefficients of P'(t) = A + Bt + Ct²), first(t), second(t), r0(), r1(); an integrand
-// function gives, at t, the six values |P'|, κ²|P'| (the strain-energy density), and their
-// derivatives with respect to r0 and r1. Cusp detection and the graded breakpoints are those
+// function integrand(const double* t, std::size_t m, Integrands* out) gives, at each of m points
+// t, the six values |P'|, κ²|P'| (the strain-energy density), and their derivatives with respect
+// to r0 and r1 (a batch, so the points of a piece can be evaluated together). Cusp detection and the graded breakpoints are those
 // described in hermite_segment.hpp.
 #include <algorithm>
 #include <array>
+#include <boost/container/small_vector.hpp>
+#include <boost/container/static_vector.hpp>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <numbers>
 #include <vector>
@@ -39,15 +43,23 @@ inline Eigen::Vector2d exact_unit_direction(double theta) {
 // The six integrands at t: |P'|, κ²|P'|, and their derivatives with respect to r0, r1.
 using Integrands = std::array<double, 6>;
 
+// The quadratures run millions of times in a table build, so their working lists live on the stack:
+// at most three monotone pieces of P'·P'' (hence three speed minima), and breakpoints that exceed
+// the small buffer only for extreme grading (then on the heap). Same values, same order, as
+// std::vector gave.
+using SpeedMinimaList = boost::container::static_vector<SpeedMinimum, 3>;
+using BreakList = boost::container::small_vector<double, 64>;
+
 template <class Segment>
-std::vector<SpeedMinimum> speed_minima(const Segment& seg) {
+SpeedMinimaList speed_minima(const Segment& seg) {
     // (|P'|²)'/2 = P'·P'' = q0 + q1 t + q2 t² + q3 t³ (a cubic); its roots where it changes sign
     // from − to + are the minima. The roots of its derivative (a quadratic) split [0, 1] into
     // monotone pieces, each bracketing at most one root, found by bisection to 1 ulp.
     const auto &A = seg.a(), &B = seg.b(), &C = seg.c();
     const double q0 = A.dot(B), q1 = B.dot(B) + 2.0 * A.dot(C), q2 = 3.0 * B.dot(C), q3 = 2.0 * C.dot(C);
     const auto slope = [&](double t) { return q0 + t * (q1 + t * (q2 + t * q3)); };
-    std::vector<double> cuts{0.0};
+    std::array<double, 4> cuts{0.0};  // 0, the roots of the quadratic in (0, 1), then 1
+    std::size_t n_cuts = 1;
     const double a2 = 3.0 * q3, a1 = 2.0 * q2, a0 = q1;  // derivative of the cubic
     if (a2 != 0.0) {
         const double disc = a1 * a1 - 4.0 * a2 * a0;
@@ -55,16 +67,16 @@ std::vector<SpeedMinimum> speed_minima(const Segment& seg) {
             const double sq = std::sqrt(disc);
             const double qq = -0.5 * (a1 + (a1 >= 0 ? sq : -sq));
             for (double r : {qq / a2, qq != 0.0 ? a0 / qq : -1.0})
-                if (r > 0.0 && r < 1.0) cuts.push_back(r);
+                if (r > 0.0 && r < 1.0) cuts[n_cuts++] = r;
         }
     } else if (a1 != 0.0) {
         const double r = -a0 / a1;
-        if (r > 0.0 && r < 1.0) cuts.push_back(r);
+        if (r > 0.0 && r < 1.0) cuts[n_cuts++] = r;
     }
-    std::sort(cuts.begin(), cuts.end());
-    cuts.push_back(1.0);
-    std::vector<SpeedMinimum> out;
-    for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+    std::sort(cuts.begin(), cuts.begin() + static_cast<std::ptrdiff_t>(n_cuts));
+    cuts[n_cuts++] = 1.0;
+    SpeedMinimaList out;
+    for (std::size_t k = 0; k + 1 < n_cuts; ++k) {
         double lo = cuts[k], hi = cuts[k + 1];
         if (!(slope(lo) < 0.0 && slope(hi) >= 0.0)) continue;
         // Safeguarded Newton: a Newton step that leaves the bracket becomes a bisection.
@@ -95,7 +107,7 @@ std::vector<SpeedMinimum> speed_minima(const Segment& seg) {
 }
 
 template <class Segment>
-bool cusp_among(const Segment& seg, const std::vector<SpeedMinimum>& minima) {
+bool cusp_among(const Segment& seg, const SpeedMinimaList& minima) {
     const double floor = kCuspSpeed * (1.0 + seg.r0() + seg.r1());
     for (const SpeedMinimum& m : minima)
         if (m.speed <= floor) return true;
@@ -103,8 +115,8 @@ bool cusp_among(const Segment& seg, const std::vector<SpeedMinimum>& minima) {
 }
 
 template <class Segment>
-std::vector<double> breaks_for(const Segment& seg, const std::vector<SpeedMinimum>& minima) {
-    std::vector<double> br{0.0, 0.5, 1.0};
+BreakList breaks_for(const Segment& seg, const SpeedMinimaList& minima) {
+    BreakList br{0.0, 0.5, 1.0};
     for (const SpeedMinimum& m : minima) {
         if (m.width >= 0.25) continue;
         br.push_back(m.t);
@@ -119,11 +131,13 @@ std::vector<double> breaks_for(const Segment& seg, const std::vector<SpeedMinimu
     for (double h = w0; h < 0.25; h *= 2.0) br.push_back(h);
     for (double h = w1; h < 0.25; h *= 2.0) br.push_back(1.0 - h);
     std::sort(br.begin(), br.end());
-    std::vector<double> out;
-    for (double b : br)
-        if (out.empty() || b - out.back() > 1e-15) out.push_back(b);
-    if (out.back() != 1.0) out.back() = 1.0;
-    return out;
+    // Drop breakpoints within 1e-15 of the one kept before them, in place.
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < br.size(); ++i)
+        if (kept == 0 || br[i] - br[kept - 1] > 1e-15) br[kept++] = br[i];
+    br.resize(kept);
+    if (br.back() != 1.0) br.back() = 1.0;
+    return br;
 }
 inline SegmentEnergy assemble_energy(double r0, double r1, const Integrands& I, double err_l, double err_e) {
     SegmentEnergy r;
@@ -155,15 +169,15 @@ constexpr double kRombergAbsTol = 1e-300;
 // Reference path: Romberg on every piece of breaks_for, rel_tol per integral.
 template <class Segment, class Integrand>
 SegmentEnergy energy_reference(const Segment& seg, const Integrand& integrand, double rel_tol) {
-    const std::vector<SpeedMinimum> minima = speed_minima(seg);
+    const SpeedMinimaList minima = detail::speed_minima(seg);
     if (cusp_among(seg, minima)) return cusp_energy();
-    const std::vector<double> br = breaks_for(seg, minima);
+    const BreakList br = breaks_for(seg, minima);
     Integrands total{};
     Integrands err{};
     long evaluations = 0;
     Outcome outcome;
     for (std::size_t p = 0; p + 1 < br.size(); ++p) {
-        const numeric::RombergVectorResult<6> r = numeric::romberg_vector<6>(integrand, br[p], br[p + 1], rel_tol, kRombergAbsTol, kRombergLevels);
+        const numeric::RombergVectorResult<6> r = numeric::romberg_vector_batched<6>(integrand, br[p], br[p + 1], rel_tol, kRombergAbsTol, kRombergLevels);
         for (std::size_t c = 0; c < 6; ++c) {
             total[c] += r.value[c];
             err[c] += r.error_estimate[c];
@@ -178,19 +192,25 @@ SegmentEnergy energy_reference(const Segment& seg, const Integrand& integrand, d
 }
 
 // Fast path: a Gauss–Legendre rule (20 points; 8 for cheap scans) on the same pieces.
+inline constexpr int kMaxFastRuleNodes = 20;
 template <class Segment, class Integrand>
 SegmentEnergy energy_fast(const Segment& seg, const Integrand& integrand, const numeric::GaussLegendreRule& rule) {
-    const std::vector<SpeedMinimum> minima = speed_minima(seg);
+    if (rule.size() > kMaxFastRuleNodes) fail_input("cagd::fairness::detail::energy_fast", "at most 20 rule nodes, got " + std::to_string(rule.size()));
+    const SpeedMinimaList minima = detail::speed_minima(seg);
     if (cusp_among(seg, minima)) return cusp_energy();
-    const std::vector<double> br = breaks_for(seg, minima);
+    const BreakList br = breaks_for(seg, minima);
     Integrands total{};
     long evaluations = 0;
     for (std::size_t p = 0; p + 1 < br.size(); ++p) {
         const double half = 0.5 * (br[p + 1] - br[p]), mid = 0.5 * (br[p + 1] + br[p]);
+        // All nodes of the piece first (independent evaluations), then the sums in node order.
+        std::array<double, kMaxFastRuleNodes> t;
+        std::array<Integrands, kMaxFastRuleNodes> v;
+        for (int i = 0; i < rule.size(); ++i) t[static_cast<std::size_t>(i)] = mid + half * rule.nodes()[static_cast<std::size_t>(i)];
+        integrand(t.data(), static_cast<std::size_t>(rule.size()), v.data());
         for (int i = 0; i < rule.size(); ++i) {
-            const Integrands v = integrand(mid + half * rule.nodes()[i]);
-            const double w = half * rule.weights()[i];
-            for (std::size_t c = 0; c < v.size(); ++c) total[c] += w * v[c];
+            const double w = half * rule.weights()[static_cast<std::size_t>(i)];
+            for (std::size_t c = 0; c < total.size(); ++c) total[c] += w * v[static_cast<std::size_t>(i)][c];
         }
         evaluations += rule.size();
     }
