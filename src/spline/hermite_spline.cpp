@@ -42,18 +42,33 @@ namespace {
     }
 }
 
-// Rows first..last of span k's jet at local t (see span_jet_rows), with the column count known at
-// compile time (Dim ≤ 3), inlined into the jet_into overrides.
+// Rows First..Last of span k's jet at local t (see span_jet_rows), with the column count and the
+// rows known at compile time (Dim ≤ 3, First ≤ 1, Last ≤ 4), inlined into the jet_into overrides: the basis
+// rows are straight-line code, as in a hand-written loop.
+template <int Dim, int First, int Last>
+[[gnu::always_inline]] inline void hermite_jet_rows(const Eigen::MatrixXd& nodes, const Eigen::MatrixXd& d0, const Eigen::MatrixXd& d1, int k, double t, JetMatrix& out) {
+    out.resize(Last - First + 1, Dim);
+    double p0[Dim], p1[Dim], a[Dim], b[Dim];
+    for (int c = 0; c < Dim; ++c) p0[c] = nodes(k, c), p1[c] = nodes(k + 1, c), a[c] = d0(k, c), b[c] = d1(k, c);
+    double h[Last + 1][4];
+    for (int j = First; j <= Last; ++j) hermite_basis_row(j, t, h[j]);
+    for (int c = 0; c < Dim; ++c)
+        for (int j = First; j <= Last; ++j) out(j - First, c) = h[j][0] * p0[c] + h[j][1] * p1[c] + h[j][2] * a[c] + h[j][3] * b[c];
+}
+
 template <int Dim>
 [[gnu::always_inline]] inline void hermite_jet_rows(const Eigen::MatrixXd& nodes, const Eigen::MatrixXd& d0, const Eigen::MatrixXd& d1, int k, double t, int first, int last,
                                                     JetMatrix& out) {
-    out.resize(last - first + 1, Dim);
-    double p0[Dim], p1[Dim], a[Dim], b[Dim];
-    for (int c = 0; c < Dim; ++c) p0[c] = nodes(k, c), p1[c] = nodes(k + 1, c), a[c] = d0(k, c), b[c] = d1(k, c);
-    double h[4];
-    for (int j = first; j <= last; ++j) {
-        hermite_basis_row(j, t, h);
-        for (int c = 0; c < Dim; ++c) out(j - first, c) = h[0] * p0[c] + h[1] * p1[c] + h[2] * a[c] + h[3] * b[c];
+    // first ∈ {0, 1}, first ≤ last ≤ 3 (require_jet_capacity in the callers)
+    switch (4 * first + last) {
+        case 0: return hermite_jet_rows<Dim, 0, 0>(nodes, d0, d1, k, t, out);
+        case 1: return hermite_jet_rows<Dim, 0, 1>(nodes, d0, d1, k, t, out);
+        case 2: return hermite_jet_rows<Dim, 0, 2>(nodes, d0, d1, k, t, out);
+        case 3: return hermite_jet_rows<Dim, 0, 3>(nodes, d0, d1, k, t, out);
+        case 5: return hermite_jet_rows<Dim, 1, 1>(nodes, d0, d1, k, t, out);
+        case 6: return hermite_jet_rows<Dim, 1, 2>(nodes, d0, d1, k, t, out);
+        case 7: return hermite_jet_rows<Dim, 1, 3>(nodes, d0, d1, k, t, out);
+        default: return hermite_jet_rows<Dim, 1, 4>(nodes, d0, d1, k, t, out);  // derivatives_into(u, 4): row 4 is zero
     }
 }
 }  // namespace
@@ -138,8 +153,8 @@ PiecewiseHermiteCurve cubic_spline_interpolant(const PointList& points, Paramete
             rhs.row(k) = 3.0 * delta(spans - 1) / h[static_cast<std::size_t>(spans - 1)];
             continue;
         }
-        const int prev = (k - 1 + spans) % spans;  // span ending at node k
-        const int next = k % spans;                // span starting at node k
+        const int prev = k == 0 ? spans - 1 : k - 1;  // span ending at node k (closed: node 0 ends the last)
+        const int next = k;                           // span starting at node k (k < spans here)
         const double hp = h[static_cast<std::size_t>(prev)], hn = h[static_cast<std::size_t>(next)];
         sub[r] = hn;
         diag[r] = 2.0 * (hp + hn);
@@ -151,7 +166,7 @@ PiecewiseHermiteCurve cubic_spline_interpolant(const PointList& points, Paramete
     for (int k = 0; k < spans; ++k) {
         const double hk = h[static_cast<std::size_t>(k)];
         d0.row(k) = hk * m.row(k);
-        d1.row(k) = hk * m.row((k + 1) % N);
+        d1.row(k) = hk * m.row(k + 1 == N ? 0 : k + 1);
     }
     return PiecewiseHermiteCurve(std::move(nodes), std::move(d0), std::move(d1));
 }
