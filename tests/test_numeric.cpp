@@ -126,6 +126,47 @@ TEST(Tridiagonal, MatchesADenseSolveAndRejectsAZeroPivot) {
     EXPECT_THROW(cagd::numeric::solve_tridiagonal({0, 1}, {0, 1}, {1, 0}, Eigen::MatrixXd::Ones(2, 1)), cagd::InvalidInput);
 }
 
+// The solver eliminates all columns in one pass over the rows; each entry must still see the
+// textbook operations in the textbook order (the spline results are compared byte for byte).
+TEST(Tridiagonal, OnePassEliminationIsTheTextbookThomasBitForBit) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    for (const int cols : {1, 2, 3, 5}) {
+        const std::size_t n = 57;
+        std::vector<double> sub(n), diag(n), sup(n);
+        Eigen::MatrixXd R(static_cast<Eigen::Index>(n), cols);
+        for (std::size_t r = 0; r < n; ++r) sub[r] = u(rng), diag[r] = 2.1 + u(rng), sup[r] = u(rng);
+        for (Eigen::Index r = 0; r < R.rows(); ++r)
+            for (int j = 0; j < cols; ++j) R(r, j) = u(rng);
+        // Textbook: pivots and c first, then each column forward and back.
+        std::vector<double> c(n), pivot(n);
+        for (std::size_t r = 0; r < n; ++r) {
+            pivot[r] = r == 0 ? diag[0] : diag[r] - sub[r] * c[r - 1];
+            c[r] = r + 1 < n ? sup[r] / pivot[r] : 0.0;
+        }
+        Eigen::MatrixXd expected = R;
+        for (int j = 0; j < cols; ++j) {
+            double* x = expected.col(j).data();
+            x[0] /= pivot[0];
+            for (std::size_t r = 1; r < n; ++r) {
+                x[r] -= sub[r] * x[r - 1];
+                x[r] /= pivot[r];
+            }
+            for (std::size_t r = n - 1; r-- > 0;) x[r] -= c[r] * x[r + 1];
+        }
+        const Eigen::MatrixXd X = cagd::numeric::solve_tridiagonal(sub, diag, sup, R);
+        for (Eigen::Index r = 0; r < X.rows(); ++r)
+            for (int j = 0; j < cols; ++j) EXPECT_EQ(X(r, j), expected(r, j)) << "row " << r << ", column " << j << " of " << cols;
+    }
+    // A zero pivot after the first row (diag[1] − sub[1]·sup[0]/diag[0] = 1 − 1·1/1) still throws.
+    try {
+        cagd::numeric::solve_tridiagonal({0, 1, 1}, {1, 1, 3}, {1, 1, 0}, Eigen::MatrixXd::Ones(3, 2));
+        ADD_FAILURE() << "no exception for a zero pivot at row 1";
+    } catch (const cagd::InvalidInput& e) {
+        EXPECT_NE(std::string(e.what()).find("zero pivot at row 1"), std::string::npos) << e.what();
+    }
+}
+
 TEST(CyclicTridiagonal, MatchesDenseLuWithCornerEntries) {
     std::mt19937 rng(11);
     std::uniform_real_distribution<double> u(-1.0, 1.0);

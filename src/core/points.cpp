@@ -10,16 +10,18 @@ void require_valid_points(const PointList& points, Eigen::Index min_count, bool 
     const Eigen::Index n = points.rows();
     if (n < min_count) fail_input(who, "needs at least " + std::to_string(min_count) + " points, got " + std::to_string(n));
     if (points.cols() < 1 || points.cols() > 3) fail_input(who, "points must have 1, 2 or 3 coordinates, got " + std::to_string(points.cols()));
-    for (Eigen::Index i = 0; i < n; ++i)
-        for (Eigen::Index k = 0; k < points.cols(); ++k)
-            if (!std::isfinite(points(i, k)))
-                fail_input(who, "point " + std::to_string(i) + " coordinate " + std::to_string(k) + " is " + full_precision(points(i, k)) + "; coordinates must be finite");
+    if (!points.allFinite())  // one vectorised pass; the search for the first culprit only on failure
+        for (Eigen::Index i = 0; i < n; ++i)
+            for (Eigen::Index k = 0; k < points.cols(); ++k)
+                if (!std::isfinite(points(i, k)))
+                    fail_input(who, "point " + std::to_string(i) + " coordinate " + std::to_string(k) + " is " + full_precision(points(i, k)) + "; coordinates must be finite");
     if (!distinct_consecutive) return;
     const Eigen::Index pairs = closed ? n : n - 1;
     for (Eigen::Index i = 0; i < pairs; ++i) {
-        const Eigen::Index j = (i + 1) % n;
-        if (points.row(i) == points.row(j))
-            fail_input(who, "points " + std::to_string(i) + " and " + std::to_string(j) + " coincide (zero-length chord); consecutive points must differ");
+        const Eigen::Index j = i + 1 == n ? 0 : i + 1;  // (no modulo per point: an integer division)
+        bool same = true;
+        for (Eigen::Index k = 0; k < points.cols(); ++k) same = same && points(i, k) == points(j, k);
+        if (same) fail_input(who, "points " + std::to_string(i) + " and " + std::to_string(j) + " coincide (zero-length chord); consecutive points must differ");
     }
 }
 

@@ -1,5 +1,6 @@
 #include "cagd/methods/interpolant_forms.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 // Boost 1.74's pchip.hpp and makima.hpp call isnan unqualified on a double, which only compiles if
@@ -59,9 +60,9 @@ Interpolant catmull_rom_interpolant(const PointList& p, bool closed) {
 }  // namespace
 
 std::vector<double> chord_lengths(const PointList& p, bool closed) {
-    std::vector<double> h;
     const Eigen::Index n = p.rows(), spans = closed ? n : n - 1;
-    for (Eigen::Index k = 0; k < spans; ++k) h.push_back((p.row((k + 1) % n) - p.row(k)).norm());
+    std::vector<double> h(static_cast<std::size_t>(std::max<Eigen::Index>(spans, 0)));
+    for (Eigen::Index k = 0; k < spans; ++k) h[static_cast<std::size_t>(k)] = (p.row(k + 1 == n ? 0 : k + 1) - p.row(k)).norm();
     return h;
 }
 

@@ -455,11 +455,12 @@ InterpolationResult interpolate(const Method& method, const PointList& points, b
         return r;
     }
     for (Eigen::Index i = 0; i + 1 < points.rows() || (closed && i < points.rows()); ++i) {
-        const auto d = points.row((i + 1) % points.rows()) - points.row(i);  // an expression: no allocation per point
+        const Eigen::Index next = i + 1 == points.rows() ? 0 : i + 1;
+        const auto d = points.row(next) - points.row(i);  // an expression: no allocation per point
         const double chord = d.norm();
         if (!(chord >= kShortestChord * std::max(1.0, largest))) {
             InterpolationResult r;
-            r.outcome = {Status::not_representable, method.name + ": points " + std::to_string(i) + " and " + std::to_string((i + 1) % points.rows()) + " differ by " +
+            r.outcome = {Status::not_representable, method.name + ": points " + std::to_string(i) + " and " + std::to_string(next) + " differ by " +
                                                         full_precision(d.cwiseAbs().maxCoeff()) +
                                                         " at most per coordinate: below 1e-150 (times the coordinates' size) the chord's square underflows; scale the points up"};
             return r;
