@@ -32,6 +32,10 @@ constexpr int kCacheFormat = 5;  // 5: the runner-up's r0, r1 (TableReading::run
 // Cell of `theta` in the equally spaced periodic `nodes` (first node x0, spacing h = 1 / inv_h):
 // i = the last node ≤ theta (wrapping to the last cell for theta beyond the last node) and the
 // fraction u ∈ [0, 1] across the cell.
+// The node after node i of n around the period (i in [0, n)): a comparison, not a modulo (an
+// integer division, on every lookup).
+inline int next_node(int i, int n) { return i + 1 == n ? 0 : i + 1; }
+
 inline void locate(const std::vector<double>& nodes, double inv_h, double theta, int& i, double& u) {
     const int n = static_cast<int>(nodes.size());
     const double x0 = nodes.front();
@@ -300,7 +304,7 @@ namespace {
 // (x: every defined corner), the weights renormalised; `at(a, b)` gives a node's value.
 template <class NodeValue>
 TableValue blend_cell(int n, int i, int j, double u, double v, SegmentType want, const NodeValue& at, double theta0, double theta1) {
-    const int i1 = (i + 1) % n, j1 = (j + 1) % n;
+    const int i1 = next_node(i, n), j1 = next_node(j, n);
     const int ci[4] = {i, i1, i, i1}, cj[4] = {j, j, j1, j1};
     const double w[4] = {(1 - u) * (1 - v), u * (1 - v), (1 - u) * v, u * v};
     TableValue out;
@@ -342,7 +346,7 @@ TableValue PseudoEnergyTable::lookup(double theta0, double theta1, bool same_typ
     const double u = cell.u, v = cell.v;
     const int n = grid_.n;
     const auto at = [&](int a, int b) -> const TableValue& { return packed_[static_cast<std::size_t>(a * n + b)]; };
-    const SegmentType want = same_type_only ? at(u < 0.5 ? i : (i + 1) % n, v < 0.5 ? j : (j + 1) % n).type : SegmentType::x;
+    const SegmentType want = same_type_only ? at(u < 0.5 ? i : next_node(i, n), v < 0.5 ? j : next_node(j, n)).type : SegmentType::x;
     return blend_cell(n, i, j, u, v, want, at, theta0, theta1);
 }
 
@@ -385,12 +389,12 @@ TableValue PseudoEnergyTable::lookup(double theta0, double theta1, const TableRe
     bool done = false;
     if (reading.cell == CellRule::nearest_node_down || reading.cell == CellRule::nearest_node_up) {
         const bool up = reading.cell == CellRule::nearest_node_up;
-        const auto pick = [&](int lower, double t) { return (std::abs(t - 0.5) <= 1e-9 ? up : t > 0.5) ? (lower + 1) % n : lower; };
+        const auto pick = [&](int lower, double t) { return (std::abs(t - 0.5) <= 1e-9 ? up : t > 0.5) ? next_node(lower, n) : lower; };
         out = at(pick(i, u), pick(j, v));
         done = out.type != SegmentType::x;
     }
     if (!done) {
-        const SegmentType want = reading.cell == CellRule::same_type ? at(u < 0.5 ? i : (i + 1) % n, v < 0.5 ? j : (j + 1) % n).type : SegmentType::x;
+        const SegmentType want = reading.cell == CellRule::same_type ? at(u < 0.5 ? i : next_node(i, n), v < 0.5 ? j : next_node(j, n)).type : SegmentType::x;
         out = blend_cell(n, i, j, u, v, want, at, theta0, theta1);
     }
     if (reading.radii) {
@@ -519,7 +523,7 @@ double AngleMinimumTable::pseudo_energy(double theta) const {
     int i = 0;
     double u = 0.0;
     locate(nodes_, 1.0 / (nodes_[1] - nodes_[0]), theta, i, u);
-    const std::size_t a = static_cast<std::size_t>(i), b = static_cast<std::size_t>((i + 1) % static_cast<int>(nodes_.size()));
+    const std::size_t a = static_cast<std::size_t>(i), b = static_cast<std::size_t>(next_node(i, static_cast<int>(nodes_.size())));
     return (1 - u) * values_[a].pseudo_energy + u * values_[b].pseudo_energy;
 }
 
@@ -528,7 +532,7 @@ std::pair<double, double> AngleMinimumTable::lookup(double theta) const {
     int i = 0;
     double u = 0.0;
     locate(nodes_, 1.0 / (nodes_[1] - nodes_[0]), theta, i, u);
-    const std::size_t a = static_cast<std::size_t>(i), b = static_cast<std::size_t>((i + 1) % static_cast<int>(nodes_.size()));
+    const std::size_t a = static_cast<std::size_t>(i), b = static_cast<std::size_t>(next_node(i, static_cast<int>(nodes_.size())));
     const double j = (1 - u) * values_[a].pseudo_energy + u * values_[b].pseudo_energy;
     // θ1 is an angle: interpolate the wrapped difference.
     const double d = wrap_angle(values_[b].theta1 - values_[a].theta1);

@@ -87,7 +87,9 @@ PseudoSpline pseudo_spline(const PointList& points, const SegmentOracle& oracle,
     if (!(tie.position >= 0.0 && tie.position <= 1.0)) fail_input(who, "tie.position must lie in [0, 1], got " + full_precision(tie.position));
     const Eigen::Index np = points.rows();
     const Eigen::Index spans = closed ? np : np - 1;
-    const auto next = [&](Eigen::Index i) { return (i + 1) % np; };
+    // Neighbours by comparison, not modulo (an integer division per use, several per point).
+    const auto next = [&](Eigen::Index i) { return i + 1 == np ? Eigen::Index{0} : i + 1; };
+    const auto incoming = [&](Eigen::Index i) { return i == 0 ? spans - 1 : i - 1; };  // chord ending at point i
 
     // (Chords and tangents are recomputed where needed rather than stored: at 10^6 points the
     // fresh memory of every array costs page faults, a quarter of the construction's time.)
@@ -100,8 +102,8 @@ PseudoSpline pseudo_spline(const PointList& points, const SegmentOracle& oracle,
     }
     // Turn at point i (i with an incoming and an outgoing chord): φ_i − φ_{i−1}, wrapped.
     const auto turn = [&](Eigen::Index i) {
-        const Eigen::Index in = (i - 1 + spans) % spans;
-        const double t = wrap_angle(phi[static_cast<std::size_t>(i % spans)] - phi[static_cast<std::size_t>(in)]);
+        const Eigen::Index in = incoming(i);  // i < spans: the chord leaving point i is chord i
+        const double t = wrap_angle(phi[static_cast<std::size_t>(i)] - phi[static_cast<std::size_t>(in)]);
         if (std::abs(std::abs(t) - std::numbers::pi) <= 1e-12)
             fail_input(who,
                        "the points turn by pi at point " + std::to_string(i) + " (a hairpin): no tangent direction between the chords, the pseudo-energy table is undefined there");
@@ -128,7 +130,7 @@ PseudoSpline pseudo_spline(const PointList& points, const SegmentOracle& oracle,
     const Eigen::Index first = closed ? 0 : 1, last = closed ? np - 1 : np - 2;
     for (Eigen::Index i = first; i <= last; ++i) {
         const double tau = turn(i);  // φ_i − φ_{i−1}
-        const std::size_t in = static_cast<std::size_t>((i - 1 + spans) % spans), out = static_cast<std::size_t>(i);
+        const std::size_t in = static_cast<std::size_t>(incoming(i)), out = static_cast<std::size_t>(i);
         double a = 0.0;
         if (std::abs(tau) > 0.0) {
             if (mode == TangentOptimization::none) {
@@ -168,7 +170,8 @@ PseudoSpline pseudo_spline(const PointList& points, const SegmentOracle& oracle,
         PseudoSplineSpan s;
         s.theta0 = wrap_angle(ps.alpha[k]);
         const bool last_open = !closed && i == spans - 1;
-        s.theta1 = last_open ? wrap_angle(ps.alpha[k + 1]) : wrap_angle(ps.alpha[static_cast<std::size_t>(next(i))] + phi[static_cast<std::size_t>(next(i) % spans)] - phi[k]);
+        // next(i) < spans whenever the span is not the last of an open curve
+        s.theta1 = last_open ? wrap_angle(ps.alpha[k + 1]) : wrap_angle(ps.alpha[static_cast<std::size_t>(next(i))] + phi[static_cast<std::size_t>(next(i))] - phi[k]);
         if (std::abs(s.theta0) <= kStraight && std::abs(s.theta1) <= kStraight) {
             s.value = TableValue{0.0, 1.0, 1.0, 1.0, 0.0, SegmentType::c};
         } else {
