@@ -1,6 +1,8 @@
 // B-spline and Bézier evaluation, knot insertion, degree elevation, Bézier extraction.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 
 #include "cagd/analysis/curve_measures.hpp"
@@ -29,6 +31,44 @@ TEST(BSpline, BasisIsAPartitionOfUnityWithMatchingDerivatives) {
         const Eigen::MatrixXd N = basis_function_derivatives(4, c.knots(), span, t, 2);
         EXPECT_NEAR(N.row(0).sum(), 1.0, 1e-14) << "Σ N_i(t) = 1 at t = " << t;
         EXPECT_NEAR(N.row(1).sum(), 0.0, 1e-12) << "Σ N_i'(t) = 0";
+    }
+}
+
+// find_span starts from a bucket index on curves of many spans; it must return the span of the
+// definition (U_s ≤ t < U_{s+1}, the last non-empty one at t_max) for any knots: uneven gaps,
+// repeated knots (empty spans), a cluster of knots in one bucket, ends clamped or not, and t on
+// the knots and just beside them.
+TEST(BSpline, FindSpanIsTheSpanOfTheDefinitionOnManySpans) {
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> gap(0.1, 2.0), unit(0.0, 1.0);
+    for (const int variant : {0, 1, 2}) {
+        const int degree = 3, n = 500;
+        std::vector<double> knots(static_cast<std::size_t>(n + degree + 1));
+        double x = 0.0;
+        for (std::size_t i = 0; i < knots.size(); ++i) {
+            const bool repeat = variant == 1 && i % 7 == 3, cluster = variant == 2 && i > 200 && i < 260;
+            if (i > 0 && !repeat) x += cluster ? 1e-6 : gap(rng);
+            knots[i] = (variant == 2 && (i <= static_cast<std::size_t>(degree))) ? 0.0 : x;  // variant 2: clamped start
+        }
+        const BSplineCurve c(degree, knots, Eigen::MatrixXd::Zero(n, 2));
+        const auto by_definition = [&](double t) {
+            if (t >= c.t_max()) {
+                int s = n - 1;
+                while (s > degree && knots[static_cast<std::size_t>(s)] == knots[static_cast<std::size_t>(s) + 1]) --s;
+                return s;
+            }
+            return static_cast<int>(std::upper_bound(knots.begin() + degree, knots.begin() + n, t) - knots.begin()) - 1;
+        };
+        std::vector<double> ts;
+        for (int i = degree; i <= n; ++i) {
+            const double k = knots[static_cast<std::size_t>(i)];
+            ts.insert(ts.end(), {k, std::nextafter(k, -1e300), std::nextafter(k, 1e300)});
+        }
+        for (int i = 0; i < 20000; ++i) ts.push_back(c.t_min() + unit(rng) * (c.t_max() - c.t_min()));
+        for (double t : ts) {
+            if (t < c.t_min() || t > c.t_max()) continue;
+            ASSERT_EQ(c.find_span(t), by_definition(t)) << "variant " << variant << ", t = " << t;
+        }
     }
 }
 

@@ -10,6 +10,7 @@ namespace cagd {
 
 namespace {
 const char* const kBSplineWho = "cagd::BSplineCurve";
+constexpr int kIndexedSpans = 64;  // fewer spans: the binary search alone
 
 double binomial_coefficient(int n, int k) {
     double r = 1.0;
@@ -43,8 +44,40 @@ int BSplineCurve::find_span(double t) const {
         while (s > degree_ && knots_[s] == knots_[s + 1]) --s;
         return s;
     }
-    const auto it = std::upper_bound(knots_.begin() + degree_, knots_.begin() + n, t);
+    // The span s with U_s ≤ t < U_{s+1}, p ≤ s < n (unique: an empty span fails t < U_{s+1}).
+    // On a curve of many spans (a sampled curve asks for millions) first from the bucket of t: a
+    // start at or before the span, a short forward scan, and the definition checked; the binary
+    // search otherwise. The same span either way.
+    auto from = knots_.begin() + degree_;
+    if (n - degree_ >= kIndexedSpans && t >= t_min()) {
+        const SpanBuckets& b = span_buckets();
+        const auto bucket = static_cast<std::size_t>(std::min(static_cast<double>(b.first.size() - 1), (t - t_min()) * b.per_unit));
+        int s = b.first[bucket];
+        if (knots_[static_cast<std::size_t>(s)] <= t) {
+            for (int step = 0; step < 8; ++step, ++s)
+                if (s + 1 == n || t < knots_[static_cast<std::size_t>(s) + 1]) return s;  // (s + 1 = n: t < t_max = U_n)
+            from = knots_.begin() + s;                                                    // U_s ≤ t still: search on from there
+        }
+    }
+    const auto it = std::upper_bound(from, knots_.begin() + n, t);
     return static_cast<int>(it - knots_.begin()) - 1;
+}
+
+const BSplineCurve::SpanBuckets& BSplineCurve::span_buckets() const {
+    std::call_once(*span_buckets_.once, [&] {
+        const int n = static_cast<int>(control_.rows()), count = n - degree_;
+        SpanBuckets b;
+        b.per_unit = count / (t_max() - t_min());
+        b.first.resize(static_cast<std::size_t>(count));
+        int s = degree_;
+        for (int k = 0; k < count; ++k) {
+            const double left = t_min() + k / b.per_unit;  // (rounding here costs a longer scan or the binary search, never a wrong span)
+            while (s + 1 < n && knots_[static_cast<std::size_t>(s) + 1] <= left) ++s;
+            b.first[static_cast<std::size_t>(k)] = s;
+        }
+        span_buckets_.value = std::move(b);
+    });
+    return span_buckets_.value;
 }
 
 namespace {
@@ -139,10 +172,34 @@ const double* BSplineCurve::taylor(int span) const {
                 for (int e = 0; e < dim; ++e) c[static_cast<std::size_t>(((s - p) * (p + 1) + k) * dim + e)] = d(k, e) / factorial;
             }
         }
-        taylor_.coefficients = std::move(c);
+        taylor_.value = std::move(c);
     });
-    return taylor_.coefficients.data() + static_cast<std::size_t>((span - degree_) * (degree_ + 1) * dimension());
+    return taylor_.value.data() + static_cast<std::size_t>((span - degree_) * (degree_ + 1) * dimension());
 }
+
+namespace {
+// k!/(k−d)! = k (k−1) ⋯ (k−d+1), products of small integers: exact in double. A table for the
+// orders of the stack path (k < kStackOrder), the product otherwise — the same value.
+struct FallingFactorials {
+    double value[kStackOrder][kStackOrder]{};
+    constexpr FallingFactorials() {
+        for (int k = 0; k < kStackOrder; ++k)
+            for (int d = 0; d <= k; ++d) {
+                double f = 1.0;
+                for (int i = 0; i < d; ++i) f *= k - i;
+                value[k][d] = f;
+            }
+    }
+};
+constexpr FallingFactorials kFalling;
+inline double falling_factorial(int k, int d) {
+    if (k < kStackOrder) [[likely]]
+        return kFalling.value[k][d];
+    double f = 1.0;
+    for (int i = 0; i < d; ++i) f *= k - i;
+    return f;
+}
+}  // namespace
 
 // Rows 0..order of the jet at t from the Taylor coefficients of `span`: r^(d)(t) = Σ_{k≥d}
 // k!/(k−d)! c_k h^{k−d}, h = t − (the span's middle), by Horner; rows beyond the degree are zero.
@@ -171,14 +228,8 @@ void BSplineCurve::taylor_jet(int span, double t, int order, Out& out) const {
                 out(d, e) = 0.0;
                 continue;
             }
-            // falling factorial k!/(k−d)! for k = p, p−1, …, d
-            const auto falling = [d](int k) {
-                double f = 1.0;
-                for (int i = 0; i < d; ++i) f *= k - i;
-                return f;
-            };
-            double v = falling(p) * c[p * dim + e];
-            for (int k = p - 1; k >= d; --k) v = v * h + falling(k) * c[k * dim + e];
+            double v = falling_factorial(p, d) * c[p * dim + e];
+            for (int k = p - 1; k >= d; --k) v = v * h + falling_factorial(k, d) * c[k * dim + e];
             out(d, e) = v;
         }
 }

@@ -51,20 +51,28 @@ public:
     int find_span(double t) const;
 
 private:
-    // Taylor coefficients of every span, built once on first use (a copy builds its own).
-    struct TaylorCache {
+    // A value built once on first use, from a const member (a copy builds its own).
+    template <class T>
+    struct OnceCache {
         std::unique_ptr<std::once_flag> once = std::make_unique<std::once_flag>();
-        std::vector<double> coefficients;  // span s − p: (p + 1) × dimension, c_0 … c_p, row-major
-        TaylorCache() = default;
-        TaylorCache(const TaylorCache&) : once(std::make_unique<std::once_flag>()) {}
-        TaylorCache& operator=(const TaylorCache&) {
+        T value{};
+        OnceCache() = default;
+        OnceCache(const OnceCache&) : once(std::make_unique<std::once_flag>()) {}
+        OnceCache& operator=(const OnceCache&) {
             once = std::make_unique<std::once_flag>();
-            coefficients.clear();
+            value = T{};
             return *this;
         }
-        TaylorCache(TaylorCache&&) noexcept = default;
-        TaylorCache& operator=(TaylorCache&&) noexcept = default;
+        OnceCache(OnceCache&&) noexcept = default;
+        OnceCache& operator=(OnceCache&&) noexcept = default;
     };
+    // Equal buckets over [t_min, t_max), one per span: first[b] is the span holding the bucket's
+    // left end, where find_span starts its forward scan.
+    struct SpanBuckets {
+        std::vector<int> first;
+        double per_unit = 0.0;  // buckets per unit of t
+    };
+    const SpanBuckets& span_buckets() const;
     const double* taylor(int span) const;  // c_0 … c_p of `span`
     double span_middle(int span) const;
     template <class Out>
@@ -73,7 +81,8 @@ private:
     int degree_;
     std::vector<double> knots_;
     Eigen::MatrixXd control_;
-    mutable TaylorCache taylor_;
+    mutable OnceCache<std::vector<double>> taylor_;  // span s − p: (p + 1) × dimension, c_0 … c_p, row-major
+    mutable OnceCache<SpanBuckets> span_buckets_;
 };
 
 // Derivatives 0..order of the p+1 basis functions non-zero on span s at t:
