@@ -211,3 +211,48 @@ TEST(HosakaSpline, TangentEndsForAnyOrder) {
     o.end_tangent = Eigen::Vector3d(1, 0, 0);
     EXPECT_THROW(spline::hosaka_spline(p, 2, o), InvalidInput);
 }
+
+// jet_into and derivatives_into take a row's basis values at once (HosakaBasis::values) and sums scalars; it must give
+// jet()'s values bit for bit (the same products and sums in the same order), for m = 1..3, planar
+// and space, every order up to the capacity, and values() must be p() and q().
+TEST(HosakaSpline, JetIntoIsTheJetBitForBit) {
+    for (const int m : {1, 2, 3}) {
+        const spline::HosakaBasis b(m);
+        std::vector<double> p(static_cast<std::size_t>(m) + 1), q(p.size());
+        for (const double t : {0.0, 0.3, 1.0})
+            for (int k = 0; k <= 2 * m + 3; ++k) {
+                b.values(t, k, p.data(), q.data());
+                for (int i = 0; i <= m; ++i) {
+                    EXPECT_EQ(p[static_cast<std::size_t>(i)], b.p(i, t, k)) << "m " << m << ", i " << i << ", k " << k;
+                    EXPECT_EQ(q[static_cast<std::size_t>(i)], b.q(i, t, k)) << "m " << m << ", i " << i << ", k " << k;
+                }
+            }
+        EXPECT_THROW(b.values(0.5, -1, p.data(), q.data()), InvalidInput);
+        for (const int dim : {2, 3}) {
+            std::mt19937 rng(static_cast<unsigned>(10 * m + dim));
+            std::uniform_real_distribution<double> u(-2.0, 2.0);
+            PointList pts(7, dim);
+            for (Eigen::Index r = 0; r < pts.rows(); ++r)
+                for (int c = 0; c < dim; ++c) pts(r, c) = u(rng) + 3.0 * static_cast<double>(r);
+            const spline::HosakaCurve curve = spline::hosaka_spline(pts, m);
+            JetMatrix J;
+            for (int step = 0; step <= 60; ++step) {
+                const double x = curve.t_max() * step / 60.0;
+                for (int order = 0; order < kJetCapacity; ++order) {
+                    curve.jet_into(x, order, J);
+                    const Eigen::MatrixXd expected = curve.jet(x, order);
+                    ASSERT_EQ(J.rows(), expected.rows());
+                    for (Eigen::Index r = 0; r < J.rows(); ++r)
+                        for (int c = 0; c < dim; ++c) EXPECT_EQ(J(r, c), expected(r, c)) << "m " << m << ", u " << x << ", row " << r;
+                }
+                for (int order = 1; order <= kJetCapacity; ++order) {  // derivatives_into: the jet without its position
+                    curve.derivatives_into(x, order, J);
+                    const Eigen::MatrixXd expected = curve.jet(x, order).bottomRows(order);
+                    ASSERT_EQ(J.rows(), expected.rows());
+                    for (Eigen::Index r = 0; r < J.rows(); ++r)
+                        for (int c = 0; c < dim; ++c) EXPECT_EQ(J(r, c), expected(r, c)) << "m " << m << ", u " << x << ", derivative " << r + 1;
+                }
+            }
+        }
+    }
+}

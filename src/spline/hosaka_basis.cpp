@@ -67,6 +67,20 @@ double HosakaBasis::eval(const std::vector<std::vector<std::vector<double>>>& ta
     return v;
 }
 
+void HosakaBasis::values(double t, int k, double* p_out, double* q_out) const {
+    if (k < 0) fail_input("cagd::spline::HosakaBasis", "derivative order must be >= 0, got " + std::to_string(k));
+    const auto horner = [t](const std::vector<double>& c) {
+        double v = 0.0;
+        for (auto it = c.rbegin(); it != c.rend(); ++it) v = v * t + *it;
+        return v;
+    };
+    for (int i = 0; i <= m_; ++i) {
+        const auto a = static_cast<std::size_t>(i), b = static_cast<std::size_t>(k);
+        p_out[i] = k > 2 * m_ + 1 ? 0.0 : horner(p_[a][b]);
+        q_out[i] = k > 2 * m_ + 1 ? 0.0 : horner(q_[a][b]);
+    }
+}
+
 double HosakaBasis::p(int i, double t, int k) const { return eval(p_, i, t, k); }
 double HosakaBasis::q(int i, double t, int k) const { return eval(q_, i, t, k); }
 

@@ -28,6 +28,9 @@ public:
     // k-th derivative of p_i(m, ·) / q_i(m, ·) at t (any real t; k > 2m+1 gives 0).
     double p(int i, double t, int k = 0) const;
     double q(int i, double t, int k = 0) const;
+    // p_i and q_i, i = 0..m, at t for one derivative order k ≥ 0 (InvalidInput otherwise) into
+    // p_out[0..m] and q_out[0..m]: the same values as p() and q(), checked once (for jets).
+    void values(double t, int k, double* p_out, double* q_out) const;
 
 private:
     int m_;

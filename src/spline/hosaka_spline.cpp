@@ -73,10 +73,37 @@ Eigen::MatrixXd HosakaCurve::segment_jet(int s, double t, int order) const {
     return out;
 }
 
+namespace {
+// Rows first..last of segment s's jet at t into out, as hosaka_segment_jet computes them (row k
+// += p_i S_i + q_i E_i, i = 0..m: the same products and sums in the same order) but with a row's
+// basis values at once and scalar sums, without per-value checks or dynamic row expressions.
+// m ≤ kMaxJetM (the callers fall back to hosaka_segment_jet otherwise).
+constexpr int kMaxJetM = 15;
+void hosaka_jet_rows(const HosakaBasis& basis, const Eigen::MatrixXd& start, const Eigen::MatrixXd& end, int m, int s, double t, int first, int last, JetMatrix& out) {
+    const int dim = static_cast<int>(start.cols());
+    const Eigen::Index row0 = static_cast<Eigen::Index>(s) * (m + 1);
+    out.setZero(last - first + 1, dim);
+    double p[kMaxJetM + 1], q[kMaxJetM + 1];
+    for (int k = first; k <= last; ++k) {
+        basis.values(t, k, p, q);
+        for (int i = 0; i <= m; ++i)
+            for (int c = 0; c < dim; ++c) out(k - first, c) += p[i] * start(row0 + i, c) + q[i] * end(row0 + i, c);
+    }
+}
+}  // namespace
+
 void HosakaCurve::jet_into(double u, int order, JetMatrix& out) const {
     require_jet_capacity("cagd::spline::HosakaCurve::jet_into", order + 1, dimension());
     const auto [s, t] = locate_unit_piece("cagd::spline::HosakaCurve::jet", u, segments(), order);
-    hosaka_segment_jet(basis_, start_, end_, m(), s, t, order, out);
+    if (m() > kMaxJetM) return hosaka_segment_jet(basis_, start_, end_, m(), s, t, order, out);
+    hosaka_jet_rows(basis_, start_, end_, m(), s, t, 0, order, out);
+}
+
+void HosakaCurve::derivatives_into(double u, int order, JetMatrix& out) const {
+    require_jet_capacity("cagd::spline::HosakaCurve::derivatives_into", order, dimension());
+    if (m() > kMaxJetM || order < 1) return Curve::derivatives_into(u, order, out);
+    const auto [s, t] = locate_unit_piece("cagd::spline::HosakaCurve::derivatives", u, segments(), order);
+    hosaka_jet_rows(basis_, start_, end_, m(), s, t, 1, order, out);
 }
 
 HosakaSpline hosaka_c2_spline(const PointList& points, const HosakaSplineOptions& o) {

@@ -47,7 +47,8 @@ public:
     double t_max() const override { return segments(); }
     Eigen::MatrixXd jet(double u, int order) const override;
     Eigen::MatrixXd jet_from_left(double u, int order) const override;
-    void jet_into(double u, int order, JetMatrix& out) const override;  // as jet, without allocating
+    void jet_into(double u, int order, JetMatrix& out) const override;          // as jet, without allocating
+    void derivatives_into(double u, int order, JetMatrix& out) const override;  // likewise
     std::vector<double> breakpoints() const override;
     // Row k: the k-th derivative of segment s at its local t ∈ [0, 1] (one-sided at the joins).
     Eigen::MatrixXd segment_jet(int s, double t, int order) const;
