@@ -156,6 +156,31 @@ TEST(IntrinsicCurve, DerivativesAreTheJetWithoutItsPosition) {
     EXPECT_EQ(base.Curve::derivatives(2.0, 3), c.jet(2.0, 3).bottomRows(3));
 }
 
+// Positions at a segment's ends come from the stored points, not a fresh quadrature; they must be
+// what the quadrature gives, bit for bit: r_j + d_j ∫_0^τ (cos ψ, sin ψ) dt at τ = 0 and τ = 1.
+TEST(IntrinsicCurve, PositionsAtTheJoinsAreTheQuadratureBitForBit) {
+    const CurvatureProfileProblem P = closed_problem(3);
+    const IntrinsicCurve c(Eigen::Vector2d(-0.0, 2), TangentAngleSpline::from_unknowns(P.layout, c2_start(P)));
+    const TangentAngleSpline& psi = c.tangent_angle();
+    JetMatrix J;
+    for (int j = 0; j < psi.segments(); ++j) {
+        const double w = psi.breakpoints()[static_cast<std::size_t>(j)], d = psi.segment_lengths()[static_cast<std::size_t>(j)];
+        const Eigen::RowVector2d start = c.breakpoint_points().row(j), quadrature_start = start + d * direction_integrals(psi.bezier().row(j).transpose(), 0.0).transpose();
+        c.jet_into(w, 1, J);  // s = w_j: segment j at τ = 0
+        EXPECT_EQ(J(0, 0), quadrature_start(0)) << "segment " << j;
+        EXPECT_EQ(J(0, 1), quadrature_start(1)) << "segment " << j;
+        EXPECT_EQ(std::signbit(J(0, 0)), std::signbit(quadrature_start(0))) << "segment " << j << ": r_j + (+0) is +0 for r_j = −0";
+        EXPECT_EQ(c.jet(w, 0).row(0), J.row(0)) << "segment " << j;
+        const Eigen::RowVector2d quadrature_end = start + d * direction_integrals(psi.bezier().row(j).transpose(), 1.0).transpose();
+        if (j + 1 == psi.segments()) {
+            c.jet_into(c.length(), 0, J);  // the last segment at τ = (L − w)/d (1 unless it rounds below)
+            const double tau = std::min(1.0, std::max(0.0, (c.length() - w) / d));
+            EXPECT_EQ(J.row(0), start + d * direction_integrals(psi.bezier().row(j).transpose(), tau).transpose());
+        }
+        EXPECT_EQ(c.breakpoint_points().row(j + 1), quadrature_end) << "segment " << j;
+    }
+}
+
 TEST(TangentAngleSpline, LocalKnotsAreTheFarinKnotsShiftedToTheSegmentStart) {
     const CurvatureProfileProblem P = fig3_problem();
     const TangentAngleSpline psi = TangentAngleSpline::from_unknowns(P.layout, c2_start(P));

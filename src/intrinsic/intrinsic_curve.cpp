@@ -26,6 +26,17 @@ Eigen::MatrixXd IntrinsicCurve::jet_from_left(double s, int order) const {
 }
 
 namespace {
+// r(s) in segment j at local τ = (s − w_j)/d_j: r_j + d_j ∫_0^τ (cos ψ, sin ψ) dt. At τ = 0 the
+// integral is +0 and at τ = 1 it is the one the constructor summed into r_{j+1}, so both ends are
+// taken from the stored points, bit for bit as the quadrature gives them (+ 0.0: r_j + d_j·(+0)
+// turns a −0 coordinate into +0), without its 16 sines and cosines per piece — a sampled curve
+// asks for every join twice.
+Eigen::RowVector2d position_in_segment(const Eigen::MatrixXd& points, const TangentAngleSpline& psi, int j, double d, double tau) {
+    if (tau == 0.0) return points.row(j).array() + 0.0;
+    if (tau == 1.0) return points.row(j + 1);
+    return points.row(j) + d * direction_integrals(psi.bezier().row(j).transpose(), tau).transpose();
+}
+
 // Rows first.. of a jet: d^k r/ds^k, k = 1..order, from the ψ jet a = (ψ, ψ', …) of segment j.
 template <class Jet, class Out>
 void write_derivative_rows(const Jet& a, int order, Out& out, int first) {
@@ -42,7 +53,7 @@ Eigen::MatrixXd IntrinsicCurve::jet_in_segment(int j, double s, int order) const
     const double w = psi_.breakpoints()[static_cast<std::size_t>(j)], d = psi_.segment_lengths()[static_cast<std::size_t>(j)];
     const double tau = std::min(1.0, std::max(0.0, (s - w) / d));
     Eigen::MatrixXd out(order + 1, 2);
-    out.row(0) = points_.row(j) + d * direction_integrals(psi_.bezier().row(j).transpose(), tau).transpose();
+    out.row(0) = position_in_segment(points_, psi_, j, d, tau);
     if (order == 0) return out;
     write_derivative_rows(psi_.jet_in_segment(j, s, order - 1), order, out, 1);
     return out;
@@ -55,7 +66,7 @@ void IntrinsicCurve::jet_into(double s, int order, JetMatrix& out) const {
     const double w = psi_.breakpoints()[static_cast<std::size_t>(j)], d = psi_.segment_lengths()[static_cast<std::size_t>(j)];
     const double tau = std::min(1.0, std::max(0.0, (s - w) / d));
     out.resize(order + 1, 2);
-    out.row(0) = points_.row(j) + d * direction_integrals(psi_.bezier().row(j).transpose(), tau).transpose();
+    out.row(0) = position_in_segment(points_, psi_, j, d, tau);
     if (order == 0) return;
     double a[4];
     psi_.jet_in_segment_into(j, s, order - 1, a);
