@@ -151,3 +151,37 @@ TEST(BSpline, RejectsBadInput) {
     EXPECT_THROW(ok.jet(ok.t_max() + 0.1, 0), InvalidInput);
     EXPECT_THROW(BezierCurve(Eigen::MatrixXd::Zero(3, 2), 1.0, 1.0), InvalidInput);
 }
+
+// jet_into and derivatives_into go through Taylor rows unrolled for degrees 2..5 in 2 and 3
+// dimensions (a loop otherwise), and derivatives_into skips the position; all must be jet()'s
+// values bit for bit — on knots (Piegl & Tiller A2.3) and between them.
+TEST(BSpline, JetIntoAndDerivativesIntoAreTheJetBitForBit) {
+    for (const int degree : {1, 2, 3, 5, 6})
+        for (const int dim : {2, 3}) {
+            std::mt19937 rng(static_cast<unsigned>(7 * degree + dim));
+            std::uniform_real_distribution<double> u(-1.0, 1.0), gap(0.2, 1.5);
+            const int n = 90;
+            std::vector<double> knots{0.0};
+            for (int i = 1; i < n + degree + 1; ++i) knots.push_back(knots.back() + gap(rng));
+            Eigen::MatrixXd control(n, dim);
+            for (int i = 0; i < n; ++i)
+                for (int e = 0; e < dim; ++e) control(i, e) = u(rng);
+            const BSplineCurve c(degree, knots, control);
+            std::vector<double> ts{c.t_min(), c.t_max(), knots[static_cast<std::size_t>(degree) + 5]};
+            for (int i = 0; i < 200; ++i) ts.push_back(c.t_min() + (c.t_max() - c.t_min()) * (i + 0.37) / 200.0);
+            JetMatrix J;
+            for (double t : ts) {
+                for (int order = 0; order < kJetCapacity; ++order) {
+                    c.jet_into(t, order, J);
+                    ASSERT_EQ(J.rows(), order + 1);
+                    EXPECT_EQ(Eigen::MatrixXd(J), c.jet(t, order)) << "degree " << degree << ", dim " << dim << ", t " << t << ", order " << order;
+                }
+                for (int order = 1; order < kJetCapacity; ++order) {
+                    c.derivatives_into(t, order, J);
+                    ASSERT_EQ(J.rows(), order);
+                    EXPECT_EQ(Eigen::MatrixXd(J), c.jet(t, order).bottomRows(order)) << "degree " << degree << ", dim " << dim << ", t " << t << ", order " << order;
+                }
+            }
+            EXPECT_THROW(c.derivatives_into(c.t_max() + 1.0, 1, J), InvalidInput);
+        }
+}

@@ -201,6 +201,42 @@ inline double falling_factorial(int k, int d) {
 }
 }  // namespace
 
+namespace {
+// Rows first..last of the jet from one span's Taylor coefficients c (c_0 … c_p, row-major, `dim`
+// per row) at h = t − (the span's middle): r^(d) = Σ_{k≥d} k!/(k−d)! c_k h^{k−d} by Horner, zero
+// beyond the degree; into out's rows 0..last − first. The usual degrees and dimensions with both
+// fixed at compile time (unrolled), the same operations in the same order.
+template <int P, int Dim, class Out>
+void taylor_rows_fixed(int p, int dim, const double* c, double h, int first, int last, Out& out) {
+    const int pp = P > 0 ? P : p, dd = Dim > 0 ? Dim : dim;
+    for (int d = first; d <= last; ++d)
+        for (int e = 0; e < dd; ++e) {
+            if (d > pp) {
+                out(d - first, e) = 0.0;
+                continue;
+            }
+            double v = falling_factorial(pp, d) * c[pp * dd + e];
+            for (int k = pp - 1; k >= d; --k) v = v * h + falling_factorial(k, d) * c[k * dd + e];
+            out(d - first, e) = v;
+        }
+}
+
+template <class Out>
+void taylor_rows(int p, int dim, const double* c, double h, int first, int last, Out& out) {
+    switch (dim == 2 || dim == 3 ? 8 * dim + p : -1) {
+        case 18: return taylor_rows_fixed<2, 2>(p, dim, c, h, first, last, out);
+        case 19: return taylor_rows_fixed<3, 2>(p, dim, c, h, first, last, out);
+        case 20: return taylor_rows_fixed<4, 2>(p, dim, c, h, first, last, out);
+        case 21: return taylor_rows_fixed<5, 2>(p, dim, c, h, first, last, out);
+        case 26: return taylor_rows_fixed<2, 3>(p, dim, c, h, first, last, out);
+        case 27: return taylor_rows_fixed<3, 3>(p, dim, c, h, first, last, out);
+        case 28: return taylor_rows_fixed<4, 3>(p, dim, c, h, first, last, out);
+        case 29: return taylor_rows_fixed<5, 3>(p, dim, c, h, first, last, out);
+        default: return taylor_rows_fixed<0, 0>(p, dim, c, h, first, last, out);
+    }
+}
+}  // namespace
+
 // Rows 0..order of the jet at t from the Taylor coefficients of `span`: r^(d)(t) = Σ_{k≥d}
 // k!/(k−d)! c_k h^{k−d}, h = t − (the span's middle), by Horner; rows beyond the degree are zero.
 template <class Out>
@@ -222,16 +258,7 @@ void BSplineCurve::taylor_jet(int span, double t, int order, Out& out) const {
     const double* c = taylor(span);
     const double h = t - span_middle(span);
     out.resize(order + 1, dim);
-    for (int d = 0; d <= order; ++d)
-        for (int e = 0; e < dim; ++e) {
-            if (d > p) {
-                out(d, e) = 0.0;
-                continue;
-            }
-            double v = falling_factorial(p, d) * c[p * dim + e];
-            for (int k = p - 1; k >= d; --k) v = v * h + falling_factorial(k, d) * c[k * dim + e];
-            out(d, e) = v;
-        }
+    taylor_rows(p, dim, c, h, 0, order, out);
 }
 
 void BSplineCurve::jet_into(double t, int order, JetMatrix& out) const {
@@ -244,8 +271,17 @@ void BSplineCurve::jet_into(double t, int order, JetMatrix& out) const {
 void BSplineCurve::derivatives_into(double t, int order, JetMatrix& out) const {
     require_jet_capacity("cagd::BSplineCurve::derivatives_into", order, dimension());
     if (order + 1 > kJetCapacity) return Curve::derivatives_into(t, order, out);  // the jet would not fit
+    if (!(t >= t_min() && t <= t_max()))
+        fail_input("cagd::BSplineCurve::derivatives_into", "t = " + full_precision(t) + " outside [" + full_precision(t_min()) + ", " + full_precision(t_max()) + "]");
+    const int span = find_span(t);
+    if (t != knots_[static_cast<std::size_t>(span)] && t != knots_[static_cast<std::size_t>(span) + 1]) {
+        // Off the knots: the Taylor rows 1..order alone (the position is not needed).
+        out.resize(order, dimension());
+        taylor_rows(degree_, dimension(), taylor(span), t - span_middle(span), 1, order, out);
+        return;
+    }
     JetMatrix jet;
-    jet_into(t, order, jet);
+    taylor_jet(span, t, order, jet);
     out = jet.bottomRows(order);
 }
 
