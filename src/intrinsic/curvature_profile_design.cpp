@@ -5,6 +5,7 @@
 
 #include <Eigen/SparseLU>
 #include <algorithm>
+#include <span>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -437,6 +438,11 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
     const double tol = options.tolerance * data_scale(P);
     const char* method = options.step == NewtonStep::pseudo_inverse ? "Newton with the Moore–Penrose step" : "Newton with sparse LU";
     sol.u = start;
+    // The Jacobian's sparsity pattern depends on the layout only, so its symbolic analysis (the
+    // column ordering, a tenth of a sparse step's cost) is done once and redone only if the
+    // pattern ever differs; the numeric factorisation is the same either way.
+    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
+    std::vector<int> analysed_outer, analysed_inner;
     for (int it = 0;; ++it) {
         // A diverging iterate winds ψ by hundreds of turns between neighbouring ordinates; the
         // integrals of such a segment cost O(turning) and mean nothing: stop it as unconverged.
@@ -473,8 +479,14 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
             sol.rank = static_cast<int>(cod.rank());
             delta = cod.solve(sys.f);
         } else {
-            Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
-            lu.compute(sys.jacobian);
+            const Eigen::SparseMatrix<double>& J = sys.jacobian;
+            const std::span<const int> outer(J.outerIndexPtr(), static_cast<std::size_t>(J.outerSize()) + 1), inner(J.innerIndexPtr(), static_cast<std::size_t>(J.nonZeros()));
+            if (!J.isCompressed() || !std::ranges::equal(outer, analysed_outer) || !std::ranges::equal(inner, analysed_inner)) {
+                lu.analyzePattern(J);
+                analysed_outer.assign(outer.begin(), outer.end());
+                analysed_inner.assign(inner.begin(), inner.end());
+            }
+            lu.factorize(J);
             if (lu.info() != Eigen::Success) {
                 sol.outcome = {Status::no_convergence, std::string(method) + ": the Jacobian is singular at iteration " + std::to_string(it) + " (use the pseudo-inverse step)"};
                 return sol;
