@@ -223,7 +223,7 @@ void taylor_rows_fixed(int p, int dim, const double* c, double h, int first, int
 
 template <class Out>
 void taylor_rows(int p, int dim, const double* c, double h, int first, int last, Out& out) {
-    switch (dim == 2 || dim == 3 ? 8 * dim + p : -1) {
+    switch ((dim == 2 || dim == 3) && p >= 2 && p <= 5 ? 8 * dim + p : -1) {  // (a key unique to each case)
         case 18: return taylor_rows_fixed<2, 2>(p, dim, c, h, first, last, out);
         case 19: return taylor_rows_fixed<3, 2>(p, dim, c, h, first, last, out);
         case 20: return taylor_rows_fixed<4, 2>(p, dim, c, h, first, last, out);
