@@ -162,29 +162,14 @@ double piece_bending_energy(const Curve& c, double a, double b, int pieces) {
 }
 
 std::pair<double, double> piece_length_and_bending_energy(const Curve& c, double a, double b, int pieces) {
-    if (pieces < 1) fail_input("cagd::analysis", "pieces must be >= 1, got " + std::to_string(pieces));
-    // rule20().integrate_piecewise(f, subdivided({a, b}, pieces)) written out, with the same
-    // breaks, nodes and sums in the same order, but the integrand inline and no vector of breaks
-    // (fairness_measures calls this for every piece of every curve it measures).
-    const numeric::GaussLegendreRule& rule = rule20();
-    const std::vector<double>&nodes = rule.nodes(), &weights = rule.weights();
-    double first = 0.0, second = 0.0;
     JetMatrix D;
-    for (int j = 0; j < pieces; ++j) {
-        const double lo = a + (b - a) * j / pieces, hi = j + 1 < pieces ? a + (b - a) * (j + 1) / pieces : b;
-        const double half = 0.5 * (hi - lo), mid = 0.5 * (lo + hi);
-        double sum_first = 0.0, sum_second = 0.0;
-        for (std::size_t i = 0; i < nodes.size(); ++i) {
-            const double t = mid + half * nodes[i];
+    return rule20().integrate_piecewise(
+        [&](double t) {
             c.derivatives_into(t, 2, D);
             const double speed = D.row(0).norm();
-            sum_first += weights[i] * speed;
-            sum_second += weights[i] * (squared_curvature(D, t, "cagd::analysis::curvature") * speed);
-        }
-        first += half * sum_first;
-        second += half * sum_second;
-    }
-    return {first, second};
+            return std::pair<double, double>{speed, squared_curvature(D, t, "cagd::analysis::curvature") * speed};
+        },
+        subdivided({a, b}, pieces));
 }
 
 double bending_energy(const Curve& c, int pieces) { return bending_energy(c, c.t_min(), c.t_max(), pieces); }

@@ -115,23 +115,13 @@ SegmentType SpaceUnitChordHermite::type() const { return binormal_vector(0.0).do
 
 SegmentEnergy space_segment_energy_reference(const SpaceUnitChordHermite& seg, double rel_tol, bool with_gradient) {
     if (!(rel_tol > 0.0 && rel_tol <= 1e-12)) fail_input("cagd::fairness::space_segment_energy_reference", "rel_tol must be in (0, 1e-12], got " + full_precision(rel_tol));
-    return detail::energy_reference(
-        seg,
-        [&](const double* t, std::size_t m, Integrands* out) {
-            for (std::size_t i = 0; i < m; ++i) out[i] = space_integrands(seg, t[i], with_gradient);
-        },
-        rel_tol);
+    return detail::energy_reference(seg, detail::pointwise_integrand([&](double t) { return space_integrands(seg, t, with_gradient); }), rel_tol);
 }
 
 SegmentEnergy space_segment_energy_fast(const SpaceUnitChordHermite& seg, bool with_gradient, int rule_nodes) {
     static const numeric::GaussLegendreRule rule20(20), rule8(8);
     if (rule_nodes != 8 && rule_nodes != 20) fail_input("cagd::fairness::space_segment_energy_fast", "rule_nodes must be 8 or 20, got " + std::to_string(rule_nodes));
-    return detail::energy_fast(
-        seg,
-        [&](const double* t, std::size_t m, Integrands* out) {
-            for (std::size_t i = 0; i < m; ++i) out[i] = space_integrands(seg, t[i], with_gradient);
-        },
-        rule_nodes == 8 ? rule8 : rule20);
+    return detail::energy_fast(seg, detail::pointwise_integrand([&](double t) { return space_integrands(seg, t, with_gradient); }), rule_nodes == 8 ? rule8 : rule20);
 }
 
 // The planar undefined nodes' rule on θ0, θ1 ∈ [0, π] (φ plays no part when both tangents lie on the chord).

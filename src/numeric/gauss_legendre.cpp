@@ -64,21 +64,4 @@ double GaussLegendreRule::integrate_piecewise(const std::function<double(double)
     return sum;
 }
 
-std::pair<double, double> GaussLegendreRule::integrate_piecewise(const std::function<std::pair<double, double>(double)>& f, const std::vector<double>& breaks) const {
-    double first = 0.0, second = 0.0;
-    for (std::size_t k = 0; k + 1 < breaks.size(); ++k) {
-        const double a = breaks[k], b = breaks[k + 1];
-        const double half = 0.5 * (b - a), mid = 0.5 * (a + b);
-        double sum_first = 0.0, sum_second = 0.0;
-        for (std::size_t i = 0; i < nodes_.size(); ++i) {
-            const auto [u, v] = f(mid + half * nodes_[i]);
-            sum_first += weights_[i] * u;
-            sum_second += weights_[i] * v;
-        }
-        first += half * sum_first;
-        second += half * sum_second;
-    }
-    return {first, second};
-}
-
 }  // namespace cagd::numeric

@@ -7,7 +7,10 @@
 // SelfAdjointEigenSolver does the eigen-decomposition; each node is then polished by
 // one Newton step on P_n (three-term recurrence) so the nodes are accurate to ~1 ulp.
 // Exact for polynomials of degree ≤ 2n − 1. Precondition: 1 ≤ n ≤ 200.
+#include <concepts>
+#include <cstddef>
 #include <functional>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -23,8 +26,27 @@ public:
     // Sum of integrals over consecutive intervals [breaks[k], breaks[k+1]].
     double integrate_piecewise(const std::function<double(double)>& f, const std::vector<double>& breaks) const;
     // Two integrands from one evaluation per node (f returns both values), each summed exactly as
-    // integrate_piecewise sums it alone.
-    std::pair<double, double> integrate_piecewise(const std::function<std::pair<double, double>(double)>& f, const std::vector<double>& breaks) const;
+    // integrate_piecewise sums it alone. A template, so the integrand is called directly (no
+    // std::function per node: the fairness measures call it for every piece of a curve).
+    template <class F>
+    requires std::same_as<std::invoke_result_t<const F&, double>, std::pair<double, double>> std::pair<double, double> integrate_piecewise(const F& f,
+                                                                                                                                           const std::vector<double>& breaks)
+    const {
+        double first = 0.0, second = 0.0;
+        for (std::size_t k = 0; k + 1 < breaks.size(); ++k) {
+            const double a = breaks[k], b = breaks[k + 1];
+            const double half = 0.5 * (b - a), mid = 0.5 * (a + b);
+            double sum_first = 0.0, sum_second = 0.0;
+            for (std::size_t i = 0; i < nodes_.size(); ++i) {
+                const auto [u, v] = f(mid + half * nodes_[i]);
+                sum_first += weights_[i] * u;
+                sum_second += weights_[i] * v;
+            }
+            first += half * sum_first;
+            second += half * sum_second;
+        }
+        return {first, second};
+    }
 
 private:
     std::vector<double> nodes_, weights_;

@@ -178,27 +178,22 @@ const double* BSplineCurve::taylor(int span) const {
 }
 
 namespace {
-// k!/(k−d)! = k (k−1) ⋯ (k−d+1), products of small integers: exact in double. A table for the
-// orders of the stack path (k < kStackOrder), the product otherwise — the same value.
-struct FallingFactorials {
-    double value[kStackOrder][kStackOrder]{};
-    constexpr FallingFactorials() {
-        for (int k = 0; k < kStackOrder; ++k)
-            for (int d = 0; d <= k; ++d) {
-                double f = 1.0;
-                for (int i = 0; i < d; ++i) f *= k - i;
-                value[k][d] = f;
-            }
-    }
-};
-constexpr FallingFactorials kFalling;
-inline double falling_factorial(int k, int d) {
-    if (k < kStackOrder) [[likely]]
-        return kFalling.value[k][d];
+// k!/(k−d)! = k (k−1) ⋯ (k−d+1), products of small integers: exact in double. From a table for
+// the orders of the stack path (k < kStackOrder), computed otherwise — the same value.
+constexpr double falling_product(int k, int d) {
     double f = 1.0;
     for (int i = 0; i < d; ++i) f *= k - i;
     return f;
 }
+struct FallingFactorials {
+    double value[kStackOrder][kStackOrder]{};
+    constexpr FallingFactorials() {
+        for (int k = 0; k < kStackOrder; ++k)
+            for (int d = 0; d <= k; ++d) value[k][d] = falling_product(k, d);
+    }
+};
+constexpr FallingFactorials kFalling;
+inline double falling_factorial(int k, int d) { return k < kStackOrder ? kFalling.value[k][d] : falling_product(k, d); }
 }  // namespace
 
 namespace {

@@ -13,6 +13,13 @@ void require_indices(const char* who, int m, int i) {
     if (i < 0 || i > m) fail_input(who, "i must be in [0, m] = [0, " + std::to_string(m) + "], got " + std::to_string(i));
 }
 
+// The polynomial with power-basis coefficients c (constant first) at t, by Horner.
+double horner(const std::vector<double>& c, double t) {
+    double v = 0.0;
+    for (auto it = c.rbegin(); it != c.rend(); ++it) v = v * t + *it;
+    return v;
+}
+
 // (1/i!) Σ_j sign(j) C(2m+1−i, j) t^{a(j)} (t − 1)^{2m+1−a(j)}
 template <class Sign, class Power>
 RationalPolynomial basis_sum(int m, int i, Sign sign, Power t_power) {
@@ -61,23 +68,15 @@ double HosakaBasis::eval(const std::vector<std::vector<std::vector<double>>>& ta
     require_indices("cagd::spline::HosakaBasis", m_, i);
     if (k < 0) fail_input("cagd::spline::HosakaBasis", "derivative order must be >= 0, got " + std::to_string(k));
     if (k > 2 * m_ + 1) return 0.0;
-    const std::vector<double>& c = table[static_cast<std::size_t>(i)][static_cast<std::size_t>(k)];
-    double v = 0.0;
-    for (auto it = c.rbegin(); it != c.rend(); ++it) v = v * t + *it;
-    return v;
+    return horner(table[static_cast<std::size_t>(i)][static_cast<std::size_t>(k)], t);
 }
 
 void HosakaBasis::values(double t, int k, double* p_out, double* q_out) const {
     if (k < 0) fail_input("cagd::spline::HosakaBasis", "derivative order must be >= 0, got " + std::to_string(k));
-    const auto horner = [t](const std::vector<double>& c) {
-        double v = 0.0;
-        for (auto it = c.rbegin(); it != c.rend(); ++it) v = v * t + *it;
-        return v;
-    };
     for (int i = 0; i <= m_; ++i) {
         const auto a = static_cast<std::size_t>(i), b = static_cast<std::size_t>(k);
-        p_out[i] = k > 2 * m_ + 1 ? 0.0 : horner(p_[a][b]);
-        q_out[i] = k > 2 * m_ + 1 ? 0.0 : horner(q_[a][b]);
+        p_out[i] = k > 2 * m_ + 1 ? 0.0 : horner(p_[a][b], t);
+        q_out[i] = k > 2 * m_ + 1 ? 0.0 : horner(q_[a][b], t);
     }
 }
 

@@ -139,6 +139,14 @@ BreakList breaks_for(const Segment& seg, const SpeedMinimaList& minima) {
     if (br.back() != 1.0) br.back() = 1.0;
     return br;
 }
+// A batch integrand (as above) from one of a point at a time, f(t) → Integrands.
+template <class F>
+auto pointwise_integrand(F f) {
+    return [f](const double* t, std::size_t m, Integrands* out) {
+        for (std::size_t i = 0; i < m; ++i) out[i] = f(t[i]);
+    };
+}
+
 inline SegmentEnergy assemble_energy(double r0, double r1, const Integrands& I, double err_l, double err_e) {
     SegmentEnergy r;
     r.length = I[0];
