@@ -11,7 +11,9 @@
 // (rotation_vector_product below, Rodrigues' formula): the "simultaneous" rotation.
 // `alexa_product_limit(A, B, k)` evaluates the limit definition itself at n = 2^k with k repeated
 // principal square roots and k squarings — no logarithm — as the independent check of eq (37):
-// its error decreases like 1/n (alexa_limit_error_coefficient gives the constant).
+// its error decreases like 1/n (alexa_limit_error_coefficient gives the constant) until the
+// rounding of the k roots and squarings takes over (n ≳ 2^14 for 3×3 rotations). The roots come
+// from the complex Schur form (MatrixXcd::sqrt), real part taken.
 //
 // Preconditions (InvalidInput naming the value): square matrices of one size with finite entries,
 // no eigenvalue on the closed negative real axis (the principal logarithm must exist and be real:
