@@ -3,16 +3,16 @@
 #include <ceres/ceres.h>
 #include <ceres/jet.h>
 
-#include <Eigen/SparseLU>
 #include <algorithm>
-#include <span>
 #include <cmath>
 #include <numbers>
+#include <span>
 #include <stdexcept>
 #include <string>
 
 #include "cagd/analysis/curve_measures.hpp"
 #include "cagd/intrinsic/detail/bezier_extraction.hpp"
+#include "cagd/numeric/sparse_lu.hpp"
 #include "cagd/spline/hermite_spline.hpp"
 
 namespace cagd::intrinsic {
@@ -441,7 +441,7 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
     // The Jacobian's sparsity pattern depends on the layout only, so its symbolic analysis (the
     // column ordering, a tenth of a sparse step's cost) is done once and redone only if the
     // pattern ever differs; the numeric factorisation is the same either way.
-    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
+    numeric::SparseLu lu;
     std::vector<int> analysed_outer, analysed_inner;
     for (int it = 0;; ++it) {
         // A diverging iterate winds ψ by hundreds of turns between neighbouring ordinates; the
@@ -482,12 +482,11 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
             const Eigen::SparseMatrix<double>& J = sys.jacobian;
             const std::span<const int> outer(J.outerIndexPtr(), static_cast<std::size_t>(J.outerSize()) + 1), inner(J.innerIndexPtr(), static_cast<std::size_t>(J.nonZeros()));
             if (!J.isCompressed() || !std::ranges::equal(outer, analysed_outer) || !std::ranges::equal(inner, analysed_inner)) {
-                lu.analyzePattern(J);
+                lu.analyze_pattern(J);
                 analysed_outer.assign(outer.begin(), outer.end());
                 analysed_inner.assign(inner.begin(), inner.end());
             }
-            lu.factorize(J);
-            if (lu.info() != Eigen::Success) {
+            if (!lu.factorize(J)) {
                 sol.outcome = {Status::no_convergence, std::string(method) + ": the Jacobian is singular at iteration " + std::to_string(it) + " (use the pseudo-inverse step)"};
                 return sol;
             }

@@ -45,7 +45,7 @@
 // segment; linear_curvature only for p = 3; conditions name existing breakpoints and finite values
 // (radius ≠ 0, length > 0); start vector of the right size with positive lengths.
 #include <Eigen/Dense>
-#include <Eigen/Sparse>
+#include <Eigen/SparseCore>
 #include <optional>
 #include <string>
 #include <vector>

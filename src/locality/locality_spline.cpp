@@ -1,12 +1,14 @@
 #include "cagd/locality/locality_spline.hpp"
 
-#include <Eigen/SparseLU>
+#include <Eigen/SparseCore>
 #include <cmath>
 #include <functional>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 
 #include "cagd/core/errors.hpp"
+#include "cagd/numeric/sparse_lu.hpp"
 
 namespace cagd::locality {
 
@@ -320,7 +322,8 @@ BSplineCurve cubic_bspline_interpolant(const PointList& points, bool closed) {
     }
     Eigen::SparseMatrix<double> A(n, n);
     A.setFromTriplets(t.begin(), t.end());
-    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu(A);
+    numeric::SparseLu lu;
+    if (!lu.compute(A)) throw std::logic_error("cagd::locality: the B-spline interpolation system (rows 1 4 1) is singular");  // diagonally dominant: cannot be
     const Eigen::MatrixXd c = lu.solve(rhs);
     // Control list with one extra at each end; knots at integers.
     const long N = closed ? n + 1 : n;

@@ -1,6 +1,6 @@
 #include "cagd/smoothing/elastic_line.hpp"
 
-#include <Eigen/Sparse>
+#include <Eigen/SparseCore>
 #include <algorithm>
 #include <cmath>
 #include <set>
@@ -8,6 +8,7 @@
 
 #include "cagd/numeric/gauss_legendre.hpp"
 #include "cagd/numeric/pentadiagonal.hpp"
+#include "cagd/numeric/sparse_lu.hpp"
 #include "cagd/numeric/tridiagonal.hpp"
 #include "cagd/spline/hosaka_basis.hpp"
 
@@ -241,8 +242,8 @@ HermiteElasticLine elastic_line_hermite(const std::vector<double>& x, const Eige
     }
     Sparse kkt(size, size);
     kkt.setFromTriplets(t.begin(), t.end());
-    Eigen::SparseLU<Sparse> lu(kkt);
-    if (lu.info() != Eigen::Success) fail_input(who, "the constrained system is singular (constraints inconsistent with the data)");
+    numeric::SparseLu lu;
+    if (!lu.compute(kkt)) fail_input(who, "the constrained system is singular (constraints inconsistent with the data)");
     const Eigen::VectorXd z = lu.solve(rhs);
     Eigen::MatrixXd y(nodes, 1), slopes(nodes, 1);
     for (int i = 0; i < nodes; ++i) {

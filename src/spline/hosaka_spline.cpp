@@ -1,12 +1,13 @@
 #include "cagd/spline/hosaka_spline.hpp"
 
-#include <Eigen/Sparse>
+#include <Eigen/SparseCore>
 #include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "cagd/core/errors.hpp"
 #include "cagd/core/points.hpp"
+#include "cagd/numeric/sparse_lu.hpp"
 #include "cagd/numeric/tridiagonal.hpp"
 
 namespace cagd::spline {
@@ -184,8 +185,8 @@ HosakaSpline hosaka_c2_spline(const PointList& points, const HosakaSplineOptions
         // Cyclic (corner entries): SparseLU; the natural ordering keeps the fill to the last rows and columns.
         Eigen::SparseMatrix<double> M(unknowns, unknowns);
         M.setFromTriplets(trip.begin(), trip.end());
-        Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::NaturalOrdering<int>> lu(M);
-        if (lu.info() != Eigen::Success) fail_input(who, "the system of eq (20) is singular for these points");
+        numeric::SparseLu lu(numeric::ColumnOrdering::natural);
+        if (!lu.compute(M)) fail_input(who, "the system of eq (20) is singular for these points");
         x = lu.solve(rhs);
     }
     Eigen::MatrixXd B(n, dim), C(n, dim);
@@ -264,8 +265,8 @@ HosakaCurve hosaka_spline(const PointList& points, int m, const HosakaSplineOpti
         }
     Eigen::SparseMatrix<double> M(unknowns, unknowns);
     M.setFromTriplets(trip.begin(), trip.end());
-    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu(M);
-    if (lu.info() != Eigen::Success) fail_input(who, "the continuity system is singular for these points");
+    numeric::SparseLu lu;
+    if (!lu.compute(M)) fail_input(who, "the continuity system is singular for these points");
     const Eigen::MatrixXd x = lu.solve(rhs);
     Eigen::MatrixXd start((m + 1) * segs, dim), end((m + 1) * segs, dim);
     for (int s = 0; s < segs; ++s) {
@@ -305,8 +306,8 @@ ExplicitSpline hosaka_explicit_spline(const std::vector<double>& x, const Eigen:
     rhs.row(n - 1) = 3.0 * (values.row(n - 1) - values.row(n - 2)) / h(n - 2);
     Eigen::SparseMatrix<double> M(n, n);
     M.setFromTriplets(trip.begin(), trip.end());
-    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu(M);
-    if (lu.info() != Eigen::Success) fail_input(who, "singular system of eq (23)");
+    numeric::SparseLu lu;
+    if (!lu.compute(M)) fail_input(who, "singular system of eq (23)");
     return ExplicitSpline{x, values, lu.solve(rhs)};
 }
 

@@ -1,0 +1,42 @@
+#pragma once
+// Sparse LU with partial pivoting (Eigen::SparseLU: supernodal, threshold pivoting along the
+// columns of A Q) behind an interface compiled once. P A Q = L U with the column ordering Q chosen
+// by COLAMD (fill-reducing, the default) or left natural (a system whose fill is already at the
+// ends, e.g. a cyclic banded one). Solving is then the two triangular solves, for one right-hand
+// side or several.
+//
+// Why a wrapper: Eigen's SparseLU is a header template that costs about 6 s of compile time in each
+// translation unit that instantiates it; the splines, the elastic line, the locality spline and the
+// curvature-profile Newton each did. The arithmetic is Eigen's, unchanged.
+//
+// Use: compute(A) (= analyze_pattern(A) then factorize(A)), or, for a sequence of matrices of one
+// sparsity pattern, analyze_pattern once and factorize each; then solve. factorize/compute return
+// false when Eigen reports failure (a structurally or numerically singular A); solve before a
+// successful factorisation throws std::logic_error.
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <memory>
+
+namespace cagd::numeric {
+
+enum class ColumnOrdering { colamd, natural };
+
+class SparseLu {
+public:
+    explicit SparseLu(ColumnOrdering ordering = ColumnOrdering::colamd);
+    ~SparseLu();
+    SparseLu(SparseLu&&) noexcept;
+    SparseLu& operator=(SparseLu&&) noexcept;
+
+    void analyze_pattern(const Eigen::SparseMatrix<double>& a);
+    bool factorize(const Eigen::SparseMatrix<double>& a);
+    bool compute(const Eigen::SparseMatrix<double>& a);
+    Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+    Eigen::MatrixXd solve(const Eigen::MatrixXd& b) const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace cagd::numeric
