@@ -157,6 +157,37 @@ TEST(PseudoSpline, InterpolatesIsG1AndKeepsTangentsBetweenTheChords) {
     }
 }
 
+// pseudo_spline_curve (the registry's path, no per-span records) is pseudo_spline's curve and
+// table sums bit for bit: open and closed, every tangent mode, on a random walk whose turns cover
+// the table, and on points with collinear stretches (the straight spans' fixed values).
+TEST(PseudoSpline, CurveWithoutSpanRecordsIsThePseudoSplineBitForBit) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> step(0.2, 1.5), turn(-2.5, 2.5);
+    PointList walk(40, 2);
+    double heading = 0.0;
+    walk.row(0) << 0.0, 0.0;
+    for (Eigen::Index i = 1; i < walk.rows(); ++i) {
+        heading += turn(rng);
+        const double l = step(rng);
+        walk.row(i) = walk.row(i - 1) + l * Eigen::RowVector2d(std::cos(heading), std::sin(heading));
+    }
+    const PointList straight = points({{0, 0}, {1, 0}, {2, 0}, {3, 1}, {4, 2}, {5, 3}, {5, 5}});
+    for (const PointList* p : std::array<const PointList*, 2>{&walk, &straight})
+        for (const bool closed : {false, true})
+            for (auto mode : {TangentOptimization::none, TangentOptimization::exact, TangentOptimization::approximate}) {
+                const PseudoSpline full = pseudo_spline(*p, oracle(), mode, closed);
+                const PseudoSplineCurve lean = pseudo_spline_curve(*p, oracle(), mode, closed);
+                const std::string what = std::string(closed ? "closed " : "open ") + to_string(mode);
+                EXPECT_TRUE(lean.curve.nodes() == full.curve.nodes()) << what;
+                EXPECT_TRUE(lean.curve.start_derivatives() == full.curve.start_derivatives()) << what;
+                EXPECT_TRUE(lean.curve.end_derivatives() == full.curve.end_derivatives()) << what;
+                EXPECT_EQ(lean.length_from_tables, full.length_from_tables()) << what;
+                EXPECT_EQ(lean.area_from_tables, full.area_from_tables()) << what;
+                EXPECT_EQ(lean.pseudo_energy_from_tables, full.pseudo_energy_from_tables()) << what;
+                EXPECT_GT(full.length_from_tables(), 0.0) << what;
+            }
+}
+
 TEST(PseudoSpline, EndTangentsFollowEq13) {
     const PseudoSpline ps = pseudo_spline(kNewberyGarrett, oracle(), TangentOptimization::exact, false);
     const double phi0 = ps.chord_angle[0], phi1 = ps.chord_angle[1];

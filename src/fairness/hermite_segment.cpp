@@ -94,9 +94,8 @@ const char* to_string(SegmentType t) {
     }
 }
 
-double wrap_angle(double theta) {
+double wrap_angle_out_of_range(double theta) {
     // Fast path (differences of two wrapped angles, the common case): one shift by 2π.
-    if (theta > -std::numbers::pi && theta <= std::numbers::pi) return theta;
     if (theta > std::numbers::pi && theta <= 3.0 * std::numbers::pi) {
         const double w = theta - 2.0 * std::numbers::pi;
         if (w > -std::numbers::pi) return w;

@@ -42,8 +42,11 @@ namespace cagd::fairness {
 enum class SegmentType { c, s, x };
 const char* to_string(SegmentType t);
 
-// Maps any finite angle to (−π, π] (exact 2π periodicity of the tangent direction).
-double wrap_angle(double theta);
+// Maps any finite angle to (−π, π] (exact 2π periodicity of the tangent direction). Inline: an
+// angle already in range (the common case, on the hot path of eq 12) returns at once; the rest is
+// wrap_angle_out_of_range.
+double wrap_angle_out_of_range(double theta);
+inline double wrap_angle(double theta) { return theta > -std::numbers::pi && theta <= std::numbers::pi ? theta : wrap_angle_out_of_range(theta); }
 
 // The tangent-angle domain of this module, [−π, π] with a slack of 1e-12 (see above): throws
 // InvalidInput("<who>: <name> must be …") for a non-finite angle or one outside it.

@@ -27,28 +27,8 @@ namespace {
 // Bumped whenever a minimiser or the file layout changes, so stale caches are rebuilt.
 constexpr int kCacheFormat = 5;  // 5: the runner-up's r0, r1 (TableReading::runner_up_within)
 
-// Index i and weight u ∈ [0, 1) of θ in the periodically extended node list: θ lies between
-// node i and node (i + 1) mod n (adding 2π to the latter when it wraps).
-// Cell of `theta` in the equally spaced periodic `nodes` (first node x0, spacing h = 1 / inv_h):
-// i = the last node ≤ theta (wrapping to the last cell for theta beyond the last node) and the
-// fraction u ∈ [0, 1] across the cell.
-// The node after node i of n around the period (i in [0, n)): a comparison, not a modulo (an
-// integer division, on every lookup).
-inline int next_node(int i, int n) { return i + 1 == n ? 0 : i + 1; }
-
-inline void locate(const std::vector<double>& nodes, double inv_h, double theta, int& i, double& u) {
-    const int n = static_cast<int>(nodes.size());
-    const double x0 = nodes.front();
-    if (theta < x0) theta += 2 * std::numbers::pi;
-    i = std::clamp(static_cast<int>((theta - x0) * inv_h), 0, n - 1);  // a guess; the tests make it exact
-    if (i + 1 < n && nodes[static_cast<std::size_t>(i + 1)] <= theta)
-        ++i;
-    else if (i > 0 && nodes[static_cast<std::size_t>(i)] > theta)
-        --i;
-    const double left = nodes[static_cast<std::size_t>(i)];
-    const double right = i + 1 < n ? nodes[static_cast<std::size_t>(i + 1)] : x0 + 2 * std::numbers::pi;
-    u = std::clamp((theta - left) / (right - left), 0.0, 1.0);
-}
+using detail::locate;
+using detail::next_node;
 
 }  // namespace
 
@@ -96,7 +76,7 @@ PseudoEnergyTable PseudoEnergyTable::build(const AngleGrid& grid, TableMethod me
     PseudoEnergyTable t;
     t.grid_ = grid;
     t.method_ = method;
-    t.nodes_ = grid.nodes();
+    t.set_nodes(grid.nodes());
     const int n = grid.n;
     t.values_.assign(static_cast<std::size_t>(n * n), PseudoEnergyMinimum{});
     // Index of the node at −θ (the placements are symmetric about 0; ±π map to themselves).
@@ -245,7 +225,7 @@ PseudoEnergyTable PseudoEnergyTable::load_or_build(const std::string& path, cons
         PseudoEnergyTable t;
         t.grid_ = grid;
         t.method_ = method;
-        t.nodes_ = grid.nodes();
+        t.set_nodes(grid.nodes());
         std::ifstream in(path);
         std::string line;
         if (!(in && std::getline(in, line) && line == t.header_line() && read_node_rows(in, grid.n, t.values_))) return std::nullopt;
@@ -278,7 +258,7 @@ PseudoEnergyTable PseudoEnergyTable::load(const std::string& path) {
     PseudoEnergyTable t;
     t.grid_ = AngleGrid{n, parse_node_placement(placement)};
     t.method_ = method == "reference" ? TableMethod::reference : method == "nlopt" ? TableMethod::nlopt : TableMethod::fast;
-    t.nodes_ = t.grid_.nodes();
+    t.set_nodes(t.grid_.nodes());
     if (!read_node_rows(in, n, t.values_)) fail_input(who, "'" + path + "': expected " + std::to_string(n * n) + " well-formed node rows");
     t.pack();
     return t;
@@ -292,9 +272,8 @@ PseudoEnergyTable::CellPosition PseudoEnergyTable::locate_cell(double theta0, do
         fail_input(who,
                    "(" + full_precision(theta0) + ", " + full_precision(theta1) + ") is an undefined node (theta0, theta1 in {0, +-pi}): r0, r1 do not exist there (paper §4.1)");
     CellPosition c;
-    const double inv_h = 1.0 / (nodes_[1] - nodes_[0]);
-    locate(nodes_, inv_h, theta0, c.i, c.u);
-    locate(nodes_, inv_h, theta1, c.j, c.v);
+    locate(nodes_, inv_h_, theta0, c.i, c.u);
+    locate(nodes_, inv_h_, theta1, c.j, c.v);
     return c;
 }
 
@@ -422,7 +401,7 @@ AngleMinimumTable AngleMinimumTable::build(const AngleGrid& grid, const PseudoEn
     }
     AngleMinimumTable t;
     t.grid_ = grid;
-    t.nodes_ = grid.nodes();
+    t.set_nodes(grid.nodes());
     t.values_.assign(t.nodes_.size(), AngleMinimum{});
     parallel_for(static_cast<long>(t.nodes_.size()), threads,
                  [&](long k) {
@@ -462,7 +441,7 @@ AngleMinimumTable AngleMinimumTable::load_or_build(const std::string& path, cons
         if (!(in && std::getline(in, line) && line == header.str() && std::getline(in, line))) return std::nullopt;
         AngleMinimumTable t;
         t.grid_ = grid;
-        t.nodes_ = grid.nodes();
+        t.set_nodes(grid.nodes());
         while (t.values_.size() < t.nodes_.size() && std::getline(in, line)) {
             // theta,theta1,J,status,message (the message last: it may hold commas)
             std::istringstream row(line);
@@ -507,7 +486,7 @@ AngleMinimumTable AngleMinimumTable::from_energy_table(const PseudoEnergyTable& 
     reading.radii = false;  // J(θ) minimises the interpolated J
     AngleMinimumTable t;
     t.grid_ = table.grid();
-    t.nodes_ = table.nodes();
+    t.set_nodes(table.nodes());
     for (double theta : t.nodes_) {
         const auto j_of = [&](double theta1) {
             if (is_undefined_node(theta, theta1)) return std::abs(theta) + std::abs(theta1) == 0.0 ? 0.0 : kInfinity;
@@ -518,20 +497,11 @@ AngleMinimumTable AngleMinimumTable::from_energy_table(const PseudoEnergyTable& 
     return t;
 }
 
-double AngleMinimumTable::pseudo_energy(double theta) const {
-    require_tangent_angle("cagd::fairness::AngleMinimumTable::pseudo_energy", theta, "theta");
-    int i = 0;
-    double u = 0.0;
-    locate(nodes_, 1.0 / (nodes_[1] - nodes_[0]), theta, i, u);
-    const std::size_t a = static_cast<std::size_t>(i), b = static_cast<std::size_t>(next_node(i, static_cast<int>(nodes_.size())));
-    return (1 - u) * values_[a].pseudo_energy + u * values_[b].pseudo_energy;
-}
-
 std::pair<double, double> AngleMinimumTable::lookup(double theta) const {
     require_tangent_angle("cagd::fairness::AngleMinimumTable::lookup", theta, "theta");
     int i = 0;
     double u = 0.0;
-    locate(nodes_, 1.0 / (nodes_[1] - nodes_[0]), theta, i, u);
+    locate(nodes_, inv_h_, theta, i, u);
     const std::size_t a = static_cast<std::size_t>(i), b = static_cast<std::size_t>(next_node(i, static_cast<int>(nodes_.size())));
     const double j = (1 - u) * values_[a].pseudo_energy + u * values_[b].pseudo_energy;
     // θ1 is an angle: interpolate the wrapped difference.

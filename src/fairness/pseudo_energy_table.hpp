@@ -34,6 +34,7 @@
 #include <utility>
 #include <vector>
 
+#include "cagd/fairness/detail/periodic_grid.hpp"
 #include "cagd/fairness/pseudo_energy_minimum.hpp"
 
 namespace cagd::fairness {
@@ -114,6 +115,11 @@ private:
     AngleGrid grid_;
     TableMethod method_ = TableMethod::fast;
     std::vector<double> nodes_;
+    double inv_h_ = 0.0;  // 1 / (nodes_[1] − nodes_[0]), what every lookup's cell search needs
+    void set_nodes(std::vector<double> nodes) {
+        nodes_ = std::move(nodes);
+        inv_h_ = nodes_.size() > 1 ? 1.0 / (nodes_[1] - nodes_[0]) : 0.0;
+    }
     std::vector<PseudoEnergyMinimum> values_;
     std::vector<TableValue> packed_;  // what lookup reads: J, r0, r1, L, S, type (x = unusable), 48 bytes a node
     void pack();
@@ -152,14 +158,29 @@ public:
     const std::vector<AngleMinimum>& values() const { return values_; }
     // Linear interpolation; throws InvalidInput outside [−π, π]. Returns {J(θ), θ1(θ)}.
     std::pair<double, double> lookup(double theta) const;
-    double pseudo_energy(double theta) const;  // J(θ) alone (the hot path of eq 12), same interpolation
+    // J(θ) alone, the same interpolation; inline (below): eq (12) reads it six times per point.
+    double pseudo_energy(double theta) const;
 
 private:
     AngleGrid grid_;
     std::vector<double> nodes_;
+    double inv_h_ = 0.0;  // 1 / (nodes_[1] − nodes_[0]), what every lookup's cell search needs
+    void set_nodes(std::vector<double> nodes) {
+        nodes_ = std::move(nodes);
+        inv_h_ = nodes_.size() > 1 ? 1.0 / (nodes_[1] - nodes_[0]) : 0.0;
+    }
     std::vector<AngleMinimum> values_;
     static AngleMinimumTable build(const AngleGrid& grid, const PseudoEnergyTable* scan_source, int threads);
     static AngleMinimumTable load_or_build(const std::string& path, const AngleGrid& grid, const PseudoEnergyTable* scan_source, int threads);
 };
+
+inline double AngleMinimumTable::pseudo_energy(double theta) const {
+    require_tangent_angle("cagd::fairness::AngleMinimumTable::pseudo_energy", theta, "theta");
+    int i = 0;
+    double u = 0.0;
+    detail::locate(nodes_, inv_h_, theta, i, u);
+    const std::size_t a = static_cast<std::size_t>(i), b = static_cast<std::size_t>(detail::next_node(i, static_cast<int>(nodes_.size())));
+    return (1 - u) * values_[a].pseudo_energy + u * values_[b].pseudo_energy;
+}
 
 }  // namespace cagd::fairness

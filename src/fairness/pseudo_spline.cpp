@@ -57,14 +57,20 @@ double PseudoSpline::pseudo_energy_from_tables() const {
     return s;
 }
 
-double PseudoSpline::polygon_area() const {
-    const Eigen::MatrixXd& p = curve.nodes();
+namespace {
+
+// S_0 of eq (21) over a curve's nodes (shoelace; for a closed curve the last node is the first).
+double signed_polygon_area(const Eigen::MatrixXd& p) {
     double s = 0.0;
     for (Eigen::Index i = 0; i + 1 < p.rows(); ++i) s += p(i, 0) * p(i + 1, 1) - p(i, 1) * p(i + 1, 0);
     const Eigen::Index n = p.rows() - 1;
     s += p(n, 0) * p(0, 1) - p(n, 1) * p(0, 0);  // zero for a closed curve (node n = node 0)
     return 0.5 * s;
 }
+
+}  // namespace
+
+double PseudoSpline::polygon_area() const { return signed_polygon_area(curve.nodes()); }
 
 double PseudoSpline::area_from_tables() const {
     double s = polygon_area();
@@ -80,8 +86,23 @@ using detail::minimise_w;
 
 }  // namespace
 
-PseudoSpline pseudo_spline(const PointList& points, const SegmentOracle& oracle, TangentOptimization mode, bool closed, TangentTie tie) {
-    const char* who = "cagd::fairness::pseudo_spline";
+namespace {
+
+// What the construction produces besides the curve. `spans` null: the per-span records are not
+// kept, only their sums (pseudo_spline_curve).
+struct ConstructionOutputs {
+    std::vector<double>& alpha;
+    std::vector<double>& chord_angle;
+    std::vector<double>& chord_length;
+    std::vector<PseudoSplineSpan>* spans;
+    long& oracle_calls;
+    // Σ l_i L_i, Σ l_i J_i and S_0 − Σ l_i² S_i, accumulated in span order as the PseudoSpline
+    // members sum them (so the two agree bit for bit).
+    double length = 0.0, pseudo_energy = 0.0, area = 0.0;
+};
+
+spline::PiecewiseHermiteCurve construct(const char* who, const PointList& points, const SegmentOracle& oracle, TangentOptimization mode, bool closed, TangentTie tie,
+                                        ConstructionOutputs& result) {
     require_valid_points(points, closed ? 3 : 2, true, closed, who);
     if (points.cols() != 2) fail_input(who, "needs planar points (2 columns), got " + std::to_string(points.cols()));
     if (!(tie.position >= 0.0 && tie.position <= 1.0)) fail_input(who, "tie.position must lie in [0, 1], got " + full_precision(tie.position));
@@ -94,7 +115,9 @@ PseudoSpline pseudo_spline(const PointList& points, const SegmentOracle& oracle,
     // (Chords and tangents are recomputed where needed rather than stored: at 10^6 points the
     // fresh memory of every array costs page faults, a quarter of the construction's time.)
     const auto chord = [&](Eigen::Index i) -> Eigen::Vector2d { return (points.row(next(i)) - points.row(i)).transpose(); };
-    std::vector<double> phi(static_cast<std::size_t>(spans)), len(static_cast<std::size_t>(spans));
+    std::vector<double>&phi = result.chord_angle, &len = result.chord_length;
+    phi.resize(static_cast<std::size_t>(spans));
+    len.resize(static_cast<std::size_t>(spans));
     for (Eigen::Index i = 0; i < spans; ++i) {
         const Eigen::Vector2d c = chord(i);
         phi[static_cast<std::size_t>(i)] = std::atan2(c.y(), c.x());
@@ -110,18 +133,14 @@ PseudoSpline pseudo_spline(const PointList& points, const SegmentOracle& oracle,
         return t;
     };
 
-    PseudoSpline ps{spline::PiecewiseHermiteCurve(Eigen::MatrixXd::Zero(2, 2), Eigen::MatrixXd::Zero(1, 2), Eigen::MatrixXd::Zero(1, 2)),
-                    std::vector<double>(static_cast<std::size_t>(np), 0.0),
-                    {},
-                    {},
-                    {},
-                    0};
-    ps.spans.reserve(static_cast<std::size_t>(spans));
+    std::vector<double>& alphas = result.alpha;
+    alphas.assign(static_cast<std::size_t>(np), 0.0);
+    if (result.spans) result.spans->reserve(static_cast<std::size_t>(spans));
     // The paper's tables (TableOracle itself, not a subclass) are called without the virtual call:
     // eq (12) reads J(θ) six times per point in the approximate mode.
     const TableOracle* table = typeid(oracle) == typeid(TableOracle) ? static_cast<const TableOracle*>(&oracle) : nullptr;
     const auto J = [&](double theta) {
-        ++ps.oracle_calls;
+        ++result.oracle_calls;
         const double t = wrap_angle(theta);
         return table ? table->TableOracle::angle_energy(t) : oracle.angle_energy(t);
     };
@@ -141,17 +160,17 @@ PseudoSpline pseudo_spline(const PointList& points, const SegmentOracle& oracle,
                 a = minimise_w(w, std::min(0.0, -tau), std::max(0.0, -tau), mode, tie);
             }
         }
-        ps.alpha[static_cast<std::size_t>(i)] = a;
+        alphas[static_cast<std::size_t>(i)] = a;
     }
     // End tangents (eq 13).
     if (!closed) {
         if (np == 2) {
-            ps.alpha[0] = ps.alpha[1] = 0.0;
+            alphas[0] = alphas[1] = 0.0;
         } else {
-            const double end_angle_at_p1 = wrap_angle(ps.alpha[1] + phi[1] - phi[0]);
-            ps.alpha[0] = std::abs(end_angle_at_p1) <= kStraight ? 0.0 : oracle.angle_minimum(end_angle_at_p1).second;
-            const double a = ps.alpha[static_cast<std::size_t>(np - 2)];
-            ps.alpha[static_cast<std::size_t>(np - 1)] = std::abs(a) <= kStraight ? 0.0 : oracle.angle_minimum(a).second;
+            const double end_angle_at_p1 = wrap_angle(alphas[1] + phi[1] - phi[0]);
+            alphas[0] = std::abs(end_angle_at_p1) <= kStraight ? 0.0 : oracle.angle_minimum(end_angle_at_p1).second;
+            const double a = alphas[static_cast<std::size_t>(np - 2)];
+            alphas[static_cast<std::size_t>(np - 1)] = std::abs(a) <= kStraight ? 0.0 : oracle.angle_minimum(a).second;
         }
     }
 
@@ -159,19 +178,22 @@ PseudoSpline pseudo_spline(const PointList& points, const SegmentOracle& oracle,
     // α_n being relative to the incoming chord). The span loop carries each from the span that
     // ends at a point to the one that starts there.
     const auto tangent = [&](Eigen::Index i) {
-        const double psi = phi[static_cast<std::size_t>(std::min<Eigen::Index>(i, spans - 1))] + ps.alpha[static_cast<std::size_t>(i)];
+        const double psi = phi[static_cast<std::size_t>(std::min<Eigen::Index>(i, spans - 1))] + alphas[static_cast<std::size_t>(i)];
         return Eigen::Vector2d(std::cos(psi), std::sin(psi));
     };
     Eigen::Vector2d start_tangent = tangent(0);
     // Spans (eq 9, 10).
     Eigen::MatrixXd nodes(spans + 1, 2), d0(spans, 2), d1(spans, 2);
+    nodes.topRows(spans) = points.topRows(spans);
+    nodes.row(spans) = points.row(closed ? 0 : spans);
+    result.area = signed_polygon_area(nodes);
     for (Eigen::Index i = 0; i < spans; ++i) {
         const std::size_t k = static_cast<std::size_t>(i);
         PseudoSplineSpan s;
-        s.theta0 = wrap_angle(ps.alpha[k]);
+        s.theta0 = wrap_angle(alphas[k]);
         const bool last_open = !closed && i == spans - 1;
         // next(i) < spans whenever the span is not the last of an open curve
-        s.theta1 = last_open ? wrap_angle(ps.alpha[k + 1]) : wrap_angle(ps.alpha[static_cast<std::size_t>(next(i))] + phi[static_cast<std::size_t>(next(i))] - phi[k]);
+        s.theta1 = last_open ? wrap_angle(alphas[k + 1]) : wrap_angle(alphas[static_cast<std::size_t>(next(i))] + phi[static_cast<std::size_t>(next(i))] - phi[k]);
         if (std::abs(s.theta0) <= kStraight && std::abs(s.theta1) <= kStraight) {
             s.value = TableValue{0.0, 1.0, 1.0, 1.0, 0.0, SegmentType::c};
         } else {
@@ -186,14 +208,29 @@ PseudoSpline pseudo_spline(const PointList& points, const SegmentOracle& oracle,
         d0.row(i) = (l * s.value.r0) * start_tangent.transpose();
         d1.row(i) = (l * s.value.r1) * end_tangent.transpose();
         start_tangent = end_tangent;
-        ps.spans.push_back(s);
+        result.length += l * s.value.length;
+        result.pseudo_energy += l * s.value.pseudo_energy;
+        result.area -= l * l * s.value.area;
+        if (result.spans) result.spans->push_back(s);
     }
-    nodes.topRows(spans) = points.topRows(spans);
-    nodes.row(spans) = points.row(closed ? 0 : spans);
-    ps.curve = spline::PiecewiseHermiteCurve(std::move(nodes), std::move(d0), std::move(d1));
-    ps.chord_angle = std::move(phi);
-    ps.chord_length = std::move(len);
+    return spline::PiecewiseHermiteCurve(std::move(nodes), std::move(d0), std::move(d1));
+}
+
+}  // namespace
+
+PseudoSpline pseudo_spline(const PointList& points, const SegmentOracle& oracle, TangentOptimization mode, bool closed, TangentTie tie) {
+    PseudoSpline ps{spline::PiecewiseHermiteCurve(Eigen::MatrixXd::Zero(2, 2), Eigen::MatrixXd::Zero(1, 2), Eigen::MatrixXd::Zero(1, 2)), {}, {}, {}, {}, 0};
+    ConstructionOutputs out{ps.alpha, ps.chord_angle, ps.chord_length, &ps.spans, ps.oracle_calls};
+    ps.curve = construct("cagd::fairness::pseudo_spline", points, oracle, mode, closed, tie, out);
     return ps;
+}
+
+PseudoSplineCurve pseudo_spline_curve(const PointList& points, const SegmentOracle& oracle, TangentOptimization mode, bool closed, TangentTie tie) {
+    std::vector<double> alpha, chord_angle, chord_length;
+    long calls = 0;
+    ConstructionOutputs out{alpha, chord_angle, chord_length, nullptr, calls};
+    spline::PiecewiseHermiteCurve curve = construct("cagd::fairness::pseudo_spline_curve", points, oracle, mode, closed, tie, out);
+    return PseudoSplineCurve{std::move(curve), out.length, out.area, out.pseudo_energy};
 }
 
 namespace {

@@ -160,6 +160,16 @@ struct PseudoSpline {
 
 PseudoSpline pseudo_spline(const PointList& points, const SegmentOracle& oracle, TangentOptimization mode, bool closed, TangentTie tie = {});
 
+// The curve and the three table sums alone: pseudo_spline(...).curve, .length_from_tables(),
+// .area_from_tables() and .pseudo_energy_from_tables(), bit for bit, without the per-span records
+// and per-point arrays (at 10^6 points those are ~90 MB of fresh memory, whose page faults were a
+// quarter of the construction's time). What the method registry builds.
+struct PseudoSplineCurve {
+    spline::PiecewiseHermiteCurve curve;
+    double length_from_tables = 0.0, area_from_tables = 0.0, pseudo_energy_from_tables = 0.0;
+};
+PseudoSplineCurve pseudo_spline_curve(const PointList& points, const SegmentOracle& oracle, TangentOptimization mode, bool closed, TangentTie tie = {});
+
 // The five curves of section 4.2 through the same points: cubic spline A (uniform parameter),
 // cubic spline B (chord length), Hermite A, Hermite B (spline/hermite_spline.hpp) and the
 // pseudo-spline (`oracle` and `mode` are used by the pseudo-spline only; pass them anyway), with

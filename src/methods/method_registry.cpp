@@ -86,11 +86,11 @@ InterpolationResult build_pseudo_spline(const PointList& points, bool closed, co
         return v.has("table") ? build_space_pseudo_spline(points, closed, v, fairness::PseudoSplineTables::from(fairness::PseudoEnergyTable::load(v.text("table"))))
                               : build_space_pseudo_spline(points, closed, v, default_pseudo_spline_tables());
     if (v.has("space-table")) fail_input("cagd::methods(pseudo-spline)", "--space-table is for 3-D points; these have 2 coordinates");
-    const auto make = [&](const fairness::PseudoSplineTables& t) { return fairness::pseudo_spline(points, t.oracle(), mode, closed); };
-    fairness::PseudoSpline ps =
+    const auto make = [&](const fairness::PseudoSplineTables& t) { return fairness::pseudo_spline_curve(points, t.oracle(), mode, closed); };
+    fairness::PseudoSplineCurve ps =
         v.has("table") ? make(fairness::PseudoSplineTables::from(fairness::PseudoEnergyTable::load(v.text("table")))) : make(default_pseudo_spline_tables());
     const std::vector<std::pair<std::string, double>> quantities = {
-        {"length_from_tables", ps.length_from_tables()}, {"area_from_tables", ps.area_from_tables()}, {"pseudo_energy_from_tables", ps.pseudo_energy_from_tables()}};
+        {"length_from_tables", ps.length_from_tables}, {"area_from_tables", ps.area_from_tables}, {"pseudo_energy_from_tables", ps.pseudo_energy_from_tables}};
     // The curve moves into the interpolant (a copy was 48 MB at 10^6 points).
     InterpolationResult r =
         result_of(unit_span_interpolant(std::make_shared<spline::PiecewiseHermiteCurve>(std::move(ps.curve)), node_count(points, closed), unit_lengths(points, closed)));
