@@ -45,14 +45,6 @@ int shape_rows(SegmentShape s, int p) {
     return 0;
 }
 
-// The Bézier ordinates of segment j and their exact derivatives with respect to the local de Boor
-// ordinates (columns first_ordinate..+p) and the local segment lengths (first_segment..).
-struct SegmentJet {
-    Eigen::VectorXd b;
-    int first_ordinate = 0, first_segment = 0;
-    Eigen::MatrixXd db_dc, db_dw;
-};
-
 // Newton's safeguards. The Moore–Penrose step treats singular values below kRankThreshold · σ_max
 // as zero: the Jacobian's entries are O(1) in the data scale and exact, so 1e-10 separates true
 // rank deficiency (σ ~ ε) from conditioning. A step shorter than kStalledStep · (1 + ‖u‖∞) is the
@@ -67,13 +59,27 @@ constexpr double kKeptLengthFraction = 0.2;
 constexpr int kMaxJetDegree = 3;
 using Jet = ceres::Jet<double, 3 * kMaxJetDegree + 1>;
 
+// The Bézier ordinates of segment j and their exact derivatives with respect to the local de Boor
+// ordinates (columns first_ordinate..+p) and the local segment lengths (first_segment.., at most
+// 2p − 1 of them). Sizes are dynamic within fixed storage: no allocation per segment and Newton
+// iteration.
+constexpr int kMaxOrdinates = kMaxJetDegree + 1;
+using Ordinates = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxOrdinates, 1>;
+struct SegmentJet {
+    Ordinates b;
+    int first_ordinate = 0, first_segment = 0;
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxOrdinates, kMaxOrdinates> db_dc;
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxOrdinates, 2 * kMaxJetDegree> db_dw;
+};
+
 SegmentJet segment_jet(const TangentAngleSpline& psi, int j) {
     const KnotLayout& L = psi.layout();
     const int p = L.degree(), last = L.last_knot_of_breakpoint(j), k0 = last - p + 1;
     if (p > kMaxJetDegree) throw std::logic_error("cagd::intrinsic::segment_jet: degree " + std::to_string(p) + " exceeds the Jet's " + std::to_string(kMaxJetDegree));
-    const std::vector<double> v = psi.local_farin_knots(j);  // the extraction is invariant under a shift of all knots
+    double v[2 * kMaxJetDegree];
+    psi.local_farin_knots_into(j, v);  // the extraction is invariant under a shift of all knots
     Jet u[2 * kMaxJetDegree], c[kMaxJetDegree + 1], b[kMaxJetDegree + 1];
-    for (int m = 0; m < 2 * p; ++m) u[m] = Jet(v[static_cast<std::size_t>(m)], m);
+    for (int m = 0; m < 2 * p; ++m) u[m] = Jet(v[m], m);
     for (int m = 0; m <= p; ++m) c[m] = Jet(psi.de_boor()(k0 + m), 2 * p + m);
     detail::bezier_from_de_boor(p, u, c, b);
     SegmentJet out;
@@ -82,7 +88,7 @@ SegmentJet segment_jet(const TangentAngleSpline& psi, int j) {
     out.first_ordinate = k0;
     out.first_segment = g0;
     out.db_dc.resize(p + 1, p + 1);
-    out.db_dw = Eigen::MatrixXd::Zero(p + 1, std::max(g1 - g0, 1));
+    out.db_dw.setZero(p + 1, std::max(g1 - g0, 1));
     for (int r = 0; r <= p; ++r) {
         out.b(r) = b[r].a;
         for (int m = 0; m <= p; ++m) out.db_dc(r, m) = b[r].v(2 * p + m);
@@ -99,10 +105,11 @@ class RowWriter {
 public:
     RowWriter(const KnotLayout& L, std::vector<Eigen::Triplet<double>>* t) : L_(L), t_(t) {}
     // Row `row` depends on b_j through gradient g (∂f/∂b_{j,·}) and directly on Δw_j with `direct`.
-    void add(int row, const SegmentJet& s, int j, const Eigen::VectorXd& g, double direct) const {
+    void add(int row, const SegmentJet& s, int j, const Ordinates& g, double direct) const {
         if (!t_) return;
         const int l = L_.independent_lengths();
-        const Eigen::RowVectorXd gc = g.transpose() * s.db_dc, gw = g.transpose() * s.db_dw;
+        const Eigen::Matrix<double, 1, Eigen::Dynamic, Eigen::RowMajor, 1, kMaxOrdinates> gc = g.transpose() * s.db_dc;
+        const Eigen::Matrix<double, 1, Eigen::Dynamic, Eigen::RowMajor, 1, 2 * kMaxJetDegree> gw = g.transpose() * s.db_dw;
         for (int m = 0; m < gc.size(); ++m) t_->emplace_back(row, l + s.first_ordinate + m, gc(m));
         for (int i = 0; i < gw.size(); ++i)
             if (gw(i) != 0.0) t_->emplace_back(row, L_.length_index(s.first_segment + i), gw(i));
@@ -275,7 +282,7 @@ DesignSystem design_system(const CurvatureProfileProblem& P, const Eigen::Vector
         for (int j = L.first_segment(i); j < L.end_segment(i); ++j) {
             const SegmentJet& s = jets[static_cast<std::size_t>(j)];
             const double d = psi.segment_lengths()[static_cast<std::size_t>(j)];
-            Eigen::Matrix<double, 2, Eigen::Dynamic> W;
+            DirectionWeights W;
             const Eigen::Vector2d I = direction_integrals(s.b, 1.0, with_jacobian ? &W : nullptr);
             sum += d * I;
             if (with_jacobian) {
@@ -289,12 +296,12 @@ DesignSystem design_system(const CurvatureProfileProblem& P, const Eigen::Vector
     // eq (4): segment shapes.
     for (int j = 0; j < k; ++j) {
         const SegmentJet& s = jets[static_cast<std::size_t>(j)];
-        auto linear_row = [&](const Eigen::VectorXd& g) {
+        auto linear_row = [&](const Ordinates& g) {
             out.f(row) = g.dot(s.b);
             write.add(row, s, j, g, 0.0);
             ++row;
         };
-        Eigen::VectorXd g = Eigen::VectorXd::Zero(p + 1);
+        Ordinates g = Ordinates::Zero(p + 1);
         switch (P.shapes[static_cast<std::size_t>(j)]) {
             case SegmentShape::free: break;
             case SegmentShape::line:
@@ -321,7 +328,7 @@ DesignSystem design_system(const CurvatureProfileProblem& P, const Eigen::Vector
     auto angle_row = [&](int g, bool at_end, double sign) {  // adds sign·ψ(w_g) to the current row
         const int j = at_end ? g - 1 : g;
         const SegmentJet& s = jets[static_cast<std::size_t>(j)];
-        Eigen::VectorXd gr = Eigen::VectorXd::Zero(p + 1);
+        Ordinates gr = Ordinates::Zero(p + 1);
         gr(at_end ? p : 0) = sign;
         write.add(row, s, j, gr, 0.0);
         return sign * s.b(at_end ? p : 0);
@@ -330,7 +337,7 @@ DesignSystem design_system(const CurvatureProfileProblem& P, const Eigen::Vector
         const int j = at_end ? g - 1 : g;
         const SegmentJet& s = jets[static_cast<std::size_t>(j)];
         const double d = psi.segment_lengths()[static_cast<std::size_t>(j)];
-        Eigen::VectorXd gr = Eigen::VectorXd::Zero(p + 1);
+        Ordinates gr = Ordinates::Zero(p + 1);
         const int hi = at_end ? p : 1, lo = at_end ? p - 1 : 0;
         gr(hi) = sign * p / d, gr(lo) = -sign * p / d;
         const double kappa = p * (s.b(hi) - s.b(lo)) / d;

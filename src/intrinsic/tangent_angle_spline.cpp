@@ -39,9 +39,8 @@ TangentAngleSpline::TangentAngleSpline(KnotLayout layout, std::vector<double> se
     bezier_.resize(k, p + 1);
     for (int j = 0; j < k; ++j) {
         const int last = layout_.last_knot_of_breakpoint(j);
-        const std::vector<double> local = local_farin_knots(j);
         double u[6], c[4], b[4];
-        std::copy(local.begin(), local.end(), u);
+        local_farin_knots_into(j, u);
         for (int m = 0; m <= p; ++m) c[m] = de_boor_(last - p + 1 + m);
         detail::bezier_from_de_boor(p, u, c, b);
         for (int m = 0; m <= p; ++m) bezier_(j, m) = b[m];
@@ -58,16 +57,20 @@ TangentAngleSpline TangentAngleSpline::from_unknowns(const KnotLayout& layout, c
 }
 
 std::vector<double> TangentAngleSpline::local_farin_knots(int segment) const {
+    std::vector<double> out(static_cast<std::size_t>(2 * layout_.degree()));
+    local_farin_knots_into(segment, out.data());
+    return out;
+}
+
+void TangentAngleSpline::local_farin_knots_into(int segment, double* out) const {
     const int p = layout_.degree(), k0 = layout_.last_knot_of_breakpoint(segment) - p + 1;
-    std::vector<double> out;
     for (int m = 0; m < 2 * p; ++m) {
         const int g = layout_.breakpoint_of_knot(k0 + m);
         double x = 0.0;
         for (int i = segment; i < g; ++i) x += lengths_[static_cast<std::size_t>(i)];
         for (int i = g; i < segment; ++i) x -= lengths_[static_cast<std::size_t>(i)];
-        out.push_back(x);
+        out[m] = x;
     }
-    return out;
 }
 
 std::vector<double> TangentAngleSpline::farin_knots() const {
@@ -138,7 +141,10 @@ double TangentAngleSpline::curvature(int segment, bool at_end) const {
     return at_end ? p * (bezier_(segment, p) - bezier_(segment, p - 1)) / d : p * (bezier_(segment, 1) - bezier_(segment, 0)) / d;
 }
 
-Eigen::Vector2d direction_integrals(const Eigen::Ref<const Eigen::VectorXd, 0, Eigen::InnerStride<>>& b, double tau, Eigen::Matrix<double, 2, Eigen::Dynamic>* weights) {
+namespace {
+
+template <class Weights>
+Eigen::Vector2d direction_integrals_with(const Eigen::Ref<const Eigen::VectorXd, 0, Eigen::InnerStride<>>& b, double tau, Weights* weights) {
     const int p = static_cast<int>(b.size()) - 1;
     if (p < 0 || p > 3) fail_input("intrinsic::direction_integrals", "Bézier degree must be 0..3, got " + std::to_string(p));
     if (!(tau >= 0.0 && tau <= 1.0)) fail_input("intrinsic::direction_integrals", "tau = " + full_precision(tau) + " outside [0, 1]");
@@ -169,6 +175,16 @@ Eigen::Vector2d direction_integrals(const Eigen::Ref<const Eigen::VectorXd, 0, E
         }
     }
     return sum;
+}
+
+}  // namespace
+
+Eigen::Vector2d direction_integrals(const Eigen::Ref<const Eigen::VectorXd, 0, Eigen::InnerStride<>>& b, double tau, Eigen::Matrix<double, 2, Eigen::Dynamic>* weights) {
+    return direction_integrals_with(b, tau, weights);
+}
+
+Eigen::Vector2d direction_integrals(const Eigen::Ref<const Eigen::VectorXd, 0, Eigen::InnerStride<>>& b, double tau, DirectionWeights* weights) {
+    return direction_integrals_with(b, tau, weights);
 }
 
 }  // namespace cagd::intrinsic

@@ -43,8 +43,9 @@ public:
     // farin_knots(): differences of absolute knots cost ε·w_k each, which at 10^5 segments floors the
     // eq (3) residual near 1e−11 and stops Newton short of its tolerance.
     std::vector<double> local_farin_knots(int segment) const;
-    std::vector<double> greville_abscissae() const;            // one per de Boor ordinate
-    const Eigen::MatrixXd& bezier() const { return bezier_; }  // k × (p+1): b_{j,r}
+    void local_farin_knots_into(int segment, double* out) const;  // the same into out[0..2p), no allocation
+    std::vector<double> greville_abscissae() const;               // one per de Boor ordinate
+    const Eigen::MatrixXd& bezier() const { return bezier_; }     // k × (p+1): b_{j,r}
 
     // ψ^{(d)}(s), d = 0..order, by the B-spline basis (right-continuous; s = length from the left).
     Eigen::VectorXd jet(double s, int order) const;
@@ -72,5 +73,8 @@ private:
 // b may be a row of bezier() (any inner stride: no copy).
 Eigen::Vector2d direction_integrals(const Eigen::Ref<const Eigen::VectorXd, 0, Eigen::InnerStride<>>& b, double tau = 1.0,
                                     Eigen::Matrix<double, 2, Eigen::Dynamic>* weights = nullptr);
+// The same with the weights in fixed storage (degree ≤ 3: at most 4 columns), no allocation.
+using DirectionWeights = Eigen::Matrix<double, 2, Eigen::Dynamic, 0, 2, 4>;
+Eigen::Vector2d direction_integrals(const Eigen::Ref<const Eigen::VectorXd, 0, Eigen::InnerStride<>>& b, double tau, DirectionWeights* weights);
 
 }  // namespace cagd::intrinsic
