@@ -263,14 +263,24 @@ std::vector<std::string> design_equation_labels(const CurvatureProfileProblem& P
     return out;
 }
 
-DesignSystem design_system(const CurvatureProfileProblem& P, const Eigen::VectorXd& u, bool with_jacobian) {
+namespace {
+
+// The per-iteration arrays of design_system, kept by Newton from one iteration to the next: at
+// 10^6 points they are hundreds of MB, and fresh pages each iteration cost a tenth of the solve.
+struct DesignWorkspace {
+    std::vector<SegmentJet> jets;
+    std::vector<Eigen::Triplet<double>> triplets;
+};
+
+DesignSystem design_system(const CurvatureProfileProblem& P, const Eigen::VectorXd& u, bool with_jacobian, DesignWorkspace& workspace) {
     const KnotLayout& L = P.layout;
     const int p = L.degree(), k = L.segments(), rows = design_equations(P), cols = design_unknowns(P);
     const TangentAngleSpline psi = TangentAngleSpline::from_unknowns(L, u);
-    std::vector<SegmentJet> jets;
-    jets.reserve(static_cast<std::size_t>(k));
-    for (int j = 0; j < k; ++j) jets.push_back(segment_jet(psi, j));
-    std::vector<Eigen::Triplet<double>> triplets;
+    std::vector<SegmentJet>& jets = workspace.jets;
+    jets.resize(static_cast<std::size_t>(k));
+    for (int j = 0; j < k; ++j) jets[static_cast<std::size_t>(j)] = segment_jet(psi, j);
+    std::vector<Eigen::Triplet<double>>& triplets = workspace.triplets;
+    triplets.clear();
     RowWriter write(L, with_jacobian ? &triplets : nullptr);
     DesignSystem out;
     out.f.resize(rows);
@@ -370,6 +380,13 @@ DesignSystem design_system(const CurvatureProfileProblem& P, const Eigen::Vector
     return out;
 }
 
+}  // namespace
+
+DesignSystem design_system(const CurvatureProfileProblem& P, const Eigen::VectorXd& u, bool with_jacobian) {
+    DesignWorkspace workspace;
+    return design_system(P, u, with_jacobian, workspace);
+}
+
 Eigen::VectorXd c2_start(const CurvatureProfileProblem& P) {
     require_valid_problem(P, "intrinsic::c2_start");
     const KnotLayout& L = P.layout;
@@ -450,6 +467,7 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
     // pattern ever differs; the numeric factorisation is the same either way.
     numeric::SparseLu lu;
     std::vector<int> analysed_outer, analysed_inner;
+    DesignWorkspace workspace;
     for (int it = 0;; ++it) {
         // A diverging iterate winds ψ by hundreds of turns between neighbouring ordinates; the
         // integrals of such a segment cost O(turning) and mean nothing: stop it as unconverged.
@@ -460,7 +478,7 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
                                                        fmt(turning) + " rad (limit " + fmt(kMaxOrdinateTurning) + ")"};
             return sol;
         }
-        const DesignSystem sys = design_system(P, sol.u, true);
+        const DesignSystem sys = design_system(P, sol.u, true, workspace);
         const double res = sys.f.lpNorm<Eigen::Infinity>();
         if (!std::isfinite(res)) {
             sol.outcome = {Status::no_convergence, std::string(method) + ": the residual became non-finite at iteration " + std::to_string(it)};
