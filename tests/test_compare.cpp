@@ -628,3 +628,37 @@ TEST(Compare, PseudoSplineRotationDeviationIsBounded) {
     EXPECT_LE(worst[1], 1e-7);   // Brent's tolerance 2^-26 on α (methods/method_registry.hpp)
     EXPECT_LE(worst[2], 1e-12);  // was 3.5e-3 while the non-convex case followed rounding noise
 }
+
+// fairness_measures skips the positions of the samples of a piece that starts deeper inside the
+// data's box than twice its length. The overshoot must still be that of every sample's position:
+// recomputed here from jet_into at every sample, for every method, on a walk whose splines leave
+// the box (the bound is exercised: most pieces are deep inside, some reach out).
+TEST(Compare, OvershootSkipsNoSampleOutsideTheBox) {
+    const PointList p = bench::random_walk(300, 3, 0.3, 2.5, 1.0);
+    const Eigen::RowVectorXd lo = p.colwise().minCoeff(), hi = p.colwise().maxCoeff();
+    const double diagonal = (hi - lo).norm();
+    const int samples = 16;
+    int overshooting = 0;
+    for (const methods::Configuration& m : methods::configurations()) {
+        const methods::InterpolationResult r = methods::interpolate(m, p, false);
+        ASSERT_TRUE(r.interpolant) << m.name;
+        const Curve& c = *r.interpolant->curve;
+        const analysis::FairnessMeasures f = analysis::fairness_measures(c, p, analysis::FairnessSampling{samples, 8});
+        double expected = 0.0;
+        const std::vector<double> br = c.breakpoints();
+        JetMatrix J;
+        for (std::size_t k = 0; k + 1 < br.size(); ++k)
+            for (int j = 0; j <= samples; ++j) {
+                c.jet_into(br[k] + (br[k + 1] - br[k]) * j / samples, 3, J);
+                double outside = 0.0;
+                for (int d = 0; d < 2; ++d) {
+                    const double e = std::max({lo(d) - J(0, d), J(0, d) - hi(d), 0.0});
+                    outside += e * e;
+                }
+                expected = std::max(expected, std::sqrt(outside) / diagonal);
+            }
+        EXPECT_EQ(f.overshoot, expected) << m.name;
+        overshooting += expected > 0.0;
+    }
+    EXPECT_GE(overshooting, 5) << "the walk should take several methods out of the box";
+}

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "cagd/analysis/curve_measures.hpp"
 #include "cagd/core/errors.hpp"
@@ -36,20 +37,32 @@ FairnessMeasures fairness_measures(const Curve& c, const PointList& data, const 
         c.jet_into(a, 0, J);
         c.jet_into(b, 0, Jb);
         const double chord = (Jb.row(0) - J.row(0)).norm();
+        // A piece that starts deeper inside the data's box than twice its length cannot leave it
+        // (|r(u) − r(a)| is at most the arc length from a; twice the quadrature's length leaves room
+        // for its error): its samples' overshoot is 0, and their derivatives are taken without
+        // the position (derivatives_into: the same values, bit for bit; a position costs an
+        // integration on some curves, e.g. 16 sincos on the curvature-profile curve).
+        double depth = std::numeric_limits<double>::infinity();
+        for (int d = 0; d < dim; ++d) depth = std::min({depth, J(0, d) - lo(d), hi(d) - J(0, d)});
+        const bool needs_position = !(depth > 2.0 * len);
+        const int r1 = needs_position ? 1 : 0;  // the row of the first derivative
         double spike = 0.0;
         for (int j = 0; j <= samples; ++j) {
             const double u = a + (b - a) * j / samples;
-            c.jet_into(u, 3, J);
+            if (needs_position)
+                c.jet_into(u, 3, J);
+            else
+                c.derivatives_into(u, 3, J);
             double kappa = 0.0;  // signed in the plane, |κ| in space
             if (dim == 2) {
-                const double x1 = J(1, 0), y1 = J(1, 1), v2 = x1 * x1 + y1 * y1;
+                const double x1 = J(r1, 0), y1 = J(r1, 1), v2 = x1 * x1 + y1 * y1;
                 if (!(v2 > 0.0)) fail_input(who, "zero speed (a cusp) at t = " + full_precision(u) + ": curvature is undefined there");
-                const double cross = x1 * J(2, 1) - y1 * J(2, 0), v = std::sqrt(v2);
+                const double cross = x1 * J(r1 + 1, 1) - y1 * J(r1 + 1, 0), v = std::sqrt(v2);
                 kappa = cross / (v2 * v);
-                const double dkappa_ds = ((x1 * J(3, 1) - y1 * J(3, 0)) * v2 - 3.0 * cross * (x1 * J(2, 0) + y1 * J(2, 1))) / (v2 * v2 * v2);
+                const double dkappa_ds = ((x1 * J(r1 + 2, 1) - y1 * J(r1 + 2, 0)) * v2 - 3.0 * cross * (x1 * J(r1 + 1, 0) + y1 * J(r1 + 1, 1))) / (v2 * v2 * v2);
                 m.max_abs_curvature_derivative = std::max(m.max_abs_curvature_derivative, std::abs(dkappa_ds));
             } else {
-                const Eigen::Vector3d d1 = J.row(1).head<3>().transpose(), d2 = J.row(2).head<3>().transpose(), d3 = J.row(3).head<3>().transpose();
+                const Eigen::Vector3d d1 = J.row(r1).head<3>().transpose(), d2 = J.row(r1 + 1).head<3>().transpose(), d3 = J.row(r1 + 2).head<3>().transpose();
                 const double v2 = d1.squaredNorm();
                 if (!(v2 > 0.0)) fail_input(who, "zero speed (a cusp) at t = " + full_precision(u) + ": curvature is undefined there");
                 const Eigen::Vector3d cr = d1.cross(d2), cr1 = d1.cross(d3);
@@ -70,6 +83,7 @@ FairnessMeasures fairness_measures(const Curve& c, const PointList& data, const 
                     last_sign = sign;
                 }
             }
+            if (!needs_position) continue;
             double outside = 0.0;  // distance from the data's bounding box
             for (int d = 0; d < dim; ++d) {
                 const double e = std::max({lo(d) - J(0, d), J(0, d) - hi(d), 0.0});
