@@ -22,9 +22,14 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
 def load_benchmarks(path):
+    """One entry per benchmark: its single run, or the median of its repetitions under its own name."""
     with open(path, encoding="utf-8") as f:
         data = json.load(f)
-    return {b["name"]: b for b in data["benchmarks"] if b.get("run_type", "iteration") == "iteration"}
+    out = {b["name"]: b for b in data["benchmarks"] if b.get("run_type", "iteration") == "iteration"}
+    for b in data["benchmarks"]:
+        if b.get("run_type") == "aggregate" and b.get("aggregate_name") == "median":
+            out[b["run_name"].split("/repeats:")[0]] = b
+    return out
 
 
 def seconds(b):
