@@ -27,7 +27,6 @@ namespace {
 // Bumped whenever a minimiser or the file layout changes, so stale caches are rebuilt.
 constexpr int kCacheFormat = 5;  // 5: the runner-up's r0, r1 (TableReading::runner_up_within)
 
-using detail::locate;
 using detail::next_node;
 
 }  // namespace
@@ -76,17 +75,17 @@ PseudoEnergyTable PseudoEnergyTable::build(const AngleGrid& grid, TableMethod me
     PseudoEnergyTable t;
     t.grid_ = grid;
     t.method_ = method;
-    t.set_nodes(grid.nodes());
+    t.axis_ = detail::PeriodicAxis(grid.nodes());
     const int n = grid.n;
     t.values_.assign(static_cast<std::size_t>(n * n), PseudoEnergyMinimum{});
     // Index of the node at −θ (the placements are symmetric about 0; ±π map to themselves).
     std::vector<int> negate(static_cast<std::size_t>(n));
     for (int k = 0; k < n; ++k) {
-        const double target = -t.nodes_[static_cast<std::size_t>(k)];
+        const double target = -t.axis_.nodes[static_cast<std::size_t>(k)];
         int best = 0;
         for (int m = 0; m < n; ++m)
-            if (std::abs(std::remainder(t.nodes_[static_cast<std::size_t>(m)] - target, 2 * std::numbers::pi)) <
-                std::abs(std::remainder(t.nodes_[static_cast<std::size_t>(best)] - target, 2 * std::numbers::pi)))
+            if (std::abs(std::remainder(t.axis_.nodes[static_cast<std::size_t>(m)] - target, 2 * std::numbers::pi)) <
+                std::abs(std::remainder(t.axis_.nodes[static_cast<std::size_t>(best)] - target, 2 * std::numbers::pi)))
                 best = m;
         negate[static_cast<std::size_t>(k)] = best;
     }
@@ -103,7 +102,7 @@ PseudoEnergyTable PseudoEnergyTable::build(const AngleGrid& grid, TableMethod me
         static_cast<long>(todo.size()), threads,
         [&](long k) {
             const long idx = todo[static_cast<std::size_t>(k)];
-            const double a = t.nodes_[static_cast<std::size_t>(idx / n)], b = t.nodes_[static_cast<std::size_t>(idx % n)];
+            const double a = t.axis_.nodes[static_cast<std::size_t>(idx / n)], b = t.axis_.nodes[static_cast<std::size_t>(idx % n)];
             t.values_[static_cast<std::size_t>(idx)] = method == TableMethod::fast        ? minimize_pseudo_energy(a, b)
                                                        : method == TableMethod::reference ? minimize_pseudo_energy_reference(a, b)
                                                                                           : minimize_pseudo_energy_nlopt(a, b);
@@ -118,8 +117,8 @@ PseudoEnergyTable PseudoEnergyTable::build(const AngleGrid& grid, TableMethod me
                 PseudoEnergyMinimum m = src;
                 const int ri = rep / n, rj = rep % n;
                 const int ni = negate[static_cast<std::size_t>(i)], nj = negate[static_cast<std::size_t>(j)];
-                m.theta0 = t.nodes_[static_cast<std::size_t>(i)];
-                m.theta1 = t.nodes_[static_cast<std::size_t>(j)];
+                m.theta0 = t.axis_.nodes[static_cast<std::size_t>(i)];
+                m.theta1 = t.axis_.nodes[static_cast<std::size_t>(j)];
                 bool swapped = false, negated = false;
                 if (ri == j && rj == i)
                     swapped = true;
@@ -225,7 +224,7 @@ PseudoEnergyTable PseudoEnergyTable::load_or_build(const std::string& path, cons
         PseudoEnergyTable t;
         t.grid_ = grid;
         t.method_ = method;
-        t.set_nodes(grid.nodes());
+        t.axis_ = detail::PeriodicAxis(grid.nodes());
         std::ifstream in(path);
         std::string line;
         if (!(in && std::getline(in, line) && line == t.header_line() && read_node_rows(in, grid.n, t.values_))) return std::nullopt;
@@ -258,7 +257,7 @@ PseudoEnergyTable PseudoEnergyTable::load(const std::string& path) {
     PseudoEnergyTable t;
     t.grid_ = AngleGrid{n, parse_node_placement(placement)};
     t.method_ = method == "reference" ? TableMethod::reference : method == "nlopt" ? TableMethod::nlopt : TableMethod::fast;
-    t.set_nodes(t.grid_.nodes());
+    t.axis_ = detail::PeriodicAxis(t.grid_.nodes());
     if (!read_node_rows(in, n, t.values_)) fail_input(who, "'" + path + "': expected " + std::to_string(n * n) + " well-formed node rows");
     t.pack();
     return t;
@@ -272,8 +271,8 @@ PseudoEnergyTable::CellPosition PseudoEnergyTable::locate_cell(double theta0, do
         fail_input(who,
                    "(" + full_precision(theta0) + ", " + full_precision(theta1) + ") is an undefined node (theta0, theta1 in {0, +-pi}): r0, r1 do not exist there (paper §4.1)");
     CellPosition c;
-    locate(nodes_, inv_h_, theta0, c.i, c.u);
-    locate(nodes_, inv_h_, theta1, c.j, c.v);
+    axis_.locate(theta0, c.i, c.u);
+    axis_.locate(theta1, c.j, c.v);
     return c;
 }
 
@@ -401,11 +400,11 @@ AngleMinimumTable AngleMinimumTable::build(const AngleGrid& grid, const PseudoEn
     }
     AngleMinimumTable t;
     t.grid_ = grid;
-    t.set_nodes(grid.nodes());
-    t.values_.assign(t.nodes_.size(), AngleMinimum{});
-    parallel_for(static_cast<long>(t.nodes_.size()), threads,
+    t.axis_ = detail::PeriodicAxis(grid.nodes());
+    t.values_.assign(t.axis_.nodes.size(), AngleMinimum{});
+    parallel_for(static_cast<long>(t.axis_.nodes.size()), threads,
                  [&](long k) {
-                     const double theta = t.nodes_[static_cast<std::size_t>(k)];
+                     const double theta = t.axis_.nodes[static_cast<std::size_t>(k)];
                      AngleMinimum& out = t.values_[static_cast<std::size_t>(k)];
                      const std::vector<double>* source_nodes = scan_source ? &scan_source->nodes() : nullptr;
                      const auto row = source_nodes ? std::find(source_nodes->begin(), source_nodes->end(), theta) : std::vector<double>::const_iterator{};
@@ -441,8 +440,8 @@ AngleMinimumTable AngleMinimumTable::load_or_build(const std::string& path, cons
         if (!(in && std::getline(in, line) && line == header.str() && std::getline(in, line))) return std::nullopt;
         AngleMinimumTable t;
         t.grid_ = grid;
-        t.set_nodes(grid.nodes());
-        while (t.values_.size() < t.nodes_.size() && std::getline(in, line)) {
+        t.axis_ = detail::PeriodicAxis(grid.nodes());
+        while (t.values_.size() < t.axis_.nodes.size() && std::getline(in, line)) {
             // theta,theta1,J,status,message (the message last: it may hold commas)
             std::istringstream row(line);
             std::string f[4];
@@ -455,10 +454,10 @@ AngleMinimumTable AngleMinimumTable::load_or_build(const std::string& path, cons
             m.pseudo_energy = std::strtod(f[2].c_str(), &end);
             m.outcome.status = static_cast<Status>(std::atoi(f[3].c_str()));
             std::getline(row, m.outcome.message);
-            if (m.theta != t.nodes_[t.values_.size()]) break;  // another grid: rebuild
+            if (m.theta != t.axis_.nodes[t.values_.size()]) break;  // another grid: rebuild
             t.values_.push_back(m);
         }
-        if (t.values_.size() != t.nodes_.size()) return std::nullopt;
+        if (t.values_.size() != t.axis_.nodes.size()) return std::nullopt;
         return t;
     };
     return load_or_build_locked(path, try_load, [&] {
@@ -486,8 +485,8 @@ AngleMinimumTable AngleMinimumTable::from_energy_table(const PseudoEnergyTable& 
     reading.radii = false;  // J(θ) minimises the interpolated J
     AngleMinimumTable t;
     t.grid_ = table.grid();
-    t.set_nodes(table.nodes());
-    for (double theta : t.nodes_) {
+    t.axis_ = detail::PeriodicAxis(table.nodes());
+    for (double theta : t.axis_.nodes) {
         const auto j_of = [&](double theta1) {
             if (is_undefined_node(theta, theta1)) return std::abs(theta) + std::abs(theta1) == 0.0 ? 0.0 : kInfinity;
             return table.lookup(theta, theta1, reading).pseudo_energy;
@@ -501,8 +500,8 @@ std::pair<double, double> AngleMinimumTable::lookup(double theta) const {
     require_tangent_angle("cagd::fairness::AngleMinimumTable::lookup", theta, "theta");
     int i = 0;
     double u = 0.0;
-    locate(nodes_, inv_h_, theta, i, u);
-    const std::size_t a = static_cast<std::size_t>(i), b = static_cast<std::size_t>(next_node(i, static_cast<int>(nodes_.size())));
+    axis_.locate(theta, i, u);
+    const std::size_t a = static_cast<std::size_t>(i), b = static_cast<std::size_t>(next_node(i, static_cast<int>(axis_.nodes.size())));
     const double j = (1 - u) * values_[a].pseudo_energy + u * values_[b].pseudo_energy;
     // θ1 is an angle: interpolate the wrapped difference.
     const double d = wrap_angle(values_[b].theta1 - values_[a].theta1);

@@ -93,7 +93,7 @@ public:
 
     const AngleGrid& grid() const { return grid_; }
     TableMethod method() const { return method_; }
-    const std::vector<double>& nodes() const { return nodes_; }
+    const std::vector<double>& nodes() const { return axis_.nodes; }
     const PseudoEnergyMinimum& node(int i, int j) const { return values_[static_cast<std::size_t>(i * grid_.n + j)]; }
 
     // Interpolated values at (θ0, θ1) ∈ [−π, π]²; throws InvalidInput outside, for non-finite
@@ -114,12 +114,7 @@ public:
 private:
     AngleGrid grid_;
     TableMethod method_ = TableMethod::fast;
-    std::vector<double> nodes_;
-    double inv_h_ = 0.0;  // 1 / (nodes_[1] − nodes_[0]), what every lookup's cell search needs
-    void set_nodes(std::vector<double> nodes) {
-        nodes_ = std::move(nodes);
-        inv_h_ = nodes_.size() > 1 ? 1.0 / (nodes_[1] - nodes_[0]) : 0.0;
-    }
+    detail::PeriodicAxis axis_;
     std::vector<PseudoEnergyMinimum> values_;
     std::vector<TableValue> packed_;  // what lookup reads: J, r0, r1, L, S, type (x = unusable), 48 bytes a node
     void pack();
@@ -154,7 +149,7 @@ public:
     // load equals a build bit for bit), otherwise built and saved (temporary file, then rename).
     static AngleMinimumTable load_or_build(const std::string& path, const AngleGrid& grid, int threads = 2);
     static AngleMinimumTable load_or_build(const std::string& path, const AngleGrid& grid, const PseudoEnergyTable& scan_source, int threads = 2);
-    const std::vector<double>& nodes() const { return nodes_; }
+    const std::vector<double>& nodes() const { return axis_.nodes; }
     const std::vector<AngleMinimum>& values() const { return values_; }
     // Linear interpolation; throws InvalidInput outside [−π, π]. Returns {J(θ), θ1(θ)}.
     std::pair<double, double> lookup(double theta) const;
@@ -163,12 +158,7 @@ public:
 
 private:
     AngleGrid grid_;
-    std::vector<double> nodes_;
-    double inv_h_ = 0.0;  // 1 / (nodes_[1] − nodes_[0]), what every lookup's cell search needs
-    void set_nodes(std::vector<double> nodes) {
-        nodes_ = std::move(nodes);
-        inv_h_ = nodes_.size() > 1 ? 1.0 / (nodes_[1] - nodes_[0]) : 0.0;
-    }
+    detail::PeriodicAxis axis_;
     std::vector<AngleMinimum> values_;
     static AngleMinimumTable build(const AngleGrid& grid, const PseudoEnergyTable* scan_source, int threads);
     static AngleMinimumTable load_or_build(const std::string& path, const AngleGrid& grid, const PseudoEnergyTable* scan_source, int threads);
@@ -178,8 +168,8 @@ inline double AngleMinimumTable::pseudo_energy(double theta) const {
     require_tangent_angle("cagd::fairness::AngleMinimumTable::pseudo_energy", theta, "theta");
     int i = 0;
     double u = 0.0;
-    detail::locate(nodes_, inv_h_, theta, i, u);
-    const std::size_t a = static_cast<std::size_t>(i), b = static_cast<std::size_t>(detail::next_node(i, static_cast<int>(nodes_.size())));
+    axis_.locate(theta, i, u);
+    const std::size_t a = static_cast<std::size_t>(i), b = static_cast<std::size_t>(detail::next_node(i, static_cast<int>(axis_.nodes.size())));
     return (1 - u) * values_[a].pseudo_energy + u * values_[b].pseudo_energy;
 }
 
