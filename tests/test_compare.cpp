@@ -662,3 +662,21 @@ TEST(Compare, OvershootSkipsNoSampleOutsideTheBox) {
     }
     EXPECT_GE(overshooting, 5) << "the walk should take several methods out of the box";
 }
+
+// Boost's centripetal Catmull–Rom sums |ΔP|^½ into its parameters, wrap-around chords included;
+// points spanning ~170 orders of magnitude made two parameters coincide and Boost read past its
+// arrays (the fuzzer's heap overflow under ASan, on exactly these points; in Release the garbage
+// derivatives happened to be caught later as non-finite). Such input is now refused up front with
+// InvalidInput; input of a wide but representable range is still accepted.
+TEST(Compare, CatmullRomRefusesPointsWhoseChordsVanishInItsParameters) {
+    PointList absorbed(4, 2);
+    absorbed << -2.944495781822957e+47, -2.5773528032350093e-69, -2.463211248477935e-69, 1.745188899073996e-24, -4.469195348508078e+100, -2.590421391080513e-69,
+        -1.8659157147815346e-68, 8.145974672594484e-260;
+    EXPECT_THROW(interpolate("boost-catmull-rom", absorbed, false), InvalidInput);
+    EXPECT_THROW(interpolate("boost-catmull-rom", absorbed, true), InvalidInput);
+    PointList wide(4, 2);
+    wide << 0, 0, 1e-6, 0, 1e6, 1, 2e6, 0;  // chords from 1e-6 to 1e6: parameter terms 1e-3 to 1e3
+    const InterpolationResult r = interpolate("boost-catmull-rom", wide, false);
+    ASSERT_TRUE(r.outcome.ok() && r.interpolant);
+    EXPECT_TRUE(r.interpolant->curve->point(r.interpolant->node_parameters[1]).allFinite());
+}

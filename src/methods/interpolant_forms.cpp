@@ -10,6 +10,7 @@ using std::isnan;
 #include <boost/math/interpolators/makima.hpp>
 #include <boost/math/interpolators/pchip.hpp>
 
+#include "cagd/core/errors.hpp"
 #include "cagd/spline/hermite_spline.hpp"
 
 namespace cagd::methods {
@@ -42,6 +43,25 @@ Interpolant catmull_rom_interpolant(const PointList& p, bool closed) {
     std::vector<Point> pts(static_cast<std::size_t>(p.rows()));
     for (Eigen::Index k = 0; k < p.rows(); ++k)
         for (std::size_t c = 0; c < D; ++c) pts[static_cast<std::size_t>(k)][c] = p(k, static_cast<Eigen::Index>(c));
+    // Boost's centripetal parameters are a running sum of |ΔP|^½ over the points and, after them,
+    // the chords P_{n−1}P_0 and P_0P_1 (its wrap-around ghost nodes, also for open curves). If the
+    // points span many orders of magnitude (chords of 1e-69 beside 1e100), a short chord's term
+    // vanishes in that sum, two parameters coincide, and Boost's span search reads past its
+    // arrays (found by fuzzing). Each term must therefore exceed 1e-12 of the sum (ε is 1.1e-16).
+    {
+        std::vector<double> terms;
+        double sum = 0.0;
+        for (Eigen::Index k = 0; k <= p.rows(); ++k) {
+            const Eigen::Index a = k % p.rows(), b = (k + 1) % p.rows();  // k = n−1, n: the ghost chords
+            terms.push_back(std::sqrt((p.row(b) - p.row(a)).norm()));
+            sum += terms.back();
+        }
+        for (std::size_t k = 0; k < terms.size(); ++k)
+            if (!(terms[k] > 1e-12 * sum))
+                fail_input("cagd::methods::boost_catmull_rom_interpolant", "the chord from point " + std::to_string(k % pts.size()) + " is " + full_precision(terms[k] * terms[k]) +
+                                                                               " long against a centripetal parameter sum of " + full_precision(sum) +
+                                                                               ": it vanishes in double precision (the points span too many orders of magnitude)");
+    }
     const boost::math::catmull_rom<Point> cr(std::move(pts), closed, 0.5);
     const Eigen::Index n = p.rows(), spans = closed ? n : n - 1;
     std::vector<double> h;
