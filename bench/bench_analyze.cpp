@@ -1,4 +1,4 @@
-// make bench, `cagd analyze --in` (issue 23 goal: the Table 1 data in at most 0.2 s):
+// make bench, `cagd analyze --in` (goal: the Table 1 data in at most 0.2 s):
 //  - BM_AnalyzeIn/<method>: what the command computes after reading the points — the curve
 //    (methods::interpolate), its length by adaptive Gauss–Kronrod to 1e-12, the area closed by
 //    the chord, the sampled curvature extremes — on the 13 points of pseudo_energy Table 1.

@@ -1,4 +1,4 @@
-// make bench, compare (issue 10 goal: `cagd compare` on 10^5 random points within a minute),
+// make bench, compare (goal: `cagd compare` on 10^5 random points within a minute),
 // nothing here passes or fails:
 //  - BM_CompareEveryMethod/n: compare_methods (all 19 methods, with the locality re-solve) and the
 //    figure data at the CLI's budget, on a seeded random walk of n points. The CLI adds reading,
@@ -8,14 +8,14 @@
 #include <benchmark/benchmark.h>
 
 #include "cagd/compare/method_comparison.hpp"
-#include "random_walk.hpp"
+#include "cagd/core/random_walk.hpp"
 
 using namespace cagd;
 
 namespace {
 
 void run_comparison(benchmark::State& state, const std::vector<std::string>& methods) {
-    const PointList p = bench::random_walk(state.range(0), 1, 0.2, 1.0, 1.2);
+    const PointList p = cagd::random_walk(state.range(0), 1, 0.2, 1.0, 1.2);
     compare::ComparisonOptions o;
     o.methods = methods;
     for (auto _ : state) {

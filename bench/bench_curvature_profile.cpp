@@ -1,4 +1,4 @@
-// make bench, curvature_profile (issue 9 goals), nothing here passes or fails:
+// make bench, curvature_profile (its goals below), nothing here passes or fails:
 //  - BM_Fig3Solve: the Fig. 3 design (13 points, lines and arcs), C2 start + Newton with the
 //    Moore–Penrose step to ‖f‖∞ ≤ 1e-12·scale: goal under 10 ms.
 //  - BM_NewtonIterationSparse/n: one Newton iteration (residual, sparse Jacobian, SparseLU step) of an

@@ -1,4 +1,4 @@
-// make bench, hosaka section 3 (issue 5 goal): the C2 spline with scale factors (eq 20) through
+// make bench, hosaka section 3 (its goal below): the C2 spline with scale factors (eq 20) through
 // 10^3 … 10^6 points should take linear time — items_per_second flat across the sizes — compared,
 // in the same run, with Boost.Math's cardinal cubic B-spline (uniform parameter, per coordinate).
 // Nothing here passes or fails.
@@ -10,10 +10,10 @@
 #include <vector>
 
 #include "cagd/spline/hosaka_spline.hpp"
-#include "random_walk.hpp"
+#include "cagd/core/random_walk.hpp"
 
 namespace {
-cagd::PointList walk(long n) { return cagd::bench::random_walk(n, 11, 0.1, 2.0, 1.0); }
+cagd::PointList walk(long n) { return cagd::random_walk(n, 11, 0.1, 2.0, 1.0); }
 
 void BM_hosaka_c2_chord(benchmark::State& s) {
     const cagd::PointList p = walk(s.range(0));

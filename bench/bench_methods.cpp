@@ -1,4 +1,4 @@
-// make bench, issue 24 targets for construction and evaluation; nothing here passes or fails
+// make bench, the targets for construction and evaluation (docs/performance.md); nothing here passes or fails
 // (scripts/bench-targets.py turns the figures into ratios against the peers and baselines below):
 //  - BM_Construct/<method>/n: methods::interpolate with the method's defaults (input checks,
 //    solve, the curve) on a seeded random walk of n points, for every registered method.
@@ -29,13 +29,13 @@
 
 #include "cagd/methods/method_registry.hpp"
 #include "cagd/spline/hermite_spline.hpp"
-#include "random_walk.hpp"
+#include "cagd/core/random_walk.hpp"
 
 using namespace cagd;
 
 namespace {
 
-PointList walk(long n) { return bench::random_walk(n, 7, 0.1, 2.0, 1.0); }
+PointList walk(long n) { return cagd::random_walk(n, 7, 0.1, 2.0, 1.0); }
 
 // Before any benchmark runs (see the top of the file).
 const bool allocator_keeps_memory = [] { return mallopt(M_MMAP_THRESHOLD, 32 << 20) == 1 && mallopt(M_TRIM_THRESHOLD, 1 << 30) == 1; }();

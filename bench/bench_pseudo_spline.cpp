@@ -1,4 +1,4 @@
-// make bench, pseudo_energy sections 3–5 (issue 4 goals):
+// make bench, pseudo_energy sections 3–5 (its goals below):
 //  * pseudo-spline through 10^5 random points with the tables in memory, per tangent mode, against
 //    Hermite curve A and Boost.Math's catmull_rom on the same points (construction of an evaluable
 //    curve). Goal: the approximate mode within 3× of Hermite A — compare BM_pseudo_spline/approx
@@ -17,14 +17,14 @@
 #include "cagd/analysis/curve_measures.hpp"
 #include "cagd/fairness/pseudo_spline.hpp"
 #include "cagd/spline/hermite_spline.hpp"
-#include "random_walk.hpp"
+#include "cagd/core/random_walk.hpp"
 
 namespace {
 using namespace cagd;
 using namespace cagd::fairness;
 
 // A random walk: chords of length 0.5..2, turning by at most 2.5 rad (no hairpins), seeded.
-PointList random_walk(int n, unsigned seed) { return bench::random_walk(n, seed, 0.5, 2.0, 2.5); }
+PointList random_walk(int n, unsigned seed) { return cagd::random_walk(n, seed, 0.5, 2.0, 2.5); }
 
 struct Fixture {
     PseudoEnergyTable table = PseudoEnergyTable::build({36, NodePlacement::periodic}, TableMethod::fast, 2, true);

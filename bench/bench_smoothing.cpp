@@ -1,4 +1,4 @@
-// make bench, hosaka sections 6-7 (issue 6 goals), nothing here passes or fails:
+// make bench, hosaka sections 6-7 (its goals below), nothing here passes or fails:
 //  - the elastic line (five-term system (51), banded LDLT) through 10^3 … 10^6 points should take
 //    linear time: items_per_second flat across the sizes; the interpolating spline of eq (23) on the
 //    same data is the baseline in the same run;

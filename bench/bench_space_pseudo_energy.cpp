@@ -1,4 +1,4 @@
-// issue 26 targets: the 36 × 36 × 72 fast space table on 2 threads (≤ 60 s) and its lookup (≤ 100 ns).
+// The space pseudo-energy targets: the 36 × 36 × 72 fast space table on 2 threads (≤ 60 s) and its lookup (≤ 100 ns).
 #include <benchmark/benchmark.h>
 
 #include <array>

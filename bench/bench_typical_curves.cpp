@@ -1,4 +1,4 @@
-// make bench, typical_curves (issue 7 goals), nothing here passes or fails:
+// make bench, typical_curves (its goals below), nothing here passes or fails:
 //  - degree-99 Bézier jets to 3rd order at 10^4 parameters: de Casteljau (O(n²), the baseline in
 //    the same run), the O(n) Bernstein evaluation and the naive power basis; counter max_error =
 //    largest |jet − reference| over the 10^4 parameters, the reference being de Casteljau in

@@ -1,4 +1,4 @@
-// make bench, typical_curves section 5 (issue 8 goal), nothing here passes or fails:
+// make bench, typical_curves section 5 (its goal below), nothing here passes or fails:
 //  - the Fig. 6 bi-degree-24 patch with Gaussian and mean curvature on a 200 × 200 parameter grid:
 //    goal under 1 s. The baseline in the same run is the point-by-point evaluation (basis values
 //    and the O(mn) contraction per point, BezierPatch::jet); the grid path shares the basis

@@ -25,7 +25,7 @@ using std::isnan;
 #include "cagd/core/parallel.hpp"
 #include "cagd/core/point_csv.hpp"
 #include "cagd/methods/method_registry.hpp"
-#include "random_walk.hpp"
+#include "cagd/core/random_walk.hpp"
 
 using namespace cagd;
 using namespace cagd::compare;
@@ -38,9 +38,9 @@ int property_sets() {
     return env ? std::max(1, std::atoi(env)) : 10000;
 }
 
-// A seeded planar walk (bench/random_walk.hpp, the benchmarks' generator): steps 0.2–1, heading
+// A seeded planar walk (cagd/core/random_walk.hpp): steps 0.2–1, heading
 // changes within ±1.2 rad.
-PointList random_walk_points(Eigen::Index n) { return bench::random_walk(n, 1, 0.2, 1.0, 1.2); }
+PointList random_walk_points(Eigen::Index n) { return cagd::random_walk(n, 1, 0.2, 1.0, 1.2); }
 
 // Open: a random walk, steps in [0.2, 1], turns in [−150°, 150°]. Closed: a star-shaped polygon
 // (sorted angles, radii in [0.5, 1.5]), so that consecutive points are distinct and the turn is < π.
@@ -285,7 +285,7 @@ INSTANTIATE_TEST_SUITE_P(Compare, EveryMethod, ::testing::ValuesIn([] {
 TEST(Compare, ResultsDoNotDependOnTheThreadCount) {
     // compare_methods measures the methods in parallel (iterative ones first); each row must be the
     // same, bit for bit, with one thread or three, and the figure data likewise.
-    const PointList p = bench::random_walk(80, 5, 0.2, 1.0, 1.2);  // small: it also runs under ASan (make sanitize)
+    const PointList p = cagd::random_walk(80, 5, 0.2, 1.0, 1.2);  // small: it also runs under ASan (make sanitize)
     compare::ComparisonOptions one, three;
     one.threads = 1;
     three.threads = 3;
@@ -634,7 +634,7 @@ TEST(Compare, PseudoSplineRotationDeviationIsBounded) {
 // recomputed here from jet_into at every sample, for every method, on a walk whose splines leave
 // the box (the bound is exercised: most pieces are deep inside, some reach out).
 TEST(Compare, OvershootSkipsNoSampleOutsideTheBox) {
-    const PointList p = bench::random_walk(300, 3, 0.3, 2.5, 1.0);
+    const PointList p = cagd::random_walk(300, 3, 0.3, 2.5, 1.0);
     const Eigen::RowVectorXd lo = p.colwise().minCoeff(), hi = p.colwise().maxCoeff();
     const double diagonal = (hi - lo).norm();
     const int samples = 16;

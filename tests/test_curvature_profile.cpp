@@ -9,7 +9,7 @@
 
 #include "cagd/core/errors.hpp"
 #include "cagd/intrinsic/design_verification.hpp"
-#include "random_walk.hpp"
+#include "cagd/core/random_walk.hpp"
 
 using namespace cagd;
 using namespace cagd::intrinsic;
@@ -199,7 +199,7 @@ TEST(CurvatureProfileDesign, LongOpenSplineConvergesToTheTolerance) {
     // 6·10^4 points of a random walk (arc length 3.6·10^4): with absolute knots the knot differences
     // lost ε·w each and Newton settled at ‖f‖∞ = 2.8e-12 > 1e-12 ("no solution"; checked by
     // putting the absolute knots back).
-    const PointList p = bench::random_walk(60000, 1, 0.2, 1.0, 1.2);
+    const PointList p = cagd::random_walk(60000, 1, 0.2, 1.0, 1.2);
     const std::vector<SegmentShape> free(static_cast<std::size_t>(p.rows() - 1), SegmentShape::free);
     const KnotLayout layout = span_layout(free);
     CurvatureProfileProblem problem{p, layout, segment_shapes(layout, free), {}, false, 0};

@@ -116,13 +116,13 @@ TEST(Methods, AllocationFreeJetsEqualTheAllocatingOnes) {
     }
 }
 
-TEST(Methods, ReadmeTableIsTheRegistry) {
-    std::ifstream in(std::string(CAGD_SOURCE_DIR) + "/README.md");
+TEST(Methods, MethodsPageIsTheRegistry) {
+    std::ifstream in(std::string(CAGD_SOURCE_DIR) + "/docs/methods.md");
     std::stringstream ss;
     ss << in.rdbuf();
-    const std::string readme = ss.str(), table = registry_markdown();
-    EXPECT_NE(readme.find("<!-- methods:begin -->\n" + table + "<!-- methods:end -->"), std::string::npos)
-        << "README.md's method table differs from the registry: run scripts/update-readme-methods.sh (make reproduce does)";
+    const std::string page = ss.str(), table = registry_markdown();
+    EXPECT_NE(page.find("<!-- methods:begin -->\n" + table + "<!-- methods:end -->"), std::string::npos)
+        << "docs/methods.md's method table differs from the registry: run scripts/update-docs-methods.sh (make reproduce does)";
     for (const Method& m : registry()) EXPECT_NE(table.find("`" + m.name + "`"), std::string::npos) << m.name;
 }
 

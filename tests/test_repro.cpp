@@ -7,8 +7,8 @@
 
 #include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
-#include "cagd/repro/artifact_run.hpp"
-#include "cagd/repro/reference.hpp"
+#include "repro/artifact_run.hpp"
+#include "repro/reference.hpp"
 
 using namespace cagd;
 using namespace cagd::repro;

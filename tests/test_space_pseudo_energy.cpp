@@ -1,4 +1,4 @@
-// The space pseudo-energy (issue 26, part 1): the 3-D unit-chord segment, its energies and the
+// The space pseudo-energy (pseudo_energy section 6, extended to space): the 3-D unit-chord segment, its energies and the
 // minimum of J = L²E over r0, r1; checked against the planar segment at φ = 0 and π, its
 // symmetries, finite differences, the generic analysis module and the reference path.
 #include <gtest/gtest.h>

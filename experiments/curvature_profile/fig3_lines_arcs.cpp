@@ -12,7 +12,7 @@
 
 #include "cagd/core/point_csv.hpp"
 #include "cagd/intrinsic/design_verification.hpp"
-#include "cagd/repro/artifact_run.hpp"
+#include "repro/artifact_run.hpp"
 
 using namespace cagd;
 using namespace cagd::intrinsic;

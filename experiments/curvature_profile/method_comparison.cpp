@@ -3,7 +3,7 @@
 // and its figures. The paper's own curve on these points (lines and arcs) is experiment
 // fig3_lines_arcs; no claims of the paper are checked here, the validations check the measurements.
 #include "cagd/core/point_csv.hpp"
-#include "cagd/repro/comparison_record.hpp"
+#include "repro/comparison_record.hpp"
 
 using namespace cagd;
 

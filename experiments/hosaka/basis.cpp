@@ -7,7 +7,7 @@
 #include <string>
 
 #include "cagd/core/rational_polynomial.hpp"
-#include "cagd/repro/artifact_run.hpp"
+#include "repro/artifact_run.hpp"
 #include "cagd/spline/hosaka_basis.hpp"
 
 using namespace cagd;

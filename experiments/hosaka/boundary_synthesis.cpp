@@ -11,7 +11,7 @@
 #include <string>
 
 #include "cagd/numeric/finite_difference.hpp"
-#include "cagd/repro/artifact_run.hpp"
+#include "repro/artifact_run.hpp"
 #include "cagd/surface/boundary_surface.hpp"
 
 using namespace cagd;

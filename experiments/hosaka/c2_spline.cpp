@@ -7,7 +7,7 @@
 
 #include "cagd/analysis/curve_measures.hpp"
 #include "cagd/analysis/fairness_measures.hpp"
-#include "cagd/repro/artifact_run.hpp"
+#include "repro/artifact_run.hpp"
 #include "cagd/spline/hermite_spline.hpp"
 #include "cagd/spline/hosaka_spline.hpp"
 #include "curve_data.hpp"

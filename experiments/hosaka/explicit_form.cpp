@@ -11,7 +11,7 @@
 #include <random>
 
 #include "cagd/numeric/gauss_legendre.hpp"
-#include "cagd/repro/artifact_run.hpp"
+#include "repro/artifact_run.hpp"
 #include "cagd/spline/hosaka_spline.hpp"
 
 using namespace cagd;

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "cagd/analysis/curve_measures.hpp"
-#include "cagd/repro/artifact_run.hpp"
+#include "repro/artifact_run.hpp"
 #include "cagd/spline/hosaka_spline.hpp"
 #include "curve_data.hpp"
 

@@ -8,7 +8,7 @@
 #include <numbers>
 
 #include "cagd/analysis/curve_measures.hpp"
-#include "cagd/repro/artifact_run.hpp"
+#include "repro/artifact_run.hpp"
 #include "cagd/spline/hosaka_spline.hpp"
 
 using namespace cagd;

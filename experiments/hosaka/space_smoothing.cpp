@@ -8,7 +8,7 @@
 #include <random>
 
 #include "cagd/analysis/curve_measures.hpp"
-#include "cagd/repro/artifact_run.hpp"
+#include "repro/artifact_run.hpp"
 #include "cagd/smoothing/elastic_line.hpp"
 #include "cagd/smoothing/elastic_space_curve.hpp"
 

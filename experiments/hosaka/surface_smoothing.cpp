@@ -12,7 +12,7 @@
 #include <functional>
 #include <random>
 
-#include "cagd/repro/artifact_run.hpp"
+#include "repro/artifact_run.hpp"
 #include "cagd/smoothing/elastic_line.hpp"
 #include "cagd/smoothing/surface_smoothing.hpp"
 

@@ -6,7 +6,7 @@
 #include <numbers>
 
 #include "cagd/fairness/pseudo_energy_table.hpp"
-#include "cagd/repro/artifact_run.hpp"
+#include "repro/artifact_run.hpp"
 
 using namespace cagd;
 using namespace cagd::fairness;

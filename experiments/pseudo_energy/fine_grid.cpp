@@ -8,7 +8,7 @@
 #include <random>
 
 #include "cagd/fairness/pseudo_energy_table.hpp"
-#include "cagd/repro/artifact_run.hpp"
+#include "repro/artifact_run.hpp"
 
 using namespace cagd;
 using namespace cagd::fairness;
@@ -95,7 +95,7 @@ int main(int argc, char** argv) {
         dj = std::max(dj, std::abs(f.pseudo_energy - r.pseudo_energy) / std::max(1.0, r.pseudo_energy));
         dr = std::max({dr, std::abs(f.r0 - r.r0), std::abs(f.r1 - r.r1)});
     }
-    run.validate("random.fast_vs_reference_J", "fast vs reference minimum at 200 random direction pairs: max |ΔJ| / max(1, J)", dj, 0.0, 1e-10, "issue 3 agreement requirement");
-    run.validate("random.fast_vs_reference_r", "fast vs reference minimiser at 200 random direction pairs: max |Δr|", dr, 0.0, 1e-8, "issue 3 agreement requirement");
+    run.validate("random.fast_vs_reference_J", "fast vs reference minimum at 200 random direction pairs: max |ΔJ| / max(1, J)", dj, 0.0, 1e-10, "required agreement of the fast path with the reference path");
+    run.validate("random.fast_vs_reference_r", "fast vs reference minimiser at 200 random direction pairs: max |Δr|", dr, 0.0, 1e-8, "required agreement of the fast path with the reference path");
     return run.finish();
 }

@@ -4,7 +4,7 @@
 // the validations check the comparison's own measurements.
 #include "cagd/analysis/curve_measures.hpp"
 #include "cagd/core/point_csv.hpp"
-#include "cagd/repro/comparison_record.hpp"
+#include "repro/comparison_record.hpp"
 
 using namespace cagd;
 

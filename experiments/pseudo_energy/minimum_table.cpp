@@ -8,7 +8,7 @@
 #include <numbers>
 
 #include "cagd/fairness/pseudo_energy_table.hpp"
-#include "cagd/repro/artifact_run.hpp"
+#include "repro/artifact_run.hpp"
 
 using namespace cagd;
 using namespace cagd::fairness;
@@ -94,8 +94,8 @@ int main(int argc, char** argv) {
     run.note("Types at the 36 × 36 nodes: " + std::to_string(n_c) + " c, " + std::to_string(n_s) + " s, " + std::to_string(n_x) +
              " x (undefined). The reference reached ≥ 2 distinct local minima at " + std::to_string(multi) + " nodes; the closest runner-up is " +
              format_number(closest_gap * 100, 3) + " % above the global minimum, at " + closest_at + ".");
-    run.validate("fast.J", "fast path vs reference at every defined node: max |ΔJ| / max(1, J)", fast_dj, 0.0, 1e-10, "issue 3 agreement requirement (relative for J ≫ 1)");
-    run.validate("fast.r", "fast path vs reference at every defined node: max |Δr0|, |Δr1|", fast_dr, 0.0, 1e-8, "issue 3 agreement requirement");
+    run.validate("fast.J", "fast path vs reference at every defined node: max |ΔJ| / max(1, J)", fast_dj, 0.0, 1e-10, "required agreement of the fast path with the reference path (relative for J ≫ 1)");
+    run.validate("fast.r", "fast path vs reference at every defined node: max |Δr0|, |Δr1|", fast_dr, 0.0, 1e-8, "required agreement of the fast path with the reference path");
     run.validate("fast.L_S", "fast path vs reference at every defined node: max |ΔL|, |ΔS|", fast_dls, 0.0, 1e-8, "follows from |Δr| ≤ 1e-8");
     run.validate("nlopt.J", "NLopt L-BFGS vs reference at every defined node: max |ΔJ| / max(1, J)", nl_dj, 0.0, 1e-12, "a value-based descent reaches J to ~quadrature noise");
     run.validate("nlopt.r", "NLopt L-BFGS vs reference at every defined node: max |Δr| (same minimum)", nl_dr, 0.0, 1e-3,

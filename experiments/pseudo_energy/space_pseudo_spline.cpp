@@ -16,8 +16,8 @@
 #include "cagd/core/point_csv.hpp"
 #include "cagd/fairness/space_pseudo_spline.hpp"
 #include "cagd/methods/method_registry.hpp"
-#include "cagd/repro/artifact_run.hpp"
-#include "cagd/repro/comparison_record.hpp"
+#include "repro/artifact_run.hpp"
+#include "repro/comparison_record.hpp"
 
 using namespace cagd;
 using namespace cagd::fairness;

@@ -11,7 +11,7 @@
 
 #include "cagd/analysis/curve_measures.hpp"
 #include "cagd/fairness/hermite_segment.hpp"
-#include "cagd/repro/artifact_run.hpp"
+#include "repro/artifact_run.hpp"
 
 using namespace cagd;
 using namespace cagd::fairness;

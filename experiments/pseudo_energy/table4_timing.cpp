@@ -11,7 +11,7 @@
 
 #include "cagd/core/point_csv.hpp"
 #include "cagd/fairness/pseudo_spline.hpp"
-#include "cagd/repro/artifact_run.hpp"
+#include "repro/artifact_run.hpp"
 
 using namespace cagd;
 using namespace cagd::fairness;

@@ -8,7 +8,7 @@
 
 #include "cagd/locality/locality_spline.hpp"
 #include "cagd/numeric/gauss_legendre.hpp"
-#include "cagd/repro/artifact_run.hpp"
+#include "repro/artifact_run.hpp"
 
 using namespace cagd;
 using namespace cagd::locality;

@@ -6,7 +6,7 @@
 #include <numbers>
 
 #include "cagd/locality/locality_spline.hpp"
-#include "cagd/repro/artifact_run.hpp"
+#include "repro/artifact_run.hpp"
 #include "cagd/spline/bspline.hpp"
 
 using namespace cagd;

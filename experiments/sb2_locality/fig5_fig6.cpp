@@ -6,7 +6,7 @@
 
 #include "cagd/analysis/curve_measures.hpp"
 #include "cagd/locality/locality_spline.hpp"
-#include "cagd/repro/artifact_run.hpp"
+#include "repro/artifact_run.hpp"
 
 using namespace cagd;
 using namespace cagd::locality;

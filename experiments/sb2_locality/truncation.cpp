@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "cagd/locality/locality_spline.hpp"
-#include "cagd/repro/artifact_run.hpp"
+#include "repro/artifact_run.hpp"
 
 using namespace cagd;
 using namespace cagd::locality;

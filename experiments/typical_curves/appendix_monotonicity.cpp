@@ -13,7 +13,7 @@
 #include "cagd/aesthetic/cubic_bspline_monotonicity.hpp"
 #include "cagd/aesthetic/typical_bezier.hpp"
 #include "cagd/analysis/curve_measures.hpp"
-#include "cagd/repro/artifact_run.hpp"
+#include "repro/artifact_run.hpp"
 
 using namespace cagd;
 using namespace cagd::aesthetic;

@@ -11,7 +11,7 @@
 
 #include "cagd/aesthetic/class_a.hpp"
 #include "cagd/analysis/curvature_monotonicity.hpp"
-#include "cagd/repro/artifact_run.hpp"
+#include "repro/artifact_run.hpp"
 #include "cagd/spline/bezier.hpp"
 
 using namespace cagd;

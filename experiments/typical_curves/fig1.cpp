@@ -12,7 +12,7 @@
 #include "cagd/analysis/curvature_monotonicity.hpp"
 #include "cagd/analysis/curve_measures.hpp"
 #include "cagd/analysis/log_curvature_graph.hpp"
-#include "cagd/repro/artifact_run.hpp"
+#include "repro/artifact_run.hpp"
 #include "cagd/spline/bezier.hpp"
 
 using namespace cagd;

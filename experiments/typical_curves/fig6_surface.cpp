@@ -13,7 +13,7 @@
 #include "cagd/aesthetic/typical_surface.hpp"
 #include "cagd/analysis/log_curvature_graph.hpp"
 #include "cagd/analysis/surface_curvature.hpp"
-#include "cagd/repro/artifact_run.hpp"
+#include "repro/artifact_run.hpp"
 #include "cagd/spline/bezier.hpp"
 #include "cagd/surface/bezier_patch.hpp"
 

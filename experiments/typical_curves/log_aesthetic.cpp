@@ -8,7 +8,7 @@
 #include "cagd/aesthetic/log_aesthetic_curve.hpp"
 #include "cagd/analysis/log_curvature_graph.hpp"
 #include "cagd/numeric/gauss_legendre.hpp"
-#include "cagd/repro/artifact_run.hpp"
+#include "repro/artifact_run.hpp"
 
 using namespace cagd;
 using namespace cagd::aesthetic;

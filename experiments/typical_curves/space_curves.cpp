@@ -16,7 +16,7 @@
 #include "cagd/analysis/curve_measures.hpp"
 #include "cagd/analysis/log_curvature_graph.hpp"
 #include "cagd/numeric/alexa_product.hpp"
-#include "cagd/repro/artifact_run.hpp"
+#include "repro/artifact_run.hpp"
 #include "cagd/spline/bezier.hpp"
 
 using namespace cagd;

@@ -8,7 +8,7 @@
 #include "cagd/aesthetic/log_aesthetic_curve.hpp"
 #include "cagd/aesthetic/typical_bezier.hpp"
 #include "cagd/analysis/log_curvature_graph.hpp"
-#include "cagd/repro/artifact_run.hpp"
+#include "repro/artifact_run.hpp"
 #include "cagd/spline/bezier.hpp"
 
 using namespace cagd;

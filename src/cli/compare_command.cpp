@@ -16,9 +16,9 @@
 #include <string>
 #include <vector>
 
-#include "cagd/cli/commands.hpp"
-#include "cagd/cli/compare_panels_script.hpp"
-#include "cagd/cli/output.hpp"
+#include "cli/commands.hpp"
+#include "cli/compare_panels_script.hpp"
+#include "cli/output.hpp"
 #include "cagd/compare/method_comparison.hpp"
 #include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"

@@ -1,4 +1,4 @@
-#include "cagd/cli/curve_output.hpp"
+#include "cli/curve_output.hpp"
 
 #include <string>
 #include <vector>

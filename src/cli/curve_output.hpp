@@ -3,7 +3,7 @@
 // samples between consecutive breakpoints (and the end). Checks the row count against
 // kMaxOutputRows before writing and every value for finiteness (cli/output.hpp); the caller
 // commits `out`.
-#include "cagd/cli/output.hpp"
+#include "cli/output.hpp"
 #include "cagd/core/curve.hpp"
 
 namespace cagd::cli {

@@ -6,8 +6,8 @@
 #include <memory>
 #include <numbers>
 
-#include "cagd/cli/commands.hpp"
-#include "cagd/cli/output.hpp"
+#include "cli/commands.hpp"
+#include "cli/output.hpp"
 #include "cagd/core/errors.hpp"
 #include "cagd/fairness/pseudo_energy_minimum.hpp"
 

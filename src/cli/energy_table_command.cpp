@@ -4,8 +4,8 @@
 #include <cstdio>
 #include <memory>
 
-#include "cagd/cli/commands.hpp"
-#include "cagd/cli/output.hpp"
+#include "cli/commands.hpp"
+#include "cli/output.hpp"
 #include "cagd/core/errors.hpp"
 #include "cagd/fairness/pseudo_energy_table.hpp"
 

@@ -6,10 +6,10 @@
 #include <iostream>
 #include <memory>
 
-#include "cagd/cli/commands.hpp"
-#include "cagd/cli/curve_output.hpp"
-#include "cagd/cli/method_options.hpp"
-#include "cagd/cli/output.hpp"
+#include "cli/commands.hpp"
+#include "cli/curve_output.hpp"
+#include "cli/method_options.hpp"
+#include "cli/output.hpp"
 #include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
 #include "cagd/core/point_csv.hpp"
@@ -58,7 +58,7 @@ Command add_interpolate_command(CLI::App& app) {
     CLI::App* c = app.add_subcommand("interpolate", "Interpolate points with any registered method (--list-methods): a curve CSV of samples with derivatives");
     add_method_options(c, a->method, a->options);
     c->add_flag("--list-methods", a->list, "describe every method: paper, equations, claims, parameters with defaults and ranges");
-    c->add_flag("--markdown", a->markdown, "with --list-methods: the README's Markdown table");
+    c->add_flag("--markdown", a->markdown, "with --list-methods: the Markdown table of docs/methods.md");
     c->add_flag("--closed", a->closed, "closed curve");
     c->add_option("--samples", a->samples, "samples per curve piece in the output (samples x pieces <= 10^7 rows)")->check(CLI::Range(1, 100000));
     c->add_option("--in", a->in, "points CSV: x,y[,z] per line, optional header of names; - for stdin");

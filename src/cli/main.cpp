@@ -15,8 +15,8 @@
 #include <new>
 #include <vector>
 
-#include "cagd/cli/commands.hpp"
-#include "cagd/cli/output.hpp"
+#include "cli/commands.hpp"
+#include "cli/output.hpp"
 #include "cagd/core/errors.hpp"
 
 int main(int argc, char** argv) {

@@ -1,4 +1,4 @@
-#include "cagd/cli/method_options.hpp"
+#include "cli/method_options.hpp"
 
 #include <set>
 #include <vector>

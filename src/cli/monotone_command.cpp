@@ -9,8 +9,8 @@
 
 #include "cagd/aesthetic/cubic_bspline_monotonicity.hpp"
 #include "cagd/analysis/curvature_monotonicity.hpp"
-#include "cagd/cli/commands.hpp"
-#include "cagd/cli/output.hpp"
+#include "cli/commands.hpp"
+#include "cli/output.hpp"
 #include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
 #include "cagd/core/point_csv.hpp"

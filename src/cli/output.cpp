@@ -1,4 +1,4 @@
-#include "cagd/cli/output.hpp"
+#include "cli/output.hpp"
 
 #include <charconv>
 

@@ -4,8 +4,8 @@
 #include <functional>
 #include <memory>
 
-#include "cagd/cli/commands.hpp"
-#include "cagd/cli/output.hpp"
+#include "cli/commands.hpp"
+#include "cli/output.hpp"
 #include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
 #include "cagd/core/point_csv.hpp"

@@ -9,8 +9,8 @@
 
 #include "cagd/aesthetic/typical_surface.hpp"
 #include "cagd/analysis/surface_curvature.hpp"
-#include "cagd/cli/commands.hpp"
-#include "cagd/cli/output.hpp"
+#include "cli/commands.hpp"
+#include "cli/output.hpp"
 #include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
 

@@ -1,4 +1,4 @@
-#include "cagd/repro/artifact_run.hpp"
+#include "repro/artifact_run.hpp"
 
 #include <algorithm>
 #include <cmath>

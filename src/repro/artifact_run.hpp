@@ -5,7 +5,7 @@
 //   results/<paper>/<artifact>.meta         (title, section, sources, figures, notes)
 // plus the data files the experiment asks for, and returns the exit code.
 //
-// Status of a claim (DESIGN.md):
+// Status of a claim (docs/reproduction.md):
 //   reproduced  |ours − paper| ≤ tolerance
 //   deviates    outside tolerance, the row names an erratum present in reference/ERRATA.md,
 //               and the corrected statement holds: |ours − corrected_value| ≤ tolerance, or
@@ -28,7 +28,7 @@
 #include <vector>
 
 #include "cagd/core/csv.hpp"
-#include "cagd/repro/reference.hpp"
+#include "repro/reference.hpp"
 
 namespace cagd::repro {
 
@@ -75,7 +75,7 @@ public:
     // An independent recomputation of a library value: |fast − reference| ≤ tolerance.
     void validate(const std::string& short_id, const std::string& description, double fast, double reference_value, double tolerance, const std::string& tolerance_reason);
 
-    // A timing claim (DESIGN.md: timing is never pass/fail and never byte-stable): `ours` is
+    // A timing claim (timing is never pass/fail and never byte-stable): `ours` is
     // tested against the interval [lo, hi] the paper's printed digits allow. It is written to
     // <root>/results/timing/<paper>_<artifact>.csv (not committed, not compared by CI) and listed
     // in the report without the measured value; the reference rows in `rows_used` (the printed

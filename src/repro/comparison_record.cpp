@@ -1,4 +1,4 @@
-#include "cagd/repro/comparison_record.hpp"
+#include "repro/comparison_record.hpp"
 
 #include <cmath>
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "cagd/compare/method_comparison.hpp"
-#include "cagd/repro/artifact_run.hpp"
+#include "repro/artifact_run.hpp"
 
 namespace cagd::repro {
 

@@ -1,4 +1,4 @@
-#include "cagd/repro/reference.hpp"
+#include "repro/reference.hpp"
 
 #include <fstream>
 #include <set>

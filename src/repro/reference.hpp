@@ -2,7 +2,7 @@
 // Reference files: reference/<paper>/<artifact>.csv — the claims of one paper artifact as
 // transcribed from the paper, with provenance.
 //
-//   # paper: sb2_locality (seed 001_…txt); source: eq (13), section 3.1   ← '#' lines: provenance
+//   # paper: sb2_locality — M. Kuroda, …, IPSJ Journal; source: eq (13), section 3.1   ← '#' lines: provenance
 //   id,paper_value,tolerance,tolerance_reason,erratum,corrected_value,description
 //   sb2_locality.eq13.m4.w0,0.998621,5e-7,printed 6 decimals,,,weight of q_{i,0} for m = 4
 //

@@ -1,4 +1,4 @@
-#include "cagd/repro/report.hpp"
+#include "repro/report.hpp"
 
 #include <algorithm>
 #include <filesystem>

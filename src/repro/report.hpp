@@ -1,7 +1,7 @@
 #pragma once
 // Generates results/claims.csv and results/REPORT.md from the per-artifact files that the
 // experiments wrote (results/<paper>/<artifact>.checks.csv and .meta). Deterministic: papers in
-// the DESIGN.md order, artifacts by section, rows in the order the experiments recorded them.
+// the order of docs/papers.md, artifacts by section, rows in the order the experiments recorded them.
 #include <string>
 
 namespace cagd::repro {

@@ -2,7 +2,7 @@
 // Exit 1 if any claim or validation failed.
 #include <iostream>
 
-#include "cagd/repro/report.hpp"
+#include "repro/report.hpp"
 
 int main(int argc, char** argv) {
     const std::string root = argc > 1 ? argv[1] : ".";

@@ -1,6 +1,6 @@
 #pragma once
 // The space pseudo-energy that pseudo_energy section 6 proposes: the unit-chord cubic Hermite
-// segment in 3-D and the minimum of J = L²E over its tangent magnitudes (issue 26, part 1).
+// segment in 3-D and the minimum of J = L²E over its tangent magnitudes (the extension to space that section 6 of pseudo_energy proposes).
 //
 // Geometry (our construction; the paper gives none). Rotating about the chord puts the start
 // tangent in the x–y plane, so three angles fix the directions:

@@ -1,5 +1,5 @@
 #pragma once
-// Errors and numerical outcomes (DESIGN.md "Library conventions").
+// Errors and numerical outcomes (docs/design.md, "Errors and outcomes").
 //
 // A violated precondition (bad input) throws cagd::InvalidInput whose message names
 // the function, the condition and the offending value at full precision.

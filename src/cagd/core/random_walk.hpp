@@ -1,12 +1,15 @@
 #pragma once
-// Seeded random planar walks for the benchmarks: chords of length in [min_len, max_len], heading
-// changing by at most max_turn radians per step (below π: no hairpins).
+// Seeded random planar walks: test and benchmark data of any length, the same points for the same
+// seed on every platform (std::mt19937 and std::uniform_real_distribution over libstdc++).
+// random_walk(n, seed, min_len, max_len, max_turn): n points starting at the origin heading along
+// +x; each step turns by an angle drawn uniformly from [-max_turn, max_turn] radians (below π: no
+// hairpins) and then walks a chord of length drawn uniformly from [min_len, max_len].
 #include <cmath>
 #include <random>
 
 #include "cagd/core/points.hpp"
 
-namespace cagd::bench {
+namespace cagd {
 
 inline PointList random_walk(long n, unsigned seed, double min_len, double max_len, double max_turn) {
     std::mt19937 rng(seed);
@@ -22,4 +25,4 @@ inline PointList random_walk(long n, unsigned seed, double min_len, double max_l
     return p;
 }
 
-}  // namespace cagd::bench
+}  // namespace cagd

@@ -3,7 +3,7 @@
 // name, the paper and equations, what it claims (continuity, invariance, dimensions, closed
 // curves, minimum points), its typed parameters (methods/method_parameters.hpp) and the function
 // that builds the curve. `cagd interpolate` (--method, per-method options, --list-methods),
-// `cagd analyze --in`, `cagd compare`, the property tests, the fuzz targets and the README's
+// `cagd analyze --in`, `cagd compare`, the property tests, the fuzz targets and docs/methods.md's
 // method table all read it; nothing else compares method names.
 //
 //   method              source                                                 claims
@@ -101,7 +101,7 @@ struct Method {
     std::vector<std::string> aliases{};  // older names still accepted
     std::string paper{};                 // paper id, or "Boost.Math"
     std::string source{};                // equations and sections, or the Boost.Math class
-    std::string summary{};               // one line for help texts and the README table
+    std::string summary{};               // one line for help texts and docs/methods.md
     std::vector<Parameter> parameters{};
     std::function<MethodClaims(const ParameterValues&)> claims{};
     // Builds the curve through points already checked against the claims.
@@ -138,7 +138,7 @@ const std::vector<Configuration>& configurations();
 Configuration find_configuration(const std::string& name);
 InterpolationResult interpolate(const Configuration& configuration, const PointList& points, bool closed);
 
-// The registry as a Markdown table (README) or as plain lines (`cagd interpolate --list-methods`).
+// The registry as a Markdown table (docs/methods.md) or as plain lines (`cagd interpolate --list-methods`).
 std::string registry_markdown();
 std::string registry_listing();
 

@@ -1,5 +1,5 @@
 #pragma once
-// The space pseudo-spline (issue 26, part 3): the cubic Hermite curve through points in 3-D whose
+// The space pseudo-spline (pseudo_energy section 6, extended to space): the cubic Hermite curve through points in 3-D whose
 // spans are minimum pseudo-energy space segments (space_pseudo_energy.hpp), the generalisation of
 // pseudo_energy section 3 (eq 9–13) that section 6 proposes.
 //

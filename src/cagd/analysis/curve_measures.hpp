@@ -1,5 +1,5 @@
 #pragma once
-// Differential and integral measures of any Curve (DESIGN.md: computed once, here).
+// Differential and integral measures of any Curve (docs/design.md: computed once, here).
 //
 //   curvature κ(t) = sqrt(|r'|²|r''|² − (r'·r'')²) / |r'|³        (dimension 2 or 3)
 //   signed curvature (planar) κ(t) = (x'y'' − y'x'') / |r'|³

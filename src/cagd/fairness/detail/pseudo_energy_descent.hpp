@@ -125,7 +125,7 @@ constexpr double kLbfgsBound = 1e4, kLbfgsFtolRel = 1e-15, kLbfgsXtolRel = 1e-12
 constexpr int kLbfgsEvaluations = 300;
 // Its first step in ρ = log r is at most this (a factor e in r); see the objective's scale.
 constexpr double kLbfgsFirstStep = 1.0;
-// Its objective: the Romberg energy to rel 1e-13, as the reference path's (DESIGN.md).
+// Its objective: the Romberg energy to rel 1e-13, as the reference path's.
 constexpr double kLbfgsRombergRelTol = 1e-13;
 // Brent's minimiser on J(θ, θ1) over θ1 keeps 40 bits: more than the 26 a smooth minimum's
 // location supports in double precision, as Boost allows up to the full 52.

@@ -1,5 +1,5 @@
 #pragma once
-// The one curve interface (DESIGN.md): position and derivatives at a parameter.
+// The one curve interface (docs/design.md): position and derivatives at a parameter.
 // Everything in analysis/ (curvature, length, area, distances) works on a Curve, so it is
 // written once for all curve types. Modelled on GTE's ParametricCurve::Evaluate(t, order).
 #include <Eigen/Dense>

@@ -63,7 +63,7 @@ const fairness::PseudoSplineTables& default_pseudo_spline_tables() {
     return tables;
 }
 
-// Space points (issue 26): the space pseudo-spline, tangents by the planar tables' J(θ), spans by
+// Space points (pseudo_energy section 6, extended to space): the space pseudo-spline, tangents by the planar tables' J(θ), spans by
 // the space minimiser at the exact angles or from a space table (--space-table).
 InterpolationResult build_space_pseudo_spline(const PointList& points, bool closed, const ParameterValues& v, const fairness::PseudoSplineTables& planar) {
     const auto mode = fairness::parse_tangent_optimization(v.text("optimize"));

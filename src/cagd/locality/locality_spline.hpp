@@ -1,6 +1,7 @@
 #pragma once
 // S-splines and B2-splines as interpolating curves with controllable locality
-// (paper `sb2_locality`: Kuroda, Furukawa, Kimura; seed 001_d8e3105b49ead322.txt).
+// (paper `sb2_locality`: M. Kuroda, S. Furukawa, F. Kimura, "S-splines and B2-splines as
+// Interpolating Curves with Controllable Locality", IPSJ Journal, accepted 1993).
 //
 // Data p_i at parameter u = i (uniform). Each segment [i, i+1] gets one extra control
 // point d_{2i+1}; the interpolation points p_i are the other controls. Two carriers:

@@ -1,5 +1,5 @@
 #pragma once
-// The 3-D table of the space pseudo-energy (issue 26, part 2): J(θ0, θ1, φ), its minimisers
+// The 3-D table of the space pseudo-energy (pseudo_energy section 6, extended to space): J(θ0, θ1, φ), its minimisers
 // r0, r1, the length L and the segment type over the box [0, π] × [0, π] × [0, 2π) that
 // pseudo_energy section 6 proposes, with trilinear lookup.
 //
