@@ -44,7 +44,7 @@ run_one "$last" || status=1
 # (grep -v selects nothing when every figure was rendered: that is not a failure.)
 { ls scripts/plot/*.gp | grep -v -e '/style\.gp$' -e '/compare_panels\.gp$' | grep -v -x -F -f <(sed 's|.*|scripts/plot/&.gp|' "$rendered") || true; } |
   xargs -r -P "${JOBS:-2}" -I{} bash -c 'render_one "$1"' _ {} || status=1
-bash scripts/update-readme-methods.sh "$build" || status=1   # README's method table, from the registry
+bash scripts/update-docs-methods.sh "$build" || status=1   # docs/methods.md: the registry's table
 "$build/cagd_report" "$root" || status=1
 {
   echo "git revision: $(git rev-parse HEAD 2>/dev/null || echo unknown)"
