@@ -3,6 +3,7 @@
 // (interpolate, analyze --in, compare) is walked over every method by tests/cli_test.sh.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -45,10 +46,19 @@ TEST(Methods, NamesAreUniqueAndFound) {
     EXPECT_NE(m.find("curvature-profile"), std::string::npos) << "the message lists the known names: " << m;
 }
 
-TEST(Methods, EveryMethodIsConfiguredForTheComparisonPropertyTestsAndFuzzers) {
-    // compare, the property tests (test_compare EveryMethod) and fuzz_interpolate iterate
-    // configurations(): a method without presets appears there under its own name.
+TEST(Methods, EveryRegisteredMethodReachesEveryFront) {
+    // compare, the property tests (EveryMethod/*) and fuzz_interpolate iterate configurations():
+    // a method without presets appears there under its own name. The command takes its --method
+    // choices from method_names() and prints registry_listing() for --list-methods; docs/methods.md
+    // is registry_markdown(). The Python module's cagd.methods() equals the command's list
+    // (python/tests), and tests/cli_test.sh runs every listed method through interpolate,
+    // analyze --in and compare.
+    const std::vector<std::string> choices = method_names();
+    const std::string listing = registry_listing(), table = registry_markdown();
     for (const Method& m : registry()) {
+        EXPECT_NE(std::find(choices.begin(), choices.end(), m.name), choices.end()) << m.name << " is not a --method choice";
+        EXPECT_NE(("\n" + listing).find("\n" + m.name + " "), std::string::npos) << m.name << " is not in --list-methods";
+        EXPECT_NE(table.find("| `" + m.name + "`"), std::string::npos) << m.name << " is not in docs/methods.md's table";
         int found = 0;
         for (const Configuration& c : configurations()) found += c.method == &m;
         EXPECT_GE(found, 1) << m.name << " is not compared";
@@ -58,14 +68,23 @@ TEST(Methods, EveryMethodIsConfiguredForTheComparisonPropertyTestsAndFuzzers) {
         EXPECT_TRUE(m.claims && m.build) << m.name;
         EXPECT_FALSE(m.paper.empty() || m.source.empty() || m.summary.empty()) << m.name;
     }
-    // The comparison's rows keep the names and order of the published results.
-    std::vector<std::string> names;
+    // The configurations are, in registry order, each method's presets or the method itself.
+    std::vector<std::string> names, expected;
     for (const Configuration& c : configurations()) names.push_back(c.name);
-    const std::vector<std::string> expected = {"pseudo-spline-none", "pseudo-spline-exact", "pseudo-spline-approx", "cubic-a",          "cubic-b",
-                                               "hermite-a",          "hermite-b",           "s-spline-m1",          "s-spline-m2",      "s-spline-m4",
-                                               "b2-spline-m1",       "b2-spline-m2",        "b2-spline-m4",         "hosaka-c2-chord",  "hosaka-c2-unit",
-                                               "curvature-profile",  "boost-pchip",         "boost-makima",         "boost-catmull-rom"};
+    for (const Method& m : registry()) {
+        if (m.presets.empty()) expected.push_back(m.name);
+        for (const Preset& p : m.presets) expected.push_back(p.name);
+    }
     EXPECT_EQ(names, expected);
+    // The published comparison (results/, committed) has one row per configuration, in this order:
+    // a method added to the registry reaches it by the next make reproduce.
+    std::ifstream in(std::string(CAGD_SOURCE_DIR) + "/results/pseudo_energy/fig_compare_table1_measures.csv");
+    ASSERT_TRUE(in) << "results/pseudo_energy/fig_compare_table1_measures.csv";
+    std::string line;
+    std::vector<std::string> published;
+    std::getline(in, line);  // header
+    while (std::getline(in, line)) published.push_back(line.substr(0, line.find(',')));
+    EXPECT_EQ(published, names) << "the committed comparison differs from the registry: run make reproduce";
 }
 
 TEST(Methods, EveryMethodInterpolatesWithItsDefaults) {

@@ -2,7 +2,9 @@
 // Tables 1–3, their curvature profiles, measured fairness, corners on the knot data, locality.
 // Tables: the 36-node reference table (Romberg + CG, as the paper) and J(θ), θ1(θ) derived from it
 // as section 4.1 describes. The pseudo-spline of the figures uses the exact tangent optimisation.
+// The five curves are built by the method registry, as `cagd interpolate --method M` builds them.
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <numbers>
 #include <string>
@@ -12,6 +14,7 @@
 #include "cagd/core/point_csv.hpp"
 #include "cagd/fairness/pseudo_spline.hpp"
 #include "cagd/locality/locality_spline.hpp"
+#include "cagd/methods/method_registry.hpp"
 #include "repro/artifact_run.hpp"
 
 using namespace cagd;
@@ -19,8 +22,8 @@ using namespace cagd::fairness;
 
 namespace {
 
-constexpr InterpolationMethod kMethods[] = {InterpolationMethod::cubic_spline_a, InterpolationMethod::cubic_spline_b, InterpolationMethod::hermite_a,
-                                            InterpolationMethod::hermite_b, InterpolationMethod::pseudo_spline};
+// The five curves of section 4.2, by their registry names, in the order of the figures.
+const std::vector<std::string> kMethods = {"cubic-a", "cubic-b", "hermite-a", "hermite-b", "pseudo-spline"};
 
 // Largest distance between two curves over the spans in [first, last] (same parameter).
 double span_distance(const Curve& a, const Curve& b, int first, int last) {
@@ -36,6 +39,17 @@ int main(int argc, char** argv) {
     const PseudoSplineTables tables =
         PseudoSplineTables::from(PseudoEnergyTable::load_or_build(run.cache_path("table36_reference.txt"), {36, NodePlacement::periodic}, TableMethod::reference));
     const TableOracle oracle = tables.oracle();
+    // The registry's pseudo-spline reads the same table file, with exact tangent optimisation.
+    const methods::ParameterText pseudo_spline_parameters = {{"table", run.cache_path("table36_reference.txt")}, {"optimize", "exact"}};
+    const auto section42 = [&](const PointList& points, const std::string& method) -> methods::Interpolant {
+        methods::InterpolationResult r = methods::interpolate(method, points, false, method == "pseudo-spline" ? pseudo_spline_parameters : methods::ParameterText{});
+        if (!r.outcome.ok()) {  // not for these methods on valid points: recorded as a failed validation, then the run ends
+            run.validate("sec42.registry_builds." + method, method + " through the registry: " + r.outcome.message, 1.0, 0.0, 0.0, "every section 4.2 method returns a curve");
+            std::exit(run.finish());
+        }
+        return std::move(*r.interpolant);
+    };
+    const auto spans_of = [](const methods::Interpolant& i) { return static_cast<int>(i.node_parameters.size()) - 1; };
 
     struct DataSet {
         std::string name, figure, caption;
@@ -74,11 +88,12 @@ int main(int argc, char** argv) {
     std::map<std::string, double> interior_max, ends_max;
     for (const DataSet& d : sets) {
         for (std::size_t mi = 0; mi < std::size(kMethods); ++mi) {
-            const InterpolationMethod m = kMethods[mi];
-            const spline::PiecewiseHermiteCurve c = section42_interpolant(d.points, m, false, oracle, TangentOptimization::exact);
-            const auto [f, crossings] = measure_row(d, to_string(m), m == InterpolationMethod::pseudo_spline ? "exact" : "", c);
+            const std::string& m = kMethods[mi];
+            const methods::Interpolant interpolant = section42(d.points, m);
+            const Curve& c = *interpolant.curve;
+            const auto [f, crossings] = measure_row(d, m, m == "pseudo-spline" ? "exact" : "", c);
             for (const analysis::CurvatureSample& s : analysis::curvature_profile(c, 64)) {
-                const Eigen::Vector2d p = c.point(s.u);
+                const Eigen::VectorXd p = c.point(s.u);
                 if (d.figure == "fig10_14")
                     fig1.row({double(mi + 1), s.u, p.x(), p.y(), s.s, s.kappa});
                 else if (d.figure == "fig15_19")
@@ -87,13 +102,13 @@ int main(int argc, char** argv) {
                     fig3.row({double(mi + 1), s.u, p.x(), p.y(), s.s, s.kappa});
             }
             if (d.name == "table3") {
-                if (m == InterpolationMethod::pseudo_spline) {
+                if (m == "pseudo-spline") {
                     table3_pseudo_corners = f.corners;
                     table3_pseudo_crossings = crossings;
                     table3_spike_pseudo = f.max_spike;
                 }
-                if (m == InterpolationMethod::hermite_a) table3_corner_a = f.corners, table3_spike_a = f.max_spike;
-                if (m == InterpolationMethod::hermite_b) table3_corner_b = f.corners, table3_spike_b = f.max_spike;
+                if (m == "hermite-a") table3_corner_a = f.corners, table3_spike_a = f.max_spike;
+                if (m == "hermite-b") table3_corner_b = f.corners, table3_spike_b = f.max_spike;
             }
         }
         // The pseudo-spline without and with approximate optimisation; with/without optimisation compared.
@@ -105,14 +120,15 @@ int main(int argc, char** argv) {
         if (d.name == "table3") run.note("Table 3 data: the pseudo-spline in mode none (no minimisation of eq 12) has " + std::to_string(fn.corners) + " span(s) with a corner.");
         const int spans = exact.curve.spans();
         if (d.name != "table3" && spans >= 3) {
-            for (auto m : {InterpolationMethod::hermite_a, InterpolationMethod::hermite_b}) {
-                const auto h = section42_interpolant(d.points, m, false, oracle, TangentOptimization::exact);
+            for (const std::string m : {"hermite-a", "hermite-b"}) {
+                const methods::Interpolant hermite = section42(d.points, m);
+                const Curve& h = *hermite.curve;
                 const double interior = span_distance(exact.curve, h, 1, spans - 2) / bounding_box_diagonal(d.points);
                 const double ends = std::max(span_distance(exact.curve, h, 0, 0), span_distance(exact.curve, h, spans - 1, spans - 1)) / bounding_box_diagonal(d.points);
-                std::string key = d.name + "." + to_string(m);
+                std::string key = d.name + "." + m;
                 interior_max[key] = std::max(interior_max[key], interior);
                 ends_max[key] = std::max(ends_max[key], ends);
-                run.note(d.name + (std::isnan(d.a) ? "" : " (a = " + format_number(d.a) + ")") + ": pseudo-spline vs " + to_string(m) + " — largest distance on interior spans " +
+                run.note(d.name + (std::isnan(d.a) ? "" : " (a = " + format_number(d.a) + ")") + ": pseudo-spline vs " + m + " — largest distance on interior spans " +
                          format_number(100 * interior, 3) + " % of the data diagonal, on the end spans " + format_number(100 * ends, 3) + " %.");
             }
         }
@@ -159,16 +175,16 @@ int main(int argc, char** argv) {
             for (Eigen::Index j = 2; j + 2 < n; ++j) {
                 PointList moved = d->points;
                 moved(j, 1) += 0.01 * bounding_box_diagonal(d->points);
-                const auto a = section42_interpolant(d->points, kMethods[mi], false, oracle, TangentOptimization::exact);
-                const auto b = section42_interpolant(moved, kMethods[mi], false, oracle, TangentOptimization::exact);
+                const methods::Interpolant a = section42(d->points, kMethods[mi]);
+                const methods::Interpolant b = section42(moved, kMethods[mi]);
                 int count = 0;
-                for (int k = 0; k < a.spans(); ++k)
-                    if (analysis::max_distance_same_parameter(a, b, k, k + 1, 65) > 1e-12 * bounding_box_diagonal(d->points)) ++count;
+                for (int k = 0; k < spans_of(a); ++k)
+                    if (analysis::max_distance_same_parameter(*a.curve, *b.curve, k, k + 1, 65) > 1e-12 * bounding_box_diagonal(d->points)) ++count;
                 worst = std::max(worst, count);
-                loc.row_text({d->name + (std::isnan(d->a) ? "" : " a=" + format_number(d->a)), to_string(kMethods[mi]), std::to_string(j), std::to_string(a.spans()),
+                loc.row_text({d->name + (std::isnan(d->a) ? "" : " a=" + format_number(d->a)), kMethods[mi], std::to_string(j), std::to_string(spans_of(a)),
                               std::to_string(count)});
             }
-            if (kMethods[mi] == InterpolationMethod::pseudo_spline) pseudo_worst = std::max(pseudo_worst, worst);
+            if (kMethods[mi] == "pseudo-spline") pseudo_worst = std::max(pseudo_worst, worst);
         }
     }
     run.check("sec6.locality.pseudo_spline_spans_moved", pseudo_worst);
@@ -201,11 +217,11 @@ int main(int argc, char** argv) {
     // Independent check of cubic spline A: the natural uniform cubic B-spline interpolant of
     // sb2_locality eq (10) (B-spline form, SparseLU) is the same curve.
     {
-        const auto a = section42_interpolant(t1, InterpolationMethod::cubic_spline_a, false, oracle, TangentOptimization::exact);
+        const methods::Interpolant a = section42(t1, "cubic-a");
         const BSplineCurve b = locality::cubic_bspline_interpolant(t1, false);
         run.validate("sec42.cubic_spline_a_vs_bspline",
                      "cubic spline A (Hermite form, tridiagonal) vs the B-spline interpolant of sb2_locality eq (10), Table 1 data: max distance",
-                     analysis::max_distance_same_parameter(a, b), 0.0, 1e-12 * bounding_box_diagonal(t1), "rounding (1e-12 × data diagonal)");
+                     analysis::max_distance_same_parameter(*a.curve, b), 0.0, 1e-12 * bounding_box_diagonal(t1), "rounding (1e-12 × data diagonal)");
     }
 
     run.figure("fig10_14",

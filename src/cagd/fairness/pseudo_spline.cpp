@@ -273,27 +273,4 @@ long equivalent_helix_polygon_points(double relative_error, double rise_over_rad
     });
 }
 
-const char* to_string(InterpolationMethod m) {
-    switch (m) {
-        case InterpolationMethod::cubic_spline_a: return "cubic-a";
-        case InterpolationMethod::cubic_spline_b: return "cubic-b";
-        case InterpolationMethod::hermite_a: return "hermite-a";
-        case InterpolationMethod::hermite_b: return "hermite-b";
-        case InterpolationMethod::pseudo_spline: return "pseudo-spline";
-    }
-    return "?";
-}
-
-spline::PiecewiseHermiteCurve section42_interpolant(const PointList& points, InterpolationMethod method, bool closed, const SegmentOracle& oracle, TangentOptimization mode) {
-    using namespace spline;
-    switch (method) {
-        case InterpolationMethod::cubic_spline_a: return cubic_spline_interpolant(points, ParameterSpacing::uniform, closed);
-        case InterpolationMethod::cubic_spline_b: return cubic_spline_interpolant(points, ParameterSpacing::chord_length, closed);
-        case InterpolationMethod::hermite_a: return hermite_interpolant(points, hermite_tangent_directions(points, TangentRule::chord_of_neighbours, closed), closed);
-        case InterpolationMethod::hermite_b: return hermite_interpolant(points, hermite_tangent_directions(points, TangentRule::circle, closed), closed);
-        case InterpolationMethod::pseudo_spline: return pseudo_spline(points, oracle, mode, closed).curve;
-    }
-    fail_input("cagd::fairness::section42_interpolant", "unknown method");
-}
-
 }  // namespace cagd::fairness

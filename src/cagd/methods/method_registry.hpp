@@ -6,17 +6,9 @@
 // `cagd analyze --in`, `cagd compare`, the property tests, the fuzz targets and docs/methods.md's
 // method table all read it; nothing else compares method names.
 //
-//   method              source                                                 claims
-//   pseudo-spline       pseudo_energy eq (4)–(12), tangents by --optimize            G1
-//                       (none | exact | approx: Table 4's 3-point approximation);
-//                       3-D points: the space pseudo-spline of section 6 (fairness/space_pseudo_spline.hpp)
-//   cubic-a, cubic-b    C2 cubic spline, uniform / chord-length τ (sec 4.2)         C2 in τ
-//   hermite-a, -b       Hermite curves A and B (sec 4.2)                            G1
-//   s-spline, b2-spline sb2_locality eq (12)–(13), locality m, ends, extra-point rule C2 in u
-//   hosaka              hosaka eq (18)–(20), k_i of eq (19) or 1; order m ≥ 1        C2 (C^2m) in τ
-//   curvature-profile   curvature_profile sec 2–4, span shapes or a knot list        C2 in arc length (G2)
-//   boost-pchip, -makima  Boost.Math pchip / makima on x(τ), y(τ), τ chord           C1 in τ (tangent may vanish)
-//   boost-catmull-rom   Boost.Math centripetal Catmull–Rom (α = 1/2)                 C1 in τ = Σ|ΔP|^½
+// The methods themselves, with their papers, parameters and claims, are listed by
+// registry_markdown() (docs/methods.md) and `cagd interpolate --list-methods`; each paper or
+// family registers its methods in one file, methods/register_<family>.cpp.
 //
 // "C^k in τ": the derivatives of orders ≤ k with respect to the method's own parameter τ agree
 // at every interior data point; on span k (between data points k and k + 1) τ is an affine

@@ -1,0 +1,77 @@
+// The method of curvature_profile (Kuroda, Higashi, Saito, Watanabe): the composite interpolant
+// whose curvature is piecewise polynomial in arc length (sections 2-4, eq 2-6).
+#include "cagd/methods/detail/registration.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "cagd/intrinsic/curvature_profile_design.hpp"
+#include "cagd/intrinsic/knot_difference_list.hpp"
+
+namespace cagd::methods::detail {
+
+namespace {
+
+InterpolationResult build_curvature_profile(const PointList& points, bool closed, const ParameterValues& v) {
+    using namespace intrinsic;
+    const std::string who = "cagd::methods(curvature-profile)";
+    const std::string& knots = v.text("knots");
+    if (v.has("degree") && knots.empty()) fail_input(who, "--degree applies to a --knots list; without it the layout is degree 2");
+    const int spans = static_cast<int>(points.rows()) - (closed ? 0 : 1);
+    const std::vector<SegmentShape> span_shapes =
+        v.has("spans") ? parse_span_shapes(v.text("spans")) : std::vector<SegmentShape>(static_cast<std::size_t>(spans), SegmentShape::free);
+    if (static_cast<int>(span_shapes.size()) != spans)
+        fail_input(who,
+                   "--spans gives " + std::to_string(span_shapes.size()) + " shapes but the " + std::to_string(points.rows()) + " points make " + std::to_string(spans) + " spans");
+    const KnotLayout layout = knots.empty() ? span_layout(span_shapes) : parse_knot_difference_list(knots, v.has("degree") ? v.integer("degree") : 2).layout;
+    CurvatureProfileProblem problem{points, layout, segment_shapes(layout, span_shapes), {}, closed, 0};
+    add_natural_open_ends(problem);
+    require_valid_problem(problem, who);
+    const CurvatureProfileSolution sol = solve_curvature_profile_auto(problem);
+    InterpolationResult r;
+    r.outcome = sol.outcome;
+    for (const auto& h : sol.history) {
+        std::ostringstream residual;
+        residual << h.residual;
+        r.report.emplace_back("newton_" + std::to_string(h.iteration) + "_residual", residual.str());
+        r.report.emplace_back("newton_" + std::to_string(h.iteration) + "_rank", std::to_string(h.rank));
+    }
+    if (!sol.outcome.ok() || !sol.curve) return r;
+    const int m = design_equations(problem), N = design_unknowns(problem);
+    r.report.emplace_back("equations", std::to_string(m));
+    r.report.emplace_back("unknowns", std::to_string(N));
+    r.report.emplace_back("rank", sol.rank < 0 ? std::string("full (sparse LU)") : std::to_string(sol.rank));
+    if (m < N || (sol.rank >= 0 && sol.rank < N)) r.report.emplace_back("solution", "minimum-norm Newton steps chose one of several solutions");
+    // Four decimals as the paper prints, more where the shortest span needs them to stay nonzero.
+    const std::vector<double> lengths = sol.segment_lengths();
+    const double shortest = *std::min_element(lengths.begin(), lengths.end());
+    const int decimals = std::clamp(static_cast<int>(std::ceil(-std::log10(shortest))) + 1, 4, 17);
+    if (shortest >= 1e-17) r.report.emplace_back("knot_difference_list", format_knot_difference_list(layout, lengths, decimals));
+    const std::vector<double>& w = sol.curve->breakpoints();
+    std::vector<double> nodes;
+    for (int j = 0; j <= layout.spans(); ++j) nodes.push_back(w[static_cast<std::size_t>(layout.first_segment(j))]);
+    r.interpolant = Interpolant{std::make_shared<IntrinsicCurve>(*sol.curve), nodes, std::vector<double>(static_cast<std::size_t>(layout.spans()), 1.0)};
+    return r;
+}
+
+}  // namespace
+
+std::vector<Method> curvature_profile_methods() {
+    std::vector<Method> r;
+    r.push_back({
+        .name = "curvature-profile",
+        .paper = "curvature_profile",
+        .source = "sec 2-4, eq (2)-(4)",
+        .summary = "curvature piecewise polynomial in arc length (all spans free: a clothoid spline), natural open ends",
+        .parameters = {{.name = "spans", .type = P::text, .help = "one shape per span, free | line | arc | clothoid, e.g. line,free,arc (absent: all free)"},
+                       {.name = "knots", .type = P::text, .help = "knot-difference list of psi, e.g. \"{0, S0, 0, {S1, S2}, S3, 0}\" (absent: from --spans, degree 2)"},
+                       {.name = "degree", .type = P::integer, .lower = 2, .upper = 3, .help = "degree of psi for --knots: 2 (clothoid) or 3 (the paper's cubic; absent: 2)"}},
+        .claims = fixed({.parametric_continuity = 2, .geometric_continuity = 2, .parameter = "arc length", .invariance = Invariance::similarity}),
+        .build = build_curvature_profile,
+        .iterative = true,
+    });
+    return r;
+}
+
+}  // namespace cagd::methods::detail

@@ -1,0 +1,132 @@
+// The methods of pseudo_energy (Inoue, Shibata, Kanatani): the pseudo-spline (eq 4-12, sections
+// 3-4; on 3-D points the space pseudo-spline of section 6, extended) and the four comparison
+// curves of section 4.2 (cubic splines A and B, Hermite curves A and B).
+#include "cagd/methods/detail/registration.hpp"
+
+#include "cagd/fairness/pseudo_spline.hpp"
+#include "cagd/fairness/space_pseudo_spline.hpp"
+#include "cagd/spline/hermite_spline.hpp"
+
+namespace cagd::methods::detail {
+
+namespace {
+
+const fairness::PseudoSplineTables& default_pseudo_spline_tables() {
+    // The 36-node fast table, built once per process (about 0.2 s on two threads).
+    static const fairness::PseudoSplineTables tables =
+        fairness::PseudoSplineTables::from(fairness::PseudoEnergyTable::build({36, fairness::NodePlacement::periodic}, fairness::TableMethod::fast));
+    return tables;
+}
+
+// Space points (pseudo_energy section 6, extended to space): the space pseudo-spline, tangents by the planar tables' J(θ), spans by
+// the space minimiser at the exact angles or from a space table (--space-table).
+InterpolationResult build_space_pseudo_spline(const PointList& points, bool closed, const ParameterValues& v, const fairness::PseudoSplineTables& planar) {
+    const auto mode = fairness::parse_tangent_optimization(v.text("optimize"));
+    const fairness::TableOracle planar_oracle = planar.oracle();
+    fairness::SpacePseudoSpline ps = [&] {
+        if (v.has("space-table")) {
+            const fairness::SpacePseudoEnergyTable table = fairness::SpacePseudoEnergyTable::load(v.text("space-table"));
+            return fairness::space_pseudo_spline(points, fairness::TableSpaceOracle(table, planar_oracle), mode, closed);
+        }
+        return fairness::space_pseudo_spline(points, fairness::ExactSpaceOracle(planar_oracle), mode, closed);
+    }();
+    InterpolationResult r = result_of(unit_span_interpolant(std::make_shared<spline::PiecewiseHermiteCurve>(ps.curve), node_count(points, closed), unit_lengths(points, closed)));
+    r.quantities = {{"length_from_tables", ps.length_from_tables()}};
+    return r;
+}
+
+InterpolationResult build_pseudo_spline(const PointList& points, bool closed, const ParameterValues& v) {
+    const auto mode = fairness::parse_tangent_optimization(v.text("optimize"));
+    if (points.cols() == 3)
+        return v.has("table") ? build_space_pseudo_spline(points, closed, v, fairness::PseudoSplineTables::from(fairness::PseudoEnergyTable::load(v.text("table"))))
+                              : build_space_pseudo_spline(points, closed, v, default_pseudo_spline_tables());
+    if (v.has("space-table")) fail_input("cagd::methods(pseudo-spline)", "--space-table is for 3-D points; these have 2 coordinates");
+    const auto make = [&](const fairness::PseudoSplineTables& t) { return fairness::pseudo_spline_curve(points, t.oracle(), mode, closed); };
+    fairness::PseudoSplineCurve ps =
+        v.has("table") ? make(fairness::PseudoSplineTables::from(fairness::PseudoEnergyTable::load(v.text("table")))) : make(default_pseudo_spline_tables());
+    const std::vector<std::pair<std::string, double>> quantities = {
+        {"length_from_tables", ps.length_from_tables}, {"area_from_tables", ps.area_from_tables}, {"pseudo_energy_from_tables", ps.pseudo_energy_from_tables}};
+    // The curve moves into the interpolant (a copy was 48 MB at 10^6 points).
+    InterpolationResult r =
+        result_of(unit_span_interpolant(std::make_shared<spline::PiecewiseHermiteCurve>(std::move(ps.curve)), node_count(points, closed), unit_lengths(points, closed)));
+    r.quantities = quantities;
+    return r;
+}
+
+InterpolationResult build_cubic(const PointList& points, bool closed, spline::ParameterSpacing spacing) {
+    auto c = std::make_shared<spline::PiecewiseHermiteCurve>(spline::cubic_spline_interpolant(points, spacing, closed));
+    return result_of(unit_span_interpolant(std::move(c), node_count(points, closed),
+                                           spacing == spline::ParameterSpacing::chord_length ? chord_lengths(points, closed) : unit_lengths(points, closed)));
+}
+
+InterpolationResult build_hermite(const PointList& points, bool closed, spline::TangentRule rule) {
+    auto c = std::make_shared<spline::PiecewiseHermiteCurve>(spline::hermite_interpolant(points, spline::hermite_tangent_directions(points, rule, closed), closed));
+    return result_of(unit_span_interpolant(std::move(c), node_count(points, closed), unit_lengths(points, closed)));
+}
+
+}  // namespace
+
+std::vector<Method> pseudo_energy_methods() {
+    std::vector<Method> r;
+    r.push_back({
+        .name = "pseudo-spline",
+        .paper = "pseudo_energy",
+        .source = "eq (4)-(12), sec 4.1-4.2",
+        .summary = "cubic Hermite spline of minimum pseudo-energy from a J, r0, r1 table; tangents by the 3-point pseudo-elastic rod",
+        .parameters = {{.name = "optimize",
+                        .type = P::choice,
+                        .default_text = "exact",
+                        .choices = {"none", "exact", "approx"},
+                        .help = "tangent optimisation of eq (12): none, exact (Brent) or approx (3-point parabola, Table 4)"},
+                       {.name = "table", .type = P::text, .help = "pseudo-energy table written by cagd energy-table (absent: the 36-node fast table, built in memory)"},
+                       {.name = "space-table",
+                        .type = P::text,
+                        .help = "3-D points: space pseudo-energy table (SpacePseudoEnergyTable, e.g. from cagd_space_table_mpi) for the spans (absent: the space minimiser at "
+                                "each span's angles)"}},
+        .claims =
+            [](const ParameterValues& v) {
+                return MethodClaims{.geometric_continuity = 1,
+                                    .parameter = "u (unit spans)",
+                                    .invariance = v.text("optimize") == "exact" ? Invariance::none : Invariance::similarity,
+                                    .max_dimension = 3};
+            },
+        .build = build_pseudo_spline,
+        .presets = {{"pseudo-spline-none", {{"optimize", "none"}}}, {"pseudo-spline-exact", {{"optimize", "exact"}}}, {"pseudo-spline-approx", {{"optimize", "approx"}}}},
+    });
+    r.push_back({
+        .name = "cubic-a",
+        .aliases = {"cubic-bspline"},
+        .paper = "pseudo_energy",
+        .source = "sec 4.2 cubic spline A; = sb2_locality eq (10)",
+        .summary = "natural C2 cubic spline, uniform parameter (the conventional interpolating cubic B-spline)",
+        .claims = fixed({.parametric_continuity = 2, .geometric_continuity = 2, .parameter = "uniform", .invariance = Invariance::affine, .max_dimension = 3}),
+        .build = [](const PointList& p, bool closed, const ParameterValues&) { return build_cubic(p, closed, spline::ParameterSpacing::uniform); },
+    });
+    r.push_back({
+        .name = "cubic-b",
+        .paper = "pseudo_energy",
+        .source = "sec 4.2 cubic spline B",
+        .summary = "natural C2 cubic spline, chord-length parameter",
+        .claims = fixed({.parametric_continuity = 2, .geometric_continuity = 2, .parameter = "chord length", .invariance = Invariance::similarity, .max_dimension = 3}),
+        .build = [](const PointList& p, bool closed, const ParameterValues&) { return build_cubic(p, closed, spline::ParameterSpacing::chord_length); },
+    });
+    r.push_back({
+        .name = "hermite-a",
+        .paper = "pseudo_energy",
+        .source = "sec 4.2 Hermite curve A",
+        .summary = "cubic Hermite curve, tangents along the chord of the neighbours",
+        .claims = fixed({.geometric_continuity = 1, .parameter = "u (unit spans)", .invariance = Invariance::similarity, .max_dimension = 3}),
+        .build = [](const PointList& p, bool closed, const ParameterValues&) { return build_hermite(p, closed, spline::TangentRule::chord_of_neighbours); },
+    });
+    r.push_back({
+        .name = "hermite-b",
+        .paper = "pseudo_energy",
+        .source = "sec 4.2 Hermite curve B",
+        .summary = "cubic Hermite curve, tangents of the circle through three neighbours",
+        .claims = fixed({.geometric_continuity = 1, .parameter = "u (unit spans)", .invariance = Invariance::similarity, .min_points = 3, .max_dimension = 3}),
+        .build = [](const PointList& p, bool closed, const ParameterValues&) { return build_hermite(p, closed, spline::TangentRule::circle); },
+    });
+    return r;
+}
+
+}  // namespace cagd::methods::detail
