@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "cagd/analysis/curve_measures.hpp"
+#include "cagd/fairness/angle_minimum_table.hpp"
 #include "cagd/fairness/pseudo_energy_table.hpp"
 #include "cagd/fairness/space_pseudo_energy.hpp"
 #include "cagd/numeric/romberg.hpp"

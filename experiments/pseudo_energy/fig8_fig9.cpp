@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "cagd/fairness/angle_minimum_table.hpp"
 #include "cagd/fairness/pseudo_energy_table.hpp"
 #include "repro/artifact_run.hpp"
 

@@ -1,6 +1,7 @@
 #pragma once
 // Lookup tables of J(θ0, θ1), r0, r1, L, S and the segment type over a grid of direction
-// pairs, and of J(θ), θ1(θ) over a grid of angles (pseudo_energy section 4.1, eq 8, 11, 14).
+// pairs (pseudo_energy section 4.1, eq 8, 14). The table of J(θ), θ1(θ) over a grid of angles
+// (eq 11) is fairness/angle_minimum_table.hpp.
 //
 // Node placement (the paper: "divide (−π, π)² into a lattice (Θ_i, Θ_j), i, j = 1..m, m = 36",
 // and it lists (|Θ_i|, |Θ_j|) = (π, 0), (0, π), (π, π) and (0, 0) as nodes, so 0 and ±π are nodes):
@@ -27,7 +28,8 @@
 // which the placements here allow since each is symmetric about 0. The reference build
 // (Romberg + Ceres CG) computes every node, so the symmetry is a checked result there.
 // Cache: a text file whose first line records format version, grid, placement and method; `load`
-// refuses a file whose line differs, so a changed grid or method rebuilds.
+// refuses a file whose line differs, so a changed grid or method rebuilds (the format:
+// pseudo_energy_table_file.cpp).
 #include <functional>
 #include <ostream>
 #include <string>
@@ -126,51 +128,5 @@ private:
     CellPosition locate_cell(double theta0, double theta1) const;
     TableValue node_value(int i, int j, double runner_up_within) const;
 };
-
-// J(θ) and θ1(θ) of eq (11) at the nodes of a grid, and their linear interpolation. Two builds:
-//   build            exact minimisation over θ1 at each node (fast minimiser, scan step 2°, Brent);
-//                    given a fast table on 1° nodes (endpoints placement, 361 nodes, or any
-//                    180·k + 1), the 2° scan at each of its nodes θ is read from the table instead
-//                    of recomputed (the same minimiser at the same angles: 181 of the ~190
-//                    minimisations per node), and only Brent's refinement minimises afresh;
-//   from_energy_table the paper's construction (section 4.1): at each node Θ_i, minimise the
-//                    *interpolated* J(Θ_i, θ1) of the 2-D table over θ1 (scan step 0.25°, Brent),
-//                    so J(θ) inherits the table's interpolation error. Cheap (no quadrature).
-class AngleMinimumTable {
-public:
-    static AngleMinimumTable build(const AngleGrid& grid, int threads = 2);
-    // Throws InvalidInput unless scan_source is a fast table on an endpoints grid of 180·k + 1 nodes.
-    static AngleMinimumTable build(const AngleGrid& grid, const PseudoEnergyTable& scan_source, int threads = 2);
-    static AngleMinimumTable from_energy_table(const PseudoEnergyTable& table);
-    // The same with J(Θ_i, θ1) read by `reading` (its cell rule and runner-up choice; J itself is
-    // interpolated even when reading.radii asks for r0, r1).
-    static AngleMinimumTable from_energy_table(const PseudoEnergyTable& table, const TableReading& reading);
-    // build(), kept in `path`: loaded when the file holds this grid's table (values at %.17g, so a
-    // load equals a build bit for bit), otherwise built and saved (temporary file, then rename).
-    static AngleMinimumTable load_or_build(const std::string& path, const AngleGrid& grid, int threads = 2);
-    static AngleMinimumTable load_or_build(const std::string& path, const AngleGrid& grid, const PseudoEnergyTable& scan_source, int threads = 2);
-    const std::vector<double>& nodes() const { return axis_.nodes; }
-    const std::vector<AngleMinimum>& values() const { return values_; }
-    // Linear interpolation; throws InvalidInput outside [−π, π]. Returns {J(θ), θ1(θ)}.
-    std::pair<double, double> lookup(double theta) const;
-    // J(θ) alone, the same interpolation; inline (below): eq (12) reads it six times per point.
-    double pseudo_energy(double theta) const;
-
-private:
-    AngleGrid grid_;
-    detail::PeriodicAxis axis_;
-    std::vector<AngleMinimum> values_;
-    static AngleMinimumTable build(const AngleGrid& grid, const PseudoEnergyTable* scan_source, int threads);
-    static AngleMinimumTable load_or_build(const std::string& path, const AngleGrid& grid, const PseudoEnergyTable* scan_source, int threads);
-};
-
-inline double AngleMinimumTable::pseudo_energy(double theta) const {
-    require_tangent_angle("cagd::fairness::AngleMinimumTable::pseudo_energy", theta, "theta");
-    int i = 0;
-    double u = 0.0;
-    axis_.locate(theta, i, u);
-    const std::size_t a = static_cast<std::size_t>(i), b = static_cast<std::size_t>(detail::next_node(i, static_cast<int>(axis_.nodes.size())));
-    return (1 - u) * values_[a].pseudo_energy + u * values_[b].pseudo_energy;
-}
 
 }  // namespace cagd::fairness

@@ -64,6 +64,7 @@
 #include <vector>
 
 #include "cagd/core/points.hpp"
+#include "cagd/fairness/angle_minimum_table.hpp"
 #include "cagd/fairness/pseudo_energy_table.hpp"
 #include "cagd/spline/hermite_spline.hpp"
 
@@ -169,15 +170,6 @@ struct PseudoSplineCurve {
     double length_from_tables = 0.0, area_from_tables = 0.0, pseudo_energy_from_tables = 0.0;
 };
 PseudoSplineCurve pseudo_spline_curve(const PointList& points, const SegmentOracle& oracle, TangentOptimization mode, bool closed, TangentTie tie = {});
-
-// The five curves of section 4.2 through the same points: cubic spline A (uniform parameter),
-// cubic spline B (chord length), Hermite A, Hermite B (spline/hermite_spline.hpp) and the
-// pseudo-spline (`oracle` and `mode` are used by the pseudo-spline only; pass them anyway), with
-// the oracle the caller chooses (the reproduction of Figs. 10–24 reads the reference table). The
-// same curves by name, with the default table, are in methods/method_registry.hpp.
-enum class InterpolationMethod { cubic_spline_a, cubic_spline_b, hermite_a, hermite_b, pseudo_spline };
-const char* to_string(InterpolationMethod m);
-spline::PiecewiseHermiteCurve section42_interpolant(const PointList& points, InterpolationMethod method, bool closed, const SegmentOracle& oracle, TangentOptimization mode);
 
 // "Equivalent points" of Tables 5 and 6 (section 5.1): the smallest N ≥ 3 for which the regular
 // N-gon inscribed in the unit circle is closer to the circle than the spline, i.e.
