@@ -1,0 +1,157 @@
+#pragma once
+// What the bindings files of the Python module share: NumPy arrays ↔ Eigen, the library's
+// outcomes as cagd.NoSolution, and the Curve class every binding returns. One bindings_<folder>.cpp
+// per library folder binds that folder's functions; cagd_module.cpp wires them into _cagd.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cagd/aesthetic/log_aesthetic_curve.hpp"
+#include "cagd/aesthetic/log_aesthetic_space_curve.hpp"
+#include "cagd/aesthetic/space_typical_bezier.hpp"
+#include "cagd/aesthetic/typical_bezier.hpp"
+#include "cagd/analysis/curve_measures.hpp"
+#include "cagd/analysis/log_curvature_graph.hpp"
+#include "cagd/compare/method_comparison.hpp"
+#include "cagd/core/curve.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/fairness/pseudo_energy_minimum.hpp"
+#include "cagd/fairness/pseudo_energy_table.hpp"
+#include "cagd/methods/method_registry.hpp"
+#include "cagd/smoothing/elastic_line.hpp"
+#include "cagd/smoothing/elastic_space_curve.hpp"
+#include "cagd/spline/bezier.hpp"
+
+namespace cagd_python {
+
+namespace py = pybind11;
+
+using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+// A numerical outcome for valid input, raised as cagd.NoSolution.
+struct NoSolution : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+inline const char* status_name(cagd::Status s) {
+    switch (s) {
+        case cagd::Status::ok: return "ok";
+        case cagd::Status::no_convergence: return "no_convergence";
+        case cagd::Status::no_solution: return "no_solution";
+        case cagd::Status::not_representable: return "not_representable";
+    }
+    return "unknown";
+}
+
+inline void require_ok(const cagd::Outcome& outcome) {
+    if (!outcome.ok()) throw NoSolution(outcome.message);
+}
+
+// An (n, d) array of finite or non-finite doubles (the library checks the values) → n × d.
+inline Eigen::MatrixXd to_matrix(const Array& a, const char* name) {
+    if (a.ndim() != 2) throw cagd::InvalidInput(std::string(name) + ": expected a 2-D array (n, d), got " + std::to_string(a.ndim()) + " dimension(s)");
+    Eigen::MatrixXd m(a.shape(0), a.shape(1));
+    auto r = a.unchecked<2>();
+    for (py::ssize_t i = 0; i < a.shape(0); ++i)
+        for (py::ssize_t j = 0; j < a.shape(1); ++j) m(i, j) = r(i, j);
+    return m;
+}
+
+inline std::vector<double> to_vector(const Array& a, const char* name) {
+    if (a.ndim() != 1) throw cagd::InvalidInput(std::string(name) + ": expected a 1-D array, got " + std::to_string(a.ndim()) + " dimension(s)");
+    return std::vector<double>(a.data(), a.data() + a.shape(0));
+}
+
+inline py::array_t<double> from_matrix(const Eigen::MatrixXd& m) {
+    py::array_t<double> out({static_cast<py::ssize_t>(m.rows()), static_cast<py::ssize_t>(m.cols())});
+    auto w = out.mutable_unchecked<2>();
+    for (Eigen::Index i = 0; i < m.rows(); ++i)
+        for (Eigen::Index j = 0; j < m.cols(); ++j) w(i, j) = m(i, j);
+    return out;
+}
+
+inline py::array_t<double> from_vector(const std::vector<double>& v) {
+    py::array_t<double> out(static_cast<py::ssize_t>(v.size()));
+    std::copy(v.begin(), v.end(), out.mutable_data());
+    return out;
+}
+
+// A curve of the library with what its construction reported.
+struct PyCurve {
+    std::shared_ptr<const cagd::Curve> curve;
+    std::vector<double> node_parameters;  // u of each data point (interpolants)
+    std::string method;
+
+    // Positions (derivatives = 0: shape (m, dim), or (dim,) for a scalar t) or jets (shape
+    // (m, derivatives + 1, dim), or (derivatives + 1, dim)): rows are r, r', r'', … at each t.
+    py::array evaluate(const py::object& t_in, int derivatives) const {
+        if (derivatives < 0) throw cagd::InvalidInput("evaluate: derivatives = " + std::to_string(derivatives) + "; allowed 0 or more");
+        const bool scalar = py::isinstance<py::float_>(t_in) || py::isinstance<py::int_>(t_in);
+        const Array t = Array::ensure(t_in);
+        if (!t) throw cagd::InvalidInput("evaluate: t must be a number or an array of numbers");
+        if (t.ndim() > 1) throw cagd::InvalidInput("evaluate: t must be a number or a 1-D array");
+        const py::ssize_t m = t.size(), rows = derivatives + 1, dim = curve->dimension();
+        py::array_t<double> out(derivatives == 0 ? std::vector<py::ssize_t>{m, dim} : std::vector<py::ssize_t>{m, rows, dim});
+        const double* ts = t.data();
+        double* w = out.mutable_data();
+        {
+            py::gil_scoped_release release;
+            if (rows <= cagd::kJetCapacity && dim <= 3) {
+                cagd::JetMatrix jet;
+                for (py::ssize_t k = 0; k < m; ++k) {
+                    curve->jet_into(ts[k], derivatives, jet);
+                    double* row = w + k * rows * dim;
+                    for (py::ssize_t r = 0; r < rows; ++r)
+                        for (py::ssize_t c = 0; c < dim; ++c) row[r * dim + c] = jet(r, c);
+                }
+            } else {
+                for (py::ssize_t k = 0; k < m; ++k) {
+                    const Eigen::MatrixXd jet = curve->jet(ts[k], derivatives);
+                    double* row = w + k * rows * dim;
+                    for (py::ssize_t r = 0; r < rows; ++r)
+                        for (py::ssize_t c = 0; c < dim; ++c) row[r * dim + c] = jet(r, c);
+                }
+            }
+        }
+        if (scalar) return out[py::int_(0)];
+        return out;
+    }
+
+    // A function of t, vectorised: a number for a number, an array for an array.
+    template <class F>
+    py::object map_parameters(const py::object& t_in, F f) const {
+        const bool scalar = py::isinstance<py::float_>(t_in) || py::isinstance<py::int_>(t_in);
+        const Array t = Array::ensure(t_in);
+        if (!t || t.ndim() > 1) throw cagd::InvalidInput("t must be a number or a 1-D array of numbers");
+        py::array_t<double> out(t.size());
+        const double* ts = t.data();
+        double* w = out.mutable_data();
+        {
+            py::gil_scoped_release release;
+            for (py::ssize_t k = 0; k < t.size(); ++k) w[k] = f(ts[k]);
+        }
+        if (scalar) return py::float_(w[0]);
+        return out;
+    }
+};
+
+inline PyCurve wrap(std::shared_ptr<const cagd::Curve> c, std::string method = {}, std::vector<double> nodes = {}) { return PyCurve{std::move(c), std::move(nodes), std::move(method)}; }
+
+void bind_core(py::module_& m);
+void bind_methods(py::module_& m);
+void bind_compare(py::module_& m);
+void bind_fairness(py::module_& m);
+void bind_aesthetic(py::module_& m);
+void bind_spline(py::module_& m);
+void bind_smoothing(py::module_& m);
+
+}  // namespace cagd_python

@@ -1,0 +1,51 @@
+// core/: the Curve class (cagd::Curve): evaluation, curvature, torsion, measures.
+#include "bindings.hpp"
+
+namespace cagd_python {
+
+void bind_core(py::module_& m) {
+    py::class_<PyCurve>(m, "Curve", "A curve of the library: position and derivatives at a parameter t in parameter_range.")
+        .def_property_readonly("dimension", [](const PyCurve& c) { return c.curve->dimension(); })
+        .def_property_readonly("parameter_range", [](const PyCurve& c) { return py::make_tuple(c.curve->t_min(), c.curve->t_max()); })
+        .def_property_readonly(
+            "node_parameters", [](const PyCurve& c) { return from_vector(c.node_parameters); }, "the parameter of each data point (interpolants; closed: n + 1 values)")
+        .def_property_readonly("method", [](const PyCurve& c) { return c.method; })
+        .def(
+            "breakpoints", [](const PyCurve& c) { return from_vector(c.curve->breakpoints()); }, "parameters where the curve's pieces join")
+        .def("evaluate", &PyCurve::evaluate, py::arg("t"), py::arg("derivatives") = 0,
+             "Positions at t (shape (m, dim); (dim,) for a number), or with derivatives = k the jets r, r', …, r^(k) (shape (m, k + 1, dim)). ValueError outside parameter_range.")
+        .def(
+            "curvature",
+            [](const PyCurve& c, const py::object& t) {
+                return c.map_parameters(
+                    t, [&](double u) { return c.curve->dimension() == 2 ? cagd::analysis::signed_curvature(*c.curve, u) : cagd::analysis::curvature(*c.curve, u); });
+            },
+            py::arg("t"), "Curvature at t: signed (counter-clockwise positive) for planar curves, |κ| for space curves. ValueError where the speed vanishes.")
+        .def(
+            "torsion", [](const PyCurve& c, const py::object& t) { return c.map_parameters(t, [&](double u) { return cagd::analysis::torsion(*c.curve, u); }); }, py::arg("t"),
+            "Torsion at t (space curves).")
+        .def(
+            "arc_length",
+            [](const PyCurve& c, bool with_error) -> py::object {
+                cagd::analysis::ArcLength a;
+                {
+                    py::gil_scoped_release release;
+                    a = cagd::analysis::accurate_arc_length(*c.curve);
+                }
+                if (with_error) return py::make_tuple(a.value, a.error_estimate);
+                return py::float_(a.value);
+            },
+            py::arg("error_estimate") = false, "Arc length by adaptive Gauss–Kronrod to 1e-12 (as `cagd analyze --in`); with error_estimate=True the pair (length, estimate).")
+        .def(
+            "area", [](const PyCurve& c) { return cagd::analysis::area_closed_by_chord(*c.curve); },
+            "Signed enclosed area (counter-clockwise positive; planar); an open curve is closed by the chord from its end to its start.")
+        .def(
+            "bending_energy", [](const PyCurve& c) { return cagd::analysis::bending_energy(*c.curve); }, "∫ κ² ds (Gauss–Legendre per piece)")
+        .def("__repr__", [](const PyCurve& c) {
+            std::ostringstream s;
+            s << "<cagd.Curve" << (c.method.empty() ? "" : " " + c.method) << " dim=" << c.curve->dimension() << " t=[" << c.curve->t_min() << ", " << c.curve->t_max() << "]>";
+            return s.str();
+        });
+}
+
+}  // namespace cagd_python

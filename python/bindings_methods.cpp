@@ -1,0 +1,122 @@
+// methods/: the registry (cagd.methods) and interpolation by name (cagd.interpolate).
+#include "bindings.hpp"
+
+namespace cagd_python {
+
+namespace {
+
+// Registry parameters arrive as Python values; the registry parses their text, so a value is
+// checked and reported exactly as on the command line. Sequences become comma-separated numbers.
+std::string parameter_text(const py::handle& v) {
+    if (py::isinstance<py::bool_>(v)) return v.cast<bool>() ? "1" : "0";
+    if (py::isinstance<py::float_>(v)) return cagd::full_precision(v.cast<double>());
+    if (py::isinstance<py::str>(v) || py::isinstance<py::int_>(v)) return py::str(v);
+    if (py::isinstance<py::sequence>(v) || py::isinstance<py::array>(v)) {
+        std::string s;
+        for (const py::handle& x : py::iter(v)) {
+            if (!s.empty()) s += ",";
+            s += cagd::full_precision(x.cast<double>());
+        }
+        return s;
+    }
+    return py::str(v);
+}
+
+cagd::methods::ParameterText parameter_texts(const py::kwargs& params) {
+    cagd::methods::ParameterText text;
+    for (const auto& [k, v] : params) {
+        std::string name = py::str(k);
+        std::replace(name.begin(), name.end(), '_', '-');  // keyword arguments cannot hold '-'
+        text[name] = parameter_text(v);
+    }
+    return text;
+}
+
+struct Interpolation {
+    std::string status, message;
+    std::optional<PyCurve> curve;
+    std::vector<std::pair<std::string, std::string>> report;
+    std::vector<std::pair<std::string, double>> quantities;
+    std::vector<double> dtau_du;
+};
+
+Interpolation interpolate_result(const Array& points, const std::string& method, bool closed, const py::kwargs& params) {
+    const Eigen::MatrixXd p = to_matrix(points, "interpolate: points");
+    const cagd::methods::ParameterText text = parameter_texts(params);
+    cagd::methods::InterpolationResult r;
+    {
+        py::gil_scoped_release release;
+        r = cagd::methods::interpolate(method, p, closed, text);
+    }
+    Interpolation out;
+    out.status = status_name(r.outcome.status);
+    out.message = r.outcome.message;
+    out.report = r.report;
+    out.quantities = r.quantities;
+    if (r.outcome.ok() && r.interpolant) {
+        out.curve = wrap(r.interpolant->curve, method, r.interpolant->node_parameters);
+        out.dtau_du = r.interpolant->dtau_du;
+    }
+    return out;
+}
+
+}  // namespace
+
+void bind_methods(py::module_& m) {
+    py::class_<Interpolation>(m, "Interpolation", "The whole result of an interpolation: status, message, the curve when ok, and what the method reported.")
+        .def_readonly("status", &Interpolation::status)
+        .def_readonly("message", &Interpolation::message)
+        .def_readonly("curve", &Interpolation::curve)
+        .def_property_readonly("ok", [](const Interpolation& r) { return r.curve.has_value(); })
+        .def_property_readonly("report", [](const Interpolation& r) { return r.report; })
+        .def_property_readonly("quantities",
+                               [](const Interpolation& r) {
+                                   py::dict d;
+                                   for (const auto& [k, v] : r.quantities) d[py::str(k)] = v;
+                                   return d;
+                               })
+        .def_property_readonly("dtau_du", [](const Interpolation& r) { return from_vector(r.dtau_du); });
+
+    m.def("_interpolate_result", &interpolate_result, py::arg("points"), py::arg("method"), py::arg("closed") = false);
+
+    m.def("_methods", []() {
+        py::list out;
+        for (const cagd::methods::Method& method : cagd::methods::registry()) {
+            py::dict d;
+            d["name"] = method.name;
+            d["aliases"] = method.aliases;
+            d["paper"] = method.paper;
+            d["source"] = method.source;
+            d["summary"] = method.summary;
+            py::list params;
+            for (const cagd::methods::Parameter& p : method.parameters) {
+                py::dict q;
+                q["name"] = p.name;
+                q["type"] = cagd::methods::to_string(p.type);
+                q["default"] = p.default_text;
+                q["domain"] = p.domain();
+                q["help"] = p.help;
+                params.append(q);
+            }
+            d["parameters"] = params;
+            std::vector<std::string> presets;
+            for (const auto& pr : method.presets) presets.push_back(pr.name);
+            d["presets"] = presets;
+            const cagd::methods::MethodClaims c = method.claims(cagd::methods::parse_parameter_values(method.name, method.parameters, {}));
+            py::dict claims;
+            claims["parametric_continuity"] = c.parametric_continuity;
+            claims["geometric_continuity"] = c.geometric_continuity;
+            claims["parameter"] = c.parameter;
+            claims["invariance"] = cagd::methods::to_string(c.invariance);
+            claims["supports_closed"] = c.supports_closed;
+            claims["min_points"] = c.min_points;
+            claims["min_points_closed"] = c.min_points_closed;
+            claims["max_dimension"] = c.max_dimension;
+            d["claims"] = claims;
+            out.append(d);
+        }
+        return out;
+    });
+}
+
+}  // namespace cagd_python

@@ -1,0 +1,23 @@
+// spline/: Hosaka's explicit spline y(x) (the elastic line's result).
+#include "bindings.hpp"
+
+namespace cagd_python {
+
+void bind_spline(py::module_& m) {
+    py::class_<cagd::spline::ExplicitSpline>(m, "ExplicitSpline", "y(x): a piecewise cubic through values and slopes at abscissae (one column per value).")
+        .def_property_readonly("x", [](const cagd::spline::ExplicitSpline& s) { return from_vector(s.x); })
+        .def_property_readonly("values", [](const cagd::spline::ExplicitSpline& s) { return from_matrix(s.values); })
+        .def_property_readonly("slopes", [](const cagd::spline::ExplicitSpline& s) { return from_matrix(s.slopes); })
+        .def("bending_energy", &cagd::spline::ExplicitSpline::bending_energy)
+        .def(
+            "evaluate",
+            [](const cagd::spline::ExplicitSpline& s, const Array& at, int k) {
+                const std::vector<double> xs = to_vector(at, "evaluate: x");
+                Eigen::MatrixXd out(static_cast<Eigen::Index>(xs.size()), s.values.cols());
+                for (std::size_t i = 0; i < xs.size(); ++i) out.row(static_cast<Eigen::Index>(i)) = s.evaluate(xs[i], k);
+                return from_matrix(out);
+            },
+            py::arg("x"), py::arg("derivative") = 0, "The k-th derivative (k ≤ 3) at each x (1-D array): shape (m, columns).");
+}
+
+}  // namespace cagd_python
