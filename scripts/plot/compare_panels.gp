@@ -2,13 +2,14 @@
 # Set before loading: datadir, prefix (file-name prefix inside datadir, may be ''), heading (a
 # title line), and optionally formats (default "png svg"), figures (default "curves combs
 # curvature"), point_every (draw every n-th data point; default 1) and the file names f_methods,
-# f_points, f_curves, f_combs, f_kappa. Reads prefix.'methods.csv' (index, method, and per figure
-# file the first row and row count of each method: compare/method_comparison.hpp), 'points.csv'
-# (x,y), 'curves.csv' (index,x,y), 'combs.csv' (index,x,y,tip_x,tip_y) and 'curvature.csv'
-# (index,s,kappa); writes prefix.'curves', 'combs' and 'curvature' in each format. With space = 1
-# (space points: points.csv x,y,z, curves.csv index,x,y,z, curvature.csv index,s,kappa,tau) the
-# curves are drawn in a 3-D view, and figure 'torsion' draws τ(s); there are no combs. A method's
-# rows are read with `every ::first::last` (gnuplot stops reading there). gnuplot only draws.
+# f_points, f_curves, f_combs, f_kappa. The files are the comparison folder's tables
+# (src/cagd/compare/comparison_tables.hpp), read by column name: methods.csv (method, and per
+# figure file the first row and row count of each method), points.csv (x, y), curves.csv
+# (x, y), combs.csv (x, y, tip_x, tip_y) and curvature.csv (s, kappa); it writes prefix.'curves',
+# 'combs' and 'curvature' in each format. With space = 1 (space points: points.csv and curves.csv
+# also z, curvature.csv also tau) the curves are drawn in a 3-D view, and figure 'torsion' draws
+# τ(s); there are no combs. A method's rows are read with `every ::first::last` (gnuplot stops
+# reading there). gnuplot only draws.
 # This file is not a figure of its own: scripts/reproduce.sh skips it, and `cagd compare` embeds it.
 set datafile separator ','
 set grid lc rgb '#dddddd'
@@ -22,11 +23,17 @@ if (!exists("f_combs")) f_combs = datadir.'/'.prefix.'combs.csv'
 if (!exists("f_kappa")) f_kappa = datadir.'/'.prefix.'curvature.csv'
 if (!exists("point_every")) point_every = 1
 if (!exists("space")) space = 0
-column_words(k) = system("tail -n +2 '".f_methods."' | cut -d, -f".k." | tr '\n' ' '")
-names = column_words(2)
-curves_first = column_words(3); curves_count = column_words(4)
-kappa_first = column_words(5); kappa_count = column_words(6)
-combs_first = column_words(7); combs_count = column_words(8)
+# The position of the column called `name` in the header line of file f (0 if there is none).
+colnum(f, name) = int(system("awk -F, -v name='".name."' 'NR == 1 { sub(/\\r$/, \"\"); for (i = 1; i <= NF; i++) if ($i == name) { print i; exit } print 0; exit }' '".f."'"))
+column_words(name) = system("tail -n +2 '".f_methods."' | cut -d, -f".colnum(f_methods, name)." | tr '\n' ' '")
+names = column_words("method")
+curves_first = column_words("curves_first"); curves_count = column_words("curves_count")
+kappa_first = column_words("curvature_first"); kappa_count = column_words("curvature_count")
+combs_first = column_words("combs_first"); combs_count = column_words("combs_count")
+px = colnum(f_points, "x"); py = colnum(f_points, "y"); pz = colnum(f_points, "z")
+cx = colnum(f_curves, "x"); cy = colnum(f_curves, "y"); cz = colnum(f_curves, "z")
+bx = colnum(f_combs, "x"); by = colnum(f_combs, "y"); btx = colnum(f_combs, "tip_x"); bty = colnum(f_combs, "tip_y")
+ks = colnum(f_kappa, "s"); kk = colnum(f_kappa, "kappa"); kt = colnum(f_kappa, "tau")
 n = words(names)
 # rows of method i in a figure file: first(list, i) .. last(list, counts, i) (last < first when none)
 first(list, i) = int(word(list, i))
@@ -47,13 +54,13 @@ do for [t in formats] {
     set size noratio
     set view equal xyz
     set zlabel 'z'
-    splot for [i=1:n] f_curves skip 1 every ::first(curves_first, i)::last(curves_first, curves_count, i) using 2:3:4 with lines lw 1.5 lc i title word(names, i), \
-          f_points skip 1 every point_every using 1:2:3 with points pt 7 ps 0.8 lc rgb '#000000' title 'data'
+    splot for [i=1:n] f_curves skip 1 every ::first(curves_first, i)::last(curves_first, curves_count, i) using (column(cx)):(column(cy)):(column(cz)) with lines lw 1.5 lc i title word(names, i), \
+          f_points skip 1 every point_every using (column(px)):(column(py)):(column(pz)) with points pt 7 ps 0.8 lc rgb '#000000' title 'data'
     unset view
     unset zlabel
   } else {
-    plot for [i=1:n] f_curves skip 1 every ::first(curves_first, i)::last(curves_first, curves_count, i) using 2:3 with lines lw 1.5 lc i title word(names, i), \
-         f_points skip 1 every point_every using 1:2 with points pt 7 ps 0.8 lc rgb '#000000' title 'data'
+    plot for [i=1:n] f_curves skip 1 every ::first(curves_first, i)::last(curves_first, curves_count, i) using (column(cx)):(column(cy)) with lines lw 1.5 lc i title word(names, i), \
+         f_points skip 1 every point_every using (column(px)):(column(py)) with points pt 7 ps 0.8 lc rgb '#000000' title 'data'
   }
   unset output
   }
@@ -64,7 +71,7 @@ do for [t in formats] {
   set output datadir.'/'.prefix.'combs.'.t
   # the data's box grown by 30 % of its diagonal: the 5 % of teeth longer than 10 % of it are cut
   # at the frame instead of shrinking the curve to a dot
-  stats f_points skip 1 using 1:2 nooutput
+  stats f_points skip 1 using (column(px)):(column(py)) nooutput
   margin = 0.3 * sqrt((STATS_max_x - STATS_min_x)**2 + (STATS_max_y - STATS_min_y)**2)
   set xrange [STATS_min_x - margin:STATS_max_x + margin]
   set yrange [STATS_min_y - margin:STATS_max_y + margin]
@@ -76,12 +83,12 @@ do for [t in formats] {
   do for [i=1:n] {
     set title word(names, i) noenhanced
     if (int(word(combs_count, i)) > 0) {
-      plot f_combs skip 1 every ::first(combs_first, i)::last(combs_first, combs_count, i) using 2:3:($4 - $2):($5 - $3) with vectors nohead lc rgb '#9ecae1', \
-           f_combs skip 1 every ::first(combs_first, i)::last(combs_first, combs_count, i) using 4:5 with lines lc rgb '#6baed6', \
-           f_curves skip 1 every ::first(curves_first, i)::last(curves_first, curves_count, i) using 2:3 with lines lw 1.5 lc rgb '#08306b', \
-           f_points skip 1 every point_every using 1:2 with points pt 7 ps 0.5 lc rgb '#000000'
+      plot f_combs skip 1 every ::first(combs_first, i)::last(combs_first, combs_count, i) using (column(bx)):(column(by)):(column(btx) - column(bx)):(column(bty) - column(by)) with vectors nohead lc rgb '#9ecae1', \
+           f_combs skip 1 every ::first(combs_first, i)::last(combs_first, combs_count, i) using (column(btx)):(column(bty)) with lines lc rgb '#6baed6', \
+           f_curves skip 1 every ::first(curves_first, i)::last(curves_first, curves_count, i) using (column(cx)):(column(cy)) with lines lw 1.5 lc rgb '#08306b', \
+           f_points skip 1 every point_every using (column(px)):(column(py)) with points pt 7 ps 0.5 lc rgb '#000000'
     } else {
-      plot f_points skip 1 every point_every using 1:2 with points pt 7 ps 0.5 lc rgb '#000000'
+      plot f_points skip 1 every point_every using (column(px)):(column(py)) with points pt 7 ps 0.5 lc rgb '#000000'
     }
   }
   unset multiplot
@@ -100,7 +107,7 @@ do for [t in formats] {
     set xlabel 's'
     set ylabel 'κ'
     if (int(word(kappa_count, i)) > 0) {
-      plot f_kappa skip 1 every ::first(kappa_first, i)::last(kappa_first, kappa_count, i) using 2:3 with lines lw 1.2 lc rgb '#d62728'
+      plot f_kappa skip 1 every ::first(kappa_first, i)::last(kappa_first, kappa_count, i) using (column(ks)):(column(kk)) with lines lw 1.2 lc rgb '#d62728'
     } else {
       set label 1 'no curvature (see the table)' at graph 0.5, graph 0.5 center
       plot [0:1] [-1:1] NaN notitle
@@ -124,7 +131,7 @@ do for [t in formats] {
     set xlabel 's'
     set ylabel 'τ'
     if (int(word(kappa_count, i)) > 0) {
-      plot f_kappa skip 1 every ::first(kappa_first, i)::last(kappa_first, kappa_count, i) using 2:4 with lines lw 1.2 lc rgb '#2ca02c'
+      plot f_kappa skip 1 every ::first(kappa_first, i)::last(kappa_first, kappa_count, i) using (column(ks)):(column(kt)) with lines lw 1.2 lc rgb '#2ca02c'
     } else {
       set label 1 'no torsion (see the table)' at graph 0.5, graph 0.5 center
       plot [0:1] [-1:1] NaN notitle

@@ -19,6 +19,7 @@
 #include "cli/commands.hpp"
 #include "cli/compare_panels_script.hpp"
 #include "cli/output.hpp"
+#include "cagd/compare/comparison_tables.hpp"
 #include "cagd/compare/method_comparison.hpp"
 #include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
@@ -33,12 +34,6 @@ struct CompareArgs {
     std::string in, out, methods;
     bool closed = false, no_plot = false;
 };
-
-void write_rows(const std::string& path, const std::vector<std::string>& header, const std::vector<std::vector<double>>& rows) {
-    CsvOutput w(path, header);
-    for (const auto& r : rows) w.row(r, 12);
-    w.commit();
-}
 
 // A gnuplot string literal in single quotes ('' is a quote inside).
 std::string gnuplot_quoted(const std::string& s) {
@@ -81,11 +76,6 @@ int run_compare(const CompareArgs& a) {
     std::filesystem::create_directories(a.out, ec);  // after the work: nothing is left behind on bad input
     if (!std::filesystem::is_directory(a.out)) fail_input(who, "cannot create the output directory '" + a.out + "'");
     const std::string dir = a.out + "/";
-    {
-        CsvOutput w(dir + "measures.csv", compare::comparison_header(a.closed, true, dimension));
-        for (const auto& row : compare::comparison_rows(results, a.closed, true, 8, dimension)) w.row_text(row);
-        w.commit();
-    }
     const std::string md = compare::comparison_markdown(results, a.closed, true, 6, dimension);
     {
         OutputFile f(dir + "measures.md");
@@ -97,32 +87,17 @@ int run_compare(const CompareArgs& a) {
     // grows with the samples: 10^5 points at 4·10^4 samples per method take gnuplot 35 s).
     const int spans = static_cast<int>(points.rows()) - (a.closed ? 0 : 1);
     const compare::FigureData fig = compare::comparison_figure_data(results, points, compare::figure_sampling(std::max(spans, 1), 10000));
-    // The figure files are independent: written in parallel (at 10^5 points, 0.9 s one after another).
-    const std::vector<std::function<void()>> writes = {
-        [&] {
-            write_rows(dir + "combs.csv", {"index", "x", "y", "tip_x", "tip_y"}, fig.combs);
-        },
-        [&] {
-            write_rows(dir + "curvature.csv", dimension == 2 ? std::vector<std::string>{"index", "s", "kappa"} : std::vector<std::string>{"index", "s", "kappa", "tau"},
-                       fig.profiles);
-        },
-        [&] {
-            write_rows(dir + "curves.csv", dimension == 2 ? std::vector<std::string>{"index", "x", "y"} : std::vector<std::string>{"index", "x", "y", "z"}, fig.curves);
-        },
-        [&] {
-            CsvOutput w(dir + "points.csv", dimension == 2 ? std::vector<std::string>{"x", "y"} : std::vector<std::string>{"x", "y", "z"});
-            for (Eigen::Index i = 0; i < points.rows(); ++i) {
-                const Eigen::RowVectorXd p = points.row(i);
-                w.row(std::vector<double>(p.data(), p.data() + p.size()), 17);
-            }
-            w.commit();
-        },
-        [&] {
-            CsvOutput w(dir + "methods.csv", compare::figure_methods_header());
-            for (const auto& row : compare::figure_methods_rows(results, fig)) w.row_text(row);
-            w.commit();
-        }};
-    parallel_for(static_cast<long>(writes.size()), hardware_threads(), [&](long k) { writes[static_cast<std::size_t>(k)](); });
+    // The folder's tables (compare/comparison_tables.hpp) are independent: written in parallel (at
+    // 10^5 points, 0.9 s one after another).
+    const std::vector<compare::ComparisonTable> tables =
+        compare::comparison_tables(results, fig, points, a.closed, {.timing = true, .measure_digits = 8, .figure_digits = 12, .point_digits = 17});
+    parallel_for(static_cast<long>(tables.size()), hardware_threads(), [&](long k) {
+        const compare::ComparisonTable& t = tables[static_cast<std::size_t>(k)];
+        CsvOutput w(dir + t.file, t.header);
+        for (const auto& row : t.text_rows) w.row_text(row);
+        for (const auto& row : t.numbers()) w.row(row, t.significant);
+        w.commit();
+    });
     {
         OutputFile f(dir + "compare_panels.gp");
         f.stream() << kComparePanelsScript;

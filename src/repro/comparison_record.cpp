@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "cagd/analysis/curve_measures.hpp"
+#include "cagd/compare/comparison_tables.hpp"
 
 namespace cagd::repro {
 
@@ -10,30 +11,13 @@ std::vector<compare::MethodComparison> record_comparison(ArtifactRun& run, const
     compare::ComparisonOptions options;
     options.closed = closed;
     const std::vector<compare::MethodComparison> results = compare::compare_methods(points, options);
-    const int dimension = static_cast<int>(points.cols());
-    const bool space = dimension == 3;
-    {
-        CsvWriter w = run.table(prefix + "measures.csv", compare::comparison_header(closed, false, dimension));
-        for (const auto& row : compare::comparison_rows(results, closed, false, 8, dimension)) w.row_text(row);
-    }
-    {
-        CsvWriter w = run.table(prefix + "points.csv", space ? std::vector<std::string>{"x", "y", "z"} : std::vector<std::string>{"x", "y"});
-        for (Eigen::Index i = 0; i < points.rows(); ++i) {
-            const Eigen::RowVectorXd p = points.row(i);
-            w.row(std::vector<double>(p.data(), p.data() + p.size()));
-        }
-    }
     const compare::FigureData fig = compare::comparison_figure_data(results, points, compare::FigureSampling{32, 1});
-    const auto write = [&](const std::string& name, const std::vector<std::string>& header, const std::vector<std::vector<double>>& rows) {
-        CsvWriter w = run.table(prefix + name, header);
-        for (const auto& r : rows) w.row(r, 10);
-    };
-    write("curves.csv", space ? std::vector<std::string>{"index", "x", "y", "z"} : std::vector<std::string>{"index", "x", "y"}, fig.curves);
-    write("curvature.csv", space ? std::vector<std::string>{"index", "s", "kappa", "tau"} : std::vector<std::string>{"index", "s", "kappa"}, fig.profiles);
-    write("combs.csv", {"index", "x", "y", "tip_x", "tip_y"}, fig.combs);
-    {
-        CsvWriter w = run.table(prefix + "methods.csv", compare::figure_methods_header());
-        for (const auto& row : compare::figure_methods_rows(results, fig)) w.row_text(row);
+    // The report's digits: measures 8, figure data 10, points 12 (cagd compare writes more).
+    const compare::ComparisonTableOptions digits{.timing = false, .measure_digits = 8, .figure_digits = 10, .point_digits = 12};
+    for (const compare::ComparisonTable& t : compare::comparison_tables(results, fig, points, closed, digits)) {
+        CsvWriter w = run.table(prefix + t.file, t.header);
+        for (const auto& row : t.text_rows) w.row_text(row);
+        for (const auto& row : t.numbers()) w.row(row, t.significant);
     }
     for (const compare::MethodComparison& c : results) {
         if (!c.interpolant) continue;

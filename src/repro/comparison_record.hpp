@@ -1,9 +1,10 @@
 #pragma once
 // The method comparison of `cagd compare` recorded in an experiment (the report's comparisons on
-// the papers' data): writes <prefix>measures.csv (no timing column: deterministic) and the figure
-// data <prefix>{methods,points,curves,curvature,combs}.csv that scripts/plot/compare_panels.gp
-// draws (space points: the space columns and figure data of compare/method_comparison.hpp), and validates every curve's length (Gauss–Legendre, as the table) against Boost's
-// adaptive Gauss–Kronrod to 10⁻¹² relative — an independent quadrature of the same curve.
+// the papers' data): writes the comparison folder's tables (compare/comparison_tables.hpp) as
+// <prefix>measures.csv (no timing column: deterministic), <prefix>points.csv and the figure data
+// <prefix>{curves,curvature,combs,methods}.csv that scripts/plot/compare_panels.gp draws, and
+// validates every curve's length (Gauss–Legendre, as the table) against Boost's adaptive
+// Gauss–Kronrod to 10⁻¹² relative — an independent quadrature of the same curve.
 #include <string>
 #include <vector>
 
