@@ -19,14 +19,13 @@ using namespace cagd;
 using namespace cagd::fairness;
 
 namespace {
-constexpr double kPi = std::numbers::pi;
-const double kAngles[][2] = {{0.3, 0.7}, {1.2, 2.5}, {2.9, 0.4}, {0.8, 0.8}, {kPi / 2, kPi / 3}};
+const double kAngles[][2] = {{0.3, 0.7}, {1.2, 2.5}, {2.9, 0.4}, {0.8, 0.8}, {std::numbers::pi / 2, std::numbers::pi / 3}};
 }  // namespace
 
 TEST(SpacePseudoEnergy, PlanarAtPhiZeroAndPi) {
     for (const auto& a : kAngles) {
         // φ = 0 is the planar (θ0, θ1), φ = π the planar (θ0, −θ1).
-        for (const auto& [phi, sign] : {std::pair{0.0, 1.0}, {kPi, -1.0}}) {
+        for (const auto& [phi, sign] : {std::pair{0.0, 1.0}, {std::numbers::pi, -1.0}}) {
             const SpacePseudoEnergyMinimum s = minimize_space_pseudo_energy(a[0], a[1], phi);
             const PseudoEnergyMinimum p = minimize_pseudo_energy(a[0], sign * a[1]);
             ASSERT_TRUE(s.outcome.ok()) << s.outcome.message;
@@ -85,7 +84,7 @@ TEST(SpacePseudoEnergy, SymmetriesReflectionAndReversal) {
         for (double phi : {0.5, 1.7, 2.6}) {
             const SpacePseudoEnergyMinimum m = minimize_space_pseudo_energy(a[0], a[1], phi);
             // Reflection in the x–y plane: φ → 2π − φ.
-            const SpacePseudoEnergyMinimum refl = minimize_space_pseudo_energy(a[0], a[1], 2 * kPi - phi);
+            const SpacePseudoEnergyMinimum refl = minimize_space_pseudo_energy(a[0], a[1], 2 * std::numbers::pi - phi);
             EXPECT_NEAR(refl.pseudo_energy, m.pseudo_energy, 1e-12 * m.pseudo_energy);
             EXPECT_NEAR(refl.r0, m.r0, 1e-9 * m.r0);
             // Reversal: (θ0, θ1, φ) → (θ1, θ0, φ), r0 ↔ r1.
@@ -99,7 +98,7 @@ TEST(SpacePseudoEnergy, SymmetriesReflectionAndReversal) {
 
 TEST(SpacePseudoEnergy, FastAgreesWithReferenceOnRandomDirections) {
     std::mt19937 rng(26);
-    std::uniform_real_distribution<double> theta(0.05, kPi - 0.05), phi(0.0, 2 * kPi);
+    std::uniform_real_distribution<double> theta(0.05, std::numbers::pi - 0.05), phi(0.0, 2 * std::numbers::pi);
     for (int k = 0; k < 3; ++k) {
         const double t0 = theta(rng), t1 = theta(rng), p = phi(rng);
         const SpacePseudoEnergyMinimum f = minimize_space_pseudo_energy(t0, t1, p);
@@ -114,12 +113,12 @@ TEST(SpacePseudoEnergy, FastAgreesWithReferenceOnRandomDirections) {
 
 TEST(SpacePseudoEnergy, TypesAndUndefinedDirectionsAndBadInput) {
     // The type is the planar eq (14) in the plane and the binormal rule in space.
-    EXPECT_EQ(SpaceUnitChordHermite(0.5, 0.5, kPi, 1, 1).type(), SegmentType::c);  // planar (0.5, −0.5): an arc
+    EXPECT_EQ(SpaceUnitChordHermite(0.5, 0.5, std::numbers::pi, 1, 1).type(), SegmentType::c);  // planar (0.5, −0.5): an arc
     EXPECT_EQ(SpaceUnitChordHermite(0.5, 0.5, 0.0, 1, 1).type(), SegmentType::s);  // planar (0.5, 0.5): an S
     const SpacePseudoEnergyMinimum straight = minimize_space_pseudo_energy(0.0, 0.0, 1.0);
     EXPECT_EQ(straight.outcome.status, Status::no_solution);
     EXPECT_EQ(straight.pseudo_energy, 0.0);
-    EXPECT_EQ(minimize_space_pseudo_energy(kPi, 0.0, 2.0).outcome.status, Status::no_solution);
+    EXPECT_EQ(minimize_space_pseudo_energy(std::numbers::pi, 0.0, 2.0).outcome.status, Status::no_solution);
     EXPECT_THROW(SpaceUnitChordHermite(-0.1, 1, 1, 1, 1), InvalidInput);
     EXPECT_THROW(SpaceUnitChordHermite(0.1, 3.5, 1, 1, 1), InvalidInput);
     EXPECT_THROW(SpaceUnitChordHermite(0.1, 1, 7, 1, 1), InvalidInput);
@@ -172,7 +171,7 @@ TEST(SpacePseudoEnergyTable, NodesSymmetriesAndThePlane) {
     const PseudoEnergyMinimum p = minimize_pseudo_energy(th[1], th[4]);
     EXPECT_NEAR(t.node(1, 4, 0).pseudo_energy, p.pseudo_energy, 1e-12 * p.pseudo_energy);
     // φ is periodic; θ outside [0, π] is refused.
-    EXPECT_NEAR(t.lookup(1.0, 2.0, 0.3).pseudo_energy, t.lookup(1.0, 2.0, 0.3 + 2 * kPi).pseudo_energy, 1e-12);
+    EXPECT_NEAR(t.lookup(1.0, 2.0, 0.3).pseudo_energy, t.lookup(1.0, 2.0, 0.3 + 2 * std::numbers::pi).pseudo_energy, 1e-12);
     EXPECT_THROW(t.lookup(-0.1, 1.0, 0.0), InvalidInput);
     EXPECT_THROW(t.lookup(1.0, 1.0, NAN), InvalidInput);
     EXPECT_THROW(SpacePseudoEnergyTable::build({6, 7}, TableMethod::fast, 1), InvalidInput);
@@ -180,7 +179,7 @@ TEST(SpacePseudoEnergyTable, NodesSymmetriesAndThePlane) {
 
 TEST(SpacePseudoEnergyTable, InterpolationErrorFallsWithTheGrid) {
     std::mt19937 rng(7);
-    std::uniform_real_distribution<double> theta(0.4, kPi - 0.4), phi(0.0, 2 * kPi);
+    std::uniform_real_distribution<double> theta(0.4, std::numbers::pi - 0.4), phi(0.0, 2 * std::numbers::pi);
     std::vector<std::array<double, 4>> probes;  // θ0, θ1, φ, exact J
     while (probes.size() < 30) {
         const double a = theta(rng), b = theta(rng), c = phi(rng);
@@ -218,13 +217,13 @@ TEST(SpacePseudoSpline, FarEndOptimumIsPlanarAndJOfThetaGrows) {
     // (a) of space_pseudo_spline.hpp: over φ the energy is least at φ = 0 or π.
     for (double t0 : {0.3, 1.0, 2.0})
         for (double t1 : {0.4, 1.3, 2.6}) {
-            const double plane = std::min(minimize_space_pseudo_energy(t0, t1, 0.0).pseudo_energy, minimize_space_pseudo_energy(t0, t1, kPi).pseudo_energy);
-            for (int k = 1; k < 12; ++k) EXPECT_GE(minimize_space_pseudo_energy(t0, t1, kPi * k / 6).pseudo_energy, plane * (1 - 1e-12)) << t0 << " " << t1 << " " << k;
+            const double plane = std::min(minimize_space_pseudo_energy(t0, t1, 0.0).pseudo_energy, minimize_space_pseudo_energy(t0, t1, std::numbers::pi).pseudo_energy);
+            for (int k = 1; k < 12; ++k) EXPECT_GE(minimize_space_pseudo_energy(t0, t1, std::numbers::pi * k / 6).pseudo_energy, plane * (1 - 1e-12)) << t0 << " " << t1 << " " << k;
         }
     // (b): J(θ) grows on [0, π].
     double prev = -1.0;
     for (int k = 0; k <= 36; ++k) {
-        const double j = hybrid().angle_energy(kPi * k / 36 * 0.999);
+        const double j = hybrid().angle_energy(std::numbers::pi * k / 36 * 0.999);
         EXPECT_GT(j, prev) << k;
         prev = j;
     }

@@ -5,13 +5,11 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
-// Boost 1.74's pchip.hpp and makima.hpp need std::isnan visible where they are defined.
-using std::isnan;
 #include <boost/math/interpolators/catmull_rom.hpp>
 #include <boost/math/interpolators/makima.hpp>
 #include <boost/math/interpolators/pchip.hpp>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
+#include <cmath>
 #include <cstdlib>
 #include <numbers>
 #include <random>
@@ -24,9 +22,10 @@ using std::isnan;
 #include "cagd/compare/method_comparison.hpp"
 #include "cagd/core/parallel.hpp"
 #include "cagd/core/point_csv.hpp"
-#include "cagd/methods/method_registry.hpp"
 #include "cagd/core/random_walk.hpp"
+#include "cagd/methods/method_registry.hpp"
 
+using std::isnan;
 using namespace cagd;
 using namespace cagd::compare;
 using namespace cagd::methods;
@@ -300,25 +299,6 @@ TEST(Compare, ResultsDoNotDependOnTheThreadCount) {
     EXPECT_EQ(fa.combs, fb.combs);
 }
 
-TEST(Parallel, TheLowestFailingIndexIsRethrownWhateverTheThreadCount) {
-    for (int threads : {1, 2, 5}) {
-        std::vector<int> ran(40, 0);
-        try {
-            cagd::parallel_for(40, threads, [&](long k) {
-                ran[static_cast<std::size_t>(k)] = 1;
-                if (k == 7 || k == 23) throw std::runtime_error("index " + std::to_string(k));
-            });
-            ADD_FAILURE() << "no exception with " << threads << " threads";
-        } catch (const std::runtime_error& e) {
-            EXPECT_EQ(std::string(e.what()), "index 7") << threads << " threads";
-        }
-        for (int k = 0; k <= 7; ++k) EXPECT_EQ(ran[static_cast<std::size_t>(k)], 1) << "index " << k << " with " << threads << " threads";
-    }
-    std::vector<long> square(1000);
-    cagd::parallel_for(1000, 3, [&](long k) { square[static_cast<std::size_t>(k)] = k * k; });
-    for (long k = 0; k < 1000; ++k) ASSERT_EQ(square[static_cast<std::size_t>(k)], k * k);
-}
-
 TEST(Compare, BoostPeersAreRepresentedExactly) {
     std::mt19937_64 rng(3);
     const PointList p = random_points(rng, 8, false);
@@ -553,56 +533,6 @@ TEST(Compare, FigureSamplingKeepsLongInputsWithinTheBudget) {
         expected_first += count;
     }
     EXPECT_EQ(expected_first, d.profiles.size());
-}
-
-TEST(Points, BoundingBoxDiagonal) {
-    PointList p(3, 2);
-    p << 1, 2, 4, -2, 2, 0;  // box [1, 4] × [−2, 2]: diagonal 5
-    EXPECT_DOUBLE_EQ(bounding_box_diagonal(p), 5.0);
-    EXPECT_DOUBLE_EQ(bounding_box_diagonal(p.topRows(1)), 0.0);
-    EXPECT_DOUBLE_EQ(bounding_box_diagonal(PointList(0, 2)), 0.0);
-}
-
-// The point reader: header or none, comments, blank lines, whitespace, 2 or 3 columns; errors
-// name the line.
-TEST(PointReader, AcceptsTheDocumentedForms) {
-    const auto read = [](const std::string& text) {
-        std::istringstream in(text);
-        return read_points_csv(in, "test.csv");
-    };
-    const PointList a = read("x,y\n0,1\n2,3\n");
-    ASSERT_EQ(a.rows(), 2);
-    EXPECT_EQ(a(1, 1), 3.0);
-    const PointList b = read("# points\n\n  0 , 1  \n\t2,3 # trailing\n\n");
-    ASSERT_EQ(b.rows(), 2);
-    EXPECT_EQ(b(0, 1), 1.0);
-    EXPECT_EQ(b(1, 0), 2.0);
-    const PointList c = read("1,2,3\n4,5,6\n");
-    EXPECT_EQ(c.cols(), 3);
-    EXPECT_EQ(c(1, 2), 6.0);
-    const PointList d = read("1e-8,-2.5E+3\r\n");
-    EXPECT_EQ(d(0, 1), -2500.0);
-}
-
-TEST(PointReader, ErrorsNameTheLine) {
-    const auto message = [](const std::string& text) {
-        std::istringstream in(text);
-        try {
-            read_points_csv(in, "p.csv");
-        } catch (const InvalidInput& e) {
-            return std::string(e.what());
-        }
-        return std::string("no error");
-    };
-    EXPECT_NE(message("x,y\n0,1\n2,zz\n").find("p.csv:3"), std::string::npos);
-    EXPECT_NE(message("0,1\n2,3,4\n").find("p.csv:2"), std::string::npos);
-    EXPECT_NE(message("0\n").find("p.csv:1"), std::string::npos);
-    EXPECT_NE(message("0,1,2,3\n").find("p.csv:1"), std::string::npos);
-    EXPECT_NE(message("0,1\n1,nan\n").find("p.csv:2"), std::string::npos);
-    EXPECT_NE(message("0,1\n1,inf\n").find("p.csv:2"), std::string::npos);
-    EXPECT_NE(message("# only a comment\n\n").find("no data rows"), std::string::npos);
-    EXPECT_NE(message("x,y\nu,v\n").find("p.csv:2"), std::string::npos);
-    EXPECT_NE(message("0,1\n2,3,\n").find("p.csv:2"), std::string::npos);
 }
 
 // The measured exception to rotation invariance (methods/method_registry.hpp): the optimised

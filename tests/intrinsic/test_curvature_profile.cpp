@@ -16,7 +16,6 @@ using namespace cagd::intrinsic;
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 const char* kFig3List = "{0, 5.000, 0, 4.018, 0, 3.000, 0, 1.571, 0, 5.000, 0, 5.123, 0, 6.282, 0, 2.500, 0, 1.571, 0, {2.053, 1.806}, 3.430, 2.000, 0}";
 
 PointList fig3_points() {
@@ -261,9 +260,9 @@ TEST(CurvatureProfileDesign, Figure3ConvergesQuadraticallyToTheForcedArcs) {
     ASSERT_TRUE(sol.outcome.ok()) << sol.outcome.message;
     EXPECT_EQ(sol.rank, 36);  // 37 × 37, one redundant equation and a free split of span ⑩
     const std::vector<double> L = sol.segment_lengths();
-    EXPECT_NEAR(L[3], kPi / 2, 1e-11);  // quarter circle radius 1
-    EXPECT_NEAR(L[6], 2 * kPi, 1e-11);  // semicircle radius 2
-    EXPECT_NEAR(L[8], kPi / 2, 1e-11);
+    EXPECT_NEAR(L[3], std::numbers::pi / 2, 1e-11);  // quarter circle radius 1
+    EXPECT_NEAR(L[6], 2 * std::numbers::pi, 1e-11);  // semicircle radius 2
+    EXPECT_NEAR(L[8], std::numbers::pi / 2, 1e-11);
     EXPECT_NEAR(L[1], 4.01808761111852, 1e-11);  // reference/curvature_profile/fig3_mpmath.py
     EXPECT_NEAR(L[5], 5.12274417009232, 1e-11);
     EXPECT_NEAR(L[11], 3.43018694456654, 1e-11);
@@ -290,7 +289,7 @@ TEST(CurvatureProfileDesign, ClosedClothoidSplineSparseAndDenseAgree) {
     EXPECT_LT(v.g2_curvature_jump, 1e-12);
     EXPECT_LT(v.interpolation_error, 1e-10);
     const TangentAngleSpline& psi = a.curve->tangent_angle();
-    EXPECT_NEAR(psi.angle(5, true) - psi.angle(0, false), 2 * kPi, 1e-12);  // counter-clockwise: turns = +1
+    EXPECT_NEAR(psi.angle(5, true) - psi.angle(0, false), 2 * std::numbers::pi, 1e-12);  // counter-clockwise: turns = +1
 }
 
 TEST(CurvatureProfileDesign, DivergingIterationStopsEarly) {

@@ -14,6 +14,7 @@ using namespace cagd;
 using namespace cagd::locality;
 
 namespace {
+
 PointList random_points(int n, unsigned seed, int dim = 2) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> step(0.5, 1.5), wiggle(-1.0, 1.0);
@@ -24,7 +25,9 @@ PointList random_points(int n, unsigned seed, int dim = 2) {
     }
     return p;
 }
+
 const SplineForm kForms[] = {SplineForm::b2_spline, SplineForm::s_spline};
+
 }  // namespace
 
 TEST(Locality, PrintedBasisPolynomialsAreTheBSplineBasis) {
@@ -225,31 +228,6 @@ TEST(Locality, BadInputThrowsNamingTheValue) {
     EXPECT_THROW(parse_m_vector("1,x,2"), InvalidInput);
     EXPECT_THROW(parse_m_vector("1,-2"), InvalidInput);
     EXPECT_THROW(parse_m_vector(""), InvalidInput);
-}
-
-TEST(PointCsv, ReadsHeaderCommentsBlanksAndThreeColumns) {
-    std::istringstream in("# my points\nx, y, z\n\n 1, 2, 3 \n4,5,6 # trailing\n");
-    const PointList p = read_points_csv(in, "mem");
-    ASSERT_EQ(p.rows(), 2);
-    ASSERT_EQ(p.cols(), 3);
-    EXPECT_EQ(p(1, 2), 6.0);
-}
-
-TEST(PointCsv, ErrorsNameTheLine) {
-    const auto message = [](const std::string& text) {
-        std::istringstream in(text);
-        try {
-            read_points_csv(in, "pts.csv");
-        } catch (const InvalidInput& e) {
-            return std::string(e.what());
-        }
-        return std::string("no error");
-    };
-    EXPECT_NE(message("1,2\n3,abc\n").find("pts.csv:2"), std::string::npos);
-    EXPECT_NE(message("1,2\n3,4,5\n").find("pts.csv:2: 3 columns"), std::string::npos);
-    EXPECT_NE(message("1\n").find("pts.csv:1: 1 columns"), std::string::npos);
-    EXPECT_NE(message("1,nan\n").find("not finite"), std::string::npos);
-    EXPECT_NE(message("# only a comment\n").find("no points"), std::string::npos);
 }
 
 TEST(Locality, ExtendedPointsFollowSection33) {

@@ -18,42 +18,6 @@
 using namespace cagd;
 using namespace cagd::aesthetic;
 
-TEST(AlexaProduct, IsTheSimultaneousRotationAndCommutes) {
-    const Eigen::Matrix3d a = curvature_rotation(0.4), b = torsion_rotation(-0.7);
-    const Eigen::MatrixXd ab = numeric::alexa_product(a, b);
-    EXPECT_LT((ab - Eigen::MatrixXd(numeric::rotation_from_vector({-0.7, 0.0, 0.4}))).cwiseAbs().maxCoeff(), 1e-14);
-    EXPECT_LT((ab - numeric::alexa_product(b, a)).cwiseAbs().maxCoeff(), 1e-15);
-    // Not the ordinary product: rotations about different axes do not commute.
-    EXPECT_GT((ab - Eigen::MatrixXd(a * b)).cwiseAbs().maxCoeff(), 1e-2);
-    // Commuting factors (same axis): the ordinary product.
-    const Eigen::Matrix3d c = curvature_rotation(0.25);
-    EXPECT_LT((numeric::alexa_product(a, c) - Eigen::MatrixXd(a * c)).cwiseAbs().maxCoeff(), 1e-14);
-    EXPECT_LT((numeric::alexa_product(a, Eigen::Matrix3d::Identity()) - Eigen::MatrixXd(a)).cwiseAbs().maxCoeff(), 1e-14);
-}
-
-TEST(AlexaProduct, LimitDefinitionConvergesLikeOneOverN) {
-    const Eigen::Matrix3d a = curvature_rotation(0.4), b = torsion_rotation(0.7);
-    const Eigen::MatrixXd exact = numeric::alexa_product(a, b);
-    const double coef = numeric::alexa_limit_error_coefficient(a, b);
-    // ‖[θ_z e_z×, θ_x e_x×]‖_F / 2 = θ_z θ_x / √2 is the small-angle value; exp's derivative shrinks it here.
-    EXPECT_LT(coef, 0.4 * 0.7 / std::sqrt(2.0));
-    EXPECT_GT(coef, 0.9 * 0.4 * 0.7 / std::sqrt(2.0));
-    for (int k : {8, 12}) {
-        const double n = std::ldexp(1.0, k);
-        EXPECT_NEAR((numeric::alexa_product_limit(a, b, k) - exact).norm() * n, coef, 4.0 / n * coef) << "k = " << k;
-    }
-}
-
-TEST(AlexaProduct, RejectsMatricesWithoutARealLogarithm) {
-    const Eigen::Matrix3d half_turn = curvature_rotation(std::numbers::pi);
-    EXPECT_THROW(numeric::alexa_product(half_turn, Eigen::Matrix3d::Identity()), InvalidInput);
-    EXPECT_THROW(numeric::alexa_product(Eigen::Matrix2d::Identity(), Eigen::Matrix3d::Identity()), InvalidInput);
-    Eigen::Matrix3d bad = Eigen::Matrix3d::Identity();
-    bad(0, 1) = std::nan("");
-    EXPECT_THROW(numeric::alexa_product(bad, Eigen::Matrix3d::Identity()), InvalidInput);
-    EXPECT_THROW(numeric::alexa_product_limit(Eigen::Matrix3d::Identity(), Eigen::Matrix3d::Identity(), 61), InvalidInput);
-}
-
 TEST(LogAestheticSpaceCurve, ConstantRatesGiveTheHelix) {
     const double k = 2.0, tau = 0.8, w = std::hypot(k, tau);
     LogAestheticSpaceParameters p;
@@ -141,82 +105,6 @@ TEST(SpaceTypicalPolygon, RejectsBadInput) {
     Eigen::MatrixXd repeated(4, 3);
     repeated << 0, 0, 0, 1, 0, 0, 1, 0, 0, 3, 1, 0;
     EXPECT_THROW(polygon_frenet_angles(repeated), InvalidInput);
-}
-
-TEST(Torsion, RateMatchesDifferencesOfTorsion) {
-    Eigen::MatrixXd cp(6, 3);
-    cp << 0, 0, 0, 1, 0.2, 0, 2, 1, 0.3, 2.5, 2, 1, 2, 3, 2.2, 1, 3.5, 3;
-    const BezierCurve c(cp);
-    const double h = 1e-5;
-    for (double t : {0.1, 0.4, 0.77}) {
-        const double speed = c.jet(t, 1).row(1).norm();
-        const double fd = (analysis::torsion(c, t + h) - analysis::torsion(c, t - h)) / (2 * h) / speed;
-        EXPECT_NEAR(analysis::torsion_arc_derivative(c, t), fd, 1e-6 * std::max(1.0, std::abs(fd))) << "t = " << t;
-    }
-    Eigen::MatrixXd planar(4, 2);
-    planar << 0, 0, 1, 1, 2, 0, 3, 1;
-    EXPECT_THROW(analysis::torsion(BezierCurve(planar), 0.5), InvalidInput);
-    // A planar curve embedded in 3-D has no torsion: every LTG sample is skipped.
-    Eigen::MatrixXd flat(4, 3);
-    flat << 0, 0, 0, 1, 1, 0, 2, 0, 0, 3, 1, 0;
-    EXPECT_EQ(analysis::log_torsion_graph(BezierCurve(flat), 0.0, 1.0, 10).skipped, 10);
-    EXPECT_THROW(analysis::ltg_slope(BezierCurve(flat), 0.0, 1.0, 10), InvalidInput);
-}
-
-namespace {
-// z = x² + y² over [0, 1]² as a bi-quadratic Bézier patch (Bernstein coefficients of t²: 0, 0, 1).
-surface::ControlNet paraboloid_net() {
-    surface::ControlNet net;
-    for (auto& c : net) c.resize(3, 3);
-    const double sq[3] = {0.0, 0.0, 1.0};
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) {
-            net[0](i, j) = i / 2.0;
-            net[1](i, j) = j / 2.0;
-            net[2](i, j) = sq[i] + sq[j];
-        }
-    return net;
-}
-}  // namespace
-
-TEST(BezierPatch, ParaboloidCurvatureMatchesTheMongeFormulas) {
-    const surface::BezierPatch patch(paraboloid_net());
-    for (double x : {0.0, 0.3, 1.0})
-        for (double y : {0.2, 0.9}) {
-            const analysis::SurfaceJet2 j = patch.jet(x, y);
-            EXPECT_NEAR(j.s(2), x * x + y * y, 1e-15);
-            const double w = 1.0 + 4 * x * x + 4 * y * y;
-            const analysis::SurfaceCurvatures c = analysis::surface_curvatures(j);
-            EXPECT_NEAR(c.gaussian, 4.0 / (w * w), 1e-13);
-            EXPECT_NEAR(c.mean, (2.0 * (1 + 4 * y * y) + 2.0 * (1 + 4 * x * x)) / (2.0 * std::pow(w, 1.5)), 1e-13);
-        }
-}
-
-TEST(BezierPatch, GridAndDeCasteljauAgreeAtDegree24) {
-    const surface::ControlNet net = log_aesthetic_typical_net(-0.5, -0.6, 1.0, 24, 0.3);
-    const surface::BezierPatch patch(net);
-    const std::vector<double> us{0.0, 0.31, 1.0}, vs{0.05, 0.5, 0.93};
-    const surface::SurfaceGrid g = patch.evaluate_grid(us, vs);
-    for (Eigen::Index a = 0; a < 3; ++a)
-        for (Eigen::Index b = 0; b < 3; ++b) {
-            const analysis::SurfaceJet2 x = g.jet(a, b), y = patch.jet_de_casteljau(us[static_cast<std::size_t>(a)], vs[static_cast<std::size_t>(b)]);
-            EXPECT_LT((x.s - y.s).norm(), 1e-13);
-            EXPECT_LT((x.suv - y.suv).norm(), 1e-10);
-            EXPECT_LT((x.svv - y.svv).norm(), 1e-10);
-            EXPECT_LT((x.suu - y.suu).norm(), 1e-10);
-        }
-    EXPECT_THROW(patch.jet(1.2, 0.5), InvalidInput);
-    surface::ControlNet bad = net;
-    bad[1].resize(3, 3);
-    EXPECT_THROW(surface::BezierPatch{bad}, InvalidInput);
-}
-
-TEST(SurfaceCurvature, RejectsSingularPoints) {
-    analysis::SurfaceJet2 j;
-    j.s = j.suu = j.suv = j.svv = Eigen::Vector3d::Zero();
-    j.su = Eigen::Vector3d::UnitX();
-    j.sv = 2.0 * Eigen::Vector3d::UnitX();
-    EXPECT_THROW(analysis::surface_curvatures(j), InvalidInput);
 }
 
 TEST(TypicalSurface, RotationAboutTheDiagonalKeepsEdgesAndZeroAngleGivesATranslationSurface) {

@@ -1,0 +1,114 @@
+// spline/hermite_spline: piecewise cubic Hermite curves, the cubic splines A and B and the Hermite
+// curves A and B of pseudo_energy section 4.2.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <random>
+
+#include "cagd/analysis/curve_measures.hpp"
+#include "cagd/analysis/fairness_measures.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/fairness/pseudo_spline.hpp"
+#include "cagd/locality/locality_spline.hpp"
+#include "cagd/spline/hermite_spline.hpp"
+
+#include "../support/point_lists.hpp"
+
+using namespace cagd;
+using namespace cagd::test;
+using namespace cagd::fairness;
+using spline::PiecewiseHermiteCurve;
+
+TEST(PiecewiseHermite, InterpolatesNodesAndEndDerivativesAndMatchesFiniteDifferences) {
+    Eigen::MatrixXd nodes(3, 2), d0(2, 2), d1(2, 2);
+    nodes << 0, 0, 1, 2, 3, 1;
+    d0 << 1, 1, 2, -1;
+    d1 << 0.5, 2, 1, 0;
+    const PiecewiseHermiteCurve c(nodes, d0, d1);
+    for (int k = 0; k < 2; ++k) {
+        EXPECT_NEAR((c.jet(k, 1).row(0) - nodes.row(k)).norm(), 0.0, 1e-15);
+        EXPECT_NEAR((c.jet(k + 1, 0).row(0) - nodes.row(k + 1)).norm(), 0.0, 1e-15);
+        EXPECT_NEAR((c.jet(k + 1e-300, 1).row(1) - d0.row(k)).norm(), 0.0, 1e-12) << "r'(k) = d0_k";
+        EXPECT_NEAR((c.jet(k + 1 - 1e-15, 1).row(1) - d1.row(k)).norm(), 0.0, 1e-12) << "r'(k+1) = d1_k";
+    }
+    const double h = 1e-6;
+    for (double u : {0.3, 1.6}) {
+        const Eigen::MatrixXd j = c.jet(u, 3), jp = c.jet(u + h, 2), jm = c.jet(u - h, 2);
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(((jp.row(k) - jm.row(k)) / (2 * h) - j.row(k + 1)).norm(), 0.0, 1e-7);
+    }
+    EXPECT_THROW(c.jet(2.5, 0), InvalidInput);
+    EXPECT_THROW(PiecewiseHermiteCurve(nodes, d0.topRows(1), d1), InvalidInput);
+}
+
+TEST(CubicSplines, NaturalUniformSplineAIsTheBSplineInterpolantOfSb2LocalityEq10) {
+    const PiecewiseHermiteCurve a = spline::cubic_spline_interpolant(kNewberyGarrett, spline::ParameterSpacing::uniform, false);
+    const BSplineCurve b = locality::cubic_bspline_interpolant(kNewberyGarrett, false);
+    EXPECT_LT(analysis::max_distance_same_parameter(a, b), 1e-12);
+    const PiecewiseHermiteCurve ac = spline::cubic_spline_interpolant(kNewberyGarrett, spline::ParameterSpacing::uniform, true);
+    const BSplineCurve bc = locality::cubic_bspline_interpolant(kNewberyGarrett, true);
+    EXPECT_LT(analysis::max_distance_same_parameter(ac, bc), 1e-12) << "closed";
+}
+
+TEST(CubicSplines, ChordLengthSplineBIsC2InItsParameterWithNaturalEnds) {
+    for (bool closed : {false, true}) {
+        const PiecewiseHermiteCurve c = spline::cubic_spline_interpolant(kNewberyGarrett, spline::ParameterSpacing::chord_length, closed);
+        const Eigen::MatrixXd& p = c.nodes();
+        const auto h = [&](int k) { return (p.row(k + 1) - p.row(k)).norm(); };
+        for (int k = 1; k <= c.spans(); ++k) {
+            if (!closed && k == c.spans()) break;
+            const int next = k % c.spans();
+            const Eigen::MatrixXd left = c.jet(k - 1e-13, 2), right = c.jet(next == 0 ? 0.0 : k, 2);
+            // dr/dτ = r'(t)/h, d²r/dτ² = r''(t)/h² on each span.
+            EXPECT_NEAR((left.row(1) / h(k - 1) - right.row(1) / h(next)).norm(), 0.0, 1e-9) << "C1 at node " << k;
+            EXPECT_NEAR((left.row(2) / (h(k - 1) * h(k - 1)) - right.row(2) / (h(next) * h(next))).norm(), 0.0, 1e-8) << "C2 at node " << k;
+        }
+        if (!closed) {
+            EXPECT_NEAR(c.jet(0, 2).row(2).norm(), 0.0, 1e-10) << "natural start";
+            EXPECT_NEAR(c.jet(c.spans(), 2).row(2).norm(), 0.0, 1e-10) << "natural end";
+        }
+    }
+}
+
+TEST(HermiteCurves, CircleTangentsAreThoseOfTheCircumcircle) {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(-3, 3);
+    for (int trial = 0; trial < 50; ++trial) {
+        PointList p(3, 2);
+        for (int i = 0; i < 3; ++i) p.row(i) << u(rng), u(rng);
+        // Circumcentre by the perpendicular bisectors.
+        const Eigen::Vector2d a = p.row(0), b = p.row(1), c = p.row(2);
+        Eigen::Matrix2d m;
+        m << 2 * (b - a).transpose(), 2 * (c - a).transpose();
+        if (std::abs(m.determinant()) < 1e-3) continue;
+        const Eigen::Vector2d rhs(b.squaredNorm() - a.squaredNorm(), c.squaredNorm() - a.squaredNorm());
+        const Eigen::Vector2d centre = m.partialPivLu().solve(rhs);
+        const Eigen::MatrixXd t = spline::hermite_tangent_directions(p, spline::TangentRule::circle, false);
+        for (int i = 0; i < 3; ++i) {
+            const Eigen::Vector2d radius = p.row(i).transpose() - centre;
+            EXPECT_NEAR(t.row(i).dot(radius), 0.0, 1e-9) << "tangent ⟂ radius at point " << i;
+            EXPECT_NEAR(t.row(i).norm(), 1.0, 1e-14);
+        }
+        // All three tangents turn the same way round the circle (a consistent orientation).
+        const double s0 = Eigen::Vector2d(p.row(0).transpose() - centre).x() * t(0, 1) - Eigen::Vector2d(p.row(0).transpose() - centre).y() * t(0, 0);
+        const double s1 = Eigen::Vector2d(p.row(1).transpose() - centre).x() * t(1, 1) - Eigen::Vector2d(p.row(1).transpose() - centre).y() * t(1, 0);
+        const double s2 = Eigen::Vector2d(p.row(2).transpose() - centre).x() * t(2, 1) - Eigen::Vector2d(p.row(2).transpose() - centre).y() * t(2, 0);
+        EXPECT_GT(s0 * s1, 0.0);
+        EXPECT_GT(s1 * s2, 0.0);
+    }
+}
+
+TEST(HermiteCurves, HermiteAUsesNeighbourChordsAndChordLengthMagnitudes) {
+    const Eigen::MatrixXd t = spline::hermite_tangent_directions(kNewberyGarrett, spline::TangentRule::chord_of_neighbours, false);
+    EXPECT_NEAR(angle_of(t.row(0)), angle_of(kNewberyGarrett.row(1) - kNewberyGarrett.row(0)), 1e-14);
+    EXPECT_NEAR(angle_of(t.row(5)), angle_of(kNewberyGarrett.row(6) - kNewberyGarrett.row(4)), 1e-14);
+    const PiecewiseHermiteCurve c = spline::hermite_interpolant(kNewberyGarrett, t, false);
+    EXPECT_NEAR(c.start_derivatives().row(3).norm(), (kNewberyGarrett.row(4) - kNewberyGarrett.row(3)).norm(), 1e-14);
+    EXPECT_NEAR(c.end_derivatives().row(3).norm(), (kNewberyGarrett.row(4) - kNewberyGarrett.row(3)).norm(), 1e-14);
+    EXPECT_THROW(spline::hermite_tangent_directions(points({{0, 0}, {1, 0}, {0, 0.0}}), spline::TangentRule::chord_of_neighbours, false), InvalidInput)
+        << "P0 = P2: no direction (and coincident points)";
+    EXPECT_THROW(spline::hermite_tangent_directions(points({{0, 0}, {1, 0}, {0.0, 0.0}, {2, 0}}), spline::TangentRule::circle, false), InvalidInput)
+        << "an exact reversal with equal chords";
+}
