@@ -1,15 +1,17 @@
 // Robustness of every interpolation method (methods/method_registry) and the comparison:
 // seeded random point sets (10^4 per method; CAGD_PROPERTY_SETS overrides), degenerate inputs,
-// the point reader, and the measurements of `cagd compare`.
+// and the measurements of `cagd compare`.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+// Boost 1.74's pchip.hpp and makima.hpp need std::isnan visible where they are defined.
+using std::isnan;
 #include <boost/math/interpolators/catmull_rom.hpp>
 #include <boost/math/interpolators/makima.hpp>
 #include <boost/math/interpolators/pchip.hpp>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
-#include <cmath>
 #include <cstdlib>
 #include <numbers>
 #include <random>
@@ -22,10 +24,9 @@
 #include "cagd/compare/method_comparison.hpp"
 #include "cagd/core/parallel.hpp"
 #include "cagd/core/point_csv.hpp"
-#include "cagd/core/random_walk.hpp"
 #include "cagd/methods/method_registry.hpp"
+#include "cagd/core/random_walk.hpp"
 
-using std::isnan;
 using namespace cagd;
 using namespace cagd::compare;
 using namespace cagd::methods;
