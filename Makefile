@@ -18,7 +18,7 @@ PYTHON_ON     = -DCAGD_BUILD_PYTHON=ON
 # the Python package, into $(PREFIX), from a build of its own (no tests, experiments, benchmarks).
 INSTALL_FLAGS = -DCAGD_BUILD_TESTS=OFF -DCAGD_BUILD_EXPERIMENTS=OFF -DCAGD_BUILD_BENCH=OFF -DCAGD_BUILD_CLI=ON -DCAGD_BUILD_PYTHON=ON
 
-.PHONY: all deps configure build test reproduce bench python install sanitize clean
+.PHONY: all deps configure build test reproduce bench python install sanitize docs clean
 
 all: build
 
@@ -56,6 +56,10 @@ install: deps
 	@cmake -S . -B $(BUILD)-install $(call generator_for,$(BUILD)-install) $(CMAKE_FLAGS) $(INSTALL_FLAGS) -DCMAKE_INSTALL_PREFIX=$(PREFIX) >/dev/null
 	@cmake --build $(BUILD)-install -j$(JOBS)
 	@cmake --install $(BUILD)-install
+
+# The Doxygen API reference of the public headers into $(BUILD)/docs/html; fails on any warning.
+docs: deps
+	@bash scripts/docs.sh $(abspath $(BUILD))/docs
 
 # ASan + UBSan tests of the compare modules and a minute of libFuzzer (clang; build-sanitize/).
 sanitize: deps

@@ -15,6 +15,7 @@ packages=(
   libbenchmark-dev       # make bench
   libcli11-dev           # command line of the cagd tool
   gnuplot-nox            # figures (pngcairo and svg terminals)
+  doxygen                # make docs and make test: the API reference, no undocumented public declaration
   clang libclang-rt-14-dev         # make sanitize: ASan/UBSan and libFuzzer runtimes
   python3                # make test: the claim-id and folder-dependency checks (standard library only)
   python3-dev pybind11-dev python3-numpy   # the Python module `cagd` (python/), built for /usr/bin/python3

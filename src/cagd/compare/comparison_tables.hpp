@@ -1,17 +1,18 @@
 #pragma once
-// The files of a comparison folder, defined once: `cagd compare --out DIR` (cli/compare_command)
-// and the report's comparisons (repro/comparison_record) store these tables as they are, and
-// scripts/plot/compare_panels.gp reads them by column name.
-//
-//   measures.csv   comparison_header / comparison_rows: one row per method (seconds with timing)
-//   points.csv     x, y[, z]: the data points
-//   curves.csv     index, x, y[, z]: curve samples, method by method (FigureData::curves)
-//   curvature.csv  index, s, kappa[, tau]: κ(s) (and τ(s) in space), method by method
-//   combs.csv      index, x, y, tip_x, tip_y: curvature comb teeth (planar; header only in space)
-//   methods.csv    figure_methods_header / rows: each method's first row and row count per file
-//
-// `index` is the method's 1-based position in methods.csv. Numbers are written with the given
-// significant digits (format_number's "%.*g"); the measures with `measure_digits`.
+/// @file
+/// The files of a comparison folder, defined once: `cagd compare --out DIR` (cli/compare_command)
+/// and the report's comparisons (repro/comparison_record) store these tables as they are, and
+/// scripts/plot/compare_panels.gp reads them by column name.
+///
+///   measures.csv   comparison_header / comparison_rows: one row per method (seconds with timing)
+///   points.csv     x, y[, z]: the data points
+///   curves.csv     index, x, y[, z]: curve samples, method by method (FigureData::curves)
+///   curvature.csv  index, s, kappa[, tau]: κ(s) (and τ(s) in space), method by method
+///   combs.csv      index, x, y, tip_x, tip_y: curvature comb teeth (planar; header only in space)
+///   methods.csv    figure_methods_header / rows: each method's first row and row count per file
+///
+/// `index` is the method's 1-based position in methods.csv. Numbers are written with the given
+/// significant digits (format_number's "%.*g"); the measures with `measure_digits`.
 #include <string>
 #include <vector>
 
@@ -20,29 +21,31 @@
 
 namespace cagd::compare {
 
+/// One file of a comparison folder: its name, header and rows.
 struct ComparisonTable {
-    std::string file;                                 // "measures.csv", …
-    std::vector<std::string> header;                  // column names
-    // A table's rows are its text rows (measures, methods) followed by its number rows: its own
-    // (points) or the figure data's (curves, curvature, combs).
-    std::vector<std::vector<std::string>> text_rows;
-    std::vector<std::vector<double>> number_rows;
-    const std::vector<std::vector<double>>* figure_rows = nullptr;  // the figure data, not copied
-    int significant = 12;                             // digits of the number rows
+    std::string file{};                               ///< "measures.csv", …
+    std::vector<std::string> header{};                ///< column names
+    /// A table's rows are its text rows (measures, methods) followed by its number rows: its own
+    /// (points) or the figure data's (curves, curvature, combs).
+    std::vector<std::vector<std::string>> text_rows{};  ///< rows given as text
+    std::vector<std::vector<double>> number_rows{};     ///< rows of numbers of its own
+    const std::vector<std::vector<double>>* figure_rows = nullptr;  ///< the figure data, not copied
+    int significant = 12;                             ///< digits of the number rows
 
-    // The number rows: the figure data it refers to, or its own.
+    /// The number rows: the figure data it refers to, or its own.
     const std::vector<std::vector<double>>& numbers() const { return figure_rows ? *figure_rows : number_rows; }
 };
 
+/// The digits and columns the writer asks for.
 struct ComparisonTableOptions {
-    bool timing = false;     // the seconds column of measures.csv (not deterministic)
-    int measure_digits = 8;  // measures.csv
-    int figure_digits = 12;  // curves, curvature, combs
-    int point_digits = 17;   // points.csv (17: the data round-trip exactly)
+    bool timing = false;     ///< the seconds column of measures.csv (not deterministic)
+    int measure_digits = 8;  ///< measures.csv
+    int figure_digits = 12;  ///< curves, curvature, combs
+    int point_digits = 17;   ///< points.csv (17: the data round-trip exactly)
 };
 
-// The six tables of a comparison folder, in the order above. `figure` must outlive the result
-// (three tables refer to its rows).
+/// The six tables of a comparison folder, in the order above. `figure` must outlive the result
+/// (three tables refer to its rows).
 std::vector<ComparisonTable> comparison_tables(const std::vector<MethodComparison>& c, const FigureData& figure, const PointList& points, bool closed,
                                                const ComparisonTableOptions& options);
 

@@ -1,26 +1,27 @@
 #pragma once
-// Every interpolation method on the same planar or space points, measured the same way (`cagd compare`):
-//
-//   length, enclosed area (closed)   ∫|r'| dt, ½∮(x y' − y x') dt (analysis/curve_measures)
-//   pseudo-energy                    Σ_k L_k² E_k over the data spans k (L_k, E_k = ∫κ² ds on span k;
-//                                    = Σ l_k J_k, pseudo_energy eq 7, 12, whatever the curve's pieces)
-//   bending energy ∫κ² ds, curvature sign changes (inflections; also a
-//   κ jump through 0 at a G1 join), max |κ|, max |dκ/ds|, overshoot beyond the data's bounding box
-//   (÷ its diagonal)                 analysis/fairness_measures, sampled per piece
-//   locality footprint               moving the middle data point P_⌊n/2⌋ by 10⁻³ × diagonal in y
-//                                    moves how many spans, a span moving when some sample at the
-//                                    same fraction of its parameter interval moves by more than
-//                                    10⁻⁹ × diagonal (9 samples per span)
-//   seconds                          wall time of interpolate() (not deterministic)
-//
-// Space points (3 columns): no enclosed area and no inflections; the largest |τ| instead
-// (analysis/fairness_measures); the figure data are the curves in 3-D and κ(s), τ(s), no combs.
-// A method that does not apply (too few points, closed curves unsupported, 3-D) is listed with
-// the reason; a returned outcome (the curvature-profile Newton) is listed with its message; a curve
-// with a point of zero speed (a cusp: Boost's pchip does this where x and y turn together) has no
-// curvature there, and its κ measures are left empty with that note. Nothing is NaN.
-// Sampling: `samples` and `quadrature_pieces` per piece default to 128 and 16, reduced for long
-// inputs so that a method measures about 2·10⁶ samples in all (at least 8 and 2 per piece).
+/// @file
+/// Every interpolation method on the same planar or space points, measured the same way (`cagd compare`):
+///
+///   length, enclosed area (closed)   ∫|r'| dt, ½∮(x y' − y x') dt (analysis/curve_measures)
+///   pseudo-energy                    Σ_k L_k² E_k over the data spans k (L_k, E_k = ∫κ² ds on span k;
+///                                    = Σ l_k J_k, pseudo_energy eq 7, 12, whatever the curve's pieces)
+///   bending energy ∫κ² ds, curvature sign changes (inflections; also a
+///   κ jump through 0 at a G1 join), max |κ|, max |dκ/ds|, overshoot beyond the data's bounding box
+///   (÷ its diagonal)                 analysis/fairness_measures, sampled per piece
+///   locality footprint               moving the middle data point P_⌊n/2⌋ by 10⁻³ × diagonal in y
+///                                    moves how many spans, a span moving when some sample at the
+///                                    same fraction of its parameter interval moves by more than
+///                                    10⁻⁹ × diagonal (9 samples per span)
+///   seconds                          wall time of interpolate() (not deterministic)
+///
+/// Space points (3 columns): no enclosed area and no inflections; the largest |τ| instead
+/// (analysis/fairness_measures); the figure data are the curves in 3-D and κ(s), τ(s), no combs.
+/// A method that does not apply (too few points, closed curves unsupported, 3-D) is listed with
+/// the reason; a returned outcome (the curvature-profile Newton) is listed with its message; a curve
+/// with a point of zero speed (a cusp: Boost's pchip does this where x and y turn together) has no
+/// curvature there, and its κ measures are left empty with that note. Nothing is NaN.
+/// Sampling: `samples` and `quadrature_pieces` per piece default to 128 and 16, reduced for long
+/// inputs so that a method measures about 2·10⁶ samples in all (at least 8 and 2 per piece).
 #include <functional>
 #include <memory>
 #include <optional>
@@ -37,66 +38,81 @@ using methods::InterpolationResult;
 
 struct MethodComparison;
 
+/// What compare_methods measures and how.
 struct ComparisonOptions {
-    std::vector<std::string> methods;  // configuration or method names (methods::find_configuration); empty: every configuration
-    bool closed = false;
-    bool locality = true;
-    // Called as each method is done (progress), one call at a time, in completion order.
+    std::vector<std::string> methods;  ///< configuration or method names (methods::find_configuration); empty: every configuration
+    bool closed = false;  ///< closed curves
+    bool locality = true;  ///< measure the locality footprint (it interpolates once more per method)
+    /// Called as each method is done (progress), one call at a time, in completion order.
     std::function<void(const MethodComparison&)> on_method;
-    // Methods measured in parallel, one per thread (0: the hardware's thread count). The results,
-    // in the configurations' order, do not depend on it (the `seconds` timings aside).
+    /// Methods measured in parallel, one per thread (0: the hardware's thread count). The results,
+    /// in the configurations' order, do not depend on it (the `seconds` timings aside).
     int threads = 0;
 };
 
+/// One method's row of the comparison.
 struct MethodComparison {
-    std::string method;
-    std::string status;  // "ok", "not applicable", "no result", "cusp"
-    std::string note;    // the reason when status is not ok
-    std::optional<Interpolant> interpolant;
-    double length = 0.0, area = 0.0, pseudo_energy = 0.0;
-    std::optional<analysis::FairnessMeasures> fairness;  // absent for a cusp
-    int spans = 0;
-    std::optional<int> locality_footprint;
-    double seconds = 0.0;
+    std::string method;  ///< the configuration's name
+    std::string status;  ///< "ok", "not applicable", "no result", "cusp"
+    std::string note;    ///< the reason when status is not ok
+    std::optional<Interpolant> interpolant;  ///< the curve, when the method applies and succeeds
+    double length = 0.0;  ///< arc length
+    double area = 0.0;  ///< enclosed area (closed)
+    double pseudo_energy = 0.0;  ///< Σ L_k² E_k over the data spans
+    std::optional<analysis::FairnessMeasures> fairness;  ///< absent for a cusp
+    int spans = 0;  ///< data spans
+    std::optional<int> locality_footprint;  ///< spans moved when the middle point moves (absent when not measured)
+    double seconds = 0.0;  ///< wall time of interpolate() (not deterministic)
 };
 
+/// Samples and quadrature pieces per piece for a curve of `pieces` pieces (fewer for long inputs).
 analysis::FairnessSampling comparison_sampling(int pieces);
-// The row of `configuration` (a name methods::find_configuration knows); InvalidInput if the name is
-// unknown or the comparison has no such row.
+/// The row of `configuration` (a name methods::find_configuration knows); InvalidInput if the name is
+/// unknown or the comparison has no such row.
 const MethodComparison& find_comparison(const std::vector<MethodComparison>& c, const std::string& configuration);
+/// Every configuration (or those named) on the points, in the configurations' order (see above).
 std::vector<MethodComparison> compare_methods(const PointList& points, const ComparisonOptions& options);
 
-// The table: one row per method, numbers to `digits` significant digits, empty where undefined.
-// With timing = false the seconds column is left out (deterministic output).
-// `dimension` 3: the space columns (no area, no inflections, max_abs_torsion).
+/// The table: one row per method, numbers to `digits` significant digits, empty where undefined.
+/// With timing = false the seconds column is left out (deterministic output).
+/// `dimension` 3: the space columns (no area, no inflections, max_abs_torsion).
 std::vector<std::string> comparison_header(bool closed, bool timing, int dimension = 2);
+/// The table's rows, numbers to `digits` significant digits, empty where undefined.
 std::vector<std::vector<std::string>> comparison_rows(const std::vector<MethodComparison>& c, bool closed, bool timing, int digits = 8, int dimension = 2);
+/// The table in Markdown.
 std::string comparison_markdown(const std::vector<MethodComparison>& c, bool closed, bool timing, int digits = 6, int dimension = 2);
 
-// Figure data (planar; for space points see above: curves (index, x, y, z), profiles (index, s, κ,
-// τ), no combs). Curve samples (method index, method, x, y), `per_span` per span; the curvature
-// profile (method index, s, κ), `per_span` per span with both ends of every span; the curvature
-// comb (method index, x, y, tooth end x, y), the tooth r − c·κ·n (n the left unit normal), c per
-// method such that the 95th percentile of |κ| draws 10 % of the data diagonal (a spike shows as a
-// long tooth without flattening the rest).
-// Long inputs: only every `span_stride`-th span is sampled (the arc length s still runs over every
-// span), so a figure of 10^5 spans stays a few MB; figure_sampling(spans, budget) picks per_span
-// (≤ 32) and the stride for at most about `budget` samples per method (a sampled span gives
-// per_span + 1 samples).
+/// Figure data (planar; for space points see above: curves (index, x, y, z), profiles (index, s, κ,
+/// τ), no combs). Curve samples (method index, method, x, y), `per_span` per span; the curvature
+/// profile (method index, s, κ), `per_span` per span with both ends of every span; the curvature
+/// comb (method index, x, y, tooth end x, y), the tooth r − c·κ·n (n the left unit normal), c per
+/// method such that the 95th percentile of |κ| draws 10 % of the data diagonal (a spike shows as a
+/// long tooth without flattening the rest).
+/// Long inputs: only every `span_stride`-th span is sampled (the arc length s still runs over every
+/// span), so a figure of 10^5 spans stays a few MB; figure_sampling(spans, budget) picks per_span
+/// (≤ 32) and the stride for at most about `budget` samples per method (a sampled span gives
+/// per_span + 1 samples).
 struct FigureData {
-    std::vector<std::vector<double>> curves, profiles, combs;
+    std::vector<std::vector<double>> curves;  ///< curve samples (method index, x, y[, z])
+    std::vector<std::vector<double>> profiles;  ///< the curvature profiles (method index, s, κ[, τ])
+    std::vector<std::vector<double>> combs;  ///< the comb teeth (method index, x, y, tip x, tip y)
 };
+/// How densely the figure data sample a curve.
 struct FigureSampling {
-    int per_span = 32, span_stride = 1;
+    int per_span = 32;  ///< samples per sampled span
+    int span_stride = 1;  ///< every span_stride-th span is sampled
 };
+/// per_span and the stride for at most about `budget` samples per method over `spans` spans.
 FigureSampling figure_sampling(int spans, int budget);
+/// The figure data of a comparison (see above).
 FigureData comparison_figure_data(const std::vector<MethodComparison>& c, const PointList& points, const FigureSampling& sampling);
 
-// The methods table of the figure data (methods.csv): index, method, and for each of curves,
-// curvature and combs the first data row of that method (0-based after the header) and its row
-// count. A method's rows are consecutive, so the plot script reads them with gnuplot's
-// `every ::first::last`, which stops there — filtering whole files per panel costs methods² rows.
+/// The methods table of the figure data (methods.csv): index, method, and for each of curves,
+/// curvature and combs the first data row of that method (0-based after the header) and its row
+/// count. A method's rows are consecutive, so the plot script reads them with gnuplot's
+/// `every ::first::last`, which stops there — filtering whole files per panel costs methods² rows.
 std::vector<std::string> figure_methods_header();
+/// The rows of methods.csv.
 std::vector<std::vector<std::string>> figure_methods_rows(const std::vector<MethodComparison>& c, const FigureData& d);
 
 }  // namespace cagd::compare

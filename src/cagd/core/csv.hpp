@@ -1,33 +1,41 @@
 #pragma once
-// Minimal CSV for the library, the harness and the command: RFC-4180-style quoting (fields with commas or quotes are
-// quoted), '#' comment lines kept apart, stable number formatting for byte-stable results.
+/// @file
+/// Minimal CSV for the library, the harness and the command: RFC-4180-style quoting (fields with commas or quotes are
+/// quoted), '#' comment lines kept apart, stable number formatting for byte-stable results.
 #include <fstream>
 #include <string>
 #include <vector>
 
 namespace cagd {
 
+/// The fields of one CSV line, unquoted (RFC 4180: quoted fields may hold commas and doubled quotes).
 std::vector<std::string> split_csv_line(const std::string& line);
-std::string csv_field(const std::string& text);  // quotes when needed
-// Stable rendering: "%.10g", with −0 printed as 0. Used for every number in results/.
+std::string csv_field(const std::string& text);  ///< quotes when needed
+/// Stable rendering: "%.10g", with −0 printed as 0. Used for every number in results/.
 std::string format_number(double value, int significant = 10);
-// Parses a decimal or an exact fraction "a/b" (reference files print 1/6 as 1/6).
-// Throws InvalidInput naming the text.
+/// Parses a decimal or an exact fraction "a/b" (reference files print 1/6 as 1/6).
+/// Throws InvalidInput naming the text.
 double parse_number(const std::string& text);
 
-// The record rules of every reader (core/point_csv.hpp): a line with its byte-order mark (line 1),
-// CR, '#' comment and surrounding blanks removed; its comma-separated fields, trimmed; whether a
-// field is a name (a header field); an excerpt of a line for messages (at most 40 characters).
+/// The record rules of every reader (core/point_csv.hpp): a line with its byte-order mark (line 1),
+/// CR, '#' comment and surrounding blanks removed; its comma-separated fields, trimmed; whether a
+/// field is a name (a header field); an excerpt of a line for messages (at most 40 characters).
 std::string clean_csv_line(std::string line, int line_no);
+/// The trimmed comma-separated fields of a cleaned line.
 std::vector<std::string> split_fields(const std::string& line);
+/// Whether a field is a column name: a letter or '_' first, and not a number such as "nan" or "inf".
 bool is_column_name(const std::string& field);
+/// The line, cut to at most 40 characters with "…", for messages.
 std::string excerpt(const std::string& text);
-// `path`, or standard input for "-"; InvalidInput naming the path if it cannot be opened (or is a
-// directory).
+/// `path`, or standard input for "-"; InvalidInput naming the path if it cannot be opened (or is a
+/// directory).
 class InputFile {
 public:
+    /// Opens `path` ("-": standard input); InvalidInput naming the path if it cannot be read.
     explicit InputFile(const std::string& path);
+    /// The stream to read.
     std::istream& stream() { return path_ == "-" ? *stdin_ : file_; }
+    /// The name for messages: the path, or "standard input".
     const std::string& name() const { return name_; }
 
 private:
@@ -36,24 +44,31 @@ private:
     std::istream* stdin_ = nullptr;
 };
 
-// A CSV of numbers under a header line of names, e.g. a curve written by `cagd interpolate`, read
-// by the rules above (the header is required). InvalidInput names path:line and the field when a
-// field is not a number or not finite, or a row's field count differs from the header's.
+/// A CSV of numbers under a header line of names, e.g. a curve written by `cagd interpolate`, read
+/// by the rules above (the header is required). InvalidInput names path:line and the field when a
+/// field is not a number or not finite, or a row's field count differs from the header's.
 struct NumericTable {
-    std::vector<std::string> header;
-    std::vector<std::vector<double>> rows;
-    int column(const std::string& name) const;  // −1 when absent
+    std::vector<std::string> header;  ///< the column names of the first line
+    std::vector<std::vector<double>> rows;  ///< one vector of numbers per data line, as many as the header's names
+    int column(const std::string& name) const;  ///< −1 when absent
 };
+/// The table in the file `path` ("-": standard input) by the rules above.
 NumericTable read_numeric_table(const std::string& path);
+/// The table in a stream; `source_name` names the source in messages.
 NumericTable read_numeric_table(std::istream& in, const std::string& source_name);
 
+/// A CSV file written row by row under a header, numbers in the stable rendering of format_number.
 class CsvWriter {
 public:
+    /// Creates (truncates) `path` and writes the header line; InvalidInput if it cannot be written.
     CsvWriter(const std::string& path, const std::vector<std::string>& header);
+    /// A row of numbers, each to `significant` digits; InvalidInput if the count differs from the header's.
     void row(const std::vector<double>& values, int significant = 12);
+    /// A row of text fields (quoted where needed); InvalidInput if the count differs from the header's.
     void row_text(const std::vector<std::string>& fields);
-    // An empty line: ends a scan line of a gnuplot surface (splot draws each block as one line).
+    /// An empty line: ends a scan line of a gnuplot surface (splot draws each block as one line).
     void end_scan() { out_ << '\n'; }
+    /// The file written.
     const std::string& path() const { return path_; }
 
 private:

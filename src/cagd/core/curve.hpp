@@ -1,7 +1,8 @@
 #pragma once
-// The one curve interface (docs/design.md): position and derivatives at a parameter.
-// Everything in analysis/ (curvature, length, area, distances) works on a Curve, so it is
-// written once for all curve types. Modelled on GTE's ParametricCurve::Evaluate(t, order).
+/// @file
+/// The one curve interface (docs/design.md): position and derivatives at a parameter.
+/// Everything in analysis/ (curvature, length, area, distances) works on a Curve, so it is
+/// written once for all curve types. Modelled on GTE's ParametricCurve::Evaluate(t, order).
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
@@ -9,61 +10,71 @@
 
 namespace cagd {
 
-// Fixed-capacity storage for a jet: up to kJetCapacity rows (derivative orders 0..kJetCapacity−1)
-// and 3 columns, held inline, so filling one never allocates.
+/// Fixed-capacity storage for a jet: up to kJetCapacity rows (derivative orders 0..kJetCapacity−1)
+/// and 3 columns, held inline, so filling one never allocates.
 inline constexpr int kJetCapacity = 4;
+/// The storage of a jet (derivative orders in rows, coordinates in columns), at most kJetCapacity × 3.
 using JetMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, kJetCapacity, 3>;
 
+/// A parametric curve r(t), t ∈ [t_min, t_max], in 2 or 3 dimensions: position and derivatives at
+/// any parameter (jet), the one interface analysis/ measures every curve through.
 class Curve {
 public:
     virtual ~Curve() = default;
+    /// Number of coordinates of a point: 2 (planar) or 3 (space).
     virtual int dimension() const = 0;
+    /// First parameter of the curve's domain.
     virtual double t_min() const = 0;
+    /// Last parameter of the curve's domain.
     virtual double t_max() const = 0;
-    // Row k of the result is the k-th derivative d^k r/dt^k at t, k = 0..order.
-    // Precondition: t_min ≤ t ≤ t_max (throws InvalidInput otherwise), order ≥ 0.
+    /// Row k of the result is the k-th derivative d^k r/dt^k at t, k = 0..order.
+    /// Precondition: t_min ≤ t ≤ t_max (throws InvalidInput otherwise), order ≥ 0.
     virtual Eigen::MatrixXd jet(double t, int order) const = 0;
-    // Parameters in [t_min, t_max] between which the curve is polynomial (ascending,
-    // including both ends). Quadrature in analysis/ integrates piece by piece.
+    /// Parameters in [t_min, t_max] between which the curve is polynomial (ascending,
+    /// including both ends). Quadrature in analysis/ integrates piece by piece.
     virtual std::vector<double> breakpoints() const = 0;
-    // The left limit lim_{t'→t⁻} jet(t', order), for t_min < t ≤ t_max: at a breakpoint, the jet of
-    // the piece that ends there (jet(t) is the piece that starts there). Continuity at a join is
-    // measured by comparing the two. The default serves curves of one piece (it throws
-    // std::logic_error for a curve of several pieces that does not override it).
+    /// The left limit lim_{t'→t⁻} jet(t', order), for t_min < t ≤ t_max: at a breakpoint, the jet of
+    /// the piece that ends there (jet(t) is the piece that starts there). Continuity at a join is
+    /// measured by comparing the two. The default serves curves of one piece (it throws
+    /// std::logic_error for a curve of several pieces that does not override it).
     virtual Eigen::MatrixXd jet_from_left(double t, int order) const;
-    // The derivatives without the position: row k − 1 is d^k r/dt^k at t, k = 1..order (order ≥ 1),
-    // i.e. jet(t, order) without its first row. Speed, curvature and their integrals need only
-    // these. The default slices jet(); a curve whose position is costly (IntrinsicCurve: a
-    // quadrature per point) overrides it.
+    /// The derivatives without the position: row k − 1 is d^k r/dt^k at t, k = 1..order (order ≥ 1),
+    /// i.e. jet(t, order) without its first row. Speed, curvature and their integrals need only
+    /// these. The default slices jet(); a curve whose position is costly (IntrinsicCurve: a
+    /// quadrature per point) overrides it.
     virtual Eigen::MatrixXd derivatives(double t, int order) const;
-    // jet(t, order) written into `out` (resized to order + 1 rows × dimension()), for
-    // 0 ≤ order < kJetCapacity (InvalidInput otherwise) and dimension() ≤ 3: the allocation-free
-    // form for loops over many parameters. The default copies jet(); PiecewiseHermiteCurve and
-    // BSplineCurve (degree ≤ 7) override it without allocating.
+    /// jet(t, order) written into `out` (resized to order + 1 rows × dimension()), for
+    /// 0 ≤ order < kJetCapacity (InvalidInput otherwise) and dimension() ≤ 3: the allocation-free
+    /// form for loops over many parameters. The default copies jet(); PiecewiseHermiteCurve and
+    /// BSplineCurve (degree ≤ 7) override it without allocating.
     virtual void jet_into(double t, int order, JetMatrix& out) const;
-    // derivatives(t, order) likewise, for 1 ≤ order ≤ kJetCapacity.
+    /// derivatives(t, order) likewise, for 1 ≤ order ≤ kJetCapacity.
     virtual void derivatives_into(double t, int order, JetMatrix& out) const;
 
+    /// Position r(t) (row 0 of jet(t, 0)) as a column vector.
     Eigen::VectorXd point(double t) const { return jet(t, 0).row(0).transpose(); }
 };
 
-// Throws InvalidInput naming `who` unless `rows` × `dimension` fits a JetMatrix.
-// (Inline: it sits in every jet_into; the throwing path is out of line.)
+/// Throws InvalidInput naming `who` unless `rows` × `dimension` fits a JetMatrix.
+/// (Inline: it sits in every jet_into; the throwing path is out of line.)
 [[noreturn]] void reject_jet_capacity(const char* who, int rows, int dimension);
+/// Throws InvalidInput naming `who` unless 1 ≤ `rows` ≤ kJetCapacity and 1 ≤ `dimension` ≤ 3.
 inline void require_jet_capacity(const char* who, int rows, int dimension) {
     if (rows < 1 || rows > kJetCapacity || dimension < 1 || dimension > JetMatrix::MaxColsAtCompileTime) [[unlikely]]
         reject_jet_capacity(who, rows, dimension);
 }
 
-// Helpers for curves made of K pieces of unit parameter length, piece s on u ∈ [s, s+1]
-// (piecewise Hermite curves, Hosaka curves).
-std::vector<double> unit_piece_breakpoints(int pieces);  // 0, 1, …, K
+/// Helpers for curves made of K pieces of unit parameter length, piece s on u ∈ [s, s+1]
+/// (piecewise Hermite curves, Hosaka curves).
+std::vector<double> unit_piece_breakpoints(int pieces);  ///< 0, 1, …, K
+/// Where a parameter u of a curve of K unit pieces falls: its piece and the local parameter.
 struct PieceLocation {
-    int piece;  // s, the last piece for u = K
-    double t;   // u − s ∈ [0, 1]
+    int piece;  ///< s, the last piece for u = K
+    double t;   ///< u − s ∈ [0, 1]
 };
-// Throws InvalidInput naming `who` for u outside [0, K] (or NaN) or order < 0.
+/// Throws InvalidInput naming `who` for u outside [0, K] (or NaN) or order < 0.
 [[noreturn]] void reject_unit_piece(const char* who, double u, int pieces, int order);
+/// The piece s = min(⌊u⌋, K − 1) holding u ∈ [0, K] and t = u − s; InvalidInput for u outside [0, K] or order < 0.
 inline PieceLocation locate_unit_piece(const char* who, double u, int pieces, int order) {
     if (!(u >= 0.0 && u <= pieces) || order < 0) [[unlikely]]
         reject_unit_piece(who, u, pieces, order);
@@ -72,7 +83,7 @@ inline PieceLocation locate_unit_piece(const char* who, double u, int pieces, in
     const int s = std::min(static_cast<int>(u), pieces - 1);
     return {s, u - s};
 }
-// The piece that ends at u for u ∈ (0, K] (t = 1 at a breakpoint): for Curve::jet_from_left.
+/// The piece that ends at u for u ∈ (0, K] (t = 1 at a breakpoint): for Curve::jet_from_left.
 PieceLocation locate_unit_piece_from_left(const char* who, double u, int pieces, int order);
 
 }  // namespace cagd

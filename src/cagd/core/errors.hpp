@@ -1,10 +1,11 @@
 #pragma once
-// Errors and numerical outcomes (docs/design.md, "Errors and outcomes").
-//
-// A violated precondition (bad input) throws cagd::InvalidInput whose message names
-// the function, the condition and the offending value at full precision.
-// A legitimate numerical outcome for valid input (no convergence, no solution) is not
-// an exception: functions that can meet one return a value carrying a cagd::Outcome.
+/// @file
+/// Errors and numerical outcomes (docs/design.md, "Errors and outcomes").
+///
+/// A violated precondition (bad input) throws cagd::InvalidInput whose message names
+/// the function, the condition and the offending value at full precision.
+/// A legitimate numerical outcome for valid input (no convergence, no solution) is not
+/// an exception: functions that can meet one return a value carrying a cagd::Outcome.
 #include <stdexcept>
 #include <string>
 
@@ -15,20 +16,22 @@ public:
     using std::invalid_argument::invalid_argument;
 };
 
-// not_representable: the result overflows or underflows double precision for these inputs (e.g.
-// coordinates near 1e308, whose differences overflow).
+/// not_representable: the result overflows or underflows double precision for these inputs (e.g.
+/// coordinates near 1e308, whose differences overflow).
 enum class Status { ok, no_convergence, no_solution, not_representable };
 
+/// The outcome of a computation on valid input: ok, or why there is no result (never an exception).
 struct Outcome {
-    Status status = Status::ok;
-    std::string message;
+    Status status = Status::ok;  ///< ok, or the reason there is no result
+    std::string message;  ///< what happened, in one line, when not ok
+    /// Whether a result exists.
     bool ok() const { return status == Status::ok; }
 };
 
-// Full-precision decimal rendering for error messages (17 significant digits).
+/// Full-precision decimal rendering for error messages (17 significant digits).
 std::string full_precision(double value);
 
-// Throws InvalidInput("<who>: <what>") — the one way library code reports bad input.
+/// Throws InvalidInput("<who>: <what>") — the one way library code reports bad input.
 [[noreturn]] void fail_input(const std::string& who, const std::string& what);
 
 }  // namespace cagd

@@ -1,12 +1,13 @@
 #pragma once
-// A parallel loop: body(k) for k in [0, count) on `threads` workers (the calling thread is one of
-// them), each taking the next unclaimed index in increasing order (dynamic scheduling, so a few
-// long bodies do not leave a worker idle). Results are deterministic when body(k) writes only what
-// belongs to index k and depends on nothing another index writes. progress(done, count) is called
-// from the workers now and then (every 256 and at the end; may be empty). If body throws, the
-// workers still run every index below the lowest failed one (and skip those above it); after all
-// have joined, the exception of the lowest failed index is rethrown: the one a serial loop would
-// have thrown, whatever the thread count.
+/// @file
+/// A parallel loop: body(k) for k in [0, count) on `threads` workers (the calling thread is one of
+/// them), each taking the next unclaimed index in increasing order (dynamic scheduling, so a few
+/// long bodies do not leave a worker idle). Results are deterministic when body(k) writes only what
+/// belongs to index k and depends on nothing another index writes. progress(done, count) is called
+/// from the workers now and then (every 256 and at the end; may be empty). If body throws, the
+/// workers still run every index below the lowest failed one (and skip those above it); after all
+/// have joined, the exception of the lowest failed index is rethrown: the one a serial loop would
+/// have thrown, whatever the thread count.
 #include <algorithm>
 #include <atomic>
 #include <exception>
@@ -17,10 +18,13 @@
 
 namespace cagd {
 
-// The hardware's thread count (at least 1): the default for the callers' `threads`.
+/// The hardware's thread count (at least 1): the default for the callers' `threads`.
 inline int hardware_threads() { return static_cast<int>(std::max(1u, std::thread::hardware_concurrency())); }
 
 template <class Body>
+/// Runs body(k) for k = 0..count−1 on `threads` threads (at most count), each k once; an exception
+/// thrown by body stops the others from starting new indices and the one of the lowest failing index
+/// is rethrown here. progress(done, count) is called every 256 indices and at the end.
 void parallel_for(long count, int threads, const Body& body, const std::function<void(long, long)>& progress = {}) {
     threads = static_cast<int>(std::clamp<long>(threads, 1, std::max(count, 1L)));
     std::atomic<long> next{0}, done{0}, error_index{count};

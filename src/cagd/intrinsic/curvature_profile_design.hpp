@@ -1,49 +1,50 @@
 #pragma once
-// Composite interpolants designed through their curvature profile (curvature_profile, sections
-// 2–4, eq 2–6): Kuroda, Higashi, Saito, Watanabe.
-//
-// Unknowns (eq 2): u = (S_0..S_{l−1}, B_0..B_q) — the independent segment lengths and the de Boor
-// ordinates of the tangent angle ψ(s) (tangent_angle_spline.hpp).
-// Equations f(u) = 0 (eq 3–5), in this order:
-//   interpolation (eq 3), 2n rows: span i, Σ_{segments j of span i} Δw_j ∫_0^1 (cos ψ_j, sin ψ_j) dt
-//     − (Δx_i, Δy_i) (open: n + 1 points; closed: n points and the closing span P_{n−1} → P_0);
-//   shapes (eq 4, "reduce the degree of a segment"), on the Bézier ordinates b_{j,r} of ψ_j:
-//     line   κ ≡ 0        b_r − b_0 = 0, r = 1..p                        (p rows)
-//     arc    κ constant   b_{r+1} − 2b_r + b_{r−1} = 0, r = 1..p−1        (p − 1 rows)
-//     linear_curvature    b_3 − 3b_2 + 3b_1 − b_0 = 0 (p = 3: a clothoid segment)     (1 row)
-//   conditions (eq 4): tangent angle ψ(w_g) = θ; curvature κ(w_g) = c (one-sided where κ may jump);
-//     curvature radius: κ(w_g) = 1/R; a segment length Δw_j = d (fixes a free split of a span);
-//   closed curves (section 5): ψ(L) − ψ(0) = 2π·turns and κ(L) = κ(0).
-// With m + 1 equations and N = l + q + 1 unknowns, Newton's method (eq 6) u ← u − J⁺ f(u); the
-// paper uses J⁻¹ and, when m < l + q, the Moore–Penrose inverse J⁺: we always take J⁺ (Eigen's
-// CompleteOrthogonalDecomposition, rank threshold 1e−10 relative), which equals J⁻¹ for a regular
-// square J, gives the minimum-norm step for fewer equations, and is also what a square but
-// rank-deficient system needs (Fig. 3's is: a redundant equation and a free direction). NewtonStep::
-// sparse_lu solves square systems with Eigen's SparseLU instead (O(n) per iteration, banded J).
-// Starting values (section 4): the chord-length parametric cubic C2 interpolant — span arc lengths
-// split evenly among a span's segments, and each B_i the C2 curve's tangent angle at its Greville
-// abscissa (unwrapped).
-//
-// Jacobian: analytic in the integrals (∂/∂b_{j,r} of Δw_j ∫cos ψ_j = −Δw_j ∫ sin ψ_j B^p_r, and
-// ∂/∂Δw_j = ∫ cos ψ_j), chained with the exact derivatives of the Bézier ordinates with respect to
-// the de Boor ordinates and the local knots (the blossoming recurrence differentiated in forward mode
-// with ceres::Jet). Sparse: a row touches only the ≤ 2p − 1 segments around it. Tested against central
-// differences.
-// Positivity: a step that would shrink a length below a fifth of its value is halved until it does
-// not (recorded as the damping of the iteration); the paper's iteration is the undamped one.
-//
-// Outcomes (returned, never thrown): ok when ‖f‖∞ ≤ tolerance·max(1, largest chord); no_solution
-// when the iteration settles (step < 1e−13·(1 + ‖u‖)) on a least-squares point with ‖f‖∞ above
-// that — the conditions are inconsistent (e.g. an arc span no arc with the given tangents joins);
-// no_convergence when max_iterations pass, or when an iterate diverges: neighbouring de Boor
-// ordinates B_i, B_{i+1} more than kMaxOrdinateTurning = 1000 rad apart (160 turns; the integrals
-// of eq 3 would cost O(turning) per segment — found by fuzzing: a closed 6-point hairpin spent
-// seconds on 50 such iterations). The message says what was tried, the residual, the rank, and the
-// worst equation.
-// Preconditions (InvalidInput): ≥ 2 points (closed: ≥ 3), finite, no coincident consecutive
-// points (closed: last ≠ first); the layout's span count n matches the points; one shape per
-// segment; linear_curvature only for p = 3; conditions name existing breakpoints and finite values
-// (radius ≠ 0, length > 0); start vector of the right size with positive lengths.
+/// @file
+/// Composite interpolants designed through their curvature profile (curvature_profile, sections
+/// 2–4, eq 2–6): Kuroda, Higashi, Saito, Watanabe.
+///
+/// Unknowns (eq 2): u = (S_0..S_{l−1}, B_0..B_q) — the independent segment lengths and the de Boor
+/// ordinates of the tangent angle ψ(s) (tangent_angle_spline.hpp).
+/// Equations f(u) = 0 (eq 3–5), in this order:
+///   interpolation (eq 3), 2n rows: span i, Σ_{segments j of span i} Δw_j ∫_0^1 (cos ψ_j, sin ψ_j) dt
+///     − (Δx_i, Δy_i) (open: n + 1 points; closed: n points and the closing span P_{n−1} → P_0);
+///   shapes (eq 4, "reduce the degree of a segment"), on the Bézier ordinates b_{j,r} of ψ_j:
+///     line   κ ≡ 0        b_r − b_0 = 0, r = 1..p                        (p rows)
+///     arc    κ constant   b_{r+1} − 2b_r + b_{r−1} = 0, r = 1..p−1        (p − 1 rows)
+///     linear_curvature    b_3 − 3b_2 + 3b_1 − b_0 = 0 (p = 3: a clothoid segment)     (1 row)
+///   conditions (eq 4): tangent angle ψ(w_g) = θ; curvature κ(w_g) = c (one-sided where κ may jump);
+///     curvature radius: κ(w_g) = 1/R; a segment length Δw_j = d (fixes a free split of a span);
+///   closed curves (section 5): ψ(L) − ψ(0) = 2π·turns and κ(L) = κ(0).
+/// With m + 1 equations and N = l + q + 1 unknowns, Newton's method (eq 6) u ← u − J⁺ f(u); the
+/// paper uses J⁻¹ and, when m < l + q, the Moore–Penrose inverse J⁺: we always take J⁺ (Eigen's
+/// CompleteOrthogonalDecomposition, rank threshold 1e−10 relative), which equals J⁻¹ for a regular
+/// square J, gives the minimum-norm step for fewer equations, and is also what a square but
+/// rank-deficient system needs (Fig. 3's is: a redundant equation and a free direction). NewtonStep::
+/// sparse_lu solves square systems with Eigen's SparseLU instead (O(n) per iteration, banded J).
+/// Starting values (section 4): the chord-length parametric cubic C2 interpolant — span arc lengths
+/// split evenly among a span's segments, and each B_i the C2 curve's tangent angle at its Greville
+/// abscissa (unwrapped).
+///
+/// Jacobian: analytic in the integrals (∂/∂b_{j,r} of Δw_j ∫cos ψ_j = −Δw_j ∫ sin ψ_j B^p_r, and
+/// ∂/∂Δw_j = ∫ cos ψ_j), chained with the exact derivatives of the Bézier ordinates with respect to
+/// the de Boor ordinates and the local knots (the blossoming recurrence differentiated in forward mode
+/// with ceres::Jet). Sparse: a row touches only the ≤ 2p − 1 segments around it. Tested against central
+/// differences.
+/// Positivity: a step that would shrink a length below a fifth of its value is halved until it does
+/// not (recorded as the damping of the iteration); the paper's iteration is the undamped one.
+///
+/// Outcomes (returned, never thrown): ok when ‖f‖∞ ≤ tolerance·max(1, largest chord); no_solution
+/// when the iteration settles (step < 1e−13·(1 + ‖u‖)) on a least-squares point with ‖f‖∞ above
+/// that — the conditions are inconsistent (e.g. an arc span no arc with the given tangents joins);
+/// no_convergence when max_iterations pass, or when an iterate diverges: neighbouring de Boor
+/// ordinates B_i, B_{i+1} more than kMaxOrdinateTurning = 1000 rad apart (160 turns; the integrals
+/// of eq 3 would cost O(turning) per segment — found by fuzzing: a closed 6-point hairpin spent
+/// seconds on 50 such iterations). The message says what was tried, the residual, the rank, and the
+/// worst equation.
+/// Preconditions (InvalidInput): ≥ 2 points (closed: ≥ 3), finite, no coincident consecutive
+/// points (closed: last ≠ first); the layout's span count n matches the points; one shape per
+/// segment; linear_curvature only for p = 3; conditions name existing breakpoints and finite values
+/// (radius ≠ 0, length > 0); start vector of the right size with positive lengths.
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
 #include <optional>
@@ -57,92 +58,110 @@
 
 namespace cagd::intrinsic {
 
+/// The shape of a segment of ψ: free, a line (κ ≡ 0), an arc (κ constant) or a clothoid (κ linear, degree 3).
 enum class SegmentShape { free, line, arc, linear_curvature };
+/// "free", "line", "arc" or "clothoid".
 const char* to_string(SegmentShape shape);
 
+/// One prescribed condition of eq (4): tangent angle, curvature or its radius at a breakpoint, or a segment's length.
 struct DesignCondition {
-    enum class Kind { tangent_angle, curvature, curvature_radius, segment_length } kind;
-    int index;               // breakpoint g in 0..k (segment j in 0..k−1 for segment_length)
-    double value;            // θ (radians), κ, R, or Δw_j
-    bool from_left = false;  // curvature: the segment ending at w_g (else the one starting there)
+    /// What is prescribed: ψ, κ or R = 1/κ at a breakpoint, or a segment's length.
+    enum class Kind { tangent_angle, curvature, curvature_radius, segment_length };
+    Kind kind;               ///< what is prescribed
+    int index;               ///< breakpoint g in 0..k (segment j in 0..k−1 for segment_length)
+    double value;            ///< θ (radians), κ, R, or Δw_j
+    bool from_left = false;  ///< curvature: the segment ending at w_g (else the one starting there)
 };
 
+/// The design problem: points, the knot layout of ψ, the segments' shapes and the conditions.
 struct CurvatureProfileProblem {
-    PointList points;                  // open: n + 1 rows; closed: n rows (the closing span added)
-    KnotLayout layout;                 // n spans
-    std::vector<SegmentShape> shapes;  // one per segment
-    std::vector<DesignCondition> conditions;
-    bool closed = false;
-    int turns = 0;  // closed: ψ(L) − ψ(0) = 2π·turns; 0 = the sign of the polygon's signed area
+    PointList points;                  ///< open: n + 1 rows; closed: n rows (the closing span added)
+    KnotLayout layout;                 ///< n spans
+    std::vector<SegmentShape> shapes;  ///< one per segment
+    std::vector<DesignCondition> conditions;  ///< the prescribed conditions (eq 4)
+    bool closed = false;  ///< a closed curve (section 5)
+    int turns = 0;  ///< closed: ψ(L) − ψ(0) = 2π·turns; 0 = the sign of the polygon's signed area
 };
 
-// "line,free,arc,…" (one shape per span; also "clothoid" = linear_curvature) → shapes.
+/// "line,free,arc,…" (one shape per span; also "clothoid" = linear_curvature) → shapes.
 std::vector<SegmentShape> parse_span_shapes(const std::string& text);
-// One shape per segment: each span's segments take the span's shape.
+/// One shape per segment: each span's segments take the span's shape.
 std::vector<SegmentShape> segment_shapes(const KnotLayout& layout, const std::vector<SegmentShape>& span_shapes);
-// The layout `cagd interpolate --method curvature-profile` uses: degree 2 (κ piecewise linear, as
-// Figs. 2–3), one segment per span, a double knot (G1: κ may jump) where a line or an arc meets
-// another span and a simple knot (G2) between free spans.
+/// The layout `cagd interpolate --method curvature-profile` uses: degree 2 (κ piecewise linear, as
+/// Figs. 2–3), one segment per span, a double knot (G1: κ may jump) where a line or an arc meets
+/// another span and a simple knot (G2) between free spans.
 KnotLayout span_layout(const std::vector<SegmentShape>& span_shapes);
 
-// Throws InvalidInput (naming `who`) unless the problem meets the preconditions above.
+/// Throws InvalidInput (naming `who`) unless the problem meets the preconditions above.
 void require_valid_problem(const CurvatureProfileProblem& problem, const std::string& who);
 
-// turns if set, else +1 for a counter-clockwise polygon (signed area ≥ 0) and −1 otherwise.
+/// turns if set, else +1 for a counter-clockwise polygon (signed area ≥ 0) and −1 otherwise.
 int closing_turns(const CurvatureProfileProblem& problem);
 
-int design_unknowns(const CurvatureProfileProblem& problem);   // N = l + q + 1
-int design_equations(const CurvatureProfileProblem& problem);  // m + 1
-// One label per equation ("interpolation x, span 3", "line, segment 2, b2 − b0", …).
+int design_unknowns(const CurvatureProfileProblem& problem);   ///< N = l + q + 1
+int design_equations(const CurvatureProfileProblem& problem);  ///< m + 1
+/// One label per equation ("interpolation x, span 3", "line, segment 2, b2 − b0", …).
 std::vector<std::string> design_equation_labels(const CurvatureProfileProblem& problem);
 
+/// f(u) and its sparse Jacobian.
 struct DesignSystem {
-    Eigen::VectorXd f;
-    Eigen::SparseMatrix<double> jacobian;  // empty unless asked for
+    Eigen::VectorXd f;  ///< f(u), m + 1 values, in the order above
+    Eigen::SparseMatrix<double> jacobian;  ///< empty unless asked for
 };
+/// f(u) (and J(u) with `with_jacobian`) at the unknowns u.
 DesignSystem design_system(const CurvatureProfileProblem& problem, const Eigen::VectorXd& u, bool with_jacobian = true);
 
-// The starting vector from the parametric cubic C2 interpolant.
+/// The starting vector from the parametric cubic C2 interpolant.
 Eigen::VectorXd c2_start(const CurvatureProfileProblem& problem);
 
+/// An iterate whose neighbouring de Boor ordinates differ by more than this (radians) has diverged.
 inline constexpr double kMaxOrdinateTurning = 1000.0;
+/// The Newton step: J⁺ f (Moore–Penrose) or the sparse LU solve of a square system.
 enum class NewtonStep { pseudo_inverse, sparse_lu };
+/// Options of the Newton iteration.
 struct NewtonOptions {
-    NewtonStep step = NewtonStep::pseudo_inverse;
-    int max_iterations = 50;
-    double tolerance = 1e-12;
+    NewtonStep step = NewtonStep::pseudo_inverse;  ///< the step
+    int max_iterations = 50;  ///< iterations before no_convergence
+    double tolerance = 1e-12;  ///< ‖f‖∞ ≤ tolerance·max(1, largest chord) is converged
 };
+/// One Newton iteration, as the history records it.
 struct NewtonRecord {
-    int iteration;    // 0 = the start
-    double residual;  // ‖f(u)‖∞ before the step
-    double step;      // ‖Δu‖∞ taken (0 for the final record)
-    double damping;   // 1 = the full Newton step
-    int rank;         // of J (−1 for the sparse step)
+    int iteration;    ///< 0 = the start
+    double residual;  ///< ‖f(u)‖∞ before the step
+    double step;      ///< ‖Δu‖∞ taken (0 for the final record)
+    double damping;   ///< 1 = the full Newton step
+    int rank;         ///< of J (−1 for the sparse step)
 };
+/// The result of the design: the outcome, the unknowns, the history and the curve when ok.
 struct CurvatureProfileSolution {
-    Outcome outcome;
-    Eigen::VectorXd u;
-    std::vector<NewtonRecord> history;
-    int equations = 0, unknowns = 0, rank = -1;
-    std::optional<IntrinsicCurve> curve;  // present when outcome.ok()
+    Outcome outcome;  ///< ok, no_solution or no_convergence (see above), with a message
+    Eigen::VectorXd u;  ///< the last iterate
+    std::vector<NewtonRecord> history;  ///< one record per iteration
+    int equations = 0;  ///< m + 1
+    int unknowns = 0;   ///< N
+    int rank = -1;      ///< of the last Jacobian (−1: sparse LU steps)
+    std::optional<IntrinsicCurve> curve;  ///< present when outcome.ok()
 
-    std::vector<double> segment_lengths() const;  // Δw_j of the final iterate
+    std::vector<double> segment_lengths() const;  ///< Δw_j of the final iterate
 };
 
+/// Newton (eq 6) from the given start.
 CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& problem, const Eigen::VectorXd& start, const NewtonOptions& options = {});
+/// Newton (eq 6) from c2_start.
 CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& problem, const NewtonOptions& options = {});
 
-// The clothoid-spline defaults shared by `cagd interpolate` and compare/: natural ends (κ = 0 at an
-// open end whose segment is free; lines and arcs already fix their curvature), appended to
-// problem.conditions; and the solve that picks the step — sparse LU for square systems of more than
-// 200 unknowns (O(n) per iteration), the Moore–Penrose step otherwise or when the LU iteration
-// fails (a singular or unconverged iteration) on at most 2000 unknowns. Above 2000 unknowns a failed
-// LU iteration is returned as it is: the dense step would need n² doubles (10^5 points: 80 GB).
+/// The clothoid-spline defaults shared by `cagd interpolate` and compare/: natural ends (κ = 0 at an
+/// open end whose segment is free; lines and arcs already fix their curvature), appended to
+/// problem.conditions; and the solve that picks the step — sparse LU for square systems of more than
+/// 200 unknowns (O(n) per iteration), the Moore–Penrose step otherwise or when the LU iteration
+/// fails (a singular or unconverged iteration) on at most 2000 unknowns. Above 2000 unknowns a failed
+/// LU iteration is returned as it is: the dense step would need n² doubles (10^5 points: 80 GB).
 void add_natural_open_ends(CurvatureProfileProblem& problem);
+/// The solve of the defaults above (the step chosen by size).
 CurvatureProfileSolution solve_curvature_profile_auto(const CurvatureProfileProblem& problem);
 
-// The second solver: Ceres Levenberg–Marquardt on the same f, with its own central-difference
-// Jacobian (DynamicNumericDiffCostFunction) and lengths bounded below — independent of ours.
+/// The second solver: Ceres Levenberg–Marquardt on the same f, with its own central-difference
+/// Jacobian (DynamicNumericDiffCostFunction) and lengths bounded below — independent of ours.
 CurvatureProfileSolution solve_curvature_profile_levenberg_marquardt(const CurvatureProfileProblem& problem, const Eigen::VectorXd& start);
 
 }  // namespace cagd::intrinsic

@@ -1,11 +1,12 @@
 #pragma once
-// The plane curve of a tangent-angle spline (curvature_profile eq 1):
-//   r(s) = r_0 + ∫_0^s (cos ψ(σ), sin ψ(σ)) dσ,  0 ≤ s ≤ L,
-// parametrised by arc length. The breakpoint positions r(w_g) are accumulated segment by segment
-// with direction_integrals (eq 3's integrals); r(s) inside a segment adds the partial integral.
-// Jets (order ≤ 4) with e = (cos ψ, sin ψ), n = (−sin ψ, cos ψ):
-//   r' = e, r'' = ψ' n, r''' = ψ'' n − ψ'² e, r'''' = (ψ''' − ψ'³) n − 3ψ'ψ'' e.
-// Preconditions (InvalidInput): start finite; 0 ≤ s ≤ L; 0 ≤ order ≤ 4.
+/// @file
+/// The plane curve of a tangent-angle spline (curvature_profile eq 1):
+///   r(s) = r_0 + ∫_0^s (cos ψ(σ), sin ψ(σ)) dσ,  0 ≤ s ≤ L,
+/// parametrised by arc length. The breakpoint positions r(w_g) are accumulated segment by segment
+/// with direction_integrals (eq 3's integrals); r(s) inside a segment adds the partial integral.
+/// Jets (order ≤ 4) with e = (cos ψ, sin ψ), n = (−sin ψ, cos ψ):
+///   r' = e, r'' = ψ' n, r''' = ψ'' n − ψ'² e, r'''' = (ψ''' − ψ'³) n − 3ψ'ψ'' e.
+/// Preconditions (InvalidInput): start finite; 0 ≤ s ≤ L; 0 ≤ order ≤ 4.
 #include <Eigen/Dense>
 #include <vector>
 
@@ -14,13 +15,17 @@
 
 namespace cagd::intrinsic {
 
+/// The plane curve r(s) = start + ∫_0^s (cos ψ, sin ψ) ds of a tangent-angle spline, in arc length.
 class IntrinsicCurve : public Curve {
 public:
+    /// The curve starting at `start` with tangent angle ψ (positions at the breakpoints integrated once).
     IntrinsicCurve(Eigen::Vector2d start, TangentAngleSpline psi);
 
+    /// ψ.
     const TangentAngleSpline& tangent_angle() const { return psi_; }
-    // (k + 1) × 2: r(w_0), …, r(w_k).
+    /// (k + 1) × 2: r(w_0), …, r(w_k).
     const Eigen::MatrixXd& breakpoint_points() const { return points_; }
+    /// The length L.
     double length() const { return psi_.length(); }
 
     int dimension() const override { return 2; }
@@ -28,10 +33,10 @@ public:
     double t_max() const override { return psi_.length(); }
     Eigen::MatrixXd jet(double s, int order) const override;
     Eigen::MatrixXd jet_from_left(double s, int order) const override;
-    // r', r'', … from ψ alone (e = (cos ψ, sin ψ), n = e rotated by π/2; r' = e, r'' = ψ' n, …):
-    // no position quadrature, so speed and curvature integrals cost a B-spline evaluation each.
+    /// r', r'', … from ψ alone (e = (cos ψ, sin ψ), n = e rotated by π/2; r' = e, r'' = ψ' n, …):
+    /// no position quadrature, so speed and curvature integrals cost a B-spline evaluation each.
     Eigen::MatrixXd derivatives(double s, int order) const override;
-    // The same two without allocating (the measures' hot path), bit for bit as jet and derivatives.
+    /// The same two without allocating (the measures' hot path), bit for bit as jet and derivatives.
     void jet_into(double s, int order, JetMatrix& out) const override;
     void derivatives_into(double s, int order, JetMatrix& out) const override;
     std::vector<double> breakpoints() const override { return psi_.breakpoints(); }
@@ -42,13 +47,18 @@ private:
     Eigen::MatrixXd points_;
 };
 
-// The curvature profile for plots and tables: per segment j, `per_segment` + 1 equally spaced arc
-// lengths from w_j to w_{j+1} (both ends, so a κ jump at a G1 join shows as a vertical step), with
-// position, ψ and κ of segment j's polynomial (one-sided at its ends). per_segment ≥ 1.
+/// The curvature profile for plots and tables: per segment j, `per_segment` + 1 equally spaced arc
+/// lengths from w_j to w_{j+1} (both ends, so a κ jump at a G1 join shows as a vertical step), with
+/// position, ψ and κ of segment j's polynomial (one-sided at its ends). per_segment ≥ 1.
 struct ProfileSample {
-    double s, x, y, psi, kappa;
-    int segment;
+    double s;      ///< arc length
+    double x;      ///< position x
+    double y;      ///< position y
+    double psi;    ///< tangent angle ψ
+    double kappa;  ///< curvature κ = ψ'
+    int segment;   ///< the segment j sampled
 };
+/// The samples described above.
 std::vector<ProfileSample> curvature_profile_samples(const IntrinsicCurve& curve, int per_segment);
 
 }  // namespace cagd::intrinsic

@@ -1,21 +1,22 @@
 #pragma once
-// Typed parameters of an interpolation method (the registry, methods/method_registry.hpp).
-//
-// A parameter is declared once, with its type, default, range or choices and help text; the
-// command line shows it as `--NAME` and passes what the user typed as text; the tests and
-// `cagd compare` pass preset values the same way. parse_parameter_values checks every value
-// against its declaration and gives the builder typed values:
-//
-//   integer   a whole number in [lower, upper]                 ParameterValues::integer
-//   real      a finite number in [lower, upper]                ParameterValues::real
-//   choice    one of `choices`                                 ParameterValues::text
-//   text      free text the builder parses itself (a list)      ParameterValues::text
-//   vector    comma-separated finite numbers, e.g. "1,0,0"      ParameterValues::vector
-//
-// An empty default means "absent unless given" (the help says what absence means); given()
-// tells a value the user set from one taken from the default.
-// Bad input (InvalidInput naming the method, the option and the value): a parameter the method
-// does not declare, a value of the wrong type, out of range, or not among the choices.
+/// @file
+/// Typed parameters of an interpolation method (the registry, methods/method_registry.hpp).
+///
+/// A parameter is declared once, with its type, default, range or choices and help text; the
+/// command line shows it as `--NAME` and passes what the user typed as text; the tests and
+/// `cagd compare` pass preset values the same way. parse_parameter_values checks every value
+/// against its declaration and gives the builder typed values:
+///
+///   integer   a whole number in [lower, upper]                 ParameterValues::integer
+///   real      a finite number in [lower, upper]                ParameterValues::real
+///   choice    one of `choices`                                 ParameterValues::text
+///   text      free text the builder parses itself (a list)      ParameterValues::text
+///   vector    comma-separated finite numbers, e.g. "1,0,0"      ParameterValues::vector
+///
+/// An empty default means "absent unless given" (the help says what absence means); given()
+/// tells a value the user set from one taken from the default.
+/// Bad input (InvalidInput naming the method, the option and the value): a parameter the method
+/// does not declare, a value of the wrong type, out of range, or not among the choices.
 #include <Eigen/Dense>
 #include <limits>
 #include <map>
@@ -24,32 +25,39 @@
 
 namespace cagd::methods {
 
+/// The type of a parameter's value (see above).
 enum class ParameterType { integer, real, choice, text, vector };
+/// "integer", "real", "choice", "text" or "vector".
 const char* to_string(ParameterType t);
 
+/// One declared parameter of a method.
 struct Parameter {
-    std::string name{};  // the option, without "--"
-    ParameterType type = ParameterType::text;
-    std::string default_text{};                               // as a user would type it; empty: absent unless given
-    double lower = -std::numeric_limits<double>::infinity();  // integer, real: inclusive range
-    double upper = std::numeric_limits<double>::infinity();
-    std::vector<std::string> choices{};  // choice
-    std::string help{};
+    std::string name{};  ///< the option, without "--"
+    ParameterType type = ParameterType::text;  ///< how its text is checked and read
+    std::string default_text{};                               ///< as a user would type it; empty: absent unless given
+    double lower = -std::numeric_limits<double>::infinity();  ///< integer, real: inclusive range
+    double upper = std::numeric_limits<double>::infinity();  ///< integer, real: inclusive upper bound
+    std::vector<std::string> choices{};  ///< choice
+    std::string help{};  ///< one line for help texts
 
-    // "integer in [0, 1000]", "one of none | exact | approx", … for help texts and messages.
+    /// "integer in [0, 1000]", "one of none | exact | approx", … for help texts and messages.
     std::string domain() const;
 };
 
-// Text values as typed, by parameter name.
+/// Text values as typed, by parameter name.
 using ParameterText = std::map<std::string, std::string>;
 
+/// A method's parameter values, checked against their declarations (parse_parameter_values).
 class ParameterValues {
 public:
-    bool has(const std::string& name) const;    // given, or has a default
-    bool given(const std::string& name) const;  // given explicitly
+    bool has(const std::string& name) const;    ///< given, or has a default
+    bool given(const std::string& name) const;  ///< given explicitly
+    /// An integer parameter's value (given or default).
     int integer(const std::string& name) const;
+    /// A real parameter's value (given or default).
     double real(const std::string& name) const;
-    const std::string& text(const std::string& name) const;  // choice or text; "" when absent
+    const std::string& text(const std::string& name) const;  ///< choice or text; "" when absent
+    /// A vector parameter's value.
     const Eigen::VectorXd& vector(const std::string& name) const;
 
 private:
@@ -65,7 +73,7 @@ private:
     friend ParameterValues parse_parameter_values(const std::string&, const std::vector<Parameter>&, const ParameterText&);
 };
 
-// Checks `given` against the declarations of method `method` and fills in the defaults.
+/// Checks `given` against the declarations of method `method` and fills in the defaults.
 ParameterValues parse_parameter_values(const std::string& method, const std::vector<Parameter>& parameters, const ParameterText& given);
 
 }  // namespace cagd::methods

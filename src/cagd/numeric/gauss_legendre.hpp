@@ -1,12 +1,13 @@
 #pragma once
-// Gauss–Legendre quadrature with n nodes on [−1, 1], mapped to [a, b].
-//
-// Nodes and weights by the Golub–Welsch method: the nodes are the eigenvalues of the
-// symmetric tridiagonal Jacobi matrix with off-diagonal β_k = k / sqrt(4k² − 1),
-// k = 1..n−1; weight_i = 2·v_{0,i}² for the normalised eigenvector v_i. Eigen's
-// SelfAdjointEigenSolver does the eigen-decomposition; each node is then polished by
-// one Newton step on P_n (three-term recurrence) so the nodes are accurate to ~1 ulp.
-// Exact for polynomials of degree ≤ 2n − 1. Precondition: 1 ≤ n ≤ 200.
+/// @file
+/// Gauss–Legendre quadrature with n nodes on [−1, 1], mapped to [a, b].
+///
+/// Nodes and weights by the Golub–Welsch method: the nodes are the eigenvalues of the
+/// symmetric tridiagonal Jacobi matrix with off-diagonal β_k = k / sqrt(4k² − 1),
+/// k = 1..n−1; weight_i = 2·v_{0,i}² for the normalised eigenvector v_i. Eigen's
+/// SelfAdjointEigenSolver does the eigen-decomposition; each node is then polished by
+/// one Newton step on P_n (three-term recurrence) so the nodes are accurate to ~1 ulp.
+/// Exact for polynomials of degree ≤ 2n − 1. Precondition: 1 ≤ n ≤ 200.
 #include <concepts>
 #include <cstddef>
 #include <functional>
@@ -16,18 +17,24 @@
 
 namespace cagd::numeric {
 
+/// The n-point Gauss–Legendre rule (nodes and weights on [−1, 1]).
 class GaussLegendreRule {
 public:
+    /// The rule with n nodes, 1 ≤ n ≤ 200 (InvalidInput otherwise).
     explicit GaussLegendreRule(int n);
+    /// n, the number of nodes.
     int size() const { return static_cast<int>(nodes_.size()); }
+    /// The nodes, ascending, in (−1, 1).
     const std::vector<double>& nodes() const { return nodes_; }  // ascending, in (−1, 1)
+    /// The weights, matching the nodes; they sum to 2.
     const std::vector<double>& weights() const { return weights_; }
+    /// ∫_a^b f ≈ ((b − a)/2) Σ w_i f(x(ξ_i)).
     double integrate(const std::function<double(double)>& f, double a, double b) const;
-    // Sum of integrals over consecutive intervals [breaks[k], breaks[k+1]].
+    /// Sum of integrals over consecutive intervals [breaks[k], breaks[k+1]].
     double integrate_piecewise(const std::function<double(double)>& f, const std::vector<double>& breaks) const;
-    // Two integrands from one evaluation per node (f returns both values), each summed exactly as
-    // integrate_piecewise sums it alone. A template, so the integrand is called directly (no
-    // std::function per node: the fairness measures call it for every piece of a curve).
+    /// Two integrands from one evaluation per node (f returns both values), each summed exactly as
+    /// integrate_piecewise sums it alone. A template, so the integrand is called directly (no
+    /// std::function per node: the fairness measures call it for every piece of a curve).
     template <class F>
     requires std::same_as<std::invoke_result_t<const F&, double>, std::pair<double, double>> std::pair<double, double> integrate_piecewise(const F& f,
                                                                                                                                            const std::vector<double>& breaks)

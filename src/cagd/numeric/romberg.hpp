@@ -1,14 +1,15 @@
 #pragma once
-// Romberg integration: the reference quadrature the papers prescribe.
-//
-// Trapezoid sums T(h), h = (b−a)/2^k, extrapolated by Richardson's scheme
-// R(k, j) = R(k, j−1) + (R(k, j−1) − R(k−1, j−1)) / (4^j − 1).
-// The error estimate is |R(k, k) − R(k−1, k−1)|; the result is converged when that
-// estimate is ≤ max(rel_tol·|R(k, k)|, abs_tol) for two consecutive levels (a single
-// small difference can be a coincidence of the trapezoid samples).
-// Accuracy: O(h^{2k+2}) for integrands smooth on [a, b]; integrate piecewise smooth
-// functions piece by piece. Cost: 2^max_levels + 1 evaluations at most.
-// Not converging within max_levels is an Outcome, not an exception.
+/// @file
+/// Romberg integration: the reference quadrature the papers prescribe.
+///
+/// Trapezoid sums T(h), h = (b−a)/2^k, extrapolated by Richardson's scheme
+/// R(k, j) = R(k, j−1) + (R(k, j−1) − R(k−1, j−1)) / (4^j − 1).
+/// The error estimate is |R(k, k) − R(k−1, k−1)|; the result is converged when that
+/// estimate is ≤ max(rel_tol·|R(k, k)|, abs_tol) for two consecutive levels (a single
+/// small difference can be a coincidence of the trapezoid samples).
+/// Accuracy: O(h^{2k+2}) for integrands smooth on [a, b]; integrate piecewise smooth
+/// functions piece by piece. Cost: 2^max_levels + 1 evaluations at most.
+/// Not converging within max_levels is an Outcome, not an exception.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -21,36 +22,39 @@
 
 namespace cagd::numeric {
 
+/// What romberg returns: the integral, its error estimate, the work done and the outcome.
 struct RombergResult {
-    double value = 0.0;
-    double error_estimate = 0.0;  // |R(k,k) − R(k−1,k−1)| at the last level
-    int levels = 0;               // k reached
-    long evaluations = 0;
-    Outcome outcome;
+    double value = 0.0;  ///< the integral at the last level
+    double error_estimate = 0.0;  ///< |R(k,k) − R(k−1,k−1)| at the last level
+    int levels = 0;               ///< k reached
+    long evaluations = 0;  ///< integrand evaluations
+    Outcome outcome;  ///< ok, or no_convergence when max_levels did not meet the tolerances
 };
 
-// Preconditions: a, b finite; rel_tol > 0; abs_tol ≥ 0; 2 ≤ max_levels ≤ 30.
+/// Preconditions: a, b finite; rel_tol > 0; abs_tol ≥ 0; 2 ≤ max_levels ≤ 30.
 RombergResult romberg(const std::function<double(double)>& f, double a, double b, double rel_tol = 1e-12, double abs_tol = 0.0, int max_levels = 24);
 
-// The same scheme for N integrals sharing one integrand evaluation, f(t) → std::array<double, N>:
-// converged when every component meets the test above at two consecutive levels, with the
-// relative test taken against the trapezoid sum of |f_c| (QUADPACK's "resabs"), so that an
-// integral that cancels to ~0 — a gradient component at a minimum — still converges.
+/// The same scheme for N integrals sharing one integrand evaluation, f(t) → std::array<double, N>:
+/// converged when every component meets the test above at two consecutive levels, with the
+/// relative test taken against the trapezoid sum of |f_c| (QUADPACK's "resabs"), so that an
+/// integral that cancels to ~0 — a gradient component at a minimum — still converges.
 template <std::size_t N>
 struct RombergVectorResult {
-    std::array<double, N> value{}, error_estimate{};
-    int levels = 0;
-    long evaluations = 0;
-    Outcome outcome;
+    std::array<double, N> value{};           ///< the N integrals
+    std::array<double, N> error_estimate{};  ///< their error estimates (as for romberg)
+    int levels = 0;  ///< levels reached
+    long evaluations = 0;  ///< evaluations of the integrand (points, each giving all N values)
+    Outcome outcome;  ///< ok, or no_convergence
 };
 
-// The points of a level are handed to the integrand in batches of up to kRombergBatch:
-// fb(const double* t, std::size_t m, std::array<double, N>* out) fills out[0..m), so an integrand
-// can evaluate them together (vectorised); the sums still run point by point in order, so the
-// result is that of romberg_vector with the same integrand one point at a time.
+/// The points of a level are handed to the integrand in batches of up to kRombergBatch:
+/// fb(const double* t, std::size_t m, std::array<double, N>* out) fills out[0..m), so an integrand
+/// can evaluate them together (vectorised); the sums still run point by point in order, so the
+/// result is that of romberg_vector with the same integrand one point at a time.
 inline constexpr std::size_t kRombergBatch = 16;
 
 template <std::size_t N, class FB>
+/// N integrals of one batched integrand fb over [a, b] (see kRombergBatch).
 RombergVectorResult<N> romberg_vector_batched(const FB& fb, double a, double b, double rel_tol = 1e-12, double abs_tol = 0.0, int max_levels = 24) {
     using Row = std::vector<std::array<double, N>>;
     const std::string who = "cagd::numeric::romberg_vector";
@@ -119,7 +123,7 @@ RombergVectorResult<N> romberg_vector_batched(const FB& fb, double a, double b, 
     return r;
 }
 
-// The same with an integrand of one point, f(t) → std::array<double, N>.
+/// The same with an integrand of one point, f(t) → std::array<double, N>.
 template <std::size_t N, class F>
 RombergVectorResult<N> romberg_vector(const F& f, double a, double b, double rel_tol = 1e-12, double abs_tol = 0.0, int max_levels = 24) {
     return romberg_vector_batched<N>(

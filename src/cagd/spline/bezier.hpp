@@ -1,16 +1,17 @@
 #pragma once
-// Bézier curves r(t) = Σ_{j=0}^{p} B_{j,p}(s) b_j, s = (t − a)/(b − a), t ∈ [a, b].
-// Derivatives come from the forward differences of the control points (hodographs):
-//   r^(k)(t) = p!/(p−k)! (b − a)^{−k} Σ_j Δ^k b_j B_{j,p−k}(s).
-// Three evaluation methods, chosen at construction:
-//   de_casteljau  repeated convex combinations: stable for any degree, O(p²) per derivative order
-//                 (the default);
-//   bernstein     the basis values by core/bernstein_basis_values (O(p), stable for any degree:
-//                 for p in the hundreds or thousands, where O(p²) is slow);
-//   power_basis   the monomial coefficients a_k = C(p,k) Σ_j (−1)^{k−j} C(k,j) b_j and Horner —
-//                 the naive method, kept to show why it must not be used: the a_k grow like 2^p
-//                 and cancel, so its error grows exponentially with p (typical_curves Fig. 1).
-// Preconditions: at least one control point, finite a < b.
+/// @file
+/// Bézier curves r(t) = Σ_{j=0}^{p} B_{j,p}(s) b_j, s = (t − a)/(b − a), t ∈ [a, b].
+/// Derivatives come from the forward differences of the control points (hodographs):
+///   r^(k)(t) = p!/(p−k)! (b − a)^{−k} Σ_j Δ^k b_j B_{j,p−k}(s).
+/// Three evaluation methods, chosen at construction:
+///   de_casteljau  repeated convex combinations: stable for any degree, O(p²) per derivative order
+///                 (the default);
+///   bernstein     the basis values by core/bernstein_basis_values (O(p), stable for any degree:
+///                 for p in the hundreds or thousands, where O(p²) is slow);
+///   power_basis   the monomial coefficients a_k = C(p,k) Σ_j (−1)^{k−j} C(k,j) b_j and Horner —
+///                 the naive method, kept to show why it must not be used: the a_k grow like 2^p
+///                 and cancel, so its error grows exponentially with p (typical_curves Fig. 1).
+/// Preconditions: at least one control point, finite a < b.
 #include <Eigen/Dense>
 #include <vector>
 
@@ -18,13 +19,19 @@
 
 namespace cagd {
 
+/// How a Bézier curve is evaluated: de Casteljau (stable, O(n²)), stable Bernstein values (O(n) per point, any degree) or the power basis (fast, unstable at high degree).
 enum class BezierEvaluation { de_casteljau, bernstein, power_basis };
 
+/// A Bézier curve r(t) = Σ B_i^n((t − a)/(b − a)) P_i on [a, b].
 class BezierCurve : public Curve {
 public:
+    /// Control points P_0..P_n (one per row), parameter interval [a, b] (a < b) and evaluation method.
     explicit BezierCurve(Eigen::MatrixXd control_points, double a = 0.0, double b = 1.0, BezierEvaluation method = BezierEvaluation::de_casteljau);
+    /// n.
     int degree() const { return static_cast<int>(control_.rows()) - 1; }
+    /// P_0..P_n, one per row.
     const Eigen::MatrixXd& control_points() const { return control_; }
+    /// The evaluation method.
     BezierEvaluation evaluation() const { return method_; }
     int dimension() const override { return static_cast<int>(control_.cols()); }
     double t_min() const override { return a_; }
@@ -36,7 +43,7 @@ private:
     Eigen::MatrixXd control_;
     double a_, b_;
     BezierEvaluation method_;
-    Eigen::MatrixXd monomial_;  // power_basis only: row k = a_k
+    Eigen::MatrixXd monomial_;  ///< power_basis only: row k = a_k
 };
 
 }  // namespace cagd

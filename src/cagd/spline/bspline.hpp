@@ -1,24 +1,25 @@
 #pragma once
-// B-spline curves of any degree on any (uniform or non-uniform) knot vector.
-//
-//   r(t) = Σ_{i=0}^{n−1} N_{i,p}(t) d_i,   t ∈ [t_p, t_n],
-// with knots t_0 ≤ … ≤ t_{n+p} (n + p + 1 of them) and Cox–de Boor basis N_{i,p}.
-// Evaluation with derivatives: per non-empty span, the Taylor coefficients at its middle m_s,
-// c_k = r^(k)(m_s)/k! (basis-function derivatives by Piegl & Tiller, The NURBS Book, algorithm
-// A2.3, once per span, on the first evaluation: thread-safe), then Horner in h = t − m_s
-// (|h| ≤ half the span, which keeps the rounding at the ends small): O(p·order) per point. At a
-// knot itself A2.3 directly, as before: the ends reproduce their data points exactly and a
-// control point changes nothing beyond its support, bit for bit. (A2.3 at every point, as before 2026-11-24, cost 3–4 times as much; the
-// two agree to rounding, a few ε of the jet's terms.)
-// Knot insertion: Boehm's algorithm (exact, convex combinations). Degree elevation:
-// the elevated curve lies exactly in the spline space of degree p+1 whose knots are
-// the old ones with every multiplicity raised by one; its control points are found by
-// a least-squares fit to p+2 samples per span, which is exact up to rounding because the
-// old curve is in that space (QR; error ~ 10 ε·|d| for well-conditioned knots).
-// Bézier segments: per non-empty span, from the Taylor jet at the span start.
-//
-// Preconditions (InvalidInput otherwise): p ≥ 0; knots non-decreasing and finite;
-// control point count n = knots − p − 1 ≥ p + 1; t_p < t_n; no knot of multiplicity > p+1.
+/// @file
+/// B-spline curves of any degree on any (uniform or non-uniform) knot vector.
+///
+///   r(t) = Σ_{i=0}^{n−1} N_{i,p}(t) d_i,   t ∈ [t_p, t_n],
+/// with knots t_0 ≤ … ≤ t_{n+p} (n + p + 1 of them) and Cox–de Boor basis N_{i,p}.
+/// Evaluation with derivatives: per non-empty span, the Taylor coefficients at its middle m_s,
+/// c_k = r^(k)(m_s)/k! (basis-function derivatives by Piegl & Tiller, The NURBS Book, algorithm
+/// A2.3, once per span, on the first evaluation: thread-safe), then Horner in h = t − m_s
+/// (|h| ≤ half the span, which keeps the rounding at the ends small): O(p·order) per point. At a
+/// knot itself A2.3 directly, as before: the ends reproduce their data points exactly and a
+/// control point changes nothing beyond its support, bit for bit. (A2.3 at every point, as before 2026-11-24, cost 3–4 times as much; the
+/// two agree to rounding, a few ε of the jet's terms.)
+/// Knot insertion: Boehm's algorithm (exact, convex combinations). Degree elevation:
+/// the elevated curve lies exactly in the spline space of degree p+1 whose knots are
+/// the old ones with every multiplicity raised by one; its control points are found by
+/// a least-squares fit to p+2 samples per span, which is exact up to rounding because the
+/// old curve is in that space (QR; error ~ 10 ε·|d| for well-conditioned knots).
+/// Bézier segments: per non-empty span, from the Taylor jet at the span start.
+///
+/// Preconditions (InvalidInput otherwise): p ≥ 0; knots non-decreasing and finite;
+/// control point count n = knots − p − 1 ≥ p + 1; t_p < t_n; no knot of multiplicity > p+1.
 #include <Eigen/Dense>
 #include <memory>
 #include <mutex>
@@ -29,12 +30,17 @@
 
 namespace cagd {
 
+/// A B-spline curve of degree p on a knot vector (see above), evaluated through per-span Taylor coefficients.
 class BSplineCurve : public Curve {
 public:
+    /// Degree p, knots t_0..t_{n+p} and control points d_0..d_{n−1} (one per row); InvalidInput unless the preconditions above hold.
     BSplineCurve(int degree, std::vector<double> knots, Eigen::MatrixXd control_points);
 
+    /// p.
     int degree() const { return degree_; }
+    /// t_0..t_{n+p}.
     const std::vector<double>& knots() const { return knots_; }
+    /// d_0..d_{n−1}, one per row.
     const Eigen::MatrixXd& control_points() const { return control_; }
 
     int dimension() const override { return static_cast<int>(control_.cols()); }
@@ -42,16 +48,16 @@ public:
     double t_max() const override { return knots_[control_.rows()]; }
     Eigen::MatrixXd jet(double t, int order) const override;
     Eigen::MatrixXd jet_from_left(double t, int order) const override;
-    // Allocation-free (after the first evaluation builds the Taylor coefficients).
+    /// Allocation-free (after the first evaluation builds the Taylor coefficients).
     void jet_into(double t, int order, JetMatrix& out) const override;
     void derivatives_into(double t, int order, JetMatrix& out) const override;
     std::vector<double> breakpoints() const override;
 
-    // Index s with t_s ≤ t < t_{s+1}, p ≤ s ≤ n−1 (t = t_max: the last non-empty span).
+    /// Index s with t_s ≤ t < t_{s+1}, p ≤ s ≤ n−1 (t = t_max: the last non-empty span).
     int find_span(double t) const;
 
 private:
-    // A value built once on first use, from a const member (a copy builds its own).
+    /// A value built once on first use, from a const member (a copy builds its own).
     template <class T>
     struct OnceCache {
         std::unique_ptr<std::once_flag> once = std::make_unique<std::once_flag>();
@@ -66,14 +72,14 @@ private:
         OnceCache(OnceCache&&) noexcept = default;
         OnceCache& operator=(OnceCache&&) noexcept = default;
     };
-    // Equal buckets over [t_min, t_max), one per span: first[b] is the span holding the bucket's
-    // left end, where find_span starts its forward scan.
+    /// Equal buckets over [t_min, t_max), one per span: first[b] is the span holding the bucket's
+    /// left end, where find_span starts its forward scan.
     struct SpanBuckets {
         std::vector<int> first;
-        double per_unit = 0.0;  // buckets per unit of t
+        double per_unit = 0.0;  ///< buckets per unit of t
     };
     const SpanBuckets& span_buckets() const;
-    const double* taylor(int span) const;  // c_0 … c_p of `span`
+    const double* taylor(int span) const;  ///< c_0 … c_p of `span`
     double span_middle(int span) const;
     template <class Out>
     void taylor_jet(int span, double t, int order, Out& out) const;
@@ -81,24 +87,28 @@ private:
     int degree_;
     std::vector<double> knots_;
     Eigen::MatrixXd control_;
-    mutable OnceCache<std::vector<double>> taylor_;  // span s − p: (p + 1) × dimension, c_0 … c_p, row-major
+    mutable OnceCache<std::vector<double>> taylor_;  ///< span s − p: (p + 1) × dimension, c_0 … c_p, row-major
     mutable OnceCache<SpanBuckets> span_buckets_;
 };
 
-// Derivatives 0..order of the p+1 basis functions non-zero on span s at t:
-// result(k, j) = d^k N_{s−p+j, p}(t) / dt^k. (Piegl & Tiller A2.3.)
+/// Derivatives 0..order of the p+1 basis functions non-zero on span s at t:
+/// result(k, j) = d^k N_{s−p+j, p}(t) / dt^k. (Piegl & Tiller A2.3.)
 Eigen::MatrixXd basis_function_derivatives(int degree, const std::vector<double>& knots, int span, double t, int order);
-// The same into a matrix on the stack (degree ≤ 7, order ≤ 7; InvalidInput otherwise), bit for bit.
+/// The same into a matrix on the stack (degree ≤ 7, order ≤ 7; InvalidInput otherwise), bit for bit.
 using BasisDerivatives = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 8, 8>;
+/// basis_function_derivatives written into `ders` (order + 1 rows, p + 1 columns; p ≤ 7), without allocating.
 void basis_function_derivatives_into(int degree, const std::vector<double>& knots, int span, double t, int order, BasisDerivatives& ders);
 
-// One B-spline basis function of degree p given by its p+2 local knots
-// [κ_0, …, κ_{p+1}], or its derivative, at t; zero outside [κ_0, κ_{p+1}). Right-continuous,
-// except that t = κ_{p+1} is taken from the left (so closed supports evaluate symmetrically).
+/// One B-spline basis function of degree p given by its p+2 local knots
+/// [κ_0, …, κ_{p+1}], or its derivative, at t; zero outside [κ_0, κ_{p+1}). Right-continuous,
+/// except that t = κ_{p+1} is taken from the left (so closed supports evaluate symmetrically).
 double bspline_basis(int degree, const std::vector<double>& local_knots, double t, int derivative = 0);
 
+/// The same curve with the knot t inserted once (Boehm); t in [t_min, t_max].
 BSplineCurve insert_knot(const BSplineCurve& curve, double t);
+/// The same curve as a B-spline of degree p + 1 (every knot's multiplicity raised by one).
 BSplineCurve elevate_degree(const BSplineCurve& curve);
+/// The curve's polynomial pieces as Bézier curves, one per non-empty span, each on its span's interval.
 std::vector<BezierCurve> bezier_segments(const BSplineCurve& curve);
 
 }  // namespace cagd
