@@ -12,8 +12,11 @@
 #include "cagd/locality/locality_spline.hpp"
 #include "cagd/methods/method_registry.hpp"
 
+#include "../support/messages.hpp"
+
 using namespace cagd;
 using namespace cagd::methods;
+using cagd::test::invalid_input_message;
 
 namespace {
 
@@ -23,14 +26,6 @@ PointList wave(int n) {
     return p;
 }
 
-std::string message_of(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const InvalidInput& e) {
-        return e.what();
-    }
-    return "(no InvalidInput)";
-}
 
 }  // namespace
 
@@ -41,7 +36,7 @@ TEST(Methods, NamesAreUniqueAndFound) {
         EXPECT_EQ(&find_method(n), &find_method(find_method(n).name)) << n;
     }
     for (const Configuration& c : configurations()) EXPECT_TRUE(seen.insert(c.name).second || find_method(c.name).presets.empty()) << c.name;
-    const std::string m = message_of([] { find_method("cubic"); });
+    const std::string m = invalid_input_message([] { find_method("cubic"); });
     EXPECT_NE(m.find("unknown method 'cubic'"), std::string::npos) << m;
     EXPECT_NE(m.find("curvature-profile"), std::string::npos) << "the message lists the known names: " << m;
 }
@@ -159,7 +154,7 @@ TEST(Methods, ParametersAreCheckedAgainstTheirDeclarations) {
     EXPECT_EQ(g.vector("start-tangent"), Eigen::Vector2d(1, -2.5));
     // Each bad value is named with its option and what is allowed.
     const auto bad = [&](const ParameterText& t, const std::string& expected) {
-        const std::string m = message_of([&] { parse_parameter_values(s.name, s.parameters, t); });
+        const std::string m = invalid_input_message([&] { parse_parameter_values(s.name, s.parameters, t); });
         EXPECT_NE(m.find(expected), std::string::npos) << m;
     };
     bad({{"m", "-1"}}, "--m '-1': out of range; allowed: integer in [0, 1000]");
@@ -170,21 +165,21 @@ TEST(Methods, ParametersAreCheckedAgainstTheirDeclarations) {
     bad({{"start-tangent", "1,x"}}, "'x' is not a number");
     bad({{"scale", "unit"}}, "--scale is not a parameter of s-spline");
     const Method& boost = find_method("boost-pchip");
-    const std::string none = message_of([&] { parse_parameter_values(boost.name, boost.parameters, {{"m", "1"}}); });
+    const std::string none = invalid_input_message([&] { parse_parameter_values(boost.name, boost.parameters, {{"m", "1"}}); });
     EXPECT_NE(none.find("it has none"), std::string::npos) << none;
 }
 
 TEST(Methods, BuildersCheckCombinationsOfParameters) {
     const PointList p = wave(5);
-    std::string m = message_of([&] { interpolate("s-spline", p, false, {{"end", "tangent"}}); });
+    std::string m = invalid_input_message([&] { interpolate("s-spline", p, false, {{"end", "tangent"}}); });
     EXPECT_NE(m.find("--end tangent needs --start-tangent and --end-tangent"), std::string::npos) << m;
-    m = message_of([&] { interpolate("hosaka", p, false, {{"start-tangent", "1,0"}, {"end-tangent", "1,0"}}); });
+    m = invalid_input_message([&] { interpolate("hosaka", p, false, {{"start-tangent", "1,0"}, {"end-tangent", "1,0"}}); });
     EXPECT_NE(m.find("--start-tangent applies with --end tangent only"), std::string::npos) << m;
-    m = message_of([&] { interpolate("s-spline", p, false, {{"m", "1"}, {"m-vector", "1,1,1,1"}}); });
+    m = invalid_input_message([&] { interpolate("s-spline", p, false, {{"m", "1"}, {"m-vector", "1,1,1,1"}}); });
     EXPECT_NE(m.find("give --m or --m-vector, not both"), std::string::npos) << m;
-    m = message_of([&] { interpolate("curvature-profile", p, false, {{"degree", "3"}}); });
+    m = invalid_input_message([&] { interpolate("curvature-profile", p, false, {{"degree", "3"}}); });
     EXPECT_NE(m.find("--degree applies to a --knots list"), std::string::npos) << m;
-    m = message_of([&] { interpolate("hosaka", p, false, {{"m", "31"}}); });
+    m = invalid_input_message([&] { interpolate("hosaka", p, false, {{"m", "31"}}); });
     EXPECT_NE(m.find("--m '31': out of range; allowed: integer in [1, 30]"), std::string::npos) << m;
     // A preset's values can be overridden by name.
     const InterpolationResult r1 = interpolate("s-spline-m1", p, false), r4 = interpolate("s-spline-m1", p, false, {{"m", "4"}});
@@ -201,7 +196,7 @@ TEST(Methods, ClaimsFollowTheParameters) {
     EXPECT_EQ(h.claims(parse_parameter_values(h.name, h.parameters, {{"scale", "unit"}})).invariance, Invariance::affine);
     EXPECT_EQ(h.claims(parse_parameter_values(h.name, h.parameters, {})).parameter, "chord length");
     // Open-only methods refuse closed curves, naming the method.
-    const std::string m = message_of([] { interpolate("boost-pchip", wave(6), true); });
+    const std::string m = invalid_input_message([] { interpolate("boost-pchip", wave(6), true); });
     EXPECT_NE(m.find("(boost-pchip): draws open curves only"), std::string::npos) << m;
 }
 
