@@ -24,6 +24,7 @@
 #include "cagd/compare/method_comparison.hpp"
 #include "cagd/core/curve.hpp"
 #include "cagd/core/errors.hpp"
+#include "cagd/core/output_file.hpp"
 #include "cagd/fairness/pseudo_energy_minimum.hpp"
 #include "cagd/fairness/pseudo_energy_table.hpp"
 #include "cagd/methods/method_registry.hpp"

@@ -4,7 +4,8 @@
 // `cagd` and the experiments), so the module's values equal the library's bit for bit.
 //
 // Errors: cagd::InvalidInput → ValueError with the library's message; a numerical outcome (no
-// solution, no convergence) → cagd.NoSolution (a RuntimeError) carrying the outcome's message.
+// solution, no convergence) → cagd.NoSolution (a RuntimeError) carrying the outcome's message; a
+// failed write (cagd::OutputError) → OSError, the previous file kept.
 // Vectorised evaluation releases the GIL and fills the result array in place.
 //
 // One bindings_<folder>.cpp per library folder (bindings.hpp); this file only wires them.
@@ -22,6 +23,8 @@ PYBIND11_MODULE(_cagd, m) {
             PyErr_SetString(PyExc_ValueError, e.what());
         } catch (const NoSolution& e) {
             no_solution(e.what());
+        } catch (const cagd::OutputError& e) {  // a failed write: the old file is kept
+            PyErr_SetString(PyExc_OSError, e.what());
         }
     });
 

@@ -199,12 +199,12 @@ expect_bad "surface zero edges"      ''  typical-surface --n 5 --alpha-u -0.5 --
 # curvature_profile: cagd interpolate --method curvature-profile (Fig. 3's points, lines and arcs).
 printf 'x,y\n9,1\n4,1\n1,3\n1,6\n2,7\n7,7\n10,3.5\n14,3.5\n14,6\n15,7\n17,4.2\n20,3\n22,3\n' > "$dir/f3.csv"
 f3_spans=line,free,line,arc,line,free,arc,line,arc,free,free,line
-"$cagd" interpolate --method curvature-profile --in "$dir/f3.csv" --spans "$f3_spans" --out "$dir/cp.csv" > "$dir/cp.txt" || { echo "FAIL: curvature-profile"; fails=$((fails+1)); }
+"$cagd" interpolate --method curvature-profile --in "$dir/f3.csv" --spans "$f3_spans" --out "$dir/cp.csv" --report "$dir/cp.txt" || { echo "FAIL: curvature-profile"; fails=$((fails+1)); }
 grep -q '^knot_difference_list,"{0, 5.0000, 0, 4.0181, 0, 3.0000, 0, 1.5708, 0, 5.0000, 0, 5.1227, 0, 6.2832,' "$dir/cp.txt" || { echo "FAIL: curvature-profile list"; cat "$dir/cp.txt"; fails=$((fails+1)); }
 tail -1 "$dir/cp.csv" | awk -F, '{ exit !(($2-22)^2 + ($3-3)^2 < 1e-18) }' || { echo "FAIL: curvature-profile curve does not end at (22,3)"; tail -1 "$dir/cp.csv"; fails=$((fails+1)); }
 # 150 points on y = sin x: a square system of 300 unknowns takes the sparse LU path.
 awk 'BEGIN { print "x,y"; for (i = 0; i < 150; ++i) printf "%.17g,%.17g\n", 0.5 * i, sin(0.5 * i) }' > "$dir/sine.csv"
-"$cagd" interpolate --method curvature-profile --in "$dir/sine.csv" --out "$dir/sine_c.csv" > "$dir/sine.txt" || { echo "FAIL: curvature-profile on 150 points"; fails=$((fails+1)); }
+"$cagd" interpolate --method curvature-profile --in "$dir/sine.csv" --out "$dir/sine_c.csv" --report "$dir/sine.txt" || { echo "FAIL: curvature-profile on 150 points"; fails=$((fails+1)); }
 grep -q '^rank,full (sparse LU)' "$dir/sine.txt" && grep -q '^unknowns,300$' "$dir/sine.txt" || { echo "FAIL: 150 points should take sparse LU steps"; grep equations "$dir/sine.txt"; fails=$((fails+1)); }
 tail -1 "$dir/sine_c.csv" | awk -F, -v y="$(awk 'BEGIN { printf "%.17g", sin(74.5) }')" '{ exit !(($2-74.5)^2 + ($3-y)^2 < 1e-18) }' || { echo "FAIL: sparse-path curve does not end at the last point"; tail -1 "$dir/sine_c.csv"; fails=$((fails+1)); }
 printf 'x,y\n0,0\n1,0\n2,1\n3,1\n' > "$dir/arc.csv"

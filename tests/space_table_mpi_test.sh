@@ -17,4 +17,14 @@ cmp "$dir/np3.txt" "$dir/np1.txt" || { echo "FAIL: 3 ranks differ"; exit 1; }
 [ "$(wc -l < "$dir/np2.txt")" -eq $((6 * 6 * 8 + 2)) ] || { echo "FAIL: row count"; exit 1; }
 "$prog" --n-theta 1 --n-phi 8 --out "$dir/bad.txt" > "$dir/out" 2> "$dir/err"; code=$?
 [ "$code" -eq 2 ] && [ "$(wc -l < "$dir/err")" -eq 1 ] && [ ! -e "$dir/bad.txt" ] || { echo "FAIL: bad grid must exit 2 with one line (exit $code)"; cat "$dir/err"; exit 1; }
-echo "space table on MPI: 1, 2 and 3 ranks byte-identical"
+# The output is the command's (core/output_file.hpp): - is standard output, a directory is refused
+# before the work with nothing left behind, a full device is exit 1.
+"$prog" --n-theta 6 --n-phi 8 --out - > "$dir/stdout.txt" 2> "$dir/err" || { echo "FAIL: --out -"; cat "$dir/err"; exit 1; }
+cmp "$dir/stdout.txt" "$dir/np1.txt" || { echo "FAIL: --out - differs from the file"; exit 1; }
+[ ! -e ./- ] || { echo "FAIL: --out - wrote a file named -"; exit 1; }
+mkdir "$dir/folder"
+"$prog" --n-theta 6 --n-phi 8 --out "$dir/folder" > "$dir/out" 2> "$dir/err"; code=$?
+[ "$code" -eq 2 ] && [ -z "$(ls -A "$dir/folder")" ] && [ -z "$(ls "$dir" | grep -e '\.tmp' -e '\.cagd-')" ] || { echo "FAIL: --out a directory must exit 2 leaving nothing (exit $code)"; ls -A "$dir"; exit 1; }
+"$prog" --n-theta 6 --n-phi 8 --out /dev/full > "$dir/out" 2> "$dir/err"; code=$?
+[ "$code" -eq 1 ] && grep -q 'No space left' "$dir/err" || { echo "FAIL: --out /dev/full must exit 1 naming the reason (exit $code)"; cat "$dir/err"; exit 1; }
+echo "space table on MPI: 1, 2 and 3 ranks byte-identical; -, a directory and a full device handled"

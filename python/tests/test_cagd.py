@@ -254,6 +254,19 @@ def test_pseudo_spline_quantities_and_table_lookup():
         table.node(36, 0)
 
 
+def test_table_save_reports_a_failed_write_and_keeps_the_old_file(tmp_path):
+    table = cagd.PseudoEnergyTable.build(n=8, threads=2)
+    with pytest.raises(OSError, match="No space left on device"):
+        table.save("/dev/full")
+    path = tmp_path / "table.txt"
+    path.write_text("old\n")
+    with pytest.raises(ValueError, match="is a directory"):
+        table.save(str(tmp_path))
+    table.save(str(path))
+    assert path.read_text().startswith("# cagd pseudo_energy table format")
+    assert [p.name for p in tmp_path.iterdir()] == ["table.txt"], "no temporary file is left"
+
+
 def test_space_curves_have_torsion():
     helix = np.array([[math.cos(0.5 * k), math.sin(0.5 * k), 0.1 * k] for k in range(12)])
     c = cagd.interpolate(helix, "hosaka")

@@ -1,9 +1,11 @@
 // `cagd compare --in P.csv [--closed] [--methods a,b,…] [--no-plot] --out DIR`: every configuration
 // of the method registry on the user's points (compare/method_comparison), planar or in space.
 // Writes DIR/measures.csv and DIR/measures.md (one row per method), the figure data
-// DIR/{points,curves,curvature,combs}.csv, DIR/compare_panels.gp, and with gnuplot on the PATH the
-// figures DIR/{curves,combs,curvature}.png (space points: DIR/{curves,curvature,torsion}.png, the
-// curvature file holding τ too and combs.csv only its header).
+// DIR/{points,curves,curvature,combs,methods}.csv, DIR/compare_panels.gp, and with gnuplot on the
+// PATH the figures DIR/{curves,combs,curvature}.png (space points: DIR/{curves,curvature,torsion}.png,
+// the curvature file holding τ too and combs.csv only its header). DIR is one output
+// (core/output_file.hpp, OutputDirectory): checked before the work, every file (figures included)
+// made in a staging directory beside it and published together, or not at all.
 // Prints the Markdown table on stdout and one progress line per method on stderr.
 
 #include <cstdlib>
@@ -61,10 +63,8 @@ int run_compare(const CompareArgs& a) {
     }
     if (points.cols() != 2 && points.cols() != 3) fail_input(who, a.in + ": compares planar or space curves, the points have " + std::to_string(points.cols()) + " columns");
     const int dimension = static_cast<int>(points.cols());
-    std::error_code ec;
-    if (a.out.empty() || a.out == "-") fail_input(who, "--out '" + a.out + "': give a directory (compare writes several files)");
-    if (std::filesystem::exists(a.out, ec) && !std::filesystem::is_directory(a.out, ec)) fail_input(who, "--out '" + a.out + "' exists and is not a directory");
-    if (!std::filesystem::is_directory(std::filesystem::absolute(a.out, ec).parent_path(), ec)) fail_input(who, "--out '" + a.out + "': its parent directory does not exist");
+    OutputDirectory out(a.out);         // checked before the work
+    OutputFile table_out("-", "");      // the Markdown table on standard output, checked too
     const bool progress = progress_enabled();
     if (progress)
         std::cerr << "cagd compare: " << points.rows() << " points, " << (options.methods.empty() ? methods::configurations().size() : options.methods.size()) << " methods\n";
@@ -73,12 +73,9 @@ int run_compare(const CompareArgs& a) {
     };
     const std::vector<compare::MethodComparison> results = compare::compare_methods(points, options);
 
-    std::filesystem::create_directories(a.out, ec);  // after the work: nothing is left behind on bad input
-    if (!std::filesystem::is_directory(a.out)) fail_input(who, "cannot create the output directory '" + a.out + "'");
-    const std::string dir = a.out + "/";
     const std::string md = compare::comparison_markdown(results, a.closed, true, 6, dimension);
     {
-        OutputFile f(dir + "measures.md");
+        OutputFile f(out.staged("measures.md"));
         f.stream() << md;
         f.commit();
     }
@@ -91,40 +88,45 @@ int run_compare(const CompareArgs& a) {
     // 10^5 points, 0.9 s one after another).
     const std::vector<compare::ComparisonTable> tables =
         compare::comparison_tables(results, fig, points, a.closed, {.timing = true, .measure_digits = 8, .figure_digits = 12, .point_digits = 17});
+    std::vector<std::string> staged;
+    for (const compare::ComparisonTable& t : tables) staged.push_back(out.staged(t.file));
     parallel_for(static_cast<long>(tables.size()), hardware_threads(), [&](long k) {
         const compare::ComparisonTable& t = tables[static_cast<std::size_t>(k)];
-        CsvOutput w(dir + t.file, t.header);
+        CsvOutput w(staged[static_cast<std::size_t>(k)], t.header);
         for (const auto& row : t.text_rows) w.row_text(row);
         for (const auto& row : t.numbers()) w.row(row, t.significant);
         w.commit();
     });
     {
-        OutputFile f(dir + "compare_panels.gp");
+        OutputFile f(out.staged("compare_panels.gp"));
         f.stream() << kComparePanelsScript;
         f.commit();
     }
-    std::cout << md;
-    if (a.no_plot) return 0;
-    if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) {
-        std::cerr << "cagd compare: gnuplot not found; the figure data and compare_panels.gp are in " << a.out << "\n";
-        return 0;
+    table_out.stream() << md;
+    const bool plot = !a.no_plot && std::system("command -v gnuplot > /dev/null 2>&1") == 0;
+    if (!a.no_plot && !plot) std::cerr << "cagd compare: gnuplot not found; the figure data and compare_panels.gp are in " << a.out << "\n";
+    if (plot) {
+        // The three figures are independent: one gnuplot each, as many at a time as there are cores,
+        // drawn into the staging directory.
+        const std::vector<std::string> figures =
+            dimension == 2 ? std::vector<std::string>{"combs", "curvature", "curves"} : std::vector<std::string>{"curvature", "torsion", "curves"};  // the slowest first
+        std::vector<std::string> commands;
+        for (const std::string& figure : figures) {
+            out.staged(figure + ".png");
+            const std::string settings = "datadir=" + gnuplot_quoted(out.staging()) + "; prefix=''; space=" + std::to_string(dimension == 3 ? 1 : 0) +
+                                         "; heading=" + gnuplot_quoted(std::filesystem::path(a.in).filename().string()) + "; formats='png'; figures='" + figure +
+                                         "'; point_every=" + std::to_string(std::max<Eigen::Index>(1, points.rows() / 5000));  // ≤ ~5000 dots per panel
+            commands.push_back("gnuplot -e " + shell_quoted(settings) + " " + shell_quoted(out.staged("compare_panels.gp")));
+        }
+        std::vector<int> status(commands.size(), 0);
+        parallel_for(static_cast<long>(commands.size()), hardware_threads(),
+                     [&](long k) { status[static_cast<std::size_t>(k)] = std::system(commands[static_cast<std::size_t>(k)].c_str()); }, {});
+        for (std::size_t k = 0; k < commands.size(); ++k)
+            if (status[k] != 0) throw NoResult("gnuplot failed: " + commands[k] + " (nothing was written)");
     }
-    // The three figures are independent: one gnuplot each, as many at a time as there are cores.
-    const std::vector<std::string> figures =
-        dimension == 2 ? std::vector<std::string>{"combs", "curvature", "curves"} : std::vector<std::string>{"curvature", "torsion", "curves"};  // the slowest first
-    std::vector<std::string> commands;
-    for (const std::string& figure : figures) {
-        const std::string settings = "datadir=" + gnuplot_quoted(a.out) + "; prefix=''; space=" + std::to_string(dimension == 3 ? 1 : 0) +
-                                     "; heading=" + gnuplot_quoted(std::filesystem::path(a.in).filename().string()) + "; formats='png'; figures='" + figure +
-                                     "'; point_every=" + std::to_string(std::max<Eigen::Index>(1, points.rows() / 5000));  // ≤ ~5000 dots per panel
-        commands.push_back("gnuplot -e " + shell_quoted(settings) + " " + shell_quoted(dir + "compare_panels.gp"));
-    }
-    std::vector<int> status(commands.size(), 0);
-    parallel_for(static_cast<long>(commands.size()), hardware_threads(),
-                 [&](long k) { status[static_cast<std::size_t>(k)] = std::system(commands[static_cast<std::size_t>(k)].c_str()); }, {});
-    for (std::size_t k = 0; k < commands.size(); ++k)
-        if (status[k] != 0) throw NoResult("gnuplot failed: " + commands[k] + " (the tables and figure data are in " + a.out + ")");
-    if (progress) std::cerr << "cagd compare: figures " << dir << (dimension == 2 ? "{curves,combs,curvature}.png\n" : "{curves,curvature,torsion}.png\n");
+    out.commit();
+    table_out.commit();
+    if (progress && plot) std::cerr << "cagd compare: figures " << a.out << (dimension == 2 ? "/{curves,combs,curvature}.png\n" : "/{curves,curvature,torsion}.png\n");
     return 0;
 }
 
@@ -134,7 +136,7 @@ Command add_compare_command(CLI::App& app) {
     auto a = std::make_shared<CompareArgs>();
     CLI::App* c = app.add_subcommand("compare", "Every interpolation method on the same points: fairness table (CSV, Markdown) and figures");
     c->add_option("--in", a->in, "points CSV: x,y or x,y,z per line, optional header")->required();
-    c->add_option("--out", a->out, "output directory (created)")->required();
+    c->add_option("--out", a->out, "output directory (created, or its files replaced, as a whole)")->required();
     c->add_flag("--closed", a->closed, "closed curves (methods that draw open curves only are listed as not applicable)");
     c->add_option("--methods", a->methods, "comma-separated presets or methods (a method runs with its defaults), e.g. pseudo-spline-exact,cubic-b,hosaka (default: every preset)");
     c->add_flag("--no-plot", a->no_plot, "write the figure data and script but do not run gnuplot");

@@ -30,8 +30,10 @@ int run_energy(const EnergyArgs& a) {
     if (fairness::is_undefined_node(t0, t1)) fail_input("cagd energy", m.outcome.message);
     if (!m.outcome.ok()) throw NoResult(m.outcome.message);
     for (const auto& [value, name] : {std::pair{m.pseudo_energy, "J"}, {m.r0, "r0"}, {m.r1, "r1"}, {m.length, "L"}, {m.area, "S"}}) finite_field(value, 17, name);
-    std::printf("theta0,theta1,J,r0,r1,L,S,type\n%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%s\n", a.theta0, a.theta1, m.pseudo_energy, m.r0, m.r1, m.length, m.area,
-                fairness::to_string(m.type));
+    char row[512];
+    std::snprintf(row, sizeof row, "theta0,theta1,J,r0,r1,L,S,type\n%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%s\n", a.theta0, a.theta1, m.pseudo_energy, m.r0, m.r1, m.length,
+                  m.area, fairness::to_string(m.type));
+    print_standard_output(row);
     return 0;
 }
 

@@ -1,8 +1,9 @@
 // `cagd interpolate --method M [method options] [--closed] [--samples N] --in P.csv --out C.csv`:
 // any registered method (methods/method_registry.hpp) on the user's points; `--list-methods`
-// describes them. Writes the curve CSV (cli/curve_output.hpp; `-` for stdout), then what the method
-// reports (the curvature-profile Newton history) on stdout (stderr when the curve goes to stdout);
-// exit 1 with the outcome, and no output, when no curve exists.
+// describes them. Writes the curve CSV (cli/curve_output.hpp; `-` for stdout). What the method
+// reports (the curvature-profile Newton history) goes to the file --report names, or to stderr
+// unless --quiet: never onto standard output beside data. Exit 1 with the outcome, and no output,
+// when no curve exists.
 #include <iostream>
 #include <memory>
 
@@ -20,7 +21,7 @@ namespace cagd::cli {
 namespace {
 
 struct InterpolateArgs {
-    std::string method = "s-spline", in, out;
+    std::string method = "s-spline", in, out, report;
     MethodOptions options;
     bool closed = false, list = false, markdown = false;
     int samples = 16;
@@ -29,7 +30,7 @@ struct InterpolateArgs {
 int run_interpolate(const InterpolateArgs& a) {
     const char* who = "cagd interpolate";
     if (a.list) {
-        std::cout << (a.markdown ? methods::registry_markdown() : methods::registry_listing());
+        print_standard_output(a.markdown ? methods::registry_markdown() : methods::registry_listing());
         return 0;
     }
     if (a.in.empty() || a.out.empty()) fail_input(who, "--in and --out are required (or --list-methods)");
@@ -37,17 +38,22 @@ int run_interpolate(const InterpolateArgs& a) {
     const methods::ParameterValues values = methods::parse_parameter_values(method.name, method.parameters, given_parameters(a.options));
     const PointList points = read_points_csv(a.in);
     OutputFile out(a.out);  // checked before the work
+    std::unique_ptr<OutputFile> report;
+    if (!a.report.empty()) report = std::make_unique<OutputFile>(a.report, "--report");
     const methods::InterpolationResult r = methods::interpolate(method, points, a.closed, values);
     if (!r.outcome.ok() || !r.interpolant) throw NoResult(r.outcome.message);
     write_curve(*r.interpolant->curve, a.samples, out);
-    out.commit();
-    // What the method reports (the Newton history), after the curve: "quantity,value" lines on
-    // stdout, or on stderr when the curve is on stdout.
+    // What the method reports (the Newton history): "quantity,value" lines, into --report's file,
+    // or on stderr unless --quiet.
+    std::string text;
     if (!r.report.empty()) {
-        std::ostream& report = a.out == "-" ? std::cerr : std::cout;
-        report << "quantity,value\n";
-        for (const auto& [name, value] : r.report) report << csv_field(name) << ',' << csv_field(value) << '\n';
+        text = "quantity,value\n";
+        for (const auto& [name, value] : r.report) text += csv_field(name) + ',' + csv_field(value) + '\n';
     }
+    if (report) report->stream() << text;
+    out.commit();
+    if (report) report->commit();
+    else if (!text.empty() && !quiet()) std::cerr << text;
     return 0;
 }
 
@@ -63,6 +69,7 @@ Command add_interpolate_command(CLI::App& app) {
     c->add_option("--samples", a->samples, "samples per curve piece in the output (samples x pieces <= 10^7 rows)")->check(CLI::Range(1, 100000));
     c->add_option("--in", a->in, "points CSV: x,y[,z] per line, optional header of names; - for stdin");
     c->add_option("--out", a->out, "curve CSV: u, position, 1st and 2nd derivative; - for stdout");
+    c->add_option("--report", a->report, "file for what the method reports (the curvature-profile Newton history, as quantity,value lines); default: stderr unless --quiet");
     return {c, [a] { return run_interpolate(*a); }};
 }
 

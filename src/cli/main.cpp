@@ -5,12 +5,17 @@
 //           not representable (any non-finite value: it is never written out);
 //   exit 2  bad input or usage.
 // Every message is one line on stderr naming the file:line or the option and its value; every
-// exception is caught here. Output appears only after success (cli/output.hpp: `-` is stdout,
-// regular files are replaced atomically, devices and pipes written directly). Sizes are checked
+// exception is caught here. Output appears only after success (core/output_file.hpp: `-` and open
+// descriptors written through, regular files replaced atomically, devices and pipes written
+// directly; a failed write is exit 1 and keeps the old file). INT, TERM, HUP and PIPE remove the
+// temporary files before the process ends by the signal. Sizes are checked
 // against their limits (in --help) before anything is allocated. Progress goes to stderr for long
 // work, only when stderr is a terminal and --quiet is not given. CMake defines CAGD_VERSION and
 // CAGD_REVISION (the git revision at configure time).
 #include <CLI/CLI.hpp>
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <iostream>
 #include <new>
 #include <vector>
@@ -19,8 +24,28 @@
 #include "cli/output.hpp"
 #include "cagd/core/errors.hpp"
 
+namespace {
+
+// A closed standard descriptor is held by /dev/null opened the wrong way round, so that no file the
+// command opens takes its number: writing to a closed standard output then fails instead of
+// landing in that file (standard error: messages are lost, as the caller asked).
+void hold_closed_standard_descriptors() {
+    for (int fd : {0, 1, 2})
+        if (::fcntl(fd, F_GETFD) < 0) {
+            const int held = ::open("/dev/null", fd == 0 ? O_WRONLY : O_RDONLY);
+            if (held >= 0 && held != fd) {
+                ::dup2(held, fd);
+                ::close(held);
+            }
+        }
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
     using namespace cagd::cli;
+    hold_closed_standard_descriptors();
+    cagd::install_output_signal_cleanup();
     CLI::App app{"cagd — interpolating curves and surfaces from five Japanese CAGD papers (cagd-repro)"};
     app.require_subcommand(1);
     app.fallthrough();  // --quiet may follow the subcommand
@@ -44,6 +69,9 @@ int main(int argc, char** argv) {
     } catch (const cagd::InvalidInput& e) {
         std::cerr << "cagd: error: " << e.what() << "\n";
         return 2;
+    } catch (const cagd::OutputError& e) {
+        std::cerr << "cagd: cannot write: " << e.what() << "\n";
+        return 1;
     } catch (const NoResult& e) {
         std::cerr << "cagd: no result: " << e.what() << "\n";
         return 1;

@@ -38,7 +38,7 @@ int run_monotone(const MonotoneArgs& a) {
               << (v.equal_edges ? "yes" : "no") << ',' << aesthetic::to_string(v.condition29_verdict) << ',' << aesthetic::to_string(v.bernstein_verdict) << ','
               << analysis::to_string(v.exact) << '\n';
     table << "whole_curve," << analysis::to_string(r.whole_curve) << '\n';
-    std::cout << table.str();
+    print_standard_output(table.str());
     return 0;
 }
 

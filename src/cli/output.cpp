@@ -21,90 +21,12 @@ namespace {
 
 bool quiet_flag = false;
 
-// A fresh temporary file name in `dir` (created empty, so two runs never share one).
-std::filesystem::path make_temp(const std::filesystem::path& dir, const std::string& stem, const std::string& path, const std::string& option) {
-    std::string pattern = (dir / ("." + stem + ".cagd-XXXXXX")).string();
-    const int fd = mkstemp(pattern.data());
-    if (fd < 0) fail_input("cagd", option + " '" + path + "': cannot write in '" + dir.string() + "': " + std::error_code(errno, std::generic_category()).message());
-    close(fd);
-    return pattern;
-}
-
 }  // namespace
 
-OutputFile::OutputFile(const std::string& path, const std::string& option) : path_(path), option_(option) {
-    namespace fs = std::filesystem;
-    if (path.empty()) fail_input("cagd", option + " is empty; give a file path or - for standard output");
-    std::error_code ec;
-    if (path == "-") {
-        target_ = Target::standard_output;
-        const char* tmp = std::getenv("TMPDIR");
-        temp_path_ = make_temp(tmp && *tmp ? tmp : "/tmp", "stdout", path, option);
-    } else {
-        fs::path p = path;
-        const fs::file_status status = fs::status(p, ec);  // follows symbolic links
-        if (fs::is_directory(status)) fail_input("cagd", option + " '" + path + "' is a directory; give a file path");
-        if (fs::exists(status) && !fs::is_regular_file(status)) {
-            target_ = Target::special;  // a device or a pipe (also /dev/stdout on a pipe): written in place at commit()
-            const char* tmp = std::getenv("TMPDIR");
-            temp_path_ = make_temp(tmp && *tmp ? tmp : "/tmp", "special", path, option);
-        } else {
-            // A symbolic link (even a dangling one) keeps pointing where it did: its target is replaced.
-            for (int hops = 0; hops < 40 && fs::is_symlink(fs::symlink_status(p, ec)); ++hops) {
-                const fs::path target = fs::read_symlink(p, ec);
-                if (ec) break;
-                p = (target.is_absolute() ? target : p.parent_path() / target).lexically_normal();
-            }
-            const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
-            if (!fs::is_directory(dir, ec)) fail_input("cagd", option + " '" + path + "': the directory '" + dir.string() + "' does not exist");
-            temp_path_ = make_temp(dir, p.filename().string(), path, option);
-        }
-        final_ = target_ == Target::special ? fs::path(path) : p;
-        // mkstemp creates 0600: give the file the mode the replaced one had, or a new file's (0666 less the umask).
-        const fs::file_status old_status = fs::status(final_, ec);
-        fs::perms mode = fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read | fs::perms::group_write | fs::perms::others_read | fs::perms::others_write;
-        if (target_ == Target::regular && fs::is_regular_file(old_status)) {
-            mode = old_status.permissions();
-        } else {
-            const mode_t mask = umask(0);
-            umask(mask);
-            mode &= ~static_cast<fs::perms>(mask);
-        }
-        if (target_ == Target::regular) fs::permissions(temp_path_, mode, ec);
-    }
-    temp_.open(temp_path_, std::ios::binary | std::ios::trunc);
-    if (!temp_) fail_input("cagd", option + " '" + path + "': cannot write the temporary file '" + temp_path_.string() + "'");
-}
-
-OutputFile::~OutputFile() {
-    if (committed_) return;
-    temp_.close();
-    std::error_code ec;
-    std::filesystem::remove(temp_path_, ec);
-}
-
-void OutputFile::commit() {
-    temp_.close();
-    if (!temp_) throw NoResult(option_ + " '" + path_ + "': writing failed (disk full?)");
-    std::error_code ec;
-    if (target_ == Target::regular) {
-        std::filesystem::rename(temp_path_, final_, ec);
-        if (ec) throw NoResult(option_ + " '" + path_ + "': cannot replace it: " + ec.message());
-        committed_ = true;
-        return;
-    }
-    std::ifstream in(temp_path_, std::ios::binary);
-    if (target_ == Target::standard_output) {
-        std::cout << in.rdbuf();
-        std::cout.flush();
-    } else {
-        std::ofstream out(final_, std::ios::binary);  // opened for writing only: no truncation of a device matters
-        if (!out) throw NoResult(option_ + " '" + path_ + "': cannot open it for writing");
-        out << in.rdbuf();
-    }
-    in.close();
-    std::filesystem::remove(temp_path_, ec);
-    committed_ = true;
+void print_standard_output(const std::string& text) {
+    OutputFile out("-", "");
+    out.stream() << text;
+    out.commit();
 }
 
 std::string finite_field(double value, int significant, const std::string& what) {
@@ -159,9 +81,9 @@ void Quantities::add(const std::string& name, double value, int significant) { r
 void Quantities::add_text(const std::string& name, const std::string& value) { rows_.emplace_back(name, value); }
 
 void Quantities::commit() {
-    std::cout << "quantity,value\n";
-    for (const auto& [name, value] : rows_) std::cout << csv_field(name) << ',' << csv_field(value) << '\n';
-    std::cout.flush();
+    std::string text = "quantity,value\n";
+    for (const auto& [name, value] : rows_) text += csv_field(name) + ',' + csv_field(value) + '\n';
+    print_standard_output(text);
 }
 
 PointList read_data_points(const std::string& path) {
@@ -174,7 +96,9 @@ PointList read_data_points(const std::string& path) {
 
 bool progress_enabled() { return !quiet_flag && isatty(fileno(stderr)); }
 
-void set_quiet(bool quiet) { quiet_flag = quiet; }
+void set_quiet(bool on) { quiet_flag = on; }
+
+bool quiet() { return quiet_flag; }
 
 void require_output_rows(double rows, const std::string& what) {
     if (!(rows <= static_cast<double>(kMaxOutputRows)))

@@ -1,16 +1,11 @@
 #pragma once
-// How the `cagd` command writes (the contract in main.cpp and the README):
-//   - `-` is standard output; output appears only after success: everything is written to a
-//     temporary file first, and published by commit();
-//   - a regular target (or a new path) is replaced atomically: the temporary file sits beside it
-//     and is renamed over it; a symbolic link is followed, so its target is replaced;
-//   - a target that exists and is not a regular file (a device, a pipe) is written directly at
-//     commit() from the temporary copy, never renamed over or removed;
-//   - a directory where a file is expected, or a place that cannot be written, is bad input, found
-//     when the OutputFile is made — before any work;
-//   - an OutputFile destroyed without commit() (an error) removes its temporary file.
+// How the `cagd` command writes: through cagd::OutputFile and cagd::OutputDirectory
+// (core/output_file.hpp), which state the contract: `-`, /dev/stdout and open descriptors written
+// through, devices and pipes written in place, regular files replaced atomically, every write
+// checked (a failure is OutputError: exit 1, the old file kept), bad places found before any work.
 // CsvOutput is a CSV result of finite numbers: a non-finite value is a numerical outcome (NoResult,
-// exit 1), naming its column and row, and nothing is written.
+// exit 1), naming its column and row, and nothing is written. Results on standard output go through
+// print_standard_output, so a full or closed standard output is an error too.
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -19,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "cagd/core/output_file.hpp"
 #include "cagd/core/points.hpp"
 
 namespace cagd::cli {
@@ -30,24 +26,10 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-class OutputFile {
-public:
-    // `option` names the option in messages ("--out").
-    OutputFile(const std::string& path, const std::string& option = "--out");
-    OutputFile(const OutputFile&) = delete;
-    OutputFile& operator=(const OutputFile&) = delete;
-    ~OutputFile();
-    std::ostream& stream() { return temp_; }
-    void commit();
+using cagd::OutputFile;
 
-private:
-    enum class Target { standard_output, regular, special };
-    std::string path_, option_;
-    Target target_ = Target::regular;
-    std::filesystem::path final_, temp_path_;
-    std::ofstream temp_;
-    bool committed_ = false;
-};
+// `text` on standard output, every byte checked (OutputError otherwise).
+void print_standard_output(const std::string& text);
 
 // `value` formatted to `significant` digits (core/csv.hpp format_number), or NoResult naming
 // `what` when it is not finite.
@@ -92,7 +74,8 @@ PointList read_data_points(const std::string& path);
 // Progress on standard error for work longer than a second: only when stderr is a terminal and
 // `--quiet` was not given (set_quiet).
 bool progress_enabled();
-void set_quiet(bool quiet);
+void set_quiet(bool on);
+bool quiet();  // --quiet was given
 
 // Sizes are checked before anything is allocated: rows of output at most kMaxOutputRows (about a
 // gigabyte of CSV; the limits of --samples and --grid in --help follow from it).

@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "cagd/core/file_lock.hpp"
+#include "cagd/core/output_file.hpp"
 #include "cagd/core/parallel.hpp"
 
 namespace cagd::fairness {
@@ -104,18 +105,14 @@ AngleMinimumTable AngleMinimumTable::load_or_build(const std::string& path, cons
     };
     return load_or_build_locked(path, try_load, [&] {
         const AngleMinimumTable t = build(grid, scan_source, threads);
-        const std::string tmp = path + ".tmp." + std::to_string(::getpid());
-        {
-            std::ofstream out(tmp);
-            if (!out) fail_input("cagd::fairness::AngleMinimumTable::load_or_build", "cannot write '" + tmp + "'");
-            out << header.str() << "\ntheta,theta1,J,status,message\n";
-            char buf[128];
-            for (const AngleMinimum& m : t.values_) {
-                std::snprintf(buf, sizeof buf, "%.17g,%.17g,%.17g,%d,", m.theta, m.theta1, m.pseudo_energy, static_cast<int>(m.outcome.status));
-                out << buf << m.outcome.message << "\n";
-            }
+        OutputFile out(path, "table");  // core/output_file.hpp: written whole or not at all
+        out.stream() << header.str() << "\ntheta,theta1,J,status,message\n";
+        char buf[128];
+        for (const AngleMinimum& m : t.values_) {
+            std::snprintf(buf, sizeof buf, "%.17g,%.17g,%.17g,%d,", m.theta, m.theta1, m.pseudo_energy, static_cast<int>(m.outcome.status));
+            out.stream() << buf << m.outcome.message << "\n";
         }
-        std::rename(tmp.c_str(), path.c_str());
+        out.commit();
         return t;
     });
 }

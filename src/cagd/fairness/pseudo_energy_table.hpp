@@ -127,7 +127,7 @@ public:
     /// Nodes whose second local minimum is within `within` of the global one in J.
     int runner_up_nodes(double within) const;
 
-    /// Writes the table to `path` (temporary file, then rename).
+    /// Writes the table to `path` as an OutputFile (core/output_file.hpp): whole or not at all; OutputError on a failed write.
     void save(const std::string& path) const;
     /// The same text to a stream. Undefined nodes (θ0 or θ1 at 0 or ±π, eq 8) and nodes without a
     /// second minimum carry inf in J and runner_up: the format's own marks, read back by load().

@@ -20,6 +20,7 @@
 #include <thread>
 
 #include "cagd/core/file_lock.hpp"
+#include "cagd/core/output_file.hpp"
 
 namespace cagd::fairness {
 
@@ -51,14 +52,12 @@ void PseudoEnergyTable::save(std::ostream& out) const {
 }
 
 void PseudoEnergyTable::save(const std::string& path) const {
-    // A temporary name of this process, renamed at the end: concurrent builders never mix their lines.
-    const std::string tmp = path + ".tmp." + std::to_string(::getpid());
-    {
-        std::ofstream out(tmp);
-        if (!out) fail_input("cagd::fairness::PseudoEnergyTable::save", "cannot write '" + tmp + "'");
-        save(out);
-    }
-    std::rename(tmp.c_str(), path.c_str());
+    // core/output_file.hpp: a temporary file beside it, renamed at the end (concurrent builders never
+    // mix their lines; a failed write keeps the old file and throws OutputError); a device or an open
+    // descriptor is written in place.
+    OutputFile out(path, "table");
+    save(out.stream());
+    out.commit();
 }
 
 namespace {

@@ -12,6 +12,7 @@
 
 #include "cagd/core/errors.hpp"
 #include "cagd/core/file_lock.hpp"
+#include "cagd/core/output_file.hpp"
 #include "cagd/core/parallel.hpp"
 
 namespace cagd::fairness {
@@ -125,14 +126,9 @@ void SpacePseudoEnergyTable::save(std::ostream& out) const {
 }
 
 void SpacePseudoEnergyTable::save(const std::string& path) const {
-    const std::string tmp = path + ".tmp." + std::to_string(::getpid());
-    {
-        std::ofstream out(tmp);
-        if (!out) fail_input(kWho, "cannot write '" + tmp + "'");
-        save(out);
-        if (!out) fail_input(kWho, "writing '" + tmp + "' failed");
-    }
-    std::rename(tmp.c_str(), path.c_str());
+    OutputFile out(path, "table");  // core/output_file.hpp: written whole or not at all
+    save(out.stream());
+    out.commit();
 }
 
 SpacePseudoEnergyTable SpacePseudoEnergyTable::load(const std::string& path) {

@@ -81,7 +81,7 @@ public:
     /// θ0, θ1 ∈ [0, π], φ any finite angle (taken mod 2π); InvalidInput otherwise.
     SpaceTableValue lookup(double theta0, double theta1, double phi) const;
 
-    /// Writes the table to `path` (temporary file, then rename).
+    /// Writes the table to `path` as an OutputFile (core/output_file.hpp): whole or not at all; OutputError on a failed write.
     void save(const std::string& path) const;
     /// The same text to a stream.
     void save(std::ostream& out) const;

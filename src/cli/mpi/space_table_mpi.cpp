@@ -2,17 +2,22 @@
 // MPI, for grids that outgrow one machine (the 1° table: 180 × 180 × 360 nodes, hours of CPU).
 //   mpirun -np R cagd_space_table_mpi --n-theta N --n-phi M [--method fast|reference] [--threads T] --out FILE
 // Rank r computes the block [r·K/R, (r+1)·K/R) of the K symmetry orbits with T threads, rank 0
-// gathers them, assembles the table and writes FILE (atomically). The result is the same, byte for
-// byte, for any R and T (each node is computed on its own), and equals SpacePseudoEnergyTable::build.
-// Exit 0 success, 2 bad arguments (one line on stderr from rank 0), 1 a failure while writing.
+// gathers them, assembles the table and writes FILE (core/output_file.hpp: `-` is standard output,
+// a device is written in place, a regular file replaced whole; the place is checked by rank 0 before
+// the work). The result is the same, byte for byte, for any R and T (each node is computed on its
+// own), and equals SpacePseudoEnergyTable::build.
+// Exit 0 success, 2 bad arguments or output place (one line on stderr from rank 0), 1 a failure while
+// writing (the old file kept).
 #include <mpi.h>
 
 #include <cstdlib>
 #include <iostream>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "cagd/core/errors.hpp"
+#include "cagd/core/output_file.hpp"
 #include "cagd/fairness/space_pseudo_energy_table.hpp"
 
 using namespace cagd;
@@ -75,10 +80,17 @@ int main(int argc, char** argv) {
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
     MPI_Comm_size(MPI_COMM_WORLD, &size);
     Args a;
+    std::unique_ptr<OutputFile> out;
+    int bad = 0;
     try {
         a = parse(argc, argv);
+        if (rank == 0) out = std::make_unique<OutputFile>(a.out, "--out");  // checked before the work
     } catch (const InvalidInput& e) {
         if (rank == 0) std::cerr << e.what() << "\n";
+        bad = 1;
+    }
+    MPI_Bcast(&bad, 1, MPI_INT, 0, MPI_COMM_WORLD);  // every rank stops if rank 0 refused the output
+    if (bad != 0) {
         MPI_Finalize();
         return 2;
     }
@@ -108,7 +120,8 @@ int main(int argc, char** argv) {
             if (f[5] == 0.0) m.outcome = {Status::no_convergence, "not converged"};
         }
         try {
-            SpacePseudoEnergyTable::assemble(a.grid, a.method, minima).save(a.out);
+            SpacePseudoEnergyTable::assemble(a.grid, a.method, minima).save(out->stream());
+            out->commit();
         } catch (const std::exception& e) {
             std::cerr << e.what() << "\n";
             status = 1;

@@ -1,0 +1,150 @@
+#!/usr/bin/env bash
+# The `cagd` command's write contract (core/output_file.hpp, docs/command.md): exit 0 only when every
+# byte arrived; a failed write is exit 1 with the old file kept; a bad place is exit 2 before any
+# work; nothing outside the output changes and nothing is left behind, signals included.
+# Usage: tests/cli_writes.sh path/to/cagd
+set -u
+cagd=$(realpath "$1")
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+cd "$dir"
+export TMPDIR="$dir/tmp"
+mkdir "$TMPDIR"
+runs=0 fails=0
+fail() { echo "FAIL: $*"; fails=$((fails + 1)); }
+expect() {  # expect CODE DESCRIPTION ACTUAL
+    runs=$((runs + 1))
+    [ "$3" -eq "$1" ] || fail "$2: exit $3, expected $1 ($(head -c 300 err 2>/dev/null))"
+}
+no_temporaries() {  # nothing the writer made is left anywhere under the test directory
+    local left
+    left=$(find "$dir" -name '.*.cagd-*' | head -3)
+    runs=$((runs + 1))
+    [ -z "$left" ] || fail "$1: temporary files left: $left"
+}
+printf '0,0\n1,1\n2,0\n3,1\n4,0.5\n5,0\n' > p.csv
+python3 -c "
+import math, random
+random.seed(3); x = y = h = 0.0
+print('x,y')
+for i in range(20000):
+    h += random.uniform(-1, 1); s = random.uniform(0.2, 1.0); x += s * math.cos(h); y += s * math.sin(h)
+    print(f'{x!r},{y!r}')" > walk.csv
+
+# ---- failed writes: exit 1, the reason named, the old file kept --------------------------------
+"$cagd" interpolate --method cubic-b --in p.csv --out /dev/full 2> err
+expect 1 "--out /dev/full" $?
+grep -q "'/dev/full'.*No space left" err || fail "--out /dev/full: the message names neither the path nor the reason: $(cat err)"
+for cmd in "interpolate --method cubic-b --in p.csv --out -" "analyze --in p.csv --method cubic-b" "energy --theta0 30 --theta1 -45 --deg" \
+           "monotone --in p.csv" "interpolate --list-methods"; do
+    # shellcheck disable=SC2086
+    "$cagd" $cmd > /dev/full 2> err
+    expect 1 "$cmd > /dev/full" $?
+done
+"$cagd" compare --in p.csv --out cmp_full --no-plot > /dev/full 2> err
+expect 1 "compare > /dev/full" $?
+echo old > kept.csv
+(trap '' XFSZ; prlimit --fsize=2000 "$cagd" interpolate --method cubic-b --in walk.csv --out kept.csv 2> err)
+expect 1 "a write beyond the file-size limit" $?
+runs=$((runs + 1))
+[ "$(cat kept.csv)" = old ] || fail "a failed write did not keep the old file: $(head -c 100 kept.csv)"
+grep -q "kept.csv" err || fail "the failed write's message does not name the file: $(cat err)"
+no_temporaries "failed writes"
+
+# ---- standard output and open descriptors: written through, never replaced ----------------------
+echo prev > appended.csv
+"$cagd" interpolate --method cubic-b --in p.csv --out /dev/stdout >> appended.csv 2> err
+expect 0 "--out /dev/stdout >> file" $?
+runs=$((runs + 1))
+[ "$(head -1 appended.csv)" = prev ] && [ "$(sed -n 2p appended.csv)" = "u,x,y,dx,dy,ddx,ddy" ] || fail "--out /dev/stdout >> file lost what was there: $(head -2 appended.csv)"
+{ echo a; "$cagd" interpolate --method cubic-b --in p.csv --out /dev/stdout; echo b; } > group.csv 2> err
+runs=$((runs + 1))
+[ "$(head -1 group.csv)" = a ] && [ "$(tail -1 group.csv)" = b ] && [ "$(grep -c . group.csv)" -gt 10 ] || fail "{ echo a; cagd --out /dev/stdout; echo b; } > f: $(head -c 80 group.csv)"
+"$cagd" interpolate --method cubic-b --in p.csv --out - >&- 2> err
+expect 2 "--out - with standard output closed" $?
+"$cagd" interpolate --method cubic-b --in p.csv --out /dev/fd/1 > fd1.csv 2> err
+expect 0 "--out /dev/fd/1" $?
+cmp -s <(sed 1d appended.csv) fd1.csv || fail "--out /dev/fd/1 differs from --out /dev/stdout"
+
+# A method's report never goes onto standard output beside data.
+"$cagd" interpolate --method curvature-profile --in p.csv --out cp.csv --quiet > cp_stdout.txt 2> cp_stderr.txt
+expect 0 "curvature-profile --quiet" $?
+runs=$((runs + 1))
+[ ! -s cp_stdout.txt ] && [ ! -s cp_stderr.txt ] || fail "curvature-profile --quiet printed its report: $(head -c 100 cp_stdout.txt cp_stderr.txt)"
+"$cagd" interpolate --method curvature-profile --in p.csv --out cp.csv --report cp_report.csv > cp_stdout.txt 2> cp_stderr.txt
+expect 0 "curvature-profile --report" $?
+runs=$((runs + 1))
+[ ! -s cp_stdout.txt ] && grep -q '^knot_difference_list,' cp_report.csv || fail "curvature-profile --report: the report is not in its file"
+
+# ---- links and devices --------------------------------------------------------------------------
+ln -s loop_b loop_a
+ln -s loop_a loop_b
+"$cagd" interpolate --method cubic-b --in p.csv --out loop_a 2> err
+expect 2 "a loop of symbolic links" $?
+runs=$((runs + 1))
+[ -L loop_a ] && [ -L loop_b ] || fail "a link loop given as --out was replaced"
+echo target > real.csv
+ln -s real.csv link.csv
+"$cagd" interpolate --method cubic-b --in p.csv --out link.csv 2> err
+expect 0 "--out a symbolic link" $?
+runs=$((runs + 1))
+[ -L link.csv ] && [ "$(head -1 real.csv)" = "u,x,y,dx,dy,ddx,ddy" ] || fail "a symbolic link was not kept, or its target not replaced"
+if [ "$(id -u)" -eq 0 ] && mknod full_device c 1 7 2> /dev/null && mknod null_device c 1 3 2> /dev/null; then
+    "$cagd" energy-table --grid 8 --out full_device 2> err
+    expect 1 "energy-table onto a full character device" $?
+    "$cagd" interpolate --method cubic-b --in p.csv --out null_device 2> err
+    expect 0 "--out a null character device" $?
+    runs=$((runs + 1))
+    [ -c full_device ] && [ -c null_device ] || fail "a device node was replaced by a regular file"
+fi
+mkfifo fifo
+timeout 30 cat fifo > from_fifo.csv &
+"$cagd" interpolate --method cubic-b --in p.csv --out fifo 2> err
+expect 0 "--out a FIFO" $?
+wait
+runs=$((runs + 1))
+[ -p fifo ] && [ "$(head -1 from_fifo.csv)" = "u,x,y,dx,dy,ddx,ddy" ] || fail "a FIFO was not written through"
+
+# ---- bad places: exit 2 before any work ----------------------------------------------------------
+start=$SECONDS
+"$cagd" compare --in walk.csv --out /proc/no_such_place --no-plot 2> err
+expect 2 "compare --out a place that cannot be written" $?
+runs=$((runs + 1))
+[ $((SECONDS - start)) -le 2 ] || fail "compare found a bad --out only after the work ($((SECONDS - start)) s)"
+"$cagd" compare --in p.csv --out p.csv --no-plot 2> err
+expect 2 "compare --out an existing file" $?
+"$cagd" interpolate --method cubic-b --in p.csv --out no_such_dir/c.csv 2> err
+expect 2 "--out in a missing directory" $?
+
+# ---- compare: one output, whole or not at all ----------------------------------------------------
+mkdir planted
+echo secret > outside.txt
+ln -s ../outside.txt planted/measures.csv
+"$cagd" compare --in p.csv --out planted --no-plot > /dev/null 2> err
+expect 0 "compare into a folder with a planted link" $?
+runs=$((runs + 1))
+[ "$(cat outside.txt)" = secret ] && [ ! -L planted/measures.csv ] || fail "compare followed a link planted in its folder"
+# Two runs into one folder: every file of the folder comes from one of them.
+"$cagd" compare --in p.csv --out both --no-plot --methods cubic-a,cubic-b > /dev/null 2>&1 &
+"$cagd" compare --in p.csv --out both --no-plot --methods hermite-a,hermite-b,s-spline-m2 > /dev/null 2>&1 &
+wait
+runs=$((runs + 1))
+[ "$(tail -n +2 both/measures.csv | cut -d, -f1 | sort)" = "$(tail -n +2 both/methods.csv | cut -d, -f2 | sort)" ] || fail "two concurrent compare runs mixed their files"
+no_temporaries "compare"
+
+# ---- signals: the temporary files go, the status is the signal's ---------------------------------
+"$cagd" compare --in walk.csv --out killed > /dev/null 2>&1 &
+pid=$!
+sleep 1
+kill -TERM "$pid"
+wait "$pid"
+expect 143 "SIGTERM during compare" $?
+runs=$((runs + 1))
+[ ! -e killed ] || fail "an interrupted compare left its folder"
+"$cagd" interpolate --method cubic-b --in walk.csv --out - 2> /dev/null | head -c 100 > /dev/null
+expect 141 "a reader that stops (SIGPIPE)" "${PIPESTATUS[0]}"
+no_temporaries "signals"
+
+echo "cli writes: $runs checks, $fails failed"
+echo "$((runs - fails)) passed, $fails failed"
+[ "$fails" -eq 0 ]
