@@ -35,9 +35,14 @@ cx = colnum(f_curves, "x"); cy = colnum(f_curves, "y"); cz = colnum(f_curves, "z
 bx = colnum(f_combs, "x"); by = colnum(f_combs, "y"); btx = colnum(f_combs, "tip_x"); bty = colnum(f_combs, "tip_y")
 ks = colnum(f_kappa, "s"); kk = colnum(f_kappa, "kappa"); kt = colnum(f_kappa, "tau")
 n = words(names)
-# rows of method i in a figure file: first(list, i) .. last(list, counts, i) (last < first when none)
+# rows of method i in a figure file: first(list, i) .. last(list, counts, i). A method without rows
+# (not applicable, refused, no result) reads one row and draws nothing ((has(...) ? … : NaN) in the
+# overlays), so it is a labelled entry without a line, never another method's data: `every` with
+# its last row before its first would read the whole file.
 first(list, i) = int(word(list, i))
-last(list, counts, i) = int(word(list, i)) + int(word(counts, i)) - 1
+has(counts, i) = int(word(counts, i)) > 0
+last(list, counts, i) = has(counts, i) ? int(word(list, i)) + int(word(counts, i)) - 1 : int(word(list, i))
+label(i, counts) = word(names, i).(has(counts, i) ? '' : ' (none)')
 cols = n <= 4 ? n : (n <= 9 ? 3 : (n <= 16 ? 4 : 5))
 rows = int((n + cols - 1) / cols)
 do for [t in formats] {
@@ -54,12 +59,12 @@ do for [t in formats] {
     set size noratio
     set view equal xyz
     set zlabel 'z'
-    splot for [i=1:n] f_curves skip 1 every ::first(curves_first, i)::last(curves_first, curves_count, i) using (column(cx)):(column(cy)):(column(cz)) with lines lw 1.5 lc i title word(names, i), \
+    splot for [i=1:n] f_curves skip 1 every ::first(curves_first, i)::last(curves_first, curves_count, i) using (has(curves_count, i) ? column(cx) : NaN):(column(cy)):(column(cz)) with lines lw 1.5 lc i title label(i, curves_count), \
           f_points skip 1 every point_every using (column(px)):(column(py)):(column(pz)) with points pt 7 ps 0.8 lc rgb '#000000' title 'data'
     unset view
     unset zlabel
   } else {
-    plot for [i=1:n] f_curves skip 1 every ::first(curves_first, i)::last(curves_first, curves_count, i) using (column(cx)):(column(cy)) with lines lw 1.5 lc i title word(names, i), \
+    plot for [i=1:n] f_curves skip 1 every ::first(curves_first, i)::last(curves_first, curves_count, i) using (has(curves_count, i) ? column(cx) : NaN):(column(cy)) with lines lw 1.5 lc i title label(i, curves_count), \
          f_points skip 1 every point_every using (column(px)):(column(py)) with points pt 7 ps 0.8 lc rgb '#000000' title 'data'
   }
   unset output

@@ -611,3 +611,25 @@ TEST(Compare, CatmullRomRefusesPointsWhoseChordsVanishInItsParameters) {
     ASSERT_TRUE(r.outcome.ok() && r.interpolant);
     EXPECT_TRUE(r.interpolant->curve->point(r.interpolant->node_parameters[1]).allFinite());
 }
+
+TEST(Compare, AMethodThatRefusesThePointsIsARowAndTheOthersAreMeasured) {
+    // Four points 1e-40 apart: Boost's centripetal Catmull–Rom refuses them (its parameters
+    // coincide); the comparison must not abort for one method.
+    PointList p(4, 2);
+    p << 0, 0, 1e-40, 0, 2e-40, 1e-40, 3e-40, 0;
+    ComparisonOptions o;
+    o.methods = {"cubic-b", "hermite-a", "boost-catmull-rom"};
+    const std::vector<MethodComparison> c = compare_methods(p, o);
+    ASSERT_EQ(c.size(), 3u);
+    EXPECT_EQ(c[0].status, "ok") << c[0].note;
+    EXPECT_EQ(c[1].status, "ok") << c[1].note;
+    EXPECT_EQ(c[2].status, "refused");
+    EXPECT_NE(c[2].note.find("boost-catmull-rom"), std::string::npos) << c[2].note;
+    EXPECT_EQ(c[2].note.find('\n'), std::string::npos) << "a note is one line: " << c[2].note;
+    const std::string md = comparison_markdown(c, false, false);
+    EXPECT_EQ(std::count(md.begin(), md.end(), '\n'), 5) << "header, rule and one line per method:\n" << md;
+    // Points no method accepts are bad input of the whole comparison.
+    PointList repeated(4, 2);
+    repeated << 0, 0, 1, 1, 1, 1, 2, 0;
+    EXPECT_THROW(compare_methods(repeated, o), InvalidInput);
+}

@@ -103,6 +103,9 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
     const char* who = "cagd::compare::compare_methods";
     if (points.cols() != 2 && points.cols() != 3) fail_input(who, "compares planar or space curves: needs 2 or 3 columns (x, y[, z]), got " + std::to_string(points.cols()));
     if (points.rows() < 2) fail_input(who, "needs at least 2 points, got " + std::to_string(points.rows()));
+    // What no method could accept is bad input of the whole comparison (finite coordinates, no two
+    // consecutive points equal); what one method refuses beyond that is that method's row.
+    require_valid_points(points, 2, true, options.closed, who);
     std::vector<methods::Configuration> configurations;
     for (const std::string& name : options.methods) configurations.push_back(methods::find_configuration(name));
     if (options.methods.empty()) configurations = methods::configurations();
@@ -116,11 +119,18 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
             return c;
         }
         const auto start = std::chrono::steady_clock::now();
-        InterpolationResult r = methods::interpolate(configuration, points, options.closed);
+        InterpolationResult r;
+        try {
+            r = methods::interpolate(configuration, points, options.closed);
+        } catch (const InvalidInput& e) {  // this method refuses these points (Boost's Catmull–Rom on 1e-40 spacing): its row says why
+            c.status = "refused";
+            c.note = one_line(e.what());
+            return c;
+        }
         c.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (!r.outcome.ok() || !r.interpolant) {
             c.status = "no result";
-            c.note = r.outcome.message;
+            c.note = one_line(r.outcome.message);
             return c;
         }
         c.interpolant = std::move(r.interpolant);
@@ -136,7 +146,7 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
         } catch (const InvalidInput& e) {  // a sample of zero speed: κ undefined there
             c.length = analysis::arc_length(curve, sampling.quadrature_pieces);
             c.status = "cusp";
-            c.note = e.what();
+            c.note = one_line(e.what());
         }
         if (options.locality && points.rows() >= 3) {
             PointList moved = points;

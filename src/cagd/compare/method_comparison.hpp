@@ -53,7 +53,7 @@ struct ComparisonOptions {
 /// One method's row of the comparison.
 struct MethodComparison {
     std::string method;  ///< the configuration's name
-    std::string status;  ///< "ok", "not applicable", "no result", "cusp"
+    std::string status;  ///< "ok", "not applicable", "refused", "no result", "cusp"
     std::string note;    ///< the reason when status is not ok
     std::optional<Interpolant> interpolant;  ///< the curve, when the method applies and succeeds
     double length = 0.0;  ///< arc length

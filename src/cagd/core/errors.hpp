@@ -31,7 +31,12 @@ struct Outcome {
 /// Full-precision decimal rendering for error messages (17 significant digits).
 std::string full_precision(double value);
 
-/// Throws InvalidInput("<who>: <what>") — the one way library code reports bad input.
+/// `text` as one line: line breaks and tabs become spaces, other control bytes (ESC, NUL, …) are
+/// shown as `\xHH`, trailing blanks are dropped. Bytes of UTF-8 characters are kept.
+std::string one_line(const std::string& text);
+
+/// Throws InvalidInput("<who>: <what>"), `what` made one line (one_line) — the one way library
+/// code reports bad input.
 [[noreturn]] void fail_input(const std::string& who, const std::string& what);
 
 }  // namespace cagd
