@@ -14,7 +14,7 @@ run 1 3 "$dir/np1.txt"
 run 3 1 "$dir/np3.txt"
 cmp "$dir/np2.txt" "$dir/np1.txt" || { echo "FAIL: 2 ranks and 1 rank x 3 threads differ"; exit 1; }
 cmp "$dir/np3.txt" "$dir/np1.txt" || { echo "FAIL: 3 ranks differ"; exit 1; }
-[ "$(wc -l < "$dir/np2.txt")" -eq $((6 * 6 * 8 + 2)) ] || { echo "FAIL: row count"; exit 1; }
+[ "$(wc -l < "$dir/np2.txt")" -eq $((6 * 6 * 8 + 3)) ] || { echo "FAIL: row count (header, column names, one row per node, checksum)"; exit 1; }
 "$prog" --n-theta 1 --n-phi 8 --out "$dir/bad.txt" > "$dir/out" 2> "$dir/err"; code=$?
 [ "$code" -eq 2 ] && [ "$(wc -l < "$dir/err")" -eq 1 ] && [ ! -e "$dir/bad.txt" ] || { echo "FAIL: bad grid must exit 2 with one line (exit $code)"; cat "$dir/err"; exit 1; }
 # The output is the command's (core/output_file.hpp): - is standard output, a directory is refused

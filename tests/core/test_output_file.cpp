@@ -15,26 +15,13 @@
 #include "cagd/core/output_file.hpp"
 
 #include "../support/messages.hpp"
+#include "../support/scratch_directory.hpp"
 
 using namespace cagd;
 using cagd::test::invalid_input_message;
 namespace fs = std::filesystem;
 
 namespace {
-
-// A fresh directory for one test, removed with it.
-struct Scratch {
-    fs::path dir;
-    Scratch() {
-        std::string pattern = (fs::temp_directory_path() / "cagd-output-test-XXXXXX").string();
-        dir = ::mkdtemp(pattern.data());
-    }
-    ~Scratch() {
-        std::error_code ec;
-        fs::remove_all(dir, ec);
-    }
-    std::string path(const std::string& name) const { return (dir / name).string(); }
-};
 
 std::string contents(const std::string& path) {
     std::ifstream in(path);
@@ -53,7 +40,7 @@ int temporaries_in(const fs::path& dir) {
 }  // namespace
 
 TEST(OutputFile, CommitPublishesAndKeepsTheReplacedFilesMode) {
-    Scratch s;
+    cagd::test::ScratchDirectory s;
     const std::string f = s.path("out.csv");
     {
         std::ofstream(f) << "old\n";
@@ -72,7 +59,7 @@ TEST(OutputFile, CommitPublishesAndKeepsTheReplacedFilesMode) {
 }
 
 TEST(OutputFile, WithoutCommitTheOldFileStaysAndNothingIsLeft) {
-    Scratch s;
+    cagd::test::ScratchDirectory s;
     const std::string f = s.path("out.csv");
     {
         std::ofstream(f) << "old\n";
@@ -86,7 +73,7 @@ TEST(OutputFile, WithoutCommitTheOldFileStaysAndNothingIsLeft) {
 }
 
 TEST(OutputFile, ALinkKeepsPointingWhereItDidAndItsTargetIsReplaced) {
-    Scratch s;
+    cagd::test::ScratchDirectory s;
     {
         std::ofstream(s.path("target.csv")) << "old\n";
     }
@@ -99,7 +86,7 @@ TEST(OutputFile, ALinkKeepsPointingWhereItDidAndItsTargetIsReplaced) {
 }
 
 TEST(OutputFile, BadPlacesAreRefusedWhenTheOutputIsMade) {
-    Scratch s;
+    cagd::test::ScratchDirectory s;
     fs::create_symlink("b", s.path("a"));
     fs::create_symlink("a", s.path("b"));
     const std::string loop = invalid_input_message([&] { OutputFile out(s.path("a")); });
@@ -128,7 +115,7 @@ TEST(OutputFile, AFailedWriteNamesThePathAndTheReason) {
 }
 
 TEST(OutputDirectory, PublishesItsFilesTogetherAndReplacesPlantedLinks) {
-    Scratch s;
+    cagd::test::ScratchDirectory s;
     const std::string target = s.path("result");
     {
         OutputDirectory out(target);
@@ -163,7 +150,7 @@ TEST(OutputDirectory, PublishesItsFilesTogetherAndReplacesPlantedLinks) {
 }
 
 TEST(OutputDirectory, WithoutCommitNothingIsPublishedOrLeft) {
-    Scratch s;
+    cagd::test::ScratchDirectory s;
     {
         OutputDirectory out(s.path("result"));
         OutputFile f(out.staged("a.csv"));
@@ -180,7 +167,7 @@ TEST(OutputDirectory, WithoutCommitNothingIsPublishedOrLeft) {
 }
 
 TEST(OutputFile, SignalCleanupRemovesEveryRegisteredTemporary) {
-    Scratch s;
+    cagd::test::ScratchDirectory s;
     OutputFile a(s.path("a.csv"));
     OutputDirectory d(s.path("folder"));
     OutputFile staged(d.staged("x.csv"));

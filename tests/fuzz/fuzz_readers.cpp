@@ -1,5 +1,7 @@
 // libFuzzer target: every reader of user input on arbitrary bytes. The first byte picks the reader
-// (modulo 7), the rest is its text:
+// (a byte from 0xF0 up: the table files, 0xF0 planar and 0xF1 space, with their checksum line
+// appended by this harness so that the value checks behind it are reached; otherwise modulo 7),
+// the rest is its text:
 //   0 points (core/point_csv)   1 values (λ files)   2 numeric tables (curve CSV of cagd analyze)
 //   3 m-vectors (sb2_locality)  4 knot-difference lists (degree 2 or 3)   5 span-shape lists
 //   6 method parameters: the registry's typed options of a method (second byte), "name=value" lines
@@ -12,9 +14,16 @@
 #include <sstream>
 #include <string>
 
+#include <unistd.h>
+
+#include <fstream>
+
+#include "cagd/core/checksum.hpp"
 #include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
 #include "cagd/core/point_csv.hpp"
+#include "cagd/fairness/pseudo_energy_table.hpp"
+#include "cagd/fairness/space_pseudo_energy_table.hpp"
 #include "cagd/intrinsic/curvature_profile_design.hpp"
 #include "cagd/intrinsic/knot_difference_list.hpp"
 #include "cagd/locality/locality_spline.hpp"
@@ -23,8 +32,25 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     using namespace cagd;
     if (size < 1) return 0;
-    const int reader = data[0] % 7;
     const std::string text(reinterpret_cast<const char*>(data + 1), size - 1);
+    if (data[0] >= 0xF0) {  // a table file: loaded from a file of this process
+        static const std::string path = "/tmp/cagd-fuzz-table-" + std::to_string(::getpid()) + ".txt";
+        static const struct Remove {
+            ~Remove() { ::unlink(path.c_str()); }
+        } remove_at_exit;
+        std::ofstream(path, std::ios::binary) << text << checksum_line(text);
+        try {
+            if (data[0] & 1) {
+                const fairness::SpacePseudoEnergyTable t = fairness::SpacePseudoEnergyTable::load(path);
+                if (t.grid().n_theta < 2) std::abort();
+            } else {
+                const fairness::PseudoEnergyTable t = fairness::PseudoEnergyTable::load(path);
+                if (t.grid().n < 2 || t.grid().n > fairness::kMaxTableGrid) std::abort();
+            }
+        } catch (const InvalidInput&) {}
+        return 0;
+    }
+    const int reader = data[0] % 7;
     std::istringstream in(text);
     try {
         switch (reader) {

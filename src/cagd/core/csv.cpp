@@ -1,7 +1,10 @@
 #include "cagd/core/csv.hpp"
 
 #include <cctype>
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
+#include <limits>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -55,26 +58,43 @@ std::string format_number(double value, int significant) {
     return buf;
 }
 
+bool parse_decimal(const std::string& text, double& value) {
+    if (text.empty()) return false;
+    errno = 0;
+    char* end = nullptr;
+    const double v = std::strtod(text.c_str(), &end);
+    if (end != text.c_str() + text.size()) return false;
+    // ERANGE: an underflow keeps the subnormal (or 0) strtod returns, an overflow reads as ±inf.
+    value = errno == ERANGE && std::abs(v) == HUGE_VAL ? std::copysign(std::numeric_limits<double>::infinity(), v) : v;
+    return true;
+}
+
+bool read_line(std::istream& in, std::string& line, const std::string& source, int line_no) {
+    line.clear();
+    std::streambuf* buf = in.rdbuf();
+    if (!buf || !in.good()) return false;
+    for (;;) {
+        const std::streambuf::int_type c = buf->sbumpc();
+        if (std::streambuf::traits_type::eq_int_type(c, std::streambuf::traits_type::eof())) {
+            in.setstate(std::ios::eofbit);
+            return !line.empty();
+        }
+        const char ch = std::streambuf::traits_type::to_char_type(c);
+        if (ch == '\n') return true;
+        if (line.size() >= kMaxLineBytes)
+            fail_input("cagd::read_line", source + ":" + std::to_string(line_no) + ": the line is longer than " + std::to_string(kMaxLineBytes) + " bytes (at most 1 MiB a line)");
+        line += ch;
+    }
+}
+
 double parse_number(const std::string& text) {
     const auto fail = [&]() -> double { fail_input("cagd::parse_number", "'" + text + "' is not a number or fraction a/b"); };
-    if (text.empty()) return fail();
     const auto slash = text.find('/');
-    try {
-        std::size_t used = 0;
-        if (slash == std::string::npos) {
-            const double v = std::stod(text, &used);
-            return used == text.size() ? v : fail();
-        }
-        const std::string a = text.substr(0, slash), b = text.substr(slash + 1);
-        std::size_t ua = 0, ub = 0;
-        const double num = std::stod(a, &ua), den = std::stod(b, &ub);
-        if (ua != a.size() || ub != b.size() || den == 0.0) return fail();
-        return num / den;
-    } catch (const std::invalid_argument&) {
-        return fail();
-    } catch (const std::out_of_range&) {
-        return fail();
-    }
+    double v = 0.0;
+    if (slash == std::string::npos) return parse_decimal(text, v) ? v : fail();
+    double num = 0.0, den = 0.0;
+    if (!parse_decimal(text.substr(0, slash), num) || !parse_decimal(text.substr(slash + 1), den) || den == 0.0) return fail();
+    return num / den;
 }
 
 CsvWriter::CsvWriter(const std::string& path, const std::vector<std::string>& header) : path_(path), out_(path), columns_(header.size()) {
@@ -158,7 +178,7 @@ NumericTable read_numeric_table(std::istream& stream, const std::string& name) {
     NumericTable t;
     std::string line;
     int line_no = 0;
-    while (std::getline(stream, line)) {
+    while (read_line(stream, line, name, line_no + 1)) {
         line = clean_csv_line(std::move(line), ++line_no);
         if (line.empty()) continue;
         const std::vector<std::string> fields = split_fields(line);

@@ -16,6 +16,18 @@ std::string format_number(double value, int significant = 10);
 /// Parses a decimal or an exact fraction "a/b" (reference files print 1/6 as 1/6).
 /// Throws InvalidInput naming the text.
 double parse_number(const std::string& text);
+/// The whole of `text` as a double (strtod's syntax, "nan" and "inf" included): true and `value`
+/// set, or false. Every finite double is a number, subnormals (1e-310) included; a magnitude beyond
+/// the largest double reads as ±inf (which the readers then refuse as not finite).
+bool parse_decimal(const std::string& text, double& value);
+
+/// The longest line a reader accepts (1 MiB): a record of a point or a table row is far shorter,
+/// and a stream without line breaks (/dev/zero) is refused instead of growing one line until
+/// memory runs out.
+inline constexpr std::size_t kMaxLineBytes = std::size_t{1} << 20;
+/// The next line of `in` without its '\n' (std::getline bounded by kMaxLineBytes): false at the
+/// end of the stream; InvalidInput naming `source`:`line_no` for a longer line.
+bool read_line(std::istream& in, std::string& line, const std::string& source, int line_no);
 
 /// The record rules of every reader (core/point_csv.hpp): a line with its byte-order mark (line 1),
 /// CR, '#' comment and surrounding blanks removed; its comma-separated fields, trimmed; whether a

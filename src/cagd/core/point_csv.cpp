@@ -12,24 +12,13 @@ namespace cagd {
 
 namespace {
 
-bool parse_double(const std::string& s, double& v) {
-    if (s.empty()) return false;
-    std::size_t used = 0;
-    try {
-        v = std::stod(s, &used);
-    } catch (const std::exception&) {
-        return false;
-    }
-    return used == s.size();
-}
-
 // Records of min_cols..max_cols finite numbers by the rules of point_csv.hpp.
 PointList read_number_rows(std::istream& in, const std::string& name, std::size_t min_cols, std::size_t max_cols, const std::string& who, const std::string& what) {
     std::vector<std::vector<double>> rows;
     std::string line;
     int line_no = 0;
     bool first_record = true;
-    while (std::getline(in, line)) {
+    while (read_line(in, line, name, line_no + 1)) {
         line = clean_csv_line(std::move(line), ++line_no);
         if (line.empty()) continue;
         const std::vector<std::string> fields = split_fields(line);
@@ -38,7 +27,7 @@ PointList read_number_rows(std::istream& in, const std::string& name, std::size_
         bool numeric = true, names = true;
         for (const auto& field : fields) {
             double v = 0;
-            numeric = numeric && parse_double(field, v);
+            numeric = numeric && parse_decimal(field, v);
             names = names && is_column_name(field);
             values.push_back(v);
         }
@@ -48,7 +37,7 @@ PointList read_number_rows(std::istream& in, const std::string& name, std::size_
         if (!numeric) {
             for (const auto& field : fields) {
                 double v = 0;
-                if (!parse_double(field, v))
+                if (!parse_decimal(field, v))
                     fail_input(who, where + "'" + excerpt(field) + "' in '" + excerpt(line) + "' is not a number (" + what +
                                         (line_no == 1 || rows.empty() ? "; a header line has names only" : "") + ")");
             }

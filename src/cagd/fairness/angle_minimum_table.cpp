@@ -13,6 +13,8 @@
 #include <sstream>
 #include <thread>
 
+#include "cagd/core/checksum.hpp"
+#include "cagd/core/csv.hpp"
 #include "cagd/core/file_lock.hpp"
 #include "cagd/core/output_file.hpp"
 #include "cagd/core/parallel.hpp"
@@ -75,12 +77,26 @@ AngleMinimumTable AngleMinimumTable::load_or_build(const std::string& path, cons
 }
 
 AngleMinimumTable AngleMinimumTable::load_or_build(const std::string& path, const AngleGrid& grid, const PseudoEnergyTable* scan_source, int threads) {
+    // The cache file: a header line, the column names, one row per node, the checksum line
+    // (core/checksum.hpp). A damaged, foreign or stale file, or one whose values leave their domain
+    // (a node angle off the grid, θ1 outside [−π, π], J not finite and ≥ 0 where the status is ok),
+    // is rebuilt.
     std::ostringstream header;
-    header << "# cagd pseudo_energy angle-minimum table format 1 grid " << grid.n << " placement " << to_string(grid.placement);
+    header << "# cagd pseudo_energy angle-minimum table format 2 grid " << grid.n << " placement " << to_string(grid.placement);
     const auto try_load = [&]() -> std::optional<AngleMinimumTable> {
-        std::ifstream in(path);
+        std::ifstream file(path, std::ios::binary);
+        if (!file) return std::nullopt;
+        std::ostringstream whole;
+        whole << file.rdbuf();
+        const std::string text = whole.str();
+        std::istringstream in;
+        try {
+            in.str(std::string(checked_content(text, path)));
+        } catch (const InvalidInput&) {
+            return std::nullopt;
+        }
         std::string line;
-        if (!(in && std::getline(in, line) && line == header.str() && std::getline(in, line))) return std::nullopt;
+        if (!(std::getline(in, line) && line == header.str() && std::getline(in, line))) return std::nullopt;
         AngleMinimumTable t;
         t.grid_ = grid;
         t.axis_ = detail::PeriodicAxis(grid.nodes());
@@ -89,29 +105,31 @@ AngleMinimumTable AngleMinimumTable::load_or_build(const std::string& path, cons
             std::istringstream row(line);
             std::string f[4];
             for (std::string& x : f)
-                if (!std::getline(row, x, ',')) break;
+                if (!std::getline(row, x, ',')) return std::nullopt;
             AngleMinimum m;
-            char* end = nullptr;
-            m.theta = std::strtod(f[0].c_str(), &end);
-            m.theta1 = std::strtod(f[1].c_str(), &end);
-            m.pseudo_energy = std::strtod(f[2].c_str(), &end);
-            m.outcome.status = static_cast<Status>(std::atoi(f[3].c_str()));
+            double status = 0;
+            if (!parse_decimal(f[0], m.theta) || !parse_decimal(f[1], m.theta1) || !parse_decimal(f[2], m.pseudo_energy) || !parse_decimal(f[3], status)) return std::nullopt;
+            if (!(status >= 0 && status <= static_cast<int>(Status::not_representable) && status == std::floor(status))) return std::nullopt;
+            m.outcome.status = static_cast<Status>(static_cast<int>(status));
             std::getline(row, m.outcome.message);
-            if (m.theta != t.axis_.nodes[t.values_.size()]) break;  // another grid: rebuild
+            if (m.theta != t.axis_.nodes[t.values_.size()]) return std::nullopt;  // another grid
+            if (m.outcome.ok() && !(std::isfinite(m.pseudo_energy) && m.pseudo_energy >= 0 && m.theta1 >= -std::numbers::pi - 1e-12 && m.theta1 <= std::numbers::pi + 1e-12))
+                return std::nullopt;
             t.values_.push_back(m);
         }
-        if (t.values_.size() != t.axis_.nodes.size()) return std::nullopt;
+        if (t.values_.size() != t.axis_.nodes.size() || std::getline(in, line)) return std::nullopt;
         return t;
     };
     return load_or_build_locked(path, try_load, [&] {
         const AngleMinimumTable t = build(grid, scan_source, threads);
-        OutputFile out(path, "table");  // core/output_file.hpp: written whole or not at all
-        out.stream() << header.str() << "\ntheta,theta1,J,status,message\n";
+        std::string text = header.str() + "\ntheta,theta1,J,status,message\n";
         char buf[128];
         for (const AngleMinimum& m : t.values_) {
             std::snprintf(buf, sizeof buf, "%.17g,%.17g,%.17g,%d,", m.theta, m.theta1, m.pseudo_energy, static_cast<int>(m.outcome.status));
-            out.stream() << buf << m.outcome.message << "\n";
+            text += buf + one_line(m.outcome.message) + "\n";
         }
+        OutputFile out(path, "table");  // core/output_file.hpp: written whole or not at all
+        out.stream() << text << checksum_line(text);
         out.commit();
         return t;
     });

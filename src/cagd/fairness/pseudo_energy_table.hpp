@@ -44,6 +44,10 @@ namespace cagd::fairness {
 
 /// Where the N nodes of each axis lie (see above).
 enum class NodePlacement { periodic, endpoints, midpoints };
+
+/// The largest grid a table file may declare (a 0.5° grid; `cagd energy-table --grid` has the same
+/// limit): a load checks it before it reads a row.
+inline constexpr int kMaxTableGrid = 720;
 /// "periodic", "endpoints" or "midpoints".
 const char* to_string(NodePlacement p);
 NodePlacement parse_node_placement(const std::string& text);  ///< throws InvalidInput

@@ -1,24 +1,28 @@
 // The text file of a PseudoEnergyTable (save, load, load_or_build): the format of `cagd
 // energy-table` and of the build's table cache. Line 1: "# cagd pseudo_energy table format F grid N
-// placement P method M"; then one row per node (i, j), j fastest: theta0, theta1, J, r0, r1, L, S,
-// type and the runner-up minimum, numbers at %.17g (a load equals a build bit for bit), inf for
-// the format's marks (undefined nodes, no second minimum). F is bumped whenever a minimiser or the
-// layout changes, so a stale cache is rebuilt and a foreign file refused.
+// placement P method M"; line 2 the column names; then one row per node (i, j), j fastest: theta0,
+// theta1, J, r0, r1, L, S, E, type, local minima, runner-up J, status and the runner-up's r0, r1,
+// numbers at %.17g (a load equals a build bit for bit), inf for the format's marks (undefined nodes,
+// no second minimum); last the checksum line of core/checksum.hpp. F is bumped whenever a minimiser
+// or the layout changes, so a stale cache is rebuilt and a foreign file refused.
+//
+// A load checks, before it trusts a value: the checksum; 2 ≤ N ≤ kMaxTableGrid; exactly N² rows,
+// each node (i, j) once, its angles those of the grid; every field a number, NaN nowhere; a node of
+// status ok has type c or s, finite J ≥ 0, E ≥ 0 and S, magnitudes r0, r1 > 0 and length L ≥ 1 (the
+// unit chord), a runner-up J not below J to rounding (or inf); an undefined node (status not ok)
+// has type x.
+// Memory grows with the rows read, never with what the header declares.
 #include "cagd/fairness/pseudo_energy_table.hpp"
 
-#include <unistd.h>
-#include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <fstream>
-#include <limits>
-#include <numbers>
 #include <optional>
 #include <sstream>
-#include <thread>
+#include <string_view>
 
+#include "cagd/core/checksum.hpp"
+#include "cagd/core/csv.hpp"
 #include "cagd/core/file_lock.hpp"
 #include "cagd/core/output_file.hpp"
 
@@ -26,19 +30,20 @@ namespace cagd::fairness {
 
 namespace {
 
-constexpr int kCacheFormat = 5;  // 5: the runner-up's r0, r1 (TableReading::runner_up_within)
+// 5: the runner-up's r0, r1 (TableReading::runner_up_within); 6: the checksum line.
+constexpr int kTableFileFormat = 6;
 
 }  // namespace
 
 std::string PseudoEnergyTable::header_line() const {
     std::ostringstream s;
-    s << "# cagd pseudo_energy table format " << kCacheFormat << " grid " << grid_.n << " placement " << to_string(grid_.placement) << " method " << to_string(method_);
+    s << "# cagd pseudo_energy table format " << kTableFileFormat << " grid " << grid_.n << " placement " << to_string(grid_.placement) << " method " << to_string(method_);
     return s.str();
 }
 
 void PseudoEnergyTable::save(std::ostream& out) const {
-    out << header_line() << "\n";
-    out << "i,j,theta0,theta1,J,r0,r1,L,S,E,type,local_minima,runner_up,status,runner_up_r0,runner_up_r1\n";
+    std::string text = header_line() + "\n";
+    text += "i,j,theta0,theta1,J,r0,r1,L,S,E,type,local_minima,runner_up,status,runner_up_r0,runner_up_r1\n";
     char buf[512];
     const int n = grid_.n;
     for (int i = 0; i < n; ++i)
@@ -47,8 +52,9 @@ void PseudoEnergyTable::save(std::ostream& out) const {
             std::snprintf(buf, sizeof buf, "%d,%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%s,%d,%.17g,%d,%.17g,%.17g\n", i, j, m.theta0, m.theta1, m.pseudo_energy, m.r0,
                           m.r1, m.length, m.area, m.strain_energy, to_string(m.type), m.local_minima, m.runner_up, static_cast<int>(m.outcome.status), m.runner_up_r0,
                           m.runner_up_r1);
-            out << buf;
+            text += buf;
         }
+    out << text << checksum_line(text);
 }
 
 void PseudoEnergyTable::save(const std::string& path) const {
@@ -62,55 +68,121 @@ void PseudoEnergyTable::save(const std::string& path) const {
 
 namespace {
 
-// Reads the node rows after the header line; true when all n² rows were read.
-bool read_node_rows(std::istream& in, int n, std::vector<PseudoEnergyMinimum>& values) {
+std::string read_whole(const std::string& path, const char* who) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) fail_input(who, "cannot open '" + path + "'");
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+// The table in `text` (the file `source`), every value checked as the header comment says.
+struct ParsedTable {
+    AngleGrid grid;
+    TableMethod method = TableMethod::fast;
+    std::vector<PseudoEnergyMinimum> values;
+};
+
+ParsedTable parse_table(const std::string& text, const std::string& source) {
+    const char* who = "cagd::fairness::PseudoEnergyTable::load";
+    const std::string_view content = checked_content(text, source);
+    std::istringstream in{std::string(content)};
     std::string line;
-    if (!std::getline(in, line)) return false;  // column names
-    values.assign(static_cast<std::size_t>(n * n), PseudoEnergyMinimum{});
-    long read = 0;
+    std::getline(in, line);
+    std::istringstream h(line);
+    std::string hash, cagd, paper, table, format, grid_word, placement_word, placement, method_word, method;
+    int version = 0, n = 0;
+    h >> hash >> cagd >> paper >> table >> format >> version >> grid_word >> n >> placement_word >> placement >> method_word >> method;
+    if (hash != "#" || grid_word != "grid" || placement_word != "placement" || method_word != "method")
+        fail_input(who, "'" + source + "' is not a table written by cagd energy-table (first line: '" + excerpt(line) + "')");
+    if (version != kTableFileFormat)
+        fail_input(who, "'" + source + "' has table format " + std::to_string(version) + ", this build reads format " + std::to_string(kTableFileFormat) +
+                            "; rebuild it with cagd energy-table");
+    if (n < 2 || n > kMaxTableGrid) fail_input(who, "'" + source + "': grid " + std::to_string(n) + "; it must be in [2, " + std::to_string(kMaxTableGrid) + "]");
+    ParsedTable t;
+    t.grid = AngleGrid{n, parse_node_placement(placement)};
+    if (method != "fast" && method != "reference" && method != "nlopt") fail_input(who, "'" + source + "': unknown method '" + excerpt(method) + "'");
+    t.method = method == "reference" ? TableMethod::reference : method == "nlopt" ? TableMethod::nlopt : TableMethod::fast;
+    const std::vector<double> nodes = t.grid.nodes();
+    std::getline(in, line);  // column names
+    std::vector<char> seen(static_cast<std::size_t>(n) * static_cast<std::size_t>(n), 0);
+    std::vector<std::pair<std::size_t, PseudoEnergyMinimum>> rows;
+    int line_no = 2;
+    static const char* const kColumns[16] = {"i", "j", "theta0", "theta1", "J", "r0", "r1", "L", "S", "E", "type", "local_minima", "runner_up", "status", "runner_up_r0", "runner_up_r1"};
     while (std::getline(in, line)) {
-        std::istringstream s(line);
-        std::string f[16];
-        for (auto& x : f) std::getline(s, x, ',');
-        try {
-            const int i = std::stoi(f[0]), j = std::stoi(f[1]);
-            if (i < 0 || j < 0 || i >= n || j >= n) return false;
-            PseudoEnergyMinimum& m = values[static_cast<std::size_t>(i * n + j)];
-            m.theta0 = std::stod(f[2]);
-            m.theta1 = std::stod(f[3]);
-            m.pseudo_energy = std::stod(f[4]);
-            m.r0 = std::stod(f[5]);
-            m.r1 = std::stod(f[6]);
-            m.length = std::stod(f[7]);
-            m.area = std::stod(f[8]);
-            m.strain_energy = std::stod(f[9]);
-            m.type = f[10] == "c" ? SegmentType::c : f[10] == "s" ? SegmentType::s : SegmentType::x;
-            m.local_minima = std::stoi(f[11]);
-            m.runner_up = std::stod(f[12]);
-            m.outcome.status = static_cast<Status>(std::stoi(f[13]));
-            m.runner_up_r0 = std::stod(f[14]);
-            m.runner_up_r1 = std::stod(f[15]);
-        } catch (const std::exception&) {
-            return false;
+        ++line_no;
+        const std::string where = "'" + source + "':" + std::to_string(line_no) + ": ";
+        const std::vector<std::string> f = split_fields(line);
+        if (f.size() != 16) fail_input(who, where + std::to_string(f.size()) + " fields, a node row has 16");
+        double v[16] = {};
+        for (int k = 0; k < 16; ++k) {
+            if (k == 10) continue;  // the type
+            if (!parse_decimal(f[static_cast<std::size_t>(k)], v[k]) || std::isnan(v[k]))
+                fail_input(who, where + kColumns[k] + " '" + excerpt(f[static_cast<std::size_t>(k)]) + "' is not a number");
         }
-        ++read;
+        const auto bad = [&](int k, const std::string& rule) { fail_input(who, where + kColumns[k] + " = " + f[static_cast<std::size_t>(k)] + ": " + rule); };
+        const auto integer = [&](int k, double lo, double hi) {
+            if (!(v[k] >= lo && v[k] <= hi && v[k] == std::floor(v[k]))) bad(k, "an integer in [" + format_number(lo) + ", " + format_number(hi) + "] is expected");
+            return static_cast<int>(v[k]);
+        };
+        const int i = integer(0, 0, n - 1), j = integer(1, 0, n - 1);
+        const std::size_t index = static_cast<std::size_t>(i) * static_cast<std::size_t>(n) + static_cast<std::size_t>(j);
+        if (seen[index]) fail_input(who, where + "node (" + std::to_string(i) + ", " + std::to_string(j) + ") is given twice");
+        seen[index] = 1;
+        if (std::abs(v[2] - nodes[static_cast<std::size_t>(i)]) > 1e-12) bad(2, "the grid's angle of node i is " + full_precision(nodes[static_cast<std::size_t>(i)]));
+        if (std::abs(v[3] - nodes[static_cast<std::size_t>(j)]) > 1e-12) bad(3, "the grid's angle of node j is " + full_precision(nodes[static_cast<std::size_t>(j)]));
+        PseudoEnergyMinimum m;
+        m.theta0 = v[2], m.theta1 = v[3], m.pseudo_energy = v[4], m.r0 = v[5], m.r1 = v[6], m.length = v[7], m.area = v[8], m.strain_energy = v[9];
+        const std::string& type = f[10];
+        if (type != "c" && type != "s" && type != "x") bad(10, "c, s or x is expected");
+        m.type = type == "c" ? SegmentType::c : type == "s" ? SegmentType::s : SegmentType::x;
+        m.local_minima = integer(11, 0, 1e6);
+        m.runner_up = v[12];
+        m.outcome.status = static_cast<Status>(integer(13, 0, static_cast<int>(Status::not_representable)));
+        m.runner_up_r0 = v[14], m.runner_up_r1 = v[15];
+        if (m.outcome.ok()) {
+            if (m.type == SegmentType::x) bad(10, "a node of status ok has type c or s");
+            if (!(std::isfinite(m.pseudo_energy) && m.pseudo_energy >= 0)) bad(4, "J of a defined node is finite and >= 0");
+            for (int k : {5, 6})
+                if (!(std::isfinite(v[k]) && v[k] > 0)) bad(k, "a tangent magnitude is finite and > 0");
+            if (!(std::isfinite(m.length) && m.length >= 1.0 - 1e-9)) bad(7, "the length of a unit-chord segment is finite and >= 1");
+            if (!std::isfinite(m.area)) bad(8, "S is finite");
+            if (!(std::isfinite(m.strain_energy) && m.strain_energy >= 0)) bad(9, "E is finite and >= 0");
+            if (!(m.runner_up >= m.pseudo_energy - 1e-12 * (1 + m.pseudo_energy))) bad(12, "the runner-up minimum is not below J, to rounding (inf: none)");
+            for (int k : {14, 15})
+                if (!(std::isfinite(v[k]) && v[k] >= 0)) bad(k, "a runner-up magnitude is finite and >= 0");
+        } else {
+            if (m.type != SegmentType::x) bad(10, "an undefined node (status not ok) has type x");
+            if (!(m.pseudo_energy >= 0)) bad(4, "J is >= 0 or inf");
+        }
+        rows.emplace_back(index, m);
     }
-    return read == static_cast<long>(n) * n;
+    if (rows.size() != seen.size())
+        fail_input(who, "'" + source + "': " + std::to_string(rows.size()) + " node rows, the grid " + std::to_string(n) + " has " + std::to_string(seen.size()));
+    t.values.assign(seen.size(), PseudoEnergyMinimum{});
+    for (auto& [index, m] : rows) t.values[index] = std::move(m);
+    return t;
 }
 
 }  // namespace
 
 PseudoEnergyTable PseudoEnergyTable::load_or_build(const std::string& path, const AngleGrid& grid, TableMethod method, int threads) {
     const auto try_load = [&]() -> std::optional<PseudoEnergyTable> {
-        PseudoEnergyTable t;
-        t.grid_ = grid;
-        t.method_ = method;
-        t.axis_ = detail::PeriodicAxis(grid.nodes());
-        std::ifstream in(path);
-        std::string line;
-        if (!(in && std::getline(in, line) && line == t.header_line() && read_node_rows(in, grid.n, t.values_))) return std::nullopt;
-        t.pack();
-        return t;
+        std::ifstream probe(path);
+        if (!probe) return std::nullopt;
+        try {
+            ParsedTable p = parse_table(read_whole(path, "cagd::fairness::PseudoEnergyTable::load_or_build"), path);
+            if (p.grid.n != grid.n || p.grid.placement != grid.placement || p.method != method) return std::nullopt;  // another table: rebuilt
+            PseudoEnergyTable t;
+            t.grid_ = grid;
+            t.method_ = method;
+            t.axis_ = detail::PeriodicAxis(grid.nodes());
+            t.values_ = std::move(p.values);
+            t.pack();
+            return t;
+        } catch (const InvalidInput&) {  // damaged, or of another format: rebuilt
+            return std::nullopt;
+        }
     };
     return load_or_build_locked(path, try_load, [&] {
         PseudoEnergyTable built = build(grid, method, threads, method == TableMethod::fast);
@@ -120,26 +192,12 @@ PseudoEnergyTable PseudoEnergyTable::load_or_build(const std::string& path, cons
 }
 
 PseudoEnergyTable PseudoEnergyTable::load(const std::string& path) {
-    const char* who = "cagd::fairness::PseudoEnergyTable::load";
-    std::ifstream in(path);
-    if (!in) fail_input(who, "cannot open '" + path + "'");
-    std::string line;
-    std::getline(in, line);
-    std::istringstream h(line);
-    std::string hash, cagd, paper, table, format, grid_word, placement_word, placement, method_word, method;
-    int version = 0, n = 0;
-    h >> hash >> cagd >> paper >> table >> format >> version >> grid_word >> n >> placement_word >> placement >> method_word >> method;
-    if (hash != "#" || grid_word != "grid" || placement_word != "placement" || method_word != "method")
-        fail_input(who, "'" + path + "' is not a table written by cagd energy-table (first line: '" + line + "')");
-    if (version != kCacheFormat)
-        fail_input(who, "'" + path + "' has table format " + std::to_string(version) + ", this build reads format " + std::to_string(kCacheFormat) +
-                            "; rebuild it with cagd energy-table");
-    if (n < 2) fail_input(who, "'" + path + "': grid must be >= 2, got " + std::to_string(n));
+    ParsedTable p = parse_table(read_whole(path, "cagd::fairness::PseudoEnergyTable::load"), path);
     PseudoEnergyTable t;
-    t.grid_ = AngleGrid{n, parse_node_placement(placement)};
-    t.method_ = method == "reference" ? TableMethod::reference : method == "nlopt" ? TableMethod::nlopt : TableMethod::fast;
+    t.grid_ = p.grid;
+    t.method_ = p.method;
     t.axis_ = detail::PeriodicAxis(t.grid_.nodes());
-    if (!read_node_rows(in, n, t.values_)) fail_input(who, "'" + path + "': expected " + std::to_string(n * n) + " well-formed node rows");
+    t.values_ = std::move(p.values);
     t.pack();
     return t;
 }

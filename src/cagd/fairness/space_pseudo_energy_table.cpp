@@ -10,6 +10,8 @@
 #include <optional>
 #include <sstream>
 
+#include "cagd/core/checksum.hpp"
+#include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
 #include "cagd/core/file_lock.hpp"
 #include "cagd/core/output_file.hpp"
@@ -19,7 +21,7 @@ namespace cagd::fairness {
 
 namespace {
 
-constexpr int kSpaceTableFormat = 1;
+constexpr int kSpaceTableFormat = 2;  // 2: the checksum line
 const char* const kWho = "cagd::fairness::SpacePseudoEnergyTable";
 
 void require_grid(const SpaceAngleGrid& g) {
@@ -114,15 +116,16 @@ std::string SpacePseudoEnergyTable::header_line() const {
 }
 
 void SpacePseudoEnergyTable::save(std::ostream& out) const {
-    out << header_line() << "\ni,j,k,J,r0,r1,L,type\n";
+    std::string text = header_line() + "\ni,j,k,J,r0,r1,L,type\n";
     char buf[256];
     for (int i = 0; i < grid_.n_theta; ++i)
         for (int j = 0; j < grid_.n_theta; ++j)
             for (int k = 0; k < grid_.n_phi; ++k) {
                 const SpaceTableValue& v = node(i, j, k);
                 std::snprintf(buf, sizeof buf, "%d,%d,%d,%.17g,%.17g,%.17g,%.17g,%s\n", i, j, k, v.pseudo_energy, v.r0, v.r1, v.length, to_string(v.type));
-                out << buf;
+                text += buf;
             }
+    out << text << checksum_line(text);
 }
 
 void SpacePseudoEnergyTable::save(const std::string& path) const {
@@ -131,9 +134,17 @@ void SpacePseudoEnergyTable::save(const std::string& path) const {
     out.commit();
 }
 
+// A load checks, before it trusts a value: the checksum (core/checksum.hpp); the grid (require_grid);
+// exactly n_θ² n_φ rows, each node once; every field a number, NaN nowhere; type c, s or x; a node
+// of type c or s has finite J ≥ 0, magnitudes r0, r1 > 0 and length L ≥ 1 (the unit chord); a node
+// of type x, J ≥ 0 or inf. Memory grows with the rows read, not with what the header declares.
 SpacePseudoEnergyTable SpacePseudoEnergyTable::load(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) fail_input(kWho, "cannot open '" + path + "'");
+    std::ifstream file(path, std::ios::binary);
+    if (!file) fail_input(kWho, "cannot open '" + path + "'");
+    std::ostringstream whole;
+    whole << file.rdbuf();
+    const std::string text = whole.str();
+    std::istringstream in{std::string(checked_content(text, path))};
     std::string line;
     std::getline(in, line);
     std::istringstream h(line);
@@ -141,26 +152,53 @@ SpacePseudoEnergyTable SpacePseudoEnergyTable::load(const std::string& path) {
     int version = 0, n = 0, m = 0;
     h >> hash >> cagd >> space >> pe >> table >> format >> version >> grid_word >> n >> m >> method_word >> method;
     if (hash != "#" || space != "space" || grid_word != "grid" || method_word != "method" || version != kSpaceTableFormat)
-        fail_input(kWho, "'" + path + "' is not a space pseudo-energy table of format " + std::to_string(kSpaceTableFormat) + " (first line: '" + line + "')");
+        fail_input(kWho, "'" + path + "' is not a space pseudo-energy table of format " + std::to_string(kSpaceTableFormat) + " (first line: '" + excerpt(line) + "')");
+    if (method != "fast" && method != "reference") fail_input(kWho, "'" + path + "': unknown method '" + excerpt(method) + "'");
     SpacePseudoEnergyTable t;
     t.grid_ = {n, m};
     require_grid(t.grid_);
     t.method_ = method == "reference" ? TableMethod::reference : TableMethod::fast;
+    std::getline(in, line);  // column names
+    struct Row {
+        long index;
+        SpaceTableValue value;
+    };
+    std::vector<Row> rows;
+    int line_no = 2;
+    while (std::getline(in, line)) {
+        ++line_no;
+        const std::string where = "'" + path + "':" + std::to_string(line_no) + ": ";
+        const std::vector<std::string> f = split_fields(line);
+        if (f.size() != 8) fail_input(kWho, where + std::to_string(f.size()) + " fields, a node row has 8");
+        double v[7] = {};
+        for (int c = 0; c < 7; ++c)
+            if (!parse_decimal(f[static_cast<std::size_t>(c)], v[c]) || std::isnan(v[c])) fail_input(kWho, where + "field " + std::to_string(c + 1) + " '" + excerpt(f[static_cast<std::size_t>(c)]) + "' is not a number");
+        const int limits[3] = {n, n, m};
+        for (int c = 0; c < 3; ++c)
+            if (!(v[c] >= 0 && v[c] < limits[c] && v[c] == std::floor(v[c]))) fail_input(kWho, where + "node index " + f[static_cast<std::size_t>(c)] + " is outside the grid");
+        const std::string& type = f[7];
+        if (type != "c" && type != "s" && type != "x") fail_input(kWho, where + "type '" + excerpt(type) + "': c, s or x is expected");
+        const SpaceTableValue value{v[3], v[4], v[5], v[6], type == "c" ? SegmentType::c : type == "s" ? SegmentType::s : SegmentType::x};
+        if (value.type != SegmentType::x) {
+            if (!(std::isfinite(value.pseudo_energy) && value.pseudo_energy >= 0)) fail_input(kWho, where + "J = " + f[3] + ": J of a defined node is finite and >= 0");
+            if (!(std::isfinite(value.r0) && value.r0 > 0 && std::isfinite(value.r1) && value.r1 > 0)) fail_input(kWho, where + "r0, r1 = " + f[4] + ", " + f[5] + ": finite and > 0");
+            if (!(std::isfinite(value.length) && value.length >= 1.0 - 1e-9)) fail_input(kWho, where + "L = " + f[6] + ": the length of a unit-chord segment is finite and >= 1");
+        } else if (!(value.pseudo_energy >= 0)) {
+            fail_input(kWho, where + "J = " + f[3] + ": >= 0 or inf");
+        }
+        rows.push_back({(static_cast<long>(v[0]) * n + static_cast<long>(v[1])) * m + static_cast<long>(v[2]), value});
+    }
+    if (static_cast<long>(rows.size()) != t.grid_.size())
+        fail_input(kWho, "'" + path + "': " + std::to_string(rows.size()) + " node rows, the grid has " + std::to_string(t.grid_.size()));
     t.theta_ = t.grid_.theta_nodes();
     t.phi_ = t.grid_.phi_nodes();
     t.values_.assign(static_cast<std::size_t>(t.grid_.size()), {});
-    std::getline(in, line);  // column names
-    long rows = 0;
-    while (std::getline(in, line)) {
-        int i = 0, j = 0, k = 0;
-        double jv = 0, r0 = 0, r1 = 0, len = 0;
-        char type[4] = {0};
-        if (std::sscanf(line.c_str(), "%d,%d,%d,%lf,%lf,%lf,%lf,%1s", &i, &j, &k, &jv, &r0, &r1, &len, type) != 8 || i < 0 || j < 0 || k < 0 || i >= n || j >= n || k >= m)
-            fail_input(kWho, "'" + path + "': malformed row " + std::to_string(rows + 3));
-        t.values_[static_cast<std::size_t>(t.index(i, j, k))] = {jv, r0, r1, len, type[0] == 'c' ? SegmentType::c : type[0] == 's' ? SegmentType::s : SegmentType::x};
-        ++rows;
+    std::vector<char> seen(t.values_.size(), 0);
+    for (const Row& r : rows) {
+        if (seen[static_cast<std::size_t>(r.index)]) fail_input(kWho, "'" + path + "': node " + std::to_string(r.index) + " (in i, j, k order) is given twice");
+        seen[static_cast<std::size_t>(r.index)] = 1;
+        t.values_[static_cast<std::size_t>(r.index)] = r.value;
     }
-    if (rows != t.grid_.size()) fail_input(kWho, "'" + path + "': expected " + std::to_string(t.grid_.size()) + " rows, got " + std::to_string(rows));
     return t;
 }
 

@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
-# The `cagd` command's write contract (core/output_file.hpp, docs/command.md): exit 0 only when every
-# byte arrived; a failed write is exit 1 with the old file kept; a bad place is exit 2 before any
-# work; nothing outside the output changes and nothing is left behind, signals included.
-# Usage: tests/cli_writes.sh path/to/cagd
+# The `cagd` command's file contract (docs/command.md). Writes (core/output_file.hpp): exit 0 only
+# when every byte arrived; a failed write is exit 1 with the old file kept; a bad place is exit 2
+# before any work; nothing outside the output changes and nothing is left behind, signals included.
+# Reads: lines of at most 1 MiB, subnormals are numbers, table files checked by their checksum and
+# their values before use, memory bounded by what was read.
+# Usage: tests/cli_files.sh path/to/cagd
 set -u
 cagd=$(realpath "$1")
 dir=$(mktemp -d)
@@ -145,6 +147,32 @@ runs=$((runs + 1))
 expect 141 "a reader that stops (SIGPIPE)" "${PIPESTATUS[0]}"
 no_temporaries "signals"
 
-echo "cli writes: $runs checks, $fails failed"
+# ---- reads that check values ------------------------------------------------------------------------
+timeout 20 "$cagd" interpolate --method cubic-b --in /dev/zero --out z.csv 2> err
+expect 2 "--in /dev/zero (a stream without line breaks)" $?
+grep -q 'longer than' err || fail "--in /dev/zero: $(cat err)"
+printf '0,0\n1,1e-310\n2,0\n3,1\n' > subnormal.csv
+"$cagd" interpolate --method cubic-b --in subnormal.csv --out s.csv 2> err
+expect 0 "a subnormal coordinate is a number" $?
+printf '0,0\n1,\0331\n' > escape.csv
+"$cagd" interpolate --method cubic-b --in escape.csv --out e.csv 2> err
+expect 2 "an ESC byte in a field" $?
+runs=$((runs + 1))
+! grep -q $'\033' err && grep -q '\\x1b' err || fail "an ESC byte is echoed raw: $(cat -v err)"
+"$cagd" energy-table --grid 12 --out t12.txt 2> err
+expect 0 "energy-table --grid 12" $?
+"$cagd" interpolate --method pseudo-spline --table t12.txt --in p.csv --out ps.csv 2> err
+expect 0 "--table a table it wrote" $?
+sed '5s/\(^[0-9]*,[0-9]*,[^,]*,[^,]*,\)[0-9]/\19/' t12.txt > t12_flipped.txt
+cmp -s t12.txt t12_flipped.txt && fail "the test did not flip a digit"
+"$cagd" interpolate --method pseudo-spline --table t12_flipped.txt --in p.csv --out ps.csv 2> err
+expect 2 "--table with one flipped digit" $?
+grep -q "checksum does not match" err || fail "a flipped digit is not named as a checksum mismatch: $(cat err)"
+printf '# cagd pseudo_energy table format 6 grid 6000 placement periodic method fast\nx\n' > huge_header.txt
+prlimit --as=536870912 "$cagd" interpolate --method pseudo-spline --table huge_header.txt --in p.csv --out ps.csv 2> err
+expect 2 "a table whose header declares a huge grid, under 512 MB of address space" $?
+no_temporaries "reads"
+
+echo "cli files: $runs checks, $fails failed"
 echo "$((runs - fails)) passed, $fails failed"
 [ "$fails" -eq 0 ]

@@ -1,0 +1,25 @@
+#pragma once
+/// @file
+/// The digest that every table file of the library carries on its last line, so that a flipped
+/// digit, a truncation or an edit is found on load instead of read as a different table:
+///   # checksum fnv1a64 <16 hexadecimal digits>
+/// FNV-1a (64 bits, offset basis 14695981039346656037, prime 1099511628211) of every byte before
+/// that line. It finds accidental damage; it is not a defence against a deliberate forgery (the
+/// readers' value checks bound what a forged file can do).
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+namespace cagd {
+
+/// FNV-1a, 64 bits, of `bytes`.
+std::uint64_t fnv1a64(std::string_view bytes);
+
+/// The checksum line of `content` (with its '\n').
+std::string checksum_line(std::string_view content);
+
+/// `text` without its last line, which must be the checksum line of the rest: the content a reader
+/// may trust. InvalidInput naming `source` when the line is missing or does not match.
+std::string_view checked_content(std::string_view text, const std::string& source);
+
+}  // namespace cagd
