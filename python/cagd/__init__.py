@@ -21,13 +21,15 @@ The rest of the library
     elastic_line, smooth_curve, elastic_space_curve   Hosaka's smoothing (section 6)
 
 Errors
-    Bad input raises ``ValueError`` with the library's message (naming the value and what is
-    allowed). A numerical outcome for valid input — no solution, no convergence (e.g. the
+    A wrong type raises ``TypeError`` naming the argument (complex points, a string for
+    ``closed``); bad values raise ``ValueError`` with the library's message (naming the value and
+    what is allowed); a failed write (``PseudoEnergyTable.save``) raises ``OSError`` and keeps the
+    old file. A numerical outcome for valid input — no solution, no convergence (e.g. the
     curvature-profile Newton) — raises ``cagd.NoSolution`` (a ``RuntimeError``) from the functions
     that return a result; ``interpolate_result`` returns it as a status instead.
 
 Parameters of a method are given as keyword arguments, with ``_`` for ``-`` in their names
-(``interpolate(p, "s-spline", m=3, ends="free")``); they are checked by the registry exactly as
+(``interpolate(p, "s-spline", m=3, end="bessel")``); they are checked by the registry exactly as
 the command line's options are.
 """
 import numpy as _np
@@ -69,10 +71,35 @@ def methods():
 
 
 def _points(points):
-    a = _np.asarray(points, dtype=float)
+    raw = _np.asarray(points)
+    if _np.iscomplexobj(raw):
+        raise TypeError("points: complex numbers are not coordinates; give real (n, 2) or (n, 3) values")
+    if raw.dtype.kind not in "biuf":
+        raise TypeError(f"points: expected real numbers, got an array of {raw.dtype}")
+    a = raw.astype(float)
     if a.ndim != 2 or a.shape[1] not in (2, 3):
         raise ValueError(f"points: expected an (n, 2) or (n, 3) array, got shape {a.shape}")
     return a
+
+
+def _flag(value, name):
+    """A bool argument: True, False (or numpy's bool); anything else is a TypeError, never truthy."""
+    if isinstance(value, (bool, _np.bool_)):
+        return bool(value)
+    raise TypeError(f"{name}: expected True or False, got {value!r}")
+
+
+def _names(value, name):
+    """A list of names; one string is read as one name (never as its characters)."""
+    if value is None:
+        return []
+    if isinstance(value, str):
+        return [value]
+    names = list(value)
+    for n in names:
+        if not isinstance(n, str):
+            raise TypeError(f"{name}: expected names (str), got {n!r}")
+    return names
 
 
 def interpolate_result(points, method, closed=False, **params):
@@ -81,7 +108,9 @@ def interpolate_result(points, method, closed=False, **params):
     ``message``; ``report`` and ``quantities`` hold what the method reports (e.g. the
     curvature-profile Newton history, the pseudo-spline's table length and area).
     Bad input raises ValueError."""
-    return _cagd._interpolate_result(_points(points), str(method), bool(closed), **params)
+    if not isinstance(method, str):
+        raise TypeError(f"method: expected a method name (str), got {method!r}")
+    return _cagd._interpolate_result(_points(points), method, _flag(closed, "closed"), **params)
 
 
 def interpolate(points, method, closed=False, **params):
@@ -96,14 +125,15 @@ def interpolate(points, method, closed=False, **params):
 
 def compare(points, closed=False, methods=None, locality=True, threads=0):
     """Every method (or the named configurations) on the same planar or space points, measured as
-    by ``cagd compare``: a dict of arrays, one entry per configuration. ``method``, ``status``
-    ("ok", "not applicable", "no result", "cusp") and ``note`` are lists of str; each measure
+    by ``cagd compare``: a dict of arrays, one entry per configuration (``methods``: a list of
+    names, or one name). ``method``, ``status`` ("ok", "not applicable", "refused", "no result",
+    "cusp") and ``note`` are lists of str; each measure
     (length, area, pseudo_energy, bending_energy, curvature_sign_changes, max_abs_curvature,
     max_abs_curvature_derivative, overshoot, spans, locality_footprint, seconds, max_abs_torsion)
     is a ``numpy.ma.MaskedArray``, masked where the measure does not exist (method not applicable,
     no result, a cusp's curvature, an open curve's area; area and curvature_sign_changes for space
     points, max_abs_torsion for planar ones), never NaN."""
-    raw = _cagd._compare(_points(points), bool(closed), list(methods or []), bool(locality), int(threads))
+    raw = _cagd._compare(_points(points), _flag(closed, "closed"), _names(methods, "methods"), _flag(locality, "locality"), int(threads))
     out = {}
     for name, value in raw.items():
         if isinstance(value, tuple):

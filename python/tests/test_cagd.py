@@ -286,3 +286,24 @@ def test_smoothing():
     a = np.column_stack([np.sin(x), np.cos(x)])
     curve, energy = cagd.elastic_space_curve(x, a, 0.05)
     assert curve.dimension == 3 and energy > 0
+
+
+def test_arguments_of_the_wrong_type_are_type_errors_naming_them():
+    p = table1()
+    with pytest.raises(TypeError, match="points: complex"):
+        cagd.interpolate(p + 0j, "cubic-b")
+    with pytest.raises(TypeError, match="points: expected real numbers"):
+        cagd.interpolate([["a", "b"], ["c", "d"]], "cubic-b")
+    with pytest.raises(TypeError, match="closed: expected True or False"):
+        cagd.interpolate(p, "cubic-b", closed="no")
+    with pytest.raises(TypeError, match="method: expected a method name"):
+        cagd.interpolate(p, 3)
+    # One name where a list is expected is one name, not its characters.
+    table = cagd.compare(p, methods="cubic-b")
+    assert table["method"] == ["cubic-b"]
+
+
+def test_the_module_docstring_example_runs():
+    c = cagd.interpolate(table1(), "s-spline", m=3, end="bessel")
+    assert c.dimension == 2
+
