@@ -97,8 +97,9 @@ int run_compare(const CompareArgs& a) {
         for (const auto& row : t.numbers()) w.row(row, t.significant);
         w.commit();
     });
+    const std::string script = out.staged("compare_panels.gp");
     {
-        OutputFile f(out.staged("compare_panels.gp"));
+        OutputFile f(script);
         f.stream() << kComparePanelsScript;
         f.commit();
     }
@@ -116,7 +117,7 @@ int run_compare(const CompareArgs& a) {
             const std::string settings = "datadir=" + gnuplot_quoted(out.staging()) + "; prefix=''; space=" + std::to_string(dimension == 3 ? 1 : 0) +
                                          "; heading=" + gnuplot_quoted(std::filesystem::path(a.in).filename().string()) + "; formats='png'; figures='" + figure +
                                          "'; point_every=" + std::to_string(std::max<Eigen::Index>(1, points.rows() / 5000));  // ≤ ~5000 dots per panel
-            commands.push_back("gnuplot -e " + shell_quoted(settings) + " " + shell_quoted(out.staged("compare_panels.gp")));
+            commands.push_back("gnuplot -e " + shell_quoted(settings) + " " + shell_quoted(script));
         }
         std::vector<int> status(commands.size(), 0);
         parallel_for(static_cast<long>(commands.size()), hardware_threads(),

@@ -96,6 +96,11 @@ TEST(PointReader, ErrorsNameTheLine) {
     EXPECT_NE(message("# only a comment\n\n").find("no data rows"), std::string::npos);
     EXPECT_NE(message("x,y\nu,v\n").find("p.csv:2"), std::string::npos);
     EXPECT_NE(message("0,1\n2,3,\n").find("p.csv:2"), std::string::npos);
+    // What the message says besides the line.
+    EXPECT_NE(message("1,2\n3,4,5\n").find("p.csv:2: 3 columns"), std::string::npos);
+    EXPECT_NE(message("1\n").find("p.csv:1: 1 columns"), std::string::npos);
+    EXPECT_NE(message("1,nan\n").find("not finite"), std::string::npos);
+    EXPECT_NE(message("# only a comment\n").find("no points"), std::string::npos);
 }
 
 TEST(PointReader, KeepsEveryPointWhateverTheLineEndsAndMarks) {
@@ -156,7 +161,7 @@ TEST(ValuesAndTables, FollowTheSameRules) {
     EXPECT_TRUE(is_column_name("dx") && is_column_name("_a.b-c") && !is_column_name("nan") && !is_column_name("Inf") && !is_column_name("1x") && !is_column_name(""));
 }
 
-TEST(PointCsv, ReadsHeaderCommentsBlanksAndThreeColumns) {
+TEST(PointReader, ReadsHeaderCommentsBlanksAndThreeColumns) {
     std::istringstream in("# my points\nx, y, z\n\n 1, 2, 3 \n4,5,6 # trailing\n");
     const PointList p = read_points_csv(in, "mem");
     ASSERT_EQ(p.rows(), 2);
@@ -164,19 +169,3 @@ TEST(PointCsv, ReadsHeaderCommentsBlanksAndThreeColumns) {
     EXPECT_EQ(p(1, 2), 6.0);
 }
 
-TEST(PointCsv, ErrorsNameTheLine) {
-    const auto message = [](const std::string& text) {
-        std::istringstream in(text);
-        try {
-            read_points_csv(in, "pts.csv");
-        } catch (const InvalidInput& e) {
-            return std::string(e.what());
-        }
-        return std::string("no error");
-    };
-    EXPECT_NE(message("1,2\n3,abc\n").find("pts.csv:2"), std::string::npos);
-    EXPECT_NE(message("1,2\n3,4,5\n").find("pts.csv:2: 3 columns"), std::string::npos);
-    EXPECT_NE(message("1\n").find("pts.csv:1: 1 columns"), std::string::npos);
-    EXPECT_NE(message("1,nan\n").find("not finite"), std::string::npos);
-    EXPECT_NE(message("# only a comment\n").find("no points"), std::string::npos);
-}
