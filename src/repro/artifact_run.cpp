@@ -8,6 +8,8 @@
 #include <iostream>
 
 #include "cagd/core/errors.hpp"
+#include "cagd/core/file_lock.hpp"
+#include "cagd/core/output_file.hpp"
 
 #ifndef CAGD_SOURCE_DIR
 #define CAGD_SOURCE_DIR "."
@@ -58,6 +60,10 @@ ArtifactRun::ArtifactRun(std::string paper, std::string artifact, std::string se
     for (const auto& id : load_erratum_ids(root_ + "/reference/ERRATA.md")) errata_.insert(id);
     out_dir_ = check_mode_ ? (fs::temp_directory_path() / ("cagd-check-" + paper_ + "-" + artifact_)).string() : root_ + "/results/" + paper_;
     fs::create_directories(out_dir_);
+    // A table cache that exists but is not used (damaged, stale) is rebuilt with one line saying so.
+    set_cache_rebuild_notice([](const std::string& path, const std::string& reason) {
+        std::cerr << "cagd-repro: cache '" << path << "' not used (" << one_line(reason) << "); rebuilding it\n";
+    });
 }
 
 void ArtifactRun::check(const std::string& short_id, double ours) {
@@ -151,7 +157,8 @@ int ArtifactRun::finish() {
                         r.erratum, r.description, r.tolerance_reason, r.ours_range, r.choices});
     }
     {
-        std::ofstream meta(data_path(artifact_ + ".meta"));
+        OutputFile meta_file(data_path(artifact_ + ".meta"), "");  // published whole, or the old file kept
+        std::ostream& meta = meta_file.stream();
         meta << "title: " << title_ << "\nsection: " << section_ << "\nreference: reference/" << paper_ << "/" << artifact_ << ".csv\nexperiment: experiments/" << paper_ << "/"
              << artifact_ << ".cpp\n";
         for (const auto& line : reference_.provenance) meta << "provenance: " << line << "\n";
@@ -159,6 +166,7 @@ int ArtifactRun::finish() {
         for (const auto& n : notes_) meta << "note: " << n << "\n";
         for (const auto& t : timings_)
             meta << "timing: " << t.id << "|" << t.description << "|" << format_number(t.paper, 4) << "|" << format_number(t.lo, 4) << "|" << format_number(t.hi, 4) << "\n";
+        meta_file.commit();
     }
     if (!timings_.empty()) {
         const std::string dir = check_mode_ ? out_dir_ : root_ + "/results/timing";

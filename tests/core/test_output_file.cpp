@@ -9,8 +9,10 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
+#include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
 #include "cagd/core/output_file.hpp"
 
@@ -175,4 +177,41 @@ TEST(OutputFile, SignalCleanupRemovesEveryRegisteredTemporary) {
     EXPECT_EQ(temporaries_in(s.dir), 2) << "a's temporary file and the folder's staging directory";
     remove_output_temporaries();  // what the signal handler calls
     EXPECT_EQ(temporaries_in(s.dir), 0);
+}
+
+// core/csv's CsvWriter writes through an OutputFile: the harness's tables are published whole.
+TEST(CsvWriter, PublishesAtCloseOrScopeEndAndNothingWhenAnExceptionAbandonsIt) {
+    cagd::test::ScratchDirectory s;
+    const std::string f = s.path("table.csv");
+    std::ofstream(f) << "old\n";
+    {
+        CsvWriter w(f, {"a", "b"});
+        w.row({1.5, 2.0});
+        EXPECT_EQ(contents(f), "old\n") << "nothing is published before the writer closes";
+    }
+    EXPECT_EQ(contents(f), "a,b\n1.5,2\n");
+    try {
+        CsvWriter w(f, {"x"});
+        w.row({3.0});
+        throw std::runtime_error("the experiment failed");
+    } catch (const std::runtime_error&) {
+    }
+    EXPECT_EQ(contents(f), "a,b\n1.5,2\n") << "an abandoned writer keeps the old file";
+    EXPECT_EQ(temporaries_in(s.dir), 0) << "and leaves no temporary";
+    CsvWriter w(f, {"x"});
+    w.row({3.0});
+    w.close();
+    EXPECT_EQ(contents(f), "x\n3\n");
+    EXPECT_THROW(w.row({4.0}), InvalidInput) << "a closed writer refuses rows";
+}
+
+TEST(CsvWriter, AFailedWriteThrowsOutputErrorAtClose) {
+    CsvWriter w("/dev/full", {"a"});
+    w.row({1.0});
+    try {
+        w.close();
+        ADD_FAILURE() << "a write to /dev/full succeeded";
+    } catch (const OutputError& e) {
+        EXPECT_NE(std::string(e.what()).find("No space left on device"), std::string::npos) << e.what();
+    }
 }

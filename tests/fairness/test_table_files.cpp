@@ -9,9 +9,11 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "cagd/core/checksum.hpp"
 #include "cagd/core/errors.hpp"
+#include "cagd/core/file_lock.hpp"
 #include "cagd/fairness/angle_minimum_table.hpp"
 #include "cagd/fairness/pseudo_energy_table.hpp"
 #include "cagd/fairness/space_pseudo_energy_table.hpp"
@@ -92,16 +94,30 @@ TEST(TableFiles, APlanarTableLoadsBackBitForBitAndRefusesBadValues) {
     EXPECT_NE(invalid_input_message([&] { PseudoEnergyTable::load(s.path("short.txt")); }).find("63 node rows, the grid 8 has 64"), std::string::npos);
 }
 
+// What the cache notice was told (the harness prints it as one line).
+std::vector<std::string>& cache_notices() {
+    static std::vector<std::string> notices;
+    return notices;
+}
+
 TEST(TableFiles, ADamagedCacheIsRebuilt) {
     cagd::test::ScratchDirectory s;
+    cache_notices().clear();
+    set_cache_rebuild_notice([](const std::string& path, const std::string& reason) { cache_notices().push_back(path + ": " + reason); });
     const AngleGrid grid{8, NodePlacement::periodic};
     const PseudoEnergyTable t = PseudoEnergyTable::load_or_build(s.path("cache.txt"), grid, TableMethod::fast);
+    EXPECT_TRUE(cache_notices().empty()) << "a missing cache is built without a notice";
     std::string text = file_text(s.path("cache.txt"));
     text[text.size() / 2] = text[text.size() / 2] == '1' ? '2' : '1';  // one flipped character
     write_text(s.path("cache.txt"), text);
     const PseudoEnergyTable u = PseudoEnergyTable::load_or_build(s.path("cache.txt"), grid, TableMethod::fast);
     EXPECT_EQ(u.node(3, 5).pseudo_energy, t.node(3, 5).pseudo_energy);
     EXPECT_NO_THROW(PseudoEnergyTable::load(s.path("cache.txt"))) << "the rebuilt cache is whole again";
+    ASSERT_EQ(cache_notices().size(), 1u) << "one notice for the rebuilt cache";
+    EXPECT_NE(cache_notices()[0].find(s.path("cache.txt") + ": "), std::string::npos) << cache_notices()[0];
+    EXPECT_NE(cache_notices()[0].find("checksum"), std::string::npos) << "the reason is the failed checksum: " << cache_notices()[0];
+    (void)PseudoEnergyTable::load_or_build(s.path("cache.txt"), grid, TableMethod::fast);
+    EXPECT_EQ(cache_notices().size(), 1u) << "a sound cache is used silently";
     // The angle table's cache likewise.
     const AngleMinimumTable a = AngleMinimumTable::load_or_build(s.path("angle.txt"), grid);
     std::string atext = file_text(s.path("angle.txt"));
@@ -109,6 +125,8 @@ TEST(TableFiles, ADamagedCacheIsRebuilt) {
     const AngleMinimumTable b = AngleMinimumTable::load_or_build(s.path("angle.txt"), grid);
     EXPECT_EQ(b.values()[3].pseudo_energy, a.values()[3].pseudo_energy);
     EXPECT_EQ(file_text(s.path("angle.txt")), atext) << "rebuilt to the same bytes";
+    EXPECT_EQ(cache_notices().size(), 2u) << "the truncated angle cache was announced too";
+    set_cache_rebuild_notice(nullptr);
 }
 
 TEST(TableFiles, ASpaceTableRefusesBadValuesNamingTheLine) {

@@ -4,7 +4,10 @@
 #include <sys/file.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
+#include <system_error>
+#include <filesystem>
 
 namespace cagd {
 
@@ -20,6 +23,21 @@ FileLock::FileLock(const std::string& path) : fd_(::open(path.c_str(), O_RDWR | 
 
 FileLock::~FileLock() {
     if (fd_ >= 0) ::close(fd_);  // closing releases the lock
+}
+
+namespace {
+std::atomic<CacheRebuildNotice> cache_notice{nullptr};
+}  // namespace
+
+void set_cache_rebuild_notice(CacheRebuildNotice notice) { cache_notice.store(notice); }
+
+void announce_cache_rebuild(const std::string& path, const std::string& reason) {
+    if (const CacheRebuildNotice notice = cache_notice.load()) notice(path, reason);
+}
+
+bool cache_file_exists(const std::string& path) {
+    std::error_code ec;
+    return std::filesystem::exists(std::filesystem::symlink_status(path, ec));
 }
 
 }  // namespace cagd

@@ -83,7 +83,7 @@ AngleMinimumTable AngleMinimumTable::load_or_build(const std::string& path, cons
     // is rebuilt.
     std::ostringstream header;
     header << "# cagd pseudo_energy angle-minimum table format 2 grid " << grid.n << " placement " << to_string(grid.placement);
-    const auto try_load = [&]() -> std::optional<AngleMinimumTable> {
+    const auto try_load = [&](std::string& why) -> std::optional<AngleMinimumTable> {
         std::ifstream file(path, std::ios::binary);
         if (!file) return std::nullopt;
         std::ostringstream whole;
@@ -92,7 +92,8 @@ AngleMinimumTable AngleMinimumTable::load_or_build(const std::string& path, cons
         std::istringstream in;
         try {
             in.str(std::string(checked_content(text, path)));
-        } catch (const InvalidInput&) {
+        } catch (const InvalidInput& e) {
+            why = e.what();
             return std::nullopt;
         }
         std::string line;

@@ -167,12 +167,15 @@ ParsedTable parse_table(const std::string& text, const std::string& source) {
 }  // namespace
 
 PseudoEnergyTable PseudoEnergyTable::load_or_build(const std::string& path, const AngleGrid& grid, TableMethod method, int threads) {
-    const auto try_load = [&]() -> std::optional<PseudoEnergyTable> {
+    const auto try_load = [&](std::string& why) -> std::optional<PseudoEnergyTable> {
         std::ifstream probe(path);
         if (!probe) return std::nullopt;
         try {
             ParsedTable p = parse_table(read_whole(path, "cagd::fairness::PseudoEnergyTable::load_or_build"), path);
-            if (p.grid.n != grid.n || p.grid.placement != grid.placement || p.method != method) return std::nullopt;  // another table: rebuilt
+            if (p.grid.n != grid.n || p.grid.placement != grid.placement || p.method != method) {  // another table: rebuilt
+                why = "another table (grid " + std::to_string(p.grid.n) + ", another placement or method)";
+                return std::nullopt;
+            }
             PseudoEnergyTable t;
             t.grid_ = grid;
             t.method_ = method;
@@ -180,7 +183,8 @@ PseudoEnergyTable PseudoEnergyTable::load_or_build(const std::string& path, cons
             t.values_ = std::move(p.values);
             t.pack();
             return t;
-        } catch (const InvalidInput&) {  // damaged, or of another format: rebuilt
+        } catch (const InvalidInput& e) {  // damaged, or of another format: rebuilt
+            why = e.what();
             return std::nullopt;
         }
     };

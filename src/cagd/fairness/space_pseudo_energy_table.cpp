@@ -203,12 +203,14 @@ SpacePseudoEnergyTable SpacePseudoEnergyTable::load(const std::string& path) {
 }
 
 SpacePseudoEnergyTable SpacePseudoEnergyTable::load_or_build(const std::string& path, const SpaceAngleGrid& grid, TableMethod method, int threads) {
-    const auto try_load = [&]() -> std::optional<SpacePseudoEnergyTable> {
+    const auto try_load = [&](std::string& why) -> std::optional<SpacePseudoEnergyTable> {
+        if (!cache_file_exists(path)) return std::nullopt;
         try {
             SpacePseudoEnergyTable t = load(path);
             if (t.grid_.n_theta == grid.n_theta && t.grid_.n_phi == grid.n_phi && t.method_ == method) return t;
-        } catch (const InvalidInput&) {
-            // missing or foreign: build
+            why = "another table (grid " + std::to_string(t.grid_.n_theta) + " x " + std::to_string(t.grid_.n_phi) + " or another method)";
+        } catch (const InvalidInput& e) {  // damaged or foreign: rebuilt
+            why = e.what();
         }
         return std::nullopt;
     };
