@@ -173,6 +173,21 @@ prlimit --as=536870912 "$cagd" interpolate --method pseudo-spline --table huge_h
 expect 2 "a table whose header declares a huge grid, under 512 MB of address space" $?
 no_temporaries "reads"
 
+# Sizes: every size option at its limit runs inside 512 MB of address space; beyond it, exit 2 at once.
+prlimit --as=536870912 "$cagd" typical-surface --n 1000 --grid 100 --alpha-u -1.5 --alpha-v -1.5 --angle-deg 10 --out ts.csv 2> err
+expect 0 "typical-surface at its net limit (n 1000) under 512 MB" $?
+prlimit --as=536870912 "$cagd" typical-surface --n 3 --grid 700 --alpha-u -1.5 --alpha-v -1.5 --angle-deg 10 --out ts.csv 2> err
+expect 0 "typical-surface with a 700 x 700 grid under 512 MB (held a row block at a time)" $?
+prlimit --as=536870912 "$cagd" typical-surface --n 1001 --grid 10 --alpha-u -1.5 --alpha-v -1.5 --angle-deg 10 --out ts.csv 2> err
+expect 2 "typical-surface --n beyond its limit" $?
+prlimit --as=536870912 "$cagd" lac3d --alpha 1.5 --beta 1.2 --degree 100000 --samples 200 --out lac3d.csv 2> err
+expect 0 "lac3d at its degree limit under 512 MB" $?
+prlimit --as=536870912 "$cagd" interpolate --method cubic-b --in /dev/zero --out zero.csv 2> err
+expect 2 "a stream without line breaks under 512 MB" $?
+grep -q "longer than" err || fail "the line limit is not named: $(cat err)"
+rm -f ts.csv lac3d.csv
+no_temporaries "sizes"
+
 echo "cli files: $runs checks, $fails failed"
 echo "$((runs - fails)) passed, $fails failed"
 [ "$fails" -eq 0 ]

@@ -1,6 +1,7 @@
 // `cagd typical-surface --n N --alpha-u A --alpha-v B --angle-deg D [--length L] [--grid G] --out
 // GRID.csv [--net-out NET.csv]`: the nonstationary typical surface of typical_curves section 5 (net
 // with fixed edges, polygons turned about their diagonals) as a Bezier patch with K and H.
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iostream>
@@ -26,6 +27,10 @@ struct TypicalSurfaceArgs {
 
 // The patch of bi-degree n − 1 evaluated on a grid² costs about (n · grid)² operations.
 constexpr double kMaxNTimesGrid = 1e5;
+// The control net holds 3 n² doubles (24 MB at n = 1000) and is built in O(n²) work.
+constexpr int kMaxControlPoints = 1000;
+// u-rows evaluated together: the matrix products stay efficient, the jets held are 64 · grid.
+constexpr std::size_t kRowsPerBlock = 64;
 
 int run_typical_surface(const TypicalSurfaceArgs& a) {
     const char* who = "cagd typical-surface";
@@ -39,14 +44,18 @@ int run_typical_surface(const TypicalSurfaceArgs& a) {
     const surface::BezierPatch patch(net);
     std::vector<double> ts;
     for (int k = 0; k < a.grid; ++k) ts.push_back(static_cast<double>(k) / (a.grid - 1));
-    const surface::SurfaceGrid g = patch.evaluate_grid(ts, ts);
     CsvOutput out(file, {"u", "v", "x", "y", "z", "gaussian", "mean"});
-    for (Eigen::Index i = 0; i < a.grid; ++i)
-        for (Eigen::Index j = 0; j < a.grid; ++j) {
-            const analysis::SurfaceJet2 jet = g.jet(i, j);
-            const analysis::SurfaceCurvatures c = analysis::surface_curvatures(jet);
-            out.row({ts[static_cast<std::size_t>(i)], ts[static_cast<std::size_t>(j)], jet.s(0), jet.s(1), jet.s(2), c.gaussian, c.mean}, 15);
-        }
+    // A block of kRowsPerBlock u-rows at a time: memory grows with grid · n, never with grid².
+    for (std::size_t first = 0; first < ts.size(); first += kRowsPerBlock) {
+        const std::vector<double> us(ts.begin() + static_cast<std::ptrdiff_t>(first), ts.begin() + static_cast<std::ptrdiff_t>(std::min(ts.size(), first + kRowsPerBlock)));
+        const surface::SurfaceGrid g = patch.evaluate_grid(us, ts);
+        for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(us.size()); ++i)
+            for (Eigen::Index j = 0; j < a.grid; ++j) {
+                const analysis::SurfaceJet2 jet = g.jet(i, j);
+                const analysis::SurfaceCurvatures c = analysis::surface_curvatures(jet);
+                out.row({us[static_cast<std::size_t>(i)], ts[static_cast<std::size_t>(j)], jet.s(0), jet.s(1), jet.s(2), c.gaussian, c.mean}, 15);
+            }
+    }
     if (net_file) {
         CsvOutput nout(*net_file, {"i", "j", "x", "y", "z"});
         for (Eigen::Index i = 0; i < net[0].rows(); ++i)
@@ -63,7 +72,7 @@ Command add_typical_surface_command(CLI::App& app) {
     auto a = std::make_shared<TypicalSurfaceArgs>();
     auto* c = app.add_subcommand(
         "typical-surface", "Nonstationary typical surface: net with fixed edges, polygons turned about their diagonals; Bezier patch with K and H (typical_curves section 5)");
-    c->add_option("--n", a->n, "control points per direction (the patch has bi-degree n - 1; n x grid <= 1e5)")->required()->check(CLI::Range(3, 10000));
+    c->add_option("--n", a->n, "control points per direction (the patch has bi-degree n - 1; n x grid <= 1e5)")->required()->check(CLI::Range(3, kMaxControlPoints));
     c->add_option("--alpha-u", a->alpha_u, "alpha of the v = 0 boundary P(i,0) (< 0 or > 1)")->required();
     c->add_option("--alpha-v", a->alpha_v, "alpha of the u = 0 boundary P(0,j) (< 0 or > 1)")->required();
     c->add_option("--angle-deg", a->angle_deg, "rotation of every control polygon about its diagonal, degrees")->required();

@@ -164,12 +164,20 @@ PseudoEnergyMinimum minimize_pseudo_energy(double theta0, double theta1, const F
 }
 
 PseudoEnergyMinimum measure_segment(double theta0, double theta1, double r0, double r1) {
+    const char* who = "cagd::fairness::measure_segment";
+    if (r0 > kMaxSegmentMagnitude) fail_input(who, "r0 = " + full_precision(r0) + "; allowed (0, 1e60]");
+    if (r1 > kMaxSegmentMagnitude) fail_input(who, "r1 = " + full_precision(r1) + "; allowed (0, 1e60]");
     const UnitChordHermite seg(theta0, theta1, r0, r1);
     PseudoEnergyMinimum m;
     m.theta0 = theta0;
     m.theta1 = theta1;
     m.runner_up = kInf;
     fill_measures(m, r0, r1, segment_energy_fast(seg));
+    for (const double v : {m.pseudo_energy, m.length, m.strain_energy, m.area, m.gradient_norm, m.error_estimate})
+        if (!std::isfinite(v)) {
+            m.outcome = Outcome{Status::not_representable, "the measures of (r0, r1) = (" + full_precision(r0) + ", " + full_precision(r1) + ") overflow double precision"};
+            break;
+        }
     return m;
 }
 

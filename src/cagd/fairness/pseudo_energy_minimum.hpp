@@ -97,8 +97,14 @@ PseudoEnergyMinimum minimize_pseudo_energy_nlopt(double theta0, double theta1, c
 /// Fast path. `warm` adds starting points (r0, r1), e.g. a neighbouring node's minimiser.
 PseudoEnergyMinimum minimize_pseudo_energy(double theta0, double theta1, const FastMinimizerOptions& opt = {}, const std::vector<Eigen::Vector2d>& warm = {});
 
+/// The largest tangent magnitude measure_segment accepts: the strain integrand squares the
+/// curvature numerator P'' × P' (of order r²), so r⁴ must stay well inside double range (1e308).
+inline constexpr double kMaxSegmentMagnitude = 1e60;
+
 /// Evaluate the measures of the segment (θ0, θ1, r0, r1) into a PseudoEnergyMinimum record (fast
-/// quadrature); used to report a given (r0, r1).
+/// quadrature); used to report a given (r0, r1). Throws InvalidInput for angles outside [−π, π]
+/// and unless 0 < r0, r1 ≤ kMaxSegmentMagnitude; a measure that is not finite all the same gives
+/// the outcome not_representable (never a NaN in an ok record).
 PseudoEnergyMinimum measure_segment(double theta0, double theta1, double r0, double r1);
 
 /// J(θ) = min_{θ1 ∈ [−π, π]} J(θ, θ1) and θ1(θ) (eq 11): a scan of θ1 with step `scan_step`

@@ -87,6 +87,9 @@ ElasticSpaceCurve elastic_space_curve(const std::vector<double>& x, const Eigen:
     const char* who = "cagd::smoothing::elastic_space_curve";
     if (a.cols() != 2) fail_input(who, "needs two value columns (y, z), got " + std::to_string(a.cols()));
     if (subdivisions < 1) fail_input(who, "needs subdivisions >= 1, got " + std::to_string(subdivisions));
+    if (x.size() >= 2 && static_cast<long long>(x.size() - 1) * subdivisions > kMaxSpaceCurvePieces)
+        fail_input(who, "subdivisions = " + std::to_string(subdivisions) + " gives " + std::to_string(static_cast<long long>(x.size() - 1) * subdivisions) +
+                            " pieces for " + std::to_string(x.size()) + " points; at most " + std::to_string(kMaxSpaceCurvePieces) + " pieces");
     const ElasticLine start = elastic_line(x, a, lambda_in);  // validates x, a, λ
     const std::vector<double> lambda = per_point_lambda(lambda_in, x.size(), who);
     for (std::size_t i = 0; i < lambda.size(); ++i)

@@ -15,7 +15,8 @@
 /// residuals √(w h) (r' × r'')/|r'|^{5/2} and (y, z)(x_i) − a_i over √λ_i), started from the
 /// per-projection solution.
 /// Preconditions: as smoothing::elastic_line with two value columns (y, z) and every λ_i > 0;
-/// subdivisions ≥ 1. Outcome no_convergence when Ceres reports no convergence.
+/// subdivisions ≥ 1 and (n − 1) · subdivisions ≤ kMaxSpaceCurvePieces (checked before anything is
+/// allocated). Outcome no_convergence when Ceres reports no convergence.
 #include <Eigen/Dense>
 #include <vector>
 
@@ -23,6 +24,10 @@
 #include "cagd/core/errors.hpp"
 
 namespace cagd::smoothing {
+
+/// The most Hermite pieces one minimisation takes: Ceres holds about 4.4 KB per piece (its four
+/// quadrature residuals), so 2·10^4 pieces stay near 100 MB and ten seconds.
+inline constexpr long long kMaxSpaceCurvePieces = 20000;
 
 /// The minimiser as a Curve r(x) = (x, y(x), z(x)) (so analysis/ measures it), parameter x.
 struct ElasticSpaceCurve final : Curve {
