@@ -86,22 +86,47 @@ inline py::array_t<double> from_vector(const std::vector<double>& v) {
     return out;
 }
 
+// The argument `name` as a C-contiguous array of doubles of its own shape (0-d for a number, numpy
+// scalars and 0-d arrays included). TypeError naming the argument for anything but real numbers:
+// bool, complex, str, None and other objects are refused, never cast.
+inline Array real_array(const py::object& value, const char* name) {
+    py::array raw;
+    try {
+        raw = py::array::ensure(value);
+    } catch (const py::error_already_set&) {
+        raw = py::array();
+    }
+    const char kind = raw ? raw.dtype().kind() : 'O';
+    if (kind != 'i' && kind != 'u' && kind != 'f')
+        throw py::type_error(std::string(name) + ": expected real numbers, got " + std::string(py::str(py::type::of(value).attr("__name__"))) +
+                             (raw && raw.ndim() > 0 ? " of dtype " + std::string(py::str(raw.dtype())) : std::string()));
+    return Array::ensure(raw);
+}
+
+// The parameter argument t (real_array).
+inline Array parameter_array(const py::object& t_in) { return real_array(t_in, "t"); }
+
+// The most derivatives evaluate() returns: every curve of the library is piecewise polynomial of
+// degree ≤ 7 or analytic with jets of order ≤ 4, so higher orders are zeros or refused.
+inline constexpr int kMaxPythonDerivatives = 16;
+
 // A curve of the library with what its construction reported.
 struct PyCurve {
     std::shared_ptr<const cagd::Curve> curve;
     std::vector<double> node_parameters;  // u of each data point (interpolants)
     std::string method;
 
-    // Positions (derivatives = 0: shape (m, dim), or (dim,) for a scalar t) or jets (shape
-    // (m, derivatives + 1, dim), or (derivatives + 1, dim)): rows are r, r', r'', … at each t.
+    // Positions (derivatives = 0: shape t.shape + (dim,)) or jets (t.shape + (derivatives + 1,
+    // dim)): rows are r, r', r'', … at each t. A number (or 0-d array) gives (dim,) or (k + 1, dim).
     py::array evaluate(const py::object& t_in, int derivatives) const {
-        if (derivatives < 0) throw cagd::InvalidInput("evaluate: derivatives = " + std::to_string(derivatives) + "; allowed 0 or more");
-        const bool scalar = py::isinstance<py::float_>(t_in) || py::isinstance<py::int_>(t_in);
-        const Array t = Array::ensure(t_in);
-        if (!t) throw cagd::InvalidInput("evaluate: t must be a number or an array of numbers");
-        if (t.ndim() > 1) throw cagd::InvalidInput("evaluate: t must be a number or a 1-D array");
+        if (derivatives < 0 || derivatives > kMaxPythonDerivatives)
+            throw cagd::InvalidInput("derivatives = " + std::to_string(derivatives) + "; allowed 0.." + std::to_string(kMaxPythonDerivatives));
+        const Array t = parameter_array(t_in);
         const py::ssize_t m = t.size(), rows = derivatives + 1, dim = curve->dimension();
-        py::array_t<double> out(derivatives == 0 ? std::vector<py::ssize_t>{m, dim} : std::vector<py::ssize_t>{m, rows, dim});
+        std::vector<py::ssize_t> shape(t.shape(), t.shape() + t.ndim());
+        if (derivatives > 0) shape.push_back(rows);
+        shape.push_back(dim);
+        py::array_t<double> out(shape);
         const double* ts = t.data();
         double* w = out.mutable_data();
         {
@@ -123,24 +148,21 @@ struct PyCurve {
                 }
             }
         }
-        if (scalar) return out[py::int_(0)];
         return out;
     }
 
-    // A function of t, vectorised: a number for a number, an array for an array.
+    // A function of t, vectorised: a float for a number (or 0-d array), an array of t's shape otherwise.
     template <class F>
     py::object map_parameters(const py::object& t_in, F f) const {
-        const bool scalar = py::isinstance<py::float_>(t_in) || py::isinstance<py::int_>(t_in);
-        const Array t = Array::ensure(t_in);
-        if (!t || t.ndim() > 1) throw cagd::InvalidInput("t must be a number or a 1-D array of numbers");
-        py::array_t<double> out(t.size());
+        const Array t = parameter_array(t_in);
+        py::array_t<double> out(std::vector<py::ssize_t>(t.shape(), t.shape() + t.ndim()));
         const double* ts = t.data();
         double* w = out.mutable_data();
         {
             py::gil_scoped_release release;
             for (py::ssize_t k = 0; k < t.size(); ++k) w[k] = f(ts[k]);
         }
-        if (scalar) return py::float_(w[0]);
+        if (t.ndim() == 0) return py::float_(w[0]);
         return out;
     }
 };

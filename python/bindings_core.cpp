@@ -13,14 +13,16 @@ void bind_core(py::module_& m) {
         .def(
             "breakpoints", [](const PyCurve& c) { return from_vector(c.curve->breakpoints()); }, "parameters where the curve's pieces join")
         .def("evaluate", &PyCurve::evaluate, py::arg("t"), py::arg("derivatives") = 0,
-             "Positions at t (shape (m, dim); (dim,) for a number), or with derivatives = k the jets r, r', …, r^(k) (shape (m, k + 1, dim)). ValueError outside parameter_range.")
+             "Positions at t (shape t.shape + (dim,): (dim,) for a number), or with derivatives = k the jets r, r', …, r^(k) (shape t.shape + (k + 1, dim)), "
+             "0 ≤ k ≤ 16. TypeError unless t holds real numbers; ValueError outside parameter_range.")
         .def(
             "curvature",
             [](const PyCurve& c, const py::object& t) {
                 return c.map_parameters(
                     t, [&](double u) { return c.curve->dimension() == 2 ? cagd::analysis::signed_curvature(*c.curve, u) : cagd::analysis::curvature(*c.curve, u); });
             },
-            py::arg("t"), "Curvature at t: signed (counter-clockwise positive) for planar curves, |κ| for space curves. ValueError where the speed vanishes.")
+            py::arg("t"), "Curvature at t (a float for a number, an array of t's shape otherwise): signed (counter-clockwise positive) for planar curves, |κ| for space curves. "
+            "ValueError where the speed vanishes.")
         .def(
             "torsion", [](const PyCurve& c, const py::object& t) { return c.map_parameters(t, [&](double u) { return cagd::analysis::torsion(*c.curve, u); }); }, py::arg("t"),
             "Torsion at t (space curves).")

@@ -56,7 +56,11 @@ void bind_fairness(py::module_& m) {
         },
         py::arg("theta0"), py::arg("theta1"), py::arg("method") = "fast",
         "The minimum pseudo-energy J(θ0, θ1) = min over r0, r1 of L²E (pseudo_energy eq 8) with its minimiser and measures, as a dict. method: fast | reference (Romberg + "
-        "Ceres CG) | nlopt. ValueError for angles outside [−π, π]; NoSolution at an undefined node.");
+        "Ceres CG) | nlopt. ValueError for angles outside [−π, π]; NoSolution at an undefined node.\n\n"
+        ">>> import cagd\n"
+        ">>> m = cagd.pseudo_energy(0.3, 0.7)\n"
+        ">>> round(m['pseudo_energy'], 6), round(m['r0'], 6), round(m['r1'], 6), m['type']\n"
+        "(3.254064, 0.992474, 1.060921, 's')\n");
     m.def(
         "segment_measures",
         [](double theta0, double theta1, double r0, double r1) {
@@ -64,7 +68,12 @@ void bind_fairness(py::module_& m) {
             require_ok(r.outcome);
             return minimum_dict(r);
         },
-        py::arg("theta0"), py::arg("theta1"), py::arg("r0"), py::arg("r1"), "The measures (J, L, S, E) of the Hermite segment (θ0, θ1, r0, r1), not minimised.");
+        py::arg("theta0"), py::arg("theta1"), py::arg("r0"), py::arg("r1"), "The measures (J, L, S, E) of the unit-chord Hermite segment (θ0, θ1, r0, r1), not minimised. ValueError for angles outside [−π, π] "
+        "or unless 0 < r0, r1 ≤ 1e60 (beyond, r⁴ in the strain integrand leaves double range).\n\n"
+        ">>> import cagd\n"
+        ">>> d = cagd.segment_measures(0.3, 0.7, 1.0, 1.0)\n"
+        ">>> d['type'], d['pseudo_energy'] > cagd.pseudo_energy(0.3, 0.7)['pseudo_energy']\n"
+        "('s', True)\n");
 
     py::class_<cagd::fairness::PseudoEnergyTable>(m, "PseudoEnergyTable", "The table of J(θ0, θ1) and its minimisers (pseudo_energy section 4.1), with the paper's lookup.")
         .def_static(

@@ -11,13 +11,18 @@ void bind_spline(py::module_& m) {
         .def("bending_energy", &cagd::spline::ExplicitSpline::bending_energy)
         .def(
             "evaluate",
-            [](const cagd::spline::ExplicitSpline& s, const Array& at, int k) {
-                const std::vector<double> xs = to_vector(at, "evaluate: x");
+            [](const cagd::spline::ExplicitSpline& s, const py::object& at, int k) -> py::array {
+                const Array a = real_array(at, "x");
+                if (a.ndim() > 1) throw cagd::InvalidInput("x: expected a number or a 1-D array, got " + std::to_string(a.ndim()) + " dimensions");
+                const std::vector<double> xs(a.data(), a.data() + a.size());
                 Eigen::MatrixXd out(static_cast<Eigen::Index>(xs.size()), s.values.cols());
                 for (std::size_t i = 0; i < xs.size(); ++i) out.row(static_cast<Eigen::Index>(i)) = s.evaluate(xs[i], k);
-                return from_matrix(out);
+                const py::array_t<double> rows = from_matrix(out);
+                if (a.ndim() == 0) return rows[py::int_(0)];
+                return rows;
             },
-            py::arg("x"), py::arg("derivative") = 0, "The k-th derivative (k ≤ 3) at each x (1-D array): shape (m, columns).");
+            py::arg("x"), py::arg("derivative") = 0,
+            "The k-th derivative (k ≤ 3) at x: shape (columns,) for a number, (m, columns) for a 1-D array of m abscissae.");
 }
 
 }  // namespace cagd_python

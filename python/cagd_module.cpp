@@ -5,13 +5,65 @@
 //
 // Errors: cagd::InvalidInput → ValueError with the library's message; a numerical outcome (no
 // solution, no convergence) → cagd.NoSolution (a RuntimeError) carrying the outcome's message; a
-// failed write (cagd::OutputError) → OSError, the previous file kept.
+// failed write (cagd::OutputError) → OSError, the previous file kept. Every message is put in
+// Python's terms first (python_message): no C++ qualified names, no command-line options.
 // Vectorised evaluation releases the GIL and fills the result array in place.
 //
 // One bindings_<folder>.cpp per library folder (bindings.hpp); this file only wires them.
+#include <cctype>
+#include <string_view>
+
 #include "bindings.hpp"
 
 using namespace cagd_python;
+
+namespace {
+
+bool identifier_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+// A library message in Python's terms. A qualified C++ name (`cagd::smoothing::elastic_line`,
+// `intrinsic::IntrinsicCurve::jet`) becomes its last component, `cagd::methods(s-spline)` the
+// method's name; an option `--start-tangent` becomes the keyword argument `start_tangent`.
+std::string python_message(const std::string& m) {
+    std::string out;
+    std::size_t i = 0;
+    while (i < m.size()) {
+        if (identifier_char(m[i]) && (i == 0 || !identifier_char(m[i - 1]))) {
+            std::size_t end = i, last = i;
+            while (end < m.size() && identifier_char(m[end])) ++end;
+            const std::size_t first_end = end;
+            while (end + 2 < m.size() && m[end] == ':' && m[end + 1] == ':' && identifier_char(m[end + 2])) {
+                last = end + 2;
+                end = last;
+                while (end < m.size() && identifier_char(m[end])) ++end;
+            }
+            if (end == first_end) {
+                out.append(m, i, end - i);
+            } else if (m.compare(last, end - last, "methods") == 0 && end < m.size() && m[end] == '(' && m.find(')', end) != std::string::npos) {
+                const std::size_t close = m.find(')', end);
+                out.append(m, end + 1, close - end - 1);
+                end = close + 1;
+            } else {
+                out.append(m, last, end - last);
+            }
+            i = end;
+            continue;
+        }
+        const bool option_start = i + 2 < m.size() && m[i] == '-' && m[i + 1] == '-' && std::islower(static_cast<unsigned char>(m[i + 2])) &&
+                                  (i == 0 || std::string_view(" (,'\"").find(m[i - 1]) != std::string_view::npos);
+        if (option_start) {
+            std::size_t end = i + 2;
+            while (end < m.size() && (std::islower(static_cast<unsigned char>(m[end])) || std::isdigit(static_cast<unsigned char>(m[end])) || m[end] == '-')) ++end;
+            for (std::size_t k = i + 2; k < end; ++k) out += m[k] == '-' ? '_' : m[k];
+            i = end;
+            continue;
+        }
+        out += m[i++];
+    }
+    return out;
+}
+
+}  // namespace
 
 PYBIND11_MODULE(_cagd, m) {
     m.doc() = "cagd-repro: interpolating curves from five Japanese CAGD papers (compiled part; see cagd.__doc__)";
@@ -20,11 +72,11 @@ PYBIND11_MODULE(_cagd, m) {
         try {
             if (p) std::rethrow_exception(p);
         } catch (const cagd::InvalidInput& e) {
-            PyErr_SetString(PyExc_ValueError, e.what());
+            PyErr_SetString(PyExc_ValueError, python_message(e.what()).c_str());
         } catch (const NoSolution& e) {
-            no_solution(e.what());
+            no_solution(python_message(e.what()).c_str());
         } catch (const cagd::OutputError& e) {  // a failed write: the old file is kept
-            PyErr_SetString(PyExc_OSError, e.what());
+            PyErr_SetString(PyExc_OSError, python_message(e.what()).c_str());
         }
     });
 

@@ -28,9 +28,23 @@ Errors
     curvature-profile Newton) — raises ``cagd.NoSolution`` (a ``RuntimeError``) from the functions
     that return a result; ``interpolate_result`` returns it as a status instead.
 
-Parameters of a method are given as keyword arguments, with ``_`` for ``-`` in their names
-(``interpolate(p, "s-spline", m=3, end="bessel")``); they are checked by the registry exactly as
-the command line's options are.
+Parameters of a method are given as keyword arguments, with ``_`` for ``-`` in their names; they
+are checked by the registry exactly as the command line's options are, and errors name them as
+Python arguments.
+
+Example (every example in these docstrings runs as a doctest in the package's tests)::
+
+    >>> import numpy as np, cagd
+    >>> p = np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 0.0], [3.0, 1.0]])
+    >>> c = cagd.interpolate(p, "s-spline", m=3, end="bessel")
+    >>> c
+    <cagd.Curve s-spline dim=2 t=[0, 3]>
+    >>> c.evaluate(3.0)
+    array([3., 1.])
+    >>> c.evaluate([0.0, 1.5], derivatives=1).shape
+    (2, 2, 2)
+    >>> round(c.arc_length(), 6)
+    4.45534
 """
 import numpy as _np
 
@@ -66,7 +80,13 @@ __all__ = [
 def methods():
     """The registry of interpolation methods, in the order of the tables: a list of dicts with
     name, aliases, paper, source, summary, parameters (name, type, default, domain, help),
-    presets (the comparison's configurations) and claims (at the default parameters)."""
+    presets (the comparison's configurations) and claims (at the default parameters).
+
+    >>> [m["name"] for m in methods()][:3]
+    ['pseudo-spline', 'cubic-a', 'cubic-b']
+    >>> sorted(methods()[0])
+    ['aliases', 'claims', 'name', 'paper', 'parameters', 'presets', 'source', 'summary']
+    """
     return _cagd._methods()
 
 
@@ -107,7 +127,18 @@ def interpolate_result(points, method, closed=False, **params):
     ``curve`` the curve) or the numerical outcome ("no_solution", "no_convergence") with its
     ``message``; ``report`` and ``quantities`` hold what the method reports (e.g. the
     curvature-profile Newton history, the pseudo-spline's table length and area).
-    Bad input raises ValueError."""
+    Bad input raises ValueError (a wrong type TypeError).
+
+    >>> import numpy as np
+    >>> p = np.array([[0.0, 0.0], [1.0, 0.0], [2.0, 1.0], [3.0, 1.0]])
+    >>> r = interpolate_result(p, "curvature-profile")
+    >>> r.ok, r.status
+    (True, 'ok')
+    >>> interpolate_result(p, "s-spline", m=-3)
+    Traceback (most recent call last):
+    ...
+    ValueError: s-spline: m '-3': out of range; allowed: integer in [0, 1000]
+    """
     if not isinstance(method, str):
         raise TypeError(f"method: expected a method name (str), got {method!r}")
     return _cagd._interpolate_result(_points(points), method, _flag(closed, "closed"), **params)
@@ -116,7 +147,14 @@ def interpolate_result(points, method, closed=False, **params):
 def interpolate(points, method, closed=False, **params):
     """The curve of ``method`` (a name of ``methods()`` or a preset such as "s-spline-m2") through
     ``points`` ((n, 2) or (n, 3)). Raises ValueError for bad input and NoSolution when the method
-    finds no curve for valid input."""
+    finds no curve for valid input.
+
+    >>> import numpy as np
+    >>> c = interpolate(np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 0.0]]), "cubic-b", closed=True)
+    >>> a, b = c.parameter_range
+    >>> bool(np.allclose(c.evaluate(a), c.evaluate(b)))
+    True
+    """
     r = interpolate_result(points, method, closed, **params)
     if not r.ok:
         raise NoSolution(f"{method}: {r.message}")
@@ -132,7 +170,17 @@ def compare(points, closed=False, methods=None, locality=True, threads=0):
     max_abs_curvature_derivative, overshoot, spans, locality_footprint, seconds, max_abs_torsion)
     is a ``numpy.ma.MaskedArray``, masked where the measure does not exist (method not applicable,
     no result, a cusp's curvature, an open curve's area; area and curvature_sign_changes for space
-    points, max_abs_torsion for planar ones), never NaN."""
+    points, max_abs_torsion for planar ones), never NaN.
+
+    >>> import numpy as np
+    >>> t = compare(np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 0.0], [3.0, 1.0]]), methods=["cubic-b", "pseudo-spline"])
+    >>> t["method"], t["status"]
+    (['cubic-b', 'pseudo-spline'], ['ok', 'ok'])
+    >>> t["length"].round(6)
+    masked_array(data=[4.423849, 4.493685],
+                 mask=[False, False],
+           fill_value=1e+20)
+    """
     raw = _cagd._compare(_points(points), _flag(closed, "closed"), _names(methods, "methods"), _flag(locality, "locality"), int(threads))
     out = {}
     for name, value in raw.items():

@@ -10,6 +10,7 @@ import io
 import math
 import os
 import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -265,6 +266,62 @@ def test_table_save_reports_a_failed_write_and_keeps_the_old_file(tmp_path):
     table.save(str(path))
     assert path.read_text().startswith("# cagd pseudo_energy table format")
     assert [p.name for p in tmp_path.iterdir()] == ["table.txt"], "no temporary file is left"
+    # A link keeps pointing where it did (its target is replaced); a loop of links is a ValueError.
+    link = tmp_path / "link.txt"
+    link.symlink_to(path)
+    table.save(str(link))
+    assert link.is_symlink() and os.readlink(link) == str(path)
+    loop = tmp_path / "loop"
+    loop.symlink_to(loop)
+    with pytest.raises(ValueError, match="loop"):
+        table.save(str(loop))
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["link.txt", "loop", "table.txt"], "nothing else is made"
+    loaded, built = cagd.PseudoEnergyTable.load(str(link)).node(2, 3), table.node(2, 3)
+    assert all(loaded[k] == built[k] for k in ("pseudo_energy", "r0", "r1", "length", "type")), "what was saved loads back bit for bit"
+
+
+def test_a_damaged_or_hostile_table_is_a_value_error_naming_the_file(tmp_path):
+    good = tmp_path / "table.txt"
+    cagd.PseudoEnergyTable.build(n=8, threads=2).save(str(good))
+    lines = good.read_text().splitlines(keepends=True)
+    row = next(k for k, line in enumerate(lines) if not line.startswith("#") and any(c in "123456789" for c in line))
+    flipped = lines[row].replace("1", "2", 1) if "1" in lines[row] else lines[row].replace("2", "3", 1)
+    damaged = tmp_path / "damaged.txt"
+    damaged.write_text("".join(lines[:row] + [flipped] + lines[row + 1:]))
+    with pytest.raises(ValueError, match=r"damaged\.txt.*checksum"):
+        cagd.PseudoEnergyTable.load(str(damaged))
+    truncated = tmp_path / "truncated.txt"
+    truncated.write_text("".join(lines[: len(lines) // 2]))
+    with pytest.raises(ValueError, match=r"truncated\.txt"):
+        cagd.PseudoEnergyTable.load(str(truncated))
+
+
+def _fnv1a64(data):
+    """The table files' checksum (FNV-1a, 64 bits), written here independently of the library."""
+    h = 14695981039346656037
+    for byte in data:
+        h = ((h ^ byte) * 1099511628211) & 0xFFFFFFFFFFFFFFFF
+    return h
+
+
+def test_a_huge_declared_grid_is_refused_within_512_mb(tmp_path):
+    # In a child interpreter whose address space is limited: the refusal comes before any allocation.
+    huge = tmp_path / "huge.txt"
+    content = b"# cagd pseudo_energy table format 6 grid 6000 placement periodic method fast\nx\n"
+    huge.write_bytes(content + f"# checksum fnv1a64 {_fnv1a64(content):016x}\n".encode())
+    code = (
+        "import resource, sys\n"
+        "resource.setrlimit(resource.RLIMIT_AS, (512 << 20, 512 << 20))\n"
+        "import cagd\n"
+        "try:\n"
+        "    cagd.PseudoEnergyTable.load(sys.argv[1])\n"
+        "except ValueError as e:\n"
+        "    print('ValueError:', e)\n"
+    )
+    env = dict(os.environ)
+    out = subprocess.run([sys.executable, "-c", code, str(huge)], capture_output=True, text=True, env=env, timeout=60)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.startswith("ValueError:") and "6000" in out.stdout, out.stdout
 
 
 def test_space_curves_have_torsion():
@@ -303,7 +360,72 @@ def test_arguments_of_the_wrong_type_are_type_errors_naming_them():
     assert table["method"] == ["cubic-b"]
 
 
-def test_the_module_docstring_example_runs():
-    c = cagd.interpolate(table1(), "s-spline", m=3, end="bessel")
-    assert c.dimension == 2
+def _documented_objects():
+    """The package, every public name and every method and property of the public classes."""
+    yield "cagd", cagd
+    for name in cagd.__all__:
+        obj = getattr(cagd, name)
+        yield name, obj
+        if isinstance(obj, type):
+            for attr, member in vars(obj).items():
+                if not attr.startswith("_"):
+                    yield f"{name}.{attr}", member
+
+
+def test_every_docstring_example_runs():
+    import doctest
+
+    parser, runner = doctest.DocTestParser(), doctest.DocTestRunner(optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
+    examples = 0
+    for name, obj in _documented_objects():
+        doc = getattr(obj, "__doc__", None)
+        if not doc or ">>>" not in doc:
+            continue
+        test = parser.get_doctest(doc, {"cagd": cagd, "np": np} | vars(cagd), name, None, 0)
+        examples += len(test.examples)
+        runner.run(test)
+    result = runner.summarize(verbose=False)
+    assert result.failed == 0, f"{result.failed} docstring example(s) failed (printed above)"
+    assert examples >= 25, f"only {examples} docstring examples found"
+
+
+def test_scalars_of_every_kind_give_scalar_shaped_results():
+    c = cagd.interpolate(table1(), "cubic-b")
+    expected = c.evaluate(0.5)
+    for t in (np.float32(0.5), np.float64(0.5), np.array(0.5), 0.5):
+        assert c.evaluate(t).shape == (2,) and np.array_equal(c.evaluate(t), expected)
+        assert c.evaluate(t, derivatives=2).shape == (3, 2)
+        assert isinstance(c.curvature(t), float)
+    assert c.evaluate(np.int64(1)).shape == (2,) and c.evaluate(np.uint8(1)).shape == (2,)
+    grid = np.full((2, 3), 0.5)
+    assert c.evaluate(grid).shape == (2, 3, 2) and c.evaluate(grid, derivatives=1).shape == (2, 3, 2, 2)
+    assert c.curvature(grid).shape == (2, 3)
+    for bad in (0.5 + 1j, "0.5", None, True, [0.5, "a"]):
+        with pytest.raises(TypeError, match="^t: expected real numbers"):
+            c.evaluate(bad)
+    with pytest.raises(ValueError, match="derivatives = 17; allowed 0..16"):
+        c.evaluate(0.5, derivatives=17)
+
+
+def test_no_nan_and_sizes_are_limited_before_allocating():
+    with pytest.raises(ValueError, match=r"r0 = 1e\+100; allowed \(0, 1e60\]"):
+        cagd.segment_measures(0.5, -0.3, 1e100, 1e100)
+    d = cagd.segment_measures(0.5, -0.3, 1e60, 1e60)
+    assert all(math.isfinite(v) for v in d.values() if isinstance(v, float))
+    x = np.arange(3.0)
+    with pytest.raises(ValueError, match="subdivisions = 1000000 gives 2000000 pieces for 3 points; at most 20000"):
+        cagd.elastic_space_curve(x, np.column_stack([x, x]), 1.0, subdivisions=10**6)
+    with pytest.raises(TypeError, match="^x: expected real numbers"):
+        cagd.elastic_line(x + 1j, x, 1.0)
+
+
+def test_messages_name_python_arguments_not_options_or_cpp_names():
+    p = table1()
+    for call in (lambda: cagd.interpolate(p, "s-spline", m=10**9), lambda: cagd.interpolate(p, "s-spline", start_tangnt=1.0),
+                 lambda: cagd.interpolate(p, "cubic-b").evaluate(1e9), lambda: cagd.elastic_line([0.0, 0.0], [1.0, 2.0], 1.0)):
+        with pytest.raises(ValueError) as e:
+            call()
+        assert "::" not in str(e.value) and "--" not in str(e.value), str(e.value)
+    with pytest.raises(ValueError, match="start_tangnt is not a parameter of s-spline .*start_tangent"):
+        cagd.interpolate(p, "s-spline", start_tangnt=1.0)
 
