@@ -155,6 +155,74 @@ TEST(PseudoEnergyTable, LookupReproducesNodesWrapsAndRejects) {
     EXPECT_THROW(parse_node_placement("uniform"), InvalidInput);
 }
 
+// The three further same-type rules: plain bilinear in a cell of one type; at (−18°, 18°), where the
+// 36-node table's cell [−20°, −10°] × [10°, 20°] has c-segments on one diagonal and s-segments on the
+// other (erratum pseudo_energy-E4), each weighs the c-corners (−20°, 20°) and (−10°, 10°) 0.8 / 0.2.
+TEST(PseudoEnergyTable, SameTypeRulesWeighTheDiagonalEightToTwo) {
+    const PseudoEnergyTable t = PseudoEnergyTable::build({36, NodePlacement::periodic}, TableMethod::fast, 2, true);
+    const double deg = std::numbers::pi / 180;
+    const auto node = [&](int a, int b) { return t.node((a + 180) / 10, (b + 180) / 10); };
+    ASSERT_EQ(node(-20, 20).type, SegmentType::c);
+    ASSERT_EQ(node(-10, 10).type, SegmentType::c);
+    ASSERT_EQ(node(-20, 10).type, SegmentType::s);
+    ASSERT_EQ(node(-10, 20).type, SegmentType::s);
+    const double expected = 0.8 * node(-20, 20).length + 0.2 * node(-10, 10).length;
+    for (CellRule rule : {CellRule::same_type_linear, CellRule::same_type_inverse_distance, CellRule::same_type_mean_filled}) {
+        const TableValue v = t.lookup(-18 * deg, 18 * deg, TableReading{rule, false, 0.0});
+        EXPECT_NEAR(v.length, expected, 1e-14) << to_string(rule) << ": L = 0.8 L(-20°, 20°) + 0.2 L(-10°, 10°)";
+        EXPECT_EQ(v.type, SegmentType::c) << to_string(rule);
+    }
+    // The renormalised bilinear rule (same_type) weighs them 0.64 / 0.04, i.e. 0.94 / 0.06.
+    EXPECT_NEAR(t.lookup(-18 * deg, 18 * deg, TableReading{}).length, (0.64 * node(-20, 20).length + 0.04 * node(-10, 10).length) / 0.68, 1e-14);
+    // In cells of one type every rule is plain bilinear interpolation (all_corners).
+    int one_type_cells = 0;
+    for (int a = -170; a < 170; a += 10)
+        for (int b = -170; b < 170; b += 10) {
+            const SegmentType kind = node(a, b).type;
+            if (kind == SegmentType::x || node(a + 10, b).type != kind || node(a, b + 10).type != kind || node(a + 10, b + 10).type != kind) continue;
+            ++one_type_cells;
+            const double u = 0.37, v = 0.61, x = (a + 10 * u) * deg, y = (b + 10 * v) * deg;
+            const double bilinear = t.lookup(x, y, TableReading{CellRule::all_corners, false, 0.0}).area;
+            EXPECT_NEAR(t.lookup(x, y, TableReading{CellRule::same_type_linear, false, 0.0}).area, bilinear, 1e-14) << "linear at (" << a << ", " << b << ")";
+            EXPECT_NEAR(t.lookup(x, y, TableReading{CellRule::same_type_mean_filled, false, 0.0}).area, bilinear, 1e-14) << "mean-filled at (" << a << ", " << b << ")";
+            // Shepard's weights 1/d over the four corners, written out.
+            const double d[4] = {std::hypot(u, v), std::hypot(1 - u, v), std::hypot(u, 1 - v), std::hypot(1 - u, 1 - v)};
+            const double S[4] = {node(a, b).area, node(a + 10, b).area, node(a, b + 10).area, node(a + 10, b + 10).area};
+            double num = 0, den = 0;
+            for (int k = 0; k < 4; ++k) num += S[k] / d[k], den += 1 / d[k];
+            EXPECT_NEAR(t.lookup(x, y, TableReading{CellRule::same_type_inverse_distance, false, 0.0}).area, num / den, 1e-14) << "inverse distance at (" << a << ", " << b << ")";
+        }
+    EXPECT_GT(one_type_cells, 500) << "cells of one type";
+    // Linear over three same-type corners: the plane through them, solved here as a 3 × 3 system.
+    int three_corner_cells = 0;
+    for (int a = -170; a < 170; a += 10)
+        for (int b = -170; b < 170; b += 10) {
+            const int cu[4] = {0, 1, 0, 1}, cv[4] = {0, 0, 1, 1};
+            const double u = 0.3, v = 0.4;  // nearest corner (0, 0)
+            const SegmentType kind = node(a, b).type;
+            if (kind == SegmentType::x) continue;
+            Eigen::Matrix3d m;
+            Eigen::Vector3d f;
+            int same = 0;
+            for (int c = 0; c < 4; ++c) {
+                const PseudoEnergyMinimum& corner = node(a + 10 * cu[c], b + 10 * cv[c]);
+                if (corner.type != kind) continue;
+                if (same < 3) {
+                    m.row(same) << 1.0, cu[c], cv[c];
+                    f(same) = corner.length;
+                }
+                ++same;
+            }
+            if (same != 3) continue;
+            ++three_corner_cells;
+            const Eigen::Vector3d plane = m.partialPivLu().solve(f);
+            EXPECT_NEAR(t.lookup((a + 10 * u) * deg, (b + 10 * v) * deg, TableReading{CellRule::same_type_linear, false, 0.0}).length, plane(0) + plane(1) * u + plane(2) * v,
+                        1e-14)
+                << "the plane through three corners at (" << a << ", " << b << ")";
+        }
+    EXPECT_GT(three_corner_cells, 0) << "cells with three corners of one type";
+}
+
 TEST(PseudoEnergyTable, ReadingsOfTheTable) {
     const PseudoEnergyTable t = PseudoEnergyTable::build({12, NodePlacement::periodic}, TableMethod::fast, 2, true);
     const auto& nodes = t.nodes();

@@ -192,6 +192,81 @@ TableValue blend_cell(int n, int i, int j, double u, double v, SegmentType want,
     return out;
 }
 
+// The corners of `want`'s type (and defined) in the cell (i, j), read at local (u, v) by one of the
+// three further same-type rules of CellRule: each yields weights over those corners that sum to 1.
+template <class NodeValue>
+TableValue blend_same_type(CellRule rule, int n, int i, int j, double u, double v, SegmentType want, const NodeValue& at) {
+    const int i1 = next_node(i, n), j1 = next_node(j, n);
+    const int ci[4] = {i, i1, i, i1}, cj[4] = {j, j, j1, j1};
+    const double cu[4] = {0, 1, 0, 1}, cv[4] = {0, 0, 1, 1};
+    TableValue m[4];
+    int used[4], count = 0;
+    for (int k = 0; k < 4; ++k) {
+        m[k] = at(ci[k], cj[k]);
+        if (m[k].type != SegmentType::x && m[k].type == want) used[count++] = k;
+    }
+    if (count == 0) fail_input("cagd::fairness::PseudoEnergyTable::lookup", "no defined corner of the nearest node's type in the cell");  // (the nearest is one)
+    double w[4] = {0, 0, 0, 0};
+    if (rule == CellRule::same_type_mean_filled) {
+        // Bilinear over all four corners, every other-type corner carrying the same-type mean.
+        const double b[4] = {(1 - u) * (1 - v), u * (1 - v), (1 - u) * v, u * v};
+        double missing = 0.0;
+        for (int k = 0; k < 4; ++k) missing += b[k];
+        for (int c = 0; c < count; ++c) missing -= b[used[c]];
+        for (int c = 0; c < count; ++c) w[used[c]] = b[used[c]] + missing / count;
+    } else if (rule == CellRule::same_type_inverse_distance) {
+        double sum = 0.0;
+        for (int c = 0; c < count; ++c) {
+            const double d = std::hypot(u - cu[used[c]], v - cv[used[c]]);
+            if (d == 0.0) return m[used[c]];  // at the node itself
+            w[used[c]] = 1.0 / d;
+            sum += w[used[c]];
+        }
+        for (int c = 0; c < count; ++c) w[used[c]] /= sum;
+    } else if (count == 1 || count == 4) {  // same_type_linear: one corner, or bilinear over four
+        if (count == 1) return m[used[0]];
+        const double b[4] = {(1 - u) * (1 - v), u * (1 - v), (1 - u) * v, u * v};
+        for (int k = 0; k < 4; ++k) w[k] = b[k];
+    } else if (count == 2) {  // linear along the segment joining the two, at the point's projection
+        const int a = used[0], b = used[1];
+        const double du = cu[b] - cu[a], dv = cv[b] - cv[a];
+        const double t = std::clamp(((u - cu[a]) * du + (v - cv[a]) * dv) / (du * du + dv * dv), 0.0, 1.0);
+        w[a] = 1 - t;
+        w[b] = t;
+    } else {  // three corners: the plane through them (barycentric coordinates, one corner the right angle)
+        int right = used[0];
+        for (int c = 0; c < 3; ++c) {
+            int across = 0;  // corners of the three that differ from this one in exactly one coordinate
+            for (int e = 0; e < 3; ++e) across += (cu[used[e]] != cu[used[c]]) != (cv[used[e]] != cv[used[c]]);
+            if (across == 2) right = used[c];
+        }
+        int along_u = right, along_v = right;
+        for (int c = 0; c < 3; ++c) {
+            if (used[c] != right && cv[used[c]] == cv[right]) along_u = used[c];
+            if (used[c] != right && cu[used[c]] == cu[right]) along_v = used[c];
+        }
+        const double su = std::abs(u - cu[right]), sv = std::abs(v - cv[right]);
+        w[along_u] = su;
+        w[along_v] = sv;
+        w[right] = 1 - su - sv;
+    }
+    TableValue out;
+    for (int k = 0; k < 4; ++k) {
+        if (w[k] == 0.0) continue;
+        out.pseudo_energy += w[k] * m[k].pseudo_energy;
+        out.r0 += w[k] * m[k].r0;
+        out.r1 += w[k] * m[k].r1;
+        out.length += w[k] * m[k].length;
+        out.area += w[k] * m[k].area;
+    }
+    out.type = want;
+    return out;
+}
+
+bool is_same_type_variant(CellRule c) {
+    return c == CellRule::same_type_linear || c == CellRule::same_type_inverse_distance || c == CellRule::same_type_mean_filled;
+}
+
 }  // namespace
 
 TableValue PseudoEnergyTable::lookup(double theta0, double theta1, bool same_type_only) const {
@@ -210,6 +285,9 @@ const char* to_string(CellRule c) {
         case CellRule::all_corners: return "all_corners";
         case CellRule::nearest_node_down: return "nearest_node_down";
         case CellRule::nearest_node_up: return "nearest_node_up";
+        case CellRule::same_type_linear: return "same_type_linear";
+        case CellRule::same_type_inverse_distance: return "same_type_inverse_distance";
+        case CellRule::same_type_mean_filled: return "same_type_mean_filled";
     }
     return "?";
 }
@@ -246,6 +324,14 @@ TableValue PseudoEnergyTable::lookup(double theta0, double theta1, const TableRe
         const auto pick = [&](int lower, double t) { return (std::abs(t - 0.5) <= 1e-9 ? up : t > 0.5) ? next_node(lower, n) : lower; };
         out = at(pick(i, u), pick(j, v));
         done = out.type != SegmentType::x;
+    }
+    if (!done && is_same_type_variant(reading.cell)) {
+        // (An undefined nearest node falls back to all_corners, as for same_type.)
+        const SegmentType want = at(u < 0.5 ? i : next_node(i, n), v < 0.5 ? j : next_node(j, n)).type;
+        if (want != SegmentType::x) {
+            out = blend_same_type(reading.cell, n, i, j, u, v, want, at);
+            done = true;
+        }
     }
     if (!done) {
         const SegmentType want = reading.cell == CellRule::same_type ? at(u < 0.5 ? i : next_node(i, n), v < 0.5 ? j : next_node(j, n)).type : SegmentType::x;

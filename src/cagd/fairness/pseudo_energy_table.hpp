@@ -84,13 +84,23 @@ struct TableValue {
 ///                     nearest node, a coordinate half-way between two nodes (to 1e-9 of the
 ///                     spacing) going to the lower / upper one (an undefined nearest node falls back
 ///                     to all_corners)
+///                     The corners of the nearest corner's type read in three further ways, each of
+///                     which equals plain bilinear interpolation in a cell of one type:
+///                     same_type_linear: the linear function through those corners (one: its value;
+///                     two: linear along the segment joining them, at the point's projection on it;
+///                     three: the plane through them; four: bilinear); same_type_inverse_distance:
+///                     Shepard's weights 1/d (d the distance to the corner in the cell's (u, v)
+///                     coordinates; a node itself at d = 0); same_type_mean_filled: bilinear over all
+///                     four corners with each other-type (or undefined) corner's value replaced by
+///                     the mean of the same-type corners'
 ///   radii             interpolate r0, r1 only and measure J, L, S of the segment they make (fast
 ///                     quadrature) — else J, L, S are interpolated themselves (eq 17, 20)
 ///   runner_up_within  > 0: a node whose second local minimum is within this of the global one in J
 ///                     holds the second instead (as a minimiser that stopped in the other basin
 ///                     would); its J, L, S measured at the runner-up's r0, r1
-enum class CellRule { same_type, all_corners, nearest_node_down, nearest_node_up };
-/// "same_type", "all_corners", "nearest_node_down" or "nearest_node_up".
+enum class CellRule { same_type, all_corners, nearest_node_down, nearest_node_up, same_type_linear, same_type_inverse_distance, same_type_mean_filled };
+/// "same_type", "all_corners", "nearest_node_down", "nearest_node_up", "same_type_linear",
+/// "same_type_inverse_distance" or "same_type_mean_filled".
 const char* to_string(CellRule c);
 /// How a table is read between its nodes (see above).
 struct TableReading {
