@@ -120,9 +120,11 @@ int main(int argc, char** argv) {
         if (d.name == "table3") run.note("Table 3 data: the pseudo-spline in mode none (no minimisation of eq 12) has " + std::to_string(fn.corners) + " span(s) with a corner.");
         const int spans = exact.curve.spans();
         if (d.name != "table3" && spans >= 3) {
-            for (const std::string m : {"hermite-a", "hermite-b"}) {
-                const methods::Interpolant hermite = section42(d.points, m);
-                const Curve& h = *hermite.curve;
+            // "Without optimisation" read as Hermite curves A and B (our stated reading), and as the
+            // pseudo-spline whose tangents are not optimised (mode none: Table 4's 「最適化しない場合」).
+            for (const std::string m : {"hermite-a", "hermite-b", "pseudo-spline-none"}) {
+                const methods::Interpolant hermite = m == "pseudo-spline-none" ? methods::Interpolant{} : section42(d.points, m);
+                const Curve& h = m == "pseudo-spline-none" ? static_cast<const Curve&>(none.curve) : *hermite.curve;
                 const double interior = span_distance(exact.curve, h, 1, spans - 2) / bounding_box_diagonal(d.points);
                 const double ends = std::max(span_distance(exact.curve, h, 0, 0), span_distance(exact.curve, h, spans - 1, spans - 1)) / bounding_box_diagonal(d.points);
                 std::string key = d.name + "." + m;
@@ -137,15 +139,16 @@ int main(int argc, char** argv) {
     // within 1 % of the data diagonal (our threshold, as in sb2_locality).
     CsvWriter comparison = run.table("optimisation_comparison.csv", {"data", "non_optimised", "interior_spans_percent_of_diagonal", "end_spans_percent_of_diagonal"});
     for (const char* data : {"table1", "table2"})
-        for (const char* m : {"hermite-a", "hermite-b"}) {
+        for (const char* m : {"hermite-a", "hermite-b", "pseudo-spline-none"}) {
             const std::string key = std::string(data) + "." + m;
             comparison.row_text({data, m, format_number(100 * interior_max[key], 4), format_number(100 * ends_max[key], 4)});
             const std::string claim = "sec42." + key;  // sec42.<table1|table2>.<hermite-a|hermite-b>.*
-            // "Nearly the same" is our 1 %; also checked at 0.5, 2 and 5 % of the diagonal.
-            std::vector<repro::ChoiceValue> same;
-            for (double thr : {0.005, 0.02, 0.05}) same.push_back({"nearly the same = within " + format_number(100 * thr) + " %", interior_max[key] < thr ? 1.0 : 0.0});
-            run.check_over_choices(claim + ".interior_same", interior_max[key] < 0.01 ? 1.0 : 0.0, "nearly the same = within 1 %", same);
-            run.check(claim + ".ends_differ_more", ends_max[key] > interior_max[key] ? 1.0 : 0.0);
+            // "Nearly the same": the reference row's threshold (1 % of the diagonal, stated before the
+            // measurement); its other thresholds are notes.
+            run.check_threshold(claim + ".interior_same", interior_max[key], "interior distance / diagonal");
+            // On Table 2 the end spans join collinear points and are straight in every method, so
+            // "except at both ends" says nothing there: that claim is not checked (reference file).
+            if (std::string(data) == "table1") run.check(claim + ".ends_differ_more", ends_max[key] > interior_max[key] ? 1.0 : 0.0);
         }
     // A corner is our |κ|·chord > 100 (radius below 1 % of the chord); also checked at 30 and 300.
     // Under another threshold the pseudo-spline's count is given as 0 or 1 (= at least one span).

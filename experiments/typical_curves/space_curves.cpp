@@ -221,6 +221,12 @@ int main(int argc, char** argv) {
     {
         const std::string stated = "s0 = 0.1, L = 1, alexa, fit t in [0, 1]";
         std::vector<repro::ChoiceValue> lcg_choices, ltg_choices, straight_choices, kappa_choices, tau_choices;
+        struct SlopePair {
+            std::string label;
+            double lcg, ltg;
+            bool excluded;  // s0 = 0: excluded by erratum typical_curves-E13 (τ unbounded at the start)
+        };
+        std::vector<SlopePair> slope_pairs;
         CsvWriter t = run.table("space_slope_dependence.csv", {"start", "length", "composition", "degree", "t_from", "t_to", "lcg_slope", "ltg_slope"});
         for (double st : {0.0, 0.05, 0.1, 0.5, 1.0})
             for (double len : {0.5, 1.0, 2.0})
@@ -238,12 +244,11 @@ int main(int argc, char** argv) {
                                         format_number(a.slope, 6), format_number(b.slope, 6)});
                             res_k.push_back(a.max_residual);
                             res_t.push_back(b.max_residual);
-                            if (n == 99 && !is_stated) {
-                                lcg_choices.push_back({label, a.slope});
-                                ltg_choices.push_back({label, b.slope});
-                            }
+                            if (n == 99 && !is_stated) slope_pairs.push_back({label, a.slope, b.slope, st == 0.0});
                         }
-                        if (!is_stated) straight_choices.push_back({label, res_k[0] < res_k[1] && res_k[1] < res_k[2] && res_t[0] < res_t[1] && res_t[1] < res_t[2] ? 1.0 : 0.0});
+                        if (!is_stated)
+                            straight_choices.push_back({label, res_k[0] < res_k[1] && res_k[1] < res_k[2] && res_t[0] < res_t[1] && res_t[1] < res_t[2] ? 1.0 : 0.0,
+                                                        std::nullopt, st == 0.0 ? repro::ChoiceKind::note : repro::ChoiceKind::reading});
                     }
         CsvWriter m = run.table("space_monotonicity_dependence.csv", {"start", "length", "degree", "curvature_trend", "torsion_trend"});
         for (double st : {0.0, 0.05, 0.1, 0.5, 1.0})
@@ -258,9 +263,25 @@ int main(int argc, char** argv) {
                 }
                 if (st == s0 && len == L) continue;  // the stated choice: the claims' own values
                 const std::string label = "s0 = " + format_number(st) + ", L = " + format_number(len);
-                kappa_choices.push_back({label, all_k ? 1.0 : 0.0});
-                tau_choices.push_back({label, all_t ? 1.0 : 0.0});
+                const repro::ChoiceKind kind = st == 0.0 ? repro::ChoiceKind::note : repro::ChoiceKind::reading;  // s0 = 0: excluded (E13)
+                kappa_choices.push_back({label, all_k ? 1.0 : 0.0, std::nullopt, kind});
+                tau_choices.push_back({label, all_t ? 1.0 : 0.0, std::nullopt, kind});
             }
+        // Figs. 4–5 show both slopes of one curve, so a combination is a reading of them only if it
+        // is judged on both: one that gives a printed slope while missing the other (and every s0 = 0,
+        // which erratum E13 excludes) is a note, never deciding.
+        {
+            const auto within = [&](const char* id, double v) {
+                const repro::ReferenceRow& row = run.reference().row(std::string("typical_curves.") + id);
+                return std::abs(v - row.paper_value) <= row.tolerance;
+            };
+            for (const SlopePair& p : slope_pairs) {
+                const bool note = p.excluded || within("space.lcg_slope_degree99", p.lcg) != within("space.ltg_slope_degree99", p.ltg);
+                const repro::ChoiceKind kind = note ? repro::ChoiceKind::note : repro::ChoiceKind::reading;
+                lcg_choices.push_back({p.label, p.lcg, std::nullopt, kind});
+                ltg_choices.push_back({p.label, p.ltg, std::nullopt, kind});
+            }
+        }
         run.check_over_choices("space.lcg_slope_degree99", lcg[0], stated, lcg_choices);
         run.check_over_choices("space.ltg_slope_degree99", ltg[0], stated, ltg_choices);
         run.check_over_choices("space.curvature_monotone", kappa_monotone ? 1.0 : 0.0, "s0 = 0.1, L = 1", kappa_choices);

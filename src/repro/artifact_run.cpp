@@ -25,6 +25,8 @@ const char* to_string(ClaimStatus s) {
         case ClaimStatus::deviates: return "deviates";
         case ClaimStatus::depends: return "depends";
         case ClaimStatus::failed: return "failed";
+        case ClaimStatus::holds: return "ours: holds";
+        case ClaimStatus::fails: return "ours: fails";
     }
     return "failed";
 }
@@ -69,6 +71,12 @@ ArtifactRun::ArtifactRun(std::string paper, std::string artifact, std::string se
 void ArtifactRun::check(const std::string& short_id, double ours) {
     const ReferenceRow& row = reference_.row(paper_ + "." + short_id);
     const bool documented = !row.erratum.empty() && errata_.count(row.erratum) > 0;
+    if (row.ours) {  // a claim of ours: holds within its tolerance, or fails (no erratum can explain it)
+        const bool holds = std::isfinite(ours) && std::abs(ours - row.paper_value) <= row.tolerance;
+        records_.push_back({"ours", row.id, row.description + " (stated " + row.stated + " a first measurement)", row.paper_value, ours, row.tolerance, row.paper_text,
+                            row.tolerance_reason, row.erratum, holds ? ClaimStatus::holds : ClaimStatus::fails});
+        return;
+    }
     records_.push_back(
         {"claim", row.id, row.description, row.paper_value, ours, row.tolerance, row.paper_text, row.tolerance_reason, row.erratum, classify(row, ours, std::nullopt, documented)});
 }
@@ -76,6 +84,7 @@ void ArtifactRun::check(const std::string& short_id, double ours) {
 void ArtifactRun::check(const std::string& short_id, double ours, double ours_corrected) {
     check(short_id, ours);
     const ReferenceRow& row = reference_.row(paper_ + "." + short_id);
+    if (row.ours) fail_input("ArtifactRun::check", row.id + ": a claim of ours has no corrected form (it holds or fails)");
     const bool documented = !row.erratum.empty() && errata_.count(row.erratum) > 0;
     records_.back().status = classify(row, ours, ours_corrected, documented);
 }
@@ -83,30 +92,56 @@ void ArtifactRun::check(const std::string& short_id, double ours, double ours_co
 void ArtifactRun::check_over_choices(const std::string& short_id, double ours, const std::string& stated, const std::vector<ChoiceValue>& others) {
     check(short_id, ours);
     CheckRecord& r = records_.back();
-    std::vector<ChoiceValue> all{{stated + " (stated)", ours, std::nullopt}};
+    const ReferenceRow& row = reference_.row(paper_ + "." + short_id);
+    std::vector<ChoiceValue> all{{stated + " (stated)", ours, std::nullopt, ChoiceKind::reading}};
     all.insert(all.end(), others.begin(), others.end());
     std::vector<bool> within;
     double lo = ours, hi = ours;
-    // Group the choices by verdict, naming the first few of each group (the stated one first); the
-    // experiment's own dependence table lists them all.
+    // Group the readings by verdict, naming the first few of each group (the stated one first), and
+    // the notes likewise; the experiment's own dependence table lists them all.
     constexpr int kNamed = 4;
-    std::string text[2];
-    int count[2] = {0, 0};
+    std::string text[2][2];  // [note][within]
+    int count[2][2] = {{0, 0}, {0, 0}};
+    std::string undeclared;
     for (const ChoiceValue& c : all) {
+        const bool note = c.kind == ChoiceKind::note;
+        if (c.tolerance && !note) {
+            const auto& declared = row.thresholds;
+            if (std::find(declared.begin(), declared.end(), *c.tolerance) == declared.end()) undeclared += (undeclared.empty() ? "" : ", ") + format_number(*c.tolerance, 6);
+        }
         const bool w = std::isfinite(c.ours) && std::abs(c.ours - r.paper) <= c.tolerance.value_or(r.tolerance);
-        within.push_back(w);
-        lo = std::min(lo, c.ours);
-        hi = std::max(hi, c.ours);
-        if (count[w]++ < kNamed)
-            text[w] += (text[w].empty() ? "" : "; ") + c.label + (c.tolerance ? " (tolerance " + format_number(*c.tolerance, 3) + ")" : "") + ": " + format_number(c.ours, 6);
+        if (!note) {
+            within.push_back(w);
+            lo = std::min(lo, c.ours);
+            hi = std::max(hi, c.ours);
+        }
+        if (count[note][w]++ < kNamed)
+            text[note][w] += (text[note][w].empty() ? "" : "; ") + c.label + (c.tolerance ? " (tolerance " + format_number(*c.tolerance, 3) + ")" : "") + ": " + format_number(c.ours, 6);
     }
     r.status = classify_over_choices(r.status, within);
     r.ours_range = "[" + format_number(lo, 6) + ", " + format_number(hi, 6) + "]";
-    const auto group = [&](int w) {
-        const std::string more = count[w] > kNamed ? "; " + std::to_string(count[w] - kNamed) + " more" : "";
-        return std::to_string(count[w]) + (count[w] ? " (" + text[w] + more + ")" : "");
+    const auto group = [&](int note, int w) {
+        const std::string more = count[note][w] > kNamed ? "; " + std::to_string(count[note][w] - kNamed) + " more" : "";
+        return std::to_string(count[note][w]) + (count[note][w] ? " (" + text[note][w] + more + ")" : "");
     };
-    r.choices = std::to_string(all.size()) + " choices; within tolerance of the paper at " + group(1) + "; outside it at " + group(0);
+    r.choices = std::to_string(within.size()) + (within.size() == 1 ? " choice" : " choices") + "; within tolerance of the paper at " + group(0, 1) + "; outside it at " + group(0, 0);
+    if (count[1][0] + count[1][1] > 0)
+        r.choices += ". Notes, not readings of the text (never deciding): " + std::to_string(count[1][0] + count[1][1]) + "; within tolerance at " + group(1, 1) +
+                     "; outside it at " + group(1, 0);
+    if (!undeclared.empty()) {  // a threshold the reference row does not declare cannot decide a verdict
+        r.status = ClaimStatus::failed;
+        r.choices += ". FAILED: threshold(s) " + undeclared + " not declared in the reference row's `thresholds`";
+    }
+}
+
+void ArtifactRun::check_threshold(const std::string& short_id, double measure, const std::string& what) {
+    const ReferenceRow& row = reference_.row(paper_ + "." + short_id);
+    if (row.thresholds.empty()) fail_input("ArtifactRun::check_threshold", row.id + ": the reference row declares no `thresholds`");
+    const auto holds = [&](double t) { return std::isfinite(measure) && measure < t ? 1.0 : 0.0; };
+    std::vector<ChoiceValue> others;
+    for (std::size_t k = 1; k < row.thresholds.size(); ++k) others.push_back({what + " < " + format_number(row.thresholds[k], 4), holds(row.thresholds[k])});
+    for (const double t : row.note_thresholds) others.push_back({what + " < " + format_number(t, 4), holds(t), std::nullopt, ChoiceKind::note});
+    check_over_choices(short_id, holds(row.thresholds[0]), what + " < " + format_number(row.thresholds[0], 4) + " (measured " + format_number(measure, 4) + ")", others);
 }
 
 void ArtifactRun::validate(const std::string& short_id, const std::string& description, double fast, double reference_value, double tolerance, const std::string& reason) {
@@ -144,10 +179,10 @@ int ArtifactRun::finish() {
     // A claim of the reference file that was never checked is a failure, never a silent skip.
     for (const auto& row : reference_.rows) {
         bool seen = timing_rows_.count(row.id) > 0;
-        for (const auto& r : records_) seen = seen || (r.kind == "claim" && r.id == row.id);
+        for (const auto& r : records_) seen = seen || ((r.kind == "claim" || r.kind == "ours") && r.id == row.id);
         if (!seen)
-            records_.push_back({"claim", row.id, row.description + " (NOT COMPUTED by the experiment)", row.paper_value, std::nan(""), row.tolerance, row.paper_text,
-                                row.tolerance_reason, row.erratum, ClaimStatus::failed});
+            records_.push_back({row.ours ? "ours" : "claim", row.id, row.description + " (NOT COMPUTED by the experiment)", row.paper_value, std::nan(""), row.tolerance, row.paper_text,
+                                row.tolerance_reason, row.erratum, row.ours ? ClaimStatus::fails : ClaimStatus::failed});
     }
     {
         CsvWriter w(data_path(artifact_ + ".checks.csv"),
@@ -179,16 +214,18 @@ int ArtifactRun::finish() {
             std::cout << "timing " << t.id << ": ours " << format_number(t.ours, 4) << ", paper " << format_number(t.paper, 4) << " in [" << format_number(t.lo, 4) << ", "
                       << format_number(t.hi, 4) << "]: " << (t.ours >= t.lo && t.ours <= t.hi ? "within" : "outside") << "\n";
     }
-    int counts[4] = {0, 0, 0, 0};
+    int counts[6] = {0, 0, 0, 0, 0, 0};  // by ClaimStatus
     for (const auto& r : records_) {
         ++counts[static_cast<int>(r.status)];
-        if (r.status == ClaimStatus::failed)
+        if (r.status == ClaimStatus::failed || r.status == ClaimStatus::fails)
             std::cerr << "FAILED " << r.kind << " " << r.id << ": paper " << r.paper_text << ", ours " << format_number(r.ours) << ", tolerance " << format_number(r.tolerance, 3)
                       << "\n";
     }
     std::cout << paper_ << "/" << artifact_ << ": " << counts[0] << " reproduced, " << counts[1] << " deviates, " << counts[2] << " depend on a choice, " << counts[3]
-              << " failed\n";
-    return counts[3] > 0 ? 1 : 0;
+              << " failed";
+    if (counts[4] + counts[5] > 0) std::cout << "; claims of ours: " << counts[4] << " hold, " << counts[5] << " fail";
+    std::cout << "\n";
+    return counts[3] + counts[5] > 0 ? 1 : 0;
 }
 
 }  // namespace cagd::repro

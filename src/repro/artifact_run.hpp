@@ -17,7 +17,17 @@
 //               differs between the choices. The report gives the range of ours over the choices
 //               and which choices decide. When every choice agrees, the stated status stands and
 //               the claim is unconditional (its range is still shown).
+//               The rule (docs/reproduction.md), enforced here: only alternatives the paper's text
+//               allows decide (ChoiceKind::reading), and a threshold decides only when the claim's
+//               reference row declares it (column `thresholds`: the stated one first, then the
+//               allowed alternatives, each fixed before the run). An alternative that exists to
+//               reach the printed number (a stop tuned within a tie, a minimiser assumed to stop
+//               in another basin, a threshold added after a measurement) is a ChoiceKind::note:
+//               shown beside the claim, never deciding. An undeclared threshold fails the claim.
 //   failed      anything else, including a reference row the experiment never checked.
+//   ours: holds / ours: fails   the verdict on a claim of ours (reference column origin = ours: a
+//               statement we make where the paper prints none), within its tolerance or not; it is
+//               counted apart from the paper's claims everywhere, and fails counts as failed.
 // Any failed claim or validation makes finish() return 1; depends does not.
 //
 // Command line of every experiment: [--check] [--root DIR]. --check computes and checks
@@ -32,18 +42,25 @@
 
 namespace cagd::repro {
 
-enum class ClaimStatus { reproduced, deviates, depends, failed };
+// holds / fails: the verdict on a claim of ours (a reference row with origin "ours"), kept apart
+// from the paper's; fails counts as a failure.
+enum class ClaimStatus { reproduced, deviates, depends, failed, holds, fails };
 const char* to_string(ClaimStatus s);
 
 // The classification rule above, as a pure function (unit-tested).
 ClaimStatus classify(const ReferenceRow& row, double ours, std::optional<double> ours_corrected, bool erratum_documented);
 
-// One allowed choice and our value under it. `tolerance`, when given, replaces the row's (a choice
-// of threshold: "visible" = 0.1 % instead of 0.2 % of the diagonal).
+// reading: an alternative the paper's text allows (it can make a claim `depends`); note: one that
+// exists only to reach the printed number (reported beside the claim, never deciding).
+enum class ChoiceKind { reading, note };
+
+// One choice and our value under it. `tolerance`, when given, replaces the row's (a choice of
+// threshold: "visible" = 0.1 % instead of 0.2 % of the diagonal); it must be one the row declares.
 struct ChoiceValue {
     std::string label;  // "s0 = 0, L = 1, fit t in [0, 1]"
     double ours = 0.0;
     std::optional<double> tolerance{};
+    ChoiceKind kind = ChoiceKind::reading;
 };
 // The status over choices (rule `depends` above): `stated` is the status under our stated choice;
 // `within` says, for the stated choice and then each alternative, whether |ours − paper| ≤ its
@@ -51,7 +68,7 @@ struct ChoiceValue {
 ClaimStatus classify_over_choices(ClaimStatus stated, const std::vector<bool>& within);
 
 struct CheckRecord {
-    std::string kind;  // "claim" or "validation"
+    std::string kind;  // "claim", "ours" (a claim of ours) or "validation"
     std::string id, description;
     double paper = 0.0, ours = 0.0, tolerance = 0.0;
     std::string paper_text, tolerance_reason, erratum;
@@ -72,6 +89,12 @@ public:
     // A claim whose value depends on a choice the paper leaves open: ours under our stated choice
     // (named by `stated`, the value the report shows) and under every other allowed choice.
     void check_over_choices(const std::string& short_id, double ours, const std::string& stated, const std::vector<ChoiceValue>& others);
+    // A statement "measure < threshold" (a vague word of the paper made a number: "nearly the same"
+    // = within 1 % of the diagonal): the thresholds come from the claim's reference row (column
+    // `thresholds`, the stated one first), never from the experiment. The claim's value is 1 when
+    // measure < threshold, else 0; the row's other thresholds are its alternatives, and those of
+    // `note_thresholds` are shown as notes.
+    void check_threshold(const std::string& short_id, double measure, const std::string& what);
     // An independent recomputation of a library value: |fast − reference| ≤ tolerance.
     void validate(const std::string& short_id, const std::string& description, double fast, double reference_value, double tolerance, const std::string& tolerance_reason);
 
@@ -93,6 +116,8 @@ public:
     CsvWriter table(const std::string& file_name, const std::vector<std::string>& header) const;
 
     int finish();
+    // The checks recorded so far, in order (tests read the statuses here).
+    const std::vector<CheckRecord>& records() const { return records_; }
 
 private:
     std::string paper_, artifact_, section_, title_, root_, out_dir_;

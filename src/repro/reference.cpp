@@ -1,5 +1,6 @@
 #include "repro/reference.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <set>
 
@@ -65,6 +66,23 @@ Reference load_reference(const std::string& path) {
                     if (!v.empty()) r.corrected_value = parse_number(v);
                 } else if (h == "description")
                     r.description = v;
+                else if (h == "origin") {
+                    if (v != "" && v != "paper" && v != "ours") fail_input(who, where + ": column 'origin' is '" + v + "'; allowed: paper, ours (or empty)");
+                    r.ours = v == "ours";
+                } else if (h == "stated") {
+                    if (v != "" && v != "before" && v != "after") fail_input(who, where + ": column 'stated' is '" + v + "'; allowed: before, after (a first measurement)");
+                    r.stated = v;
+                } else if (h == "thresholds" || h == "note_thresholds") {
+                    std::vector<double>& out = h == "thresholds" ? r.thresholds : r.note_thresholds;
+                    std::size_t start = 0;
+                    while (start <= v.size() && !v.empty()) {
+                        const std::size_t end = std::min(v.find(';', start), v.size());
+                        const double t = parse_number(v.substr(start, end - start));
+                        if (!(t > 0.0)) fail_input(who, where + ": column '" + h + "': threshold " + v.substr(start, end - start) + " must be > 0");
+                        out.push_back(t);
+                        start = end + 1;
+                    }
+                }
             } catch (const InvalidInput& e) {
                 fail_input(who, where + ": column '" + h + "': " + e.what());
             }
@@ -72,6 +90,7 @@ Reference load_reference(const std::string& path) {
         if (r.id.empty()) fail_input(who, where + ": empty id");
         if (!(r.tolerance >= 0.0)) fail_input(who, where + ": tolerance must be >= 0");
         if (r.tolerance_reason.empty()) fail_input(who, where + ": tolerance_reason is empty");
+        if (r.ours && r.stated.empty()) fail_input(who, where + ": a claim of ours must say in column 'stated' whether it was written before or after a first measurement");
         if (!ids.insert(r.id).second) fail_input(who, where + ": duplicate id '" + r.id + "'");
         ref.rows.push_back(r);
     }

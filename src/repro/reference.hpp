@@ -7,7 +7,8 @@
 //   sb2_locality.eq13.m4.w0,0.998621,5e-7,printed 6 decimals,,,weight of q_{i,0} for m = 4
 //
 // paper_value may be a decimal or an exact fraction a/b. erratum names an entry of
-// reference/ERRATA.md; corrected_value (optional) is the value that entry derives.
+// reference/ERRATA.md; corrected_value (optional) is the value that entry derives. Optional
+// columns: thresholds, note_thresholds (ArtifactRun::check_threshold); origin, stated (our claims).
 #include <map>
 #include <optional>
 #include <string>
@@ -24,6 +25,15 @@ struct ReferenceRow {
     std::string erratum;  // empty if none
     std::optional<double> corrected_value;
     std::string description;
+    // A claim "measure < threshold": the stated threshold first, then the alternatives the text
+    // allows (column `thresholds`, ';'-separated), and thresholds shown only as notes (column
+    // `note_thresholds`). Empty for other claims.
+    std::vector<double> thresholds{}, note_thresholds{};
+    // Whose statement the row is: the paper's (column `origin` empty or "paper"), or ours ("ours":
+    // a statement we make where the paper prints no number, counted apart). An "ours" row says in
+    // column `stated` whether it was written "before" or "after" a first measurement.
+    bool ours = false;
+    std::string stated{};
 };
 
 struct Reference {

@@ -141,15 +141,17 @@ int write_report(const std::string& root) {
     // Both files through core/output_file: published whole after every write succeeded, or not at all.
     OutputFile claims_file((results / "claims.csv").string(), "");
     std::ostream& claims = claims_file.stream();
-    claims << "paper,artifact,claim,paper_value,ours,abs_diff,tolerance,status,erratum,ours_range,choices\n";
+    // origin: paper (a claim the paper prints) or ours (a statement of ours where it prints none; its
+    // status is "ours: holds" or "ours: fails", and paper_value holds our stated value).
+    claims << "paper,artifact,claim,paper_value,ours,abs_diff,tolerance,status,erratum,ours_range,choices,origin\n";
     std::ostringstream body, summary;
-    summary << "| paper | claims | unconditional | reproduced | deviates | depends on a choice | failed | validations (passed / total) |\n"
-               "|---|---:|---:|---:|---:|---:|---:|---:|\n";
-    int total_n = 0, total_rep = 0, total_dev = 0, total_dep = 0, total_fail = 0, total_val = 0, total_val_ok = 0;
+    summary << "| paper | claims | unconditional | reproduced | deviates | depends on a choice | failed | validations (passed / total) | claims of ours (hold / total) |\n"
+               "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    int total_n = 0, total_rep = 0, total_dev = 0, total_dep = 0, total_fail = 0, total_val = 0, total_val_ok = 0, total_ours = 0, total_ours_ok = 0;
     for (const auto& [paper, title] : kPapers) {
         const fs::path dir = results / paper;
         if (!fs::exists(dir)) {
-            summary << "| `" << paper << "` | — | — | — | — | — | — | not yet reproduced |\n";
+            summary << "| `" << paper << "` | — | — | — | — | — | — | not yet reproduced | — |\n";
             continue;
         }
         std::vector<Artifact> arts;
@@ -159,7 +161,7 @@ int write_report(const std::string& root) {
         std::sort(metas.begin(), metas.end());
         for (const auto& m : metas) arts.push_back(read_artifact(m, paper));
         std::stable_sort(arts.begin(), arts.end(), [](const Artifact& x, const Artifact& y) { return std::make_pair(x.section, x.name) < std::make_pair(y.section, y.name); });
-        int n = 0, rep = 0, dev = 0, dep = 0, fail = 0, val = 0, val_ok = 0;
+        int n = 0, rep = 0, dev = 0, dep = 0, fail = 0, val = 0, val_ok = 0, ours = 0, ours_ok = 0;
         body << "\n<a id=\"" << paper << "\"></a>\n\n## `" << paper << "` — " << title << "\n";
         for (const auto& a : arts) {
             body << "\n### " << a.title << " (`" << a.name << "`)\n\n";
@@ -172,9 +174,20 @@ int write_report(const std::string& root) {
             if (has_claims)
                 body << "\n| claim | statement | paper | ours | \\|Δ\\| | tolerance | status |\n"
                         "|---|---|---:|---:|---:|---:|---|\n";
-            std::ostringstream vals;
+            std::ostringstream vals, own;
             for (const auto& r : a.rows) {
                 const std::string status = r["status"];
+                if (r["kind"] == "ours") {
+                    ++ours;
+                    ours_ok += status == "ours: holds";
+                    claims << csv_field(paper) << "," << csv_field(a.name) << "," << csv_field(r["id"]) << "," << csv_field(r["paper_value"]) << "," << r["ours"] << ","
+                           << r["abs_diff"] << "," << r["tolerance"] << "," << status << "," << r["erratum"] << "," << csv_field(r["ours_range"]) << "," << csv_field(r["choices"])
+                           << ",ours\n";
+                    own << "| `" << r["id"].substr(paper.size() + 1) << "` | " << md(r["description"]) << " | " << md(r["paper_value"]) << " | " << r["ours"] << " | "
+                        << r["abs_diff"] << " | " << r["tolerance"] << " | " << (status == "ours: holds" ? "holds" : "**fails**") << " |\n";
+                    failed += status != "ours: holds";
+                    continue;
+                }
                 if (r["kind"] == "claim") {
                     ++n;
                     rep += status == "reproduced";
@@ -183,7 +196,7 @@ int write_report(const std::string& root) {
                     fail += status == "failed";
                     claims << csv_field(paper) << "," << csv_field(a.name) << "," << csv_field(r["id"]) << "," << csv_field(r["paper_value"]) << "," << r["ours"] << ","
                            << r["abs_diff"] << "," << r["tolerance"] << "," << status << "," << r["erratum"] << "," << csv_field(r["ours_range"]) << "," << csv_field(r["choices"])
-                           << "\n";
+                           << ",paper\n";
                     std::string shown = status == "failed" ? "**failed**" : status == "depends" ? "**depends**" : status;
                     if (!r["erratum"].empty()) shown += " ([" + r["erratum"] + "](../reference/ERRATA.md#" + anchor(r["erratum"]) + "))";
                     // Checked over the choices the paper leaves open: the range, and which choices decide.
@@ -199,6 +212,12 @@ int write_report(const std::string& root) {
                 }
                 failed += status == "failed";
             }
+            if (!own.str().empty())
+                body << "\nClaims of ours — statements we make where the paper prints no number, counted apart from the paper's (the statement says "
+                        "whether it was written before or after a first measurement):\n\n"
+                        "| claim | statement | stated value | ours | \\|Δ\\| | tolerance | verdict |\n"
+                        "|---|---|---:|---:|---:|---:|---|\n"
+                     << own.str();
             if (!vals.str().empty())
                 body << "\nValidation — library value against an independent recomputation:\n\n"
                         "| check | what | reference | library | \\|Δ\\| | tolerance | result |\n"
@@ -228,11 +247,12 @@ int write_report(const std::string& root) {
             }
         }
         summary << "| [`" << paper << "`](#" << paper << ") | " << n << " | " << rep + dev << " | " << rep << " | " << dev << " | " << dep << " | " << fail << " | " << val_ok
-                << " / " << val << " |\n";
-        total_n += n, total_rep += rep, total_dev += dev, total_dep += dep, total_fail += fail, total_val += val, total_val_ok += val_ok;
+                << " / " << val << " | " << ours_ok << " / " << ours << " |\n";
+        total_n += n, total_rep += rep, total_dev += dev, total_dep += dep, total_fail += fail, total_val += val, total_val_ok += val_ok, total_ours += ours,
+            total_ours_ok += ours_ok;
     }
     summary << "| **all** | " << total_n << " | " << total_rep + total_dev << " | " << total_rep << " | " << total_dev << " | " << total_dep << " | " << total_fail << " | "
-            << total_val_ok << " / " << total_val << " |\n";
+            << total_val_ok << " / " << total_val << " | " << total_ours_ok << " / " << total_ours << " |\n";
     OutputFile report_file((results / "REPORT.md").string(), "");
     std::ostream& report = report_file.stream();
     report << "# cagd-repro — reproduction report\n\n"
@@ -247,6 +267,16 @@ int write_report(const std::string& root) {
               "the reproduced and deviating claims, whose verdict holds under every choice tried (rows checked\n"
               "over choices say so). Tolerances and their reasons are in the reference files. The\n"
               "machine-readable form is [claims.csv](claims.csv).\n\n"
+              "The rule for **depends** (docs/reproduction.md): a claim depends on a choice only when every\n"
+              "alternative is one the paper's text allows, our stated choice was fixed before the comparison,\n"
+              "and the verdict differs among them. A threshold decides only when the claim's reference row\n"
+              "declares it before the run (column `thresholds`). An alternative that exists only to reach the\n"
+              "printed number (a stop tuned within a tie, a minimiser assumed to stop in another basin, a\n"
+              "threshold added after a measurement, a reading that gives one printed value of a figure and\n"
+              "misses its sibling) is a *note*: listed beside the claim, never deciding its status.\n\n"
+              "*Claims of ours* are statements we make where the paper prints no number; they hold or fail,\n"
+              "are counted apart from the paper's claims (last column; `origin` = ours in claims.csv), and say\n"
+              "whether they were written before or after a first measurement.\n\n"
               "## Summary\n\n"
            << summary.str() << body.str();
     claims_file.commit();

@@ -42,6 +42,42 @@ TEST(Repro, ClaimDependsOnAChoiceOnlyWhenTheVerdictsDiffer) {
     EXPECT_EQ(classify_over_choices(ClaimStatus::reproduced, {}), ClaimStatus::reproduced);
 }
 
+// The rule for `depends`: only readings the text allows and thresholds declared in the reference
+// row before the run decide; a threshold chosen after the result cannot turn `deviates` into `depends`.
+TEST(Repro, AThresholdChosenAfterTheResultCannotTurnADeviationIntoDepends) {
+    const std::filesystem::path root = std::filesystem::temp_directory_path() / "cagd_depends_rule";
+    std::filesystem::create_directories(root / "reference" / "t");
+    std::ofstream(root / "reference" / "ERRATA.md") << "## t-E1\n";
+    std::ofstream(root / "reference" / "t" / "a.csv")
+        << "# source: a test\nid,paper_value,tolerance,tolerance_reason,erratum,corrected_value,description,thresholds,note_thresholds\n"
+           "t.same,1,0,yes/no,t-E1,0,nearly the same,0.01,0.05\n"
+           "t.same_code,1,0,yes/no,t-E1,0,nearly the same,0.01,\n"
+           "t.value,0,0.01,definition,t-E1,0.0216,a distance,0.01,\n"
+           "t.value_note,0,0.01,definition,t-E1,0.0216,a distance,0.01,\n"
+           "t.value_reading,0,0.01,definition,t-E1,0.0216,a distance,0.01;0.05,\n";
+    const std::string root_text = root.string();
+    const char* argv[] = {"test", "--check", "--root", root_text.c_str()};
+    ArtifactRun run("t", "a", "1", "test", 4, const_cast<char**>(argv));
+    // The row's stated threshold (1 %) decides; its note threshold (5 %) is shown, never deciding.
+    run.check_threshold("same", 0.0216, "distance");
+    EXPECT_EQ(run.records().back().status, ClaimStatus::deviates) << run.records().back().choices;
+    EXPECT_NE(run.records().back().choices.find("Notes"), std::string::npos) << "the note is reported";
+    // A reading of the text that the experiment declares may decide (an experiment must not encode a
+    // threshold this way: thresholds go through check_threshold and the row).
+    run.check_over_choices("same_code", 0.0, "reading A", {{"reading B", 1.0}});
+    EXPECT_EQ(run.records().back().status, ClaimStatus::depends);
+    // A tolerance given by the experiment that the row does not declare: failed.
+    run.check_over_choices("value", 0.0216, "threshold 1 %", {{"threshold 5 %", 0.0216, 0.05}});
+    EXPECT_EQ(run.records().back().status, ClaimStatus::failed) << "an undeclared threshold fails the claim: " << run.records().back().choices;
+    EXPECT_NE(run.records().back().choices.find("not declared"), std::string::npos) << run.records().back().choices;
+    // As a note, it is shown and the deviation stands; declared in the row, it may decide.
+    run.check_over_choices("value_note", 0.0216, "threshold 1 %", {{"threshold 5 %", 0.0216, 0.05, ChoiceKind::note}});
+    EXPECT_EQ(run.records().back().status, ClaimStatus::deviates) << run.records().back().choices;
+    run.check_over_choices("value_reading", 0.0216, "threshold 1 %", {{"threshold 5 %", 0.0216, 0.05}});
+    EXPECT_EQ(run.records().back().status, ClaimStatus::depends) << run.records().back().choices;
+    std::filesystem::remove_all(root);
+}
+
 TEST(Repro, LoadsReferenceWithProvenanceAndFractions) {
     const auto path = std::filesystem::temp_directory_path() / "cagd_ref_test.csv";
     std::ofstream(path) << "# source: eq (18)\nid,paper_value,tolerance,tolerance_reason,description\n"
