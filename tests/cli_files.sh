@@ -168,7 +168,7 @@ cmp -s t12.txt t12_flipped.txt && fail "the test did not flip a digit"
 "$cagd" interpolate --method pseudo-spline --table t12_flipped.txt --in p.csv --out ps.csv 2> err
 expect 2 "--table with one flipped digit" $?
 grep -q "checksum does not match" err || fail "a flipped digit is not named as a checksum mismatch: $(cat err)"
-printf '# cagd pseudo_energy table format 6 grid 6000 placement periodic method fast\nx\n' > huge_header.txt
+printf '# cagd pseudo_energy table format 7 grid 6000 placement periodic method fast\nx\n' > huge_header.txt
 prlimit --as=536870912 "$cagd" interpolate --method pseudo-spline --table huge_header.txt --in p.csv --out ps.csv 2> err
 expect 2 "a table whose header declares a huge grid, under 512 MB of address space" $?
 no_temporaries "reads"

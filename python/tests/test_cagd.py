@@ -307,7 +307,7 @@ def _fnv1a64(data):
 def test_a_huge_declared_grid_is_refused_within_512_mb(tmp_path):
     # In a child interpreter whose address space is limited: the refusal comes before any allocation.
     huge = tmp_path / "huge.txt"
-    content = b"# cagd pseudo_energy table format 6 grid 6000 placement periodic method fast\nx\n"
+    content = b"# cagd pseudo_energy table format 7 grid 6000 placement periodic method fast\nx\n"
     huge.write_bytes(content + f"# checksum fnv1a64 {_fnv1a64(content):016x}\n".encode())
     code = (
         "import resource, sys\n"

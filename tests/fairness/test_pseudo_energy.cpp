@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <numbers>
+#include <string>
 #include <vector>
 
 #include "cagd/analysis/curve_measures.hpp"
@@ -129,6 +130,40 @@ TEST(PseudoEnergyMinimum, UndefinedNodes) {
         EXPECT_TRUE(std::isinf(m.pseudo_energy));
     }
     EXPECT_THROW(minimize_pseudo_energy(4.0, 0.0), InvalidInput);
+}
+
+// The census of local minima finds minima in valleys narrower than any scan step: at (−70°, 30°)
+// a third minimum at r0 ≈ 0.14, J 1.44e-3 (relative) above the global one; at (60°, −60°) a
+// mirror pair at r ≈ (3.0, 0.029), whose J rises by 8 at 0.06 in log r0 and by 1e-3 along log r1.
+TEST(PseudoEnergyMinimum, TheCensusFindsMinimaInNarrowValleys) {
+    const double deg = std::numbers::pi / 180;
+    const std::vector<LocalMinimum> a = local_minima_census(-70 * deg, 30 * deg);
+    ASSERT_GE(a.size(), 3u);
+    EXPECT_NEAR(a[0].pseudo_energy, minimize_pseudo_energy_reference(-70 * deg, 30 * deg).pseudo_energy, 1e-10) << "the global minimum first";
+    EXPECT_NEAR(a[1].r0, 0.14, 0.01);
+    EXPECT_NEAR((a[1].pseudo_energy - a[0].pseudo_energy) / a[0].pseudo_energy, 1.44e-3, 1e-5);
+    const std::vector<LocalMinimum> b = local_minima_census(60 * deg, -60 * deg);
+    ASSERT_GE(b.size(), 3u);
+    EXPECT_NEAR(b[1].pseudo_energy, b[2].pseudo_energy, 1e-9 * b[1].pseudo_energy) << "J(θ0, θ1; r0, r1) = J(−θ1, −θ0; r1, r0): the pair has one J";
+    EXPECT_NEAR(std::min(b[1].r0, b[1].r1), 0.0293, 1e-3);
+    EXPECT_NEAR(std::max(b[1].r0, b[1].r1), 3.0, 1e-2);
+    EXPECT_NEAR(b[1].r0, b[2].r1, 1e-6) << "mirror images";
+    // The reference minimiser reports the census's count and runner-up; the independent multistart
+    // finds the same minima.
+    const PseudoEnergyMinimum m = minimize_pseudo_energy_reference(60 * deg, -60 * deg);
+    EXPECT_EQ(m.local_minima, static_cast<int>(b.size()));
+    EXPECT_NEAR(m.runner_up, b[1].pseudo_energy, 1e-9 * b[1].pseudo_energy);
+    const std::vector<LocalMinimum> other = local_minima_multistart(-70 * deg, 30 * deg);
+    for (const LocalMinimum& o : other)
+        EXPECT_TRUE(std::any_of(a.begin(), a.end(), [&](const LocalMinimum& c) { return std::abs(std::log(c.r0 / o.r0)) < 1e-2 && std::abs(std::log(c.r1 / o.r1)) < 1e-2; }))
+            << "the multistart's minimum J = " << o.pseudo_energy << " at (" << o.r0 << ", " << o.r1 << ") is in the census";
+    EXPECT_TRUE(local_minima_census(0.0, std::numbers::pi).empty()) << "an undefined node has no minima";
+    try {
+        local_minima_census(0.3, 0.2, ScanBox{1e-3, 1e3, 5000});
+        ADD_FAILURE() << "a census grid of 5000 per axis was accepted";
+    } catch (const InvalidInput& e) {
+        EXPECT_NE(std::string(e.what()).find("n = 5000"), std::string::npos) << e.what();
+    }
 }
 
 TEST(PseudoEnergyTable, LookupReproducesNodesWrapsAndRejects) {

@@ -86,7 +86,7 @@ TEST(TableFiles, APlanarTableLoadsBackBitForBitAndRefusesBadValues) {
     const std::string m = invalid_input_message([&] { PseudoEnergyTable::load(s.path("bad.txt")); });
     EXPECT_NE(m.find("bad.txt':13: r0 = -1"), std::string::npos) << m;
     // A header that declares a huge grid is refused before a row is read (and before memory for it).
-    write_text(s.path("huge.txt"), with_checksum("# cagd pseudo_energy table format 6 grid 6000 placement periodic method fast\ncolumns\n"));
+    write_text(s.path("huge.txt"), with_checksum("# cagd pseudo_energy table format 7 grid 6000 placement periodic method fast\ncolumns\n"));
     const std::string h = invalid_input_message([&] { PseudoEnergyTable::load(s.path("huge.txt")); });
     EXPECT_NE(h.find("grid 6000; it must be in [2, 720]"), std::string::npos) << h;
     // Too few rows for the grid.

@@ -3,11 +3,13 @@
 #include "cagd/fairness/detail/pseudo_energy_descent.hpp"
 
 #include <algorithm>
+#include <array>
 #include <boost/math/tools/minima.hpp>
 #include <cmath>
 #include <limits>
 #include <nlopt.hpp>
 #include <numbers>
+#include <random>
 
 namespace cagd::fairness {
 
@@ -83,10 +85,49 @@ PseudoEnergyMinimum minimize_pseudo_energy_reference(double theta0, double theta
     if (fast.outcome.ok()) starts.push_back({fast.pseudo_energy, std::log(fast.r0), std::log(fast.r1)});
     if (std::isfinite(fast.runner_up) && fast.runner_up_r0 > 0 && fast.runner_up_r1 > 0)
         starts.push_back({fast.runner_up, std::log(fast.runner_up_r0), std::log(fast.runner_up_r1)});
+    // The census: a distinct minimum it reaches that is lower than the fast path's global one
+    // becomes a start (its reference descent polishes it); the others enter the count and the
+    // runner-up below with their fast-energy values, which is all those need (a Romberg descent
+    // from each would multiply the table's cost).
+    std::vector<Descent> census;
+    std::vector<const Descent*> census_found;
+    if (opt.census.n > 1) {
+        const auto fast_energy = [&](double a, double b) {
+            ++evaluations;
+            return segment_energy_fast(UnitChordHermite(theta0, theta1, std::exp(a), std::exp(b)));
+        };
+        for (const ScanPoint& seed : census_seeds(planar_scan_energy(theta0, theta1), opt.census, evaluations)) census.push_back(newton_descent(fast_energy, seed.rho0, seed.rho1));
+        census_found = census_minima(census, [&](double a, double b) { return fast_energy(a, b).pseudo_energy; });
+        for (const Descent* d : census_found) {
+            if (fast.outcome.ok() && !(d->j < fast.pseudo_energy - kCensusSameJ * (1.0 + fast.pseudo_energy))) continue;
+            bool near = false;
+            for (const ScanPoint& s : starts) near = near || same_census_minimum(s.j, s.rho0, s.rho1, d->j, d->rho0, d->rho1);
+            if (!near) starts.push_back({d->j, d->rho0, d->rho1});
+        }
+    }
     const double rel_tol = opt.romberg_rel_tol;
     const std::vector<Descent> runs = reference_descents(
         [&](double r0, double r1, bool with_gradient) { return segment_energy_reference(UnitChordHermite(theta0, theta1, r0, r1), rel_tol, with_gradient); }, starts, evaluations);
-    return choose(theta0, theta1, runs, evaluations);
+    PseudoEnergyMinimum m = choose(theta0, theta1, runs, evaluations);
+    if (census.empty() || !m.outcome.ok()) return m;
+    // The count and the runner-up over every distinct minimum reached: the reference descents
+    // first, then census minima whose reference descent did not meet its gradient test (in the
+    // valleys of condition 1e7 at r ~ 1e-3 |∇J| stays near 1e-7): minima of the fast energy all the same.
+    std::vector<const Descent*> all = distinct_minima(runs);
+    for (const Descent* d : census_found) {
+        bool seen = false;
+        for (const Descent* e : all) seen = seen || same_census_minimum(e->j, e->rho0, e->rho1, d->j, d->rho0, d->rho1);
+        if (!seen) all.push_back(d);
+    }
+    std::vector<const Descent*> others;
+    for (const Descent* d : all)
+        if (!same_census_minimum(d->j, d->rho0, d->rho1, m.pseudo_energy, std::log(m.r0), std::log(m.r1))) others.push_back(d);
+    std::sort(others.begin(), others.end(), [](const Descent* a, const Descent* b) { return a->j < b->j; });
+    m.local_minima = static_cast<int>(others.size()) + 1;
+    m.runner_up = others.empty() ? kInf : others.front()->j;
+    m.runner_up_r0 = others.empty() ? 0.0 : std::exp(others.front()->rho0);
+    m.runner_up_r1 = others.empty() ? 0.0 : std::exp(others.front()->rho1);
+    return m;
 }
 
 PseudoEnergyMinimum minimize_pseudo_energy_nlopt(double theta0, double theta1, const ScanBox& box) {
@@ -145,6 +186,87 @@ PseudoEnergyMinimum minimize_pseudo_energy_nlopt(double theta0, double theta1, c
         runs.push_back(d);
     }
     return choose(theta0, theta1, runs, evaluations);
+}
+
+std::vector<LocalMinimum> local_minima_census(double theta0, double theta1, const ScanBox& box) {
+    const char* who = "cagd::fairness::local_minima_census";
+    require_angles("local_minima_census", theta0, theta1);
+    if (!(box.r_lo > 0 && box.r_hi > box.r_lo && std::isfinite(box.r_hi)) || box.n < 3 || box.n > kMaxCensusGrid)
+        fail_input(who, "the box [" + full_precision(box.r_lo) + ", " + full_precision(box.r_hi) + "] with n = " + std::to_string(box.n) +
+                            " must satisfy 0 < r_lo < r_hi < inf and 3 <= n <= " + std::to_string(kMaxCensusGrid));
+    std::vector<LocalMinimum> out;
+    if (is_undefined_node(theta0, theta1)) return out;
+    long evaluations = 0;
+    const auto fast_energy = [&](double a, double b) { return segment_energy_fast(UnitChordHermite(theta0, theta1, std::exp(a), std::exp(b))); };
+    std::vector<Descent> runs;
+    for (const ScanPoint& seed : census_seeds(planar_scan_energy(theta0, theta1), box, evaluations)) runs.push_back(newton_descent(fast_energy, seed.rho0, seed.rho1));
+    for (const Descent* d : census_minima(runs, [&](double a, double b) { return fast_energy(a, b).pseudo_energy; })) out.push_back({d->j, std::exp(d->rho0), std::exp(d->rho1)});
+    return out;
+}
+
+std::vector<LocalMinimum> local_minima_multistart(double theta0, double theta1, int starts, const ScanBox& box, unsigned seed) {
+    const char* who = "cagd::fairness::local_minima_multistart";
+    require_angles("local_minima_multistart", theta0, theta1);
+    if (starts < 1 || starts > kMaxMultistartStarts) fail_input(who, "starts = " + std::to_string(starts) + "; allowed 1.." + std::to_string(kMaxMultistartStarts));
+    if (!(box.r_lo > 0 && box.r_hi > box.r_lo && std::isfinite(box.r_hi)))
+        fail_input(who, "the box [" + full_precision(box.r_lo) + ", " + full_precision(box.r_hi) + "] must satisfy 0 < r_lo < r_hi < inf");
+    std::vector<LocalMinimum> out;
+    if (is_undefined_node(theta0, theta1)) return out;
+    const auto j_at = [&](double rho0, double rho1) {
+        const UnitChordHermite seg(theta0, theta1, std::exp(rho0), std::exp(rho1));
+        const double j = segment_energy_fast(seg).pseudo_energy;
+        return std::isfinite(j) ? j : kInf;
+    };
+    struct Data {
+        const decltype(j_at)* f;
+    } data{&j_at};
+    const double lo = std::log(box.r_lo), hi = std::log(box.r_hi);
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> U(lo, hi);
+    std::vector<std::array<double, 3>> found;  // (J, ρ0, ρ1)
+    for (int k = 0; k < starts; ++k) {
+        nlopt::opt o(nlopt::LN_BOBYQA, 2);
+        o.set_min_objective([](const std::vector<double>& x, std::vector<double>&, void* p) { return (*static_cast<Data*>(p)->f)(x[0], x[1]); }, &data);
+        o.set_lower_bounds({lo, lo});
+        o.set_upper_bounds({hi, hi});
+        o.set_xtol_abs(kMultistartXtol);
+        o.set_maxeval(kMultistartEvaluations);
+        std::vector<double> x{U(rng), U(rng)};
+        double f = 0.0;
+        try {
+            o.optimize(x, f);
+        } catch (const std::exception&) {
+            continue;  // NLopt's roundoff stop: the start is dropped, others cover its basin
+        }
+        if (!std::isfinite(f) || x[0] <= lo + kMultistartXtol || x[0] >= hi - kMultistartXtol || x[1] <= lo + kMultistartXtol || x[1] >= hi - kMultistartXtol)
+            continue;  // on the bound: not an interior minimum
+        bool minimum = true;  // J does not decrease at the eight neighbours
+        for (int da = -1; da <= 1 && minimum; ++da)
+            for (int db = -1; db <= 1; ++db)
+                if ((da || db) && j_at(x[0] + da * kMultistartProbe, x[1] + db * kMultistartProbe) < f) minimum = false;
+        if (!minimum) continue;
+        // The same minimum: close in ρ with no barrier between (J on the joining segment never above
+        // the higher end by more than kCensusSameJ relative).
+        const auto same_basin = [&](const std::array<double, 3>& m) {
+            if (std::max(std::abs(m[1] - x[0]), std::abs(m[2] - x[1])) >= kCensusSameValley) return false;
+            const double top = std::max(m[0], f) + kCensusSameJ * (1.0 + std::max(m[0], f));
+            for (int k = 1; k < kBarrierSamples; ++k) {
+                const double t = static_cast<double>(k) / kBarrierSamples;
+                if (j_at(m[1] + t * (x[0] - m[1]), m[2] + t * (x[1] - m[2])) > top) return false;
+            }
+            return true;
+        };
+        bool seen = false;
+        for (auto& m : found)
+            if (same_basin(m)) {
+                seen = true;
+                if (f < m[0]) m = {f, x[0], x[1]};
+            }
+        if (!seen) found.push_back({f, x[0], x[1]});
+    }
+    std::sort(found.begin(), found.end());
+    for (const auto& m : found) out.push_back({m[0], std::exp(m[1]), std::exp(m[2])});
+    return out;
 }
 
 PseudoEnergyMinimum minimize_pseudo_energy(double theta0, double theta1, const FastMinimizerOptions& opt, const std::vector<Eigen::Vector2d>& warm) {

@@ -30,8 +30,9 @@ namespace cagd::fairness {
 
 namespace {
 
-// 5: the runner-up's r0, r1 (TableReading::runner_up_within); 6: the checksum line.
-constexpr int kTableFileFormat = 6;
+// 5: the runner-up's r0, r1 (TableReading::runner_up_within); 6: the checksum line; 7: the reference
+// tables' local_minima and runner-up from the census (ReferenceMinimizerOptions::census).
+constexpr int kTableFileFormat = 7;
 
 }  // namespace
 

@@ -9,6 +9,7 @@
 #include <glog/logging.h>
 
 #include <Eigen/Dense>
+#include <boost/math/tools/minima.hpp>
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -132,6 +133,75 @@ constexpr double kLbfgsRombergRelTol = 1e-13;
 constexpr int kBrentBits = 40;
 // Two descents whose ρ agree to this (r to a relative 1e-6) found the same minimum.
 constexpr double kSameMinimum = 1e-6;
+// The census merges two minima closer than kCensusSameMinimum in ρ, or closer than
+// kCensusSameValley with J equal to kCensusSameJ relative: along a flat valley floor two stops of a
+// value-based descent can lie 1e-3 apart in ρ at the same J to ten digits, while distinct minima
+// (symmetric pairs with equal J included) lie 0.1 or more apart.
+constexpr double kCensusSameMinimum = 1e-4;
+constexpr double kCensusSameValley = 1e-2;
+constexpr double kCensusSameJ = 1e-9;
+// Brent along a grid line in the census: 20 bits put the point on a valley floor to 1e-6 of a step.
+constexpr int kCensusBrentBits = 20;
+// A census descent that stopped short of the gradient test still counts below this |∇J| / (1 + J).
+constexpr double kCensusGradient = 1e-6;
+inline bool same_census_minimum(double j_a, double rho0_a, double rho1_a, double j_b, double rho0_b, double rho1_b) {
+    const double d = std::max(std::abs(rho0_a - rho0_b), std::abs(rho1_a - rho1_b));
+    return d < kCensusSameMinimum || (d < kCensusSameValley && std::abs(j_a - j_b) <= kCensusSameJ * (1.0 + std::abs(j_a)));
+}
+// The independent multistart (local_minima_multistart): BOBYQA to 1e-8 in ρ within the census's
+// box, at most 2000 evaluations a start (it needs about 100); the minimum test probes 1e-3 away in
+// ρ (J rises there by about 1e-6 · J'' — far above the fast quadrature's 1e-13 noise).
+constexpr double kMultistartXtol = 1e-8;
+constexpr int kMultistartEvaluations = 2000;
+constexpr double kMultistartProbe = 1e-3;
+constexpr int kMaxMultistartStarts = 100000;
+// The multistart's barrier test samples the segment joining two results at 16 points.
+constexpr int kBarrierSamples = 16;
+// The census grid's largest side (n² fast energies): 2001² = 4e6, a few seconds a node.
+constexpr int kMaxCensusGrid = 2001;
+
+// The census's seeds. J's valleys can be far narrower across than a grid step (at (60°, −60°) a
+// minimum at r ≈ (3.0, 0.029) whose J rises by 8 at 0.06 in ρ0 but by 1e-3 along ρ1), so a valley
+// floor need not show as a grid minimum. It does show as one-dimensional minima of the grid lines
+// it crosses: each is refined by Brent along its line onto the floor, and a refined point lower
+// than every refined point of the two neighbouring lines within two steps of it is a seed (the
+// floor's own minimum, to a step). Both families of lines, ρ0 = const and ρ1 = const, are used.
+template <class ScanEnergy>
+std::vector<ScanPoint> census_seeds(const ScanEnergy& j_at, const ScanBox& box, long& evaluations) {
+    const int n = box.n;
+    const double lo = std::log(box.r_lo), hi = std::log(box.r_hi), step = (hi - lo) / (n - 1);
+    const auto rho = [&](int i) { return lo + step * i; };
+    std::vector<double> grid(static_cast<std::size_t>(n * n));
+    for (int a = 0; a < n; ++a)
+        for (int b = 0; b < n; ++b) grid[static_cast<std::size_t>(a * n + b)] = j_at(std::exp(rho(a)), std::exp(rho(b)));
+    evaluations += static_cast<long>(n) * n;
+    std::vector<ScanPoint> out;
+    for (int across = 0; across < 2; ++across) {
+        // Line L holds the other coordinate at rho(L); position i along it is rho(i).
+        const auto value = [&](int line, int i) { return across == 0 ? grid[static_cast<std::size_t>(i * n + line)] : grid[static_cast<std::size_t>(line * n + i)]; };
+        const auto energy = [&](int line, double x) {
+            ++evaluations;
+            return across == 0 ? j_at(std::exp(x), std::exp(rho(line))) : j_at(std::exp(rho(line)), std::exp(x));
+        };
+        std::vector<std::vector<std::pair<double, double>>> floor(static_cast<std::size_t>(n));  // per line: (x, J) on the floor
+        for (int line = 0; line < n; ++line)
+            for (int i = 1; i + 1 < n; ++i) {
+                const double v = value(line, i);
+                if (!std::isfinite(v) || v > value(line, i - 1) || v > value(line, i + 1)) continue;
+                const auto [x, j] = boost::math::tools::brent_find_minima([&](double t) { return energy(line, t); }, rho(i - 1), rho(i + 1), kCensusBrentBits);
+                floor[static_cast<std::size_t>(line)].emplace_back(x, std::min(j, v));
+            }
+        for (int line = 0; line < n; ++line)
+            for (const auto& [x, j] : floor[static_cast<std::size_t>(line)]) {
+                bool lowest = true;
+                for (int other : {line - 1, line + 1})
+                    if (other >= 0 && other < n)
+                        for (const auto& [y, k] : floor[static_cast<std::size_t>(other)]) lowest = lowest && !(std::abs(y - x) <= 2 * step && k < j);
+                if (lowest) out.push_back(across == 0 ? ScanPoint{j, x, rho(line)} : ScanPoint{j, rho(line), x});
+            }
+    }
+    return out;
+}
 
 struct Descent {
     double j = kInf, rho0 = 0, rho1 = 0;
@@ -277,6 +347,31 @@ inline std::vector<const Descent*> distinct_minima(const std::vector<Descent>& r
     }
     std::sort(distinct.begin(), distinct.end(), [](const Descent* a, const Descent* b) { return a->j < b->j; });
     return distinct;
+}
+
+// The census's minima among its descents, distinct by same_census_minimum, lowest J first: a
+// converged descent, or one that stopped at the rounding floor of a valley too ill-conditioned for
+// the gradient test (condition 1e7 at r ~ 1e-3: |∇J| ≈ 1e-7) where |∇J| ≤ kCensusGradient (1 + J)
+// and J(ρ) rises at the eight neighbours kMultistartProbe away.
+template <class Energy>
+std::vector<const Descent*> census_minima(const std::vector<Descent>& runs, const Energy& j_at) {
+    std::vector<const Descent*> out;
+    for (const Descent& d : runs) {
+        if (!std::isfinite(d.j)) continue;
+        bool minimum = d.converged;
+        if (!minimum && std::hypot(d.energy.dj_dlog_r0, d.energy.dj_dlog_r1) <= kCensusGradient * (1.0 + d.j)) {
+            minimum = true;
+            for (int a = -1; a <= 1 && minimum; ++a)
+                for (int b = -1; b <= 1; ++b)
+                    if ((a || b) && j_at(d.rho0 + a * kMultistartProbe, d.rho1 + b * kMultistartProbe) < d.j) minimum = false;
+        }
+        if (!minimum) continue;
+        bool seen = false;
+        for (const Descent* e : out) seen = seen || same_census_minimum(e->j, e->rho0, e->rho1, d.j, d.rho0, d.rho1);
+        if (!seen) out.push_back(&d);
+    }
+    std::sort(out.begin(), out.end(), [](const Descent* a, const Descent* b) { return a->j < b->j; });
+    return out;
 }
 
 // The answer among the descents (planar PseudoEnergyMinimum or its space form): the lowest distinct
