@@ -115,6 +115,11 @@ struct PyCurve {
     std::shared_ptr<const cagd::Curve> curve;
     std::vector<double> node_parameters;  // u of each data point (interpolants)
     std::string method;
+    // How to build it again, for pickling: (name of a cagd function, args, kwargs, key), the curve
+    // being the call's result, or its item `key` (a dict key or a tuple index); None when unknown.
+    py::object recipe = py::none();
+    int points = 0;        // data points of an interpolant (0 otherwise)
+    bool closed = false;   // an interpolant through closed data
 
     // Positions (derivatives = 0: shape t.shape + (dim,)) or jets (t.shape + (derivatives + 1,
     // dim)): rows are r, r', r'', … at each t. A number (or 0-d array) gives (dim,) or (k + 1, dim).
@@ -168,6 +173,12 @@ struct PyCurve {
 };
 
 inline PyCurve wrap(std::shared_ptr<const cagd::Curve> c, std::string method = {}, std::vector<double> nodes = {}) { return PyCurve{std::move(c), std::move(nodes), std::move(method)}; }
+
+// The curve with the recipe of the cagd function `name` that built it (PyCurve::recipe).
+inline PyCurve with_recipe(PyCurve c, const char* name, py::tuple args, py::dict kwargs = py::dict(), py::object key = py::none()) {
+    c.recipe = py::make_tuple(name, std::move(args), std::move(kwargs), std::move(key));
+    return c;
+}
 
 void bind_core(py::module_& m);
 void bind_methods(py::module_& m);

@@ -5,9 +5,9 @@ namespace cagd_python {
 
 namespace {
 
-py::dict typical_dict(const cagd::aesthetic::TypicalPolygon& p) {
+py::dict typical_dict(const cagd::aesthetic::TypicalPolygon& p, py::tuple args) {
     py::dict d;
-    d["curve"] = wrap(std::make_shared<cagd::BezierCurve>(p.points), "typical");
+    d["curve"] = with_recipe(wrap(std::make_shared<cagd::BezierCurve>(p.points), "typical"), "typical_curve", std::move(args), py::dict(), py::str("curve"));
     d["control_points"] = from_matrix(p.points);
     d["edge_lengths"] = from_vector(p.edge_lengths);
     d["rotations"] = from_vector(p.rotations);
@@ -28,21 +28,24 @@ void bind_aesthetic(py::module_& m) {
     m.def(
         "normalized_log_aesthetic_curve",
         [](double alpha, double length) {
-            return wrap(std::make_shared<cagd::aesthetic::LogAestheticCurve>(cagd::aesthetic::normalized_log_aesthetic_curve(alpha, length)), "log-aesthetic");
+            return with_recipe(wrap(std::make_shared<cagd::aesthetic::LogAestheticCurve>(cagd::aesthetic::normalized_log_aesthetic_curve(alpha, length)), "log-aesthetic"),
+                               "normalized_log_aesthetic_curve", py::make_tuple(alpha, length));
         },
         py::arg("alpha"), py::arg("length"), "The normalised log-aesthetic curve of typical_curves eq (15).");
     m.def(
         "log_aesthetic_space_curve",
         [](double alpha, double beta, double length, double start) {
-            return wrap(std::make_shared<cagd::aesthetic::LogAestheticSpaceCurve>(cagd::aesthetic::normalized_log_aesthetic_space_parameters(alpha, beta, length, start)),
-                        "log-aesthetic-space");
+            return with_recipe(wrap(std::make_shared<cagd::aesthetic::LogAestheticSpaceCurve>(cagd::aesthetic::normalized_log_aesthetic_space_parameters(alpha, beta, length, start)),
+                                    "log-aesthetic-space"),
+                               "log_aesthetic_space_curve", py::make_tuple(alpha, beta, length, start));
         },
         py::arg("alpha"), py::arg("beta"), py::arg("length"), py::arg("start") = 0.0, "The normalised log-aesthetic space curve (typical_curves section 5, eq 33–35).");
     m.def(
         "typical_curve",
         [](double alpha, double length, int degree, const std::string& kind) {
-            if (kind == "scale-one") return typical_dict(cagd::aesthetic::scale_one_typical_polygon(alpha, length, degree));
-            if (kind == "constant-rotation") return typical_dict(cagd::aesthetic::constant_rotation_typical_polygon(alpha, length, degree));
+            const py::tuple args = py::make_tuple(alpha, length, degree, kind);
+            if (kind == "scale-one") return typical_dict(cagd::aesthetic::scale_one_typical_polygon(alpha, length, degree), args);
+            if (kind == "constant-rotation") return typical_dict(cagd::aesthetic::constant_rotation_typical_polygon(alpha, length, degree), args);
             throw cagd::InvalidInput("kind = '" + kind + "'; allowed scale-one | constant-rotation");
         },
         py::arg("alpha"), py::arg("length"), py::arg("degree"), py::arg("kind") = "constant-rotation",
@@ -53,7 +56,8 @@ void bind_aesthetic(py::module_& m) {
             const cagd::aesthetic::SpaceTypicalPolygon p = cagd::aesthetic::space_typical_polygon(
                 cagd::aesthetic::normalized_log_aesthetic_space_parameters(alpha, beta, length, start), degree, frenet_composition(composition));
             py::dict d;
-            d["curve"] = wrap(std::make_shared<cagd::BezierCurve>(p.points), "space-typical");
+            d["curve"] = with_recipe(wrap(std::make_shared<cagd::BezierCurve>(p.points), "space-typical"), "space_typical_curve",
+                                     py::make_tuple(alpha, beta, length, degree, start, composition), py::dict(), py::str("curve"));
             d["control_points"] = from_matrix(p.points);
             d["curvature_rotations"] = from_vector(p.curvature_rotations);
             d["torsion_rotations"] = from_vector(p.torsion_rotations);

@@ -43,11 +43,35 @@ void bind_core(py::module_& m) {
             "Signed enclosed area (counter-clockwise positive; planar); an open curve is closed by the chord from its end to its start.")
         .def(
             "bending_energy", [](const PyCurve& c) { return cagd::analysis::bending_energy(*c.curve); }, "∫ κ² ds (Gauss–Legendre per piece)")
-        .def("__repr__", [](const PyCurve& c) {
-            std::ostringstream s;
-            s << "<cagd.Curve" << (c.method.empty() ? "" : " " + c.method) << " dim=" << c.curve->dimension() << " t=[" << c.curve->t_min() << ", " << c.curve->t_max() << "]>";
-            return s.str();
-        });
+        .def(
+            "__call__",
+            [](const PyCurve& c, const py::object& t, int nu) -> py::object {
+                if (nu == 0) return c.evaluate(t, 0);
+                const py::array jets = c.evaluate(t, nu);  // t.shape + (nu + 1, dim)
+                return jets[py::make_tuple(py::ellipsis(), nu, py::slice(py::none(), py::none(), py::none()))];
+            },
+            py::arg("t"), py::arg("nu") = 0,
+            "The nu-th derivative at t, as scipy's splines: shape t.shape + (dim,). c(t) is c.evaluate(t); c(t, 1) the first derivative.")
+        .def_property_readonly("closed", [](const PyCurve& c) { return c.closed; }, "whether the curve interpolates closed data")
+        .def("__repr__",
+             [](const PyCurve& c) {
+                 std::ostringstream s;
+                 s << "<cagd.Curve" << (c.method.empty() ? "" : " " + c.method);
+                 if (c.points > 0) s << " through " << c.points << " points" << (c.closed ? ", closed" : ", open");
+                 s << ", dim=" << c.curve->dimension() << ", t=[" << c.curve->t_min() << ", " << c.curve->t_max() << "]>";
+                 return s.str();
+             })
+        .def(py::pickle(
+            [](const PyCurve& c) -> py::tuple {
+                if (c.recipe.is_none()) throw py::type_error("this cagd.Curve cannot be pickled: it was not built by a function of cagd");
+                return c.recipe;
+            },
+            [](const py::tuple& recipe) {
+                // Built again by the same call: the state is the call, not the pieces.
+                const py::object made = py::module_::import("cagd").attr(recipe[0])(*recipe[1], **recipe[2]);
+                const py::object curve = recipe[3].is_none() ? made : made[recipe[3]];
+                return curve.cast<PyCurve>();
+            }));
 }
 
 }  // namespace cagd_python

@@ -112,7 +112,8 @@ void bind_fairness(py::module_& m) {
             p.turn = turn;
             p.start_angle = start_angle;
             p.start = Eigen::Vector2d(start.first, start.second);
-            return wrap(std::make_shared<cagd::aesthetic::LogAestheticCurve>(p), "log-aesthetic");
+            return with_recipe(wrap(std::make_shared<cagd::aesthetic::LogAestheticCurve>(p), "log-aesthetic"), "log_aesthetic_curve",
+                               py::make_tuple(alpha, c0, c1, length, turn, start_angle, py::make_tuple(start.first, start.second)));
         },
         py::arg("alpha"), py::arg("c0") = 1.0, py::arg("c1") = 1.0, py::arg("length") = 1.0, py::arg("turn") = 1, py::arg("start_angle") = 0.0,
         py::arg("start") = std::pair<double, double>{0.0, 0.0}, "The planar log-aesthetic curve ρ^α = c0 s + c1 (typical_curves eq 1–4), parameter s = arc length.");

@@ -54,7 +54,12 @@ Interpolation interpolate_result(const Array& points, const std::string& method,
     out.report = r.report;
     out.quantities = r.quantities;
     if (r.outcome.ok() && r.interpolant) {
-        out.curve = wrap(r.interpolant->curve, method, r.interpolant->node_parameters);
+        py::dict kwargs(params);
+        kwargs["method"] = method;
+        kwargs["closed"] = closed;
+        out.curve = with_recipe(wrap(r.interpolant->curve, method, r.interpolant->node_parameters), "interpolate", py::make_tuple(from_matrix(p)), kwargs);
+        out.curve->points = static_cast<int>(p.rows());
+        out.curve->closed = closed;
         out.dtau_du = r.interpolant->dtau_du;
     }
     return out;

@@ -63,7 +63,9 @@ void bind_smoothing(py::module_& m) {
                 c = std::make_shared<cagd::smoothing::ElasticSpaceCurve>(cagd::smoothing::elastic_space_curve(xs, values, lam, subdivisions));
             }
             require_ok(c->outcome);
-            return py::make_tuple(wrap(c, "elastic-space-curve"), c->energy);
+            return py::make_tuple(with_recipe(wrap(c, "elastic-space-curve"), "elastic_space_curve", py::make_tuple(from_vector(xs), from_matrix(values), from_vector(lam), subdivisions),
+                                              py::dict(), py::int_(0)),
+                                  c->energy);
         },
         py::arg("x"), py::arg("a"), py::arg("lam"), py::arg("subdivisions") = 8,
         "The elastic line in space with the true bending energy ½ ∫ κ² ds (hosaka section 6, after Fig. 7), minimised by Ceres over C1 cubic "
@@ -74,7 +76,7 @@ void bind_smoothing(py::module_& m) {
         ">>> x = np.arange(6.0)\n"
         ">>> curve, energy = cagd.elastic_space_curve(x, np.column_stack([np.sin(x), np.cos(x)]), 0.05)\n"
         ">>> curve\n"
-        "<cagd.Curve elastic-space-curve dim=3 t=[0, 5]>\n"
+        "<cagd.Curve elastic-space-curve, dim=3, t=[0, 5]>\n"
         ">>> round(energy, 6)\n"
         "0.747382\n");
 }

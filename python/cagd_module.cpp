@@ -15,6 +15,10 @@
 
 #include "bindings.hpp"
 
+#ifndef CAGD_VERSION
+#define CAGD_VERSION "unknown"
+#endif
+
 using namespace cagd_python;
 
 namespace {
@@ -67,6 +71,7 @@ std::string python_message(const std::string& m) {
 
 PYBIND11_MODULE(_cagd, m) {
     m.doc() = "cagd-repro: interpolating curves from five Japanese CAGD papers (compiled part; see cagd.__doc__)";
+    m.attr("__version__") = CAGD_VERSION;  // the CMake project's version
     static py::exception<NoSolution> no_solution(m, "NoSolution", PyExc_RuntimeError);
     py::register_exception_translator([](std::exception_ptr p) {
         try {

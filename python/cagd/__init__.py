@@ -38,7 +38,7 @@ Example (every example in these docstrings runs as a doctest in the package's te
     >>> p = np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 0.0], [3.0, 1.0]])
     >>> c = cagd.interpolate(p, "s-spline", m=3, end="bessel")
     >>> c
-    <cagd.Curve s-spline dim=2 t=[0, 3]>
+    <cagd.Curve s-spline through 4 points, open, dim=2, t=[0, 3]>
     >>> c.evaluate(3.0)
     array([3., 1.])
     >>> c.evaluate([0.0, 1.5], derivatives=1).shape
@@ -46,9 +46,13 @@ Example (every example in these docstrings runs as a doctest in the package's te
     >>> round(c.arc_length(), 6)
     4.45534
 """
+from typing import Any, Dict, Iterable, List, Union
+
 import numpy as _np
+import numpy.typing as _npt
 
 from ._cagd import (  # noqa: F401  (re-exported)
+    __version__,
     Curve,
     ExplicitSpline,
     Interpolation,
@@ -68,7 +72,7 @@ from ._cagd import (  # noqa: F401  (re-exported)
 from . import _cagd
 
 __all__ = [
-    "Curve", "ExplicitSpline", "Interpolation", "NoSolution", "PseudoEnergyTable",
+    "__version__", "Curve", "ExplicitSpline", "Interpolation", "NoSolution", "PseudoEnergyTable",
     "methods", "interpolate", "interpolate_result", "compare",
     "pseudo_energy", "segment_measures",
     "log_aesthetic_curve", "normalized_log_aesthetic_curve", "log_aesthetic_space_curve",
@@ -77,7 +81,7 @@ __all__ = [
 ]
 
 
-def methods():
+def methods() -> List[Dict[str, Any]]:
     """The registry of interpolation methods, in the order of the tables: a list of dicts with
     name, aliases, paper, source, summary, parameters (name, type, default, domain, help),
     presets (the comparison's configurations) and claims (at the default parameters).
@@ -90,7 +94,7 @@ def methods():
     return _cagd._methods()
 
 
-def _points(points):
+def _points(points: _npt.ArrayLike) -> "_npt.NDArray[_np.float64]":
     raw = _np.asarray(points)
     if _np.iscomplexobj(raw):
         raise TypeError("points: complex numbers are not coordinates; give real (n, 2) or (n, 3) values")
@@ -102,27 +106,27 @@ def _points(points):
     return a
 
 
-def _flag(value, name):
+def _flag(value: object, name: str) -> bool:
     """A bool argument: True, False (or numpy's bool); anything else is a TypeError, never truthy."""
     if isinstance(value, (bool, _np.bool_)):
         return bool(value)
     raise TypeError(f"{name}: expected True or False, got {value!r}")
 
 
-def _names(value, name):
+def _names(value: Union[None, str, Iterable[str]], name: str) -> List[str]:
     """A list of names; one string is read as one name (never as its characters)."""
     if value is None:
         return []
     if isinstance(value, str):
         return [value]
-    names = list(value)
+    names: List[str] = list(value)
     for n in names:
         if not isinstance(n, str):
             raise TypeError(f"{name}: expected names (str), got {n!r}")
     return names
 
 
-def interpolate_result(points, method, closed=False, **params):
+def interpolate_result(points: _npt.ArrayLike, method: str, closed: bool = False, **params: Any) -> Interpolation:
     """The interpolation with its outcome: an ``Interpolation`` whose ``status`` is "ok" (and
     ``curve`` the curve) or the numerical outcome ("no_solution", "no_convergence") with its
     ``message``; ``report`` and ``quantities`` hold what the method reports (e.g. the
@@ -144,7 +148,7 @@ def interpolate_result(points, method, closed=False, **params):
     return _cagd._interpolate_result(_points(points), method, _flag(closed, "closed"), **params)
 
 
-def interpolate(points, method, closed=False, **params):
+def interpolate(points: _npt.ArrayLike, method: str, closed: bool = False, **params: Any) -> Curve:
     """The curve of ``method`` (a name of ``methods()`` or a preset such as "s-spline-m2") through
     ``points`` ((n, 2) or (n, 3)). Raises ValueError for bad input and NoSolution when the method
     finds no curve for valid input.
@@ -156,12 +160,12 @@ def interpolate(points, method, closed=False, **params):
     True
     """
     r = interpolate_result(points, method, closed, **params)
-    if not r.ok:
+    if r.curve is None:
         raise NoSolution(f"{method}: {r.message}")
     return r.curve
 
 
-def compare(points, closed=False, methods=None, locality=True, threads=0):
+def compare(points: _npt.ArrayLike, closed: bool = False, methods: Union[None, str, Iterable[str]] = None, locality: bool = True, threads: int = 0) -> Dict[str, Any]:
     """Every method (or the named configurations) on the same planar or space points, measured as
     by ``cagd compare``: a dict of arrays, one entry per configuration (``methods``: a list of
     names, or one name). ``method``, ``status`` ("ok", "not applicable", "refused", "no result",
@@ -182,11 +186,11 @@ def compare(points, closed=False, methods=None, locality=True, threads=0):
            fill_value=1e+20)
     """
     raw = _cagd._compare(_points(points), _flag(closed, "closed"), _names(methods, "methods"), _flag(locality, "locality"), int(threads))
-    out = {}
+    out: Dict[str, Any] = {}
     for name, value in raw.items():
         if isinstance(value, tuple):
             values, valid = value
-            out[name] = _np.ma.MaskedArray(values, mask=~valid)
+            out[name] = _np.ma.MaskedArray(values, mask=~valid)  # type: ignore[no-untyped-call]  # (numpy.ma has no annotations)
         else:
             out[name] = value
     return out

@@ -429,3 +429,48 @@ def test_messages_name_python_arguments_not_options_or_cpp_names():
     with pytest.raises(ValueError, match="start_tangnt is not a parameter of s-spline .*start_tangent"):
         cagd.interpolate(p, "s-spline", start_tangnt=1.0)
 
+
+
+def test_version_is_the_projects():
+    text = open(os.path.join(ROOT, "CMakeLists.txt"), encoding="utf-8").read()
+    import re
+
+    assert cagd.__version__ == re.search(r"project\(\s*cagd_repro\s+VERSION\s+([0-9.]+)", text).group(1)
+
+
+def test_a_curve_is_called_like_a_scipy_spline():
+    c = cagd.interpolate(table1(), "cubic-b")
+    t = np.linspace(*c.parameter_range, 7).reshape(7, 1)
+    jets = c.evaluate(t, derivatives=2)
+    assert np.array_equal(c(t), c.evaluate(t)) and c(t).shape == (7, 1, 2)
+    assert np.array_equal(c(t, 1), jets[..., 1, :]) and np.array_equal(c(t, nu=2), jets[..., 2, :])
+    assert c(0.5, 1).shape == (2,)
+    with pytest.raises(ValueError, match="derivatives = -1"):
+        c(0.5, -1)
+
+
+def test_repr_names_the_method_the_points_and_closedness():
+    assert repr(cagd.interpolate(table1(), "hosaka")) == "<cagd.Curve hosaka through 13 points, open, dim=2, t=[0, 12]>"
+    closed = cagd.interpolate(table1(), "cubic-b", closed=True)
+    assert closed.closed and repr(closed).startswith("<cagd.Curve cubic-b through 13 points, closed, dim=2")
+    assert repr(cagd.normalized_log_aesthetic_curve(-0.5, 1.0)).startswith("<cagd.Curve log-aesthetic, dim=2")
+
+
+def test_every_kind_of_curve_pickles_to_the_same_curve():
+    import pickle
+
+    x = np.arange(5.0)
+    curves = {
+        "interpolate": cagd.interpolate(lifted(table1()), "s-spline", closed=True, m=3, end="natural"),
+        "normalized_log_aesthetic_curve": cagd.normalized_log_aesthetic_curve(-0.5, 1.0),
+        "log_aesthetic_curve": cagd.log_aesthetic_curve(1.5, c0=2.0, start=(1.0, -1.0)),
+        "log_aesthetic_space_curve": cagd.log_aesthetic_space_curve(1.5, 1.2, 1.0, start=0.1),
+        "typical_curve": cagd.typical_curve(-0.5, 1.0, 12, kind="scale-one")["curve"],
+        "space_typical_curve": cagd.space_typical_curve(1.5, 1.2, 1.0, 9, start=0.1)["curve"],
+        "elastic_space_curve": cagd.elastic_space_curve(x, np.column_stack([np.sin(x), np.cos(x)]), 0.1, subdivisions=2)[0],
+    }
+    for name, c in curves.items():
+        again = pickle.loads(pickle.dumps(c))
+        t = np.linspace(*c.parameter_range, 11)
+        assert np.array_equal(again.evaluate(t, derivatives=2), c.evaluate(t, derivatives=2)), name
+        assert repr(again) == repr(c) and again.method == c.method, name
