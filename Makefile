@@ -10,10 +10,12 @@ CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 generator_for = $(if $(wildcard $(1)/CMakeCache.txt),,$(if $(shell command -v ninja 2>/dev/null),-G Ninja,))
 
 # What each target needs built.
+# Each turns off what its install-deps layer does not provide (tests and benchmarks default to ON
+# in a top-level build).
 ALL_ON        = -DCAGD_BUILD_TESTS=ON -DCAGD_BUILD_EXPERIMENTS=ON -DCAGD_BUILD_CLI=ON -DCAGD_BUILD_PYTHON=ON
-REPRODUCE_ON  = -DCAGD_BUILD_EXPERIMENTS=ON -DCAGD_BUILD_CLI=ON
-BENCH_ON      = -DCAGD_BUILD_BENCH=ON -DCAGD_BUILD_CLI=ON -DCAGD_BUILD_PYTHON=ON
-PYTHON_ON     = -DCAGD_BUILD_PYTHON=ON
+REPRODUCE_ON  = -DCAGD_BUILD_EXPERIMENTS=ON -DCAGD_BUILD_CLI=ON -DCAGD_BUILD_TESTS=OFF -DCAGD_BUILD_BENCH=OFF
+BENCH_ON      = -DCAGD_BUILD_BENCH=ON -DCAGD_BUILD_CLI=ON -DCAGD_BUILD_PYTHON=ON -DCAGD_BUILD_TESTS=OFF
+PYTHON_ON     = -DCAGD_BUILD_PYTHON=ON -DCAGD_BUILD_TESTS=OFF -DCAGD_BUILD_BENCH=OFF
 # make install: the library, its headers, CMake config and pkg-config file, the cagd command and
 # the Python package, into $(PREFIX), from a build of its own (no tests, experiments, benchmarks).
 INSTALL_FLAGS = -DCAGD_BUILD_TESTS=OFF -DCAGD_BUILD_EXPERIMENTS=OFF -DCAGD_BUILD_BENCH=OFF -DCAGD_BUILD_CLI=ON -DCAGD_BUILD_PYTHON=ON
@@ -22,10 +24,13 @@ INSTALL_FLAGS = -DCAGD_BUILD_TESTS=OFF -DCAGD_BUILD_EXPERIMENTS=OFF -DCAGD_BUILD
 
 all: build
 
+# Each target asks scripts/install-deps.sh for its own layer only (library, python, reproduce,
+# test, bench, docs); `make deps` installs every layer.
 deps:
 	@bash scripts/install-deps.sh
 
-configure: deps
+configure:
+	@bash scripts/install-deps.sh test
 	@cmake -S . -B $(BUILD) $(call generator_for,$(BUILD)) $(CMAKE_FLAGS) $(ALL_ON) >/dev/null
 
 build: configure
@@ -34,12 +39,14 @@ build: configure
 test: build
 	@cd $(BUILD) && ctest --output-on-failure -j$(JOBS)
 
-reproduce: deps
+reproduce:
+	@bash scripts/install-deps.sh reproduce
 	@cmake -S . -B $(BUILD) $(call generator_for,$(BUILD)) $(CMAKE_FLAGS) $(REPRODUCE_ON) >/dev/null
 	@cmake --build $(BUILD) -j$(JOBS)
 	@JOBS=$(JOBS) bash scripts/reproduce.sh $(BUILD)
 
-bench: deps
+bench:
+	@bash scripts/install-deps.sh bench
 	@cmake -S . -B $(BUILD) $(call generator_for,$(BUILD)) $(CMAKE_FLAGS) $(BENCH_ON) >/dev/null
 	@cmake --build $(BUILD) -j$(JOBS)
 	@cmake --build $(BUILD) -j$(JOBS) --target cagd_bench
@@ -48,21 +55,25 @@ bench: deps
 	@python3 scripts/bench-targets.py $(BUILD)
 
 # The Python module alone: then PYTHONPATH=$(BUILD)/python /usr/bin/python3 -c 'import cagd'
-python: deps
+python:
+	@bash scripts/install-deps.sh python
 	@cmake -S . -B $(BUILD) $(call generator_for,$(BUILD)) $(CMAKE_FLAGS) $(PYTHON_ON) >/dev/null
 	@cmake --build $(BUILD) -j$(JOBS) --target cagd_python
 
-install: deps
+install:
+	@bash scripts/install-deps.sh python
 	@cmake -S . -B $(BUILD)-install $(call generator_for,$(BUILD)-install) $(CMAKE_FLAGS) $(INSTALL_FLAGS) -DCMAKE_INSTALL_PREFIX=$(PREFIX) >/dev/null
 	@cmake --build $(BUILD)-install -j$(JOBS)
 	@cmake --install $(BUILD)-install
 
 # The Doxygen API reference of the public headers into $(BUILD)/docs/html; fails on any warning.
-docs: deps
+docs:
+	@bash scripts/install-deps.sh docs
 	@bash scripts/docs.sh $(abspath $(BUILD))/docs
 
 # ASan + UBSan tests of the compare modules and a minute of libFuzzer (clang; build-sanitize/).
-sanitize: deps
+sanitize:
+	@bash scripts/install-deps.sh test
 	@JOBS=$(JOBS) bash scripts/sanitize.sh $(CURDIR)/build-sanitize
 
 clean:

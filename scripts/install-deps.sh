@@ -1,53 +1,90 @@
 #!/usr/bin/env bash
-# Install the Debian 12 packages that cagd-repro needs to build, test, reproduce
-# and plot; only those not yet installed. Idempotent and quiet when all are present.
+# Install the Debian 12 packages a target of cagd-repro needs, in layers; only those not yet
+# installed. Idempotent, and quiet when all are present.
+#
+#   scripts/install-deps.sh [LAYER ...]      (no layer: all of them)
+#
+#   library    build and install the C++ library and the cagd command (make install without Python)
+#   python     + the Python module (make python, make install, pip install --no-build-isolation .)
+#   reproduce  + the figures (make reproduce)
+#   test       everything below: GoogleTest, the Python tests, MPI, the API docs, the sanitizers and
+#              the benchmarks' packages (make test, make sanitize)
+#   bench      + Google Benchmark and the peers' Python (make bench)
+#   docs       + Doxygen (make docs)
+#
+# As root it says what it installs, then installs it with apt-get. Otherwise it prints the
+# apt-get line to run and stops (exit 1): it never installs anything without saying what.
 set -euo pipefail
 
-packages=(
+library=(
   cmake g++ make pkg-config
-  ninja-build            # the build's generator (make test compiles with both cores busy)
+  ninja-build            # the build's generator (compiles a target's files while its libraries build)
   libeigen3-dev          # linear algebra, point types
   libboost-dev libboost-math-dev   # Boost.Math quadrature/interpolators, Boost.Multiprecision (headers)
   libceres-dev           # nonlinear least squares, gradient solvers (pseudo_energy reference CG)
   libgoogle-glog-dev     # Ceres's logger; fairness/ silences its CG-restart warnings
   libnlopt-cxx-dev       # bounded/constrained minimisation
-  libgtest-dev libgmock-dev        # unit tests
-  libbenchmark-dev       # make bench
-  libcli11-dev           # command line of the cagd tool
-  gnuplot-nox            # figures (pngcairo and svg terminals)
-  doxygen                # make docs and make test: the API reference, no undocumented public declaration
-  clang libclang-rt-14-dev         # make sanitize: ASan/UBSan and libFuzzer runtimes
-  python3                # make test: the claim-id and folder-dependency checks (standard library only)
-  python3-dev pybind11-dev python3-numpy   # the Python module `cagd` (python/), built for /usr/bin/python3
-  python3-pytest         # make test: the Python module's tests
-  python3-nbclient python3-ipykernel python3-matplotlib   # make test: runs examples/curvature_combs.ipynb
-  libopenmpi-dev openmpi-bin   # the space pseudo-energy table on MPI (optional in CMake; make test runs mpirun -np 2)
+  libcli11-dev           # the cagd command's options
 )
+python=(
+  python3 python3-dev pybind11-dev python3-numpy   # the module `cagd`, built for /usr/bin/python3
+  python3-pip python3-setuptools python3-wheel python3-venv   # pip install --no-build-isolation .
+)
+reproduce=(
+  gnuplot-nox            # figures (pngcairo and svg terminals)
+)
+test=(
+  libgtest-dev libgmock-dev        # unit tests
+  doxygen                # the API reference: no undocumented public declaration
+  clang libclang-rt-14-dev         # make sanitize: ASan/UBSan and libFuzzer runtimes
+  python3-pytest         # the Python module's tests
+  python3-nbclient python3-ipykernel python3-matplotlib   # runs examples/curvature_combs.ipynb
+  mypy                   # the Python examples pass mypy --strict against the stubs
+  libopenmpi-dev openmpi-bin   # the space pseudo-energy table on MPI (make test runs mpirun -np 2)
+)
+bench=(
+  libbenchmark-dev       # make bench
+  python3-scipy          # make bench: scipy's splines as the Python peer
+)
+docs=(
+  doxygen
+)
+
+layers=("$@")
+[ ${#layers[@]} -gt 0 ] || layers=(library python reproduce test bench docs)
+packages=()
+for layer in "${layers[@]}"; do
+  case "$layer" in
+    library) packages+=("${library[@]}") ;;
+    python) packages+=("${library[@]}" "${python[@]}") ;;
+    reproduce) packages+=("${library[@]}" "${reproduce[@]}") ;;
+    test) packages+=("${library[@]}" "${python[@]}" "${reproduce[@]}" "${test[@]}" "${bench[@]}") ;;  # make test's build has the benchmarks too
+    bench) packages+=("${library[@]}" "${python[@]}" "${bench[@]}") ;;
+    docs) packages+=("${docs[@]}") ;;
+    *) echo "install-deps: unknown layer '$layer'; allowed: library python reproduce test bench docs" >&2; exit 2 ;;
+  esac
+done
 
 missing=()
 for p in "${packages[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed'; then
-    missing+=("$p")
+    case " ${missing[*]} " in *" $p "*) ;; *) missing+=("$p") ;; esac
   fi
 done
 [ ${#missing[@]} -eq 0 ] && exit 0
 
-echo "install-deps: missing Debian packages: ${missing[*]}" >&2
+echo "install-deps (${layers[*]}): missing Debian packages: ${missing[*]}" >&2
 if ! command -v apt-get >/dev/null 2>&1; then
   echo "install-deps: no apt-get on this machine; install these packages by hand:" >&2
   echo "  apt-get install -y ${missing[*]}" >&2
   exit 1
 fi
-sudo_cmd=()
 if [ "$(id -u)" -ne 0 ]; then
-  if command -v sudo >/dev/null 2>&1 && sudo -n true 2>/dev/null; then
-    sudo_cmd=(sudo -n)
-  else
-    echo "install-deps: not root and no password-less sudo; run as root:" >&2
-    echo "  apt-get update && apt-get install -y ${missing[*]}" >&2
-    exit 1
-  fi
+  echo "install-deps: not root; run as root (or with sudo):" >&2
+  echo "  apt-get update && apt-get install -y --no-install-recommends ${missing[*]}" >&2
+  exit 1
 fi
+echo "install-deps: installing them with apt-get" >&2
 export DEBIAN_FRONTEND=noninteractive
-"${sudo_cmd[@]}" apt-get update -qq
-"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+apt-get update -qq
+apt-get install -y -qq --no-install-recommends "${missing[@]}"
