@@ -259,8 +259,8 @@ TEST(SparseLu, SolvesLikeADenseLuInBothOrderingsAndReportsSingularity) {
     for (int i = 0; i < n; ++i)
         for (int j = 0; j < 3; ++j) b(i, j) = u(rng);
     const Eigen::MatrixXd dense = Eigen::MatrixXd(a).partialPivLu().solve(b);
-    for (const numeric::ColumnOrdering ordering : {numeric::ColumnOrdering::colamd, numeric::ColumnOrdering::natural}) {
-        numeric::SparseLu lu(ordering);
+    for (const cagd::numeric::ColumnOrdering ordering : {cagd::numeric::ColumnOrdering::colamd, cagd::numeric::ColumnOrdering::natural}) {
+        cagd::numeric::SparseLu lu(ordering);
         EXPECT_THROW(static_cast<void>(lu.solve(Eigen::VectorXd(b.col(0)))), std::logic_error);
         ASSERT_TRUE(lu.compute(a));
         EXPECT_LT((lu.solve(b) - dense).cwiseAbs().maxCoeff(), 1e-12);
@@ -270,7 +270,7 @@ TEST(SparseLu, SolvesLikeADenseLuInBothOrderingsAndReportsSingularity) {
     }
     Eigen::SparseMatrix<double> singular = a;
     singular.prune([](Eigen::Index, Eigen::Index col, double) { return col != 5; });  // column 5 empty
-    numeric::SparseLu lu;
+    cagd::numeric::SparseLu lu;
     EXPECT_FALSE(lu.compute(singular));
     EXPECT_THROW(static_cast<void>(lu.solve(b)), std::logic_error);
 }

@@ -1,0 +1,80 @@
+#include "cagd/methods/method_parameter_curve.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "cagd/core/errors.hpp"
+
+namespace cagd::methods {
+
+namespace {
+constexpr const char* kWho = "cagd::methods::MethodParameterCurve";
+}  // namespace
+
+MethodParameterCurve::MethodParameterCurve(const Interpolant& interpolant)
+    : base_(interpolant.curve), u_(interpolant.node_parameters), dtau_du_(interpolant.dtau_du) {
+    if (!base_) fail_input(kWho, "the interpolant has no curve");
+    if (u_.size() != dtau_du_.size() + 1 || dtau_du_.empty())
+        fail_input(kWho, std::to_string(u_.size()) + " node parameters for " + std::to_string(dtau_du_.size()) + " spans; needs one more node than spans, and a span");
+    tau_.assign(u_.size(), 0.0);
+    for (std::size_t k = 0; k < dtau_du_.size(); ++k) {
+        const double d = dtau_du_[k], du = u_[k + 1] - u_[k];
+        if (!(d > 0.0 && std::isfinite(d))) fail_input(kWho, "dtau/du of span " + std::to_string(k) + " = " + full_precision(d) + "; allowed > 0 and finite");
+        if (!(du > 0.0)) fail_input(kWho, "node parameters not ascending at span " + std::to_string(k) + " (" + full_precision(u_[k]) + ", " + full_precision(u_[k + 1]) + ")");
+        tau_[k + 1] = tau_[k] + d * du;
+    }
+}
+
+int MethodParameterCurve::span_of_tau(double tau, bool from_left) const {
+    if (!(tau >= tau_.front() && tau <= tau_.back()))
+        fail_input(kWho, "tau = " + full_precision(tau) + " outside [" + full_precision(tau_.front()) + ", " + full_precision(tau_.back()) + "]");
+    const auto spans = static_cast<int>(dtau_du_.size());
+    // from the right: the span that starts at or before τ; from the left: the one that ends at or after it.
+    const auto it = from_left ? std::lower_bound(tau_.begin() + 1, tau_.end(), tau) : std::upper_bound(tau_.begin(), tau_.end(), tau);
+    const int k = static_cast<int>(it - tau_.begin()) - 1;
+    return std::clamp(k, 0, spans - 1);
+}
+
+double MethodParameterCurve::span_parameter(double tau) const {
+    const int k = span_of_tau(tau, false);
+    const auto s = static_cast<std::size_t>(k);
+    return std::min(u_[s + 1], u_[s] + (tau - tau_[s]) / dtau_du_[s]);
+}
+
+double MethodParameterCurve::method_parameter(double u) const {
+    if (!(u >= u_.front() && u <= u_.back()))
+        fail_input(kWho, "u = " + full_precision(u) + " outside [" + full_precision(u_.front()) + ", " + full_precision(u_.back()) + "]");
+    const auto k = static_cast<std::size_t>(std::clamp(static_cast<int>(std::upper_bound(u_.begin(), u_.end(), u) - u_.begin()) - 1, 0, static_cast<int>(dtau_du_.size()) - 1));
+    return std::min(tau_[k + 1], tau_[k] + dtau_du_[k] * (u - u_[k]));
+}
+
+Eigen::MatrixXd MethodParameterCurve::scaled(Eigen::MatrixXd j, int span) const {
+    const double inv = 1.0 / dtau_du_[static_cast<std::size_t>(span)];
+    double f = 1.0;
+    for (Eigen::Index i = 1; i < j.rows(); ++i) j.row(i) *= (f *= inv);
+    return j;
+}
+
+Eigen::MatrixXd MethodParameterCurve::jet(double tau, int order) const {
+    const int k = span_of_tau(tau, false);
+    const auto s = static_cast<std::size_t>(k);
+    return scaled(base_->jet(std::min(u_[s + 1], u_[s] + (tau - tau_[s]) / dtau_du_[s]), order), k);
+}
+
+Eigen::MatrixXd MethodParameterCurve::jet_from_left(double tau, int order) const {
+    const int k = span_of_tau(tau, true);
+    const auto s = static_cast<std::size_t>(k);
+    const double u = std::min(u_[s + 1], u_[s] + (tau - tau_[s]) / dtau_du_[s]);
+    return scaled(u > base_->t_min() ? base_->jet_from_left(u, order) : base_->jet(u, order), k);
+}
+
+std::vector<double> MethodParameterCurve::breakpoints() const {
+    std::vector<double> out;
+    for (const double u : base_->breakpoints()) out.push_back(method_parameter(u));
+    out.front() = tau_.front();
+    out.back() = tau_.back();
+    return out;
+}
+
+}  // namespace cagd::methods
