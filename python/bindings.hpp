@@ -24,6 +24,7 @@
 #include "cagd/compare/method_comparison.hpp"
 #include "cagd/core/curve.hpp"
 #include "cagd/core/errors.hpp"
+#include "cagd/methods/method_parameter_curve.hpp"
 #include "cagd/core/output_file.hpp"
 #include "cagd/fairness/pseudo_energy_minimum.hpp"
 #include "cagd/fairness/pseudo_energy_table.hpp"
@@ -120,6 +121,9 @@ struct PyCurve {
     py::object recipe = py::none();
     int points = 0;        // data points of an interpolant (0 otherwise)
     bool closed = false;   // an interpolant through closed data
+    // An interpolant: `curve` is in the method's parameter τ (MethodParameterCurve), and this is the
+    // same curve in the registry's span parameter u; null otherwise.
+    std::shared_ptr<const cagd::methods::MethodParameterCurve> in_tau;
 
     // Positions (derivatives = 0: shape t.shape + (dim,)) or jets (t.shape + (derivatives + 1,
     // dim)): rows are r, r', r'', … at each t. A number (or 0-d array) gives (dim,) or (k + 1, dim).

@@ -4,7 +4,10 @@
 namespace cagd_python {
 
 void bind_core(py::module_& m) {
-    py::class_<PyCurve>(m, "Curve", "A curve of the library: position and derivatives at a parameter t in parameter_range.")
+    py::class_<PyCurve>(m, "Curve",
+                        "A curve of the library: position and derivatives at a parameter t in parameter_range. An interpolant runs in its method's own "
+                        "parameter (the registry's claims: chord length for cubic-b and hosaka, arc length for curvature-profile, uniform for cubic-a and the "
+                        "S-/B2-splines), and derivatives are with respect to it; node_parameters are its values at the data points.")
         .def_property_readonly("dimension", [](const PyCurve& c) { return c.curve->dimension(); })
         .def_property_readonly("parameter_range", [](const PyCurve& c) { return py::make_tuple(c.curve->t_min(), c.curve->t_max()); })
         .def_property_readonly(
@@ -53,6 +56,22 @@ void bind_core(py::module_& m) {
             py::arg("t"), py::arg("nu") = 0,
             "The nu-th derivative at t, as scipy's splines: shape t.shape + (dim,). c(t) is c.evaluate(t); c(t, 1) the first derivative.")
         .def_property_readonly("closed", [](const PyCurve& c) { return c.closed; }, "whether the curve interpolates closed data")
+        .def(
+            "span_parameter",
+            [](const PyCurve& c, const py::object& t) {
+                if (!c.in_tau) throw cagd::InvalidInput("span_parameter: only an interpolant has a span parameter");
+                return c.map_parameters(t, [&](double tau) { return c.in_tau->span_parameter(tau); });
+            },
+            py::arg("t"),
+            "An interpolant's span parameter u at its parameter t: u runs from k to k + 1 between data points k and k + 1 (the registry's curve; "
+            "`cagd interpolate --parameter span`). t is piecewise affine in u.")
+        .def(
+            "method_parameter",
+            [](const PyCurve& c, const py::object& u) {
+                if (!c.in_tau) throw cagd::InvalidInput("method_parameter: only an interpolant has a span parameter");
+                return c.map_parameters(u, [&](double x) { return c.in_tau->method_parameter(x); });
+            },
+            py::arg("u"), "The inverse of span_parameter: the parameter t at the span parameter u.")
         .def("__repr__",
              [](const PyCurve& c) {
                  std::ostringstream s;

@@ -57,9 +57,12 @@ Interpolation interpolate_result(const Array& points, const std::string& method,
         py::dict kwargs(params);
         kwargs["method"] = method;
         kwargs["closed"] = closed;
-        out.curve = with_recipe(wrap(r.interpolant->curve, method, r.interpolant->node_parameters), "interpolate", py::make_tuple(from_matrix(p)), kwargs);
+        // Evaluated in the method's own parameter (chord length, arc length, …: MethodClaims::parameter).
+        auto in_tau = std::make_shared<const cagd::methods::MethodParameterCurve>(*r.interpolant);
+        out.curve = with_recipe(wrap(in_tau, method, in_tau->node_parameters()), "interpolate", py::make_tuple(from_matrix(p)), kwargs);
         out.curve->points = static_cast<int>(p.rows());
         out.curve->closed = closed;
+        out.curve->in_tau = in_tau;
         out.dtau_du = r.interpolant->dtau_du;
     }
     return out;

@@ -58,7 +58,7 @@ echo prev > appended.csv
 "$cagd" interpolate --method cubic-b --in p.csv --out /dev/stdout >> appended.csv 2> err
 expect 0 "--out /dev/stdout >> file" $?
 runs=$((runs + 1))
-[ "$(head -1 appended.csv)" = prev ] && [ "$(sed -n 2p appended.csv)" = "u,x,y,dx,dy,ddx,ddy" ] || fail "--out /dev/stdout >> file lost what was there: $(head -2 appended.csv)"
+[ "$(head -1 appended.csv)" = prev ] && [ "$(sed -n 2p appended.csv)" = "t,x,y,dx,dy,ddx,ddy" ] || fail "--out /dev/stdout >> file lost what was there: $(head -2 appended.csv)"
 { echo a; "$cagd" interpolate --method cubic-b --in p.csv --out /dev/stdout; echo b; } > group.csv 2> err
 runs=$((runs + 1))
 [ "$(head -1 group.csv)" = a ] && [ "$(tail -1 group.csv)" = b ] && [ "$(grep -c . group.csv)" -gt 10 ] || fail "{ echo a; cagd --out /dev/stdout; echo b; } > f: $(head -c 80 group.csv)"
@@ -90,7 +90,7 @@ ln -s real.csv link.csv
 "$cagd" interpolate --method cubic-b --in p.csv --out link.csv 2> err
 expect 0 "--out a symbolic link" $?
 runs=$((runs + 1))
-[ -L link.csv ] && [ "$(head -1 real.csv)" = "u,x,y,dx,dy,ddx,ddy" ] || fail "a symbolic link was not kept, or its target not replaced"
+[ -L link.csv ] && [ "$(head -1 real.csv)" = "t,x,y,dx,dy,ddx,ddy" ] || fail "a symbolic link was not kept, or its target not replaced"
 if [ "$(id -u)" -eq 0 ] && mknod full_device c 1 7 2> /dev/null && mknod null_device c 1 3 2> /dev/null; then
     "$cagd" energy-table --grid 8 --out full_device 2> err
     expect 1 "energy-table onto a full character device" $?
@@ -105,7 +105,7 @@ timeout 30 cat fifo > from_fifo.csv &
 expect 0 "--out a FIFO" $?
 wait
 runs=$((runs + 1))
-[ -p fifo ] && [ "$(head -1 from_fifo.csv)" = "u,x,y,dx,dy,ddx,ddy" ] || fail "a FIFO was not written through"
+[ -p fifo ] && [ "$(head -1 from_fifo.csv)" = "t,x,y,dx,dy,ddx,ddy" ] || fail "a FIFO was not written through"
 
 # ---- bad places: exit 2 before any work ----------------------------------------------------------
 start=$SECONDS

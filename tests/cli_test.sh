@@ -13,10 +13,18 @@ for i in 0 1 2 3 4; do for j in 0 1 2 3 4; do echo "$i,$j,$(( (i*i + j) % 3 ))";
 if ! "$cagd" interpolate --method s-spline --m 2 --in "$dir/pts.csv" --out "$dir/c.csv" --samples 4; then
   echo "FAIL: good interpolate exited non-zero"; fails=$((fails+1))
 fi
-# u = 2 is the 9th sample (4 per span): the curve passes through (2, 0).
+# t = 2 is the 9th sample (4 per span; the s-spline's parameter is uniform): the curve passes through (2, 0).
 if ! awk -F, 'NR==10 { exit !($1==2 && ($2-2)^2 < 1e-20 && $3^2 < 1e-20) }' "$dir/c.csv"; then
   echo "FAIL: curve does not pass through p_2 = (2,0) at u = 2"; sed -n 10p "$dir/c.csv"; fails=$((fails+1))
 fi
+# The method's own parameter: cubic-b's t is chord length, so the last sample is at the polygon's
+# length 4 sqrt 2; --parameter span gives u = 0..4 with the derivatives scaled by the chord.
+"$cagd" interpolate --method cubic-b --in "$dir/pts.csv" --out "$dir/cb.csv" --samples 2 || { echo "FAIL: cubic-b"; fails=$((fails+1)); }
+"$cagd" interpolate --method cubic-b --parameter span --in "$dir/pts.csv" --out "$dir/cbu.csv" --samples 2 || { echo "FAIL: cubic-b span"; fails=$((fails+1)); }
+head -1 "$dir/cb.csv" | grep -q '^t,x,y,dx,dy,ddx,ddy$' && head -1 "$dir/cbu.csv" | grep -q '^u,x,y,dx,dy,ddx,ddy$' || { echo "FAIL: parameter columns"; fails=$((fails+1)); }
+awk -F, 'END { exit !(($1 - 4 * sqrt(2))^2 < 1e-24) }' "$dir/cb.csv" || { echo "FAIL: cubic-b's t does not end at the chord length: $(tail -1 "$dir/cb.csv")"; fails=$((fails+1)); }
+paste -d, "$dir/cb.csv" "$dir/cbu.csv" | awk -F, 'NR > 1 { if (($2 - $9)^2 > 1e-24 || ($4 * sqrt(2) - $11)^2 > 1e-20) bad = 1 } END { exit bad }' \
+  || { echo "FAIL: the span parameter's derivative is not dt/du = chord times the method's"; fails=$((fails+1)); }
 "$cagd" analyze "$dir/c.csv" > "$dir/a.txt" 2>/dev/null || { echo "FAIL: analyze"; fails=$((fails+1)); }
 grep -q '^polyline_length,' "$dir/a.txt" || { echo "FAIL: analyze prints no length"; fails=$((fails+1)); }
 "$cagd" interpolate --help | grep -q -- '--m-vector' || { echo "FAIL: --help lacks --m-vector"; fails=$((fails+1)); }
@@ -65,8 +73,8 @@ expect_bad "tangent without vec"  '0,0\n1,1\n2,0\n'    interpolate --end tangent
 # pseudo_energy section 4.2 methods: the knot data of Table 3 through every method.
 printf 'x,y\n0,0\n2,-0.1\n1,-0.1\n3,0\n' > "$dir/knot.csv"
 for m in pseudo-spline cubic-a cubic-b hermite-a hermite-b; do
-  "$cagd" interpolate --method "$m" --in "$dir/knot.csv" --out "$dir/k.csv" --samples 4 || { echo "FAIL: interpolate $m"; fails=$((fails+1)); }
-  # u = 2 is the 9th sample: the curve passes through P_2 = (1, -0.1).
+  "$cagd" interpolate --method "$m" --parameter span --in "$dir/knot.csv" --out "$dir/k.csv" --samples 4 || { echo "FAIL: interpolate $m"; fails=$((fails+1)); }
+  # u = 2 (the span index) is the 9th sample: the curve passes through P_2 = (1, -0.1).
   awk -F, 'NR==10 { exit !($1==2 && ($2-1)^2 < 1e-20 && ($3+0.1)^2 < 1e-20) }' "$dir/k.csv" || { echo "FAIL: $m misses P_2"; fails=$((fails+1)); }
 done
 "$cagd" interpolate --method pseudo-spline --optimize approx --table "$dir/t6.txt" --in "$dir/knot.csv" --out "$dir/k.csv" \
@@ -86,14 +94,14 @@ expect_bad "analyze --in, no method" '0,0\n1,1\n2,0\n'  analyze --in "$dir/bad.c
 
 # hosaka eq (20): a space curve through 3-D points passes through them; bad ends are errors.
 printf 'x,y,z\n0,0,0\n1,1,0\n2,1,1\n3,0,2\n' > "$dir/space.csv"
-"$cagd" interpolate --method hosaka --in "$dir/space.csv" --out "$dir/h.csv" --samples 4 || { echo "FAIL: hosaka"; fails=$((fails+1)); }
+"$cagd" interpolate --method hosaka --parameter span --in "$dir/space.csv" --out "$dir/h.csv" --samples 4 || { echo "FAIL: hosaka"; fails=$((fails+1)); }
 awk -F, 'NR==10 { exit !($1==2 && ($2-2)^2 < 1e-20 && ($3-1)^2 < 1e-20 && ($4-1)^2 < 1e-20) }' "$dir/h.csv" || { echo "FAIL: hosaka misses P_2"; fails=$((fails+1)); }
 "$cagd" interpolate --method hosaka --scale unit --end tangent --start-tangent 1,0,0 --end-tangent 0,0,1 --in "$dir/space.csv" --out "$dir/h.csv" \
   || { echo "FAIL: hosaka tangent ends"; fails=$((fails+1)); }
-"$cagd" interpolate --method hosaka --m 2 --in "$dir/space.csv" --out "$dir/h2.csv" --samples 4 || { echo "FAIL: hosaka --m 2"; fails=$((fails+1)); }
+"$cagd" interpolate --method hosaka --m 2 --parameter span --in "$dir/space.csv" --out "$dir/h2.csv" --samples 4 || { echo "FAIL: hosaka --m 2"; fails=$((fails+1)); }
 awk -F, 'NR==10 { exit !($1==2 && ($2-2)^2 < 1e-20 && ($3-1)^2 < 1e-20 && ($4-1)^2 < 1e-20) }' "$dir/h2.csv" || { echo "FAIL: hosaka --m 2 misses P_2"; fails=$((fails+1)); }
 expect_bad "hosaka m 0"            '0,0\n1,1\n2,0\n'    interpolate --method hosaka --m 0 --in "$dir/bad.csv" --out "$dir/o.csv"
-"$cagd" interpolate --method hosaka --m 2 --end tangent --start-tangent 1,0,0 --end-tangent 0,0,1 --in "$dir/space.csv" --out "$dir/h3.csv" --samples 4 \
+"$cagd" interpolate --method hosaka --m 2 --end tangent --start-tangent 1,0,0 --end-tangent 0,0,1 --parameter span --in "$dir/space.csv" --out "$dir/h3.csv" --samples 4 \
   || { echo "FAIL: hosaka --m 2 tangent ends"; fails=$((fails+1)); }
 # the first row's derivative columns (dx, dy, dz) are the given start tangent
 awk -F, 'NR==2 { exit !(($5-1)^2 < 1e-20 && $6^2 < 1e-20 && $7^2 < 1e-20) }' "$dir/h3.csv" || { echo "FAIL: hosaka --m 2 start tangent"; sed -n 2p "$dir/h3.csv"; fails=$((fails+1)); }
@@ -275,7 +283,7 @@ echo old > "$dir/mode.csv"; chmod 640 "$dir/mode.csv"
 [ "$(stat -c %a "$dir/mode.csv")" = 640 ] || { echo "FAIL: mode of a replaced file: $(stat -c %a "$dir/mode.csv")"; fails=$((fails+1)); }
 (umask 022; "$cagd" interpolate --in "$dir/pts.csv" --out "$dir/new_mode.csv" --samples 1)
 [ "$(stat -c %a "$dir/new_mode.csv")" = 644 ] || { echo "FAIL: mode of a new file: $(stat -c %a "$dir/new_mode.csv")"; fails=$((fails+1)); }
-"$cagd" interpolate --in "$dir/pts.csv" --out /dev/stdout --samples 1 | grep -q '^u,x,y' || { echo "FAIL: --out /dev/stdout on a pipe"; fails=$((fails+1)); }
+"$cagd" interpolate --in "$dir/pts.csv" --out /dev/stdout --samples 1 | grep -q '^t,x,y' || { echo "FAIL: --out /dev/stdout on a pipe"; fails=$((fails+1)); }
 [ -L /dev/stdout ] || [ -c /dev/stdout ] || { echo "FAIL: /dev/stdout is no longer a link or device"; fails=$((fails+1)); }
 
 if [ "$fails" -eq 0 ]; then echo "cli: all checks passed"; fi

@@ -13,6 +13,7 @@
 #include "cagd/aesthetic/log_aesthetic_curve.hpp"
 #include "cagd/aesthetic/typical_bezier.hpp"
 #include "cagd/analysis/curve_measures.hpp"
+#include "cagd/methods/method_parameter_curve.hpp"
 #include "cagd/analysis/log_curvature_graph.hpp"
 #include "cagd/compare/method_comparison.hpp"
 #include "cagd/core/point_csv.hpp"
@@ -64,7 +65,7 @@ int main(int argc, char** argv) {
                 const cagd::methods::InterpolationResult r = cagd::methods::interpolate(m, dim == 2 ? plane : space, closed, defaults);
                 const std::string key = m.name + (closed ? ".closed" : ".open") + "." + std::to_string(dim) + "d";
                 put(key + ".ok", r.outcome.ok() ? 1.0 : 0.0);
-                if (r.outcome.ok()) curve_values(key, *r.interpolant->curve);
+                if (r.outcome.ok()) curve_values(key, cagd::methods::MethodParameterCurve(*r.interpolant));  // in the method's parameter, as Python
             }
         }
     }

@@ -450,7 +450,7 @@ def test_a_curve_is_called_like_a_scipy_spline():
 
 
 def test_repr_names_the_method_the_points_and_closedness():
-    assert repr(cagd.interpolate(table1(), "hosaka")) == "<cagd.Curve hosaka through 13 points, open, dim=2, t=[0, 12]>"
+    assert repr(cagd.interpolate(table1(), "s-spline")) == "<cagd.Curve s-spline through 13 points, open, dim=2, t=[0, 12]>"
     closed = cagd.interpolate(table1(), "cubic-b", closed=True)
     assert closed.closed and repr(closed).startswith("<cagd.Curve cubic-b through 13 points, closed, dim=2")
     assert repr(cagd.normalized_log_aesthetic_curve(-0.5, 1.0)).startswith("<cagd.Curve log-aesthetic, dim=2")
@@ -474,3 +474,35 @@ def test_every_kind_of_curve_pickles_to_the_same_curve():
         t = np.linspace(*c.parameter_range, 11)
         assert np.array_equal(again.evaluate(t, derivatives=2), c.evaluate(t, derivatives=2)), name
         assert repr(again) == repr(c) and again.method == c.method, name
+
+
+def test_curves_run_in_their_methods_parameter_and_cubic_b_is_scipys_natural_spline():
+    from scipy.interpolate import CubicSpline
+
+    p = table1()
+    chords = np.linalg.norm(np.diff(p, axis=0), axis=1)
+    tau = np.concatenate([[0.0], np.cumsum(chords)])
+    c = cagd.interpolate(p, "cubic-b")
+    assert np.allclose(c.node_parameters, tau, rtol=0, atol=1e-12), "cubic-b states the chord-length parameter"
+    ref = CubicSpline(tau, p, bc_type="natural")
+    t = np.linspace(0.0, tau[-1], 501)
+    for nu in range(4):
+        assert np.max(np.abs(c(t, nu) - ref(t, nu))) <= 1e-12 * max(1.0, np.max(np.abs(ref(t, nu)))), f"derivative {nu}"
+    # Closed: the periodic spline through the points and the first again.
+    q = np.vstack([p, p[:1]])
+    tau_c = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(q, axis=0), axis=1))])
+    cc = cagd.interpolate(p, "cubic-b", closed=True)
+    ref_c = CubicSpline(tau_c, q, bc_type="periodic")
+    t = np.linspace(0.0, tau_c[-1], 501)
+    for nu in range(4):
+        # The third derivative is a step function: at the closing point scipy reads the first piece, we the last.
+        tt = t if nu < 3 else t[:-1]
+        assert np.max(np.abs(cc(tt, nu) - ref_c(tt, nu))) <= 1e-12 * max(1.0, np.max(np.abs(ref_c(tt, nu)))), f"closed, derivative {nu}"
+    # The span parameter stays available: u = k at data point k.
+    assert np.allclose(c.span_parameter(c.node_parameters), np.arange(len(p)), atol=1e-12)
+    assert np.allclose(c.method_parameter(np.arange(len(p))), tau, atol=1e-12)
+    # Arc length for the curvature-profile spline: each span's τ-length is its length.
+    cp = cagd.interpolate(p[:6], "curvature-profile")
+    assert abs(cp.node_parameters[-1] - cp.arc_length()) <= 1e-9 * cp.arc_length()
+    with pytest.raises(ValueError, match="only an interpolant"):
+        cagd.normalized_log_aesthetic_curve(-0.5, 1.0).span_parameter(0.5)

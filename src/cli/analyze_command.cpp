@@ -57,7 +57,8 @@ int analyze_samples(const std::string& path) {
         s.first = matrix(d1);
         s.second = matrix(d2);
     }
-    if (const int u = t.column("u"); u >= 0)
+    // The parameter column: t (the method's own, cagd interpolate's default) or u (--parameter span).
+    if (const int u = t.column("t") >= 0 ? t.column("t") : t.column("u"); u >= 0)
         for (const auto& r : t.rows) s.parameter.push_back(r[static_cast<std::size_t>(u)]);
     const analysis::SampledCurveMeasures m = analysis::sampled_curve_measures(s);
     Quantities q;

@@ -5,12 +5,12 @@
 
 namespace cagd::cli {
 
-void write_curve(const Curve& c, int samples_per_span, OutputFile& out) {
+void write_curve(const Curve& c, int samples_per_span, OutputFile& out, const std::string& parameter_column) {
     const std::vector<double> br = c.breakpoints();
     require_output_rows(static_cast<double>(samples_per_span) * static_cast<double>(br.size() - 1) + 1, "--samples " + std::to_string(samples_per_span));
     const int d = c.dimension();
     const char* names = "xyz";
-    std::vector<std::string> header{"u"};
+    std::vector<std::string> header{parameter_column};
     for (const char* prefix : {"", "d", "dd"})
         for (int k = 0; k < d; ++k) header.push_back(std::string(prefix) + names[k]);
     CsvOutput w(out, header);

@@ -1,4 +1,4 @@
-// `cagd interpolate --method M [method options] [--closed] [--samples N] --in P.csv --out C.csv`:
+// `cagd interpolate --method M [method options] [--closed] [--samples N] [--parameter method|span] --in P.csv --out C.csv`:
 // any registered method (methods/method_registry.hpp) on the user's points; `--list-methods`
 // describes them. Writes the curve CSV (cli/curve_output.hpp; `-` for stdout). What the method
 // reports (the curvature-profile Newton history) goes to the file --report names, or to stderr
@@ -14,6 +14,7 @@
 #include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
 #include "cagd/core/point_csv.hpp"
+#include "cagd/methods/method_parameter_curve.hpp"
 #include "cagd/methods/method_registry.hpp"
 
 namespace cagd::cli {
@@ -21,7 +22,7 @@ namespace cagd::cli {
 namespace {
 
 struct InterpolateArgs {
-    std::string method = "s-spline", in, out, report;
+    std::string method = "s-spline", in, out, report, parameter = "method";
     MethodOptions options;
     bool closed = false, list = false, markdown = false;
     int samples = 16;
@@ -42,7 +43,11 @@ int run_interpolate(const InterpolateArgs& a) {
     if (!a.report.empty()) report = std::make_unique<OutputFile>(a.report, "--report");
     const methods::InterpolationResult r = methods::interpolate(method, points, a.closed, values);
     if (!r.outcome.ok() || !r.interpolant) throw NoResult(r.outcome.message);
-    write_curve(*r.interpolant->curve, a.samples, out);
+    // The method's own parameter (t: chord length, arc length, … as the registry states), or the span index u.
+    if (a.parameter == "span")
+        write_curve(*r.interpolant->curve, a.samples, out, "u");
+    else
+        write_curve(methods::MethodParameterCurve(*r.interpolant), a.samples, out, "t");
     // What the method reports (the Newton history): "quantity,value" lines, into --report's file,
     // or on stderr unless --quiet.
     std::string text;
@@ -68,7 +73,12 @@ Command add_interpolate_command(CLI::App& app) {
     c->add_flag("--closed", a->closed, "closed curve");
     c->add_option("--samples", a->samples, "samples per curve piece in the output (samples x pieces <= 10^7 rows)")->check(CLI::Range(1, 100000));
     c->add_option("--in", a->in, "points CSV: x,y[,z] per line, optional header of names; - for stdin");
-    c->add_option("--out", a->out, "curve CSV: u, position, 1st and 2nd derivative; - for stdout");
+    c->add_option("--out", a->out, "curve CSV: t, position, 1st and 2nd derivative with respect to t; - for stdout");
+    c->add_option("--parameter", a->parameter,
+                  "method: t is the method's own parameter (chord length, arc length or uniform, as --list-methods states); span: u, the span index "
+                  "(u = k at point k)")
+        ->check(CLI::IsMember({"method", "span"}))
+        ->capture_default_str();
     c->add_option("--report", a->report, "file for what the method reports (the curvature-profile Newton history, as quantity,value lines); default: stderr unless --quiet");
     return {c, [a] { return run_interpolate(*a); }};
 }
