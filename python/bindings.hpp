@@ -191,5 +191,6 @@ void bind_fairness(py::module_& m);
 void bind_aesthetic(py::module_& m);
 void bind_spline(py::module_& m);
 void bind_smoothing(py::module_& m);
+void bind_surface(py::module_& m);
 
 }  // namespace cagd_python

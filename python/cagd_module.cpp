@@ -92,4 +92,5 @@ PYBIND11_MODULE(_cagd, m) {
     bind_aesthetic(m);
     bind_spline(m);
     bind_smoothing(m);
+    bind_surface(m);
 }

@@ -53,7 +53,15 @@ import numpy.typing as _npt
 
 from ._cagd import (  # noqa: F401  (re-exported)
     __version__,
+    CartesianSurface,
     Curve,
+    EdgePatch,
+    TensorPatch,
+    cartesian_surface,
+    coons_patch,
+    elastic_net_surface,
+    plate_smoothing,
+    tensor_patch,
     ExplicitSpline,
     Interpolation,
     NoSolution,
@@ -78,6 +86,8 @@ __all__ = [
     "log_aesthetic_curve", "normalized_log_aesthetic_curve", "log_aesthetic_space_curve",
     "typical_curve", "space_typical_curve",
     "elastic_line", "smooth_curve", "elastic_space_curve",
+    "TensorPatch", "EdgePatch", "CartesianSurface", "tensor_patch", "coons_patch", "cartesian_surface",
+    "elastic_net_surface", "plate_smoothing",
 ]
 
 

@@ -4,6 +4,7 @@
 //
 // Data: the pseudo_energy paper's Table 1 points (open and closed), and the same points lifted to
 // 3-D by z = (x − y)/4 (exact in binary floating point, so Python forms the same numbers).
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -20,7 +21,10 @@
 #include "cagd/fairness/pseudo_energy_minimum.hpp"
 #include "cagd/methods/method_registry.hpp"
 #include "cagd/smoothing/elastic_line.hpp"
+#include "cagd/smoothing/elastic_net.hpp"
+#include "cagd/smoothing/plate_smoothing.hpp"
 #include "cagd/spline/bezier.hpp"
+#include "cagd/surface/hosaka_patch.hpp"
 
 namespace {
 
@@ -91,6 +95,50 @@ int main(int argc, char** argv) {
     for (std::size_t i = 0; i < xs.size(); ++i) xs[i] = static_cast<double>(i);  // strictly increasing abscissae
     const cagd::smoothing::ElasticLine line = cagd::smoothing::elastic_line(xs, plane.col(1), 0.1);
     for (Eigen::Index i = 0; i < line.values().rows(); ++i) put("elastic_line.y" + std::to_string(i), line.values()(i, 0));
+
+    // Surfaces (python/bindings_surface.cpp): one grid of heights, its Cartesian surface, the elastic
+    // net and the plate smoothing over it; Coons' patch through four edges; a tensor patch.
+    {
+        const std::vector<double> gx{0.0, 1.0, 2.5, 3.0, 4.2}, gy{0.0, 0.5, 1.5, 2.0};
+        Eigen::MatrixXd z(5, 4);
+        for (int a = 0; a < 5; ++a)
+            for (int b = 0; b < 4; ++b) z(a, b) = std::sin(gx[static_cast<std::size_t>(a)]) * std::cos(gy[static_cast<std::size_t>(b)]) + 0.1 * a * b;
+        const Eigen::MatrixXd lam = Eigen::MatrixXd::Constant(1, 1, 0.05);
+        const cagd::surface::CartesianSurface cart = cagd::surface::cartesian_spline_surface(gx, gy, z);
+        const cagd::surface::CartesianSurface net = cagd::smoothing::net_spline_smoothing(gx, gy, z, lam);
+        const cagd::surface::CartesianSurface plate = cagd::smoothing::plate_smoothing(gx, gy, z, lam, cagd::smoothing::PlateEnergy::poisson).surface;
+        const double at[][2] = {{0.0, 0.0}, {0.7, 1.1}, {2.5, 0.5}, {3.9, 1.95}, {4.2, 2.0}};
+        for (int k = 0; k < 5; ++k)
+            for (int a = 0; a <= 1; ++a)
+                for (int b = 0; b <= 1; ++b) {
+                    const std::string key = "." + std::to_string(k) + "." + std::to_string(a) + std::to_string(b);
+                    put("surface.cartesian" + key, cart.derivative(at[k][0], at[k][1], a, b));
+                    put("surface.net" + key, net.derivative(at[k][0], at[k][1], a, b));
+                    put("surface.plate" + key, plate.derivative(at[k][0], at[k][1], a, b));
+                }
+        cagd::PointList bottom(4, 3), left(3, 3), top(4, 3), right(3, 3);
+        bottom << 0, 0, 0, 1, 0, 0.3, 2, 0, 0.1, 3, 0, 0;
+        left << 0, 0, 0, 0, 1, 0.5, 0, 2, 0;
+        top << 0, 2, 0, 1, 2.2, 0.4, 2, 2.1, 0.2, 3, 2, 0;
+        right << 3, 0, 0, 3, 1, -0.5, 3, 2, 0;
+        const cagd::surface::EdgeFormPatch coons(1, cagd::surface::edges_through_points(bottom, left, top, right));
+        cagd::surface::CornerDerivatives corners(1, 3);
+        for (int k = 0; k < 2; ++k)
+            for (int l = 0; l < 2; ++l)
+                for (int i = 0; i <= 1; ++i)
+                    for (int j = 0; j <= 1; ++j)
+                        for (int d = 0; d < 3; ++d) corners.at(k, l, i, j)[d] = std::sin(1.0 + k + 2 * l + 3 * i + 5 * j + 7 * d);
+        const cagd::surface::HosakaPatch tensor(corners);
+        const double uv[][2] = {{0.0, 0.0}, {0.3, 0.8}, {0.5, 0.5}, {1.0, 0.25}};
+        for (int k = 0; k < 4; ++k)
+            for (int a = 0; a <= 1; ++a)
+                for (int b = 0; b <= 1; ++b)
+                    for (int d = 0; d < 3; ++d) {
+                        const std::string key = "." + std::to_string(k) + "." + std::to_string(a) + std::to_string(b) + "." + std::to_string(d);
+                        put("surface.coons" + key, coons.derivative(uv[k][0], uv[k][1], a, b)[d]);
+                        put("surface.tensor" + key, tensor.derivative(uv[k][0], uv[k][1], a, b)[d]);
+                    }
+    }
 
     cagd::compare::ComparisonOptions options;
     options.threads = 1;

@@ -506,3 +506,43 @@ def test_curves_run_in_their_methods_parameter_and_cubic_b_is_scipys_natural_spl
     assert abs(cp.node_parameters[-1] - cp.arc_length()) <= 1e-9 * cp.arc_length()
     with pytest.raises(ValueError, match="only an interpolant"):
         cagd.normalized_log_aesthetic_curve(-0.5, 1.0).span_parameter(0.5)
+
+
+def test_surfaces_equal_cpp(cpp):
+    gx, gy = np.array([0.0, 1.0, 2.5, 3.0, 4.2]), np.array([0.0, 0.5, 1.5, 2.0])
+    z = np.array([[math.sin(x) * math.cos(y) + 0.1 * a * b for b, y in enumerate(gy)] for a, x in enumerate(gx)])
+    surfaces = {"cartesian": cagd.cartesian_surface(gx, gy, z), "net": cagd.elastic_net_surface(gx, gy, z, 0.05),
+                "plate": cagd.plate_smoothing(gx, gy, z, 0.05)}
+    at = np.array([[0.0, 0.0], [0.7, 1.1], [2.5, 0.5], [3.9, 1.95], [4.2, 2.0]])
+    for name, s in surfaces.items():
+        for a in (0, 1):
+            for b in (0, 1):
+                values = s.evaluate(at[:, 0], at[:, 1], a=a, b=b)  # vectorised over the points
+                for k in range(len(at)):
+                    assert close(values[k], cpp[f"surface.{name}.{k}.{a}{b}"]), (name, k, a, b)
+    bottom = np.array([[0, 0, 0], [1, 0, 0.3], [2, 0, 0.1], [3, 0, 0]], float)
+    left = np.array([[0, 0, 0], [0, 1, 0.5], [0, 2, 0]], float)
+    top = np.array([[0, 2, 0], [1, 2.2, 0.4], [2, 2.1, 0.2], [3, 2, 0]], float)
+    right = np.array([[3, 0, 0], [3, 1, -0.5], [3, 2, 0]], float)
+    coons = cagd.coons_patch(bottom, left, top, right)
+    corners = np.array([[[[[math.sin(1.0 + k + 2 * l + 3 * i + 5 * j + 7 * d) for d in range(3)] for j in range(2)] for i in range(2)] for l in range(2)] for k in range(2)])
+    tensor = cagd.tensor_patch(corners)
+    uv = np.array([[0.0, 0.0], [0.3, 0.8], [0.5, 0.5], [1.0, 0.25]])
+    for name, p in {"coons": coons, "tensor": tensor}.items():
+        for a in (0, 1):
+            for b in (0, 1):
+                values = p.evaluate(uv[:, 0], uv[:, 1], a=a, b=b)
+                assert values.shape == (4, 3)
+                for k in range(4):
+                    for d in range(3):
+                        assert close(values[k, d], cpp[f"surface.{name}.{k}.{a}{b}.{d}"]), (name, k, a, b, d)
+    # Grids broadcast as numpy does: a (3, 1) column against a (4,) row gives (3, 4) points.
+    grid = coons.evaluate(np.linspace(0, 1, 3)[:, None], np.linspace(0, 1, 4))
+    assert grid.shape == (3, 4, 3) and np.allclose(grid[:, 0], coons.evaluate(np.linspace(0, 1, 3), 0.0))
+    assert surfaces["cartesian"].evaluate(np.array([[0.7]]), 1.1).shape == (1, 1)
+    with pytest.raises(ValueError, match="corners: expected shape"):
+        cagd.tensor_patch(np.zeros((2, 2, 2, 3, 3)))
+    with pytest.raises(ValueError, match="energy = 'stiff'"):
+        cagd.plate_smoothing(gx, gy, z, 0.05, energy="stiff")
+    with pytest.raises(TypeError, match="^u: expected real numbers"):
+        coons.evaluate("a", 0.5)
