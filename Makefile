@@ -66,10 +66,14 @@ install:
 	@cmake --build $(BUILD)-install -j$(JOBS)
 	@cmake --install $(BUILD)-install
 
-# The Doxygen API reference of the public headers into $(BUILD)/docs/html; fails on any warning.
+# The Doxygen API reference of the public headers into $(BUILD)/docs/html, and the Sphinx reference
+# of the Python module's docstrings into $(BUILD)/docs/python; each fails on any warning.
 docs:
-	@bash scripts/install-deps.sh docs
+	@bash scripts/install-deps.sh docs python
 	@bash scripts/docs.sh $(abspath $(BUILD))/docs
+	@cmake -S . -B $(BUILD) $(call generator_for,$(BUILD)) $(CMAKE_FLAGS) $(PYTHON_ON) >/dev/null
+	@cmake --build $(BUILD) -j$(JOBS) --target cagd_python
+	@bash scripts/python-docs.sh $(BUILD)/python $(abspath $(BUILD))/docs/python
 
 # ASan + UBSan tests of the compare modules and a minute of libFuzzer (clang; build-sanitize/).
 sanitize:

@@ -24,7 +24,7 @@ void bind_core(py::module_& m) {
                 return c.map_parameters(
                     t, [&](double u) { return c.curve->dimension() == 2 ? cagd::analysis::signed_curvature(*c.curve, u) : cagd::analysis::curvature(*c.curve, u); });
             },
-            py::arg("t"), "Curvature at t (a float for a number, an array of t's shape otherwise): signed (counter-clockwise positive) for planar curves, |κ| for space curves. "
+            py::arg("t"), "Curvature at t (a float for a number, an array of t's shape otherwise): signed (counter-clockwise positive) for planar curves, its absolute value for space curves. "
             "ValueError where the speed vanishes.")
         .def(
             "torsion", [](const PyCurve& c, const py::object& t) { return c.map_parameters(t, [&](double u) { return cagd::analysis::torsion(*c.curve, u); }); }, py::arg("t"),

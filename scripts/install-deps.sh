@@ -10,7 +10,7 @@
 #   test       everything below: GoogleTest, the Python tests, MPI, the API docs, the sanitizers and
 #              the benchmarks' packages (make test, make sanitize)
 #   bench      + Google Benchmark and the peers' Python (make bench)
-#   docs       + Doxygen (make docs)
+#   docs       Doxygen and Sphinx (make docs, with the python layer)
 #
 # As root it says what it installs, then installs it with apt-get. Otherwise it prints the
 # apt-get line to run and stops (exit 1): it never installs anything without saying what.
@@ -35,7 +35,7 @@ reproduce=(
 )
 test=(
   libgtest-dev libgmock-dev        # unit tests
-  doxygen                # the API reference: no undocumented public declaration
+  doxygen python3-sphinx # the API references: no undocumented public declaration, no Sphinx warning
   clang libclang-rt-14-dev         # make sanitize: ASan/UBSan and libFuzzer runtimes
   python3-pytest         # the Python module's tests
   python3-nbclient python3-ipykernel python3-matplotlib   # runs examples/curvature_combs.ipynb
@@ -47,7 +47,8 @@ bench=(
   python3-scipy          # make bench: scipy's splines as the Python peer
 )
 docs=(
-  doxygen
+  doxygen                # the C++ API reference
+  python3-sphinx         # the Python API reference from the docstrings
 )
 
 layers=("$@")

@@ -3,30 +3,36 @@
 Every value is computed by the C++ library (the same code as the ``cagd`` command and the
 reproduction harness); this package only converts NumPy arrays and names.
 
-Methods
+Methods::
+
     methods()                       the registry: name, paper, parameters, presets, claims
     interpolate(points, method, closed=False, **params) -> Curve
     interpolate_result(...)         -> Interpolation (status, message, curve, method's report)
 
-Curves (``Curve``)
-    evaluate(t, derivatives=0)      positions (m, dim) or jets (m, k + 1, dim), vectorised
+Curves (``Curve``)::
+
+    evaluate(t, derivatives=0)      positions t.shape + (dim,) or jets t.shape + (k + 1, dim)
+    c(t, nu=0)                      the nu-th derivative, as scipy's splines
     curvature(t), torsion(t)        signed κ for planar curves, |κ| in space; τ (space)
     arc_length(), area(), bending_energy(), parameter_range, node_parameters, breakpoints()
+    span_parameter(t), method_parameter(u)   an interpolant's parameter (the method's own) ↔ span index
 
-The rest of the library
+The rest of the library::
+
     compare(points, closed=False, methods=None)   the measures of ``cagd compare`` as arrays
     pseudo_energy(theta0, theta1, method="fast"), segment_measures(...), PseudoEnergyTable
     log_aesthetic_curve, normalized_log_aesthetic_curve, log_aesthetic_space_curve
     typical_curve, space_typical_curve            typical Bézier curves (typical_curves)
     elastic_line, smooth_curve, elastic_space_curve   Hosaka's smoothing (section 6)
+    tensor_patch, coons_patch, cartesian_surface      Hosaka's surfaces (eq 27, 28, 30)
+    elastic_net_surface, plate_smoothing              Hosaka's surface smoothing (eq 53-58)
 
-Errors
-    A wrong type raises ``TypeError`` naming the argument (complex points, a string for
-    ``closed``); bad values raise ``ValueError`` with the library's message (naming the value and
-    what is allowed); a failed write (``PseudoEnergyTable.save``) raises ``OSError`` and keeps the
-    old file. A numerical outcome for valid input — no solution, no convergence (e.g. the
-    curvature-profile Newton) — raises ``cagd.NoSolution`` (a ``RuntimeError``) from the functions
-    that return a result; ``interpolate_result`` returns it as a status instead.
+Errors: a wrong type raises ``TypeError`` naming the argument (complex points, a string for
+``closed``); bad values raise ``ValueError`` with the library's message (naming the value and what
+is allowed); a failed write (``PseudoEnergyTable.save``) raises ``OSError`` and keeps the old
+file. A numerical outcome for valid input — no solution, no convergence (e.g. the
+curvature-profile Newton) — raises ``cagd.NoSolution`` (a ``RuntimeError``) from the functions that
+return a result; ``interpolate_result`` returns it as a status instead.
 
 Parameters of a method are given as keyword arguments, with ``_`` for ``-`` in their names; they
 are checked by the registry exactly as the command line's options are, and errors name them as
