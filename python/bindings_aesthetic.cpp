@@ -31,7 +31,12 @@ void bind_aesthetic(py::module_& m) {
             return with_recipe(wrap(std::make_shared<cagd::aesthetic::LogAestheticCurve>(cagd::aesthetic::normalized_log_aesthetic_curve(alpha, length)), "log-aesthetic"),
                                "normalized_log_aesthetic_curve", py::make_tuple(alpha, length));
         },
-        py::arg("alpha"), py::arg("length"), "The normalised log-aesthetic curve of typical_curves eq (15).");
+        py::arg("alpha"), py::arg("length"), "The normalised log-aesthetic curve of typical_curves eq (15): θ(s) = α s^((α−1)/α), κ = (α − 1) s^(−1/α), for α < 0 or α > 1 (α the "
+        "slope of its logarithmic curvature graph), arc length `length`, parameter s = arc length, starting at the origin along the x axis.\n\n"
+        ">>> import cagd\n"
+        ">>> c = cagd.normalized_log_aesthetic_curve(-0.5, 1.0)  # κ = −1.5 s²\n"
+        ">>> c, round(c.arc_length(), 9), round(c.curvature(0.5), 9), round(c.curvature(1.0), 9)\n"
+        "(<cagd.Curve log-aesthetic, dim=2, t=[0, 1]>, 1.0, -0.375, -1.5)\n");
     m.def(
         "log_aesthetic_space_curve",
         [](double alpha, double beta, double length, double start) {
@@ -39,7 +44,12 @@ void bind_aesthetic(py::module_& m) {
                                     "log-aesthetic-space"),
                                "log_aesthetic_space_curve", py::make_tuple(alpha, beta, length, start));
         },
-        py::arg("alpha"), py::arg("beta"), py::arg("length"), py::arg("start") = 0.0, "The normalised log-aesthetic space curve (typical_curves section 5, eq 33–35).");
+        py::arg("alpha"), py::arg("beta"), py::arg("length"), py::arg("start") = 0.0, "The normalised log-aesthetic space curve (typical_curves section 5, eq 33–35): curvature and torsion laws with slopes alpha and beta, arc "
+        "length `length`, the laws started at s0 = start; parameter s = arc length.\n\n"
+        ">>> import cagd\n"
+        ">>> c = cagd.log_aesthetic_space_curve(1.5, 1.2, 1.0, start=0.1)\n"
+        ">>> c.dimension, round(c.arc_length(), 9), round(c.torsion(0.5), 6)\n"
+        "(3, 1.0, 0.306129)\n");
     m.def(
         "typical_curve",
         [](double alpha, double length, int degree, const std::string& kind) {
@@ -49,7 +59,12 @@ void bind_aesthetic(py::module_& m) {
             throw cagd::InvalidInput("kind = '" + kind + "'; allowed scale-one | constant-rotation");
         },
         py::arg("alpha"), py::arg("length"), py::arg("degree"), py::arg("kind") = "constant-rotation",
-        "The typical Bézier curve of degree n (typical_curves section 3): its control polygon and the curve.");
+        "The typical Bézier curve of degree n (typical_curves section 3): its control polygon and the curve, as a dict (curve, control_points "
+        "(degree + 1, 2), edge_lengths, rotations, scales). kind: constant-rotation or scale-one.\n\n"
+        ">>> import cagd\n"
+        ">>> t = cagd.typical_curve(-0.5, 1.0, 6)\n"
+        ">>> sorted(t), t[\"control_points\"].shape\n"
+        "(['control_points', 'curve', 'edge_lengths', 'rotations', 'scales'], (7, 2))\n");
     m.def(
         "space_typical_curve",
         [](double alpha, double beta, double length, int degree, double start, const std::string& composition) {
@@ -65,7 +80,12 @@ void bind_aesthetic(py::module_& m) {
             return d;
         },
         py::arg("alpha"), py::arg("beta"), py::arg("length"), py::arg("degree"), py::arg("start") = 0.0, py::arg("composition") = "alexa",
-        "The space typical Bézier curve (typical_curves section 5, eq 36) of the normalised log-aesthetic space curve.");
+        "The space typical Bézier curve (typical_curves section 5, eq 36) of the normalised log-aesthetic space curve, as a dict (curve, "
+        "control_points (degree + 1, 3), curvature_rotations, torsion_rotations, edge_length). composition: alexa, kappa_then_tau or tau_then_kappa.\n\n"
+        ">>> import cagd\n"
+        ">>> t = cagd.space_typical_curve(1.5, 1.2, 1.0, 9, start=0.1)\n"
+        ">>> t[\"control_points\"].shape, t[\"curve\"].dimension\n"
+        "((10, 3), 3)\n");
 }
 
 }  // namespace cagd_python

@@ -7,12 +7,25 @@ void bind_core(py::module_& m) {
     py::class_<PyCurve>(m, "Curve",
                         "A curve of the library: position and derivatives at a parameter t in parameter_range. An interpolant runs in its method's own "
                         "parameter (the registry's claims: chord length for cubic-b and hosaka, arc length for curvature-profile, uniform for cubic-a and the "
-                        "S-/B2-splines), and derivatives are with respect to it; node_parameters are its values at the data points.")
-        .def_property_readonly("dimension", [](const PyCurve& c) { return c.curve->dimension(); })
-        .def_property_readonly("parameter_range", [](const PyCurve& c) { return py::make_tuple(c.curve->t_min(), c.curve->t_max()); })
+                        "S-/B2-splines), and derivatives are with respect to it; node_parameters are its values at the data points.\n\n"
+                        ">>> import numpy as np, cagd\n"
+                        ">>> c = cagd.interpolate(np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 0.0], [3.0, 1.0]]), \"cubic-b\")\n"
+                        ">>> c.node_parameters.round(6)  # chord length: each chord is √2\n"
+                        "array([0.      , 1.414214, 2.828427, 4.242641])\n"
+                        ">>> c(np.sqrt(2))  # the second point\n"
+                        "array([1., 1.])\n"
+                        ">>> c(np.sqrt(2), 1).round(6), round(c.curvature(np.sqrt(2)), 6)\n"
+                        "(array([ 0.707107, -0.235702]), -3.41526)\n"
+                        ">>> round(c.arc_length(), 6), round(c.bending_energy(), 6)\n"
+                        "(4.423849, 8.398562)\n"
+                        ">>> c.span_parameter(np.sqrt(2)), round(c.method_parameter(1.5), 6)\n"
+                        "(1.0, 2.12132)\n")
+        .def_property_readonly("dimension", [](const PyCurve& c) { return c.curve->dimension(); }, "2 (planar) or 3 (space)")
+        .def_property_readonly(
+            "parameter_range", [](const PyCurve& c) { return py::make_tuple(c.curve->t_min(), c.curve->t_max()); }, "(t_min, t_max): where the curve is defined")
         .def_property_readonly(
             "node_parameters", [](const PyCurve& c) { return from_vector(c.node_parameters); }, "the parameter of each data point (interpolants; closed: n + 1 values)")
-        .def_property_readonly("method", [](const PyCurve& c) { return c.method; })
+        .def_property_readonly("method", [](const PyCurve& c) { return c.method; }, "the method or function that made the curve")
         .def(
             "breakpoints", [](const PyCurve& c) { return from_vector(c.curve->breakpoints()); }, "parameters where the curve's pieces join")
         .def("evaluate", &PyCurve::evaluate, py::arg("t"), py::arg("derivatives") = 0,

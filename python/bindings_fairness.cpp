@@ -75,7 +75,13 @@ void bind_fairness(py::module_& m) {
         ">>> d['type'], d['pseudo_energy'] > cagd.pseudo_energy(0.3, 0.7)['pseudo_energy']\n"
         "('s', True)\n");
 
-    py::class_<cagd::fairness::PseudoEnergyTable>(m, "PseudoEnergyTable", "The table of J(θ0, θ1) and its minimisers (pseudo_energy section 4.1), with the paper's lookup.")
+    py::class_<cagd::fairness::PseudoEnergyTable>(m, "PseudoEnergyTable", "The table of J(θ0, θ1) and its minimisers (pseudo_energy section 4.1), with the paper's lookup.\n\n"
+                                                  ">>> import cagd\n"
+                                                  ">>> t = cagd.PseudoEnergyTable.build(n=12, threads=1)  # 30° nodes\n"
+                                                  ">>> t.nodes.shape, t.node(2, 3)[\"type\"]\n"
+                                                  "((12,), 's')\n"
+                                                  ">>> round(t.lookup(0.3, -0.5)[\"pseudo_energy\"], 6), round(cagd.pseudo_energy(0.3, -0.5)[\"pseudo_energy\"], 6)\n"
+                                                  "(1.147886, 0.778877)\n")
         .def_static(
             "build",
             [](int n, const std::string& placement, const std::string& method, int threads) {
@@ -84,22 +90,27 @@ void bind_fairness(py::module_& m) {
             },
             py::arg("n") = 36, py::arg("placement") = "periodic", py::arg("method") = "fast", py::arg("threads") = 2)
         .def_static("load", &cagd::fairness::PseudoEnergyTable::load, py::arg("path"))
-        .def("save", py::overload_cast<const std::string&>(&cagd::fairness::PseudoEnergyTable::save, py::const_), py::arg("path"))
-        .def_property_readonly("nodes", [](const cagd::fairness::PseudoEnergyTable& t) { return from_vector(t.nodes()); })
+        .def("save", py::overload_cast<const std::string&>(&cagd::fairness::PseudoEnergyTable::save, py::const_), py::arg("path"),
+             "Writes the table (with its checksum line) to path, atomically: OSError naming the path when a write fails, the old file kept; "
+             "ValueError for a directory or a loop of links.")
+        .def_property_readonly("nodes", [](const cagd::fairness::PseudoEnergyTable& t) { return from_vector(t.nodes()); }, "the node angles in [−π, π), radians")
         .def("node",
              [](const cagd::fairness::PseudoEnergyTable& t, int i, int j) {
                  const int n = static_cast<int>(t.nodes().size());
                  if (i < 0 || i >= n || j < 0 || j >= n)
                      throw cagd::InvalidInput("node (" + std::to_string(i) + ", " + std::to_string(j) + "): indices in [0, " + std::to_string(n - 1) + "]");
                  return minimum_dict(t.node(i, j));
-             })
+             },
+             py::arg("i"), py::arg("j"), "The minimum at node (nodes[i], nodes[j]): J, r0, r1, length, area, type, local minima and the runner-up (a dict).")
         .def(
             "lookup",
             [](const cagd::fairness::PseudoEnergyTable& t, double theta0, double theta1, bool same_type_only) {
                 const cagd::fairness::TableValue v = t.lookup(theta0, theta1, same_type_only);
                 return segment_dict(v.pseudo_energy, v.r0, v.r1, v.length, v.area, v.type);
             },
-            py::arg("theta0"), py::arg("theta1"), py::arg("same_type_only") = true);
+            py::arg("theta0"), py::arg("theta1"), py::arg("same_type_only") = true,
+            "The paper's lookup at (θ0, θ1) (radians): bilinear over the cell's corners of the nearest node's type (section 4.1), or over every "
+            "defined corner with same_type_only=False; J, r0, r1, length, area and the type used (a dict).");
 
     m.def(
         "log_aesthetic_curve",
@@ -116,7 +127,12 @@ void bind_fairness(py::module_& m) {
                                py::make_tuple(alpha, c0, c1, length, turn, start_angle, py::make_tuple(start.first, start.second)));
         },
         py::arg("alpha"), py::arg("c0") = 1.0, py::arg("c1") = 1.0, py::arg("length") = 1.0, py::arg("turn") = 1, py::arg("start_angle") = 0.0,
-        py::arg("start") = std::pair<double, double>{0.0, 0.0}, "The planar log-aesthetic curve ρ^α = c0 s + c1 (typical_curves eq 1–4), parameter s = arc length.");
+        py::arg("start") = std::pair<double, double>{0.0, 0.0}, "The planar log-aesthetic curve ρ^α = c0 s + c1 (typical_curves eq 1–4), parameter s = arc length ∈ [0, length], starting at `start` in "
+        "direction `start_angle` (radians), turning left (turn = 1) or right (turn = −1).\n\n"
+        ">>> import cagd\n"
+        ">>> c = cagd.log_aesthetic_curve(1.5)  # ρ^1.5 = s + 1\n"
+        ">>> round(c.curvature(0.0), 6), round(c.curvature(1.0), 6)  # κ = (s + 1)^(−1/1.5)\n"
+        "(1.0, 0.629961)\n");
 }
 
 }  // namespace cagd_python

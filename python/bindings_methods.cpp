@@ -71,19 +71,25 @@ Interpolation interpolate_result(const Array& points, const std::string& method,
 }  // namespace
 
 void bind_methods(py::module_& m) {
-    py::class_<Interpolation>(m, "Interpolation", "The whole result of an interpolation: status, message, the curve when ok, and what the method reported.")
-        .def_readonly("status", &Interpolation::status)
-        .def_readonly("message", &Interpolation::message)
-        .def_readonly("curve", &Interpolation::curve)
-        .def_property_readonly("ok", [](const Interpolation& r) { return r.curve.has_value(); })
-        .def_property_readonly("report", [](const Interpolation& r) { return r.report; })
+    py::class_<Interpolation>(m, "Interpolation", "The whole result of an interpolation: status, message, the curve when ok, and what the method reported (interpolate_result).\n\n"
+                                      ">>> import numpy as np, cagd\n"
+                                      ">>> r = cagd.interpolate_result(np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 0.0], [3.0, 1.0]]), \"curvature-profile\")\n"
+                                      ">>> r.ok, r.status, r.dtau_du  # arc length is the curve's own parameter\n"
+                                      "(True, 'ok', array([1., 1., 1.]))\n")
+        .def_readonly("status", &Interpolation::status, "\"ok\", or the numerical outcome: \"no_solution\", \"no_convergence\"")
+        .def_readonly("message", &Interpolation::message, "why there is no curve (empty when ok)")
+        .def_readonly("curve", &Interpolation::curve, "the Curve when ok, else None")
+        .def_property_readonly("ok", [](const Interpolation& r) { return r.curve.has_value(); }, "whether there is a curve")
+        .def_property_readonly("report", [](const Interpolation& r) { return r.report; }, "what the method reports, as (quantity, text) pairs (the Newton history)")
         .def_property_readonly("quantities",
                                [](const Interpolation& r) {
                                    py::dict d;
                                    for (const auto& [k, v] : r.quantities) d[py::str(k)] = v;
                                    return d;
-                               })
-        .def_property_readonly("dtau_du", [](const Interpolation& r) { return from_vector(r.dtau_du); });
+                               },
+                               "quantities the method computes along the way, by name (the pseudo-spline's table length and area)")
+        .def_property_readonly(
+            "dtau_du", [](const Interpolation& r) { return from_vector(r.dtau_du); }, "per span, dτ/du: the method's parameter τ against the span index u");
 
     m.def("_interpolate_result", &interpolate_result, py::arg("points"), py::arg("method"), py::arg("closed") = false);
 

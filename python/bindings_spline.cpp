@@ -4,11 +4,16 @@
 namespace cagd_python {
 
 void bind_spline(py::module_& m) {
-    py::class_<cagd::spline::ExplicitSpline>(m, "ExplicitSpline", "y(x): a piecewise cubic through values and slopes at abscissae (one column per value).")
-        .def_property_readonly("x", [](const cagd::spline::ExplicitSpline& s) { return from_vector(s.x); })
-        .def_property_readonly("values", [](const cagd::spline::ExplicitSpline& s) { return from_matrix(s.values); })
-        .def_property_readonly("slopes", [](const cagd::spline::ExplicitSpline& s) { return from_matrix(s.slopes); })
-        .def("bending_energy", &cagd::spline::ExplicitSpline::bending_energy)
+    py::class_<cagd::spline::ExplicitSpline>(m, "ExplicitSpline", "y(x): a piecewise cubic through values and slopes at abscissae (one column per value).\n\n"
+                                                   ">>> import numpy as np, cagd\n"
+                                                   ">>> x = np.arange(4.0)\n"
+                                                   ">>> s, _ = cagd.elastic_line(x, x ** 2, 0.0)  # λ = 0: the natural spline through the values\n"
+                                                   ">>> s.evaluate(1.5), s.evaluate(1.5, 1), s.values.shape\n"
+                                                   "(array([2.2]), array([3.]), (4, 1))\n")
+        .def_property_readonly("x", [](const cagd::spline::ExplicitSpline& s) { return from_vector(s.x); }, "the abscissae, shape (n,)")
+        .def_property_readonly("values", [](const cagd::spline::ExplicitSpline& s) { return from_matrix(s.values); }, "y at the abscissae, shape (n, columns)")
+        .def_property_readonly("slopes", [](const cagd::spline::ExplicitSpline& s) { return from_matrix(s.slopes); }, "y' at the abscissae, shape (n, columns)")
+        .def("bending_energy", &cagd::spline::ExplicitSpline::bending_energy, "∫ y''² dx over the abscissae, summed over the columns")
         .def(
             "evaluate",
             [](const cagd::spline::ExplicitSpline& s, const py::object& at, int k) -> py::array {

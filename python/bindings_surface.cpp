@@ -88,8 +88,9 @@ Eigen::MatrixXd lambda_grid(const py::object& lam) {
 
 void bind_surface(py::module_& m) {
     py::class_<cagd::surface::HosakaPatch>(m, "TensorPatch",
-                                           "Hosaka's tensor patch (hosaka eq 27) over (u, v) ∈ [0, 1]²: it interpolates every corner derivative S_kl^(i,j), i, j ≤ m.")
-        .def_property_readonly("m", &cagd::surface::HosakaPatch::m)
+                                           "Hosaka's tensor patch (hosaka eq 27) over (u, v) ∈ [0, 1]²: it interpolates every corner derivative S_kl^(i,j), i, j ≤ m. "
+                                           "Made by tensor_patch (its example).")
+        .def_property_readonly("m", &cagd::surface::HosakaPatch::m, "the order m: corner derivatives up to (m, m), degree 2m + 1")
         .def(
             "evaluate",
             [](const cagd::surface::HosakaPatch& p, const py::object& u, const py::object& v, int a, int b) {
@@ -114,8 +115,8 @@ void bind_surface(py::module_& m) {
         "(3, 3)\n");
 
     py::class_<cagd::surface::EdgeFormPatch>(m, "EdgePatch",
-                                             "A patch through four edge curves (hosaka eq 28): Coons' surface when it has no corner correction S0.")
-        .def_property_readonly("m", &cagd::surface::EdgeFormPatch::m)
+                                             "A patch through four edge curves (hosaka eq 28): Coons' surface when it has no corner correction S0. Made by coons_patch (its example).")
+        .def_property_readonly("m", &cagd::surface::EdgeFormPatch::m, "the order m of the blending f = q_0(m, ·)")
         .def(
             "evaluate",
             [](const cagd::surface::EdgeFormPatch& p, const py::object& u, const py::object& v, int a, int b) {
@@ -145,8 +146,9 @@ void bind_surface(py::module_& m) {
         "True\n");
 
     py::class_<cagd::surface::CartesianSurface>(m, "CartesianSurface",
-                                                "ζ(x, y) over a rectangular grid (hosaka eq 30): Hosaka's patch of order m on every cell, C^m across grid lines.")
-        .def_property_readonly("m", &cagd::surface::CartesianSurface::m)
+                                                "ζ(x, y) over a rectangular grid (hosaka eq 30): Hosaka's patch of order m on every cell, C^m across grid lines. "
+                                                "Made by cartesian_surface, elastic_net_surface and plate_smoothing (their examples).")
+        .def_property_readonly("m", &cagd::surface::CartesianSurface::m, "the order m of every cell's patch")
         .def_property_readonly("x", [](const cagd::surface::CartesianSurface& s) { return from_vector(s.x()); }, "the grid's x lines")
         .def_property_readonly("y", [](const cagd::surface::CartesianSurface& s) { return from_vector(s.y()); }, "the grid's y lines")
         .def(

@@ -73,6 +73,9 @@ PYBIND11_MODULE(_cagd, m) {
     m.doc() = "cagd-repro: interpolating curves from five Japanese CAGD papers (compiled part; see cagd.__doc__)";
     m.attr("__version__") = CAGD_VERSION;  // the CMake project's version
     static py::exception<NoSolution> no_solution(m, "NoSolution", PyExc_RuntimeError);
+    no_solution.attr("__doc__") =
+        "A numerical outcome for valid input: no solution exists, or the solver did not converge (a RuntimeError). "
+        "interpolate_result returns the same outcome as a status instead of raising.";
     py::register_exception_translator([](std::exception_ptr p) {
         try {
             if (p) std::rethrow_exception(p);

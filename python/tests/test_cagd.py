@@ -546,3 +546,23 @@ def test_surfaces_equal_cpp(cpp):
         cagd.plate_smoothing(gx, gy, z, 0.05, energy="stiff")
     with pytest.raises(TypeError, match="^u: expected real numbers"):
         coons.evaluate("a", 0.5)
+
+
+def test_every_public_function_and_class_has_an_example_and_every_member_a_docstring():
+    missing_example, missing_doc = [], []
+    for name in cagd.__all__:
+        obj = getattr(cagd, name)
+        if name in ("__version__", "NoSolution"):
+            assert (obj.__doc__ or "") != "", name
+            continue
+        if ">>>" not in (obj.__doc__ or "") and not (isinstance(obj, type) and "(its example)" in obj.__doc__ or "(their examples)" in (obj.__doc__ or "")):
+            missing_example.append(name)
+        if isinstance(obj, type):
+            for attr, member in vars(obj).items():
+                doc = (getattr(member, "__doc__", None) or "").strip()
+                if doc.startswith(attr + "("):  # pybind11 puts the signature first: the text follows it
+                    doc = doc.split("\n", 1)[1].strip() if "\n" in doc else ""
+                if not attr.startswith("_") and len(doc) < 10:
+                    missing_doc.append(f"{name}.{attr}")
+    assert not missing_example, f"no example in the docstring of {missing_example}"
+    assert not missing_doc, f"no docstring: {missing_doc}"
