@@ -5,6 +5,7 @@
 
 #include "cagd/smoothing/elastic_net.hpp"
 #include "cagd/smoothing/plate_smoothing.hpp"
+#include "cagd/surface/boundary_surface.hpp"
 #include "cagd/surface/hosaka_patch.hpp"
 
 namespace cagd_python {
@@ -77,6 +78,17 @@ cagd::smoothing::PlateEnergy plate_energy_named(const std::string& name) {
     throw cagd::InvalidInput("energy = '" + name + "'; allowed poisson | no_poisson | no_twist | mean_curvature");
 }
 
+// A boundary line through points (n, 3) with constant cross-boundary derivatives (j = 1..m).
+cagd::surface::BoundaryCurve boundary_from(const py::object& points, const py::object& cross, const char* name, const char* cross_name) {
+    const Array c = real_array(cross, cross_name);
+    std::vector<double> values;
+    if (c.ndim() == 0)
+        values.push_back(c.data()[0]);
+    else
+        values = to_vector(c, cross_name);
+    return cagd::surface::boundary_through_points(to_matrix(real_array(points, name), name), values);
+}
+
 // λ for the smoothings: one number, or one per node (nx, ny).
 Eigen::MatrixXd lambda_grid(const py::object& lam) {
     const Array a = real_array(lam, "lam");
@@ -143,6 +155,63 @@ void bind_surface(py::module_& m) {
         ">>> p = cagd.coons_patch(np.column_stack([s, 0 * s, 0 * s]), np.column_stack([0 * s, s, s * s]),\n"
         "...                      np.column_stack([s, 1 + 0 * s, 1 + 0 * s]), np.column_stack([1 + 0 * s, s, s * s]))\n"
         ">>> bool(np.allclose(p.evaluate(s, 1.0), np.column_stack([s, 1 + 0 * s, 1 + 0 * s])))\n"
+        "True\n");
+
+    py::class_<cagd::surface::BoundaryConformingSurface>(
+        m, "BoundaryConformingSurface",
+        "ζ(x, y) between a lower and an upper boundary line (hosaka eq 31–38): every section x = const is a Hermite curve meeting both boundaries "
+        "with the prescribed cross-boundary derivatives. Made by boundary_surface (its example).")
+        .def_property_readonly("m", &cagd::surface::BoundaryConformingSurface::m, "the order m of the sections' Hermite curves")
+        .def_property_readonly(
+            "x_range", [](const cagd::surface::BoundaryConformingSurface& s) { return py::make_tuple(s.x_min(), s.x_max()); }, "(x_min, x_max) of the boundaries")
+        .def(
+            "y_range",
+            [](const cagd::surface::BoundaryConformingSurface& s, double x) { return py::make_tuple(s.y_lower(x), s.y_upper(x)); }, py::arg("x"),
+            "(y_0(x), y_1(x)): the lower and upper boundary at x")
+        .def(
+            "evaluate",
+            [](const cagd::surface::BoundaryConformingSurface& s, const py::object& x, const py::object& y, int a, int b) {
+                require_order(a, b);
+                return broadcast_surface(x, y, "x", "y", 0, [&](double p, double q) { return Eigen::VectorXd::Constant(1, s.derivative(p, q, a, b)); });
+            },
+            py::arg("x"), py::arg("y"), py::arg("a") = 0, py::arg("b") = 0,
+            "ζ^(a,b)(x, y) (eq 38); x and y broadcast. ValueError for a point outside the strip between the boundaries.")
+        .def(
+            "join",
+            [](const cagd::surface::BoundaryConformingSurface& s, double x0, const py::object& far, const py::object& cross) {
+                return cagd::surface::SectionJoinedSurface(s, x0, boundary_from(far, cross, "far", "cross"));
+            },
+            py::arg("x0"), py::arg("far"), py::arg("cross") = 0.0,
+            "The surface joined across the section x = x0 (hosaka eq 41–43) out to a far boundary x = x3(y), z = z3(y): far holds rows (y, x3, z3) over "
+            "the section's y range, cross the x-derivatives ζ^(i,0) along it (i = 1..m, constants). It shares ζ^(i,n), i ≤ m, with this surface on x = x0.");
+    py::class_<cagd::surface::SectionJoinedSurface>(m, "JoinedSurface", "The surface beyond a section (hosaka eq 41–43). Made by BoundaryConformingSurface.join (its example).")
+        .def_property_readonly("x0", &cagd::surface::SectionJoinedSurface::x0, "the section's x")
+        .def_property_readonly(
+            "y_range", [](const cagd::surface::SectionJoinedSurface& s) { return py::make_tuple(s.y_min(), s.y_max()); }, "(y_min, y_max) of the section")
+        .def(
+            "evaluate",
+            [](const cagd::surface::SectionJoinedSurface& s, const py::object& x, const py::object& y, int a, int b) {
+                require_order(a, b);
+                return broadcast_surface(x, y, "x", "y", 0, [&](double p, double q) { return Eigen::VectorXd::Constant(1, s.derivative(p, q, a, b)); });
+            },
+            py::arg("x"), py::arg("y"), py::arg("a") = 0, py::arg("b") = 0, "ζ^(a,b)(x, y) between the section and the far boundary; x and y broadcast.");
+    m.def(
+        "boundary_surface",
+        [](const py::object& lower, const py::object& upper, const py::object& lower_cross, const py::object& upper_cross, int order) {
+            if (order < 0 || order > 30) throw cagd::InvalidInput("m = " + std::to_string(order) + "; allowed 0..30");
+            cagd::surface::BoundaryCurve lo = boundary_from(lower, lower_cross, "lower", "lower_cross"), up = boundary_from(upper, upper_cross, "upper", "upper_cross");
+            return cagd::surface::BoundaryConformingSurface(order, std::move(lo), std::move(up));
+        },
+        py::arg("lower"), py::arg("upper"), py::arg("lower_cross") = 0.0, py::arg("upper_cross") = 0.0, py::arg("m") = 1,
+        "Hosaka's boundary-conforming surface (hosaka eq 31–38) between two boundary lines through points (n, 3), x strictly increasing over the same "
+        "x range: y_k(x), z_k(x) the explicit splines of eq (21)–(23), the cross-boundary derivatives ζ^(0,j), j = 1..m, constants (one number or m).\n\n"
+        ">>> import numpy as np, cagd\n"
+        ">>> x = np.linspace(0.0, 2.0, 5)\n"
+        ">>> s = cagd.boundary_surface(np.column_stack([x, 0 * x, 0 * x]), np.column_stack([x, 1 + x, 0 * x + 1]))\n"
+        ">>> float(s.evaluate(1.0, 2.0)), s.y_range(1.0)  # on the upper boundary\n"
+        "(1.0, (0.0, 2.0))\n"
+        ">>> j = s.join(2.0, np.column_stack([np.linspace(0.0, 3.0, 4), 3.0 + 0 * np.linspace(0.0, 3.0, 4), np.linspace(0.0, 1.0, 4)]))\n"
+        ">>> round(float(j.evaluate(2.0, 1.5)), 12) == round(float(s.evaluate(2.0, 1.5)), 12)  # they meet on the section\n"
         "True\n");
 
     py::class_<cagd::surface::CartesianSurface>(m, "CartesianSurface",

@@ -25,6 +25,7 @@ The rest of the library::
     typical_curve, space_typical_curve            typical Bézier curves (typical_curves)
     elastic_line, smooth_curve, elastic_space_curve   Hosaka's smoothing (section 6)
     tensor_patch, coons_patch, cartesian_surface      Hosaka's surfaces (eq 27, 28, 30)
+    boundary_surface, BoundaryConformingSurface.join  synthesis between boundaries, joining (eq 31-43)
     elastic_net_surface, plate_smoothing              Hosaka's surface smoothing (eq 53-58)
 
 Errors: a wrong type raises ``TypeError`` naming the argument (complex points, a string for
@@ -59,10 +60,13 @@ import numpy.typing as _npt
 
 from ._cagd import (  # noqa: F401  (re-exported)
     __version__,
+    BoundaryConformingSurface,
     CartesianSurface,
     Curve,
     EdgePatch,
+    JoinedSurface,
     TensorPatch,
+    boundary_surface,
     cartesian_surface,
     coons_patch,
     elastic_net_surface,
@@ -93,6 +97,7 @@ __all__ = [
     "typical_curve", "space_typical_curve",
     "elastic_line", "smooth_curve", "elastic_space_curve",
     "TensorPatch", "EdgePatch", "CartesianSurface", "tensor_patch", "coons_patch", "cartesian_surface",
+    "BoundaryConformingSurface", "JoinedSurface", "boundary_surface",
     "elastic_net_surface", "plate_smoothing",
 ]
 

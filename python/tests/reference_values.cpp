@@ -24,6 +24,7 @@
 #include "cagd/smoothing/elastic_net.hpp"
 #include "cagd/smoothing/plate_smoothing.hpp"
 #include "cagd/spline/bezier.hpp"
+#include "cagd/surface/boundary_surface.hpp"
 #include "cagd/surface/hosaka_patch.hpp"
 
 namespace {
@@ -129,6 +130,27 @@ int main(int argc, char** argv) {
                     for (int j = 0; j <= 1; ++j)
                         for (int d = 0; d < 3; ++d) corners.at(k, l, i, j)[d] = std::sin(1.0 + k + 2 * l + 3 * i + 5 * j + 7 * d);
         const cagd::surface::HosakaPatch tensor(corners);
+        // Boundary-conforming synthesis (m = 2) and the surface joined beyond x0 = 2.
+        cagd::PointList lower(5, 3), upper(5, 3), far(4, 3);
+        for (int k = 0; k < 5; ++k) {
+            const double x = 0.5 * k;
+            lower.row(k) << x, 0.2 * std::sin(x), 0.1 * x * x;
+            upper.row(k) << x, 1.5 + 0.3 * x, 1.0 - 0.2 * x;
+        }
+        const cagd::surface::BoundaryConformingSurface strip(2, cagd::surface::boundary_through_points(lower, {0.3, -0.1}),
+                                                             cagd::surface::boundary_through_points(upper, {-0.2, 0.05}));
+        const double y0 = strip.y_lower(2.0), y1 = strip.y_upper(2.0);
+        for (int k = 0; k < 4; ++k) far.row(k) << y0 + (y1 - y0) * k / 3.0, 3.0 + 0.1 * k, 0.5 - 0.1 * k;
+        const cagd::surface::SectionJoinedSurface joined(strip, 2.0, cagd::surface::boundary_through_points(far, {0.2, 0.0}));
+        const double strip_at[][2] = {{0.3, 0.5}, {1.0, 1.2}, {1.7, 0.9}, {2.0, 1.4}};
+        const double joined_at[][2] = {{2.0, 0.5}, {2.4, 1.0}, {2.9, 1.6}};
+        for (int k = 0; k < 4; ++k)
+            for (int a = 0; a <= 1; ++a)
+                for (int b = 0; b <= 1; ++b) put("surface.strip." + std::to_string(k) + "." + std::to_string(a) + std::to_string(b), strip.derivative(strip_at[k][0], strip_at[k][1], a, b));
+        for (int k = 0; k < 3; ++k)
+            for (int a = 0; a <= 1; ++a)
+                for (int b = 0; b <= 1; ++b)
+                    put("surface.joined." + std::to_string(k) + "." + std::to_string(a) + std::to_string(b), joined.derivative(joined_at[k][0], joined_at[k][1], a, b));
         const double uv[][2] = {{0.0, 0.0}, {0.3, 0.8}, {0.5, 0.5}, {1.0, 0.25}};
         for (int k = 0; k < 4; ++k)
             for (int a = 0; a <= 1; ++a)

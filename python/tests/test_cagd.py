@@ -536,6 +536,21 @@ def test_surfaces_equal_cpp(cpp):
                 for k in range(4):
                     for d in range(3):
                         assert close(values[k, d], cpp[f"surface.{name}.{k}.{a}{b}.{d}"]), (name, k, a, b, d)
+    # Boundary-conforming synthesis (m = 2) and joining beyond x0 = 2.
+    x = 0.5 * np.arange(5)
+    lower = np.column_stack([x, 0.2 * np.sin(x), 0.1 * x * x])
+    upper = np.column_stack([x, 1.5 + 0.3 * x, 1.0 - 0.2 * x])
+    strip = cagd.boundary_surface(lower, upper, [0.3, -0.1], [-0.2, 0.05], m=2)
+    y0, y1 = strip.y_range(2.0)
+    far = np.column_stack([y0 + (y1 - y0) * np.arange(4) / 3.0, 3.0 + 0.1 * np.arange(4), 0.5 - 0.1 * np.arange(4)])
+    joined = strip.join(2.0, far, [0.2, 0.0])
+    for name, s, at in (("strip", strip, [(0.3, 0.5), (1.0, 1.2), (1.7, 0.9), (2.0, 1.4)]), ("joined", joined, [(2.0, 0.5), (2.4, 1.0), (2.9, 1.6)])):
+        at = np.array(at)
+        for a in (0, 1):
+            for b in (0, 1):
+                values = s.evaluate(at[:, 0], at[:, 1], a=a, b=b)
+                for k in range(len(at)):
+                    assert close(values[k], cpp[f"surface.{name}.{k}.{a}{b}"]), (name, k, a, b)
     # Grids broadcast as numpy does: a (3, 1) column against a (4,) row gives (3, 4) points.
     grid = coons.evaluate(np.linspace(0, 1, 3)[:, None], np.linspace(0, 1, 4))
     assert grid.shape == (3, 4, 3) and np.allclose(grid[:, 0], coons.evaluate(np.linspace(0, 1, 3), 0.0))
