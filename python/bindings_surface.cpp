@@ -53,6 +53,13 @@ py::array broadcast_surface(const py::object& u_in, const py::object& v_in, cons
     return out;
 }
 
+// ζ^(a,b)(x, y) of a scalar surface (Cartesian, boundary-conforming, joined) over broadcast x and y.
+template <class Surface>
+py::array evaluate_scalar(const Surface& s, const py::object& x, const py::object& y, int a, int b) {
+    require_order(a, b);
+    return broadcast_surface(x, y, "x", "y", 0, [&](double p, double q) { return Eigen::VectorXd::Constant(1, s.derivative(p, q, a, b)); });
+}
+
 // Corner derivatives from an array of shape (2, 2, m + 1, m + 1, dim): [k, l, i, j] = S_kl^(i,j).
 cagd::surface::CornerDerivatives corners_from(const py::object& data) {
     const Array a = real_array(data, "corners");
@@ -168,12 +175,7 @@ void bind_surface(py::module_& m) {
             "y_range",
             [](const cagd::surface::BoundaryConformingSurface& s, double x) { return py::make_tuple(s.y_lower(x), s.y_upper(x)); }, py::arg("x"),
             "(y_0(x), y_1(x)): the lower and upper boundary at x")
-        .def(
-            "evaluate",
-            [](const cagd::surface::BoundaryConformingSurface& s, const py::object& x, const py::object& y, int a, int b) {
-                require_order(a, b);
-                return broadcast_surface(x, y, "x", "y", 0, [&](double p, double q) { return Eigen::VectorXd::Constant(1, s.derivative(p, q, a, b)); });
-            },
+        .def("evaluate", &evaluate_scalar<cagd::surface::BoundaryConformingSurface>,
             py::arg("x"), py::arg("y"), py::arg("a") = 0, py::arg("b") = 0,
             "ζ^(a,b)(x, y) (eq 38); x and y broadcast. ValueError for a point outside the strip between the boundaries.")
         .def(
@@ -188,12 +190,7 @@ void bind_surface(py::module_& m) {
         .def_property_readonly("x0", &cagd::surface::SectionJoinedSurface::x0, "the section's x")
         .def_property_readonly(
             "y_range", [](const cagd::surface::SectionJoinedSurface& s) { return py::make_tuple(s.y_min(), s.y_max()); }, "(y_min, y_max) of the section")
-        .def(
-            "evaluate",
-            [](const cagd::surface::SectionJoinedSurface& s, const py::object& x, const py::object& y, int a, int b) {
-                require_order(a, b);
-                return broadcast_surface(x, y, "x", "y", 0, [&](double p, double q) { return Eigen::VectorXd::Constant(1, s.derivative(p, q, a, b)); });
-            },
+        .def("evaluate", &evaluate_scalar<cagd::surface::SectionJoinedSurface>,
             py::arg("x"), py::arg("y"), py::arg("a") = 0, py::arg("b") = 0, "ζ^(a,b)(x, y) between the section and the far boundary; x and y broadcast.");
     m.def(
         "boundary_surface",
@@ -220,12 +217,7 @@ void bind_surface(py::module_& m) {
         .def_property_readonly("m", &cagd::surface::CartesianSurface::m, "the order m of every cell's patch")
         .def_property_readonly("x", [](const cagd::surface::CartesianSurface& s) { return from_vector(s.x()); }, "the grid's x lines")
         .def_property_readonly("y", [](const cagd::surface::CartesianSurface& s) { return from_vector(s.y()); }, "the grid's y lines")
-        .def(
-            "evaluate",
-            [](const cagd::surface::CartesianSurface& s, const py::object& x, const py::object& y, int a, int b) {
-                require_order(a, b);
-                return broadcast_surface(x, y, "x", "y", 0, [&](double p, double q) { return Eigen::VectorXd::Constant(1, s.derivative(p, q, a, b)); });
-            },
+        .def("evaluate", &evaluate_scalar<cagd::surface::CartesianSurface>,
             py::arg("x"), py::arg("y"), py::arg("a") = 0, py::arg("b") = 0,
             "ζ^(a,b)(x, y) = ∂^(a+b) ζ / ∂x^a ∂y^b; x and y broadcast, result of their broadcast shape (a float array). ValueError outside the grid.")
         .def(
