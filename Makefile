@@ -52,7 +52,7 @@ bench:
 	@cmake --build $(BUILD) -j$(JOBS) --target cagd_bench
 	@mkdir -p results/timing
 	@$(BUILD)/bench/cagd_bench --benchmark_out=results/timing/bench.json --benchmark_out_format=json
-	@python3 scripts/bench-targets.py $(BUILD)
+	@/usr/bin/python3 scripts/bench-targets.py $(BUILD)  # the interpreter the module is built for, with Debian's scipy
 
 # The Python module alone: then PYTHONPATH=$(BUILD)/python /usr/bin/python3 -c 'import cagd'
 python:
