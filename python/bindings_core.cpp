@@ -1,6 +1,8 @@
 // core/: the Curve class (cagd::Curve): evaluation, curvature, torsion, measures.
 #include "bindings.hpp"
 
+#include "cagd/analysis/arc_length_parameter.hpp"
+
 namespace cagd_python {
 
 void bind_core(py::module_& m) {
@@ -69,6 +71,22 @@ void bind_core(py::module_& m) {
             py::arg("t"), py::arg("nu") = 0,
             "The nu-th derivative at t, as scipy's splines: shape t.shape + (dim,). c(t) is c.evaluate(t); c(t, 1) the first derivative.")
         .def_property_readonly("closed", [](const PyCurve& c) { return c.closed; }, "whether the curve interpolates closed data")
+        .def(
+            "at_arc_length",
+            [](const PyCurve& c, const py::object& s) {
+                const cagd::analysis::ArcLengthParameter inverse(c.curve);
+                return c.map_parameters(s, [&](double x) { return inverse.parameter_at(x); });
+            },
+            py::arg("s"),
+            "The parameter t at arc length s from the start, 0 ≤ s ≤ arc_length() (a float for a number, an array of s's shape otherwise): "
+            "Newton on the arc-length integral, to about 1e-12 of the length. c(c.at_arc_length(s)) samples the curve at equal arc length.\n\n"
+            ">>> import numpy as np, cagd\n"
+            ">>> c = cagd.interpolate(np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 0.0], [3.0, 1.0]]), \"cubic-b\")\n"
+            ">>> s = c.arc_length()\n"
+            ">>> c.at_arc_length(0.0), round(c.at_arc_length(s), 9) == round(c.parameter_range[1], 9)\n"
+            "(0.0, True)\n"
+            ">>> c(c.at_arc_length(np.linspace(0.0, s, 9))).shape  # 9 points at equal arc length\n"
+            "(9, 2)\n")
         .def(
             "span_parameter",
             [](const PyCurve& c, const py::object& t) {

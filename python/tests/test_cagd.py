@@ -581,3 +581,14 @@ def test_every_public_function_and_class_has_an_example_and_every_member_a_docst
                     missing_doc.append(f"{name}.{attr}")
     assert not missing_example, f"no example in the docstring of {missing_example}"
     assert not missing_doc, f"no docstring: {missing_doc}"
+
+
+def test_at_arc_length_inverts_the_arc_length():
+    lac = cagd.normalized_log_aesthetic_curve(-0.5, 1.0)  # its parameter is arc length
+    s = np.linspace(0.0, 1.0, 7)
+    assert np.allclose(lac.at_arc_length(s), s, atol=1e-12)
+    c = cagd.interpolate(table1(), "hosaka")
+    t = c.at_arc_length(np.array([[0.25], [0.5]]) * c.arc_length())
+    assert t.shape == (2, 1) and 0.0 < t[0, 0] < t[1, 0] < c.parameter_range[1]
+    with pytest.raises(ValueError, match="the curve's length"):
+        c.at_arc_length(2 * c.arc_length())
