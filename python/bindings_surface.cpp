@@ -4,7 +4,9 @@
 #include "bindings.hpp"
 
 #include "cagd/smoothing/elastic_net.hpp"
+#include "cagd/smoothing/boundary_plate_smoothing.hpp"
 #include "cagd/smoothing/plate_smoothing.hpp"
+#include "cagd/smoothing/window_smoothing.hpp"
 #include "cagd/surface/boundary_surface.hpp"
 #include "cagd/surface/hosaka_patch.hpp"
 
@@ -252,6 +254,47 @@ void bind_surface(py::module_& m) {
         ">>> s = cagd.elastic_net_surface(x, y, np.add.outer(x, y), 0.0)\n"
         ">>> round(float(s.evaluate(2.0, 3.0)), 12)\n"
         "5.0\n");
+    py::class_<cagd::smoothing::BoundaryPlateSurface>(m, "BoundaryPlateSurface",
+                                                      "Hosaka's plate smoothing, method (ii): one surface of eq (31) between the grid's first and last y lines. "
+                                                      "Made by boundary_plate_smoothing (its example).")
+        .def_property_readonly("m", &cagd::smoothing::BoundaryPlateSurface::m, "the order m of the cross-boundary data")
+        .def("evaluate", &evaluate_scalar<cagd::smoothing::BoundaryPlateSurface>, py::arg("x"), py::arg("y"), py::arg("a") = 0, py::arg("b") = 0,
+             "ζ^(a,b)(x, y), a ≤ 2 (its data are cubic splines in x); x and y broadcast.");
+    m.def(
+        "boundary_plate_smoothing",
+        [](const py::object& x, const py::object& y, const py::object& a, const py::object& lam, const std::string& energy, int order, double poisson_ratio) {
+            const std::vector<double> xs = to_vector(real_array(x, "x"), "x"), ys = to_vector(real_array(y, "y"), "y");
+            const Eigen::MatrixXd values = to_matrix(real_array(a, "a"), "a"), lambda = lambda_grid(lam);
+            const cagd::smoothing::PlateEnergy e = plate_energy_named(energy);
+            if (order < 1 || order > 30) throw cagd::InvalidInput("m = " + std::to_string(order) + "; allowed 1..30");
+            py::gil_scoped_release release;
+            return cagd::smoothing::boundary_plate_smoothing(xs, ys, values, lambda, e, order, poisson_ratio).surface;
+        },
+        py::arg("x"), py::arg("y"), py::arg("a"), py::arg("lam"), py::arg("energy") = "poisson", py::arg("m") = 2, py::arg("poisson_ratio") = 0.3,
+        "Hosaka's plate smoothing, method (ii) (section 7 (ii), eq 31 with 55–59): the surface of eq (31) between the first and last y lines whose "
+        "cross-boundary derivatives (natural splines in x) minimise the plate energy plus Σ (ζ − a)² / λ. a (nx, ny), λ > 0 one number or (nx, ny).\n\n"
+        ">>> import numpy as np, cagd\n"
+        ">>> x = y = np.arange(5.0)\n"
+        ">>> s = cagd.boundary_plate_smoothing(x, y, np.add.outer(x, y), 1.0)  # a plane has no plate energy\n"
+        ">>> round(float(s.evaluate(1.5, 2.5)), 9)\n"
+        "4.0\n");
+    m.def(
+        "window_smoothing",
+        [](const py::object& x, const py::object& y, const py::object& a, double lam, const std::string& energy, double poisson_ratio) {
+            const std::vector<double> xs = to_vector(real_array(x, "x"), "x"), ys = to_vector(real_array(y, "y"), "y");
+            const Eigen::MatrixXd values = to_matrix(real_array(a, "a"), "a");
+            const cagd::smoothing::PlateEnergy e = plate_energy_named(energy);
+            py::gil_scoped_release release;
+            return cagd::smoothing::local_orthogonal_smoothing(xs, ys, values, lam, e, poisson_ratio);
+        },
+        py::arg("x"), py::arg("y"), py::arg("a"), py::arg("lam"), py::arg("energy") = "poisson", py::arg("poisson_ratio") = 0.3,
+        "Hosaka's approximation 1 (section 7 (iv), eq 60): a 5 × 5 window fit by discrete orthonormal polynomials at every node, its derivatives "
+        "into the Cartesian surface of eq (30). Equally spaced x (nx,) and y (ny,) with at least 5 lines each; a (nx, ny); one λ ≥ 0.\n\n"
+        ">>> import numpy as np, cagd\n"
+        ">>> x = y = np.arange(6.0)\n"
+        ">>> s = cagd.window_smoothing(x, y, np.add.outer(x, y), 0.5)  # a plane is kept\n"
+        ">>> round(float(s.evaluate(2.5, 1.5)), 9)\n"
+        "4.0\n");
     m.def(
         "plate_smoothing",
         [](const py::object& x, const py::object& y, const py::object& a, const py::object& lam, const std::string& energy, double poisson_ratio) {

@@ -25,8 +25,10 @@ The rest of the library::
     typical_curve, space_typical_curve            typical Bézier curves (typical_curves)
     elastic_line, smooth_curve, elastic_space_curve   Hosaka's smoothing (section 6)
     tensor_patch, coons_patch, cartesian_surface      Hosaka's surfaces (eq 27, 28, 30)
+    boundary_plate_smoothing,
     boundary_surface, BoundaryConformingSurface.join  synthesis between boundaries, joining (eq 31-43)
     elastic_net_surface, plate_smoothing              Hosaka's surface smoothing (eq 53-58)
+    boundary_plate_smoothing, window_smoothing        its methods (ii) and approximation 1 (eq 31, 59, 60)
 
 Errors: a wrong type raises ``TypeError`` naming the argument (complex points, a string for
 ``closed``); bad values raise ``ValueError`` with the library's message (naming the value and what
@@ -61,17 +63,20 @@ import numpy.typing as _npt
 from ._cagd import (  # noqa: F401  (re-exported)
     __version__,
     BoundaryConformingSurface,
+    BoundaryPlateSurface,
     CartesianSurface,
     Curve,
     EdgePatch,
     JoinedSurface,
     TensorPatch,
+    boundary_plate_smoothing,
     boundary_surface,
     cartesian_surface,
     coons_patch,
     elastic_net_surface,
     plate_smoothing,
     tensor_patch,
+    window_smoothing,
     ExplicitSpline,
     Interpolation,
     NoSolution,
@@ -98,6 +103,7 @@ __all__ = [
     "elastic_line", "smooth_curve", "elastic_space_curve",
     "TensorPatch", "EdgePatch", "CartesianSurface", "tensor_patch", "coons_patch", "cartesian_surface",
     "BoundaryConformingSurface", "JoinedSurface", "boundary_surface",
+    "BoundaryPlateSurface", "boundary_plate_smoothing", "window_smoothing",
     "elastic_net_surface", "plate_smoothing",
 ]
 

@@ -22,7 +22,9 @@
 #include "cagd/methods/method_registry.hpp"
 #include "cagd/smoothing/elastic_line.hpp"
 #include "cagd/smoothing/elastic_net.hpp"
+#include "cagd/smoothing/boundary_plate_smoothing.hpp"
 #include "cagd/smoothing/plate_smoothing.hpp"
+#include "cagd/smoothing/window_smoothing.hpp"
 #include "cagd/spline/bezier.hpp"
 #include "cagd/surface/boundary_surface.hpp"
 #include "cagd/surface/hosaka_patch.hpp"
@@ -108,6 +110,20 @@ int main(int argc, char** argv) {
         const cagd::surface::CartesianSurface cart = cagd::surface::cartesian_spline_surface(gx, gy, z);
         const cagd::surface::CartesianSurface net = cagd::smoothing::net_spline_smoothing(gx, gy, z, lam);
         const cagd::surface::CartesianSurface plate = cagd::smoothing::plate_smoothing(gx, gy, z, lam, cagd::smoothing::PlateEnergy::poisson).surface;
+        const cagd::smoothing::BoundaryPlateSurface boundary_plate =
+            cagd::smoothing::boundary_plate_smoothing(gx, gy, z, lam, cagd::smoothing::PlateEnergy::no_twist, 2).surface;
+        // Approximation 1 needs equally spaced lines, at least five each way.
+        const std::vector<double> ex{0.0, 0.5, 1.0, 1.5, 2.0, 2.5}, ey{0.0, 1.0, 2.0, 3.0, 4.0};
+        Eigen::MatrixXd ez(6, 5);
+        for (int a = 0; a < 6; ++a)
+            for (int b = 0; b < 5; ++b) ez(a, b) = std::cos(ex[static_cast<std::size_t>(a)]) + 0.05 * a * b * b;
+        const cagd::surface::CartesianSurface window = cagd::smoothing::local_orthogonal_smoothing(ex, ey, ez, 0.3, cagd::smoothing::PlateEnergy::poisson);
+        for (int k = 0; k < 3; ++k)
+            for (int a = 0; a <= 1; ++a)
+                for (int b = 0; b <= 1; ++b) {
+                    const double wx = 0.3 + 0.8 * k, wy = 0.7 + 1.1 * k;
+                    put("surface.window." + std::to_string(k) + "." + std::to_string(a) + std::to_string(b), window.derivative(wx, wy, a, b));
+                }
         const double at[][2] = {{0.0, 0.0}, {0.7, 1.1}, {2.5, 0.5}, {3.9, 1.95}, {4.2, 2.0}};
         for (int k = 0; k < 5; ++k)
             for (int a = 0; a <= 1; ++a)
@@ -116,6 +132,7 @@ int main(int argc, char** argv) {
                     put("surface.cartesian" + key, cart.derivative(at[k][0], at[k][1], a, b));
                     put("surface.net" + key, net.derivative(at[k][0], at[k][1], a, b));
                     put("surface.plate" + key, plate.derivative(at[k][0], at[k][1], a, b));
+                    put("surface.boundary_plate" + key, boundary_plate.derivative(at[k][0], at[k][1], a, b));
                 }
         cagd::PointList bottom(4, 3), left(3, 3), top(4, 3), right(3, 3);
         bottom << 0, 0, 0, 1, 0, 0.3, 2, 0, 0.1, 3, 0, 0;

@@ -512,7 +512,7 @@ def test_surfaces_equal_cpp(cpp):
     gx, gy = np.array([0.0, 1.0, 2.5, 3.0, 4.2]), np.array([0.0, 0.5, 1.5, 2.0])
     z = np.array([[math.sin(x) * math.cos(y) + 0.1 * a * b for b, y in enumerate(gy)] for a, x in enumerate(gx)])
     surfaces = {"cartesian": cagd.cartesian_surface(gx, gy, z), "net": cagd.elastic_net_surface(gx, gy, z, 0.05),
-                "plate": cagd.plate_smoothing(gx, gy, z, 0.05)}
+                "plate": cagd.plate_smoothing(gx, gy, z, 0.05), "boundary_plate": cagd.boundary_plate_smoothing(gx, gy, z, 0.05, energy="no_twist", m=2)}
     at = np.array([[0.0, 0.0], [0.7, 1.1], [2.5, 0.5], [3.9, 1.95], [4.2, 2.0]])
     for name, s in surfaces.items():
         for a in (0, 1):
@@ -536,6 +536,13 @@ def test_surfaces_equal_cpp(cpp):
                 for k in range(4):
                     for d in range(3):
                         assert close(values[k, d], cpp[f"surface.{name}.{k}.{a}{b}.{d}"]), (name, k, a, b, d)
+    ex, ey = 0.5 * np.arange(6), np.arange(5.0)
+    ez = np.array([[math.cos(x) + 0.05 * a * b * b for b in range(5)] for a, x in enumerate(ex)])
+    window = cagd.window_smoothing(ex, ey, ez, 0.3)
+    for k in range(3):
+        for a in (0, 1):
+            for b in (0, 1):
+                assert close(float(window.evaluate(0.3 + 0.8 * k, 0.7 + 1.1 * k, a=a, b=b)), cpp[f"surface.window.{k}.{a}{b}"]), ("window", k, a, b)
     # Boundary-conforming synthesis (m = 2) and joining beyond x0 = 2.
     x = 0.5 * np.arange(5)
     lower = np.column_stack([x, 0.2 * np.sin(x), 0.1 * x * x])
