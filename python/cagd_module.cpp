@@ -25,12 +25,19 @@ namespace {
 
 bool identifier_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
-// A library message in Python's terms. A qualified C++ name (`cagd::smoothing::elastic_line`,
-// `intrinsic::IntrinsicCurve::jet`) becomes its last component, `cagd::methods(s-spline)` the
+// A library message in Python's terms. A leading qualified function name is dropped; any other
+// qualified C++ name (`cagd::smoothing::elastic_line`, `intrinsic::IntrinsicCurve::jet`) becomes its last component, `cagd::methods(s-spline)` the
 // method's name; an option `--start-tangent` becomes the keyword argument `start_tangent`.
 std::string python_message(const std::string& m) {
     std::string out;
     std::size_t i = 0;
+    // A leading qualified C++ function name ("cagd::methods::find_configuration: …") says where in
+    // the library the check sits, nothing a Python caller can use: dropped with its ": ".
+    if (m.rfind("cagd::", 0) == 0) {
+        std::size_t end = 0;
+        while (end < m.size() && (identifier_char(m[end]) || m[end] == ':')) ++end;
+        if (m.compare(end > 0 ? end - 1 : 0, 2, ": ") == 0 && m.find("::") < end) i = end + 1;
+    }
     while (i < m.size()) {
         if (identifier_char(m[i]) && (i == 0 || !identifier_char(m[i - 1]))) {
             std::size_t end = i, last = i;

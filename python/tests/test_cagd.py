@@ -428,6 +428,13 @@ def test_messages_name_python_arguments_not_options_or_cpp_names():
         assert "::" not in str(e.value) and "--" not in str(e.value), str(e.value)
     with pytest.raises(ValueError, match="start_tangnt is not a parameter of s-spline .*start_tangent"):
         cagd.interpolate(p, "s-spline", start_tangnt=1.0)
+    # A leading C++ function name says nothing to a Python caller: the message starts with the matter.
+    with pytest.raises(ValueError, match="^unknown method 's-spline-m3'"):
+        cagd.compare(p, methods=["s-spline-m3"])
+    with pytest.raises(ValueError, match=r"^x must increase strictly"):
+        cagd.elastic_line([0.0, 0.0], [1.0, 2.0], 1.0)
+    with pytest.raises(ValueError, match=r"^t = 1000000000 outside \[0, "):
+        cagd.interpolate(p, "cubic-b").evaluate(1e9)
 
 
 

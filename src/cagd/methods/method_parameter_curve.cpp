@@ -28,7 +28,7 @@ MethodParameterCurve::MethodParameterCurve(const Interpolant& interpolant)
 
 int MethodParameterCurve::span_of_tau(double tau, bool from_left) const {
     if (!(tau >= tau_.front() && tau <= tau_.back()))
-        fail_input(kWho, "tau = " + full_precision(tau) + " outside [" + full_precision(tau_.front()) + ", " + full_precision(tau_.back()) + "]");
+        fail_input(kWho, "t = " + full_precision(tau) + " outside [" + full_precision(tau_.front()) + ", " + full_precision(tau_.back()) + "] (the method's parameter)");
     const auto spans = static_cast<int>(dtau_du_.size());
     // from the right: the span that starts at or before τ; from the left: the one that ends at or after it.
     const auto it = from_left ? std::lower_bound(tau_.begin() + 1, tau_.end(), tau) : std::upper_bound(tau_.begin(), tau_.end(), tau);
