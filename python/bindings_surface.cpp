@@ -98,6 +98,15 @@ cagd::surface::BoundaryCurve boundary_from(const py::object& points, const py::o
     return cagd::surface::boundary_through_points(to_matrix(real_array(points, name), name), values);
 }
 
+// The smoothings' data: grid lines x (nx,), y (ny,) and heights a (nx, ny).
+struct GridData {
+    std::vector<double> x, y;
+    Eigen::MatrixXd a;
+};
+GridData grid_data(const py::object& x, const py::object& y, const py::object& a) {
+    return {to_vector(real_array(x, "x"), "x"), to_vector(real_array(y, "y"), "y"), to_matrix(real_array(a, "a"), "a")};
+}
+
 // λ for the smoothings: one number, or one per node (nx, ny).
 Eigen::MatrixXd lambda_grid(const py::object& lam) {
     const Array a = real_array(lam, "lam");
@@ -241,10 +250,10 @@ void bind_surface(py::module_& m) {
     m.def(
         "elastic_net_surface",
         [](const py::object& x, const py::object& y, const py::object& a, const py::object& lam) {
-            const std::vector<double> xs = to_vector(real_array(x, "x"), "x"), ys = to_vector(real_array(y, "y"), "y");
-            const Eigen::MatrixXd values = to_matrix(real_array(a, "a"), "a"), lambda = lambda_grid(lam);
+            const GridData g = grid_data(x, y, a);
+            const Eigen::MatrixXd lambda = lambda_grid(lam);
             py::gil_scoped_release release;
-            return cagd::smoothing::net_spline_smoothing(xs, ys, values, lambda);
+            return cagd::smoothing::net_spline_smoothing(g.x, g.y, g.a, lambda);
         },
         py::arg("x"), py::arg("y"), py::arg("a"), py::arg("lam"),
         "Hosaka's elastic net (hosaka eq 53–54, approximation 2 of section 7 (iv)): heights a (nx, ny) on the grid x (nx,), y (ny,) smoothed with "
@@ -263,12 +272,12 @@ void bind_surface(py::module_& m) {
     m.def(
         "boundary_plate_smoothing",
         [](const py::object& x, const py::object& y, const py::object& a, const py::object& lam, const std::string& energy, int order, double poisson_ratio) {
-            const std::vector<double> xs = to_vector(real_array(x, "x"), "x"), ys = to_vector(real_array(y, "y"), "y");
-            const Eigen::MatrixXd values = to_matrix(real_array(a, "a"), "a"), lambda = lambda_grid(lam);
+            const GridData g = grid_data(x, y, a);
+            const Eigen::MatrixXd lambda = lambda_grid(lam);
             const cagd::smoothing::PlateEnergy e = plate_energy_named(energy);
             if (order < 1 || order > 30) throw cagd::InvalidInput("m = " + std::to_string(order) + "; allowed 1..30");
             py::gil_scoped_release release;
-            return cagd::smoothing::boundary_plate_smoothing(xs, ys, values, lambda, e, order, poisson_ratio).surface;
+            return cagd::smoothing::boundary_plate_smoothing(g.x, g.y, g.a, lambda, e, order, poisson_ratio).surface;
         },
         py::arg("x"), py::arg("y"), py::arg("a"), py::arg("lam"), py::arg("energy") = "poisson", py::arg("m") = 2, py::arg("poisson_ratio") = 0.3,
         "Hosaka's plate smoothing, method (ii) (section 7 (ii), eq 31 with 55–59): the surface of eq (31) between the first and last y lines whose "
@@ -281,11 +290,10 @@ void bind_surface(py::module_& m) {
     m.def(
         "window_smoothing",
         [](const py::object& x, const py::object& y, const py::object& a, double lam, const std::string& energy, double poisson_ratio) {
-            const std::vector<double> xs = to_vector(real_array(x, "x"), "x"), ys = to_vector(real_array(y, "y"), "y");
-            const Eigen::MatrixXd values = to_matrix(real_array(a, "a"), "a");
+            const GridData g = grid_data(x, y, a);
             const cagd::smoothing::PlateEnergy e = plate_energy_named(energy);
             py::gil_scoped_release release;
-            return cagd::smoothing::local_orthogonal_smoothing(xs, ys, values, lam, e, poisson_ratio);
+            return cagd::smoothing::local_orthogonal_smoothing(g.x, g.y, g.a, lam, e, poisson_ratio);
         },
         py::arg("x"), py::arg("y"), py::arg("a"), py::arg("lam"), py::arg("energy") = "poisson", py::arg("poisson_ratio") = 0.3,
         "Hosaka's approximation 1 (section 7 (iv), eq 60): a 5 × 5 window fit by discrete orthonormal polynomials at every node, its derivatives "
@@ -298,11 +306,11 @@ void bind_surface(py::module_& m) {
     m.def(
         "plate_smoothing",
         [](const py::object& x, const py::object& y, const py::object& a, const py::object& lam, const std::string& energy, double poisson_ratio) {
-            const std::vector<double> xs = to_vector(real_array(x, "x"), "x"), ys = to_vector(real_array(y, "y"), "y");
-            const Eigen::MatrixXd values = to_matrix(real_array(a, "a"), "a"), lambda = lambda_grid(lam);
+            const GridData g = grid_data(x, y, a);
+            const Eigen::MatrixXd lambda = lambda_grid(lam);
             const cagd::smoothing::PlateEnergy e = plate_energy_named(energy);
             py::gil_scoped_release release;
-            return cagd::smoothing::plate_smoothing(xs, ys, values, lambda, e, poisson_ratio).surface;
+            return cagd::smoothing::plate_smoothing(g.x, g.y, g.a, lambda, e, poisson_ratio).surface;
         },
         py::arg("x"), py::arg("y"), py::arg("a"), py::arg("lam"), py::arg("energy") = "poisson", py::arg("poisson_ratio") = 0.3,
         "Hosaka's plate smoothing, method (i) of section 7 (eq 55–58): the bicubic Cartesian surface over the grid minimising the plate energy "
