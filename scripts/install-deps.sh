@@ -2,7 +2,8 @@
 # Install the Debian 12 packages a target of cagd-repro needs, in layers; only those not yet
 # installed. Idempotent, and quiet when all are present.
 #
-#   scripts/install-deps.sh [LAYER ...]      (no layer: all of them)
+#   scripts/install-deps.sh [LAYER ...]          (no layer: all of them)
+#   scripts/install-deps.sh --list [LAYER ...]   print the layers' packages, one per line
 #
 #   library    build and install the C++ library and the cagd command (make install without Python)
 #   python     + the Python module (make python, make install, pip install --no-build-isolation .)
@@ -29,6 +30,7 @@ library=(
 python=(
   python3 python3-dev pybind11-dev python3-numpy   # the module `cagd`, built for /usr/bin/python3
   python3-pip python3-setuptools python3-wheel python3-venv   # pip install --no-build-isolation .
+  python3-build          # python3 -m build --no-isolation: a wheel
 )
 reproduce=(
   gnuplot-nox            # figures (pngcairo and svg terminals)
@@ -51,6 +53,8 @@ docs=(
   python3-sphinx         # the Python API reference from the docstrings
 )
 
+list_only=0
+if [ "${1:-}" = "--list" ]; then list_only=1; shift; fi
 layers=("$@")
 [ ${#layers[@]} -gt 0 ] || layers=(library python reproduce test bench docs)
 packages=()
@@ -65,6 +69,8 @@ for layer in "${layers[@]}"; do
     *) echo "install-deps: unknown layer '$layer'; allowed: library python reproduce test bench docs" >&2; exit 2 ;;
   esac
 done
+
+if [ $list_only -eq 1 ]; then printf '%s\n' "${packages[@]}" | sort -u; exit 0; fi
 
 missing=()
 for p in "${packages[@]}"; do

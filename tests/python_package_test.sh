@@ -2,7 +2,8 @@
 # The Python package as a Python user gets it (ctest python.package):
 #  1. pip: `pip install --no-build-isolation .` (pyproject.toml, setup.py) into a virtual
 #     environment that sees Debian's numpy, then import from outside the tree, __version__,
-#     the registry, and `pip show` metadata; `pip wheel` makes a wheel holding the stubs.
+#     the registry, and `pip show` metadata; `python3 -m build --no-isolation --wheel` (Debian
+#     python3-build) makes a wheel holding the stubs.
 #  2. cmake --install: the package lands where the interpreter looks under the prefix
 #     (scripts/python-install-dir.py) and imports from there; with the default PREFIX=/usr/local
 #     that directory is on the system python3's sys.path.
@@ -29,7 +30,7 @@ for field in "Name: cagd" "Version: $("$python" -c "import re,sys; print(re.sear
   grep -q "^$field" <<< "$show" || fail "pip show lacks '$field': $show"
 done
 "$work/venv/bin/python" -c "import cagd, os; d = os.path.dirname(cagd.__file__); assert all(os.path.exists(os.path.join(d, f)) for f in ('py.typed', '_cagd.pyi')), os.listdir(d)"
-CAGD_BUILD_DIR="$build" "$work/venv/bin/pip" wheel --quiet --no-build-isolation --no-index --no-deps -w "$work/dist" "$work/src" > "$work/wheel.log" 2>&1 || { cat "$work/wheel.log"; fail "pip wheel"; }
+CAGD_BUILD_DIR="$build" "$python" -m build --no-isolation --wheel --outdir "$work/dist" "$work/src" > "$work/wheel.log" 2>&1 || { cat "$work/wheel.log"; fail "python3 -m build --no-isolation --wheel"; }
 wheel=$(ls "$work"/dist/cagd-*.whl)
 listing=$("$python" -m zipfile -l "$wheel")
 grep -q "cagd/_cagd.pyi" <<< "$listing" && grep -q "cagd/py.typed" <<< "$listing" || fail "the wheel lacks the stubs: $listing"

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -60,12 +61,24 @@ ArtifactRun::ArtifactRun(std::string paper, std::string artifact, std::string se
     }
     reference_ = load_reference(root_ + "/reference/" + paper_ + "/" + artifact_ + ".csv");
     for (const auto& id : load_erratum_ids(root_ + "/reference/ERRATA.md")) errata_.insert(id);
-    out_dir_ = check_mode_ ? (fs::temp_directory_path() / ("cagd-check-" + paper_ + "-" + artifact_)).string() : root_ + "/results/" + paper_;
-    fs::create_directories(out_dir_);
+    if (check_mode_) {
+        std::string pattern = (fs::temp_directory_path() / ("cagd-check-" + paper_ + "-" + artifact_ + "-XXXXXX")).string();
+        if (mkdtemp(pattern.data()) == nullptr) fail_input("experiment " + paper_ + "/" + artifact_, "cannot create a temporary directory '" + pattern + "'");
+        out_dir_ = pattern;
+    } else {
+        out_dir_ = root_ + "/results/" + paper_;
+        fs::create_directories(out_dir_);
+    }
     // A table cache that exists but is not used (damaged, stale) is rebuilt with one line saying so.
     set_cache_rebuild_notice([](const std::string& path, const std::string& reason) {
         std::cerr << "cagd-repro: cache '" << path << "' not used (" << one_line(reason) << "); rebuilding it\n";
     });
+}
+
+ArtifactRun::~ArtifactRun() {
+    if (!check_mode_) return;
+    std::error_code ignored;  // a destructor does not throw; a directory left in $TMPDIR is harmless
+    fs::remove_all(out_dir_, ignored);
 }
 
 void ArtifactRun::check(const std::string& short_id, double ours) {

@@ -80,7 +80,12 @@ struct CheckRecord {
 class ArtifactRun {
 public:
     // section: the paper's section/equation used to order artifacts in the report ("2.1").
+    // With --check the data go to a fresh temporary directory, removed with the run (ctest checks
+    // the claims and leaves nothing behind); otherwise to <root>/results/<paper>.
     ArtifactRun(std::string paper, std::string artifact, std::string section, std::string title, int argc, char** argv);
+    ~ArtifactRun();
+    ArtifactRun(const ArtifactRun&) = delete;
+    ArtifactRun& operator=(const ArtifactRun&) = delete;
 
     const Reference& reference() const { return reference_; }
     // Check claim `<paper>.<short_id>` of the reference file against our value.
