@@ -101,10 +101,15 @@ awk -F, 'NR==10 { exit !($1==2 && ($2-2)^2 < 1e-20 && ($3-1)^2 < 1e-20 && ($4-1)
 "$cagd" interpolate --method hosaka --m 2 --parameter span --in "$dir/space.csv" --out "$dir/h2.csv" --samples 4 || { echo "FAIL: hosaka --m 2"; fails=$((fails+1)); }
 awk -F, 'NR==10 { exit !($1==2 && ($2-2)^2 < 1e-20 && ($3-1)^2 < 1e-20 && ($4-1)^2 < 1e-20) }' "$dir/h2.csv" || { echo "FAIL: hosaka --m 2 misses P_2"; fails=$((fails+1)); }
 expect_bad "hosaka m 0"            '0,0\n1,1\n2,0\n'    interpolate --method hosaka --m 0 --in "$dir/bad.csv" --out "$dir/o.csv"
-"$cagd" interpolate --method hosaka --m 2 --end tangent --start-tangent 1,0,0 --end-tangent 0,0,1 --parameter span --in "$dir/space.csv" --out "$dir/h3.csv" --samples 4 \
-  || { echo "FAIL: hosaka --m 2 tangent ends"; fails=$((fails+1)); }
-# the first row's derivative columns (dx, dy, dz) are the given start tangent
-awk -F, 'NR==2 { exit !(($5-1)^2 < 1e-20 && $6^2 < 1e-20 && $7^2 < 1e-20) }' "$dir/h3.csv" || { echo "FAIL: hosaka --m 2 start tangent"; sed -n 2p "$dir/h3.csv"; fails=$((fails+1)); }
+for m in 1 2; do
+  "$cagd" interpolate --method hosaka --m $m --end tangent --start-tangent 1,0,0 --end-tangent 0,0,1 --in "$dir/space.csv" --out "$dir/h3.csv" --samples 4 \
+    || { echo "FAIL: hosaka --m $m tangent ends"; fails=$((fails+1)); }
+  # the first row's derivative columns (dx, dy, dz) are the given start tangent, in the chord-length t
+  awk -F, 'NR==2 { exit !(($5-1)^2 < 1e-20 && $6^2 < 1e-20 && $7^2 < 1e-20) }' "$dir/h3.csv" || { echo "FAIL: hosaka --m $m start tangent"; sed -n 2p "$dir/h3.csv"; fails=$((fails+1)); }
+  # and in the span index u they are L_0 = |P_1 − P_0| = sqrt(2) times it
+  "$cagd" interpolate --method hosaka --m $m --end tangent --start-tangent 1,0,0 --end-tangent 0,0,1 --parameter span --in "$dir/space.csv" --out "$dir/h4.csv" --samples 4
+  awk -F, 'NR==2 { exit !(($5-sqrt(2))^2 < 1e-20 && $6^2 < 1e-20 && $7^2 < 1e-20) }' "$dir/h4.csv" || { echo "FAIL: hosaka --m $m start tangent in u"; sed -n 2p "$dir/h4.csv"; fails=$((fails+1)); }
+done
 expect_bad "hosaka m 2 tangent dim" '0,0\n1,1\n2,0\n'    interpolate --method hosaka --m 2 --end tangent --start-tangent 1,0,0 --end-tangent 1,0 --in "$dir/bad.csv" --out "$dir/o.csv"
 # hosaka section 4: cagd surface (tensor over a grid of heights, Coons from four edges, boundary synthesis).
 printf 'x,y,z\n0,0,0\n1,0,1\n2,0,0\n0,1,1\n1,1,2\n2,1,1\n' > "$dir/grid.csv"

@@ -11,8 +11,8 @@ namespace cagd::methods {
 namespace detail {
 
 std::vector<Parameter> tangent_parameters() {
-    return {{.name = "start-tangent", .type = P::vector, .help = "tangent at the first point, e.g. 1,0 (with --end tangent)"},
-            {.name = "end-tangent", .type = P::vector, .help = "tangent at the last point (with --end tangent)"}};
+    return {{.name = "start-tangent", .type = P::vector, .help = "derivative at the first point with respect to the method's parameter t, e.g. 1,0 (with --end tangent)"},
+            {.name = "end-tangent", .type = P::vector, .help = "derivative at the last point with respect to t (with --end tangent)"}};
 }
 
 void require_tangent_pair(const std::string& who, const ParameterValues& v) {

@@ -17,15 +17,15 @@ InterpolationResult build_hosaka(const PointList& points, bool closed, const Par
     o.scale = v.text("scale") == "unit" ? spline::HosakaScale::unit : spline::HosakaScale::chord;
     o.closed = closed;
     require_tangent_pair("cagd::methods(hosaka)", v);
-    if (v.text("end") == "tangent") {
+    const std::vector<double> lengths = o.scale == spline::HosakaScale::chord ? chord_lengths(points, closed) : unit_lengths(points, closed);
+    if (v.text("end") == "tangent") {  // given in the method's parameter t; Hosaka's B_1, C_n are per span: d/du = L d/dt
         o.end = spline::HosakaEnd::tangent;
-        o.start_tangent = v.vector("start-tangent");
-        o.end_tangent = v.vector("end-tangent");
+        o.start_tangent = lengths.front() * v.vector("start-tangent");
+        o.end_tangent = lengths.back() * v.vector("end-tangent");
     }
     const int m = v.integer("m");
     auto c = m == 1 ? std::make_shared<spline::HosakaCurve>(spline::hosaka_c2_spline(points, o).curve) : std::make_shared<spline::HosakaCurve>(spline::hosaka_spline(points, m, o));
-    return result_of(
-        unit_span_interpolant(std::move(c), node_count(points, closed), o.scale == spline::HosakaScale::chord ? chord_lengths(points, closed) : unit_lengths(points, closed)));
+    return result_of(unit_span_interpolant(std::move(c), node_count(points, closed), lengths));
 }
 
 }  // namespace
