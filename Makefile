@@ -20,6 +20,11 @@ PYTHON_ON     = -DCAGD_BUILD_PYTHON=ON -DCAGD_BUILD_TESTS=OFF -DCAGD_BUILD_BENCH
 # the Python package, into $(PREFIX), from a build of its own (no tests, experiments, benchmarks).
 INSTALL_FLAGS = -DCAGD_BUILD_TESTS=OFF -DCAGD_BUILD_EXPERIMENTS=OFF -DCAGD_BUILD_BENCH=OFF -DCAGD_BUILD_CLI=ON -DCAGD_BUILD_PYTHON=ON
 
+# The tests, the harness, the sanitizers and the benchmarks keep their table cache (the pseudo-energy
+# tables that the library keeps in the user's cache, core/user_cache.hpp) in the build tree, never
+# in the user's ~/.cache/cagd; the one build of the space table serves all four.
+TABLE_CACHE = XDG_CACHE_HOME=$(abspath $(BUILD))/cache/user
+
 .PHONY: all deps configure build test reproduce bench python install sanitize docs clean
 
 all: build
@@ -37,13 +42,13 @@ build: configure
 	@cmake --build $(BUILD) -j$(JOBS)
 
 test: build
-	@cd $(BUILD) && ctest --output-on-failure -j$(JOBS)
+	@cd $(BUILD) && $(TABLE_CACHE) ctest --output-on-failure -j$(JOBS)
 
 reproduce:
 	@bash scripts/install-deps.sh reproduce
 	@cmake -S . -B $(BUILD) $(call generator_for,$(BUILD)) $(CMAKE_FLAGS) $(REPRODUCE_ON) >/dev/null
 	@cmake --build $(BUILD) -j$(JOBS)
-	@JOBS=$(JOBS) bash scripts/reproduce.sh $(BUILD)
+	@$(TABLE_CACHE) JOBS=$(JOBS) bash scripts/reproduce.sh $(BUILD)
 
 bench:
 	@bash scripts/install-deps.sh bench
@@ -51,8 +56,8 @@ bench:
 	@cmake --build $(BUILD) -j$(JOBS)
 	@cmake --build $(BUILD) -j$(JOBS) --target cagd_bench
 	@mkdir -p results/timing
-	@$(BUILD)/bench/cagd_bench --benchmark_out=results/timing/bench.json --benchmark_out_format=json
-	@/usr/bin/python3 scripts/bench-targets.py $(BUILD)  # the interpreter the module is built for, with Debian's scipy
+	@$(TABLE_CACHE) $(BUILD)/bench/cagd_bench --benchmark_out=results/timing/bench.json --benchmark_out_format=json
+	@$(TABLE_CACHE) /usr/bin/python3 scripts/bench-targets.py $(BUILD)  # the interpreter the module is built for, with Debian's scipy
 
 # The Python module alone: then PYTHONPATH=$(BUILD)/python /usr/bin/python3 -c 'import cagd'
 python:
@@ -78,7 +83,7 @@ docs:
 # ASan + UBSan tests of the compare modules and a minute of libFuzzer (clang; build-sanitize/).
 sanitize:
 	@bash scripts/install-deps.sh test
-	@JOBS=$(JOBS) bash scripts/sanitize.sh $(CURDIR)/build-sanitize
+	@$(TABLE_CACHE) JOBS=$(JOBS) bash scripts/sanitize.sh $(CURDIR)/build-sanitize
 
 clean:
 	@rm -rf $(BUILD) $(BUILD)-install

@@ -291,5 +291,21 @@ echo old > "$dir/mode.csv"; chmod 640 "$dir/mode.csv"
 "$cagd" interpolate --in "$dir/pts.csv" --out /dev/stdout --samples 1 | grep -q '^t,x,y' || { echo "FAIL: --out /dev/stdout on a pipe"; fails=$((fails+1)); }
 [ -L /dev/stdout ] || [ -c /dev/stdout ] || { echo "FAIL: /dev/stdout is no longer a link or device"; fails=$((fails+1)); }
 
+# The user's table cache: the first pseudo-spline run builds the planar table into
+# $XDG_CACHE_HOME/cagd with one line on stderr, the second loads it silently; --no-cache and
+# CAGD_NO_CACHE=1 write nothing.
+printf 'x,y\n0,0\n1,1\n2,0\n3,1\n' > "$dir/ps.csv"
+for run in first second; do
+  XDG_CACHE_HOME="$dir/xdg" CAGD_NO_CACHE= "$cagd" analyze --in "$dir/ps.csv" --method pseudo-spline > /dev/null 2> "$dir/cache.$run"
+done
+[ "$(grep -c "building the 36 x 36 pseudo-energy table" "$dir/cache.first")" = 1 ] || { echo "FAIL: no build note on a cold cache"; cat "$dir/cache.first"; fails=$((fails+1)); }
+! grep -q "building" "$dir/cache.second" || { echo "FAIL: a warm cache was built again"; fails=$((fails+1)); }
+ls "$dir"/xdg/cagd/pseudo-energy-table-36-periodic-fast.txt > /dev/null || { echo "FAIL: no cached table"; fails=$((fails+1)); }
+XDG_CACHE_HOME="$dir/xdg2" "$cagd" --no-cache analyze --in "$dir/ps.csv" --method pseudo-spline > /dev/null 2> "$dir/cache.off"
+XDG_CACHE_HOME="$dir/xdg3" CAGD_NO_CACHE=1 "$cagd" analyze --in "$dir/ps.csv" --method pseudo-spline > /dev/null 2>> "$dir/cache.off"
+{ [ ! -e "$dir/xdg2" ] && [ ! -e "$dir/xdg3" ] && ! grep -q building "$dir/cache.off"; } || { echo "FAIL: the cache was written while off"; fails=$((fails+1)); }
+cmp -s <(XDG_CACHE_HOME="$dir/xdg" "$cagd" analyze --in "$dir/ps.csv" --method pseudo-spline 2>/dev/null) \
+       <("$cagd" --no-cache analyze --in "$dir/ps.csv" --method pseudo-spline 2>/dev/null) || { echo "FAIL: the cached table gives other measures"; fails=$((fails+1)); }
+
 if [ "$fails" -eq 0 ]; then echo "cli: all checks passed"; fi
 exit $((fails > 0))

@@ -11,11 +11,14 @@
 // temporary files before the process ends by the signal. Sizes are checked
 // against their limits (in --help) before anything is allocated. Progress goes to stderr for long
 // work, only when stderr is a terminal and --quiet is not given. CMake defines CAGD_VERSION and
-// CAGD_REVISION (the git revision at configure time).
+// CAGD_REVISION (the git revision at configure time). Tables that take seconds to build come from
+// the user's cache (core/user_cache.hpp); building one prints one line (unless --quiet), and
+// --no-cache (or CAGD_NO_CACHE=1) builds them in memory instead.
 #include <CLI/CLI.hpp>
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <cstdio>
 #include <iostream>
 #include <new>
 #include <vector>
@@ -23,6 +26,7 @@
 #include "cli/commands.hpp"
 #include "cli/output.hpp"
 #include "cagd/core/errors.hpp"
+#include "cagd/core/user_cache.hpp"
 
 namespace {
 
@@ -40,6 +44,11 @@ void hold_closed_standard_descriptors() {
         }
 }
 
+void note_cache_build(const std::string& path, const std::string& what) {
+    if (!cagd::cli::quiet())
+        std::cerr << "cagd: building " << what << " once, into the user's cache '" << path << "' (--no-cache or CAGD_NO_CACHE=1: build it in memory each time)\n";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -53,6 +62,8 @@ int main(int argc, char** argv) {
     app.set_version_flag("--version", std::string("cagd ") + CAGD_VERSION + " (git " + CAGD_REVISION + ")");
     bool quiet = false;
     app.add_flag("--quiet", quiet, "no progress on stderr (it is shown only when stderr is a terminal anyway)");
+    bool no_cache = false;
+    app.add_flag("--no-cache", no_cache, "build the pseudo-energy tables in memory, not in the user's cache ($XDG_CACHE_HOME/cagd or ~/.cache/cagd; also CAGD_NO_CACHE=1)");
     const std::vector<Command> commands = {
         add_interpolate_command(app), add_analyze_command(app),      add_compare_command(app), add_surface_command(app),  add_smooth_command(app), add_smooth_surface_command(app),
         add_energy_command(app),      add_energy_table_command(app), add_lac_command(app),     add_monotone_command(app), add_lac3d_command(app),  add_typical_surface_command(app),
@@ -60,6 +71,13 @@ int main(int argc, char** argv) {
     try {
         app.parse(argc, argv);
         set_quiet(quiet);
+        if (no_cache) cagd::set_user_cache_enabled(false);
+        cagd::set_cache_build_notice(note_cache_build);
+        if (progress_enabled())
+            cagd::set_cache_build_progress([](long done, long total) {
+                std::fprintf(stderr, "\rcagd: %ld / %ld table nodes", done, total);
+                if (done == total) std::fprintf(stderr, "\n");
+            });
         for (const Command& c : commands)
             if (c.app->parsed()) return c.run();
     } catch (const CLI::ParseError& e) {

@@ -116,12 +116,15 @@ class PseudoEnergyTable {
 public:
     /// progress(done, total) is called from the building threads now and then (may be empty).
     static PseudoEnergyTable build(const AngleGrid& grid, TableMethod method, int threads = 2, bool use_symmetry = true, const std::function<void(long, long)>& progress = {});
-    /// Loads `path` when it holds a table of this grid and method, else builds and saves it.
     /// Loads a table written by save() / `cagd energy-table`; grid, placement and method come from
     /// its first line. Throws InvalidInput for a missing, foreign, truncated or other-format file.
     static PseudoEnergyTable load(const std::string& path);
     /// load(path) when the file holds a table of this grid and method, else build and save it (locked: a concurrent caller waits).
     static PseudoEnergyTable load_or_build(const std::string& path, const AngleGrid& grid, TableMethod method, int threads = 2);
+    /// The table from the user's cache (core/user_cache.hpp), built and saved there on a miss with
+    /// the build notice and progress; built in memory when the cache is off or cannot be written.
+    /// The same table as build(grid, method, threads), bit for bit.
+    static PseudoEnergyTable user_cached(const AngleGrid& grid, TableMethod method, int threads = 2);
 
     /// The grid.
     const AngleGrid& grid() const { return grid_; }
@@ -150,6 +153,7 @@ public:
     std::string header_line() const;
 
 private:
+    static PseudoEnergyTable load_or_build(const std::string& path, const AngleGrid& grid, TableMethod method, int threads, bool user_cache);
     AngleGrid grid_;
     TableMethod method_ = TableMethod::fast;
     detail::PeriodicAxis axis_;

@@ -25,6 +25,7 @@
 #include "cagd/core/csv.hpp"
 #include "cagd/core/file_lock.hpp"
 #include "cagd/core/output_file.hpp"
+#include "cagd/core/user_cache.hpp"
 
 namespace cagd::fairness {
 
@@ -168,6 +169,17 @@ ParsedTable parse_table(const std::string& text, const std::string& source) {
 }  // namespace
 
 PseudoEnergyTable PseudoEnergyTable::load_or_build(const std::string& path, const AngleGrid& grid, TableMethod method, int threads) {
+    return load_or_build(path, grid, method, threads, false);
+}
+
+PseudoEnergyTable PseudoEnergyTable::user_cached(const AngleGrid& grid, TableMethod method, int threads) {
+    const std::optional<std::string> dir = user_cache_directory();
+    if (!dir) return build(grid, method, threads, method == TableMethod::fast);
+    const std::string name = std::string("pseudo-energy-table-") + std::to_string(grid.n) + "-" + to_string(grid.placement) + "-" + to_string(method) + ".txt";
+    return load_or_build(*dir + "/" + name, grid, method, threads, true);
+}
+
+PseudoEnergyTable PseudoEnergyTable::load_or_build(const std::string& path, const AngleGrid& grid, TableMethod method, int threads, bool user_cache) {
     const auto try_load = [&](std::string& why) -> std::optional<PseudoEnergyTable> {
         std::ifstream probe(path);
         if (!probe) return std::nullopt;
@@ -190,8 +202,17 @@ PseudoEnergyTable PseudoEnergyTable::load_or_build(const std::string& path, cons
         }
     };
     return load_or_build_locked(path, try_load, [&] {
-        PseudoEnergyTable built = build(grid, method, threads, method == TableMethod::fast);
-        built.save(path);
+        if (!user_cache) {
+            PseudoEnergyTable built = build(grid, method, threads, method == TableMethod::fast);
+            built.save(path);
+            return built;
+        }
+        announce_cache_build(path, "the " + std::to_string(grid.n) + " x " + std::to_string(grid.n) + " pseudo-energy table (" + to_string(method) + " minimiser)");
+        PseudoEnergyTable built = build(grid, method, threads, method == TableMethod::fast, cache_build_progress());
+        try {
+            built.save(path);
+        } catch (const std::exception&) {  // OutputError, or InvalidInput for a place no file can be made: the table stays in memory
+        }
         return built;
     });
 }

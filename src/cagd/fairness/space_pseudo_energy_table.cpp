@@ -14,6 +14,7 @@
 #include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
 #include "cagd/core/file_lock.hpp"
+#include "cagd/core/user_cache.hpp"
 #include "cagd/core/output_file.hpp"
 #include "cagd/core/parallel.hpp"
 
@@ -203,6 +204,18 @@ SpacePseudoEnergyTable SpacePseudoEnergyTable::load(const std::string& path) {
 }
 
 SpacePseudoEnergyTable SpacePseudoEnergyTable::load_or_build(const std::string& path, const SpaceAngleGrid& grid, TableMethod method, int threads) {
+    return load_or_build(path, grid, method, threads, false);
+}
+
+SpacePseudoEnergyTable SpacePseudoEnergyTable::user_cached(const SpaceAngleGrid& grid, TableMethod method, int threads) {
+    const std::optional<std::string> dir = user_cache_directory();
+    if (!dir) return build(grid, method, threads);
+    const std::string name =
+        std::string("space-pseudo-energy-table-") + std::to_string(grid.n_theta) + "x" + std::to_string(grid.n_theta) + "x" + std::to_string(grid.n_phi) + "-" + to_string(method) + ".txt";
+    return load_or_build(*dir + "/" + name, grid, method, threads, true);
+}
+
+SpacePseudoEnergyTable SpacePseudoEnergyTable::load_or_build(const std::string& path, const SpaceAngleGrid& grid, TableMethod method, int threads, bool user_cache) {
     const auto try_load = [&](std::string& why) -> std::optional<SpacePseudoEnergyTable> {
         if (!cache_file_exists(path)) return std::nullopt;
         try {
@@ -215,8 +228,18 @@ SpacePseudoEnergyTable SpacePseudoEnergyTable::load_or_build(const std::string& 
         return std::nullopt;
     };
     return load_or_build_locked(path, try_load, [&] {
-        SpacePseudoEnergyTable t = build(grid, method, threads);
-        t.save(path);
+        if (!user_cache) {
+            SpacePseudoEnergyTable t = build(grid, method, threads);
+            t.save(path);
+            return t;
+        }
+        announce_cache_build(path, "the " + std::to_string(grid.n_theta) + " x " + std::to_string(grid.n_theta) + " x " + std::to_string(grid.n_phi) +
+                                       " space pseudo-energy table (" + to_string(method) + " minimiser)");
+        SpacePseudoEnergyTable t = build(grid, method, threads, cache_build_progress());
+        try {
+            t.save(path);
+        } catch (const std::exception&) {  // OutputError, or InvalidInput for a place no file can be made: the table stays in memory
+        }
         return t;
     });
 }

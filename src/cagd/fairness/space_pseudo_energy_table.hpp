@@ -68,6 +68,9 @@ public:
     static SpacePseudoEnergyTable load(const std::string& path);  ///< InvalidInput for a foreign or damaged file
     /// load(path) when the file holds this grid's table, else build and save it.
     static SpacePseudoEnergyTable load_or_build(const std::string& path, const SpaceAngleGrid& grid, TableMethod method, int threads = 2);
+    /// The table from the user's cache (core/user_cache.hpp), built and saved there on a miss with
+    /// the build notice and progress; built in memory when the cache is off or cannot be written.
+    static SpacePseudoEnergyTable user_cached(const SpaceAngleGrid& grid, TableMethod method, int threads = 2);
 
     /// The grid.
     const SpaceAngleGrid& grid() const { return grid_; }
@@ -89,6 +92,7 @@ public:
     std::string header_line() const;
 
 private:
+    static SpacePseudoEnergyTable load_or_build(const std::string& path, const SpaceAngleGrid& grid, TableMethod method, int threads, bool user_cache);
     SpaceAngleGrid grid_;
     TableMethod method_ = TableMethod::fast;
     std::vector<double> theta_, phi_;

@@ -12,23 +12,33 @@ namespace cagd::methods::detail {
 namespace {
 
 const fairness::PseudoSplineTables& default_pseudo_spline_tables() {
-    // The 36-node fast table, built once per process (about 0.2 s on two threads).
+    // The 36-node fast table: from the user's cache, built there once (about 0.2 s on two threads),
+    // or in memory once per process when the cache is off.
     static const fairness::PseudoSplineTables tables =
-        fairness::PseudoSplineTables::from(fairness::PseudoEnergyTable::build({36, fairness::NodePlacement::periodic}, fairness::TableMethod::fast));
+        fairness::PseudoSplineTables::from(fairness::PseudoEnergyTable::user_cached({36, fairness::NodePlacement::periodic}, fairness::TableMethod::fast));
     return tables;
 }
 
-// Space points (pseudo_energy section 6, extended to space): the space pseudo-spline, tangents by the planar tables' J(θ), spans by
-// the space minimiser at the exact angles or from a space table (--space-table).
+const fairness::SpacePseudoEnergyTable& default_space_table() {
+    // The 36 x 36 x 72 fast space table: from the user's cache, built there once (about 35 CPU-s).
+    static const fairness::SpacePseudoEnergyTable table = fairness::SpacePseudoEnergyTable::user_cached({36, 72}, fairness::TableMethod::fast);
+    return table;
+}
+
+// Space points (pseudo_energy section 6, extended to space): the space pseudo-spline, tangents by the planar tables' J(θ), spans from
+// a space table (the default one, or --space-table) or by the space minimiser at the exact angles (--space-spans exact).
 InterpolationResult build_space_pseudo_spline(const PointList& points, bool closed, const ParameterValues& v, const fairness::PseudoSplineTables& planar) {
     const auto mode = fairness::parse_tangent_optimization(v.text("optimize"));
     const fairness::TableOracle planar_oracle = planar.oracle();
+    const bool exact = v.text("space-spans") == "exact";
+    if (exact && v.has("space-table")) fail_input("cagd::methods(pseudo-spline)", "--space-table gives the spans' table; --space-spans exact computes them without one");
     fairness::SpacePseudoSpline ps = [&] {
+        if (exact) return fairness::space_pseudo_spline(points, fairness::ExactSpaceOracle(planar_oracle), mode, closed);
         if (v.has("space-table")) {
             const fairness::SpacePseudoEnergyTable table = fairness::SpacePseudoEnergyTable::load(v.text("space-table"));
             return fairness::space_pseudo_spline(points, fairness::TableSpaceOracle(table, planar_oracle), mode, closed);
         }
-        return fairness::space_pseudo_spline(points, fairness::ExactSpaceOracle(planar_oracle), mode, closed);
+        return fairness::space_pseudo_spline(points, fairness::TableSpaceOracle(default_space_table(), planar_oracle), mode, closed);
     }();
     InterpolationResult r = result_of(unit_span_interpolant(std::make_shared<spline::PiecewiseHermiteCurve>(ps.curve), node_count(points, closed), unit_lengths(points, closed)));
     r.quantities = {{"length_from_tables", ps.length_from_tables()}};
@@ -41,6 +51,7 @@ InterpolationResult build_pseudo_spline(const PointList& points, bool closed, co
         return v.has("table") ? build_space_pseudo_spline(points, closed, v, fairness::PseudoSplineTables::from(fairness::PseudoEnergyTable::load(v.text("table"))))
                               : build_space_pseudo_spline(points, closed, v, default_pseudo_spline_tables());
     if (v.has("space-table")) fail_input("cagd::methods(pseudo-spline)", "--space-table is for 3-D points; these have 2 coordinates");
+    if (v.text("space-spans") != "table") fail_input("cagd::methods(pseudo-spline)", "--space-spans is for 3-D points; these have 2 coordinates");
     const auto make = [&](const fairness::PseudoSplineTables& t) { return fairness::pseudo_spline_curve(points, t.oracle(), mode, closed); };
     fairness::PseudoSplineCurve ps =
         v.has("table") ? make(fairness::PseudoSplineTables::from(fairness::PseudoEnergyTable::load(v.text("table")))) : make(default_pseudo_spline_tables());
@@ -78,11 +89,18 @@ std::vector<Method> pseudo_energy_methods() {
                         .default_text = "exact",
                         .choices = {"none", "exact", "approx"},
                         .help = "tangent optimisation of eq (12): none, exact (Brent) or approx (3-point parabola, Table 4)"},
-                       {.name = "table", .type = P::text, .help = "pseudo-energy table written by cagd energy-table (absent: the 36-node fast table, built in memory)"},
+                       {.name = "table",
+                        .type = P::text,
+                        .help = "pseudo-energy table written by cagd energy-table (absent: the 36-node fast table, from the user's cache or built once there)"},
+                       {.name = "space-spans",
+                        .type = P::choice,
+                        .default_text = "table",
+                        .choices = {"table", "exact"},
+                        .help = "3-D points: the spans from a space pseudo-energy table (table) or by the space minimiser at each span's angles (exact, about 500 spans/s)"},
                        {.name = "space-table",
                         .type = P::text,
-                        .help = "3-D points: space pseudo-energy table (SpacePseudoEnergyTable, e.g. from cagd_space_table_mpi) for the spans (absent: the space minimiser at "
-                                "each span's angles)"}},
+                        .help = "3-D points: the space table of the spans (SpacePseudoEnergyTable, e.g. from cagd_space_table_mpi; absent: the 36 x 36 x 72 fast table, "
+                                "from the user's cache or built once there)"}},
         .claims =
             [](const ParameterValues& v) {
                 return MethodClaims{.geometric_continuity = 1,
