@@ -30,6 +30,7 @@ names = column_words("method")
 curves_first = column_words("curves_first"); curves_count = column_words("curves_count")
 kappa_first = column_words("curvature_first"); kappa_count = column_words("curvature_count")
 combs_first = column_words("combs_first"); combs_count = column_words("combs_count")
+comb_stride = column_words("comb_stride"); comb_scale = column_words("comb_scale")
 px = colnum(f_points, "x"); py = colnum(f_points, "y"); pz = colnum(f_points, "z")
 cx = colnum(f_curves, "x"); cy = colnum(f_curves, "y"); cz = colnum(f_curves, "z")
 bx = colnum(f_combs, "x"); by = colnum(f_combs, "y"); btx = colnum(f_combs, "tip_x"); bty = colnum(f_combs, "tip_y")
@@ -86,7 +87,8 @@ do for [t in formats] {
   unset xlabel
   unset ylabel
   do for [i=1:n] {
-    set title word(names, i) noenhanced
+    comb_note = int(word(comb_stride, i)) > 0 ? ' (c = '.word(comb_scale, i).(int(word(comb_stride, i)) > 1 ? ', a tooth every '.word(comb_stride, i).' samples)' : ')') : ''
+    set title word(names, i).comb_note noenhanced
     if (int(word(combs_count, i)) > 0) {
       plot f_combs skip 1 every ::first(combs_first, i)::last(combs_first, combs_count, i) using (column(bx)):(column(by)):(column(btx) - column(bx)):(column(bty) - column(by)) with vectors nohead lc rgb '#9ecae1', \
            f_combs skip 1 every ::first(combs_first, i)::last(combs_first, combs_count, i) using (column(btx)):(column(bty)) with lines lc rgb '#6baed6', \

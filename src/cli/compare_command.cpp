@@ -80,14 +80,17 @@ int run_compare(const CompareArgs& a) {
         f.commit();
     }
 
-    // Figure data: at most about 10^4 samples per method whatever the input length (drawing time
-    // grows with the samples: 10^5 points at 4·10^4 samples per method take gnuplot 35 s).
+    // Figure data: at most about kFigureSamplesPerMethod samples per method whatever the input
+    // length (drawing time grows with the samples: 10^5 points at 4·10^4 samples per method took
+    // gnuplot 35 s; at 10^4, the three figures of 10^3 points took 3 CPU-s). A panel is a few hundred
+    // pixels wide, so 4000 samples still put several on every pixel column.
+    constexpr int kFigureSamplesPerMethod = 4000;
     const int spans = static_cast<int>(points.rows()) - (a.closed ? 0 : 1);
-    const compare::FigureData fig = compare::comparison_figure_data(results, points, compare::figure_sampling(std::max(spans, 1), 10000));
+    const compare::FigureData fig = compare::comparison_figure_data(results, points, compare::figure_sampling(std::max(spans, 1), kFigureSamplesPerMethod));
     // The folder's tables (compare/comparison_tables.hpp) are independent: written in parallel (at
     // 10^5 points, 0.9 s one after another).
     const std::vector<compare::ComparisonTable> tables =
-        compare::comparison_tables(results, fig, points, a.closed, {.timing = true, .measure_digits = 8, .figure_digits = 12, .point_digits = 17});
+        compare::comparison_tables(results, fig, points, a.closed, {.timing = true, .measure_digits = 8, .figure_digits = 8, .point_digits = 17});
     std::vector<std::string> staged;
     for (const compare::ComparisonTable& t : tables) staged.push_back(out.staged(t.file));
     parallel_for(static_cast<long>(tables.size()), hardware_threads(), [&](long k) {

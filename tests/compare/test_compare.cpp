@@ -536,6 +536,36 @@ TEST(Compare, FigureSamplingKeepsLongInputsWithinTheBudget) {
     EXPECT_EQ(expected_first, d.profiles.size());
 }
 
+// The comb of a long input is thinned to at most kMaxCombTeeth teeth, every comb_stride-th sample
+// with the last kept, and methods.csv records the stride and the scale: each tooth is scale·|κ| long.
+TEST(Compare, CombsAreThinnedAndSayHow) {
+    const PointList p = random_walk_points(301);
+    ComparisonOptions o;
+    o.methods = {"cubic-b"};
+    o.locality = false;
+    const std::vector<MethodComparison> c = compare_methods(p, o);
+    const FigureData d = comparison_figure_data(c, p, FigureSampling{32, 1});  // 300 spans × 33 samples
+    ASSERT_EQ(d.profiles.size(), 300u * 33u);
+    const int stride = d.comb_stride.at(0);
+    EXPECT_EQ(stride, static_cast<int>((d.profiles.size() + kMaxCombTeeth - 2) / (kMaxCombTeeth - 1)));
+    EXPECT_GT(stride, 1);
+    EXPECT_LE(d.combs.size(), static_cast<std::size_t>(kMaxCombTeeth));
+    EXPECT_EQ(d.combs.size(), (d.profiles.size() - 1) / static_cast<std::size_t>(stride) + 1 + ((d.profiles.size() - 1) % static_cast<std::size_t>(stride) != 0 ? 1 : 0));
+    EXPECT_EQ(d.combs.back()[1], d.curves.back()[1]);  // the last sample keeps its tooth
+    EXPECT_EQ(d.combs.back()[2], d.curves.back()[2]);
+    for (std::size_t k = 0; k < d.combs.size(); k += 97) {  // tooth k is sample k·stride (the last excepted): its length is scale·|κ|
+        const std::size_t sample = std::min(k * static_cast<std::size_t>(stride), d.profiles.size() - 1);
+        const double tooth = std::hypot(d.combs[k][3] - d.combs[k][1], d.combs[k][4] - d.combs[k][2]);
+        EXPECT_NEAR(tooth, d.comb_scale.at(0) * std::abs(d.profiles[sample][2]), 1e-9 * (1.0 + tooth)) << k;
+    }
+    const std::vector<std::vector<std::string>> table = figure_methods_rows(c, d);
+    const std::vector<std::string> header = figure_methods_header();
+    ASSERT_EQ(header.size(), table[0].size());
+    EXPECT_EQ(header[8], "comb_stride");
+    EXPECT_EQ(table[0][8], std::to_string(stride));
+    EXPECT_NEAR(std::stod(table[0][9]), d.comb_scale[0], 1e-5 * d.comb_scale[0]);
+}
+
 // The measured exception to rotation invariance (methods/method_registry.hpp): the optimised
 // pseudo-spline through rotated points is not exactly the rotated curve. Bounds as measured on 200
 // seeded sets; the non-optimised mode is exact to rounding.

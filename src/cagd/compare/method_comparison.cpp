@@ -252,6 +252,8 @@ FigureData comparison_figure_data(const std::vector<MethodComparison>& cs, const
     const bool space = points.cols() == 3;  // curves x, y, z; profiles s, κ, τ; no combs
     // One part per method, computed in parallel and joined in the methods' order.
     std::vector<FigureData> parts(cs.size());
+    std::vector<double> comb_scale(cs.size(), 0.0);
+    std::vector<int> comb_stride(cs.size(), 0);
     parallel_for(static_cast<long>(cs.size()), hardware_threads(), [&](long method) {
         const auto i = static_cast<std::size_t>(method);
         FigureData& d = parts[i];
@@ -304,9 +306,18 @@ FigureData comparison_figure_data(const std::vector<MethodComparison>& cs, const
         const auto p95 = magnitudes.begin() + static_cast<std::ptrdiff_t>(0.95 * static_cast<double>(magnitudes.size() - 1));
         std::nth_element(magnitudes.begin(), p95, magnitudes.end());
         const double scale = *p95 > 0.0 ? 0.1 * diagonal / *p95 : 0.0;
-        for (const Sample& q : samples) d.combs.push_back({index, q.x, q.y, q.x - scale * q.kappa * q.nx, q.y - scale * q.kappa * q.ny});
+        const std::size_t teeth_stride = (samples.size() + kMaxCombTeeth - 2) / (kMaxCombTeeth - 1);  // ≤ kMaxCombTeeth − 1 strided teeth, and the last
+        comb_scale[i] = scale;
+        comb_stride[i] = static_cast<int>(std::max<std::size_t>(teeth_stride, 1));
+        for (std::size_t k = 0; k < samples.size(); ++k) {
+            if (k % static_cast<std::size_t>(comb_stride[i]) != 0 && k + 1 != samples.size()) continue;
+            const Sample& q = samples[k];
+            d.combs.push_back({index, q.x, q.y, q.x - scale * q.kappa * q.nx, q.y - scale * q.kappa * q.ny});
+        }
     });
     FigureData d;
+    d.comb_scale = std::move(comb_scale);
+    d.comb_stride = std::move(comb_stride);
     for (FigureData& part : parts) {
         std::move(part.curves.begin(), part.curves.end(), std::back_inserter(d.curves));
         std::move(part.profiles.begin(), part.profiles.end(), std::back_inserter(d.profiles));
@@ -315,7 +326,9 @@ FigureData comparison_figure_data(const std::vector<MethodComparison>& cs, const
     return d;
 }
 
-std::vector<std::string> figure_methods_header() { return {"index", "method", "curves_first", "curves_count", "curvature_first", "curvature_count", "combs_first", "combs_count"}; }
+std::vector<std::string> figure_methods_header() {
+    return {"index", "method", "curves_first", "curves_count", "curvature_first", "curvature_count", "combs_first", "combs_count", "comb_stride", "comb_scale"};
+}
 
 std::vector<std::vector<std::string>> figure_methods_rows(const std::vector<MethodComparison>& cs, const FigureData& d) {
     std::vector<std::vector<std::string>> out;
@@ -334,6 +347,11 @@ std::vector<std::vector<std::string>> figure_methods_rows(const std::vector<Meth
             out[i].push_back(std::to_string(first[i]));
             out[i].push_back(std::to_string(count[i]));
         }
+    }
+    for (std::size_t i = 0; i < cs.size(); ++i) {
+        const bool comb = i < d.comb_stride.size() && d.comb_stride[i] > 0;
+        out[i].push_back(comb ? std::to_string(d.comb_stride[i]) : "0");  // 0 (not empty): the plot script reads the column as words
+        out[i].push_back(comb ? format_number(d.comb_scale[i], 6) : "0");
     }
     return out;
 }

@@ -87,7 +87,10 @@ std::string comparison_markdown(const std::vector<MethodComparison>& c, bool clo
 /// profile (method index, s, κ), `per_span` per span with both ends of every span; the curvature
 /// comb (method index, x, y, tooth end x, y), the tooth r − c·κ·n (n the left unit normal), c per
 /// method such that the 95th percentile of |κ| draws 10 % of the data diagonal (a spike shows as a
-/// long tooth without flattening the rest).
+/// long tooth without flattening the rest). A comb has at most kMaxCombTeeth teeth: every
+/// comb_stride-th curve sample of the method (the first and the last always), so that a panel
+/// stays readable and cheap to draw however long the input; comb_scale and comb_stride record, per
+/// method, the length factor c and that stride (methods.csv prints both).
 /// Long inputs: only every `span_stride`-th span is sampled (the arc length s still runs over every
 /// span), so a figure of 10^5 spans stays a few MB; figure_sampling(spans, budget) picks per_span
 /// (≤ 32) and the stride for at most about `budget` samples per method (a sampled span gives
@@ -96,7 +99,11 @@ struct FigureData {
     std::vector<std::vector<double>> curves;  ///< curve samples (method index, x, y[, z])
     std::vector<std::vector<double>> profiles;  ///< the curvature profiles (method index, s, κ[, τ])
     std::vector<std::vector<double>> combs;  ///< the comb teeth (method index, x, y, tip x, tip y)
+    std::vector<double> comb_scale;  ///< per method: c, the tooth length per unit curvature (0: no comb)
+    std::vector<int> comb_stride;  ///< per method: a tooth at every comb_stride-th sample (0: no comb)
 };
+/// The most teeth a method's curvature comb draws.
+inline constexpr int kMaxCombTeeth = 1000;
 /// How densely the figure data sample a curve.
 struct FigureSampling {
     int per_span = 32;  ///< samples per sampled span
@@ -109,7 +116,7 @@ FigureData comparison_figure_data(const std::vector<MethodComparison>& c, const 
 
 /// The methods table of the figure data (methods.csv): index, method, and for each of curves,
 /// curvature and combs the first data row of that method (0-based after the header) and its row
-/// count. A method's rows are consecutive, so the plot script reads them with gnuplot's
+/// count; then comb_stride and comb_scale (0 for a method without a comb). A method's rows are consecutive, so the plot script reads them with gnuplot's
 /// `every ::first::last`, which stops there — filtering whole files per panel costs methods² rows.
 std::vector<std::string> figure_methods_header();
 /// The rows of methods.csv.
