@@ -15,6 +15,12 @@
 //  - BM_ConstructFresh/<method>/1000000: the same, but the free memory is returned to the kernel
 //    (malloc_trim, outside the timing) before each iteration, so the construction's arrays are
 //    fresh pages: what one run of the `cagd` command sees. Reported beside the target, not judged.
+//  - BM_RawBoost/<pchip|makima|catmull_rom>/1000000: the peers the boost-* methods wrap, used as a
+//    user would: chord-length parameters and one pchip (makima) per coordinate, or one centripetal
+//    catmull_rom over the points; target: each boost-* method within 1.5× of it, and hermite-a/b
+//    within 1.3× of raw pchip (median of 3).
+//  - BM_SpacePseudoSpline/100000: the registry's pseudo-spline on 3-D points (the spans from the
+//    cached space table, the table loaded outside the timing); target ≥ 10^5 points/s.
 //  - BM_Jet/<method>: Curve::jet_into(u, 2) at 10^6 parameters of the curve through 10^4 points.
 //    Baseline BM_JetHandLoop: the same jets by an inline loop over the same node and derivative
 //    arrays, without virtual calls or checks. Target: within 1.5× of it. Both are run five times and
@@ -22,6 +28,14 @@
 #include <benchmark/benchmark.h>
 
 #include <malloc.h>
+
+#include <array>
+#include <cmath>
+// Boost 1.74's pchip.hpp and makima.hpp call isnan unqualified.
+using std::isnan;
+#include <boost/math/interpolators/catmull_rom.hpp>
+#include <boost/math/interpolators/makima.hpp>
+#include <boost/math/interpolators/pchip.hpp>
 
 #include <cmath>
 #include <string>
@@ -58,6 +72,57 @@ void construct(benchmark::State& state, const std::string& method, bool fresh_me
 }
 
 void BM_Construct(benchmark::State& state, const std::string& method) { construct(state, method, false); }
+
+std::vector<double> chord_parameters(const PointList& p) {
+    std::vector<double> tau{0.0};
+    for (Eigen::Index k = 1; k < p.rows(); ++k) tau.push_back(tau.back() + (p.row(k) - p.row(k - 1)).norm());
+    return tau;
+}
+
+template <class Interpolator>
+void raw_boost_componentwise(benchmark::State& state) {
+    if (!allocator_keeps_memory) state.SkipWithError("mallopt failed");
+    const PointList p = walk(state.range(0));
+    for (auto _ : state) {
+        const std::vector<double> tau = chord_parameters(p);
+        std::vector<double> tx = tau, x(p.col(0).data(), p.col(0).data() + p.rows()), ty = tau, y(p.col(1).data(), p.col(1).data() + p.rows());
+        const Interpolator fx(std::move(tx), std::move(x)), fy(std::move(ty), std::move(y));
+        benchmark::DoNotOptimize(fx(1.0) + fy(1.0));
+    }
+    state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+void BM_RawBoostPchip(benchmark::State& state) { raw_boost_componentwise<boost::math::interpolators::pchip<std::vector<double>>>(state); }
+void BM_RawBoostMakima(benchmark::State& state) { raw_boost_componentwise<boost::math::interpolators::makima<std::vector<double>>>(state); }
+void BM_RawBoostCatmullRom(benchmark::State& state) {
+    if (!allocator_keeps_memory) state.SkipWithError("mallopt failed");
+    const PointList p = walk(state.range(0));
+    for (auto _ : state) {
+        std::vector<std::array<double, 2>> pts(static_cast<std::size_t>(p.rows()));
+        for (Eigen::Index k = 0; k < p.rows(); ++k) pts[static_cast<std::size_t>(k)] = {p(k, 0), p(k, 1)};
+        const boost::math::catmull_rom<std::array<double, 2>> cr(std::move(pts), false, 0.5);
+        benchmark::DoNotOptimize(cr(0.5));
+    }
+    state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+
+// A space random walk: the planar walk lifted by a slow helix-like height.
+PointList space_walk(long n) {
+    const PointList w = walk(n);
+    PointList p(w.rows(), 3);
+    p.leftCols(2) = w;
+    for (Eigen::Index k = 0; k < w.rows(); ++k) p(k, 2) = 0.5 * std::sin(0.3 * static_cast<double>(k));
+    return p;
+}
+void BM_SpacePseudoSpline(benchmark::State& state) {
+    const PointList p = space_walk(state.range(0));
+    methods::interpolate("pseudo-spline", space_walk(20), false);  // the cached tables, outside the timing
+    for (auto _ : state) {
+        const methods::InterpolationResult r = methods::interpolate("pseudo-spline", p, false);
+        if (!r.outcome.ok()) state.SkipWithError(r.outcome.message.c_str());
+        benchmark::DoNotOptimize(r.interpolant);
+    }
+    state.SetItemsProcessed(state.iterations() * state.range(0));
+}
 void BM_ConstructFresh(benchmark::State& state, const std::string& method) { construct(state, method, true); }
 
 constexpr long kJetPoints = 10000, kJetParameters = 1000000;
@@ -168,4 +233,8 @@ const int registered = [] {
 
 }  // namespace
 
+BENCHMARK(BM_RawBoostPchip)->Name("BM_RawBoost/pchip")->Arg(1000000)->Unit(benchmark::kMillisecond)->Repetitions(3)->ReportAggregatesOnly(true);
+BENCHMARK(BM_RawBoostMakima)->Name("BM_RawBoost/makima")->Arg(1000000)->Unit(benchmark::kMillisecond)->Repetitions(3)->ReportAggregatesOnly(true);
+BENCHMARK(BM_RawBoostCatmullRom)->Name("BM_RawBoost/catmull_rom")->Arg(1000000)->Unit(benchmark::kMillisecond)->Repetitions(3)->ReportAggregatesOnly(true);
+BENCHMARK(BM_SpacePseudoSpline)->Arg(100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_JetHandLoop)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);

@@ -116,8 +116,6 @@ Eigen::MatrixXd span_nodes(const PointList& points, bool closed) {
     return n;
 }
 
-Eigen::RowVectorXd unit(const Eigen::RowVectorXd& v) { return v / v.norm(); }
-
 }  // namespace
 
 PiecewiseHermiteCurve cubic_spline_interpolant(const PointList& points, ParameterSpacing spacing, bool closed) {
@@ -171,39 +169,62 @@ PiecewiseHermiteCurve cubic_spline_interpolant(const PointList& points, Paramete
     return PiecewiseHermiteCurve(std::move(nodes), std::move(d0), std::move(d1));
 }
 
-Eigen::MatrixXd hermite_tangent_directions(const PointList& points, TangentRule rule, bool closed) {
-    const char* who = rule == TangentRule::circle ? "hermite_tangent_directions (circle, Hermite B)" : "hermite_tangent_directions (chord of neighbours, Hermite A)";
-    require_valid_points(points, (closed || rule == TangentRule::circle) ? 3 : 2, true, closed, who);
-    const Eigen::Index n = points.rows();
-    Eigen::MatrixXd t(n, points.cols());
-    const auto interior = [&](Eigen::Index i, Eigen::Index im, Eigen::Index ip) {
-        const Eigen::RowVectorXd a = points.row(i) - points.row(im), b = points.row(ip) - points.row(i);
-        Eigen::RowVectorXd d =
-            rule == TangentRule::circle ? Eigen::RowVectorXd(b.norm() / a.norm() * a + a.norm() / b.norm() * b) : Eigen::RowVectorXd(points.row(ip) - points.row(im));
+namespace {
+
+// The directions of hermite_tangent_directions with rows of type Row: Eigen::RowVector3d (planar
+// points padded with z = 0, which changes no norm or dot product) so that no row allocates (at
+// 10^6 points four temporaries per point took a quarter of the construction), or RowVectorXd.
+template <class Row>
+Eigen::MatrixXd tangent_directions_with(const PointList& points, TangentRule rule, bool closed, const char* who) {
+    const Eigen::Index n = points.rows(), dim = points.cols();
+    Eigen::MatrixXd t(n, dim);
+    const auto at = [&](Eigen::Index i) -> Row {
+        if constexpr (Row::SizeAtCompileTime == Eigen::Dynamic) {
+            return points.row(i);
+        } else {
+            Row r = Row::Zero();
+            r.head(dim) = points.row(i);
+            return r;
+        }
+    };
+    const auto unit_row = [](const Row& v) -> Row { return v / v.norm(); };
+    const auto put = [&](Eigen::Index i, const Row& r) { t.row(i) = r.head(dim); };
+    const auto interior = [&](Eigen::Index i, Eigen::Index im, Eigen::Index ip) -> Row {
+        const Row pi = at(i), a = pi - at(im), b = at(ip) - pi;
+        const double la = a.norm(), lb = b.norm();
+        const Row d = rule == TangentRule::circle ? Row(lb / la * a + la / lb * b) : Row(at(ip) - at(im));
         // A reversal leaves d = 0 (Hermite A: P_{i−1} = P_{i+1}) or tiny by cancellation.
-        if (d.norm() <= 1e-14 * (a.norm() + b.norm()))
+        if (d.norm() <= 1e-14 * (la + lb))
             fail_input(who, "the curve reverses at point " + std::to_string(i) + " (turning angle π), where no tangent direction is defined");
-        return unit(d);
+        return unit_row(d);
     };
     for (Eigen::Index i = 0; i < n; ++i) {
         if (closed || (i > 0 && i < n - 1)) {
-            t.row(i) = interior(i, (i - 1 + n) % n, (i + 1) % n);
+            put(i, interior(i, (i - 1 + n) % n, (i + 1) % n));
             continue;
         }
         if (rule == TangentRule::chord_of_neighbours) {
-            t.row(i) = i == 0 ? unit(points.row(1) - points.row(0)) : unit(points.row(n - 1) - points.row(n - 2));
+            put(i, i == 0 ? unit_row(at(1) - at(0)) : unit_row(at(n - 1) - at(n - 2)));
             continue;
         }
         // Circle end: reflect the middle tangent of the three end points.
         if (i == 0) {
-            const Eigen::RowVectorXd t1 = interior(1, 0, 2), ah = unit(points.row(1) - points.row(0));
-            t.row(0) = 2.0 * t1.dot(ah) * ah - t1;
+            const Row t1 = interior(1, 0, 2), ah = unit_row(at(1) - at(0));
+            put(0, 2.0 * t1.dot(ah) * ah - t1);
         } else {
-            const Eigen::RowVectorXd tm = interior(n - 2, n - 3, n - 1), bh = unit(points.row(n - 1) - points.row(n - 2));
-            t.row(n - 1) = 2.0 * tm.dot(bh) * bh - tm;
+            const Row tm = interior(n - 2, n - 3, n - 1), bh = unit_row(at(n - 1) - at(n - 2));
+            put(n - 1, 2.0 * tm.dot(bh) * bh - tm);
         }
     }
     return t;
+}
+
+}  // namespace
+
+Eigen::MatrixXd hermite_tangent_directions(const PointList& points, TangentRule rule, bool closed) {
+    const char* who = rule == TangentRule::circle ? "hermite_tangent_directions (circle, Hermite B)" : "hermite_tangent_directions (chord of neighbours, Hermite A)";
+    require_valid_points(points, (closed || rule == TangentRule::circle) ? 3 : 2, true, closed, who);
+    return points.cols() <= 3 ? tangent_directions_with<Eigen::RowVector3d>(points, rule, closed, who) : tangent_directions_with<Eigen::RowVectorXd>(points, rule, closed, who);
 }
 
 PiecewiseHermiteCurve hermite_interpolant(const PointList& points, const Eigen::MatrixXd& directions, bool closed) {
@@ -211,7 +232,7 @@ PiecewiseHermiteCurve hermite_interpolant(const PointList& points, const Eigen::
     require_valid_points(points, closed ? 3 : 2, true, closed, who);
     if (directions.rows() != points.rows() || directions.cols() != points.cols())
         fail_input(who, "needs one direction per point, got " + std::to_string(directions.rows()) + " for " + std::to_string(points.rows()) + " points");
-    const Eigen::MatrixXd nodes = span_nodes(points, closed);
+    Eigen::MatrixXd nodes = span_nodes(points, closed);
     const Eigen::Index spans = nodes.rows() - 1, n = points.rows();
     Eigen::MatrixXd d0(spans, points.cols()), d1(spans, points.cols());
     for (Eigen::Index k = 0; k < spans; ++k) {
@@ -219,7 +240,7 @@ PiecewiseHermiteCurve hermite_interpolant(const PointList& points, const Eigen::
         d0.row(k) = l * directions.row(k);
         d1.row(k) = l * directions.row((k + 1) % n);
     }
-    return PiecewiseHermiteCurve(nodes, d0, d1);
+    return PiecewiseHermiteCurve(std::move(nodes), std::move(d0), std::move(d1));
 }
 
 }  // namespace cagd::spline
