@@ -21,6 +21,10 @@
 //    within 1.3× of raw pchip (median of 3).
 //  - BM_SpacePseudoSpline/100000: the registry's pseudo-spline on 3-D points (the spans from the
 //    cached space table, the table loaded outside the timing); target ≥ 10^5 points/s.
+//  - BM_Construct/curvature-profile/100000: one Newton solve; target ≤ 50× cubic-b at 10^5.
+//  - BM_BSplineJet/<knots|between>: a cubic B-spline's jet_into(t, 2) exactly at its knots (the
+//    A2.3 values, from the table of knot jets) and at the span middles (Taylor); target: the same
+//    cost.
 //  - BM_Jet/<method>: Curve::jet_into(u, 2) at 10^6 parameters of the curve through 10^4 points.
 //    Baseline BM_JetHandLoop: the same jets by an inline loop over the same node and derivative
 //    arrays, without virtual calls or checks. Target: within 1.5× of it. Both are run five times and
@@ -42,6 +46,7 @@ using std::isnan;
 #include <vector>
 
 #include "cagd/methods/method_registry.hpp"
+#include "cagd/spline/bspline.hpp"
 #include "cagd/spline/hermite_spline.hpp"
 #include "cagd/core/random_walk.hpp"
 
@@ -236,5 +241,29 @@ const int registered = [] {
 BENCHMARK(BM_RawBoostPchip)->Name("BM_RawBoost/pchip")->Arg(1000000)->Unit(benchmark::kMillisecond)->Repetitions(3)->ReportAggregatesOnly(true);
 BENCHMARK(BM_RawBoostMakima)->Name("BM_RawBoost/makima")->Arg(1000000)->Unit(benchmark::kMillisecond)->Repetitions(3)->ReportAggregatesOnly(true);
 BENCHMARK(BM_RawBoostCatmullRom)->Name("BM_RawBoost/catmull_rom")->Arg(1000000)->Unit(benchmark::kMillisecond)->Repetitions(3)->ReportAggregatesOnly(true);
+void BM_BSplineJet(benchmark::State& state, bool at_knots) {
+    const int n = 10000, p = 3;
+    std::vector<double> knots;
+    for (int i = 0; i < n + p + 1; ++i) knots.push_back(static_cast<double>(i));
+    Eigen::MatrixXd control(n, 2);
+    for (int i = 0; i < n; ++i) control.row(i) << std::cos(0.01 * i) * i, std::sin(0.01 * i) * i;
+    const BSplineCurve c(p, knots, control);
+    std::vector<double> t;
+    for (int i = p; i < n; ++i) t.push_back(at_knots ? static_cast<double>(i) : i + 0.5);
+    JetMatrix J;
+    for (auto _ : state) {
+        double sum = 0.0;
+        for (double v : t) {
+            c.jet_into(v, 2, J);
+            sum += J(0, 0) + J(1, 1) + J(2, 0);
+        }
+        benchmark::DoNotOptimize(sum);
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<long>(t.size()));
+}
+BENCHMARK_CAPTURE(BM_BSplineJet, knots, true)->Name("BM_BSplineJet/knots");
+BENCHMARK_CAPTURE(BM_BSplineJet, between, false)->Name("BM_BSplineJet/between");
 BENCHMARK(BM_SpacePseudoSpline)->Arg(100000)->Unit(benchmark::kMillisecond);
+// The curvature-profile Newton solve, once (about 2 s); target ≤ 50× cubic-b's construction at 10^5.
+BENCHMARK_CAPTURE(BM_Construct, curvature_profile, std::string("curvature-profile"))->Name("BM_Construct/curvature-profile")->Arg(100000)->Iterations(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_JetHandLoop)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);

@@ -62,6 +62,16 @@ def wall(cmd, repeats=3):
     return best
 
 
+def wall_and_cpu(cmd):
+    """Wall-clock and CPU seconds (user + system, the children's) of one run of a command."""
+    before = os.times()
+    start = time.perf_counter()
+    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    elapsed = time.perf_counter() - start
+    after = os.times()
+    return elapsed, (after.children_user - before.children_user) + (after.children_system - before.children_system)
+
+
 def scipy_cubic_spline_rate(points):
     try:
         import numpy as np
@@ -122,6 +132,32 @@ def main():
                 rows.append(("pseudo-spline (exact tangents) construction at 10^6 (excluded by the target)", f"{r / 1e6:.1f} M points/s", beside, "—"))
                 continue
             rows.append((f"{m} construction at 10^6 ≥ 5 M points/s (memory reused)", f"{r / 1e6:.1f} M points/s", beside, "met" if r >= 5e6 else "not met"))
+    # Constructions beside their peers at 10^6 (medians of 3), and the two iterative ones.
+    def ratio_row(target, ours_name, peer_name, limit, peer_label):
+        ours, peer = bench.get(ours_name), bench.get(peer_name)
+        if ours and peer:
+            ratio = seconds(ours) / seconds(peer)
+            rows.append((target, f"{ratio:.2f}× ({seconds(ours) * 1e3:.0f} ms)", f"{peer_label} {seconds(peer) * 1e3:.0f} ms", "met" if ratio <= limit else "not met"))
+    for m, raw in (("boost-pchip", "pchip"), ("boost-makima", "makima"), ("boost-catmull-rom", "catmull_rom")):
+        ratio_row(f"{m} construction at 10^6 ≤ 1.5× raw Boost", f"BM_Construct/{m}/1000000", f"BM_RawBoost/{raw}/1000000", 1.5, f"raw Boost {raw}")
+    for m in ("hermite-a", "hermite-b"):
+        ratio_row(f"{m} construction at 10^6 ≤ 1.3× raw Boost pchip", f"BM_Construct/{m}/1000000", "BM_RawBoost/pchip/1000000", 1.3, "raw Boost pchip")
+    for m in ("cubic-a", "cubic-b"):
+        ratio_row(f"{m} construction at 10^6 ≤ 1.3× Boost's cardinal cubic B-spline", f"BM_Construct/{m}/1000000", "BM_boost_cardinal_cubic_b_spline_xy/1000000", 1.3, "Boost cardinal")
+    for m in ("s-spline", "b2-spline"):
+        ratio_row(f"{m} construction at 10^6 ≤ 2× Boost's cardinal cubic B-spline", f"BM_Construct/{m}/1000000", "BM_boost_cardinal_cubic_b_spline_xy/1000000", 2.0, "Boost cardinal")
+    ratio_row("pseudo-spline-exact construction at 10^6 ≤ 10× pseudo-spline-approx", "BM_Construct/pseudo-spline/1000000", "BM_Construct/pseudo-spline-approx/1000000", 10.0,
+              "pseudo-spline-approx")
+    ratio_row("curvature-profile construction at 10^5 ≤ 50× cubic-b", "BM_Construct/curvature-profile/100000/iterations:1", "BM_Construct/cubic-b/100000", 50.0, "cubic-b")
+    space = rate("BM_SpacePseudoSpline/100000")
+    if space:
+        rows.append(("space pseudo-spline (3-D points, cached space table) at 10^5 ≥ 10^5 points/s", f"{space / 1e3:.0f} k points/s", "—", "met" if space >= 1e5 else "not met"))
+    knots, between = bench.get("BM_BSplineJet/knots"), bench.get("BM_BSplineJet/between")
+    if knots and between:
+        ratio = seconds(knots) / seconds(between)
+        rows.append(("B-spline jet (order 2) exactly at the knots within 1.3× of the jet between them", f"{ratio:.2f}×", f"between the knots {1e9 / between['items_per_second']:.1f} ns/jet",
+                     "met" if ratio <= 1.3 else "not met"))
+    rows.append(("peak bytes per point during construction at 10^6 ≤ 1.5× the retained curve", "not measured: the curves do not report their retained size yet", "—", "—"))
     hand = bench.get("BM_JetHandLoop")
     for name, b in sorted(bench.items()):
         if name.startswith("BM_Jet/") and hand:
@@ -135,14 +171,23 @@ def main():
             f.write("x,y\n")
             for x, y in random_walk(100000):
                 f.write(f"{x!r},{y!r}\n")
+        small = os.path.join(tmp, "walk1000.csv")
+        with open(small, "w", encoding="utf-8") as f:
+            f.write("x,y\n")
+            for x, y in random_walk(1000):
+                f.write(f"{x!r},{y!r}\n")
         out = os.path.join(tmp, "out")
-        t_all = wall([cagd, "compare", "--in", walk, "--out", out, "--quiet"], repeats=1)
+        t_all, cpu_all = wall_and_cpu([cagd, "compare", "--in", walk, "--out", out, "--quiet"])
         t_one = wall([cagd, "compare", "--in", walk, "--out", out + "1", "--quiet", "--methods", "hermite-a"], repeats=1)
-        rows.append(("`cagd compare` on 10^5 random-walk points ≤ 10 s", f"{t_all:.1f} s", f"hermite-a only: {t_one:.1f} s", "met" if t_all <= 10 else "not met"))
+        rows.append(("`cagd compare` on 10^5 random-walk points ≤ 5 s wall, ≤ 8 CPU-s (with figures)", f"{t_all:.1f} s wall, {cpu_all:.1f} CPU-s", f"hermite-a only: {t_one:.1f} s",
+                     "met" if t_all <= 5 and cpu_all <= 8 else "not met"))
+        t_small = wall([cagd, "compare", "--in", small, "--out", out + "2", "--quiet"])
+        rows.append(("`cagd compare` on 10^3 random-walk points ≤ 1.5 s with figures", f"{t_small:.2f} s", "—", "met" if t_small <= 1.5 else "not met"))
         table1 = os.path.join(ROOT, "reference", "pseudo_energy", "data", "table1.csv")
+        subprocess.run([cagd, "analyze", "--in", table1, "--method", "pseudo-spline"], check=True, capture_output=True)  # warms the user's table cache
         t_ps = wall([cagd, "analyze", "--in", table1, "--method", "pseudo-spline"])
         t_cb = wall([cagd, "analyze", "--in", table1, "--method", "cubic-b"])
-        rows.append(("`cagd analyze --in table1 --method pseudo-spline` ≤ 0.2 s", f"{t_ps:.3f} s", f"cubic-b: {t_cb:.3f} s", "met" if t_ps <= 0.2 else "not met"))
+        rows.append(("`cagd analyze --in table1 --method pseudo-spline`, warm table cache, ≤ 0.03 s", f"{t_ps:.3f} s", f"cubic-b: {t_cb:.3f} s", "met" if t_ps <= 0.03 else "not met"))
 
     cpp_eval = bench.get("BM_EvaluateMillion")
     py_eval = python_evaluate_seconds(build)

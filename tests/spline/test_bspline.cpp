@@ -192,3 +192,34 @@ TEST(BSpline, JetIntoAndDerivativesIntoAreTheJetBitForBit) {
             EXPECT_THROW(c.derivatives_into(c.t_max() + 1.0, 1, J), InvalidInput);
         }
 }
+
+// At a knot the jet is A2.3's, bit for bit, now read from the table of knot jets: the ends and the
+// joins (both sides: jet and jet_from_left), every order up to the degree and one above, degrees
+// 1 to 7, uniform and not, clamped ends.
+TEST(BSpline, JetsAtKnotsAreTheA23ValuesBitForBit) {
+    for (int p = 1; p <= 7; ++p)
+        for (bool uniform : {true, false}) {
+            BSplineCurve free = random_curve(p, p + 6, static_cast<unsigned>(40 + p), uniform);
+            std::vector<double> knots = free.knots();
+            for (int i = 0; i <= p; ++i) {  // clamp both ends: p + 1 equal knots
+                knots[static_cast<std::size_t>(i)] = knots[static_cast<std::size_t>(p)];
+                knots[knots.size() - 1 - static_cast<std::size_t>(i)] = knots[knots.size() - 1 - static_cast<std::size_t>(p)];
+            }
+            const BSplineCurve c(p, knots, free.control_points());
+            const int n = static_cast<int>(c.control_points().rows());
+            for (int s = p; s < n; ++s)
+                for (int end = 0; end < 2; ++end) {
+                    const double t = knots[static_cast<std::size_t>(s + end)];
+                    for (int order = 0; order <= p + 1; ++order) {
+                        const Eigen::MatrixXd direct = basis_function_derivatives(p, knots, s, t, order) * c.control_points().middleRows(s - p, p + 1);
+                        const Eigen::MatrixXd ours = end == 0 ? c.jet(t, order) : c.jet_from_left(t, order);
+                        ASSERT_EQ(ours.rows(), order + 1);
+                        for (int k = 0; k <= std::min(order, p); ++k)
+                            for (int e = 0; e < 2; ++e) ASSERT_EQ(ours(k, e), direct(k, e)) << "degree " << p << " span " << s << " end " << end << " order " << order << " row " << k;
+                    }
+                }
+            // A clamped end gives its control point, to rounding (A2.3 forms 1 as r·(1/r)).
+            EXPECT_LE((c.jet(c.t_min(), 0).row(0) - c.control_points().row(0)).norm(), 4e-16);
+            EXPECT_LE((c.jet(c.t_max(), 0).row(0) - c.control_points().row(n - 1)).norm(), 4e-16);
+        }
+}

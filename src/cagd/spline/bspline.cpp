@@ -177,6 +177,27 @@ const double* BSplineCurve::taylor(int span) const {
     return taylor_.value.data() + static_cast<std::size_t>((span - degree_) * (degree_ + 1) * dimension());
 }
 
+const double* BSplineCurve::knot_jet(int span, bool at_end) const {
+    if (degree_ + 1 > kStackOrder) fail_input("cagd::BSplineCurve::knot_jet", "the table of knot jets holds degrees up to 7");
+    std::call_once(*knot_jets_.once, [&] {
+        const int p = degree_, dim = dimension(), n = static_cast<int>(control_.rows());
+        std::vector<double> c(static_cast<std::size_t>((n - p) * 2 * (p + 1) * dim), 0.0);
+        for (int s = p; s < n; ++s) {
+            if (!(knots_[static_cast<std::size_t>(s)] < knots_[static_cast<std::size_t>(s) + 1])) continue;  // empty span: never located
+            for (int end = 0; end < 2; ++end) {
+                Eigen::MatrixXd d;
+                BasisDerivatives ders;  // the very product the direct path forms (degree ≤ 7 only: see taylor_jet)
+                basis_function_derivatives_into(p, knots_, s, knots_[static_cast<std::size_t>(s + end)], p, ders);
+                d.noalias() = ders * control_.middleRows(s - p, p + 1);
+                for (int k = 0; k <= p; ++k)
+                    for (int e = 0; e < dim; ++e) c[static_cast<std::size_t>((((s - p) * 2 + end) * (p + 1) + k) * dim + e)] = d(k, e);
+            }
+        }
+        knot_jets_.value = std::move(c);
+    });
+    return knot_jets_.value.data() + static_cast<std::size_t>((((span - degree_) * 2 + (at_end ? 1 : 0)) * (degree_ + 1)) * dimension());
+}
+
 namespace {
 // k!/(k−d)! = k (k−1) ⋯ (k−d+1), products of small integers: exact in double. From a table for
 // the orders of the stack path (k < kStackOrder), computed otherwise — the same value.
@@ -237,10 +258,19 @@ void taylor_rows(int p, int dim, const double* c, double h, int first, int last,
 template <class Out>
 void BSplineCurve::taylor_jet(int span, double t, int order, Out& out) const {
     const int p = degree_, dim = dimension();
-    if (t == knots_[static_cast<std::size_t>(span)] || t == knots_[static_cast<std::size_t>(span) + 1]) {
-        // At a knot (the curve's ends, the joins) A2.3 itself: there the basis functions whose
-        // support ends are exactly zero, so an end reproduces its data point and a control point
-        // changes nothing beyond its support, bit for bit (the Taylor form leaves ε there).
+    const bool at_start = t == knots_[static_cast<std::size_t>(span)];
+    if (at_start || t == knots_[static_cast<std::size_t>(span) + 1]) {
+        // At a knot (the curve's ends, the joins) the A2.3 values: there the basis functions whose
+        // support ends are exactly zero, so a control point changes nothing beyond its support,
+        // bit for bit (the Taylor form leaves ε there). Rows
+        // 0..p come from the table of knot jets; higher orders run A2.3.
+        if (order <= p && p + 1 <= kStackOrder) {  // (above degree 7 Eigen's product may sum in another order: computed here)
+            const double* c = knot_jet(span, !at_start);
+            out.resize(order + 1, dim);
+            for (int k = 0; k <= order; ++k)
+                for (int e = 0; e < dim; ++e) out(k, e) = c[k * dim + e];
+            return;
+        }
         if (p + 1 <= kStackOrder && order + 1 <= kStackOrder) {
             BasisDerivatives ders;
             basis_function_derivatives_into(p, knots_, span, t, order, ders);

@@ -8,8 +8,12 @@
 /// c_k = r^(k)(m_s)/k! (basis-function derivatives by Piegl & Tiller, The NURBS Book, algorithm
 /// A2.3, once per span, on the first evaluation: thread-safe), then Horner in h = t − m_s
 /// (|h| ≤ half the span, which keeps the rounding at the ends small): O(p·order) per point. At a
-/// knot itself A2.3 directly, as before: the ends reproduce their data points exactly and a
-/// control point changes nothing beyond its support, bit for bit. (A2.3 at every point, as before 2026-11-24, cost 3–4 times as much; the
+/// knot itself the A2.3 values, as before: there the basis functions whose support ends are
+/// exactly zero, so a control point changes nothing beyond its support, bit for bit (the locality
+/// checks rely on it; tested). (A clamped end gives its control point to rounding, not exactly:
+/// A2.3 forms the end basis value 1 as r·(1/r).) They are computed once per span end with the Taylor
+/// coefficients (rows 0..p) and read from that table, so a jet at a knot costs what one off the
+/// knots does; orders above p at a knot run A2.3 itself. (A2.3 at every point, as before 2026-11-24, cost 3–4 times as much; the
 /// two agree to rounding, a few ε of the jet's terms.)
 /// Knot insertion: Boehm's algorithm (exact, convex combinations). Degree elevation:
 /// the elevated curve lies exactly in the spline space of degree p+1 whose knots are
@@ -83,12 +87,14 @@ private:
     double span_middle(int span) const;
     template <class Out>
     void taylor_jet(int span, double t, int order, Out& out) const;
+    const double* knot_jet(int span, bool at_end) const;  ///< rows 0..p of the A2.3 jet at the span's start or end knot
 
     int degree_;
     std::vector<double> knots_;
     Eigen::MatrixXd control_;
     mutable OnceCache<std::vector<double>> taylor_;  ///< span s − p: (p + 1) × dimension, c_0 … c_p, row-major
     mutable OnceCache<SpanBuckets> span_buckets_;
+    mutable OnceCache<std::vector<double>> knot_jets_;  ///< span s − p: start then end, each (p + 1) × dimension, row-major
 };
 
 /// Derivatives 0..order of the p+1 basis functions non-zero on span s at t:
