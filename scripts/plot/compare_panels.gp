@@ -31,6 +31,7 @@ curves_first = column_words("curves_first"); curves_count = column_words("curves
 kappa_first = column_words("curvature_first"); kappa_count = column_words("curvature_count")
 combs_first = column_words("combs_first"); combs_count = column_words("combs_count")
 comb_stride = column_words("comb_stride"); comb_scale = column_words("comb_scale")
+statuses = column_words("status")
 px = colnum(f_points, "x"); py = colnum(f_points, "y"); pz = colnum(f_points, "z")
 cx = colnum(f_curves, "x"); cy = colnum(f_curves, "y"); cz = colnum(f_curves, "z")
 bx = colnum(f_combs, "x"); by = colnum(f_combs, "y"); btx = colnum(f_combs, "tip_x"); bty = colnum(f_combs, "tip_y")
@@ -44,6 +45,13 @@ first(list, i) = int(word(list, i))
 has(counts, i) = int(word(counts, i)) > 0
 last(list, counts, i) = has(counts, i) ? int(word(list, i)) + int(word(counts, i)) - 1 : int(word(list, i))
 label(i, counts) = word(names, i).(has(counts, i) ? '' : ' (none)')
+# 20 distinct colours (matplotlib's tab20 order: each dark colour then its light one), then dashes:
+# a method's colour and dash type are its own up to 20 methods, and the pair up to 100.
+palette = "#1f77b4 #ff7f0e #2ca02c #d62728 #9467bd #8c564b #e377c2 #7f7f7f #bcbd22 #17becf #aec7e8 #ffbb78 #98df8a #ff9896 #c5b0d5 #c49c94 #f7b6d2 #c7c7c7 #dbdb8d #9edae5"
+colour(i) = word(palette, (i - 1) % 20 + 1)
+dash(i) = int((i - 1) / 20) + 1
+# Why a method has no curve, comb or profile: its status (methods.csv, spaces written as '-').
+status(i) = word(statuses, i)
 cols = n <= 4 ? n : (n <= 9 ? 3 : (n <= 16 ? 4 : 5))
 rows = int((n + cols - 1) / cols)
 do for [t in formats] {
@@ -58,14 +66,16 @@ do for [t in formats] {
   set ylabel 'y'
   if (space) {
     set size noratio
+    set view 60, 30, 0.8, 1.0
     set view equal xyz
+    set xyplane relative 0
     set zlabel 'z'
-    splot for [i=1:n] f_curves skip 1 every ::first(curves_first, i)::last(curves_first, curves_count, i) using (has(curves_count, i) ? column(cx) : NaN):(column(cy)):(column(cz)) with lines lw 1.5 lc i title label(i, curves_count), \
+    splot for [i=1:n] f_curves skip 1 every ::first(curves_first, i)::last(curves_first, curves_count, i) using (has(curves_count, i) ? column(cx) : NaN):(column(cy)):(column(cz)) with lines lw 1.5 lc rgb colour(i) dt dash(i) title label(i, curves_count), \
           f_points skip 1 every point_every using (column(px)):(column(py)):(column(pz)) with points pt 7 ps 0.8 lc rgb '#000000' title 'data'
     unset view
     unset zlabel
   } else {
-    plot for [i=1:n] f_curves skip 1 every ::first(curves_first, i)::last(curves_first, curves_count, i) using (has(curves_count, i) ? column(cx) : NaN):(column(cy)) with lines lw 1.5 lc i title label(i, curves_count), \
+    plot for [i=1:n] f_curves skip 1 every ::first(curves_first, i)::last(curves_first, curves_count, i) using (has(curves_count, i) ? column(cx) : NaN):(column(cy)) with lines lw 1.5 lc rgb colour(i) dt dash(i) title label(i, curves_count), \
          f_points skip 1 every point_every using (column(px)):(column(py)) with points pt 7 ps 0.8 lc rgb '#000000' title 'data'
   }
   unset output
@@ -95,7 +105,14 @@ do for [t in formats] {
            f_curves skip 1 every ::first(curves_first, i)::last(curves_first, curves_count, i) using (column(cx)):(column(cy)) with lines lw 1.5 lc rgb '#08306b', \
            f_points skip 1 every point_every using (column(px)):(column(py)) with points pt 7 ps 0.5 lc rgb '#000000'
     } else {
-      plot f_points skip 1 every point_every using (column(px)):(column(py)) with points pt 7 ps 0.5 lc rgb '#000000'
+      set label 1 'no comb: '.status(i).' (see the table)' at graph 0.5, graph 0.92 center noenhanced
+      if (has(curves_count, i)) {  # a curve without a comb (a cusp): the curve still shows
+        plot f_curves skip 1 every ::first(curves_first, i)::last(curves_first, curves_count, i) using (column(cx)):(column(cy)) with lines lw 1.5 lc rgb '#08306b', \
+             f_points skip 1 every point_every using (column(px)):(column(py)) with points pt 7 ps 0.5 lc rgb '#000000'
+      } else {
+        plot f_points skip 1 every point_every using (column(px)):(column(py)) with points pt 7 ps 0.5 lc rgb '#000000'
+      }
+      unset label 1
     }
   }
   unset multiplot
@@ -116,7 +133,7 @@ do for [t in formats] {
     if (int(word(kappa_count, i)) > 0) {
       plot f_kappa skip 1 every ::first(kappa_first, i)::last(kappa_first, kappa_count, i) using (column(ks)):(column(kk)) with lines lw 1.2 lc rgb '#d62728'
     } else {
-      set label 1 'no curvature (see the table)' at graph 0.5, graph 0.5 center
+      set label 1 'no curvature: '.status(i).' (see the table)' at graph 0.5, graph 0.5 center noenhanced
       plot [0:1] [-1:1] NaN notitle
       unset label 1
     }
@@ -140,7 +157,7 @@ do for [t in formats] {
     if (int(word(kappa_count, i)) > 0) {
       plot f_kappa skip 1 every ::first(kappa_first, i)::last(kappa_first, kappa_count, i) using (column(ks)):(column(kt)) with lines lw 1.2 lc rgb '#2ca02c'
     } else {
-      set label 1 'no torsion (see the table)' at graph 0.5, graph 0.5 center
+      set label 1 'no torsion: '.status(i).' (see the table)' at graph 0.5, graph 0.5 center noenhanced
       plot [0:1] [-1:1] NaN notitle
       unset label 1
     }

@@ -12,7 +12,8 @@
 ///                                    moves how many spans, a span moving when some sample at the
 ///                                    same fraction of its parameter interval moves by more than
 ///                                    10⁻⁹ × diagonal (9 samples per span)
-///   seconds                          wall time of interpolate() (not deterministic)
+///   seconds                          wall time of interpolate() (not deterministic), the
+///                                    method's shared tables loaded before (Method::prepare)
 ///
 /// Space points (3 columns): no enclosed area and no inflections; the largest |τ| instead
 /// (analysis/fairness_measures); the figure data are the curves in 3-D and κ(s), τ(s), no combs.
@@ -116,7 +117,8 @@ FigureData comparison_figure_data(const std::vector<MethodComparison>& c, const 
 
 /// The methods table of the figure data (methods.csv): index, method, and for each of curves,
 /// curvature and combs the first data row of that method (0-based after the header) and its row
-/// count; then comb_stride and comb_scale (0 for a method without a comb). A method's rows are consecutive, so the plot script reads them with gnuplot's
+/// count; then comb_stride and comb_scale (0 for a method without a comb), and the status (as
+/// the measures table's, spaces written as '-': one word for the plot script). A method's rows are consecutive, so the plot script reads them with gnuplot's
 /// `every ::first::last`, which stops there — filtering whole files per panel costs methods² rows.
 std::vector<std::string> figure_methods_header();
 /// The rows of methods.csv.

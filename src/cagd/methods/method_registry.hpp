@@ -111,6 +111,10 @@ struct Method {
     /// Builds by an iterative nonlinear solve, several times the cost of the direct methods on long
     /// inputs: a parallel comparison starts these first so that they do not finish last alone.
     bool iterative = false;
+    /// Loads what the method's builds share (the pseudo-spline's tables), given the points'
+    /// dimension: a timing of one build (compare's `seconds`) then excludes it. Empty for methods
+    /// that share nothing.
+    std::function<void(const ParameterValues&, int dimension)> prepare{};
 };
 
 /// Every method, in the order of the tables.

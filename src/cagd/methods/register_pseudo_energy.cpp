@@ -110,6 +110,11 @@ std::vector<Method> pseudo_energy_methods() {
             },
         .build = build_pseudo_spline,
         .presets = {{"pseudo-spline-none", {{"optimize", "none"}}}, {"pseudo-spline-exact", {{"optimize", "exact"}}}, {"pseudo-spline-approx", {{"optimize", "approx"}}}},
+        .prepare =
+            [](const ParameterValues& v, int dimension) {
+                if (!v.has("table")) default_pseudo_spline_tables();
+                if (dimension == 3 && v.text("space-spans") == "table" && !v.has("space-table")) default_space_table();
+            },
     });
     r.push_back({
         .name = "cubic-a",
