@@ -45,6 +45,7 @@ using std::isnan;
 #include <string>
 #include <vector>
 
+#include "cagd/methods/method_parameter_curve.hpp"
 #include "cagd/methods/method_registry.hpp"
 #include "cagd/spline/bspline.hpp"
 #include "cagd/spline/hermite_spline.hpp"
@@ -190,11 +191,13 @@ void BM_JetHandLoop(benchmark::State& state) {
     state.SetItemsProcessed(state.iterations() * kJetParameters);
 }
 
-// The loop behind the Python module's Curve.evaluate (python/cagd_module.cpp), in C++: positions of
-// a cubic-b curve through 1000 points at 10^6 parameters into one array. scripts/bench-targets.py
+// The loop behind the Python module's Curve.evaluate (python/bindings.hpp), in C++: positions of
+// a cubic-b curve through 1000 points, in its chord-length parameter, at 10^6 parameters into one
+// array. scripts/bench-targets.py
 // times the module's evaluate on the same curve size and count against it.
 void BM_EvaluateMillion(benchmark::State& state) {
-    const auto c = methods::interpolate("cubic-b", walk(1000), false).interpolant->curve;
+    // In the method's parameter (chord length), as Python's Curve evaluates it.
+    const auto c = std::make_shared<methods::MethodParameterCurve>(*methods::interpolate("cubic-b", walk(1000), false).interpolant);
     const int count = 1000000;
     std::vector<double> t(count), out(2 * static_cast<std::size_t>(count));
     for (int k = 0; k < count; ++k) t[static_cast<std::size_t>(k)] = c->t_min() + (c->t_max() - c->t_min()) * k / (count - 1);

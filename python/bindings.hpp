@@ -123,7 +123,7 @@ struct PyCurve {
     bool closed = false;   // an interpolant through closed data
     // An interpolant: `curve` is in the method's parameter τ (MethodParameterCurve), and this is the
     // same curve in the registry's span parameter u; null otherwise.
-    std::shared_ptr<const cagd::methods::MethodParameterCurve> in_tau;
+    std::shared_ptr<const cagd::methods::MethodParameterCurve> in_tau{};
 
     // Positions (derivatives = 0: shape t.shape + (dim,)) or jets (t.shape + (derivatives + 1,
     // dim)): rows are r, r', r'', … at each t. A number (or 0-d array) gives (dim,) or (k + 1, dim).

@@ -91,7 +91,8 @@ def scipy_cubic_spline_rate(points):
 
 def python_evaluate_seconds(build):
     """Best of 5: the Python module's Curve.evaluate of a cubic-b curve through 1000 points at 10^6
-    parameters (the C++ loop is BM_EvaluateMillion), in the system interpreter."""
+    parameters (the C++ loop is BM_EvaluateMillion), with two derivatives, and scipy's CubicSpline
+    for the same three rows, in the system interpreter: (positions, jets, scipy) seconds."""
     script = (
         "import time, numpy as np, cagd\n"
         "rng = np.random.default_rng(7)\n"
@@ -100,10 +101,18 @@ def python_evaluate_seconds(build):
         "c = cagd.interpolate(p, 'cubic-b')\n"
         "t = np.linspace(*c.parameter_range, 1000000)\n"
         "best = min((lambda a: (c.evaluate(t), time.perf_counter() - a)[1])(time.perf_counter()) for _ in range(5))\n"
-        "print(best)\n")
+        "jets = min((lambda a: (c.evaluate(t, derivatives=2), time.perf_counter() - a)[1])(time.perf_counter()) for _ in range(5))\n"
+        "try:\n"
+        "    from scipy.interpolate import CubicSpline\n"
+        "    tau = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(p, axis=0).T))])\n"
+        "    cs = CubicSpline(tau, p, bc_type='natural')\n"
+        "    peer = min((lambda a: ([cs(t, nu) for nu in range(3)], time.perf_counter() - a)[1])(time.perf_counter()) for _ in range(5))\n"
+        "except ImportError:\n"
+        "    peer = float('nan')\n"
+        "print(best, jets, peer)\n")
     env = dict(os.environ, PYTHONPATH=os.path.join(build, "python"))
     r = subprocess.run(["/usr/bin/python3", "-c", script], env=env, capture_output=True, text=True)
-    return float(r.stdout) if r.returncode == 0 else None
+    return tuple(float(v) for v in r.stdout.split()) if r.returncode == 0 else None
 
 
 def main():
@@ -190,7 +199,12 @@ def main():
         rows.append(("`cagd analyze --in table1 --method pseudo-spline`, warm table cache, ≤ 0.03 s", f"{t_ps:.3f} s", f"cubic-b: {t_cb:.3f} s", "met" if t_ps <= 0.03 else "not met"))
 
     cpp_eval = bench.get("BM_EvaluateMillion")
-    py_eval = python_evaluate_seconds(build)
+    py_times = python_evaluate_seconds(build)
+    py_eval = py_times[0] if py_times else None
+    if py_times and not math.isnan(py_times[2]):
+        ratio = py_times[1] / py_times[2]
+        rows.append(("Python `Curve.evaluate(t, derivatives=2)` on 10^6 parameters ≤ 0.3× scipy's CubicSpline (three calls)", f"{py_times[1] * 1e3:.1f} ms ({ratio:.2f}×)",
+                     f"scipy {py_times[2] * 1e3:.1f} ms", "met" if ratio <= 0.3 else "not met"))
     if cpp_eval and py_eval:
         ratio = py_eval / seconds(cpp_eval)
         rows.append(("Python `Curve.evaluate` on 10^6 parameters within 2× of the C++ loop", f"{py_eval * 1e3:.1f} ms ({ratio:.2f}×)",

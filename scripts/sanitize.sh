@@ -8,7 +8,10 @@
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 build="${1:-$root/build-sanitize}"
-CXX=clang++ cmake -S "$root/tests/sanitize" -B "$build" -DCMAKE_BUILD_TYPE= >/dev/null
+# A new tree uses Ninja when it is installed (as the main build); one configured before keeps its generator.
+generator=()
+if [ ! -f "$build/CMakeCache.txt" ] && command -v ninja > /dev/null 2>&1; then generator=(-G Ninja); fi
+CXX=clang++ cmake -S "$root/tests/sanitize" -B "$build" "${generator[@]}" -DCMAKE_BUILD_TYPE= >/dev/null
 cmake --build "$build" -j"${JOBS:-2}"
 
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1"

@@ -10,6 +10,7 @@
 
 #include "cagd/analysis/curve_measures.hpp"
 #include "cagd/locality/locality_spline.hpp"
+#include "cagd/methods/method_parameter_curve.hpp"
 #include "cagd/methods/method_registry.hpp"
 
 #include "../support/messages.hpp"
@@ -95,38 +96,44 @@ TEST(Methods, EveryMethodInterpolatesWithItsDefaults) {
 }
 
 TEST(Methods, AllocationFreeJetsEqualTheAllocatingOnes) {
-    // Curve::jet_into / derivatives_into (overridden by the piecewise Hermite curves, the default
-    // elsewhere) give jet() / derivatives() bit for bit, at breakpoints and between them; and
-    // derivatives_into is jet_into without its first row, bit for bit (fairness_measures takes one
-    // for the other where it needs no position).
+    // Curve::jet_into / derivatives_into (overridden by the piecewise Hermite curves and the
+    // method-parameter wrapper, the default elsewhere) give jet() / derivatives() bit for bit, at
+    // breakpoints and between them; and derivatives_into is jet_into without its first row, bit
+    // for bit (fairness_measures takes one for the other where it needs no position). Each
+    // method's curve in u and the same curve in its own parameter (MethodParameterCurve, what
+    // Python evaluates).
     const PointList p = wave(6);
     for (const Method& m : registry()) {
         const InterpolationResult r = interpolate(m.name, p, false);
         ASSERT_TRUE(r.interpolant) << m.name;
-        const Curve& c = *r.interpolant->curve;
-        JetMatrix J;
-        for (int k = 0; k <= 40; ++k) {
-            const double t = c.t_min() + (c.t_max() - c.t_min()) * k / 40.0;
-            for (int order = 0; order < kJetCapacity; ++order) {
-                c.jet_into(t, order, J);
-                const Eigen::MatrixXd expected = c.jet(t, order);
-                ASSERT_EQ(J.rows(), expected.rows()) << m.name;
-                ASSERT_EQ(J.cols(), expected.cols()) << m.name;
-                EXPECT_TRUE((J.array() == expected.array()).all()) << m.name << " jet, t = " << t << ", order " << order;
-            }
-            for (int order = 1; order <= kJetCapacity; ++order) {
-                c.derivatives_into(t, order, J);
-                EXPECT_TRUE((J.array() == c.derivatives(t, order).array()).all()) << m.name << " derivatives, t = " << t << ", order " << order;
-                if (order < kJetCapacity) {
-                    JetMatrix full;
-                    c.jet_into(t, order, full);
-                    EXPECT_TRUE((J.array() == full.bottomRows(order).array()).all()) << m.name << " derivatives against the jet, t = " << t << ", order " << order;
+        const MethodParameterCurve in_method_parameter(*r.interpolant);
+        for (const Curve* curve : {static_cast<const Curve*>(r.interpolant->curve.get()), static_cast<const Curve*>(&in_method_parameter)}) {
+            const Curve& c = *curve;
+            const std::string which = m.name + (curve == &in_method_parameter ? " (method parameter)" : " (u)");
+            JetMatrix J;
+            for (int k = 0; k <= 40; ++k) {
+                const double t = c.t_min() + (c.t_max() - c.t_min()) * k / 40.0;
+                for (int order = 0; order < kJetCapacity; ++order) {
+                    c.jet_into(t, order, J);
+                    const Eigen::MatrixXd expected = c.jet(t, order);
+                    ASSERT_EQ(J.rows(), expected.rows()) << which;
+                    ASSERT_EQ(J.cols(), expected.cols()) << which;
+                    EXPECT_TRUE((J.array() == expected.array()).all()) << which << " jet, t = " << t << ", order " << order;
+                }
+                for (int order = 1; order <= kJetCapacity; ++order) {
+                    c.derivatives_into(t, order, J);
+                    EXPECT_TRUE((J.array() == c.derivatives(t, order).array()).all()) << which << " derivatives, t = " << t << ", order " << order;
+                    if (order < kJetCapacity) {
+                        JetMatrix full;
+                        c.jet_into(t, order, full);
+                        EXPECT_TRUE((J.array() == full.bottomRows(order).array()).all()) << which << " derivatives against the jet, t = " << t << ", order " << order;
+                    }
                 }
             }
+            EXPECT_THROW(c.jet_into(c.t_min(), kJetCapacity, J), InvalidInput) << which;
+            EXPECT_THROW(c.derivatives_into(c.t_min(), 0, J), InvalidInput) << which;
+            EXPECT_THROW(c.jet_into(c.t_max() + 1.0, 1, J), InvalidInput) << which;
         }
-        EXPECT_THROW(c.jet_into(c.t_min(), kJetCapacity, J), InvalidInput) << m.name;
-        EXPECT_THROW(c.derivatives_into(c.t_min(), 0, J), InvalidInput) << m.name;
-        EXPECT_THROW(c.jet_into(c.t_max() + 1.0, 1, J), InvalidInput) << m.name;
     }
 }
 

@@ -24,16 +24,33 @@ MethodParameterCurve::MethodParameterCurve(const Interpolant& interpolant)
         if (!(du > 0.0)) fail_input(kWho, "node parameters not ascending at span " + std::to_string(k) + " (" + full_precision(u_[k]) + ", " + full_precision(u_[k + 1]) + ")");
         tau_[k + 1] = tau_[k] + d * du;
     }
+    const auto spans = static_cast<int>(dtau_du_.size());
+    buckets_per_unit_ = spans / (tau_.back() - tau_.front());
+    bucket_span_.resize(static_cast<std::size_t>(spans));
+    int k = 0;
+    for (int b = 0; b < spans; ++b) {
+        const double left = tau_.front() + b / buckets_per_unit_;
+        while (k + 1 < spans && tau_[static_cast<std::size_t>(k) + 1] <= left) ++k;
+        bucket_span_[static_cast<std::size_t>(b)] = k;
+    }
 }
 
 int MethodParameterCurve::span_of_tau(double tau, bool from_left) const {
     if (!(tau >= tau_.front() && tau <= tau_.back()))
         fail_input(kWho, "t = " + full_precision(tau) + " outside [" + full_precision(tau_.front()) + ", " + full_precision(tau_.back()) + "] (the method's parameter)");
     const auto spans = static_cast<int>(dtau_du_.size());
-    // from the right: the span that starts at or before τ; from the left: the one that ends at or after it.
-    const auto it = from_left ? std::lower_bound(tau_.begin() + 1, tau_.end(), tau) : std::upper_bound(tau_.begin(), tau_.end(), tau);
-    const int k = static_cast<int>(it - tau_.begin()) - 1;
-    return std::clamp(k, 0, spans - 1);
+    if (from_left) {  // the span that ends at or after τ
+        const auto it = std::lower_bound(tau_.begin() + 1, tau_.end(), tau);
+        return std::clamp(static_cast<int>(it - tau_.begin()) - 1, 0, spans - 1);
+    }
+    // From the right: the last span that starts at or before τ (the last span at τ_n) — what
+    // upper_bound − 1 gives, found from τ's bucket: a step back if rounding put τ before the
+    // bucket's span, then forward over the spans that start at or before τ.
+    const auto b = static_cast<std::size_t>(std::clamp(static_cast<int>((tau - tau_.front()) * buckets_per_unit_), 0, spans - 1));
+    int k = bucket_span_[b];
+    while (k > 0 && tau_[static_cast<std::size_t>(k)] > tau) --k;
+    while (k + 1 < spans && tau_[static_cast<std::size_t>(k) + 1] <= tau) ++k;
+    return k;
 }
 
 double MethodParameterCurve::span_parameter(double tau) const {
@@ -60,6 +77,15 @@ Eigen::MatrixXd MethodParameterCurve::jet(double tau, int order) const {
     const int k = span_of_tau(tau, false);
     const auto s = static_cast<std::size_t>(k);
     return scaled(base_->jet(std::min(u_[s + 1], u_[s] + (tau - tau_[s]) / dtau_du_[s]), order), k);
+}
+
+void MethodParameterCurve::jet_into(double tau, int order, JetMatrix& out) const {
+    const int k = span_of_tau(tau, false);
+    const auto s = static_cast<std::size_t>(k);
+    base_->jet_into(std::min(u_[s + 1], u_[s] + (tau - tau_[s]) / dtau_du_[s]), order, out);
+    const double inv = 1.0 / dtau_du_[s];  // the same operations as scaled()
+    double f = 1.0;
+    for (Eigen::Index i = 1; i < out.rows(); ++i) out.row(i) *= (f *= inv);
 }
 
 Eigen::MatrixXd MethodParameterCurve::jet_from_left(double tau, int order) const {

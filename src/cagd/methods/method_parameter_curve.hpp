@@ -30,6 +30,9 @@ public:
     double t_max() const override { return tau_.back(); }
     Eigen::MatrixXd jet(double tau, int order) const override;
     Eigen::MatrixXd jet_from_left(double tau, int order) const override;
+    /// jet() into a fixed-capacity matrix: the span curve's own jet_into, then the chain rule in
+    /// place; no allocation (Python's evaluate runs it per parameter).
+    void jet_into(double tau, int order, JetMatrix& out) const override;
     std::vector<double> breakpoints() const override;
     /// τ of each data point (closed: n + 1 values, the last = t_max).
     const std::vector<double>& node_parameters() const { return tau_; }
@@ -43,6 +46,10 @@ public:
 private:
     std::shared_ptr<const Curve> base_;
     std::vector<double> u_, tau_, dtau_du_;
+    // Equal buckets over [τ_0, τ_n], one per span: bucket_span_[b] is the span holding the
+    // bucket's left end, where the search for τ starts (O(1) per point for spans of similar length).
+    std::vector<int> bucket_span_;
+    double buckets_per_unit_ = 0.0;
     int span_of_tau(double tau, bool from_left) const;
     Eigen::MatrixXd scaled(Eigen::MatrixXd j, int span) const;
 };
