@@ -18,7 +18,6 @@
 #include <fcntl.h>
 #include <unistd.h>
 
-#include <cstdio>
 #include <iostream>
 #include <new>
 #include <vector>
@@ -26,7 +25,6 @@
 #include "cli/commands.hpp"
 #include "cli/output.hpp"
 #include "cagd/core/errors.hpp"
-#include "cagd/core/user_cache.hpp"
 
 namespace {
 
@@ -42,11 +40,6 @@ void hold_closed_standard_descriptors() {
                 ::close(held);
             }
         }
-}
-
-void note_cache_build(const std::string& path, const std::string& what) {
-    if (!cagd::cli::quiet())
-        std::cerr << "cagd: building " << what << " once, into the user's cache '" << path << "' (--no-cache or CAGD_NO_CACHE=1: build it in memory each time)\n";
 }
 
 }  // namespace
@@ -71,13 +64,7 @@ int main(int argc, char** argv) {
     try {
         app.parse(argc, argv);
         set_quiet(quiet);
-        if (no_cache) cagd::set_user_cache_enabled(false);
-        cagd::set_cache_build_notice(note_cache_build);
-        if (progress_enabled())
-            cagd::set_cache_build_progress([](long done, long total) {
-                std::fprintf(stderr, "\rcagd: %ld / %ld table nodes", done, total);
-                if (done == total) std::fprintf(stderr, "\n");
-            });
+        set_up_table_cache(no_cache);
         for (const Command& c : commands)
             if (c.app->parsed()) return c.run();
     } catch (const CLI::ParseError& e) {

@@ -14,6 +14,7 @@
 #include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
 #include "cagd/core/point_csv.hpp"
+#include "cagd/core/user_cache.hpp"
 
 namespace cagd::cli {
 
@@ -99,6 +100,22 @@ bool progress_enabled() { return !quiet_flag && isatty(fileno(stderr)); }
 void set_quiet(bool on) { quiet_flag = on; }
 
 bool quiet() { return quiet_flag; }
+
+namespace {
+void note_cache_build(const std::string& path, const std::string& what) {
+    if (!quiet_flag) std::cerr << "cagd: building " << what << " once, into the user's cache '" << path << "' (--no-cache or CAGD_NO_CACHE=1: build it in memory each time)\n";
+}
+}  // namespace
+
+void set_up_table_cache(bool no_cache) {
+    if (no_cache) set_user_cache_enabled(false);
+    set_cache_build_notice(note_cache_build);
+    if (progress_enabled())
+        set_cache_build_progress([](long done, long total) {
+            std::fprintf(stderr, "\rcagd: %ld / %ld table nodes", done, total);
+            if (done == total) std::fprintf(stderr, "\n");
+        });
+}
 
 void require_output_rows(double rows, const std::string& what) {
     if (!(rows <= static_cast<double>(kMaxOutputRows)))

@@ -76,6 +76,9 @@ PointList read_data_points(const std::string& path);
 bool progress_enabled();
 void set_quiet(bool on);
 bool quiet();  // --quiet was given
+// The user's table cache (core/user_cache.hpp) as the command uses it: off with --no-cache; one
+// line on stderr when a table is built into it (unless --quiet), and its progress (as above).
+void set_up_table_cache(bool no_cache);
 
 // Sizes are checked before anything is allocated: rows of output at most kMaxOutputRows (about a
 // gigabyte of CSV; the limits of --samples and --grid in --help follow from it).
