@@ -20,9 +20,10 @@ PYTHON_ON     = -DCAGD_BUILD_PYTHON=ON -DCAGD_BUILD_TESTS=OFF -DCAGD_BUILD_BENCH
 # the Python package, into $(PREFIX), from a build of its own (no tests, experiments, benchmarks).
 INSTALL_FLAGS = -DCAGD_BUILD_TESTS=OFF -DCAGD_BUILD_EXPERIMENTS=OFF -DCAGD_BUILD_BENCH=OFF -DCAGD_BUILD_CLI=ON -DCAGD_BUILD_PYTHON=ON
 
-# The tests, the harness, the sanitizers and the benchmarks keep their table cache (the pseudo-energy
-# tables that the library keeps in the user's cache, core/user_cache.hpp) in the build tree, never
-# in the user's ~/.cache/cagd; the one build of the space table serves all four.
+# The harness, the sanitizers and the benchmarks keep their table cache (the pseudo-energy tables
+# that the library keeps in the user's cache, core/user_cache.hpp) in the build tree, never in the
+# user's ~/.cache/cagd, where ctest's own tests keep it (CMakeLists.txt sets it per test); the one
+# build of the space table serves all four.
 TABLE_CACHE = XDG_CACHE_HOME=$(abspath $(BUILD))/cache/user
 
 .PHONY: all deps configure build test reproduce bench python install sanitize docs clean
@@ -42,7 +43,7 @@ build: configure
 	@cmake --build $(BUILD) -j$(JOBS)
 
 test: build
-	@cd $(BUILD) && $(TABLE_CACHE) ctest --output-on-failure -j$(JOBS)
+	@cd $(BUILD) && ctest --output-on-failure -j$(JOBS)
 
 reproduce:
 	@bash scripts/install-deps.sh reproduce

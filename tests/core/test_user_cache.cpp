@@ -121,3 +121,21 @@ TEST(UserCache, PseudoEnergyTableIsBuiltOnceThenLoadedEqualToTheBuild) {
     EXPECT_EQ(third.node(3, 5).pseudo_energy, built.node(3, 5).pseudo_energy);
     set_cache_build_notice(nullptr);
 }
+
+// A cache file that cannot be written (here a directory stands where the file goes) costs nothing
+// but the cache: the table is built, returned equal to the in-memory build, and the place is left
+// as it was.
+TEST(UserCache, AnUnwritableCacheFileLeavesTheTableInMemory) {
+    const std::string xdg = fresh_cache_directory("user_cache_unwritable");
+    const CacheEnvironment no_switch("CAGD_NO_CACHE", nullptr);
+    const CacheEnvironment x("XDG_CACHE_HOME", xdg.c_str());
+    const fairness::AngleGrid grid{6, fairness::NodePlacement::periodic};
+    const std::string blocked = xdg + "/cagd/pseudo-energy-table-6-periodic-fast.txt";
+    fs::create_directories(blocked);
+    const fairness::PseudoEnergyTable built = fairness::PseudoEnergyTable::build(grid, fairness::TableMethod::fast);
+    const fairness::PseudoEnergyTable t = fairness::PseudoEnergyTable::user_cached(grid, fairness::TableMethod::fast);
+    for (int i = 0; i < grid.n; ++i)
+        for (int j = 0; j < grid.n; ++j) EXPECT_EQ(t.node(i, j).pseudo_energy, built.node(i, j).pseudo_energy);
+    EXPECT_TRUE(fs::is_directory(blocked));
+    EXPECT_TRUE(fs::is_empty(blocked));
+}

@@ -211,7 +211,8 @@ PseudoEnergyTable PseudoEnergyTable::load_or_build(const std::string& path, cons
         PseudoEnergyTable built = build(grid, method, threads, method == TableMethod::fast, cache_build_progress());
         try {
             built.save(path);
-        } catch (const std::exception&) {  // OutputError, or InvalidInput for a place no file can be made: the table stays in memory
+        } catch (const OutputError&) {  // a failed write: the table stays in memory, the cache as it was
+        } catch (const InvalidInput&) {  // a place no file can be made (a directory there): likewise
         }
         return built;
     });

@@ -14,9 +14,9 @@
 #include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
 #include "cagd/core/file_lock.hpp"
-#include "cagd/core/user_cache.hpp"
 #include "cagd/core/output_file.hpp"
 #include "cagd/core/parallel.hpp"
+#include "cagd/core/user_cache.hpp"
 
 namespace cagd::fairness {
 
@@ -238,7 +238,8 @@ SpacePseudoEnergyTable SpacePseudoEnergyTable::load_or_build(const std::string& 
         SpacePseudoEnergyTable t = build(grid, method, threads, cache_build_progress());
         try {
             t.save(path);
-        } catch (const std::exception&) {  // OutputError, or InvalidInput for a place no file can be made: the table stays in memory
+        } catch (const OutputError&) {  // a failed write: the table stays in memory, the cache as it was
+        } catch (const InvalidInput&) {  // a place no file can be made (a directory there): likewise
         }
         return t;
     });
