@@ -9,6 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "cagd/analysis/curvature_comb.hpp"
 #include "cagd/analysis/curve_measures.hpp"
 #include "cagd/core/csv.hpp"
 #include "cagd/core/parallel.hpp"
@@ -304,11 +305,9 @@ FigureData comparison_figure_data(const std::vector<MethodComparison>& cs, const
             }
         }
         if (samples.empty()) return;
-        std::vector<double> magnitudes;
-        for (const Sample& q : samples) magnitudes.push_back(std::abs(q.kappa));
-        const auto p95 = magnitudes.begin() + static_cast<std::ptrdiff_t>(0.95 * static_cast<double>(magnitudes.size() - 1));
-        std::nth_element(magnitudes.begin(), p95, magnitudes.end());
-        const double scale = *p95 > 0.0 ? 0.1 * diagonal / *p95 : 0.0;
+        std::vector<double> kappa;
+        for (const Sample& q : samples) kappa.push_back(q.kappa);
+        const double scale = analysis::comb_scale(std::move(kappa), diagonal);
         const std::size_t teeth_stride = (samples.size() + kMaxCombTeeth - 2) / (kMaxCombTeeth - 1);  // ≤ kMaxCombTeeth − 1 strided teeth, and the last
         comb_scale[i] = scale;
         comb_stride[i] = static_cast<int>(std::max<std::size_t>(teeth_stride, 1));

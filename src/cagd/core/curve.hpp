@@ -50,6 +50,11 @@ public:
     virtual void jet_into(double t, int order, JetMatrix& out) const;
     /// derivatives(t, order) likewise, for 1 ≤ order ≤ kJetCapacity.
     virtual void derivatives_into(double t, int order, JetMatrix& out) const;
+    /// p ≥ 0 when every piece between consecutive breakpoints is a polynomial of degree at most p in
+    /// t (Hermite and Bézier curves, B-splines, Hosaka's curves); −1 for a curve that is not
+    /// polynomial (the intrinsic and log-aesthetic curves). export/ gives a polynomial curve's exact
+    /// Bézier and B-spline forms from its jets, and approximates the others with a stated error.
+    virtual int polynomial_degree() const { return -1; }
 
     /// Position r(t) (row 0 of jet(t, 0)) as a column vector.
     Eigen::VectorXd point(double t) const { return jet(t, 0).row(0).transpose(); }

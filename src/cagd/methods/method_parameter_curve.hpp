@@ -34,6 +34,8 @@ public:
     /// place; no allocation (Python's evaluate runs it per parameter).
     void jet_into(double tau, int order, JetMatrix& out) const override;
     std::vector<double> breakpoints() const override;
+    /// The span curve's: τ is affine in u on every piece.
+    int polynomial_degree() const override { return base_->polynomial_degree(); }
     /// τ of each data point (closed: n + 1 values, the last = t_max).
     const std::vector<double>& node_parameters() const { return tau_; }
     /// u (the registry curve's parameter) at τ.

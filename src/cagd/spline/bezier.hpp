@@ -38,6 +38,7 @@ public:
     double t_max() const override { return b_; }
     Eigen::MatrixXd jet(double t, int order) const override;
     std::vector<double> breakpoints() const override { return {a_, b_}; }
+    int polynomial_degree() const override { return degree(); }
 
 private:
     Eigen::MatrixXd control_;

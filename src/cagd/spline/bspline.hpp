@@ -56,6 +56,7 @@ public:
     void jet_into(double t, int order, JetMatrix& out) const override;
     void derivatives_into(double t, int order, JetMatrix& out) const override;
     std::vector<double> breakpoints() const override;
+    int polynomial_degree() const override { return degree_; }
 
     /// Index s with t_s ≤ t < t_{s+1}, p ≤ s ≤ n−1 (t = t_max: the last non-empty span).
     int find_span(double t) const;

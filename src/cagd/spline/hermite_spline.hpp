@@ -69,6 +69,7 @@ public:
     void jet_into(double u, int order, JetMatrix& out) const override;
     void derivatives_into(double u, int order, JetMatrix& out) const override;
     std::vector<double> breakpoints() const override;
+    int polynomial_degree() const override { return 3; }
 
 private:
     Eigen::MatrixXd span_jet(int k, double t, int order) const;  ///< span k at local t ∈ [0, 1]

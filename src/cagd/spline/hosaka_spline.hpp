@@ -56,6 +56,7 @@ public:
     void jet_into(double u, int order, JetMatrix& out) const override;          ///< as jet, without allocating
     void derivatives_into(double u, int order, JetMatrix& out) const override;  ///< likewise
     std::vector<double> breakpoints() const override;
+    int polynomial_degree() const override { return 2 * m() + 1; }  ///< p_i(m, t), q_i(m, t) are of degree 2m + 1
     /// Row k: the k-th derivative of segment s at its local t ∈ [0, 1] (one-sided at the joins).
     Eigen::MatrixXd segment_jet(int s, double t, int order) const;
 
