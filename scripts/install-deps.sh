@@ -26,6 +26,9 @@ library=(
   libgoogle-glog-dev     # Ceres's logger; fairness/ silences its CG-restart warnings
   libnlopt-cxx-dev       # bounded/constrained minimisation
   libcli11-dev           # the cagd command's options
+  nlohmann-json3-dev     # the JSON curve documents (export/curve_json.cpp)
+  libocct-data-exchange-dev   # STEP export through OpenCASCADE (export/step_writer.cpp; LGPL-2.1 with exception)
+  libtbb-dev             # OpenCASCADE's CMake targets link libtbb.so, which its -dev packages do not bring
 )
 python=(
   python3 python3-dev pybind11-dev python3-numpy   # the module `cagd`, built for /usr/bin/python3
@@ -43,6 +46,7 @@ test=(
   python3-nbclient python3-ipykernel python3-matplotlib   # runs examples/curvature_combs.ipynb
   mypy                   # the Python examples pass mypy --strict against the stubs
   libopenmpi-dev openmpi-bin   # the space pseudo-energy table on MPI (make test runs mpirun -np 2)
+  python3-ezdxf chromium # the export test reads DXF with ezdxf and renders SVG in headless Chromium
 )
 bench=(
   libbenchmark-dev       # make bench

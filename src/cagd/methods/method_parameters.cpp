@@ -75,6 +75,12 @@ const std::string& ParameterValues::text(const std::string& name) const {
     return it == values_.end() ? absent : at(name, ParameterType::text).text;
 }
 
+ParameterText ParameterValues::as_text() const {
+    ParameterText out;
+    for (const auto& [name, v] : values_) out[name] = v.text;
+    return out;
+}
+
 ParameterValues parse_parameter_values(const std::string& method, const std::vector<Parameter>& parameters, const ParameterText& given) {
     const std::string who = "cagd::methods(" + method + ")";
     for (const auto& [name, text] : given) {

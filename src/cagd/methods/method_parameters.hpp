@@ -59,6 +59,9 @@ public:
     const std::string& text(const std::string& name) const;  ///< choice or text; "" when absent
     /// A vector parameter's value.
     const Eigen::VectorXd& vector(const std::string& name) const;
+    /// The text of every parameter that has a value (given or default), as typed: enough to build
+    /// the same curve again (parse_parameter_values of it gives these values).
+    ParameterText as_text() const;
 
 private:
     struct Value {

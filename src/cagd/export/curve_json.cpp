@@ -1,0 +1,155 @@
+#include "cagd/export/curve_json.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "cagd/core/checksum.hpp"
+#include "cagd/core/version.hpp"
+#include "cagd/methods/method_registry.hpp"
+
+namespace cagd::exports {
+
+namespace {
+
+using nlohmann::json;
+
+constexpr const char* kCurveFormat = "cagd-curve";
+constexpr int kCurveFormatVersion = 1;
+constexpr int kMaxDocumentDegree = 31;
+constexpr long kMaxDocumentPieces = 10'000'000;
+
+json point_rows(const Eigen::MatrixXd& m) {
+    json rows = json::array();
+    for (Eigen::Index i = 0; i < m.rows(); ++i) {
+        json r = json::array();
+        for (Eigen::Index k = 0; k < m.cols(); ++k) r.push_back(m(i, k));
+        rows.push_back(std::move(r));
+    }
+    return rows;
+}
+
+// A reader that names the document and the member in every complaint.
+struct DocumentReader {
+    const std::string& source;
+    [[noreturn]] void fail(const std::string& what) const { fail_input("cagd::exports::read_curve_json", source + ": " + what); }
+    const json& member(const json& j, const char* name) const {
+        if (!j.is_object() || !j.contains(name)) fail(std::string("missing member \"") + name + "\"");
+        return j.at(name);
+    }
+    double number(const json& j, const std::string& what) const {
+        if (!j.is_number()) fail(what + " must be a number");
+        const double v = j.get<double>();
+        if (!std::isfinite(v)) fail(what + " must be finite");
+        return v;
+    }
+    int integer(const json& j, const std::string& what, int lo, int hi) const {
+        if (!j.is_number_integer()) fail(what + " must be a whole number");
+        const long long v = j.get<long long>();
+        if (v < lo || v > hi) fail(what + " = " + std::to_string(v) + " outside [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+        return static_cast<int>(v);
+    }
+    std::string text(const json& j, const std::string& what) const {
+        if (!j.is_string()) fail(what + " must be a string");
+        return j.get<std::string>();
+    }
+    // rows × dim coordinates; `rows` < 0: any count.
+    Eigen::MatrixXd matrix(const json& j, const std::string& what, long rows, int dim) const {
+        if (!j.is_array()) fail(what + " must be an array of points");
+        if (rows >= 0 && static_cast<long>(j.size()) != rows) fail(what + " must have " + std::to_string(rows) + " points, has " + std::to_string(j.size()));
+        Eigen::MatrixXd m(static_cast<Eigen::Index>(j.size()), dim);
+        for (std::size_t i = 0; i < j.size(); ++i) {
+            const json& r = j[i];
+            if (!r.is_array() || static_cast<int>(r.size()) != dim) fail(what + "[" + std::to_string(i) + "] must have " + std::to_string(dim) + " coordinates");
+            for (int k = 0; k < dim; ++k) m(static_cast<Eigen::Index>(i), k) = number(r[static_cast<std::size_t>(k)], what + "[" + std::to_string(i) + "]");
+        }
+        return m;
+    }
+};
+
+}  // namespace
+
+std::string registry_fingerprint() {
+    char hex[17];
+    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(fnv1a64(methods::registry_listing())));
+    return hex;
+}
+
+void write_curve_json(std::ostream& out, const BezierForm& f, const CurveProvenance& p) {
+    json params = json::object();
+    for (const auto& [name, value] : p.parameters) params[name] = value;
+    json pieces = json::array();
+    for (int i = 0; i < f.pieces.pieces(); ++i) pieces.push_back(point_rows(f.pieces.piece(i)));
+    const json doc = {
+        {"format", kCurveFormat},
+        {"format_version", kCurveFormatVersion},
+        {"library_version", library_version()},
+        {"registry", registry_fingerprint()},
+        {"method", {{"name", p.method}, {"parameters", params}, {"parameter", p.parameter}, {"closed", p.closed}}},
+        {"points", point_rows(p.points)},
+        {"dimension", f.pieces.dimension()},
+        {"degree", f.pieces.degree},
+        {"exact", f.exact},
+        {"max_distance", f.max_distance},
+        {"tolerance", f.tolerance},
+        {"breaks", f.pieces.breaks},
+        {"pieces", pieces},
+    };
+    out << doc.dump(1) << '\n';
+}
+
+CurveDocument read_curve_json(std::istream& in, const std::string& source) {
+    const DocumentReader r{source};
+    json j;
+    try {
+        j = json::parse(in);
+    } catch (const json::parse_error& e) {
+        r.fail(std::string("not JSON: ") + e.what());
+    }
+    if (r.text(r.member(j, "format"), "format") != kCurveFormat) r.fail("\"format\" must be \"" + std::string(kCurveFormat) + "\"");
+    r.integer(r.member(j, "format_version"), "format_version", kCurveFormatVersion, kCurveFormatVersion);
+    CurveDocument d;
+    d.library_version = r.text(r.member(j, "library_version"), "library_version");
+    d.registry = r.text(r.member(j, "registry"), "registry");
+    const json& m = r.member(j, "method");
+    d.provenance.method = r.text(r.member(m, "name"), "method.name");
+    d.provenance.parameter = r.text(r.member(m, "parameter"), "method.parameter");
+    const json& closed = r.member(m, "closed");
+    if (!closed.is_boolean()) r.fail("method.closed must be true or false");
+    d.provenance.closed = closed.get<bool>();
+    const json& params = r.member(m, "parameters");
+    if (!params.is_object()) r.fail("method.parameters must be an object");
+    for (const auto& [name, value] : params.items()) d.provenance.parameters[name] = r.text(value, "method.parameters." + name);
+    const int dim = r.integer(r.member(j, "dimension"), "dimension", 2, 3);
+    const int degree = r.integer(r.member(j, "degree"), "degree", 0, kMaxDocumentDegree);
+    d.provenance.points = r.matrix(r.member(j, "points"), "points", -1, dim);
+    const json& exact = r.member(j, "exact");
+    if (!exact.is_boolean()) r.fail("exact must be true or false");
+    d.form.exact = exact.get<bool>();
+    d.form.max_distance = r.number(r.member(j, "max_distance"), "max_distance");
+    d.form.tolerance = r.number(r.member(j, "tolerance"), "tolerance");
+    const json& breaks = r.member(j, "breaks");
+    const json& pieces = r.member(j, "pieces");
+    if (!breaks.is_array() || !pieces.is_array()) r.fail("breaks and pieces must be arrays");
+    if (pieces.empty() || static_cast<long>(pieces.size()) > kMaxDocumentPieces)
+        r.fail("needs 1 to " + std::to_string(kMaxDocumentPieces) + " pieces, has " + std::to_string(pieces.size()));
+    if (breaks.size() != pieces.size() + 1) r.fail("needs one more break than pieces, has " + std::to_string(breaks.size()) + " breaks and " + std::to_string(pieces.size()) + " pieces");
+    d.form.pieces.degree = degree;
+    for (std::size_t i = 0; i < breaks.size(); ++i) {
+        d.form.pieces.breaks.push_back(r.number(breaks[i], "breaks[" + std::to_string(i) + "]"));
+        if (i > 0 && !(d.form.pieces.breaks[i - 1] < d.form.pieces.breaks[i])) r.fail("breaks must increase (breaks[" + std::to_string(i) + "])");
+    }
+    d.form.pieces.control.resize(static_cast<Eigen::Index>(pieces.size()) * (degree + 1), dim);
+    for (std::size_t i = 0; i < pieces.size(); ++i)
+        d.form.pieces.control.middleRows(static_cast<Eigen::Index>(i) * (degree + 1), degree + 1) = r.matrix(pieces[i], "pieces[" + std::to_string(i) + "]", degree + 1, dim);
+    return d;
+}
+
+CurveDocument read_curve_json_file(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) fail_input("cagd::exports::read_curve_json", path + ": cannot be opened for reading");
+    return read_curve_json(in, path);
+}
+
+}  // namespace cagd::exports

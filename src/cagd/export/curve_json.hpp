@@ -1,0 +1,65 @@
+#pragma once
+/// @file
+/// The JSON curve document: a curve's Bézier pieces with what made it, enough to rebuild it (the
+/// method, its parameters and the input points) and to measure it again (the pieces themselves).
+///
+///   {
+///     "format": "cagd-curve", "format_version": 1,
+///     "library_version": "0.1",            the library that wrote it (core/version.hpp)
+///     "registry": "9f0c…",                 FNV-1a 64 of the registry's listing: the methods and
+///                                          parameters of that library (methods/method_registry.hpp)
+///     "method": {"name": "s-spline", "parameters": {"m": "2", …},   as typed (ParameterValues::as_text)
+///                "parameter": "uniform", "closed": false},         what t is; empty "name": unknown
+///     "points": [[x, y], …],               the input points ([] when unknown)
+///     "dimension": 2, "degree": 4,
+///     "exact": true,                       the curve's own pieces, or an approximation
+///     "max_distance": 0, "tolerance": 0,   the approximation's bound and the tolerance asked for
+///     "breaks": [t_0, …, t_K],             piece i on [t_i, t_{i+1}] in the method's parameter t
+///     "pieces": [[[x, y], …], …]           K pieces of degree + 1 control points
+///   }
+///
+/// Numbers are written in the shortest form that reads back to the same double (nlohmann/json), so
+/// a document read back gives the same pieces bit for bit.
+/// Reading checks everything before using it (InvalidInput naming the document and the member):
+/// the format and its version, dimension 2 or 3, 0 ≤ degree ≤ 31, at most 10^7 pieces, breaks
+/// finite and increasing, every piece of degree + 1 points of `dimension` finite coordinates.
+#include <istream>
+#include <ostream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "cagd/core/points.hpp"
+#include "cagd/export/bezier_form.hpp"
+#include "cagd/methods/method_parameters.hpp"
+
+namespace cagd::exports {
+
+/// What made a curve (all optional: a curve from elsewhere has an empty method name).
+struct CurveProvenance {
+    std::string method{};                 ///< registry name
+    methods::ParameterText parameters{};  ///< its parameter values as text
+    std::string parameter{};              ///< what the curve's parameter t is (MethodClaims::parameter)
+    bool closed = false;                  ///< a closed curve
+    PointList points{};                   ///< the input points (0 rows when unknown)
+};
+
+/// A curve document read back.
+struct CurveDocument {
+    CurveProvenance provenance;  ///< what made it
+    BezierForm form;             ///< its pieces, exactness and error bound
+    std::string library_version; ///< as written
+    std::string registry;        ///< as written
+};
+
+/// The registry's fingerprint (FNV-1a 64 of registry_listing(), 16 hex digits).
+std::string registry_fingerprint();
+
+/// Writes the document of `form` and `provenance` (see above) to `out`.
+void write_curve_json(std::ostream& out, const BezierForm& form, const CurveProvenance& provenance);
+/// Reads a document (see above); `source` names it in messages. InvalidInput for anything invalid.
+CurveDocument read_curve_json(std::istream& in, const std::string& source);
+/// The same from a file path.
+CurveDocument read_curve_json_file(const std::string& path);
+
+}  // namespace cagd::exports

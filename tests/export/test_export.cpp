@@ -1,0 +1,279 @@
+// The exact and approximate Bézier forms, the B-spline forms and the writers of export/, for every
+// configuration of the registry, open and closed, planar and (where a method takes them) space
+// points: the round trips the formats rely on.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+#include "cagd/analysis/curve_measures.hpp"
+#include "cagd/export/bspline_form.hpp"
+#include "cagd/export/curve_formats.hpp"
+#include "cagd/export/curve_json.hpp"
+#include "cagd/methods/method_parameter_curve.hpp"
+#include "cagd/methods/method_registry.hpp"
+#include "../support/messages.hpp"
+#include "../support/point_lists.hpp"
+
+using namespace cagd;
+using namespace cagd::exports;
+
+namespace {
+
+// The round-trip tolerance of exact forms, relative to the curve's scale (bezier_form.hpp).
+constexpr double kExactRelative = 1e-12;
+
+// A closed star-shaped octagon and a space curve on a helix (distinct consecutive points).
+PointList closed_octagon() {
+    PointList p(8, 2);
+    for (int i = 0; i < 8; ++i) {
+        const double a = 2 * std::numbers::pi * i / 8, r = i % 2 ? 1.4 : 1.0;
+        p.row(i) << r * std::cos(a), r * std::sin(a);
+    }
+    return p;
+}
+PointList helix_points() {
+    PointList p(9, 3);
+    for (int i = 0; i < 9; ++i) p.row(i) << std::cos(0.7 * i), std::sin(0.7 * i), 0.25 * i;
+    return p;
+}
+
+struct Case {
+    std::string name;
+    std::shared_ptr<const Curve> curve;
+    bool closed;
+};
+
+// Every configuration's curve (in its method's parameter) on the three point sets it takes.
+std::vector<Case> registry_curves() {
+    std::vector<Case> out;
+    const PointList open = test::kNewberyGarrett, closed = closed_octagon(), space = helix_points();
+    for (const methods::Configuration& c : methods::configurations()) {
+        const std::vector<std::pair<const PointList*, bool>> sets{{&open, false}, {&closed, true}, {&space, false}};
+        for (const auto& [points, is_closed] : sets) {
+            if (points->cols() > c.claims.max_dimension || (is_closed && !c.claims.supports_closed)) continue;
+            const methods::InterpolationResult r = methods::interpolate(c, *points, is_closed);
+            if (!r.outcome.ok()) continue;
+            out.push_back({c.name + (is_closed ? " closed" : points->cols() == 3 ? " 3-D" : " open"), std::make_shared<methods::MethodParameterCurve>(*r.interpolant), is_closed});
+        }
+    }
+    return out;
+}
+
+// max over samples of |a^(k) − b^(k)| / max |a^(k)|, k = 0, 1, 2 (position, 1st, 2nd derivative),
+// 9 samples per piece of `pieces` with both one-sided jets at the joins.
+double relative_jet_difference(const Curve& curve, const BezierPieces& pieces) {
+    double worst = 0.0;
+    std::array<double, 3> scale{0, 0, 0}, diff{0, 0, 0};
+    for (int i = 0; i < pieces.pieces(); ++i) {
+        const BezierCurve piece = piece_curve(pieces, i);
+        for (int j = 0; j <= 8; ++j) {
+            const double t = piece.t_min() + (piece.t_max() - piece.t_min()) * j / 8;
+            const Eigen::MatrixXd a = j == 8 ? curve.jet_from_left(t, 2) : curve.jet(t, 2), b = piece.jet(t, 2);
+            for (int k = 0; k < 3; ++k) {
+                scale[static_cast<std::size_t>(k)] = std::max(scale[static_cast<std::size_t>(k)], a.row(k).norm());
+                diff[static_cast<std::size_t>(k)] = std::max(diff[static_cast<std::size_t>(k)], (a.row(k) - b.row(k)).norm());
+            }
+        }
+    }
+    for (int k = 0; k < 3; ++k) worst = std::max(worst, diff[static_cast<std::size_t>(k)] / scale[static_cast<std::size_t>(k)]);
+    return worst;
+}
+
+}  // namespace
+
+TEST(BezierForm, ExactPiecesOfEveryPolynomialMethodAgreeWithTheCurve) {
+    int exact = 0;
+    for (const Case& c : registry_curves()) {
+        if (c.curve->polynomial_degree() < 0) continue;
+        const BezierForm f = to_bezier(*c.curve);
+        ASSERT_TRUE(f.exact) << c.name;
+        EXPECT_EQ(f.pieces.degree, c.curve->polynomial_degree()) << c.name;
+        EXPECT_EQ(f.pieces.breaks, c.curve->breakpoints()) << c.name;
+        EXPECT_LE(relative_jet_difference(*c.curve, f.pieces), kExactRelative) << c.name << ": |r^(k) − b^(k)| / max |r^(k)|, k ≤ 2, ≤ 1e-12";
+        ++exact;
+    }
+    EXPECT_GE(exact, 30);  // every configuration but the curvature profile, on two or three point sets
+}
+
+TEST(BezierForm, ApproximationOfTheCurvatureProfileIsWithinItsStatedDistance) {
+    int approximated = 0;
+    for (const Case& c : registry_curves()) {
+        if (c.curve->polynomial_degree() >= 0) continue;
+        for (const int degree : {3, 5}) {
+            const BezierForm f = to_bezier(*c.curve, {.degree = degree, .relative_tolerance = 1e-6});
+            ASSERT_TRUE(f.outcome.ok()) << c.name << ": " << f.outcome.message;
+            EXPECT_FALSE(f.exact);
+            EXPECT_LE(f.max_distance, f.tolerance) << c.name;
+            EXPECT_NEAR(f.tolerance, 1e-6 * sampled_diagonal(*c.curve), 1e-20);
+            // An independent check: 101 samples per piece, none of them the bound's 32.
+            double worst = 0.0;
+            for (int i = 0; i < f.pieces.pieces(); ++i) {
+                const BezierCurve piece = piece_curve(f.pieces, i);
+                for (int j = 1; j < 101; ++j) {
+                    const double t = piece.t_min() + (piece.t_max() - piece.t_min()) * (j + 0.37) / 101.37;
+                    worst = std::max(worst, (c.curve->point(t) - piece.point(t)).norm());
+                }
+                // Degree 5 matches the second derivative at both ends, so curvature is exact at the joins.
+                if (degree == 5) {
+                    const Eigen::MatrixXd a = c.curve->jet(piece.t_min(), 2), b = piece.jet(piece.t_min(), 2);
+                    EXPECT_LE((a.row(2) - b.row(2)).norm(), 1e-9 * std::max(1.0, a.row(2).norm())) << c.name << " piece " << i;
+                }
+            }
+            EXPECT_LE(worst, f.tolerance) << c.name << " degree " << degree;
+            ++approximated;
+        }
+    }
+    EXPECT_GE(approximated, 2);
+}
+
+TEST(BezierForm, RaisedDegreeIsTheSameCurveAndLowerIsApproximated) {
+    const methods::InterpolationResult r = methods::interpolate("cubic-b", test::kNewberyGarrett, false);
+    const methods::MethodParameterCurve c(*r.interpolant);
+    const BezierForm quintic = to_bezier_of_degree(c, 5);
+    EXPECT_TRUE(quintic.exact);
+    EXPECT_EQ(quintic.pieces.degree, 5);
+    EXPECT_LE(relative_jet_difference(c, quintic.pieces), kExactRelative);
+    const methods::InterpolationResult s = methods::interpolate("s-spline", test::kNewberyGarrett, false);
+    const methods::MethodParameterCurve quartic(*s.interpolant);
+    ASSERT_EQ(quartic.polynomial_degree(), 4);
+    const BezierForm cubic = to_bezier_of_degree(quartic, 3);
+    EXPECT_FALSE(cubic.exact);
+    EXPECT_GT(cubic.max_distance, 0.0);
+    EXPECT_LE(cubic.max_distance, cubic.tolerance);
+    EXPECT_NE(test::invalid_input_message([&] { to_bezier(c, {.degree = 4}); }).find("got 4"), std::string::npos);
+}
+
+TEST(BSplineForm, EveryCurveAsOneBSplineWithTheFewestKnots) {
+    for (const Case& c : registry_curves()) {
+        const BezierForm f = to_bezier(*c.curve);
+        const BSplineForm b = to_bspline(f.pieces);
+        const BSplineCurve full = bezier_pieces_curve(f.pieces);
+        double worst = 0.0, scale = 0.0;
+        for (const double t : f.pieces.breaks) scale = std::max(scale, full.point(t).norm());
+        for (int i = 0; i < f.pieces.pieces(); ++i)
+            for (int j = 0; j < 7; ++j) {
+                const double t = f.pieces.breaks[static_cast<std::size_t>(i)] + (f.pieces.breaks[static_cast<std::size_t>(i) + 1] - f.pieces.breaks[static_cast<std::size_t>(i)]) * (j + 0.5) / 7;
+                worst = std::max({worst, (b.curve.point(t) - c.curve->point(t)).norm(), (full.point(t) - c.curve->point(t)).norm()});
+            }
+        EXPECT_LE(worst, f.exact ? kExactRelative * std::max(1.0, scale) : f.tolerance * 1.0000001) << c.name;
+    }
+    // The C2 cubic spline keeps simple knots, pchip (C1) double ones, Hermite A (G1 only: C0 in t) triple ones.
+    const auto multiplicities = [](const std::string& method) {
+        const methods::InterpolationResult r = methods::interpolate(method, test::kNewberyGarrett, false);
+        return to_bspline(to_bezier(methods::MethodParameterCurve(*r.interpolant)).pieces).interior_multiplicities;
+    };
+    EXPECT_EQ(multiplicities("cubic-b"), std::vector<int>(11, 1));
+    EXPECT_EQ(multiplicities("boost-pchip"), std::vector<int>(11, 2));
+    EXPECT_EQ(multiplicities("hermite-a"), std::vector<int>(11, 3));
+}
+
+TEST(BSplineForm, ClosedC2SplineHasAPeriodicForm) {
+    const methods::InterpolationResult r = methods::interpolate("cubic-b", closed_octagon(), true);
+    const methods::MethodParameterCurve c(*r.interpolant);
+    const PeriodicBSpline p = periodic_bspline(to_bezier(c).pieces);
+    ASSERT_FALSE(p.knots.empty());
+    const Eigen::Index n = p.control.rows();
+    EXPECT_EQ(n, 8);  // simple knots at the 8 points, across the closing point too
+    ASSERT_EQ(static_cast<Eigen::Index>(p.knots.size()), n + 2 * p.degree + 1);
+    Eigen::MatrixXd wrapped(n + p.degree, 2);
+    wrapped << p.control, p.control.topRows(p.degree);
+    const BSplineCurve periodic(p.degree, p.knots, wrapped);
+    EXPECT_DOUBLE_EQ(periodic.t_min(), c.t_min());
+    EXPECT_NEAR(periodic.t_max(), c.t_max(), 1e-12 * c.t_max());
+    for (int j = 0; j <= 200; ++j) {
+        const double t = c.t_min() + (c.t_max() - c.t_min()) * j / 200;
+        EXPECT_LE((periodic.point(std::min(t, periodic.t_max())) - c.point(t)).norm(), 1e-12) << "t = " << t;
+    }
+    // Hermite A is G1, C1 in t only where neighbouring chords are equal, as all of the octagon's
+    // are: a periodic form with double knots.
+    const methods::InterpolationResult h = methods::interpolate("hermite-a", closed_octagon(), true);
+    EXPECT_EQ(periodic_bspline(to_bezier(methods::MethodParameterCurve(*h.interpolant)).pieces).control.rows(), 16);
+}
+
+TEST(CurveJson, ADocumentReadsBackBitForBit) {
+    const methods::InterpolationResult r = methods::interpolate("hosaka", test::kNewberyGarrett, false, {{"m", "2"}});
+    const methods::MethodParameterCurve c(*r.interpolant);
+    const BezierForm f = to_bezier(c);
+    std::stringstream s;
+    write_curve_json(s, f, {.method = "hosaka", .parameters = {{"m", "2"}}, .parameter = "chord length", .closed = false, .points = test::kNewberyGarrett});
+    const CurveDocument d = read_curve_json(s, "memory");
+    EXPECT_EQ(d.form.pieces.breaks, f.pieces.breaks);
+    EXPECT_EQ(d.form.pieces.control, f.pieces.control);  // exact equality: shortest round-trip numbers
+    EXPECT_EQ(d.form.pieces.degree, 5);
+    EXPECT_EQ(d.provenance.points, test::kNewberyGarrett);
+    EXPECT_EQ(d.provenance.parameters.at("m"), "2");
+    EXPECT_EQ(d.registry, registry_fingerprint());
+}
+
+TEST(CurveJson, BadDocumentsAreRefusedNamingTheMember) {
+    const auto message = [](const std::string& text) {
+        return test::invalid_input_message([&] {
+            std::stringstream s(text);
+            read_curve_json(s, "doc.json");
+        });
+    };
+    EXPECT_NE(message("{").find("doc.json: not JSON"), std::string::npos);
+    EXPECT_NE(message(R"({"format": "other"})").find("\"format\" must be"), std::string::npos);
+    const std::string head = R"({"format": "cagd-curve", "format_version": 1, "library_version": "0.1", "registry": "x",
+        "method": {"name": "", "parameters": {}, "parameter": "", "closed": false}, "points": [], "dimension": 2, "exact": true,
+        "max_distance": 0, "tolerance": 0, )";
+    EXPECT_NE(message(head + R"("degree": 1, "breaks": [0, 0], "pieces": [[[0, 0], [1, 1]]]})").find("breaks must increase (breaks[1])"), std::string::npos);
+    EXPECT_NE(message(head + R"("degree": 1, "breaks": [0, 1], "pieces": [[[0, 0], [1]]]})").find("pieces[0][1] must have 2 coordinates"), std::string::npos);
+    EXPECT_NE(message(head + R"("degree": 99, "breaks": [0, 1], "pieces": []})").find("degree = 99 outside [0, 31]"), std::string::npos);
+}
+
+TEST(CurveFormats, ChosenByExtensionAndUnknownOnesAreBadInput) {
+    EXPECT_EQ(curve_format_of_path("a/b.SVG"), CurveFormat::svg);
+    EXPECT_EQ(curve_format_of_path("c.stp"), CurveFormat::step);
+    EXPECT_EQ(curve_format_of_path("-"), CurveFormat::csv);
+    EXPECT_EQ(curve_format_of_path("/dev/stdout"), CurveFormat::csv);
+    EXPECT_NE(test::invalid_input_message([] { curve_format_of_path("curve.txt"); }).find("unknown extension '.txt'"), std::string::npos);
+    EXPECT_NE(test::invalid_input_message([] { curve_format_named("pdf"); }).find("unknown format 'pdf'"), std::string::npos);
+}
+
+TEST(CurveFormats, SvgIsACubicPathAndRefusesSpaceCurves) {
+    const methods::InterpolationResult r = methods::interpolate("cubic-b", test::kNewberyGarrett, false);
+    const methods::MethodParameterCurve c(*r.interpolant);
+    std::stringstream s;
+    ASSERT_TRUE(write_curve(s, CurveFormat::svg, c, {.points = test::kNewberyGarrett}, {.points = true, .comb = true}).ok());
+    const std::string svg = s.str();
+    std::size_t segments = 0;
+    for (std::size_t at = svg.find("\nC"); at != std::string::npos; at = svg.find("\nC", at + 1)) ++segments;
+    EXPECT_EQ(segments, 12u);
+    EXPECT_NE(svg.find("the curve's exact cubic pieces"), std::string::npos);
+    EXPECT_NE(svg.find("id=\"comb\" data-comb-scale=\""), std::string::npos);
+    EXPECT_NE(svg.find("<circle"), std::string::npos);
+    const methods::InterpolationResult h = methods::interpolate("cubic-b", helix_points(), false);
+    const methods::MethodParameterCurve space(*h.interpolant);
+    std::stringstream t;
+    EXPECT_NE(test::invalid_input_message([&] { (void)write_curve(t, CurveFormat::svg, space, {}, {}); }).find("svg is planar"), std::string::npos);
+}
+
+TEST(CurveFormats, DxfHoldsOneSplineWithConsistentCounts) {
+    const methods::InterpolationResult r = methods::interpolate("cubic-b", closed_octagon(), true);
+    const methods::MethodParameterCurve c(*r.interpolant);
+    std::stringstream s;
+    ASSERT_TRUE(write_curve(s, CurveFormat::dxf, c, {.closed = true}, {}).ok());
+    // The group codes after the SPLINE's subclass marker.
+    const std::string dxf = s.str();
+    std::stringstream entity(dxf.substr(dxf.find("AcDbSpline")));
+    std::string line, previous;
+    int knots = 0, controls = 0, flags = -1, degree = -1, nk = -1, nc = -1;
+    while (std::getline(entity, line) && line != "ENDSEC") {
+        if (previous == " 40") ++knots;
+        if (previous == " 10") ++controls;
+        if (previous == " 70") flags = std::stoi(line);
+        if (previous == " 71") degree = std::stoi(line);
+        if (previous == " 72") nk = std::stoi(line);
+        if (previous == " 73") nc = std::stoi(line);
+        previous = line;
+    }
+    EXPECT_EQ(flags, 1 | 8);  // closed, planar (clamped: the periodic form is not written yet)
+    EXPECT_EQ(degree, 3);
+    EXPECT_EQ(knots, nk);
+    EXPECT_EQ(controls, nc);
+    EXPECT_EQ(nk, nc + degree + 1);
+    EXPECT_EQ(nc, 4 + 7);  // clamped: p + 1 and one per simple interior knot (C2 at the 7 inner points)
+}
