@@ -4,6 +4,7 @@
 // its error estimate (analysis::accurate_arc_length), the exact polynomial area
 // (closed by the chord from the last point to the first), and what the method computes itself
 // (the pseudo-spline's length, area and pseudo-energy from its tables, eq 16–21).
+// `cagd analyze --in curve.json`: a curve document (export/curve_json.hpp) measured the same way.
 #include <iostream>
 #include <memory>
 
@@ -16,6 +17,10 @@
 #include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
 #include "cagd/core/point_csv.hpp"
+#include "cagd/export/bspline_form.hpp"
+#include "cagd/export/curve_formats.hpp"
+#include "cagd/export/curve_json.hpp"
+#include "cagd/methods/method_parameter_curve.hpp"
 #include "cagd/methods/method_registry.hpp"
 
 namespace cagd::cli {
@@ -77,22 +82,56 @@ int analyze_samples(const std::string& path) {
     return 0;
 }
 
-int analyze_method(const AnalyzeArgs& a) {
-    if (a.method.empty()) fail_input("cagd analyze", "--in needs --method (cagd interpolate --list-methods)");
-    const methods::Method& method = methods::find_method(a.method);
-    const methods::ParameterValues values = methods::parse_parameter_values(method.name, method.parameters, given_parameters(a.options));
-    const methods::InterpolationResult r = methods::interpolate(method, read_points_csv(a.in), a.closed, values);
-    if (!r.outcome.ok() || !r.interpolant) throw NoResult(r.outcome.message);
-    const Curve& c = *r.interpolant->curve;
+// The integrated measures of a curve (see the file comment).
+void add_curve_measures(Quantities& q, const Curve& c) {
     const analysis::ArcLength length = analysis::accurate_arc_length(c);
-    Quantities q;
-    q.add("spans", static_cast<double>(r.interpolant->node_parameters.size() - 1));
     q.add("length_integrated", length.value);
     q.add("length_error_estimate", length.error_estimate, 3);
     if (c.dimension() == 2) q.add("area_integrated", analysis::area_closed_by_chord(c));
     const analysis::CurvatureTorsionExtremes e = analysis::curvature_torsion_extremes(c);
     q.add("max_abs_curvature_sampled", e.max_abs_curvature);
     if (c.dimension() == 3) q.add("max_abs_torsion_sampled", e.max_abs_torsion);
+}
+
+// A curve document (export/curve_json.hpp): its pieces measured, and, when it names its method and
+// points, the curve rebuilt and its distance from the document's pieces at the same parameters.
+int analyze_document(const std::string& path) {
+    const exports::CurveDocument d = exports::read_curve_json_file(path);
+    const BSplineCurve c = exports::bezier_pieces_curve(d.form.pieces);
+    Quantities q;
+    q.add("pieces", d.form.pieces.pieces());
+    q.add("degree", d.form.pieces.degree);
+    q.add("exact", d.form.exact ? 1.0 : 0.0);
+    q.add("max_distance_stated", d.form.max_distance, 3);
+    add_curve_measures(q, c);
+    if (!d.provenance.method.empty() && d.provenance.points.rows() > 0) {
+        const methods::InterpolationResult r = methods::interpolate(d.provenance.method, d.provenance.points, d.provenance.closed, d.provenance.parameters);
+        if (!r.outcome.ok() || !r.interpolant) throw NoResult("rebuilding " + d.provenance.method + ": " + r.outcome.message);
+        const methods::MethodParameterCurve rebuilt(*r.interpolant);
+        if (std::abs(rebuilt.t_max() - c.t_max()) > 1e-9 * std::max(1.0, std::abs(c.t_max())) || rebuilt.dimension() != c.dimension())
+            throw NoResult(path + ": the rebuilt " + d.provenance.method + " curve has another parameter range or dimension than the document's pieces");
+        q.add("rebuilt_max_distance", analysis::max_distance_same_parameter(rebuilt, c, 16), 3);
+    }
+    q.commit();
+    std::cerr << "cagd analyze: " << path << ": the document's " << (d.form.exact ? "exact" : "approximating") << " pieces, measured by quadrature"
+              << (d.provenance.method.empty() ? "" : "; rebuilt_max_distance compares them with " + d.provenance.method + " rebuilt from the document's points") << '\n';
+    return 0;
+}
+
+int analyze_method(const AnalyzeArgs& a) {
+    if (exports::curve_format_of_path(a.in) == exports::CurveFormat::json) {
+        if (!a.method.empty()) fail_input("cagd analyze", "--in " + a.in + " is a curve document; it names its method (drop --method)");
+        return analyze_document(a.in);
+    }
+    if (a.method.empty()) fail_input("cagd analyze", "--in needs --method (cagd interpolate --list-methods)");
+    const methods::Method& method = methods::find_method(a.method);
+    const methods::ParameterValues values = methods::parse_parameter_values(method.name, method.parameters, given_parameters(a.options));
+    const methods::InterpolationResult r = methods::interpolate(method, read_points_csv(a.in), a.closed, values);
+    if (!r.outcome.ok() || !r.interpolant) throw NoResult(r.outcome.message);
+    const Curve& c = *r.interpolant->curve;
+    Quantities q;
+    q.add("spans", static_cast<double>(r.interpolant->node_parameters.size() - 1));
+    add_curve_measures(q, c);
     for (const auto& [name, value] : r.quantities) q.add(name, value);
     q.commit();
     if (c.dimension() == 2) std::cerr << "cagd analyze: areas are signed (counter-clockwise positive); an open curve is closed by the line from its last point to its first\n";
@@ -105,7 +144,7 @@ Command add_analyze_command(CLI::App& app) {
     auto a = std::make_shared<AnalyzeArgs>();
     CLI::App* c = app.add_subcommand("analyze", "Length, enclosed area, curvature extrema and bending energy of a curve CSV, or of a method's curve through points");
     CLI::Option* curve = c->add_option("curve", a->curve, "curve CSV as written by cagd interpolate (sample-based measures); - for stdin");
-    CLI::Option* in = c->add_option("--in", a->in, "points CSV: build the curve with --method and integrate it; - for stdin");
+    CLI::Option* in = c->add_option("--in", a->in, "points CSV: build the curve with --method and integrate it; - for stdin; or a curve document (.json, cagd interpolate --out c.json): its pieces integrated, and compared with its method rebuilt");
     add_method_options(c, a->method, a->options);
     c->add_flag("--closed", a->closed, "closed curve (with --in)");
     curve->excludes(in);

@@ -27,13 +27,15 @@
 #include "cagd/core/errors.hpp"
 #include "cagd/core/parallel.hpp"
 #include "cagd/core/point_csv.hpp"
+#include "cagd/export/curve_formats.hpp"
+#include "cagd/methods/method_parameter_curve.hpp"
 
 namespace cagd::cli {
 
 namespace {
 
 struct CompareArgs {
-    std::string in, out, methods;
+    std::string in, out, methods, export_formats;
     bool closed = false, no_plot = false;
 };
 
@@ -63,6 +65,16 @@ int run_compare(const CompareArgs& a) {
     }
     if (points.cols() != 2 && points.cols() != 3) fail_input(who, a.in + ": compares planar or space curves, the points have " + std::to_string(points.cols()) + " columns");
     const int dimension = static_cast<int>(points.cols());
+    // --export: the formats of the per-method curve files, checked before the work.
+    std::vector<exports::CurveFormat> export_formats;
+    {
+        std::stringstream ss(a.export_formats);
+        std::string f;
+        while (std::getline(ss, f, ',')) {
+            export_formats.push_back(exports::curve_format_named(f));
+            if (dimension == 3 && !exports::curve_format_info(export_formats.back()).space_curves) fail_input(who, "--export " + f + ": the format is planar, the points have 3 columns");
+        }
+    }
     OutputDirectory out(a.out);         // checked before the work
     OutputFile table_out("-", "");      // the Markdown table on standard output, checked too
     const bool progress = progress_enabled();
@@ -100,6 +112,24 @@ int run_compare(const CompareArgs& a) {
         for (const auto& row : t.numbers()) w.row(row, t.significant);
         w.commit();
     });
+    // Each method's curve in each --export format, curve_<configuration>.<extension>, in the method's
+    // own parameter, with its configuration's parameters and the points (export/curve_formats.hpp).
+    for (const compare::MethodComparison& r : results) {
+        if (!r.interpolant) continue;
+        const methods::Configuration conf = methods::find_configuration(r.method);
+        const methods::MethodParameterCurve curve(*r.interpolant);
+        const exports::CurveProvenance provenance{
+            .method = conf.method->name, .parameters = conf.values.as_text(), .parameter = conf.claims.parameter, .closed = a.closed, .points = points};
+        exports::ExportOptions options;
+        options.points = true;
+        options.comb = dimension == 2;
+        for (const exports::CurveFormat format : export_formats) {
+            OutputFile f(out.staged("curve_" + r.method + exports::curve_format_info(format).extensions.front()));
+            if (const Outcome written = exports::write_curve(f.stream(), format, curve, provenance, options); !written.ok())
+                throw NoResult(r.method + " as " + exports::curve_format_info(format).name + ": " + written.message + " (nothing was written)");
+            f.commit();
+        }
+    }
     const std::string script = out.staged("compare_panels.gp");
     {
         OutputFile f(script);
@@ -144,6 +174,8 @@ Command add_compare_command(CLI::App& app) {
     c->add_flag("--closed", a->closed, "closed curves (methods that draw open curves only are listed as not applicable)");
     c->add_option("--methods", a->methods, "comma-separated presets or methods (a method runs with its defaults), e.g. pseudo-spline-exact,cubic-b,hosaka (default: every preset)");
     c->add_flag("--no-plot", a->no_plot, "write the figure data and script but do not run gnuplot");
+    c->add_option("--export", a->export_formats,
+                  "also write each method's curve as curve_<method>.<ext> in these comma-separated formats: csv, json, svg (planar), dxf, step (e.g. svg,dxf)");
     return {c, [a] { return run_compare(*a); }};
 }
 
