@@ -24,6 +24,7 @@
 #include "cagd/compare/method_comparison.hpp"
 #include "cagd/core/curve.hpp"
 #include "cagd/core/errors.hpp"
+#include "cagd/export/curve_json.hpp"
 #include "cagd/methods/method_parameter_curve.hpp"
 #include "cagd/core/output_file.hpp"
 #include "cagd/fairness/pseudo_energy_minimum.hpp"
@@ -124,6 +125,9 @@ struct PyCurve {
     // An interpolant: `curve` is in the method's parameter τ (MethodParameterCurve), and this is the
     // same curve in the registry's span parameter u; null otherwise.
     std::shared_ptr<const cagd::methods::MethodParameterCurve> in_tau{};
+    // What made an interpolant (method, all its parameter values, points): written into exported
+    // files (Curve.write); null for other curves.
+    std::shared_ptr<const cagd::exports::CurveProvenance> provenance{};
 
     // Positions (derivatives = 0: shape t.shape + (dim,)) or jets (t.shape + (derivatives + 1,
     // dim)): rows are r, r', r'', … at each t. A number (or 0-d array) gives (dim,) or (k + 1, dim).
@@ -192,5 +196,6 @@ void bind_aesthetic(py::module_& m);
 void bind_spline(py::module_& m);
 void bind_smoothing(py::module_& m);
 void bind_surface(py::module_& m);
+void bind_export(py::module_& m);
 
 }  // namespace cagd_python

@@ -63,6 +63,13 @@ Interpolation interpolate_result(const Array& points, const std::string& method,
         out.curve->points = static_cast<int>(p.rows());
         out.curve->closed = closed;
         out.curve->in_tau = in_tau;
+        // The method behind a preset name, with every parameter value (the preset's, the given, the defaults).
+        const cagd::methods::Configuration conf = cagd::methods::find_configuration(method);
+        cagd::methods::ParameterText all = conf.values.as_text();
+        for (const auto& [name, value] : text) all[name] = value;
+        const cagd::methods::ParameterValues values = cagd::methods::parse_parameter_values(conf.method->name, conf.method->parameters, all);
+        out.curve->provenance = std::make_shared<const cagd::exports::CurveProvenance>(
+            cagd::exports::CurveProvenance{.method = conf.method->name, .parameters = values.as_text(), .parameter = conf.method->claims(values).parameter, .closed = closed, .points = p});
         out.dtau_du = r.interpolant->dtau_du;
     }
     return out;

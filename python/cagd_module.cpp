@@ -103,4 +103,5 @@ PYBIND11_MODULE(_cagd, m) {
     bind_spline(m);
     bind_smoothing(m);
     bind_surface(m);
+    bind_export(m);
 }

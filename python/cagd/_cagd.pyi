@@ -45,6 +45,19 @@ class Curve:
     def arc_length(self, error_estimate: bool) -> Union[float, Tuple[float, float]]: ...
     def area(self) -> float: ...
     def bending_energy(self) -> float: ...
+    def to_bezier(self, degree: Optional[int] = None, tolerance: float = 1e-6, approximation_degree: int = 3) -> Dict[str, Any]: ...
+    def to_bspline(self, tolerance: float = 1e-6, approximation_degree: int = 3) -> Dict[str, Any]: ...
+    def write(
+        self,
+        path: str,
+        format: Optional[str] = None,
+        tolerance: float = 1e-6,
+        approximation_degree: int = 3,
+        points: bool = False,
+        comb: bool = False,
+        samples: int = 16,
+        arc_length_samples: int = 0,
+    ) -> None: ...
 
 class Interpolation:
     """The whole result of an interpolation: status, message, the curve when ok, what the method reported."""
