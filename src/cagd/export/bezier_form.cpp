@@ -1,8 +1,6 @@
 #include "cagd/export/bezier_form.hpp"
 
 #include <algorithm>
-#include <boost/math/special_functions/binomial.hpp>
-#include <boost/math/special_functions/factorials.hpp>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -19,29 +17,6 @@ constexpr double kSecondDerivativeSafety = 2.0;
 // A piece shorter than this fraction of the parameter range is not halved further: the curve has
 // a feature (a cusp, an infinite curvature) no polynomial piece follows.
 constexpr double kShortestPiece = 1e-12;
-
-double binomial(int n, int k) { return boost::math::binomial_coefficient<double>(static_cast<unsigned>(n), static_cast<unsigned>(k)); }
-// (p − j)!/p!
-double falling_ratio(int p, int j) { return 1.0 / boost::math::falling_factorial(static_cast<double>(p), static_cast<unsigned>(j)); }
-
-// The p + 1 control points of the degree-p polynomial on [a, b] with derivatives J0 at a (rows
-// 0..⌊p/2⌋ used) and J1 at b (rows 0..p − ⌊p/2⌋ − 1 used): the formulas of the header.
-Eigen::MatrixXd bezier_from_end_jets(int p, double h, const Eigen::MatrixXd& J0, const Eigen::MatrixXd& J1) {
-    const Eigen::Index dim = J0.cols();
-    Eigen::MatrixXd b = Eigen::MatrixXd::Zero(p + 1, dim);
-    const int from_start = p / 2;
-    for (int k = 0; k <= p; ++k) {
-        const bool start = k <= from_start;
-        const int kk = start ? k : p - k;
-        const double step = start ? h : -h;
-        double hj = 1.0;
-        for (int j = 0; j <= kk; ++j) {
-            b.row(k) += binomial(kk, j) * falling_ratio(p, j) * hj * (start ? J0.row(j) : J1.row(j));
-            hj *= step;
-        }
-    }
-    return b;
-}
 
 void check_options(const ApproximationOptions& o) {
     if (o.degree != 3 && o.degree != 5) fail_input(kToBezierWho, "approximation degree must be 3 or 5, got " + std::to_string(o.degree));

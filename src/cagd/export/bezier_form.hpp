@@ -4,16 +4,10 @@
 /// (Namespace cagd::exports: `export` is a C++ keyword.)
 ///
 /// Exact form. A curve whose pieces are polynomials of degree ≤ p (Curve::polynomial_degree) is,
-/// on each piece [a, b] (h = b − a, s = (t − a)/h),
-///     r(t) = Σ_{k=0}^{p} B_{k,p}(s) b_k,
-/// and the control points follow from the derivatives at the two ends, since Δ^j b_0 =
-/// (p−j)!/p! h^j r^(j)(a) and likewise backwards from b_p:
-///     b_k     = Σ_{j=0}^{k} C(k, j) (p−j)!/p! h^j r^(j)(a),        k = 0 … ⌊p/2⌋,
-///     b_{p−k} = Σ_{j=0}^{k} C(k, j) (p−j)!/p! (−h)^j r^(j)(b⁻),    k = 0 … p − ⌊p/2⌋ − 1,
-/// (r^(j)(b⁻) from the left: Curve::jet_from_left). Each end supplies half the points, so no
-/// derivative above order ⌈p/2⌉ is used and the terms stay of the size of the control polygon: the
-/// form agrees with the curve to rounding (the tests hold it to 1e-12 of the bounding-box diagonal,
-/// with derivatives and curvature at the joins).
+/// on each piece [a, b] (s = (t − a)/(b − a)), r(t) = Σ_{k=0}^{p} B_{k,p}(s) b_k, and the control
+/// points follow from its one-sided derivatives at the two ends (spline/bezier.hpp,
+/// bezier_from_end_jets; r^(j)(b⁻) from Curve::jet_from_left): the form agrees with the curve to
+/// rounding (the tests hold it to 1e-12 of the curve's scale, with derivatives at the joins).
 ///
 /// Approximation. A curve that is not polynomial (the curvature-profile spline, log-aesthetic
 /// curves) is approximated piece by piece by the Hermite interpolant of its jets at the piece's ends:

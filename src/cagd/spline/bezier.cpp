@@ -1,6 +1,9 @@
 #include "cagd/spline/bezier.hpp"
 
+#include <boost/math/special_functions/binomial.hpp>
+#include <boost/math/special_functions/factorials.hpp>
 #include <cmath>
+#include <string>
 
 #include "cagd/core/bernstein_polynomial.hpp"
 #include "cagd/core/errors.hpp"
@@ -68,6 +71,27 @@ Eigen::MatrixXd BezierCurve::jet(double t, int order) const {
         result.row(k) = factor * work.row(0);
     }
     return result;
+}
+
+Eigen::MatrixXd bezier_from_end_jets(int p, double h, const Eigen::MatrixXd& J0, const Eigen::MatrixXd& J1) {
+    const int from_start = p / 2, from_end = p - p / 2 - 1;
+    if (p < 0 || !(h > 0.0) || J0.rows() <= from_start || J1.rows() <= std::max(from_end, 0) || J0.cols() != J1.cols())
+        fail_input("cagd::bezier_from_end_jets", "needs degree >= 0, h > 0 and jets of orders " + std::to_string(from_start) + " and " + std::to_string(from_end) +
+                                                     " at the ends; got degree " + std::to_string(p) + ", h = " + full_precision(h));
+    Eigen::MatrixXd b = Eigen::MatrixXd::Zero(p + 1, J0.cols());
+    for (int k = 0; k <= p; ++k) {
+        const bool start = k <= from_start;
+        const int kk = start ? k : p - k;
+        const double step = start ? h : -h;
+        double hj = 1.0;
+        for (int j = 0; j <= kk; ++j) {
+            const double c = boost::math::binomial_coefficient<double>(static_cast<unsigned>(kk), static_cast<unsigned>(j)) /
+                             boost::math::falling_factorial(static_cast<double>(p), static_cast<unsigned>(j));
+            b.row(k) += c * hj * (start ? J0.row(j) : J1.row(j));
+            hj *= step;
+        }
+    }
+    return b;
 }
 
 }  // namespace cagd

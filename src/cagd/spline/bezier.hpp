@@ -47,4 +47,13 @@ private:
     Eigen::MatrixXd monomial_;  ///< power_basis only: row k = a_k
 };
 
+/// The p + 1 control points of the degree-p polynomial on [a, b] (h = b − a > 0) from its
+/// derivatives at the two ends: J0 (rows 0..⌊p/2⌋ used) at a and J1 (rows 0..p − ⌊p/2⌋ − 1 used) at
+/// b, since Δ^j b_0 = (p−j)!/p! h^j r^(j)(a) and likewise backwards from b_p:
+///     b_k     = Σ_{j=0}^{k} C(k, j) (p−j)!/p! h^j r^(j)(a),      k = 0 … ⌊p/2⌋,
+///     b_{p−k} = Σ_{j=0}^{k} C(k, j) (p−j)!/p! (−h)^j r^(j)(b),   k = 0 … p − ⌊p/2⌋ − 1.
+/// Half the points from each end: no derivative above order ⌈p/2⌉ enters, and the terms stay of the
+/// size of the control polygon (a Taylor expansion from one end would use orders up to p).
+Eigen::MatrixXd bezier_from_end_jets(int degree, double h, const Eigen::MatrixXd& J0, const Eigen::MatrixXd& J1);
+
 }  // namespace cagd

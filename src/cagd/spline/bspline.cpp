@@ -11,12 +11,6 @@ namespace cagd {
 namespace {
 const char* const kBSplineWho = "cagd::BSplineCurve";
 constexpr int kIndexedSpans = 64;  // fewer spans: the binary search alone
-
-double binomial_coefficient(int n, int k) {
-    double r = 1.0;
-    for (int i = 1; i <= k; ++i) r = r * (n - k + i) / i;
-    return r;
-}
 }  // namespace
 
 BSplineCurve::BSplineCurve(int degree, std::vector<double> knots, Eigen::MatrixXd control_points) : degree_(degree), knots_(std::move(knots)), control_(std::move(control_points)) {
@@ -437,24 +431,8 @@ std::vector<BezierCurve> bezier_segments(const BSplineCurve& c) {
     const int p = c.degree();
     const std::vector<double> br = c.breakpoints();
     std::vector<BezierCurve> segments;
-    for (std::size_t s = 0; s + 1 < br.size(); ++s) {
-        const double a = br[s], h = br[s + 1] - br[s];
-        const Eigen::MatrixXd J = c.jet(a, p);  // right-hand derivatives at the span start
-        // Taylor coefficients in s ∈ [0,1]: c_k = h^k r^(k)(a) / k!;  b_j = Σ_k C(j,k)/C(p,k) c_k.
-        Eigen::MatrixXd coef(p + 1, c.dimension());
-        double hk = 1.0, fact = 1.0;
-        for (int k = 0; k <= p; ++k) {
-            if (k > 0) {
-                hk *= h;
-                fact *= k;
-            }
-            coef.row(k) = (hk / fact) * J.row(k);
-        }
-        Eigen::MatrixXd b = Eigen::MatrixXd::Zero(p + 1, c.dimension());
-        for (int j = 0; j <= p; ++j)
-            for (int k = 0; k <= j; ++k) b.row(j) += binomial_coefficient(j, k) / binomial_coefficient(p, k) * coef.row(k);
-        segments.emplace_back(b, br[s], br[s + 1]);
-    }
+    for (std::size_t s = 0; s + 1 < br.size(); ++s)  // one-sided derivatives at both span ends (bezier.hpp)
+        segments.emplace_back(bezier_from_end_jets(p, br[s + 1] - br[s], c.jet(br[s], p / 2), c.jet_from_left(br[s + 1], std::max(0, p - p / 2 - 1))), br[s], br[s + 1]);
     return segments;
 }
 

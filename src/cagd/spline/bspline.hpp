@@ -20,7 +20,7 @@
 /// the old ones with every multiplicity raised by one; its control points are found by
 /// a least-squares fit to p+2 samples per span, which is exact up to rounding because the
 /// old curve is in that space (QR; error ~ 10 ε·|d| for well-conditioned knots).
-/// Bézier segments: per non-empty span, from the Taylor jet at the span start.
+/// Bézier segments: per non-empty span, from the one-sided jets at its two ends (bezier_from_end_jets).
 ///
 /// Preconditions (InvalidInput otherwise): p ≥ 0; knots non-decreasing and finite;
 /// control point count n = knots − p − 1 ≥ p + 1; t_p < t_n; no knot of multiplicity > p+1.
