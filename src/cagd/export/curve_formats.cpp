@@ -81,15 +81,14 @@ Outcome write_curve(std::ostream& out, CurveFormat format, const Curve& curve, c
                 return {};
             }
             const BSplineForm b = to_bspline(form.pieces);
-            // Closed curves leave clamped (first point = last point): the periodic form is computed and
-            // tested (periodic_bspline) but not yet written, since ezdxf and OpenCASCADE read its
-            // pole alignment differently where a knot is multiple.
-            const PeriodicBSpline periodic{};
+            // Closed curves leave clamped (first point = last point): the periodic form
+            // (periodic_bspline) is not written yet, since ezdxf and OpenCASCADE read its pole
+            // alignment differently from ours where a knot is multiple.
             if (format == CurveFormat::dxf) {
-                write_dxf(out, b.curve, periodic, provenance.closed, o.points ? provenance.points : no_points);
+                write_dxf(out, b.curve, provenance.closed, o.points ? provenance.points : no_points);
                 return {};
             }
-            return write_step(out, b.curve, periodic, provenance.closed);
+            return write_step(out, b.curve);
         }
     }
     return {};

@@ -57,24 +57,13 @@ void dxf_vertex(DxfLines& d, int code, const Eigen::RowVectorXd& x) {
 
 }  // namespace
 
-void write_dxf(std::ostream& out, const BSplineCurve& curve, const PeriodicBSpline& periodic, bool closed, const PointList& points) {
+void write_dxf(std::ostream& out, const BSplineCurve& curve, bool closed, const PointList& points) {
     const int dim = curve.dimension();
     if (dim != 2 && dim != 3) fail_input("cagd::exports::write_dxf", "needs a curve of 2 or 3 coordinates, got " + std::to_string(dim));
     if (points.rows() > 0 && points.cols() != dim) fail_input("cagd::exports::write_dxf", "points must have the curve's " + std::to_string(dim) + " coordinates");
-    const bool use_periodic = closed && !periodic.knots.empty();
-    const int p = use_periodic ? periodic.degree : curve.degree();
-    Eigen::MatrixXd control;
-    std::vector<double> knots;
-    if (use_periodic) {
-        const Eigen::Index n = periodic.control.rows();
-        control.resize(n + p, periodic.control.cols());
-        control.topRows(n) = periodic.control;
-        control.bottomRows(p) = periodic.control.topRows(p);
-        knots = periodic.knots;
-    } else {
-        control = curve.control_points();
-        knots = curve.knots();
-    }
+    const int p = curve.degree();
+    const Eigen::MatrixXd& control = curve.control_points();
+    const std::vector<double>& knots = curve.knots();
     const Eigen::RowVector2d lo = control.leftCols(2).colwise().minCoeff(), hi = control.leftCols(2).colwise().maxCoeff();
     DxfLines d(out);
     // Handles: the entities' first, so that $HANDSEED (written first) is known.
@@ -146,7 +135,7 @@ void write_dxf(std::ostream& out, const BSplineCurve& curve, const PeriodicBSpli
 
     d(0, "SECTION")(2, "ENTITIES");
     d(0, "SPLINE")(5, spline_handle)(330, "1F")(100, "AcDbEntity")(8, "CURVE")(100, "AcDbSpline");
-    const int flags = (closed ? 1 : 0) | (use_periodic ? 2 : 0) | (dim == 2 ? 8 : 0);
+    const int flags = (closed ? 1 : 0) | (dim == 2 ? 8 : 0);
     if (dim == 2) d(210, 0.0)(220, 0.0)(230, 1.0);
     d.integer(70, flags).integer(71, p).integer(72, static_cast<long>(knots.size())).integer(73, static_cast<long>(control.rows())).integer(74, 0);
     d(42, 1e-10)(43, 1e-10)(44, 1e-10);

@@ -5,10 +5,8 @@
 /// polynomial curves (degree, knots, control points, no weights), and optionally the data points
 /// as POINT entities on layer POINTS. A planar curve has the planar flag and the normal (0, 0, 1),
 /// z = 0; a space curve neither.
-/// A closed curve is the clamped B-spline with the closed flag (its ends coincide). Given a periodic
-/// form (periodic_bspline), it is written as a periodic spline instead (flags closed | periodic: the
-/// unclamped knots with the first p control points repeated at the end, so that, as DXF requires,
-/// knots = control points + degree + 1); write_curve does not pass one yet (docs/export.md).
+/// A closed curve is the clamped B-spline with the closed flag (its ends coincide; the periodic form
+/// is not written yet: docs/export.md). As DXF requires, knots = control points + degree + 1.
 /// The file has the header, tables (VPORT, LTYPE, LAYER, STYLE, VIEW, UCS, APPID, DIMSTYLE,
 /// BLOCK_RECORD), blocks, entities and objects sections that AutoCAD 2000 and later expect, with
 /// unique handles. Numbers have 17 significant digits (they read back to the same doubles).
@@ -19,8 +17,8 @@
 
 namespace cagd::exports {
 
-/// Writes the DXF drawing of `curve` (clamped; `periodic` used when it has knots) to `out`, with
-/// `points` (any number of rows, the curve's dimension) as POINT entities.
-void write_dxf(std::ostream& out, const BSplineCurve& curve, const PeriodicBSpline& periodic, bool closed, const PointList& points);
+/// Writes the DXF drawing of `curve` to `out`, flagged closed when `closed`, with `points` (any
+/// number of rows, the curve's dimension) as POINT entities.
+void write_dxf(std::ostream& out, const BSplineCurve& curve, bool closed, const PointList& points);
 
 }  // namespace cagd::exports

@@ -29,9 +29,9 @@ bool step_available() { return true; }
 
 namespace {
 
-// Distinct values of knots[first..last] with their multiplicities.
-void distinct_knots(const std::vector<double>& knots, std::size_t first, std::size_t last, std::vector<double>& values, std::vector<int>& mults) {
-    for (std::size_t i = first; i <= last; ++i) {
+// The distinct knot values with their multiplicities.
+void distinct_knots(const std::vector<double>& knots, std::vector<double>& values, std::vector<int>& mults) {
+    for (std::size_t i = 0; i < knots.size(); ++i) {
         if (!values.empty() && knots[i] == values.back())
             ++mults.back();
         else {
@@ -45,21 +45,12 @@ std::mutex step_writer_mutex;  // OpenCASCADE's static interface parameters are 
 
 }  // namespace
 
-Outcome write_step(std::ostream& out, const BSplineCurve& curve, const PeriodicBSpline& periodic, bool closed) {
-    const bool use_periodic = closed && !periodic.knots.empty();
-    const Eigen::MatrixXd& control = use_periodic ? periodic.control : curve.control_points();
-    const int p = use_periodic ? periodic.degree : curve.degree();
+Outcome write_step(std::ostream& out, const BSplineCurve& curve) {
+    const Eigen::MatrixXd& control = curve.control_points();
+    const int p = curve.degree();
     std::vector<double> values;
     std::vector<int> mults;
-    if (use_periodic) {
-        // One period: t_p … t_{n+p}; the last knot's multiplicity equals the first's.
-        const std::size_t n = static_cast<std::size_t>(control.rows());
-        distinct_knots(periodic.knots, static_cast<std::size_t>(p), n + static_cast<std::size_t>(p) - 1, values, mults);
-        values.push_back(periodic.knots[n + static_cast<std::size_t>(p)]);
-        mults.push_back(mults.front());
-    } else {
-        distinct_knots(curve.knots(), 0, curve.knots().size() - 1, values, mults);
-    }
+    distinct_knots(curve.knots(), values, mults);
     std::lock_guard<std::mutex> lock(step_writer_mutex);
     std::filesystem::path temp;
     try {
@@ -72,7 +63,7 @@ Outcome write_step(std::ostream& out, const BSplineCurve& curve, const PeriodicB
             knots.SetValue(static_cast<int>(i) + 1, values[i]);
             multiplicities.SetValue(static_cast<int>(i) + 1, mults[i]);
         }
-        const Handle(Geom_BSplineCurve) c = new Geom_BSplineCurve(poles, knots, multiplicities, p, use_periodic);
+        const Handle(Geom_BSplineCurve) c = new Geom_BSplineCurve(poles, knots, multiplicities, p);
         BRepBuilderAPI_MakeEdge edge(c);
         if (!edge.IsDone()) return {Status::no_solution, "OpenCASCADE could not make an edge of the B-spline"};
         STEPControl_Writer writer;
@@ -102,7 +93,7 @@ Outcome write_step(std::ostream& out, const BSplineCurve& curve, const PeriodicB
 #else
 bool step_available() { return false; }
 
-Outcome write_step(std::ostream&, const BSplineCurve&, const PeriodicBSpline&, bool) {
+Outcome write_step(std::ostream&, const BSplineCurve&) {
     fail_input("cagd::exports::write_step", "STEP needs a cagd library built with OpenCASCADE (Debian libocct-data-exchange-dev); this one was built without it");
 }
 #endif

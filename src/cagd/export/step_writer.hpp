@@ -3,8 +3,8 @@
 /// A curve as STEP (ISO 10303-21, application protocol AP214), written by OpenCASCADE's
 /// STEPControl_Writer: one edge on a Geom_BSplineCurve, which the translator writes as a
 /// B_SPLINE_CURVE_WITH_KNOTS (degree, control points, distinct knots with multiplicities, no
-/// weights), in millimetres. Planar curves get z = 0. A closed curve with a periodic form
-/// (bspline_form.hpp) is a periodic Geom_BSplineCurve (closed_curve .T.), otherwise clamped.
+/// weights), in millimetres. Planar curves get z = 0. A closed curve is clamped at its first point
+/// (the periodic form is not written yet: docs/export.md).
 /// Available only in a library built with OpenCASCADE (CMake found it; step_available());
 /// otherwise write_step throws InvalidInput saying so. OpenCASCADE's own messages are silenced so
 /// that nothing but the file reaches the output.
@@ -15,8 +15,8 @@
 
 namespace cagd::exports {
 
-/// Writes the STEP file of `curve` (clamped; `periodic` used for a closed curve when it has knots).
-/// Outcome not ok when OpenCASCADE rejects the curve or fails to write.
-Outcome write_step(std::ostream& out, const BSplineCurve& curve, const PeriodicBSpline& periodic, bool closed);
+/// Writes the STEP file of `curve`. Outcome not ok when OpenCASCADE rejects the curve or fails to
+/// write.
+Outcome write_step(std::ostream& out, const BSplineCurve& curve);
 
 }  // namespace cagd::exports
