@@ -88,6 +88,19 @@ expect_bad "hairpin (turn of pi)"  '0,0\n2,0\n1,0\n3,1\n' interpolate --method p
 expect_bad "pseudo-spline 1 point" '0,0\n'               interpolate --method pseudo-spline --in "$dir/bad.csv" --out "$dir/o.csv"
 expect_bad "hermite-b 2 points"    '0,0\n1,1\n'          interpolate --method hermite-b --in "$dir/bad.csv" --out "$dir/o.csv"
 expect_bad "closed with 2 points"  '0,0\n1,1\n'          interpolate --method cubic-b --closed --in "$dir/bad.csv" --out "$dir/o.csv"
+# Output formats (docs/export.md): an unknown extension and a planar format for 3-D points are bad
+# input, refused before anything is written, with a message naming the extension or the format.
+expect_bad "unknown extension"     '0,0\n1,1\n2,0\n'    interpolate --in "$dir/bad.csv" --out "$dir/o.txt"
+grep -q "unknown extension '.txt'" "$dir/err.txt" && [ ! -e "$dir/o.txt" ] || { echo "FAIL: unknown extension: message or a file written"; cat "$dir/err.txt"; fails=$((fails+1)); }
+expect_bad "svg of 3-D points"     '0,0,0\n1,1,0\n2,0,1\n' interpolate --method cubic-b --in "$dir/bad.csv" --out "$dir/o.svg"
+grep -q "svg is planar" "$dir/err.txt" && [ ! -e "$dir/o.svg" ] || { echo "FAIL: svg of 3-D points: message or a file written"; cat "$dir/err.txt"; fails=$((fails+1)); }
+expect_bad "unknown --format"      '0,0\n1,1\n2,0\n'    interpolate --in "$dir/bad.csv" --out "$dir/o.csv" --format pdf
+expect_bad "compare --export pdf"  '0,0\n1,1\n2,0\n'    compare --in "$dir/bad.csv" --out "$dir/cmp" --export pdf
+# --format wins over the extension; --arc-length-samples gives equal chords of the curve's length.
+"$cagd" interpolate --method cubic-b --in "$dir/pts.csv" --out "$dir/c.data" --format json || { echo "FAIL: --format json"; fails=$((fails+1)); }
+grep -q '"format": "cagd-curve"' "$dir/c.data" || { echo "FAIL: --format json wrote no curve document"; fails=$((fails+1)); }
+"$cagd" interpolate --method cubic-b --in "$dir/pts.csv" --out "$dir/al.csv" --arc-length-samples 5 || { echo "FAIL: --arc-length-samples"; fails=$((fails+1)); }
+[ "$(wc -l < "$dir/al.csv")" -eq 6 ] || { echo "FAIL: --arc-length-samples 5 wrote $(wc -l < "$dir/al.csv") lines"; fails=$((fails+1)); }
 expect_bad "unknown optimisation"  '0,0\n1,1\n2,0\n'    interpolate --method pseudo-spline --optimize fast --in "$dir/bad.csv" --out "$dir/o.csv"
 expect_bad "foreign table file"    '0,0\n1,1\n2,0\n'    interpolate --method pseudo-spline --table "$dir/bad.csv" --in "$dir/bad.csv" --out "$dir/o.csv"
 expect_bad "analyze --in, no method" '0,0\n1,1\n2,0\n'  analyze --in "$dir/bad.csv"

@@ -97,7 +97,6 @@ space = [(math.cos(0.7 * i), math.sin(0.7 * i), 0.25 * i) for i in range(9)]
 work = tempfile.mkdtemp(prefix="cagd-export-readers-")
 try:
     import ezdxf
-    from ezdxf import recover  # noqa: F401  (the package is complete)
 
     write_points(os.path.join(work, "open.csv"), open_2d)
     write_points(os.path.join(work, "closed.csv"), closed_2d)

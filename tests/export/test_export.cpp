@@ -11,6 +11,7 @@
 #include "cagd/export/bspline_form.hpp"
 #include "cagd/export/curve_formats.hpp"
 #include "cagd/export/curve_json.hpp"
+#include "cagd/export/curve_samples.hpp"
 #include "cagd/methods/method_parameter_curve.hpp"
 #include "cagd/methods/method_registry.hpp"
 #include "../support/messages.hpp"
@@ -276,4 +277,21 @@ TEST(CurveFormats, DxfHoldsOneSplineWithConsistentCounts) {
     EXPECT_EQ(controls, nc);
     EXPECT_EQ(nk, nc + degree + 1);
     EXPECT_EQ(nc, 4 + 7);  // clamped: p + 1 and one per simple interior knot (C2 at the 7 inner points)
+}
+
+TEST(CurveSamples, ArcLengthSamplesAreEquallySpacedInArcLength) {
+    const methods::InterpolationResult r = methods::interpolate("hosaka", test::kNewberyGarrett, false);
+    const methods::MethodParameterCurve c(*r.interpolant);
+    std::stringstream s;
+    ASSERT_TRUE(write_curve_samples(s, c, {.arc_length_samples = 11}).ok());
+    std::string line;
+    std::getline(s, line);
+    EXPECT_EQ(line, "t,x,y,dx,dy,ddx,ddy");
+    std::vector<double> ts;
+    while (std::getline(s, line)) ts.push_back(std::stod(line.substr(0, line.find(','))));
+    ASSERT_EQ(ts.size(), 11u);
+    const double L = analysis::adaptive_arc_length(c, 1e-12);
+    // The t column has 15 digits; |r'| ≤ a few times L / t_max, so each arc is exact to ~1e-13 L.
+    for (std::size_t k = 0; k + 1 < ts.size(); ++k)
+        EXPECT_NEAR(analysis::arc_length(c, ts[k], ts[k + 1], 8), L / 10, 1e-10 * L) << "between samples " << k << " and " << k + 1;
 }
