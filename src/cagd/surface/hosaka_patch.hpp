@@ -103,6 +103,8 @@ public:
     EdgeFormPatch(int m, PatchEdges edges);
     /// m.
     int m() const { return basis_.m(); }
+    /// The four edge curves.
+    const PatchEdges& edges() const { return edges_; }
     /// S(u, v).
     Eigen::VectorXd point(double u, double v) const { return derivative(u, v, 0, 0); }
     /// S^{(a,b)}(u, v).
