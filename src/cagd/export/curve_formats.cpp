@@ -13,11 +13,11 @@ namespace cagd::exports {
 
 const std::vector<CurveFormatInfo>& curve_formats() {
     static const std::vector<CurveFormatInfo> formats{
-        {CurveFormat::csv, "csv", {".csv"}, "samples: parameter, position, 1st and 2nd derivative", true},
-        {CurveFormat::json, "json", {".json"}, "the Bezier pieces with method, parameters and points (cagd analyze --in reads it)", true},
-        {CurveFormat::svg, "svg", {".svg"}, "a path of cubic Beziers (planar), optional points and curvature comb", false},
-        {CurveFormat::dxf, "dxf", {".dxf"}, "one SPLINE entity (AutoCAD 2000 DXF), the exact B-spline", true},
-        {CurveFormat::step, "step", {".step", ".stp"}, "a B_SPLINE_CURVE_WITH_KNOTS (AP214, through OpenCASCADE)", true},
+        {CurveFormat::csv, "csv", {".csv"}, "samples: parameter, position, 1st and 2nd derivative", true, true},
+        {CurveFormat::json, "json", {".json"}, "the Bezier pieces with method, parameters and points (cagd analyze --in reads it)", true, true},
+        {CurveFormat::svg, "svg", {".svg"}, "a path of cubic Beziers (planar), optional points and curvature comb", false, false},
+        {CurveFormat::dxf, "dxf", {".dxf"}, "one SPLINE entity (AutoCAD 2000 DXF), the exact B-spline", true, false},
+        {CurveFormat::step, "step", {".step", ".stp"}, "a B_SPLINE_CURVE_WITH_KNOTS (AP214, through OpenCASCADE)", true, true},
     };
     return formats;
 }
@@ -92,6 +92,22 @@ Outcome write_curve(std::ostream& out, CurveFormat format, const Curve& curve, c
         }
     }
     return {};
+}
+
+Outcome write_surface(std::ostream& out, CurveFormat format, const SurfaceForm& form, const SurfaceProvenance& provenance) {
+    const char* who = "cagd::exports::write_surface";
+    const CurveFormatInfo& info = curve_format_info(format);
+    if (!info.surfaces || format == CurveFormat::csv)
+        fail_input(who, std::string(info.name) + " does not take surfaces; they leave in json or step (and as csv grids from the command)");
+    for (const surface::ControlNet& net : form.pieces.nets)
+        for (const Eigen::MatrixXd& c : net)
+            if (!c.allFinite()) return {Status::not_representable, "a control point of the surface is not finite"};
+    if (format == CurveFormat::json) {
+        write_surface_json(out, form, provenance);
+        return {};
+    }
+    if (!step_available()) fail_input(who, "STEP needs a cagd library built with OpenCASCADE (Debian libocct-data-exchange-dev); this one was built without it");
+    return write_step(out, bspline_surface(form.pieces));
 }
 
 }  // namespace cagd::exports

@@ -10,6 +10,10 @@
 ///   step  a B_SPLINE_CURVE_WITH_KNOTS through OpenCASCADE (step_writer.hpp)     2-D, 3-D;
 ///         only in a library built with OpenCASCADE (step_available())
 ///
+/// Surfaces (surface_form.hpp) leave in json (their Bézier patches) and step (one B-spline surface,
+/// a B_SPLINE_SURFACE_WITH_KNOTS); the commands also write csv grids of samples. svg and dxf take
+/// no surfaces (a DXF surface is an ACIS solid-modeller body, not a B-spline entity).
+///
 /// Exact or not: polynomial curves leave exactly in json, dxf and step (their own pieces, joined
 /// with the fewest knots) and in svg when of degree ≤ 3; everything else is approximated within the
 /// stated distance (bezier_form.hpp), and the file says so.
@@ -44,6 +48,7 @@ struct CurveFormatInfo {
     std::vector<std::string> extensions;   ///< with the dot, lower case
     const char* summary;                   ///< one line for help texts
     bool space_curves;                     ///< takes 3-D curves
+    bool surfaces;                         ///< takes surfaces (csv: the command's grids)
 };
 /// Every format, in the order above.
 const std::vector<CurveFormatInfo>& curve_formats();
@@ -69,5 +74,10 @@ struct ExportOptions {
 /// InvalidInput for a format that does not take the curve (svg of a 3-D curve, step without
 /// OpenCASCADE) or invalid options.
 Outcome write_curve(std::ostream& out, CurveFormat format, const Curve& curve, const CurveProvenance& provenance, const ExportOptions& options);
+
+/// Writes the patches of a surface in json or step. InvalidInput for another format, or step
+/// without OpenCASCADE or above its degree limit; Outcome not ok for a control point that is not
+/// finite or a surface OpenCASCADE rejects.
+Outcome write_surface(std::ostream& out, CurveFormat format, const SurfaceForm& form, const SurfaceProvenance& provenance);
 
 }  // namespace cagd::exports

@@ -18,6 +18,17 @@
 ///     "pieces": [[[x, y], …], …]           K pieces of degree + 1 control points
 ///   }
 ///
+/// The JSON surface document: a surface's Bézier patches (surface_form.hpp) with what made it.
+///
+///   {
+///     "format": "cagd-surface", "format_version": 1, "library_version": "0.1",
+///     "source": {"kind": "hosaka-tensor", "parameters": {"m": "1", …}},   what made it, as text
+///     "exact": true, "conversion_error": 3e-16,    as measured by the conversion
+///     "degree_u": 3, "degree_v": 3,
+///     "u_breaks": [u_0, …, u_K], "v_breaks": [v_0, …, v_L],
+///     "patches": [net, …]                           cell (a, b) at a + K b; a net is degree_u + 1
+///   }                                               rows of degree_v + 1 points [x, y, z]
+///
 /// Numbers are written in the shortest form that reads back to the same double (nlohmann/json), so
 /// a document read back gives the same pieces bit for bit.
 /// Reading checks everything before using it (InvalidInput naming the document and the member):
@@ -31,6 +42,7 @@
 
 #include "cagd/core/points.hpp"
 #include "cagd/export/bezier_form.hpp"
+#include "cagd/export/surface_form.hpp"
 #include "cagd/methods/method_parameters.hpp"
 
 namespace cagd::exports {
@@ -61,5 +73,27 @@ void write_curve_json(std::ostream& out, const BezierForm& form, const CurveProv
 CurveDocument read_curve_json(std::istream& in, const std::string& source);
 /// The same from a file path.
 CurveDocument read_curve_json_file(const std::string& path);
+
+/// What made a surface.
+struct SurfaceProvenance {
+    std::string kind{};                   ///< e.g. hosaka-tensor, hosaka-cartesian, hosaka-coons, typical-surface
+    methods::ParameterText parameters{};  ///< its inputs as text
+};
+
+/// A surface document read back.
+struct SurfaceDocument {
+    SurfaceProvenance provenance;  ///< what made it
+    SurfaceForm form;              ///< its patches, exactness and conversion error
+    std::string library_version;   ///< as written
+};
+
+/// Writes the surface document of `form` and `provenance` (see above) to `out`.
+void write_surface_json(std::ostream& out, const SurfaceForm& form, const SurfaceProvenance& provenance);
+/// Reads a surface document: format and version, 1 ≤ degrees ≤ 1000, breaks finite and increasing
+/// (at most 100001), at most 10^7 control points, one net of finite points per cell; InvalidInput
+/// naming the document and the member otherwise.
+SurfaceDocument read_surface_json(std::istream& in, const std::string& source);
+/// The same from a file path.
+SurfaceDocument read_surface_json_file(const std::string& path);
 
 }  // namespace cagd::exports

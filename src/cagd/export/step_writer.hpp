@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// A curve as STEP (ISO 10303-21, application protocol AP214), written by OpenCASCADE's
+/// A curve or a surface as STEP (ISO 10303-21, application protocol AP214), written by OpenCASCADE's
 /// STEPControl_Writer: one edge on a Geom_BSplineCurve, which the translator writes as a
 /// B_SPLINE_CURVE_WITH_KNOTS (degree, control points, distinct knots with multiplicities, no
 /// weights), in millimetres. Planar curves get z = 0. A closed curve is clamped at its first point
@@ -12,11 +12,17 @@
 
 #include "cagd/core/errors.hpp"
 #include "cagd/export/bspline_form.hpp"
+#include "cagd/export/surface_form.hpp"
 
 namespace cagd::exports {
 
 /// Writes the STEP file of `curve`. Outcome not ok when OpenCASCADE rejects the curve or fails to
 /// write.
 Outcome write_step(std::ostream& out, const BSplineCurve& curve);
+/// Writes the STEP file of `surface`: one face on a Geom_BSplineSurface, which the translator
+/// writes as a B_SPLINE_SURFACE_WITH_KNOTS bounded by its parameter rectangle. InvalidInput for a
+/// degree above OpenCASCADE's limit (25; the typical surface of n > 26 control points per
+/// direction leaves in JSON only); Outcome not ok when OpenCASCADE rejects the surface.
+Outcome write_step(std::ostream& out, const BSplineSurface& surface);
 
 }  // namespace cagd::exports
