@@ -146,6 +146,14 @@ expect_bad "surface m 3"            ''                   surface --kind boundary
 expect_bad "surface not a grid"     'x,y,z\n0,0,0\n1,0,1\n0,1,1\n' surface --kind tensor --in "$dir/bad.csv" --out "$dir/o.csv"
 expect_bad "coons open corners"     '0,1,0.9\n0.5,1.1,0.5\n1,1,0.2\n' surface --kind coons --bottom "$dir/eb.csv" --left "$dir/el.csv" --top "$dir/bad.csv" --right "$dir/er.csv" --out "$dir/o.csv"
 expect_bad "coons missing edge"     ''                   surface --kind coons --bottom "$dir/eb.csv" --out "$dir/o.csv"
+# Surfaces leave in csv, json and step only; the boundary surface (not polynomial) in csv only.
+expect_bad "surface as svg"         ''                   surface --kind tensor --in "$dir/grid.csv" --out "$dir/o.svg"
+expect_bad "surface as dxf format"  ''                   surface --kind tensor --in "$dir/grid.csv" --format dxf --out "$dir/o"
+expect_bad "boundary surface json"  ''                   surface --kind boundary --lower "$dir/L0.csv" --upper "$dir/L1.csv" --out "$dir/o.json"
+expect_bad "typical surface svg"    ''                   typical-surface --n 5 --alpha-u -1 --alpha-v -1 --angle-deg 10 --out "$dir/o.svg"
+[ ! -e "$dir/o.svg" ] && [ ! -e "$dir/o.json" ] || { echo "FAIL: a refused surface export left a file"; fails=$((fails+1)); }
+"$cagd" surface --kind tensor --in "$dir/grid.csv" --out "$dir/s1.json" && grep -q '"format": "cagd-surface"' "$dir/s1.json" \
+  || { echo "FAIL: surface tensor as json"; fails=$((fails+1)); }
 expect_bad "hosaka bessel end"     '0,0\n1,1\n2,0\n'    interpolate --method hosaka --end bessel --in "$dir/bad.csv" --out "$dir/o.csv"
 expect_bad "hosaka zero chord"     '0,0\n1,1\n1,1\n'    interpolate --method hosaka --in "$dir/bad.csv" --out "$dir/o.csv"
 expect_bad "hosaka tangent dim"    '0,0\n1,1\n2,0\n'    interpolate --method hosaka --end tangent --start-tangent 1,0,0 --end-tangent 0,1,0 --in "$dir/bad.csv" --out "$dir/o.csv"

@@ -10,6 +10,10 @@ with the curve's own samples (the CSV of the same run, 15 significant digits, in
 - SVG: headless Chromium loads every drawing in one page; the browser's own path geometry
   (getTotalLength, getPointAtLength) must lie on the curve.
 
+Surfaces (`cagd surface --kind tensor|coons`, `cagd typical-surface`) leave in JSON (the Bézier
+patches, evaluated here by de Casteljau in both directions) and STEP (OpenCASCADE evaluates the
+face's B-spline surface), each compared with the command's own CSV grid of the same surface.
+
 Tolerances: an exact form must agree to 1e-9 of the data diagonal (the CSV's 15 digits and the
 readers' arithmetic); an approximation to its stated tolerance (1e-6 of the diagonal) plus that;
 the browser's geometry to 2e-4 of the diagonal (it works in single precision, and the reference
@@ -27,7 +31,7 @@ import tempfile
 cagd = sys.argv[1]
 step_reader = sys.argv[2] if len(sys.argv) > 2 and sys.argv[2] else None
 failures = []
-checked = {"json": 0, "dxf": 0, "step": 0, "svg": 0}
+checked = {"json": 0, "dxf": 0, "step": 0, "svg": 0, "surface json": 0, "surface step": 0}
 
 
 def fail(what):
@@ -83,6 +87,52 @@ def json_point(doc, t):
     breaks = doc["breaks"]
     i = max(0, min(len(breaks) - 2, next((k for k in range(len(breaks) - 1) if t < breaks[k + 1]), len(breaks) - 2)))
     return bezier_point(doc["pieces"][i], (t - breaks[i]) / (breaks[i + 1] - breaks[i]))
+
+
+def surface_point(doc, u, v):
+    """S(u, v) of a surface document: the cell holding (u, v), de Casteljau along v, then along u."""
+    def cell(breaks, x):
+        return max(0, min(len(breaks) - 2, next((k for k in range(len(breaks) - 1) if x < breaks[k + 1]), len(breaks) - 2)))
+    ub, vb = doc["u_breaks"], doc["v_breaks"]
+    a, b = cell(ub, u), cell(vb, v)
+    net = doc["patches"][a + (len(ub) - 1) * b]
+    s, t = (u - ub[a]) / (ub[a + 1] - ub[a]), (v - vb[b]) / (vb[b + 1] - vb[b])
+    return bezier_point([bezier_point(row, t) for row in net], s)
+
+
+def check_surface(label, base, grid_csv, parameters):
+    """The JSON and STEP files of base against the CSV grid: parameters(row) gives (u, v), the
+    columns x, y, z the point."""
+    with open(grid_csv) as f:
+        header = f.readline().strip().split(",")
+        rows = [dict(zip(header, (float(v) for v in line.split(",")))) for line in f if line.strip()]
+    uv = [parameters(r) for r in rows]
+    xyz = [[r["x"], r["y"], r["z"]] for r in rows]
+    tol = 1e-9 * diagonal(xyz)
+    with open(base + ".json") as f:
+        doc = json.load(f)
+    if doc["format"] != "cagd-surface" or not doc["exact"]:
+        fail(f"{label}: the JSON is not an exact surface document")
+    err = max(dist(surface_point(doc, u, v), x) for (u, v), x in zip(uv, xyz))
+    if err > tol:
+        fail(f"{label}: JSON patches {err:.3g} from the grid (tolerance {tol:.3g})")
+    checked["surface json"] += 1
+    if not step_reader:
+        return
+    r = subprocess.run([step_reader, base + ".step"], input="\n".join(f"{u!r},{v!r}" for u, v in uv) + "\n", capture_output=True, text=True)
+    if r.returncode != 0:
+        fail(f"{label}: OpenCASCADE does not read the STEP surface: {r.stderr.strip()}")
+        return
+    lines = r.stdout.split()
+    bounds = [float(v) for v in lines[0].split(",")]
+    want = [min(u for u, _ in uv), max(u for u, _ in uv), min(v for _, v in uv), max(v for _, v in uv)]
+    if max(abs(a - b) for a, b in zip(bounds, want)) > 1e-9 * max(1.0, max(abs(w) for w in want)):
+        fail(f"{label}: STEP surface on {bounds}, the grid on {want}")
+    got = [[float(v) for v in line.split(",")] for line in lines[1:]]
+    err = max(dist(g, x) for g, x in zip(got, xyz))
+    if len(got) != len(xyz) or err > tol:
+        fail(f"{label}: OpenCASCADE's surface {err:.3g} from the grid (tolerance {tol:.3g})")
+    checked["surface step"] += 1
 
 
 def diagonal(points):
@@ -169,6 +219,34 @@ try:
                 checked["step"] += 1
             if data != "space":
                 svgs.append((label, base + ".svg", xs, diag, float(analysis["length_integrated"])))
+
+    # Surfaces: each in csv (the reference grid), json and step.
+    heights = [(x, y, math.sin(x) * math.cos(0.7 * y) + 0.1 * x * y) for x in (0.0, 0.6, 1.5, 2.0, 3.2) for y in (-1.0, 0.0, 0.8, 2.0)]
+    write_points(os.path.join(work, "heights.csv"), heights)
+    # Four edges meeting at (0, 0, 0), (3, 0, 0), (0, 2, 1) and (3, 2.3, 0.5), with spans of different lengths.
+    edges = {"bottom": [(s, 0.0, 0.3 * s * (3 - s)) for s in (0.0, 1.0, 2.0, 3.0)],
+             "left": [(0.0, t, 0.25 * t * t) for t in (0.0, 0.5, 1.2, 2.0)],
+             "top": [(0.0, 2.0, 1.0), (1.5, 2.15, 0.8), (3.0, 2.3, 0.5)],
+             "right": [(3.0, 0.0, 0.0), (3.0, 0.7, 0.2), (3.0, 1.4, 0.3), (3.0, 2.3, 0.5)]}
+    for name, rows in edges.items():
+        write_points(os.path.join(work, name + ".csv"), rows)
+    surface_cases = [
+        ("surface tensor", ["surface", "--kind", "tensor", "--in", os.path.join(work, "heights.csv"), "--samples", "12"], lambda r: (r["x"], r["y"])),
+        ("surface coons", ["surface", "--kind", "coons"] + sum((["--" + n, os.path.join(work, n + ".csv")] for n in edges), []) + ["--samples", "12"],
+         lambda r: (r["u"], r["v"])),
+        ("typical-surface", ["typical-surface", "--n", "9", "--alpha-u", "-0.5", "--alpha-v", "2", "--angle-deg", "20", "--grid", "11"], lambda r: (r["u"], r["v"])),
+    ]
+    for label, args, parameters in surface_cases:
+        base = os.path.join(work, label.replace(" ", "-"))
+        try:
+            run(*args, "--out", base + ".csv")
+            run(*args, "--out", base + ".json")
+            if step_reader:
+                run(*args, "--out", base + ".step")
+        except RuntimeError as e:
+            fail(f"{label}: {e}")
+            continue
+        check_surface(label, base, base + ".csv", parameters)
 
     # SVG: one page with every drawing; the browser measures each path.
     chromium = shutil.which("chromium")

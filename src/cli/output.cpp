@@ -122,4 +122,20 @@ void require_output_rows(double rows, const std::string& what) {
         fail_input("cagd", what + " would write " + format_number(rows, 3) + " rows; at most " + std::to_string(kMaxOutputRows) + " (about 1 GB of CSV)");
 }
 
+exports::CurveFormat surface_output_format(const std::string& format, const std::string& path, const std::string& who) {
+    const exports::CurveFormat f = format.empty() ? exports::curve_format_of_path(path) : exports::curve_format_named(format);
+    const exports::CurveFormatInfo& info = exports::curve_format_info(f);
+    if (!info.surfaces) fail_input(who, path + ": " + info.name + " takes no surfaces; write csv (a grid of samples), json (the exact patches) or step");
+    if (f == exports::CurveFormat::step && !exports::step_available())
+        fail_input(who, path + ": STEP needs a cagd built with OpenCASCADE (Debian libocct-data-exchange-dev); this one was built without it");
+    return f;
+}
+
+std::vector<std::string> surface_format_names() {
+    std::vector<std::string> names;
+    for (const exports::CurveFormatInfo& i : exports::curve_formats())
+        if (i.surfaces) names.push_back(i.name);
+    return names;
+}
+
 }  // namespace cagd::cli

@@ -16,6 +16,7 @@
 
 #include "cagd/core/output_file.hpp"
 #include "cagd/core/points.hpp"
+#include "cagd/export/curve_formats.hpp"
 
 namespace cagd::cli {
 
@@ -87,5 +88,12 @@ constexpr long kMaxOutputRows = 10'000'000;
 // torsion): `cagd lac` and `cagd lac3d` bound degree × samples so that a run stays within seconds.
 constexpr double kMaxDegreeTimesSamples = 2e8;
 void require_output_rows(double rows, const std::string& what);
+
+/// A surface command's output format, from --format (`format`, may be empty) or the extension of
+/// `path`: csv (the grid of samples), json or step; bad input for svg, dxf or an unknown one, and
+/// for step without OpenCASCADE, before any work.
+exports::CurveFormat surface_output_format(const std::string& format, const std::string& path, const std::string& who);
+/// The names --format takes for a surface, for CLI::IsMember.
+std::vector<std::string> surface_format_names();
 
 }  // namespace cagd::cli

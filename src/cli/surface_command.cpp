@@ -1,5 +1,6 @@
 // `cagd surface --kind tensor|coons|boundary … --out GRID.csv`: the hosaka section 4 surfaces that
-// take simple inputs, sampled on a (samples+1)² grid.
+// take simple inputs, sampled on a (samples+1)² grid; tensor and coons also leave exactly as Bezier
+// patches (--out S.json) or one B-spline surface (--out S.step), export/surface_form.hpp.
 #include <memory>
 
 #include "cli/commands.hpp"
@@ -7,6 +8,8 @@
 #include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
 #include "cagd/core/point_csv.hpp"
+#include "cagd/export/curve_formats.hpp"
+#include "cagd/export/surface_form.hpp"
 #include "cagd/surface/boundary_surface.hpp"
 #include "cagd/surface/hosaka_patch.hpp"
 
@@ -18,7 +21,7 @@ enum class SurfaceKind { tensor, coons, boundary };
 
 struct SurfaceArgs {
     SurfaceKind kind = SurfaceKind::tensor;
-    std::string in, bottom, left, top, right, lower, upper, out;
+    std::string in, bottom, left, top, right, lower, upper, out, format;
     int m = 1, samples = 20;
     double lower_slope = 0, upper_slope = 0, lower_curvature = 0, upper_curvature = 0;
 };
@@ -27,24 +30,36 @@ void require(const std::string& value, const char* kind, const char* option) {
     if (value.empty()) fail_input("cagd surface", std::string("--kind ") + kind + " needs " + option);
 }
 
+// The exact patches of a polynomial surface in json or step; a conversion that is not exact to
+// rounding is a numerical outcome, never written.
+void write_patches(const exports::SurfaceForm& form, exports::CurveFormat format, const exports::SurfaceProvenance& provenance, OutputFile& out) {
+    if (!form.exact) throw NoResult("the Bezier patches differ from the surface by " + full_precision(form.conversion_error) + ": no exact form to write");
+    if (const Outcome written = exports::write_surface(out.stream(), format, form, provenance); !written.ok()) throw NoResult(written.message);
+}
+
 // eq (30), m = 1, node derivatives from splines along the grid lines.
-void write_tensor(const SurfaceArgs& a, OutputFile& out) {
+void write_tensor(const SurfaceArgs& a, exports::CurveFormat format, OutputFile& out) {
     require(a.in, "tensor", "--in");
     const int n = a.samples;
     const surface::CartesianSurface s = surface::cartesian_spline_surface(read_data_points(a.in));
+    if (format != exports::CurveFormat::csv) return write_patches(exports::to_bezier(s), format, {"hosaka-cartesian", {{"m", "1"}, {"in", a.in}}}, out);
     CsvOutput w(out, {"x", "y", "z", "zx", "zy"});
     for (int i = 0; i <= n; ++i)
         for (int j = 0; j <= n; ++j) {
-            const double x = s.x().front() + (s.x().back() - s.x().front()) * i / n, y = s.y().front() + (s.y().back() - s.y().front()) * j / n;
+            // The last line exactly on the grid's edge (rounding may carry front + span past it).
+            const double x = i == n ? s.x().back() : s.x().front() + (s.x().back() - s.x().front()) * i / n;
+            const double y = j == n ? s.y().back() : s.y().front() + (s.y().back() - s.y().front()) * j / n;
             w.row({x, y, s.value(x, y), s.derivative(x, y, 1, 0), s.derivative(x, y, 0, 1)}, 15);
         }
 }
 
 // eq (28) with S0 = 0.
-void write_coons(const SurfaceArgs& a, OutputFile& out) {
+void write_coons(const SurfaceArgs& a, exports::CurveFormat format, OutputFile& out) {
     for (const auto& [v, o] : {std::pair{a.bottom, "--bottom"}, {a.left, "--left"}, {a.top, "--top"}, {a.right, "--right"}}) require(v, "coons", o);
     const int n = a.samples;
     const surface::EdgeFormPatch s(1, surface::edges_through_points(read_data_points(a.bottom), read_data_points(a.left), read_data_points(a.top), read_data_points(a.right)));
+    if (format != exports::CurveFormat::csv)
+        return write_patches(exports::to_bezier(s), format, {"hosaka-coons", {{"m", "1"}, {"bottom", a.bottom}, {"left", a.left}, {"top", a.top}, {"right", a.right}}}, out);
     const Eigen::VectorXd probe = s.point(0, 0);
     std::vector<std::string> header{"u", "v", "x", "y"};
     if (probe.size() == 3) header.push_back("z");
@@ -59,7 +74,9 @@ void write_coons(const SurfaceArgs& a, OutputFile& out) {
 }
 
 // eq (31) between two boundary curves.
-void write_boundary(const SurfaceArgs& a, OutputFile& out) {
+void write_boundary(const SurfaceArgs& a, exports::CurveFormat format, OutputFile& out) {
+    if (format != exports::CurveFormat::csv)
+        fail_input("cagd surface", "--kind boundary: the surface between two boundary curves is not polynomial (eq 31 over y between y_0(x) and y_1(x)); it leaves as a csv grid only");
     require(a.lower, "boundary", "--lower");
     require(a.upper, "boundary", "--upper");
     const int n = a.samples;
@@ -99,13 +116,15 @@ Command add_surface_command(CLI::App& app) {
     c->add_option("--lower-curvature", a->lower_curvature, "boundary, m = 2: d2z/dy2 along L0 (constant)");
     c->add_option("--upper-curvature", a->upper_curvature, "boundary, m = 2: d2z/dy2 along L1 (constant)");
     c->add_option("--samples", a->samples, "samples per direction ((N+1)^2 rows)")->check(CLI::Range(1, 3000));
-    c->add_option("--out", a->out, "grid CSV; - for stdout")->required();
+    c->add_option("--out", a->out, "by extension: .csv grid of samples, .json exact Bezier patches (tensor, coons), .step/.stp one B-spline surface (tensor, coons); - for stdout (csv unless --format)")->required();
+    c->add_option("--format", a->format, "output format, whatever the extension")->check(CLI::IsMember(surface_format_names()));
     return {c, [a] {
+                const exports::CurveFormat format = surface_output_format(a->format, a->out, "cagd surface");
                 OutputFile out(a->out);
                 switch (a->kind) {
-                    case SurfaceKind::tensor: write_tensor(*a, out); break;
-                    case SurfaceKind::coons: write_coons(*a, out); break;
-                    case SurfaceKind::boundary: write_boundary(*a, out); break;
+                    case SurfaceKind::tensor: write_tensor(*a, format, out); break;
+                    case SurfaceKind::coons: write_coons(*a, format, out); break;
+                    case SurfaceKind::boundary: write_boundary(*a, format, out); break;
                 }
                 out.commit();
                 return 0;
