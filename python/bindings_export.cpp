@@ -4,6 +4,7 @@
 
 #include "cagd/export/bspline_form.hpp"
 #include "cagd/export/curve_formats.hpp"
+#include "cagd/export/surface_form.hpp"
 
 namespace cagd_python {
 
@@ -36,9 +37,96 @@ cagd::exports::BezierForm bezier_form(const PyCurve& c, std::optional<int> degre
     return f;
 }
 
+// The patches as a dict: nets has shape (cells_u, cells_v, degree_u + 1, degree_v + 1, 3).
+py::dict surface_dict(const cagd::exports::SurfaceForm& f) {
+    const cagd::exports::BezierSurfacePieces& p = f.pieces;
+    py::array_t<double> nets(std::vector<py::ssize_t>{p.cells_u(), p.cells_v(), p.degree_u + 1, p.degree_v + 1, 3});
+    double* w = nets.mutable_data();
+    for (int a = 0; a < p.cells_u(); ++a)
+        for (int b = 0; b < p.cells_v(); ++b)
+            for (int i = 0; i <= p.degree_u; ++i)
+                for (int j = 0; j <= p.degree_v; ++j)
+                    for (int c = 0; c < 3; ++c) *w++ = p.net(a, b)[static_cast<std::size_t>(c)](i, j);
+    py::dict d;
+    d["degree_u"] = p.degree_u;
+    d["degree_v"] = p.degree_v;
+    d["u_breaks"] = from_vector(p.u_breaks);
+    d["v_breaks"] = from_vector(p.v_breaks);
+    d["nets"] = nets;
+    d["exact"] = f.exact;
+    d["conversion_error"] = f.conversion_error;
+    return d;
+}
+
+// to_bezier and write for one surface class (export/surface_form.hpp).
+template <class Surface>
+void bind_surface_export(py::module_& m, const char* name, const char* kind, const char* example) {
+    auto cls = py::reinterpret_borrow<py::class_<Surface>>(m.attr(name));
+    cls.def(
+        "to_bezier",
+        [](const Surface& s) {
+            cagd::exports::SurfaceForm f;
+            {
+                py::gil_scoped_release release;
+                f = cagd::exports::to_bezier(s);
+            }
+            return surface_dict(f);
+        },
+        (std::string("The surface's exact Bézier patches (export/surface_form.hpp): a dict of degree_u, degree_v, u_breaks, v_breaks (cell (a, b) on "
+                     "[u_a, u_a+1] × [v_b, v_b+1]), nets (cells_u × cells_v × (degree_u + 1) × (degree_v + 1) × 3), exact and conversion_error (the largest "
+                     "distance to the surface measured inside every cell).\n\n") +
+         example)
+            .c_str());
+    cls.def(
+        "write",
+        [kind](const Surface& s, const std::string& path, std::optional<std::string> format) {
+            const cagd::exports::CurveFormat f = format ? cagd::exports::curve_format_named(*format) : cagd::exports::curve_format_of_path(path);
+            cagd::OutputFile out(path, "path");
+            cagd::Outcome written;
+            {
+                py::gil_scoped_release release;
+                const cagd::exports::SurfaceForm form = cagd::exports::to_bezier(s);
+                if (!form.exact) written = {cagd::Status::not_representable, "the Bézier patches differ from the surface by " + std::to_string(form.conversion_error)};
+                else written = cagd::exports::write_surface(out.stream(), f, form, {kind, {}});
+            }
+            require_ok(written);
+            out.commit();
+        },
+        py::arg("path"), py::arg("format") = py::none(),
+        "Writes the surface's exact patches to `path` in the format of `format` or of its extension: json (the Bézier patches) or step (one B-spline "
+        "surface, where the library has OpenCASCADE). The file is replaced atomically, or left as it was when anything fails; another format is a ValueError.");
+}
+
 }  // namespace
 
 void bind_export(py::module_& m) {
+    bind_surface_export<cagd::surface::HosakaPatch>(m, "TensorPatch", "hosaka-tensor",
+                                                    ">>> import numpy as np, cagd\n"
+                                                    ">>> c = np.zeros((2, 2, 2, 2, 3))\n"
+                                                    ">>> for k in (0, 1):\n"
+                                                    "...     for l in (0, 1):\n"
+                                                    "...         c[k, l, 0, 0] = [k, l, k * l]\n"
+                                                    ">>> b = cagd.tensor_patch(c).to_bezier()\n"
+                                                    ">>> b[\"degree_u\"], b[\"nets\"].shape, b[\"exact\"]\n"
+                                                    "(3, (1, 1, 4, 4, 3), True)\n"
+                                                    ">>> b[\"nets\"][0, 0, 3, 3]  # the corner (1, 1)\n"
+                                                    "array([1., 1., 1.])\n");
+    bind_surface_export<cagd::surface::EdgeFormPatch>(m, "EdgePatch", "hosaka-coons",
+                                                      ">>> import numpy as np, cagd\n"
+                                                      ">>> s = np.linspace(0, 1, 4)\n"
+                                                      ">>> p = cagd.coons_patch(np.column_stack([s, 0 * s, 0 * s]), np.column_stack([0 * s, s, s * s]),\n"
+                                                      "...                      np.column_stack([s, 1 + 0 * s, 1 + 0 * s]), np.column_stack([1 + 0 * s, s, s * s]))\n"
+                                                      ">>> b = p.to_bezier()\n"
+                                                      ">>> b[\"nets\"].shape[:2], b[\"exact\"]  # a cell per span of the edges\n"
+                                                      "((3, 3), True)\n");
+    bind_surface_export<cagd::surface::CartesianSurface>(m, "CartesianSurface", "hosaka-cartesian",
+                                                         ">>> import numpy as np, cagd\n"
+                                                         ">>> x = np.array([0.0, 1.0, 3.0]); y = np.array([0.0, 2.0])\n"
+                                                         ">>> s = cagd.cartesian_surface(x, y, np.array([[0.0, 1.0], [1.0, 0.0], [2.0, 2.0]]))\n"
+                                                         ">>> b = s.to_bezier()\n"
+                                                         ">>> b[\"nets\"].shape, b[\"u_breaks\"].tolist(), b[\"exact\"]\n"
+                                                         "((2, 1, 4, 4, 3), [0.0, 1.0, 3.0], True)\n");
+
     auto curve = py::reinterpret_borrow<py::class_<PyCurve>>(m.attr("Curve"));
     curve.def(
         "to_bezier",
