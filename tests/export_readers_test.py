@@ -5,7 +5,8 @@ with the curve's own samples (the CSV of the same run, 15 significant digits, in
 
 - JSON: our reader (`cagd analyze --in c.json` rebuilds the method from the document's points and
   measures its distance from the document's pieces), and the pieces evaluated here by de Casteljau;
-- DXF: ezdxf (Debian python3-ezdxf) reads the file, audits it, and evaluates the SPLINE;
+- DXF: ezdxf (Debian python3-ezdxf) reads the file, audits it, and evaluates the SPLINE (closed
+  curves: the periodic spline, its parameter shifted as its knots say);
 - STEP: OpenCASCADE (readers/step_reader.cpp) reads the file and evaluates its edge's curve;
 - SVG: headless Chromium loads every drawing in one page; the browser's own path geometry
   (getTotalLength, getPointAtLength) must lie on the curve.
@@ -196,11 +197,16 @@ try:
                 fail(f"{label}: DXF holds {len(splines)} splines and {len(points)} points, expected 1 and {len(pts)}")
             else:
                 tool = splines[0].construction_tool()
-                err = max(dist(tool.point(t), list(x) + [0.0] * (3 - len(x))) for t, x in zip(ts, xs))
+                # The file's parameter starts where its knots put it: t_min for a clamped spline,
+                # shifted for a periodic one (its knots start at 0).
+                offset = splines[0].knots[splines[0].dxf.degree] - ts[0]
+                err = max(dist(tool.point(t + offset), list(x) + [0.0] * (3 - len(x))) for t, x in zip(ts, xs))
                 if err > tol:
                     fail(f"{label}: ezdxf's spline {err:.3g} from the samples (tolerance {tol:.3g})")
-                if closed and not splines[0].closed:
-                    fail(f"{label}: the DXF spline of a closed curve is not flagged closed")
+                if closed and not (splines[0].closed and splines[0].dxf.flags & 2):
+                    fail(f"{label}: the DXF spline of a closed curve is not flagged closed and periodic")
+                if closed and min(splines[0].knots) < 0:
+                    fail(f"{label}: the periodic DXF spline has negative knots")
             checked["dxf"] += 1
             # STEP through OpenCASCADE.
             if step_reader:

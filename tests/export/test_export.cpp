@@ -252,31 +252,55 @@ TEST(CurveFormats, SvgIsACubicPathAndRefusesSpaceCurves) {
     EXPECT_NE(test::invalid_input_message([&] { (void)write_curve(t, CurveFormat::svg, space, {}, {}); }).find("svg is planar"), std::string::npos);
 }
 
+namespace {
+// The SPLINE entity's group codes: flags, degree, stated and counted knots and control points,
+// and the smallest knot.
+struct DxfSplineCounts {
+    int knots = 0, controls = 0, flags = -1, degree = -1, nk = -1, nc = -1;
+    double first_knot = INFINITY;
+};
+DxfSplineCounts dxf_spline_counts(const std::string& dxf) {
+    std::stringstream entity(dxf.substr(dxf.find("AcDbSpline")));
+    std::string line, previous;
+    DxfSplineCounts c;
+    while (std::getline(entity, line) && line != "ENDSEC") {
+        if (previous == " 40") {
+            ++c.knots;
+            c.first_knot = std::min(c.first_knot, std::stod(line));
+        }
+        if (previous == " 10") ++c.controls;
+        if (previous == " 70") c.flags = std::stoi(line);
+        if (previous == " 71") c.degree = std::stoi(line);
+        if (previous == " 72") c.nk = std::stoi(line);
+        if (previous == " 73") c.nc = std::stoi(line);
+        previous = line;
+    }
+    return c;
+}
+}  // namespace
+
 TEST(CurveFormats, DxfHoldsOneSplineWithConsistentCounts) {
+    // Closed: periodic, the 8 distinct control points and the first 3 again; knots from 0.
     const methods::InterpolationResult r = methods::interpolate("cubic-b", closed_octagon(), true);
     const methods::MethodParameterCurve c(*r.interpolant);
     std::stringstream s;
     ASSERT_TRUE(write_curve(s, CurveFormat::dxf, c, {.closed = true}, {}).ok());
-    // The group codes after the SPLINE's subclass marker.
-    const std::string dxf = s.str();
-    std::stringstream entity(dxf.substr(dxf.find("AcDbSpline")));
-    std::string line, previous;
-    int knots = 0, controls = 0, flags = -1, degree = -1, nk = -1, nc = -1;
-    while (std::getline(entity, line) && line != "ENDSEC") {
-        if (previous == " 40") ++knots;
-        if (previous == " 10") ++controls;
-        if (previous == " 70") flags = std::stoi(line);
-        if (previous == " 71") degree = std::stoi(line);
-        if (previous == " 72") nk = std::stoi(line);
-        if (previous == " 73") nc = std::stoi(line);
-        previous = line;
-    }
-    EXPECT_EQ(flags, 1 | 8);  // closed, planar (clamped: the periodic form is not written yet)
-    EXPECT_EQ(degree, 3);
-    EXPECT_EQ(knots, nk);
-    EXPECT_EQ(controls, nc);
-    EXPECT_EQ(nk, nc + degree + 1);
-    EXPECT_EQ(nc, 4 + 7);  // clamped: p + 1 and one per simple interior knot (C2 at the 7 inner points)
+    const DxfSplineCounts closed = dxf_spline_counts(s.str());
+    EXPECT_EQ(closed.flags, 1 | 2 | 8);  // closed, periodic, planar
+    EXPECT_EQ(closed.degree, 3);
+    EXPECT_EQ(closed.knots, closed.nk);
+    EXPECT_EQ(closed.controls, closed.nc);
+    EXPECT_EQ(closed.nk, closed.nc + closed.degree + 1);
+    EXPECT_EQ(closed.nc, 8 + 3);
+    EXPECT_EQ(closed.first_knot, 0.0);
+    // Open: clamped, p + 1 and one per simple interior knot.
+    const methods::InterpolationResult o = methods::interpolate("cubic-b", helix_points(), false);
+    std::stringstream so;
+    ASSERT_TRUE(write_curve(so, CurveFormat::dxf, methods::MethodParameterCurve(*o.interpolant), {}, {}).ok());
+    const DxfSplineCounts open = dxf_spline_counts(so.str());
+    EXPECT_EQ(open.flags, 0);  // a space curve: not planar
+    EXPECT_EQ(open.nk, open.nc + 4);
+    EXPECT_EQ(open.nc, 4 + 7);  // C2 at the 7 inner points of 9
 }
 
 TEST(CurveSamples, ArcLengthSamplesAreEquallySpacedInArcLength) {

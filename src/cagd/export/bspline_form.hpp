@@ -20,7 +20,8 @@
 /// whose continuity holds to rounding, and the tests hold the B-spline to 1e-12 of that diagonal.
 ///
 /// Closed curves are clamped at their first point (the first and last control points coincide);
-/// periodic_knots() gives the unclamped periodic form where the curve is C^c across that point too.
+/// periodic_bspline() gives the unclamped periodic form (DXF writes it) where the curve is C^c
+/// across that point too.
 #include <vector>
 
 #include "cagd/export/bezier_form.hpp"

@@ -80,14 +80,20 @@ Outcome write_curve(std::ostream& out, CurveFormat format, const Curve& curve, c
                 write_curve_json(out, form, provenance);
                 return {};
             }
+            const PointList& points = o.points ? provenance.points : no_points;
+            if (format == CurveFormat::dxf && provenance.closed) {
+                if (const PeriodicBSpline periodic = periodic_bspline(form.pieces); !periodic.knots.empty()) {
+                    write_dxf(out, periodic, points);
+                    return {};
+                }
+            }
             const BSplineForm b = to_bspline(form.pieces);
-            // Closed curves leave clamped (first point = last point): the periodic form
-            // (periodic_bspline) is not written yet, since ezdxf and OpenCASCADE read its pole
-            // alignment differently from ours where a knot is multiple.
             if (format == CurveFormat::dxf) {
-                write_dxf(out, b.curve, provenance.closed, o.points ? provenance.points : no_points);
+                write_dxf(out, b.curve, provenance.closed ? DxfSpline::closed : DxfSpline::open, points);
                 return {};
             }
+            // STEP: clamped with closed_curve true; OpenCASCADE's translator writes every periodic
+            // curve as its non-periodic form (docs/export.md).
             return write_step(out, b.curve);
         }
     }

@@ -57,7 +57,7 @@ void dxf_vertex(DxfLines& d, int code, const Eigen::RowVectorXd& x) {
 
 }  // namespace
 
-void write_dxf(std::ostream& out, const BSplineCurve& curve, bool closed, const PointList& points) {
+void write_dxf(std::ostream& out, const BSplineCurve& curve, DxfSpline kind, const PointList& points) {
     const int dim = curve.dimension();
     if (dim != 2 && dim != 3) fail_input("cagd::exports::write_dxf", "needs a curve of 2 or 3 coordinates, got " + std::to_string(dim));
     if (points.rows() > 0 && points.cols() != dim) fail_input("cagd::exports::write_dxf", "points must have the curve's " + std::to_string(dim) + " coordinates");
@@ -135,7 +135,7 @@ void write_dxf(std::ostream& out, const BSplineCurve& curve, bool closed, const 
 
     d(0, "SECTION")(2, "ENTITIES");
     d(0, "SPLINE")(5, spline_handle)(330, "1F")(100, "AcDbEntity")(8, "CURVE")(100, "AcDbSpline");
-    const int flags = (closed ? 1 : 0) | (dim == 2 ? 8 : 0);
+    const int flags = (kind == DxfSpline::open ? 0 : 1) | (kind == DxfSpline::periodic ? 2 : 0) | (dim == 2 ? 8 : 0);
     if (dim == 2) d(210, 0.0)(220, 0.0)(230, 1.0);
     d.integer(70, flags).integer(71, p).integer(72, static_cast<long>(knots.size())).integer(73, static_cast<long>(control.rows())).integer(74, 0);
     d(42, 1e-10)(43, 1e-10)(44, 1e-10);
@@ -152,6 +152,19 @@ void write_dxf(std::ostream& out, const BSplineCurve& curve, bool closed, const 
     d(0, "DICTIONARY")(5, "D")(330, "C")(100, "AcDbDictionary").integer(281, 1);
     d(0, "ENDSEC");
     d(0, "EOF");
+}
+
+void write_dxf(std::ostream& out, const PeriodicBSpline& periodic, const PointList& points) {
+    const int p = periodic.degree;
+    const Eigen::Index n = periodic.control.rows();
+    if (periodic.knots.size() != static_cast<std::size_t>(n + 2 * p + 1) || n < p)
+        fail_input("cagd::exports::write_dxf", "a periodic form needs n >= degree control points and n + 2 degree + 1 knots");
+    Eigen::MatrixXd wrapped(n + p, periodic.control.cols());
+    wrapped << periodic.control, periodic.control.topRows(p);
+    std::vector<double> knots = periodic.knots;
+    const double shift = knots.front();
+    for (double& k : knots) k -= shift;
+    write_dxf(out, BSplineCurve(p, std::move(knots), std::move(wrapped)), DxfSpline::periodic, points);
 }
 
 }  // namespace cagd::exports

@@ -4,7 +4,8 @@
 /// STEPControl_Writer: one edge on a Geom_BSplineCurve, which the translator writes as a
 /// B_SPLINE_CURVE_WITH_KNOTS (degree, control points, distinct knots with multiplicities, no
 /// weights), in millimetres. Planar curves get z = 0. A closed curve is clamped at its first point
-/// (the periodic form is not written yet: docs/export.md).
+/// with closed_curve true: OpenCASCADE's translator writes a periodic curve as its non-periodic
+/// form anyway. Reals carry OpenCASCADE's 13 significant digits.
 /// Available only in a library built with OpenCASCADE (CMake found it; step_available());
 /// otherwise write_step throws InvalidInput saying so. OpenCASCADE's own messages are silenced so
 /// that nothing but the file reaches the output.
