@@ -28,6 +28,7 @@ library=(
   libcli11-dev           # the cagd command's options
   nlohmann-json3-dev     # the JSON curve documents (export/curve_json.cpp)
   libocct-data-exchange-dev   # STEP export through OpenCASCADE (export/step_writer.cpp; LGPL-2.1 with exception)
+  libocct-modeling-algorithms-dev  # GeomAPI_Interpolate, the occt-interpolate peer (methods/register_opencascade.cpp)
   libtbb-dev             # OpenCASCADE's CMake targets link libtbb.so, which its -dev packages do not bring
 )
 python=(

@@ -138,6 +138,8 @@ TEST(Methods, AllocationFreeJetsEqualTheAllocatingOnes) {
 }
 
 TEST(Methods, MethodsPageIsTheRegistry) {
+    const auto names = method_names();
+    if (std::find(names.begin(), names.end(), "occt-interpolate") == names.end()) GTEST_SKIP() << "a library without OpenCASCADE: docs/methods.md lists its peer too";
     std::ifstream in(std::string(CAGD_SOURCE_DIR) + "/docs/methods.md");
     std::stringstream ss;
     ss << in.rdbuf();

@@ -30,7 +30,7 @@ const std::vector<Method>& registry() {
     static const std::vector<Method> methods = [] {
         std::vector<Method> all;
         for (std::vector<Method> (*family)() : {detail::pseudo_energy_methods, detail::sb2_locality_methods, detail::hosaka_methods,
-                                                 detail::curvature_profile_methods, detail::boost_math_methods})
+                                                 detail::curvature_profile_methods, detail::boost_math_methods, detail::opencascade_methods})
             for (Method& m : family()) all.push_back(std::move(m));
         return all;
     }();
