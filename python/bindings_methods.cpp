@@ -132,6 +132,7 @@ void bind_methods(py::module_& m) {
             claims["supports_closed"] = c.supports_closed;
             claims["min_points"] = c.min_points;
             claims["min_points_closed"] = c.min_points_closed;
+            claims["max_points"] = c.max_points;
             claims["max_dimension"] = c.max_dimension;
             d["claims"] = claims;
             out.append(d);

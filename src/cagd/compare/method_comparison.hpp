@@ -66,7 +66,8 @@ struct MethodComparison {
     double seconds = 0.0;  ///< wall time of interpolate() (not deterministic)
 };
 
-/// Samples and quadrature pieces per piece for a curve of `pieces` pieces (fewer for long inputs).
+/// Samples (8 to 128) and Gauss–Legendre sub-pieces (2 to 512) per piece for a curve of `pieces`
+/// pieces: about 2·10^6 of each in all, fewer per piece for long inputs.
 analysis::FairnessSampling comparison_sampling(int pieces);
 /// The row of `configuration` (a name methods::find_configuration knows); InvalidInput if the name is
 /// unknown or the comparison has no such row.

@@ -30,7 +30,8 @@ const std::vector<Method>& registry() {
     static const std::vector<Method> methods = [] {
         std::vector<Method> all;
         for (std::vector<Method> (*family)() : {detail::pseudo_energy_methods, detail::sb2_locality_methods, detail::hosaka_methods,
-                                                 detail::curvature_profile_methods, detail::boost_math_methods, detail::opencascade_methods})
+                                                 detail::curvature_profile_methods, detail::boost_math_methods, detail::eigen_methods,
+                                                 detail::opencascade_methods})
             for (Method& m : family()) all.push_back(std::move(m));
         return all;
     }();
@@ -72,6 +73,8 @@ InterpolationResult interpolate(const Method& method, const PointList& points, b
     const MethodClaims claims = method.claims(values);
     const std::string who = "cagd::methods::interpolate(" + method.name + ")";
     if (closed && !claims.supports_closed) fail_input(who, "draws open curves only (--closed is not supported)");
+    if (claims.max_points > 0 && points.rows() > claims.max_points)
+        fail_input(who, std::to_string(points.rows()) + " points; it takes at most " + std::to_string(claims.max_points));
     require_valid_points(points, closed ? claims.min_points_closed : claims.min_points, true, closed, who);
     if (points.cols() < 2 || points.cols() > claims.max_dimension)
         fail_input(who, "needs points of dimension 2" + std::string(claims.max_dimension == 3 ? " or 3" : "") + ", got " + std::to_string(points.cols()));

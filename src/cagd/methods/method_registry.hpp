@@ -34,7 +34,7 @@
 /// under its own name with its defaults, so a new method is compared and tested by itself.
 ///
 /// Preconditions (InvalidInput naming the point): finite coordinates; at least min_points (open) or
-/// min_points_closed; no two consecutive points equal (closed: also last and first); dimension
+/// min_points_closed, at most max_points where a method states it; no two consecutive points equal (closed: also last and first); dimension
 /// 2 (or 3 where `max_dimension` allows). A method that does not support closed curves throws when
 /// asked for one. Outcomes: the curvature-profile Newton can fail for valid points (returned, not
 /// thrown); every other method always returns a curve.
@@ -67,6 +67,7 @@ struct MethodClaims {
     bool supports_closed = true;  ///< draws closed curves
     int min_points = 2;  ///< fewest points of an open curve
     int min_points_closed = 3;  ///< fewest points of a closed curve
+    int max_points = 0;  ///< most points (0: no limit), where the method's cost forbids more
     int max_dimension = 2;  ///< 2 or 3
 };
 

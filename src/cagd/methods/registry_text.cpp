@@ -26,6 +26,7 @@ std::string claims_text(const MethodClaims& c) {
     s += "; " + std::string(c.max_dimension == 3 ? "2-D, 3-D" : "2-D");
     s += c.supports_closed ? "; open, closed" : "; open only";
     s += "; points >= " + std::to_string(c.min_points);
+    if (c.max_points > 0) s += ", <= " + std::to_string(c.max_points);
     return s;
 }
 
