@@ -287,7 +287,9 @@ methods=$("$cagd" interpolate --list-methods | awk '/^[a-z0-9]/ { print $1 }')
 for m in $methods; do
   "$cagd" interpolate --method "$m" --in "$dir/zig.csv" --out "$dir/each.csv" --samples 2 > /dev/null 2> "$dir/err.txt" \
     || { echo "FAIL: interpolate --method $m: $(cat "$dir/err.txt")"; fails=$((fails+1)); }
-  [ "$(($(wc -l < "$dir/each.csv") - 1))" -ge 11 ] || { echo "FAIL: interpolate --method $m wrote $(wc -l < "$dir/each.csv") lines"; fails=$((fails+1)); }
+  # 2 samples per piece and the end: 11 rows for a piece per span (6 points), 7 for eigen-spline's
+  # 3 pieces (its knots are averages of the parameters, not the points).
+  [ "$(($(wc -l < "$dir/each.csv") - 1))" -ge 7 ] || { echo "FAIL: interpolate --method $m wrote $(wc -l < "$dir/each.csv") lines"; fails=$((fails+1)); }
   "$cagd" analyze --in "$dir/zig.csv" --method "$m" 2> /dev/null | grep -q '^length_integrated,' \
     || { echo "FAIL: analyze --in --method $m prints no length"; fails=$((fails+1)); }
   "$cagd" compare --in "$dir/zig.csv" --methods "$m" --out "$dir/cmp_each" --no-plot 2> /dev/null | grep -q "^| $m" \

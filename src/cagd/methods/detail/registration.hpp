@@ -8,6 +8,7 @@
 //   register_hosaka.cpp             hosaka
 //   register_curvature_profile.cpp  curvature-profile
 //   register_boost_math.cpp         boost-pchip, boost-makima, boost-catmull-rom (peers)
+//   register_eigen.cpp              eigen-spline (a peer; at most 2,000 points)
 //   register_opencascade.cpp        occt-interpolate (a peer; only with OpenCASCADE)
 // A new method of an existing family is one entry in its file; a new family is a new file and one
 // name in registry() (method_registry.cpp). Helpers for the builders follow.
@@ -30,6 +31,7 @@ std::vector<Method> sb2_locality_methods();
 std::vector<Method> hosaka_methods();
 std::vector<Method> curvature_profile_methods();
 std::vector<Method> boost_math_methods();
+std::vector<Method> eigen_methods();
 std::vector<Method> opencascade_methods();  // empty in a library built without OpenCASCADE
 
 using P = ParameterType;
