@@ -163,4 +163,43 @@ BezierForm to_bezier_of_degree(const Curve& c, int degree, const ApproximationOp
     return approximate(c, degree, with);
 }
 
+BezierPieces bezier_pieces_from_power(const PowerPieces& power) {
+    const char* who = "cagd::exports::bezier_pieces_from_power";
+    const std::size_t K = power.coefficients.size();
+    if (K == 0 || power.breaks.size() != K + 1) fail_input(who, "needs one more break than pieces, has " + std::to_string(power.breaks.size()) + " breaks and " + std::to_string(K) + " pieces");
+    if (power.degree < 0) fail_input(who, "degree " + std::to_string(power.degree) + " < 0");
+    const Eigen::Index dim = power.coefficients.front().cols();
+    BezierPieces b;
+    b.degree = power.degree;
+    b.breaks = power.breaks;
+    b.control.resize(static_cast<Eigen::Index>(K) * (power.degree + 1), dim);
+    for (std::size_t i = 0; i < K; ++i) {
+        const double x0 = power.breaks[i], x1 = power.breaks[i + 1];
+        if (!std::isfinite(x0) || !std::isfinite(x1) || !(x0 < x1)) fail_input(who, "breaks must be finite and increase (break " + std::to_string(i + 1) + ")");
+        const Eigen::MatrixXd& c = power.coefficients[i];
+        if (c.rows() != power.degree + 1 || c.cols() != dim || !c.allFinite())
+            fail_input(who, "piece " + std::to_string(i) + " must have degree + 1 rows of " + std::to_string(dim) + " finite coefficients");
+        Eigen::MatrixXd monomial(power.degree + 1, dim);  // row j: coefficient of s^j, s = (t − x0)/h
+        double hj = 1.0;
+        for (int j = 0; j <= power.degree; ++j, hj *= x1 - x0) monomial.row(j) = c.row(power.degree - j) * hj;
+        b.control.middleRows(static_cast<Eigen::Index>(i) * (power.degree + 1), power.degree + 1) = bernstein_from_monomial(monomial);
+    }
+    return b;
+}
+
+PowerPieces power_pieces(const BezierPieces& pieces) {
+    PowerPieces w;
+    w.degree = pieces.degree;
+    w.breaks = pieces.breaks;
+    for (int i = 0; i < pieces.pieces(); ++i) {
+        const Eigen::MatrixXd monomial = monomial_from_bernstein(pieces.piece(i));
+        const double h = pieces.breaks[static_cast<std::size_t>(i) + 1] - pieces.breaks[static_cast<std::size_t>(i)];
+        Eigen::MatrixXd c(pieces.degree + 1, pieces.dimension());
+        double hj = 1.0;
+        for (int j = 0; j <= pieces.degree; ++j, hj *= h) c.row(pieces.degree - j) = monomial.row(j) / hj;
+        w.coefficients.push_back(std::move(c));
+    }
+    return w;
+}
+
 }  // namespace cagd::exports

@@ -79,6 +79,20 @@ BezierPieces exact_bezier_pieces(const Curve& curve);
 BezierPieces elevate_degree(const BezierPieces& pieces, int degree);
 /// Piece i as a BezierCurve on its interval (the evaluator of BezierPieces).
 BezierCurve piece_curve(const BezierPieces& pieces, int i);
+/// Piecewise polynomials in the local power basis, as scipy.interpolate.PPoly holds them: piece i
+/// on [x_i, x_{i+1}] is Σ_k coefficients[i](k, ·) (t − x_i)^(p − k), highest power first.
+struct PowerPieces {
+    int degree = 0;                            ///< p
+    std::vector<double> breaks;                ///< x_0 < … < x_K
+    std::vector<Eigen::MatrixXd> coefficients;  ///< K matrices of p + 1 rows (highest power first) × dimension
+};
+/// The same pieces in Bézier form (exact conversion: with h = x_{i+1} − x_i, the monomial
+/// coefficients of s = (t − x_i)/h are a_j h^j, then bernstein_from_monomial). InvalidInput for
+/// breaks that do not increase, a piece count that differs from the breaks', or non-finite values.
+BezierPieces bezier_pieces_from_power(const PowerPieces& power);
+/// Bézier pieces in the local power basis (monomial_from_bernstein, then a_j / h^j).
+PowerPieces power_pieces(const BezierPieces& pieces);
+
 /// The bounding-box diagonal of the curve, from 33 samples per piece (the scale of the tolerances).
 double sampled_diagonal(const Curve& curve);
 

@@ -14,20 +14,39 @@ BezierCurve::BezierCurve(Eigen::MatrixXd control_points, double a, double b, Bez
     const std::string who = "cagd::BezierCurve";
     if (control_.rows() < 1) fail_input(who, "needs at least one control point");
     if (!std::isfinite(a) || !std::isfinite(b) || !(a < b)) fail_input(who, "parameter interval [" + full_precision(a) + ", " + full_precision(b) + "] must be finite with a < b");
-    if (method_ == BezierEvaluation::power_basis) {
-        const int p = degree();
-        monomial_ = Eigen::MatrixXd::Zero(p + 1, control_.cols());
-        for (int k = 0; k <= p; ++k) {
-            double binom_pk = 1.0;  // C(p, k)
-            for (int i = 1; i <= k; ++i) binom_pk = binom_pk * (p - k + i) / i;
-            double binom_kj = 1.0;  // C(k, j), updated in j
-            for (int j = 0; j <= k; ++j) {
-                if (j > 0) binom_kj = binom_kj * (k - j + 1) / j;
-                const double sign = ((k - j) % 2 == 0) ? 1.0 : -1.0;
-                monomial_.row(k) += sign * binom_pk * binom_kj * control_.row(j);
-            }
+    if (method_ == BezierEvaluation::power_basis) monomial_ = monomial_from_bernstein(control_);
+}
+
+Eigen::MatrixXd monomial_from_bernstein(const Eigen::MatrixXd& control) {
+    const int p = static_cast<int>(control.rows()) - 1;
+    Eigen::MatrixXd monomial = Eigen::MatrixXd::Zero(p + 1, control.cols());
+    for (int k = 0; k <= p; ++k) {
+        double binom_pk = 1.0;  // C(p, k)
+        for (int i = 1; i <= k; ++i) binom_pk = binom_pk * (p - k + i) / i;
+        double binom_kj = 1.0;  // C(k, j), updated in j
+        for (int j = 0; j <= k; ++j) {
+            if (j > 0) binom_kj = binom_kj * (k - j + 1) / j;
+            const double sign = ((k - j) % 2 == 0) ? 1.0 : -1.0;
+            monomial.row(k) += sign * binom_pk * binom_kj * control.row(j);
         }
     }
+    return monomial;
+}
+
+Eigen::MatrixXd bernstein_from_monomial(const Eigen::MatrixXd& monomial) {
+    const int p = static_cast<int>(monomial.rows()) - 1;
+    Eigen::MatrixXd control = Eigen::MatrixXd::Zero(p + 1, monomial.cols());
+    for (int j = 0; j <= p; ++j) {
+        double binom_jk = 1.0, binom_pk = 1.0;  // C(j, k), C(p, k), updated in k
+        for (int k = 0; k <= j; ++k) {
+            if (k > 0) {
+                binom_jk = binom_jk * (j - k + 1) / k;
+                binom_pk = binom_pk * (p - k + 1) / k;
+            }
+            control.row(j) += (binom_jk / binom_pk) * monomial.row(k);
+        }
+    }
+    return control;
 }
 
 Eigen::MatrixXd BezierCurve::jet(double t, int order) const {

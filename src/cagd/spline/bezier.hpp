@@ -47,6 +47,14 @@ private:
     Eigen::MatrixXd monomial_;  ///< power_basis only: row k = a_k
 };
 
+/// The monomial coefficients of the Bézier polynomial of `control` on [0, 1]: row k is a_k in
+/// r(s) = Σ_k a_k s^k, a_k = C(p,k) Σ_{j≤k} (−1)^{k−j} C(k,j) b_j (exact conversion; the a_k grow
+/// like 2^p, so the power basis suits low degrees only, as the power_basis evaluation shows).
+Eigen::MatrixXd monomial_from_bernstein(const Eigen::MatrixXd& control);
+/// The inverse: the control points b_j = Σ_{k≤j} C(j,k)/C(p,k) a_k of the polynomial with monomial
+/// coefficients `monomial` (row k = a_k) on [0, 1].
+Eigen::MatrixXd bernstein_from_monomial(const Eigen::MatrixXd& monomial);
+
 /// The p + 1 control points of the degree-p polynomial on [a, b] (h = b − a > 0) from its
 /// derivatives at the two ends: J0 (rows 0..⌊p/2⌋ used) at a and J1 (rows 0..p − ⌊p/2⌋ − 1 used) at
 /// b, since Δ^j b_0 = (p−j)!/p! h^j r^(j)(a) and likewise backwards from b_p:
