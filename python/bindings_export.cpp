@@ -37,6 +37,52 @@ cagd::exports::BezierForm bezier_form(const PyCurve& c, std::optional<int> degre
     return f;
 }
 
+// scipy's PPoly coefficients c (p + 1, K, dim), highest power first, and breaks x (K + 1) → a curve.
+PyCurve curve_from_ppoly(const py::object& c_in, const py::object& x_in) {
+    const Array c = real_array(c_in, "c");
+    if (c.ndim() != 3 || c.shape(2) < 2 || c.shape(2) > 3 || c.shape(0) < 1 || c.shape(1) < 1)
+        throw cagd::InvalidInput("c: expected PPoly coefficients of shape (degree + 1, pieces, 2 or 3), got " + std::to_string(c.ndim()) + " dimension(s)");
+    cagd::exports::PowerPieces w;
+    w.degree = static_cast<int>(c.shape(0)) - 1;
+    w.breaks = to_vector(real_array(x_in, "x"), "x");
+    auto r = c.unchecked<3>();
+    for (py::ssize_t i = 0; i < c.shape(1); ++i) {
+        Eigen::MatrixXd piece(c.shape(0), c.shape(2));
+        for (py::ssize_t k = 0; k < c.shape(0); ++k)
+            for (py::ssize_t d = 0; d < c.shape(2); ++d) piece(k, d) = r(k, i, d);
+        w.coefficients.push_back(std::move(piece));
+    }
+    const cagd::exports::BezierPieces b = cagd::exports::bezier_pieces_from_power(w);
+    return with_recipe(wrap(std::make_shared<cagd::BSplineCurve>(cagd::exports::bezier_pieces_curve(b)), "ppoly"), "_curve_from_ppoly", py::make_tuple(c, from_vector(w.breaks)));
+}
+
+// scipy's B-spline (knots t, coefficients c (n, dim) or splprep's list of dim arrays, degree k) → a curve.
+PyCurve curve_from_bspline(const py::object& t_in, const py::object& c_in, int k) {
+    Eigen::MatrixXd control;
+    if (py::isinstance<py::list>(c_in) || py::isinstance<py::tuple>(c_in)) {  // splprep: [cx, cy(, cz)]
+        const py::sequence seq = c_in.cast<py::sequence>();
+        if (seq.size() < 2 || seq.size() > 3) throw cagd::InvalidInput("c: expected 2 or 3 coordinate arrays (splprep's tck), got " + std::to_string(seq.size()));
+        for (std::size_t d = 0; d < seq.size(); ++d) {
+            const std::vector<double> col = to_vector(real_array(seq[d], "c"), "c");
+            if (d == 0) control.resize(static_cast<Eigen::Index>(col.size()), static_cast<Eigen::Index>(seq.size()));
+            if (static_cast<Eigen::Index>(col.size()) != control.rows()) throw cagd::InvalidInput("c: the coordinate arrays differ in length");
+            control.col(static_cast<Eigen::Index>(d)) = Eigen::Map<const Eigen::VectorXd>(col.data(), control.rows());
+        }
+    } else {
+        control = to_matrix(real_array(c_in, "c"), "c");
+    }
+    if (control.cols() < 2 || control.cols() > 3) throw cagd::InvalidInput("c: expected 2 or 3 coordinates per control point, got " + std::to_string(control.cols()));
+    std::vector<double> knots = to_vector(real_array(t_in, "t"), "t");
+    // splprep pads its coefficient arrays with k + 1 trailing zeros: n = len(t) − k − 1 are used.
+    const Eigen::Index used = static_cast<Eigen::Index>(knots.size()) - k - 1;
+    if (k < 0 || used < 1 || used > control.rows())
+        throw cagd::InvalidInput("t, c, k: " + std::to_string(knots.size()) + " knots of degree " + std::to_string(k) + " need " + std::to_string(used) + " control points, got " +
+                                 std::to_string(control.rows()));
+    control.conservativeResize(used, Eigen::NoChange);
+    py::array_t<double> c_out = from_matrix(control), t_out = from_vector(knots);
+    return with_recipe(wrap(std::make_shared<cagd::BSplineCurve>(k, std::move(knots), std::move(control)), "bspline"), "_curve_from_bspline", py::make_tuple(t_out, c_out, k));
+}
+
 // The patches as a dict: nets has shape (cells_u, cells_v, degree_u + 1, degree_v + 1, 3).
 py::dict surface_dict(const cagd::exports::SurfaceForm& f) {
     const cagd::exports::BezierSurfacePieces& p = f.pieces;
@@ -100,6 +146,61 @@ void bind_surface_export(py::module_& m, const char* name, const char* kind, con
 }  // namespace
 
 void bind_export(py::module_& m) {
+    m.def("_curve_from_ppoly", &curve_from_ppoly, py::arg("c"), py::arg("x"), "Curve.from_ppoly's builder (pickling).");
+    m.def("_curve_from_bspline", &curve_from_bspline, py::arg("t"), py::arg("c"), py::arg("k"), "Curve.from_bspline's builder (pickling).");
+    auto curve_class = py::reinterpret_borrow<py::class_<PyCurve>>(m.attr("Curve"));
+    curve_class.def_static(
+        "from_ppoly",
+        [](const py::object& pp) { return py::hasattr(pp, "c") ? curve_from_ppoly(pp.attr("c"), pp.attr("x")) : curve_from_ppoly(pp[py::int_(0)], pp[py::int_(1)]); },
+        py::arg("pp"),
+        "A parametric piecewise polynomial of scipy's form as a cagd curve, exactly (each piece converted to its Bézier points): a "
+        "scipy.interpolate.PPoly (CubicSpline included) whose values are points of 2 or 3 coordinates, or a tuple (c, x) of its coefficients "
+        "(degree + 1, pieces, dim), highest power first, and breaks. Every measure of cagd then applies to it.\n\n"
+        ">>> import numpy as np, cagd\n"
+        ">>> from scipy.interpolate import CubicSpline\n"
+        ">>> tau = np.array([0.0, 1.0, 2.5, 3.0]); p = np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 0.0], [3.0, 1.0]])\n"
+        ">>> s = CubicSpline(tau, p, bc_type=\"natural\")\n"
+        ">>> c = cagd.Curve.from_ppoly(s)\n"
+        ">>> bool(np.allclose(c(1.7, 2), s(1.7, 2), rtol=0, atol=1e-12)), c.parameter_range\n"
+        "(True, (0.0, 3.0))\n");
+    curve_class.def_static(
+        "from_bspline",
+        [](const py::object& b) {
+            return py::hasattr(b, "t") ? curve_from_bspline(b.attr("t"), b.attr("c"), b.attr("k").cast<int>())
+                                       : curve_from_bspline(b[py::int_(0)], b[py::int_(1)], b[py::int_(2)].cast<int>());
+        },
+        py::arg("b"),
+        "A B-spline curve of scipy's form as a cagd curve, knot for knot: a scipy.interpolate.BSpline (make_interp_spline) whose coefficients are "
+        "points (n, 2 or 3), or a tuple (t, c, k) such as splprep's tck, c then a list of coordinate arrays (its trailing padding is dropped).\n\n"
+        ">>> import numpy as np, cagd\n"
+        ">>> from scipy.interpolate import splprep\n"
+        ">>> p = np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 0.0], [3.0, 1.0], [4.0, 0.5]])\n"
+        ">>> tck, u = splprep(p.T, s=0)\n"
+        ">>> c = cagd.Curve.from_bspline(tck)\n"
+        ">>> float(np.max(np.abs(c(u) - p))) < 1e-12\n"
+        "True\n");
+    curve_class.def(
+        "to_ppoly",
+        [](const PyCurve& c, double tolerance, int approximation_degree) {
+            const cagd::exports::BezierForm f = bezier_form(c, std::nullopt, tolerance, approximation_degree);
+            const cagd::exports::PowerPieces w = cagd::exports::power_pieces(f.pieces);
+            py::array_t<double> coefficients(std::vector<py::ssize_t>{w.degree + 1, static_cast<py::ssize_t>(w.coefficients.size()), f.pieces.dimension()});
+            auto out = coefficients.mutable_unchecked<3>();
+            for (std::size_t i = 0; i < w.coefficients.size(); ++i)
+                for (int k = 0; k <= w.degree; ++k)
+                    for (int d = 0; d < f.pieces.dimension(); ++d) out(k, static_cast<py::ssize_t>(i), d) = w.coefficients[i](k, d);
+            return py::make_tuple(coefficients, from_vector(w.breaks));
+        },
+        py::arg("tolerance") = 1e-6, py::arg("approximation_degree") = 3,
+        "The curve as (c, x) for scipy.interpolate.PPoly(c, x): its own pieces when it is polynomial, else the Hermite approximation of to_bezier "
+        "(within tolerance × its diagonal), in the local power basis, highest power first.\n\n"
+        ">>> import numpy as np, cagd\n"
+        ">>> from scipy.interpolate import PPoly\n"
+        ">>> c = cagd.interpolate(np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 0.0], [3.0, 1.0]]), \"s-spline\")\n"
+        ">>> pp = PPoly(*c.to_ppoly())\n"
+        ">>> t = np.linspace(*c.parameter_range, 9)\n"
+        ">>> float(np.max(np.abs(pp(t) - c(t)))) < 1e-12\n"
+        "True\n");
     bind_surface_export<cagd::surface::HosakaPatch>(m, "TensorPatch", "hosaka-tensor",
                                                     ">>> import numpy as np, cagd\n"
                                                     ">>> c = np.zeros((2, 2, 2, 2, 3))\n"

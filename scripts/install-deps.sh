@@ -51,7 +51,7 @@ test=(
 )
 bench=(
   libbenchmark-dev       # make bench
-  python3-scipy          # make bench: scipy's splines as the Python peer
+  python3-scipy          # make bench: scipy's splines as the Python peer; the Python tests of Curve.from_ppoly
 )
 docs=(
   doxygen                # the C++ API reference

@@ -91,6 +91,8 @@ from ._cagd import (  # noqa: F401  (re-exported)
     smooth_curve,
     space_typical_curve,
     typical_curve,
+    _curve_from_bspline,
+    _curve_from_ppoly,
 )
 from . import _cagd
 

@@ -515,6 +515,48 @@ def test_curves_run_in_their_methods_parameter_and_cubic_b_is_scipys_natural_spl
         cagd.normalized_log_aesthetic_curve(-0.5, 1.0).span_parameter(0.5)
 
 
+def test_scipy_curves_come_in_exactly_and_ours_go_out_to_scipy():
+    from scipy.interpolate import CubicSpline, PPoly, make_interp_spline, splev, splprep
+
+    p = table1()
+    tau = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(p, axis=0), axis=1))])
+    ours = cagd.interpolate(p, "cubic-b")
+    t = np.linspace(0.0, tau[-1], 401)
+    # CubicSpline natural is cubic-b: measured through from_ppoly, the same curve and measures.
+    natural = cagd.Curve.from_ppoly(CubicSpline(tau, p, bc_type="natural"))
+    for nu in range(3):
+        assert np.max(np.abs(natural(t, nu) - ours(t, nu))) <= 1e-12 * max(1.0, np.max(np.abs(ours(t, nu))))
+    assert abs(natural.arc_length() - ours.arc_length()) <= 1e-12 * ours.arc_length()
+    assert np.max(np.abs(natural.curvature(t) - ours.curvature(t))) <= 1e-10 * np.max(np.abs(ours.curvature(t)))
+    # Not-a-knot, periodic, quintic interpolation and splprep: each equals scipy's own evaluation.
+    q = np.vstack([p, p[:1]])
+    tau_c = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(q, axis=0), axis=1))])
+    for name, spline, ts in [
+        ("not-a-knot", CubicSpline(tau, p), t),
+        ("periodic", CubicSpline(tau_c, q, bc_type="periodic"), np.linspace(0.0, tau_c[-1], 401)),
+        ("quintic", make_interp_spline(tau, p, k=5), t),
+    ]:
+        c = cagd.Curve.from_ppoly(spline) if hasattr(spline, "x") else cagd.Curve.from_bspline(spline)
+        for nu in range(3):
+            ref = spline(ts, nu)
+            assert np.max(np.abs(c(ts, nu) - ref)) <= 1e-11 * max(1.0, np.max(np.abs(ref))), f"{name}, derivative {nu}"
+    tck, u = splprep(p.T, s=0)
+    c = cagd.Curve.from_bspline(tck)
+    uu = np.linspace(0.0, 1.0, 301)
+    assert np.max(np.abs(c(uu) - np.array(splev(uu, tck)).T)) <= 1e-12 * np.max(np.abs(p))
+    assert np.max(np.abs(c(u) - p)) <= 1e-12 * np.max(np.abs(p))
+    # Ours to scipy: the quartic S-spline as a PPoly, and the pickled scipy curve again.
+    s_spline = cagd.interpolate(p, "s-spline")
+    pp = PPoly(*s_spline.to_ppoly())
+    ts = np.linspace(*s_spline.parameter_range, 401)
+    assert pp.c.shape[0] == 5 and np.max(np.abs(pp(ts) - s_spline(ts))) <= 1e-12 * np.max(np.abs(p))
+    import pickle
+
+    assert np.array_equal(pickle.loads(pickle.dumps(natural))(t), natural(t))
+    with pytest.raises(ValueError, match="shape"):
+        cagd.Curve.from_ppoly((np.zeros((4, 3)), np.arange(4.0)))
+
+
 def test_surfaces_equal_cpp(cpp):
     gx, gy = np.array([0.0, 1.0, 2.5, 3.0, 4.2]), np.array([0.0, 0.5, 1.5, 2.0])
     z = np.array([[math.sin(x) * math.cos(y) + 0.1 * a * b for b, y in enumerate(gy)] for a, x in enumerate(gx)])
