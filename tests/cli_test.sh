@@ -151,7 +151,8 @@ expect_bad "surface as svg"         ''                   surface --kind tensor -
 expect_bad "surface as dxf format"  ''                   surface --kind tensor --in "$dir/grid.csv" --format dxf --out "$dir/o"
 expect_bad "boundary surface json"  ''                   surface --kind boundary --lower "$dir/L0.csv" --upper "$dir/L1.csv" --out "$dir/o.json"
 expect_bad "typical surface svg"    ''                   typical-surface --n 5 --alpha-u -1 --alpha-v -1 --angle-deg 10 --out "$dir/o.svg"
-[ ! -e "$dir/o.svg" ] && [ ! -e "$dir/o.json" ] || { echo "FAIL: a refused surface export left a file"; fails=$((fails+1)); }
+expect_bad "typical surface step 30" ''                  typical-surface --n 30 --alpha-u -1 --alpha-v -1 --angle-deg 10 --out "$dir/o.step"
+[ ! -e "$dir/o.svg" ] && [ ! -e "$dir/o.json" ] && [ ! -e "$dir/o.step" ] || { echo "FAIL: a refused surface export left a file"; fails=$((fails+1)); }
 "$cagd" surface --kind tensor --in "$dir/grid.csv" --out "$dir/s1.json" && grep -q '"format": "cagd-surface"' "$dir/s1.json" \
   || { echo "FAIL: surface tensor as json"; fails=$((fails+1)); }
 expect_bad "hosaka bessel end"     '0,0\n1,1\n2,0\n'    interpolate --method hosaka --end bessel --in "$dir/bad.csv" --out "$dir/o.csv"

@@ -49,8 +49,6 @@ int run_typical_surface(const TypicalSurfaceArgs& a) {
     if (static_cast<double>(a.n) * a.grid > kMaxNTimesGrid)
         fail_input(who, "--n " + std::to_string(a.n) + " x --grid " + std::to_string(a.grid) + " exceeds 1e5 ((n grid)^2 operations: minutes); lower one");
     const exports::CurveFormat format = surface_output_format(a.format, a.out, who);
-    if (format == exports::CurveFormat::step && a.n - 1 > 25)
-        fail_input(who, "--n " + std::to_string(a.n) + ": STEP (OpenCASCADE) takes degree <= 25, so n <= 26; json takes any n");
     OutputFile file(a.out);
     std::unique_ptr<OutputFile> net_file;
     if (!a.net_out.empty()) net_file = std::make_unique<OutputFile>(a.net_out, "--net-out");
