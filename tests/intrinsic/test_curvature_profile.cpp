@@ -2,6 +2,7 @@
 // their Jacobian, Newton with the Moore–Penrose step, outcomes and bad input.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <cmath>
 #include <numbers>
@@ -9,6 +10,7 @@
 
 #include "cagd/core/errors.hpp"
 #include "cagd/intrinsic/design_verification.hpp"
+#include "cagd/intrinsic/spiro.hpp"
 #include "cagd/core/random_walk.hpp"
 
 using namespace cagd;
@@ -36,6 +38,24 @@ CurvatureProfileProblem closed_problem(int degree) {
     mult.front() = mult.back() = degree;
     const KnotLayout layout(degree, std::vector<int>(6, 1), mult, index);
     return {p, layout, std::vector<SegmentShape>(6, degree == 3 ? SegmentShape::linear_curvature : SegmentShape::free), {}, true, 0};
+}
+
+// Spiro's layout (degree 4, simple knots) on the same points: open with κ' = κ'' = 0 at both ends,
+// or closed G4.
+CurvatureProfileProblem spiro_problem(bool closed) {
+    CurvatureProfileProblem P = closed_problem(4);
+    P.shapes.assign(6, SegmentShape::free);
+    P.layout = KnotLayout(4, std::vector<int>(6, 1), {4, 1, 1, 1, 1, 1, 4}, {0, 1, 2, 3, 4, 5});
+    if (closed) {
+        P.closing_continuity = 4;
+        return P;
+    }
+    P.closed = false;
+    P.points.conservativeResize(7, 2);
+    P.points.row(6) << -2, 0.5;
+    using K = DesignCondition::Kind;
+    for (int order : {1, 2}) P.conditions.push_back({K::curvature_derivative, 0, 0.0, false, order}), P.conditions.push_back({K::curvature_derivative, 6, 0.0, true, order});
+    return P;
 }
 
 }  // namespace
@@ -123,6 +143,25 @@ TEST(TangentAngleSpline, DirectionIntegralsMatchAdaptiveGaussKronrod) {
         }
     }
     EXPECT_THROW(direction_integrals(Eigen::Vector4d(0, 1, 2, 3), 1.5), InvalidInput);
+}
+
+// Degree 4 (the Spiro layout): the same rule against the same adaptive reference, with ordinates
+// that turn by up to 40 rad over the segment.
+TEST(TangentAngleSpline, QuarticDirectionIntegralsMatchAdaptiveGaussKronrod) {
+    using GK = boost::math::quadrature::gauss_kronrod<double, 31>;
+    using Vector5d = Eigen::Matrix<double, 5, 1>;
+    for (const Vector5d& b : {Vector5d(0, 5, -3, 8, 1), Vector5d(2, 2, 2, 2, 2), Vector5d(-20, 3, 30, -2, 10), Vector5d(0, 0.1, 0.3, 0.2, -0.1)}) {
+        auto psi = [&](double t) {
+            const double u = 1 - t;
+            return b(0) * u * u * u * u + 4 * b(1) * t * u * u * u + 6 * b(2) * t * t * u * u + 4 * b(3) * t * t * t * u + b(4) * t * t * t * t;
+        };
+        for (double tau : {1.0, 0.37}) {
+            const Eigen::Vector2d I = direction_integrals(b, tau);
+            EXPECT_NEAR(I(0), GK::integrate([&](double t) { return std::cos(psi(t)) + 2.0; }, 0.0, tau, 15, 1e-15) - 2.0 * tau, 1e-14) << b.transpose();
+            EXPECT_NEAR(I(1), GK::integrate([&](double t) { return std::sin(psi(t)) + 2.0; }, 0.0, tau, 15, 1e-15) - 2.0 * tau, 1e-14) << b.transpose();
+        }
+    }
+    EXPECT_THROW(direction_integrals(Eigen::Matrix<double, 6, 1>::Zero(), 1.0), InvalidInput);
 }
 
 TEST(IntrinsicCurve, JetMatchesFiniteDifferencesOfPosition) {
@@ -234,7 +273,7 @@ TEST(CurvatureProfileDesign, JacobianMatchesCentralDifferences) {
     cubic.shapes = {SegmentShape::free, SegmentShape::arc, SegmentShape::linear_curvature, SegmentShape::line, SegmentShape::free};
     using K = DesignCondition::Kind;
     cubic.conditions = {{K::tangent_angle, 0, 0.1, false}, {K::curvature, 3, 0.2, true}, {K::curvature_radius, 2, 4.0, false}, {K::segment_length, 4, 2.0, false}};
-    for (const CurvatureProfileProblem& P : {fig3_problem(), closed_problem(2), closed_problem(3), cubic}) {
+    for (const CurvatureProfileProblem& P : {fig3_problem(), closed_problem(2), closed_problem(3), cubic, spiro_problem(false), spiro_problem(true)}) {
         Eigen::VectorXd u = c2_start(P);
         std::mt19937 rng(3);
         std::uniform_real_distribution<double> jitter(-0.05, 0.05);
@@ -392,4 +431,80 @@ TEST(CurvatureProfileDesign, BadInputThrows) {
     under.points.conservativeResize(7, 2);
     under.points.row(6) << 1, -2;
     EXPECT_THROW(solve_curvature_profile(under, lu), InvalidInput);  // 12 + 0 equations, 14 unknowns
+}
+
+// Spiro (intrinsic/spiro.hpp): the chordwise Jacobian against central differences, and the two
+// formulations agreeing on one curve, G4 at every point.
+TEST(Spiro, ChordwiseJacobianMatchesCentralDifferences) {
+    for (bool closed : {false, true}) {
+        const CurvatureProfileProblem P = spiro_problem(false);
+        PointList points = closed ? closed_problem(4).points : P.points;
+        const int spans = static_cast<int>(points.rows()) - (closed ? 0 : 1);
+        std::vector<std::array<double, 4>> ks;
+        for (int i = 0; i < spans; ++i) ks.push_back({0.3 * i - 0.5, 0.2, -0.1 * i, 0.05});
+        const Eigen::MatrixXd J(spiro_chordwise_system(points, closed, ks).jacobian);
+        double worst = 0.0;
+        for (int c = 0; c < 4 * spans; ++c) {
+            auto up = ks, down = ks;
+            up[static_cast<std::size_t>(c / 4)][static_cast<std::size_t>(c % 4)] += 1e-6;
+            down[static_cast<std::size_t>(c / 4)][static_cast<std::size_t>(c % 4)] -= 1e-6;
+            const Eigen::VectorXd fd = (spiro_chordwise_system(points, closed, up).f - spiro_chordwise_system(points, closed, down).f) / 2e-6;
+            worst = std::max(worst, (fd - J.col(c)).lpNorm<Eigen::Infinity>());
+        }
+        EXPECT_LT(worst, 1e-8) << (closed ? "closed" : "open");
+    }
+    EXPECT_THROW(spiro_chordwise_system(closed_problem(4).points, true, {}), InvalidInput);
+}
+
+TEST(Spiro, BothFormulationsGiveOneG4Curve) {
+    for (bool closed : {false, true}) {
+        const PointList points = closed ? closed_problem(4).points : spiro_problem(false).points;
+        const SpiroSolution s = solve_spiro(points, closed);
+        ASSERT_TRUE(s.solution.outcome.ok()) << s.solution.outcome.message;
+        const TangentAngleSpline& psi = s.solution.curve->tangent_angle();
+        // The chordwise arc lengths and curvature coefficients are the arc-length solution's.
+        for (int j = 0; j < psi.segments(); ++j) {
+            const double l = psi.segment_lengths()[static_cast<std::size_t>(j)];
+            EXPECT_NEAR(l, s.chordwise.arc_lengths[static_cast<std::size_t>(j)], 1e-10 * l);
+            const Eigen::VectorXd jet = psi.jet_in_segment(j, psi.breakpoints()[static_cast<std::size_t>(j)] + 0.5 * l, 4);
+            for (int d = 0; d < 4; ++d) EXPECT_NEAR(std::pow(l, d + 1) * jet(d + 1), s.chordwise.ks[static_cast<std::size_t>(j)][static_cast<std::size_t>(d)], 1e-9);
+        }
+        // G4: ψ, κ, κ', κ'' continuous at every interior breakpoint (and across the seam).
+        for (int g = 1; g < psi.segments(); ++g) {
+            const double w = psi.breakpoints()[static_cast<std::size_t>(g)];
+            const Eigen::VectorXd left = psi.jet_in_segment(g - 1, w, 4), right = psi.jet_in_segment(g, w, 4);
+            for (int d = 0; d < 4; ++d) EXPECT_NEAR(left(d), right(d), 1e-9 * (1 + std::abs(left(d)))) << "ψ^(" << d << ") at breakpoint " << g;
+            EXPECT_GT(std::abs(left(4) - right(4)), 1e-6) << "a knot: ψ'''' jumps at breakpoint " << g;
+        }
+        const Eigen::VectorXd start = psi.jet_in_segment(0, 0.0, 3), end = psi.jet_in_segment(psi.segments() - 1, psi.length(), 3);
+        if (closed) {
+            EXPECT_NEAR(end(0) - start(0), 2 * std::numbers::pi, 1e-10);
+            for (int d = 1; d < 4; ++d) EXPECT_NEAR(end(d), start(d), 1e-9 * (1 + std::abs(start(d))));
+        } else {
+            for (int d = 2; d < 4; ++d) {
+                EXPECT_NEAR(start(d), 0.0, 1e-9) << "κ^(" << d - 1 << ") = 0 at the open start";
+                EXPECT_NEAR(end(d), 0.0, 1e-9) << "κ^(" << d - 1 << ") = 0 at the open end";
+            }
+        }
+        // The curve passes through the points.
+        for (int i = 0; i < s.problem.layout.spans(); ++i)
+            EXPECT_LE((s.solution.curve->point(psi.breakpoints()[static_cast<std::size_t>(i)]) - points.row(i).transpose()).norm(), 1e-10);
+    }
+}
+
+TEST(Spiro, BadConditionsThrow) {
+    CurvatureProfileProblem open = spiro_problem(false);
+    open.conditions.front().order = 3;  // a degree-4 ψ has κ' and κ'' only
+    EXPECT_THROW(require_valid_problem(open, "test"), InvalidInput);
+    CurvatureProfileProblem closed = spiro_problem(true);
+    closed.closing_continuity = 5;
+    EXPECT_THROW(require_valid_problem(closed, "test"), InvalidInput);
+    closed.closing_continuity = 1;
+    EXPECT_THROW(require_valid_problem(closed, "test"), InvalidInput);
+    PointList three_d(4, 3);
+    three_d.setRandom();
+    EXPECT_THROW(solve_spiro(three_d, false), InvalidInput);
+    PointList repeated(3, 2);
+    repeated << 0, 0, 0, 0, 1, 1;
+    EXPECT_THROW(solve_spiro(repeated, false), InvalidInput);
 }

@@ -56,7 +56,7 @@ constexpr double kKeptLengthFraction = 0.2;
 
 // Forward derivatives of a segment's Bézier ordinates with respect to its 2p knots and p + 1
 // de Boor ordinates: 3p + 1 slots, fixed at compile time for the largest degree ψ may have.
-constexpr int kMaxJetDegree = 3;
+constexpr int kMaxJetDegree = 4;
 using Jet = ceres::Jet<double, 3 * kMaxJetDegree + 1>;
 
 // The Bézier ordinates of segment j and their exact derivatives with respect to the local de Boor
@@ -213,16 +213,23 @@ void require_valid_problem(const CurvatureProfileProblem& P, const std::string& 
         if (!std::isfinite(c.value)) fail_input(who, "condition value " + fmt(c.value) + " is not finite");
         if (c.kind == K::curvature_radius && c.value == 0.0) fail_input(who, "curvature radius 0 at breakpoint " + std::to_string(c.index));
         if (c.kind == K::segment_length && !(c.value > 0)) fail_input(who, "segment length " + fmt(c.value) + " for segment " + std::to_string(c.index) + " must be > 0");
-        if ((c.kind == K::curvature || c.kind == K::curvature_radius) && ((c.from_left && c.index == 0) || (!c.from_left && c.index == P.layout.segments())))
+        const bool one_sided = c.kind == K::curvature || c.kind == K::curvature_radius || c.kind == K::curvature_derivative;
+        if (one_sided && ((c.from_left && c.index == 0) || (!c.from_left && c.index == P.layout.segments())))
             fail_input(who, "curvature at breakpoint " + std::to_string(c.index) + " needs the side that has a segment");
+        if (c.kind == K::curvature_derivative && (c.order < 1 || c.order > P.layout.degree() - 2))
+            fail_input(who, "curvature derivative of order " + std::to_string(c.order) + " at breakpoint " + std::to_string(c.index) + ": a degree-" +
+                                std::to_string(P.layout.degree()) + " ψ allows orders 1.." + std::to_string(P.layout.degree() - 2));
     }
     if (P.closed && std::abs(P.turns) > 100) fail_input(who, "turns = " + std::to_string(P.turns) + " is implausible (|turns| ≤ 100)");
+    if (P.closed && (P.closing_continuity < 2 || P.closing_continuity > P.layout.degree()))
+        fail_input(who, "closing continuity G" + std::to_string(P.closing_continuity) + " is outside G2..G" + std::to_string(P.layout.degree()) + " for a degree-" +
+                            std::to_string(P.layout.degree()) + " ψ");
 }
 
 int design_unknowns(const CurvatureProfileProblem& P) { return P.layout.independent_lengths() + P.layout.ordinates(); }
 
 int design_equations(const CurvatureProfileProblem& P) {
-    int m = 2 * P.layout.spans() + static_cast<int>(P.conditions.size()) + (P.closed ? 2 : 0);
+    int m = 2 * P.layout.spans() + static_cast<int>(P.conditions.size()) + (P.closed ? P.closing_continuity : 0);
     for (auto s : P.shapes) m += shape_rows(s, P.layout.degree());
     return m;
 }
@@ -253,12 +260,16 @@ std::vector<std::string> design_equation_labels(const CurvatureProfileProblem& P
             out.push_back("length of segment " + std::to_string(c.index));
             continue;
         }
-        const char* what = c.kind == K::tangent_angle ? "tangent angle" : c.kind == K::curvature ? "curvature" : "curvature radius";
-        out.push_back(std::string(what) + " at breakpoint " + std::to_string(c.index));
+        const std::string what = c.kind == K::tangent_angle  ? "tangent angle"
+                                 : c.kind == K::curvature    ? "curvature"
+                                 : c.kind == K::curvature_radius ? "curvature radius"
+                                                              : "curvature derivative " + std::to_string(c.order);
+        out.push_back(what + " at breakpoint " + std::to_string(c.index));
     }
     if (P.closed) {
         out.push_back("closed: tangent angles differ by 2π·turns");
         out.push_back("closed: end curvatures equal");
+        for (int d = 1; d + 2 <= P.closing_continuity; ++d) out.push_back("closed: end curvature derivatives " + std::to_string(d) + " equal");
     }
     return out;
 }
@@ -354,6 +365,27 @@ DesignSystem design_system(const CurvatureProfileProblem& P, const Eigen::Vector
         write.add(row, s, j, gr, -sign * kappa / d);
         return sign * kappa;
     };
+    // adds sign·κ^(m)(w_g^∓) = sign·ψ^(m+1): the (m+1)-th forward difference of the Bézier ordinates
+    // at t = 0 (backward at t = 1) times p!/(p − m − 1)!, over Δw_j^(m+1).
+    // The row is multiplied by chord^(m+1) (`chord`: a data length, not an unknown), so that it is
+    // dimensionless like an angle row and rounds like one: κ'' of a short span is large.
+    auto curvature_derivative_row = [&](int g, bool at_end, int m, double sign, double chord_length) {
+        const int j = at_end ? g - 1 : g, e = m + 1;
+        const SegmentJet& s = jets[static_cast<std::size_t>(j)];
+        const double d = psi.segment_lengths()[static_cast<std::size_t>(j)];
+        double factor = 1.0, scale = 1.0;
+        for (int i = 0; i < e; ++i) factor *= p - i, scale *= d / chord_length;
+        Ordinates gr = Ordinates::Zero(p + 1);
+        double binomial = 1.0;  // C(e, i)
+        for (int i = 0; i <= e; ++i) {
+            const double coefficient = ((e - i) % 2 == 0 ? 1.0 : -1.0) * binomial;  // Δ^e b_0 = Σ (−1)^(e−i) C(e, i) b_i
+            gr(at_end ? p - e + i : i) = sign * factor * coefficient / scale;
+            binomial = binomial * (e - i) / (i + 1);
+        }
+        const double value = gr.dot(s.b);
+        write.add(row, s, j, gr, -e * value / d);
+        return value;
+    };
     for (const auto& c : P.conditions) {
         using K = DesignCondition::Kind;
         if (c.kind == K::tangent_angle) {
@@ -361,6 +393,9 @@ DesignSystem design_system(const CurvatureProfileProblem& P, const Eigen::Vector
         } else if (c.kind == K::segment_length) {
             out.f(row) = psi.segment_lengths()[static_cast<std::size_t>(c.index)] - c.value;
             if (with_jacobian) triplets.emplace_back(row, L.length_index(c.index), 1.0);
+        } else if (c.kind == K::curvature_derivative) {
+            const double h = chord(P, L.span_of_segment(c.from_left ? c.index - 1 : c.index)).norm();
+            out.f(row) = curvature_derivative_row(c.index, c.from_left, c.order, 1.0, h) - std::pow(h, c.order + 1) * c.value;
         } else {
             const double target = c.kind == K::curvature ? c.value : 1.0 / c.value;
             out.f(row) = curvature_row(c.index, c.from_left, 1.0) - target;
@@ -372,6 +407,11 @@ DesignSystem design_system(const CurvatureProfileProblem& P, const Eigen::Vector
         ++row;
         out.f(row) = curvature_row(k, true, 1.0) + curvature_row(0, false, -1.0);
         ++row;
+        const double h = 0.5 * (chord(P, 0).norm() + chord(P, L.spans() - 1).norm());
+        for (int m = 1; m + 2 <= P.closing_continuity; ++m) {
+            out.f(row) = curvature_derivative_row(k, true, m, 1.0, h) + curvature_derivative_row(0, false, m, -1.0, h);
+            ++row;
+        }
     }
     if (with_jacobian) {
         out.jacobian.resize(rows, cols);
@@ -615,18 +655,24 @@ void add_natural_open_ends(CurvatureProfileProblem& problem) {
     if (problem.shapes.back() == SegmentShape::free) problem.conditions.push_back({DesignCondition::Kind::curvature, problem.layout.segments(), 0.0, true});
 }
 
-CurvatureProfileSolution solve_curvature_profile_auto(const CurvatureProfileProblem& problem) {
+CurvatureProfileSolution solve_curvature_profile_auto(const CurvatureProfileProblem& problem, const NewtonOptions& options) {
+    return solve_curvature_profile_auto(problem, c2_start(problem), options);
+}
+
+CurvatureProfileSolution solve_curvature_profile_auto(const CurvatureProfileProblem& problem, const Eigen::VectorXd& start, const NewtonOptions& options) {
     // The Moore–Penrose step forms the Jacobian densely: n² doubles and O(n³) work per iteration
     // (2000 unknowns: 32 MB, seconds). Above that the sparse-LU outcome is the answer.
     constexpr int kDenseFallbackUnknowns = 2000;
     const int m = design_equations(problem), n = design_unknowns(problem);
     if (m == n && n > 200) {
-        NewtonOptions lu;
+        NewtonOptions lu = options;
         lu.step = NewtonStep::sparse_lu;
-        CurvatureProfileSolution sol = solve_curvature_profile(problem, lu);
+        CurvatureProfileSolution sol = solve_curvature_profile(problem, start, lu);
         if ((sol.outcome.ok() && sol.curve) || n > kDenseFallbackUnknowns) return sol;
     }
-    return solve_curvature_profile(problem);
+    NewtonOptions dense = options;
+    dense.step = NewtonStep::pseudo_inverse;
+    return solve_curvature_profile(problem, start, dense);
 }
 
 }  // namespace cagd::intrinsic

@@ -14,7 +14,14 @@
 ///     linear_curvature    b_3 − 3b_2 + 3b_1 − b_0 = 0 (p = 3: a clothoid segment)     (1 row)
 ///   conditions (eq 4): tangent angle ψ(w_g) = θ; curvature κ(w_g) = c (one-sided where κ may jump);
 ///     curvature radius: κ(w_g) = 1/R; a segment length Δw_j = d (fixes a free split of a span);
-///   closed curves (section 5): ψ(L) − ψ(0) = 2π·turns and κ(L) = κ(0).
+///     beyond the paper, a curvature derivative κ^(d)(w_g) = c, 1 ≤ d ≤ p − 2 (Spiro's open ends),
+///     the row times h^(d+1), h the chord of the segment's span, so that it is dimensionless;
+///   closed curves (section 5): ψ(L) − ψ(0) = 2π·turns and κ(L) = κ(0); with closing_continuity
+///     G > 2 also κ^(d)(L) = κ^(d)(0) for d = 1..G − 2 (Spiro closes G4: d = 1, 2), times h^(d+1)
+///     with h the mean of the first and last chords.
+/// The paper's ψ has degree 2 or 3. Degree 4 (κ cubic in arc length, simple knots: G4) is Levien's
+/// Spiro (R. Levien, From Spiral to Spline: Optimal Techniques in Interactive Curve Design, PhD
+/// thesis, UC Berkeley, 2009, ch. 8), which the same unknowns, integrals and Newton iteration solve.
 /// With m + 1 equations and N = l + q + 1 unknowns, Newton's method (eq 6) u ← u − J⁺ f(u); the
 /// paper uses J⁻¹ and, when m < l + q, the Moore–Penrose inverse J⁺: we always take J⁺ (Eigen's
 /// CompleteOrthogonalDecomposition, rank threshold 1e−10 relative), which equals J⁻¹ for a regular
@@ -66,11 +73,12 @@ const char* to_string(SegmentShape shape);
 /// One prescribed condition of eq (4): tangent angle, curvature or its radius at a breakpoint, or a segment's length.
 struct DesignCondition {
     /// What is prescribed: ψ, κ or R = 1/κ at a breakpoint, or a segment's length.
-    enum class Kind { tangent_angle, curvature, curvature_radius, segment_length };
+    enum class Kind { tangent_angle, curvature, curvature_radius, segment_length, curvature_derivative };
     Kind kind;               ///< what is prescribed
     int index;               ///< breakpoint g in 0..k (segment j in 0..k−1 for segment_length)
-    double value;            ///< θ (radians), κ, R, or Δw_j
-    bool from_left = false;  ///< curvature: the segment ending at w_g (else the one starting there)
+    double value;            ///< θ (radians), κ, R, Δw_j, or κ^(d)
+    bool from_left = false;  ///< curvature and its derivatives: the segment ending at w_g (else the one starting there)
+    int order = 1;           ///< curvature_derivative: d in 1..p − 2
 };
 
 /// The design problem: points, the knot layout of ψ, the segments' shapes and the conditions.
@@ -81,6 +89,7 @@ struct CurvatureProfileProblem {
     std::vector<DesignCondition> conditions;  ///< the prescribed conditions (eq 4)
     bool closed = false;  ///< a closed curve (section 5)
     int turns = 0;  ///< closed: ψ(L) − ψ(0) = 2π·turns; 0 = the sign of the polygon's signed area
+    int closing_continuity = 2;  ///< closed: G order where the curve closes, 2..p (rows: ψ, κ, κ', …)
 };
 
 /// "line,free,arc,…" (one shape per span; also "clothoid" = linear_curvature) → shapes.
@@ -157,8 +166,10 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
 /// fails (a singular or unconverged iteration) on at most 2000 unknowns. Above 2000 unknowns a failed
 /// LU iteration is returned as it is: the dense step would need n² doubles (10^5 points: 80 GB).
 void add_natural_open_ends(CurvatureProfileProblem& problem);
-/// The solve of the defaults above (the step chosen by size).
-CurvatureProfileSolution solve_curvature_profile_auto(const CurvatureProfileProblem& problem);
+/// The solve of the defaults above (the step chosen by size; the other options as given).
+CurvatureProfileSolution solve_curvature_profile_auto(const CurvatureProfileProblem& problem, const NewtonOptions& options = {});
+/// The same from the given start.
+CurvatureProfileSolution solve_curvature_profile_auto(const CurvatureProfileProblem& problem, const Eigen::VectorXd& start, const NewtonOptions& options);
 
 /// The second solver: Ceres Levenberg–Marquardt on the same f, with its own central-difference
 /// Jacobian (DynamicNumericDiffCostFunction) and lengths bounded below — independent of ours.

@@ -13,7 +13,7 @@ namespace cagd::intrinsic {
 KnotLayout::KnotLayout(int degree, std::vector<int> segments_per_span, std::vector<int> multiplicity, std::vector<int> length_index)
     : degree_(degree), multiplicity_(std::move(multiplicity)), length_index_(std::move(length_index)) {
     const std::string who = "intrinsic::KnotLayout";
-    if (degree_ < 2 || degree_ > 3) fail_input(who, "degree must be 2 or 3, got " + std::to_string(degree_));
+    if (degree_ < 2 || degree_ > 4) fail_input(who, "degree must be 2, 3 or 4, got " + std::to_string(degree_));
     if (segments_per_span.empty()) fail_input(who, "needs at least one span");
     span_first_.push_back(0);
     for (std::size_t i = 0; i < segments_per_span.size(); ++i) {
@@ -193,7 +193,7 @@ std::string fixed(double v, int decimals) {
 }  // namespace
 
 KnotDifferenceList parse_knot_difference_list(const std::string& text, int degree) {
-    if (degree < 2 || degree > 3) fail_input(kKnotListWho, "degree must be 2 or 3, got " + std::to_string(degree));
+    if (degree < 2 || degree > 4) fail_input(kKnotListWho, "degree must be 2, 3 or 4, got " + std::to_string(degree));
     const std::vector<Entry> items = Parser(text).parse_top();
     std::vector<int> per_span, mult, length_index;
     std::vector<std::string> labels;

@@ -38,7 +38,8 @@ class KnotLayout {
 public:
     /// segments_per_span: n entries ≥ 1; multiplicity: k + 1 entries (k = Σ segments_per_span),
     /// ends = degree, interior in [1, degree]; length_index: k entries, the independent length of
-    /// each segment, numbered in order of first appearance (0, 1, …, l − 1). degree ∈ {2, 3}.
+    /// each segment, numbered in order of first appearance (0, 1, …, l − 1). degree ∈ {2, 3, 4}
+    /// (4: Spiro's quartic ψ, curvature cubic in arc length).
     KnotLayout(int degree, std::vector<int> segments_per_span, std::vector<int> multiplicity, std::vector<int> length_index);
 
     /// p.

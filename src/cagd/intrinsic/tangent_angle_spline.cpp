@@ -39,7 +39,7 @@ TangentAngleSpline::TangentAngleSpline(KnotLayout layout, std::vector<double> se
     bezier_.resize(k, p + 1);
     for (int j = 0; j < k; ++j) {
         const int last = layout_.last_knot_of_breakpoint(j);
-        double u[6], c[4], b[4];
+        double u[8], c[5], b[5];  // p ≤ 4
         local_farin_knots_into(j, u);
         for (int m = 0; m <= p; ++m) c[m] = de_boor_(last - p + 1 + m);
         detail::bezier_from_de_boor(p, u, c, b);
@@ -146,7 +146,7 @@ namespace {
 template <class Weights>
 Eigen::Vector2d direction_integrals_with(const Eigen::Ref<const Eigen::VectorXd, 0, Eigen::InnerStride<>>& b, double tau, Weights* weights) {
     const int p = static_cast<int>(b.size()) - 1;
-    if (p < 0 || p > 3) fail_input("intrinsic::direction_integrals", "Bézier degree must be 0..3, got " + std::to_string(p));
+    if (p < 0 || p > 4) fail_input("intrinsic::direction_integrals", "Bézier degree must be 0..4, got " + std::to_string(p));
     if (!(tau >= 0.0 && tau <= 1.0)) fail_input("intrinsic::direction_integrals", "tau = " + full_precision(tau) + " outside [0, 1]");
     if (weights && tau != 1.0) fail_input("intrinsic::direction_integrals", "weighted integrals need tau = 1, got " + full_precision(tau));
     double bound = 0.0;
@@ -161,7 +161,7 @@ Eigen::Vector2d direction_integrals_with(const Eigen::Ref<const Eigen::VectorXd,
         for (int q = 0; q < rule.size(); ++q) {
             const double t = a + 0.5 * h * (rule.nodes()[static_cast<std::size_t>(q)] + 1.0);
             const double wq = 0.5 * h * rule.weights()[static_cast<std::size_t>(q)];
-            double B[4];
+            double B[5];
             bernstein_basis_values(p, t, std::span<double>(B, static_cast<std::size_t>(p) + 1));
             double psi = 0.0;
             for (int r = 0; r <= p; ++r) psi += b(r) * B[r];

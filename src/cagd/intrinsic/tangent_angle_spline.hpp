@@ -13,7 +13,8 @@
 /// Rule: the segment is cut into m = max(1, ⌈max_t |dψ_j/dt|⌉) equal pieces (≤ 1 rad of turning
 /// each; the bound is the largest |p Δb_{j,r}|, the derivative's Bézier ordinates), 16-point
 /// Gauss–Legendre on each. The integrand e^{iψ} is entire; on a piece mapped to [−1, 1] it stays below
-/// e^3 on the Bernstein ellipse ρ = 4, so the Gauss error bound (64/15) M ρ^{−32}/(ρ² − 1) is
+/// e^3 on the Bernstein ellipse ρ = 4 for every degree p ≤ 4 (the worst Bézier derivative ordinates,
+/// ±1, give e^1.46 for p = 3 and e^2.36 for p = 4), so the Gauss error bound (64/15) M ρ^{−32}/(ρ² − 1) is
 /// < 1e−18 of the piece: the rule is exact to rounding (tested against adaptive Gauss–Kronrod).
 ///
 /// Preconditions (InvalidInput): segment lengths finite and > 0, one per segment; de Boor ordinates
@@ -78,13 +79,13 @@ private:
 };
 
 /// ∫_0^τ (cos ψ(t), sin ψ(t)) dt for the Bézier polynomial ψ with ordinates b (degree = size − 1,
-/// ≤ 3), 0 ≤ τ ≤ 1, by the rule above. With `weights`, also W(0, r) = ∫_0^1 cos ψ B^p_r dt and
+/// ≤ 4), 0 ≤ τ ≤ 1, by the rule above. With `weights`, also W(0, r) = ∫_0^1 cos ψ B^p_r dt and
 /// W(1, r) = ∫_0^1 sin ψ B^p_r dt (τ must be 1), the derivatives' building blocks.
 /// b may be a row of bezier() (any inner stride: no copy).
 Eigen::Vector2d direction_integrals(const Eigen::Ref<const Eigen::VectorXd, 0, Eigen::InnerStride<>>& b, double tau = 1.0,
                                     Eigen::Matrix<double, 2, Eigen::Dynamic>* weights = nullptr);
-/// The same with the weights in fixed storage (degree ≤ 3: at most 4 columns), no allocation.
-using DirectionWeights = Eigen::Matrix<double, 2, Eigen::Dynamic, 0, 2, 4>;
+/// The same with the weights in fixed storage (degree ≤ 4: at most 5 columns), no allocation.
+using DirectionWeights = Eigen::Matrix<double, 2, Eigen::Dynamic, 0, 2, 5>;
 /// The same as above with the weights in fixed storage.
 Eigen::Vector2d direction_integrals(const Eigen::Ref<const Eigen::VectorXd, 0, Eigen::InnerStride<>>& b, double tau, DirectionWeights* weights);
 

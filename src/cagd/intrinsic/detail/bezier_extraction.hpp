@@ -10,7 +10,7 @@ namespace cagd::intrinsic::detail {
 
 template <class T>
 void bezier_from_de_boor(int p, const T* u, const T* c, T* b) {
-    T d[4], x[3];
+    T d[5], x[4];  // p ≤ 4
     for (int r = 0; r <= p; ++r) {
         for (int m = 0; m < p; ++m) x[m] = m < p - r ? u[p - 1] : u[p];
         for (int i = 0; i <= p; ++i) d[i] = c[i];
