@@ -134,6 +134,7 @@ void bind_methods(py::module_& m) {
             claims["min_points_closed"] = c.min_points_closed;
             claims["max_points"] = c.max_points;
             claims["max_dimension"] = c.max_dimension;
+            claims["always_solves"] = c.always_solves;
             d["claims"] = claims;
             out.append(d);
         }

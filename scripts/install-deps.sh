@@ -48,6 +48,7 @@ test=(
   mypy                   # the Python examples pass mypy --strict against the stubs
   libopenmpi-dev openmpi-bin   # the space pseudo-energy table on MPI (make test runs mpirun -np 2)
   python3-ezdxf chromium # the export test reads DXF with ezdxf and renders SVG in headless Chromium
+  libspiro-dev           # the spiro method's check against libspiro (a test program only: GPL)
 )
 bench=(
   libbenchmark-dev       # make bench

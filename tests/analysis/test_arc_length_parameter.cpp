@@ -27,7 +27,9 @@ TEST(ArcLengthParameter, InvertsTheArcLengthOfEveryMethodsCurve) {
             EXPECT_NEAR(cagd::analysis::arc_length(*curve, curve->t_min(), t, 64), s, 1e-11 * length) << c.name << ": ∫|r'| up to t(s) is s, s = " << s;
         }
         // Where the parameter is arc length already (curvature-profile), t(s) = s.
-        if (c.claims.parameter == "arc length") EXPECT_NEAR(inverse.parameter_at(0.4 * length), 0.4 * length, 1e-10 * length) << c.name;
+        if (c.claims.parameter == "arc length") {
+            EXPECT_NEAR(inverse.parameter_at(0.4 * length), 0.4 * length, 1e-10 * length) << c.name;
+        }
     }
 }
 

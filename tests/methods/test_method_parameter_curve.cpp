@@ -42,6 +42,10 @@ TEST(MethodParameterCurve, EveryMethodIsEvaluatedInTheParameterItStates) {
         for (bool closed : {false, true}) {
             if (closed && !c.claims.supports_closed) continue;
             const InterpolationResult r = cagd::methods::interpolate(c, p, closed);
+            if (!c.claims.always_solves && !r.outcome.ok()) {  // closed Spiro through these points does not exist (libspiro agrees)
+                EXPECT_EQ(r.outcome.status, Status::no_convergence) << c.name;
+                continue;
+            }
             ASSERT_TRUE(r.outcome.ok()) << c.name << ": " << r.outcome.message;
             const Interpolant& in = *r.interpolant;
             const MethodParameterCurve m(in);

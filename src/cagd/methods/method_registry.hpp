@@ -69,6 +69,10 @@ struct MethodClaims {
     int min_points_closed = 3;  ///< fewest points of a closed curve
     int max_points = 0;  ///< most points (0: no limit), where the method's cost forbids more
     int max_dimension = 2;  ///< 2 or 3
+    /// A curve exists for every valid point set. False where the method's equations have no solution
+    /// for some points and several for others (Spiro): the outcome is then no_convergence, and the
+    /// solution found may depend on the rounding of the input.
+    bool always_solves = true;
 };
 
 /// A curve from the registry with the parameter of each data point.

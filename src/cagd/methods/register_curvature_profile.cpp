@@ -1,5 +1,7 @@
 // The method of curvature_profile (Kuroda, Higashi, Saito, Watanabe): the composite interpolant
-// whose curvature is piecewise polynomial in arc length (sections 2-4, eq 2-6).
+// whose curvature is piecewise polynomial in arc length (sections 2-4, eq 2-6); and Spiro, its
+// degree-4 member (Levien 2009): curvature a cubic polynomial of arc length on every span, G4 at
+// every point, solved by the same Newton iteration.
 #include "cagd/methods/detail/registration.hpp"
 
 #include <algorithm>
@@ -8,10 +10,44 @@
 
 #include "cagd/intrinsic/curvature_profile_design.hpp"
 #include "cagd/intrinsic/knot_difference_list.hpp"
+#include "cagd/intrinsic/spiro.hpp"
 
 namespace cagd::methods::detail {
 
 namespace {
+
+// The registry's result of a solved design: the Newton history, the system's size and rank, the
+// knot-difference list, and the curve with a node at the start of every span.
+InterpolationResult solved_result(const intrinsic::CurvatureProfileProblem& problem, const intrinsic::CurvatureProfileSolution& sol) {
+    using namespace intrinsic;
+    const KnotLayout& layout = problem.layout;
+    InterpolationResult r;
+    r.outcome = sol.outcome;
+    for (const auto& h : sol.history) {
+        std::ostringstream residual;
+        residual << h.residual;
+        r.report.emplace_back("newton_" + std::to_string(h.iteration) + "_residual", residual.str());
+        r.report.emplace_back("newton_" + std::to_string(h.iteration) + "_rank", std::to_string(h.rank));
+    }
+    if (!sol.outcome.ok() || !sol.curve) return r;
+    const int m = design_equations(problem), N = design_unknowns(problem);
+    r.report.emplace_back("equations", std::to_string(m));
+    r.report.emplace_back("unknowns", std::to_string(N));
+    r.report.emplace_back("rank", sol.history.size() == 1 ? std::string("not needed (the start met the tolerance)")
+                                  : sol.rank < 0          ? std::string("full (sparse LU)")
+                                                          : std::to_string(sol.rank));
+    if (m < N || (sol.rank >= 0 && sol.rank < N)) r.report.emplace_back("solution", "minimum-norm Newton steps chose one of several solutions");
+    // Four decimals as the paper prints, more where the shortest span needs them to stay nonzero.
+    const std::vector<double> lengths = sol.segment_lengths();
+    const double shortest = *std::min_element(lengths.begin(), lengths.end());
+    const int decimals = std::clamp(static_cast<int>(std::ceil(-std::log10(shortest))) + 1, 4, 17);
+    if (shortest >= 1e-17) r.report.emplace_back("knot_difference_list", format_knot_difference_list(layout, lengths, decimals));
+    const std::vector<double>& w = sol.curve->breakpoints();
+    std::vector<double> nodes;
+    for (int j = 0; j <= layout.spans(); ++j) nodes.push_back(w[static_cast<std::size_t>(layout.first_segment(j))]);
+    r.interpolant = Interpolant{std::make_shared<IntrinsicCurve>(*sol.curve), nodes, std::vector<double>(static_cast<std::size_t>(layout.spans()), 1.0)};
+    return r;
+}
 
 InterpolationResult build_curvature_profile(const PointList& points, bool closed, const ParameterValues& v) {
     using namespace intrinsic;
@@ -28,30 +64,14 @@ InterpolationResult build_curvature_profile(const PointList& points, bool closed
     CurvatureProfileProblem problem{points, layout, segment_shapes(layout, span_shapes), {}, closed, 0};
     add_natural_open_ends(problem);
     require_valid_problem(problem, who);
-    const CurvatureProfileSolution sol = solve_curvature_profile_auto(problem);
-    InterpolationResult r;
-    r.outcome = sol.outcome;
-    for (const auto& h : sol.history) {
-        std::ostringstream residual;
-        residual << h.residual;
-        r.report.emplace_back("newton_" + std::to_string(h.iteration) + "_residual", residual.str());
-        r.report.emplace_back("newton_" + std::to_string(h.iteration) + "_rank", std::to_string(h.rank));
-    }
-    if (!sol.outcome.ok() || !sol.curve) return r;
-    const int m = design_equations(problem), N = design_unknowns(problem);
-    r.report.emplace_back("equations", std::to_string(m));
-    r.report.emplace_back("unknowns", std::to_string(N));
-    r.report.emplace_back("rank", sol.rank < 0 ? std::string("full (sparse LU)") : std::to_string(sol.rank));
-    if (m < N || (sol.rank >= 0 && sol.rank < N)) r.report.emplace_back("solution", "minimum-norm Newton steps chose one of several solutions");
-    // Four decimals as the paper prints, more where the shortest span needs them to stay nonzero.
-    const std::vector<double> lengths = sol.segment_lengths();
-    const double shortest = *std::min_element(lengths.begin(), lengths.end());
-    const int decimals = std::clamp(static_cast<int>(std::ceil(-std::log10(shortest))) + 1, 4, 17);
-    if (shortest >= 1e-17) r.report.emplace_back("knot_difference_list", format_knot_difference_list(layout, lengths, decimals));
-    const std::vector<double>& w = sol.curve->breakpoints();
-    std::vector<double> nodes;
-    for (int j = 0; j <= layout.spans(); ++j) nodes.push_back(w[static_cast<std::size_t>(layout.first_segment(j))]);
-    r.interpolant = Interpolant{std::make_shared<IntrinsicCurve>(*sol.curve), nodes, std::vector<double>(static_cast<std::size_t>(layout.spans()), 1.0)};
+    return solved_result(problem, solve_curvature_profile_auto(problem));
+}
+
+// Spiro (intrinsic/spiro.hpp): Levien's chordwise Newton polished by the arc-length one.
+InterpolationResult build_spiro(const PointList& points, bool closed, const ParameterValues&) {
+    const intrinsic::SpiroSolution spiro = intrinsic::solve_spiro(points, closed);
+    InterpolationResult r = solved_result(spiro.problem, spiro.solution);
+    r.report.insert(r.report.begin(), {"chordwise_newton_iterations", std::to_string(spiro.chordwise.iterations)});
     return r;
 }
 
@@ -69,6 +89,15 @@ std::vector<Method> curvature_profile_methods() {
                        {.name = "degree", .type = P::integer, .lower = 2, .upper = 3, .help = "degree of psi for --knots: 2 (clothoid) or 3 (the paper's cubic; absent: 2)"}},
         .claims = fixed({.parametric_continuity = 2, .geometric_continuity = 2, .parameter = "arc length", .invariance = Invariance::similarity}),
         .build = build_curvature_profile,
+        .iterative = true,
+    });
+    r.push_back({
+        .name = "spiro",
+        .paper = "Levien 2009",
+        .source = "R. Levien, From Spiral to Spline (PhD thesis, 2009), ch. 8; curvature_profile eq (2)-(6) with a quartic psi",
+        .summary = "Spiro: curvature a cubic polynomial of arc length per span, G4 at every point (libspiro's 'o' points; a peer)",
+        .claims = fixed({.parametric_continuity = 4, .geometric_continuity = 4, .parameter = "arc length", .invariance = Invariance::similarity, .always_solves = false}),
+        .build = build_spiro,
         .iterative = true,
     });
     return r;

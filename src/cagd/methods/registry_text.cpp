@@ -27,6 +27,7 @@ std::string claims_text(const MethodClaims& c) {
     s += c.supports_closed ? "; open, closed" : "; open only";
     s += "; points >= " + std::to_string(c.min_points);
     if (c.max_points > 0) s += ", <= " + std::to_string(c.max_points);
+    if (!c.always_solves) s += "; no solution for some points";
     return s;
 }
 

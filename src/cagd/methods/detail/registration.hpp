@@ -6,7 +6,7 @@
 //   register_pseudo_energy.cpp      pseudo-spline, cubic-a, cubic-b, hermite-a, hermite-b
 //   register_sb2_locality.cpp       s-spline, b2-spline
 //   register_hosaka.cpp             hosaka
-//   register_curvature_profile.cpp  curvature-profile
+//   register_curvature_profile.cpp  curvature-profile, spiro (its degree-4 member; a peer)
 //   register_boost_math.cpp         boost-pchip, boost-makima, boost-catmull-rom (peers)
 //   register_eigen.cpp              eigen-spline (a peer; at most 2,000 points)
 //   register_opencascade.cpp        occt-interpolate (a peer; only with OpenCASCADE)
