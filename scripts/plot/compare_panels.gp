@@ -44,12 +44,14 @@ n = words(names)
 first(list, i) = int(word(list, i))
 has(counts, i) = int(word(counts, i)) > 0
 last(list, counts, i) = has(counts, i) ? int(word(list, i)) + int(word(counts, i)) - 1 : int(word(list, i))
-label(i, counts) = word(names, i).(has(counts, i) ? '' : ' (none)')
-# 20 distinct colours (matplotlib's tab20 order: each dark colour then its light one), then dashes:
-# a method's colour and dash type are its own up to 20 methods, and the pair up to 100.
-palette = "#1f77b4 #ff7f0e #2ca02c #d62728 #9467bd #8c564b #e377c2 #7f7f7f #bcbd22 #17becf #aec7e8 #ffbb78 #98df8a #ff9896 #c5b0d5 #c49c94 #f7b6d2 #c7c7c7 #dbdb8d #9edae5"
-colour(i) = word(palette, (i - 1) % 20 + 1)
-dash(i) = int((i - 1) / 20) + 1
+# A method without a curve has no key entry in an overlay (its own panel says why).
+label(i, counts) = has(counts, i) ? word(names, i) : ''
+# 28 distinct colours (matplotlib's tab20 order: each dark colour then its light one; then eight
+# dark ones of tab20b), then dashes: a method's colour is its own up to 28 methods, and the pair
+# with its dash type up to 140.
+palette = "#1f77b4 #ff7f0e #2ca02c #d62728 #9467bd #8c564b #e377c2 #7f7f7f #bcbd22 #17becf #aec7e8 #ffbb78 #98df8a #ff9896 #c5b0d5 #c49c94 #f7b6d2 #c7c7c7 #dbdb8d #9edae5 #393b79 #637939 #8c6d31 #843c39 #7b4173 #5254a3 #8ca252 #bd9e39"
+colour(i) = word(palette, (i - 1) % 28 + 1)
+dash(i) = int((i - 1) / 28) + 1
 # Why a method has no curve, comb or profile: its status (methods.csv, spaces written as '-').
 status(i) = word(statuses, i)
 cols = n <= 4 ? n : (n <= 9 ? 3 : (n <= 16 ? 4 : 5))
@@ -92,7 +94,7 @@ do for [t in formats] {
   set xrange [STATS_min_x - margin:STATS_max_x + margin]
   set yrange [STATS_min_y - margin:STATS_max_y + margin]
   set clip two
-  set multiplot layout rows,cols title heading.': curvature combs (teeth -c κ n; c per method: 95th percentile of |κ| = 10 % of the diagonal; frame: data box + 30 %)' noenhanced
+  set multiplot layout rows,cols title heading.': curvature combs (teeth -c κ n; one c for every panel: the 95th percentile of |κ| over all methods = 10 % of the diagonal; frame: data box + 30 %)' noenhanced
   unset key
   unset xlabel
   unset ylabel

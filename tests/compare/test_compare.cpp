@@ -18,6 +18,7 @@ using std::isnan;
 #include <sstream>
 #include <stdexcept>
 
+#include "cagd/analysis/curvature_comb.hpp"
 #include "cagd/analysis/curve_measures.hpp"
 #include "cagd/analysis/fairness_measures.hpp"
 #include "cagd/analysis/log_curvature_graph.hpp"
@@ -583,6 +584,27 @@ TEST(Compare, CombsAreThinnedAndSayHow) {
     EXPECT_EQ(header[8], "comb_stride");
     EXPECT_EQ(table[0][8], std::to_string(stride));
     EXPECT_NEAR(std::stod(table[0][9]), d.comb_scale[0], 1e-5 * d.comb_scale[0]);
+}
+
+// One comb scale for every panel: the 95th percentile of |κ| over all methods' samples draws 10 %
+// of the diagonal, so a curvier method draws longer teeth at the same scale.
+TEST(Compare, CombsShareOneScale) {
+    const PointList p = random_walk_points(12);
+    ComparisonOptions o;
+    o.methods = {"cubic-b", "hermite-a", "boost-catmull-rom"};
+    o.locality = false;
+    const std::vector<MethodComparison> c = compare_methods(p, o);
+    const FigureData d = comparison_figure_data(c, p, FigureSampling{32, 1});
+    std::vector<double> pooled;
+    for (const auto& row : d.profiles) pooled.push_back(row[2]);
+    const double expected = analysis::comb_scale(pooled, bounding_box_diagonal(p));
+    ASSERT_EQ(d.comb_scale.size(), 3u);
+    for (double scale : d.comb_scale) EXPECT_EQ(scale, expected);
+    // Per method the scale would differ: the pooled one is not cubic-b's own.
+    std::vector<double> own;
+    for (const auto& row : d.profiles)
+        if (row[0] == 0.0) own.push_back(row[2]);
+    EXPECT_NE(analysis::comb_scale(own, bounding_box_diagonal(p)), expected);
 }
 
 // The measured exception to rotation invariance (methods/method_registry.hpp): the optimised

@@ -78,7 +78,9 @@ double span_pseudo_energy(const Interpolant& a, const analysis::FairnessMeasures
     return total;
 }
 
-std::string applicability(const methods::MethodClaims& m, const PointList& points, bool closed) {
+}  // namespace
+
+std::string method_applicability(const methods::MethodClaims& m, const PointList& points, bool closed) {
     if (closed && !m.supports_closed) return "open curves only";
     const int need = closed ? m.min_points_closed : m.min_points;
     if (points.rows() < need) return "needs at least " + std::to_string(need) + " points";
@@ -86,8 +88,6 @@ std::string applicability(const methods::MethodClaims& m, const PointList& point
     if (points.cols() > m.max_dimension) return m.max_dimension == 2 ? "planar points only" : "at most " + std::to_string(m.max_dimension) + " dimensions";
     return "";
 }
-
-}  // namespace
 
 analysis::FairnessSampling comparison_sampling(int pieces) {
     const int budget = 2'000'000 / std::max(pieces, 1);
@@ -118,7 +118,7 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
     const auto measure = [&](const methods::Configuration& configuration) {
         MethodComparison c;
         c.method = configuration.name;
-        c.note = applicability(configuration.claims, points, options.closed);
+        c.note = method_applicability(configuration.claims, points, options.closed);
         if (!c.note.empty()) {
             c.status = "not applicable";
             return c;
@@ -262,16 +262,18 @@ FigureData comparison_figure_data(const std::vector<MethodComparison>& cs, const
     std::vector<FigureData> parts(cs.size());
     std::vector<double> comb_scale(cs.size(), 0.0);
     std::vector<int> comb_stride(cs.size(), 0);
+    // A comb tooth's foot: position, unit normal, κ.
+    struct CombSample {
+        double x, y, nx, ny, kappa;
+    };
+    std::vector<std::vector<CombSample>> comb_samples(cs.size());
     parallel_for(static_cast<long>(cs.size()), hardware_threads(), [&](long method) {
         const auto i = static_cast<std::size_t>(method);
         FigureData& d = parts[i];
         if (!cs[i].interpolant) return;
         const Interpolant& a = *cs[i].interpolant;
         const double index = static_cast<double>(i);
-        struct Sample {
-            double x, y, nx, ny, kappa;
-        };
-        std::vector<Sample> samples;
+        std::vector<CombSample> samples;
         double s = 0.0;
         for (std::size_t k = 0; k + 1 < a.node_parameters.size(); ++k) {
             const bool last = k + 2 == a.node_parameters.size();
@@ -308,19 +310,27 @@ FigureData comparison_figure_data(const std::vector<MethodComparison>& cs, const
                 samples.push_back({J(0, 0), J(0, 1), -J(1, 1) / v, J(1, 0) / v, kappa});
             }
         }
-        if (samples.empty()) return;
-        std::vector<double> kappa;
-        for (const Sample& q : samples) kappa.push_back(q.kappa);
-        const double scale = analysis::comb_scale(std::move(kappa), diagonal);
+        comb_samples[i] = std::move(samples);
+    });
+    // One comb scale for every panel: the 95th percentile of |κ| over all methods' samples draws
+    // 10 % of the diagonal, so that equal teeth are equal curvature across panels.
+    std::vector<double> pooled;
+    for (const auto& samples : comb_samples)
+        for (const CombSample& q : samples) pooled.push_back(q.kappa);
+    const double scale = pooled.empty() ? 0.0 : analysis::comb_scale(std::move(pooled), diagonal);
+    for (std::size_t i = 0; i < cs.size(); ++i) {
+        const std::vector<CombSample>& samples = comb_samples[i];
+        if (samples.empty()) continue;
+        const double index = static_cast<double>(i);
         const std::size_t teeth_stride = (samples.size() + kMaxCombTeeth - 2) / (kMaxCombTeeth - 1);  // ≤ kMaxCombTeeth − 1 strided teeth, and the last
         comb_scale[i] = scale;
         comb_stride[i] = static_cast<int>(std::max<std::size_t>(teeth_stride, 1));
         for (std::size_t k = 0; k < samples.size(); ++k) {
             if (k % static_cast<std::size_t>(comb_stride[i]) != 0 && k + 1 != samples.size()) continue;
-            const Sample& q = samples[k];
-            d.combs.push_back({index, q.x, q.y, q.x - scale * q.kappa * q.nx, q.y - scale * q.kappa * q.ny});
+            const CombSample& q = samples[k];
+            parts[i].combs.push_back({index, q.x, q.y, q.x - scale * q.kappa * q.nx, q.y - scale * q.kappa * q.ny});
         }
-    });
+    }
     FigureData d;
     d.comb_scale = std::move(comb_scale);
     d.comb_stride = std::move(comb_stride);

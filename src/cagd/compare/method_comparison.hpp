@@ -66,6 +66,9 @@ struct MethodComparison {
     double seconds = 0.0;  ///< wall time of interpolate() (not deterministic)
 };
 
+/// Why a method with these claims does not apply to the points ("open curves only", "needs at least
+/// 4 points", "takes at most 2000 points", "planar points only"), or "" when it applies.
+std::string method_applicability(const methods::MethodClaims& claims, const PointList& points, bool closed);
 /// Samples (8 to 128) and Gauss–Legendre sub-pieces (2 to 512) per piece for a curve of `pieces`
 /// pieces: about 2·10^6 of each in all, fewer per piece for long inputs.
 analysis::FairnessSampling comparison_sampling(int pieces);
@@ -87,8 +90,9 @@ std::string comparison_markdown(const std::vector<MethodComparison>& c, bool clo
 /// Figure data (planar; for space points see above: curves (index, x, y, z), profiles (index, s, κ,
 /// τ), no combs). Curve samples (method index, method, x, y), `per_span` per span; the curvature
 /// profile (method index, s, κ), `per_span` per span with both ends of every span; the curvature
-/// comb (method index, x, y, tooth end x, y), the tooth r − c·κ·n (n the left unit normal), c per
-/// method such that the 95th percentile of |κ| draws 10 % of the data diagonal (a spike shows as a
+/// comb (method index, x, y, tooth end x, y), the tooth r − c·κ·n (n the left unit normal), c one
+/// scale for every method, such that the 95th percentile of |κ| over all methods' samples draws
+/// 10 % of the data diagonal (equal teeth are equal curvature in every panel; a spike shows as a
 /// long tooth without flattening the rest). A comb has at most kMaxCombTeeth teeth: every
 /// comb_stride-th curve sample of the method (the first and the last always), so that a panel
 /// stays readable and cheap to draw however long the input; comb_scale and comb_stride record, per
