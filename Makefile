@@ -26,7 +26,7 @@ INSTALL_FLAGS = -DCAGD_BUILD_TESTS=OFF -DCAGD_BUILD_EXPERIMENTS=OFF -DCAGD_BUILD
 # build of the space table serves all four.
 TABLE_CACHE = XDG_CACHE_HOME=$(abspath $(BUILD))/cache/user
 
-.PHONY: all deps configure build test reproduce bench python install sanitize docs clean
+.PHONY: all deps configure build test reproduce benchmark bench python install sanitize docs clean
 
 all: build
 
@@ -50,6 +50,14 @@ reproduce:
 	@cmake -S . -B $(BUILD) $(call generator_for,$(BUILD)) $(CMAKE_FLAGS) $(REPRODUCE_ON) >/dev/null
 	@cmake --build $(BUILD) -j$(JOBS)
 	@$(TABLE_CACHE) JOBS=$(JOBS) bash scripts/reproduce.sh $(BUILD)
+
+# The interpolant benchmark alone (make reproduce runs it too): results/benchmark/ and its figures.
+benchmark:
+	@bash scripts/install-deps.sh reproduce
+	@cmake -S . -B $(BUILD) $(call generator_for,$(BUILD)) $(CMAKE_FLAGS) $(REPRODUCE_ON) >/dev/null
+	@cmake --build $(BUILD) -j$(JOBS) --target cagd_cli
+	@$(TABLE_CACHE) $(BUILD)/cagd benchmark --out results/benchmark --quiet
+	@gnuplot -e "datadir='results/benchmark'" scripts/plot/benchmark_fig_convergence.gp
 
 bench:
 	@bash scripts/install-deps.sh bench

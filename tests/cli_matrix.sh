@@ -203,6 +203,14 @@ for bad in "--n 100000" "--n 2" "--n 0" "--grid 100000" "--grid 1" "--n 400 --gr
     # shellcheck disable=SC2086
     run 2 "$o" typical-surface --n 8 --alpha-u -0.5 --alpha-v -0.6 --angle-deg 1 $bad --out "$o"
 done
+run 0 "" benchmark --out "$dir/bench_good" --sizes 6,12 --families circle,helix --methods cubic-b,spiro
+for bad in "--sizes 2" "--sizes 6,x" "--sizes 100001" "--families square" "--methods cubic-z" "--threads -1"; do
+    # shellcheck disable=SC2086
+    run 2 "" benchmark --out "$dir/bench_bad" $bad
+    [ ! -e "$dir/bench_bad" ] || fail "benchmark $bad left $dir/bench_bad"
+done
+: > "$dir/bench_file"
+run 2 "" benchmark --out "$dir/bench_file" --sizes 6 --families circle --methods cubic-b   # a file where a directory is expected
 run 0 "" monotone --in "$dir/good.csv"
 for c in empty garbage nan inf columns space one_point missing; do run 2 "" monotone --in "$dir/$c.csv"; done
 run 2 "" monotone --in "$dir/good.csv" --knots other

@@ -135,6 +135,34 @@ std::vector<std::string> figure_data_files(const fs::path& root, const fs::path&
     return out;
 }
 
+namespace {
+
+// "Beyond the papers": the interpolant benchmark of results/benchmark/ (cagd benchmark), when run:
+// its leaderboards as the command wrote them and its convergence figures.
+std::string benchmark_section(const fs::path& results) {
+    const fs::path dir = results / "benchmark";
+    const fs::path board = dir / "leaderboard.md";
+    if (!fs::exists(board)) return "";
+    std::ifstream in(board);
+    std::ostringstream text;
+    text << in.rdbuf();
+    std::ostringstream s;
+    s << "\n<a id=\"benchmark\"></a>\n\n## Beyond the papers: the interpolant benchmark\n\n"
+         "Not a claim of any paper: every configuration of the registry on points sampled from curves with a known answer "
+         "(`cagd benchmark`, `src/cagd/compare/truth_benchmark.hpp`; docs/benchmark.md). Errors are dimensionless: the largest "
+         "distance to the true curve and the length error divided by the true length, the tangent angle in radians, the curvature "
+         "error times the true length (largest and L2 over arc length). An observed order comes from the two largest sizes. "
+         "Data: [`benchmark/truth_runs.csv`](benchmark/truth_runs.csv), [`benchmark/convergence_orders.csv`](benchmark/convergence_orders.csv); "
+         "script: [`scripts/plot/benchmark_fig_convergence.gp`](../scripts/plot/benchmark_fig_convergence.gp).\n"
+      << text.str() << "\n#### Convergence\n\n";
+    for (const char* family : {"line", "circle", "ellipse", "epitrochoid", "clothoid", "log-aesthetic", "helix", "trefoil"})
+        if (fs::exists(dir / (std::string("convergence_") + family + ".png")))
+            s << "![" << family << "](benchmark/convergence_" << family << ".png)\n\n";
+    return s.str();
+}
+
+}  // namespace
+
 int write_report(const std::string& root) {
     const fs::path results = fs::path(root) / "results";
     int failed = 0;
@@ -278,7 +306,7 @@ int write_report(const std::string& root) {
               "are counted apart from the paper's claims (last column; `origin` = ours in claims.csv), and say\n"
               "whether they were written before or after a first measurement.\n\n"
               "## Summary\n\n"
-           << summary.str() << body.str();
+           << summary.str() << body.str() << benchmark_section(results);
     claims_file.commit();
     report_file.commit();
     return failed;

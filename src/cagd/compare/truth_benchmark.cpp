@@ -1,0 +1,357 @@
+#include "cagd/compare/truth_benchmark.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <tuple>
+
+#include "cagd/analysis/curve_measures.hpp"
+#include "cagd/compare/method_comparison.hpp"
+#include "cagd/core/csv.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/core/parallel.hpp"
+#include "cagd/numeric/gauss_legendre.hpp"
+
+namespace cagd::compare {
+
+namespace {
+
+constexpr int kNodesPerSpan = 16;
+// The interpolant's length: 20-point Gauss–Legendre on this many sub-pieces of every piece (the
+// tests hold it to adaptive Gauss–Kronrod; the adaptive rule itself took 6 s on one 768-point
+// degree-5 spline).
+constexpr int kLengthPieces = 4;
+constexpr int kProjectionIterations = 30;
+// The observed order comes from the largest this many sizes: the smaller ones are before the
+// asymptotic regime (cubic-b on the closed ellipse: a fit over n = 6..96 gave 3.2, the pair
+// 192/384 gives 4.0; on the nonuniform closed trefoil the fit over 96..384 gave 4.4, the pairs
+// 96/192, 192/384, 384/768 give 4.6, 4.1, 4.0).
+constexpr int kFittedSizes = 2;
+
+// κ of a jet: signed for planar curves, |κ| in space.
+double kappa(const Eigen::MatrixXd& jet) {
+    const Eigen::VectorXd d1 = jet.row(1).transpose(), d2 = jet.row(2).transpose();
+    const double speed = d1.norm();
+    if (d1.size() == 2) return (d1(0) * d2(1) - d1(1) * d2(0)) / (speed * speed * speed);
+    const Eigen::Vector3d a = d1, b = d2;
+    return a.cross(b).norm() / (speed * speed * speed);
+}
+
+double angle_between(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+    const double dot = a.dot(b);
+    double cross = 0.0;
+    if (a.size() == 2)
+        cross = std::abs(a(0) * b(1) - a(1) * b(0));
+    else
+        cross = Eigen::Vector3d(a).cross(Eigen::Vector3d(b)).norm();
+    return std::atan2(cross, dot);
+}
+
+// The truth parameter nearest to q, from the guess t, within [lo, hi].
+double project(const Curve& truth, const Eigen::VectorXd& q, double t, double lo, double hi) {
+    for (int it = 0; it < kProjectionIterations; ++it) {
+        const Eigen::MatrixXd j = truth.jet(t, 2);
+        const Eigen::VectorXd d = j.row(0).transpose() - q, d1 = j.row(1).transpose(), d2 = j.row(2).transpose();
+        const double g = d.dot(d1), dg = d1.dot(d1) + d.dot(d2);
+        if (!(dg > 0)) break;
+        const double next = std::clamp(t - g / dg, lo, hi);
+        if (std::abs(next - t) <= 1e-15 * (hi - lo)) return next;
+        t = next;
+    }
+    return t;
+}
+
+}  // namespace
+
+const std::vector<std::string>& truth_error_names() {
+    static const std::vector<std::string> names{"distance", "tangent_angle", "curvature_max", "curvature_l2", "length"};
+    return names;
+}
+
+double truth_error(const TruthErrors& e, int index) {
+    switch (index) {
+        case 0: return e.distance;
+        case 1: return e.tangent_angle;
+        case 2: return e.curvature_max;
+        case 3: return e.curvature_l2;
+        case 4: return e.length;
+        default: fail_input("compare::truth_error", "measure index " + std::to_string(index) + " outside 0..4");
+    }
+}
+
+TruthErrors truth_errors(const methods::Interpolant& in, const TruthSample& sample, const Curve& truth) {
+    const char* who = "compare::truth_errors";
+    const std::size_t nodes = in.node_parameters.size();
+    if (nodes != sample.params.size()) fail_input(who, "the interpolant has " + std::to_string(nodes) + " nodes, the sample " + std::to_string(sample.params.size()));
+    static const numeric::GaussLegendreRule rule(kNodesPerSpan);
+    const Curve& c = *in.curve;
+    const double L = sample.length;
+    TruthErrors e;
+    double l2 = 0.0, arc = 0.0;
+    for (std::size_t k = 0; k + 1 < nodes; ++k) {
+        const double u0 = in.node_parameters[k], u1 = in.node_parameters[k + 1];
+        const double t0 = sample.params[k], t1 = sample.params[k + 1];
+        for (int q = 0; q < rule.size(); ++q) {
+            const double f = 0.5 * (rule.nodes()[static_cast<std::size_t>(q)] + 1.0), w = 0.5 * rule.weights()[static_cast<std::size_t>(q)];
+            const double u = u0 + f * (u1 - u0);
+            const Eigen::MatrixXd jc = c.jet(u, 2);
+            const Eigen::VectorXd point = jc.row(0).transpose();
+            const double t = project(truth, point, t0 + f * (t1 - t0), sample.t_first, sample.t_last);
+            const Eigen::MatrixXd jt = truth.jet(t, 2);
+            e.distance = std::max(e.distance, (point - jt.row(0).transpose()).norm() / L);
+            e.tangent_angle = std::max(e.tangent_angle, angle_between(jc.row(1).transpose(), jt.row(1).transpose()));
+            const double dk = std::abs(kappa(jc) - kappa(jt)) * L;
+            e.curvature_max = std::max(e.curvature_max, dk);
+            const double ds = w * (u1 - u0) * jc.row(1).norm();
+            l2 += dk * dk * ds;
+            arc += ds;
+        }
+    }
+    e.curvature_l2 = std::sqrt(l2 / arc);
+    e.length = std::abs(analysis::arc_length(c, kLengthPieces) - L) / L;
+    return e;
+}
+
+std::vector<TruthRun> run_truth_benchmark(const TruthBenchmarkOptions& o) {
+    const char* who = "compare::run_truth_benchmark";
+    if (o.sizes.empty()) fail_input(who, "needs at least one size");
+    for (int n : o.sizes)
+        if (n < 3 || n > 100000) fail_input(who, "size " + std::to_string(n) + " outside 3..100000");
+    std::vector<const TruthFamily*> families;
+    for (const std::string& name : o.families) families.push_back(&find_truth_family(name));
+    if (o.families.empty())
+        for (const TruthFamily& f : truth_families()) families.push_back(&f);
+    std::vector<methods::Configuration> configurations;
+    for (const std::string& name : o.methods) configurations.push_back(methods::find_configuration(name));
+    if (o.methods.empty()) configurations = methods::configurations();
+    struct Case {
+        const TruthFamily* family;
+        TruthSpacing spacing;
+        bool closed;
+        int n;
+    };
+    std::vector<Case> cases;
+    for (const TruthFamily* f : families)
+        for (bool closed : {true, false}) {
+            if (closed && !f->closed) continue;
+            for (TruthSpacing s : {TruthSpacing::uniform, TruthSpacing::nonuniform})
+                for (int n : o.sizes) cases.push_back({f, s, closed, n});
+        }
+    const int threads = o.threads > 0 ? o.threads : hardware_threads();
+    // The samples of each case once (t(s) by adaptive quadrature of the truth), shared by the methods.
+    std::vector<TruthSample> samples(cases.size());
+    parallel_for(static_cast<long>(cases.size()), threads, [&](long k) {
+        const Case& c = cases[static_cast<std::size_t>(k)];
+        samples[static_cast<std::size_t>(k)] = truth_samples(*c.family, c.n, c.spacing, c.closed);
+    });
+    std::vector<TruthRun> runs(cases.size() * configurations.size());
+    // The shared tables (the pseudo-spline's) are loaded once, before the workers start.
+    for (const methods::Configuration& m : configurations)
+        for (int d : {2, 3})
+            if (m.method->prepare && m.claims.max_dimension >= d) m.method->prepare(m.values, d);
+    parallel_for(static_cast<long>(runs.size()), threads, [&](long index) {
+        const Case& k = cases[static_cast<std::size_t>(index) / configurations.size()];
+        const TruthSample& sample = samples[static_cast<std::size_t>(index) / configurations.size()];
+        const methods::Configuration& m = configurations[static_cast<std::size_t>(index) % configurations.size()];
+        TruthRun& r = runs[static_cast<std::size_t>(index)];
+        r.family = k.family->name, r.spacing = k.spacing, r.closed = k.closed, r.n = k.n, r.method = m.name;
+        r.note = method_applicability(m.claims, sample.points, k.closed);
+        if (!r.note.empty()) {
+            r.status = "not applicable";
+            return;
+        }
+        methods::InterpolationResult result;
+        try {
+            result = methods::interpolate(m, sample.points, k.closed);
+        } catch (const InvalidInput& e) {
+            r.status = "refused";
+            r.note = e.what();
+            return;
+        }
+        if (!result.outcome.ok() || !result.interpolant) {
+            r.status = "no result";
+            r.note = result.outcome.message;
+            return;
+        }
+        r.errors = truth_errors(*result.interpolant, sample, *k.family->curve);
+        r.status = "ok";
+        for (int m = 0; m < 5; ++m)
+            if (!std::isfinite(truth_error(r.errors, m))) {  // a node of zero speed: κ undefined there
+                r.status = "cusp";
+                r.note = "the curve has a point of zero speed, where its curvature is undefined";
+                r.errors = {};
+            }
+    });
+    return runs;
+}
+
+const std::vector<PredictedOrder>& predicted_orders() {
+    static const std::vector<PredictedOrder> p{
+        {"cubic-b", "distance", true, 4.0,
+         "M. S. Floater, Chordal cubic spline interpolation is fourth order accurate, IMA J. Numer. Anal. 26 (2006) 25-33 (closed: no end conditions)"},
+        {"cubic-b", "distance", false, 2.0,
+         "C. de Boor, A Practical Guide to Splines (1978), ch. IV: natural end conditions force zero curvature at the ends, an O(h^2) error there"},
+    };
+    return p;
+}
+
+std::vector<ConvergenceOrder> convergence_orders(const std::vector<TruthRun>& runs) {
+    // Group the runs of one (family, spacing, closed, method) by size, in the runs' order.
+    using Key = std::tuple<std::string, int, bool, std::string>;
+    std::vector<Key> order_of_keys;
+    std::map<Key, std::vector<const TruthRun*>> groups;
+    for (const TruthRun& r : runs) {
+        const Key k{r.family, static_cast<int>(r.spacing), r.closed, r.method};
+        if (!groups.count(k)) order_of_keys.push_back(k);
+        groups[k].push_back(&r);
+    }
+    std::vector<ConvergenceOrder> out;
+    for (const Key& k : order_of_keys) {
+        const std::vector<const TruthRun*>& g = groups[k];
+        if (std::any_of(g.begin(), g.end(), [](const TruthRun* r) { return r->status != "ok"; })) continue;
+        for (int measure = 0; measure < static_cast<int>(truth_error_names().size()); ++measure) {
+            ConvergenceOrder c;
+            c.family = std::get<0>(k), c.spacing = static_cast<TruthSpacing>(std::get<1>(k)), c.closed = std::get<2>(k), c.method = std::get<3>(k);
+            c.measure = truth_error_names()[static_cast<std::size_t>(measure)];
+            // The largest kFittedSizes sizes above the exact level, in decreasing n.
+            std::vector<const TruthRun*> by_size(g.begin(), g.end());
+            std::stable_sort(by_size.begin(), by_size.end(), [](const TruthRun* a, const TruthRun* b) { return a->n > b->n; });
+            double sx = 0, sy = 0, sxx = 0, sxy = 0;
+            int count = 0, above = 0;
+            for (const TruthRun* r : by_size) {
+                const double e = truth_error(r->errors, measure);
+                if (e <= truth_exact_level(r->n)) continue;
+                ++above;
+                if (count == kFittedSizes) continue;
+                const double x = std::log(static_cast<double>(r->n)), y = std::log(e);
+                sx += x, sy += y, sxx += x * x, sxy += x * y, ++count;
+            }
+            c.sizes_fitted = count;
+            c.exact = above == 0;
+            if (count == kFittedSizes) c.order = -(count * sxy - sx * sy) / (count * sxx - sx * sx);
+            for (const PredictedOrder& p : predicted_orders())
+                if (p.method == c.method && p.measure == c.measure && p.closed == c.closed) c.predicted = p.order, c.source = p.source;
+            out.push_back(c);
+        }
+    }
+    return out;
+}
+
+std::vector<std::string> truth_runs_header() {
+    std::vector<std::string> h{"family", "spacing", "closed", "n", "method", "status"};
+    for (const std::string& m : truth_error_names()) h.push_back(m);
+    h.push_back("note");
+    return h;
+}
+
+std::vector<std::vector<std::string>> truth_runs_rows(const std::vector<TruthRun>& runs, int digits) {
+    std::vector<std::vector<std::string>> rows;
+    for (const TruthRun& r : runs) {
+        std::vector<std::string> row{r.family, to_string(r.spacing), r.closed ? "1" : "0", std::to_string(r.n), r.method, r.status};
+        for (int m = 0; m < 5; ++m) row.push_back(r.status == "ok" ? format_number(truth_error(r.errors, m), digits) : "");
+        std::string note = r.note;
+        std::replace(note.begin(), note.end(), '\n', ' ');
+        row.push_back(note);
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+std::vector<std::string> convergence_orders_header() {
+    return {"family", "spacing", "closed", "method", "measure", "order", "exact", "sizes_fitted", "predicted", "verdict", "source"};
+}
+
+namespace {
+
+std::string verdict(const ConvergenceOrder& c) {
+    if (!c.predicted) return "measured";
+    if (c.exact) return "holds (exact)";
+    if (!c.order) return "not measurable";
+    return std::abs(*c.order - *c.predicted) <= kPredictedOrderTolerance ? "holds" : "fails";
+}
+
+std::string order_text(const ConvergenceOrder& c) {
+    if (c.exact) return "exact";
+    if (!c.order) return "-";
+    std::ostringstream s;
+    s.setf(std::ios::fixed);
+    s.precision(2);
+    s << *c.order;
+    return s.str();
+}
+
+}  // namespace
+
+std::vector<std::vector<std::string>> convergence_orders_rows(const std::vector<ConvergenceOrder>& orders) {
+    std::vector<std::vector<std::string>> rows;
+    for (const ConvergenceOrder& c : orders)
+        rows.push_back({c.family, to_string(c.spacing), c.closed ? "1" : "0", c.method, c.measure, c.order ? format_number(*c.order, 4) : "", c.exact ? "1" : "0",
+                        std::to_string(c.sizes_fitted), c.predicted ? format_number(*c.predicted, 3) : "", verdict(c), c.source});
+    return rows;
+}
+
+std::string truth_leaderboard_markdown(const std::vector<TruthRun>& runs, const std::vector<ConvergenceOrder>& orders) {
+    std::ostringstream md;
+    const auto number = [](double v) { return format_number(v, 3); };
+    const auto find_order = [&](const TruthRun& r, const std::string& measure) -> const ConvergenceOrder* {
+        for (const ConvergenceOrder& c : orders)
+            if (c.family == r.family && c.spacing == r.spacing && c.closed == r.closed && c.method == r.method && c.measure == measure) return &c;
+        return nullptr;
+    };
+    for (const TruthFamily& f : truth_families()) {
+        int largest = 0;
+        for (const TruthRun& r : runs)
+            if (r.family == f.name) largest = std::max(largest, r.n);
+        if (largest == 0) continue;
+        std::vector<const TruthRun*> rows;
+        for (const TruthRun& r : runs)
+            if (r.family == f.name && r.n == largest && r.spacing == TruthSpacing::uniform && r.closed == f.closed) rows.push_back(&r);
+        std::stable_sort(rows.begin(), rows.end(), [](const TruthRun* a, const TruthRun* b) {
+            if ((a->status == "ok") != (b->status == "ok")) return a->status == "ok";
+            return a->status == "ok" && a->errors.distance < b->errors.distance;
+        });
+        md << "\n#### " << f.name << ": " << f.description << "\n\n"
+           << largest << " points uniform in arc length" << (f.closed ? ", closed" : "") << "; errors dimensionless (see the notes above); order = observed order of the distance over n = ";
+        std::vector<int> sizes;
+        for (const TruthRun& r : runs)
+            if (r.family == f.name && std::find(sizes.begin(), sizes.end(), r.n) == sizes.end()) sizes.push_back(r.n);
+        for (std::size_t i = 0; i < sizes.size(); ++i) md << (i ? ", " : "") << sizes[i];
+        md << ".\n\n| rank | method | distance | order | tangent angle | curvature max | curvature L2 | length |\n|---:|---|---:|---:|---:|---:|---:|---:|\n";
+        int rank = 0;
+        for (const TruthRun* r : rows) {
+            if (r->status != "ok") {
+                md << "| — | `" << r->method << "` | " << r->status << " | | | | | |\n";
+                continue;
+            }
+            const ConvergenceOrder* o = find_order(*r, "distance");
+            md << "| " << ++rank << " | `" << r->method << "` | " << number(r->errors.distance) << " | " << (o ? order_text(*o) : "-") << " | " << number(r->errors.tangent_angle)
+               << " | " << number(r->errors.curvature_max) << " | " << number(r->errors.curvature_l2) << " | " << number(r->errors.length) << " |\n";
+        }
+    }
+    // Exact reproduction: every size at rounding level, in both spacings.
+    md << "\n#### Exact reproduction\n\nA method reproduces a curve when its distance is at most " << format_number(kTruthExactLevelPerPoint, 2) << " × n"
+       << " at every size and spacing (closed where the curve is closed):\n\n| family | methods |\n|---|---|\n";
+    for (const char* name : {"line", "circle", "clothoid"}) {
+        std::vector<std::string> exact;
+        std::map<std::string, bool> all;
+        for (const ConvergenceOrder& c : orders)
+            if (c.family == name && c.measure == "distance" && c.closed == find_truth_family(name).closed) {
+                if (!all.count(c.method)) all[c.method] = true, exact.push_back(c.method);
+                all[c.method] = all[c.method] && c.exact;
+            }
+        std::string list;
+        for (const std::string& m : exact)
+            if (all[m]) list += (list.empty() ? "`" : ", `") + m + "`";
+        md << "| " << name << " | " << (list.empty() ? "none" : list) << " |\n";
+    }
+    md << "\n#### Predicted orders\n\nWhere a theorem predicts the order of convergence, the observed order must be within " << kPredictedOrderTolerance
+       << " of it:\n\n| method | family | spacing | closed | measure | predicted | observed | verdict | source |\n|---|---|---|---|---|---:|---:|---|---|\n";
+    for (const ConvergenceOrder& c : orders)
+        if (c.predicted)
+            md << "| `" << c.method << "` | " << c.family << " | " << to_string(c.spacing) << " | " << (c.closed ? "yes" : "no") << " | " << c.measure << " | "
+               << format_number(*c.predicted, 3) << " | " << order_text(c) << " | " << verdict(c) << " | " << c.source << " |\n";
+    return md.str();
+}
+
+}  // namespace cagd::compare

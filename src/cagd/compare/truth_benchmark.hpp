@@ -1,0 +1,120 @@
+#pragma once
+/// @file
+/// The interpolant benchmark on data with a truth (`cagd benchmark`): points sampled from the
+/// curves of truth_curves.hpp, every configuration of the registry interpolating them, and each
+/// curve measured against the curve the points came from.
+///
+/// Errors of one interpolant (truth_errors), on 16 Gauss–Legendre nodes in the interpolant's own
+/// parameter on every span (8 left the curvature's L2 3 % low on 9 points of the ellipse); each node q = c(u) is projected onto the truth, T(t*) nearest to q
+/// (Newton on (T(t) − q)·T'(t) = 0 from the truth parameter at the same fraction of the span,
+/// clamped to the sampled stretch):
+///   distance       max |q − T(t*)| over the nodes (a sample of the maximum: the tests find it
+///                  within 5 % of 65 equally spaced samples per span), ÷ the truth's length L
+///   tangent angle  max angle between c'(u) and T'(t*) (radians)
+///   curvature      max |κ_c(u) − κ_T(t*)| × L, and the L2 form (∫ (κ_c − κ_T)² ds / L)^(1/2) × L
+///                  over the interpolant's arc length (planar: signed κ; space: |κ|)
+///   length         |L_c − L| / L (adaptive Gauss–Kronrod lengths, analysis/)
+/// Each is dimensionless, so families and sizes compare.
+///
+/// Observed order (convergence_orders): p = −log(e_2/e_1)/log(n_2/n_1) from the two largest sizes
+/// whose error is above truth_exact_level(n) (smaller sizes are before the asymptotic regime: the
+/// slope fitted over 6..96 mixes regimes); "exact" when no size is above it, none when only one is. An order is a claim where a theorem predicts it (predicted_orders: the source
+/// is named) and otherwise a measurement.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cagd/compare/truth_curves.hpp"
+#include "cagd/methods/method_registry.hpp"
+
+namespace cagd::compare {
+
+/// Errors at or below truth_exact_level(n) are rounding: the curve reproduces the truth. The
+/// level grows with n: the iterative methods stop at 1e−12 of the largest chord per equation, and
+/// their positions drift by about that per span along the curve (the clothoid spline on a circle of
+/// 768 non-uniform points: 3.7e−11 of its length; 1e−16 at 6 points).
+inline constexpr double kTruthExactLevelPerPoint = 1e-13;
+/// kTruthExactLevelPerPoint × n.
+inline double truth_exact_level(int n) { return kTruthExactLevelPerPoint * n; }
+
+/// The errors of one interpolant against its truth (see above).
+struct TruthErrors {
+    double distance = 0.0;       ///< max distance to the truth ÷ L
+    double tangent_angle = 0.0;  ///< max tangent angle error (rad)
+    double curvature_max = 0.0;  ///< max |Δκ| × L
+    double curvature_l2 = 0.0;   ///< L2 |Δκ| × L
+    double length = 0.0;         ///< |ΔL| / L
+};
+/// The measure names, in the order of TruthErrors: distance, tangent_angle, curvature_max, curvature_l2, length.
+const std::vector<std::string>& truth_error_names();
+/// The value of measure `index` (0..4).
+double truth_error(const TruthErrors& e, int index);
+/// The errors of `interpolant` (through `sample`'s points) against `truth` (see above).
+TruthErrors truth_errors(const methods::Interpolant& interpolant, const TruthSample& sample, const Curve& truth);
+
+/// One interpolation of the benchmark.
+struct TruthRun {
+    std::string family;       ///< truth family
+    TruthSpacing spacing = TruthSpacing::uniform;  ///< where the points are
+    bool closed = false;      ///< closed points
+    int n = 0;                ///< number of points
+    std::string method;       ///< configuration name
+    std::string status;       ///< "ok", "not applicable", "refused", "no result", "cusp"
+    std::string note;         ///< why not ok
+    TruthErrors errors;       ///< when ok
+};
+
+/// What run_truth_benchmark runs.
+struct TruthBenchmarkOptions {
+    std::vector<int> sizes{6, 12, 24, 48, 96, 192, 384, 768};  ///< numbers of points (each ≥ 3)
+    std::vector<std::string> families;         ///< empty: every family
+    std::vector<std::string> methods;          ///< configuration or method names; empty: every configuration
+    int threads = 0;                           ///< cases measured at once (0: the hardware's); results do not depend on it
+};
+/// Every family (closed families also as open arcs) × spacing × size × configuration, in that order.
+std::vector<TruthRun> run_truth_benchmark(const TruthBenchmarkOptions& options);
+
+/// A predicted order of convergence, with its source.
+struct PredictedOrder {
+    std::string method;   ///< configuration
+    std::string measure;  ///< one of truth_error_names()
+    bool closed;          ///< for closed curves (else open arcs)
+    double order;         ///< p
+    std::string source;   ///< the theorem
+};
+/// The orders the literature predicts for configurations of the registry.
+const std::vector<PredictedOrder>& predicted_orders();
+
+/// The observed order of one measure of one configuration on one family, spacing and closedness.
+struct ConvergenceOrder {
+    std::string family;   ///< truth family
+    TruthSpacing spacing = TruthSpacing::uniform;  ///< where the points are
+    bool closed = false;  ///< closed points
+    std::string method;   ///< configuration
+    std::string measure;  ///< one of truth_error_names()
+    std::optional<double> order;  ///< p, from the two largest sizes above truth_exact_level(n)
+    bool exact = false;           ///< every size at or below truth_exact_level(n)
+    int sizes_fitted = 0;         ///< sizes in the fit
+    std::optional<double> predicted;  ///< the predicted order, when there is one
+    std::string source;           ///< its source
+};
+/// Observed orders of every measure, from the runs (ok runs only; a case with a failed size has none).
+std::vector<ConvergenceOrder> convergence_orders(const std::vector<TruthRun>& runs);
+/// A predicted order holds when the observed one is within this of it.
+inline constexpr double kPredictedOrderTolerance = 0.35;
+
+/// truth_runs.csv's columns: family, spacing, closed, n, method, status, the five errors, note.
+std::vector<std::string> truth_runs_header();
+/// One row per run, the errors to `digits` significant digits (empty unless ok).
+std::vector<std::vector<std::string>> truth_runs_rows(const std::vector<TruthRun>& runs, int digits = 6);
+/// convergence_orders.csv's columns: family, spacing, closed, method, measure, order, exact,
+/// sizes_fitted, predicted, verdict (measured, holds, holds (exact), fails, not measurable), source.
+std::vector<std::string> convergence_orders_header();
+/// One row per order.
+std::vector<std::vector<std::string>> convergence_orders_rows(const std::vector<ConvergenceOrder>& orders);
+/// The Markdown leaderboards: per family, every configuration's errors at the largest size
+/// (uniform spacing; closed where the family is closed), with the distance order, ranked by the
+/// distance; then the exact reproductions and the predicted orders with their verdicts.
+std::string truth_leaderboard_markdown(const std::vector<TruthRun>& runs, const std::vector<ConvergenceOrder>& orders);
+
+}  // namespace cagd::compare

@@ -1,0 +1,112 @@
+// `cagd benchmark --out DIR [--sizes 6,12,24,48,96] [--families F,…] [--methods M,…] [--threads N]`:
+// the interpolant benchmark on data with a truth (compare/truth_benchmark.hpp). DIR receives, as a
+// whole or not at all:
+//   truth_runs.csv          one row per family × closedness × spacing × size × configuration
+//   convergence_orders.csv  the observed order of every measure, with the predicted ones
+//   leaderboard.md          per family the ranking at the largest size, exact reproductions, predictions
+//   convergence_<family>.dat  the distance against n per configuration (uniform spacing; closed where
+//                           the family is), one gnuplot index block per configuration, its first
+//                           line naming it (scripts/plot/benchmark_fig_convergence.gp draws them)
+// Deterministic: no timing. Progress on stderr when it is a terminal.
+#include <algorithm>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "cagd/compare/truth_benchmark.hpp"
+#include "cagd/core/csv.hpp"
+#include "cagd/core/errors.hpp"
+#include "cli/commands.hpp"
+#include "cli/output.hpp"
+
+namespace cagd::cli {
+
+namespace {
+
+// Distances at rounding level are drawn at this floor (the plot is log-scaled; 0 is "exact").
+constexpr double kDrawnFloor = 1e-17;
+
+struct BenchmarkArgs {
+    std::string out, sizes = "6,12,24,48,96,192,384,768", families, methods;
+    int threads = 0;
+};
+
+std::vector<std::string> split(const std::string& text) {
+    std::vector<std::string> out;
+    std::stringstream ss(text);
+    std::string item;
+    while (std::getline(ss, item, ',')) out.push_back(item);
+    return out;
+}
+
+int run_benchmark(const BenchmarkArgs& a) {
+    const char* who = "cagd benchmark";
+    compare::TruthBenchmarkOptions options;
+    options.sizes.clear();
+    for (const std::string& s : split(a.sizes)) {
+        std::size_t used = 0;
+        int n = 0;
+        try {
+            n = std::stoi(s, &used);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (used != s.size() || n < 3 || n > 100000) fail_input(who, "--sizes: \"" + s + "\" is not a whole number of points in 3..100000");
+        options.sizes.push_back(n);
+    }
+    options.families = split(a.families);
+    for (const std::string& f : options.families) compare::find_truth_family(f);  // bad names before any work
+    for (const std::string& m : split(a.methods)) options.methods.push_back(methods::find_configuration(m).name);
+    options.threads = a.threads;
+    OutputDirectory out(a.out);  // checked before the work
+    if (progress_enabled()) std::cerr << "cagd benchmark: " << options.sizes.size() << " sizes\n";
+    const std::vector<compare::TruthRun> runs = compare::run_truth_benchmark(options);
+    const std::vector<compare::ConvergenceOrder> orders = compare::convergence_orders(runs);
+    {
+        CsvOutput w(out.staged("truth_runs.csv"), compare::truth_runs_header());
+        for (const auto& row : compare::truth_runs_rows(runs)) w.row_text(row);
+        w.commit();
+    }
+    {
+        CsvOutput w(out.staged("convergence_orders.csv"), compare::convergence_orders_header());
+        for (const auto& row : compare::convergence_orders_rows(orders)) w.row_text(row);
+        w.commit();
+    }
+    {
+        OutputFile f(out.staged("leaderboard.md"));
+        f.stream() << compare::truth_leaderboard_markdown(runs, orders);
+        f.commit();
+    }
+    for (const compare::TruthFamily& family : compare::truth_families()) {
+        // The configurations in the runs' order, each a block of its sizes.
+        std::vector<std::string> order;
+        for (const compare::TruthRun& r : runs)
+            if (r.family == family.name && std::find(order.begin(), order.end(), r.method) == order.end()) order.push_back(r.method);
+        if (order.empty()) continue;
+        OutputFile f(out.staged("convergence_" + family.name + ".dat"));
+        for (std::size_t m = 0; m < order.size(); ++m) {
+            f.stream() << (m ? "\n\n" : "") << "n \"" << order[m] << "\" distance\n";
+            for (const compare::TruthRun& r : runs)
+                if (r.family == family.name && r.method == order[m] && r.spacing == compare::TruthSpacing::uniform && r.closed == family.closed && r.status == "ok")
+                    f.stream() << r.n << " " << r.n << " " << format_number(std::max(r.errors.distance, kDrawnFloor), 6) << "\n";
+        }
+        f.commit();
+    }
+    out.commit();
+    return 0;
+}
+
+}  // namespace
+
+Command add_benchmark_command(CLI::App& app) {
+    auto a = std::make_shared<BenchmarkArgs>();
+    auto* c = app.add_subcommand("benchmark", "Every method on points sampled from curves with a known answer: errors, convergence orders, leaderboards");
+    c->add_option("--out", a->out, "directory for truth_runs.csv, convergence_orders.csv, leaderboard.md, convergence_<family>.dat")->required();
+    c->add_option("--sizes", a->sizes, "numbers of points, comma-separated (each 3..100000)")->capture_default_str();
+    c->add_option("--families", a->families, "truth families, comma-separated (absent: all: line, circle, ellipse, epitrochoid, clothoid, log-aesthetic, helix, trefoil)");
+    c->add_option("--methods", a->methods, "configurations, comma-separated (absent: every configuration)");
+    c->add_option("--threads", a->threads, "cases measured at once (0: the hardware's; results do not depend on it)")->check(CLI::Range(0, 256));
+    return {c, [a] { return run_benchmark(*a); }};
+}
+
+}  // namespace cagd::cli

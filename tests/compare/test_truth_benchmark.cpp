@@ -1,0 +1,201 @@
+// The interpolant benchmark (compare/truth_curves.hpp, compare/truth_benchmark.hpp): the truths
+// themselves, the samples, the errors against a second computation, the orders.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "cagd/analysis/curve_measures.hpp"
+#include "cagd/compare/truth_benchmark.hpp"
+#include "cagd/core/errors.hpp"
+
+using namespace cagd;
+using namespace cagd::compare;
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// The errors of `method` on `family` with n points, and the interpolant and sample behind them.
+struct Measured {
+    methods::InterpolationResult result;
+    TruthSample sample;
+    TruthErrors errors;
+};
+Measured measure(const std::string& method, const std::string& family, int n, TruthSpacing spacing, bool closed) {
+    const TruthFamily& f = find_truth_family(family);
+    Measured m{{}, truth_samples(f, n, spacing, closed), {}};
+    m.result = methods::interpolate(methods::find_configuration(method), m.sample.points, closed);
+    EXPECT_TRUE(m.result.outcome.ok()) << method << ": " << m.result.outcome.message;
+    if (m.result.outcome.ok()) m.errors = truth_errors(*m.result.interpolant, m.sample, *f.curve);
+    return m;
+}
+
+// The truth parameter nearest to q by a dense scan and golden-section refinement: independent of
+// the Newton projection of truth_errors.
+double brute_force_parameter(const Curve& truth, const Eigen::VectorXd& q, double lo, double hi) {
+    constexpr int kScan = 500;
+    double best_t = lo, best = 1e300;
+    for (int i = 0; i <= kScan; ++i) {
+        const double t = lo + (hi - lo) * i / kScan, d = (truth.jet(t, 0).row(0).transpose() - q).norm();
+        if (d < best) best = d, best_t = t;
+    }
+    double a = std::max(lo, best_t - (hi - lo) / kScan), b = std::min(hi, best_t + (hi - lo) / kScan);
+    const double g = (std::sqrt(5.0) - 1) / 2;
+    for (int it = 0; it < 80; ++it) {
+        const double c = b - g * (b - a), d = a + g * (b - a);
+        if ((truth.jet(c, 0).row(0).transpose() - q).norm() < (truth.jet(d, 0).row(0).transpose() - q).norm())
+            b = d;
+        else
+            a = c;
+    }
+    return 0.5 * (a + b);
+}
+
+}  // namespace
+
+TEST(TruthCurves, JetsAreTheDerivativesOfThePosition) {
+    for (const TruthFamily& f : truth_families()) {
+        const Curve& c = *f.curve;
+        const double h = 1e-5 * (c.t_max() - c.t_min());
+        for (double frac : {0.13, 0.5, 0.87}) {
+            const double t = c.t_min() + frac * (c.t_max() - c.t_min());
+            const Eigen::MatrixXd j = c.jet(t, 3), plus = c.jet(t + h, 3), minus = c.jet(t - h, 3);
+            for (int k = 1; k <= 3; ++k) {
+                const Eigen::RowVectorXd fd = (plus.row(k - 1) - minus.row(k - 1)) / (2 * h);
+                EXPECT_LE((fd - j.row(k)).norm(), 1e-6 * (1 + j.row(k).norm())) << f.name << ": r^(" << k << ") at t = " << t;
+            }
+        }
+    }
+}
+
+TEST(TruthCurves, LengthsAreTheClosedForms) {
+    const auto length = [](const std::string& name) { return analysis::accurate_arc_length(*find_truth_family(name).curve).value; };
+    EXPECT_NEAR(length("line"), std::sqrt(20.0), 1e-13);
+    EXPECT_NEAR(length("circle"), 2 * kPi, 1e-13);
+    EXPECT_NEAR(length("helix"), 3 * kPi * std::sqrt(1 + 1.0 / 16), 1e-12);
+    EXPECT_NEAR(length("clothoid"), 2.5, 1e-13);
+    EXPECT_NEAR(length("log-aesthetic"), 4.0, 1e-12);
+    // The clothoid's curvature is s; the log-aesthetic curve's (1 + s)^(−1/2).
+    for (double s : {0.3, 1.7}) {
+        EXPECT_NEAR(analysis::signed_curvature(*find_truth_family("clothoid").curve, s), s, 1e-12);
+        EXPECT_NEAR(analysis::signed_curvature(*find_truth_family("log-aesthetic").curve, s), 1 / std::sqrt(1 + s), 1e-12);
+    }
+    EXPECT_THROW(find_truth_family("square"), InvalidInput);
+}
+
+TEST(TruthCurves, SamplesAreOnTheCurveAtTheirArcLengths) {
+    for (TruthSpacing spacing : {TruthSpacing::uniform, TruthSpacing::nonuniform})
+        for (bool closed : {true, false}) {
+            const TruthFamily& f = find_truth_family("ellipse");
+            const TruthSample s = truth_samples(f, 10, spacing, closed);
+            ASSERT_EQ(s.points.rows(), 10);
+            ASSERT_EQ(s.params.size(), closed ? 11u : 10u);
+            const int N = closed ? 10 : 9;
+            for (int i = 0; i < 10; ++i) {
+                EXPECT_LE((f.curve->jet(s.params[static_cast<std::size_t>(i)], 0).row(0) - s.points.row(i)).norm(), 1e-15);
+                const double u = static_cast<double>(i) / N, g = spacing == TruthSpacing::uniform ? u : u - 0.6 * std::sin(2 * kPi * u) / (2 * kPi);
+                EXPECT_NEAR(analysis::arc_length(*f.curve, f.curve->t_min(), s.params[static_cast<std::size_t>(i)], 16), g * s.length, 1e-10) << i;
+            }
+            EXPECT_NEAR(s.length, closed ? analysis::accurate_arc_length(*f.curve).value : analysis::arc_length(*f.curve, 0.0, 1.5 * kPi, 16), 1e-10);
+        }
+    EXPECT_THROW(truth_samples(find_truth_family("clothoid"), 10, TruthSpacing::uniform, true), InvalidInput);
+    EXPECT_THROW(truth_samples(find_truth_family("circle"), 2, TruthSpacing::uniform, true), InvalidInput);
+}
+
+// The errors against a second computation: the distance at 64 samples per span, each projected by
+// a dense scan; the length by adaptive Gauss–Kronrod; the curvature's L2 by the trapezoid rule on
+// those samples.
+TEST(TruthBenchmark, ErrorsAgreeWithASecondComputation) {
+    for (const char* method : {"cubic-b", "hermite-a", "curvature-profile", "boost-catmull-rom"})
+        for (const char* family : {"ellipse", "clothoid"}) {
+            const bool closed = find_truth_family(family).closed && std::string(method) != "boost-catmull-rom";
+            const Measured m = measure(method, family, 9, TruthSpacing::nonuniform, closed);
+            ASSERT_TRUE(m.result.outcome.ok());
+            const Curve& c = *m.result.interpolant->curve;
+            const std::vector<double>& u = m.result.interpolant->node_parameters;
+            const Curve& truth = *find_truth_family(family).curve;
+            double dense = 0.0, l2 = 0.0, arc = 0.0;
+            for (std::size_t k = 0; k + 1 < u.size(); ++k) {
+                double previous_f = 0.0, previous_speed = 0.0;
+                for (int i = 0; i <= 64; ++i) {
+                    const double t = u[k] + (u[k + 1] - u[k]) * i / 64;
+                    const Eigen::VectorXd q = c.jet(t, 0).row(0).transpose();
+                    const double tt = brute_force_parameter(truth, q, m.sample.t_first, m.sample.t_last);
+                    dense = std::max(dense, (truth.jet(tt, 0).row(0).transpose() - q).norm() / m.sample.length);
+                    const double dk = (analysis::signed_curvature(c, t) - analysis::signed_curvature(truth, tt)) * m.sample.length;
+                    const double f = dk * dk, speed = c.jet(t, 1).row(1).norm(), h = (u[k + 1] - u[k]) / 64;
+                    if (i > 0) l2 += 0.5 * h * (f * speed + previous_f * previous_speed), arc += 0.5 * h * (speed + previous_speed);
+                    previous_f = f, previous_speed = speed;
+                }
+            }
+            // Both are maxima over samples: 16 Gauss nodes per span and 65 equally spaced points agree
+            // to within 5 %.
+            EXPECT_NEAR(m.errors.distance, dense, 0.05 * dense) << method << " on " << family;
+            EXPECT_NEAR(m.errors.length, std::abs(analysis::accurate_arc_length(c).value - m.sample.length) / m.sample.length, 1e-12) << method << " on " << family;
+            // The curvature's L2 by Gauss nodes and by the trapezoid rule on 64 samples per span.
+            EXPECT_NEAR(m.errors.curvature_l2, std::sqrt(l2 / arc), 0.02 * m.errors.curvature_l2) << method << " on " << family;
+        }
+}
+
+TEST(TruthBenchmark, KnownReproductionsAndOrders) {
+    // Every method reproduces a line; the clothoid spline and Spiro a closed circle.
+    for (const char* method : {"cubic-a", "hermite-b", "curvature-profile", "spiro", "eigen-spline-3"})
+        EXPECT_LE(measure(method, "line", 12, TruthSpacing::uniform, false).errors.distance, truth_exact_level(12)) << method;
+    for (const char* method : {"curvature-profile", "spiro"}) {
+        const TruthErrors e = measure(method, "circle", 7, TruthSpacing::nonuniform, true).errors;
+        EXPECT_LE(e.distance, truth_exact_level(7)) << method;
+        EXPECT_LE(e.curvature_max, 1e-9) << method;
+    }
+    // Floater (2006): the closed chordal cubic converges with order 4; here from 96 to 192 points.
+    const double e96 = measure("cubic-b", "ellipse", 96, TruthSpacing::uniform, true).errors.distance;
+    const double e192 = measure("cubic-b", "ellipse", 192, TruthSpacing::uniform, true).errors.distance;
+    EXPECT_NEAR(std::log2(e96 / e192), 4.0, 0.2);
+}
+
+TEST(TruthBenchmark, OrdersFromTheTwoLargestSizes) {
+    std::vector<TruthRun> runs;
+    for (int n : {6, 12, 24, 48}) {
+        TruthRun r;
+        r.family = "circle", r.closed = true, r.n = n, r.method = "cubic-b", r.status = "ok";
+        // Pre-asymptotic at n = 6 (a bump), then exactly n^-4; the length at rounding level.
+        r.errors.distance = (n == 6 ? 10.0 : 1.0) * std::pow(n, -4.0);
+        r.errors.tangent_angle = r.errors.curvature_max = r.errors.curvature_l2 = 3.0 * std::pow(n, -2.0);
+        r.errors.length = 1e-15;
+        runs.push_back(r);
+    }
+    const std::vector<ConvergenceOrder> orders = convergence_orders(runs);
+    ASSERT_EQ(orders.size(), 5u);
+    EXPECT_EQ(orders[0].measure, "distance");
+    ASSERT_TRUE(orders[0].order.has_value());
+    EXPECT_NEAR(*orders[0].order, 4.0, 1e-12);
+    EXPECT_EQ(orders[0].sizes_fitted, 2);
+    ASSERT_TRUE(orders[0].predicted.has_value());  // Floater's closed chordal cubic
+    EXPECT_EQ(*orders[0].predicted, 4.0);
+    EXPECT_NEAR(*orders[1].order, 2.0, 1e-12);
+    EXPECT_TRUE(orders[4].exact);
+    EXPECT_FALSE(orders[4].order.has_value());
+    // A failed size leaves the case without orders.
+    runs[2].status = "no result";
+    EXPECT_TRUE(convergence_orders(runs).empty());
+}
+
+TEST(TruthBenchmark, ResultsDoNotDependOnTheThreadCount) {
+    TruthBenchmarkOptions one, two;
+    one.sizes = two.sizes = {6, 12};
+    one.families = two.families = {"circle", "helix"};
+    one.methods = two.methods = {"cubic-b", "spiro", "boost-pchip"};
+    one.threads = 1, two.threads = 2;
+    const std::vector<TruthRun> a = run_truth_benchmark(one), b = run_truth_benchmark(two);
+    EXPECT_EQ(truth_runs_rows(a, 17), truth_runs_rows(b, 17));
+    // circle closed + open, helix open; two spacings, two sizes, three configurations.
+    EXPECT_EQ(a.size(), 3u * 2 * 2 * 3);
+    // Spiro is planar: not applicable to the helix; pchip is open only.
+    for (const TruthRun& r : a) {
+        if (r.family == "helix" && r.method == "spiro") EXPECT_EQ(r.status, "not applicable");
+        if (r.closed && r.method == "boost-pchip") EXPECT_EQ(r.status, "not applicable");
+    }
+    TruthBenchmarkOptions bad;
+    bad.sizes = {2};
+    EXPECT_THROW(run_truth_benchmark(bad), InvalidInput);
+}
