@@ -199,3 +199,41 @@ TEST(TruthBenchmark, ResultsDoNotDependOnTheThreadCount) {
     bad.sizes = {2};
     EXPECT_THROW(run_truth_benchmark(bad), InvalidInput);
 }
+
+// The shape measures: closed forms on the truths, a second quadrature on an interpolant, and the
+// G2 defect of a G1 curve.
+TEST(TruthBenchmark, ShapeMeasures) {
+    const auto of = [](const std::string& name, bool closed, int n) {
+        const TruthFamily& f = find_truth_family(name);
+        return shape_measures(*f.curve, truth_samples(f, n, TruthSpacing::uniform, closed).params, closed);
+    };
+    const ShapeMeasures circle = of("circle", true, 12);
+    EXPECT_NEAR(circle.bending, 4 * kPi * kPi, 1e-12);
+    EXPECT_NEAR(circle.variation, 0.0, 1e-12);
+    EXPECT_NEAR(circle.max_curvature, 2 * kPi, 1e-12);
+    EXPECT_EQ(circle.curvature_extrema, 0);
+    EXPECT_NEAR(circle.g2_defect, 0.0, 1e-12);
+    const ShapeMeasures clothoid = of("clothoid", false, 12);  // κ = s on [0, 2.5]
+    EXPECT_NEAR(clothoid.bending, 2.5 * std::pow(2.5, 3) / 3, 1e-11);
+    EXPECT_NEAR(clothoid.variation, std::pow(2.5, 4), 1e-11);
+    EXPECT_NEAR(clothoid.max_curvature, 2.5 * 2.5, 0.02);  // the largest κ among the nodes, near s = 2.5
+    EXPECT_EQ(clothoid.curvature_extrema, 0);
+    const ShapeMeasures lac = of("log-aesthetic", false, 12);  // κ = (1 + s)^(−1/2) on [0, 4]
+    EXPECT_NEAR(lac.bending, 4 * std::log(5.0), 1e-10);
+    EXPECT_NEAR(lac.variation, 64 * 0.125 * (1 - 1.0 / 25), 1e-10);
+    EXPECT_EQ(of("ellipse", true, 12).curvature_extrema, 4);  // two maxima, two minima of κ
+    // On interpolants: the bending energy by the library's own quadrature; C2 against G1 joins.
+    for (const char* method : {"cubic-b", "hermite-a"}) {
+        const TruthSample s = truth_samples(find_truth_family("ellipse"), 10, TruthSpacing::nonuniform, true);
+        const methods::InterpolationResult r = methods::interpolate(methods::find_configuration(method), s.points, true);
+        ASSERT_TRUE(r.outcome.ok());
+        const Curve& c = *r.interpolant->curve;
+        const ShapeMeasures m = shape_measures(c, r.interpolant->node_parameters, true);
+        const double L = analysis::accurate_arc_length(c).value;
+        EXPECT_NEAR(m.bending, L * analysis::bending_energy(c, 16), 1e-8 * m.bending) << method;
+        if (std::string(method) == "cubic-b")
+            EXPECT_LE(m.g2_defect, 1e-9);
+        else
+            EXPECT_GT(m.g2_defect, 1e-3);  // Hermite curve A is G1: κ jumps at the points
+    }
+}

@@ -18,6 +18,8 @@ namespace cagd::compare {
 namespace {
 
 constexpr int kNodesPerSpan = 16;
+// The leaderboard's shape table is for this many points.
+constexpr int kShapeTableSize = 24;
 // The interpolant's length: 20-point Gauss–Legendre on this many sub-pieces of every piece (the
 // tests hold it to adaptive Gauss–Kronrod; the adaptive rule itself took 6 s on one 768-point
 // degree-5 spline).
@@ -62,7 +64,70 @@ double project(const Curve& truth, const Eigen::VectorXd& q, double t, double lo
     return t;
 }
 
+// κ and dκ/ds from a jet of order 3 (planar: signed; space: |κ|).
+std::pair<double, double> kappa_and_rate(const Eigen::MatrixXd& j) {
+    const Eigen::VectorXd d1 = j.row(1).transpose(), d2 = j.row(2).transpose(), d3 = j.row(3).transpose();
+    const double v = d1.norm(), v2 = v * v, v3 = v2 * v, along = d1.dot(d2);
+    double k = 0.0, ku = 0.0;
+    if (d1.size() == 2) {
+        k = (d1(0) * d2(1) - d1(1) * d2(0)) / v3;
+        ku = (d1(0) * d3(1) - d1(1) * d3(0)) / v3 - 3.0 * k * along / v2;
+    } else {
+        const Eigen::Vector3d w = Eigen::Vector3d(d1).cross(Eigen::Vector3d(d2)), wu = Eigen::Vector3d(d1).cross(Eigen::Vector3d(d3));
+        const double wn = w.norm();
+        k = wn / v3;
+        ku = (wn > 0.0 ? w.dot(wu) / wn : 0.0) / v3 - 3.0 * k * along / v2;
+    }
+    return {k, ku / v};
+}
+
+// A rate of curvature change counts as zero below this (× L²): a straight stretch has no extrema.
+constexpr double kFlatRate = 1e-9;
+
 }  // namespace
+
+const std::vector<std::string>& shape_measure_names() {
+    static const std::vector<std::string> names{"bending", "variation", "max_curvature", "curvature_extrema", "g2_defect"};
+    return names;
+}
+
+ShapeMeasures shape_measures(const Curve& c, const std::vector<double>& nodes, bool closed) {
+    if (nodes.size() < 2) fail_input("compare::shape_measures", "needs at least two nodes, got " + std::to_string(nodes.size()));
+    static const numeric::GaussLegendreRule rule(kNodesPerSpan);
+    double length = 0.0, bending = 0.0, variation = 0.0, max_kappa = 0.0;
+    std::vector<double> rates;
+    for (std::size_t k = 0; k + 1 < nodes.size(); ++k) {
+        const double u0 = nodes[k], u1 = nodes[k + 1];
+        for (int q = 0; q < rule.size(); ++q) {
+            const double u = u0 + 0.5 * (rule.nodes()[static_cast<std::size_t>(q)] + 1.0) * (u1 - u0);
+            const Eigen::MatrixXd j = c.jet(u, 3);
+            const auto [kappa, rate] = kappa_and_rate(j);
+            const double ds = 0.5 * rule.weights()[static_cast<std::size_t>(q)] * (u1 - u0) * j.row(1).norm();
+            length += ds, bending += kappa * kappa * ds, variation += rate * rate * ds;
+            max_kappa = std::max(max_kappa, std::abs(kappa));
+            rates.push_back(rate);
+        }
+    }
+    ShapeMeasures m;
+    m.bending = length * bending;
+    m.variation = length * length * length * variation;
+    m.max_curvature = max_kappa * length;
+    int first = 0, last = 0;
+    for (double r : rates) {
+        const int sign = std::abs(r) * length * length <= kFlatRate ? 0 : (r > 0 ? 1 : -1);
+        if (sign == 0) continue;
+        if (last != 0 && sign != last) ++m.curvature_extrema;
+        if (first == 0) first = sign;
+        last = sign;
+    }
+    if (closed && first != 0 && last != first) ++m.curvature_extrema;
+    const std::size_t count = nodes.size();
+    for (std::size_t i = closed ? 0 : 1; i + 1 < count; ++i) {
+        const double left = kappa(i == 0 ? c.jet_from_left(nodes.back(), 2) : c.jet_from_left(nodes[i], 2)), right = kappa(c.jet(nodes[i], 2));
+        m.g2_defect = std::max(m.g2_defect, std::abs(left - right) * length);
+    }
+    return m;
+}
 
 const std::vector<std::string>& truth_error_names() {
     static const std::vector<std::string> names{"distance", "tangent_angle", "curvature_max", "curvature_l2", "length"};
@@ -141,9 +206,11 @@ std::vector<TruthRun> run_truth_benchmark(const TruthBenchmarkOptions& o) {
     const int threads = o.threads > 0 ? o.threads : hardware_threads();
     // The samples of each case once (t(s) by adaptive quadrature of the truth), shared by the methods.
     std::vector<TruthSample> samples(cases.size());
+    std::vector<ShapeMeasures> truth_shapes(cases.size());
     parallel_for(static_cast<long>(cases.size()), threads, [&](long k) {
         const Case& c = cases[static_cast<std::size_t>(k)];
         samples[static_cast<std::size_t>(k)] = truth_samples(*c.family, c.n, c.spacing, c.closed);
+        truth_shapes[static_cast<std::size_t>(k)] = shape_measures(*c.family->curve, samples[static_cast<std::size_t>(k)].params, c.closed);
     });
     std::vector<TruthRun> runs(cases.size() * configurations.size());
     // The shared tables (the pseudo-spline's) are loaded once, before the workers start.
@@ -156,6 +223,7 @@ std::vector<TruthRun> run_truth_benchmark(const TruthBenchmarkOptions& o) {
         const methods::Configuration& m = configurations[static_cast<std::size_t>(index) % configurations.size()];
         TruthRun& r = runs[static_cast<std::size_t>(index)];
         r.family = k.family->name, r.spacing = k.spacing, r.closed = k.closed, r.n = k.n, r.method = m.name;
+        r.truth_shape = truth_shapes[static_cast<std::size_t>(index) / configurations.size()];
         r.note = method_applicability(m.claims, sample.points, k.closed);
         if (!r.note.empty()) {
             r.status = "not applicable";
@@ -175,13 +243,16 @@ std::vector<TruthRun> run_truth_benchmark(const TruthBenchmarkOptions& o) {
             return;
         }
         r.errors = truth_errors(*result.interpolant, sample, *k.family->curve);
+        r.shape = shape_measures(*result.interpolant->curve, result.interpolant->node_parameters, k.closed);
         r.status = "ok";
-        for (int m = 0; m < 5; ++m)
-            if (!std::isfinite(truth_error(r.errors, m))) {  // a node of zero speed: κ undefined there
-                r.status = "cusp";
-                r.note = "the curve has a point of zero speed, where its curvature is undefined";
-                r.errors = {};
-            }
+        bool finite = std::isfinite(r.shape.bending) && std::isfinite(r.shape.variation) && std::isfinite(r.shape.max_curvature) && std::isfinite(r.shape.g2_defect);
+        for (int e = 0; e < 5; ++e) finite = finite && std::isfinite(truth_error(r.errors, e));
+        if (!finite) {  // a node of zero speed: κ undefined there
+            r.status = "cusp";
+            r.note = "the curve has a point of zero speed, where its curvature is undefined";
+            r.errors = {};
+            r.shape = {};
+        }
     });
     return runs;
 }
@@ -241,6 +312,8 @@ std::vector<ConvergenceOrder> convergence_orders(const std::vector<TruthRun>& ru
 std::vector<std::string> truth_runs_header() {
     std::vector<std::string> h{"family", "spacing", "closed", "n", "method", "status"};
     for (const std::string& m : truth_error_names()) h.push_back(m);
+    for (const std::string& m : shape_measure_names()) h.push_back(m);
+    for (const std::string& m : shape_measure_names()) h.push_back("truth_" + m);
     h.push_back("note");
     return h;
 }
@@ -250,6 +323,11 @@ std::vector<std::vector<std::string>> truth_runs_rows(const std::vector<TruthRun
     for (const TruthRun& r : runs) {
         std::vector<std::string> row{r.family, to_string(r.spacing), r.closed ? "1" : "0", std::to_string(r.n), r.method, r.status};
         for (int m = 0; m < 5; ++m) row.push_back(r.status == "ok" ? format_number(truth_error(r.errors, m), digits) : "");
+        const auto shape = [&](const ShapeMeasures& s, bool shown) {
+            for (const double v : {s.bending, s.variation, s.max_curvature, static_cast<double>(s.curvature_extrema), s.g2_defect}) row.push_back(shown ? format_number(v, digits) : "");
+        };
+        shape(r.shape, r.status == "ok");
+        shape(r.truth_shape, true);
         std::string note = r.note;
         std::replace(note.begin(), note.end(), '\n', ' ');
         row.push_back(note);
@@ -328,6 +406,21 @@ std::string truth_leaderboard_markdown(const std::vector<TruthRun>& runs, const 
             md << "| " << ++rank << " | `" << r->method << "` | " << number(r->errors.distance) << " | " << (o ? order_text(*o) : "-") << " | " << number(r->errors.tangent_angle)
                << " | " << number(r->errors.curvature_max) << " | " << number(r->errors.curvature_l2) << " | " << number(r->errors.length) << " |\n";
         }
+        // The shape at a size where the methods still differ visibly, beside the truth's.
+        std::vector<const TruthRun*> shaped;
+        for (const TruthRun* r : rows)
+            for (const TruthRun& s : runs)
+                if (s.family == f.name && s.n == kShapeTableSize && s.spacing == TruthSpacing::uniform && s.closed == f.closed && s.method == r->method && s.status == "ok")
+                    shaped.push_back(&s);
+        if (shaped.empty()) continue;
+        const auto shape_row = [&](const std::string& name, const ShapeMeasures& s) {
+            md << "| " << name << " | " << number(s.bending) << " | " << number(s.variation) << " | " << number(s.max_curvature) << " | " << s.curvature_extrema << " | "
+               << number(s.g2_defect) << " |\n";
+        };
+        md << "\nShape at " << kShapeTableSize << " points (scale-free: L∫κ² ds, L³∫κ'² ds, max |κ|·L, sign changes of κ', the largest curvature jump at a point × L):\n\n"
+           << "| | bending | variation | max κ·L | κ extrema | G2 defect |\n|---|---:|---:|---:|---:|---:|\n";
+        shape_row("**truth**", shaped.front()->truth_shape);
+        for (const TruthRun* s : shaped) shape_row("`" + s->method + "`", s->shape);
     }
     // Exact reproduction: every size at rounding level, in both spacings.
     md << "\n#### Exact reproduction\n\nA method reproduces a curve when its distance is at most " << format_number(kTruthExactLevelPerPoint, 2) << " × n"

@@ -52,6 +52,21 @@ double truth_error(const TruthErrors& e, int index);
 /// The errors of `interpolant` (through `sample`'s points) against `truth` (see above).
 TruthErrors truth_errors(const methods::Interpolant& interpolant, const TruthSample& sample, const Curve& truth);
 
+/// Scale-free shape measures of a curve (L its length), comparable across sizes, libraries and the
+/// truth itself; on the 16 Gauss nodes per span of truth_errors (the integrals by that rule):
+struct ShapeMeasures {
+    double bending = 0.0;        ///< L ∫ κ² ds
+    double variation = 0.0;      ///< L³ ∫ (dκ/ds)² ds
+    double max_curvature = 0.0;  ///< max |κ| · L
+    int curvature_extrema = 0;   ///< sign changes of dκ/ds along the curve (|dκ/ds| L² ≤ 1e-9 counts as 0)
+    double g2_defect = 0.0;      ///< max over the interior points (closed: every point) of |κ(u⁺) − κ(u⁻)| · L
+};
+/// The shape measures of `curve` between consecutive `nodes` (its parameters at the points; closed:
+/// the last is the first again). Planar curves: signed κ; space: |κ|. NaN where the speed vanishes.
+ShapeMeasures shape_measures(const Curve& curve, const std::vector<double>& nodes, bool closed);
+/// The names of the shape measures, in the order of ShapeMeasures.
+const std::vector<std::string>& shape_measure_names();
+
 /// One interpolation of the benchmark.
 struct TruthRun {
     std::string family;       ///< truth family
@@ -62,6 +77,8 @@ struct TruthRun {
     std::string status;       ///< "ok", "not applicable", "refused", "no result", "cusp"
     std::string note;         ///< why not ok
     TruthErrors errors;       ///< when ok
+    ShapeMeasures shape;      ///< when ok
+    ShapeMeasures truth_shape;  ///< the truth's over the same stretch (the same for every method of a case)
 };
 
 /// What run_truth_benchmark runs.
@@ -103,7 +120,8 @@ std::vector<ConvergenceOrder> convergence_orders(const std::vector<TruthRun>& ru
 /// A predicted order holds when the observed one is within this of it.
 inline constexpr double kPredictedOrderTolerance = 0.35;
 
-/// truth_runs.csv's columns: family, spacing, closed, n, method, status, the five errors, note.
+/// truth_runs.csv's columns: family, spacing, closed, n, method, status, the five errors, the five
+/// shape measures, the truth's five, note.
 std::vector<std::string> truth_runs_header();
 /// One row per run, the errors to `digits` significant digits (empty unless ok).
 std::vector<std::vector<std::string>> truth_runs_rows(const std::vector<TruthRun>& runs, int digits = 6);
@@ -114,7 +132,8 @@ std::vector<std::string> convergence_orders_header();
 std::vector<std::vector<std::string>> convergence_orders_rows(const std::vector<ConvergenceOrder>& orders);
 /// The Markdown leaderboards: per family, every configuration's errors at the largest size
 /// (uniform spacing; closed where the family is closed), with the distance order, ranked by the
-/// distance; then the exact reproductions and the predicted orders with their verdicts.
+/// distance, and its shape measures beside the truth's at 24 points; then the exact reproductions
+/// and the predicted orders with their verdicts.
 std::string truth_leaderboard_markdown(const std::vector<TruthRun>& runs, const std::vector<ConvergenceOrder>& orders);
 
 }  // namespace cagd::compare

@@ -26,6 +26,8 @@ public:
         if (order < 0 || order > 3) fail_input("compare::truth curve", "jet order must be 0..3, got " + std::to_string(order));
         return jet_(t).topRows(order + 1);
     }
+    // Smooth everywhere: the limit from the left is the jet.
+    Eigen::MatrixXd jet_from_left(double t, int order) const override { return jet(t, order); }
     std::vector<double> breakpoints() const override {
         std::vector<double> b;
         for (int i = 0; i <= 8; ++i) b.push_back(t_max_ * i / 8);  // pieces for the quadratures of analysis/
