@@ -586,6 +586,31 @@ TEST(Compare, CombsAreThinnedAndSayHow) {
     EXPECT_NEAR(std::stod(table[0][9]), d.comb_scale[0], 1e-5 * d.comb_scale[0]);
 }
 
+// With timing, the shared tables' loading is reported on its own, beside each build's seconds.
+TEST(Compare, SharedPreparationIsTimedApart) {
+    const PointList p = random_walk_points(8);
+    ComparisonOptions o;
+    o.methods = {"pseudo-spline-approx", "cubic-b", "eigen-spline-5"};
+    o.locality = false;
+    const std::vector<MethodComparison> c = compare_methods(p, o);
+    const std::vector<std::string> header = comparison_header(false, true);
+    const auto seconds = std::find(header.begin(), header.end(), "seconds");
+    ASSERT_NE(seconds, header.end());
+    ASSERT_NE(seconds + 1, header.end());
+    EXPECT_EQ(*(seconds + 1), "shared_seconds");
+    const std::size_t column = static_cast<std::size_t>(seconds + 1 - header.begin());
+    const std::vector<std::vector<std::string>> rows = comparison_rows(c, false, true);
+    for (std::size_t i = 0; i < c.size(); ++i) {
+        ASSERT_EQ(rows[i].size(), header.size());
+        EXPECT_GE(c[i].shared_seconds, 0.0) << c[i].method;
+        EXPECT_TRUE(std::isfinite(c[i].shared_seconds)) << c[i].method;
+        EXPECT_FALSE(rows[i][column].empty()) << c[i].method;
+    }
+    // Without timing neither column is written: the committed tables stay deterministic.
+    const std::vector<std::string> plain = comparison_header(false, false);
+    EXPECT_EQ(std::find(plain.begin(), plain.end(), "shared_seconds"), plain.end());
+}
+
 // One comb scale for every panel: the 95th percentile of |κ| over all methods' samples draws 10 %
 // of the diagonal, so a curvier method draws longer teeth at the same scale.
 TEST(Compare, CombsShareOneScale) {

@@ -14,6 +14,7 @@
 ///                                    10⁻⁹ × diagonal (9 samples per span)
 ///   seconds                          wall time of interpolate() (not deterministic), the
 ///                                    method's shared tables loaded before (Method::prepare)
+///   shared_seconds                   wall time of that Method::prepare, reported on its own
 ///
 /// Space points (3 columns): no enclosed area and no inflections; the largest |τ| instead
 /// (analysis/fairness_measures); the figure data are the curves in 3-D and κ(s), τ(s), no combs.
@@ -64,6 +65,9 @@ struct MethodComparison {
     int spans = 0;  ///< data spans
     std::optional<int> locality_footprint;  ///< spans moved when the middle point moves (absent when not measured)
     double seconds = 0.0;  ///< wall time of interpolate() (not deterministic)
+    /// Wall time of Method::prepare before it: the tables the method shares between builds, loaded
+    /// from the user's cache or built (not deterministic; about 0 for a method with nothing shared).
+    double shared_seconds = 0.0;
 };
 
 /// Why a method with these claims does not apply to the points ("open curves only", "needs at least
