@@ -112,3 +112,24 @@ TEST(HermiteCurves, HermiteAUsesNeighbourChordsAndChordLengthMagnitudes) {
     EXPECT_THROW(spline::hermite_tangent_directions(points({{0, 0}, {1, 0}, {0.0, 0.0}, {2, 0}}), spline::TangentRule::circle, false), InvalidInput)
         << "an exact reversal with equal chords";
 }
+
+// hermite_spline is hermite_interpolant of hermite_tangent_directions in one pass: the same nodes
+// and end derivatives to the last bit, for both rules, open and closed, planar and space points.
+TEST(HermiteCurves, OnePassCurveIsTheInterpolantOfTheDirections) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> coordinate(-2.0, 2.0);
+    for (const int dim : {2, 3})
+        for (const bool closed : {false, true})
+            for (const spline::TangentRule rule : {spline::TangentRule::chord_of_neighbours, spline::TangentRule::circle})
+                for (const int n : {3, 4, 50}) {
+                    PointList p(n, dim);
+                    for (Eigen::Index i = 0; i < n; ++i)
+                        for (Eigen::Index c = 0; c < dim; ++c) p(i, c) = coordinate(rng);
+                    const PiecewiseHermiteCurve one = spline::hermite_spline(p, rule, closed);
+                    const PiecewiseHermiteCurve two = spline::hermite_interpolant(p, spline::hermite_tangent_directions(p, rule, closed), closed);
+                    ASSERT_EQ(one.spans(), closed ? n : n - 1);
+                    EXPECT_EQ(one.nodes(), two.nodes());
+                    EXPECT_EQ(one.start_derivatives(), two.start_derivatives()) << n << " points, dim " << dim << (closed ? ", closed" : ", open");
+                    EXPECT_EQ(one.end_derivatives(), two.end_derivatives()) << n << " points, dim " << dim << (closed ? ", closed" : ", open");
+                }
+}

@@ -71,7 +71,7 @@ InterpolationResult build_cubic(const PointList& points, bool closed, spline::Pa
 }
 
 InterpolationResult build_hermite(const PointList& points, bool closed, spline::TangentRule rule) {
-    auto c = std::make_shared<spline::PiecewiseHermiteCurve>(spline::hermite_interpolant(points, spline::hermite_tangent_directions(points, rule, closed), closed));
+    auto c = std::make_shared<spline::PiecewiseHermiteCurve>(spline::hermite_spline(points, rule, closed));
     return result_of(unit_span_interpolant(std::move(c), node_count(points, closed), unit_lengths(points, closed)));
 }
 

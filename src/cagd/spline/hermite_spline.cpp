@@ -171,13 +171,15 @@ PiecewiseHermiteCurve cubic_spline_interpolant(const PointList& points, Paramete
 
 namespace {
 
-// The directions of hermite_tangent_directions with rows of type Row: Eigen::RowVector3d (planar
-// points padded with z = 0, which changes no norm or dot product) so that no row allocates (at
-// 10^6 points four temporaries per point took a quarter of the construction), or RowVectorXd.
-template <class Row>
-Eigen::MatrixXd tangent_directions_with(const PointList& points, TangentRule rule, bool closed, const char* who) {
+// The directions of hermite_tangent_directions, handed to put(i, t_i) in the order i = 1, 2, …,
+// n − 1 (closed: …, n − 1, 0; open: then 0 and n − 1), with rows of type Row: Eigen::RowVector3d
+// (planar points padded with z = 0, which changes no norm or dot product) so that no row allocates
+// (at 10^6 points four temporaries per point took a quarter of the construction), or RowVectorXd.
+// Each chord and its length is formed once, and no index wraps by a modulo (an integer division
+// per point); the arithmetic per direction is the same as written in the header.
+template <class Row, class Put>
+void tangent_directions_with(const PointList& points, TangentRule rule, bool closed, const char* who, Put&& put) {
     const Eigen::Index n = points.rows(), dim = points.cols();
-    Eigen::MatrixXd t(n, dim);
     const auto at = [&](Eigen::Index i) -> Row {
         if constexpr (Row::SizeAtCompileTime == Eigen::Dynamic) {
             return points.row(i);
@@ -188,43 +190,75 @@ Eigen::MatrixXd tangent_directions_with(const PointList& points, TangentRule rul
         }
     };
     const auto unit_row = [](const Row& v) -> Row { return v / v.norm(); };
-    const auto put = [&](Eigen::Index i, const Row& r) { t.row(i) = r.head(dim); };
-    const auto interior = [&](Eigen::Index i, Eigen::Index im, Eigen::Index ip) -> Row {
-        const Row pi = at(i), a = pi - at(im), b = at(ip) - pi;
-        const double la = a.norm(), lb = b.norm();
-        const Row d = rule == TangentRule::circle ? Row(lb / la * a + la / lb * b) : Row(at(ip) - at(im));
+    // t_i from a = P_i − P_{i−1}, b = P_{i+1} − P_i and P_{i+1} − P_{i−1}.
+    const auto interior = [&](Eigen::Index i, const Row& a, double la, const Row& b, double lb, const Row& across) -> Row {
+        const Row d = rule == TangentRule::circle ? Row(lb / la * a + la / lb * b) : across;
         // A reversal leaves d = 0 (Hermite A: P_{i−1} = P_{i+1}) or tiny by cancellation.
         if (d.norm() <= 1e-14 * (la + lb))
             fail_input(who, "the curve reverses at point " + std::to_string(i) + " (turning angle π), where no tangent direction is defined");
         return unit_row(d);
     };
-    for (Eigen::Index i = 0; i < n; ++i) {
-        if (closed || (i > 0 && i < n - 1)) {
-            put(i, interior(i, (i - 1 + n) % n, (i + 1) % n));
-            continue;
-        }
-        if (rule == TangentRule::chord_of_neighbours) {
-            put(i, i == 0 ? unit_row(at(1) - at(0)) : unit_row(at(n - 1) - at(n - 2)));
-            continue;
-        }
-        // Circle end: reflect the middle tangent of the three end points.
-        if (i == 0) {
-            const Row t1 = interior(1, 0, 2), ah = unit_row(at(1) - at(0));
-            put(0, 2.0 * t1.dot(ah) * ah - t1);
-        } else {
-            const Row tm = interior(n - 2, n - 3, n - 1), bh = unit_row(at(n - 1) - at(n - 2));
-            put(n - 1, 2.0 * tm.dot(bh) * bh - tm);
-        }
+    Row before = at(closed ? n - 1 : 0), here = at(closed ? 0 : 1);
+    Row a = here - before;
+    double la = a.norm();
+    Row first_interior = at(0);  // t_1 (set in the loop), for an open circle end
+    for (Eigen::Index i = closed ? 0 : 1; i < (closed ? n : n - 1); ++i) {
+        const Row next = at(i + 1 == n ? 0 : i + 1), b = next - here;
+        const double lb = b.norm();
+        const Row t = interior(i, a, la, b, lb, next - before);
+        if (!closed && i == 1) first_interior = t;
+        put(i, t);
+        before = here, here = next, a = b, la = lb;
     }
-    return t;
+    if (closed) return;
+    if (rule == TangentRule::chord_of_neighbours) {
+        put(0, unit_row(at(1) - at(0)));
+        put(n - 1, unit_row(at(n - 1) - at(n - 2)));
+        return;
+    }
+    // Circle end: reflect the middle tangent of the three end points.
+    const Row ah = unit_row(at(1) - at(0));
+    put(0, Row(2.0 * first_interior.dot(ah) * ah - first_interior));
+    const Row p3 = at(n - 3), p2 = at(n - 2), p1 = at(n - 1), am = p2 - p3, bm = p1 - p2;
+    const Row tm = interior(n - 2, am, am.norm(), bm, bm.norm(), p1 - p3), bh = unit_row(p1 - p2);
+    put(n - 1, Row(2.0 * tm.dot(bh) * bh - tm));
+}
+
+template <class Put>
+void tangent_directions(const PointList& points, TangentRule rule, bool closed, const char* who, Put&& put) {
+    if (points.cols() <= 3)
+        tangent_directions_with<Eigen::RowVector3d>(points, rule, closed, who, put);
+    else
+        tangent_directions_with<Eigen::RowVectorXd>(points, rule, closed, who, put);
+}
+
+const char* directions_who(TangentRule rule) {
+    return rule == TangentRule::circle ? "hermite_tangent_directions (circle, Hermite B)" : "hermite_tangent_directions (chord of neighbours, Hermite A)";
 }
 
 }  // namespace
 
 Eigen::MatrixXd hermite_tangent_directions(const PointList& points, TangentRule rule, bool closed) {
-    const char* who = rule == TangentRule::circle ? "hermite_tangent_directions (circle, Hermite B)" : "hermite_tangent_directions (chord of neighbours, Hermite A)";
+    const char* who = directions_who(rule);
     require_valid_points(points, (closed || rule == TangentRule::circle) ? 3 : 2, true, closed, who);
-    return points.cols() <= 3 ? tangent_directions_with<Eigen::RowVector3d>(points, rule, closed, who) : tangent_directions_with<Eigen::RowVectorXd>(points, rule, closed, who);
+    Eigen::MatrixXd t(points.rows(), points.cols());
+    tangent_directions(points, rule, closed, who, [&](Eigen::Index i, const auto& r) { t.row(i) = r.head(points.cols()); });
+    return t;
+}
+
+PiecewiseHermiteCurve hermite_spline(const PointList& points, TangentRule rule, bool closed) {
+    const char* who = directions_who(rule);
+    require_valid_points(points, (closed || rule == TangentRule::circle) ? 3 : 2, true, closed, who);
+    const Eigen::Index n = points.rows(), dim = points.cols(), spans = closed ? n : n - 1;
+    Eigen::MatrixXd nodes = span_nodes(points, closed), d0(spans, dim), d1(spans, dim);
+    const auto length = [&](Eigen::Index k) { return (nodes.row(k + 1) - nodes.row(k)).norm(); };
+    // t_i starts span i and ends span i − 1 (closed: t_0 also ends span n − 1).
+    tangent_directions(points, rule, closed, who, [&](Eigen::Index i, const auto& r) {
+        if (i > 0) d1.row(i - 1) = length(i - 1) * r.head(dim);
+        if (i < spans) d0.row(i) = length(i) * r.head(dim);
+        if (closed && i == 0) d1.row(n - 1) = length(n - 1) * r.head(dim);
+    });
+    return PiecewiseHermiteCurve(std::move(nodes), std::move(d0), std::move(d1));
 }
 
 PiecewiseHermiteCurve hermite_interpolant(const PointList& points, const Eigen::MatrixXd& directions, bool closed) {

@@ -89,5 +89,8 @@ PiecewiseHermiteCurve cubic_spline_interpolant(const PointList& points, Paramete
 Eigen::MatrixXd hermite_tangent_directions(const PointList& points, TangentRule rule, bool closed);
 /// Hermite curve through `points` with the given unit directions, magnitudes the chord lengths.
 PiecewiseHermiteCurve hermite_interpolant(const PointList& points, const Eigen::MatrixXd& directions, bool closed);
+/// hermite_interpolant(points, hermite_tangent_directions(points, rule, closed), closed) in one pass,
+/// without the directions' n × dim temporary: Hermite curve A or B, the same values bit for bit.
+PiecewiseHermiteCurve hermite_spline(const PointList& points, TangentRule rule, bool closed);
 
 }  // namespace cagd::spline
