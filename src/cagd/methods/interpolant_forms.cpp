@@ -114,13 +114,17 @@ Interpolant unit_span_interpolant(std::shared_ptr<const Curve> curve, Eigen::Ind
 Interpolant hermite_from_slopes(const PointList& p, const Eigen::MatrixXd& slopes, const std::vector<double>& h, bool closed) {
     const Eigen::Index n = p.rows(), spans = static_cast<Eigen::Index>(h.size());
     Eigen::MatrixXd nodes(spans + 1, p.cols()), d0(spans, p.cols()), d1(spans, p.cols());
-    for (Eigen::Index k = 0; k <= spans; ++k) nodes.row(k) = p.row(k % n);
-    for (Eigen::Index k = 0; k < spans; ++k) {
-        const double hk = h[static_cast<std::size_t>(k)];
-        d0.row(k) = hk * slopes.row(k);
-        d1.row(k) = hk * slopes.row(closed ? (k + 1) % n : k + 1);
+    nodes.topRows(n) = p;
+    if (closed) nodes.row(n) = p.row(0);
+    // Column by column (contiguous, vectorised): d0_k = h_k s_k, d1_k = h_k s_{k+1}.
+    const Eigen::Map<const Eigen::VectorXd> hk(h.data(), spans);
+    const Eigen::Index inner = closed ? spans - 1 : spans;  // spans whose end slope is s_{k+1} without wrapping
+    for (Eigen::Index c = 0; c < p.cols(); ++c) {
+        d0.col(c) = hk.cwiseProduct(slopes.col(c).head(spans));
+        d1.col(c).head(inner) = hk.head(inner).cwiseProduct(slopes.col(c).segment(1, inner));
+        if (closed) d1(spans - 1, c) = hk(spans - 1) * slopes(0, c);
     }
-    return unit_span_interpolant(std::make_shared<spline::PiecewiseHermiteCurve>(nodes, d0, d1), spans + 1, h);
+    return unit_span_interpolant(std::make_shared<spline::PiecewiseHermiteCurve>(std::move(nodes), std::move(d0), std::move(d1)), spans + 1, h);
 }
 
 Interpolant boost_pchip_interpolant(const PointList& p) { return componentwise_chord_interpolant<boost::math::interpolators::pchip<std::vector<double>>>(p, 1); }
