@@ -246,3 +246,37 @@ TEST(Locality, ExtendedPointsFollowSection33) {
     EXPECT_EQ((extended_point(p, o, -1) - p.row(4)).norm(), 0.0);
     EXPECT_EQ((extended_point(p, o, 7) - p.row(2)).norm(), 0.0);
 }
+
+// Eq (12) with one m for every segment: each extra point is the weighted sum of the extended points
+// of section 3.3, the interior ones (summed coordinate by coordinate) and those near the ends alike,
+// to the last bit; for m = 0 … 7, both forms, open (natural and Bessel ends) and closed, in 2-D and 3-D.
+TEST(Locality, ExtraPointsAreEq12SumsOfTheExtendedPoints) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> coordinate(-3.0, 3.0);
+    for (const int dim : {2, 3})
+        for (const bool closed : {false, true})
+            for (const SplineForm form : {SplineForm::s_spline, SplineForm::b2_spline})
+                for (const int m : {0, 1, 2, 4, 7})
+                    for (const EndKind end : {EndKind::natural, EndKind::bessel}) {
+                        if (closed && end != EndKind::natural) continue;
+                        PointList p(40, dim);
+                        for (Eigen::Index i = 0; i < p.rows(); ++i)
+                            for (Eigen::Index c = 0; c < dim; ++c) p(i, c) = coordinate(rng);
+                        Options o;
+                        o.form = form;
+                        o.m = {{m, m}};
+                        o.closed = closed;
+                        o.start.kind = o.end.kind = end;
+                        const LocalitySpline s = interpolate(p, o);
+                        const SegmentWeights w = extra_point_weights({m, m});
+                        const long N = closed ? 41 : 40;
+                        ASSERT_EQ(s.extra_points.rows(), N + 1);
+                        for (long i = -1; i <= N - 1; ++i) {
+                            Eigen::RowVectorXd d = Eigen::RowVectorXd::Zero(dim);
+                            for (Eigen::Index j = 0; j < w.left.size(); ++j) d += w.left(j) * extended_point(p, o, i - j);
+                            for (Eigen::Index j = 0; j < w.right.size(); ++j) d += w.right(j) * extended_point(p, o, i + 1 + j);
+                            for (Eigen::Index c = 0; c < dim; ++c)
+                                ASSERT_EQ(s.extra_points(i + 1, c), d(c)) << "segment " << i << ", m = " << m << (closed ? ", closed" : ", open") << ", dim " << dim;
+                        }
+                    }
+}

@@ -263,13 +263,37 @@ LocalitySpline interpolate(const PointList& points, const Options& o) {
     // (n open; n+1 closed: p_n = p_0). Odd j: extra points of segments −1 .. N−1.
     const long N = o.closed ? n + 1 : n;
     Eigen::MatrixXd extra(N + 1, points.cols());
-    for (long i = -1; i <= N - 1; ++i) extra.row(i + 1) = extra_point(i);
+    // Eq (12) with one set of weights, at the segments whose weights reach no point beyond the
+    // data: coordinate by coordinate over contiguous memory, the same products summed in the same
+    // order as extra_point (which serves the segments near the ends, and every other rule).
+    long first = N, last = N - 1;  // the segments i ∈ [first, last] taken here
+    if (o.rule == ExtraPointRule::locality && uniform_weights) {
+        const Eigen::VectorXd &wl = uniform_weights->left, &wr = uniform_weights->right;
+        first = std::max<long>(-1, static_cast<long>(wl.size()) - 1);
+        last = std::min<long>(N - 1, n - 2 - static_cast<long>(wr.size()) + 1);
+        for (Eigen::Index c = 0; c < points.cols(); ++c) {
+            const double* x = points.col(c).data();
+            for (long i = first; i <= last; ++i) {
+                double d = 0.0;
+                for (Eigen::Index j = 0; j < wl.size(); ++j) d += wl(j) * x[i - j];
+                for (Eigen::Index j = 0; j < wr.size(); ++j) d += wr(j) * x[i + 1 + j];
+                extra(i + 1, c) = d;
+            }
+        }
+    }
+    for (long i = -1; i <= N - 1; ++i)
+        if (i < first || i > last) extra.row(i + 1) = extra_point(i);
     const KnotRelation rel = knot_relation(o.form);
     Eigen::MatrixXd control(2 * N + 1, points.cols());
-    for (long i = 0; i <= N; ++i) control.row(2 * i) = extra.row(i);  // d_{2i−1}
-    for (long i = 0; i < N; ++i)                                      // eq (3) / (7)
-        control.row(2 * i + 1) = (P(i) - rel.side * (extra.row(i) + extra.row(i + 1))) / rel.centre;
+    for (Eigen::Index c = 0; c < points.cols(); ++c) {
+        for (long i = 0; i <= N; ++i) control(2 * i, c) = extra(i, c);  // d_{2i−1}
+        for (long i = 0; i < N; ++i) {                                 // eq (3) / (7)
+            const double p = i < n ? points(i, c) : points(0, c);      // closed: p_N = p_0
+            control(2 * i + 1, c) = (p - rel.side * (extra(i, c) + extra(i + 1, c))) / rel.centre;
+        }
+    }
     std::vector<double> knots;
+    knots.reserve(static_cast<std::size_t>(2 * N + 5));
     if (o.form == SplineForm::b2_spline) {  // u_j = j/2: cubic, knots spaced 1/2
         for (long k = 0; k < 2 * N + 5; ++k) knots.push_back(-1.5 + 0.5 * static_cast<double>(k));
     } else {  // quartic, every integer knot double
@@ -281,7 +305,7 @@ LocalitySpline interpolate(const PointList& points, const Options& o) {
         knots.push_back(double(N + 1));
     }
     const int degree = o.form == SplineForm::b2_spline ? 3 : 4;
-    return {BSplineCurve(degree, knots, control), extra, -1};
+    return {BSplineCurve(degree, std::move(knots), std::move(control)), std::move(extra), -1};
 }
 
 Eigen::RowVectorXd extended_point(const PointList& points, const Options& o, long k) {
