@@ -150,9 +150,9 @@ int main(int argc, char** argv) {
         // Boundary-conforming synthesis (m = 2) and the surface joined beyond x0 = 2.
         cagd::PointList lower(5, 3), upper(5, 3), far(4, 3);
         for (int k = 0; k < 5; ++k) {
-            const double x = 0.5 * k;
-            lower.row(k) << x, 0.2 * std::sin(x), 0.1 * x * x;
-            upper.row(k) << x, 1.5 + 0.3 * x, 1.0 - 0.2 * x;
+            const double xk = 0.5 * k;
+            lower.row(k) << xk, 0.2 * std::sin(xk), 0.1 * xk * xk;
+            upper.row(k) << xk, 1.5 + 0.3 * xk, 1.0 - 0.2 * xk;
         }
         const cagd::surface::BoundaryConformingSurface strip(2, cagd::surface::boundary_through_points(lower, {0.3, -0.1}),
                                                              cagd::surface::boundary_through_points(upper, {-0.2, 0.05}));

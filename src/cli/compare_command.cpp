@@ -120,12 +120,12 @@ int run_compare(const CompareArgs& a) {
         const methods::MethodParameterCurve curve(*r.interpolant);
         const exports::CurveProvenance provenance{
             .method = conf.method->name, .parameters = conf.values.as_text(), .parameter = conf.claims.parameter, .closed = a.closed, .points = points};
-        exports::ExportOptions options;
-        options.points = true;
-        options.comb = dimension == 2;
+        exports::ExportOptions export_options;
+        export_options.points = true;
+        export_options.comb = dimension == 2;
         for (const exports::CurveFormat format : export_formats) {
             OutputFile f(out.staged("curve_" + r.method + exports::curve_format_info(format).extensions.front()));
-            if (const Outcome written = exports::write_curve(f.stream(), format, curve, provenance, options); !written.ok())
+            if (const Outcome written = exports::write_curve(f.stream(), format, curve, provenance, export_options); !written.ok())
                 throw NoResult(r.method + " as " + exports::curve_format_info(format).name + ": " + written.message + " (nothing was written)");
             f.commit();
         }

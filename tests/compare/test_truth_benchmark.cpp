@@ -192,8 +192,12 @@ TEST(TruthBenchmark, ResultsDoNotDependOnTheThreadCount) {
     EXPECT_EQ(a.size(), 3u * 2 * 2 * 3);
     // Spiro is planar: not applicable to the helix; pchip is open only.
     for (const TruthRun& r : a) {
-        if (r.family == "helix" && r.method == "spiro") EXPECT_EQ(r.status, "not applicable");
-        if (r.closed && r.method == "boost-pchip") EXPECT_EQ(r.status, "not applicable");
+        if (r.family == "helix" && r.method == "spiro") {
+            EXPECT_EQ(r.status, "not applicable");
+        }
+        if (r.closed && r.method == "boost-pchip") {
+            EXPECT_EQ(r.status, "not applicable");
+        }
     }
     TruthBenchmarkOptions bad;
     bad.sizes = {2};

@@ -250,8 +250,8 @@ std::vector<LocalMinimum> local_minima_multistart(double theta0, double theta1, 
         const auto same_basin = [&](const std::array<double, 3>& m) {
             if (std::max(std::abs(m[1] - x[0]), std::abs(m[2] - x[1])) >= kCensusSameValley) return false;
             const double top = std::max(m[0], f) + kCensusSameJ * (1.0 + std::max(m[0], f));
-            for (int k = 1; k < kBarrierSamples; ++k) {
-                const double t = static_cast<double>(k) / kBarrierSamples;
+            for (int s = 1; s < kBarrierSamples; ++s) {
+                const double t = static_cast<double>(s) / kBarrierSamples;
                 if (j_at(m[1] + t * (x[0] - m[1]), m[2] + t * (x[1] - m[2])) > top) return false;
             }
             return true;
