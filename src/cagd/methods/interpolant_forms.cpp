@@ -50,11 +50,13 @@ void boost_slopes_by_blocks(const std::vector<double>& tau, const Eigen::VectorX
 template <class Interpolator>
 Interpolant componentwise_chord_interpolant(const PointList& p, Eigen::Index reach) {
     const std::vector<double> h = chord_lengths(p, false);
-    std::vector<double> tau{0.0};
-    tau.reserve(h.size() + 1);
-    for (double hk : h) tau.push_back(tau.back() + hk);
     Eigen::MatrixXd slopes(p.rows(), p.cols());
-    for (Eigen::Index c = 0; c < p.cols(); ++c) boost_slopes_by_blocks<Interpolator>(tau, p.col(c), reach, slopes.col(c));
+    {  // the chord-length parameters live only while the slopes are read (peak memory)
+        std::vector<double> tau{0.0};
+        tau.reserve(h.size() + 1);
+        for (double hk : h) tau.push_back(tau.back() + hk);
+        for (Eigen::Index c = 0; c < p.cols(); ++c) boost_slopes_by_blocks<Interpolator>(tau, p.col(c), reach, slopes.col(c));
+    }
     return hermite_from_slopes(p, slopes, h, false);
 }
 
@@ -71,6 +73,7 @@ Interpolant catmull_rom_interpolant(const PointList& p, bool closed) {
     // arrays (found by fuzzing). Each term must therefore exceed 1e-12 of the sum (ε is 1.1e-16).
     {
         std::vector<double> terms;
+        terms.reserve(static_cast<std::size_t>(p.rows()) + 1);
         double sum = 0.0;
         for (Eigen::Index k = 0; k <= p.rows(); ++k) {
             const Eigen::Index a = k % p.rows(), b = (k + 1) % p.rows();  // k = n−1, n: the ghost chords
@@ -83,17 +86,20 @@ Interpolant catmull_rom_interpolant(const PointList& p, bool closed) {
                                                                                " long against a centripetal parameter sum of " + full_precision(sum) +
                                                                                ": it vanishes in double precision (the points span too many orders of magnitude)");
     }
-    const boost::math::catmull_rom<Point> cr(std::move(pts), closed, 0.5);
     const Eigen::Index n = p.rows(), spans = closed ? n : n - 1;
     std::vector<double> h;
-    for (Eigen::Index k = 0; k < spans; ++k)
-        h.push_back((k + 1 == n ? cr.max_parameter() : cr.parameter_at_point(static_cast<std::size_t>(k + 1))) - cr.parameter_at_point(static_cast<std::size_t>(k)));
+    h.reserve(static_cast<std::size_t>(spans));
     Eigen::MatrixXd slopes(n, p.cols());
-    for (Eigen::Index k = 0; k < n; ++k) {
-        // prime at the last open node is the last span's end derivative (Boost evaluates the span
-        // on the left at s = max_parameter); every other node is a span start.
-        const Point d = cr.prime(cr.parameter_at_point(static_cast<std::size_t>(k)));
-        for (std::size_t c = 0; c < D; ++c) slopes(k, static_cast<Eigen::Index>(c)) = d[c];
+    {  // Boost's spline lives only while its parameters and slopes are read (peak memory)
+        const boost::math::catmull_rom<Point> cr(std::move(pts), closed, 0.5);
+        for (Eigen::Index k = 0; k < spans; ++k)
+            h.push_back((k + 1 == n ? cr.max_parameter() : cr.parameter_at_point(static_cast<std::size_t>(k + 1))) - cr.parameter_at_point(static_cast<std::size_t>(k)));
+        for (Eigen::Index k = 0; k < n; ++k) {
+            // prime at the last open node is the last span's end derivative (Boost evaluates the
+            // span on the left at s = max_parameter); every other node is a span start.
+            const Point d = cr.prime(cr.parameter_at_point(static_cast<std::size_t>(k)));
+            for (std::size_t c = 0; c < D; ++c) slopes(k, static_cast<Eigen::Index>(c)) = d[c];
+        }
     }
     return hermite_from_slopes(p, slopes, h, closed);
 }

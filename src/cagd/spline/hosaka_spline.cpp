@@ -122,91 +122,100 @@ HosakaSpline hosaka_c2_spline(const PointList& points, const HosakaSplineOptions
     for (std::size_t i = 0; i < k.size(); ++i)
         k[i] = o.scale == HosakaScale::unit ? 1.0 : A.row(static_cast<Eigen::Index>(i)).norm() / A.row(static_cast<Eigen::Index>((i + 1) % n)).norm();
 
-    // Unknowns: B_0..B_{n−1}, and C_{n−1} for an open curve (index n). C_i = k_i B_{i+1} otherwise.
-    const int unknowns = o.closed ? n : n + 1;
-    // Open: the three diagonals directly (no triplets); closed: triplets for SparseLU.
-    std::vector<Eigen::Triplet<double>> trip;
-    std::vector<double> sub(o.closed ? 0 : static_cast<std::size_t>(unknowns), 0.0), diag(sub), sup(sub);
-    const auto add = [&](int r, int c, double v) {
-        if (o.closed)
-            trip.emplace_back(r, c, v);
-        else
-            (c == r - 1 ? sub : c == r ? diag : sup)[static_cast<std::size_t>(r)] += v;
-    };
-    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(unknowns, dim);
-    // Adds coefficient `c` times C_i to row r.
-    const auto add_C = [&](int r, int i, double c) {
-        if (o.closed)
-            add(r, (i + 1) % n, c * k[static_cast<std::size_t>(i)]);
-        else if (i == n - 1)
-            add(r, n, c);
-        else
-            add(r, i + 1, c * k[static_cast<std::size_t>(i)]);
-    };
-    int row = 0;
-    if (!o.closed) {                        // start condition
-        if (o.end == HosakaEnd::natural) {  // R''(0) = 6A − 4B − 2C = 0
-            add(row, 0, 2.0);
-            add_C(row, 0, 1.0);
-            rhs.row(row) = 3.0 * A.row(0);
-        } else {
-            add(row, 0, 1.0);
-            rhs.row(row) = o.start_tangent.transpose();
+    // The system of eq (20) and its solution; its arrays are freed before the curve is formed
+    // (peak memory).
+    Eigen::MatrixXd x = [&] {
+        // Unknowns: B_0..B_{n−1}, and C_{n−1} for an open curve (index n). C_i = k_i B_{i+1} otherwise.
+        const int unknowns = o.closed ? n : n + 1;
+        // Open: the three diagonals directly (no triplets); closed: triplets for SparseLU.
+        std::vector<Eigen::Triplet<double>> trip;
+        std::vector<double> sub(o.closed ? 0 : static_cast<std::size_t>(unknowns), 0.0), diag(sub), sup(sub);
+        const auto add = [&](int r, int c, double v) {
+            if (o.closed)
+                trip.emplace_back(r, c, v);
+            else
+                (c == r - 1 ? sub : c == r ? diag : sup)[static_cast<std::size_t>(r)] += v;
+        };
+        Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(unknowns, dim);
+        // Adds coefficient `c` times C_i to row r.
+        const auto add_C = [&](int r, int i, double c) {
+            if (o.closed)
+                add(r, (i + 1) % n, c * k[static_cast<std::size_t>(i)]);
+            else if (i == n - 1)
+                add(r, n, c);
+            else
+                add(r, i + 1, c * k[static_cast<std::size_t>(i)]);
+        };
+        int row = 0;
+        if (!o.closed) {                        // start condition
+            if (o.end == HosakaEnd::natural) {  // R''(0) = 6A − 4B − 2C = 0
+                add(row, 0, 2.0);
+                add_C(row, 0, 1.0);
+                rhs.row(row) = 3.0 * A.row(0);
+            } else {
+                add(row, 0, 1.0);
+                rhs.row(row) = o.start_tangent.transpose();
+            }
+            ++row;
         }
-        ++row;
-    }
-    const int joins = o.closed ? n : n - 1;
-    for (int j = 0; j < joins; ++j, ++row) {  // eq (20) at the join after segment j
-        const double kj = k[static_cast<std::size_t>(j)];
-        const int next = (j + 1) % n;
-        add(row, j, 1.0);
-        add(row, next, 2.0 * kj * (1.0 + kj));
-        add_C(row, next, kj * kj);
-        rhs.row(row) = 3.0 * (A.row(j) + kj * kj * A.row(next));
-    }
-    if (!o.closed) {                        // end condition
-        if (o.end == HosakaEnd::natural) {  // R''(1) = −6A + 2B + 4C = 0
-            add(row, n - 1, 1.0);
-            add(row, n, 2.0);
-            rhs.row(row) = 3.0 * A.row(n - 1);
-        } else {
-            add(row, n, 1.0);
-            rhs.row(row) = o.end_tangent.transpose();
+        const int joins = o.closed ? n : n - 1;
+        for (int j = 0; j < joins; ++j, ++row) {  // eq (20) at the join after segment j
+            const double kj = k[static_cast<std::size_t>(j)];
+            const int next = (j + 1) % n;
+            add(row, j, 1.0);
+            add(row, next, 2.0 * kj * (1.0 + kj));
+            add_C(row, next, kj * kj);
+            rhs.row(row) = 3.0 * (A.row(j) + kj * kj * A.row(next));
         }
-    }
-    Eigen::MatrixXd x;
-    if (!o.closed) {
-        // Tridiagonal: the Thomas algorithm, O(n). With the unknowns scaled by |A_i| (chord scale)
-        // the rows become m_j + 2(1 + k_j) m_{j+1} + k_j m_{j+2} (and 2m_0 + m_1, m_{n−1} + 2m_n at
-        // natural ends), diagonally dominant, so elimination without pivoting is stable; for
-        // k_i = 1 the rows are B_j + 4B_{j+1} + B_{j+2} already.
-        x = numeric::solve_tridiagonal(sub, diag, sup, std::move(rhs));
-    } else {
-        // Cyclic (corner entries): SparseLU; the natural ordering keeps the fill to the last rows and columns.
-        Eigen::SparseMatrix<double> M(unknowns, unknowns);
-        M.setFromTriplets(trip.begin(), trip.end());
-        numeric::SparseLu lu(numeric::ColumnOrdering::natural);
-        if (!lu.compute(M)) fail_input(who, "the system of eq (20) is singular for these points");
-        x = lu.solve(rhs);
-    }
-    Eigen::MatrixXd B(n, dim), C(n, dim);
-    for (int i = 0; i < n; ++i) {
-        B.row(i) = x.row(i);
-        if (o.closed)
-            C.row(i) = k[static_cast<std::size_t>(i)] * x.row((i + 1) % n);
-        else if (i == n - 1)
-            C.row(i) = x.row(n);
-        else
-            C.row(i) = k[static_cast<std::size_t>(i)] * x.row(i + 1);
-    }
+        if (!o.closed) {                        // end condition
+            if (o.end == HosakaEnd::natural) {  // R''(1) = −6A + 2B + 4C = 0
+                add(row, n - 1, 1.0);
+                add(row, n, 2.0);
+                rhs.row(row) = 3.0 * A.row(n - 1);
+            } else {
+                add(row, n, 1.0);
+                rhs.row(row) = o.end_tangent.transpose();
+            }
+        }
+        Eigen::MatrixXd solution;
+        if (!o.closed) {
+            // Tridiagonal: the Thomas algorithm, O(n). With the unknowns scaled by |A_i| (chord scale)
+            // the rows become m_j + 2(1 + k_j) m_{j+1} + k_j m_{j+2} (and 2m_0 + m_1, m_{n−1} + 2m_n at
+            // natural ends), diagonally dominant, so elimination without pivoting is stable; for
+            // k_i = 1 the rows are B_j + 4B_{j+1} + B_{j+2} already.
+            solution = numeric::solve_tridiagonal(sub, diag, sup, std::move(rhs));
+        } else {
+            // Cyclic (corner entries): SparseLU; the natural ordering keeps the fill to the last rows and columns.
+            Eigen::SparseMatrix<double> M(unknowns, unknowns);
+            M.setFromTriplets(trip.begin(), trip.end());
+            numeric::SparseLu lu(numeric::ColumnOrdering::natural);
+            if (!lu.compute(M)) fail_input(who, "the system of eq (20) is singular for these points");
+            solution = lu.solve(rhs);
+        }
+        return solution;
+    }();
+    A.resize(0, 0);
+    // The curve's derivative rows from x (B_i = x_i; C_i = k_i B_{i+1}, or the unknown C_{n−1});
+    // then B and C of the result, read back from them.
     Eigen::MatrixXd start(2 * n, dim), end(2 * n, dim);
     for (int i = 0; i < n; ++i) {
         start.row(2 * i) = points.row(i);
-        start.row(2 * i + 1) = B.row(i);
+        start.row(2 * i + 1) = x.row(i);
         end.row(2 * i) = points.row((i + 1) % np);
-        end.row(2 * i + 1) = C.row(i);
+        if (o.closed)
+            end.row(2 * i + 1) = k[static_cast<std::size_t>(i)] * x.row((i + 1) % n);
+        else if (i == n - 1)
+            end.row(2 * i + 1) = x.row(n);
+        else
+            end.row(2 * i + 1) = k[static_cast<std::size_t>(i)] * x.row(i + 1);
     }
-    return HosakaSpline{HosakaCurve(1, std::move(start), std::move(end)), k, B, C};
+    x.resize(0, 0);
+    Eigen::MatrixXd B(n, dim), C(n, dim);
+    for (int i = 0; i < n; ++i) {
+        B.row(i) = start.row(2 * i + 1);
+        C.row(i) = end.row(2 * i + 1);
+    }
+    return HosakaSpline{HosakaCurve(1, std::move(start), std::move(end)), std::move(k), std::move(B), std::move(C)};
 }
 
 HosakaCurve hosaka_spline(const PointList& points, int m, HosakaScale scale, bool closed) {
