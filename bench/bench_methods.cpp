@@ -15,6 +15,9 @@
 //  - BM_ConstructFresh/<method>/1000000: the same, but the free memory is returned to the kernel
 //    (malloc_trim, outside the timing) before each iteration, so the construction's arrays are
 //    fresh pages: what one run of the `cagd` command sees. Reported beside the target, not judged.
+//  - BM_ConstructMemory/<method>/1000000: one construction's heap bytes per point (counted by
+//    allocation_tracking.cpp): the peak while it runs and what its result keeps; target: peak ≤ 1.5×
+//    kept.
 //  - BM_RawBoost/<pchip|makima|catmull_rom>/1000000: the peers the boost-* methods wrap, used as a
 //    user would: chord-length parameters and one pchip (makima) per coordinate, or one centripetal
 //    catmull_rom over the points; target: each boost-* method within 1.5× of it, and hermite-a/b
@@ -49,6 +52,7 @@ using std::isnan;
 #include "cagd/methods/method_registry.hpp"
 #include "cagd/spline/bspline.hpp"
 #include "cagd/spline/hermite_spline.hpp"
+#include "allocation_tracking.hpp"
 #include "cagd/core/random_walk.hpp"
 
 using namespace cagd;
@@ -78,6 +82,25 @@ void construct(benchmark::State& state, const std::string& method, bool fresh_me
 }
 
 void BM_Construct(benchmark::State& state, const std::string& method) { construct(state, method, false); }
+
+// Heap bytes of one construction (allocation_tracking.hpp), per point: the peak while it runs and
+// what its result keeps (the curve, its node parameters and report), both above what was live
+// before it; and their ratio (target ≤ 1.5).
+void BM_ConstructMemory(benchmark::State& state, const std::string& method) {
+    const PointList p = walk(state.range(0));
+    methods::interpolate(method, walk(20), false);  // per-process tables, outside the figures
+    for (auto _ : state) {
+        const std::ptrdiff_t before = cagd_bench::live_heap_bytes();
+        cagd_bench::reset_peak_heap_bytes();
+        const methods::InterpolationResult r = methods::interpolate(method, p, false);
+        const std::ptrdiff_t peak = cagd_bench::peak_heap_bytes() - before, kept = cagd_bench::live_heap_bytes() - before;
+        if (!r.outcome.ok()) state.SkipWithError((method + ": " + r.outcome.message).c_str());
+        const double n = static_cast<double>(state.range(0));
+        state.counters["peak_bytes_per_point"] = static_cast<double>(peak) / n;
+        state.counters["retained_bytes_per_point"] = static_cast<double>(kept) / n;
+        state.counters["peak_over_retained"] = static_cast<double>(peak) / static_cast<double>(std::max<std::ptrdiff_t>(kept, 1));
+    }
+}
 
 std::vector<double> chord_parameters(const PointList& p) {
     std::vector<double> tau{0.0};
@@ -222,6 +245,9 @@ const int registered = [] {
     // its other two modes are held to it.
     for (const char* preset : {"pseudo-spline-none", "pseudo-spline-approx"}) names.emplace_back(preset);
     for (const std::string& m : names) {
+        // A method that takes at most some number of points (eigen-spline: its dense system) is
+        // not timed beyond it.
+        if (const long most = methods::find_configuration(m).claims.max_points; most > 0 && most < 100000) continue;
         benchmark::RegisterBenchmark(("BM_Construct/" + m).c_str(), BM_Construct, m)
             ->Arg(100000)
             ->Arg(1000000)
@@ -233,6 +259,7 @@ const int registered = [] {
             ->Unit(benchmark::kMillisecond)
             ->Repetitions(3)
             ->ReportAggregatesOnly(true);
+        benchmark::RegisterBenchmark(("BM_ConstructMemory/" + m).c_str(), BM_ConstructMemory, m)->Arg(1000000)->Iterations(1)->Unit(benchmark::kMillisecond);
     }
     for (const char* m : {"cubic-a", "cubic-b", "hermite-a", "hermite-b"})
         benchmark::RegisterBenchmark((std::string("BM_Jet/") + m).c_str(), BM_Jet, std::string(m))->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
