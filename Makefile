@@ -56,7 +56,8 @@ benchmark:
 	@bash scripts/install-deps.sh reproduce
 	@cmake -S . -B $(BUILD) $(call generator_for,$(BUILD)) $(CMAKE_FLAGS) $(REPRODUCE_ON) >/dev/null
 	@cmake --build $(BUILD) -j$(JOBS) --target cagd_cli
-	@$(TABLE_CACHE) $(BUILD)/cagd benchmark --out results/benchmark --quiet
+	@mkdir -p results/timing
+	@$(TABLE_CACHE) $(BUILD)/cagd benchmark --out results/benchmark --timing-out results/timing/benchmark_random_sets.csv --quiet
 	@gnuplot -e "datadir='results/benchmark'" scripts/plot/benchmark_fig_convergence.gp
 
 bench:

@@ -203,8 +203,10 @@ for bad in "--n 100000" "--n 2" "--n 0" "--grid 100000" "--grid 1" "--n 400 --gr
     # shellcheck disable=SC2086
     run 2 "$o" typical-surface --n 8 --alpha-u -0.5 --alpha-v -0.6 --angle-deg 1 $bad --out "$o"
 done
-run 0 "" benchmark --out "$dir/bench_good" --sizes 6,12 --families circle,helix --methods cubic-b,spiro
-for bad in "--sizes 2" "--sizes 6,x" "--sizes 100001" "--families square" "--methods cubic-z" "--threads -1"; do
+run 0 "" benchmark --out "$dir/bench_good" --sizes 6,12 --families circle,helix --methods cubic-b,spiro --random-sets 20 --timing-out "$dir/bench_seconds.csv"
+[ -s "$dir/bench_good/random_sets.csv" ] && [ -s "$dir/bench_seconds.csv" ] || fail "benchmark wrote no random_sets.csv or no --timing-out file"
+for bad in "--sizes 2" "--sizes 6,x" "--sizes 100001" "--families square" "--methods cubic-z" "--threads -1" "--random-sets -1" "--random-sizes 8,2" \
+    "--scatter-max-points -1"; do
     # shellcheck disable=SC2086
     run 2 "" benchmark --out "$dir/bench_bad" $bad
     [ ! -e "$dir/bench_bad" ] || fail "benchmark $bad left $dir/bench_bad"

@@ -7,12 +7,17 @@
 //   convergence_<family>.dat  the distance against n per configuration (uniform spacing; closed where
 //                           the family is), one gnuplot index block per configuration, its first
 //                           line naming it (scripts/plot/benchmark_fig_convergence.gp draws them)
-// Deterministic: no timing. Progress on stderr when it is a terminal.
+//   random_sets.csv         per kind × size × configuration, the outcomes on --random-sets seeded
+//                           random sets (compare/random_sets.hpp); leaderboard.md gets their failure rates
+// Deterministic: no timing in DIR. The random sets' run times (median, 90th percentile, largest per
+// configuration) go to --timing-out FILE when given. Progress on stderr when it is a terminal.
 #include <algorithm>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 
+#include "cagd/compare/random_sets.hpp"
 #include "cagd/compare/truth_benchmark.hpp"
 #include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
@@ -27,8 +32,8 @@ namespace {
 constexpr double kDrawnFloor = 1e-17;
 
 struct BenchmarkArgs {
-    std::string out, sizes = "6,12,24,48,96,192,384,768", families, methods;
-    int threads = 0;
+    std::string out, sizes = "6,12,24,48,96,192,384,768", families, methods, random_sizes = "8,32,128", timing_out;
+    int threads = 0, random_sets = 1000, scatter_max_points = 32;
 };
 
 std::vector<std::string> split(const std::string& text) {
@@ -39,11 +44,10 @@ std::vector<std::string> split(const std::string& text) {
     return out;
 }
 
-int run_benchmark(const BenchmarkArgs& a) {
-    const char* who = "cagd benchmark";
-    compare::TruthBenchmarkOptions options;
-    options.sizes.clear();
-    for (const std::string& s : split(a.sizes)) {
+// A comma-separated list of numbers of points in 3..100000, given to `option`.
+std::vector<int> parse_sizes(const std::string& option, const std::string& text) {
+    std::vector<int> sizes;
+    for (const std::string& s : split(text)) {
         std::size_t used = 0;
         int n = 0;
         try {
@@ -51,17 +55,38 @@ int run_benchmark(const BenchmarkArgs& a) {
         } catch (const std::exception&) {
             used = 0;
         }
-        if (used != s.size() || n < 3 || n > 100000) fail_input(who, "--sizes: \"" + s + "\" is not a whole number of points in 3..100000");
-        options.sizes.push_back(n);
+        if (used != s.size() || n < 3 || n > 100000) fail_input("cagd benchmark", option + ": \"" + s + "\" is not a whole number of points in 3..100000");
+        sizes.push_back(n);
     }
+    return sizes;
+}
+
+int run_benchmark(const BenchmarkArgs& a) {
+    compare::TruthBenchmarkOptions options;
+    options.sizes = parse_sizes("--sizes", a.sizes);
+    compare::RandomSetOptions random;
+    random.sizes = parse_sizes("--random-sizes", a.random_sizes);
+    random.sets = a.random_sets;
+    random.scatter_max_points = a.scatter_max_points;
     options.families = split(a.families);
     for (const std::string& f : options.families) compare::find_truth_family(f);  // bad names before any work
     for (const std::string& m : split(a.methods)) options.methods.push_back(methods::find_configuration(m).name);
-    options.threads = a.threads;
+    options.threads = random.threads = a.threads;
+    random.methods = options.methods;
     OutputDirectory out(a.out);  // checked before the work
+    std::optional<OutputFile> timing;
+    if (!a.timing_out.empty()) timing.emplace(a.timing_out, "--timing-out");  // checked before the work too
     if (progress_enabled()) std::cerr << "cagd benchmark: " << options.sizes.size() << " sizes\n";
     const std::vector<compare::TruthRun> runs = compare::run_truth_benchmark(options);
     const std::vector<compare::ConvergenceOrder> orders = compare::convergence_orders(runs);
+    std::vector<compare::RandomSetSummary> random_runs;
+    if (random.sets > 0) {
+        if (progress_enabled()) std::cerr << "cagd benchmark: " << random.sets << " random sets per kind and size\n";
+        random_runs = compare::run_random_sets(random);
+        CsvOutput w(out.staged("random_sets.csv"), compare::random_sets_header());
+        for (const auto& row : compare::random_sets_rows(random_runs)) w.row_text(row);
+        w.commit();
+    }
     {
         CsvOutput w(out.staged("truth_runs.csv"), compare::truth_runs_header());
         for (const auto& row : compare::truth_runs_rows(runs)) w.row_text(row);
@@ -74,7 +99,7 @@ int run_benchmark(const BenchmarkArgs& a) {
     }
     {
         OutputFile f(out.staged("leaderboard.md"));
-        f.stream() << compare::truth_leaderboard_markdown(runs, orders);
+        f.stream() << compare::truth_leaderboard_markdown(runs, orders) << compare::random_sets_markdown(random_runs);
         f.commit();
     }
     for (const compare::TruthFamily& family : compare::truth_families()) {
@@ -93,6 +118,11 @@ int run_benchmark(const BenchmarkArgs& a) {
         f.commit();
     }
     out.commit();
+    if (timing) {
+        CsvOutput w(*timing, compare::random_set_timing_header());
+        for (const auto& row : compare::random_set_timing_rows(random_runs)) w.row_text(row);
+        w.commit();
+    }
     return 0;
 }
 
@@ -101,11 +131,19 @@ int run_benchmark(const BenchmarkArgs& a) {
 Command add_benchmark_command(CLI::App& app) {
     auto a = std::make_shared<BenchmarkArgs>();
     auto* c = app.add_subcommand("benchmark", "Every method on points sampled from curves with a known answer: errors, convergence orders, leaderboards");
-    c->add_option("--out", a->out, "directory for truth_runs.csv, convergence_orders.csv, leaderboard.md, convergence_<family>.dat")->required();
+    c->add_option("--out", a->out, "directory for truth_runs.csv, convergence_orders.csv, random_sets.csv, leaderboard.md, convergence_<family>.dat")->required();
     c->add_option("--sizes", a->sizes, "numbers of points, comma-separated (each 3..100000)")->capture_default_str();
     c->add_option("--families", a->families, "truth families, comma-separated (absent: all: line, circle, ellipse, epitrochoid, clothoid, log-aesthetic, helix, trefoil)");
     c->add_option("--methods", a->methods, "configurations, comma-separated (absent: every configuration)");
     c->add_option("--threads", a->threads, "cases measured at once (0: the hardware's; results do not depend on it)")->check(CLI::Range(0, 256));
+    c->add_option("--random-sets", a->random_sets, "seeded random sets per kind (walk, scatter) and size, for the failure rates (0: none)")
+        ->capture_default_str()
+        ->check(CLI::Range(0, 100000));
+    c->add_option("--random-sizes", a->random_sizes, "numbers of points of the random sets, comma-separated (each 3..100000)")->capture_default_str();
+    c->add_option("--scatter-max-points", a->scatter_max_points, "scattered random sets only up to this many points (walks at every --random-sizes)")
+        ->capture_default_str()
+        ->check(CLI::Range(0, 100000));
+    c->add_option("--timing-out", a->timing_out, "CSV file for the random sets' run times per configuration (median, 90th percentile, largest); absent: not written");
     return {c, [a] { return run_benchmark(*a); }};
 }
 
