@@ -259,7 +259,9 @@ Construction is timed with the allocator keeping the memory it frees (each itera
 last one's pages, as in a program that constructs repeatedly); beside each 10^6 figure stands the
 same construction into fresh pages (`BM_ConstructFresh`, what one run of the `cagd` command sees,
 slower by the page faults). Constructions, Boost's peer and the jets are each the median of 3 or
-5 repetitions.
+5 repetitions. Memory is the heap in use, counted by the benchmark's own allocator entry points
+(`bench/allocation_tracking.cpp`): the peak while one construction runs and what its result keeps
+(the curve, its node parameters, its report), each less what was in use before, per point.
 
 """
 
