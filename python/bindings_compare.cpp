@@ -11,7 +11,7 @@ py::dict comparison_dict(const std::vector<cagd::compare::MethodComparison>& row
     // Each measure with a validity mask (cagd.compare turns the pairs into masked arrays).
     const std::vector<std::string> names = {
         "length",    "area",  "pseudo_energy",      "bending_energy", "curvature_sign_changes", "max_abs_curvature", "max_abs_curvature_derivative",
-        "overshoot", "spans", "locality_footprint", "seconds",        "max_abs_torsion"};
+        "overshoot", "spans", "locality_footprint", "seconds",        "max_abs_torsion", "shared_seconds"};
     std::vector<py::array_t<double>> values;
     std::vector<py::array_t<bool>> valid;
     for (std::size_t k = 0; k < names.size(); ++k) {
@@ -38,6 +38,7 @@ py::dict comparison_dict(const std::vector<cagd::compare::MethodComparison>& row
             c.locality_footprint ? std::optional<double>(*c.locality_footprint) : std::nullopt,
             built ? std::optional<double>(c.seconds) : std::nullopt,
             measured && dimension == 3 ? std::optional<double>(c.fairness->max_abs_torsion) : std::nullopt,
+            c.status != "not applicable" ? std::optional<double>(c.shared_seconds) : std::nullopt,
         };
         for (std::size_t k = 0; k < names.size(); ++k) {
             values[k].mutable_data()[i] = v[k].value_or(0.0);

@@ -200,10 +200,13 @@ def compare(points: _npt.ArrayLike, closed: bool = False, methods: Union[None, s
     names, or one name). ``method``, ``status`` ("ok", "not applicable", "refused", "no result",
     "cusp") and ``note`` are lists of str; each measure
     (length, area, pseudo_energy, bending_energy, curvature_sign_changes, max_abs_curvature,
-    max_abs_curvature_derivative, overshoot, spans, locality_footprint, seconds, max_abs_torsion)
-    is a ``numpy.ma.MaskedArray``, masked where the measure does not exist (method not applicable,
-    no result, a cusp's curvature, an open curve's area; area and curvature_sign_changes for space
-    points, max_abs_torsion for planar ones), never NaN.
+    max_abs_curvature_derivative, overshoot, spans, locality_footprint, seconds, max_abs_torsion,
+    shared_seconds) is a ``numpy.ma.MaskedArray``, masked where the measure does not exist (method
+    not applicable, no result, a cusp's curvature, an open curve's area; area and
+    curvature_sign_changes for space points, max_abs_torsion for planar ones), never NaN.
+    ``seconds`` times one construction; ``shared_seconds`` what the configuration's builds share
+    and load once before it (the pseudo-spline's tables), timed apart so that neither is charged
+    to whichever configuration runs first.
 
     >>> import numpy as np
     >>> t = compare(np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 0.0], [3.0, 1.0]]), methods=["cubic-b", "pseudo-spline"])

@@ -144,6 +144,9 @@ def test_compare_on_space_points():
     knot = np.c_[np.sin(t) + 2 * np.sin(2 * t), np.cos(t) - 2 * np.cos(2 * t), -np.sin(3 * t)]
     r = cagd.compare(knot, closed=True, methods=["pseudo-spline-approx", "cubic-b", "curvature-profile"], threads=1)
     assert r["status"] == ["ok", "ok", "not applicable"]
+    # the shared tables' load is timed apart from the construction; none for a method not applied
+    assert list(r["shared_seconds"].mask) == [False, False, True] and r["shared_seconds"][0] >= 0.0
+    assert list(r["seconds"].mask) == [False, False, True] and r["seconds"][1] > 0.0
     assert r["area"].mask.all() and r["curvature_sign_changes"].mask.all()
     assert not r["max_abs_torsion"].mask[0] and r["max_abs_torsion"][0] > 0.0
     # the table's torsion is the largest |τ| of the curve at the same samples (128 per span)
