@@ -131,9 +131,7 @@ void bind_surface_export(py::module_& m, const char* name, const char* kind, con
             cagd::Outcome written;
             {
                 py::gil_scoped_release release;
-                const cagd::exports::SurfaceForm form = cagd::exports::to_bezier(s);
-                if (!form.exact) written = {cagd::Status::not_representable, "the Bézier patches differ from the surface by " + std::to_string(form.conversion_error)};
-                else written = cagd::exports::write_surface(out.stream(), f, form, {kind, {}});
+                written = cagd::exports::write_surface(out.stream(), f, cagd::exports::to_bezier(s), {kind, {}});
             }
             require_ok(written);
             out.commit();

@@ -30,10 +30,9 @@ void require(const std::string& value, const char* kind, const char* option) {
     if (value.empty()) fail_input("cagd surface", std::string("--kind ") + kind + " needs " + option);
 }
 
-// The exact patches of a polynomial surface in json or step; a conversion that is not exact to
-// rounding is a numerical outcome, never written.
+// The exact patches of a polynomial surface in json or step (exports::write_surface refuses a form
+// that is not exact: a numerical outcome, nothing written).
 void write_patches(const exports::SurfaceForm& form, exports::CurveFormat format, const exports::SurfaceProvenance& provenance, OutputFile& out) {
-    if (!form.exact) throw NoResult("the Bezier patches differ from the surface by " + full_precision(form.conversion_error) + ": no exact form to write");
     if (const Outcome written = exports::write_surface(out.stream(), format, form, provenance); !written.ok()) throw NoResult(written.message);
 }
 

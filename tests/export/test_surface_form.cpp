@@ -196,6 +196,21 @@ TEST(SurfaceJson, BadDocumentsAreRefusedNamingTheMember) {
     EXPECT_NE(refused("{\"format\": \"cagd-curve\", \"format_version\": 1}").find("cagd-surface"), std::string::npos);
 }
 
+// A form that is not exact to rounding is never written, in either format: an outcome, not input.
+TEST(SurfaceFormats, AFormThatIsNotExactIsNotWritten) {
+    SurfaceForm f = to_bezier(surface::HosakaPatch(corners_of(1, 3, 7u)));
+    ASSERT_TRUE(f.exact);
+    f.exact = false;
+    f.conversion_error = 2.5e-3;
+    for (const CurveFormat format : {CurveFormat::json, CurveFormat::step}) {
+        std::ostringstream out;
+        const Outcome written = write_surface(out, format, f, {});
+        EXPECT_EQ(written.status, Status::not_representable);
+        EXPECT_NE(written.message.find("0.0025"), std::string::npos) << written.message;
+        EXPECT_TRUE(out.str().empty()) << "nothing written";
+    }
+}
+
 TEST(SurfaceFormats, JsonAndStepOnlyWithTheirLimits) {
     const SurfaceForm f = to_bezier(surface::HosakaPatch(corners_of(1, 3, 7u)));
     std::ostringstream out;

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <filesystem>
 
+#include "cagd/core/errors.hpp"
 #include "cagd/export/bspline_form.hpp"
 #include "cagd/export/dxf_writer.hpp"
 #include "cagd/export/step_writer.hpp"
@@ -105,6 +106,8 @@ Outcome write_surface(std::ostream& out, CurveFormat format, const SurfaceForm& 
     const CurveFormatInfo& info = curve_format_info(format);
     if (!info.surfaces || format == CurveFormat::csv)
         fail_input(who, std::string(info.name) + " does not take surfaces; they leave in json or step (and as csv grids from the command)");
+    // A conversion that is not exact to rounding is a numerical outcome, never written.
+    if (!form.exact) return {Status::not_representable, "the Bézier patches differ from the surface by " + full_precision(form.conversion_error) + ": no exact form to write"};
     for (const surface::ControlNet& net : form.pieces.nets)
         for (const Eigen::MatrixXd& c : net)
             if (!c.allFinite()) return {Status::not_representable, "a control point of the surface is not finite"};

@@ -76,8 +76,9 @@ struct ExportOptions {
 Outcome write_curve(std::ostream& out, CurveFormat format, const Curve& curve, const CurveProvenance& provenance, const ExportOptions& options);
 
 /// Writes the patches of a surface in json or step. InvalidInput for another format, or step
-/// without OpenCASCADE or above its degree limit; Outcome not ok for a control point that is not
-/// finite or a surface OpenCASCADE rejects.
+/// without OpenCASCADE or above its degree limit; Outcome not_representable (nothing written) for a
+/// form that is not exact (SurfaceForm::exact false) or a control point that is not finite, not ok
+/// for a surface OpenCASCADE rejects.
 Outcome write_surface(std::ostream& out, CurveFormat format, const SurfaceForm& form, const SurfaceProvenance& provenance);
 
 }  // namespace cagd::exports
