@@ -23,19 +23,18 @@ if (!exists("f_combs")) f_combs = datadir.'/'.prefix.'combs.csv'
 if (!exists("f_kappa")) f_kappa = datadir.'/'.prefix.'curvature.csv'
 if (!exists("point_every")) point_every = 1
 if (!exists("space")) space = 0
-# The position of the column called `name` in the header line of file f (0 if there is none).
-colnum(f, name) = int(system("awk -F, -v name='".name."' 'NR == 1 { sub(/\\r$/, \"\"); for (i = 1; i <= NF; i++) if ($i == name) { print i; exit } print 0; exit }' '".f."'"))
-column_words(name) = system("tail -n +2 '".f_methods."' | cut -d, -f".colnum(f_methods, name)." | tr '\n' ' '")
-names = column_words("method")
-curves_first = column_words("curves_first"); curves_count = column_words("curves_count")
-kappa_first = column_words("curvature_first"); kappa_count = column_words("curvature_count")
-combs_first = column_words("combs_first"); combs_count = column_words("combs_count")
-comb_stride = column_words("comb_stride"); comb_scale = column_words("comb_scale")
-statuses = column_words("status")
-px = colnum(f_points, "x"); py = colnum(f_points, "y"); pz = colnum(f_points, "z")
-cx = colnum(f_curves, "x"); cy = colnum(f_curves, "y"); cz = colnum(f_curves, "z")
-bx = colnum(f_combs, "x"); by = colnum(f_combs, "y"); btx = colnum(f_combs, "tip_x"); bty = colnum(f_combs, "tip_y")
-ks = colnum(f_kappa, "s"); kk = colnum(f_kappa, "kappa"); kt = colnum(f_kappa, "tau")
+# The positions of the columns called `names` (space-separated) in the header line of file f, as
+# words (0 where there is none): one awk run per file.
+colnums(f, names) = system("awk -F, -v names='".names."' 'NR == 1 { sub(/\\r$/, \"\"); for (i = 1; i <= NF; i++) c[$i] = i; n = split(names, w, \" \"); for (j = 1; j <= n; j++) printf \"%d \", c[w[j]] + 0; exit }' '".f."'")
+# methods.csv's columns as gnuplot strings of words, one per row: `pairs` names variable:column;
+# one awk run writes the assignments, and eval makes them.
+column_words(pairs) = system("awk -F, -v pairs='".pairs."' 'NR == 1 { sub(/\\r$/, \"\"); for (i = 1; i <= NF; i++) c[$i] = i; n = split(pairs, p, \" \"); next } { sub(/\\r$/, \"\"); for (j = 1; j <= n; j++) { split(p[j], vc, \":\"); v[j] = v[j] (NR > 2 ? \" \" : \"\") ((vc[2] in c) ? $c[vc[2]] : \"\") } } END { for (j = 1; j <= n; j++) { split(p[j], vc, \":\"); printf \"%s = \\\"%s\\\"; \", vc[1], v[j] } }' '".f_methods."'")
+eval column_words("names:method curves_first:curves_first curves_count:curves_count kappa_first:curvature_first kappa_count:curvature_count combs_first:combs_first combs_count:combs_count comb_stride:comb_stride comb_scale:comb_scale statuses:status")
+p_cols = colnums(f_points, "x y z"); c_cols = colnums(f_curves, "x y z"); b_cols = colnums(f_combs, "x y tip_x tip_y"); k_cols = colnums(f_kappa, "s kappa tau")
+px = int(word(p_cols, 1)); py = int(word(p_cols, 2)); pz = int(word(p_cols, 3))
+cx = int(word(c_cols, 1)); cy = int(word(c_cols, 2)); cz = int(word(c_cols, 3))
+bx = int(word(b_cols, 1)); by = int(word(b_cols, 2)); btx = int(word(b_cols, 3)); bty = int(word(b_cols, 4))
+ks = int(word(k_cols, 1)); kk = int(word(k_cols, 2)); kt = int(word(k_cols, 3))
 n = words(names)
 # rows of method i in a figure file: first(list, i) .. last(list, counts, i). A method without rows
 # (not applicable, refused, no result) reads one row and draws nothing ((has(...) ? … : NaN) in the
