@@ -539,8 +539,13 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
         }
         Eigen::VectorXd delta;
         if (options.step == NewtonStep::pseudo_inverse) {
-            Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(Eigen::MatrixXd(sys.jacobian));
+            // The threshold before the decomposition: the Z factor is built for the rank the
+            // threshold gives at compute time, and solve() applies it for the rank it gives then.
+            // Set afterwards (as before 2026-11-27), a lower rank made solve() apply Z reflectors
+            // never computed: uninitialised memory (valgrind), and rarely another Newton path.
+            Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod;
             cod.setThreshold(kRankThreshold);
+            cod.compute(Eigen::MatrixXd(sys.jacobian));
             sol.rank = static_cast<int>(cod.rank());
             delta = cod.solve(sys.f);
         } else {
