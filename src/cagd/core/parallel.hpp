@@ -18,15 +18,25 @@
 
 namespace cagd {
 
-/// The hardware's thread count (at least 1): the default for the callers' `threads`.
-inline int hardware_threads() { return static_cast<int>(std::max(1u, std::thread::hardware_concurrency())); }
+/// False in a WebAssembly build without threads: parallel_for then runs on the calling thread.
+#if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
+inline constexpr bool kThreadsAvailable = false;
+#else
+inline constexpr bool kThreadsAvailable = true;
+#endif
+
+/// The hardware's thread count (at least 1): the default for the callers' `threads`. 1 in a
+/// WebAssembly build without threads (Emscripten without -pthread cannot start a std::thread).
+inline int hardware_threads() { return kThreadsAvailable ? static_cast<int>(std::max(1u, std::thread::hardware_concurrency())) : 1; }
 
 template <class Body>
 /// Runs body(k) for k = 0..count−1 on `threads` threads (at most count), each k once; an exception
 /// thrown by body stops the others from starting new indices and the one of the lowest failing index
 /// is rethrown here. progress(done, count) is called every 256 indices and at the end.
 void parallel_for(long count, int threads, const Body& body, const std::function<void(long, long)>& progress = {}) {
-    threads = static_cast<int>(std::clamp<long>(threads, 1, std::max(count, 1L)));
+    // Without thread support (WebAssembly without -pthread) every index runs on the calling thread;
+    // the results are the same (see above).
+    threads = static_cast<int>(std::clamp<long>(threads, 1, kThreadsAvailable ? std::max(count, 1L) : 1L));
     std::atomic<long> next{0}, done{0}, error_index{count};
     std::mutex error_mutex;
     std::exception_ptr error;

@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <vector>
 
@@ -19,8 +20,15 @@ void put_sample_number(std::ostream& out, double v) {
         return;
     }
     char buf[64];
+#if defined(__cpp_lib_to_chars)
     const std::to_chars_result r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, kSampleDigits);
     out.write(buf, r.ptr - buf);
+#else
+    // The standard library of the WebAssembly build (Emscripten's libc++ 14) has no floating-point
+    // to_chars; printf's %.*g is what to_chars(general, precision) is specified to print.
+    const int length = std::snprintf(buf, sizeof buf, "%.*g", kSampleDigits, v);
+    out.write(buf, length);
+#endif
 }
 
 }  // namespace

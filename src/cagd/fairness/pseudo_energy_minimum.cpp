@@ -7,7 +7,9 @@
 #include <boost/math/tools/minima.hpp>
 #include <cmath>
 #include <limits>
+#if CAGD_WITH_NLOPT
 #include <nlopt.hpp>
+#endif
 #include <numbers>
 #include <random>
 
@@ -74,6 +76,7 @@ bool is_undefined_node(double theta0, double theta1) { return is_multiple_of_pi(
 
 PseudoEnergyMinimum minimize_pseudo_energy_reference(double theta0, double theta1, const ReferenceMinimizerOptions& opt) {
     require_angles("minimize_pseudo_energy_reference", theta0, theta1);
+    require_built_with(OptionalDependency::ceres, "cagd::fairness::minimize_pseudo_energy_reference");
     if (is_undefined_node(theta0, theta1)) return undefined_node(theta0, theta1);
     long evaluations = 0;
     std::vector<ScanPoint> starts = scan_minima(planar_scan_energy(theta0, theta1), opt.box, evaluations);
@@ -132,6 +135,8 @@ PseudoEnergyMinimum minimize_pseudo_energy_reference(double theta0, double theta
 
 PseudoEnergyMinimum minimize_pseudo_energy_nlopt(double theta0, double theta1, const ScanBox& box) {
     require_angles("minimize_pseudo_energy_nlopt", theta0, theta1);
+    require_built_with(OptionalDependency::nlopt, "cagd::fairness::minimize_pseudo_energy_nlopt");
+#if CAGD_WITH_NLOPT
     if (is_undefined_node(theta0, theta1)) return undefined_node(theta0, theta1);
     long evaluations = 0;
     const std::vector<ScanPoint> starts = scan_minima(planar_scan_energy(theta0, theta1), box, evaluations);
@@ -186,6 +191,10 @@ PseudoEnergyMinimum minimize_pseudo_energy_nlopt(double theta0, double theta1, c
         runs.push_back(d);
     }
     return choose(theta0, theta1, runs, evaluations);
+#else
+    (void)box;
+    return {};
+#endif
 }
 
 std::vector<LocalMinimum> local_minima_census(double theta0, double theta1, const ScanBox& box) {
@@ -207,6 +216,8 @@ std::vector<LocalMinimum> local_minima_census(double theta0, double theta1, cons
 std::vector<LocalMinimum> local_minima_multistart(double theta0, double theta1, int starts, const ScanBox& box, unsigned seed) {
     const char* who = "cagd::fairness::local_minima_multistart";
     require_angles("local_minima_multistart", theta0, theta1);
+    require_built_with(OptionalDependency::nlopt, who);
+#if CAGD_WITH_NLOPT
     if (starts < 1 || starts > kMaxMultistartStarts) fail_input(who, "starts = " + std::to_string(starts) + "; allowed 1.." + std::to_string(kMaxMultistartStarts));
     if (!(box.r_lo > 0 && box.r_hi > box.r_lo && std::isfinite(box.r_hi)))
         fail_input(who, "the box [" + full_precision(box.r_lo) + ", " + full_precision(box.r_hi) + "] must satisfy 0 < r_lo < r_hi < inf");
@@ -267,6 +278,10 @@ std::vector<LocalMinimum> local_minima_multistart(double theta0, double theta1, 
     std::sort(found.begin(), found.end());
     for (const auto& m : found) out.push_back({m[0], std::exp(m[1]), std::exp(m[2])});
     return out;
+#else
+    (void)starts, (void)box, (void)seed;
+    return {};
+#endif
 }
 
 PseudoEnergyMinimum minimize_pseudo_energy(double theta0, double theta1, const FastMinimizerOptions& opt, const std::vector<Eigen::Vector2d>& warm) {

@@ -143,6 +143,7 @@ SpacePseudoEnergyMinimum minimize_space_pseudo_energy(double theta0, double thet
 
 SpacePseudoEnergyMinimum minimize_space_pseudo_energy_reference(double theta0, double theta1, double phi, const ReferenceMinimizerOptions& opt) {
     require_space_angles("cagd::fairness::minimize_space_pseudo_energy_reference", theta0, theta1, phi);
+    require_built_with(OptionalDependency::ceres, "cagd::fairness::minimize_space_pseudo_energy_reference");
     if (is_undefined_space_direction(theta0, theta1)) return undefined_direction(theta0, theta1, phi);
     long evaluations = 0;
     std::vector<ScanPoint> starts = detail::scan_minima(space_scan_energy(theta0, theta1, phi), opt.box, evaluations);

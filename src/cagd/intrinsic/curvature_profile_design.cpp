@@ -1,6 +1,8 @@
 #include "cagd/intrinsic/curvature_profile_design.hpp"
 
+#if CAGD_WITH_CERES
 #include <ceres/ceres.h>
+#endif
 #include <ceres/jet.h>
 
 #include <algorithm>
@@ -11,6 +13,7 @@
 #include <string>
 
 #include "cagd/analysis/curve_measures.hpp"
+#include "cagd/core/optional_dependencies.hpp"
 #include "cagd/intrinsic/detail/bezier_extraction.hpp"
 #include "cagd/numeric/sparse_lu.hpp"
 #include "cagd/spline/hermite_spline.hpp"
@@ -551,7 +554,8 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
         } else {
             const Eigen::SparseMatrix<double>& J = sys.jacobian;
             const std::span<const int> outer(J.outerIndexPtr(), static_cast<std::size_t>(J.outerSize()) + 1), inner(J.innerIndexPtr(), static_cast<std::size_t>(J.nonZeros()));
-            if (!J.isCompressed() || !std::ranges::equal(outer, analysed_outer) || !std::ranges::equal(inner, analysed_inner)) {
+            if (!J.isCompressed() || !std::equal(outer.begin(), outer.end(), analysed_outer.begin(), analysed_outer.end()) ||
+                !std::equal(inner.begin(), inner.end(), analysed_inner.begin(), analysed_inner.end())) {
                 lu.analyze_pattern(J);
                 analysed_outer.assign(outer.begin(), outer.end());
                 analysed_inner.assign(inner.begin(), inner.end());
@@ -584,6 +588,7 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
 
 CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& P, const NewtonOptions& options) { return solve_curvature_profile(P, c2_start(P), options); }
 
+#if CAGD_WITH_CERES
 namespace {
 
 struct DesignResidual {
@@ -615,10 +620,13 @@ constexpr double kLmFunctionTolerance = 1e-20, kLmGradientTolerance = 1e-20, kLm
 constexpr double kLmShortestSpan = 1e-6;
 
 }  // namespace
+#endif
 
 CurvatureProfileSolution solve_curvature_profile_levenberg_marquardt(const CurvatureProfileProblem& P, const Eigen::VectorXd& start) {
     const std::string who = "intrinsic::solve_curvature_profile_levenberg_marquardt";
     require_valid_problem(P, who);
+    require_built_with(OptionalDependency::ceres, who);
+#if CAGD_WITH_CERES
     CurvatureProfileSolution sol;
     sol.unknowns = design_unknowns(P);
     sol.equations = design_equations(P);
@@ -652,6 +660,10 @@ CurvatureProfileSolution solve_curvature_profile_levenberg_marquardt(const Curva
     sol.outcome = {summary.termination_type == ceres::CONVERGENCE ? Status::no_solution : Status::no_convergence,
                    "Ceres Levenberg–Marquardt (" + summary.message + ") ended with ‖f‖∞ = " + fmt(res) + ", worst equation " + worst_equation(P, f)};
     return sol;
+#else
+    (void)start;
+    return {};
+#endif
 }
 
 void add_natural_open_ends(CurvatureProfileProblem& problem) {

@@ -1,12 +1,15 @@
 #include "cagd/smoothing/elastic_space_curve.hpp"
 
+#if CAGD_WITH_CERES
 #include <ceres/ceres.h>
+#endif
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
 
+#include "cagd/core/optional_dependencies.hpp"
 #include "cagd/numeric/gauss_legendre.hpp"
 #include "cagd/smoothing/elastic_line.hpp"
 
@@ -94,6 +97,8 @@ ElasticSpaceCurve elastic_space_curve(const std::vector<double>& x, const Eigen:
     const std::vector<double> lambda = per_point_lambda(lambda_in, x.size(), who);
     for (std::size_t i = 0; i < lambda.size(); ++i)
         if (lambda[i] == 0.0) fail_input(who, "lambda[" + std::to_string(i) + "] = 0; the space elastic line needs finite springs (lambda > 0)");
+    require_built_with(OptionalDependency::ceres, who);
+#if CAGD_WITH_CERES
 
     ElasticSpaceCurve out;
     for (std::size_t i = 0; i + 1 < x.size(); ++i)
@@ -144,6 +149,9 @@ ElasticSpaceCurve elastic_space_curve(const std::vector<double>& x, const Eigen:
         out.slopes.row(k) << b[1], b[3];
     }
     return out;
+#else
+    return {};
+#endif
 }
 
 }  // namespace cagd::smoothing

@@ -4,9 +4,11 @@
 // seeds, Newton's method in ρ = log r, the reference descents (Ceres CG on the Romberg energy,
 // Newton polish) and the choice among distinct minima. The callers supply the segment's energy
 // as a function of (r0, r1). See pseudo_energy_minimum.hpp for the method and its stopping rules.
+#if CAGD_WITH_CERES
 #include <ceres/gradient_problem.h>
 #include <ceres/gradient_problem_solver.h>
 #include <glog/logging.h>
+#endif
 
 #include <Eigen/Dense>
 #include <boost/math/tools/minima.hpp>
@@ -18,6 +20,7 @@
 #include <utility>
 #include <vector>
 
+#include "cagd/core/optional_dependencies.hpp"
 #include "cagd/fairness/hermite_segment.hpp"
 #include "cagd/fairness/pseudo_energy_minimum.hpp"
 
@@ -280,6 +283,7 @@ Descent newton_descent(const Energy& energy, double rho0, double rho1) {
 // J of the segment at r = exp(ρ) with its gradient in ρ: energy(r0, r1, with_gradient).
 using SegmentEnergyAt = std::function<SegmentEnergy(double r0, double r1, bool with_gradient)>;
 
+#if CAGD_WITH_CERES
 class RombergPseudoEnergy final : public ceres::FirstOrderFunction {
 public:
     RombergPseudoEnergy(SegmentEnergyAt energy, long* evaluations) : energy_(std::move(energy)), evaluations_(evaluations) {}
@@ -334,6 +338,13 @@ inline std::vector<Descent> reference_descents(const SegmentEnergyAt& romberg, c
     }
     return runs;
 }
+#else
+// Without Ceres the reference minimisers refuse before they get here (require_built_with).
+inline std::vector<Descent> reference_descents(const SegmentEnergyAt&, const std::vector<ScanPoint>&, long&) {
+    require_built_with(OptionalDependency::ceres, "cagd::fairness reference minimiser");
+    return {};
+}
+#endif
 
 // The converged descents that reached distinct minima (|Δρ| > kSameMinimum), lowest J first.
 inline std::vector<const Descent*> distinct_minima(const std::vector<Descent>& runs) {
