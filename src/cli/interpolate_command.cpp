@@ -50,11 +50,8 @@ int run_interpolate(const InterpolateArgs& a) {
     // The method's own parameter (t: chord length, arc length, … as the registry states), or the span index u.
     const methods::MethodParameterCurve in_method_parameter(*r.interpolant);
     const Curve& curve = a.parameter == "span" ? static_cast<const Curve&>(*r.interpolant->curve) : in_method_parameter;
-    exports::CurveProvenance provenance{.method = method.name,
-                                        .parameters = values.as_text(),
-                                        .parameter = a.parameter == "span" ? "span index u" : method.claims(values).parameter,
-                                        .closed = a.closed,
-                                        .points = points};
+    exports::CurveProvenance provenance = exports::method_provenance(method, values, points, a.closed);
+    if (a.parameter == "span") provenance.parameter = "span index u";
     exports::ExportOptions options;
     options.approximation.relative_tolerance = a.tolerance;
     options.approximation.degree = a.approximation_degree;

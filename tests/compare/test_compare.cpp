@@ -729,3 +729,76 @@ TEST(Compare, AMethodThatRefusesThePointsIsARowAndTheOthersAreMeasured) {
     repeated << 0, 0, 1, 1, 1, 1, 2, 0;
     EXPECT_THROW(compare_methods(repeated, o), InvalidInput);
 }
+
+// ---- the viewer's pieces: span displacements, configurations with overrides, drawing-only runs ----
+
+TEST(Compare, SpanDisplacementsAreZeroOutsideALocalMethodsFootprint) {
+    // 15 points, the middle one moved: the S-spline with m = 1 moves the six spans around it only
+    // (Kuroda et al.; the locality footprint 6 of the comparison tables), the cubic spline every span.
+    PointList p(15, 2), q;
+    for (int i = 0; i < 15; ++i) p.row(i) << i, std::sin(0.8 * i) + 0.1 * i;
+    q = p;
+    q(7, 1) += 0.3;
+    const auto curve = [](const std::string& name, const PointList& pts) { return *cagd::methods::interpolate(name, pts, false).interpolant; };
+    const std::vector<double> local = cagd::compare::span_displacements(curve("s-spline-m1", p), curve("s-spline-m1", q));
+    ASSERT_EQ(local.size(), 14u);
+    for (std::size_t k = 0; k < local.size(); ++k) {
+        if (k >= 4 && k <= 9) EXPECT_GT(local[k], 1e-6) << "span " << k;
+        else EXPECT_EQ(local[k], 0.0) << "span " << k;
+    }
+    const std::vector<double> global = cagd::compare::span_displacements(curve("cubic-b", p), curve("cubic-b", q));
+    for (std::size_t k = 0; k < global.size(); ++k) EXPECT_GT(global[k], 0.0) << "span " << k;
+    // The same curve has not moved; unequal span counts are refused with both counts.
+    for (double d : cagd::compare::span_displacements(curve("cubic-b", p), curve("cubic-b", p))) EXPECT_EQ(d, 0.0);
+    try {
+        cagd::compare::span_displacements(curve("cubic-b", p), curve("cubic-b", PointList(p.topRows(10))));
+        FAIL() << "no throw";
+    } catch (const cagd::InvalidInput& e) {
+        EXPECT_NE(std::string(e.what()).find("15 and 10"), std::string::npos) << e.what();
+    }
+}
+
+TEST(Compare, ConfigurationOverridesReplaceThePresetsValues) {
+    const cagd::methods::Configuration c = cagd::methods::find_configuration("s-spline-m2", {{"m", "3"}});
+    EXPECT_EQ(c.name, "s-spline-m2");
+    EXPECT_EQ(c.method->name, "s-spline");
+    EXPECT_EQ(c.values.as_text().at("m"), "3");
+    EXPECT_EQ(cagd::methods::find_configuration("s-spline-m2", {}).values.as_text().at("m"), "2");
+    EXPECT_THROW(cagd::methods::find_configuration("s-spline-m2", {{"no-such", "1"}}), cagd::InvalidInput);
+    // A comparison of given configurations measures those values.
+    PointList p(9, 2);
+    for (int i = 0; i < 9; ++i) p.row(i) << i, std::cos(0.9 * i);
+    cagd::compare::ComparisonOptions o;
+    o.configurations = {c};
+    o.locality = false;
+    const auto rows = cagd::compare::compare_methods(p, o);
+    ASSERT_EQ(rows.size(), 1u);
+    const auto direct = cagd::methods::interpolate("s-spline", p, false, {{"m", "3"}});
+    EXPECT_EQ(rows[0].interpolant->curve->jet(2.5, 0), direct.interpolant->curve->jet(2.5, 0));
+}
+
+TEST(Compare, DrawingOnlyRunsGiveTheSameCurvesAndAProfileByTheTrapezoidRule) {
+    const PointList p = read_points_csv(std::string(CAGD_SOURCE_DIR) + "/reference/pseudo_energy/data/table1.csv");
+    cagd::compare::ComparisonOptions full, drawing;
+    full.methods = drawing.methods = {"cubic-b", "s-spline-m2", "boost-pchip"};
+    full.locality = drawing.locality = false;
+    drawing.measures = false;
+    const auto a = cagd::compare::compare_methods(p, full), b = cagd::compare::compare_methods(p, drawing);
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        EXPECT_EQ(b[i].status, "ok");
+        EXPECT_FALSE(b[i].fairness.has_value());
+        EXPECT_EQ(a[i].interpolant->curve->jet(1.5, 2), b[i].interpolant->curve->jet(1.5, 2));
+    }
+    const auto exact = cagd::compare::comparison_figure_data(a, p, {.per_span = 16});
+    const auto quick = cagd::compare::comparison_figure_data(b, p, {.per_span = 16, .arc_length = cagd::compare::FigureSampling::ArcLength::trapezoid});
+    ASSERT_EQ(exact.profiles.size(), quick.profiles.size());
+    EXPECT_EQ(exact.curves, quick.curves);
+    EXPECT_EQ(exact.combs, quick.combs);
+    // κ identical; s within the trapezoid rule's error (relative (step κ)²/12 per step: under 1e-3 here).
+    for (std::size_t k = 0; k < exact.profiles.size(); ++k) {
+        EXPECT_EQ(exact.profiles[k][2], quick.profiles[k][2]);
+        EXPECT_NEAR(quick.profiles[k][1], exact.profiles[k][1], 1e-3 * std::max(1.0, exact.profiles[k][1]));
+    }
+    EXPECT_THROW(cagd::compare::comparison_figure_data(b, p, {.per_span = 16, .span_stride = 2, .arc_length = cagd::compare::FigureSampling::ArcLength::trapezoid}),
+                 cagd::InvalidInput);
+}

@@ -26,19 +26,8 @@ double span_parameter(const Interpolant& a, std::size_t k, double f) {
 
 // Spans of a and b (same points but one moved) that differ by more than `tolerance` somewhere.
 int spans_moved(const Interpolant& a, const Interpolant& b, double tolerance) {
-    int count = 0;
-    JetMatrix pa, pb;
-    for (std::size_t k = 0; k + 1 < a.node_parameters.size(); ++k)
-        for (int j = 0; j <= 8; ++j) {
-            const double f = j / 8.0;
-            a.curve->jet_into(span_parameter(a, k, f), 0, pa);
-            b.curve->jet_into(span_parameter(b, k, f), 0, pb);
-            if ((pa - pb).norm() > tolerance) {
-                ++count;
-                break;
-            }
-        }
-    return count;
+    const std::vector<double> moved = span_displacements(a, b);
+    return static_cast<int>(std::count_if(moved.begin(), moved.end(), [&](double d) { return d > tolerance; }));
 }
 
 // Σ_k L_k² E_k over the data spans. Where every node parameter is a breakpoint (all methods but the
@@ -80,6 +69,23 @@ double span_pseudo_energy(const Interpolant& a, const analysis::FairnessMeasures
 
 }  // namespace
 
+std::vector<double> span_displacements(const Interpolant& a, const Interpolant& b, int samples_per_span) {
+    const char* who = "cagd::compare::span_displacements";
+    if (samples_per_span < 1) fail_input(who, "samples_per_span must be >= 1, got " + std::to_string(samples_per_span));
+    if (a.node_parameters.size() != b.node_parameters.size())
+        fail_input(who, "the curves have " + std::to_string(a.node_parameters.size()) + " and " + std::to_string(b.node_parameters.size()) + " node parameters; they must agree");
+    std::vector<double> moved(a.node_parameters.empty() ? 0 : a.node_parameters.size() - 1, 0.0);
+    JetMatrix pa, pb;
+    for (std::size_t k = 0; k < moved.size(); ++k)
+        for (int j = 0; j <= samples_per_span; ++j) {
+            const double f = static_cast<double>(j) / samples_per_span;
+            a.curve->jet_into(span_parameter(a, k, f), 0, pa);
+            b.curve->jet_into(span_parameter(b, k, f), 0, pb);
+            moved[k] = std::max(moved[k], (pa - pb).norm());
+        }
+    return moved;
+}
+
 std::string method_applicability(const methods::MethodClaims& m, const PointList& points, bool closed) {
     if (closed && !m.supports_closed) return "open curves only";
     const int need = closed ? m.min_points_closed : m.min_points;
@@ -111,9 +117,11 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
     // What no method could accept is bad input of the whole comparison (finite coordinates, no two
     // consecutive points equal); what one method refuses beyond that is that method's row.
     require_valid_points(points, 2, true, options.closed, who);
-    std::vector<methods::Configuration> configurations;
-    for (const std::string& name : options.methods) configurations.push_back(methods::find_configuration(name));
-    if (options.methods.empty()) configurations = methods::configurations();
+    std::vector<methods::Configuration> configurations = options.configurations;
+    if (configurations.empty()) {
+        for (const std::string& name : options.methods) configurations.push_back(methods::find_configuration(name));
+        if (options.methods.empty()) configurations = methods::configurations();
+    }
     const double diagonal = bounding_box_diagonal(points);
     const auto measure = [&](const methods::Configuration& configuration) {
         MethodComparison c;
@@ -146,6 +154,10 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
         c.interpolant = std::move(r.interpolant);
         const Curve& curve = *c.interpolant->curve;
         c.spans = static_cast<int>(c.interpolant->node_parameters.size()) - 1;
+        if (!options.measures) {
+            c.status = "ok";
+            return c;
+        }
         const analysis::FairnessSampling sampling = comparison_sampling(static_cast<int>(curve.breakpoints().size()) - 1);
         if (options.closed && points.cols() == 2) c.area = analysis::enclosed_area(curve);
         try {
@@ -258,6 +270,8 @@ FigureData comparison_figure_data(const std::vector<MethodComparison>& cs, const
     const int per_span = sampling.per_span, stride = sampling.span_stride;
     if (per_span < 1 || stride < 1)
         fail_input("cagd::compare::comparison_figure_data", "per_span and span_stride must be >= 1, got " + std::to_string(per_span) + " and " + std::to_string(stride));
+    const bool trapezoid = sampling.arc_length == FigureSampling::ArcLength::trapezoid;
+    if (trapezoid && stride != 1) fail_input("cagd::compare::comparison_figure_data", "the trapezoid arc length needs every span sampled (span_stride 1), got " + std::to_string(stride));
     const double diagonal = bounding_box_diagonal(points);
     const bool space = points.cols() == 3;  // curves x, y, z; profiles s, κ, τ; no combs
     // One part per method, computed in parallel and joined in the methods' order.
@@ -283,15 +297,19 @@ FigureData comparison_figure_data(const std::vector<MethodComparison>& cs, const
                 s += analysis::piece_arc_length(*a.curve, a.node_parameters[k], a.node_parameters[k + 1], 1);
                 continue;
             }
-            double previous = a.node_parameters[k];
+            double previous = a.node_parameters[k], previous_speed = 0.0;
             for (int j = 0; j <= per_span; ++j) {
                 const double t = span_parameter(a, k, double(j) / per_span);
                 const Eigen::MatrixXd J = j == per_span && t > a.curve->t_min() ? a.curve->jet_from_left(t, space ? 3 : 2) : a.curve->jet(t, space ? 3 : 2);
+                // The step's arc length: by quadrature, or the trapezoid rule on the speeds at its ends.
+                const double speed = J.row(1).norm();
+                const auto step_length = [&] { return trapezoid ? 0.5 * (t - previous) * (previous_speed + speed) : analysis::piece_arc_length(*a.curve, previous, t, 1); };
                 if (space) {
                     if (j < per_span || last) d.curves.push_back({index, J(0, 0), J(0, 1), J(0, 2)});
-                    if (t > previous) s += analysis::piece_arc_length(*a.curve, previous, t, 1);
+                    if (t > previous) s += step_length();
                     previous = t;
-                    if (!cs[i].fairness) continue;
+                    previous_speed = speed;
+                    if (cs[i].status == "cusp" || !(J.row(1).norm() > 0)) continue;
                     const Eigen::Vector3d d1 = J.row(1).transpose(), d2 = J.row(2).transpose();
                     const Eigen::Vector3d cr = d1.cross(d2);
                     const double v = d1.norm(), cn = cr.norm();
@@ -303,10 +321,11 @@ FigureData comparison_figure_data(const std::vector<MethodComparison>& cs, const
                 if (j < per_span || last) d.curves.push_back({index, J(0, 0), J(0, 1)});
                 // One 20-point rule per sample step (analysis::arc_length would search all breakpoints
                 // per call: O(n²) on long inputs); a step across a breakpoint costs plot accuracy only.
-                if (t > previous) s += analysis::piece_arc_length(*a.curve, previous, t, 1);
+                if (t > previous) s += step_length();
                 previous = t;
-                if (!cs[i].fairness) continue;
+                previous_speed = speed;
                 const double v = std::hypot(J(1, 0), J(1, 1));
+                if (cs[i].status == "cusp" || !(v > 0)) continue;
                 const double kappa = (J(1, 0) * J(2, 1) - J(1, 1) * J(2, 0)) / (v * v * v);
                 d.profiles.push_back({index, s, kappa});
                 samples.push_back({J(0, 0), J(0, 1), -J(1, 1) / v, J(1, 0) / v, kappa});

@@ -43,8 +43,15 @@ struct MethodComparison;
 /// What compare_methods measures and how.
 struct ComparisonOptions {
     std::vector<std::string> methods;  ///< configuration or method names (methods::find_configuration); empty: every configuration
+    /// Configurations given whole (a method under parameter values of the caller's choice,
+    /// methods::find_configuration with overrides); when not empty they are compared instead of `methods`.
+    std::vector<methods::Configuration> configurations;
     bool closed = false;  ///< closed curves
     bool locality = true;  ///< measure the locality footprint (it interpolates once more per method)
+    /// Compute the measures (length, energies, fairness). Off: the curves only, status "ok" for each
+    /// that exists and no measure, for drawing them (the viewer's frames); comparison_figure_data
+    /// then leaves out a sample of zero speed (κ undefined) instead of the whole profile.
+    bool measures = true;
     /// Called as each method is done (progress), one call at a time, in completion order.
     std::function<void(const MethodComparison&)> on_method;
     /// Methods measured in parallel, one per thread (0: the hardware's thread count). The results,
@@ -118,9 +125,21 @@ inline constexpr int kMaxCombTeeth = 1000;
 struct FigureSampling {
     int per_span = 32;  ///< samples per sampled span
     int span_stride = 1;  ///< every span_stride-th span is sampled
+    /// How the profiles' arc length s is summed from sample to sample: the 20-point Gauss rule on
+    /// each step (quadrature, the figures'), or the trapezoid rule on the samples' own speeds
+    /// (trapezoid: no evaluation beyond the samples, a relative error of order (step·κ)²/12, for
+    /// interactive drawing; every span must then be sampled, span_stride 1).
+    enum class ArcLength { quadrature, trapezoid };
+    ArcLength arc_length = ArcLength::quadrature;  ///< the rule for s (see ArcLength)
 };
 /// per_span and the stride for at most about `budget` samples per method over `spans` spans.
 FigureSampling figure_sampling(int spans, int budget);
+/// How far each data span of `a` moved in `b` (the same method on the same points but some moved):
+/// per span k, the largest distance between the two curves at the same fraction of the span's
+/// parameter interval, over `samples_per_span` + 1 equally spaced fractions (the ends included).
+/// The locality footprint counts the spans whose distance exceeds its tolerance; the viewer shades
+/// every span by it. InvalidInput unless both have the same number of spans and samples_per_span ≥ 1.
+std::vector<double> span_displacements(const Interpolant& a, const Interpolant& b, int samples_per_span = 8);
 /// The figure data of a comparison (see above).
 FigureData comparison_figure_data(const std::vector<MethodComparison>& c, const PointList& points, const FigureSampling& sampling);
 

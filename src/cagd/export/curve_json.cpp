@@ -11,6 +11,10 @@
 
 namespace cagd::exports {
 
+CurveProvenance method_provenance(const methods::Method& method, const methods::ParameterValues& values, const PointList& points, bool closed) {
+    return {.method = method.name, .parameters = values.as_text(), .parameter = method.claims(values).parameter, .closed = closed, .points = points};
+}
+
 namespace {
 
 using nlohmann::json;

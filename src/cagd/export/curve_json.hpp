@@ -44,6 +44,7 @@
 #include "cagd/export/bezier_form.hpp"
 #include "cagd/export/surface_form.hpp"
 #include "cagd/methods/method_parameters.hpp"
+#include "cagd/methods/method_registry.hpp"
 
 namespace cagd::exports {
 
@@ -55,6 +56,10 @@ struct CurveProvenance {
     bool closed = false;                  ///< a closed curve
     PointList points{};                   ///< the input points (0 rows when unknown)
 };
+
+/// The provenance of a curve that `method` built under `values` through `points`, in the method's
+/// own parameter (MethodClaims::parameter): what `cagd interpolate` and the viewer write.
+CurveProvenance method_provenance(const methods::Method& method, const methods::ParameterValues& values, const PointList& points, bool closed);
 
 /// A curve document read back.
 struct CurveDocument {

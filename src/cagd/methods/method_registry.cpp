@@ -154,6 +154,16 @@ Configuration find_configuration(const std::string& name) {
     fail_input("cagd::methods::find_configuration", "unknown method '" + name + "'; known: " + known + " (or any method name, with its defaults)");
 }
 
+Configuration find_configuration(const std::string& name, const ParameterText& overrides) {
+    const Configuration base = find_configuration(name);
+    if (overrides.empty()) return base;
+    ParameterText text;
+    for (const Preset& p : base.method->presets)
+        if (p.name == base.name) text = p.values;
+    for (const auto& [parameter, value] : overrides) text[parameter] = value;
+    return configure(*base.method, base.name, text);
+}
+
 InterpolationResult interpolate(const Configuration& configuration, const PointList& points, bool closed) {
     return interpolate(*configuration.method, points, closed, configuration.values);
 }

@@ -146,6 +146,10 @@ const std::vector<Configuration>& configurations();
 /// A configuration by name; a method name without a configuration of that name gives the method
 /// with its defaults. Throws InvalidInput listing the configurations.
 Configuration find_configuration(const std::string& name);
+/// The same with some parameter values changed: `overrides` replace or add to the configuration's
+/// own (a preset's, or the defaults); the name stays. Throws InvalidInput as parse_parameter_values
+/// for an unknown parameter or a bad value.
+Configuration find_configuration(const std::string& name, const ParameterText& overrides);
 /// interpolate() under the configuration's method and values.
 InterpolationResult interpolate(const Configuration& configuration, const PointList& points, bool closed);
 
