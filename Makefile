@@ -26,7 +26,7 @@ INSTALL_FLAGS = -DCAGD_BUILD_TESTS=OFF -DCAGD_BUILD_EXPERIMENTS=OFF -DCAGD_BUILD
 # build of the space table serves all four.
 TABLE_CACHE = XDG_CACHE_HOME=$(abspath $(BUILD))/cache/user
 
-.PHONY: all deps configure build test reproduce benchmark bench python install sanitize docs clean
+.PHONY: all deps configure build test reproduce benchmark bench python install sanitize docs clean web web-serve test-web
 
 all: build
 
@@ -44,6 +44,37 @@ build: configure
 
 test: build
 	@cd $(BUILD) && ctest --output-on-failure -j$(JOBS)
+	@if command -v emcc >/dev/null 2>&1 && command -v chromium >/dev/null 2>&1; then \
+	  $(MAKE) --no-print-directory test-web; \
+	else \
+	  echo "make test: the browser tests of the viewer (make test-web) are SKIPPED: they need Emscripten and Chromium (scripts/install-deps.sh web)"; \
+	fi
+
+# The viewer (web/): the library compiled to WebAssembly with Emscripten into $(WEB_BUILD)/site,
+# a static site. Emscripten's JavaScript optimiser needs Debian's acorn, which a Node.js from
+# elsewhere (NodeSource) does not search for: NODE_PATH names Debian's folder.
+WEB_BUILD ?= build-web
+CLI_ONLY  = -DCAGD_BUILD_CLI=ON -DCAGD_BUILD_TESTS=OFF -DCAGD_BUILD_EXPERIMENTS=OFF -DCAGD_BUILD_BENCH=OFF
+WEB_FLAGS = -DCAGD_BUILD_WEB=ON -DCAGD_BUILD_TESTS=OFF -DCAGD_BUILD_EXPERIMENTS=OFF -DCAGD_BUILD_CLI=OFF -DCAGD_BUILD_BENCH=OFF -DCAGD_BUILD_PYTHON=OFF
+web:
+	@bash scripts/install-deps.sh web
+	@emcmake cmake -S . -B $(WEB_BUILD) $(call generator_for,$(WEB_BUILD)) $(CMAKE_FLAGS) $(WEB_FLAGS) >/dev/null
+	@NODE_PATH=/usr/share/nodejs cmake --build $(WEB_BUILD) -j$(JOBS)
+
+# A local server for development: http://127.0.0.1:8080/ (any static host serves the site).
+web-serve: web
+	@node web/serve.mjs $(WEB_BUILD)/site 8080
+
+# The browser tests: the native command makes the golden files, puppeteer-core (web/package-lock.json)
+# drives Debian's Chromium. Output (golden files, exports, the screenshot, frame times) in
+# $(WEB_BUILD)/test-output; the frame times also in results/timing/web_frames.csv.
+test-web: web
+	@cmake -S . -B $(BUILD) $(call generator_for,$(BUILD)) $(CMAKE_FLAGS) $(if $(wildcard $(BUILD)/CMakeCache.txt),,$(CLI_ONLY)) >/dev/null
+	@cmake --build $(BUILD) -j$(JOBS) --target cagd_cli
+	@cd web && (cmp -s package-lock.json node_modules/.cagd-lock 2>/dev/null || (npm ci --no-audit --no-fund --loglevel=error && cp package-lock.json node_modules/.cagd-lock))
+	@mkdir -p results/timing
+	@cd web && CAGD_SITE=$(abspath $(WEB_BUILD))/site CAGD_CLI=$(abspath $(BUILD))/cagd CAGD_WEB_OUT=$(abspath $(WEB_BUILD))/test-output \
+	  CAGD_FRAME_TIMES=$(abspath results/timing/web_frames.csv) node --test --test-reporter=spec tests/
 
 reproduce:
 	@bash scripts/install-deps.sh reproduce
@@ -96,4 +127,4 @@ sanitize:
 	@$(TABLE_CACHE) JOBS=$(JOBS) bash scripts/sanitize.sh $(CURDIR)/build-sanitize
 
 clean:
-	@rm -rf $(BUILD) $(BUILD)-install
+	@rm -rf $(BUILD) $(BUILD)-install $(WEB_BUILD) web/node_modules

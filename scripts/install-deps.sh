@@ -12,6 +12,8 @@
 #              the benchmarks' packages (make test, make sanitize)
 #   bench      + Google Benchmark and the peers' Python (make bench)
 #   docs       Doxygen and Sphinx (make docs, with the python layer)
+#   web        + Emscripten, Chromium, Node.js and npm (make web, make test-web; make test runs the
+#              browser tests when Emscripten and Chromium are installed)
 #
 # As root it says what it installs, then installs it with apt-get. Otherwise it prints the
 # apt-get line to run and stops (exit 1): it never installs anything without saying what.
@@ -58,11 +60,19 @@ docs=(
   doxygen                # the C++ API reference
   python3-sphinx         # the Python API reference from the docstrings
 )
+web=(
+  emscripten             # make web: the library compiled to WebAssembly (Debian's 3.1.6)
+  chromium               # make test-web: the viewer in headless Chromium (puppeteer-core from web/package-lock.json)
+  python3-ezdxf          # make test-web reads the viewer's DXF export back
+)
+# Node.js and npm (puppeteer-core, the static server) may come from another source than Debian
+# (NodeSource's nodejs brings its own npm): Debian's packages only where there is no node or npm.
+if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then web+=(nodejs npm); fi
 
 list_only=0
 if [ "${1:-}" = "--list" ]; then list_only=1; shift; fi
 layers=("$@")
-[ ${#layers[@]} -gt 0 ] || layers=(library python reproduce test bench docs)
+[ ${#layers[@]} -gt 0 ] || layers=(library python reproduce test bench docs web)
 packages=()
 for layer in "${layers[@]}"; do
   case "$layer" in
@@ -72,7 +82,8 @@ for layer in "${layers[@]}"; do
     test) packages+=("${library[@]}" "${python[@]}" "${reproduce[@]}" "${test[@]}" "${bench[@]}") ;;  # make test's build has the benchmarks too
     bench) packages+=("${library[@]}" "${python[@]}" "${bench[@]}") ;;
     docs) packages+=("${docs[@]}") ;;
-    *) echo "install-deps: unknown layer '$layer'; allowed: library python reproduce test bench docs" >&2; exit 2 ;;
+    web) packages+=("${library[@]}" "${web[@]}") ;;  # the native command makes the tests' golden files
+    *) echo "install-deps: unknown layer '$layer'; allowed: library python reproduce test bench docs web" >&2; exit 2 ;;
   esac
 done
 

@@ -1,0 +1,270 @@
+// The viewer's WebAssembly module (embind): the registry, the comparison of the chosen
+// configurations on the page's points with its figure data and measures, how far each span moved
+// since a drag began, and the curve exports. Every number comes from the library (compare/,
+// export/); this file only converts between JavaScript values and the library's types.
+//
+// JavaScript API (web/site/viewer.js is its one caller; tests/web checks it against the native build):
+//   registry()                     -> {methods: [...], configurations: [...], formats: [...]}
+//   compare(request)               -> {ok, message, diagonal, combScale, header, rows, results: [...]}
+//     request: {points: [x0, y0, x1, y1, …], closed, configurations: [{name, parameters: {p: "v"}}],
+//               perSpan, measures, figure, anchor, motion}
+//     measures: also compare's measures table (header, rows; tens of ms per method at 100 points,
+//     so the page computes them in a worker); figure (default true): the curves, κ(s) and combs.
+//     anchor: keep these curves as the start of a drag; motion: per span, how far each curve moved
+//     since the anchor (compare::span_displacements), divided by the data diagonal.
+//   exportCurve(request)           -> {ok, message, text}
+//     request: {points, closed, name, parameters, format: "svg" | "dxf" | "json" | "csv", comb, samples}
+// Bad input never throws into JavaScript: {ok: false, message} names it, as the command's messages.
+#include <emscripten/bind.h>
+#include <emscripten/val.h>
+
+#include <chrono>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cagd/compare/method_comparison.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/core/points.hpp"
+#include "cagd/core/version.hpp"
+#include "cagd/export/curve_formats.hpp"
+#include "cagd/methods/method_parameter_curve.hpp"
+#include "cagd/methods/method_registry.hpp"
+
+namespace {
+
+using emscripten::val;
+
+// The most points the page sends (a drawing, not a data set: the command takes larger inputs).
+constexpr long kMaxViewerPoints = 100'000;
+// The most samples per span the page asks for.
+constexpr int kMaxPerSpan = 256;
+
+val float64_array(const std::vector<double>& v) {
+    val out = val::global("Float64Array").new_(v.size());
+    out.call<void>("set", val(emscripten::typed_memory_view(v.size(), v.data())));
+    return out;
+}
+
+template <class T>
+val js_array(const std::vector<T>& v) {
+    val out = val::array();
+    for (const T& x : v) out.call<void>("push", val(x));
+    return out;
+}
+
+cagd::PointList points_of(const val& request) {
+    const val p = request["points"];
+    if (p.isUndefined() || p.isNull()) cagd::fail_input("viewer", "the request has no points");
+    const std::vector<double> flat = emscripten::convertJSArrayToNumberVector<double>(p);
+    if (flat.size() % 2 != 0) cagd::fail_input("viewer", "points needs an even count of coordinates (x, y pairs), got " + std::to_string(flat.size()));
+    const long n = static_cast<long>(flat.size() / 2);
+    if (n > kMaxViewerPoints) cagd::fail_input("viewer", std::to_string(n) + " points; the viewer takes at most " + std::to_string(kMaxViewerPoints));
+    cagd::PointList points(n, 2);
+    for (long i = 0; i < n; ++i) points.row(i) << flat[static_cast<std::size_t>(2 * i)], flat[static_cast<std::size_t>(2 * i + 1)];
+    return points;
+}
+
+bool flag(const val& request, const char* name) {
+    const val v = request[name];
+    return !v.isUndefined() && !v.isNull() && v.as<bool>();
+}
+
+cagd::methods::ParameterText parameters_of(const val& object) {
+    cagd::methods::ParameterText text;
+    if (object.isUndefined() || object.isNull()) return text;
+    const std::vector<std::string> keys = emscripten::vecFromJSArray<std::string>(val::global("Object").call<val>("keys", object));
+    for (const std::string& k : keys) text[k] = object[k].as<std::string>();
+    return text;
+}
+
+val failure(const std::string& message) {
+    val out = val::object();
+    out.set("ok", false);
+    out.set("message", message);
+    return out;
+}
+
+val parameter_json(const cagd::methods::Parameter& p) {
+    val out = val::object();
+    out.set("name", p.name);
+    out.set("type", std::string(cagd::methods::to_string(p.type)));
+    out.set("default", p.default_text);
+    out.set("lower", p.lower);
+    out.set("upper", p.upper);
+    out.set("choices", js_array(p.choices));
+    out.set("help", p.help);
+    return out;
+}
+
+val claims_json(const cagd::methods::MethodClaims& c) {
+    val out = val::object();
+    out.set("parametricContinuity", c.parametric_continuity);
+    out.set("geometricContinuity", c.geometric_continuity);
+    out.set("parameter", c.parameter);
+    out.set("invariance", std::string(cagd::methods::to_string(c.invariance)));
+    out.set("supportsClosed", c.supports_closed);
+    out.set("minPoints", c.min_points);
+    out.set("minPointsClosed", c.min_points_closed);
+    out.set("maxPoints", c.max_points);
+    out.set("alwaysSolves", c.always_solves);
+    return out;
+}
+
+val text_json(const cagd::methods::ParameterText& t) {
+    val out = val::object();
+    for (const auto& [k, v] : t) out.set(k, v);
+    return out;
+}
+
+val registry() {
+    val methods = val::array();
+    for (const cagd::methods::Method& m : cagd::methods::registry()) {
+        val o = val::object();
+        o.set("name", m.name);
+        o.set("paper", m.paper);
+        o.set("source", m.source);
+        o.set("summary", m.summary);
+        val parameters = val::array();
+        for (const auto& p : m.parameters) parameters.call<void>("push", parameter_json(p));
+        o.set("parameters", parameters);
+        methods.call<void>("push", o);
+    }
+    val configurations = val::array();
+    for (const cagd::methods::Configuration& c : cagd::methods::configurations()) {
+        val o = val::object();
+        o.set("name", c.name);
+        o.set("method", c.method->name);
+        o.set("values", text_json(c.values.as_text()));
+        o.set("claims", claims_json(c.claims));
+        configurations.call<void>("push", o);
+    }
+    val formats = val::array();
+    for (const auto& f : cagd::exports::curve_formats())
+        if (f.format != cagd::exports::CurveFormat::step) formats.call<void>("push", std::string(f.name));
+    val out = val::object();
+    out.set("methods", methods);
+    out.set("configurations", configurations);
+    out.set("formats", formats);
+    out.set("libraryVersion", std::string(cagd::library_version()));
+    return out;
+}
+
+// The curves kept at the start of a drag, by configuration name.
+std::map<std::string, cagd::methods::Interpolant>& anchors() {
+    static std::map<std::string, cagd::methods::Interpolant> a;
+    return a;
+}
+
+val compare(const val& request) {
+    try {
+        const cagd::PointList points = points_of(request);
+        cagd::compare::ComparisonOptions options;
+        options.closed = flag(request, "closed");
+        options.locality = false;
+        options.measures = flag(request, "measures");
+        options.threads = 1;
+        const val list = request["configurations"];
+        const int count = list.isUndefined() ? 0 : list["length"].as<int>();
+        if (count == 0) return failure("viewer: no configuration chosen");
+        for (int i = 0; i < count; ++i)
+            options.configurations.push_back(cagd::methods::find_configuration(list[i]["name"].as<std::string>(), parameters_of(list[i]["parameters"])));
+        const int per_span = request["perSpan"].isUndefined() ? 16 : request["perSpan"].as<int>();
+        if (per_span < 1 || per_span > kMaxPerSpan) return failure("viewer: perSpan = " + std::to_string(per_span) + "; allowed 1.." + std::to_string(kMaxPerSpan));
+        const auto start = std::chrono::steady_clock::now();
+        const std::vector<cagd::compare::MethodComparison> rows = cagd::compare::compare_methods(points, options);
+        const auto compared = std::chrono::steady_clock::now();
+        const bool with_figure = request["figure"].isUndefined() || request["figure"].as<bool>();
+        const cagd::compare::FigureData figure =
+            with_figure ? cagd::compare::comparison_figure_data(rows, points, {.per_span = per_span, .span_stride = 1, .arc_length = cagd::compare::FigureSampling::ArcLength::trapezoid}) : cagd::compare::FigureData{};
+        const auto drawn = std::chrono::steady_clock::now();
+        const double diagonal = cagd::bounding_box_diagonal(points);
+        if (flag(request, "anchor")) {
+            anchors().clear();
+            for (const auto& r : rows)
+                if (r.interpolant) anchors().emplace(r.method, *r.interpolant);
+        }
+        const bool motion = flag(request, "motion");
+        // The figure data's rows, split by method index (column 0).
+        std::vector<std::vector<double>> curves(rows.size()), profiles(rows.size()), combs(rows.size());
+        for (const auto& r : figure.curves) curves[static_cast<std::size_t>(r[0])].insert(curves[static_cast<std::size_t>(r[0])].end(), r.begin() + 1, r.end());
+        for (const auto& r : figure.profiles) profiles[static_cast<std::size_t>(r[0])].insert(profiles[static_cast<std::size_t>(r[0])].end(), r.begin() + 1, r.end());
+        for (const auto& r : figure.combs) combs[static_cast<std::size_t>(r[0])].insert(combs[static_cast<std::size_t>(r[0])].end(), r.begin() + 1, r.end());
+        val results = val::array();
+        double comb_scale = 0.0;
+        for (std::size_t i = 0; i < rows.size(); ++i) {
+            const auto& r = rows[i];
+            val o = val::object();
+            o.set("name", r.method);
+            o.set("status", r.status);
+            o.set("note", r.note);
+            o.set("seconds", r.seconds);
+            o.set("spans", r.spans);
+            o.set("curve", float64_array(curves[i]));
+            o.set("profile", float64_array(profiles[i]));
+            o.set("comb", float64_array(combs[i]));
+            if (with_figure && figure.comb_scale[i] > 0) comb_scale = figure.comb_scale[i];
+            if (motion && r.interpolant) {
+                const auto a = anchors().find(r.method);
+                if (a != anchors().end() && a->second.node_parameters.size() == r.interpolant->node_parameters.size()) {
+                    std::vector<double> moved = cagd::compare::span_displacements(a->second, *r.interpolant);
+                    for (double& d : moved) d /= diagonal;
+                    o.set("motion", float64_array(moved));
+                }
+            }
+            results.call<void>("push", o);
+        }
+        val out = val::object();
+        if (options.measures) {
+            val table = val::array();
+            for (const auto& row : cagd::compare::comparison_rows(rows, options.closed, false, 6)) table.call<void>("push", js_array(row));
+            out.set("header", js_array(cagd::compare::comparison_header(options.closed, false)));
+            out.set("rows", table);
+        }
+        out.set("ok", true);
+        out.set("diagonal", diagonal);
+        out.set("combScale", comb_scale);
+        out.set("results", results);
+        out.set("compareSeconds", std::chrono::duration<double>(compared - start).count());
+        out.set("figureSeconds", std::chrono::duration<double>(drawn - compared).count());
+        return out;
+    } catch (const std::exception& e) {
+        return failure(cagd::one_line(e.what()));
+    }
+}
+
+val export_curve(const val& request) {
+    try {
+        const cagd::PointList points = points_of(request);
+        const bool closed = flag(request, "closed");
+        const cagd::methods::Configuration c = cagd::methods::find_configuration(request["name"].as<std::string>(), parameters_of(request["parameters"]));
+        const cagd::exports::CurveFormat format = cagd::exports::curve_format_named(request["format"].as<std::string>());
+        const cagd::methods::InterpolationResult r = cagd::methods::interpolate(c, points, closed);
+        if (!r.outcome.ok() || !r.interpolant) return failure(c.name + ": " + cagd::one_line(r.outcome.message));
+        // As `cagd interpolate` writes it: the curve in the method's own parameter, with its provenance.
+        const cagd::methods::MethodParameterCurve curve(*r.interpolant);
+        const cagd::exports::CurveProvenance provenance = cagd::exports::method_provenance(*c.method, c.values, points, closed);
+        cagd::exports::ExportOptions options;
+        options.points = true;
+        options.comb = flag(request, "comb");
+        if (!request["samples"].isUndefined()) options.samples.per_piece = request["samples"].as<int>();
+        std::ostringstream text;
+        if (const cagd::Outcome written = cagd::exports::write_curve(text, format, curve, provenance, options); !written.ok()) return failure(cagd::one_line(written.message));
+        val out = val::object();
+        out.set("ok", true);
+        out.set("text", text.str());
+        return out;
+    } catch (const std::exception& e) {
+        return failure(cagd::one_line(e.what()));
+    }
+}
+
+}  // namespace
+
+EMSCRIPTEN_BINDINGS(cagd_viewer) {
+    emscripten::function("registry", &registry);
+    emscripten::function("compare", &compare);
+    emscripten::function("exportCurve", &export_curve);
+}
