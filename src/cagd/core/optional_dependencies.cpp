@@ -4,6 +4,27 @@
 
 namespace cagd {
 
+namespace {
+
+// The build defines each CAGD_WITH_… as 0 or 1 (CMakeLists.txt); undefined reads as 0.
+#if CAGD_WITH_CERES
+constexpr bool kWithCeres = true;
+#else
+constexpr bool kWithCeres = false;
+#endif
+#if CAGD_WITH_NLOPT
+constexpr bool kWithNlopt = true;
+#else
+constexpr bool kWithNlopt = false;
+#endif
+#if CAGD_WITH_OPENCASCADE
+constexpr bool kWithOpencascade = true;
+#else
+constexpr bool kWithOpencascade = false;
+#endif
+
+}  // namespace
+
 const char* to_string(OptionalDependency d) {
     switch (d) {
         case OptionalDependency::ceres: return "Ceres";
@@ -15,9 +36,9 @@ const char* to_string(OptionalDependency d) {
 
 bool built_with(OptionalDependency d) {
     switch (d) {
-        case OptionalDependency::ceres: return CAGD_WITH_CERES != 0;
-        case OptionalDependency::nlopt: return CAGD_WITH_NLOPT != 0;
-        case OptionalDependency::opencascade: return CAGD_WITH_OPENCASCADE != 0;
+        case OptionalDependency::ceres: return kWithCeres;
+        case OptionalDependency::nlopt: return kWithNlopt;
+        case OptionalDependency::opencascade: return kWithOpencascade;
     }
     return false;
 }
