@@ -96,6 +96,7 @@ val parameter_json(const cagd::methods::Parameter& p) {
     out.set("upper", p.upper);
     out.set("choices", js_array(p.choices));
     out.set("help", p.help);
+    out.set("spaceOnly", p.space_only);
     return out;
 }
 

@@ -437,8 +437,9 @@
       label.title = `${m.summary} [${m.paper}, ${m.source}]`;
       li.appendChild(label);
       const entry = shownEntry(c.name);
-      // Parameters a browser can set (no files: a table file is the command's and Python's).
-      const settable = m.parameters.filter((p) => p.type !== 'text');
+      // Parameters a browser can set on planar points (no files: a table file is the command's
+      // and Python's; none of those the registry marks as for 3-D points only).
+      const settable = m.parameters.filter((p) => p.type !== 'text' && !p.spaceOnly);
       if (entry && settable.length) {
         const box2 = document.createElement('div');
         box2.className = 'parameters';

@@ -39,6 +39,7 @@ struct Parameter {
     double upper = std::numeric_limits<double>::infinity();  ///< integer, real: inclusive upper bound
     std::vector<std::string> choices{};  ///< choice
     std::string help{};  ///< one line for help texts
+    bool space_only = false;  ///< applies to 3-D points only (planar points refuse any other value than its default)
 
     /// "integer in [0, 1000]", "one of none | exact | approx", … for help texts and messages.
     std::string domain() const;

@@ -96,11 +96,13 @@ std::vector<Method> pseudo_energy_methods() {
                         .type = P::choice,
                         .default_text = "table",
                         .choices = {"table", "exact"},
-                        .help = "3-D points: the spans from a space pseudo-energy table (table) or by the space minimiser at each span's angles (exact, about 500 spans/s)"},
+                        .help = "3-D points: the spans from a space pseudo-energy table (table) or by the space minimiser at each span's angles (exact, about 500 spans/s)",
+                        .space_only = true},
                        {.name = "space-table",
                         .type = P::text,
                         .help = "3-D points: the space table of the spans (SpacePseudoEnergyTable, e.g. from cagd_space_table_mpi; absent: the 36 x 36 x 72 fast table, "
-                                "from the user's cache or built once there)"}},
+                                "from the user's cache or built once there)",
+                        .space_only = true}},
         .claims =
             [](const ParameterValues& v) {
                 return MethodClaims{.geometric_continuity = 1,
