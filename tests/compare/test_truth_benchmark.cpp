@@ -2,7 +2,9 @@
 // themselves, the samples, the errors against a second computation, the orders.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <numbers>
 
 #include "cagd/analysis/curve_measures.hpp"
@@ -240,4 +242,39 @@ TEST(TruthBenchmark, ShapeMeasures) {
         else
             EXPECT_GT(m.g2_defect, 1e-3);  // Hermite curve A is G1: κ jumps at the points
     }
+}
+
+// Extensionality: Spiro and the clothoid spline (curvature linear in arc length per span, G2) keep
+// their curve when a point on it is added, since the old curve still solves the new equations
+// (Levien 2009, for Spiro); the natural cubic spline and the pseudo-spline do not. An
+// interpolating curve through the n + 1 points other than the old one moves visibly.
+TEST(TruthBenchmark, ExtensionalityOfTheSpiralSplinesAndNotOfTheCubic) {
+    const auto extension = [](const std::string& method, const std::string& family, bool closed) {
+        const TruthSample s = truth_samples(find_truth_family(family), 12, TruthSpacing::nonuniform, closed);
+        const methods::Configuration c = methods::find_configuration(method);
+        const methods::InterpolationResult r = methods::interpolate(c, s.points, closed);
+        EXPECT_TRUE(r.outcome.ok()) << method;
+        return extensionality(c, s.points, closed, *r.interpolant);
+    };
+    for (const char* method : {"spiro", "curvature-profile"})
+        for (const bool closed : {false, true}) {
+            const std::optional<double> e = extension(method, "ellipse", closed);
+            ASSERT_TRUE(e.has_value()) << method;
+            EXPECT_LT(*e, 1e-9) << method << (closed ? " closed" : " open");
+        }
+    for (const char* method : {"cubic-b", "pseudo-spline-approx", "s-spline-m2"}) {
+        const std::optional<double> e = extension(method, "ellipse", false);
+        ASSERT_TRUE(e.has_value()) << method;
+        EXPECT_GT(*e, 1e-6) << method;
+    }
+    // The benchmark's runs carry it, and its rows write it.
+    TruthBenchmarkOptions o;
+    o.sizes = {8};
+    o.families = {"circle"};
+    o.methods = {"spiro", "cubic-a"};
+    const std::vector<TruthRun> runs = run_truth_benchmark(o);
+    const std::vector<std::string> header = truth_runs_header();
+    const auto column = static_cast<std::size_t>(std::find(header.begin(), header.end(), "extensionality") - header.begin());
+    ASSERT_LT(column, header.size());
+    for (const auto& row : truth_runs_rows(runs)) EXPECT_EQ(row[5] == "ok", !row[column].empty()) << row[4];
 }

@@ -178,6 +178,31 @@ TruthErrors truth_errors(const methods::Interpolant& in, const TruthSample& samp
     return e;
 }
 
+std::optional<double> extensionality(const methods::Configuration& configuration, const PointList& points, bool closed, const methods::Interpolant& in) {
+    const char* who = "compare::extensionality";
+    const std::vector<double>& u = in.node_parameters;
+    if (u.size() < 2 || u.size() != static_cast<std::size_t>(points.rows()) + (closed ? 1 : 0))
+        fail_input(who, "the interpolant has " + std::to_string(u.size()) + " nodes for " + std::to_string(points.rows()) + (closed ? " closed" : " open") + " points");
+    const std::size_t k = (u.size() - 1) / 2;  // the middle span
+    const double middle = 0.5 * (u[k] + u[k + 1]);
+    PointList more(points.rows() + 1, points.cols());
+    const auto before = static_cast<Eigen::Index>(k + 1);
+    more.topRows(before) = points.topRows(before);
+    more.row(before) = in.curve->jet(middle, 0).row(0);
+    more.bottomRows(points.rows() - before) = points.bottomRows(points.rows() - before);
+    methods::InterpolationResult again;
+    try {
+        again = methods::interpolate(configuration, more, closed);
+    } catch (const InvalidInput&) {
+        return std::nullopt;
+    }
+    if (!again.outcome.ok() || !again.interpolant) return std::nullopt;
+    // The old curve as the truth: its parameters at the n + 1 points, its whole stretch.
+    TruthSample old{.points = more, .params = u, .t_first = in.curve->t_min(), .t_last = in.curve->t_max(), .length = analysis::arc_length(*in.curve, kLengthPieces), .closed = closed};
+    old.params.insert(old.params.begin() + static_cast<std::ptrdiff_t>(k + 1), middle);
+    return truth_errors(*again.interpolant, old, *in.curve).distance;
+}
+
 std::vector<TruthRun> run_truth_benchmark(const TruthBenchmarkOptions& o) {
     const char* who = "compare::run_truth_benchmark";
     if (o.sizes.empty()) fail_input(who, "needs at least one size");
@@ -244,6 +269,7 @@ std::vector<TruthRun> run_truth_benchmark(const TruthBenchmarkOptions& o) {
         }
         r.errors = truth_errors(*result.interpolant, sample, *k.family->curve);
         r.shape = shape_measures(*result.interpolant->curve, result.interpolant->node_parameters, k.closed);
+        r.extensionality = extensionality(m, sample.points, k.closed, *result.interpolant);
         r.status = "ok";
         bool finite = std::isfinite(r.shape.bending) && std::isfinite(r.shape.variation) && std::isfinite(r.shape.max_curvature) && std::isfinite(r.shape.g2_defect);
         for (int e = 0; e < 5; ++e) finite = finite && std::isfinite(truth_error(r.errors, e));
@@ -252,6 +278,7 @@ std::vector<TruthRun> run_truth_benchmark(const TruthBenchmarkOptions& o) {
             r.note = "the curve has a point of zero speed, where its curvature is undefined";
             r.errors = {};
             r.shape = {};
+            r.extensionality.reset();
         }
     });
     return runs;
@@ -313,6 +340,7 @@ std::vector<std::string> truth_runs_header() {
     std::vector<std::string> h{"family", "spacing", "closed", "n", "method", "status"};
     for (const std::string& m : truth_error_names()) h.push_back(m);
     for (const std::string& m : shape_measure_names()) h.push_back(m);
+    h.push_back("extensionality");
     for (const std::string& m : shape_measure_names()) h.push_back("truth_" + m);
     h.push_back("note");
     return h;
@@ -327,6 +355,7 @@ std::vector<std::vector<std::string>> truth_runs_rows(const std::vector<TruthRun
             for (const double v : {s.bending, s.variation, s.max_curvature, static_cast<double>(s.curvature_extrema), s.g2_defect}) row.push_back(shown ? format_number(v, digits) : "");
         };
         shape(r.shape, r.status == "ok");
+        row.push_back(r.status == "ok" && r.extensionality ? format_number(*r.extensionality, digits) : "");
         shape(r.truth_shape, true);
         std::string note = r.note;
         std::replace(note.begin(), note.end(), '\n', ' ');
@@ -413,14 +442,15 @@ std::string truth_leaderboard_markdown(const std::vector<TruthRun>& runs, const 
                 if (s.family == f.name && s.n == kShapeTableSize && s.spacing == TruthSpacing::uniform && s.closed == f.closed && s.method == r->method && s.status == "ok")
                     shaped.push_back(&s);
         if (shaped.empty()) continue;
-        const auto shape_row = [&](const std::string& name, const ShapeMeasures& s) {
+        const auto shape_row = [&](const std::string& name, const ShapeMeasures& s, const std::string& extension) {
             md << "| " << name << " | " << number(s.bending) << " | " << number(s.variation) << " | " << number(s.max_curvature) << " | " << s.curvature_extrema << " | "
-               << number(s.g2_defect) << " |\n";
+               << number(s.g2_defect) << " | " << extension << " |\n";
         };
-        md << "\nShape at " << kShapeTableSize << " points (scale-free: L∫κ² ds, L³∫κ'² ds, max |κ|·L, sign changes of κ', the largest curvature jump at a point × L):\n\n"
-           << "| | bending | variation | max κ·L | κ extrema | G2 defect |\n|---|---:|---:|---:|---:|---:|\n";
-        shape_row("**truth**", shaped.front()->truth_shape);
-        for (const TruthRun* s : shaped) shape_row("`" + s->method + "`", s->shape);
+        md << "\nShape at " << kShapeTableSize << " points (scale-free: L∫κ² ds, L³∫κ'² ds, max |κ|·L, sign changes of κ', the largest curvature jump at a point × L; "
+           << "extension: how far the curve moves, ÷ L, when a point taken on it is added):\n\n"
+           << "| | bending | variation | max κ·L | κ extrema | G2 defect | extension |\n|---|---:|---:|---:|---:|---:|---:|\n";
+        shape_row("**truth**", shaped.front()->truth_shape, "—");
+        for (const TruthRun* s : shaped) shape_row("`" + s->method + "`", s->shape, s->extensionality ? number(*s->extensionality) : "no curve");
     }
     // Exact reproduction: every size at rounding level, in both spacings.
     md << "\n#### Exact reproduction\n\nA method reproduces a curve when its distance is at most " << format_number(kTruthExactLevelPerPoint, 2) << " × n"

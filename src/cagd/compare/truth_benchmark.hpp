@@ -67,6 +67,14 @@ ShapeMeasures shape_measures(const Curve& curve, const std::vector<double>& node
 /// The names of the shape measures, in the order of ShapeMeasures.
 const std::vector<std::string>& shape_measure_names();
 
+/// Extensionality (a curve is extensional when adding a point that lies on it leaves it unchanged;
+/// Levien 2009 names the property for Spiro): the point c(u*) at the middle of the parameter
+/// interval of span ⌊spans/2⌋ of `interpolant` is inserted between that span's points, `configuration`
+/// interpolates the n + 1 points again, and the result is the largest distance of the new curve
+/// from the old, ÷ the old curve's length (truth_errors' distance with the old curve as the truth;
+/// 16 Gauss nodes per span). Absent when the method refuses the new points or has no curve for them.
+std::optional<double> extensionality(const methods::Configuration& configuration, const PointList& points, bool closed, const methods::Interpolant& interpolant);
+
 /// One interpolation of the benchmark.
 struct TruthRun {
     std::string family;       ///< truth family
@@ -79,6 +87,7 @@ struct TruthRun {
     TruthErrors errors;       ///< when ok
     ShapeMeasures shape;      ///< when ok
     ShapeMeasures truth_shape;  ///< the truth's over the same stretch (the same for every method of a case)
+    std::optional<double> extensionality;  ///< when ok: how far a point taken on the curve moves it (extensionality())
 };
 
 /// What run_truth_benchmark runs.
@@ -121,7 +130,7 @@ std::vector<ConvergenceOrder> convergence_orders(const std::vector<TruthRun>& ru
 inline constexpr double kPredictedOrderTolerance = 0.35;
 
 /// truth_runs.csv's columns: family, spacing, closed, n, method, status, the five errors, the five
-/// shape measures, the truth's five, note.
+/// shape measures, extensionality, the truth's five shape measures, note.
 std::vector<std::string> truth_runs_header();
 /// One row per run, the errors to `digits` significant digits (empty unless ok).
 std::vector<std::vector<std::string>> truth_runs_rows(const std::vector<TruthRun>& runs, int digits = 6);
