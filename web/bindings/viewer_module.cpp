@@ -76,7 +76,8 @@ cagd::methods::ParameterText parameters_of(const val& object) {
     cagd::methods::ParameterText text;
     if (object.isUndefined() || object.isNull()) return text;
     const std::vector<std::string> keys = emscripten::vecFromJSArray<std::string>(val::global("Object").call<val>("keys", object));
-    for (const std::string& k : keys) text[k] = object[k].as<std::string>();
+    // As text whatever JavaScript type it has (a number typed into the console, a string from the page).
+    for (const std::string& k : keys) text[k] = val::global("String")(object[k]).as<std::string>();
     return text;
 }
 
@@ -171,7 +172,7 @@ val compare(const val& request) {
         const int count = list.isUndefined() ? 0 : list["length"].as<int>();
         if (count == 0) return failure("viewer: no configuration chosen");
         for (int i = 0; i < count; ++i)
-            options.configurations.push_back(cagd::methods::find_configuration(list[i]["name"].as<std::string>(), parameters_of(list[i]["parameters"])));
+            options.configurations.push_back(cagd::methods::find_configuration(val::global("String")(list[i]["name"]).as<std::string>(), parameters_of(list[i]["parameters"])));
         const int per_span = request["perSpan"].isUndefined() ? 16 : request["perSpan"].as<int>();
         if (per_span < 1 || per_span > kMaxPerSpan) return failure("viewer: perSpan = " + std::to_string(per_span) + "; allowed 1.." + std::to_string(kMaxPerSpan));
         const auto start = std::chrono::steady_clock::now();
@@ -240,8 +241,8 @@ val export_curve(const val& request) {
     try {
         const cagd::PointList points = points_of(request);
         const bool closed = flag(request, "closed");
-        const cagd::methods::Configuration c = cagd::methods::find_configuration(request["name"].as<std::string>(), parameters_of(request["parameters"]));
-        const cagd::exports::CurveFormat format = cagd::exports::curve_format_named(request["format"].as<std::string>());
+        const cagd::methods::Configuration c = cagd::methods::find_configuration(val::global("String")(request["name"]).as<std::string>(), parameters_of(request["parameters"]));
+        const cagd::exports::CurveFormat format = cagd::exports::curve_format_named(val::global("String")(request["format"]).as<std::string>());
         const cagd::methods::InterpolationResult r = cagd::methods::interpolate(c, points, closed);
         if (!r.outcome.ok() || !r.interpolant) return failure(c.name + ": " + cagd::one_line(r.outcome.message));
         // As `cagd interpolate` writes it: the curve in the method's own parameter, with its provenance.

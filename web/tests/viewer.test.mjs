@@ -264,14 +264,18 @@ test('bad points are answered with a message naming them', async () => {
     try { v.parseCsv('x,y\n0,0\n1,oops\n'); } catch (e) { csv = e.message; }
     const same = v.module.compare({ points: [0, 0, 0, 0, 1, 1], configurations: [{ name: 'cubic-b' }] });
     const unknown = v.module.compare({ points: [0, 0, 1, 1, 2, 0], configurations: [{ name: 'no-such-method' }] });
-    const parameter = v.module.compare({ points: [0, 0, 1, 1, 2, 0], configurations: [{ name: 's-spline', parameters: { m: '-4' } }] });
-    return { csv, same, unknown, parameter };
+    const parameter = v.module.compare({ points: [0, 0, 1, 1, 2, 0], configurations: [{ name: 's-spline', parameters: { m: -4 } }] });
+    const format = v.module.exportCurve({ points: [0, 0, 1, 1, 2, 0], name: 'cubic-b', format: 'pdf' });
+    const odd = v.module.compare({ points: [0, 0, 1], configurations: [{ name: 'cubic-b' }] });
+    return { csv, same, unknown, parameter, format, odd };
   });
   assert.match(r.csv, /line 3/);
   assert.equal(r.same.ok, false);
   assert.match(r.same.message, /points 0 and 1 coincide/);
   assert.match(r.unknown.message, /unknown method 'no-such-method'/);
   assert.match(r.parameter.message, /-4/);
+  assert.match(r.format.message, /pdf/);
+  assert.match(r.odd.message, /even count/);
 });
 
 test('frames for 100 points and 10 methods are timed and reported', async () => {
