@@ -133,7 +133,8 @@ std::string random_sets_markdown(const std::vector<RandomSetSummary>& summaries)
          "*walk*: chords in [0.1, 2], turns within ±1 rad; *scatter*: points uniform in the unit square (at the smaller sizes only: "
          "beyond them nearly every set defeats the two Newton methods). A failure is no curve "
          "(a returned status) or a refusal (the method's own input check); not applicable sets are left out of the rate. "
-         "Run times are in `results/timing/`, apart from these counts.\n";
+         "Run times are not deterministic, so they stay out of these counts: `cagd benchmark --timing-out FILE` writes them "
+         "(`make benchmark` and `make reproduce`: results/timing/benchmark_random_sets.csv).\n";
     for (const RandomSetKind kind : {RandomSetKind::walk, RandomSetKind::scatter}) {
         std::vector<int> sizes;
         for (const RandomSetSummary& r : summaries)
