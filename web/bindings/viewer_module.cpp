@@ -12,6 +12,7 @@
 //     so the page computes them in a worker); figure (default true): the curves, κ(s) and combs.
 //     anchor: keep these curves as the start of a drag; motion: per span, how far each curve moved
 //     since the anchor (compare::span_displacements), divided by the data diagonal.
+//   readPoints(text, source)       -> {ok, message, points: [[x, y], …]}: the command's CSV reader
 //   exportCurve(request)           -> {ok, message, text}
 //     request: {points, closed, name, parameters, format: "svg" | "dxf" | "json" | "csv", comb, samples}
 // Bad input never throws into JavaScript: {ok: false, message} names it, as the command's messages.
@@ -27,6 +28,7 @@
 
 #include "cagd/compare/method_comparison.hpp"
 #include "cagd/core/errors.hpp"
+#include "cagd/core/point_csv.hpp"
 #include "cagd/core/points.hpp"
 #include "cagd/core/version.hpp"
 #include "cagd/export/curve_formats.hpp"
@@ -263,10 +265,33 @@ val export_curve(const val& request) {
     }
 }
 
+val read_points(const std::string& text, const std::string& source) {
+    try {
+        std::istringstream in(text);
+        const cagd::PointList p = cagd::read_points_csv(in, source);
+        if (p.cols() != 2) return failure(source + ": the viewer is planar: needs 2 columns (x, y), got " + std::to_string(p.cols()));
+        if (p.rows() > kMaxViewerPoints) return failure(source + ": " + std::to_string(p.rows()) + " points; the viewer takes at most " + std::to_string(kMaxViewerPoints));
+        val points = val::array();
+        for (Eigen::Index i = 0; i < p.rows(); ++i) {
+            val row = val::array();
+            row.call<void>("push", p(i, 0));
+            row.call<void>("push", p(i, 1));
+            points.call<void>("push", row);
+        }
+        val out = val::object();
+        out.set("ok", true);
+        out.set("points", points);
+        return out;
+    } catch (const std::exception& e) {
+        return failure(cagd::one_line(e.what()));
+    }
+}
+
 }  // namespace
 
 EMSCRIPTEN_BINDINGS(cagd_viewer) {
     emscripten::function("registry", &registry);
     emscripten::function("compare", &compare);
     emscripten::function("exportCurve", &export_curve);
+    emscripten::function("readPoints", &read_points);
 }

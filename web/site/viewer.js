@@ -527,23 +527,12 @@
   }
 
   // ---- CSV points ----------------------------------------------------------------------------
-  // x,y per line (comma, semicolon, tab or spaces); a first line of names only is a header; a BOM
-  // and CRLF are accepted; any other line that does not give two finite numbers is an error naming it.
-  viewer.parseCsv = function (text) {
-    const lines = text.replace(/^\uFEFF/, '').split(/\r?\n/);
-    const points = [];
-    for (let i = 0; i < lines.length; ++i) {
-      const line = lines[i].trim();
-      if (!line || line.startsWith('#')) continue;
-      const fields = line.split(/[,;\t ]+/);
-      if (points.length === 0 && i === lines.findIndex((l) => l.trim()) && fields.every((f) => !/^[-+.\d]/.test(f))) continue;
-      const v = fields.map(Number);
-      if (fields.length < 2 || !Number.isFinite(v[0]) || !Number.isFinite(v[1]))
-        throw new Error(`line ${i + 1}: "${line.slice(0, 60)}" is not x,y (two finite numbers)`);
-      points.push([v[0], v[1]]);
-    }
-    if (points.length > 100000) throw new Error(`${points.length} points; the viewer takes at most 100000`);
-    return points;
+  // Read by the library's own point reader (the cagd command's: header, BOM, CRLF, and an error
+  // naming the source and line of anything that does not parse).
+  viewer.parseCsv = function (text, source = 'pasted points') {
+    const r = viewer.module.readPoints(text, source);
+    if (!r.ok) throw new Error(r.message);
+    return r.points;
   };
 
   function usePoints(points) {
@@ -625,9 +614,9 @@
       const f = e.target.files[0];
       if (!f) return;
       try {
-        usePoints(viewer.parseCsv(await f.text()));
+        usePoints(viewer.parseCsv(await f.text(), f.name));
       } catch (err) {
-        report(`${f.name}: ${err.message}`);
+        report(err.message);
       }
     });
     $('export').addEventListener('click', download);

@@ -269,7 +269,7 @@ test('bad points are answered with a message naming them', async () => {
     const odd = v.module.compare({ points: [0, 0, 1], configurations: [{ name: 'cubic-b' }] });
     return { csv, same, unknown, parameter, format, odd };
   });
-  assert.match(r.csv, /line 3/);
+  assert.match(r.csv, /pasted points:3/);
   assert.equal(r.same.ok, false);
   assert.match(r.same.message, /points 0 and 1 coincide/);
   assert.match(r.unknown.message, /unknown method 'no-such-method'/);
