@@ -51,6 +51,7 @@ test=(
   libopenmpi-dev openmpi-bin   # the space pseudo-energy table on MPI (make test runs mpirun -np 2)
   python3-ezdxf chromium # the export test reads DXF with ezdxf and renders SVG in headless Chromium
   libspiro-dev           # the spiro method's check against libspiro (a test program only: GPL)
+  python3-fonttools fonts-dejavu-core   # the benchmark's glyph outlines regenerate (scripts/glyph_points.py)
 )
 bench=(
   libbenchmark-dev       # make bench

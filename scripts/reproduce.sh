@@ -43,7 +43,7 @@ run_one "$last" || status=1
 # (results/benchmark/; the random sets' run times in results/timing/, not compared); its figures are
 # rendered with the remaining scripts below.
 mkdir -p results/timing
-"$build/cagd" benchmark --out results/benchmark --timing-out results/timing/benchmark_random_sets.csv --quiet ||
+"$build/cagd" benchmark --out results/benchmark --classic reference/benchmark/classic_data.csv --timing-out results/timing/benchmark_random_sets.csv --quiet ||
   { echo "reproduce: cagd benchmark failed" >&2; status=1; }
 # Any figure script no experiment named (style.gp and compare_panels.gp are loaded by the figure
 # scripts, not figures themselves), $JOBS gnuplot processes at a time.

@@ -9,6 +9,8 @@
 //                           line naming it (scripts/plot/benchmark_fig_convergence.gp draws them)
 //   random_sets.csv         per kind × size × configuration, the outcomes on --random-sets seeded
 //                           random sets (compare/random_sets.hpp); leaderboard.md gets their failure rates
+//   classic_runs.csv, classic.md  with --classic MANIFEST: every configuration on the classic data
+//                           sets (compare/classic_benchmark.hpp); leaderboard.md gets a summary
 // Deterministic: no timing in DIR. The random sets' run times (median, 90th percentile, largest per
 // configuration) go to --timing-out FILE when given. Progress on stderr when it is a terminal.
 #include <algorithm>
@@ -17,6 +19,7 @@
 #include <optional>
 #include <sstream>
 
+#include "cagd/compare/classic_benchmark.hpp"
 #include "cagd/compare/random_sets.hpp"
 #include "cagd/compare/truth_benchmark.hpp"
 #include "cagd/core/csv.hpp"
@@ -32,7 +35,7 @@ namespace {
 constexpr double kDrawnFloor = 1e-17;
 
 struct BenchmarkArgs {
-    std::string out, sizes = "6,12,24,48,96,192,384,768", families, methods, random_sizes = "8,32,128", timing_out;
+    std::string out, sizes = "6,12,24,48,96,192,384,768", families, methods, random_sizes = "8,32,128", timing_out, classic;
     int threads = 0, random_sets = 1000, scatter_max_points = 32;
 };
 
@@ -73,12 +76,25 @@ int run_benchmark(const BenchmarkArgs& a) {
     for (const std::string& m : split(a.methods)) options.methods.push_back(methods::find_configuration(m).name);
     options.threads = random.threads = a.threads;
     random.methods = options.methods;
+    std::vector<compare::ClassicDataSet> classic_sets;
+    if (!a.classic.empty()) classic_sets = compare::read_classic_data(a.classic);  // bad data before any work
     OutputDirectory out(a.out);  // checked before the work
     std::optional<OutputFile> timing;
     if (!a.timing_out.empty()) timing.emplace(a.timing_out, "--timing-out");  // checked before the work too
     if (progress_enabled()) std::cerr << "cagd benchmark: " << options.sizes.size() << " sizes\n";
     const std::vector<compare::TruthRun> runs = compare::run_truth_benchmark(options);
     const std::vector<compare::ConvergenceOrder> orders = compare::convergence_orders(runs);
+    std::vector<compare::ClassicRun> classic_runs;
+    if (!classic_sets.empty()) {
+        if (progress_enabled()) std::cerr << "cagd benchmark: " << classic_sets.size() << " classic data sets\n";
+        classic_runs = compare::run_classic_benchmark(classic_sets, options.methods, a.threads);
+        CsvOutput w(out.staged("classic_runs.csv"), compare::classic_runs_header());
+        for (const auto& row : compare::classic_runs_rows(classic_runs)) w.row_text(row);
+        w.commit();
+        OutputFile f(out.staged("classic.md"));
+        f.stream() << compare::classic_tables_markdown(classic_runs, classic_sets);
+        f.commit();
+    }
     std::vector<compare::RandomSetSummary> random_runs;
     if (random.sets > 0) {
         if (progress_enabled()) std::cerr << "cagd benchmark: " << random.sets << " random sets per kind and size\n";
@@ -99,7 +115,8 @@ int run_benchmark(const BenchmarkArgs& a) {
     }
     {
         OutputFile f(out.staged("leaderboard.md"));
-        f.stream() << compare::truth_leaderboard_markdown(runs, orders) << compare::random_sets_markdown(random_runs);
+        f.stream() << compare::truth_leaderboard_markdown(runs, orders) << compare::classic_summary_markdown(classic_runs, classic_sets)
+                   << compare::random_sets_markdown(random_runs);
         f.commit();
     }
     for (const compare::TruthFamily& family : compare::truth_families()) {
@@ -143,6 +160,9 @@ Command add_benchmark_command(CLI::App& app) {
     c->add_option("--scatter-max-points", a->scatter_max_points, "scattered random sets only up to this many points (walks at every --random-sizes)")
         ->capture_default_str()
         ->check(CLI::Range(0, 100000));
+    c->add_option("--classic", a->classic,
+                  "manifest of classic data sets (CSV: name, group, file, closed, source; reference/benchmark/classic_data.csv): classic_runs.csv, classic.md "
+                  "and a summary in leaderboard.md; absent: none");
     c->add_option("--timing-out", a->timing_out, "CSV file for the random sets' run times per configuration (median, 90th percentile, largest); absent: not written");
     return {c, [a] { return run_benchmark(*a); }};
 }

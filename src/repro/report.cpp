@@ -146,6 +146,10 @@ std::string benchmark_section(const fs::path& results) {
     std::ifstream in(board);
     std::ostringstream text;
     text << in.rdbuf();
+    // The leaderboard links its neighbours (classic.md, classic_runs.csv) from results/benchmark/;
+    // here they are one folder down.
+    std::string board_text = text.str();
+    for (std::size_t at = 0; (at = board_text.find("](classic", at)) != std::string::npos; at += 2) board_text.insert(at + 2, "benchmark/");
     std::ostringstream s;
     s << "\n<a id=\"benchmark\"></a>\n\n## Beyond the papers: the interpolant benchmark\n\n"
          "Not a claim of any paper: every configuration of the registry on points sampled from curves with a known answer "
@@ -154,7 +158,7 @@ std::string benchmark_section(const fs::path& results) {
          "error times the true length (largest and L2 over arc length). An observed order comes from the two largest sizes. "
          "Data: [`benchmark/truth_runs.csv`](benchmark/truth_runs.csv), [`benchmark/convergence_orders.csv`](benchmark/convergence_orders.csv); "
          "script: [`scripts/plot/benchmark_fig_convergence.gp`](../scripts/plot/benchmark_fig_convergence.gp).\n"
-      << text.str() << "\n#### Convergence\n\n";
+      << board_text << "\n#### Convergence\n\n";
     for (const char* family : {"line", "circle", "ellipse", "epitrochoid", "clothoid", "log-aesthetic", "helix", "trefoil"})
         if (fs::exists(dir / (std::string("convergence_") + family + ".png")))
             s << "![" << family << "](benchmark/convergence_" << family << ".png)\n\n";

@@ -7,7 +7,7 @@
 #include <utility>
 #include <sstream>
 
-#include "cagd/compare/method_comparison.hpp"
+#include "cagd/compare/interpolation_attempt.hpp"
 #include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
 #include "cagd/core/parallel.hpp"
@@ -59,7 +59,7 @@ std::vector<RandomSetSummary> run_random_sets(const RandomSetOptions& o) {
         for (const methods::Configuration& c : configurations) out.push_back({kind, n, c.name, o.sets, 0, 0, 0, 0, {}});
     // One task per (case, set): its points made once, every configuration on them.
     struct SetOutcome {
-        char status = 0;  // 'o' ok, 'n' no result, 'r' refused, 'a' not applicable
+        AttemptStatus status = AttemptStatus::ok;
         double seconds = 0.0;
     };
     const std::size_t per_set = configurations.size();
@@ -70,17 +70,9 @@ std::vector<RandomSetSummary> run_random_sets(const RandomSetOptions& o) {
         const PointList points = random_set(kind, n, static_cast<unsigned>(task % o.sets));
         for (std::size_t m = 0; m < per_set; ++m) {
             SetOutcome& r = outcomes[static_cast<std::size_t>(task) * per_set + m];
-            if (!method_applicability(configurations[m].claims, points, false).empty()) {
-                r.status = 'a';
-                continue;
-            }
+            // Timed around the whole attempt (the applicability check is a few comparisons).
             const auto start = std::chrono::steady_clock::now();
-            try {
-                const methods::InterpolationResult result = methods::interpolate(configurations[m], points, false);
-                r.status = result.outcome.ok() && result.interpolant ? 'o' : 'n';
-            } catch (const InvalidInput&) {
-                r.status = 'r';
-            }
+            r.status = attempt_interpolation(configurations[m], points, false).status;
             r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         }
     });
@@ -89,11 +81,11 @@ std::vector<RandomSetSummary> run_random_sets(const RandomSetOptions& o) {
         for (std::size_t m = 0; m < per_set; ++m) {
             RandomSetSummary& s = out[static_cast<std::size_t>(block) * per_set + m];
             const SetOutcome& r = outcomes[static_cast<std::size_t>(task) * per_set + m];
-            if (r.status == 'a') {
+            if (r.status == AttemptStatus::not_applicable) {
                 ++s.not_applicable;
                 continue;
             }
-            ++(r.status == 'o' ? s.ok : r.status == 'n' ? s.no_result : s.refused);
+            ++(r.status == AttemptStatus::ok ? s.ok : r.status == AttemptStatus::no_result ? s.no_result : s.refused);
             s.seconds.push_back(r.seconds);
         }
     }

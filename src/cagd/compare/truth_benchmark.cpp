@@ -7,6 +7,7 @@
 #include <tuple>
 
 #include "cagd/analysis/curve_measures.hpp"
+#include "cagd/compare/interpolation_attempt.hpp"
 #include "cagd/compare/method_comparison.hpp"
 #include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
@@ -83,11 +84,28 @@ std::pair<double, double> kappa_and_rate(const Eigen::MatrixXd& j) {
 
 // A rate of curvature change counts as zero below this (× L²): a straight stretch has no extrema.
 constexpr double kFlatRate = 1e-9;
+// A curvature counts as zero below this (× L): a straight stretch has no sign.
+constexpr double kFlatCurvature = 1e-9;
+// A turn of the polygon (the sine of its angle) counts as none below this: collinear points.
+constexpr double kStraightTurn = 1e-12;
+
+// Sign changes in a sequence of −1, 0, 1 (zeros skipped); closed: also from the last sign to the first.
+int sign_changes(const std::vector<int>& signs, bool closed) {
+    int first = 0, last = 0, changes = 0;
+    for (int sign : signs) {
+        if (sign == 0) continue;
+        if (last != 0 && sign != last) ++changes;
+        if (first == 0) first = sign;
+        last = sign;
+    }
+    if (closed && first != 0 && last != first) ++changes;
+    return changes;
+}
 
 }  // namespace
 
 const std::vector<std::string>& shape_measure_names() {
-    static const std::vector<std::string> names{"bending", "variation", "max_curvature", "curvature_extrema", "g2_defect"};
+    static const std::vector<std::string> names{"bending", "variation", "max_curvature", "curvature_extrema", "g2_defect", "inflections", "unimplied_inflections"};
     return names;
 }
 
@@ -95,9 +113,12 @@ ShapeMeasures shape_measures(const Curve& c, const std::vector<double>& nodes, b
     if (nodes.size() < 2) fail_input("compare::shape_measures", "needs at least two nodes, got " + std::to_string(nodes.size()));
     static const numeric::GaussLegendreRule rule(kNodesPerSpan);
     double length = 0.0, bending = 0.0, variation = 0.0, max_kappa = 0.0;
-    std::vector<double> rates;
+    std::vector<double> rates, kappas;
     for (std::size_t k = 0; k + 1 < nodes.size(); ++k) {
         const double u0 = nodes[k], u1 = nodes[k + 1];
+        // κ's sign also at the span's ends (one-sided): a sign change between the last Gauss node and
+        // the point (3 % of the span from it) is counted too.
+        kappas.push_back(kappa(c.jet(u0, 2)));
         for (int q = 0; q < rule.size(); ++q) {
             const double u = u0 + 0.5 * (rule.nodes()[static_cast<std::size_t>(q)] + 1.0) * (u1 - u0);
             const Eigen::MatrixXd j = c.jet(u, 3);
@@ -106,7 +127,9 @@ ShapeMeasures shape_measures(const Curve& c, const std::vector<double>& nodes, b
             length += ds, bending += kappa * kappa * ds, variation += rate * rate * ds;
             max_kappa = std::max(max_kappa, std::abs(kappa));
             rates.push_back(rate);
+            kappas.push_back(kappa);
         }
+        kappas.push_back(kappa(c.jet_from_left(u1, 2)));
     }
     ShapeMeasures m;
     m.bending = length * bending;
@@ -121,12 +144,33 @@ ShapeMeasures shape_measures(const Curve& c, const std::vector<double>& nodes, b
         last = sign;
     }
     if (closed && first != 0 && last != first) ++m.curvature_extrema;
+    if (c.dimension() == 2) {
+        std::vector<int> curve_signs, turn_signs;
+        // (A point of zero speed at a span's end has no κ: no sign.)
+        for (double k : kappas) curve_signs.push_back(!std::isfinite(k) || std::abs(k) * length <= kFlatCurvature ? 0 : (k > 0 ? 1 : -1));
+        // The polygon through the curve's points at the nodes (closed: the last node is the first point).
+        const std::size_t points = closed ? nodes.size() - 1 : nodes.size();
+        std::vector<Eigen::Vector2d> p;
+        for (std::size_t i = 0; i < points; ++i) p.emplace_back(c.jet(nodes[i], 0).row(0).transpose());
+        for (std::size_t i = closed ? 0 : 1; i < (closed ? points : points - 1); ++i) {
+            const Eigen::Vector2d a = p[i] - p[(i + points - 1) % points], b = p[(i + 1) % points] - p[i];
+            const double turn = (a(0) * b(1) - a(1) * b(0)) / (a.norm() * b.norm());
+            turn_signs.push_back(std::abs(turn) <= kStraightTurn ? 0 : (turn > 0 ? 1 : -1));
+        }
+        m.inflections = sign_changes(curve_signs, closed);
+        m.unimplied_inflections = std::max(0, m.inflections - sign_changes(turn_signs, closed));
+    }
     const std::size_t count = nodes.size();
     for (std::size_t i = closed ? 0 : 1; i + 1 < count; ++i) {
         const double left = kappa(i == 0 ? c.jet_from_left(nodes.back(), 2) : c.jet_from_left(nodes[i], 2)), right = kappa(c.jet(nodes[i], 2));
         m.g2_defect = std::max(m.g2_defect, std::abs(left - right) * length);
     }
     return m;
+}
+
+std::string inflections_text(const ShapeMeasures& s, bool space) {
+    if (space) return "—";
+    return std::to_string(s.inflections) + (s.unimplied_inflections > 0 ? " (+" + std::to_string(s.unimplied_inflections) + ")" : "");
 }
 
 const std::vector<std::string>& truth_error_names() {
@@ -249,24 +293,11 @@ std::vector<TruthRun> run_truth_benchmark(const TruthBenchmarkOptions& o) {
         TruthRun& r = runs[static_cast<std::size_t>(index)];
         r.family = k.family->name, r.spacing = k.spacing, r.closed = k.closed, r.n = k.n, r.method = m.name;
         r.truth_shape = truth_shapes[static_cast<std::size_t>(index) / configurations.size()];
-        r.note = method_applicability(m.claims, sample.points, k.closed);
-        if (!r.note.empty()) {
-            r.status = "not applicable";
-            return;
-        }
-        methods::InterpolationResult result;
-        try {
-            result = methods::interpolate(m, sample.points, k.closed);
-        } catch (const InvalidInput& e) {
-            r.status = "refused";
-            r.note = e.what();
-            return;
-        }
-        if (!result.outcome.ok() || !result.interpolant) {
-            r.status = "no result";
-            r.note = result.outcome.message;
-            return;
-        }
+        InterpolationAttempt attempt = attempt_interpolation(m, sample.points, k.closed);
+        r.status = to_string(attempt.status);
+        r.note = attempt.note;
+        if (attempt.status != AttemptStatus::ok) return;
+        const methods::InterpolationResult& result = attempt.result;
         r.errors = truth_errors(*result.interpolant, sample, *k.family->curve);
         r.shape = shape_measures(*result.interpolant->curve, result.interpolant->node_parameters, k.closed);
         r.extensionality = extensionality(m, sample.points, k.closed, *result.interpolant);
@@ -274,7 +305,7 @@ std::vector<TruthRun> run_truth_benchmark(const TruthBenchmarkOptions& o) {
         bool finite = std::isfinite(r.shape.bending) && std::isfinite(r.shape.variation) && std::isfinite(r.shape.max_curvature) && std::isfinite(r.shape.g2_defect);
         for (int e = 0; e < 5; ++e) finite = finite && std::isfinite(truth_error(r.errors, e));
         if (!finite) {  // a node of zero speed: κ undefined there
-            r.status = "cusp";
+            r.status = to_string(AttemptStatus::cusp);
             r.note = "the curve has a point of zero speed, where its curvature is undefined";
             r.errors = {};
             r.shape = {};
@@ -352,7 +383,9 @@ std::vector<std::vector<std::string>> truth_runs_rows(const std::vector<TruthRun
         std::vector<std::string> row{r.family, to_string(r.spacing), r.closed ? "1" : "0", std::to_string(r.n), r.method, r.status};
         for (int m = 0; m < 5; ++m) row.push_back(r.status == "ok" ? format_number(truth_error(r.errors, m), digits) : "");
         const auto shape = [&](const ShapeMeasures& s, bool shown) {
-            for (const double v : {s.bending, s.variation, s.max_curvature, static_cast<double>(s.curvature_extrema), s.g2_defect}) row.push_back(shown ? format_number(v, digits) : "");
+            for (const double v : {s.bending, s.variation, s.max_curvature, static_cast<double>(s.curvature_extrema), s.g2_defect, static_cast<double>(s.inflections),
+                                   static_cast<double>(s.unimplied_inflections)})
+                row.push_back(shown ? format_number(v, digits) : "");
         };
         shape(r.shape, r.status == "ok");
         row.push_back(r.status == "ok" && r.extensionality ? format_number(*r.extensionality, digits) : "");
@@ -444,11 +477,12 @@ std::string truth_leaderboard_markdown(const std::vector<TruthRun>& runs, const 
         if (shaped.empty()) continue;
         const auto shape_row = [&](const std::string& name, const ShapeMeasures& s, const std::string& extension) {
             md << "| " << name << " | " << number(s.bending) << " | " << number(s.variation) << " | " << number(s.max_curvature) << " | " << s.curvature_extrema << " | "
-               << number(s.g2_defect) << " | " << extension << " |\n";
+               << number(s.g2_defect) << " | " << inflections_text(s, f.dimension == 3) << " | " << extension << " |\n";
         };
         md << "\nShape at " << kShapeTableSize << " points (scale-free: L∫κ² ds, L³∫κ'² ds, max |κ|·L, sign changes of κ', the largest curvature jump at a point × L; "
+           << "inflections: sign changes of κ, (+u): u of them not implied by the polygon through the points; "
            << "extension: how far the curve moves, ÷ L, when a point taken on it is added):\n\n"
-           << "| | bending | variation | max κ·L | κ extrema | G2 defect | extension |\n|---|---:|---:|---:|---:|---:|---:|\n";
+           << "| | bending | variation | max κ·L | κ extrema | G2 defect | inflections | extension |\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
         shape_row("**truth**", shaped.front()->truth_shape, "—");
         for (const TruthRun* s : shaped) shape_row("`" + s->method + "`", s->shape, s->extensionality ? number(*s->extensionality) : "no curve");
     }

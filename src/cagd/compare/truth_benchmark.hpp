@@ -60,10 +60,23 @@ struct ShapeMeasures {
     double max_curvature = 0.0;  ///< max |κ| · L
     int curvature_extrema = 0;   ///< sign changes of dκ/ds along the curve (|dκ/ds| L² ≤ 1e-9 counts as 0)
     double g2_defect = 0.0;      ///< max over the interior points (closed: every point) of |κ(u⁺) − κ(u⁻)| · L
+    /// Sign changes of the signed κ along the curve (closed: around it), on the Gauss nodes and the
+    /// spans' ends (one-sided), |κ| L ≤ 1e-9 counting as 0; a κ jump through 0 at a G1 join counts.
+    /// Space curves: 0 (|κ| has no sign).
+    int inflections = 0;
+    /// Inflections the polygon through the points does not imply: inflections less the sign changes
+    /// of the polygon's turns at its points (the sign of (P_i − P_{i−1}) × (P_{i+1} − P_i); closed: at
+    /// every point and around; a turn below 1e-12 rad counting as none), or 0 when that is negative.
+    /// A count, not a location: a curve that moves an inflection to the wrong span and has no other
+    /// is not caught. Space curves: 0.
+    int unimplied_inflections = 0;
 };
 /// The shape measures of `curve` between consecutive `nodes` (its parameters at the points; closed:
 /// the last is the first again). Planar curves: signed κ; space: |κ|. NaN where the speed vanishes.
 ShapeMeasures shape_measures(const Curve& curve, const std::vector<double>& nodes, bool closed);
+/// The inflections as the leaderboards print them: "k", or "k (+u)" when u of the k are not implied
+/// by the polygon; "—" for a space curve (`space`).
+std::string inflections_text(const ShapeMeasures& s, bool space);
 /// The names of the shape measures, in the order of ShapeMeasures.
 const std::vector<std::string>& shape_measure_names();
 

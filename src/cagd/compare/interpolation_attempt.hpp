@@ -1,0 +1,36 @@
+#pragma once
+/// @file
+/// One configuration of the registry tried on one set of points, and what became of it: the one
+/// classification the benchmark's truth runs, classic runs and random sets share.
+///
+///   ok              a curve
+///   not applicable  the method's claims exclude the input (method_applicability: too few points,
+///                   closed curves unsupported, 3-D); the method is not called
+///   refused         the method's own input check threw InvalidInput (a reversal where no tangent
+///                   exists, a degenerate span): the message is the note
+///   no result       a returned status without a curve (no solution, no convergence, not
+///                   representable): its message is the note
+///   cusp            a curve, but with a point of zero speed where its curvature is undefined (set
+///                   by the caller that measures the curve: attempt_interpolation never returns it)
+#include <string>
+
+#include "cagd/core/points.hpp"
+#include "cagd/methods/method_registry.hpp"
+
+namespace cagd::compare {
+
+/// What became of one interpolation (see above).
+enum class AttemptStatus { ok, not_applicable, refused, no_result, cusp };
+/// "ok", "not applicable", "refused", "no result", "cusp".
+const char* to_string(AttemptStatus status);
+
+/// One interpolation tried (see above).
+struct InterpolationAttempt {
+    AttemptStatus status = AttemptStatus::ok;  ///< its outcome
+    std::string note;                          ///< why not ok (empty when ok)
+    methods::InterpolationResult result;       ///< the curve when ok
+};
+/// `configuration` on `points` (open or closed), classified; never throws for a method's refusal.
+InterpolationAttempt attempt_interpolation(const methods::Configuration& configuration, const PointList& points, bool closed);
+
+}  // namespace cagd::compare
