@@ -2,7 +2,7 @@
 
 The extension `cagd._cagd` is the CMake target cagd_python (python/CMakeLists.txt): setup.py
 configures a build tree of its own (library and module only, Release), builds that one target and
-copies the module beside python/cagd/__init__.py. The version is the CMake project's.
+copies the module (and the OpenCASCADE plugin libcagd_occt.so, when built) beside python/cagd/__init__.py. The version is the CMake project's.
 Environment: CAGD_BUILD_DIR names an existing, configured build tree to build the target in instead
 (a no-op when it is up to date; the project's tests use it); CMAKE_BUILD_PARALLEL_LEVEL the jobs.
 """
@@ -54,6 +54,10 @@ class BuildWithCMake(build_ext):
             sys.exit(f"setup.py: CMake built no _cagd module under {build_dir / 'python' / 'cagd'}")
         target.parent.mkdir(parents=True, exist_ok=True)
         shutil.copyfile(built[-1], target)
+        # The OpenCASCADE plugin (a library built with OpenCASCADE loads it from beside the module).
+        plugin = build_dir / "libcagd_occt.so"
+        if plugin.exists():
+            shutil.copyfile(plugin, target.parent / plugin.name)
 
 
 setup(version=project_version(), ext_modules=[CMakeModule("cagd._cagd")], cmdclass={"build_ext": BuildWithCMake})

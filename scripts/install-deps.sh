@@ -22,6 +22,7 @@ set -euo pipefail
 library=(
   cmake g++ make pkg-config
   ninja-build            # the build's generator (compiles a target's files while its libraries build)
+  ccache                 # compiled objects reused across build trees and clean clones (scripts/cmake/ccache.cmake)
   libeigen3-dev          # linear algebra, point types
   libboost-dev libboost-math-dev   # Boost.Math quadrature/interpolators, Boost.Multiprecision (headers)
   libceres-dev           # nonlinear least squares, gradient solvers (pseudo_energy reference CG)

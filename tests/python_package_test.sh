@@ -30,6 +30,20 @@ for field in "Name: cagd" "Version: $("$python" -c "import re,sys; print(re.sear
   grep -q "^$field" <<< "$show" || fail "pip show lacks '$field': $show"
 done
 "$work/venv/bin/python" -c "import cagd, os; d = os.path.dirname(cagd.__file__); assert all(os.path.exists(os.path.join(d, f)) for f in ('py.typed', '_cagd.pyi')), os.listdir(d)"
+# The OpenCASCADE plugin (core/detail/opencascade_plugin.hpp) comes with the package, and the
+# module loads it from there (not from the build tree) on the first use.
+if [ -f "$build/libcagd_occt.so" ]; then
+  "$work/venv/bin/python" -c "
+import cagd, os, numpy as np
+d = os.path.dirname(cagd.__file__)
+plugin = os.path.join(d, 'libcagd_occt.so')
+assert os.path.exists(plugin), os.listdir(d)
+assert plugin not in open('/proc/self/maps').read(), 'loaded before use'
+c = cagd.interpolate(np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 0.0], [3.0, 1.0]]), 'occt-interpolate')
+assert plugin in open('/proc/self/maps').read(), 'the plugin beside the module was not the one loaded'
+" || fail "the OpenCASCADE plugin of the installed package"
+  echo "pip install: the OpenCASCADE plugin loads from the package"
+fi
 CAGD_BUILD_DIR="$build" "$python" -m build --no-isolation --wheel --outdir "$work/dist" "$work/src" > "$work/wheel.log" 2>&1 || { cat "$work/wheel.log"; fail "python3 -m build --no-isolation --wheel"; }
 wheel=$(ls "$work"/dist/cagd-*.whl)
 listing=$("$python" -m zipfile -l "$wheel")
@@ -40,6 +54,9 @@ echo "wheel: $(basename "$wheel")"
 cmake --install "$build" --prefix "$work/prefix" > "$work/install.log"
 rel=$("$python" "$source/scripts/python-install-dir.py" /usr/local)
 [ -f "$work/prefix/$rel/cagd/__init__.py" ] && ls "$work/prefix/$rel/cagd"/_cagd*.so > /dev/null || fail "cmake --install put no package in $rel"
+if [ -f "$build/libcagd_occt.so" ]; then
+  ls "$work/prefix"/lib*/cagd/libcagd_occt.so "$work/prefix/$rel/cagd/libcagd_occt.so" > /dev/null || fail "cmake --install put no OpenCASCADE plugin in lib/cagd and the package"
+fi
 out=$(PYTHONPATH="$work/prefix/$rel" "$python" -c "import cagd; print(cagd.__version__, cagd.__file__)")
 echo "cmake --install: $out"
 case "$out" in *"$work/prefix/$rel/cagd/"*) ;; *) fail "imported from elsewhere: $out" ;; esac

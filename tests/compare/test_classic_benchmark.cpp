@@ -69,7 +69,9 @@ TEST(ClassicBenchmark, TheManifestReadsEveryDataSetWithItsProvenance) {
         EXPECT_EQ(d.points.cols(), 2) << d.name;
         EXPECT_FALSE(d.source.empty()) << d.name;
         papers += d.group == "paper", literature += d.group == "literature", glyphs += d.group == "glyph";
-        if (d.group == "glyph") EXPECT_TRUE(d.closed) << d.name << ": a glyph contour is closed";
+        if (d.group == "glyph") {
+            EXPECT_TRUE(d.closed) << d.name << ": a glyph contour is closed";
+        }
     }
     EXPECT_GE(papers, 3);
     EXPECT_GE(literature, 2);
@@ -168,8 +170,12 @@ TEST(ClassicBenchmark, RunsAreClassifiedAndMeasuredAsTheirCurvesAre) {
         EXPECT_GE(r.overshoot, 0.0);
         ASSERT_TRUE(r.extensionality.has_value());
         // The clothoid spline is extensional (a point on it leaves it in place), the chordal cubic is not.
-        if (r.method == "curvature-profile") EXPECT_LT(*r.extensionality, 1e-9);
-        if (r.method == "cubic-b") EXPECT_GT(*r.extensionality, 1e-6);
+        if (r.method == "curvature-profile") {
+            EXPECT_LT(*r.extensionality, 1e-9);
+        }
+        if (r.method == "cubic-b") {
+            EXPECT_GT(*r.extensionality, 1e-6);
+        }
     }
     // Rows: one per run, the numbers empty unless ok.
     const auto rows = classic_runs_rows(runs);

@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <numbers>
+#include <string>
 
 #include "cagd/methods/method_registry.hpp"
 
@@ -92,4 +94,27 @@ TEST(OpenCascadePeer, TinyAndHugeDataGiveTheSameShape) {
             EXPECT_LE((s.interpolant->curve->point(std::min(t * scale, s.interpolant->curve->t_max())) / scale - one.interpolant->curve->point(t)).norm(), 1e-12);
         }
     }
+}
+
+namespace {
+// Whether a shared object whose name contains `name` is mapped into this process.
+bool mapped(const std::string& name) {
+    std::ifstream maps("/proc/self/maps");
+    std::string line;
+    while (std::getline(maps, line))
+        if (line.find(name) != std::string::npos) return true;
+    return false;
+}
+}  // namespace
+
+TEST(OpenCascadePeer, OpenCascadeIsLoadedOnlyWhenFirstUsed) {
+    if (!has_opencascade_peer()) GTEST_SKIP() << "library built without OpenCASCADE";
+    // The test program links the library, not OpenCASCADE: its 30 ms of start-up come with the
+    // plugin (core/detail/opencascade_plugin.hpp), on the first interpolation.
+    EXPECT_FALSE(mapped("libTKernel")) << "OpenCASCADE was loaded before any use";
+    EXPECT_FALSE(mapped("libcagd_occt"));
+    const InterpolationResult r = interpolate(find_configuration("occt-interpolate"), wavy_points(8, false), false);
+    ASSERT_TRUE(r.outcome.ok()) << r.outcome.message;
+    EXPECT_TRUE(mapped("libcagd_occt"));
+    EXPECT_TRUE(mapped("libTKernel"));
 }

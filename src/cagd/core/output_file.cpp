@@ -262,7 +262,8 @@ OutputDirectory::OutputDirectory(const std::string& path, const std::string& opt
     if (target.filename().empty()) target = target.parent_path();
     const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
     if (!fs::is_directory(parent, ec)) fail_input(who, option + " '" + path + "': its parent directory does not exist");
-    std::string pattern = (parent / ("." + target.filename().string() + ".cagd-XXXXXX")).string();
+    // (appends: GCC 12 warns falsely of an oversized memcpy in "." + std::string&&)
+    std::string pattern = (parent / std::string(".").append(target.filename().string()).append(".cagd-XXXXXX")).string();
     if (::mkdtemp(pattern.data()) == nullptr) fail_input(who, option + " '" + path + "': cannot write in '" + parent.string() + "': " + reason(errno));
     ::chmod(pattern.c_str(), new_directory_mode());  // mkdtemp makes 0700; a new directory's mode
     staging_ = pattern;

@@ -1,0 +1,185 @@
+// libcagd_occt.so: the library's calls into OpenCASCADE, loaded by the library on first use
+// (src/cagd/core/detail/opencascade_plugin.hpp says why and how). OpenCASCADE's exceptions end here:
+// every entry point returns false with the message instead.
+#include "cagd/core/detail/opencascade_plugin.hpp"
+
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <GeomAPI_Interpolate.hxx>
+#include <Geom_BSplineCurve.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <IFSelect_ReturnStatus.hxx>
+#include <Interface_Static.hxx>
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
+#include <Precision.hxx>
+#include <STEPControl_Writer.hxx>
+#include <Standard_Failure.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColgp_Array1OfPnt.hxx>
+#include <TColgp_Array2OfPnt.hxx>
+#include <TColgp_HArray1OfPnt.hxx>
+#include <TopoDS_Edge.hxx>
+#include <TopoDS_Face.hxx>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <sstream>
+
+namespace {
+
+using cagd::detail::OpenCascadeBSpline;
+
+gp_Pnt point(const Eigen::MatrixXd& rows, Eigen::Index i) { return gp_Pnt(rows(i, 0), rows(i, 1), rows.cols() > 2 ? rows(i, 2) : 0.0); }
+
+bool interpolate(const Eigen::MatrixXd& points, bool closed, double tolerance, OpenCascadeBSpline& out, std::string& message) {
+    try {
+        Message::DefaultMessenger()->ChangePrinters().Clear();  // no messages on standard output
+        Handle(TColgp_HArray1OfPnt) array = new TColgp_HArray1OfPnt(1, static_cast<int>(points.rows()));
+        for (Eigen::Index i = 0; i < points.rows(); ++i) array->SetValue(static_cast<int>(i) + 1, point(points, i));
+        GeomAPI_Interpolate interpolate(array, closed, tolerance);
+        interpolate.Perform();
+        if (!interpolate.IsDone()) {
+            message = "OpenCASCADE's GeomAPI_Interpolate did not find a curve";
+            return false;
+        }
+        Handle(Geom_BSplineCurve) curve = Handle(Geom_BSplineCurve)::DownCast(interpolate.Curve()->Copy());
+        if (curve->IsPeriodic()) curve->SetNotPeriodic();
+        out.degree = curve->Degree();
+        out.knots.clear();
+        for (int k = 1; k <= curve->NbKnots(); ++k) out.knots.insert(out.knots.end(), static_cast<std::size_t>(curve->Multiplicity(k)), curve->Knot(k));
+        out.poles.resize(curve->NbPoles(), points.cols());
+        for (int i = 1; i <= curve->NbPoles(); ++i) {
+            const gp_Pnt q = curve->Pole(i);
+            const double xyz[3] = {q.X(), q.Y(), q.Z()};
+            for (Eigen::Index c = 0; c < points.cols(); ++c) out.poles(i - 1, c) = xyz[c];
+        }
+        return true;
+    } catch (const Standard_Failure& e) {
+        message = std::string("OpenCASCADE's GeomAPI_Interpolate: ") + e.GetMessageString();
+        return false;
+    }
+}
+
+std::mutex step_writer_mutex;  // OpenCASCADE's static interface parameters are process-wide
+
+// The STEP text of `shape` (AP214, millimetres) through a temporary file: OpenCASCADE writes only to
+// paths. The caller holds step_writer_mutex.
+bool write_shape(const TopoDS_Shape& shape, const char* what, std::string& step, std::string& message) {
+    STEPControl_Writer writer;
+    Interface_Static::SetCVal("write.step.schema", "AP214IS");
+    Interface_Static::SetCVal("write.step.unit", "MM");
+    if (writer.Transfer(shape, STEPControl_AsIs) != IFSelect_RetDone) {
+        message = std::string("OpenCASCADE could not translate the ") + what + " to STEP";
+        return false;
+    }
+    std::string pattern = (std::filesystem::temp_directory_path() / "cagd-step-XXXXXX").string();
+    const int fd = mkstemp(pattern.data());
+    if (fd < 0) {
+        message = "no temporary file for OpenCASCADE's STEP writer in " + std::filesystem::temp_directory_path().string();
+        return false;
+    }
+    close(fd);
+    const std::filesystem::path temp = pattern;
+    struct RemovedOnExit {  // also when OpenCASCADE throws
+        std::filesystem::path path;
+        ~RemovedOnExit() {
+            std::error_code ec;
+            std::filesystem::remove(path, ec);
+        }
+    } removed{temp};
+    const IFSelect_ReturnStatus written = writer.Write(temp.c_str());
+    std::ifstream in(temp, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    const bool read = static_cast<bool>(in);
+    in.close();
+    if (written != IFSelect_RetDone || !read) {
+        message = "OpenCASCADE's STEP writer failed";
+        return false;
+    }
+    step = text.str();
+    return true;
+}
+
+// The distinct knot values of `all` with their multiplicities, as OpenCASCADE's arrays.
+void fill_knots(const std::vector<double>& all, TColStd_Array1OfReal& knots, TColStd_Array1OfInteger& mults) {
+    std::vector<double> values;
+    std::vector<int> counts;
+    for (const double k : all) {
+        if (!values.empty() && k == values.back())
+            ++counts.back();
+        else
+            values.push_back(k), counts.push_back(1);
+    }
+    knots.Resize(1, static_cast<int>(values.size()), false);
+    mults.Resize(1, static_cast<int>(values.size()), false);
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        knots.SetValue(static_cast<int>(i) + 1, values[i]);
+        mults.SetValue(static_cast<int>(i) + 1, counts[i]);
+    }
+}
+
+bool step_curve(const OpenCascadeBSpline& curve, std::string& step, std::string& message) {
+    const std::lock_guard<std::mutex> lock(step_writer_mutex);
+    try {
+        Message::DefaultMessenger()->ChangePrinters().Clear();
+        TColgp_Array1OfPnt poles(1, static_cast<int>(curve.poles.rows()));
+        for (Eigen::Index i = 0; i < curve.poles.rows(); ++i) poles.SetValue(static_cast<int>(i) + 1, point(curve.poles, i));
+        TColStd_Array1OfReal knots(1, 1);
+        TColStd_Array1OfInteger multiplicities(1, 1);
+        fill_knots(curve.knots, knots, multiplicities);
+        const Handle(Geom_BSplineCurve) c = new Geom_BSplineCurve(poles, knots, multiplicities, curve.degree);
+        BRepBuilderAPI_MakeEdge edge(c);
+        if (!edge.IsDone()) {
+            message = "OpenCASCADE could not make an edge of the B-spline";
+            return false;
+        }
+        return write_shape(edge.Edge(), "curve", step, message);
+    } catch (const Standard_Failure& e) {
+        message = std::string("OpenCASCADE: ") + e.GetMessageString();
+        return false;
+    }
+}
+
+bool step_surface(int du, int dv, const std::vector<double>& ku, const std::vector<double>& kv, const Eigen::MatrixXd& x, const Eigen::MatrixXd& y, const Eigen::MatrixXd& z,
+                  std::string& step, std::string& message) {
+    const std::lock_guard<std::mutex> lock(step_writer_mutex);
+    try {
+        Message::DefaultMessenger()->ChangePrinters().Clear();
+        TColgp_Array2OfPnt poles(1, static_cast<int>(x.rows()), 1, static_cast<int>(x.cols()));
+        for (Eigen::Index i = 0; i < x.rows(); ++i)
+            for (Eigen::Index j = 0; j < x.cols(); ++j) poles.SetValue(static_cast<int>(i) + 1, static_cast<int>(j) + 1, gp_Pnt(x(i, j), y(i, j), z(i, j)));
+        TColStd_Array1OfReal uknots(1, 1), vknots(1, 1);
+        TColStd_Array1OfInteger umults(1, 1), vmults(1, 1);
+        fill_knots(ku, uknots, umults);
+        fill_knots(kv, vknots, vmults);
+        const Handle(Geom_BSplineSurface) s = new Geom_BSplineSurface(poles, uknots, vknots, umults, vmults, du, dv);
+        BRepBuilderAPI_MakeFace face(s, Precision::Confusion());
+        if (!face.IsDone()) {
+            message = "OpenCASCADE could not make a face of the B-spline surface";
+            return false;
+        }
+        return write_shape(face.Face(), "surface", step, message);
+    } catch (const Standard_Failure& e) {
+        message = std::string("OpenCASCADE: ") + e.GetMessageString();
+        return false;
+    }
+}
+
+}  // namespace
+
+extern "C" __attribute__((visibility("default"))) const cagd::detail::OpenCascadePlugin* cagd_opencascade_plugin() {
+    static const cagd::detail::OpenCascadePlugin plugin{
+        .interface = cagd::detail::kOpenCascadePluginInterface,
+        .interpolate = &interpolate,
+        .step_curve = &step_curve,
+        .step_surface = &step_surface,
+        .max_surface_degree = Geom_BSplineSurface::MaxDegree(),
+    };
+    return &plugin;
+}
