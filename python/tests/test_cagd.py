@@ -202,6 +202,22 @@ def test_evaluate_is_vectorised_and_shaped():
     assert np.allclose(closed.evaluate(a), closed.evaluate(b), atol=1e-12)
 
 
+def test_long_arrays_are_evaluated_on_every_core_with_the_same_result():
+    # From 2^16 parameters on, evaluate and the other vectorised functions split the array over the
+    # cores (python/bindings.hpp); every value is the one a short, serial call gives, bit for bit.
+    c = cagd.interpolate(table1(), "pseudo-spline")
+    t = np.linspace(*c.parameter_range, 200003)
+    jets = c.evaluate(t, derivatives=2)
+    serial = np.concatenate([c.evaluate(t[i:i + 50000], derivatives=2) for i in range(0, t.size, 50000)])
+    assert np.array_equal(jets, serial)
+    assert np.array_equal(c.curvature(t), np.concatenate([c.curvature(t[i:i + 50000]) for i in range(0, t.size, 50000)]))
+    # A bad parameter deep in a long array is reported as a serial loop would report the first one.
+    bad = t.copy()
+    bad[150001], bad[190000] = 1e9, 2e9
+    with pytest.raises(ValueError, match=r"^t = 1000000000 outside"):
+        c.evaluate(bad)
+
+
 def test_bad_input_is_value_error_with_the_library_message():
     p = table1()
     with pytest.raises(ValueError, match="unknown method 'nope'"):
