@@ -193,37 +193,42 @@ void tangent_directions_with(const PointList& points, TangentRule rule, bool clo
     // t_i from a = P_i − P_{i−1}, b = P_{i+1} − P_i and P_{i+1} − P_{i−1}.
     const auto interior = [&](Eigen::Index i, const Row& a, double la, const Row& b, double lb, const Row& across) -> Row {
         const Row d = rule == TangentRule::circle ? Row(lb / la * a + la / lb * b) : across;
+        const double length = d.norm();  // once: the check and the division use the same value
         // A reversal leaves d = 0 (Hermite A: P_{i−1} = P_{i+1}) or tiny by cancellation.
-        if (d.norm() <= 1e-14 * (la + lb))
+        if (length <= 1e-14 * (la + lb))
             fail_input(who, "the curve reverses at point " + std::to_string(i) + " (turning angle π), where no tangent direction is defined");
-        return unit_row(d);
+        return d / length;
     };
     Row before = at(closed ? n - 1 : 0), here = at(closed ? 0 : 1);
     Row a = here - before;
     double la = a.norm();
+    const double first_chord = la;  // open: |P_1 − P_0|
     Row first_interior = at(0);  // t_1 (set in the loop), for an open circle end
     for (Eigen::Index i = closed ? 0 : 1; i < (closed ? n : n - 1); ++i) {
         const Row next = at(i + 1 == n ? 0 : i + 1), b = next - here;
         const double lb = b.norm();
         const Row t = interior(i, a, la, b, lb, next - before);
         if (!closed && i == 1) first_interior = t;
-        put(i, t);
+        put(i, t, la, lb);
         before = here, here = next, a = b, la = lb;
     }
     if (closed) return;
+    // (la is now |P_{n−1} − P_{n−2}|, the last chord.)
     if (rule == TangentRule::chord_of_neighbours) {
-        put(0, unit_row(at(1) - at(0)));
-        put(n - 1, unit_row(at(n - 1) - at(n - 2)));
+        put(0, unit_row(at(1) - at(0)), 0.0, first_chord);
+        put(n - 1, unit_row(at(n - 1) - at(n - 2)), la, 0.0);
         return;
     }
     // Circle end: reflect the middle tangent of the three end points.
     const Row ah = unit_row(at(1) - at(0));
-    put(0, Row(2.0 * first_interior.dot(ah) * ah - first_interior));
+    put(0, Row(2.0 * first_interior.dot(ah) * ah - first_interior), 0.0, first_chord);
     const Row p3 = at(n - 3), p2 = at(n - 2), p1 = at(n - 1), am = p2 - p3, bm = p1 - p2;
     const Row tm = interior(n - 2, am, am.norm(), bm, bm.norm(), p1 - p3), bh = unit_row(p1 - p2);
-    put(n - 1, Row(2.0 * tm.dot(bh) * bh - tm));
+    put(n - 1, Row(2.0 * tm.dot(bh) * bh - tm), la, 0.0);
 }
 
+// put(i, t_i, |P_i − P_{i−1}|, |P_{i+1} − P_i|) for every point (closed: indices modulo n; open: 0
+// for the chord an end point lacks): the chords are those the directions were computed from.
 template <class Put>
 void tangent_directions(const PointList& points, TangentRule rule, bool closed, const char* who, Put&& put) {
     if (points.cols() <= 3)
@@ -242,7 +247,7 @@ Eigen::MatrixXd hermite_tangent_directions(const PointList& points, TangentRule 
     const char* who = directions_who(rule);
     require_valid_points(points, (closed || rule == TangentRule::circle) ? 3 : 2, true, closed, who);
     Eigen::MatrixXd t(points.rows(), points.cols());
-    tangent_directions(points, rule, closed, who, [&](Eigen::Index i, const auto& r) { t.row(i) = r.head(points.cols()); });
+    tangent_directions(points, rule, closed, who, [&](Eigen::Index i, const auto& r, double, double) { t.row(i) = r.head(points.cols()); });
     return t;
 }
 
@@ -251,12 +256,12 @@ PiecewiseHermiteCurve hermite_spline(const PointList& points, TangentRule rule, 
     require_valid_points(points, (closed || rule == TangentRule::circle) ? 3 : 2, true, closed, who);
     const Eigen::Index n = points.rows(), dim = points.cols(), spans = closed ? n : n - 1;
     Eigen::MatrixXd nodes = span_nodes(points, closed), d0(spans, dim), d1(spans, dim);
-    const auto length = [&](Eigen::Index k) { return (nodes.row(k + 1) - nodes.row(k)).norm(); };
-    // t_i starts span i and ends span i − 1 (closed: t_0 also ends span n − 1).
-    tangent_directions(points, rule, closed, who, [&](Eigen::Index i, const auto& r) {
-        if (i > 0) d1.row(i - 1) = length(i - 1) * r.head(dim);
-        if (i < spans) d0.row(i) = length(i) * r.head(dim);
-        if (closed && i == 0) d1.row(n - 1) = length(n - 1) * r.head(dim);
+    // t_i starts span i and ends span i − 1 (closed: t_0 also ends span n − 1); the chords, |nodes_{k+1}
+    // − nodes_k| (the same differences), come with it.
+    tangent_directions(points, rule, closed, who, [&](Eigen::Index i, const auto& r, double before, double after) {
+        if (i > 0) d1.row(i - 1) = before * r.head(dim);
+        if (i < spans) d0.row(i) = after * r.head(dim);
+        if (closed && i == 0) d1.row(n - 1) = before * r.head(dim);
     });
     return PiecewiseHermiteCurve(std::move(nodes), std::move(d0), std::move(d1));
 }
