@@ -12,3 +12,13 @@ if(CAGD_USE_CCACHE AND CAGD_CCACHE_PROGRAM AND NOT CMAKE_CXX_COMPILER_LAUNCHER A
   set(CMAKE_CXX_COMPILER_LAUNCHER ${CMAKE_COMMAND} -E env CCACHE_BASEDIR=${CAGD_REPOSITORY_ROOT}
       CCACHE_SLOPPINESS=pch_defines,time_macros,include_file_mtime,include_file_ctime ${CAGD_CCACHE_PROGRAM})
 endif()
+
+# Definitions whose values differ from clone to clone or from commit to commit (the source tree's
+# path, the build tree's, the git revision) go on the few files that read them, compiled outside
+# the unity batches: every other file's command line is then the same in every clone, and ccache
+# reuses its object. cagd_clone_specific_definitions(FILES f... DEFINITIONS NAME=value...), called
+# in the directory whose CMakeLists.txt creates the target.
+function(cagd_clone_specific_definitions)
+  cmake_parse_arguments(ARG "" "" "FILES;DEFINITIONS" ${ARGN})
+  set_source_files_properties(${ARG_FILES} PROPERTIES COMPILE_DEFINITIONS "${ARG_DEFINITIONS}" SKIP_UNITY_BUILD_INCLUSION ON)
+endfunction()
