@@ -53,7 +53,7 @@ def main(argv):
         points = [coordinates[i] for i in range(start, ends[contour] + 1) if flags[i] & 1]
         path = os.path.join(out_dir, "dejavu-sans-%s-%d.csv" % (name, contour))
         with open(path, "w", encoding="utf-8") as f:
-            f.write("# glyph outline: the on-curve points of contour %d of the glyph \"%s\" (U+%04X) of %s, %s\n" % (contour, name, ord(char), family, version))
+            f.write("# source: the on-curve points of contour %d of the glyph \"%s\" (U+%04X) of the font %s, %s\n" % (contour, name, ord(char), family, version))
             f.write("# font file %s (Debian %s %s), read with fontTools %s by scripts/glyph_points.py\n"
                     % (os.path.basename(font_path), PACKAGE, package_version(PACKAGE), fonttools_version))
             f.write("# units: 1/%d em; a closed contour in the font's order (the off-curve points left out)\n" % units)
