@@ -71,7 +71,8 @@ std::vector<ClassicDataSet> read_classic_data(const std::string& path) {
     return sets;
 }
 
-std::vector<ClassicRun> run_classic_benchmark(const std::vector<ClassicDataSet>& sets, const std::vector<std::string>& names, int threads) {
+std::vector<ClassicRun> run_classic_benchmark(const std::vector<ClassicDataSet>& sets, const std::vector<std::string>& names, int threads, const WorkShare& share) {
+    check_work_share(share, "compare::run_classic_benchmark");
     std::vector<methods::Configuration> configurations;
     for (const std::string& name : names) configurations.push_back(methods::find_configuration(name));
     if (names.empty()) configurations = methods::configurations();
@@ -81,6 +82,7 @@ std::vector<ClassicRun> run_classic_benchmark(const std::vector<ClassicDataSet>&
             if (m.method->prepare && m.claims.max_dimension >= d) m.method->prepare(m.values, d);
     std::vector<ClassicRun> runs(sets.size() * configurations.size());
     parallel_for(static_cast<long>(runs.size()), threads > 0 ? threads : hardware_threads(), [&](long index) {
+        if (!share.owns(index)) return;
         const ClassicDataSet& d = sets[static_cast<std::size_t>(index) / configurations.size()];
         const methods::Configuration& m = configurations[static_cast<std::size_t>(index) % configurations.size()];
         ClassicRun& r = runs[static_cast<std::size_t>(index)];

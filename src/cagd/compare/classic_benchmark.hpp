@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "cagd/compare/truth_benchmark.hpp"
+#include "cagd/compare/work_share.hpp"
 #include "cagd/core/points.hpp"
 
 namespace cagd::compare {
@@ -54,8 +55,10 @@ struct ClassicRun {
     std::optional<double> extensionality;  ///< when ok (truth_benchmark.hpp's extensionality)
 };
 /// Every data set × configuration (`methods`: configuration or method names; empty: every one),
-/// data sets in the given order; `threads` runs at once (0: the hardware's).
-std::vector<ClassicRun> run_classic_benchmark(const std::vector<ClassicDataSet>& sets, const std::vector<std::string>& methods, int threads = 0);
+/// data sets in the given order; `threads` runs at once (0: the hardware's). With a share of the
+/// work, the runs outside it (by their index in the result) are left empty (ClassicRun{}).
+std::vector<ClassicRun> run_classic_benchmark(const std::vector<ClassicDataSet>& sets, const std::vector<std::string>& methods, int threads = 0,
+                                              const WorkShare& share = {});
 
 /// classic_runs.csv's columns: data_set, group, n, closed, method, status, the shape measures
 /// (shape_measure_names), overshoot, extensionality, note.

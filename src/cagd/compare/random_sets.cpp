@@ -6,6 +6,7 @@
 #include <random>
 #include <utility>
 #include <sstream>
+#include <stdexcept>
 
 #include "cagd/compare/interpolation_attempt.hpp"
 #include "cagd/core/csv.hpp"
@@ -41,6 +42,7 @@ std::vector<RandomSetSummary> run_random_sets(const RandomSetOptions& o) {
     if (o.sets < 1) fail_input(who, "sets = " + std::to_string(o.sets) + "; at least 1");
     for (const int n : o.sizes)
         if (n < 3) fail_input(who, "size " + std::to_string(n) + "; each size needs at least 3 points");
+    check_work_share(o.share, who);
     if (o.scatter_max_points < 0) fail_input(who, "scatter_max_points = " + std::to_string(o.scatter_max_points) + "; at least 0");
     std::vector<methods::Configuration> configurations;
     for (const std::string& name : o.methods) configurations.push_back(methods::find_configuration(name));
@@ -56,7 +58,7 @@ std::vector<RandomSetSummary> run_random_sets(const RandomSetOptions& o) {
             if (kind == RandomSetKind::walk || n <= o.scatter_max_points) cases.emplace_back(kind, n);
     std::vector<RandomSetSummary> out;
     for (const auto& [kind, n] : cases)
-        for (const methods::Configuration& c : configurations) out.push_back({kind, n, c.name, o.sets, 0, 0, 0, 0, {}});
+        for (const methods::Configuration& c : configurations) out.push_back({kind, n, c.name, 0, 0, 0, 0, 0, {}});
     // One task per (case, set): its points made once, every configuration on them.
     struct SetOutcome {
         AttemptStatus status = AttemptStatus::ok;
@@ -66,6 +68,7 @@ std::vector<RandomSetSummary> run_random_sets(const RandomSetOptions& o) {
     const long tasks = static_cast<long>(cases.size()) * o.sets;
     std::vector<SetOutcome> outcomes(static_cast<std::size_t>(tasks) * per_set);
     parallel_for(tasks, o.threads > 0 ? o.threads : hardware_threads(), [&](long task) {
+        if (!o.share.owns(task)) return;
         const auto& [kind, n] = cases[static_cast<std::size_t>(task / o.sets)];
         const PointList points = random_set(kind, n, static_cast<unsigned>(task % o.sets));
         for (std::size_t m = 0; m < per_set; ++m) {
@@ -77,9 +80,11 @@ std::vector<RandomSetSummary> run_random_sets(const RandomSetOptions& o) {
         }
     });
     for (long task = 0; task < tasks; ++task) {
+        if (!o.share.owns(task)) continue;
         const long block = task / o.sets;  // the case, in the order of `out`
         for (std::size_t m = 0; m < per_set; ++m) {
             RandomSetSummary& s = out[static_cast<std::size_t>(block) * per_set + m];
+            ++s.sets;
             const SetOutcome& r = outcomes[static_cast<std::size_t>(task) * per_set + m];
             if (r.status == AttemptStatus::not_applicable) {
                 ++s.not_applicable;
@@ -90,6 +95,17 @@ std::vector<RandomSetSummary> run_random_sets(const RandomSetOptions& o) {
         }
     }
     return out;
+}
+
+void merge_random_sets(std::vector<RandomSetSummary>& total, const std::vector<RandomSetSummary>& part) {
+    if (part.size() != total.size()) throw std::logic_error("compare::merge_random_sets: " + std::to_string(part.size()) + " summaries into " + std::to_string(total.size()));
+    for (std::size_t i = 0; i < total.size(); ++i) {
+        RandomSetSummary& t = total[i];
+        const RandomSetSummary& p = part[i];
+        if (p.kind != t.kind || p.n != t.n || p.method != t.method) throw std::logic_error("compare::merge_random_sets: summary " + std::to_string(i) + " is " + p.method + ", not " + t.method);
+        t.sets += p.sets, t.ok += p.ok, t.no_result += p.no_result, t.refused += p.refused, t.not_applicable += p.not_applicable;
+        t.seconds.insert(t.seconds.end(), p.seconds.begin(), p.seconds.end());
+    }
 }
 
 std::vector<std::string> random_sets_header() { return {"kind", "n", "method", "sets", "ok", "no_result", "refused", "not_applicable", "failure_rate"}; }

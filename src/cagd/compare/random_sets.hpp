@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "cagd/compare/work_share.hpp"
 #include "cagd/core/points.hpp"
 
 namespace cagd::compare {
@@ -41,6 +42,10 @@ struct RandomSetOptions {
     int sets = 1000;                     ///< sets per kind and size (≥ 1)
     std::vector<std::string> methods;    ///< configuration or method names; empty: every configuration
     int threads = 0;                     ///< sets interpolated at once (0: the hardware's)
+    /// The sets interpolated, by task (kind, size, set) in run order: task k = case × sets + set,
+    /// the cases in the order below; default: all. A share's summaries count its own sets only
+    /// (`sets` too): summed over the shares they are the whole run's (merge_random_sets).
+    WorkShare share;
 };
 
 /// One configuration on the sets of one kind and size.
@@ -59,6 +64,9 @@ struct RandomSetSummary {
 };
 /// Every kind × size × configuration, in that order (scattered sets up to scatter_max_points).
 std::vector<RandomSetSummary> run_random_sets(const RandomSetOptions& options);
+/// Adds `part`'s counts and run times to `total`'s (the same kind × size × configuration, in the
+/// same order; std::logic_error otherwise): shares of one run merged.
+void merge_random_sets(std::vector<RandomSetSummary>& total, const std::vector<RandomSetSummary>& part);
 
 /// random_sets.csv's columns: kind, n, method, sets, ok, no_result, refused, not_applicable, failure_rate.
 std::vector<std::string> random_sets_header();

@@ -276,7 +276,14 @@ std::vector<TruthRun> run_truth_benchmark(const TruthBenchmarkOptions& o) {
     // The samples of each case once (t(s) by adaptive quadrature of the truth), shared by the methods.
     std::vector<TruthSample> samples(cases.size());
     std::vector<ShapeMeasures> truth_shapes(cases.size());
+    check_work_share(o.share, who);
+    const auto case_needed = [&](long k) {  // a case some run of the share needs
+        for (std::size_t m = 0; m < configurations.size(); ++m)
+            if (o.share.owns(k * static_cast<long>(configurations.size()) + static_cast<long>(m))) return true;
+        return false;
+    };
     parallel_for(static_cast<long>(cases.size()), threads, [&](long k) {
+        if (!case_needed(k)) return;
         const Case& c = cases[static_cast<std::size_t>(k)];
         samples[static_cast<std::size_t>(k)] = truth_samples(*c.family, c.n, c.spacing, c.closed);
         truth_shapes[static_cast<std::size_t>(k)] = shape_measures(*c.family->curve, samples[static_cast<std::size_t>(k)].params, c.closed);
@@ -287,6 +294,7 @@ std::vector<TruthRun> run_truth_benchmark(const TruthBenchmarkOptions& o) {
         for (int d : {2, 3})
             if (m.method->prepare && m.claims.max_dimension >= d) m.method->prepare(m.values, d);
     parallel_for(static_cast<long>(runs.size()), threads, [&](long index) {
+        if (!o.share.owns(index)) return;
         const Case& k = cases[static_cast<std::size_t>(index) / configurations.size()];
         const TruthSample& sample = samples[static_cast<std::size_t>(index) / configurations.size()];
         const methods::Configuration& m = configurations[static_cast<std::size_t>(index) % configurations.size()];

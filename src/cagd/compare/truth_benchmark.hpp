@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "cagd/compare/truth_curves.hpp"
+#include "cagd/compare/work_share.hpp"
 #include "cagd/methods/method_registry.hpp"
 
 namespace cagd::compare {
@@ -109,8 +110,11 @@ struct TruthBenchmarkOptions {
     std::vector<std::string> families;         ///< empty: every family
     std::vector<std::string> methods;          ///< configuration or method names; empty: every configuration
     int threads = 0;                           ///< cases measured at once (0: the hardware's); results do not depend on it
+    WorkShare share;                           ///< the runs computed (by their index in the result); default: all
 };
 /// Every family (closed families also as open arcs) × spacing × size × configuration, in that order.
+/// With a share of the work, the runs outside it are left empty (TruthRun{}: no method), the others
+/// are the values of the whole run.
 std::vector<TruthRun> run_truth_benchmark(const TruthBenchmarkOptions& options);
 
 /// A predicted order of convergence, with its source.
