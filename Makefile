@@ -23,8 +23,10 @@ INSTALL_FLAGS = -DCAGD_BUILD_TESTS=OFF -DCAGD_BUILD_EXPERIMENTS=OFF -DCAGD_BUILD
 # The harness, the sanitizers and the benchmarks keep their table cache (the pseudo-energy tables
 # that the library keeps in the user's cache, core/user_cache.hpp) in the build tree, never in the
 # user's ~/.cache/cagd, where ctest's own tests keep it (CMakeLists.txt sets it per test); the one
-# build of the space table serves all four.
-TABLE_CACHE = XDG_CACHE_HOME=$(abspath $(BUILD))/cache/user
+# build of the space table serves all four. ccache, which the builds inside these targets call,
+# keeps its own cache where it would without them (CCACHE_DIR, else $XDG_CACHE_HOME/ccache, else
+# ~/.cache/ccache), so that compiled objects are reused across clones.
+TABLE_CACHE = CCACHE_DIR="$${CCACHE_DIR:-$${XDG_CACHE_HOME:-$$HOME/.cache}/ccache}" XDG_CACHE_HOME=$(abspath $(BUILD))/cache/user
 
 .PHONY: all deps configure build test reproduce benchmark bench python install sanitize docs clean web web-serve test-web
 
