@@ -95,7 +95,7 @@ private:
     std::size_t at_ = 0;
 };
 
-constexpr long kMaxCount = 1L << 40;
+constexpr long kMaxCount = 1L << 30;  // more units than any plan has (and a long on every platform)
 
 void put_shape(std::vector<std::string>& f, const ShapeMeasures& s) {
     f.insert(f.end(), {exact(s.bending), exact(s.variation), exact(s.max_curvature), std::to_string(s.curvature_extrema), exact(s.g2_defect),
@@ -104,10 +104,10 @@ void put_shape(std::vector<std::string>& f, const ShapeMeasures& s) {
 ShapeMeasures get_shape(Fields& f) {
     ShapeMeasures s;
     s.bending = f.number(), s.variation = f.number(), s.max_curvature = f.number();
-    s.curvature_extrema = static_cast<int>(f.integer(0, kMaxCount >> 10));
+    s.curvature_extrema = static_cast<int>(f.integer(0, kMaxCount));
     s.g2_defect = f.number();
-    s.inflections = static_cast<int>(f.integer(0, kMaxCount >> 10));
-    s.unimplied_inflections = static_cast<int>(f.integer(0, kMaxCount >> 10));
+    s.inflections = static_cast<int>(f.integer(0, kMaxCount));
+    s.unimplied_inflections = static_cast<int>(f.integer(0, kMaxCount));
     return s;
 }
 std::string line(const std::vector<std::string>& fields) {
@@ -255,8 +255,9 @@ BenchmarkResults merge_benchmark_parts(const BenchmarkPlan& plan, const std::vec
     std::vector<char> truth_seen, classic_seen;
     std::vector<std::string> part_seen;  // the name of the part of each number, once seen
     long count = -1, truth_units = -1, classic_units = -1, random_units = -1;
-    for (const auto& [name, text] : parts) {
-        std::istringstream in{std::string(checked_content(text, name))};
+    for (const auto& part : parts) {
+        const std::string& name = part.first;  // not a structured binding: clang 14 (Emscripten's) cannot capture one in a lambda
+        std::istringstream in{std::string(checked_content(part.second, name))};
         std::string l;
         int line_no = 0;
         const auto next_line = [&](const char* what) {
