@@ -133,3 +133,41 @@ TEST(HermiteCurves, OnePassCurveIsTheInterpolantOfTheDirections) {
                     EXPECT_EQ(one.end_derivatives(), two.end_derivatives()) << n << " points, dim " << dim << (closed ? ", closed" : ", open");
                 }
 }
+
+TEST(HermiteCurves, PlanarColumnWisePathIsTheSpaceCurvesBitForBit) {
+    // Planar points take a column-wise path (planar_hermite_interior); the same points with z = 0
+    // take the per-point one. Their x and y derivatives must agree exactly, and a reversal must be
+    // reported at the same (first) point.
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> turn(-1.0, 1.0), chord(0.1, 2.0);
+    for (const int n : {2, 3, 4, 10000}) {
+        PointList p(n, 2);
+        double angle = 0.0;
+        p.row(0) << 0.0, 0.0;
+        for (Eigen::Index i = 1; i < n; ++i) {
+            angle += turn(rng);
+            const double r = chord(rng);
+            p.row(i) = p.row(i - 1) + Eigen::RowVector2d(r * std::cos(angle), r * std::sin(angle));
+        }
+        PointList space = PointList::Zero(n, 3);
+        space.leftCols(2) = p;
+        for (const bool closed : {false, true})
+            for (const spline::TangentRule rule : {spline::TangentRule::chord_of_neighbours, spline::TangentRule::circle}) {
+                if (n < 3 && (closed || rule == spline::TangentRule::circle)) continue;
+                const PiecewiseHermiteCurve planar = spline::hermite_spline(p, rule, closed), spatial = spline::hermite_spline(space, rule, closed);
+                EXPECT_EQ(planar.start_derivatives(), spatial.start_derivatives().leftCols(2)) << n << (closed ? " closed" : " open");
+                EXPECT_EQ(planar.end_derivatives(), spatial.end_derivatives().leftCols(2)) << n << (closed ? " closed" : " open");
+            }
+    }
+    PointList reverses(7, 2);
+    reverses << 0, 0, 1, 0, 2, 1, 3, 0, 2, 1, 3, 0, 5, 5;  // reverses at points 3 and 4 (P_2 = P_4, P_3 = P_5): the first is named
+    for (const spline::TangentRule rule : {spline::TangentRule::chord_of_neighbours, spline::TangentRule::circle})
+        for (const bool closed : {false, true}) {
+            try {
+                spline::hermite_spline(reverses, rule, closed);
+                ADD_FAILURE() << "a reversal accepted";
+            } catch (const InvalidInput& e) {
+                EXPECT_NE(std::string(e.what()).find("reverses at point 3 "), std::string::npos) << e.what();
+            }
+        }
+}

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "cagd/core/errors.hpp"
 #include "cagd/numeric/tridiagonal.hpp"
@@ -177,8 +178,10 @@ namespace {
 // (at 10^6 points four temporaries per point took a quarter of the construction), or RowVectorXd.
 // Each chord and its length is formed once, and no index wraps by a modulo (an integer division
 // per point); the arithmetic per direction is the same as written in the header.
+// With `with_interior` false only the two open ends are put (the interior is the caller's:
+// planar_hermite_interior).
 template <class Row, class Put>
-void tangent_directions_with(const PointList& points, TangentRule rule, bool closed, const char* who, Put&& put) {
+void tangent_directions_with(const PointList& points, TangentRule rule, bool closed, const char* who, Put&& put, bool with_interior = true) {
     const Eigen::Index n = points.rows(), dim = points.cols();
     const auto at = [&](Eigen::Index i) -> Row {
         if constexpr (Row::SizeAtCompileTime == Eigen::Dynamic) {
@@ -204,7 +207,7 @@ void tangent_directions_with(const PointList& points, TangentRule rule, bool clo
     double la = a.norm();
     const double first_chord = la;  // open: |P_1 − P_0|
     Row first_interior = at(0);  // t_1 (set in the loop), for an open circle end
-    for (Eigen::Index i = closed ? 0 : 1; i < (closed ? n : n - 1); ++i) {
+    for (Eigen::Index i = closed ? 0 : 1; with_interior && i < (closed ? n : n - 1); ++i) {
         const Row next = at(i + 1 == n ? 0 : i + 1), b = next - here;
         const double lb = b.norm();
         const Row t = interior(i, a, la, b, lb, next - before);
@@ -213,6 +216,13 @@ void tangent_directions_with(const PointList& points, TangentRule rule, bool clo
         before = here, here = next, a = b, la = lb;
     }
     if (closed) return;
+    if (!with_interior) {  // t_1 and the last chord, as the loop would have left them
+        if (rule == TangentRule::circle) {  // (n ≥ 3 for the circle rule)
+            const Row b = at(2) - at(1);
+            first_interior = interior(1, a, la, b, b.norm(), at(2) - at(0));
+        }
+        la = (at(n - 1) - at(n - 2)).norm();
+    }
     // (la is now |P_{n−1} − P_{n−2}|, the last chord.)
     if (rule == TangentRule::chord_of_neighbours) {
         put(0, unit_row(at(1) - at(0)), 0.0, first_chord);
@@ -237,6 +247,52 @@ void tangent_directions(const PointList& points, TangentRule rule, bool closed, 
         tangent_directions_with<Eigen::RowVectorXd>(points, rule, closed, who, put);
 }
 
+// The interior tangents of a planar Hermite spline into d0 (span starts) and d1 (span ends): the
+// arithmetic of tangent_directions_with (|v| = √(x² + y²): its padded z adds exactly 0), column by
+// column over contiguous arrays with no dependence from one point to the next, so that the compiler
+// vectorises it (the per-point loop waited on its square roots and divisions: 60 % of a 10^6-point
+// construction). The same curve bit for bit; a reversal is reported at the first point the per-point
+// loop would have stopped at.
+void planar_hermite_interior(const PointList& points, TangentRule rule, bool closed, const char* who, Eigen::MatrixXd& d0, Eigen::MatrixXd& d1) {
+    const Eigen::Index n = points.rows(), spans = closed ? n : n - 1, first = closed ? 0 : 1, last = closed ? n : n - 1;
+    const double *x = points.col(0).data(), *y = points.col(1).data();
+    std::vector<double> cx(static_cast<std::size_t>(spans)), cy(cx.size()), h(cx.size());  // chord k = P_{k+1} − P_k, |chord k|
+    for (Eigen::Index k = 0; k < spans; ++k) {
+        const Eigen::Index j = k + 1 == n ? 0 : k + 1;
+        cx[static_cast<std::size_t>(k)] = x[j] - x[k], cy[static_cast<std::size_t>(k)] = y[j] - y[k];
+    }
+    for (std::size_t k = 0; k < h.size(); ++k) h[k] = std::sqrt(cx[k] * cx[k] + cy[k] * cy[k]);
+    double *d0x = d0.col(0).data(), *d0y = d0.col(1).data(), *d1x = d1.col(0).data(), *d1y = d1.col(1).data();
+    const bool circle = rule == TangentRule::circle;
+    bool reversal = false;
+    const auto direction = [&](Eigen::Index i, double& dx, double& dy) {  // d_i before normalising; true when it reverses
+        const Eigen::Index before = i == 0 ? n - 1 : i - 1, after = i + 1 == n ? 0 : i + 1;
+        const auto b = static_cast<std::size_t>(before), k = static_cast<std::size_t>(i);
+        const double la = h[b], lb = h[k];
+        if (circle) {
+            const double ra = lb / la, rb = la / lb;
+            dx = ra * cx[b] + rb * cx[k], dy = ra * cy[b] + rb * cy[k];
+        } else {
+            dx = x[after] - x[before], dy = y[after] - y[before];
+        }
+        const double length = std::sqrt(dx * dx + dy * dy);
+        dx /= length, dy /= length;
+        return length <= 1e-14 * (la + lb);
+    };
+    for (Eigen::Index i = first; i < last; ++i) {
+        double tx = 0.0, ty = 0.0;
+        reversal |= direction(i, tx, ty);
+        const auto b = static_cast<std::size_t>(i == 0 ? n - 1 : i - 1), k = static_cast<std::size_t>(i);
+        d0x[i] = h[k] * tx, d0y[i] = h[k] * ty;
+        d1x[b] = h[b] * tx, d1y[b] = h[b] * ty;
+    }
+    if (!reversal) return;
+    for (Eigen::Index i = first; i < last; ++i) {
+        double tx = 0.0, ty = 0.0;
+        if (direction(i, tx, ty)) fail_input(who, "the curve reverses at point " + std::to_string(i) + " (turning angle π), where no tangent direction is defined");
+    }
+}
+
 const char* directions_who(TangentRule rule) {
     return rule == TangentRule::circle ? "hermite_tangent_directions (circle, Hermite B)" : "hermite_tangent_directions (chord of neighbours, Hermite A)";
 }
@@ -258,11 +314,17 @@ PiecewiseHermiteCurve hermite_spline(const PointList& points, TangentRule rule, 
     Eigen::MatrixXd nodes = span_nodes(points, closed), d0(spans, dim), d1(spans, dim);
     // t_i starts span i and ends span i − 1 (closed: t_0 also ends span n − 1); the chords, |nodes_{k+1}
     // − nodes_k| (the same differences), come with it.
-    tangent_directions(points, rule, closed, who, [&](Eigen::Index i, const auto& r, double before, double after) {
+    const auto put = [&](Eigen::Index i, const auto& r, double before, double after) {
         if (i > 0) d1.row(i - 1) = before * r.head(dim);
         if (i < spans) d0.row(i) = after * r.head(dim);
         if (closed && i == 0) d1.row(n - 1) = before * r.head(dim);
-    });
+    };
+    if (dim == 2) {  // planar: the interior column-wise (planar_hermite_interior), the open ends as below
+        planar_hermite_interior(points, rule, closed, who, d0, d1);
+        if (!closed) tangent_directions_with<Eigen::RowVector3d>(points, rule, closed, who, put, false);
+    } else {
+        tangent_directions(points, rule, closed, who, put);
+    }
     return PiecewiseHermiteCurve(std::move(nodes), std::move(d0), std::move(d1));
 }
 
