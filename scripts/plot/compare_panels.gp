@@ -37,9 +37,12 @@ bx = int(word(b_cols, 1)); by = int(word(b_cols, 2)); btx = int(word(b_cols, 3))
 ks = int(word(k_cols, 1)); kk = int(word(k_cols, 2)); kt = int(word(k_cols, 3))
 n = words(names)
 # rows of method i in a figure file: first(list, i) .. last(list, counts, i). A method without rows
-# (not applicable, refused, no result) reads one row and draws nothing ((has(...) ? … : NaN) in the
-# overlays), so it is a labelled entry without a line, never another method's data: `every` with
-# its last row before its first would read the whole file.
+# (not applicable, refused, no result) reads one row, which `with lines` cannot draw (a line needs
+# two points; the row lies on another method's curve, so the autoscaled range is the same) and has
+# no key entry (label), never another method's data: `every` with its last row before its first
+# would read the whole file. Columns are given by number (`using cx:cy`), not as expressions
+# (`(column(cx))`): gnuplot evaluates an expression per row, with a signal handler set and a jump
+# buffer saved around each (two system calls), which took 60 % of a figure's time at 10^3 points.
 first(list, i) = int(word(list, i))
 has(counts, i) = int(word(counts, i)) > 0
 last(list, counts, i) = has(counts, i) ? int(word(list, i)) + int(word(counts, i)) - 1 : int(word(list, i))
@@ -71,13 +74,13 @@ do for [t in formats] {
     set view equal xyz
     set xyplane relative 0
     set zlabel 'z'
-    splot for [i=1:n] f_curves skip 1 every ::first(curves_first, i)::last(curves_first, curves_count, i) using (has(curves_count, i) ? column(cx) : NaN):(column(cy)):(column(cz)) with lines lw 1.5 lc rgb colour(i) dt dash(i) title label(i, curves_count), \
-          f_points skip 1 every point_every using (column(px)):(column(py)):(column(pz)) with points pt 7 ps 0.8 lc rgb '#000000' title 'data'
+    splot for [i=1:n] f_curves skip 1 every ::first(curves_first, i)::last(curves_first, curves_count, i) using cx:cy:cz with lines lw 1.5 lc rgb colour(i) dt dash(i) title label(i, curves_count), \
+          f_points skip 1 every point_every using px:py:pz with points pt 7 ps 0.8 lc rgb '#000000' title 'data'
     unset view
     unset zlabel
   } else {
-    plot for [i=1:n] f_curves skip 1 every ::first(curves_first, i)::last(curves_first, curves_count, i) using (has(curves_count, i) ? column(cx) : NaN):(column(cy)) with lines lw 1.5 lc rgb colour(i) dt dash(i) title label(i, curves_count), \
-         f_points skip 1 every point_every using (column(px)):(column(py)) with points pt 7 ps 0.8 lc rgb '#000000' title 'data'
+    plot for [i=1:n] f_curves skip 1 every ::first(curves_first, i)::last(curves_first, curves_count, i) using cx:cy with lines lw 1.5 lc rgb colour(i) dt dash(i) title label(i, curves_count), \
+         f_points skip 1 every point_every using px:py with points pt 7 ps 0.8 lc rgb '#000000' title 'data'
   }
   unset output
   }
@@ -88,7 +91,7 @@ do for [t in formats] {
   set output datadir.'/'.prefix.'combs.'.t
   # the data's box grown by 30 % of its diagonal: the 5 % of teeth longer than 10 % of it are cut
   # at the frame instead of shrinking the curve to a dot
-  stats f_points skip 1 using (column(px)):(column(py)) nooutput
+  stats f_points skip 1 using px:py nooutput
   margin = 0.3 * sqrt((STATS_max_x - STATS_min_x)**2 + (STATS_max_y - STATS_min_y)**2)
   set xrange [STATS_min_x - margin:STATS_max_x + margin]
   set yrange [STATS_min_y - margin:STATS_max_y + margin]
@@ -101,17 +104,17 @@ do for [t in formats] {
     comb_note = int(word(comb_stride, i)) > 0 ? ' (c = '.word(comb_scale, i).(int(word(comb_stride, i)) > 1 ? ', a tooth every '.word(comb_stride, i).' samples)' : ')') : ''
     set title word(names, i).comb_note noenhanced
     if (int(word(combs_count, i)) > 0) {
-      plot f_combs skip 1 every ::first(combs_first, i)::last(combs_first, combs_count, i) using (column(bx)):(column(by)):(column(btx) - column(bx)):(column(bty) - column(by)) with vectors nohead lc rgb '#9ecae1', \
-           f_combs skip 1 every ::first(combs_first, i)::last(combs_first, combs_count, i) using (column(btx)):(column(bty)) with lines lc rgb '#6baed6', \
-           f_curves skip 1 every ::first(curves_first, i)::last(curves_first, curves_count, i) using (column(cx)):(column(cy)) with lines lw 1.5 lc rgb '#08306b', \
-           f_points skip 1 every point_every using (column(px)):(column(py)) with points pt 7 ps 0.5 lc rgb '#000000'
+      plot f_combs skip 1 every ::first(combs_first, i)::last(combs_first, combs_count, i) using bx:by:(column(btx) - column(bx)):(column(bty) - column(by)) with vectors nohead lc rgb '#9ecae1', \
+           f_combs skip 1 every ::first(combs_first, i)::last(combs_first, combs_count, i) using btx:bty with lines lc rgb '#6baed6', \
+           f_curves skip 1 every ::first(curves_first, i)::last(curves_first, curves_count, i) using cx:cy with lines lw 1.5 lc rgb '#08306b', \
+           f_points skip 1 every point_every using px:py with points pt 7 ps 0.5 lc rgb '#000000'
     } else {
       set label 1 'no comb: '.status(i).' (see the table)' at graph 0.5, graph 0.92 center noenhanced
       if (has(curves_count, i)) {  # a curve without a comb (a cusp): the curve still shows
-        plot f_curves skip 1 every ::first(curves_first, i)::last(curves_first, curves_count, i) using (column(cx)):(column(cy)) with lines lw 1.5 lc rgb '#08306b', \
-             f_points skip 1 every point_every using (column(px)):(column(py)) with points pt 7 ps 0.5 lc rgb '#000000'
+        plot f_curves skip 1 every ::first(curves_first, i)::last(curves_first, curves_count, i) using cx:cy with lines lw 1.5 lc rgb '#08306b', \
+             f_points skip 1 every point_every using px:py with points pt 7 ps 0.5 lc rgb '#000000'
       } else {
-        plot f_points skip 1 every point_every using (column(px)):(column(py)) with points pt 7 ps 0.5 lc rgb '#000000'
+        plot f_points skip 1 every point_every using px:py with points pt 7 ps 0.5 lc rgb '#000000'
       }
       unset label 1
     }
@@ -132,7 +135,7 @@ do for [t in formats] {
     set xlabel 's'
     set ylabel 'κ'
     if (int(word(kappa_count, i)) > 0) {
-      plot f_kappa skip 1 every ::first(kappa_first, i)::last(kappa_first, kappa_count, i) using (column(ks)):(column(kk)) with lines lw 1.2 lc rgb '#d62728'
+      plot f_kappa skip 1 every ::first(kappa_first, i)::last(kappa_first, kappa_count, i) using ks:kk with lines lw 1.2 lc rgb '#d62728'
     } else {
       set label 1 'no curvature: '.status(i).' (see the table)' at graph 0.5, graph 0.5 center noenhanced
       plot [0:1] [-1:1] NaN notitle
@@ -156,7 +159,7 @@ do for [t in formats] {
     set xlabel 's'
     set ylabel 'τ'
     if (int(word(kappa_count, i)) > 0) {
-      plot f_kappa skip 1 every ::first(kappa_first, i)::last(kappa_first, kappa_count, i) using (column(ks)):(column(kt)) with lines lw 1.2 lc rgb '#2ca02c'
+      plot f_kappa skip 1 every ::first(kappa_first, i)::last(kappa_first, kappa_count, i) using ks:kt with lines lw 1.2 lc rgb '#2ca02c'
     } else {
       set label 1 'no torsion: '.status(i).' (see the table)' at graph 0.5, graph 0.5 center noenhanced
       plot [0:1] [-1:1] NaN notitle
