@@ -151,6 +151,7 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
             c.note = one_line(r.outcome.message);
             return c;
         }
+        const Eigen::VectorXd solver_state = std::move(r.solver_state);  // kept for the footprint's build (below)
         c.interpolant = std::move(r.interpolant);
         const Curve& curve = *c.interpolant->curve;
         c.spans = static_cast<int>(c.interpolant->node_parameters.size()) - 1;
@@ -174,7 +175,11 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
             PointList moved = points;
             moved(points.rows() / 2, 1) += 1e-3 * diagonal;
             try {
-                const InterpolationResult m = methods::interpolate(configuration, moved, options.closed);
+                // From this build's final iterate (continuation: fewer Newton iterations, and the
+                // same solution branch); a direct method builds anew.
+                InterpolationResult previous;
+                previous.solver_state = solver_state;
+                const InterpolationResult m = methods::interpolate_from(configuration, moved, options.closed, previous);
                 if (m.outcome.ok() && m.interpolant) c.locality_footprint = spans_moved(*c.interpolant, *m.interpolant, 1e-9 * diagonal);
             } catch (const InvalidInput&) {  // the moved point made the input invalid for this method
             }

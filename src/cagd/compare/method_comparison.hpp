@@ -11,7 +11,9 @@
 ///   locality footprint               moving the middle data point P_⌊n/2⌋ by 10⁻³ × diagonal in y
 ///                                    moves how many spans, a span moving when some sample at the
 ///                                    same fraction of its parameter interval moves by more than
-///                                    10⁻⁹ × diagonal (9 samples per span)
+///                                    10⁻⁹ × diagonal (9 samples per span); an iterative method
+///                                    solves for the moved point from its first solution
+///                                    (methods::interpolate_from)
 ///   seconds                          wall time of interpolate() (not deterministic), the
 ///                                    method's shared tables loaded before (Method::prepare)
 ///   shared_seconds                   wall time of that Method::prepare, reported on its own

@@ -169,7 +169,7 @@ void add_natural_open_ends(CurvatureProfileProblem& problem);
 /// The solve of the defaults above (the step chosen by size; the other options as given).
 CurvatureProfileSolution solve_curvature_profile_auto(const CurvatureProfileProblem& problem, const NewtonOptions& options = {});
 /// The same from the given start.
-CurvatureProfileSolution solve_curvature_profile_auto(const CurvatureProfileProblem& problem, const Eigen::VectorXd& start, const NewtonOptions& options);
+CurvatureProfileSolution solve_curvature_profile_auto(const CurvatureProfileProblem& problem, const Eigen::VectorXd& start, const NewtonOptions& options = {});
 
 /// The second solver: Ceres Levenberg–Marquardt on the same f, with its own central-difference
 /// Jacobian (DynamicNumericDiffCostFunction) and lengths bounded below — independent of ours.

@@ -69,7 +69,11 @@ constexpr double kShortestChord = 1e-150;
 
 }  // namespace
 
-InterpolationResult interpolate(const Method& method, const PointList& points, bool closed, const ParameterValues& values) {
+namespace {
+
+// interpolate()'s checks and build, with the solve started from `start` when the method has a
+// rebuild and `start` is not empty.
+InterpolationResult checked_build(const Method& method, const PointList& points, bool closed, const ParameterValues& values, const Eigen::VectorXd& start) {
     const MethodClaims claims = method.claims(values);
     const std::string who = "cagd::methods::interpolate(" + method.name + ")";
     if (closed && !claims.supports_closed) fail_input(who, "draws open curves only (--closed is not supported)");
@@ -101,10 +105,16 @@ InterpolationResult interpolate(const Method& method, const PointList& points, b
         }
     }
     try {
-        return method.build(points, closed, values);
+        return method.rebuild && start.size() > 0 ? method.rebuild(points, closed, values, start) : method.build(points, closed, values);
     } catch (const std::domain_error& e) {  // Boost.Math's own precondition checks
         fail_input(who, std::string("Boost.Math refused the points: ") + e.what());
     }
+}
+
+}  // namespace
+
+InterpolationResult interpolate(const Method& method, const PointList& points, bool closed, const ParameterValues& values) {
+    return checked_build(method, points, closed, values, Eigen::VectorXd());
 }
 
 InterpolationResult interpolate(const std::string& name, const PointList& points, bool closed, const ParameterText& values) {
@@ -166,6 +176,10 @@ Configuration find_configuration(const std::string& name, const ParameterText& o
 
 InterpolationResult interpolate(const Configuration& configuration, const PointList& points, bool closed) {
     return interpolate(*configuration.method, points, closed, configuration.values);
+}
+
+InterpolationResult interpolate_from(const Configuration& configuration, const PointList& points, bool closed, const InterpolationResult& previous) {
+    return checked_build(*configuration.method, points, closed, configuration.values, previous.solver_state);
 }
 
 }  // namespace cagd::methods

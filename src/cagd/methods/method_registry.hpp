@@ -93,6 +93,9 @@ struct InterpolationResult {
     /// Quantities the method computes along the way, by name (the pseudo-spline's length, area
     /// and pseudo-energy from its tables, eq 16–21).
     std::vector<std::pair<std::string, double>> quantities;
+    /// A method with a rebuild (Method::rebuild): the solver's final iterate, from which a build on
+    /// moved points of the same number may start (interpolate_from); empty otherwise.
+    Eigen::VectorXd solver_state;
 };
 
 /// A named set of parameter values of a method: a configuration of the comparison.
@@ -120,6 +123,11 @@ struct Method {
     /// dimension: a timing of one build (compare's `seconds`) then excludes it. Empty for methods
     /// that share nothing.
     std::function<void(const ParameterValues&, int dimension)> prepare{};
+    /// Builds as `build` does, but with the iterative solve started from `start`, the solver_state
+    /// of a build on nearby points of the same number (continuation: the locality footprint's moved
+    /// point, a drag). The result meets the same tolerance as a build's, on the solution branch of
+    /// the start. Empty for the direct methods (interpolate_from then builds).
+    std::function<InterpolationResult(const PointList&, bool closed, const ParameterValues&, const Eigen::VectorXd& start)> rebuild{};
 };
 
 /// Every method, in the order of the tables.
@@ -152,6 +160,10 @@ Configuration find_configuration(const std::string& name);
 Configuration find_configuration(const std::string& name, const ParameterText& overrides);
 /// interpolate() under the configuration's method and values.
 InterpolationResult interpolate(const Configuration& configuration, const PointList& points, bool closed);
+/// interpolate() on points near those of `previous` (a result of the same configuration on as many
+/// points, open or closed alike): a method with a rebuild starts its solve from previous.solver_state
+/// (fewer Newton iterations when the points moved a little); any other builds anew. The same checks.
+InterpolationResult interpolate_from(const Configuration& configuration, const PointList& points, bool closed, const InterpolationResult& previous);
 
 /// The registry as a Markdown table (docs/methods.md) or as plain lines (`cagd interpolate --list-methods`).
 std::string registry_markdown();

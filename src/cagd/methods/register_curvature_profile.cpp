@@ -49,7 +49,8 @@ InterpolationResult solved_result(const intrinsic::CurvatureProfileProblem& prob
     return r;
 }
 
-InterpolationResult build_curvature_profile(const PointList& points, bool closed, const ParameterValues& v) {
+// The design problem of the points under the method's parameters (the spans' shapes, a knot list).
+intrinsic::CurvatureProfileProblem curvature_profile_problem(const PointList& points, bool closed, const ParameterValues& v) {
     using namespace intrinsic;
     const std::string who = "cagd::methods(curvature-profile)";
     const std::string& knots = v.text("knots");
@@ -64,8 +65,22 @@ InterpolationResult build_curvature_profile(const PointList& points, bool closed
     CurvatureProfileProblem problem{points, layout, segment_shapes(layout, span_shapes), {}, closed, 0};
     add_natural_open_ends(problem);
     require_valid_problem(problem, who);
-    return solved_result(problem, solve_curvature_profile_auto(problem));
+    return problem;
 }
+
+// The solve from `start` (empty: the C2 start of the design), its final iterate kept for a rebuild.
+InterpolationResult curvature_profile_from(const PointList& points, bool closed, const ParameterValues& v, const Eigen::VectorXd& start) {
+    const intrinsic::CurvatureProfileProblem problem = curvature_profile_problem(points, closed, v);
+    // A start of another size is not one of these unknowns (the layout and the conditions depend on
+    // the number of points and the parameters only): the design's own start then.
+    const intrinsic::CurvatureProfileSolution sol = start.size() == intrinsic::design_unknowns(problem) ? intrinsic::solve_curvature_profile_auto(problem, start)
+                                                                                                        : intrinsic::solve_curvature_profile_auto(problem);
+    InterpolationResult r = solved_result(problem, sol);
+    if (r.interpolant) r.solver_state = sol.u;
+    return r;
+}
+
+InterpolationResult build_curvature_profile(const PointList& points, bool closed, const ParameterValues& v) { return curvature_profile_from(points, closed, v, {}); }
 
 // Spiro (intrinsic/spiro.hpp): Levien's chordwise Newton polished by the arc-length one.
 InterpolationResult build_spiro(const PointList& points, bool closed, const ParameterValues&) {
@@ -90,6 +105,7 @@ std::vector<Method> curvature_profile_methods() {
         .claims = fixed({.parametric_continuity = 2, .geometric_continuity = 2, .parameter = "arc length", .invariance = Invariance::similarity}),
         .build = build_curvature_profile,
         .iterative = true,
+        .rebuild = curvature_profile_from,
     });
     r.push_back({
         .name = "spiro",
