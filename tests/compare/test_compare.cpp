@@ -802,3 +802,39 @@ TEST(Compare, DrawingOnlyRunsGiveTheSameCurvesAndAProfileByTheTrapezoidRule) {
     EXPECT_THROW(cagd::compare::comparison_figure_data(b, p, {.per_span = 16, .span_stride = 2, .arc_length = cagd::compare::FigureSampling::ArcLength::trapezoid}),
                  cagd::InvalidInput);
 }
+
+// Continuation (the viewer's drag frames): a comparison given the solver states of an earlier one on
+// as many points starts the iterative methods there and gives their curves within the solver's
+// tolerance of a fresh solve; the direct methods keep no state and are unaffected; a state of
+// another size is not a start (the method solves anew).
+TEST(Compare, IterativeMethodsContinueFromAnEarlierComparison) {
+    const PointList p = read_points_csv(std::string(CAGD_SOURCE_DIR) + "/reference/pseudo_energy/data/table1.csv");
+    cagd::compare::ComparisonOptions o;
+    o.methods = {"curvature-profile", "cubic-b"};
+    o.locality = false;
+    o.measures = false;
+    const auto first = cagd::compare::compare_methods(p, o);
+    ASSERT_EQ(first[0].status, "ok");
+    ASSERT_GT(first[0].solver_state.size(), 0);
+    EXPECT_EQ(first[1].solver_state.size(), 0) << "cubic-b is direct";
+    PointList moved = p;
+    moved(p.rows() / 2, 0) += 0.01;
+    const auto fresh = cagd::compare::compare_methods(moved, o);
+    for (const bool wrong_size : {false, true}) {
+        cagd::compare::ComparisonOptions c = o;
+        c.starts.emplace("curvature-profile", wrong_size ? Eigen::VectorXd::Zero(3) : first[0].solver_state);
+        const auto continued = cagd::compare::compare_methods(moved, c);
+        ASSERT_EQ(continued[0].status, "ok");
+        const cagd::Curve &a = *fresh[0].interpolant->curve, &b = *continued[0].interpolant->curve;
+        double largest = 0.0;
+        for (int k = 0; k <= 100; ++k) {
+            const double t = k / 100.0;
+            largest = std::max(largest, (a.jet(a.t_min() + t * (a.t_max() - a.t_min()), 0).row(0) - b.jet(b.t_min() + t * (b.t_max() - b.t_min()), 0).row(0)).norm());
+        }
+        EXPECT_LT(largest, 1e-9) << (wrong_size ? "a start of another size" : "the earlier solution");
+        if (wrong_size) {
+            EXPECT_EQ(continued[0].solver_state, fresh[0].solver_state) << "a start of another size is ignored: the fresh solve";
+        }
+        EXPECT_EQ(continued[1].interpolant->curve->jet(1.5, 2), fresh[1].interpolant->curve->jet(1.5, 2));
+    }
+}

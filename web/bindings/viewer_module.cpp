@@ -7,11 +7,13 @@
 //   registry()                     -> {methods: [...], configurations: [...], formats: [...]}
 //   compare(request)               -> {ok, message, diagonal, combScale, header, rows, results: [...]}
 //     request: {points: [x0, y0, x1, y1, …], closed, configurations: [{name, parameters: {p: "v"}}],
-//               perSpan, measures, figure, anchor, motion}
+//               perSpan, measures, figure, anchor, motion, continuation}
 //     measures: also compare's measures table (header, rows; tens of ms per method at 100 points,
 //     so the page computes them in a worker); figure (default true): the curves, κ(s) and combs.
 //     anchor: keep these curves as the start of a drag; motion: per span, how far each curve moved
-//     since the anchor (compare::span_displacements), divided by the data diagonal.
+//     since the anchor (compare::span_displacements), divided by the data diagonal. continuation:
+//     a drag frame; the iterative methods start from the last comparison's solutions when it had
+//     as many points (methods::interpolate_from), else solve anew.
 //   readPoints(text, source)       -> {ok, message, points: [[x, y], …]}: the command's CSV reader
 //   exportCurve(request)           -> {ok, message, text}
 //     request: {points, closed, name, parameters, format: "svg" | "dxf" | "json" | "csv", comb, samples}
@@ -162,6 +164,18 @@ std::map<std::string, cagd::methods::Interpolant>& anchors() {
     return a;
 }
 
+// The solver states of the last comparison, by configuration name, with its number of points and
+// closedness: the starts of the next drag frame's iterative solves (continuation).
+struct SolverStates {
+    long points = -1;
+    bool closed = false;
+    std::map<std::string, Eigen::VectorXd> by_configuration;
+};
+SolverStates& last_solver_states() {
+    static SolverStates s;
+    return s;
+}
+
 val compare(const val& request) {
     try {
         const cagd::PointList points = points_of(request);
@@ -177,8 +191,16 @@ val compare(const val& request) {
             options.configurations.push_back(cagd::methods::find_configuration(val::global("String")(list[i]["name"]).as<std::string>(), parameters_of(list[i]["parameters"])));
         const int per_span = request["perSpan"].isUndefined() ? 16 : request["perSpan"].as<int>();
         if (per_span < 1 || per_span > kMaxPerSpan) return failure("viewer: perSpan = " + std::to_string(per_span) + "; allowed 1.." + std::to_string(kMaxPerSpan));
+        // A drag frame (continuation) starts the iterative methods from the last frame's solutions:
+        // fewer Newton iterations, the same solution branch. Other frames (the drag's end, a new
+        // state, a link) solve anew, as the native library does.
+        SolverStates& states = last_solver_states();
+        if (flag(request, "continuation") && states.points == points.rows() && states.closed == options.closed) options.starts = states.by_configuration;
         const auto start = std::chrono::steady_clock::now();
         const std::vector<cagd::compare::MethodComparison> rows = cagd::compare::compare_methods(points, options);
+        states = {points.rows(), options.closed, {}};
+        for (const auto& r : rows)
+            if (r.solver_state.size() > 0) states.by_configuration.emplace(r.method, r.solver_state);
         const auto compared = std::chrono::steady_clock::now();
         const bool with_figure = request["figure"].isUndefined() || request["figure"].as<bool>();
         const cagd::compare::FigureData figure =

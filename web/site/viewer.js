@@ -148,6 +148,7 @@
     const r = viewer.module.compare({
       points: s.points.flat(), closed: s.closed, configurations: s.shown, perSpan: viewer.perSpan,
       anchor: !!(options && options.anchor), motion: !!(options && options.motion),
+      continuation: !!(options && options.drag),
     });
     if (!r.ok) {
       report(r.message);
@@ -218,7 +219,7 @@
       pendingFrame = false;
       const m = pendingMotion;
       pendingMotion = false;
-      update({ motion: m });
+      update({ motion: m, drag: true });  // a drag frame: the iterative methods continue from the last frame
     });
   }
 
@@ -646,7 +647,7 @@
       update({ anchor: true, motion: viewer.state.locality });
     }
     viewer.state.points[i] = p;
-    return update({ motion: viewer.state.locality });
+    return update({ motion: viewer.state.locality, drag: true });
   };
   // A data point's position in the page's CSS pixels (for a test's real mouse drag).
   viewer.pagePosition = (i) => {

@@ -139,7 +139,14 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
         c.shared_seconds = std::chrono::duration<double>(start - prepared).count();
         InterpolationResult r;
         try {
-            r = methods::interpolate(configuration, points, options.closed);
+            const auto start_state = options.starts.find(configuration.name);
+            if (start_state != options.starts.end()) {
+                InterpolationResult earlier;
+                earlier.solver_state = start_state->second;
+                r = methods::interpolate_from(configuration, points, options.closed, earlier);
+            } else {
+                r = methods::interpolate(configuration, points, options.closed);
+            }
         } catch (const InvalidInput& e) {  // this method refuses these points (Boost's Catmull–Rom on 1e-40 spacing): its row says why
             c.status = "refused";
             c.note = one_line(e.what());
@@ -151,7 +158,7 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
             c.note = one_line(r.outcome.message);
             return c;
         }
-        const Eigen::VectorXd solver_state = std::move(r.solver_state);  // kept for the footprint's build (below)
+        c.solver_state = std::move(r.solver_state);  // also the start of the footprint's build (below)
         c.interpolant = std::move(r.interpolant);
         const Curve& curve = *c.interpolant->curve;
         c.spans = static_cast<int>(c.interpolant->node_parameters.size()) - 1;
@@ -178,7 +185,7 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
                 // From this build's final iterate (continuation: fewer Newton iterations, and the
                 // same solution branch); a direct method builds anew.
                 InterpolationResult previous;
-                previous.solver_state = solver_state;
+                previous.solver_state = c.solver_state;
                 const InterpolationResult m = methods::interpolate_from(configuration, moved, options.closed, previous);
                 if (m.outcome.ok() && m.interpolant) c.locality_footprint = spans_moved(*c.interpolant, *m.interpolant, 1e-9 * diagonal);
             } catch (const InvalidInput&) {  // the moved point made the input invalid for this method

@@ -27,6 +27,7 @@
 /// Sampling: `samples` and `quadrature_pieces` per piece default to 128 and 16, reduced for long
 /// inputs so that a method measures about 2·10⁶ samples in all (at least 8 and 2 per piece).
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -59,6 +60,10 @@ struct ComparisonOptions {
     /// Methods measured in parallel, one per thread (0: the hardware's thread count). The results,
     /// in the configurations' order, do not depend on it (the `seconds` timings aside).
     int threads = 0;
+    /// Continuation (the viewer's drag frames): by configuration name, the solver_state of an earlier
+    /// comparison of as many points, open or closed alike; such a configuration's solve starts there
+    /// (methods::interpolate_from). Empty: every method builds anew.
+    std::map<std::string, Eigen::VectorXd> starts;
 };
 
 /// One method's row of the comparison.
@@ -67,6 +72,7 @@ struct MethodComparison {
     std::string status;  ///< "ok", "not applicable", "refused", "no result", "cusp"
     std::string note;    ///< the reason when status is not ok
     std::optional<Interpolant> interpolant;  ///< the curve, when the method applies and succeeds
+    Eigen::VectorXd solver_state;  ///< the build's InterpolationResult::solver_state (empty for direct methods)
     double length = 0.0;  ///< arc length
     double area = 0.0;  ///< enclosed area (closed)
     double pseudo_energy = 0.0;  ///< Σ L_k² E_k over the data spans
