@@ -4,7 +4,7 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
-import { mkdirSync, readFileSync, writeFileSync, readdirSync, rmSync, mkdtempSync } from 'node:fs';
+import { mkdirSync, readFileSync, writeFileSync, readdirSync, rmSync, mkdtempSync, statSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
 import puppeteer from 'puppeteer-core';
@@ -217,8 +217,14 @@ test('each export format downloads and reads back', async () => {
   for (const format of registry.formats) {
     await page.select('#export-format', format);
     await page.click('#export');
-    const file = join(downloads, `hosaka-c2-chord.${format}`);
-    for (let k = 0; k < 100 && !readdirSync(downloads).includes(`hosaka-c2-chord.${format}`); ++k) await new Promise((ok) => setTimeout(ok, 50));
+    const name = `hosaka-c2-chord.${format}`, file = join(downloads, name);
+    // Done when the file is there with its bytes and Chromium has no download in progress (it can
+    // make the file under its final name before writing it: a read then found 0 bytes).
+    const done = () => {
+      const names = readdirSync(downloads);
+      return names.includes(name) && !names.some((n) => n.endsWith('.crdownload')) && statSync(file).size > 0;
+    };
+    for (let k = 0; k < 200 && !done(); ++k) await new Promise((ok) => setTimeout(ok, 50));
     const text = readFileSync(file, 'utf8');
     assert.ok(text.length > 100, `${format}: ${text.length} bytes`);
     if (format === 'json') {
