@@ -9,6 +9,7 @@
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <sstream>
@@ -18,6 +19,7 @@
 #include "cagd/analysis/fairness_measures.hpp"
 #include "cagd/analysis/log_curvature_graph.hpp"
 #include "cagd/compare/method_comparison.hpp"
+#include "cagd/core/finite.hpp"
 #include "cagd/core/parallel.hpp"
 #include "cagd/core/point_csv.hpp"
 #include "cagd/core/random_walk.hpp"
@@ -34,4 +36,62 @@ TEST(Points, BoundingBoxDiagonal) {
     EXPECT_DOUBLE_EQ(bounding_box_diagonal(p), 5.0);
     EXPECT_DOUBLE_EQ(bounding_box_diagonal(p.topRows(1)), 0.0);
     EXPECT_DOUBLE_EQ(bounding_box_diagonal(PointList(0, 2)), 0.0);
+}
+
+namespace {
+
+// Eigen's row norm, chord by chord: the reference chord_lengths must equal bit for bit.
+std::vector<double> row_norm_chords(const PointList& p, bool closed) {
+    std::vector<double> h;
+    for (Eigen::Index k = 0; k + 1 < p.rows() || (closed && k < p.rows()); ++k) h.push_back((p.row(k + 1 == p.rows() ? 0 : k + 1) - p.row(k)).norm());
+    return h;
+}
+
+}  // namespace
+
+TEST(Points, ChordLengthsAreEigensRowNormsBitForBit) {
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    for (Eigen::Index dim = 1; dim <= 3; ++dim)
+        for (Eigen::Index n : {2, 3, 7, 101}) {
+            PointList p(n, dim);
+            for (Eigen::Index i = 0; i < p.size(); ++i) p.data()[i] = std::ldexp(u(rng), static_cast<int>(i % 40) - 20);  // magnitudes 2^-20 … 2^19
+            for (bool closed : {false, true}) {
+                const std::vector<double> h = chord_lengths(p, closed), want = row_norm_chords(p, closed);
+                ASSERT_EQ(h.size(), want.size()) << "dim " << dim << " n " << n << " closed " << closed;
+                for (std::size_t k = 0; k < h.size(); ++k) ASSERT_EQ(h[k], want[k]) << "chord " << k << " dim " << dim << " n " << n << " closed " << closed;
+            }
+        }
+    EXPECT_TRUE(chord_lengths(PointList(1, 2), false).empty());
+}
+
+TEST(Points, FirstChordShorterThanFindsTheFirstShortChord) {
+    PointList p(5, 2);
+    p << 0, 0, 3, 4, 3, 4.5, 3, 5, 0, 0.25;  // chords 5, 0.5, 0.5, √(9 + 22.5625); closing 0.25
+    EXPECT_EQ(first_chord_shorter_than(p, false, 0.4), -1);
+    EXPECT_EQ(first_chord_shorter_than(p, false, 0.6), 1) << "chord 1 (0.5) is the first below 0.6";
+    EXPECT_EQ(first_chord_shorter_than(p, false, 5.0), 1) << "5 is not shorter than 5";
+    EXPECT_EQ(first_chord_shorter_than(p, false, 5.5), 0);
+    EXPECT_EQ(first_chord_shorter_than(p, true, 0.4), 4) << "the closing chord P4P0 (0.25)";
+}
+
+TEST(Points, AllFiniteFindsEveryNonFiniteValueAtEveryPosition) {
+    const double bad[] = {std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN(),
+                          -std::numeric_limits<double>::quiet_NaN()};
+    for (std::size_t n : {1u, 2u, 3u, 5u, 8u, 17u}) {
+        // finite extremes: the largest, the smallest subnormal, −0
+        std::vector<double> v(n, std::numeric_limits<double>::max());
+        for (std::size_t i = 0; i < n; i += 2) v[i] = i % 4 == 0 ? -std::numeric_limits<double>::denorm_min() : -0.0;
+        ASSERT_TRUE(all_finite(v.data(), n)) << n;
+        for (std::size_t at = 0; at < n; ++at)
+            for (double b : bad) {
+                std::vector<double> w = v;
+                w[at] = b;
+                EXPECT_FALSE(all_finite(w.data(), n)) << b << " at " << at << " of " << n;
+            }
+    }
+    Eigen::MatrixXd m = Eigen::MatrixXd::Ones(4, 3);
+    EXPECT_TRUE(all_finite(m));
+    m(3, 2) = std::numeric_limits<double>::infinity();
+    EXPECT_FALSE(all_finite(m));
 }

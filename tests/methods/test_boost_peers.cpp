@@ -1,6 +1,7 @@
-// The Boost peers read Boost's slopes block by block (methods/interpolant_forms.cpp): the curve must
-// be the one a single Boost interpolator over all the points gives, bit for bit: the derivatives at
-// both ends of every span.
+// The Boost peers compute Boost's slopes by its rules in O(n), checked against Boost on sampled
+// blocks (methods/interpolant_forms.cpp): the curve must be the one a single Boost interpolator over
+// all the points gives, bit for bit: the derivatives at both ends of every span, on data that takes
+// every branch of the rules (zero secants, sign changes, flat coordinates, the ends, block edges).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,9 +9,13 @@
 using std::isnan;
 #include <boost/math/interpolators/makima.hpp>
 #include <boost/math/interpolators/pchip.hpp>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "cagd/core/random_walk.hpp"
+#include "cagd/core/errors.hpp"
+#include "cagd/methods/interpolant_forms.hpp"
 #include "cagd/methods/method_registry.hpp"
 #include "cagd/spline/hermite_spline.hpp"
 
@@ -19,27 +24,85 @@ using namespace cagd;
 namespace {
 
 template <class Interpolator>
-void expect_boost_curve_bit_for_bit(const std::string& method, long n) {
-    const PointList p = random_walk(n, 5, 0.1, 2.0, 1.0);
-    const methods::InterpolationResult r = methods::interpolate(method, p, false);
-    ASSERT_TRUE(r.outcome.ok()) << r.outcome.message;
-    const auto* c = dynamic_cast<const spline::PiecewiseHermiteCurve*>(r.interpolant->curve.get());
+void expect_boost_curve_bit_for_bit(const std::string& what, const PointList& p, const methods::Interpolant& curve) {
+    const auto* c = dynamic_cast<const spline::PiecewiseHermiteCurve*>(curve.curve.get());
     ASSERT_NE(c, nullptr);
     std::vector<double> tau{0.0};
     for (Eigen::Index k = 1; k < p.rows(); ++k) tau.push_back(tau.back() + (p.row(k) - p.row(k - 1)).norm());
-    for (Eigen::Index col = 0; col < 2; ++col) {
+    for (Eigen::Index col = 0; col < p.cols(); ++col) {
         std::vector<double> x = tau, y(p.col(col).data(), p.col(col).data() + p.rows());
         const Interpolator f(std::move(x), std::move(y));
         for (Eigen::Index k = 0; k + 1 < p.rows(); ++k) {  // span k's end derivatives (d/du) = h_k · Boost's slopes at its ends
             const double h = (p.row(k + 1) - p.row(k)).norm();
-            ASSERT_EQ(c->start_derivatives()(k, col), h * f.prime(tau[static_cast<std::size_t>(k)])) << method << " node " << k << " coordinate " << col;
-            ASSERT_EQ(c->end_derivatives()(k, col), h * f.prime(tau[static_cast<std::size_t>(k) + 1])) << method << " node " << k + 1 << " coordinate " << col;
+            ASSERT_EQ(c->start_derivatives()(k, col), h * f.prime(tau[static_cast<std::size_t>(k)])) << what << " node " << k << " coordinate " << col;
+            ASSERT_EQ(c->end_derivatives()(k, col), h * f.prime(tau[static_cast<std::size_t>(k) + 1])) << what << " node " << k + 1 << " coordinate " << col;
         }
     }
 }
 
+// Data sets named by what they exercise.
+std::vector<std::pair<std::string, PointList>> data_sets() {
+    std::vector<std::pair<std::string, PointList>> sets;
+    sets.emplace_back("random walk of 1500", random_walk(1500, 5, 0.1, 2.0, 1.0));
+    for (long n : {4L, 5L, 7L, 63L, 256L, 257L, 320L, 1100L}) sets.emplace_back("random walk of " + std::to_string(n), random_walk(n, 9, 0.1, 2.0, 1.0));
+    {  // staircase: runs of equal y (zero secants) and, with the zigzag in x, secants changing sign
+        PointList p(600, 2);
+        for (Eigen::Index k = 0; k < p.rows(); ++k) p.row(k) << (k % 2 == 0 ? 1.0 : -1.0) * 0.3 + static_cast<double>(k), std::floor(static_cast<double>(k) / 3.0);
+        sets.emplace_back("staircase", p);
+    }
+    {  // 3-D, its z constant (makima's 0/0 weights) or a zigzag
+        PointList p(700, 3);
+        const PointList w = random_walk(700, 3, 0.1, 2.0, 1.0);
+        p.leftCols(2) = w;
+        for (Eigen::Index k = 0; k < p.rows(); ++k) p(k, 2) = k < 350 ? 2.5 : (k % 2 == 0 ? 1.0 : -1.0);
+        sets.emplace_back("3-D, flat then zigzag z", p);
+    }
+    sets.emplace_back("random walk scaled by 1e-100", random_walk(900, 4, 0.1, 2.0, 1.0) * 1e-100);
+    sets.emplace_back("random walk scaled by 1e100", random_walk(900, 4, 0.1, 2.0, 1.0) * 1e100);
+    return sets;
+}
+
 }  // namespace
 
-TEST(BoostPeers, PchipSlopesAreBoostsOverAllPointsBitForBit) { expect_boost_curve_bit_for_bit<boost::math::interpolators::pchip<std::vector<double>>>("boost-pchip", 1500); }
+TEST(BoostPeers, PchipSlopesAreBoostsOverAllPointsBitForBit) {
+    for (const auto& [what, p] : data_sets()) {
+        const methods::InterpolationResult r = methods::interpolate("boost-pchip", p, false);
+        ASSERT_TRUE(r.outcome.ok()) << what << ": " << r.outcome.message;
+        expect_boost_curve_bit_for_bit<boost::math::interpolators::pchip<std::vector<double>>>("boost-pchip, " + what, p, *r.interpolant);
+    }
+}
 
-TEST(BoostPeers, MakimaSlopesAreBoostsOverAllPointsBitForBit) { expect_boost_curve_bit_for_bit<boost::math::interpolators::makima<std::vector<double>>>("boost-makima", 1500); }
+TEST(BoostPeers, MakimaSlopesAreBoostsOverAllPointsBitForBit) {
+    for (const auto& [what, p] : data_sets()) {
+        const methods::InterpolationResult r = methods::interpolate("boost-makima", p, false);
+        ASSERT_TRUE(r.outcome.ok()) << what << ": " << r.outcome.message;
+        expect_boost_curve_bit_for_bit<boost::math::interpolators::makima<std::vector<double>>>("boost-makima, " + what, p, *r.interpolant);
+    }
+}
+
+// The curves above would be Boost's even with a wrong rule (the construction falls back); the rules
+// themselves must give Boost's slopes at every node, or every construction pays for the fallback.
+TEST(BoostPeers, TheRulesAreBoostsAtEveryNodeWithoutFallingBack) {
+    for (const auto& [what, p] : data_sets()) EXPECT_TRUE(methods::detail::boost_rules_match_everywhere(p)) << what;
+}
+
+// Should the O(n) rule ever differ from Boost (another Boost, another rounding), the sampled check
+// must notice and every slope come from Boost: a rule spoilt by one ulp still gives Boost's curve.
+TEST(BoostPeers, ASpoiltRuleFallsBackToBoostsSlopes) {
+    for (long n : {6L, 1500L}) {
+        const PointList p = random_walk(n, 5, 0.1, 2.0, 1.0);
+        expect_boost_curve_bit_for_bit<boost::math::interpolators::pchip<std::vector<double>>>("spoilt pchip rule, n " + std::to_string(n), p,
+                                                                                              methods::detail::boost_pchip_interpolant_with_a_spoilt_rule(p));
+    }
+}
+
+TEST(BoostPeers, FewerThanFourPointsAreRefusedByName) {
+    const PointList p = random_walk(3, 5, 0.1, 2.0, 1.0);
+    try {
+        methods::boost_makima_interpolant(p);
+        FAIL() << "3 points accepted";
+    } catch (const InvalidInput& e) {
+        EXPECT_NE(std::string(e.what()).find("at least 4 points"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("got 3"), std::string::npos) << e.what();
+    }
+}

@@ -1,8 +1,10 @@
 #include "cagd/core/points.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "cagd/core/errors.hpp"
+#include "cagd/core/finite.hpp"
 
 namespace cagd {
 
@@ -10,7 +12,7 @@ void require_valid_points(const PointList& points, Eigen::Index min_count, bool 
     const Eigen::Index n = points.rows();
     if (n < min_count) fail_input(who, "needs at least " + std::to_string(min_count) + " points, got " + std::to_string(n));
     if (points.cols() < 1 || points.cols() > 3) fail_input(who, "points must have 1, 2 or 3 coordinates, got " + std::to_string(points.cols()));
-    if (!points.allFinite())  // one vectorised pass; the search for the first culprit only on failure
+    if (!all_finite(points))  // one vectorised pass; the search for the first culprit only on failure
         for (Eigen::Index i = 0; i < n; ++i)
             for (Eigen::Index k = 0; k < points.cols(); ++k)
                 if (!std::isfinite(points(i, k)))
@@ -23,6 +25,62 @@ void require_valid_points(const PointList& points, Eigen::Index min_count, bool 
         for (Eigen::Index k = 0; k < points.cols(); ++k) same = same && points(i, k) == points(j, k);
         if (same) fail_input(who, "points " + std::to_string(i) + " and " + std::to_string(j) + " coincide (zero-length chord); consecutive points must differ");
     }
+}
+
+namespace {
+
+// Visits chord k = 0 … spans − 1 with its squared length, the D squared coordinate differences
+// summed in coordinate order (as Eigen's squaredNorm of a row sums them), from contiguous columns;
+// the closing chord (k = n − 1) last. No square root here: a libm sqrt call (errno) keeps a loop
+// scalar. Written so the loop over k vectorises.
+template <int D, class Visit>
+void visit_squared_chords(const PointList& points, bool closed, Visit&& visit) {
+    const Eigen::Index n = points.rows();
+    const double* c[3] = {points.col(0).data(), D > 1 ? points.col(1).data() : nullptr, D > 2 ? points.col(2).data() : nullptr};
+    const auto squared = [&](Eigen::Index a, Eigen::Index b) {
+        double sum = (c[0][b] - c[0][a]) * (c[0][b] - c[0][a]);
+        if constexpr (D > 1) sum = sum + (c[1][b] - c[1][a]) * (c[1][b] - c[1][a]);
+        if constexpr (D > 2) sum = sum + (c[2][b] - c[2][a]) * (c[2][b] - c[2][a]);
+        return sum;
+    };
+    for (Eigen::Index k = 0; k + 1 < n; ++k) visit(k, squared(k, k + 1));
+    if (closed && n > 0) visit(n - 1, squared(n - 1, 0));
+}
+
+template <class Visit>
+void visit_squared_chords(const PointList& points, bool closed, Visit&& visit) {
+    switch (points.cols()) {
+        case 1: return visit_squared_chords<1>(points, closed, visit);
+        case 2: return visit_squared_chords<2>(points, closed, visit);
+        case 3: return visit_squared_chords<3>(points, closed, visit);
+        default:
+            for (Eigen::Index k = 0; k + 1 < points.rows() || (closed && k < points.rows()); ++k)
+                visit(k, (points.row(k + 1 == points.rows() ? 0 : k + 1) - points.row(k)).squaredNorm());
+    }
+}
+
+}  // namespace
+
+std::vector<double> chord_lengths(const PointList& points, bool closed) {
+    const Eigen::Index n = points.rows(), spans = std::max<Eigen::Index>(closed ? n : n - 1, 0);
+    std::vector<double> h(static_cast<std::size_t>(spans));
+    double* out = h.data();
+    visit_squared_chords(points, closed, [out](Eigen::Index k, double squared) { out[k] = squared; });
+    Eigen::Map<Eigen::ArrayXd> lengths(out, spans);
+    lengths = lengths.sqrt();  // Eigen's packet sqrt: correctly rounded, as std::sqrt
+    return h;
+}
+
+Eigen::Index first_chord_shorter_than(const PointList& points, bool closed, double shortest) {
+    const double limit = shortest * shortest;
+    bool any = false;  // an OR over all chords (vectorises), then the search only on failure
+    visit_squared_chords(points, closed, [&](Eigen::Index, double squared) { any |= !(squared >= limit); });
+    if (!any) return -1;
+    Eigen::Index first = -1;
+    visit_squared_chords(points, closed, [&](Eigen::Index k, double squared) {
+        if (first < 0 && !(squared >= limit)) first = k;
+    });
+    return first;
 }
 
 void require_increasing(const std::vector<double>& values, std::size_t min_count, const std::string& name, const std::string& who) {

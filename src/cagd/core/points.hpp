@@ -15,6 +15,17 @@ using PointList = Eigen::MatrixXd;  ///< n × dim, one point per row
 /// also last vs first). Messages name `who`, the row index and the value.
 void require_valid_points(const PointList& points, Eigen::Index min_count, bool distinct_consecutive, bool closed, const std::string& who);
 
+/// The lengths |P_{k+1} − P_k| of the chords, k = 0 … n − 2, and for a closed list also
+/// |P_0 − P_{n−1}| last. Each is the square root of the squared coordinate differences summed in
+/// coordinate order, as Eigen's `(row(k + 1) − row(k)).norm()` sums them: the same values bit for
+/// bit, computed over contiguous columns (vectorised).
+std::vector<double> chord_lengths(const PointList& points, bool closed);
+
+/// The first chord k (numbered as in chord_lengths) whose squared length is not ≥ shortest², or −1
+/// if every chord is at least that long; one vectorised pass, no allocation. Precondition:
+/// shortest² is a normal double (shortest ≥ 1.5e-154).
+Eigen::Index first_chord_shorter_than(const PointList& points, bool closed, double shortest);
+
 /// Throws InvalidInput unless `values` has at least min_count entries, all finite and strictly
 /// increasing (abscissae of y(x) data, grid lines). `name` ("x", "y") appears in the message with
 /// the index and the offending value.

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
+#include <cstdint>
+#include <limits>
 #include <cmath>
 // Boost 1.74's pchip.hpp and makima.hpp call isnan unqualified on a double, which only compiles if
 // std::isnan is visible where the templates are defined.
@@ -23,41 +26,165 @@ std::vector<double> unit_nodes(Eigen::Index nodes) {
     return u;
 }
 
-// Boost's slopes at the nodes, read through its public prime(x) (the slopes themselves are
-// private). One interpolator over all n points costs a binary search per node (2n searches through
-// megabytes: five times the construction at 10^6 points). Boost's slope at node k depends on the
-// nodes k − reach … k + reach only (pchip: reach 1, the harmonic mean of the neighbouring secants;
-// makima: reach 2, four secants) and, at the ends, on the end nodes; so interpolators over
-// overlapping blocks of kSlopeBlock nodes, each extended by `reach` nodes on either side, compute
-// every slope with the same arithmetic on the same values: the slopes are Boost's bit for bit, and
-// each search runs over a block that stays in cache.
+// Boost's slopes at the nodes. Boost keeps them private; its public prime(x) reads one with a binary
+// search (2n searches through megabytes: five times the construction at 10^6 points). Boost's
+// documented rules are local and cheap, so they are computed here in O(n), in the order Boost's
+// pchip and makima evaluate them (below), and every construction checks them bit for bit against
+// Boost's own on kCheckedBlocks sampled blocks, both ends included; should any differ (another
+// Boost, another rounding), every slope is read from Boost block by block instead. Either way the
+// slopes are Boost's bit for bit (tests/methods/test_boost_peers.cpp holds all nodes to this).
+//
+// Reading from Boost by blocks: the slope at node k depends on the nodes k − reach … k + reach
+// only (pchip: reach 1; makima: reach 2) and, at the ends, on the end nodes; so interpolators over
+// blocks of kSlopeBlock nodes, each extended by `reach` nodes on either side, compute every slope
+// with the same arithmetic on the same values, and each search stays in cache.
 constexpr Eigen::Index kSlopeBlock = 256;
+// Sampled blocks checked per construction and coordinate: both ends (their own rules) and evenly
+// spaced interior blocks; 8 blocks of 256 cost 1 % of a construction at 10^6 points.
+constexpr Eigen::Index kCheckedBlocks = 8;
 
+// Boost's slopes for the nodes a ≤ k < b into out[k − a], from one interpolator over a … b widened
+// by `reach`.
 template <class Interpolator>
-void boost_slopes_by_blocks(const std::vector<double>& tau, const Eigen::VectorXd& y, Eigen::Index reach, Eigen::Ref<Eigen::VectorXd> slopes) {
+void boost_slopes_in(const std::vector<double>& tau, const double* y, Eigen::Index reach, Eigen::Index a, Eigen::Index b, double* out) {
     const Eigen::Index n = static_cast<Eigen::Index>(tau.size());
+    const Eigen::Index lo = std::max<Eigen::Index>(0, a - reach), hi = std::min(n, b + reach);
+    std::vector<double> x(tau.begin() + lo, tau.begin() + hi), v(y + lo, y + hi);
+    const Interpolator f(std::move(x), std::move(v));
+    for (Eigen::Index k = a; k < b; ++k) out[k - a] = f.prime(tau[static_cast<std::size_t>(k)]);
+}
+
+// The blocks [a, b) that cover 0 … n − 1, with no short last block (Boost needs four points).
+template <class Visit>
+void for_each_slope_block(Eigen::Index n, Visit visit) {
     for (Eigen::Index a = 0; a < n;) {
         Eigen::Index b = std::min(n, a + kSlopeBlock);
-        if (n - b < kSlopeBlock / 4) b = n;  // no short last block (Boost needs four points)
-        const Eigen::Index lo = std::max<Eigen::Index>(0, a - reach), hi = std::min(n, b + reach);
-        std::vector<double> x(tau.begin() + lo, tau.begin() + hi), v(y.data() + lo, y.data() + hi);
-        const Interpolator f(std::move(x), std::move(v));
-        for (Eigen::Index k = a; k < b; ++k) slopes(k) = f.prime(tau[static_cast<std::size_t>(k)]);
+        if (n - b < kSlopeBlock / 4) b = n;
+        visit(a, b);
         a = b;
     }
 }
 
+// Where node k's slope s goes, as hermite_from_slopes forms the spans' τ-derivatives:
+// d0_k = h_k s for the span that starts at k, d1_{k−1} = h_{k−1} s for the span that ends there.
+struct NodeSlopeSink {
+    const double* h;
+    double* d0;
+    double* d1;
+    std::size_t n;  // nodes
+    void interior(std::size_t k, double s) const {
+        d0[k] = h[k] * s;
+        d1[k - 1] = h[k - 1] * s;
+    }
+    void put(std::size_t k, double s) const {
+        if (k + 1 < n) d0[k] = h[k] * s;
+        if (k > 0) d1[k - 1] = h[k - 1] * s;
+    }
+    bool holds(std::size_t k, double s) const {  // bit for bit
+        const auto same = [](double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); };
+        return (k + 1 == n || same(d0[k], h[k] * s)) && (k == 0 || same(d1[k - 1], h[k - 1] * s));
+    }
+};
+
+// Boost pchip's rule (Fritsch–Butland): with secants d_k = Δy_k / h_k, h_k = τ_{k+1} − τ_k, the
+// slope at an interior node is 0 where d_{k−1} and d_k differ in sign or either is 0, else the
+// weighted harmonic mean (w1 + w2)/(w1/d_{k−1} + w2/d_k), w1 = 2h_k + h_{k−1}, w2 = h_k + 2h_{k−1};
+// at the ends the one-sided secant. Each secant is formed once (the same value as Boost's twice).
+void pchip_rule_slopes(const std::vector<double>& x, const double* y, const NodeSlopeSink& out) {
+    const std::size_t n = x.size();
+    double hkm1 = x[1] - x[0], dkm1 = (y[1] - y[0]) / hkm1;
+    out.put(0, dkm1);
+    for (std::size_t k = 1; k + 1 < n; ++k) {
+        const double hk = x[k + 1] - x[k], dk = (y[k + 1] - y[k]) / hk;
+        const double w1 = 2 * hk + hkm1, w2 = hk + 2 * hkm1;
+        out.interior(k, ((dk > 0 && dkm1 < 0) || (dk < 0 && dkm1 > 0) || dk == 0 || dkm1 == 0) ? 0.0 : (w1 + w2) / (w1 / dkm1 + w2 / dk));
+        hkm1 = hk;
+        dkm1 = dk;
+    }
+    out.put(n - 1, dkm1);
+}
+
+// Boost makima's rule (Akima's weights, modified): with secants m_i, the slope at node i is
+// (w1 m_{i−1} + w2 m_i)/(w1 + w2), w1 = |m_{i+1} − m_i| + |m_{i+1} + m_i|/2,
+// w2 = |m_{i−1} − m_{i−2}| + |m_{i−1} + m_{i−2}|/2, 0 where that is 0/0; beyond the ends the
+// secants are extrapolated quadratically (m_{−1} = 2m_0 − m_1, m_{−2} = 2m_{−1} − m_0, and so at
+// the other end).
+double makima_weighted(double wa, double ma, double wb, double mb) {
+    const double s = (wa * ma + wb * mb) / (wa + wb);
+    return std::isnan(s) ? 0.0 : s;
+}
+double makima_weight(double m1, double m0) { return std::abs(m1 - m0) + std::abs(m1 + m0) / 2; }
+
+void makima_rule_slopes(const std::vector<double>& x, const double* y, const NodeSlopeSink& out) {
+    const std::size_t n = x.size();
+    const auto secant = [&](std::size_t i) { return (y[i + 1] - y[i]) / (x[i + 1] - x[i]); };
+    {
+        const double m2 = secant(2), m1 = secant(1), m0 = secant(0);
+        const double mm1 = 2 * m0 - m1, mm2 = 2 * mm1 - m0;
+        out.put(0, makima_weighted(makima_weight(m1, m0), mm1, makima_weight(mm1, mm2), m0));
+        out.put(1, makima_weighted(makima_weight(m2, m1), m0, makima_weight(m0, mm1), m1));
+    }
+    // Each secant and each weight once (the same values as Boost's recomputed ones): node i takes
+    // w1 = W_i and w2 = W_{i−2}, W_k = makima_weight(m_{k+1}, m_k).
+    double mim1 = secant(1), mi = secant(2), w_im2 = makima_weight(mim1, secant(0)), w_im1 = makima_weight(mi, mim1);
+    for (std::size_t i = 2; i + 2 < n; ++i) {
+        const double mip1 = secant(i + 1), w_i = makima_weight(mip1, mi);
+        out.interior(i, makima_weighted(w_i, mim1, w_im2, mi));
+        mim1 = mi;
+        mi = mip1;
+        w_im2 = w_im1;
+        w_im1 = w_i;
+    }
+    const double mnm4 = secant(n - 4), mnm3 = secant(n - 3), mnm2 = secant(n - 2);
+    const double mnm1 = 2 * mnm2 - mnm3, mn = 2 * mnm1 - mnm2;
+    out.put(n - 2, makima_weighted(makima_weight(mnm1, mnm2), mnm3, makima_weight(mnm3, mnm4), mnm2));
+    out.put(n - 1, makima_weighted(makima_weight(mn, mnm1), mnm2, makima_weight(mnm2, mnm3), mnm1));
+}
+
+// Whether the derivatives `out` holds are those of Boost's slopes, bit for bit, on kCheckedBlocks
+// blocks spread over the nodes (or on every block).
 template <class Interpolator>
-Interpolant componentwise_chord_interpolant(const PointList& p, Eigen::Index reach) {
-    const std::vector<double> h = chord_lengths(p, false);
-    Eigen::MatrixXd slopes(p.rows(), p.cols());
-    {  // the chord-length parameters live only while the slopes are read (peak memory)
+bool rule_slopes_match_boost(const std::vector<double>& tau, const double* y, Eigen::Index reach, const NodeSlopeSink& out, bool every_block = false) {
+    const Eigen::Index n = static_cast<Eigen::Index>(tau.size());
+    std::vector<std::pair<Eigen::Index, Eigen::Index>> blocks;
+    for_each_slope_block(n, [&](Eigen::Index a, Eigen::Index b) { blocks.emplace_back(a, b); });
+    const std::size_t count = blocks.size(), checked = every_block ? count : std::min<std::size_t>(count, kCheckedBlocks);
+    std::vector<double> boost_slopes(static_cast<std::size_t>(2 * kSlopeBlock));  // a block is shorter than two
+    for (std::size_t j = 0; j < checked; ++j) {
+        const auto [a, b] = blocks[checked == 1 ? 0 : j * (count - 1) / (checked - 1)];
+        boost_slopes.resize(static_cast<std::size_t>(b - a));
+        boost_slopes_in<Interpolator>(tau, y, reach, a, b, boost_slopes.data());
+        for (Eigen::Index k = a; k < b; ++k)
+            if (!out.holds(static_cast<std::size_t>(k), boost_slopes[static_cast<std::size_t>(k - a)])) return false;
+    }
+    return true;
+}
+
+template <class Interpolator, class Rule>
+Interpolant componentwise_chord_interpolant(const char* function, const PointList& p, Eigen::Index reach, Rule rule) {
+    if (p.rows() < 4) fail_input(function, "needs at least 4 points (Boost's pchip and makima), got " + std::to_string(p.rows()));
+    std::vector<double> h = chord_lengths(p, false);
+    const Eigen::Index n = p.rows(), spans = n - 1;
+    Eigen::MatrixXd nodes = p, d0(spans, p.cols()), d1(spans, p.cols());
+    {  // the chord-length parameters live only while d0, d1 are filled (peak memory)
         std::vector<double> tau{0.0};
         tau.reserve(h.size() + 1);
         for (double hk : h) tau.push_back(tau.back() + hk);
-        for (Eigen::Index c = 0; c < p.cols(); ++c) boost_slopes_by_blocks<Interpolator>(tau, p.col(c), reach, slopes.col(c));
+        for (Eigen::Index c = 0; c < p.cols(); ++c) {
+            const double* y = p.col(c).data();
+            const NodeSlopeSink out{h.data(), d0.col(c).data(), d1.col(c).data(), static_cast<std::size_t>(n)};
+            rule(tau, y, out);
+            if (!rule_slopes_match_boost<Interpolator>(tau, y, reach, out)) {
+                std::vector<double> block;
+                for_each_slope_block(n, [&](Eigen::Index a, Eigen::Index b) {
+                    block.resize(static_cast<std::size_t>(b - a));
+                    boost_slopes_in<Interpolator>(tau, y, reach, a, b, block.data());
+                    for (Eigen::Index k = a; k < b; ++k) out.put(static_cast<std::size_t>(k), block[static_cast<std::size_t>(k - a)]);
+                });
+            }
+        }
     }
-    return hermite_from_slopes(p, slopes, h, false);
+    return unit_span_interpolant(std::make_shared<spline::PiecewiseHermiteCurve>(std::move(nodes), std::move(d0), std::move(d1)), n, std::move(h));
 }
 
 template <std::size_t D>
@@ -106,13 +233,6 @@ Interpolant catmull_rom_interpolant(const PointList& p, bool closed) {
 
 }  // namespace
 
-std::vector<double> chord_lengths(const PointList& p, bool closed) {
-    const Eigen::Index n = p.rows(), spans = closed ? n : n - 1;
-    std::vector<double> h(static_cast<std::size_t>(std::max<Eigen::Index>(spans, 0)));
-    for (Eigen::Index k = 0; k < spans; ++k) h[static_cast<std::size_t>(k)] = (p.row(k + 1 == n ? 0 : k + 1) - p.row(k)).norm();
-    return h;
-}
-
 Interpolant unit_span_interpolant(std::shared_ptr<const Curve> curve, Eigen::Index nodes, std::vector<double> dtau_du) {
     return {std::move(curve), unit_nodes(nodes), std::move(dtau_du)};
 }
@@ -133,9 +253,41 @@ Interpolant hermite_from_slopes(const PointList& p, const Eigen::MatrixXd& slope
     return unit_span_interpolant(std::make_shared<spline::PiecewiseHermiteCurve>(std::move(nodes), std::move(d0), std::move(d1)), spans + 1, h);
 }
 
-Interpolant boost_pchip_interpolant(const PointList& p) { return componentwise_chord_interpolant<boost::math::interpolators::pchip<std::vector<double>>>(p, 1); }
+Interpolant boost_pchip_interpolant(const PointList& p) { return componentwise_chord_interpolant<boost::math::interpolators::pchip<std::vector<double>>>("cagd::methods::boost_pchip_interpolant", p, 1, pchip_rule_slopes); }
 
-Interpolant boost_makima_interpolant(const PointList& p) { return componentwise_chord_interpolant<boost::math::interpolators::makima<std::vector<double>>>(p, 2); }
+Interpolant boost_makima_interpolant(const PointList& p) { return componentwise_chord_interpolant<boost::math::interpolators::makima<std::vector<double>>>("cagd::methods::boost_makima_interpolant", p, 2, makima_rule_slopes); }
+
+namespace {
+
+template <class Interpolator, class Rule>
+bool rule_matches_everywhere(const PointList& p, Eigen::Index reach, Rule rule) {
+    const std::vector<double> h = chord_lengths(p, false);
+    std::vector<double> tau{0.0};
+    for (double hk : h) tau.push_back(tau.back() + hk);
+    std::vector<double> d0(h.size()), d1(h.size());
+    for (Eigen::Index c = 0; c < p.cols(); ++c) {
+        const NodeSlopeSink out{h.data(), d0.data(), d1.data(), tau.size()};
+        rule(tau, p.col(c).data(), out);
+        if (!rule_slopes_match_boost<Interpolator>(tau, p.col(c).data(), reach, out, true)) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+bool detail::boost_rules_match_everywhere(const PointList& p) {
+    require_valid_points(p, 4, true, false, "cagd::methods::detail::boost_rules_match_everywhere");
+    return rule_matches_everywhere<boost::math::interpolators::pchip<std::vector<double>>>(p, 1, pchip_rule_slopes) &&
+           rule_matches_everywhere<boost::math::interpolators::makima<std::vector<double>>>(p, 2, makima_rule_slopes);
+}
+
+Interpolant detail::boost_pchip_interpolant_with_a_spoilt_rule(const PointList& p) {
+    return componentwise_chord_interpolant<boost::math::interpolators::pchip<std::vector<double>>>(
+        "cagd::methods::detail::boost_pchip_interpolant_with_a_spoilt_rule", p, 1, [](const std::vector<double>& x, const double* y, const NodeSlopeSink& out) {
+            pchip_rule_slopes(x, y, out);
+            for (std::size_t k = 0; k + 1 < out.n; ++k) out.d0[k] = std::nextafter(out.d0[k], std::numeric_limits<double>::infinity());
+        });
+}
 
 Interpolant boost_catmull_rom_interpolant(const PointList& p, bool closed) { return p.cols() == 2 ? catmull_rom_interpolant<2>(p, closed) : catmull_rom_interpolant<3>(p, closed); }
 

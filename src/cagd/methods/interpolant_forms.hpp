@@ -12,9 +12,6 @@
 
 namespace cagd::methods {
 
-/// Chord lengths |P_{k+1} − P_k| of the spans (closed: the closing span last).
-std::vector<double> chord_lengths(const PointList& p, bool closed);
-
 /// A curve whose data points sit at u = 0, 1, …, nodes − 1, with dτ/du per span.
 Interpolant unit_span_interpolant(std::shared_ptr<const Curve> curve, Eigen::Index nodes, std::vector<double> dtau_du);
 
@@ -29,5 +26,15 @@ Interpolant boost_pchip_interpolant(const PointList& p);
 Interpolant boost_makima_interpolant(const PointList& p);
 /// Boost.Math's centripetal Catmull–Rom (α = 1/2), 2-D or 3-D.
 Interpolant boost_catmull_rom_interpolant(const PointList& p, bool closed);
+
+namespace detail {
+/// Whether the O(n) slope rules of boost_pchip_interpolant and boost_makima_interpolant give
+/// Boost's slopes bit for bit at every node of p, each coordinate over chord length (so that no
+/// construction falls back to reading them from Boost). For the tests.
+bool boost_rules_match_everywhere(const PointList& p);
+/// boost_pchip_interpolant with its O(n) slope rule spoilt (every span's start derivative one ulp
+/// up): its check against Boost must notice and read every slope from Boost. For the tests.
+Interpolant boost_pchip_interpolant_with_a_spoilt_rule(const PointList& p);
+}  // namespace detail
 
 }  // namespace cagd::methods

@@ -92,17 +92,13 @@ InterpolationResult checked_build(const Method& method, const PointList& points,
                                                     " overflow its arithmetic (at most 1e150: squared distances must stay finite); scale the points down"};
         return r;
     }
-    for (Eigen::Index i = 0; i + 1 < points.rows() || (closed && i < points.rows()); ++i) {
+    if (const Eigen::Index i = first_chord_shorter_than(points, closed, kShortestChord * std::max(1.0, largest)); i >= 0) {
         const Eigen::Index next = i + 1 == points.rows() ? 0 : i + 1;
-        const auto d = points.row(next) - points.row(i);  // an expression: no allocation per point
-        const double chord = d.norm();
-        if (!(chord >= kShortestChord * std::max(1.0, largest))) {
-            InterpolationResult r;
-            r.outcome = {Status::not_representable, method.name + ": points " + std::to_string(i) + " and " + std::to_string(next) + " differ by " +
-                                                        full_precision(d.cwiseAbs().maxCoeff()) +
-                                                        " at most per coordinate: below 1e-150 (times the coordinates' size) the chord's square underflows; scale the points up"};
-            return r;
-        }
+        InterpolationResult r;
+        r.outcome = {Status::not_representable, method.name + ": points " + std::to_string(i) + " and " + std::to_string(next) + " differ by " +
+                                                    full_precision((points.row(next) - points.row(i)).cwiseAbs().maxCoeff()) +
+                                                    " at most per coordinate: below 1e-150 (times the coordinates' size) the chord's square underflows; scale the points up"};
+        return r;
     }
     try {
         return method.rebuild && start.size() > 0 ? method.rebuild(points, closed, values, start) : method.build(points, closed, values);

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "cagd/core/errors.hpp"
+#include "cagd/core/finite.hpp"
 #include "cagd/numeric/tridiagonal.hpp"
 
 namespace cagd::spline {
@@ -16,7 +17,7 @@ PiecewiseHermiteCurve::PiecewiseHermiteCurve(Eigen::MatrixXd nodes, Eigen::Matri
         fail_input(who,
                    "needs K+1 nodes and K start/end derivatives, got " + std::to_string(nodes_.rows()) + ", " + std::to_string(d0_.rows()) + ", " + std::to_string(d1_.rows()));
     if (d0_.cols() != nodes_.cols() || d1_.cols() != nodes_.cols()) fail_input(who, "nodes and derivatives must have the same dimension");
-    if (!nodes_.allFinite() || !d0_.allFinite() || !d1_.allFinite()) fail_input(who, "nodes and derivatives must be finite");
+    if (!all_finite(nodes_) || !all_finite(d0_) || !all_finite(d1_)) fail_input(who, "nodes and derivatives must be finite");
 }
 
 std::vector<double> PiecewiseHermiteCurve::breakpoints() const { return unit_piece_breakpoints(spans()); }
