@@ -49,6 +49,8 @@ std::string without_checksum(const std::string& text) {
 
 TEST(TableFiles, AChecksumFindsAFlippedDigitAndATruncation) {
     EXPECT_EQ(checksum_line(""), "# checksum fnv1a64 cbf29ce484222325\n") << "FNV-1a's offset basis for no bytes";
+    EXPECT_EQ(fnv1a64_hex("a"), "af63dc4c8601ec8c") << "FNV-1a of one byte 'a' (the published test vector)";
+    EXPECT_EQ(fnv1a64_hex("13900"), "00f5898e9456454c") << "leading zeros kept: 16 digits always";
     const std::string good = with_checksum("a,b\n1,2\n");
     EXPECT_EQ(checked_content(good, "f"), "a,b\n1,2\n");
     std::string flipped = good;

@@ -261,7 +261,7 @@ TEST(Methods, CurvatureProfileRebuildsFromAnEarlierSolution) {
             ASSERT_GT(first.solver_state.size(), 0) << "the final iterate is kept";
             PointList moved = p;
             moved(n / 2, 1) += 1e-3;
-            const InterpolationResult cold = interpolate(cp, moved, closed), warm = interpolate_from(cp, moved, closed, first);
+            const InterpolationResult cold = interpolate(cp, moved, closed), warm = interpolate_from(cp, moved, closed, first.solver_state);
             ASSERT_TRUE(cold.outcome.ok() && warm.outcome.ok()) << cold.outcome.message << warm.outcome.message;
             EXPECT_LT(iterations(warm), iterations(cold)) << n << (closed ? " closed" : " open");
             double largest = 0.0;

@@ -233,7 +233,7 @@ BenchmarkResults run_benchmark(const BenchmarkPlan& plan, const WorkShare& share
     return r;
 }
 
-std::string benchmark_plan_fingerprint(const BenchmarkPlan& plan) { return checksum_line(plan_text(plan)).substr(std::string("# checksum fnv1a64 ").size(), 16); }
+std::string benchmark_plan_fingerprint(const BenchmarkPlan& plan) { return fnv1a64_hex(plan_text(plan)); }
 
 std::string benchmark_part_text(const BenchmarkPlan& plan, const WorkShare& share, const BenchmarkResults& results) {
     check_work_share(share, "compare::benchmark_part_text");

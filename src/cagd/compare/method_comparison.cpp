@@ -141,9 +141,7 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
         try {
             const auto start_state = options.starts.find(configuration.name);
             if (start_state != options.starts.end()) {
-                InterpolationResult earlier;
-                earlier.solver_state = start_state->second;
-                r = methods::interpolate_from(configuration, points, options.closed, earlier);
+                r = methods::interpolate_from(configuration, points, options.closed, start_state->second);
             } else {
                 r = methods::interpolate(configuration, points, options.closed);
             }
@@ -184,9 +182,7 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
             try {
                 // From this build's final iterate (continuation: fewer Newton iterations, and the
                 // same solution branch); a direct method builds anew.
-                InterpolationResult previous;
-                previous.solver_state = c.solver_state;
-                const InterpolationResult m = methods::interpolate_from(configuration, moved, options.closed, previous);
+                const InterpolationResult m = methods::interpolate_from(configuration, moved, options.closed, c.solver_state);
                 if (m.outcome.ok() && m.interpolant) c.locality_footprint = spans_moved(*c.interpolant, *m.interpolant, 1e-9 * diagonal);
             } catch (const InvalidInput&) {  // the moved point made the input invalid for this method
             }

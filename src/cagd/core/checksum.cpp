@@ -21,11 +21,13 @@ std::uint64_t fnv1a64(std::string_view bytes) {
     return h;
 }
 
-std::string checksum_line(std::string_view content) {
+std::string fnv1a64_hex(std::string_view bytes) {
     char hex[24];
-    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(fnv1a64(content)));
-    return std::string(kPrefix) + hex + "\n";
+    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(fnv1a64(bytes)));
+    return hex;
 }
+
+std::string checksum_line(std::string_view content) { return std::string(kPrefix) + fnv1a64_hex(content) + "\n"; }
 
 std::string_view checked_content(std::string_view text, const std::string& source) {
     const std::string who = "cagd::checked_content";
@@ -39,7 +41,7 @@ std::string_view checked_content(std::string_view text, const std::string& sourc
     const std::string expected = checksum_line(content);
     if (std::string(last) + "\n" != expected)
         fail_input(who, source + ": its checksum does not match its content (" + std::string(last.substr(kPrefix.size())) + " recorded, " +
-                            expected.substr(kPrefix.size(), 16) + " computed): the file is damaged or was edited");
+                            fnv1a64_hex(content) + " computed): the file is damaged or was edited");
     return content;
 }
 

@@ -15,6 +15,9 @@ namespace cagd {
 /// FNV-1a, 64 bits, of `bytes`.
 std::uint64_t fnv1a64(std::string_view bytes);
 
+/// fnv1a64(bytes) as 16 lower-case hexadecimal digits: the digest as the checksum line writes it.
+std::string fnv1a64_hex(std::string_view bytes);
+
 /// The checksum line of `content` (with its '\n').
 std::string checksum_line(std::string_view content);
 

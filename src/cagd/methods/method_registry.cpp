@@ -174,8 +174,8 @@ InterpolationResult interpolate(const Configuration& configuration, const PointL
     return interpolate(*configuration.method, points, closed, configuration.values);
 }
 
-InterpolationResult interpolate_from(const Configuration& configuration, const PointList& points, bool closed, const InterpolationResult& previous) {
-    return checked_build(*configuration.method, points, closed, configuration.values, previous.solver_state);
+InterpolationResult interpolate_from(const Configuration& configuration, const PointList& points, bool closed, const Eigen::VectorXd& start) {
+    return checked_build(*configuration.method, points, closed, configuration.values, start);
 }
 
 }  // namespace cagd::methods

@@ -160,10 +160,11 @@ Configuration find_configuration(const std::string& name);
 Configuration find_configuration(const std::string& name, const ParameterText& overrides);
 /// interpolate() under the configuration's method and values.
 InterpolationResult interpolate(const Configuration& configuration, const PointList& points, bool closed);
-/// interpolate() on points near those of `previous` (a result of the same configuration on as many
-/// points, open or closed alike): a method with a rebuild starts its solve from previous.solver_state
-/// (fewer Newton iterations when the points moved a little); any other builds anew. The same checks.
-InterpolationResult interpolate_from(const Configuration& configuration, const PointList& points, bool closed, const InterpolationResult& previous);
+/// interpolate() on points near earlier ones: `start` is the solver_state of a result of the same
+/// configuration on as many points, open or closed alike. A method with a rebuild starts its solve
+/// from it (fewer Newton iterations when the points moved a little); any other method, or an empty
+/// start, builds anew. The same checks.
+InterpolationResult interpolate_from(const Configuration& configuration, const PointList& points, bool closed, const Eigen::VectorXd& start);
 
 /// The registry as a Markdown table (docs/methods.md) or as plain lines (`cagd interpolate --list-methods`).
 std::string registry_markdown();
