@@ -149,10 +149,11 @@ def main():
             rows.append((target, f"{ratio:.2f}× ({seconds(ours) * 1e3:.0f} ms)", f"{peer_label} {seconds(peer) * 1e3:.0f} ms", "met" if ratio <= limit else "not met"))
     for m, raw in (("boost-pchip", "pchip"), ("boost-makima", "makima"), ("boost-catmull-rom", "catmull_rom")):
         ratio_row(f"{m} construction at 10^6 ≤ 1.5× raw Boost", f"BM_Construct/{m}/1000000", f"BM_RawBoost/{raw}/1000000", 1.5, f"raw Boost {raw}")
-    for m in ("hermite-a", "hermite-b"):
-        ratio_row(f"{m} construction at 10^6 ≤ 1.3× raw Boost pchip", f"BM_Construct/{m}/1000000", "BM_RawBoost/pchip/1000000", 1.3, "raw Boost pchip")
-    for m in ("cubic-a", "cubic-b"):
-        ratio_row(f"{m} construction at 10^6 ≤ 1.3× Boost's cardinal cubic B-spline", f"BM_Construct/{m}/1000000", "BM_boost_cardinal_cubic_b_spline_xy/1000000", 1.3, "Boost cardinal")
+    for n, label in ((1000000, "10^6"), (10000000, "10^7")):
+        for m in ("hermite-a", "hermite-b"):
+            ratio_row(f"{m} construction at {label} ≤ 1.3× raw Boost pchip", f"BM_Construct/{m}/{n}", f"BM_RawBoost/pchip/{n}", 1.3, "raw Boost pchip")
+        for m in ("cubic-a", "cubic-b"):
+            ratio_row(f"{m} construction at {label} ≤ 1.3× Boost's cardinal cubic B-spline", f"BM_Construct/{m}/{n}", f"BM_boost_cardinal_cubic_b_spline_xy/{n}", 1.3, "Boost cardinal")
     for m in ("s-spline", "b2-spline"):
         ratio_row(f"{m} construction at 10^6 ≤ 2× Boost's cardinal cubic B-spline", f"BM_Construct/{m}/1000000", "BM_boost_cardinal_cubic_b_spline_xy/1000000", 2.0, "Boost cardinal")
     ratio_row("pseudo-spline-exact construction at 10^6 ≤ 10× pseudo-spline-approx", "BM_Construct/pseudo-spline/1000000", "BM_Construct/pseudo-spline-approx/1000000", 10.0,

@@ -12,6 +12,7 @@
 #include "cagd/intrinsic/design_verification.hpp"
 #include "cagd/intrinsic/spiro.hpp"
 #include "cagd/core/random_walk.hpp"
+#include "../support/messages.hpp"
 
 using namespace cagd;
 using namespace cagd::intrinsic;
@@ -369,6 +370,17 @@ TEST(CurvatureProfileDesign, InconsistentArcIsNoSolutionNotAWrongCurve) {
     const CurvatureProfileSolution early = solve_curvature_profile(fig3_problem(), one);
     EXPECT_EQ(early.outcome.status, Status::no_convergence);
     EXPECT_NE(early.outcome.message.find("worst equation"), std::string::npos) << early.outcome.message;
+    // A contraction no Newton step reaches: given up after the first step, saying so.
+    NewtonOptions strict;
+    strict.required_contraction = 1e-30;
+    const CurvatureProfileSolution stopped = solve_curvature_profile(fig3_problem(), strict);
+    EXPECT_EQ(stopped.outcome.status, Status::no_convergence);
+    EXPECT_EQ(stopped.history.size(), 2u) << "the start and one step";
+    EXPECT_NE(stopped.outcome.message.find("does not contract"), std::string::npos) << stopped.outcome.message;
+    EXPECT_TRUE(solve_curvature_profile(fig3_problem(), NewtonOptions{.required_contraction = 0.5}).outcome.ok()) << "Newton's own contraction passes 0.5";
+    strict.required_contraction = 1.0;
+    const std::string m = invalid_input_message([&] { solve_curvature_profile(fig3_problem(), strict); });
+    EXPECT_NE(m.find("required_contraction < 1, got 1"), std::string::npos) << m;
 }
 
 TEST(CurvatureProfileDesign, SpanShapesAndDefaultLayout) {

@@ -278,6 +278,27 @@ TEST(Methods, CurvatureProfileRebuildsFromAnEarlierSolution) {
         }
 }
 
+// A start from which Newton does not contract (the points moved too far: here one point by five
+// chords) is abandoned for the design's own start: the outcome and the curve are the cold solve's.
+TEST(Methods, InterpolateFromAFarStartSolvesFromTheDesignsOwn) {
+    const Configuration cp = find_configuration("curvature-profile");
+    const PointList p = random_walk(60, 3, 0.5, 1.5, 1.0);
+    const InterpolationResult first = interpolate(cp, p, false);
+    ASSERT_TRUE(first.outcome.ok()) << first.outcome.message;
+    PointList moved = p;
+    moved(30, 1) += 5.0;
+    const InterpolationResult cold = interpolate(cp, moved, false), warm = interpolate_from(cp, moved, false, first.solver_state);
+    ASSERT_TRUE(cold.outcome.ok()) << cold.outcome.message;
+    ASSERT_TRUE(warm.outcome.ok()) << warm.outcome.message;
+    double largest = 0.0;
+    for (int k = 0; k <= 64; ++k) {
+        const double uc = cold.interpolant->curve->t_min() + k / 64.0 * (cold.interpolant->curve->t_max() - cold.interpolant->curve->t_min());
+        const double uw = warm.interpolant->curve->t_min() + k / 64.0 * (warm.interpolant->curve->t_max() - warm.interpolant->curve->t_min());
+        largest = std::max(largest, (cold.interpolant->curve->jet(uc, 0).row(0) - warm.interpolant->curve->jet(uw, 0).row(0)).norm());
+    }
+    EXPECT_LT(largest, 1e-9);
+}
+
 // Valid points whose arithmetic leaves double precision are an outcome, not bad input, and not
 // said to "coincide".
 TEST(Methods, OverflowAndUnderflowAreOutcomes) {

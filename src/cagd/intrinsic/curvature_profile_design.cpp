@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <span>
 #include <stdexcept>
@@ -492,6 +493,8 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
     const std::string who = "intrinsic::solve_curvature_profile";
     require_valid_problem(P, who);
     if (options.max_iterations < 1 || !(options.tolerance > 0)) fail_input(who, "needs max_iterations ≥ 1 and tolerance > 0");
+    if (!(options.required_contraction >= 0 && options.required_contraction < 1))
+        fail_input(who, "needs 0 ≤ required_contraction < 1, got " + fmt(options.required_contraction));
     CurvatureProfileSolution sol;
     sol.unknowns = design_unknowns(P);
     sol.equations = design_equations(P);
@@ -511,6 +514,7 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
     numeric::SparseLu lu;
     std::vector<int> analysed_outer, analysed_inner;
     DesignWorkspace workspace;
+    double previous_residual = std::numeric_limits<double>::infinity();
     for (int it = 0;; ++it) {
         // A diverging iterate winds ψ by hundreds of turns between neighbouring ordinates; the
         // integrals of such a segment cost O(turning) and mean nothing: stop it as unconverged.
@@ -532,6 +536,13 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
             finish_ok(P, sol);
             return sol;
         }
+        if (options.required_contraction > 0 && it > 0 && !(res <= options.required_contraction * previous_residual)) {
+            sol.history.push_back({it, res, 0.0, 1.0, sol.rank});
+            sol.outcome = {Status::no_convergence, std::string(method) + " from the given start does not contract: ‖f‖∞ = " + fmt(res) + " after " + fmt(previous_residual) +
+                                                       " (required: at most " + fmt(options.required_contraction) + " of it)"};
+            return sol;
+        }
+        previous_residual = res;
         if (it == options.max_iterations) {
             sol.history.push_back({it, res, 0.0, 1.0, sol.rank});
             sol.outcome = {Status::no_convergence, std::string(method) + " from the given start did not reach ‖f‖∞ ≤ " + fmt(tol) + " in " +

@@ -132,6 +132,12 @@ struct NewtonOptions {
     NewtonStep step = NewtonStep::pseudo_inverse;  ///< the step
     int max_iterations = 50;  ///< iterations before no_convergence
     double tolerance = 1e-12;  ///< ‖f‖∞ ≤ tolerance·max(1, largest chord) is converged
+    /// Give up (no_convergence) as soon as a step leaves ‖f‖∞ above this fraction of the residual
+    /// before it; 0 = never. For starts from a nearby solution (continuation), from which Newton
+    /// either converges quadratically or wanders: a start outside that basin is abandoned after a
+    /// step or two instead of max_iterations (10^5 points with one point moved by a chord: 50
+    /// wandering iterations, 13 s, against 5 from the design's own start, 3 s).
+    double required_contraction = 0.0;
 };
 /// One Newton iteration, as the history records it.
 struct NewtonRecord {

@@ -69,12 +69,24 @@ intrinsic::CurvatureProfileProblem curvature_profile_problem(const PointList& po
 }
 
 // The solve from `start` (empty: the C2 start of the design), its final iterate kept for a rebuild.
+// Continuation from an earlier solution must shrink the residual at least this much per Newton step,
+// or it is abandoned for the design's own start. Inside Newton's basin each step shrinks it several
+// times (10^5 points from the design's start: ratios 0.25, 0.035, 0.002, …); outside, Newton wanders
+// (the same points from the unmoved solution, one point moved by a chord: ratios 0.7 … 2.5).
+constexpr double kContinuationContraction = 0.5;
+
 InterpolationResult curvature_profile_from(const PointList& points, bool closed, const ParameterValues& v, const Eigen::VectorXd& start) {
     const intrinsic::CurvatureProfileProblem problem = curvature_profile_problem(points, closed, v);
     // A start of another size is not one of these unknowns (the layout and the conditions depend on
-    // the number of points and the parameters only): the design's own start then.
-    const intrinsic::CurvatureProfileSolution sol = start.size() == intrinsic::design_unknowns(problem) ? intrinsic::solve_curvature_profile_auto(problem, start)
-                                                                                                        : intrinsic::solve_curvature_profile_auto(problem);
+    // the number of points and the parameters only): the design's own start then. So too when
+    // Newton from the given start does not contract (the points moved too far for continuation).
+    intrinsic::CurvatureProfileSolution sol;
+    if (start.size() == intrinsic::design_unknowns(problem)) {
+        intrinsic::NewtonOptions continuation;
+        continuation.required_contraction = kContinuationContraction;
+        sol = intrinsic::solve_curvature_profile_auto(problem, start, continuation);
+    }
+    if (!(sol.outcome.ok() && sol.curve)) sol = intrinsic::solve_curvature_profile_auto(problem);
     InterpolationResult r = solved_result(problem, sol);
     if (r.interpolant) r.solver_state = sol.u;
     return r;
