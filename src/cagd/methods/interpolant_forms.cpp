@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <cstdint>
 #include <limits>
 #include <cmath>
@@ -14,6 +13,7 @@ using std::isnan;
 #include <boost/math/interpolators/pchip.hpp>
 
 #include "cagd/core/errors.hpp"
+#include "cagd/core/finite.hpp"
 #include "cagd/spline/hermite_spline.hpp"
 
 namespace cagd::methods {
@@ -81,7 +81,7 @@ struct NodeSlopeSink {
         if (k > 0) d1[k - 1] = h[k - 1] * s;
     }
     bool holds(std::size_t k, double s) const {  // bit for bit
-        const auto same = [](double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); };
+        const auto same = [](double a, double b) { return bits_of(a) == bits_of(b); };
         return (k + 1 == n || same(d0[k], h[k] * s)) && (k == 0 || same(d1[k - 1], h[k - 1] * s));
     }
 };
