@@ -379,7 +379,7 @@ TEST(CurvatureProfileDesign, InconsistentArcIsNoSolutionNotAWrongCurve) {
     EXPECT_NE(stopped.outcome.message.find("does not contract"), std::string::npos) << stopped.outcome.message;
     EXPECT_TRUE(solve_curvature_profile(fig3_problem(), NewtonOptions{.required_contraction = 0.5}).outcome.ok()) << "Newton's own contraction passes 0.5";
     strict.required_contraction = 1.0;
-    const std::string m = invalid_input_message([&] { solve_curvature_profile(fig3_problem(), strict); });
+    const std::string m = cagd::test::invalid_input_message([&] { solve_curvature_profile(fig3_problem(), strict); });
     EXPECT_NE(m.find("required_contraction < 1, got 1"), std::string::npos) << m;
 }
 
