@@ -28,6 +28,7 @@ library=(
   libceres-dev           # nonlinear least squares, gradient solvers (pseudo_energy reference CG)
   libgoogle-glog-dev     # Ceres's logger; fairness/ silences its CG-restart warnings
   libnlopt-cxx-dev       # bounded/constrained minimisation
+  liblapack-dev          # banded LU (dgbtrf) for the curvature-profile Newton steps (numeric/banded_lu.hpp)
   libcli11-dev           # the cagd command's options
   nlohmann-json3-dev     # the JSON curve documents (export/curve_json.cpp)
   libocct-data-exchange-dev   # STEP export through OpenCASCADE (export/step_writer.cpp; LGPL-2.1 with exception)
