@@ -3,12 +3,14 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <boost/math/quadrature/gauss.hpp>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <cmath>
 #include <numbers>
 #include <random>
 
 #include "cagd/core/errors.hpp"
+#include "cagd/numeric/banded_lu.hpp"
 #include "cagd/intrinsic/design_verification.hpp"
 #include "cagd/intrinsic/spiro.hpp"
 #include "cagd/core/random_walk.hpp"
@@ -163,6 +165,33 @@ TEST(TangentAngleSpline, QuarticDirectionIntegralsMatchAdaptiveGaussKronrod) {
         }
     }
     EXPECT_THROW(direction_integrals(Eigen::Matrix<double, 6, 1>::Zero(), 1.0), InvalidInput);
+}
+
+// The rule's pieces turn by up to 3 rad: segments whose steepest derivative ordinate is just below
+// 3 (one piece) and 6 (two pieces), for every degree, alternating ordinates (the worst case of the
+// header's bound), against 30-point Gauss on 64 subintervals (each turning < 0.1 rad: exact to
+// rounding) to a few units of rounding.
+TEST(TangentAngleSpline, PiecesOfThreeRadiansIntegrateToRounding) {
+    using Fine = boost::math::quadrature::gauss<double, 30>;
+    for (int p = 2; p <= 4; ++p)
+        for (double turning : {2.999, 5.999})
+            for (double offset : {0.0, 0.7, -2.1}) {
+                Eigen::VectorXd b(p + 1);
+                for (int r = 0; r <= p; ++r) b(r) = offset + (r % 2 == 0 ? 0.0 : turning / p);  // |p Δb| = turning
+                auto psi = [&](double t) {
+                    double v = 0.0;
+                    for (int r = 0; r <= p; ++r) v += b(r) * std::tgamma(p + 1) / (std::tgamma(r + 1) * std::tgamma(p - r + 1)) * std::pow(t, r) * std::pow(1 - t, p - r);
+                    return v;
+                };
+                double c = 0.0, s = 0.0;
+                for (int m = 0; m < 64; ++m) {
+                    c += Fine::integrate([&](double t) { return std::cos(psi(t)); }, m / 64.0, (m + 1) / 64.0);
+                    s += Fine::integrate([&](double t) { return std::sin(psi(t)); }, m / 64.0, (m + 1) / 64.0);
+                }
+                const Eigen::Vector2d I = direction_integrals(b, 1.0);
+                EXPECT_NEAR(I(0), c, 1e-15) << "p = " << p << ", turning " << turning << ", offset " << offset;
+                EXPECT_NEAR(I(1), s, 1e-15) << "p = " << p << ", turning " << turning << ", offset " << offset;
+            }
 }
 
 TEST(IntrinsicCurve, JetMatchesFiniteDifferencesOfPosition) {
@@ -330,6 +359,43 @@ TEST(CurvatureProfileDesign, ClosedClothoidSplineSparseAndDenseAgree) {
     EXPECT_LT(v.interpolation_error, 1e-10);
     const TangentAngleSpline& psi = a.curve->tangent_angle();
     EXPECT_NEAR(psi.angle(5, true) - psi.angle(0, false), 2 * std::numbers::pi, 1e-12);  // counter-clockwise: turns = +1
+}
+
+// The banded step: the layout's ordering makes J of an open clothoid spline banded (degree 2:
+// 4 sub- and 4 superdiagonals, whatever n), and Newton with it reaches the solution of the sparse and
+// dense steps. A closed curve's band is wide (its closing rows join the ends): the step falls back
+// to SparseLU and still converges.
+TEST(CurvatureProfileDesign, BandedStepAgreesWithSparseAndDense) {
+    if (!cagd::numeric::BandedLu::available()) GTEST_SKIP() << "this build has no LAPACK";
+    const int n = 150;
+    PointList p(n, 2);
+    for (int i = 0; i < n; ++i) p.row(i) << 0.5 * i, std::sin(0.5 * i) + 0.1 * std::cos(1.7 * i);
+    const std::vector<SegmentShape> spans(static_cast<std::size_t>(n) - 1, SegmentShape::free);
+    CurvatureProfileProblem P{p, span_layout(spans), spans, {}, false, 0};
+    add_natural_open_ends(P);
+    DesignBandOrdering order = design_band_ordering(P);
+    const cagd::numeric::BandedLu band(design_system(P, c2_start(P), true).jacobian, std::move(order.rows), std::move(order.columns));
+    EXPECT_LE(band.lower_width(), 4);
+    EXPECT_LE(band.upper_width(), 4);
+    NewtonOptions banded, sparse, dense;
+    banded.step = NewtonStep::banded_lu;
+    sparse.step = NewtonStep::sparse_lu;
+    const CurvatureProfileSolution a = solve_curvature_profile(P, banded), b = solve_curvature_profile(P, sparse), c = solve_curvature_profile(P, dense);
+    ASSERT_TRUE(a.outcome.ok() && b.outcome.ok() && c.outcome.ok()) << a.outcome.message << b.outcome.message << c.outcome.message;
+    EXPECT_LT((a.u - b.u).lpNorm<Eigen::Infinity>(), 1e-10);
+    EXPECT_LT((a.u - c.u).lpNorm<Eigen::Infinity>(), 1e-10);
+    EXPECT_EQ(a.history.size(), b.history.size()) << "the same Newton path";
+
+    const CurvatureProfileProblem Q = closed_problem(2);
+    DesignBandOrdering closed_order = design_band_ordering(Q);
+    const cagd::numeric::BandedLu closed_band(design_system(Q, c2_start(Q), true).jacobian, std::move(closed_order.rows), std::move(closed_order.columns));
+    EXPECT_GT(closed_band.storage_rows(), 2 * 4 + 4 + 1) << "the closing rows widen the band";
+    const CurvatureProfileSolution d = solve_curvature_profile(Q, banded), e = solve_curvature_profile(Q, sparse);
+    ASSERT_TRUE(d.outcome.ok() && e.outcome.ok()) << d.outcome.message << e.outcome.message;
+    EXPECT_LT((d.u - e.u).lpNorm<Eigen::Infinity>(), 1e-10);
+    CurvatureProfileProblem overdetermined = P;
+    overdetermined.conditions.push_back({DesignCondition::Kind::tangent_angle, 3, 0.5});
+    EXPECT_NE(cagd::test::invalid_input_message([&] { solve_curvature_profile(overdetermined, banded); }).find("the banded LU step needs a square system"), std::string::npos);
 }
 
 TEST(CurvatureProfileDesign, DivergingIterationStopsEarly) {

@@ -16,6 +16,7 @@
 #include "cagd/analysis/curve_measures.hpp"
 #include "cagd/core/optional_dependencies.hpp"
 #include "cagd/intrinsic/detail/bezier_extraction.hpp"
+#include "cagd/numeric/banded_lu.hpp"
 #include "cagd/numeric/sparse_lu.hpp"
 #include "cagd/spline/hermite_spline.hpp"
 
@@ -59,9 +60,11 @@ constexpr double kStalledStep = 1e-13;
 constexpr double kKeptLengthFraction = 0.2;
 
 // Forward derivatives of a segment's Bézier ordinates with respect to its 2p knots and p + 1
-// de Boor ordinates: 3p + 1 slots, fixed at compile time for the largest degree ψ may have.
+// de Boor ordinates: 3p + 1 slots, the degree a template argument (ceres::Jet zeroes all its slots
+// on construction: slots sized for degree 4 cost a degree-2 segment twice the work).
 constexpr int kMaxJetDegree = 4;
-using Jet = ceres::Jet<double, 3 * kMaxJetDegree + 1>;
+template <int P>
+using JetOfDegree = ceres::Jet<double, 3 * P + 1>;
 
 // The Bézier ordinates of segment j and their exact derivatives with respect to the local de Boor
 // ordinates (columns first_ordinate..+p) and the local segment lengths (first_segment.., at most
@@ -76,48 +79,63 @@ struct SegmentJet {
     Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxOrdinates, 2 * kMaxJetDegree> db_dw;
 };
 
-SegmentJet segment_jet(const TangentAngleSpline& psi, int j) {
+template <int P>
+void segment_jet_of_degree(const TangentAngleSpline& psi, int j, SegmentJet& out) {
+    using Jet = JetOfDegree<P>;
     const KnotLayout& L = psi.layout();
-    const int p = L.degree(), last = L.last_knot_of_breakpoint(j), k0 = last - p + 1;
-    if (p > kMaxJetDegree) throw std::logic_error("cagd::intrinsic::segment_jet: degree " + std::to_string(p) + " exceeds the Jet's " + std::to_string(kMaxJetDegree));
-    double v[2 * kMaxJetDegree];
+    const int k0 = L.last_knot_of_breakpoint(j) - P + 1;
+    double v[2 * P];
     psi.local_farin_knots_into(j, v);  // the extraction is invariant under a shift of all knots
-    Jet u[2 * kMaxJetDegree], c[kMaxJetDegree + 1], b[kMaxJetDegree + 1];
-    for (int m = 0; m < 2 * p; ++m) u[m] = Jet(v[m], m);
-    for (int m = 0; m <= p; ++m) c[m] = Jet(psi.de_boor()(k0 + m), 2 * p + m);
-    detail::bezier_from_de_boor(p, u, c, b);
-    SegmentJet out;
-    const int g0 = L.breakpoint_of_knot(k0), g1 = L.breakpoint_of_knot(k0 + 2 * p - 1);
-    out.b.resize(p + 1);
+    Jet u[2 * P], c[P + 1], b[P + 1];
+    for (int m = 0; m < 2 * P; ++m) u[m] = Jet(v[m], m);
+    for (int m = 0; m <= P; ++m) c[m] = Jet(psi.de_boor()(k0 + m), 2 * P + m);
+    detail::bezier_from_de_boor_of_degree<P>(u, c, b);
+    const int g0 = L.breakpoint_of_knot(k0), g1 = L.breakpoint_of_knot(k0 + 2 * P - 1);
+    out.b.resize(P + 1);
     out.first_ordinate = k0;
     out.first_segment = g0;
-    out.db_dc.resize(p + 1, p + 1);
-    out.db_dw.setZero(p + 1, std::max(g1 - g0, 1));
-    for (int r = 0; r <= p; ++r) {
+    out.db_dc.resize(P + 1, P + 1);
+    out.db_dw.setZero(P + 1, std::max(g1 - g0, 1));
+    for (int r = 0; r <= P; ++r) {
         out.b(r) = b[r].a;
-        for (int m = 0; m <= p; ++m) out.db_dc(r, m) = b[r].v(2 * p + m);
+        for (int m = 0; m <= P; ++m) out.db_dc(r, m) = b[r].v(2 * P + m);
         // knot m sits at w_{g(m)} = Σ_{i < g(m)} Δw_i: ∂/∂Δw_i = Σ_{m : g(m) > i} ∂/∂u_m.
-        for (int m = 0; m < 2 * p; ++m) {
+        for (int m = 0; m < 2 * P; ++m) {
             const int g = L.breakpoint_of_knot(k0 + m);
             for (int i = g0; i < g; ++i) out.db_dw(r, i - g0) += b[r].v(m);
         }
     }
-    return out;
+}
+
+void segment_jet(const TangentAngleSpline& psi, int j, SegmentJet& out) {
+    switch (psi.layout().degree()) {
+        case 2: segment_jet_of_degree<2>(psi, j, out); return;
+        case 3: segment_jet_of_degree<3>(psi, j, out); return;
+        case 4: segment_jet_of_degree<4>(psi, j, out); return;
+        default:
+            throw std::logic_error("cagd::intrinsic::segment_jet: degree " + std::to_string(psi.layout().degree()) + " is outside the layouts' 2..4");
+    }
 }
 
 class RowWriter {
 public:
     RowWriter(const KnotLayout& L, std::vector<Eigen::Triplet<double>>* t) : L_(L), t_(t) {}
     // Row `row` depends on b_j through gradient g (∂f/∂b_{j,·}) and directly on Δw_j with `direct`.
+    // Every entry that can be nonzero is written, even when it is zero at this u, so that J's
+    // pattern depends on the layout alone (assemble_jacobian and the LU analyses reuse it).
     void add(int row, const SegmentJet& s, int j, const Ordinates& g, double direct) const {
+        if (!t_) return;
+        add(row, s, j, g);
+        t_->emplace_back(row, L_.length_index(j), direct);
+    }
+    // The same for a row with no direct dependence on Δw_j (shape and tangent-angle rows).
+    void add(int row, const SegmentJet& s, int /*j*/, const Ordinates& g) const {
         if (!t_) return;
         const int l = L_.independent_lengths();
         const Eigen::Matrix<double, 1, Eigen::Dynamic, Eigen::RowMajor, 1, kMaxOrdinates> gc = g.transpose() * s.db_dc;
         const Eigen::Matrix<double, 1, Eigen::Dynamic, Eigen::RowMajor, 1, 2 * kMaxJetDegree> gw = g.transpose() * s.db_dw;
         for (int m = 0; m < gc.size(); ++m) t_->emplace_back(row, l + s.first_ordinate + m, gc(m));
-        for (int i = 0; i < gw.size(); ++i)
-            if (gw(i) != 0.0) t_->emplace_back(row, L_.length_index(s.first_segment + i), gw(i));
-        if (direct != 0.0) t_->emplace_back(row, L_.length_index(j), direct);
+        for (int i = 0; i < gw.size(); ++i) t_->emplace_back(row, L_.length_index(s.first_segment + i), gw(i));
     }
 
 private:
@@ -285,19 +303,52 @@ namespace {
 struct DesignWorkspace {
     std::vector<SegmentJet> jets;
     std::vector<Eigen::Triplet<double>> triplets;
+    std::vector<int> slots;  // triplet i's entry in the last Jacobian's value array
 };
 
-DesignSystem design_system(const CurvatureProfileProblem& P, const Eigen::VectorXd& u, bool with_jacobian, DesignWorkspace& workspace) {
+// J from the triplets. The pattern depends on the layout, not on u, so from the second Newton
+// iteration on each triplet's entry is found where it was (checked: its row, and its column's
+// range) and the values are summed there in triplet order, as setFromTriplets sums duplicates: the
+// same J, bit for bit, without the sort and transposition. Any triplet whose entry is not where it
+// was (a pattern that changed) rebuilds J from the triplets.
+void assemble_jacobian(int rows, int cols, DesignWorkspace& w, Eigen::SparseMatrix<double>& J) {
+    const std::vector<Eigen::Triplet<double>>& t = w.triplets;
+    bool same = J.rows() == rows && J.cols() == cols && J.isCompressed() && w.slots.size() == t.size();
+    const int* outer = J.outerIndexPtr();
+    const int* inner = J.innerIndexPtr();
+    for (std::size_t i = 0; same && i < t.size(); ++i) {
+        const int k = w.slots[i], c = t[i].col();
+        same = inner[k] == t[i].row() && k >= outer[c] && k < outer[c + 1];
+    }
+    if (same) {
+        double* value = J.valuePtr();
+        std::fill(value, value + J.nonZeros(), 0.0);
+        for (std::size_t i = 0; i < t.size(); ++i) value[w.slots[i]] += t[i].value();
+        return;
+    }
+    J.resize(rows, cols);
+    J.setFromTriplets(t.begin(), t.end());
+    J.makeCompressed();
+    w.slots.resize(t.size());
+    for (std::size_t i = 0; i < t.size(); ++i) {
+        const int c = t[i].col();
+        const int* first = J.innerIndexPtr() + J.outerIndexPtr()[c];
+        const int* last = J.innerIndexPtr() + J.outerIndexPtr()[c + 1];
+        w.slots[i] = static_cast<int>(std::lower_bound(first, last, t[i].row()) - J.innerIndexPtr());
+    }
+}
+
+// f(u) (and J(u)) into `out`, whose arrays (and J's pattern) are reused from call to call.
+void design_system_into(const CurvatureProfileProblem& P, const Eigen::VectorXd& u, bool with_jacobian, DesignWorkspace& workspace, DesignSystem& out) {
     const KnotLayout& L = P.layout;
     const int p = L.degree(), k = L.segments(), rows = design_equations(P), cols = design_unknowns(P);
     const TangentAngleSpline psi = TangentAngleSpline::from_unknowns(L, u);
     std::vector<SegmentJet>& jets = workspace.jets;
     jets.resize(static_cast<std::size_t>(k));
-    for (int j = 0; j < k; ++j) jets[static_cast<std::size_t>(j)] = segment_jet(psi, j);
+    for (int j = 0; j < k; ++j) segment_jet(psi, j, jets[static_cast<std::size_t>(j)]);
     std::vector<Eigen::Triplet<double>>& triplets = workspace.triplets;
     triplets.clear();
     RowWriter write(L, with_jacobian ? &triplets : nullptr);
-    DesignSystem out;
     out.f.resize(rows);
     int row = 0;
 
@@ -323,7 +374,7 @@ DesignSystem design_system(const CurvatureProfileProblem& P, const Eigen::Vector
         const SegmentJet& s = jets[static_cast<std::size_t>(j)];
         auto linear_row = [&](const Ordinates& g) {
             out.f(row) = g.dot(s.b);
-            write.add(row, s, j, g, 0.0);
+            write.add(row, s, j, g);
             ++row;
         };
         Ordinates g = Ordinates::Zero(p + 1);
@@ -355,7 +406,7 @@ DesignSystem design_system(const CurvatureProfileProblem& P, const Eigen::Vector
         const SegmentJet& s = jets[static_cast<std::size_t>(j)];
         Ordinates gr = Ordinates::Zero(p + 1);
         gr(at_end ? p : 0) = sign;
-        write.add(row, s, j, gr, 0.0);
+        write.add(row, s, j, gr);
         return sign * s.b(at_end ? p : 0);
     };
     auto curvature_row = [&](int g, bool at_end, double sign) {  // adds sign·κ(w_g^∓)
@@ -417,18 +468,51 @@ DesignSystem design_system(const CurvatureProfileProblem& P, const Eigen::Vector
             ++row;
         }
     }
-    if (with_jacobian) {
-        out.jacobian.resize(rows, cols);
-        out.jacobian.setFromTriplets(triplets.begin(), triplets.end());
-    }
-    return out;
+    if (with_jacobian) assemble_jacobian(rows, cols, workspace, out.jacobian);
 }
 
 }  // namespace
 
 DesignSystem design_system(const CurvatureProfileProblem& P, const Eigen::VectorXd& u, bool with_jacobian) {
     DesignWorkspace workspace;
-    return design_system(P, u, with_jacobian, workspace);
+    DesignSystem out;
+    design_system_into(P, u, with_jacobian, workspace, out);
+    return out;
+}
+
+DesignBandOrdering design_band_ordering(const CurvatureProfileProblem& P) {
+    require_valid_problem(P, "intrinsic::design_band_ordering");
+    const KnotLayout& L = P.layout;
+    const int p = L.degree(), l = L.independent_lengths(), k = L.segments();
+    // Each unknown's place: the mean centre (j + ½) of the segments j whose Bézier ordinates or
+    // length it enters; each equation's: that of the segment or breakpoint it is written at.
+    std::vector<double> column_key(static_cast<std::size_t>(design_unknowns(P)), 0.0), weight(column_key.size(), 0.0);
+    for (int j = 0; j < k; ++j) {
+        const double centre = j + 0.5;
+        const std::size_t length = static_cast<std::size_t>(L.length_index(j));
+        column_key[length] += centre, weight[length] += 1.0;
+        const int k0 = L.last_knot_of_breakpoint(j) - p + 1;
+        for (int m = 0; m <= p; ++m) {
+            const std::size_t c = static_cast<std::size_t>(l + k0 + m);
+            column_key[c] += centre, weight[c] += 1.0;
+        }
+    }
+    for (std::size_t c = 0; c < column_key.size(); ++c)
+        if (weight[c] > 0) column_key[c] /= weight[c];
+    std::vector<double> row_key;
+    row_key.reserve(static_cast<std::size_t>(design_equations(P)));
+    for (int i = 0; i < L.spans(); ++i) row_key.insert(row_key.end(), 2, 0.5 * (L.first_segment(i) + L.end_segment(i)));
+    for (int j = 0; j < k; ++j) row_key.insert(row_key.end(), static_cast<std::size_t>(shape_rows(P.shapes[static_cast<std::size_t>(j)], p)), j + 0.5);
+    for (const auto& c : P.conditions) row_key.push_back(c.kind == DesignCondition::Kind::segment_length ? c.index + 0.5 : c.index);
+    if (P.closed) row_key.insert(row_key.end(), static_cast<std::size_t>(P.closing_continuity), 0.0);  // they join both ends: no place makes them narrow
+    auto positions = [](const std::vector<double>& key) {
+        std::vector<int> order(key.size()), position(key.size());
+        for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+        std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return key[static_cast<std::size_t>(a)] < key[static_cast<std::size_t>(b)]; });
+        for (std::size_t i = 0; i < order.size(); ++i) position[static_cast<std::size_t>(order[i])] = static_cast<int>(i);
+        return position;
+    };
+    return {positions(row_key), positions(column_key)};
 }
 
 Eigen::VectorXd c2_start(const CurvatureProfileProblem& P) {
@@ -502,18 +586,20 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
     const int l = P.layout.independent_lengths();
     for (int i = 0; i < l; ++i)
         if (!(start(i) > 0) || !std::isfinite(start(i))) fail_input(who, "start length S_" + std::to_string(i) + " = " + fmt(start(i)) + " (finite and > 0 required)");
-    if (options.step == NewtonStep::sparse_lu && sol.equations != sol.unknowns)
-        fail_input(who, "the sparse LU step needs a square system; this one has " + std::to_string(sol.equations) + " equations and " + std::to_string(sol.unknowns) +
-                            " unknowns (use the pseudo-inverse)");
+    if (options.step != NewtonStep::pseudo_inverse && sol.equations != sol.unknowns)
+        fail_input(who, std::string("the ") + (options.step == NewtonStep::sparse_lu ? "sparse" : "banded") + " LU step needs a square system; this one has " +
+                            std::to_string(sol.equations) + " equations and " + std::to_string(sol.unknowns) + " unknowns (use the pseudo-inverse)");
     const double tol = options.tolerance * data_scale(P);
-    const char* method = options.step == NewtonStep::pseudo_inverse ? "Newton with the Moore–Penrose step" : "Newton with sparse LU";
+    const char* method = options.step == NewtonStep::pseudo_inverse ? "Newton with the Moore–Penrose step" : "Newton with sparse LU";  // banded: set below
     sol.u = start;
     // The Jacobian's sparsity pattern depends on the layout only, so its symbolic analysis (the
     // column ordering, a tenth of a sparse step's cost) is done once and redone only if the
     // pattern ever differs; the numeric factorisation is the same either way.
     numeric::SparseLu lu;
+    std::optional<numeric::BandedLu> band;  // banded_lu: the band of the analysed pattern, when narrow
     std::vector<int> analysed_outer, analysed_inner;
     DesignWorkspace workspace;
+    DesignSystem sys;
     double previous_residual = std::numeric_limits<double>::infinity();
     for (int it = 0;; ++it) {
         // A diverging iterate winds ψ by hundreds of turns between neighbouring ordinates; the
@@ -525,7 +611,7 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
                                                        fmt(turning) + " rad (limit " + fmt(kMaxOrdinateTurning) + ")"};
             return sol;
         }
-        const DesignSystem sys = design_system(P, sol.u, true, workspace);
+        design_system_into(P, sol.u, true, workspace, sys);
         const double res = sys.f.lpNorm<Eigen::Infinity>();
         if (!std::isfinite(res)) {
             sol.outcome = {Status::no_convergence, std::string(method) + ": the residual became non-finite at iteration " + std::to_string(it)};
@@ -567,15 +653,22 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
             const std::span<const int> outer(J.outerIndexPtr(), static_cast<std::size_t>(J.outerSize()) + 1), inner(J.innerIndexPtr(), static_cast<std::size_t>(J.nonZeros()));
             if (!J.isCompressed() || !std::equal(outer.begin(), outer.end(), analysed_outer.begin(), analysed_outer.end()) ||
                 !std::equal(inner.begin(), inner.end(), analysed_inner.begin(), analysed_inner.end())) {
-                lu.analyze_pattern(J);
+                band.reset();
+                if (options.step == NewtonStep::banded_lu && numeric::BandedLu::available()) {
+                    DesignBandOrdering order = design_band_ordering(P);
+                    band.emplace(J, std::move(order.rows), std::move(order.columns));
+                    if (band->storage_rows() > kMaxBandStorageRows) band.reset();
+                }
+                if (!band) lu.analyze_pattern(J);
+                method = band ? "Newton with banded LU" : "Newton with sparse LU";
                 analysed_outer.assign(outer.begin(), outer.end());
                 analysed_inner.assign(inner.begin(), inner.end());
             }
-            if (!lu.factorize(J)) {
+            if (!(band ? band->factorize(J) : lu.factorize(J))) {
                 sol.outcome = {Status::no_convergence, std::string(method) + ": the Jacobian is singular at iteration " + std::to_string(it) + " (use the pseudo-inverse step)"};
                 return sol;
             }
-            delta = lu.solve(sys.f);
+            delta = band ? band->solve(sys.f) : lu.solve(sys.f);
         }
         if (!delta.allFinite()) {
             sol.outcome = {Status::no_convergence, std::string(method) + ": non-finite step at iteration " + std::to_string(it)};
@@ -694,7 +787,7 @@ CurvatureProfileSolution solve_curvature_profile_auto(const CurvatureProfileProb
     const int m = design_equations(problem), n = design_unknowns(problem);
     if (m == n && n > 200) {
         NewtonOptions lu = options;
-        lu.step = NewtonStep::sparse_lu;
+        lu.step = NewtonStep::banded_lu;
         CurvatureProfileSolution sol = solve_curvature_profile(problem, start, lu);
         if ((sol.outcome.ok() && sol.curve) || n > kDenseFallbackUnknowns) return sol;
     }
