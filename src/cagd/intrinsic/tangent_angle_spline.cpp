@@ -12,6 +12,9 @@
 namespace cagd::intrinsic {
 
 namespace {
+// The turning (radians) one 16-point Gauss–Legendre piece integrates to rounding (the header's bound).
+constexpr double kRadiansPerPiece = 3.0;
+
 const numeric::GaussLegendreRule& rule16() {
     static const numeric::GaussLegendreRule rule(16);
     return rule;
@@ -151,7 +154,7 @@ Eigen::Vector2d direction_integrals_with(const Eigen::Ref<const Eigen::VectorXd,
     if (weights && tau != 1.0) fail_input("intrinsic::direction_integrals", "weighted integrals need tau = 1, got " + full_precision(tau));
     double bound = 0.0;
     for (int r = 0; r < p; ++r) bound = std::max(bound, std::abs(p * (b(r + 1) - b(r))));
-    const int pieces = std::max(1, static_cast<int>(std::ceil(bound * tau)));
+    const int pieces = std::max(1, static_cast<int>(std::ceil(bound * tau / kRadiansPerPiece)));
     const auto& rule = rule16();
     Eigen::Vector2d sum = Eigen::Vector2d::Zero();
     if (weights) weights->setZero(2, p + 1);

@@ -10,12 +10,15 @@
 ///   bezier()           the per-segment Bézier form of section 2, ψ_j(t) = Σ_r b_{j,r} B^p_r(t),
 ///                      t = (s − w_j)/Δw_j ∈ [0, 1], by blossoming (detail/bezier_extraction.hpp).
 /// direction_integrals() integrates (cos ψ_j, sin ψ_j) over t ∈ [0, τ] — the integrals of eq (3).
-/// Rule: the segment is cut into m = max(1, ⌈max_t |dψ_j/dt|⌉) equal pieces (≤ 1 rad of turning
-/// each; the bound is the largest |p Δb_{j,r}|, the derivative's Bézier ordinates), 16-point
-/// Gauss–Legendre on each. The integrand e^{iψ} is entire; on a piece mapped to [−1, 1] it stays below
-/// e^3 on the Bernstein ellipse ρ = 4 for every degree p ≤ 4 (the worst Bézier derivative ordinates,
-/// ±1, give e^1.46 for p = 3 and e^2.36 for p = 4), so the Gauss error bound (64/15) M ρ^{−32}/(ρ² − 1) is
-/// < 1e−18 of the piece: the rule is exact to rounding (tested against adaptive Gauss–Kronrod).
+/// Rule: the segment is cut into m = max(1, ⌈max_t |dψ_j/dt| / 3⌉) equal pieces (≤ 3 rad of
+/// turning each; the bound is the largest |p Δb_{j,r}|, the derivative's Bézier ordinates), 16-point
+/// Gauss–Legendre on each. The integrand e^{iψ} is entire. On a piece of ≤ 1 rad mapped to [−1, 1] it
+/// stays below e^3 on the Bernstein ellipse ρ = 4 for every degree p ≤ 4 (the worst Bézier derivative
+/// ordinates, ±1, give e^1.46 for p = 3 and e^2.36 for p = 4); Im ψ grows linearly with the turning,
+/// so on a piece of ≤ 3 rad it stays below e^{3·2.36} < 1200, and the Gauss error bound
+/// (64/15) M ρ^{−32}/(ρ² − 1) is < 2e−17 of the piece: the rule is exact to rounding (tested against
+/// adaptive Gauss–Kronrod). Until 2026-11-27 the pieces were of ≤ 1 rad: three times the sines and
+/// cosines for the same integrals (they agree to rounding).
 ///
 /// Preconditions (InvalidInput): segment lengths finite and > 0, one per segment; de Boor ordinates
 /// finite, layout.ordinates() of them; s in [0, length()].
