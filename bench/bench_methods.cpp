@@ -293,6 +293,6 @@ void BM_BSplineJet(benchmark::State& state, bool at_knots) {
 BENCHMARK_CAPTURE(BM_BSplineJet, knots, true)->Name("BM_BSplineJet/knots");
 BENCHMARK_CAPTURE(BM_BSplineJet, between, false)->Name("BM_BSplineJet/between");
 BENCHMARK(BM_SpacePseudoSpline)->Arg(100000)->Unit(benchmark::kMillisecond);
-// The curvature-profile Newton solve, once (about 2 s); target ≤ 50× cubic-b's construction at 10^5.
+// The curvature-profile Newton solve, once (about 1.3 s); target ≤ 50× cubic-b's construction at 10^5.
 BENCHMARK_CAPTURE(BM_Construct, curvature_profile, std::string("curvature-profile"))->Name("BM_Construct/curvature-profile")->Arg(100000)->Iterations(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_JetHandLoop)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
