@@ -40,7 +40,8 @@ std::vector<double> unit_nodes(Eigen::Index nodes) {
 // with the same arithmetic on the same values, and each search stays in cache.
 constexpr Eigen::Index kSlopeBlock = 256;
 // Sampled blocks checked per construction and coordinate: both ends (their own rules) and evenly
-// spaced interior blocks; 8 blocks of 256 cost 1 % of a construction at 10^6 points.
+// spaced interior blocks. 8 blocks of 256: Boost interpolates about 2,000 nodes again (with their
+// reach), 0.2 % of the nodes of a construction at 10^6 points.
 constexpr Eigen::Index kCheckedBlocks = 8;
 
 // Boost's slopes for the nodes a ≤ k < b into out[k − a], from one interpolator over a … b widened
