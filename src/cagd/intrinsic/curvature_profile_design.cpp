@@ -590,7 +590,10 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
         fail_input(who, std::string("the ") + (options.step == NewtonStep::sparse_lu ? "sparse" : "banded") + " LU step needs a square system; this one has " +
                             std::to_string(sol.equations) + " equations and " + std::to_string(sol.unknowns) + " unknowns (use the pseudo-inverse)");
     const double tol = options.tolerance * data_scale(P);
-    const char* method = options.step == NewtonStep::pseudo_inverse ? "Newton with the Moore–Penrose step" : "Newton with sparse LU";  // banded: set below
+    // The banded step says which LU it took once the band is known (below).
+    const char* method = options.step == NewtonStep::pseudo_inverse ? "Newton with the Moore–Penrose step"
+                         : options.step == NewtonStep::banded_lu    ? "Newton with banded LU"
+                                                                    : "Newton with sparse LU";
     sol.u = start;
     // The Jacobian's sparsity pattern depends on the layout only, so its symbolic analysis (the
     // column ordering, a tenth of a sparse step's cost) is done once and redone only if the
