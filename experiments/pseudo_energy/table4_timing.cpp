@@ -1,5 +1,5 @@
 // pseudo_energy section 4.2, Table 4: computation time of the pseudo-spline without tangent
-// optimisation, with the exact (Brent) and with the approximate (three points, quadratic)
+// optimisation, with the exact (w at each of its breakpoints) and with the approximate (three points, quadratic)
 // optimisation, on the data of Tables 1–3. Timed work per curve, as the paper's "excluding the
 // reading of the auxiliary data": construct the pseudo-spline from the points with the tables in
 // memory, then evaluate it at 100 points per span (what drawing needs). Each mode's time is the
@@ -91,7 +91,7 @@ int main(int argc, char** argv) {
         long calls[3] = {0, 0, 0};
         for (int k = 0; k < 3; ++k)
             for (const PointList& p : curves) calls[k] += pseudo_spline(p, oracle, modes[k], false).oracle_calls;
-        run.note(name + " data: J(θ) lookups for the tangent directions — none " + std::to_string(calls[0]) + ", exact (Brent) " + std::to_string(calls[1]) + ", approximate " +
+        run.note(name + " data: J(θ) lookups for the tangent directions — none " + std::to_string(calls[0]) + ", exact (w at each breakpoint) " + std::to_string(calls[1]) + ", approximate " +
                  std::to_string(calls[2]) + " (2 per w evaluation; the end tangents of eq (13) are not counted).");
     }
     run.note(

@@ -2,7 +2,10 @@
 // (eq 9–13), its length and area (eq 16–21), and the fairness measures used to compare them.
 #include <gtest/gtest.h>
 
+#include <boost/math/tools/minima.hpp>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
@@ -11,6 +14,7 @@
 #include "cagd/analysis/curve_measures.hpp"
 #include "cagd/analysis/fairness_measures.hpp"
 #include "cagd/core/errors.hpp"
+#include "cagd/fairness/detail/tangent_minimisation.hpp"
 #include "cagd/fairness/pseudo_spline.hpp"
 #include "cagd/locality/locality_spline.hpp"
 #include "cagd/spline/hermite_spline.hpp"
@@ -112,7 +116,61 @@ TEST(PseudoSpline, ExactModeMinimisesWAndApproximateModeComesClose) {
         EXPECT_LE(best, grid_min + 1e-9 * grid_min) << "point " << i;
         EXPECT_LE(w(ap.alpha[static_cast<std::size_t>(i)]), 1.05 * best) << "approximate within 5 % of the minimum of w, point " << i;
     }
-    EXPECT_LT(ap.oracle_calls, ex.oracle_calls / 3) << "the approximate mode costs three w evaluations per point";
+    EXPECT_EQ(ap.oracle_calls, 11 * 6) << "the approximate mode costs three w evaluations per interior point";
+}
+
+// J(θ) read linearly from the table makes w piecewise linear; the exact mode's α is its least
+// breakpoint: an end of the interval, or an α at which α or α + τ is a node of the angle table (or
+// the middle of a flat run of them). Checked on seeded random polygons against w at the
+// breakpoints, on a fine grid, and at Brent's minimiser, which the mode used before.
+TEST(PseudoSpline, ExactModeTakesTheLeastBreakpointOfW) {
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    const std::vector<double>& nodes = *oracle().angle_energy_nodes();
+    ASSERT_EQ(nodes.size(), 36u);
+    int at_breakpoint = 0, flat = 0;
+    for (int set = 0; set < 40; ++set) {
+        PointList p(8, 2);
+        for (int i = 0; i < 8; ++i) p.row(i) << i + 0.6 * u(rng), 1.5 * u(rng);
+        const PseudoSpline ex = pseudo_spline(p, oracle(), TangentOptimization::exact, false);
+        for (std::size_t i = 1; i + 1 < 8; ++i) {
+            const double tau = wrap_angle(ex.chord_angle[i] - ex.chord_angle[i - 1]);
+            const auto w = [&](double a) { return ex.chord_length[i - 1] * oracle().angle_energy(wrap_angle(a + tau)) + ex.chord_length[i] * oracle().angle_energy(wrap_angle(a)); };
+            const double lo = std::min(0.0, -tau), hi = std::max(0.0, -tau), alpha = ex.alpha[i], best = w(alpha);
+            double grid_min = INFINITY;
+            for (int k = 0; k <= 2000; ++k) grid_min = std::min(grid_min, w(lo + (hi - lo) * k / 2000.0));
+            EXPECT_LE(best, grid_min * (1 + 1e-15)) << "set " << set << ", point " << i;
+            std::uintmax_t iterations = 200;
+            const double brent = boost::math::tools::brent_find_minima(w, lo, hi, std::numeric_limits<double>::digits / 2, iterations).first;
+            EXPECT_LE(best, w(brent) * (1 + 1e-15)) << "set " << set << ", point " << i;
+            double gap = std::min(std::abs(alpha - lo), std::abs(alpha - hi));
+            for (const double x : nodes)
+                for (const double shift : {-2 * std::numbers::pi, 0.0, 2 * std::numbers::pi}) gap = std::min({gap, std::abs(alpha - (x + shift)), std::abs(alpha + tau - (x + shift))});
+            if (gap <= 1e-14) {
+                ++at_breakpoint;
+            } else {
+                // Inside a flat run only: w the same on both sides.
+                ++flat;
+                EXPECT_NEAR(w(alpha - 1e-6), best, 1e-10 * best) << "set " << set << ", point " << i;
+                EXPECT_NEAR(w(alpha + 1e-6), best, 1e-10 * best) << "set " << set << ", point " << i;
+            }
+        }
+    }
+    EXPECT_GT(at_breakpoint, 150);
+    std::printf("exact-mode tangents at a breakpoint of w: %d, in the middle of a flat run: %d\n", at_breakpoint, flat);
+}
+
+// Two separate minima of w whose values agree to rounding (as symmetric data make them): the one of
+// lower α is taken, whichever is lower by a rounding error; a real difference decides.
+TEST(PseudoSpline, ExactModeBreaksATieBetweenTwoMinimaTowardLowerAlpha) {
+    std::vector<double> nodes;
+    for (int k = 0; k < 36; ++k) nodes.push_back(-std::numbers::pi + k * std::numbers::pi / 18);
+    const double b1 = nodes[19], b2 = nodes[22];  // 10° and 40°, inside [0, 1] with τ = −1
+    for (const double delta : {1e-14, -1e-14, 1e-6}) {
+        const auto w = [&](double a) { return 1.0 + std::min(std::abs(a - b1), std::abs(a - b2)) - (a == b2 ? delta : 0.0); };
+        const double alpha = detail::minimise_piecewise_linear_w(w, 0.0, 1.0, -1.0, nodes);
+        EXPECT_EQ(alpha, delta > 1e-10 ? b2 : b1) << delta;
+    }
 }
 
 TEST(PseudoSpline, MovingOnePointMovesOnlyTheFourSpansAroundIt) {

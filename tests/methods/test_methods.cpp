@@ -199,9 +199,6 @@ TEST(Methods, BuildersCheckCombinationsOfParameters) {
 }
 
 TEST(Methods, ClaimsFollowTheParameters) {
-    const Method& ps = find_method("pseudo-spline");
-    EXPECT_EQ(ps.claims(parse_parameter_values(ps.name, ps.parameters, {{"optimize", "exact"}})).invariance, Invariance::none);
-    EXPECT_EQ(ps.claims(parse_parameter_values(ps.name, ps.parameters, {{"optimize", "approx"}})).invariance, Invariance::similarity);
     const Method& h = find_method("hosaka");
     EXPECT_EQ(h.claims(parse_parameter_values(h.name, h.parameters, {{"scale", "unit"}})).invariance, Invariance::affine);
     EXPECT_EQ(h.claims(parse_parameter_values(h.name, h.parameters, {})).parameter, "chord length");

@@ -145,7 +145,9 @@ spline::PiecewiseHermiteCurve construct(const char* who, const PointList& points
         return table ? table->TableOracle::angle_energy(t) : oracle.angle_energy(t);
     };
 
-    // Interior tangent directions (eq 12).
+    // Interior tangent directions (eq 12). J(θ) linear between these angles makes the exact mode's
+    // minimisation a finite search (pseudo_spline.hpp).
+    const std::vector<double>* breakpoints = oracle.angle_energy_nodes();
     const Eigen::Index first = closed ? 0 : 1, last = closed ? np - 1 : np - 2;
     for (Eigen::Index i = first; i <= last; ++i) {
         const double tau = turn(i);  // φ_i − φ_{i−1}
@@ -157,7 +159,8 @@ spline::PiecewiseHermiteCurve construct(const char* who, const PointList& points
                 a = wrap_angle(std::atan2(d.y(), d.x()) - phi[out]);
             } else {
                 const auto w = [&](double alpha) { return len[in] * J(alpha + tau) + len[out] * J(alpha); };
-                a = minimise_w(w, std::min(0.0, -tau), std::max(0.0, -tau), mode, tie);
+                const double lo = std::min(0.0, -tau), hi = std::max(0.0, -tau);
+                a = mode == TangentOptimization::exact && breakpoints ? detail::minimise_piecewise_linear_w(w, lo, hi, tau, *breakpoints, tie) : minimise_w(w, lo, hi, mode, tie);
             }
         }
         alphas[static_cast<std::size_t>(i)] = a;

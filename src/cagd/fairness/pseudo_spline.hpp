@@ -24,11 +24,21 @@
 /// first term uses it for the end of span i−1. Open ends (eq 13): α_0 = θ1(α_1 + φ_1 − φ_0) and the
 /// end direction at P_n is φ_{n−1} + θ1(α_{n−1}); we store alpha[n] = θ1(α_{n−1}), relative to the
 /// incoming chord φ_{n−1} (the paper's α_n = φ_{n−1} + θ1(α_{n−1}) is the absolute angle).
-///   exact        Brent's method (Boost.Math) on w over the search interval. Where w is flat over a
-///                stretch (relative differences below 1e-10: J(θ) read linearly from a table with both
-///                angles in one cell), Brent stops anywhere in it as rounding decides (on a circle of
-///                4 points, 3.6° off the bisector; on a dense helix, any of a 5° stretch); we take
-///                the middle of the stretch (TangentTie), which keeps equal-chord data symmetric.
+///   exact        the least value of w over the search interval. With the paper's tables, J(θ) is
+///                read linearly between the angle table's nodes, so w is linear between its
+///                breakpoints (the ends of the interval and the α at which α or α + τ_i meets a node,
+///                at most 2|τ_i|/h + 2 of them for node spacing h) and its least value is at one of
+///                them: every breakpoint is evaluated. The result is therefore the exact minimiser
+///                up to rounding (the same curve from another compiler or maths library, to ~1e-15),
+///                not an iterate stopped at a tolerance. (Earlier versions used Brent's method, which
+///                stops within 2^−26 relative of the breakpoint, so rounding moved the curve by up
+///                to ~1e-9 of the diagonal.) Where w is flat over a stretch (relative differences
+///                below 1e-10: both angles in one cell and their slopes cancelling, as equal chords
+///                make them at the bisector) every point of it is a minimum; we take the middle of
+///                the stretch (TangentTie), which keeps equal-chord data symmetric. Where the least
+///                values of two separate stretches agree to 1e-10, the one of lower α is taken. An
+///                oracle whose J(θ) is smooth (ExactOracle: no angle_energy_nodes) is minimised by
+///                Brent's method (Boost.Math) at 2^−26 relative tolerance, flat stretches likewise.
 ///   approximate  the paper's "three interior points and quadratic interpolation": w at ¼, ½, ¾
 ///                of the interval, the vertex of the parabola through them, clamped to the interval.
 ///                The paper does not say what to do when the parabola is not convex; we take its
@@ -71,7 +81,7 @@
 
 namespace cagd::fairness {
 
-/// The tangent choice of eq (12): none (Hermite A's directions), exact (Brent) or approximate (a parabola through three values, Table 4).
+/// The tangent choice of eq (12): none (Hermite A's directions), exact (the least value; see above) or approximate (a parabola through three values, Table 4).
 enum class TangentOptimization { none, exact, approximate };
 /// Exact mode, where w is flat over a stretch (J(θ) read linearly from a table: both angles of w in one
 /// cell): every point of the stretch is a minimum, and `position` says which one, from 0 (its lower
@@ -95,6 +105,10 @@ public:
     virtual std::pair<double, double> angle_minimum(double theta) const = 0;
     /// J(θ) alone (what eq 12 evaluates).
     virtual double angle_energy(double theta) const { return angle_minimum(theta).first; }
+    /// The angles between which angle_energy is linear (a table's nodes over one period, ascending),
+    /// or null where it is not piecewise linear (ExactOracle). The exact mode minimises a piecewise
+    /// linear w at its breakpoints (see above) and a smooth one by Brent's method.
+    virtual const std::vector<double>* angle_energy_nodes() const { return nullptr; }
 };
 
 /// The paper's tables: the 2-D table for the segments, the angle table for J(θ).
@@ -107,6 +121,7 @@ public:
     TableValue segment(double theta0, double theta1) const override { return default_reading_ ? energy_.lookup(theta0, theta1) : energy_.lookup(theta0, theta1, reading_); }
     std::pair<double, double> angle_minimum(double theta) const override { return angle_.lookup(theta); }
     double angle_energy(double theta) const override { return angle_.pseudo_energy(theta); }
+    const std::vector<double>* angle_energy_nodes() const override { return &angle_.nodes(); }
 
 private:
     const PseudoEnergyTable& energy_;
@@ -145,6 +160,7 @@ public:
     TableValue segment(double theta0, double theta1) const override { return ExactOracle{}.segment(theta0, theta1); }
     std::pair<double, double> angle_minimum(double theta) const override { return angles_.angle_minimum(theta); }
     double angle_energy(double theta) const override { return angles_.angle_energy(theta); }
+    const std::vector<double>* angle_energy_nodes() const override { return angles_.angle_energy_nodes(); }
 
 private:
     const SegmentOracle& angles_;

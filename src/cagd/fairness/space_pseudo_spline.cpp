@@ -81,7 +81,8 @@ SpacePseudoSpline space_pseudo_spline(const PointList& points_in, const SpaceSeg
             } else {
                 const double lin = ps.chord_length[static_cast<std::size_t>((i - 1 + spans) % spans)], lout = ps.chord_length[static_cast<std::size_t>(i)];
                 const auto w = [&](double alpha) { return lin * J(alpha + tau) + lout * J(alpha); };
-                a = detail::minimise_w(w, -tau, 0.0, mode);
+                const std::vector<double>* breakpoints = planar.angle_energy_nodes();
+                a = mode == TangentOptimization::exact && breakpoints ? detail::minimise_piecewise_linear_w(w, -tau, 0.0, tau, *breakpoints) : detail::minimise_w(w, -tau, 0.0, mode);
             }
             t = std::cos(a) * out + std::sin(a) * n;
         }

@@ -14,7 +14,7 @@
 ///      that plane (normalised) makes both angles smaller (cos ∠(T, a) = T∥·a ≤ T∥·a / |T∥| for a in
 ///      the plane, when T∥·a > 0), hence w smaller: the minimiser lies in that plane.
 /// So T is the planar tangent of the three points in their own plane: α ∈ [−τ, 0] from the outgoing
-/// chord, τ the turn, by Brent (exact), the paper's 3-point parabola (approx) or the direction of
+/// chord, τ the turn, by the least value of w (exact: every breakpoint of w where J(θ) is read from a table, Brent otherwise), the paper's 3-point parabola (approx) or the direction of
 /// P_{i+1} − P_{i−1} (none) — pseudo_spline.hpp's rules, applied in each point's plane. Collinear
 /// chords give T along them; a turn of π (hairpin) is refused as in the plane.
 /// Ends (eq 13): the end tangent lies in the plane of the end chord and the neighbouring tangent, at

@@ -16,12 +16,10 @@
 /// function of the curve's parameter u with dτ/du = dtau_du[k], so d/dτ = (1/dtau_du[k]) d/du.
 /// "G^k": the unit tangent (k ≥ 1) and curvature vector (k = 2) agree. Invariance: every method
 /// commutes with translations, rotations and uniform scalings (similarity) except Boost's pchip and
-/// makima, which act on x and y separately (translation and scaling only), and the pseudo-spline
-/// with exact tangent optimisation: Brent's minimiser stops at a relative tolerance of 2^−26
-/// (Boost's limit, half the digits: a smooth minimum cannot be located closer in double precision),
-/// so rounding-level changes of w under a similarity move α_i within that tolerance and the curve
-/// by up to ~2e-8 of the data diagonal (measured; test_compare bounds it by 1e-7). The approximate
-/// mode is invariant up to rounding since its non-convex case is decided against rounding
+/// makima, which act on x and y separately (translation and scaling only). The pseudo-spline's
+/// optimised modes are invariant up to rounding because each decides its ties and its non-convex
+/// case against rounding: the exact mode evaluates every breakpoint of its piecewise-linear w, the
+/// approximate mode judges its parabola's convexity against 1e-10 of w
 /// (fairness/pseudo_spline.hpp). Methods linear in the points with a fixed parameter (cubic-a, the
 /// S-/B2-splines, hosaka with unit scale) also commute with every affine map. Claims may depend on
 /// the parameter values (Method::claims takes them).

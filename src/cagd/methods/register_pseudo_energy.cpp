@@ -88,7 +88,7 @@ std::vector<Method> pseudo_energy_methods() {
                         .type = P::choice,
                         .default_text = "exact",
                         .choices = {"none", "exact", "approx"},
-                        .help = "tangent optimisation of eq (12): none, exact (Brent) or approx (3-point parabola, Table 4)"},
+                        .help = "tangent optimisation of eq (12): none, exact (the least value of w: every breakpoint of the table's piecewise-linear w) or approx (3-point parabola, Table 4)"},
                        {.name = "table",
                         .type = P::text,
                         .help = "pseudo-energy table written by cagd energy-table (absent: the 36-node fast table, from the user's cache or built once there)"},
@@ -103,13 +103,7 @@ std::vector<Method> pseudo_energy_methods() {
                         .help = "3-D points: the space table of the spans (SpacePseudoEnergyTable, e.g. from cagd_space_table_mpi; absent: the 36 x 36 x 72 fast table, "
                                 "from the user's cache or built once there)",
                         .space_only = true}},
-        .claims =
-            [](const ParameterValues& v) {
-                return MethodClaims{.geometric_continuity = 1,
-                                    .parameter = "u (unit spans)",
-                                    .invariance = v.text("optimize") == "exact" ? Invariance::none : Invariance::similarity,
-                                    .max_dimension = 3};
-            },
+        .claims = fixed({.geometric_continuity = 1, .parameter = "u (unit spans)", .invariance = Invariance::similarity, .max_dimension = 3}),
         .build = build_pseudo_spline,
         .presets = {{"pseudo-spline-none", {{"optimize", "none"}}}, {"pseudo-spline-exact", {{"optimize", "exact"}}}, {"pseudo-spline-approx", {{"optimize", "approx"}}}},
         .prepare =

@@ -7,7 +7,9 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <numbers>
 #include <utility>
+#include <vector>
 
 #include "cagd/fairness/pseudo_spline.hpp"
 
@@ -70,6 +72,37 @@ double minimise_w(const W& w, double lo, double hi, TangentOptimization mode, Ta
     }
     if (std::abs(wa - wc) <= noise) return b;  // flat
     return wa < wc ? lo : hi;
+}
+
+// The exact mode's minimiser when J(θ) is linear between `nodes` (ascending, one period of 2π):
+// w(α) = a·J(α + τ) + b·J(α) is then linear between its breakpoints — lo, hi and every α in
+// between at which α or α + τ is a node (mod 2π) — and least at one of them. All are evaluated, in
+// ascending α. Ties (values within kFlatRelative of the least): the first such breakpoint (lowest
+// α) and those that follow it within the same bound make a stretch on which w is flat, and
+// tie.position picks the point along it, as minimise_w does for Brent's stretches. (Symmetric data
+// can give w two mirror-image minima, equal but for rounding: taking the least value outright would
+// let rounding choose between them, and a rotated copy of the points could take the other one.)
+template <class W>
+double minimise_piecewise_linear_w(const W& w, double lo, double hi, double tau, const std::vector<double>& nodes, TangentTie tie = {}) {
+    if (hi - lo <= 0.0) return lo;
+    std::vector<double> at{lo, hi};
+    constexpr double two_pi = 2 * std::numbers::pi;
+    for (const double x : nodes)
+        for (const double shift : {-two_pi, 0.0, two_pi})
+            for (const double c : {x + shift, x + shift - tau})
+                if (c > lo && c < hi) at.push_back(c);
+    std::sort(at.begin(), at.end());
+    at.erase(std::unique(at.begin(), at.end()), at.end());
+    std::vector<double> value(at.size());
+    for (std::size_t k = 0; k < at.size(); ++k) value[k] = w(at[k]);
+    const double least = *std::min_element(value.begin(), value.end());
+    const double ceiling = least + kFlatRelative * std::abs(least);
+    std::size_t first = 0;
+    while (value[first] > ceiling) ++first;
+    std::size_t last = first;
+    while (last + 1 < at.size() && value[last + 1] <= ceiling) ++last;
+    if (first == last) return at[first];
+    return at[first] + tie.position * (at[last] - at[first]);
 }
 
 }  // namespace cagd::fairness::detail
