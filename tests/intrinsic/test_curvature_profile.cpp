@@ -278,6 +278,26 @@ TEST(CurvatureProfileDesign, LongOpenSplineConvergesToTheTolerance) {
     EXPECT_LE(sol.history.size(), 8u);
 }
 
+// The defaults' solve takes the Moore–Penrose step up to 64 unknowns (32 open points) and the LU
+// step above (rank −1 in the solution), and both reach the same curve.
+TEST(CurvatureProfileDesign, AutoTakesTheLuStepAbove64Unknowns) {
+    for (const int points : {32, 33, 100}) {
+        const PointList p = cagd::random_walk(points, 7, 0.2, 1.0, 1.2);
+        const std::vector<SegmentShape> free(static_cast<std::size_t>(p.rows() - 1), SegmentShape::free);
+        const KnotLayout layout = span_layout(free);
+        CurvatureProfileProblem problem{p, layout, segment_shapes(layout, free), {}, false, 0};
+        add_natural_open_ends(problem);
+        const CurvatureProfileSolution automatic = solve_curvature_profile_auto(problem), dense = solve_curvature_profile(problem);
+        ASSERT_TRUE(automatic.outcome.ok() && dense.outcome.ok()) << points;
+        EXPECT_EQ(automatic.unknowns, 2 * points);
+        if (automatic.unknowns > 64)
+            EXPECT_EQ(automatic.rank, -1) << points << " points: an LU step";
+        else
+            EXPECT_EQ(automatic.rank, automatic.unknowns) << points << " points: the Moore–Penrose step, full rank";
+        EXPECT_LE((automatic.u - dense.u).lpNorm<Eigen::Infinity>(), 1e-10) << points;
+    }
+}
+
 TEST(IntrinsicCurve, ProfileSamplesShowOneSidedCurvatureAtJoins) {
     const CurvatureProfileProblem P = fig3_problem();
     const CurvatureProfileSolution sol = solve_curvature_profile(P);

@@ -186,7 +186,7 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
 /// The clothoid-spline defaults shared by `cagd interpolate` and compare/: natural ends (κ = 0 at an
 /// open end whose segment is free; lines and arcs already fix their curvature), appended to
 /// problem.conditions; and the solve that picks the step — the banded LU step (sparse LU where the
-/// band is wide) for square systems of more than 200 unknowns (O(n) per iteration), the
+/// band is wide) for square systems of more than 64 unknowns (O(n) per iteration), the
 /// Moore–Penrose step otherwise or when the LU iteration
 /// fails (a singular or unconverged iteration) on at most 2000 unknowns. Above 2000 unknowns a failed
 /// LU iteration is returned as it is: the dense step would need n² doubles (10^5 points: 80 GB).
