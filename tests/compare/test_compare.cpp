@@ -757,6 +757,19 @@ TEST(Compare, SpanDisplacementsAreZeroOutsideALocalMethodsFootprint) {
     } catch (const cagd::InvalidInput& e) {
         EXPECT_NE(std::string(e.what()).find("15 and 10"), std::string::npos) << e.what();
     }
+    // From kept samples (the viewer's anchor): the same numbers, bit for bit; the rows are the
+    // curve at the fractions of each span, its nodes among them.
+    const cagd::methods::Interpolant a = curve("s-spline-m1", p);
+    const Eigen::MatrixXd kept = cagd::compare::span_samples(a, 5);
+    ASSERT_EQ(kept.rows(), 14 * 6);
+    for (int k = 0; k < 14; ++k) {
+        EXPECT_LE((kept.row(6 * k) - p.row(k)).norm(), 1e-14) << "span " << k << " starts at its node";
+        EXPECT_LE((kept.row(6 * k + 5) - p.row(k + 1)).norm(), 1e-14) << "span " << k << " ends at its node";
+    }
+    EXPECT_EQ(cagd::compare::span_displacements(kept, cagd::compare::span_samples(curve("s-spline-m1", q), 5), 5),
+              cagd::compare::span_displacements(a, curve("s-spline-m1", q), 5));
+    EXPECT_THROW(cagd::compare::span_displacements(kept, cagd::compare::span_samples(a, 4), 5), cagd::InvalidInput);
+    EXPECT_THROW(cagd::compare::span_samples(a, 0), cagd::InvalidInput);
 }
 
 TEST(Compare, ConfigurationOverridesReplaceThePresetsValues) {

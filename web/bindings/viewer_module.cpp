@@ -158,9 +158,11 @@ val registry() {
     return out;
 }
 
-// The curves kept at the start of a drag, by configuration name.
-std::map<std::string, cagd::methods::Interpolant>& anchors() {
-    static std::map<std::string, cagd::methods::Interpolant> a;
+// The curves kept at the start of a drag, by configuration name, as the positions the motion of
+// each frame compares (compare::span_samples): sampled once, not again in every frame.
+constexpr int kMotionSamples = 8;
+std::map<std::string, Eigen::MatrixXd>& anchors() {
+    static std::map<std::string, Eigen::MatrixXd> a;
     return a;
 }
 
@@ -210,7 +212,7 @@ val compare(const val& request) {
         if (flag(request, "anchor")) {
             anchors().clear();
             for (const auto& r : rows)
-                if (r.interpolant) anchors().emplace(r.method, *r.interpolant);
+                if (r.interpolant) anchors().emplace(r.method, cagd::compare::span_samples(*r.interpolant, kMotionSamples));
         }
         const bool motion = flag(request, "motion");
         // The figure data's rows, split by method index (column 0).
@@ -234,8 +236,9 @@ val compare(const val& request) {
             if (with_figure && figure.comb_scale[i] > 0) comb_scale = figure.comb_scale[i];
             if (motion && r.interpolant) {
                 const auto a = anchors().find(r.method);
-                if (a != anchors().end() && a->second.node_parameters.size() == r.interpolant->node_parameters.size()) {
-                    std::vector<double> moved = cagd::compare::span_displacements(a->second, *r.interpolant);
+                const Eigen::Index rows = static_cast<Eigen::Index>(r.interpolant->node_parameters.size() - 1) * (kMotionSamples + 1);
+                if (a != anchors().end() && a->second.rows() == rows) {
+                    std::vector<double> moved = cagd::compare::span_displacements(a->second, cagd::compare::span_samples(*r.interpolant, kMotionSamples), kMotionSamples);
                     for (double& d : moved) d /= diagonal;
                     o.set("motion", float64_array(moved));
                 }

@@ -70,19 +70,37 @@ double span_pseudo_energy(const Interpolant& a, const analysis::FairnessMeasures
 }  // namespace
 
 std::vector<double> span_displacements(const Interpolant& a, const Interpolant& b, int samples_per_span) {
+    if (a.node_parameters.size() != b.node_parameters.size())
+        fail_input("cagd::compare::span_displacements",
+                   "the curves have " + std::to_string(a.node_parameters.size()) + " and " + std::to_string(b.node_parameters.size()) + " node parameters; they must agree");
+    return span_displacements(span_samples(a, samples_per_span), span_samples(b, samples_per_span), samples_per_span);
+}
+
+Eigen::MatrixXd span_samples(const Interpolant& a, int samples_per_span) {
+    if (samples_per_span < 1) fail_input("cagd::compare::span_samples", "samples_per_span must be >= 1, got " + std::to_string(samples_per_span));
+    const Eigen::Index spans = a.node_parameters.empty() ? 0 : static_cast<Eigen::Index>(a.node_parameters.size()) - 1;
+    Eigen::MatrixXd out(spans * (samples_per_span + 1), a.curve->dimension());
+    JetMatrix p;
+    for (Eigen::Index k = 0; k < spans; ++k)
+        for (int j = 0; j <= samples_per_span; ++j) {
+            a.curve->jet_into(span_parameter(a, static_cast<std::size_t>(k), static_cast<double>(j) / samples_per_span), 0, p);
+            out.row(k * (samples_per_span + 1) + j) = p.row(0);
+        }
+    return out;
+}
+
+std::vector<double> span_displacements(const Eigen::MatrixXd& a_samples, const Eigen::MatrixXd& b_samples, int samples_per_span) {
     const char* who = "cagd::compare::span_displacements";
     if (samples_per_span < 1) fail_input(who, "samples_per_span must be >= 1, got " + std::to_string(samples_per_span));
-    if (a.node_parameters.size() != b.node_parameters.size())
-        fail_input(who, "the curves have " + std::to_string(a.node_parameters.size()) + " and " + std::to_string(b.node_parameters.size()) + " node parameters; they must agree");
-    std::vector<double> moved(a.node_parameters.empty() ? 0 : a.node_parameters.size() - 1, 0.0);
-    JetMatrix pa, pb;
-    for (std::size_t k = 0; k < moved.size(); ++k)
-        for (int j = 0; j <= samples_per_span; ++j) {
-            const double f = static_cast<double>(j) / samples_per_span;
-            a.curve->jet_into(span_parameter(a, k, f), 0, pa);
-            b.curve->jet_into(span_parameter(b, k, f), 0, pb);
-            moved[k] = std::max(moved[k], (pa - pb).norm());
-        }
+    const Eigen::Index per = samples_per_span + 1;
+    if (a_samples.rows() != b_samples.rows() || a_samples.cols() != b_samples.cols() || a_samples.rows() % per != 0)
+        fail_input(who, "samples of " + std::to_string(a_samples.rows()) + " x " + std::to_string(a_samples.cols()) + " and " + std::to_string(b_samples.rows()) + " x " +
+                            std::to_string(b_samples.cols()) + " are not the same whole number of spans of " + std::to_string(per) + " rows");
+    std::vector<double> moved(static_cast<std::size_t>(a_samples.rows() / per), 0.0);
+    for (Eigen::Index r = 0; r < a_samples.rows(); ++r) {
+        double& m = moved[static_cast<std::size_t>(r / per)];
+        m = std::max(m, (a_samples.row(r) - b_samples.row(r)).norm());
+    }
     return moved;
 }
 

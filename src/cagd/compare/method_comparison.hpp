@@ -148,6 +148,15 @@ FigureSampling figure_sampling(int spans, int budget);
 /// The locality footprint counts the spans whose distance exceeds its tolerance; the viewer shades
 /// every span by it. InvalidInput unless both have the same number of spans and samples_per_span ≥ 1.
 std::vector<double> span_displacements(const Interpolant& a, const Interpolant& b, int samples_per_span = 8);
+/// The positions span_displacements compares: per data span k, the curve at samples_per_span + 1
+/// equally spaced fractions j / samples_per_span of the span's parameter interval, in row
+/// k·(samples_per_span + 1) + j. Kept, they let one curve be compared with many (the viewer's
+/// anchor of a drag with every frame). InvalidInput unless samples_per_span ≥ 1.
+Eigen::MatrixXd span_samples(const Interpolant& a, int samples_per_span = 8);
+/// span_displacements from two curves' span_samples taken with the same samples_per_span: per span,
+/// the largest distance between corresponding rows. InvalidInput unless both have the same shape, a
+/// whole number of spans of samples_per_span + 1 rows.
+std::vector<double> span_displacements(const Eigen::MatrixXd& a_samples, const Eigen::MatrixXd& b_samples, int samples_per_span);
 /// The figure data of a comparison (see above).
 FigureData comparison_figure_data(const std::vector<MethodComparison>& c, const PointList& points, const FigureSampling& sampling);
 
