@@ -275,6 +275,47 @@ TEST(Methods, CurvatureProfileRebuildsFromAnEarlierSolution) {
         }
 }
 
+// Spiro's rebuild: on open points the arc-length Newton alone from the earlier solution (the
+// chordwise Newton not run), reaching the cold solve's curve; a closed curve is solved anew.
+TEST(Methods, SpiroRebuildsOpenCurvesFromAnEarlierSolution) {
+    const Configuration spiro = find_configuration("spiro");
+    const auto chordwise = [](const InterpolationResult& r) {
+        for (const auto& [name, value] : r.report)
+            if (name == "chordwise_newton_iterations") return std::stoi(value);
+        return -1;
+    };
+    for (const bool closed : {false, true}) {
+        PointList p(40, 2);
+        for (Eigen::Index i = 0; i < p.rows(); ++i) {
+            const double a = 2.0 * 3.141592653589793 * static_cast<double>(i) / static_cast<double>(p.rows());
+            if (closed)
+                p.row(i) << 10 * std::cos(a) * (1 + 0.2 * std::sin(3 * a)), 10 * std::sin(a) * (1 + 0.2 * std::sin(3 * a));
+            else
+                p.row(i) << static_cast<double>(i), std::sin(0.7 * static_cast<double>(i));
+        }
+        const InterpolationResult first = interpolate(spiro, p, closed);
+        ASSERT_TRUE(first.outcome.ok()) << first.outcome.message;
+        ASSERT_GT(first.solver_state.size(), 0);
+        PointList moved = p;
+        moved(20, 1) += 1e-3;
+        const InterpolationResult cold = interpolate(spiro, moved, closed), warm = interpolate_from(spiro, moved, closed, first.solver_state);
+        ASSERT_TRUE(cold.outcome.ok() && warm.outcome.ok()) << cold.outcome.message << warm.outcome.message;
+        EXPECT_GT(chordwise(cold), 0);
+        if (closed)
+            EXPECT_EQ(chordwise(warm), chordwise(cold)) << "closed: solved anew";
+        else
+            EXPECT_EQ(chordwise(warm), 0) << "open: the arc-length Newton alone";
+        double largest = 0.0;
+        for (int k = 0; k <= 64; ++k) {
+            const double t = static_cast<double>(k) / 64.0;
+            const double uc = cold.interpolant->curve->t_min() + t * (cold.interpolant->curve->t_max() - cold.interpolant->curve->t_min());
+            const double uw = warm.interpolant->curve->t_min() + t * (warm.interpolant->curve->t_max() - warm.interpolant->curve->t_min());
+            largest = std::max(largest, (cold.interpolant->curve->jet(uc, 0).row(0) - warm.interpolant->curve->jet(uw, 0).row(0)).norm());
+        }
+        EXPECT_LT(largest, 1e-9) << (closed ? "closed" : "open");
+    }
+}
+
 // A start from which Newton does not contract (the points moved too far: here one point by five
 // chords) is abandoned for the design's own start: the outcome and the curve are the cold solve's.
 TEST(Methods, InterpolateFromAFarStartSolvesFromTheDesignsOwn) {

@@ -358,4 +358,18 @@ SpiroSolution solve_spiro(const PointList& points, bool closed) {
     return out;
 }
 
+SpiroSolution solve_spiro_from(const PointList& points, bool closed, const Eigen::VectorXd& start, double required_contraction) {
+    if (!closed) {
+        SpiroSolution out{spiro_problem(points, closed), {}, {}};
+        if (start.size() == design_unknowns(out.problem)) {
+            NewtonOptions options;
+            options.tolerance = kArcLengthTolerance;
+            options.required_contraction = required_contraction;
+            out.solution = solve_curvature_profile_auto(out.problem, start, options);
+            if (out.solution.outcome.ok() && out.solution.curve) return out;
+        }
+    }
+    return solve_spiro(points, closed);
+}
+
 }  // namespace cagd::intrinsic

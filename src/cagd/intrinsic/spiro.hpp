@@ -80,5 +80,13 @@ struct SpiroSolution {
 };
 /// The solve described above.
 SpiroSolution solve_spiro(const PointList& points, bool closed);
+/// Continuation (a drag's next frame, the locality footprint's moved point): the arc-length Newton
+/// started from `start`, the unknowns of an earlier solution on nearby open points of the same number,
+/// and given up as soon as a step leaves more than `required_contraction` of the residual before it
+/// (NewtonOptions::required_contraction). Where it is given up, for a closed curve (whose turning
+/// number the chordwise solution decides) and for a start of another size: solve_spiro. When the
+/// start serves, `chordwise` is not run (iterations 0). The result meets solve_spiro's tolerance, on
+/// the solution branch of the start.
+SpiroSolution solve_spiro_from(const PointList& points, bool closed, const Eigen::VectorXd& start, double required_contraction);
 
 }  // namespace cagd::intrinsic

@@ -94,13 +94,18 @@ InterpolationResult curvature_profile_from(const PointList& points, bool closed,
 
 InterpolationResult build_curvature_profile(const PointList& points, bool closed, const ParameterValues& v) { return curvature_profile_from(points, closed, v, {}); }
 
-// Spiro (intrinsic/spiro.hpp): Levien's chordwise Newton polished by the arc-length one.
-InterpolationResult build_spiro(const PointList& points, bool closed, const ParameterValues&) {
-    const intrinsic::SpiroSolution spiro = intrinsic::solve_spiro(points, closed);
+// Spiro (intrinsic/spiro.hpp): Levien's chordwise Newton polished by the arc-length one; from
+// `start` (non-empty), the arc-length Newton alone, continued as the curvature profile's is.
+InterpolationResult spiro_from(const PointList& points, bool closed, const ParameterValues&, const Eigen::VectorXd& start) {
+    const intrinsic::SpiroSolution spiro =
+        start.size() > 0 ? intrinsic::solve_spiro_from(points, closed, start, kContinuationContraction) : intrinsic::solve_spiro(points, closed);
     InterpolationResult r = solved_result(spiro.problem, spiro.solution);
     r.report.insert(r.report.begin(), {"chordwise_newton_iterations", std::to_string(spiro.chordwise.iterations)});
+    if (r.interpolant) r.solver_state = spiro.solution.u;
     return r;
 }
+
+InterpolationResult build_spiro(const PointList& points, bool closed, const ParameterValues& v) { return spiro_from(points, closed, v, {}); }
 
 }  // namespace
 
@@ -127,6 +132,7 @@ std::vector<Method> curvature_profile_methods() {
         .claims = fixed({.parametric_continuity = 4, .geometric_continuity = 4, .parameter = "arc length", .invariance = Invariance::similarity, .always_solves = false}),
         .build = build_spiro,
         .iterative = true,
+        .rebuild = spiro_from,
     });
     return r;
 }
