@@ -1,7 +1,10 @@
 #include "cagd/intrinsic/tangent_angle_spline.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <span>
+#include <vector>
 
 #include "cagd/core/bernstein_polynomial.hpp"
 #include "cagd/core/errors.hpp"
@@ -18,6 +21,37 @@ constexpr double kRadiansPerPiece = 3.0;
 const numeric::GaussLegendreRule& rule16() {
     static const numeric::GaussLegendreRule rule(16);
     return rule;
+}
+
+// The whole segment (τ = 1, what the Newton's rows integrate) split into at most this many pieces
+// has its Bernstein basis values at the quadrature nodes tabulated once per degree: the same
+// numbers, computed by the same expressions at the same t, as the loop below would compute (an
+// eighth of a degree-4 design's time went to recomputing them).
+constexpr int kTabulatedPieces = 4;
+constexpr int kNodes = 16;
+
+// Row (m·16 + q)·5 + r: B_{r,p} at node q of piece m of `pieces`, for degree p; null beyond the table.
+const double* tabulated_basis(int p, int pieces) {
+    using Table = std::vector<double>;
+    static const std::array<std::array<Table, kTabulatedPieces + 1>, 5> tables = [] {
+        std::array<std::array<Table, kTabulatedPieces + 1>, 5> t;
+        const auto& rule = rule16();
+        for (int degree = 0; degree <= 4; ++degree)
+            for (int count = 1; count <= kTabulatedPieces; ++count) {
+                Table& v = t[static_cast<std::size_t>(degree)][static_cast<std::size_t>(count)];
+                v.assign(static_cast<std::size_t>(count * kNodes * 5), 0.0);
+                const double h = 1.0 / count;
+                for (int m = 0; m < count; ++m) {
+                    const double a = m * h;
+                    for (int q = 0; q < kNodes; ++q) {
+                        const double x = a + 0.5 * h * (rule.nodes()[static_cast<std::size_t>(q)] + 1.0);
+                        bernstein_basis_values(degree, x, std::span<double>(&v[static_cast<std::size_t>((m * kNodes + q) * 5)], static_cast<std::size_t>(degree) + 1));
+                    }
+                }
+            }
+        return t;
+    }();
+    return pieces <= kTabulatedPieces ? tables[static_cast<std::size_t>(p)][static_cast<std::size_t>(pieces)].data() : nullptr;
 }
 }  // namespace
 
@@ -159,13 +193,19 @@ Eigen::Vector2d direction_integrals_with(const Eigen::Ref<const Eigen::VectorXd,
     Eigen::Vector2d sum = Eigen::Vector2d::Zero();
     if (weights) weights->setZero(2, p + 1);
     const double h = tau / pieces;
+    const double* table = tau == 1.0 ? tabulated_basis(p, pieces) : nullptr;
     for (int m = 0; m < pieces; ++m) {
         const double a = m * h;
-        for (int q = 0; q < rule.size(); ++q) {
-            const double t = a + 0.5 * h * (rule.nodes()[static_cast<std::size_t>(q)] + 1.0);
+        for (int q = 0; q < kNodes; ++q) {
             const double wq = 0.5 * h * rule.weights()[static_cast<std::size_t>(q)];
-            double B[5];
-            bernstein_basis_values(p, t, std::span<double>(B, static_cast<std::size_t>(p) + 1));
+            double computed[5];
+            const double* B = computed;
+            if (table) {
+                B = table + (m * kNodes + q) * 5;
+            } else {
+                const double t = a + 0.5 * h * (rule.nodes()[static_cast<std::size_t>(q)] + 1.0);
+                bernstein_basis_values(p, t, std::span<double>(computed, static_cast<std::size_t>(p) + 1));
+            }
             double psi = 0.0;
             for (int r = 0; r <= p; ++r) psi += b(r) * B[r];
             const double c = std::cos(psi), s = std::sin(psi);
