@@ -3,6 +3,7 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <random>
 #include <stdexcept>
@@ -10,6 +11,7 @@
 
 #include "cagd/core/errors.hpp"
 #include "cagd/numeric/banded_lu.hpp"
+#include "cagd/numeric/banded_or_sparse_lu.hpp"
 #include "../support/messages.hpp"
 
 namespace {
@@ -112,4 +114,26 @@ TEST(BandedLu, RefusesBadInputByName) {
     EXPECT_NE(invalid_input_message([&] { lu.factorize(wider); }).find("entry (" + std::to_string(r) + ", " + std::to_string(c) + ") lies outside the band"), std::string::npos);
     ASSERT_TRUE(lu.factorize(s.a));
     EXPECT_NE(invalid_input_message([&] { static_cast<void>(lu.solve(Eigen::VectorXd::Ones(3))); }).find("3 entries"), std::string::npos);
+}
+
+// numeric/banded_or_sparse_lu.hpp: the band where it is narrow and LAPACK is there, SparseLU
+// otherwise (a storage limit below the band's 2·3 + 2 + 1 = 9 rows, or 0); the same solution.
+TEST(BandedOrSparseLu, TakesTheBandWhereItIsNarrowAndSolvesAlike) {
+    std::mt19937 rng(5);
+    const int n = 120;
+    const Scrambled s = scrambled_band(n, rng);
+    Eigen::VectorXd b(n);
+    for (int i = 0; i < n; ++i) b(i) = std::sin(0.3 * i) + 0.5;
+    const Eigen::VectorXd expected = Eigen::MatrixXd(s.a).partialPivLu().solve(b);
+    for (const int limit : {48, 8, 0}) {
+        cagd::numeric::BandedOrSparseLu lu;
+        lu.analyze(s.a, s.row, s.col, limit);
+        EXPECT_EQ(lu.banded(), limit >= 9 && BandedLu::available()) << limit;
+        ASSERT_TRUE(lu.factorize(s.a)) << limit;
+        EXPECT_LE((lu.solve(b) - expected).lpNorm<Eigen::Infinity>(), 1e-10 * (1 + expected.lpNorm<Eigen::Infinity>())) << limit;
+        // A singular matrix of the same pattern (one column zeroed) is reported, not solved.
+        Eigen::SparseMatrix<double> singular = s.a;
+        for (Eigen::SparseMatrix<double>::InnerIterator it(singular, 7); it; ++it) it.valueRef() = 0.0;
+        EXPECT_FALSE(lu.factorize(singular)) << limit;
+    }
 }

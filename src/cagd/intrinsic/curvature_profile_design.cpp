@@ -16,7 +16,7 @@
 #include "cagd/analysis/curve_measures.hpp"
 #include "cagd/core/optional_dependencies.hpp"
 #include "cagd/intrinsic/detail/bezier_extraction.hpp"
-#include "cagd/numeric/banded_lu.hpp"
+#include "cagd/numeric/banded_or_sparse_lu.hpp"
 #include "cagd/numeric/sparse_lu.hpp"
 #include "cagd/spline/hermite_spline.hpp"
 
@@ -598,8 +598,7 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
     // The Jacobian's sparsity pattern depends on the layout only, so its symbolic analysis (the
     // column ordering, a tenth of a sparse step's cost) is done once and redone only if the
     // pattern ever differs; the numeric factorisation is the same either way.
-    numeric::SparseLu lu;
-    std::optional<numeric::BandedLu> band;  // banded_lu: the band of the analysed pattern, when narrow
+    numeric::BandedOrSparseLu lu;  // banded_lu: the band of the analysed pattern, when narrow
     std::vector<int> analysed_outer, analysed_inner;
     DesignWorkspace workspace;
     DesignSystem sys;
@@ -656,22 +655,21 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
             const std::span<const int> outer(J.outerIndexPtr(), static_cast<std::size_t>(J.outerSize()) + 1), inner(J.innerIndexPtr(), static_cast<std::size_t>(J.nonZeros()));
             if (!J.isCompressed() || !std::equal(outer.begin(), outer.end(), analysed_outer.begin(), analysed_outer.end()) ||
                 !std::equal(inner.begin(), inner.end(), analysed_inner.begin(), analysed_inner.end())) {
-                band.reset();
                 if (options.step == NewtonStep::banded_lu && numeric::BandedLu::available()) {
                     DesignBandOrdering order = design_band_ordering(P);
-                    band.emplace(J, std::move(order.rows), std::move(order.columns));
-                    if (band->storage_rows() > kMaxBandStorageRows) band.reset();
+                    lu.analyze(J, std::move(order.rows), std::move(order.columns), kMaxBandStorageRows);
+                } else {
+                    lu.analyze(J, {}, {}, 0);
                 }
-                if (!band) lu.analyze_pattern(J);
-                method = band ? "Newton with banded LU" : "Newton with sparse LU";
+                method = lu.banded() ? "Newton with banded LU" : "Newton with sparse LU";
                 analysed_outer.assign(outer.begin(), outer.end());
                 analysed_inner.assign(inner.begin(), inner.end());
             }
-            if (!(band ? band->factorize(J) : lu.factorize(J))) {
+            if (!lu.factorize(J)) {
                 sol.outcome = {Status::no_convergence, std::string(method) + ": the Jacobian is singular at iteration " + std::to_string(it) + " (use the pseudo-inverse step)"};
                 return sol;
             }
-            delta = band ? band->solve(sys.f) : lu.solve(sys.f);
+            delta = lu.solve(sys.f);
         }
         if (!delta.allFinite()) {
             sol.outcome = {Status::no_convergence, std::string(method) + ": non-finite step at iteration " + std::to_string(it)};

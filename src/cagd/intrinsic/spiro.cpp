@@ -5,7 +5,7 @@
 #include <numbers>
 #include <optional>
 
-#include "cagd/numeric/banded_lu.hpp"
+#include "cagd/numeric/banded_or_sparse_lu.hpp"
 #include "cagd/numeric/sparse_lu.hpp"
 #include "cagd/spline/bezier.hpp"
 
@@ -235,9 +235,8 @@ SpiroChordwiseSolution solve_spiro_chordwise(const PointList& points, bool close
     // keeps LU's fill in the band; COLAMD cost three times as much at 2·10^5 points. An open
     // curve's band (5 sub- and 5 superdiagonals) goes to LAPACK's banded LU where the build has
     // it: 4·10^5 unknowns factorised in tens of milliseconds, not a second.
-    numeric::SparseLu lu(numeric::ColumnOrdering::natural);
-    std::optional<numeric::BandedLu> band;
-    bool band_tried = false;
+    numeric::BandedOrSparseLu lu(numeric::ColumnOrdering::natural);
+    bool analysed = false;
     double last_step = 0.0;
     for (int it = 0;; ++it) {
         int bad = -1;
@@ -257,20 +256,17 @@ SpiroChordwiseSolution solve_spiro_chordwise(const PointList& points, bool close
                                                        full_precision(sol.residual) + ")"};
             return sol;
         }
-        if (!band_tried) {  // the pattern depends on the span count alone
-            band_tried = true;
-            if (numeric::BandedLu::available()) {
-                std::vector<int> natural(static_cast<std::size_t>(4 * S));
-                for (int i = 0; i < 4 * S; ++i) natural[static_cast<std::size_t>(i)] = i;
-                band.emplace(sys.jacobian, natural, natural);
-                if (band->storage_rows() > kMaxBandStorageRows) band.reset();
-            }
+        if (!analysed) {  // the pattern depends on the span count alone
+            analysed = true;
+            std::vector<int> natural(static_cast<std::size_t>(4 * S));
+            for (int i = 0; i < 4 * S; ++i) natural[static_cast<std::size_t>(i)] = i;
+            lu.analyze(sys.jacobian, natural, natural, kMaxBandStorageRows);
         }
-        if (!(band ? band->factorize(sys.jacobian) : lu.compute(sys.jacobian))) {
+        if (!lu.factorize(sys.jacobian)) {
             sol.outcome = {Status::no_convergence, "chordwise spiro Newton: singular Jacobian at iteration " + std::to_string(it)};
             return sol;
         }
-        const Eigen::VectorXd delta = band ? band->solve(sys.f) : lu.solve(sys.f);
+        const Eigen::VectorXd delta = lu.solve(sys.f);
         last_step = delta.lpNorm<Eigen::Infinity>();
         double largest = 0.0;
         for (int i = 0; i < S; ++i) {
