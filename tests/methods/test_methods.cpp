@@ -236,6 +236,21 @@ TEST(Methods, CurvatureProfileLogsNewton) {
     EXPECT_EQ(r.report.back().second.rfind("{0, ", 0), 0u) << r.report.back().second;
 }
 
+namespace {
+// The largest distance between two curves at the same fractions k/64 of their parameter domains
+// (a warm and a cold solve of one method: their arc-length domains differ by the solver's tolerance).
+double largest_gap_at_same_fractions(const InterpolationResult& a, const InterpolationResult& b) {
+    double largest = 0.0;
+    for (int k = 0; k <= 64; ++k) {
+        const double t = static_cast<double>(k) / 64.0;
+        const Curve &ca = *a.interpolant->curve, &cb = *b.interpolant->curve;
+        const double ua = ca.t_min() + t * (ca.t_max() - ca.t_min()), ub = cb.t_min() + t * (cb.t_max() - cb.t_min());
+        largest = std::max(largest, (ca.jet(ua, 0).row(0) - cb.jet(ub, 0).row(0)).norm());
+    }
+    return largest;
+}
+}  // namespace
+
 // A rebuild on moved points starts from the first solve's final iterate: it converges in fewer
 // Newton iterations to the cold solve's curve (within the solver's tolerance), for 300 points
 // (sparse-LU steps) and for 12 (Moore–Penrose), open and closed; methods without a rebuild build anew.
@@ -261,14 +276,7 @@ TEST(Methods, CurvatureProfileRebuildsFromAnEarlierSolution) {
             const InterpolationResult cold = interpolate(cp, moved, closed), warm = interpolate_from(cp, moved, closed, first.solver_state);
             ASSERT_TRUE(cold.outcome.ok() && warm.outcome.ok()) << cold.outcome.message << warm.outcome.message;
             EXPECT_LT(iterations(warm), iterations(cold)) << n << (closed ? " closed" : " open");
-            double largest = 0.0;
-            for (int k = 0; k <= 64; ++k) {
-                const double t = static_cast<double>(k) / 64.0;
-                const double uc = cold.interpolant->curve->t_min() + t * (cold.interpolant->curve->t_max() - cold.interpolant->curve->t_min());
-                const double uw = warm.interpolant->curve->t_min() + t * (warm.interpolant->curve->t_max() - warm.interpolant->curve->t_min());
-                largest = std::max(largest, (cold.interpolant->curve->jet(uc, 0).row(0) - warm.interpolant->curve->jet(uw, 0).row(0)).norm());
-            }
-            EXPECT_LT(largest, 1e-9) << "the warm solution is the cold one: " << n << (closed ? " closed" : " open");
+            EXPECT_LT(largest_gap_at_same_fractions(cold, warm), 1e-9) << "the warm solution is the cold one: " << n << (closed ? " closed" : " open");
             // Without a rebuild (cubic-b) the state is empty and interpolate_from builds anew.
             const InterpolationResult direct = interpolate(find_configuration("cubic-b"), p, closed);
             EXPECT_EQ(direct.solver_state.size(), 0);
@@ -305,14 +313,7 @@ TEST(Methods, SpiroRebuildsOpenCurvesFromAnEarlierSolution) {
             EXPECT_EQ(chordwise(warm), chordwise(cold)) << "closed: solved anew";
         else
             EXPECT_EQ(chordwise(warm), 0) << "open: the arc-length Newton alone";
-        double largest = 0.0;
-        for (int k = 0; k <= 64; ++k) {
-            const double t = static_cast<double>(k) / 64.0;
-            const double uc = cold.interpolant->curve->t_min() + t * (cold.interpolant->curve->t_max() - cold.interpolant->curve->t_min());
-            const double uw = warm.interpolant->curve->t_min() + t * (warm.interpolant->curve->t_max() - warm.interpolant->curve->t_min());
-            largest = std::max(largest, (cold.interpolant->curve->jet(uc, 0).row(0) - warm.interpolant->curve->jet(uw, 0).row(0)).norm());
-        }
-        EXPECT_LT(largest, 1e-9) << (closed ? "closed" : "open");
+        EXPECT_LT(largest_gap_at_same_fractions(cold, warm), 1e-9) << (closed ? "closed" : "open");
     }
 }
 
