@@ -3,6 +3,7 @@
 // every entry point returns false with the message instead.
 #include "cagd/core/detail/opencascade_plugin.hpp"
 
+#include <unistd.h>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <GeomAPI_Interpolate.hxx>
@@ -22,7 +23,6 @@
 #include <TColgp_HArray1OfPnt.hxx>
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
-#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -34,11 +34,16 @@ namespace {
 
 using cagd::detail::OpenCascadeBSpline;
 
+// OpenCASCADE's default messenger prints to standard output; its printers are removed once, when
+// the plugin is first loaded (cagd_opencascade_plugin below). Clearing them on every call, as this
+// plugin once did, let two threads free the same printers: a double free in `cagd benchmark`,
+// which interpolates on two threads.
+void silence_messenger() { Message::DefaultMessenger()->ChangePrinters().Clear(); }
+
 gp_Pnt point(const Eigen::MatrixXd& rows, Eigen::Index i) { return gp_Pnt(rows(i, 0), rows(i, 1), rows.cols() > 2 ? rows(i, 2) : 0.0); }
 
 bool interpolate(const Eigen::MatrixXd& points, bool closed, double tolerance, OpenCascadeBSpline& out, std::string& message) {
     try {
-        Message::DefaultMessenger()->ChangePrinters().Clear();  // no messages on standard output
         Handle(TColgp_HArray1OfPnt) array = new TColgp_HArray1OfPnt(1, static_cast<int>(points.rows()));
         for (Eigen::Index i = 0; i < points.rows(); ++i) array->SetValue(static_cast<int>(i) + 1, point(points, i));
         GeomAPI_Interpolate interpolate(array, closed, tolerance);
@@ -127,7 +132,6 @@ void fill_knots(const std::vector<double>& all, TColStd_Array1OfReal& knots, TCo
 bool step_curve(const OpenCascadeBSpline& curve, std::string& step, std::string& message) {
     const std::lock_guard<std::mutex> lock(step_writer_mutex);
     try {
-        Message::DefaultMessenger()->ChangePrinters().Clear();
         TColgp_Array1OfPnt poles(1, static_cast<int>(curve.poles.rows()));
         for (Eigen::Index i = 0; i < curve.poles.rows(); ++i) poles.SetValue(static_cast<int>(i) + 1, point(curve.poles, i));
         TColStd_Array1OfReal knots(1, 1);
@@ -150,7 +154,6 @@ bool step_surface(int du, int dv, const std::vector<double>& ku, const std::vect
                   std::string& step, std::string& message) {
     const std::lock_guard<std::mutex> lock(step_writer_mutex);
     try {
-        Message::DefaultMessenger()->ChangePrinters().Clear();
         TColgp_Array2OfPnt poles(1, static_cast<int>(x.rows()), 1, static_cast<int>(x.cols()));
         for (Eigen::Index i = 0; i < x.rows(); ++i)
             for (Eigen::Index j = 0; j < x.cols(); ++j) poles.SetValue(static_cast<int>(i) + 1, static_cast<int>(j) + 1, gp_Pnt(x(i, j), y(i, j), z(i, j)));
@@ -174,12 +177,16 @@ bool step_surface(int du, int dv, const std::vector<double>& ku, const std::vect
 }  // namespace
 
 extern "C" __attribute__((visibility("default"))) const cagd::detail::OpenCascadePlugin* cagd_opencascade_plugin() {
-    static const cagd::detail::OpenCascadePlugin plugin{
-        .interface = cagd::detail::kOpenCascadePluginInterface,
-        .interpolate = &interpolate,
-        .step_curve = &step_curve,
-        .step_surface = &step_surface,
-        .max_surface_degree = Geom_BSplineSurface::MaxDegree(),
-    };
+    // A function-local static: initialised once, also when two threads ask at the same time.
+    static const cagd::detail::OpenCascadePlugin plugin = [] {
+        silence_messenger();
+        return cagd::detail::OpenCascadePlugin{
+            .interface = cagd::detail::kOpenCascadePluginInterface,
+            .interpolate = &interpolate,
+            .step_curve = &step_curve,
+            .step_surface = &step_surface,
+            .max_surface_degree = Geom_BSplineSurface::MaxDegree(),
+        };
+    }();
     return &plugin;
 }
