@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <limits>
-#include <cmath>
 // Boost 1.74's pchip.hpp and makima.hpp call isnan unqualified on a double, which only compiles if
 // std::isnan is visible where the templates are defined.
 using std::isnan;
@@ -188,48 +188,160 @@ Interpolant componentwise_chord_interpolant(const char* function, const PointLis
     return unit_span_interpolant(std::make_shared<spline::PiecewiseHermiteCurve>(std::move(nodes), std::move(d0), std::move(d1)), n, std::move(h));
 }
 
+// Boost catmull_rom's derivative at its own node i, s = t_i: the Barry–Goldman pyramid
+// differentiated by the product rule, as Boost's prime(s) forms it, the same operations in the same
+// order (so the same bits; checked against Boost below). t0 … t3 are Boost's parameters
+// t_{i−1} … t_{i+2}, P0 … P3 its points there, and r_ab = 1/(t_b − t_a), the reciprocals Boost
+// forms (neighbouring nodes share them: node i + 1's r01, r12, r02 are node i's r12, r23, r13).
+// (Boost's B1 weighs A1 and A2 by A2's factors; at s = t_i both are P_i, so the value is the
+// pyramid's.)
+struct CatmullRomReciprocals {
+    double r01, r12, r23, r13, r02;
+};
+
 template <std::size_t D>
-Interpolant catmull_rom_interpolant(const PointList& p, bool closed) {
+[[gnu::always_inline]] inline std::array<double, D> catmull_rom_slope_at_node(double t0, double t1, double t2, double t3, const CatmullRomReciprocals& r,
+                                                                              const std::array<const double*, 4>& P, Eigen::Index stride) {
+    const double s = t1;
+    const auto x = [&](int point, std::size_t c) { return P[static_cast<std::size_t>(point)][static_cast<Eigen::Index>(c) * stride]; };
+    std::array<double, D> A1, A1p, A2, A2p, B1, A3, A3p, B2, B1p, B2p, Cp;
+    double denom = r.r01, k1 = (t1 - s) * denom, k2 = (s - t0) * denom;
+    for (std::size_t c = 0; c < D; ++c) A1[c] = k1 * x(0, c) + k2 * x(1, c);
+    for (std::size_t c = 0; c < D; ++c) A1p[c] = denom * (x(1, c) - x(0, c));
+    denom = r.r12, k1 = (t2 - s) * denom, k2 = (s - t1) * denom;
+    for (std::size_t c = 0; c < D; ++c) A2[c] = k1 * x(1, c) + k2 * x(2, c);
+    for (std::size_t c = 0; c < D; ++c) A2p[c] = denom * (x(2, c) - x(1, c));
+    for (std::size_t c = 0; c < D; ++c) B1[c] = k1 * A1[c] + k2 * A2[c];
+    denom = r.r23, k1 = (t3 - s) * denom, k2 = (s - t2) * denom;
+    for (std::size_t c = 0; c < D; ++c) A3[c] = k1 * x(2, c) + k2 * x(3, c);
+    for (std::size_t c = 0; c < D; ++c) A3p[c] = denom * (x(3, c) - x(2, c));
+    denom = r.r13, k1 = (t3 - s) * denom, k2 = (s - t1) * denom;
+    for (std::size_t c = 0; c < D; ++c) B2[c] = k1 * A2[c] + k2 * A3[c];
+    denom = r.r02;
+    for (std::size_t c = 0; c < D; ++c) B1p[c] = denom * (A2[c] - A1[c] + (t2 - s) * A1p[c] + (s - t0) * A2p[c]);
+    denom = r.r13;
+    for (std::size_t c = 0; c < D; ++c) B2p[c] = denom * (A3[c] - A2[c] + (t3 - s) * A2p[c] + (s - t1) * A3p[c]);
+    denom = r.r12;
+    for (std::size_t c = 0; c < D; ++c) Cp[c] = denom * (B2[c] - B1[c] + (t2 - s) * B1p[c] + (s - t1) * B2p[c]);
+    return Cp;
+}
+
+// The slopes of Boost's centripetal Catmull–Rom spline at the nodes, its own (prime at each node's
+// parameter: a binary search each, 10^6 of them cost three times Boost's construction) or by the
+// rule above in O(n).
+template <std::size_t D>
+struct CatmullRomSlopes {
     using Point = std::array<double, D>;
-    std::vector<Point> pts(static_cast<std::size_t>(p.rows()));
+    const boost::math::catmull_rom<Point>& cr;
+    const PointList& p;
+    // Boost's public parameter_at_point(j) is its t_{j+1}: node k's parameter is t_{k+1}; after the
+    // nodes come the ghost nodes' t_{n+1}, t_{n+2}.
+    double t(Eigen::Index j) const { return cr.parameter_at_point(static_cast<std::size_t>(j - 1)); }
+    // Boost's slope at node k (at the last open node the last span's end derivative: Boost
+    // evaluates the span on the left at s = max_parameter).
+    Point boost(Eigen::Index k) const { return cr.prime(t(k + 1)); }
+    // By the rule, nodes a ≤ k < b, 1 ≤ a: node k is Boost's node i = k + 1, its points P_{k−1 … k+2}
+    // wrapped (node 0 would need Boost's private t_0). put(k, slope).
+    template <class Put>
+    void rule(Eigen::Index a, Eigen::Index b, Put put) const {
+        const Eigen::Index n = p.rows();
+        if (a >= b) return;
+        CatmullRomReciprocals r{1 / (t(a + 1) - t(a)), 1 / (t(a + 2) - t(a + 1)), 1 / (t(a + 3) - t(a + 2)), 1 / (t(a + 3) - t(a + 1)), 1 / (t(a + 2) - t(a))};
+        for (Eigen::Index k = a;; ++k) {
+            const std::array<const double*, 4> P{&p(k == 0 ? n - 1 : k - 1, 0), &p(k, 0), &p(k + 1 < n ? k + 1 : k + 1 - n, 0), &p(k + 2 < n ? k + 2 : k + 2 - n, 0)};
+            put(k, catmull_rom_slope_at_node<D>(t(k), t(k + 1), t(k + 2), t(k + 3), r, P, n));
+            if (k + 1 == b) break;
+            r = {r.r12, r.r23, 1 / (t(k + 4) - t(k + 3)), 1 / (t(k + 4) - t(k + 2)), r.r13};
+        }
+    }
+    static bool same(const Point& a, const Point& b) {
+        for (std::size_t c = 0; c < D; ++c)
+            if (bits_of(a[c]) != bits_of(b[c])) return false;
+        return true;
+    }
+};
+
+// How catmull_rom_interpolant takes the slopes: by the rule, checked against Boost on sampled blocks
+// (as pchip and makima), or the rule spoilt by one ulp (for the test that the check notices).
+enum class SlopeRule { checked, spoilt };
+
+// Boost's centripetal Catmull–Rom spline through p. Its parameters are a running sum of |ΔP|^½
+// over the points and, after them, the chords P_{n−1}P_0 and P_0P_1 (its wrap-around ghost nodes,
+// also for open curves). If the points span many orders of magnitude (chords of 1e-69 beside
+// 1e100), a short chord's term vanishes in that sum, two parameters coincide, and Boost's span
+// search reads past its arrays (found by fuzzing). So each of the n + 1 steps of its parameters
+// must exceed 1e-12 of their sum (ε is 1.1e-16), checked here before anything searches them
+// (Boost's construction only adds).
+template <std::size_t D>
+boost::math::catmull_rom<std::array<double, D>> boost_catmull_rom(const PointList& p, bool closed) {
+    std::vector<std::array<double, D>> pts(static_cast<std::size_t>(p.rows()));
     for (Eigen::Index k = 0; k < p.rows(); ++k)
         for (std::size_t c = 0; c < D; ++c) pts[static_cast<std::size_t>(k)][c] = p(k, static_cast<Eigen::Index>(c));
-    // Boost's centripetal parameters are a running sum of |ΔP|^½ over the points and, after them,
-    // the chords P_{n−1}P_0 and P_0P_1 (its wrap-around ghost nodes, also for open curves). If the
-    // points span many orders of magnitude (chords of 1e-69 beside 1e100), a short chord's term
-    // vanishes in that sum, two parameters coincide, and Boost's span search reads past its
-    // arrays (found by fuzzing). Each term must therefore exceed 1e-12 of the sum (ε is 1.1e-16).
-    {
-        std::vector<double> terms;
-        terms.reserve(static_cast<std::size_t>(p.rows()) + 1);
-        double sum = 0.0;
-        for (Eigen::Index k = 0; k <= p.rows(); ++k) {
-            const Eigen::Index a = k % p.rows(), b = (k + 1) % p.rows();  // k = n−1, n: the ghost chords
-            terms.push_back(std::sqrt((p.row(b) - p.row(a)).norm()));
-            sum += terms.back();
+    boost::math::catmull_rom<std::array<double, D>> cr(std::move(pts), closed, 0.5);
+    const Eigen::Index n = p.rows();
+    const auto t = [&](Eigen::Index j) { return cr.parameter_at_point(static_cast<std::size_t>(j)); };  // Boost's t_{j+1}
+    const double sum = t(n + 1);                                                                        // t_1 = 0
+    for (Eigen::Index j = 0; j <= n; ++j)
+        if (!(t(j + 1) - t(j) > 1e-12 * sum)) {
+            const Eigen::Index a = j % n, b = (j + 1) % n;  // j = n − 1, n: the ghost chords
+            fail_input("cagd::methods::boost_catmull_rom_interpolant", "the chord from point " + std::to_string(a) + " is " + full_precision((p.row(b) - p.row(a)).norm()) +
+                                                                           " long against a centripetal parameter sum of " + full_precision(sum) +
+                                                                           ": it vanishes in double precision (the points span too many orders of magnitude)");
         }
-        for (std::size_t k = 0; k < terms.size(); ++k)
-            if (!(terms[k] > 1e-12 * sum))
-                fail_input("cagd::methods::boost_catmull_rom_interpolant", "the chord from point " + std::to_string(k % pts.size()) + " is " + full_precision(terms[k] * terms[k]) +
-                                                                               " long against a centripetal parameter sum of " + full_precision(sum) +
-                                                                               ": it vanishes in double precision (the points span too many orders of magnitude)");
-    }
+    return cr;
+}
+
+template <std::size_t D>
+Interpolant catmull_rom_interpolant(const PointList& p, bool closed, SlopeRule rule = SlopeRule::checked) {
+    using Point = std::array<double, D>;
     const Eigen::Index n = p.rows(), spans = closed ? n : n - 1;
-    std::vector<double> h;
-    h.reserve(static_cast<std::size_t>(spans));
-    Eigen::MatrixXd slopes(n, p.cols());
+    std::vector<double> h(static_cast<std::size_t>(spans));
+    // The Hermite form, as hermite_from_slopes makes it (d0_k = h_k s_k, d1_k = h_k s_{k+1}), filled
+    // as the slopes come.
+    Eigen::MatrixXd nodes(spans + 1, p.cols()), d0(spans, p.cols()), d1(spans, p.cols());
+    nodes.topRows(n) = p;
+    if (closed) nodes.row(n) = p.row(0);
     {  // Boost's spline lives only while its parameters and slopes are read (peak memory)
-        const boost::math::catmull_rom<Point> cr(std::move(pts), closed, 0.5);
-        for (Eigen::Index k = 0; k < spans; ++k)
-            h.push_back((k + 1 == n ? cr.max_parameter() : cr.parameter_at_point(static_cast<std::size_t>(k + 1))) - cr.parameter_at_point(static_cast<std::size_t>(k)));
-        for (Eigen::Index k = 0; k < n; ++k) {
-            // prime at the last open node is the last span's end derivative (Boost evaluates the
-            // span on the left at s = max_parameter); every other node is a span start.
-            const Point d = cr.prime(cr.parameter_at_point(static_cast<std::size_t>(k)));
-            for (std::size_t c = 0; c < D; ++c) slopes(k, static_cast<Eigen::Index>(c)) = d[c];
+        const boost::math::catmull_rom<Point> cr = boost_catmull_rom<D>(p, closed);
+        const CatmullRomSlopes<D> at{cr, p};
+        // A closed curve's last span ends at t_{n+1} (max_parameter), an open one's at t_n.
+        for (Eigen::Index k = 0; k < spans; ++k) h[static_cast<std::size_t>(k)] = at.t(k + 2) - at.t(k + 1);
+        const auto before = [&](Eigen::Index k) { return k > 0 ? k - 1 : closed ? spans - 1 : -1; };  // the span ending at node k
+        const auto put = [&](Eigen::Index k, const Point& d) {
+            const Eigen::Index e = before(k);
+            for (std::size_t c = 0; c < D; ++c) {
+                const auto col = static_cast<Eigen::Index>(c);
+                if (k < spans) d0(k, col) = h[static_cast<std::size_t>(k)] * d[c];
+                if (e >= 0) d1(e, col) = h[static_cast<std::size_t>(e)] * d[c];
+            }
+        };
+        const auto holds = [&](Eigen::Index k, const Point& d) {  // bit for bit
+            const Eigen::Index e = before(k);
+            for (std::size_t c = 0; c < D; ++c) {
+                const auto col = static_cast<Eigen::Index>(c);
+                if (k < spans && bits_of(d0(k, col)) != bits_of(h[static_cast<std::size_t>(k)] * d[c])) return false;
+                if (e >= 0 && bits_of(d1(e, col)) != bits_of(h[static_cast<std::size_t>(e)] * d[c])) return false;
+            }
+            return true;
+        };
+        put(0, at.boost(0));
+        at.rule(1, n, [&](Eigen::Index k, Point d) {
+            if (rule == SlopeRule::spoilt) d[0] = std::nextafter(d[0], std::numeric_limits<double>::infinity());
+            put(k, d);
+        });
+        // The check, bit for bit: kCheckedBlocks blocks of kSlopeBlock nodes spread over 1 … n − 1,
+        // both ends included. Should any derivative differ, every slope is Boost's.
+        const Eigen::Index blocks = std::max<Eigen::Index>(1, (n - 1) / kSlopeBlock), checked = std::min(blocks, kCheckedBlocks);
+        bool same = true;
+        for (Eigen::Index j = 0; j < checked && same; ++j) {
+            const Eigen::Index block = checked == 1 ? 0 : j * (blocks - 1) / (checked - 1);
+            const Eigen::Index a = 1 + block * kSlopeBlock, b = block + 1 == blocks ? n : a + kSlopeBlock;
+            for (Eigen::Index k = a; k < b && same; ++k) same = holds(k, at.boost(k));
         }
+        if (!same)
+            for (Eigen::Index k = 1; k < n; ++k) put(k, at.boost(k));
     }
-    return hermite_from_slopes(p, slopes, h, closed);
+    return unit_span_interpolant(std::make_shared<spline::PiecewiseHermiteCurve>(std::move(nodes), std::move(d0), std::move(d1)), spans + 1, std::move(h));
 }
 
 }  // namespace
@@ -254,9 +366,13 @@ Interpolant hermite_from_slopes(const PointList& p, const Eigen::MatrixXd& slope
     return unit_span_interpolant(std::make_shared<spline::PiecewiseHermiteCurve>(std::move(nodes), std::move(d0), std::move(d1)), spans + 1, h);
 }
 
-Interpolant boost_pchip_interpolant(const PointList& p) { return componentwise_chord_interpolant<boost::math::interpolators::pchip<std::vector<double>>>("cagd::methods::boost_pchip_interpolant", p, 1, pchip_rule_slopes); }
+Interpolant boost_pchip_interpolant(const PointList& p) {
+    return componentwise_chord_interpolant<boost::math::interpolators::pchip<std::vector<double>>>("cagd::methods::boost_pchip_interpolant", p, 1, pchip_rule_slopes);
+}
 
-Interpolant boost_makima_interpolant(const PointList& p) { return componentwise_chord_interpolant<boost::math::interpolators::makima<std::vector<double>>>("cagd::methods::boost_makima_interpolant", p, 2, makima_rule_slopes); }
+Interpolant boost_makima_interpolant(const PointList& p) {
+    return componentwise_chord_interpolant<boost::math::interpolators::makima<std::vector<double>>>("cagd::methods::boost_makima_interpolant", p, 2, makima_rule_slopes);
+}
 
 namespace {
 
@@ -291,5 +407,25 @@ Interpolant detail::boost_pchip_interpolant_with_a_spoilt_rule(const PointList& 
 }
 
 Interpolant boost_catmull_rom_interpolant(const PointList& p, bool closed) { return p.cols() == 2 ? catmull_rom_interpolant<2>(p, closed) : catmull_rom_interpolant<3>(p, closed); }
+
+namespace {
+template <std::size_t D>
+bool catmull_rom_rule_matches_everywhere(const PointList& p, bool closed) {
+    const auto cr = boost_catmull_rom<D>(p, closed);
+    const CatmullRomSlopes<D> at{cr, p};
+    bool same = true;
+    at.rule(1, p.rows(), [&](Eigen::Index k, const std::array<double, D>& d) { same = same && CatmullRomSlopes<D>::same(at.boost(k), d); });
+    return same;
+}
+}  // namespace
+
+bool detail::boost_catmull_rom_rule_matches_everywhere(const PointList& p, bool closed) {
+    require_valid_points(p, 4, true, closed, "cagd::methods::detail::boost_catmull_rom_rule_matches_everywhere");
+    return p.cols() == 2 ? catmull_rom_rule_matches_everywhere<2>(p, closed) : catmull_rom_rule_matches_everywhere<3>(p, closed);
+}
+
+Interpolant detail::boost_catmull_rom_interpolant_with_a_spoilt_rule(const PointList& p, bool closed) {
+    return p.cols() == 2 ? catmull_rom_interpolant<2>(p, closed, SlopeRule::spoilt) : catmull_rom_interpolant<3>(p, closed, SlopeRule::spoilt);
+}
 
 }  // namespace cagd::methods

@@ -35,6 +35,12 @@ bool boost_rules_match_everywhere(const PointList& p);
 /// boost_pchip_interpolant with its O(n) slope rule spoilt (every span's start derivative one ulp
 /// up): its check against Boost must notice and read every slope from Boost. For the tests.
 Interpolant boost_pchip_interpolant_with_a_spoilt_rule(const PointList& p);
+/// Whether boost_catmull_rom_interpolant's O(n) rule gives the slopes of Boost's prime bit for bit
+/// at every node after the first (the first is always Boost's). For the tests.
+bool boost_catmull_rom_rule_matches_everywhere(const PointList& p, bool closed);
+/// boost_catmull_rom_interpolant with its rule spoilt (every x-slope one ulp up): its check against
+/// Boost must notice and read every slope from Boost. For the tests.
+Interpolant boost_catmull_rom_interpolant_with_a_spoilt_rule(const PointList& p, bool closed);
 }  // namespace detail
 
 }  // namespace cagd::methods
