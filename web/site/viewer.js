@@ -25,6 +25,10 @@
   const PICK_RADIUS = 9;        // px: a click this close to a point picks it
   const MOTION_FLOOR = 1e-9;    // span motion ÷ diagonal below this is rounding (compare's locality tolerance)
   const FRAME_HISTORY = 240;
+  // ms: during a drag the measures are computed when the point has rested this long, or is
+  // released; not on every frame, where the worker's work (tens of ms for the iterative methods)
+  // would contend with the frames for the machine's cores.
+  const MEASURES_PAUSE = 150;
 
   const $ = (id) => document.getElementById(id);
   const canvas = $('curves'), profileCanvas = $('profile');
@@ -33,6 +37,7 @@
   let dragging = -1, pendingFrame = false, pendingMotion = false, hoverS = null;
   // The measures worker: one request at a time, the newest waiting (older ones are dropped).
   let worker = null, workerBusy = false, workerNext = null, requestId = 0, settledWaiters = [];
+  let pauseTimer = null;  // the measures' request waiting for the dragged point to rest
 
   // ---- state and the URL hash -------------------------------------------------------------
   function defaultState() {
@@ -172,18 +177,29 @@
       (failing ? `; ${failing} without a curve (see the list)` : '') + (r && r.combScale > 0 ? `; comb: 1 unit of κ = ${fmt(r.combScale)} units of length` : '');
     saveHash();
     renderMethodNotes();
-    requestMeasures();
+    if (options && (options.drag || options.anchor)) measuresAtPause();
+    else requestMeasures();
     return r;
   }
 
   // ---- the measures, from the worker -------------------------------------------------------
+  // A drag frame: the table is marked as behind the curves until the point rests or is released.
+  function measuresAtPause() {
+    $('measures').classList.add('stale');
+    clearTimeout(pauseTimer);
+    pauseTimer = setTimeout(requestMeasures, MEASURES_PAUSE);
+  }
+
   function requestMeasures() {
+    clearTimeout(pauseTimer);
+    pauseTimer = null;
     const s = viewer.state;
     if (s.points.length < 2 || s.shown.length === 0) {
       viewer.measures = null;
       renderMeasures();
       return;
     }
+    $('measures').classList.add('stale');
     workerNext = { id: ++requestId, points: s.points.flat(), closed: s.closed, configurations: s.shown };
     pumpWorker();
   }
@@ -209,7 +225,14 @@
     pumpWorker();
   }
   // Resolves when the table shows the current points (for the tests).
-  viewer.measuresSettled = () => new Promise((resolve) => { settledWaiters.push(resolve); pumpWorker(); });
+  // How many measures requests were made (for the tests: a drag's frames make none).
+  viewer.measuresRequests = () => requestId;
+  // A request waiting for a pause is made now.
+  viewer.measuresSettled = () => new Promise((resolve) => {
+    if (pauseTimer !== null) requestMeasures();
+    settledWaiters.push(resolve);
+    pumpWorker();
+  });
 
   function scheduleUpdate(motion) {
     pendingMotion = pendingMotion || motion;
@@ -393,6 +416,7 @@
   function renderMeasures() {
     const r = viewer.measures, table = $('measures');
     table.textContent = '';
+    if (pauseTimer === null && !workerNext && !workerBusy) table.classList.remove('stale');
     if (!r) return;
     const head = table.insertRow();
     for (const h of r.header) {
