@@ -296,15 +296,14 @@ Interpolant catmull_rom_interpolant(const PointList& p, bool closed, SlopeRule r
     using Point = std::array<double, D>;
     const Eigen::Index n = p.rows(), spans = closed ? n : n - 1;
     std::vector<double> h(static_cast<std::size_t>(spans));
-    // The Hermite form, as hermite_from_slopes makes it (d0_k = h_k s_k, d1_k = h_k s_{k+1}), filled
-    // as the slopes come; allocated once Boost's spline is built (its construction copies its
-    // points into a longer array: peak memory).
-    Eigen::MatrixXd nodes, d0, d1;
+    // The Hermite form, as hermite_from_slopes makes it (d0_k = h_k s_k, d1_k = h_k s_{k+1}), its
+    // derivatives filled as the slopes come. For peak memory, they are allocated once Boost's spline
+    // is built (its construction copies its points into a longer array), and the nodes once it is
+    // gone.
+    Eigen::MatrixXd d0, d1;
     {  // Boost's spline lives only while its parameters and slopes are read (peak memory)
         const boost::math::catmull_rom<Point> cr = boost_catmull_rom<D>(p, closed);
-        nodes.resize(spans + 1, p.cols()), d0.resize(spans, p.cols()), d1.resize(spans, p.cols());
-        nodes.topRows(n) = p;
-        if (closed) nodes.row(n) = p.row(0);
+        d0.resize(spans, p.cols()), d1.resize(spans, p.cols());
         const CatmullRomSlopes<D> at{cr, p};
         // A closed curve's last span ends at t_{n+1} (max_parameter), an open one's at t_n.
         for (Eigen::Index k = 0; k < spans; ++k) h[static_cast<std::size_t>(k)] = at.t(k + 2) - at.t(k + 1);
@@ -343,6 +342,9 @@ Interpolant catmull_rom_interpolant(const PointList& p, bool closed, SlopeRule r
         if (!same)
             for (Eigen::Index k = 1; k < n; ++k) put(k, at.boost(k));
     }
+    Eigen::MatrixXd nodes(spans + 1, p.cols());
+    nodes.topRows(n) = p;
+    if (closed) nodes.row(n) = p.row(0);
     return unit_span_interpolant(std::make_shared<spline::PiecewiseHermiteCurve>(std::move(nodes), std::move(d0), std::move(d1)), spans + 1, std::move(h));
 }
 
