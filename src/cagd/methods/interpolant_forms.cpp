@@ -66,24 +66,28 @@ void for_each_slope_block(Eigen::Index n, Visit visit) {
     }
 }
 
-// Where node k's slope s goes, as hermite_from_slopes forms the spans' τ-derivatives:
-// d0_k = h_k s for the span that starts at k, d1_{k−1} = h_{k−1} s for the span that ends there.
+// Where node k's slope s goes in one coordinate of the unit-span Hermite form (τ-lengths h_k):
+// d0_k = h_k s for the span that starts at k, d1_{k−1} = h_{k−1} s for the span that ends there (a
+// closed curve's node 0 also ends its last span, n − 1).
 struct NodeSlopeSink {
     const double* h;
     double* d0;
     double* d1;
     std::size_t n;  // nodes
+    bool closed = false;
+    std::size_t spans() const { return closed ? n : n - 1; }
     void interior(std::size_t k, double s) const {
         d0[k] = h[k] * s;
         d1[k - 1] = h[k - 1] * s;
     }
     void put(std::size_t k, double s) const {
-        if (k + 1 < n) d0[k] = h[k] * s;
+        if (k < spans()) d0[k] = h[k] * s;
         if (k > 0) d1[k - 1] = h[k - 1] * s;
+        if (k == 0 && closed) d1[n - 1] = h[n - 1] * s;
     }
     bool holds(std::size_t k, double s) const {  // bit for bit
         const auto same = [](double a, double b) { return bits_of(a) == bits_of(b); };
-        return (k + 1 == n || same(d0[k], h[k] * s)) && (k == 0 || same(d1[k - 1], h[k - 1] * s));
+        return (k >= spans() || same(d0[k], h[k] * s)) && (k == 0 || same(d1[k - 1], h[k - 1] * s)) && (k > 0 || !closed || same(d1[n - 1], h[n - 1] * s));
     }
 };
 
@@ -296,10 +300,9 @@ Interpolant catmull_rom_interpolant(const PointList& p, bool closed, SlopeRule r
     using Point = std::array<double, D>;
     const Eigen::Index n = p.rows(), spans = closed ? n : n - 1;
     std::vector<double> h(static_cast<std::size_t>(spans));
-    // The Hermite form, as hermite_from_slopes makes it (d0_k = h_k s_k, d1_k = h_k s_{k+1}), its
-    // derivatives filled as the slopes come. For peak memory, they are allocated once Boost's spline
-    // is built (its construction copies its points into a longer array), and the nodes once it is
-    // gone.
+    // The unit-span Hermite form, its derivatives filled as the slopes come (NodeSlopeSink). For
+    // peak memory, they are allocated once Boost's spline is built (its construction copies its
+    // points into a longer array), and the nodes once it is gone.
     Eigen::MatrixXd d0, d1;
     {  // Boost's spline lives only while its parameters and slopes are read (peak memory)
         const boost::math::catmull_rom<Point> cr = boost_catmull_rom<D>(p, closed);
@@ -307,22 +310,15 @@ Interpolant catmull_rom_interpolant(const PointList& p, bool closed, SlopeRule r
         const CatmullRomSlopes<D> at{cr, p};
         // A closed curve's last span ends at t_{n+1} (max_parameter), an open one's at t_n.
         for (Eigen::Index k = 0; k < spans; ++k) h[static_cast<std::size_t>(k)] = at.t(k + 2) - at.t(k + 1);
-        const auto before = [&](Eigen::Index k) { return k > 0 ? k - 1 : closed ? spans - 1 : -1; };  // the span ending at node k
+        std::array<NodeSlopeSink, D> sinks;
+        for (std::size_t c = 0; c < D; ++c)
+            sinks[c] = {h.data(), d0.col(static_cast<Eigen::Index>(c)).data(), d1.col(static_cast<Eigen::Index>(c)).data(), static_cast<std::size_t>(n), closed};
         const auto put = [&](Eigen::Index k, const Point& d) {
-            const Eigen::Index e = before(k);
-            for (std::size_t c = 0; c < D; ++c) {
-                const auto col = static_cast<Eigen::Index>(c);
-                if (k < spans) d0(k, col) = h[static_cast<std::size_t>(k)] * d[c];
-                if (e >= 0) d1(e, col) = h[static_cast<std::size_t>(e)] * d[c];
-            }
+            for (std::size_t c = 0; c < D; ++c) sinks[c].put(static_cast<std::size_t>(k), d[c]);
         };
-        const auto holds = [&](Eigen::Index k, const Point& d) {  // bit for bit
-            const Eigen::Index e = before(k);
-            for (std::size_t c = 0; c < D; ++c) {
-                const auto col = static_cast<Eigen::Index>(c);
-                if (k < spans && bits_of(d0(k, col)) != bits_of(h[static_cast<std::size_t>(k)] * d[c])) return false;
-                if (e >= 0 && bits_of(d1(e, col)) != bits_of(h[static_cast<std::size_t>(e)] * d[c])) return false;
-            }
+        const auto holds = [&](Eigen::Index k, const Point& d) {
+            for (std::size_t c = 0; c < D; ++c)
+                if (!sinks[c].holds(static_cast<std::size_t>(k), d[c])) return false;
             return true;
         };
         put(0, at.boost(0));
@@ -352,22 +348,6 @@ Interpolant catmull_rom_interpolant(const PointList& p, bool closed, SlopeRule r
 
 Interpolant unit_span_interpolant(std::shared_ptr<const Curve> curve, Eigen::Index nodes, std::vector<double> dtau_du) {
     return {std::move(curve), unit_nodes(nodes), std::move(dtau_du)};
-}
-
-Interpolant hermite_from_slopes(const PointList& p, const Eigen::MatrixXd& slopes, const std::vector<double>& h, bool closed) {
-    const Eigen::Index n = p.rows(), spans = static_cast<Eigen::Index>(h.size());
-    Eigen::MatrixXd nodes(spans + 1, p.cols()), d0(spans, p.cols()), d1(spans, p.cols());
-    nodes.topRows(n) = p;
-    if (closed) nodes.row(n) = p.row(0);
-    // Column by column (contiguous, vectorised): d0_k = h_k s_k, d1_k = h_k s_{k+1}.
-    const Eigen::Map<const Eigen::VectorXd> hk(h.data(), spans);
-    const Eigen::Index inner = closed ? spans - 1 : spans;  // spans whose end slope is s_{k+1} without wrapping
-    for (Eigen::Index c = 0; c < p.cols(); ++c) {
-        d0.col(c) = hk.cwiseProduct(slopes.col(c).head(spans));
-        d1.col(c).head(inner) = hk.head(inner).cwiseProduct(slopes.col(c).segment(1, inner));
-        if (closed) d1(spans - 1, c) = hk(spans - 1) * slopes(0, c);
-    }
-    return unit_span_interpolant(std::make_shared<spline::PiecewiseHermiteCurve>(std::move(nodes), std::move(d0), std::move(d1)), spans + 1, h);
 }
 
 Interpolant boost_pchip_interpolant(const PointList& p) {

@@ -15,11 +15,6 @@ namespace cagd::methods {
 /// A curve whose data points sit at u = 0, 1, …, nodes − 1, with dτ/du per span.
 Interpolant unit_span_interpolant(std::shared_ptr<const Curve> curve, Eigen::Index nodes, std::vector<double> dtau_du);
 
-/// A piecewise cubic through the points with τ-derivatives `slopes` at the nodes (rows as the
-/// points; closed: the closing node's slope is row 0) and τ-lengths h per span, in unit-span
-/// Hermite form.
-Interpolant hermite_from_slopes(const PointList& p, const Eigen::MatrixXd& slopes, const std::vector<double>& h, bool closed);
-
 /// Boost.Math pchip / makima on each coordinate over the chord-length parameter (open curves).
 Interpolant boost_pchip_interpolant(const PointList& p);
 /// Boost.Math makima on each coordinate over the chord-length parameter (open curves).
