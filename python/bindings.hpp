@@ -24,12 +24,12 @@
 #include "cagd/compare/method_comparison.hpp"
 #include "cagd/core/curve.hpp"
 #include "cagd/core/errors.hpp"
+#include "cagd/core/output_file.hpp"
 #include "cagd/core/parallel.hpp"
 #include "cagd/export/curve_json.hpp"
-#include "cagd/methods/method_parameter_curve.hpp"
-#include "cagd/core/output_file.hpp"
 #include "cagd/fairness/pseudo_energy_minimum.hpp"
 #include "cagd/fairness/pseudo_energy_table.hpp"
+#include "cagd/methods/method_parameter_curve.hpp"
 #include "cagd/methods/method_registry.hpp"
 #include "cagd/smoothing/elastic_line.hpp"
 #include "cagd/smoothing/elastic_space_curve.hpp"
@@ -138,8 +138,8 @@ struct PyCurve {
     // How to build it again, for pickling: (name of a cagd function, args, kwargs, key), the curve
     // being the call's result, or its item `key` (a dict key or a tuple index); None when unknown.
     py::object recipe = py::none();
-    int points = 0;        // data points of an interpolant (0 otherwise)
-    bool closed = false;   // an interpolant through closed data
+    int points = 0;       // data points of an interpolant (0 otherwise)
+    bool closed = false;  // an interpolant through closed data
     // An interpolant: `curve` is in the method's parameter τ (MethodParameterCurve), and this is the
     // same curve in the registry's span parameter u; null otherwise.
     std::shared_ptr<const cagd::methods::MethodParameterCurve> in_tau{};
@@ -163,15 +163,7 @@ struct PyCurve {
         {
             py::gil_scoped_release release;
             if (rows <= cagd::kJetCapacity && dim <= 3) {
-                for_each_chunk(m, [&](long begin, long end) {
-                    cagd::JetMatrix jet;
-                    for (long k = begin; k < end; ++k) {
-                        curve->jet_into(ts[k], derivatives, jet);
-                        double* row = w + k * rows * dim;
-                        for (py::ssize_t r = 0; r < rows; ++r)
-                            for (py::ssize_t c = 0; c < dim; ++c) row[r * dim + c] = jet(r, c);
-                    }
-                });
+                for_each_chunk(m, [&](long begin, long end) { curve->jets_into(ts + begin, static_cast<std::size_t>(end - begin), derivatives, w + begin * rows * dim); });
             } else {
                 for (py::ssize_t k = 0; k < m; ++k) {
                     const Eigen::MatrixXd jet = curve->jet(ts[k], derivatives);
@@ -202,7 +194,9 @@ struct PyCurve {
     }
 };
 
-inline PyCurve wrap(std::shared_ptr<const cagd::Curve> c, std::string method = {}, std::vector<double> nodes = {}) { return PyCurve{std::move(c), std::move(nodes), std::move(method)}; }
+inline PyCurve wrap(std::shared_ptr<const cagd::Curve> c, std::string method = {}, std::vector<double> nodes = {}) {
+    return PyCurve{std::move(c), std::move(nodes), std::move(method)};
+}
 
 // The curve with the recipe of the cagd function `name` that built it (PyCurve::recipe).
 inline PyCurve with_recipe(PyCurve c, const char* name, py::tuple args, py::dict kwargs = py::dict(), py::object key = py::none()) {

@@ -41,6 +41,19 @@ void Curve::jet_into(double t, int order, JetMatrix& out) const {
     out = jet(t, order);
 }
 
+void Curve::jets_into(const double* t, std::size_t count, int order, double* out) const {
+    const int dim = dimension();
+    require_jet_capacity("cagd::Curve::jets_into", order + 1, dim);
+    const std::size_t stride = static_cast<std::size_t>((order + 1) * dim);
+    JetMatrix jet;
+    for (std::size_t k = 0; k < count; ++k) {
+        jet_into(t[k], order, jet);
+        double* o = out + k * stride;
+        for (int r = 0; r <= order; ++r)
+            for (int c = 0; c < dim; ++c) o[r * dim + c] = jet(r, c);
+    }
+}
+
 void Curve::derivatives_into(double t, int order, JetMatrix& out) const {
     require_jet_capacity("cagd::Curve::derivatives_into", order, dimension());
     out = derivatives(t, order);

@@ -6,6 +6,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <vector>
 
 namespace cagd {
@@ -50,6 +51,13 @@ public:
     virtual void jet_into(double t, int order, JetMatrix& out) const;
     /// derivatives(t, order) likewise, for 1 ≤ order ≤ kJetCapacity.
     virtual void derivatives_into(double t, int order, JetMatrix& out) const;
+    /// jet_into at the `count` parameters t[0 … count − 1], each jet row by row (order r, then
+    /// coordinate c) into out[(k·(order + 1) + r)·dimension() + c]: bit for bit what jet_into gives
+    /// one parameter at a time, which the default does. PiecewiseHermiteCurve and
+    /// MethodParameterCurve override it to do the per-call work once per batch (Python's
+    /// Curve.evaluate runs it). Preconditions and errors as jet_into's; after an error `out` is
+    /// incomplete.
+    virtual void jets_into(const double* t, std::size_t count, int order, double* out) const;
     /// p ≥ 0 when every piece between consecutive breakpoints is a polynomial of degree at most p in
     /// t (Hermite and Bézier curves, B-splines, Hosaka's curves); −1 for a curve that is not
     /// polynomial (the intrinsic and log-aesthetic curves). export/ gives a polynomial curve's exact
@@ -80,7 +88,7 @@ struct PieceLocation {
 /// Throws InvalidInput naming `who` for u outside [0, K] (or NaN) or order < 0.
 [[noreturn]] void reject_unit_piece(const char* who, double u, int pieces, int order);
 /// The piece s = min(⌊u⌋, K − 1) holding u ∈ [0, K] and t = u − s; InvalidInput for u outside [0, K] or order < 0.
-inline PieceLocation locate_unit_piece(const char* who, double u, int pieces, int order) {
+[[gnu::always_inline]] inline PieceLocation locate_unit_piece(const char* who, double u, int pieces, int order) {
     if (!(u >= 0.0 && u <= pieces) || order < 0) [[unlikely]]
         reject_unit_piece(who, u, pieces, order);
     // u ∈ [0, K] here, so truncation is the floor (and a single instruction, where std::floor is a

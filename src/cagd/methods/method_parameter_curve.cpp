@@ -12,8 +12,7 @@ namespace {
 constexpr const char* kWho = "cagd::methods::MethodParameterCurve";
 }  // namespace
 
-MethodParameterCurve::MethodParameterCurve(const Interpolant& interpolant)
-    : base_(interpolant.curve), u_(interpolant.node_parameters), dtau_du_(interpolant.dtau_du) {
+MethodParameterCurve::MethodParameterCurve(const Interpolant& interpolant) : base_(interpolant.curve), u_(interpolant.node_parameters), dtau_du_(interpolant.dtau_du) {
     if (!base_) fail_input(kWho, "the interpolant has no curve");
     if (u_.size() != dtau_du_.size() + 1 || dtau_du_.empty())
         fail_input(kWho, std::to_string(u_.size()) + " node parameters for " + std::to_string(dtau_du_.size()) + " spans; needs one more node than spans, and a span");
@@ -35,9 +34,16 @@ MethodParameterCurve::MethodParameterCurve(const Interpolant& interpolant)
     }
 }
 
-int MethodParameterCurve::span_of_tau(double tau, bool from_left) const {
-    if (!(tau >= tau_.front() && tau <= tau_.back()))
-        fail_input(kWho, "t = " + full_precision(tau) + " outside [" + full_precision(tau_.front()) + ", " + full_precision(tau_.back()) + "] (the method's parameter)");
+namespace {
+[[noreturn, gnu::noinline, gnu::cold]] void reject_tau(double tau, double first, double last) {
+    fail_input(kWho, "t = " + full_precision(tau) + " outside [" + full_precision(first) + ", " + full_precision(last) + "] (the method's parameter)");
+}
+}  // namespace
+
+// Inline (the message out of line): jets_into calls it per parameter.
+inline int MethodParameterCurve::span_of_tau(double tau, bool from_left) const {
+    if (!(tau >= tau_.front() && tau <= tau_.back())) [[unlikely]]
+        reject_tau(tau, tau_.front(), tau_.back());
     const auto spans = static_cast<int>(dtau_du_.size());
     if (from_left) {  // the span that ends at or after τ
         const auto it = std::lower_bound(tau_.begin() + 1, tau_.end(), tau);
@@ -60,8 +66,7 @@ double MethodParameterCurve::span_parameter(double tau) const {
 }
 
 double MethodParameterCurve::method_parameter(double u) const {
-    if (!(u >= u_.front() && u <= u_.back()))
-        fail_input(kWho, "u = " + full_precision(u) + " outside [" + full_precision(u_.front()) + ", " + full_precision(u_.back()) + "]");
+    if (!(u >= u_.front() && u <= u_.back())) fail_input(kWho, "u = " + full_precision(u) + " outside [" + full_precision(u_.front()) + ", " + full_precision(u_.back()) + "]");
     const auto k = static_cast<std::size_t>(std::clamp(static_cast<int>(std::upper_bound(u_.begin(), u_.end(), u) - u_.begin()) - 1, 0, static_cast<int>(dtau_du_.size()) - 1));
     return std::min(tau_[k + 1], tau_[k] + dtau_du_[k] * (u - u_[k]));
 }
@@ -86,6 +91,33 @@ void MethodParameterCurve::jet_into(double tau, int order, JetMatrix& out) const
     const double inv = 1.0 / dtau_du_[s];  // the same operations as scaled()
     double f = 1.0;
     for (Eigen::Index i = 1; i < out.rows(); ++i) out.row(i) *= (f *= inv);
+}
+
+void MethodParameterCurve::jets_into(const double* tau, std::size_t count, int order, double* out) const {
+    const int dim = dimension();
+    require_jet_capacity("cagd::methods::MethodParameterCurve::jets_into", order + 1, dim);
+    const std::size_t stride = static_cast<std::size_t>((order + 1) * dim);
+    constexpr std::size_t kBlock = 256;
+    double u[kBlock];
+    std::size_t span[kBlock];
+    for (std::size_t first = 0; first < count; first += kBlock) {
+        const std::size_t m = std::min(kBlock, count - first);
+        for (std::size_t i = 0; i < m; ++i) {
+            const auto s = static_cast<std::size_t>(span_of_tau(tau[first + i], false));
+            span[i] = s;
+            u[i] = std::min(u_[s + 1], u_[s] + (tau[first + i] - tau_[s]) / dtau_du_[s]);
+        }
+        base_->jets_into(u, m, order, out + first * stride);
+        for (std::size_t i = 0; i < m; ++i) {  // the same operations as jet_into's
+            const double inv = 1.0 / dtau_du_[span[i]];
+            double f = 1.0;
+            double* o = out + (first + i) * stride;
+            for (int r = 1; r <= order; ++r) {
+                f *= inv;
+                for (int c = 0; c < dim; ++c) o[r * dim + c] *= f;
+            }
+        }
+    }
 }
 
 Eigen::MatrixXd MethodParameterCurve::jet_from_left(double tau, int order) const {

@@ -33,6 +33,9 @@ public:
     /// jet() into a fixed-capacity matrix: the span curve's own jet_into, then the chain rule in
     /// place; no allocation (Python's evaluate runs it per parameter).
     void jet_into(double tau, int order, JetMatrix& out) const override;
+    /// jet_into's arithmetic in blocks: the blocks' u, then the span curve's jets_into, then the
+    /// chain rule in place.
+    void jets_into(const double* tau, std::size_t count, int order, double* out) const override;
     std::vector<double> breakpoints() const override;
     /// The span curve's: τ is affine in u on every piece.
     int polynomial_degree() const override { return base_->polynomial_degree(); }

@@ -101,6 +101,45 @@ void PiecewiseHermiteCurve::jet_into(double u, int order, JetMatrix& out) const 
     span_jet_rows(k, t, 0, order, out);
 }
 
+namespace {
+// jets_into of rows 0..Last, Dim columns: hermite_jet_rows<Dim, 0, Last>'s arithmetic per parameter,
+// written to out row by row.
+template <int Dim, int Last>
+void hermite_jets(const Eigen::MatrixXd& nodes, const Eigen::MatrixXd& d0, const Eigen::MatrixXd& d1, const double* u, std::size_t count, double* out) {
+    const char* who = "cagd::spline::PiecewiseHermiteCurve::jets_into";
+    const int spans = static_cast<int>(d0.rows());
+    for (std::size_t i = 0; i < count; ++i) {
+        const auto [k, t] = locate_unit_piece(who, u[i], spans, Last);
+        double p0[Dim], p1[Dim], a[Dim], b[Dim];
+        for (int c = 0; c < Dim; ++c) p0[c] = nodes(k, c), p1[c] = nodes(k + 1, c), a[c] = d0(k, c), b[c] = d1(k, c);
+        double h[Last + 1][4];
+        for (int j = 0; j <= Last; ++j) hermite_basis_row(j, t, h[j]);
+        double* o = out + i * (Last + 1) * Dim;
+        for (int c = 0; c < Dim; ++c)
+            for (int j = 0; j <= Last; ++j) o[j * Dim + c] = h[j][0] * p0[c] + h[j][1] * p1[c] + h[j][2] * a[c] + h[j][3] * b[c];
+    }
+}
+
+template <int Dim>
+void hermite_jets(const Eigen::MatrixXd& nodes, const Eigen::MatrixXd& d0, const Eigen::MatrixXd& d1, const double* u, std::size_t count, int order, double* out) {
+    switch (order) {  // 0 ≤ order < kJetCapacity (require_jet_capacity in the caller)
+        case 0: return hermite_jets<Dim, 0>(nodes, d0, d1, u, count, out);
+        case 1: return hermite_jets<Dim, 1>(nodes, d0, d1, u, count, out);
+        case 2: return hermite_jets<Dim, 2>(nodes, d0, d1, u, count, out);
+        default: return hermite_jets<Dim, 3>(nodes, d0, d1, u, count, out);
+    }
+}
+}  // namespace
+
+void PiecewiseHermiteCurve::jets_into(const double* u, std::size_t count, int order, double* out) const {
+    require_jet_capacity("cagd::spline::PiecewiseHermiteCurve::jets_into", order + 1, static_cast<int>(nodes_.cols()));
+    switch (nodes_.cols()) {
+        case 1: return hermite_jets<1>(nodes_, d0_, d1_, u, count, order, out);
+        case 2: return hermite_jets<2>(nodes_, d0_, d1_, u, count, order, out);
+        default: return hermite_jets<3>(nodes_, d0_, d1_, u, count, order, out);
+    }
+}
+
 void PiecewiseHermiteCurve::derivatives_into(double u, int order, JetMatrix& out) const {
     const char* who = "cagd::spline::PiecewiseHermiteCurve::derivatives_into";
     require_jet_capacity(who, order, static_cast<int>(nodes_.cols()));
@@ -199,15 +238,14 @@ void tangent_directions_with(const PointList& points, TangentRule rule, bool clo
         const Row d = rule == TangentRule::circle ? Row(lb / la * a + la / lb * b) : across;
         const double length = d.norm();  // once: the check and the division use the same value
         // A reversal leaves d = 0 (Hermite A: P_{i−1} = P_{i+1}) or tiny by cancellation.
-        if (length <= 1e-14 * (la + lb))
-            fail_input(who, "the curve reverses at point " + std::to_string(i) + " (turning angle π), where no tangent direction is defined");
+        if (length <= 1e-14 * (la + lb)) fail_input(who, "the curve reverses at point " + std::to_string(i) + " (turning angle π), where no tangent direction is defined");
         return d / length;
     };
     Row before = at(closed ? n - 1 : 0), here = at(closed ? 0 : 1);
     Row a = here - before;
     double la = a.norm();
     const double first_chord = la;  // open: |P_1 − P_0|
-    Row first_interior = at(0);  // t_1 (set in the loop), for an open circle end
+    Row first_interior = at(0);     // t_1 (set in the loop), for an open circle end
     for (Eigen::Index i = closed ? 0 : 1; with_interior && i < (closed ? n : n - 1); ++i) {
         const Row next = at(i + 1 == n ? 0 : i + 1), b = next - here;
         const double lb = b.norm();
@@ -217,7 +255,7 @@ void tangent_directions_with(const PointList& points, TangentRule rule, bool clo
         before = here, here = next, a = b, la = lb;
     }
     if (closed) return;
-    if (!with_interior) {  // t_1 and the last chord, as the loop would have left them
+    if (!with_interior) {                   // t_1 and the last chord, as the loop would have left them
         if (rule == TangentRule::circle) {  // (n ≥ 3 for the circle rule)
             const Row b = at(2) - at(1);
             first_interior = interior(1, a, la, b, b.norm(), at(2) - at(0));

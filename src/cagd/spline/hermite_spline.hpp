@@ -68,6 +68,8 @@ public:
     Eigen::MatrixXd jet_from_left(double u, int order) const override;
     void jet_into(double u, int order, JetMatrix& out) const override;
     void derivatives_into(double u, int order, JetMatrix& out) const override;
+    /// jet_into's arithmetic written straight into `out`, the dimension and order dispatched once.
+    void jets_into(const double* u, std::size_t count, int order, double* out) const override;
     std::vector<double> breakpoints() const override;
     int polynomial_degree() const override { return 3; }
 
