@@ -30,7 +30,6 @@ PointList wave(int n) {
     return p;
 }
 
-
 }  // namespace
 
 TEST(Methods, NamesAreUniqueAndFound) {
@@ -98,6 +97,20 @@ TEST(Methods, EveryMethodInterpolatesWithItsDefaults) {
     }
 }
 
+// body(which, curve) for each method's curve through wave(6) in u and the same curve in its own
+// parameter (MethodParameterCurve, what Python evaluates).
+template <class Body>
+void for_each_method_curve(Body body) {
+    const PointList p = wave(6);
+    for (const Method& m : registry()) {
+        const InterpolationResult r = interpolate(m.name, p, false);
+        ASSERT_TRUE(r.interpolant) << m.name;
+        const MethodParameterCurve in_method_parameter(*r.interpolant);
+        body(m.name + " (u)", *r.interpolant->curve);
+        body(m.name + " (method parameter)", static_cast<const Curve&>(in_method_parameter));
+    }
+}
+
 TEST(Methods, AllocationFreeJetsEqualTheAllocatingOnes) {
     // Curve::jet_into / derivatives_into (overridden by the piecewise Hermite curves and the
     // method-parameter wrapper, the default elsewhere) give jet() / derivatives() bit for bit, at
@@ -105,39 +118,31 @@ TEST(Methods, AllocationFreeJetsEqualTheAllocatingOnes) {
     // for bit (fairness_measures takes one for the other where it needs no position). Each
     // method's curve in u and the same curve in its own parameter (MethodParameterCurve, what
     // Python evaluates).
-    const PointList p = wave(6);
-    for (const Method& m : registry()) {
-        const InterpolationResult r = interpolate(m.name, p, false);
-        ASSERT_TRUE(r.interpolant) << m.name;
-        const MethodParameterCurve in_method_parameter(*r.interpolant);
-        for (const Curve* curve : {static_cast<const Curve*>(r.interpolant->curve.get()), static_cast<const Curve*>(&in_method_parameter)}) {
-            const Curve& c = *curve;
-            const std::string which = m.name + (curve == &in_method_parameter ? " (method parameter)" : " (u)");
-            JetMatrix J;
-            for (int k = 0; k <= 40; ++k) {
-                const double t = c.t_min() + (c.t_max() - c.t_min()) * k / 40.0;
-                for (int order = 0; order < kJetCapacity; ++order) {
-                    c.jet_into(t, order, J);
-                    const Eigen::MatrixXd expected = c.jet(t, order);
-                    ASSERT_EQ(J.rows(), expected.rows()) << which;
-                    ASSERT_EQ(J.cols(), expected.cols()) << which;
-                    EXPECT_TRUE((J.array() == expected.array()).all()) << which << " jet, t = " << t << ", order " << order;
-                }
-                for (int order = 1; order <= kJetCapacity; ++order) {
-                    c.derivatives_into(t, order, J);
-                    EXPECT_TRUE((J.array() == c.derivatives(t, order).array()).all()) << which << " derivatives, t = " << t << ", order " << order;
-                    if (order < kJetCapacity) {
-                        JetMatrix full;
-                        c.jet_into(t, order, full);
-                        EXPECT_TRUE((J.array() == full.bottomRows(order).array()).all()) << which << " derivatives against the jet, t = " << t << ", order " << order;
-                    }
+    for_each_method_curve([](const std::string& which, const Curve& c) {
+        JetMatrix J;
+        for (int k = 0; k <= 40; ++k) {
+            const double t = c.t_min() + (c.t_max() - c.t_min()) * k / 40.0;
+            for (int order = 0; order < kJetCapacity; ++order) {
+                c.jet_into(t, order, J);
+                const Eigen::MatrixXd expected = c.jet(t, order);
+                ASSERT_EQ(J.rows(), expected.rows()) << which;
+                ASSERT_EQ(J.cols(), expected.cols()) << which;
+                EXPECT_TRUE((J.array() == expected.array()).all()) << which << " jet, t = " << t << ", order " << order;
+            }
+            for (int order = 1; order <= kJetCapacity; ++order) {
+                c.derivatives_into(t, order, J);
+                EXPECT_TRUE((J.array() == c.derivatives(t, order).array()).all()) << which << " derivatives, t = " << t << ", order " << order;
+                if (order < kJetCapacity) {
+                    JetMatrix full;
+                    c.jet_into(t, order, full);
+                    EXPECT_TRUE((J.array() == full.bottomRows(order).array()).all()) << which << " derivatives against the jet, t = " << t << ", order " << order;
                 }
             }
-            EXPECT_THROW(c.jet_into(c.t_min(), kJetCapacity, J), InvalidInput) << which;
-            EXPECT_THROW(c.derivatives_into(c.t_min(), 0, J), InvalidInput) << which;
-            EXPECT_THROW(c.jet_into(c.t_max() + 1.0, 1, J), InvalidInput) << which;
         }
-    }
+        EXPECT_THROW(c.jet_into(c.t_min(), kJetCapacity, J), InvalidInput) << which;
+        EXPECT_THROW(c.derivatives_into(c.t_min(), 0, J), InvalidInput) << which;
+        EXPECT_THROW(c.jet_into(c.t_max() + 1.0, 1, J), InvalidInput) << which;
+    });
 }
 
 TEST(Methods, BatchJetsEqualTheJetsOneByOne) {
@@ -145,37 +150,29 @@ TEST(Methods, BatchJetsEqualTheJetsOneByOne) {
     // wrapper, the default elsewhere) writes jet_into's values bit for bit, at every node (the
     // breakpoints of the curve in u, and of the curve in its own parameter), between them and at
     // both ends; blocks longer than the wrapper's own (256) included.
-    const PointList p = wave(6);
-    for (const Method& m : registry()) {
-        const InterpolationResult r = interpolate(m.name, p, false);
-        ASSERT_TRUE(r.interpolant) << m.name;
-        const MethodParameterCurve in_method_parameter(*r.interpolant);
-        for (const Curve* curve : {static_cast<const Curve*>(r.interpolant->curve.get()), static_cast<const Curve*>(&in_method_parameter)}) {
-            const Curve& c = *curve;
-            const std::string which = m.name + (curve == &in_method_parameter ? " (method parameter)" : " (u)");
-            std::vector<double> t;
-            for (int k = 0; k <= 600; ++k) t.push_back(c.t_min() + (c.t_max() - c.t_min()) * k / 600.0);
-            for (const double b : c.breakpoints()) t.push_back(b);
-            const int dim = c.dimension();
-            for (int order = 0; order < kJetCapacity; ++order) {
-                const std::size_t stride = static_cast<std::size_t>((order + 1) * dim);
-                std::vector<double> batch(t.size() * stride, std::numeric_limits<double>::quiet_NaN());
-                c.jets_into(t.data(), t.size(), order, batch.data());
-                JetMatrix J;
-                for (std::size_t k = 0; k < t.size(); ++k) {
-                    c.jet_into(t[k], order, J);
-                    for (int row = 0; row <= order; ++row)
-                        for (int col = 0; col < dim; ++col)
-                            ASSERT_EQ(bits_of(batch[k * stride + static_cast<std::size_t>(row * dim + col)]), bits_of(J(row, col)))
-                                << which << ", t = " << t[k] << ", order " << order << ", row " << row << ", column " << col;
-                }
+    for_each_method_curve([](const std::string& which, const Curve& c) {
+        std::vector<double> t;
+        for (int k = 0; k <= 600; ++k) t.push_back(c.t_min() + (c.t_max() - c.t_min()) * k / 600.0);
+        for (const double b : c.breakpoints()) t.push_back(b);
+        const int dim = c.dimension();
+        for (int order = 0; order < kJetCapacity; ++order) {
+            const std::size_t stride = static_cast<std::size_t>((order + 1) * dim);
+            std::vector<double> batch(t.size() * stride, std::numeric_limits<double>::quiet_NaN());
+            c.jets_into(t.data(), t.size(), order, batch.data());
+            JetMatrix J;
+            for (std::size_t k = 0; k < t.size(); ++k) {
+                c.jet_into(t[k], order, J);
+                for (int row = 0; row <= order; ++row)
+                    for (int col = 0; col < dim; ++col)
+                        ASSERT_EQ(bits_of(batch[k * stride + static_cast<std::size_t>(row * dim + col)]), bits_of(J(row, col)))
+                            << which << ", t = " << t[k] << ", order " << order << ", row " << row << ", column " << col;
             }
-            std::vector<double> out(64);
-            const double outside[] = {c.t_min(), c.t_max() + 1.0};
-            EXPECT_THROW(c.jets_into(outside, 2, 1, out.data()), InvalidInput) << which;
-            EXPECT_THROW(c.jets_into(outside, 1, kJetCapacity, out.data()), InvalidInput) << which;
         }
-    }
+        std::vector<double> out(64);
+        const double outside[] = {c.t_min(), c.t_max() + 1.0};
+        EXPECT_THROW(c.jets_into(outside, 2, 1, out.data()), InvalidInput) << which;
+        EXPECT_THROW(c.jets_into(outside, 1, kJetCapacity, out.data()), InvalidInput) << which;
+    });
 }
 
 TEST(Methods, MethodsPageIsTheRegistry) {
