@@ -47,15 +47,22 @@ namespace {
 // Rows First..Last of span k's jet at local t (see span_jet_rows), with the column count and the
 // rows known at compile time (Dim ≤ 3, First ≤ 1, Last ≤ 4), inlined into the jet_into overrides: the basis
 // rows are straight-line code, as in a hand-written loop.
-template <int Dim, int First, int Last>
-[[gnu::always_inline]] inline void hermite_jet_rows(const Eigen::MatrixXd& nodes, const Eigen::MatrixXd& d0, const Eigen::MatrixXd& d1, int k, double t, JetMatrix& out) {
-    out.resize(Last - First + 1, Dim);
+// The arithmetic, once: put(j − First, c, value) receives each entry (a JetMatrix here, a batch's
+// array in hermite_jets below).
+template <int Dim, int First, int Last, class Put>
+[[gnu::always_inline]] inline void hermite_jet_entries(const Eigen::MatrixXd& nodes, const Eigen::MatrixXd& d0, const Eigen::MatrixXd& d1, int k, double t, Put put) {
     double p0[Dim], p1[Dim], a[Dim], b[Dim];
     for (int c = 0; c < Dim; ++c) p0[c] = nodes(k, c), p1[c] = nodes(k + 1, c), a[c] = d0(k, c), b[c] = d1(k, c);
     double h[Last + 1][4];
     for (int j = First; j <= Last; ++j) hermite_basis_row(j, t, h[j]);
     for (int c = 0; c < Dim; ++c)
-        for (int j = First; j <= Last; ++j) out(j - First, c) = h[j][0] * p0[c] + h[j][1] * p1[c] + h[j][2] * a[c] + h[j][3] * b[c];
+        for (int j = First; j <= Last; ++j) put(j - First, c, h[j][0] * p0[c] + h[j][1] * p1[c] + h[j][2] * a[c] + h[j][3] * b[c]);
+}
+
+template <int Dim, int First, int Last>
+[[gnu::always_inline]] inline void hermite_jet_rows(const Eigen::MatrixXd& nodes, const Eigen::MatrixXd& d0, const Eigen::MatrixXd& d1, int k, double t, JetMatrix& out) {
+    out.resize(Last - First + 1, Dim);
+    hermite_jet_entries<Dim, First, Last>(nodes, d0, d1, k, t, [&](int row, int c, double v) { out(row, c) = v; });
 }
 
 template <int Dim>
@@ -102,21 +109,16 @@ void PiecewiseHermiteCurve::jet_into(double u, int order, JetMatrix& out) const 
 }
 
 namespace {
-// jets_into of rows 0..Last, Dim columns: hermite_jet_rows<Dim, 0, Last>'s arithmetic per parameter,
-// written to out row by row.
+// jets_into of rows 0..Last, Dim columns: hermite_jet_entries per parameter, written to out row by
+// row (the arithmetic of jet_into).
 template <int Dim, int Last>
 void hermite_jets(const Eigen::MatrixXd& nodes, const Eigen::MatrixXd& d0, const Eigen::MatrixXd& d1, const double* u, std::size_t count, double* out) {
     const char* who = "cagd::spline::PiecewiseHermiteCurve::jets_into";
     const int spans = static_cast<int>(d0.rows());
     for (std::size_t i = 0; i < count; ++i) {
         const auto [k, t] = locate_unit_piece(who, u[i], spans, Last);
-        double p0[Dim], p1[Dim], a[Dim], b[Dim];
-        for (int c = 0; c < Dim; ++c) p0[c] = nodes(k, c), p1[c] = nodes(k + 1, c), a[c] = d0(k, c), b[c] = d1(k, c);
-        double h[Last + 1][4];
-        for (int j = 0; j <= Last; ++j) hermite_basis_row(j, t, h[j]);
         double* o = out + i * (Last + 1) * Dim;
-        for (int c = 0; c < Dim; ++c)
-            for (int j = 0; j <= Last; ++j) o[j * Dim + c] = h[j][0] * p0[c] + h[j][1] * p1[c] + h[j][2] * a[c] + h[j][3] * b[c];
+        hermite_jet_entries<Dim, 0, Last>(nodes, d0, d1, k, t, [&](int row, int c, double v) { o[row * Dim + c] = v; });
     }
 }
 
