@@ -6,6 +6,8 @@
 #include <unistd.h>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
+#include <Geom2dAPI_Interpolate.hxx>
+#include <Geom2d_BSplineCurve.hxx>
 #include <GeomAPI_Interpolate.hxx>
 #include <Geom_BSplineCurve.hxx>
 #include <Geom_BSplineSurface.hxx>
@@ -21,6 +23,7 @@
 #include <TColgp_Array1OfPnt.hxx>
 #include <TColgp_Array2OfPnt.hxx>
 #include <TColgp_HArray1OfPnt.hxx>
+#include <TColgp_HArray1OfPnt2d.hxx>
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
 
@@ -29,6 +32,7 @@
 #include <fstream>
 #include <mutex>
 #include <sstream>
+#include <type_traits>
 
 namespace {
 
@@ -42,30 +46,53 @@ void silence_messenger() { Message::DefaultMessenger()->ChangePrinters().Clear()
 
 gp_Pnt point(const Eigen::MatrixXd& rows, Eigen::Index i) { return gp_Pnt(rows(i, 0), rows(i, 1), rows.cols() > 2 ? rows(i, 2) : 0.0); }
 
-bool interpolate(const Eigen::MatrixXd& points, bool closed, double tolerance, OpenCascadeBSpline& out, std::string& message) {
+// Row i of `rows` mapped to (row − centre) / scale: a gp_Pnt2d for planar rows, a gp_Pnt otherwise.
+template <class Point>
+Point mapped_point(const Eigen::MatrixXd& rows, Eigen::Index i, const Eigen::RowVectorXd& centre, double scale) {
+    double xyz[3] = {0.0, 0.0, 0.0};
+    for (Eigen::Index c = 0; c < rows.cols(); ++c) xyz[c] = (rows(i, c) - centre(c)) / scale;
+    if constexpr (std::is_same_v<Point, gp_Pnt2d>) {
+        return gp_Pnt2d(xyz[0], xyz[1]);
+    } else {
+        return gp_Pnt(xyz[0], xyz[1], xyz[2]);
+    }
+}
+
+// GeomAPI_Interpolate, or for planar points Geom2dAPI_Interpolate (the same algorithm on 2-D
+// points: its arrays hold two coordinates, not three with z = 0), into `out`, mapped back.
+template <class Interpolator, class PointArray, class Point>
+bool interpolate_with(const Eigen::MatrixXd& points, const Eigen::RowVectorXd& centre, double scale, bool closed, double tolerance, OpenCascadeBSpline& out,
+                      std::string& message) {
+    Handle(PointArray) array = new PointArray(1, static_cast<int>(points.rows()));
+    for (Eigen::Index i = 0; i < points.rows(); ++i) array->SetValue(static_cast<int>(i) + 1, mapped_point<Point>(points, i, centre, scale));
+    Interpolator interpolate(array, closed, tolerance);
+    interpolate.Perform();
+    if (!interpolate.IsDone()) {
+        message = std::string("OpenCASCADE's ") + (std::is_same_v<Point, gp_Pnt2d> ? "Geom2dAPI_Interpolate" : "GeomAPI_Interpolate") + " did not find a curve";
+        return false;
+    }
+    // The interpolator's own curve, changed in place (no copy: the interpolator ends here).
+    const auto& curve = interpolate.Curve();
+    if (curve->IsPeriodic()) curve->SetNotPeriodic();
+    out.degree = curve->Degree();
+    out.knots.clear();
+    out.knots.reserve(static_cast<std::size_t>(curve->NbPoles() + curve->Degree() + 1));
+    for (int k = 1; k <= curve->NbKnots(); ++k) out.knots.insert(out.knots.end(), static_cast<std::size_t>(curve->Multiplicity(k)), curve->Knot(k) * scale);
+    out.poles.resize(curve->NbPoles(), points.cols());
+    for (int i = 1; i <= curve->NbPoles(); ++i) {
+        const Point& q = curve->Pole(i);
+        for (Eigen::Index c = 0; c < points.cols(); ++c) out.poles(i - 1, c) = q.Coord(static_cast<int>(c) + 1) * scale + centre(c);
+    }
+    return true;
+}
+
+bool interpolate(const Eigen::MatrixXd& points, const Eigen::RowVectorXd& centre, double scale, bool closed, double tolerance, OpenCascadeBSpline& out,
+                 std::string& message) {
     try {
-        Handle(TColgp_HArray1OfPnt) array = new TColgp_HArray1OfPnt(1, static_cast<int>(points.rows()));
-        for (Eigen::Index i = 0; i < points.rows(); ++i) array->SetValue(static_cast<int>(i) + 1, point(points, i));
-        GeomAPI_Interpolate interpolate(array, closed, tolerance);
-        interpolate.Perform();
-        if (!interpolate.IsDone()) {
-            message = "OpenCASCADE's GeomAPI_Interpolate did not find a curve";
-            return false;
-        }
-        Handle(Geom_BSplineCurve) curve = Handle(Geom_BSplineCurve)::DownCast(interpolate.Curve()->Copy());
-        if (curve->IsPeriodic()) curve->SetNotPeriodic();
-        out.degree = curve->Degree();
-        out.knots.clear();
-        for (int k = 1; k <= curve->NbKnots(); ++k) out.knots.insert(out.knots.end(), static_cast<std::size_t>(curve->Multiplicity(k)), curve->Knot(k));
-        out.poles.resize(curve->NbPoles(), points.cols());
-        for (int i = 1; i <= curve->NbPoles(); ++i) {
-            const gp_Pnt q = curve->Pole(i);
-            const double xyz[3] = {q.X(), q.Y(), q.Z()};
-            for (Eigen::Index c = 0; c < points.cols(); ++c) out.poles(i - 1, c) = xyz[c];
-        }
-        return true;
+        if (points.cols() == 2) return interpolate_with<Geom2dAPI_Interpolate, TColgp_HArray1OfPnt2d, gp_Pnt2d>(points, centre, scale, closed, tolerance, out, message);
+        return interpolate_with<GeomAPI_Interpolate, TColgp_HArray1OfPnt, gp_Pnt>(points, centre, scale, closed, tolerance, out, message);
     } catch (const Standard_Failure& e) {
-        message = std::string("OpenCASCADE's GeomAPI_Interpolate: ") + e.GetMessageString();
+        message = std::string("OpenCASCADE's ") + (points.cols() == 2 ? "Geom2dAPI_Interpolate: " : "GeomAPI_Interpolate: ") + e.GetMessageString();
         return false;
     }
 }

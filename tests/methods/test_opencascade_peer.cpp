@@ -10,6 +10,7 @@
 #include <string>
 
 #include "cagd/methods/method_registry.hpp"
+#include "cagd/spline/bspline.hpp"
 
 using namespace cagd;
 using namespace cagd::methods;
@@ -93,6 +94,28 @@ TEST(OpenCascadePeer, TinyAndHugeDataGiveTheSameShape) {
             const double t = one.interpolant->curve->t_max() * k / 20;
             EXPECT_LE((s.interpolant->curve->point(std::min(t * scale, s.interpolant->curve->t_max())) / scale - one.interpolant->curve->point(t)).norm(), 1e-12);
         }
+    }
+}
+
+// Planar points go through Geom2dAPI_Interpolate (two coordinates per point in OpenCASCADE's arrays,
+// not three): the same curve, bit for bit, as GeomAPI_Interpolate on the points with z = 0.
+TEST(OpenCascadePeer, PlanarPointsGiveTheCurveOfTheSpacePathBitForBit) {
+    if (!has_opencascade_peer()) GTEST_SKIP() << "a library without OpenCASCADE";
+    for (bool closed : {false, true}) {
+        PointList planar = wavy_points(41, false);
+        planar(7, 0) += 1e-3;  // not symmetric
+        PointList space(planar.rows(), 3);
+        space << planar, Eigen::VectorXd::Zero(planar.rows());
+        const InterpolationResult a = interpolate("occt-interpolate", planar, closed), b = interpolate("occt-interpolate", space, closed);
+        ASSERT_TRUE(a.outcome.ok() && b.outcome.ok()) << a.outcome.message << b.outcome.message;
+        const auto* ca = dynamic_cast<const BSplineCurve*>(a.interpolant->curve.get());
+        const auto* cb = dynamic_cast<const BSplineCurve*>(b.interpolant->curve.get());
+        ASSERT_TRUE(ca && cb);
+        EXPECT_EQ(ca->knots(), cb->knots()) << "closed " << closed;
+        ASSERT_EQ(ca->control_points().rows(), cb->control_points().rows());
+        EXPECT_TRUE(ca->control_points() == cb->control_points().leftCols(2)) << "closed " << closed;
+        EXPECT_TRUE(cb->control_points().col(2).isZero(0.0)) << "closed " << closed;
+        EXPECT_EQ(a.interpolant->node_parameters, b.interpolant->node_parameters);
     }
 }
 

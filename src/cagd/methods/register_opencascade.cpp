@@ -41,20 +41,20 @@ InterpolationResult opencascade_interpolant(const PointList& p, bool closed) {
     const Eigen::RowVectorXd centre = 0.5 * (lo + hi);
     const double scale = (hi - lo).norm();
     InterpolationResult r;
-    const Eigen::MatrixXd unit = (p.rowwise() - centre) / scale;
+    // OpenCASCADE interpolates the points mapped to a unit diagonal about the box's centre, and
+    // maps its curve back (knots · scale, poles · scale + centre).
     cagd::detail::OpenCascadeBSpline curve;
-    if (!occt.interpolate(unit, closed, kOpenCascadeCoincidence, curve, r.outcome.message)) {
+    if (!occt.interpolate(p, centre, scale, closed, kOpenCascadeCoincidence, curve, r.outcome.message)) {
         r.outcome.status = Status::no_solution;
         return r;
     }
     std::vector<double> knots = std::move(curve.knots);
-    for (double& k : knots) k *= scale;
-    Eigen::MatrixXd poles = (curve.poles * scale).rowwise() + centre;
     // The chord-length parameters, each snapped onto the knot OpenCASCADE put there (they differ by
     // rounding; the curve's pieces start at the knots).
     Interpolant in;
     in.node_parameters.push_back(0.0);
-    for (Eigen::Index i = 1; i < node_count(p, closed); ++i) in.node_parameters.push_back(in.node_parameters.back() + (p.row(i % n) - p.row(i - 1)).norm());
+    in.node_parameters.reserve(static_cast<std::size_t>(node_count(p, closed)));
+    for (Eigen::Index i = 1; i < node_count(p, closed); ++i) in.node_parameters.push_back(in.node_parameters.back() + (p.row(i < n ? i : 0) - p.row(i - 1)).norm());
     // Both ascend: one merged walk, O(n).
     auto knot = knots.begin();
     for (double& u : in.node_parameters) {
@@ -66,7 +66,7 @@ InterpolationResult opencascade_interpolant(const PointList& p, bool closed) {
             }
     }
     in.dtau_du = unit_lengths(p, closed);
-    in.curve = std::make_shared<BSplineCurve>(curve.degree, std::move(knots), std::move(poles));
+    in.curve = std::make_shared<BSplineCurve>(curve.degree, std::move(knots), std::move(curve.poles));
     return result_of(std::move(in));
 }
 

@@ -25,7 +25,7 @@
 namespace cagd::detail {
 
 /// What both sides must agree on; a plugin reporting anything else is not loaded.
-inline constexpr const char* kOpenCascadePluginInterface = "cagd-occt-plugin 2 " CAGD_LIBRARY_VERSION;
+inline constexpr const char* kOpenCascadePluginInterface = "cagd-occt-plugin 3 " CAGD_LIBRARY_VERSION;
 
 /// A B-spline in OpenCASCADE's terms: degree, the full knot vector (values repeated by
 /// multiplicity, clamped), poles one per row (x, y[, z]).
@@ -39,10 +39,14 @@ struct OpenCascadeBSpline {
 /// since OpenCASCADE's interface parameters are process-wide).
 struct OpenCascadePlugin {
     const char* interface = nullptr;  ///< kOpenCascadePluginInterface of the plugin's build
-    /// GeomAPI_Interpolate through the rows of `points` (2 or 3 columns; planar points get z = 0),
-    /// periodic when `closed`, points closer than `tolerance` coincident; a periodic result is
-    /// returned in its clamped form (SetNotPeriodic). False with `message` when OpenCASCADE fails.
-    bool (*interpolate)(const Eigen::MatrixXd& points, bool closed, double tolerance, OpenCascadeBSpline& curve, std::string& message) = nullptr;
+    /// GeomAPI_Interpolate through the rows of `points` (3 columns; 2 columns: Geom2dAPI_Interpolate,
+    /// the same curve bit for bit as with z = 0) mapped to (point − centre) / scale (`centre` has a coordinate per column), periodic when
+    /// `closed`, mapped points closer than `tolerance` coincident; the curve is mapped back (knots
+    /// · scale, poles · scale + centre) and a periodic one returned in its clamped form
+    /// (SetNotPeriodic). The maps are done here, point by point, so that neither side holds a
+    /// mapped copy of every point. False with `message` when OpenCASCADE fails.
+    bool (*interpolate)(const Eigen::MatrixXd& points, const Eigen::RowVectorXd& centre, double scale, bool closed, double tolerance, OpenCascadeBSpline& curve,
+                        std::string& message) = nullptr;
     /// The STEP (AP214) text of one edge on the curve; false with `message` when OpenCASCADE fails.
     bool (*step_curve)(const OpenCascadeBSpline& curve, std::string& step, std::string& message) = nullptr;
     /// The STEP text of one face on the B-spline surface of degrees (du, dv), knot vectors ku, kv and
