@@ -1,8 +1,9 @@
 # The figures of a method comparison (`cagd compare`, and the comparisons in the report).
 # Set before loading: datadir, prefix (file-name prefix inside datadir, may be ''), heading (a
 # title line), and optionally formats (default "png svg"), figures (default "curves combs
-# curvature"), point_every (draw every n-th data point; default 1) and the file names f_methods,
-# f_points, f_curves, f_combs, f_kappa. The files are the comparison folder's tables
+# curvature"), point_every (draw every n-th data point; default 1), panel_point_every (the same in
+# each small panel of the combs figure, which draws the points once per method; default
+# point_every) and the file names f_methods, f_points, f_curves, f_combs, f_kappa. The files are the comparison folder's tables
 # (src/cagd/compare/comparison_tables.hpp), read by column name: methods.csv (method, and per
 # figure file the first row and row count of each method), points.csv (x, y), curves.csv
 # (x, y), combs.csv (x, y, tip_x, tip_y) and curvature.csv (s, kappa); it writes prefix.'curves',
@@ -22,6 +23,7 @@ if (!exists("f_curves")) f_curves = datadir.'/'.prefix.'curves.csv'
 if (!exists("f_combs")) f_combs = datadir.'/'.prefix.'combs.csv'
 if (!exists("f_kappa")) f_kappa = datadir.'/'.prefix.'curvature.csv'
 if (!exists("point_every")) point_every = 1
+if (!exists("panel_point_every")) panel_point_every = point_every
 if (!exists("space")) space = 0
 # The positions of the columns called `names` (space-separated) in the header line of file f, as
 # words (0 where there is none): one awk run per file.
@@ -107,14 +109,14 @@ do for [t in formats] {
       plot f_combs skip 1 every ::first(combs_first, i)::last(combs_first, combs_count, i) using bx:by:(column(btx) - column(bx)):(column(bty) - column(by)) with vectors nohead lc rgb '#9ecae1', \
            f_combs skip 1 every ::first(combs_first, i)::last(combs_first, combs_count, i) using btx:bty with lines lc rgb '#6baed6', \
            f_curves skip 1 every ::first(curves_first, i)::last(curves_first, curves_count, i) using cx:cy with lines lw 1.5 lc rgb '#08306b', \
-           f_points skip 1 every point_every using px:py with points pt 7 ps 0.5 lc rgb '#000000'
+           f_points skip 1 every panel_point_every using px:py with points pt 7 ps 0.5 lc rgb '#000000'
     } else {
       set label 1 'no comb: '.status(i).' (see the table)' at graph 0.5, graph 0.92 center noenhanced
       if (has(curves_count, i)) {  # a curve without a comb (a cusp): the curve still shows
         plot f_curves skip 1 every ::first(curves_first, i)::last(curves_first, curves_count, i) using cx:cy with lines lw 1.5 lc rgb '#08306b', \
-             f_points skip 1 every point_every using px:py with points pt 7 ps 0.5 lc rgb '#000000'
+             f_points skip 1 every panel_point_every using px:py with points pt 7 ps 0.5 lc rgb '#000000'
       } else {
-        plot f_points skip 1 every point_every using px:py with points pt 7 ps 0.5 lc rgb '#000000'
+        plot f_points skip 1 every panel_point_every using px:py with points pt 7 ps 0.5 lc rgb '#000000'
       }
       unset label 1
     }
