@@ -55,10 +55,11 @@ InterpolationResult opencascade_interpolant(const PointList& p, bool closed) {
     in.node_parameters.push_back(0.0);
     in.node_parameters.reserve(static_cast<std::size_t>(node_count(p, closed)));
     for (Eigen::Index i = 1; i < node_count(p, closed); ++i) in.node_parameters.push_back(in.node_parameters.back() + (p.row(i < n ? i : 0) - p.row(i - 1)).norm());
-    // Both ascend: one merged walk, O(n).
+    // Both ascend: one merged walk, O(n) (a step at a time: a binary search per node over the
+    // knots left would be O(n log n), a fifth of the construction at 10^6 points).
     auto knot = knots.begin();
     for (double& u : in.node_parameters) {
-        knot = std::lower_bound(knot, knots.end(), u);
+        while (knot != knots.end() && *knot < u) ++knot;  // the first knot ≥ u, as lower_bound finds it
         for (auto k : {knot == knots.begin() ? knot : knot - 1, knot == knots.end() ? knot - 1 : knot})
             if (std::abs(*k - u) <= 1e-12 * knots.back()) {
                 u = *k;
