@@ -223,3 +223,30 @@ TEST(BSpline, JetsAtKnotsAreTheA23ValuesBitForBit) {
             EXPECT_LE((c.jet(c.t_max(), 0).row(0) - c.control_points().row(n - 1)).norm(), 4e-16);
         }
 }
+
+// Off the knots a jet comes from each span's Taylor coefficients c_k = D_k / k! at the span's middle,
+// D = (A2.3's basis derivatives there) · (the span's control points). At the middle itself (h = 0)
+// Horner leaves k! · c_k: the table's D, bit for bit, equals the product formed from
+// basis_function_derivatives' MatrixXd (the table forms it from the stack array, degree ≤ 7).
+TEST(BSpline, TaylorTableIsTheA23ProductAtEachSpanMiddleBitForBit) {
+    for (int p = 1; p <= 9; ++p)
+        for (int dim : {2, 3}) {
+            const BSplineCurve planar = random_curve(p, p + 12, static_cast<unsigned>(70 + p), false);
+            Eigen::MatrixXd control(planar.control_points().rows(), dim);
+            control.leftCols(2) = planar.control_points();
+            if (dim == 3) control.col(2) = planar.control_points().col(0).array() * 0.7 - 0.1;
+            const BSplineCurve c(p, planar.knots(), control);
+            const std::vector<double>& U = c.knots();
+            for (int s = p; s < static_cast<int>(control.rows()); ++s) {
+                const double middle = 0.5 * (U[static_cast<std::size_t>(s)] + U[static_cast<std::size_t>(s) + 1]);
+                const Eigen::MatrixXd D = basis_function_derivatives(p, U, s, middle, p) * control.middleRows(s - p, p + 1);
+                const Eigen::MatrixXd jet = c.jet(middle, p);
+                double factorial = 1.0;
+                for (int k = 0; k <= p; ++k) {
+                    if (k > 0) factorial *= k;
+                    for (int e = 0; e < dim; ++e)
+                        ASSERT_EQ(jet(k, e), factorial * (D(k, e) / factorial)) << "degree " << p << " dimension " << dim << " span " << s << " row " << k;
+                }
+            }
+        }
+}

@@ -78,8 +78,11 @@ namespace {
 
 // Piegl & Tiller, The NURBS Book (2nd ed.), algorithm A2.3. The work arrays have at most `Max`
 // rows and columns (Eigen::Dynamic: unbounded): on the stack for the usual low degrees.
-template <int Max, class Ders>
-void basis_function_derivatives_a23(int p, const std::vector<double>& U, int span, double u, int order, Ders& ders) {
+// With Fixed ≥ 0 the degree is that constant (p must equal it): the compiler then unrolls the loops;
+// the operations and their order are the same, so are the values, bit for bit.
+template <int Max, int Fixed = -1, class Ders>
+void basis_function_derivatives_a23(int degree, const std::vector<double>& U, int span, double u, int order, Ders& ders) {
+    const int p = Fixed >= 0 ? Fixed : degree;
     using Work = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, Max, Max>;
     using WorkVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, Max, 1>;
     const int nd = std::min(order, p);
@@ -147,7 +150,13 @@ Eigen::MatrixXd basis_function_derivatives(int p, const std::vector<double>& U, 
 void basis_function_derivatives_into(int p, const std::vector<double>& U, int span, double u, int order, BasisDerivatives& ders) {
     if (p < 0 || p + 1 > kStackOrder || order < 0 || order + 1 > kStackOrder)
         fail_input("cagd::basis_function_derivatives_into", "needs degree 0..7 and order 0..7, got " + std::to_string(p) + " and " + std::to_string(order));
-    basis_function_derivatives_a23<kStackOrder>(p, U, span, u, order, ders);
+    switch (p) {  // the usual degrees unrolled
+        case 2: return basis_function_derivatives_a23<kStackOrder, 2>(p, U, span, u, order, ders);
+        case 3: return basis_function_derivatives_a23<kStackOrder, 3>(p, U, span, u, order, ders);
+        case 4: return basis_function_derivatives_a23<kStackOrder, 4>(p, U, span, u, order, ders);
+        case 5: return basis_function_derivatives_a23<kStackOrder, 5>(p, U, span, u, order, ders);
+        default: return basis_function_derivatives_a23<kStackOrder>(p, U, span, u, order, ders);
+    }
 }
 
 double BSplineCurve::span_middle(int span) const { return 0.5 * (knots_[static_cast<std::size_t>(span)] + knots_[static_cast<std::size_t>(span) + 1]); }
@@ -156,10 +165,20 @@ const double* BSplineCurve::taylor(int span) const {
     std::call_once(*taylor_.once, [&] {
         const int p = degree_, dim = dimension(), n = static_cast<int>(control_.rows());
         std::vector<double> c(static_cast<std::size_t>((n - p) * (p + 1) * dim), 0.0);
+        // The basis derivatives on the stack (degree ≤ 7) and the product's array reused: no heap per
+        // span. The same product, bit for bit, as from basis_function_derivatives' MatrixXd (both
+        // sizes are dynamic, so Eigen sums each entry in the same order; tested).
+        BasisDerivatives stack_ders;
+        Eigen::MatrixXd heap_ders, d;
         for (int s = p; s < n; ++s) {
             if (!(knots_[static_cast<std::size_t>(s)] < knots_[static_cast<std::size_t>(s) + 1])) continue;  // empty span: never located
-            const Eigen::MatrixXd ders = basis_function_derivatives(p, knots_, s, span_middle(s), p);
-            const Eigen::MatrixXd d = ders * control_.middleRows(s - p, p + 1);
+            if (p + 1 <= kStackOrder) {
+                basis_function_derivatives_into(p, knots_, s, span_middle(s), p, stack_ders);
+                d.noalias() = stack_ders * control_.middleRows(s - p, p + 1);
+            } else {
+                heap_ders = basis_function_derivatives(p, knots_, s, span_middle(s), p);
+                d.noalias() = heap_ders * control_.middleRows(s - p, p + 1);
+            }
             double factorial = 1.0;
             for (int k = 0; k <= p; ++k) {
                 if (k > 0) factorial *= k;
@@ -176,11 +195,11 @@ const double* BSplineCurve::knot_jet(int span, bool at_end) const {
     std::call_once(*knot_jets_.once, [&] {
         const int p = degree_, dim = dimension(), n = static_cast<int>(control_.rows());
         std::vector<double> c(static_cast<std::size_t>((n - p) * 2 * (p + 1) * dim), 0.0);
+        Eigen::MatrixXd d;      // reused: no heap per knot
+        BasisDerivatives ders;  // the very product the direct path forms (degree ≤ 7 only: see taylor_jet)
         for (int s = p; s < n; ++s) {
             if (!(knots_[static_cast<std::size_t>(s)] < knots_[static_cast<std::size_t>(s) + 1])) continue;  // empty span: never located
             for (int end = 0; end < 2; ++end) {
-                Eigen::MatrixXd d;
-                BasisDerivatives ders;  // the very product the direct path forms (degree ≤ 7 only: see taylor_jet)
                 basis_function_derivatives_into(p, knots_, s, knots_[static_cast<std::size_t>(s + end)], p, ders);
                 d.noalias() = ders * control_.middleRows(s - p, p + 1);
                 for (int k = 0; k <= p; ++k)
