@@ -79,16 +79,25 @@ struct SegmentJet {
     Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxOrdinates, 2 * kMaxJetDegree> db_dw;
 };
 
+// ψ as the Newton iterations see it: the layout, the segment lengths and the de Boor ordinates read
+// from the unknowns (checked as TangentAngleSpline checks them), without building the spline (its
+// breakpoints, knot vectors and Bézier table, a twentieth of an iteration at 10^5 points).
+struct DesignPsi {
+    const KnotLayout& layout;
+    const std::vector<double>& lengths;  // Δw_j, one per segment
+    const double* de_boor;               // B_0..B_q
+};
+
 template <int P>
-void segment_jet_of_degree(const TangentAngleSpline& psi, int j, SegmentJet& out) {
+void segment_jet_of_degree(const DesignPsi& psi, int j, SegmentJet& out) {
     using Jet = JetOfDegree<P>;
-    const KnotLayout& L = psi.layout();
+    const KnotLayout& L = psi.layout;
     const int k0 = L.last_knot_of_breakpoint(j) - P + 1;
     double v[2 * P];
-    psi.local_farin_knots_into(j, v);  // the extraction is invariant under a shift of all knots
+    TangentAngleSpline::local_farin_knots_into(L, psi.lengths, j, v);  // the extraction is invariant under a shift of all knots
     Jet u[2 * P], c[P + 1], b[P + 1];
     for (int m = 0; m < 2 * P; ++m) u[m] = Jet(v[m], m);
-    for (int m = 0; m <= P; ++m) c[m] = Jet(psi.de_boor()(k0 + m), 2 * P + m);
+    for (int m = 0; m <= P; ++m) c[m] = Jet(psi.de_boor[k0 + m], 2 * P + m);
     detail::bezier_from_de_boor_of_degree<P>(u, c, b);
     const int g0 = L.breakpoint_of_knot(k0), g1 = L.breakpoint_of_knot(k0 + 2 * P - 1);
     out.b.resize(P + 1);
@@ -107,40 +116,71 @@ void segment_jet_of_degree(const TangentAngleSpline& psi, int j, SegmentJet& out
     }
 }
 
-void segment_jet(const TangentAngleSpline& psi, int j, SegmentJet& out) {
-    switch (psi.layout().degree()) {
+void segment_jet(const DesignPsi& psi, int j, SegmentJet& out) {
+    switch (psi.layout.degree()) {
         case 2: segment_jet_of_degree<2>(psi, j, out); return;
         case 3: segment_jet_of_degree<3>(psi, j, out); return;
         case 4: segment_jet_of_degree<4>(psi, j, out); return;
         default:
-            throw std::logic_error("cagd::intrinsic::segment_jet: degree " + std::to_string(psi.layout().degree()) + " is outside the layouts' 2..4");
+            throw std::logic_error("cagd::intrinsic::segment_jet: degree " + std::to_string(psi.layout.degree()) + " is outside the layouts' 2..4");
     }
 }
 
+// Where J's entries go: triplets (the first evaluation, and whenever the pattern is not known), or
+// straight into the value array of the last J, entry i added at the slot where triplet i was
+// summed (JacobianSlots, checked as assemble_jacobian checks it): the same sums in the same order,
+// so the same J, without the triplets' 16 bytes per entry written and read back.
+struct JacobianSlots {
+    double* value = nullptr;
+    const int *inner = nullptr, *outer = nullptr, *slot = nullptr;
+    std::size_t count = 0, next = 0;
+    bool failed = false;  // an entry not where it was: the caller rebuilds J from triplets
+};
+
 class RowWriter {
 public:
-    RowWriter(const KnotLayout& L, std::vector<Eigen::Triplet<double>>* t) : L_(L), t_(t) {}
+    RowWriter(const KnotLayout& L, std::vector<Eigen::Triplet<double>>* t, JacobianSlots* slots = nullptr) : L_(L), t_(t), slots_(slots) {}
+    bool writes() const { return t_ || slots_; }
+    // One entry of J.
+    void entry(int row, int col, double v) const {
+        if (slots_) {
+            JacobianSlots& d = *slots_;
+            if (d.next < d.count) {
+                const int k = d.slot[d.next];
+                if (d.inner[k] == row && k >= d.outer[col] && k < d.outer[col + 1]) {
+                    d.value[k] += v;
+                    ++d.next;
+                    return;
+                }
+            }
+            d.failed = true;
+            ++d.next;
+            return;
+        }
+        if (t_) t_->emplace_back(row, col, v);
+    }
     // Row `row` depends on b_j through gradient g (∂f/∂b_{j,·}) and directly on Δw_j with `direct`.
     // Every entry that can be nonzero is written, even when it is zero at this u, so that J's
     // pattern depends on the layout alone (assemble_jacobian and the LU analyses reuse it).
     void add(int row, const SegmentJet& s, int j, const Ordinates& g, double direct) const {
-        if (!t_) return;
+        if (!writes()) return;
         add(row, s, j, g);
-        t_->emplace_back(row, L_.length_index(j), direct);
+        entry(row, L_.length_index(j), direct);
     }
     // The same for a row with no direct dependence on Δw_j (shape and tangent-angle rows).
     void add(int row, const SegmentJet& s, int /*j*/, const Ordinates& g) const {
-        if (!t_) return;
+        if (!writes()) return;
         const int l = L_.independent_lengths();
         const Eigen::Matrix<double, 1, Eigen::Dynamic, Eigen::RowMajor, 1, kMaxOrdinates> gc = g.transpose() * s.db_dc;
         const Eigen::Matrix<double, 1, Eigen::Dynamic, Eigen::RowMajor, 1, 2 * kMaxJetDegree> gw = g.transpose() * s.db_dw;
-        for (int m = 0; m < gc.size(); ++m) t_->emplace_back(row, l + s.first_ordinate + m, gc(m));
-        for (int i = 0; i < gw.size(); ++i) t_->emplace_back(row, L_.length_index(s.first_segment + i), gw(i));
+        for (int m = 0; m < gc.size(); ++m) entry(row, l + s.first_ordinate + m, gc(m));
+        for (int i = 0; i < gw.size(); ++i) entry(row, L_.length_index(s.first_segment + i), gw(i));
     }
 
 private:
     const KnotLayout& L_;
     std::vector<Eigen::Triplet<double>>* t_;
+    JacobianSlots* slots_;
 };
 
 std::string fmt(double v) { return full_precision(v); }
@@ -301,9 +341,10 @@ namespace {
 // The per-iteration arrays of design_system, kept by Newton from one iteration to the next: at
 // 10^6 points they are hundreds of MB, and fresh pages each iteration cost a tenth of the solve.
 struct DesignWorkspace {
+    std::vector<double> lengths;  // Δw_j from u
     std::vector<SegmentJet> jets;
-    std::vector<Eigen::Triplet<double>> triplets;
-    std::vector<int> slots;  // triplet i's entry in the last Jacobian's value array
+    std::vector<Eigen::Triplet<double>> triplets;  // J's entries while its pattern is not known (freed once it is)
+    std::vector<int> slots;                        // entry i's place in the last Jacobian's value array
 };
 
 // J from the triplets. The pattern depends on the layout, not on u, so from the second Newton
@@ -338,17 +379,26 @@ void assemble_jacobian(int rows, int cols, DesignWorkspace& w, Eigen::SparseMatr
     }
 }
 
-// f(u) (and J(u)) into `out`, whose arrays (and J's pattern) are reused from call to call.
-void design_system_into(const CurvatureProfileProblem& P, const Eigen::VectorXd& u, bool with_jacobian, DesignWorkspace& workspace, DesignSystem& out) {
+// One evaluation of f(u) (and J(u), when `write` writes) into `out`.
+void design_system_pass(const CurvatureProfileProblem& P, const Eigen::VectorXd& u, bool with_jacobian, const RowWriter& write, DesignWorkspace& workspace,
+                        DesignSystem& out) {
     const KnotLayout& L = P.layout;
-    const int p = L.degree(), k = L.segments(), rows = design_equations(P), cols = design_unknowns(P);
-    const TangentAngleSpline psi = TangentAngleSpline::from_unknowns(L, u);
+    const int p = L.degree(), k = L.segments(), rows = design_equations(P), cols = design_unknowns(P), l = L.independent_lengths();
+    const char* who = "intrinsic::design_system";
+    if (u.size() != cols) fail_input(who, "u needs " + std::to_string(cols) + " entries (eq 2), got " + std::to_string(u.size()));
+    std::vector<double>& lengths = workspace.lengths;
+    lengths.resize(static_cast<std::size_t>(k));
+    for (int j = 0; j < k; ++j) {
+        const double d = u(L.length_index(j));
+        if (!std::isfinite(d) || d <= 0) fail_input(who, "segment " + std::to_string(j) + " has length " + fmt(d) + " (finite and > 0 required)");
+        lengths[static_cast<std::size_t>(j)] = d;
+    }
+    for (int i = l; i < cols; ++i)
+        if (!std::isfinite(u(i))) fail_input(who, "de Boor ordinate B_" + std::to_string(i - l) + " = " + fmt(u(i)) + " is not finite");
+    const DesignPsi psi{L, lengths, u.data() + l};
     std::vector<SegmentJet>& jets = workspace.jets;
     jets.resize(static_cast<std::size_t>(k));
     for (int j = 0; j < k; ++j) segment_jet(psi, j, jets[static_cast<std::size_t>(j)]);
-    std::vector<Eigen::Triplet<double>>& triplets = workspace.triplets;
-    triplets.clear();
-    RowWriter write(L, with_jacobian ? &triplets : nullptr);
     out.f.resize(rows);
     int row = 0;
 
@@ -357,7 +407,7 @@ void design_system_into(const CurvatureProfileProblem& P, const Eigen::VectorXd&
         Eigen::Vector2d sum = Eigen::Vector2d::Zero();
         for (int j = L.first_segment(i); j < L.end_segment(i); ++j) {
             const SegmentJet& s = jets[static_cast<std::size_t>(j)];
-            const double d = psi.segment_lengths()[static_cast<std::size_t>(j)];
+            const double d = lengths[static_cast<std::size_t>(j)];
             DirectionWeights W;
             const Eigen::Vector2d I = direction_integrals(s.b, 1.0, with_jacobian ? &W : nullptr);
             sum += d * I;
@@ -412,7 +462,7 @@ void design_system_into(const CurvatureProfileProblem& P, const Eigen::VectorXd&
     auto curvature_row = [&](int g, bool at_end, double sign) {  // adds sign·κ(w_g^∓)
         const int j = at_end ? g - 1 : g;
         const SegmentJet& s = jets[static_cast<std::size_t>(j)];
-        const double d = psi.segment_lengths()[static_cast<std::size_t>(j)];
+        const double d = lengths[static_cast<std::size_t>(j)];
         Ordinates gr = Ordinates::Zero(p + 1);
         const int hi = at_end ? p : 1, lo = at_end ? p - 1 : 0;
         gr(hi) = sign * p / d, gr(lo) = -sign * p / d;
@@ -427,7 +477,7 @@ void design_system_into(const CurvatureProfileProblem& P, const Eigen::VectorXd&
     auto curvature_derivative_row = [&](int g, bool at_end, int m, double sign, double chord_length) {
         const int j = at_end ? g - 1 : g, e = m + 1;
         const SegmentJet& s = jets[static_cast<std::size_t>(j)];
-        const double d = psi.segment_lengths()[static_cast<std::size_t>(j)];
+        const double d = lengths[static_cast<std::size_t>(j)];
         double factor = 1.0, scale = 1.0;
         for (int i = 0; i < e; ++i) factor *= p - i, scale *= d / chord_length;
         Ordinates gr = Ordinates::Zero(p + 1);
@@ -446,8 +496,8 @@ void design_system_into(const CurvatureProfileProblem& P, const Eigen::VectorXd&
         if (c.kind == K::tangent_angle) {
             out.f(row) = angle_row(c.index, c.index == k, 1.0) - c.value;
         } else if (c.kind == K::segment_length) {
-            out.f(row) = psi.segment_lengths()[static_cast<std::size_t>(c.index)] - c.value;
-            if (with_jacobian) triplets.emplace_back(row, L.length_index(c.index), 1.0);
+            out.f(row) = lengths[static_cast<std::size_t>(c.index)] - c.value;
+            write.entry(row, L.length_index(c.index), 1.0);
         } else if (c.kind == K::curvature_derivative) {
             const double h = chord(P, L.span_of_segment(c.from_left ? c.index - 1 : c.index)).norm();
             out.f(row) = curvature_derivative_row(c.index, c.from_left, c.order, 1.0, h) - std::pow(h, c.order + 1) * c.value;
@@ -468,7 +518,26 @@ void design_system_into(const CurvatureProfileProblem& P, const Eigen::VectorXd&
             ++row;
         }
     }
-    if (with_jacobian) assemble_jacobian(rows, cols, workspace, out.jacobian);
+}
+
+// f(u) (and J(u)) into `out`, whose arrays (and J's pattern) are reused from call to call. Once J's
+// pattern is known, J's entries are summed in place (JacobianSlots); should one not be where it
+// was, the evaluation is redone with triplets and J rebuilt from them.
+void design_system_into(const CurvatureProfileProblem& P, const Eigen::VectorXd& u, bool with_jacobian, DesignWorkspace& workspace, DesignSystem& out) {
+    const int rows = design_equations(P), cols = design_unknowns(P);
+    Eigen::SparseMatrix<double>& J = out.jacobian;
+    if (with_jacobian && J.rows() == rows && J.cols() == cols && J.isCompressed() && !workspace.slots.empty()) {
+        std::fill(J.valuePtr(), J.valuePtr() + J.nonZeros(), 0.0);
+        JacobianSlots slots{J.valuePtr(), J.innerIndexPtr(), J.outerIndexPtr(), workspace.slots.data(), workspace.slots.size()};
+        design_system_pass(P, u, true, RowWriter(P.layout, nullptr, &slots), workspace, out);
+        if (!slots.failed && slots.next == slots.count) return;
+    }
+    std::vector<Eigen::Triplet<double>>& triplets = workspace.triplets;
+    triplets.clear();
+    design_system_pass(P, u, with_jacobian, RowWriter(P.layout, with_jacobian ? &triplets : nullptr), workspace, out);
+    if (!with_jacobian) return;
+    assemble_jacobian(rows, cols, workspace, J);
+    std::vector<Eigen::Triplet<double>>().swap(triplets);  // the next evaluations write in place: free their memory
 }
 
 }  // namespace

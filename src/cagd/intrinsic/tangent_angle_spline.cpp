@@ -99,13 +99,15 @@ std::vector<double> TangentAngleSpline::local_farin_knots(int segment) const {
     return out;
 }
 
-void TangentAngleSpline::local_farin_knots_into(int segment, double* out) const {
-    const int p = layout_.degree(), k0 = layout_.last_knot_of_breakpoint(segment) - p + 1;
+void TangentAngleSpline::local_farin_knots_into(int segment, double* out) const { local_farin_knots_into(layout_, lengths_, segment, out); }
+
+void TangentAngleSpline::local_farin_knots_into(const KnotLayout& layout, const std::vector<double>& lengths, int segment, double* out) {
+    const int p = layout.degree(), k0 = layout.last_knot_of_breakpoint(segment) - p + 1;
     for (int m = 0; m < 2 * p; ++m) {
-        const int g = layout_.breakpoint_of_knot(k0 + m);
+        const int g = layout.breakpoint_of_knot(k0 + m);
         double x = 0.0;
-        for (int i = segment; i < g; ++i) x += lengths_[static_cast<std::size_t>(i)];
-        for (int i = g; i < segment; ++i) x -= lengths_[static_cast<std::size_t>(i)];
+        for (int i = segment; i < g; ++i) x += lengths[static_cast<std::size_t>(i)];
+        for (int i = g; i < segment; ++i) x -= lengths[static_cast<std::size_t>(i)];
         out[m] = x;
     }
 }
@@ -180,42 +182,71 @@ double TangentAngleSpline::curvature(int segment, bool at_end) const {
 
 namespace {
 
+// The integrals and weights for degree P (a template constant, so that the loops over the
+// ordinates unroll; P < 0: the degree is b's), on plain arrays: b copied in, the weights summed in
+// w[2][5] and copied out. The same operations in the same order for every P, so the same values.
+template <int P>
+Eigen::Vector2d direction_integrals_of_degree(const Eigen::Ref<const Eigen::VectorXd, 0, Eigen::InnerStride<>>& ordinates, double tau, double (*w)[5]) {
+    const int p = P >= 0 ? P : static_cast<int>(ordinates.size()) - 1;
+    double b[5];
+    for (int r = 0; r <= p; ++r) b[r] = ordinates(r);
+    double bound = 0.0;
+    for (int r = 0; r < p; ++r) bound = std::max(bound, std::abs(p * (b[r + 1] - b[r])));
+    const int pieces = std::max(1, static_cast<int>(std::ceil(bound * tau / kRadiansPerPiece)));
+    const auto& rule = rule16();
+    const double* nodes = rule.nodes().data();
+    const double* weights = rule.weights().data();
+    double sum0 = 0.0, sum1 = 0.0, w0[5] = {0.0, 0.0, 0.0, 0.0, 0.0}, w1[5] = {0.0, 0.0, 0.0, 0.0, 0.0};  // local: kept in registers
+    const bool weighted = w != nullptr;
+    const double h = tau / pieces;
+    const double* table = tau == 1.0 ? tabulated_basis(p, pieces) : nullptr;
+    for (int m = 0; m < pieces; ++m) {
+        const double a = m * h;
+        for (int q = 0; q < kNodes; ++q) {
+            const double wq = 0.5 * h * weights[q];
+            double computed[5];
+            const double* B = computed;
+            if (table) {
+                B = table + (m * kNodes + q) * 5;
+            } else {
+                const double t = a + 0.5 * h * (nodes[q] + 1.0);
+                bernstein_basis_values(p, t, std::span<double>(computed, static_cast<std::size_t>(p) + 1));
+            }
+            double psi = 0.0;
+            for (int r = 0; r <= p; ++r) psi += b[r] * B[r];
+            const double c = std::cos(psi), s = std::sin(psi);
+            sum0 += wq * c;
+            sum1 += wq * s;
+            if (weighted)
+                for (int r = 0; r <= p; ++r) {
+                    w0[r] += wq * c * B[r];
+                    w1[r] += wq * s * B[r];
+                }
+        }
+    }
+    if (weighted)
+        for (int r = 0; r <= p; ++r) w[0][r] = w0[r], w[1][r] = w1[r];
+    return {sum0, sum1};
+}
+
 template <class Weights>
 Eigen::Vector2d direction_integrals_with(const Eigen::Ref<const Eigen::VectorXd, 0, Eigen::InnerStride<>>& b, double tau, Weights* weights) {
     const int p = static_cast<int>(b.size()) - 1;
     if (p < 0 || p > 4) fail_input("intrinsic::direction_integrals", "Bézier degree must be 0..4, got " + std::to_string(p));
     if (!(tau >= 0.0 && tau <= 1.0)) fail_input("intrinsic::direction_integrals", "tau = " + full_precision(tau) + " outside [0, 1]");
     if (weights && tau != 1.0) fail_input("intrinsic::direction_integrals", "weighted integrals need tau = 1, got " + full_precision(tau));
-    double bound = 0.0;
-    for (int r = 0; r < p; ++r) bound = std::max(bound, std::abs(p * (b(r + 1) - b(r))));
-    const int pieces = std::max(1, static_cast<int>(std::ceil(bound * tau / kRadiansPerPiece)));
-    const auto& rule = rule16();
-    Eigen::Vector2d sum = Eigen::Vector2d::Zero();
-    if (weights) weights->setZero(2, p + 1);
-    const double h = tau / pieces;
-    const double* table = tau == 1.0 ? tabulated_basis(p, pieces) : nullptr;
-    for (int m = 0; m < pieces; ++m) {
-        const double a = m * h;
-        for (int q = 0; q < kNodes; ++q) {
-            const double wq = 0.5 * h * rule.weights()[static_cast<std::size_t>(q)];
-            double computed[5];
-            const double* B = computed;
-            if (table) {
-                B = table + (m * kNodes + q) * 5;
-            } else {
-                const double t = a + 0.5 * h * (rule.nodes()[static_cast<std::size_t>(q)] + 1.0);
-                bernstein_basis_values(p, t, std::span<double>(computed, static_cast<std::size_t>(p) + 1));
-            }
-            double psi = 0.0;
-            for (int r = 0; r <= p; ++r) psi += b(r) * B[r];
-            const double c = std::cos(psi), s = std::sin(psi);
-            sum += wq * Eigen::Vector2d(c, s);
-            if (weights)
-                for (int r = 0; r <= p; ++r) {
-                    (*weights)(0, r) += wq * c * B[r];
-                    (*weights)(1, r) += wq * s * B[r];
-                }
-        }
+    double w[2][5];
+    double (*out)[5] = weights ? w : nullptr;
+    Eigen::Vector2d sum;
+    switch (p) {  // the designs' degrees unrolled
+        case 2: sum = direction_integrals_of_degree<2>(b, tau, out); break;
+        case 3: sum = direction_integrals_of_degree<3>(b, tau, out); break;
+        case 4: sum = direction_integrals_of_degree<4>(b, tau, out); break;
+        default: sum = direction_integrals_of_degree<-1>(b, tau, out); break;
+    }
+    if (weights) {
+        weights->resize(2, p + 1);
+        for (int r = 0; r <= p; ++r) (*weights)(0, r) = w[0][r], (*weights)(1, r) = w[1][r];
     }
     return sum;
 }

@@ -57,6 +57,9 @@ public:
     /// eq (3) residual near 1e−11 and stops Newton short of its tolerance.
     std::vector<double> local_farin_knots(int segment) const;
     void local_farin_knots_into(int segment, double* out) const;  ///< the same into out[0..2p), no allocation
+    /// The same from a layout and segment lengths alone (no spline built: the Newton iterations'
+    /// path); lengths has layout.segments() values.
+    static void local_farin_knots_into(const KnotLayout& layout, const std::vector<double>& lengths, int segment, double* out);
     std::vector<double> greville_abscissae() const;               ///< one per de Boor ordinate
     const Eigen::MatrixXd& bezier() const { return bezier_; }  ///< k × (p + 1): the Bézier ordinates b_{j,r} of each segment
 
