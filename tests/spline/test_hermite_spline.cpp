@@ -171,3 +171,71 @@ TEST(HermiteCurves, PlanarColumnWisePathIsTheSpaceCurvesBitForBit) {
             }
         }
 }
+
+// The cubic splines are held in the slope form: m_k and h_k, with d0_k = h_k m_k and d1_k =
+// h_k m_{k+1} formed where evaluated. Every jet equals, bit for bit, that of the same curve held
+// as derivative pairs stored from those products (what cubic_spline_interpolant built until
+// 2026-11-28): jet, jet_from_left, jet_into, jets_into and derivatives_into, open and closed,
+// uniform (no scales kept) and chord length, 1 to 3 dimensions.
+TEST(CubicSplines, SlopeFormGivesThePairFormsJetsBitForBit) {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> coordinate(-1.0, 1.0);
+    for (int dim = 1; dim <= 3; ++dim)
+        for (bool closed : {false, true})
+            for (auto spacing : {spline::ParameterSpacing::uniform, spline::ParameterSpacing::chord_length}) {
+                PointList p(23, dim);
+                for (Eigen::Index i = 0; i < p.rows(); ++i)
+                    for (int c = 0; c < dim; ++c) p(i, c) = coordinate(rng) + (c == 0 ? static_cast<double>(i) : 0.0);
+                const PiecewiseHermiteCurve slope = spline::cubic_spline_interpolant(p, spacing, closed);
+                ASSERT_TRUE(slope.holds_node_slopes());
+                const Eigen::MatrixXd& m = slope.node_slopes();
+                const std::vector<double>& h = slope.span_scales();
+                const int spans = slope.spans();
+                ASSERT_EQ(m.rows(), closed ? spans : spans + 1);
+                ASSERT_EQ(h.size(), spacing == spline::ParameterSpacing::uniform ? 0u : static_cast<std::size_t>(spans));
+                Eigen::MatrixXd d0(spans, dim), d1(spans, dim);
+                for (int k = 0; k < spans; ++k) {
+                    const double hk = h.empty() ? 1.0 : h[static_cast<std::size_t>(k)];
+                    d0.row(k) = hk * m.row(k);
+                    d1.row(k) = hk * m.row(k + 1 == m.rows() ? 0 : k + 1);
+                }
+                const PiecewiseHermiteCurve pairs(slope.nodes(), d0, d1);
+                const std::string what = std::to_string(dim) + "-D, " + (closed ? "closed" : "open") + (h.empty() ? ", uniform" : ", chord length");
+                EXPECT_TRUE(slope.start_derivatives() == d0 && slope.end_derivatives() == d1) << what;
+                std::vector<double> u;
+                for (int j = 0; j <= 4 * spans; ++j) u.push_back(0.25 * j + (j % 4 == 1 ? 0.013 : 0.0));
+                for (int order = 0; order <= 3; ++order) {
+                    std::vector<double> a(u.size() * static_cast<std::size_t>((order + 1) * dim)), b(a.size());
+                    slope.jets_into(u.data(), u.size(), order, a.data());
+                    pairs.jets_into(u.data(), u.size(), order, b.data());
+                    EXPECT_EQ(a, b) << what << ", jets_into order " << order;
+                    for (double x : u) {
+                        JetMatrix ja, jb;
+                        slope.jet_into(x, order, ja);
+                        pairs.jet_into(x, order, jb);
+                        ASSERT_TRUE(ja == jb) << what << " u " << x;
+                        ASSERT_TRUE(slope.jet(x, order) == pairs.jet(x, order)) << what << " u " << x;
+                        if (x > 0) ASSERT_TRUE(slope.jet_from_left(x, order) == pairs.jet_from_left(x, order)) << what << " u " << x;
+                        if (order >= 1) {
+                            slope.derivatives_into(x, order, ja);
+                            pairs.derivatives_into(x, order, jb);
+                            ASSERT_TRUE(ja == jb) << what << " u " << x;
+                        }
+                    }
+                }
+            }
+}
+
+TEST(CubicSplines, SlopeFormRefusesWhatIsNotACurve) {
+    const Eigen::MatrixXd nodes = Eigen::MatrixXd::Random(4, 2), slopes = Eigen::MatrixXd::Random(4, 2);
+    EXPECT_NO_THROW(PiecewiseHermiteCurve::from_node_slopes(nodes, slopes, {1.0, 2.0, 3.0}));
+    EXPECT_NO_THROW(PiecewiseHermiteCurve::from_node_slopes(nodes, slopes.topRows(3), {}));  // closed: m_3 = m_0
+    EXPECT_THROW(PiecewiseHermiteCurve::from_node_slopes(nodes.topRows(1), slopes.topRows(1), {}), InvalidInput);
+    EXPECT_THROW(PiecewiseHermiteCurve::from_node_slopes(nodes, slopes.topRows(2), {}), InvalidInput);
+    EXPECT_THROW(PiecewiseHermiteCurve::from_node_slopes(nodes, slopes, {1.0, 2.0}), InvalidInput);
+    EXPECT_THROW(PiecewiseHermiteCurve::from_node_slopes(nodes, Eigen::MatrixXd::Random(4, 3), {}), InvalidInput);
+    Eigen::MatrixXd bad = slopes;
+    bad(2, 1) = std::nan("");
+    EXPECT_THROW(PiecewiseHermiteCurve::from_node_slopes(nodes, bad, {}), InvalidInput);
+    EXPECT_THROW(PiecewiseHermiteCurve::from_node_slopes(nodes, slopes, {1.0, INFINITY, 3.0}), InvalidInput);
+}

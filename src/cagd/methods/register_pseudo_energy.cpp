@@ -66,8 +66,9 @@ InterpolationResult build_pseudo_spline(const PointList& points, bool closed, co
 
 InterpolationResult build_cubic(const PointList& points, bool closed, spline::ParameterSpacing spacing) {
     auto c = std::make_shared<spline::PiecewiseHermiteCurve>(spline::cubic_spline_interpolant(points, spacing, closed));
-    return result_of(unit_span_interpolant(std::move(c), node_count(points, closed),
-                                           spacing == spline::ParameterSpacing::chord_length ? chord_lengths(points, closed) : unit_lengths(points, closed)));
+    // dτ/du on span k: the chord the spline itself scales by (its h_k, chord_lengths' values), or 1.
+    std::vector<double> dtau_du = spacing == spline::ParameterSpacing::chord_length ? c->span_scales() : unit_lengths(points, closed);
+    return result_of(unit_span_interpolant(std::move(c), node_count(points, closed), std::move(dtau_du)));
 }
 
 InterpolationResult build_hermite(const PointList& points, bool closed, spline::TangentRule rule) {

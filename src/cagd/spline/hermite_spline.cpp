@@ -20,6 +20,75 @@ PiecewiseHermiteCurve::PiecewiseHermiteCurve(Eigen::MatrixXd nodes, Eigen::Matri
     if (!all_finite(nodes_) || !all_finite(d0_) || !all_finite(d1_)) fail_input(who, "nodes and derivatives must be finite");
 }
 
+PiecewiseHermiteCurve PiecewiseHermiteCurve::from_node_slopes(Eigen::MatrixXd nodes, Eigen::MatrixXd slopes, std::vector<double> scales) {
+    const char* who = "PiecewiseHermiteCurve::from_node_slopes";
+    const Eigen::Index spans = nodes.rows() - 1;
+    if (spans < 1) fail_input(who, "needs at least one span");
+    if (slopes.rows() != spans + 1 && slopes.rows() != spans)
+        fail_input(who, "needs K+1 slopes (closed: K) for K+1 nodes, got " + std::to_string(slopes.rows()) + " for " + std::to_string(nodes.rows()));
+    if (!scales.empty() && static_cast<Eigen::Index>(scales.size()) != spans)
+        fail_input(who, "needs K span scales (or none), got " + std::to_string(scales.size()) + " for " + std::to_string(spans) + " spans");
+    if (slopes.cols() != nodes.cols()) fail_input(who, "nodes and slopes must have the same dimension");
+    if (!all_finite(nodes) || !all_finite(slopes)) fail_input(who, "nodes and slopes must be finite");
+    for (double h : scales)
+        if (!std::isfinite(h)) fail_input(who, "span scales must be finite");
+    PiecewiseHermiteCurve c;
+    c.nodes_ = std::move(nodes);
+    c.slopes_ = std::move(slopes);
+    c.scales_ = std::move(scales);
+    return c;
+}
+
+namespace {
+// Span k's end derivatives, d0_k and d1_k, in either storage form (see the header): read from the
+// pairs, or formed from the slopes as h_k m_k and h_k m_{k+1} (m wrapping for a closed curve),
+// the product the pairs of the same curve were stored from.
+struct DerivativePairs {
+    const Eigen::MatrixXd &d0, &d1;
+    double start(Eigen::Index k, Eigen::Index c) const { return d0(k, c); }
+    double end(Eigen::Index k, Eigen::Index c) const { return d1(k, c); }
+};
+struct NodeSlopes {
+    const Eigen::MatrixXd& m;
+    const double* h;  // null: every h_k = 1 (d0 = m exactly)
+    double start(Eigen::Index k, Eigen::Index c) const { return h ? h[k] * m(k, c) : m(k, c); }
+    double end(Eigen::Index k, Eigen::Index c) const {
+        const Eigen::Index next = k + 1 == m.rows() ? 0 : k + 1;
+        return h ? h[k] * m(next, c) : m(next, c);
+    }
+};
+}  // namespace
+
+namespace {
+// f(reader) with the derivatives' reader for a curve's form (the slope form when it has slopes).
+template <class F>
+[[gnu::always_inline]] inline void with_derivatives(const Eigen::MatrixXd& slopes, const std::vector<double>& scales, const Eigen::MatrixXd& d0, const Eigen::MatrixXd& d1,
+                                                    F&& f) {
+    if (slopes.rows() > 0)
+        f(NodeSlopes{slopes, scales.empty() ? nullptr : scales.data()});
+    else
+        f(DerivativePairs{d0, d1});
+}
+}  // namespace
+
+Eigen::MatrixXd PiecewiseHermiteCurve::start_derivatives() const {
+    if (!holds_node_slopes()) return d0_;
+    Eigen::MatrixXd out(spans(), nodes_.cols());
+    const NodeSlopes d{slopes_, scales_.empty() ? nullptr : scales_.data()};
+    for (Eigen::Index k = 0; k < out.rows(); ++k)
+        for (Eigen::Index c = 0; c < out.cols(); ++c) out(k, c) = d.start(k, c);
+    return out;
+}
+
+Eigen::MatrixXd PiecewiseHermiteCurve::end_derivatives() const {
+    if (!holds_node_slopes()) return d1_;
+    Eigen::MatrixXd out(spans(), nodes_.cols());
+    const NodeSlopes d{slopes_, scales_.empty() ? nullptr : scales_.data()};
+    for (Eigen::Index k = 0; k < out.rows(); ++k)
+        for (Eigen::Index c = 0; c < out.cols(); ++c) out(k, c) = d.end(k, c);
+    return out;
+}
+
 std::vector<double> PiecewiseHermiteCurve::breakpoints() const { return unit_piece_breakpoints(spans()); }
 
 Eigen::MatrixXd PiecewiseHermiteCurve::jet(double u, int order) const {
@@ -49,56 +118,61 @@ namespace {
 // rows are straight-line code, as in a hand-written loop.
 // The arithmetic, once: put(j − First, c, value) receives each entry (a JetMatrix here, a batch's
 // array in hermite_jets below).
-template <int Dim, int First, int Last, class Put>
-[[gnu::always_inline]] inline void hermite_jet_entries(const Eigen::MatrixXd& nodes, const Eigen::MatrixXd& d0, const Eigen::MatrixXd& d1, int k, double t, Put put) {
+template <int Dim, int First, int Last, class Derivatives, class Put>
+[[gnu::always_inline]] inline void hermite_jet_entries(const Eigen::MatrixXd& nodes, const Derivatives& d, int k, double t, Put put) {
     double p0[Dim], p1[Dim], a[Dim], b[Dim];
-    for (int c = 0; c < Dim; ++c) p0[c] = nodes(k, c), p1[c] = nodes(k + 1, c), a[c] = d0(k, c), b[c] = d1(k, c);
+    for (int c = 0; c < Dim; ++c) p0[c] = nodes(k, c), p1[c] = nodes(k + 1, c), a[c] = d.start(k, c), b[c] = d.end(k, c);
     double h[Last + 1][4];
     for (int j = First; j <= Last; ++j) hermite_basis_row(j, t, h[j]);
     for (int c = 0; c < Dim; ++c)
         for (int j = First; j <= Last; ++j) put(j - First, c, h[j][0] * p0[c] + h[j][1] * p1[c] + h[j][2] * a[c] + h[j][3] * b[c]);
 }
 
-template <int Dim, int First, int Last>
-[[gnu::always_inline]] inline void hermite_jet_rows(const Eigen::MatrixXd& nodes, const Eigen::MatrixXd& d0, const Eigen::MatrixXd& d1, int k, double t, JetMatrix& out) {
+template <int Dim, int First, int Last, class Derivatives>
+[[gnu::always_inline]] inline void hermite_jet_rows(const Eigen::MatrixXd& nodes, const Derivatives& d, int k, double t, JetMatrix& out) {
     out.resize(Last - First + 1, Dim);
-    hermite_jet_entries<Dim, First, Last>(nodes, d0, d1, k, t, [&](int row, int c, double v) { out(row, c) = v; });
+    hermite_jet_entries<Dim, First, Last>(nodes, d, k, t, [&](int row, int c, double v) { out(row, c) = v; });
 }
 
-template <int Dim>
-[[gnu::always_inline]] inline void hermite_jet_rows(const Eigen::MatrixXd& nodes, const Eigen::MatrixXd& d0, const Eigen::MatrixXd& d1, int k, double t, int first, int last,
-                                                    JetMatrix& out) {
+template <int Dim, class Derivatives>
+[[gnu::always_inline]] inline void hermite_jet_rows(const Eigen::MatrixXd& nodes, const Derivatives& d, int k, double t, int first, int last, JetMatrix& out) {
     // first ∈ {0, 1}, first ≤ last ≤ 3 (require_jet_capacity in the callers)
     switch (4 * first + last) {
-        case 0: return hermite_jet_rows<Dim, 0, 0>(nodes, d0, d1, k, t, out);
-        case 1: return hermite_jet_rows<Dim, 0, 1>(nodes, d0, d1, k, t, out);
-        case 2: return hermite_jet_rows<Dim, 0, 2>(nodes, d0, d1, k, t, out);
-        case 3: return hermite_jet_rows<Dim, 0, 3>(nodes, d0, d1, k, t, out);
-        case 5: return hermite_jet_rows<Dim, 1, 1>(nodes, d0, d1, k, t, out);
-        case 6: return hermite_jet_rows<Dim, 1, 2>(nodes, d0, d1, k, t, out);
-        case 7: return hermite_jet_rows<Dim, 1, 3>(nodes, d0, d1, k, t, out);
-        default: return hermite_jet_rows<Dim, 1, 4>(nodes, d0, d1, k, t, out);  // derivatives_into(u, 4): row 4 is zero
+        case 0: return hermite_jet_rows<Dim, 0, 0>(nodes, d, k, t, out);
+        case 1: return hermite_jet_rows<Dim, 0, 1>(nodes, d, k, t, out);
+        case 2: return hermite_jet_rows<Dim, 0, 2>(nodes, d, k, t, out);
+        case 3: return hermite_jet_rows<Dim, 0, 3>(nodes, d, k, t, out);
+        case 5: return hermite_jet_rows<Dim, 1, 1>(nodes, d, k, t, out);
+        case 6: return hermite_jet_rows<Dim, 1, 2>(nodes, d, k, t, out);
+        case 7: return hermite_jet_rows<Dim, 1, 3>(nodes, d, k, t, out);
+        default: return hermite_jet_rows<Dim, 1, 4>(nodes, d, k, t, out);  // derivatives_into(u, 4): row 4 is zero
     }
 }
 }  // namespace
 
 Eigen::MatrixXd PiecewiseHermiteCurve::span_jet(int k, double t, int order) const {
     Eigen::MatrixXd out = Eigen::MatrixXd::Zero(order + 1, dimension());
+    Eigen::RowVectorXd a(dimension()), b(dimension());
+    with_derivatives(slopes_, scales_, d0_, d1_, [&](const auto& d) {
+        for (Eigen::Index c = 0; c < a.size(); ++c) a(c) = d.start(k, c), b(c) = d.end(k, c);
+    });
     double h[4];
     for (int j = 0; j <= std::min(order, 3); ++j) {
         hermite_basis_row(j, t, h);
-        out.row(j) = h[0] * nodes_.row(k) + h[1] * nodes_.row(k + 1) + h[2] * d0_.row(k) + h[3] * d1_.row(k);
+        out.row(j) = h[0] * nodes_.row(k) + h[1] * nodes_.row(k + 1) + h[2] * a + h[3] * b;
     }
     return out;
 }
 
 inline void PiecewiseHermiteCurve::span_jet_rows(int k, double t, int first, int last, JetMatrix& out) const {
     const int dim = static_cast<int>(nodes_.cols());
-    switch (dim) {  // dimension() ≤ 3 (require_jet_capacity)
-        case 1: return hermite_jet_rows<1>(nodes_, d0_, d1_, k, t, first, last, out);
-        case 2: return hermite_jet_rows<2>(nodes_, d0_, d1_, k, t, first, last, out);
-        default: return hermite_jet_rows<3>(nodes_, d0_, d1_, k, t, first, last, out);
-    }
+    with_derivatives(slopes_, scales_, d0_, d1_, [&](const auto& d) {
+        switch (dim) {  // dimension() ≤ 3 (require_jet_capacity)
+            case 1: return hermite_jet_rows<1>(nodes_, d, k, t, first, last, out);
+            case 2: return hermite_jet_rows<2>(nodes_, d, k, t, first, last, out);
+            default: return hermite_jet_rows<3>(nodes_, d, k, t, first, last, out);
+        }
+    });
 }
 
 void PiecewiseHermiteCurve::jet_into(double u, int order, JetMatrix& out) const {
@@ -111,35 +185,37 @@ void PiecewiseHermiteCurve::jet_into(double u, int order, JetMatrix& out) const 
 namespace {
 // jets_into of rows 0..Last, Dim columns: hermite_jet_entries per parameter, written to out row by
 // row (the arithmetic of jet_into).
-template <int Dim, int Last>
-void hermite_jets(const Eigen::MatrixXd& nodes, const Eigen::MatrixXd& d0, const Eigen::MatrixXd& d1, const double* u, std::size_t count, double* out) {
+template <int Dim, int Last, class Derivatives>
+void hermite_jets(const Eigen::MatrixXd& nodes, const Derivatives& d, const double* u, std::size_t count, double* out) {
     const char* who = "cagd::spline::PiecewiseHermiteCurve::jets_into";
-    const int spans = static_cast<int>(d0.rows());
+    const int spans = static_cast<int>(nodes.rows()) - 1;
     for (std::size_t i = 0; i < count; ++i) {
         const auto [k, t] = locate_unit_piece(who, u[i], spans, Last);
         double* o = out + i * (Last + 1) * Dim;
-        hermite_jet_entries<Dim, 0, Last>(nodes, d0, d1, k, t, [&](int row, int c, double v) { o[row * Dim + c] = v; });
+        hermite_jet_entries<Dim, 0, Last>(nodes, d, k, t, [&](int row, int c, double v) { o[row * Dim + c] = v; });
     }
 }
 
-template <int Dim>
-void hermite_jets(const Eigen::MatrixXd& nodes, const Eigen::MatrixXd& d0, const Eigen::MatrixXd& d1, const double* u, std::size_t count, int order, double* out) {
+template <int Dim, class Derivatives>
+void hermite_jets(const Eigen::MatrixXd& nodes, const Derivatives& d, const double* u, std::size_t count, int order, double* out) {
     switch (order) {  // 0 ≤ order < kJetCapacity (require_jet_capacity in the caller)
-        case 0: return hermite_jets<Dim, 0>(nodes, d0, d1, u, count, out);
-        case 1: return hermite_jets<Dim, 1>(nodes, d0, d1, u, count, out);
-        case 2: return hermite_jets<Dim, 2>(nodes, d0, d1, u, count, out);
-        default: return hermite_jets<Dim, 3>(nodes, d0, d1, u, count, out);
+        case 0: return hermite_jets<Dim, 0>(nodes, d, u, count, out);
+        case 1: return hermite_jets<Dim, 1>(nodes, d, u, count, out);
+        case 2: return hermite_jets<Dim, 2>(nodes, d, u, count, out);
+        default: return hermite_jets<Dim, 3>(nodes, d, u, count, out);
     }
 }
 }  // namespace
 
 void PiecewiseHermiteCurve::jets_into(const double* u, std::size_t count, int order, double* out) const {
     require_jet_capacity("cagd::spline::PiecewiseHermiteCurve::jets_into", order + 1, static_cast<int>(nodes_.cols()));
-    switch (nodes_.cols()) {
-        case 1: return hermite_jets<1>(nodes_, d0_, d1_, u, count, order, out);
-        case 2: return hermite_jets<2>(nodes_, d0_, d1_, u, count, order, out);
-        default: return hermite_jets<3>(nodes_, d0_, d1_, u, count, order, out);
-    }
+    with_derivatives(slopes_, scales_, d0_, d1_, [&](const auto& d) {
+        switch (nodes_.cols()) {
+            case 1: return hermite_jets<1>(nodes_, d, u, count, order, out);
+            case 2: return hermite_jets<2>(nodes_, d, u, count, order, out);
+            default: return hermite_jets<3>(nodes_, d, u, count, order, out);
+        }
+    });
 }
 
 void PiecewiseHermiteCurve::derivatives_into(double u, int order, JetMatrix& out) const {
@@ -148,6 +224,7 @@ void PiecewiseHermiteCurve::derivatives_into(double u, int order, JetMatrix& out
     const auto [k, t] = locate_unit_piece(who, u, spans(), order);
     span_jet_rows(k, t, 1, order, out);
 }
+
 
 namespace {
 
@@ -167,11 +244,15 @@ PiecewiseHermiteCurve cubic_spline_interpolant(const PointList& points, Paramete
     Eigen::MatrixXd nodes = span_nodes(points, closed);
     const int spans = static_cast<int>(nodes.rows()) - 1;
     const int dim = static_cast<int>(points.cols());
-    std::vector<double> h(static_cast<std::size_t>(spans));
+    // h_k: 1, or the chord |P_{k+1} − P_k| as core/points' chord_lengths forms it (the registry's
+    // node parameters are its running sum; the same bits as Eigen's norm of Δ_k, used until 2026-11-28).
+    // (Uniform: no array of ones, 8 bytes a point at the construction's peak.)
+    const bool uniform = spacing == ParameterSpacing::uniform;
+    std::vector<double> chords = uniform ? std::vector<double>{} : chord_lengths(points, closed);
+    const auto h = [&](int k) { return uniform ? 1.0 : chords[static_cast<std::size_t>(k)]; };
     // Δ_k = P_{k+1} − P_k, formed where it is used (no n × dim temporary: at 10^5 points and more
     // the cost of a construction is mostly fresh memory).
     const auto delta = [&](int k) { return nodes.row(k + 1) - nodes.row(k); };
-    for (int k = 0; k < spans; ++k) h[static_cast<std::size_t>(k)] = spacing == ParameterSpacing::uniform ? 1.0 : delta(k).norm();
     // Unknowns m_0..m_{N−1}: N = n+1 for open, N = spans (m_K = m_0) for closed. Row k holds
     // hn m_{k−1} + 2(hp + hn) m_k + hp m_{k+1}: strictly diagonally dominant, so the Thomas
     // algorithm needs no pivoting (numeric/tridiagonal.hpp); closed: cyclic, the corners
@@ -185,31 +266,27 @@ PiecewiseHermiteCurve cubic_spline_interpolant(const PointList& points, Paramete
         if (!closed && k == 0) {
             diag[0] = 2.0;
             sup[0] = 1.0;
-            rhs.row(0) = 3.0 * delta(0) / h[0];
+            rhs.row(0) = 3.0 * delta(0) / h(0);
             continue;
         }
         if (!closed && k == N - 1) {
             sub[r] = 1.0;
             diag[r] = 2.0;
-            rhs.row(k) = 3.0 * delta(spans - 1) / h[static_cast<std::size_t>(spans - 1)];
+            rhs.row(k) = 3.0 * delta(spans - 1) / h(spans - 1);
             continue;
         }
         const int prev = k == 0 ? spans - 1 : k - 1;  // span ending at node k (closed: node 0 ends the last)
         const int next = k;                           // span starting at node k (k < spans here)
-        const double hp = h[static_cast<std::size_t>(prev)], hn = h[static_cast<std::size_t>(next)];
+        const double hp = h(prev), hn = h(next);
         sub[r] = hn;
         diag[r] = 2.0 * (hp + hn);
         sup[r] = hp;
         rhs.row(k) = 3.0 * (hn * delta(prev) / hp + hp * delta(next) / hn);
     }
-    const Eigen::MatrixXd m = closed ? numeric::solve_cyclic_tridiagonal(sub, diag, sup, rhs) : numeric::solve_tridiagonal(sub, diag, sup, std::move(rhs));
-    Eigen::MatrixXd d0(spans, dim), d1(spans, dim);
-    for (int k = 0; k < spans; ++k) {
-        const double hk = h[static_cast<std::size_t>(k)];
-        d0.row(k) = hk * m.row(k);
-        d1.row(k) = hk * m.row(k + 1 == N ? 0 : k + 1);
-    }
-    return PiecewiseHermiteCurve(std::move(nodes), std::move(d0), std::move(d1));
+    Eigen::MatrixXd m = closed ? numeric::solve_cyclic_tridiagonal(sub, diag, sup, rhs) : numeric::solve_tridiagonal(sub, diag, sup, std::move(rhs));
+    // The slope form: span k's d0 = h_k m_k, d1 = h_k m_{k+1} formed where evaluated (uniform: h_k = 1,
+    // no scales kept), not stored as 2K rows.
+    return PiecewiseHermiteCurve::from_node_slopes(std::move(nodes), std::move(m), std::move(chords));
 }
 
 namespace {
