@@ -71,23 +71,20 @@ template <class F>
 }
 }  // namespace
 
-Eigen::MatrixXd PiecewiseHermiteCurve::start_derivatives() const {
-    if (!holds_node_slopes()) return d0_;
-    Eigen::MatrixXd out(spans(), nodes_.cols());
-    const NodeSlopes d{slopes_, scales_.empty() ? nullptr : scales_.data()};
+namespace {
+// All K start (or end) derivatives of the slope form, formed as evaluation forms them.
+Eigen::MatrixXd formed_derivatives(const Eigen::MatrixXd& slopes, const std::vector<double>& scales, Eigen::Index spans, bool at_end) {
+    Eigen::MatrixXd out(spans, slopes.cols());
+    const NodeSlopes d{slopes, scales.empty() ? nullptr : scales.data()};
     for (Eigen::Index k = 0; k < out.rows(); ++k)
-        for (Eigen::Index c = 0; c < out.cols(); ++c) out(k, c) = d.start(k, c);
+        for (Eigen::Index c = 0; c < out.cols(); ++c) out(k, c) = at_end ? d.end(k, c) : d.start(k, c);
     return out;
 }
+}  // namespace
 
-Eigen::MatrixXd PiecewiseHermiteCurve::end_derivatives() const {
-    if (!holds_node_slopes()) return d1_;
-    Eigen::MatrixXd out(spans(), nodes_.cols());
-    const NodeSlopes d{slopes_, scales_.empty() ? nullptr : scales_.data()};
-    for (Eigen::Index k = 0; k < out.rows(); ++k)
-        for (Eigen::Index c = 0; c < out.cols(); ++c) out(k, c) = d.end(k, c);
-    return out;
-}
+Eigen::MatrixXd PiecewiseHermiteCurve::start_derivatives() const { return holds_node_slopes() ? formed_derivatives(slopes_, scales_, spans(), false) : d0_; }
+
+Eigen::MatrixXd PiecewiseHermiteCurve::end_derivatives() const { return holds_node_slopes() ? formed_derivatives(slopes_, scales_, spans(), true) : d1_; }
 
 std::vector<double> PiecewiseHermiteCurve::breakpoints() const { return unit_piece_breakpoints(spans()); }
 
