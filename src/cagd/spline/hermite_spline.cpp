@@ -32,6 +32,10 @@ PiecewiseHermiteCurve PiecewiseHermiteCurve::from_node_slopes(Eigen::MatrixXd no
     if (!all_finite(nodes) || !all_finite(slopes)) fail_input(who, "nodes and slopes must be finite");
     for (double h : scales)
         if (!std::isfinite(h)) fail_input(who, "span scales must be finite");
+    if (slopes.rows() == spans) {  // closed: m_K = m_0 kept as a row, so that evaluation never wraps
+        slopes.conservativeResize(spans + 1, Eigen::NoChange);
+        slopes.row(spans) = slopes.row(0);
+    }
     PiecewiseHermiteCurve c;
     c.nodes_ = std::move(nodes);
     c.slopes_ = std::move(slopes);
@@ -41,43 +45,45 @@ PiecewiseHermiteCurve PiecewiseHermiteCurve::from_node_slopes(Eigen::MatrixXd no
 
 namespace {
 // Span k's end derivatives, d0_k and d1_k, in either storage form (see the header): read from the
-// pairs, or formed from the slopes as h_k m_k and h_k m_{k+1} (m wrapping for a closed curve),
-// the product the pairs of the same curve were stored from.
+// pairs, or formed from the slopes (K + 1 rows: a closed curve's row K repeats row 0) as m_k and
+// m_{k+1}, or h_k m_k and h_k m_{k+1}: the product the pairs of the same curve were stored from.
+// One type per form, so that an evaluation tests nothing per entry.
 struct DerivativePairs {
     const Eigen::MatrixXd &d0, &d1;
-    double start(Eigen::Index k, Eigen::Index c) const { return d0(k, c); }
-    double end(Eigen::Index k, Eigen::Index c) const { return d1(k, c); }
+    [[gnu::always_inline]] double start(Eigen::Index k, Eigen::Index c) const { return d0(k, c); }
+    [[gnu::always_inline]] double end(Eigen::Index k, Eigen::Index c) const { return d1(k, c); }
 };
-struct NodeSlopes {
+struct UnitSlopes {  // h_k = 1: d0 = m exactly
     const Eigen::MatrixXd& m;
-    const double* h;  // null: every h_k = 1 (d0 = m exactly)
-    double start(Eigen::Index k, Eigen::Index c) const { return h ? h[k] * m(k, c) : m(k, c); }
-    double end(Eigen::Index k, Eigen::Index c) const {
-        const Eigen::Index next = k + 1 == m.rows() ? 0 : k + 1;
-        return h ? h[k] * m(next, c) : m(next, c);
-    }
+    [[gnu::always_inline]] double start(Eigen::Index k, Eigen::Index c) const { return m(k, c); }
+    [[gnu::always_inline]] double end(Eigen::Index k, Eigen::Index c) const { return m(k + 1, c); }
 };
-}  // namespace
+struct ScaledSlopes {
+    const Eigen::MatrixXd& m;
+    const double* h;
+    [[gnu::always_inline]] double start(Eigen::Index k, Eigen::Index c) const { return h[k] * m(k, c); }
+    [[gnu::always_inline]] double end(Eigen::Index k, Eigen::Index c) const { return h[k] * m(k + 1, c); }
+};
 
-namespace {
-// f(reader) with the derivatives' reader for a curve's form (the slope form when it has slopes).
+// f(reader) with the derivatives' reader of a curve's form.
 template <class F>
 [[gnu::always_inline]] inline void with_derivatives(const Eigen::MatrixXd& slopes, const std::vector<double>& scales, const Eigen::MatrixXd& d0, const Eigen::MatrixXd& d1,
                                                     F&& f) {
-    if (slopes.rows() > 0)
-        f(NodeSlopes{slopes, scales.empty() ? nullptr : scales.data()});
-    else
+    if (slopes.rows() == 0)
         f(DerivativePairs{d0, d1});
+    else if (scales.empty())
+        f(UnitSlopes{slopes});
+    else
+        f(ScaledSlopes{slopes, scales.data()});
 }
-}  // namespace
 
-namespace {
 // All K start (or end) derivatives of the slope form, formed as evaluation forms them.
 Eigen::MatrixXd formed_derivatives(const Eigen::MatrixXd& slopes, const std::vector<double>& scales, Eigen::Index spans, bool at_end) {
     Eigen::MatrixXd out(spans, slopes.cols());
-    const NodeSlopes d{slopes, scales.empty() ? nullptr : scales.data()};
-    for (Eigen::Index k = 0; k < out.rows(); ++k)
-        for (Eigen::Index c = 0; c < out.cols(); ++c) out(k, c) = at_end ? d.end(k, c) : d.start(k, c);
+    with_derivatives(slopes, scales, out, out, [&](const auto& d) {
+        for (Eigen::Index k = 0; k < out.rows(); ++k)
+            for (Eigen::Index c = 0; c < out.cols(); ++c) out(k, c) = at_end ? d.end(k, c) : d.start(k, c);
+    });
     return out;
 }
 }  // namespace
@@ -163,7 +169,7 @@ Eigen::MatrixXd PiecewiseHermiteCurve::span_jet(int k, double t, int order) cons
 
 inline void PiecewiseHermiteCurve::span_jet_rows(int k, double t, int first, int last, JetMatrix& out) const {
     const int dim = static_cast<int>(nodes_.cols());
-    with_derivatives(slopes_, scales_, d0_, d1_, [&](const auto& d) {
+    with_derivatives(slopes_, scales_, d0_, d1_, [&](const auto& d) __attribute__((always_inline)) {
         switch (dim) {  // dimension() ≤ 3 (require_jet_capacity)
             case 1: return hermite_jet_rows<1>(nodes_, d, k, t, first, last, out);
             case 2: return hermite_jet_rows<2>(nodes_, d, k, t, first, last, out);
@@ -206,7 +212,7 @@ void hermite_jets(const Eigen::MatrixXd& nodes, const Derivatives& d, const doub
 
 void PiecewiseHermiteCurve::jets_into(const double* u, std::size_t count, int order, double* out) const {
     require_jet_capacity("cagd::spline::PiecewiseHermiteCurve::jets_into", order + 1, static_cast<int>(nodes_.cols()));
-    with_derivatives(slopes_, scales_, d0_, d1_, [&](const auto& d) {
+    with_derivatives(slopes_, scales_, d0_, d1_, [&](const auto& d) __attribute__((always_inline)) {
         switch (nodes_.cols()) {
             case 1: return hermite_jets<1>(nodes_, d, u, count, order, out);
             case 2: return hermite_jets<2>(nodes_, d, u, count, order, out);

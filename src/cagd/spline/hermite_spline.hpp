@@ -70,7 +70,7 @@ public:
     Eigen::MatrixXd end_derivatives() const;
     /// Whether the curve is held in the slope form (from_node_slopes).
     bool holds_node_slopes() const { return slopes_.rows() > 0; }
-    /// The slope form's m_k (empty in the pair form).
+    /// The slope form's m_k, K + 1 rows (closed: row K repeats row 0; empty in the pair form).
     const Eigen::MatrixXd& node_slopes() const { return slopes_; }
     /// The slope form's h_k (empty in the pair form, and for h_k = 1).
     const std::vector<double>& span_scales() const { return scales_; }
