@@ -66,35 +66,16 @@ void for_each_slope_block(Eigen::Index n, Visit visit) {
     }
 }
 
-// Where node k's slope s goes in one coordinate of the unit-span Hermite form (τ-lengths h_k):
-// d0_k = h_k s for the span that starts at k, d1_{k−1} = h_{k−1} s for the span that ends there (a
-// closed curve's node 0 also ends its last span, n − 1).
+// Where node k's slope s (dy/dτ) goes in one coordinate of the Hermite form's slope column: m_k = s
+// (PiecewiseHermiteCurve::from_node_slopes forms d0_k = h_k m_k and d1_{k−1} = h_{k−1} m_k).
 struct NodeSlopeSink {
-    const double* h;
-    double* d0;
-    double* d1;
+    double* m;
     std::size_t n;  // nodes
-    bool closed = false;
-    std::size_t spans() const { return closed ? n : n - 1; }
-    void interior(std::size_t k, double s) const {
-        d0[k] = h[k] * s;
-        d1[k - 1] = h[k - 1] * s;
-    }
-    void put(std::size_t k, double s) const {
-        if (k < spans()) d0[k] = h[k] * s;
-        if (k > 0) d1[k - 1] = h[k - 1] * s;
-        if (k == 0 && closed) d1[n - 1] = h[n - 1] * s;
-    }
-    bool holds(std::size_t k, double s) const {  // bit for bit
-        const auto same = [](double a, double b) { return bits_of(a) == bits_of(b); };
-        return (k >= spans() || same(d0[k], h[k] * s)) && (k == 0 || same(d1[k - 1], h[k - 1] * s)) && (k > 0 || !closed || same(d1[n - 1], h[n - 1] * s));
-    }
+    void interior(std::size_t k, double s) const { m[k] = s; }
+    void put(std::size_t k, double s) const { m[k] = s; }
+    bool holds(std::size_t k, double s) const { return bits_of(m[k]) == bits_of(s); }  // bit for bit
 };
 
-// Boost pchip's rule (Fritsch–Butland): with secants d_k = Δy_k / h_k, h_k = τ_{k+1} − τ_k, the
-// slope at an interior node is 0 where d_{k−1} and d_k differ in sign or either is 0, else the
-// weighted harmonic mean (w1 + w2)/(w1/d_{k−1} + w2/d_k), w1 = 2h_k + h_{k−1}, w2 = h_k + 2h_{k−1};
-// at the ends the one-sided secant. Each secant is formed once (the same value as Boost's twice).
 void pchip_rule_slopes(const std::vector<double>& x, const double* y, const NodeSlopeSink& out) {
     const std::size_t n = x.size();
     double hkm1 = x[1] - x[0], dkm1 = (y[1] - y[0]) / hkm1;
@@ -169,15 +150,15 @@ template <class Interpolator, class Rule>
 Interpolant componentwise_chord_interpolant(const char* function, const PointList& p, Eigen::Index reach, Rule rule) {
     if (p.rows() < 4) fail_input(function, "needs at least 4 points (Boost's pchip and makima), got " + std::to_string(p.rows()));
     std::vector<double> h = chord_lengths(p, false);
-    const Eigen::Index n = p.rows(), spans = n - 1;
-    Eigen::MatrixXd nodes = p, d0(spans, p.cols()), d1(spans, p.cols());
-    {  // the chord-length parameters live only while d0, d1 are filled (peak memory)
+    const Eigen::Index n = p.rows();
+    Eigen::MatrixXd nodes = p, m(n, p.cols());
+    {  // the chord-length parameters live only while the slopes are filled (peak memory)
         std::vector<double> tau{0.0};
         tau.reserve(h.size() + 1);
         for (double hk : h) tau.push_back(tau.back() + hk);
         for (Eigen::Index c = 0; c < p.cols(); ++c) {
             const double* y = p.col(c).data();
-            const NodeSlopeSink out{h.data(), d0.col(c).data(), d1.col(c).data(), static_cast<std::size_t>(n)};
+            const NodeSlopeSink out{m.col(c).data(), static_cast<std::size_t>(n)};
             rule(tau, y, out);
             if (!rule_slopes_match_boost<Interpolator>(tau, y, reach, out)) {
                 std::vector<double> block;
@@ -189,7 +170,8 @@ Interpolant componentwise_chord_interpolant(const char* function, const PointLis
             }
         }
     }
-    return unit_span_interpolant(std::make_shared<spline::PiecewiseHermiteCurve>(std::move(nodes), std::move(d0), std::move(d1)), n, std::move(h));
+    auto curve = std::make_shared<spline::PiecewiseHermiteCurve>(spline::PiecewiseHermiteCurve::from_node_slopes(std::move(nodes), std::move(m), h));
+    return unit_span_interpolant(std::move(curve), n, std::move(h));
 }
 
 // Boost catmull_rom's derivative at its own node i, s = t_i: the Barry–Goldman pyramid
@@ -300,19 +282,18 @@ Interpolant catmull_rom_interpolant(const PointList& p, bool closed, SlopeRule r
     using Point = std::array<double, D>;
     const Eigen::Index n = p.rows(), spans = closed ? n : n - 1;
     std::vector<double> h(static_cast<std::size_t>(spans));
-    // The unit-span Hermite form, its derivatives filled as the slopes come (NodeSlopeSink). For
-    // peak memory, they are allocated once Boost's spline is built (its construction copies its
-    // points into a longer array), and the nodes once it is gone.
-    Eigen::MatrixXd d0, d1;
+    // The unit-span Hermite form's slopes, filled as they come (NodeSlopeSink). For peak memory,
+    // they are allocated once Boost's spline is built (its construction copies its points into a
+    // longer array), and the nodes once it is gone.
+    Eigen::MatrixXd m;
     {  // Boost's spline lives only while its parameters and slopes are read (peak memory)
         const boost::math::catmull_rom<Point> cr = boost_catmull_rom<D>(p, closed);
-        d0.resize(spans, p.cols()), d1.resize(spans, p.cols());
+        m.resize(n, p.cols());
         const CatmullRomSlopes<D> at{cr, p};
         // A closed curve's last span ends at t_{n+1} (max_parameter), an open one's at t_n.
         for (Eigen::Index k = 0; k < spans; ++k) h[static_cast<std::size_t>(k)] = at.t(k + 2) - at.t(k + 1);
         std::array<NodeSlopeSink, D> sinks;
-        for (std::size_t c = 0; c < D; ++c)
-            sinks[c] = {h.data(), d0.col(static_cast<Eigen::Index>(c)).data(), d1.col(static_cast<Eigen::Index>(c)).data(), static_cast<std::size_t>(n), closed};
+        for (std::size_t c = 0; c < D; ++c) sinks[c] = {m.col(static_cast<Eigen::Index>(c)).data(), static_cast<std::size_t>(n)};
         const auto put = [&](Eigen::Index k, const Point& d) {
             for (std::size_t c = 0; c < D; ++c) sinks[c].put(static_cast<std::size_t>(k), d[c]);
         };
@@ -341,7 +322,9 @@ Interpolant catmull_rom_interpolant(const PointList& p, bool closed, SlopeRule r
     Eigen::MatrixXd nodes(spans + 1, p.cols());
     nodes.topRows(n) = p;
     if (closed) nodes.row(n) = p.row(0);
-    return unit_span_interpolant(std::make_shared<spline::PiecewiseHermiteCurve>(std::move(nodes), std::move(d0), std::move(d1)), spans + 1, std::move(h));
+    // (closed: n slopes for n spans; from_node_slopes repeats m_0 as m_n)
+    auto curve = std::make_shared<spline::PiecewiseHermiteCurve>(spline::PiecewiseHermiteCurve::from_node_slopes(std::move(nodes), std::move(m), h));
+    return unit_span_interpolant(std::move(curve), spans + 1, std::move(h));
 }
 
 }  // namespace
@@ -365,9 +348,9 @@ bool rule_matches_everywhere(const PointList& p, Eigen::Index reach, Rule rule) 
     const std::vector<double> h = chord_lengths(p, false);
     std::vector<double> tau{0.0};
     for (double hk : h) tau.push_back(tau.back() + hk);
-    std::vector<double> d0(h.size()), d1(h.size());
+    std::vector<double> m(tau.size());
     for (Eigen::Index c = 0; c < p.cols(); ++c) {
-        const NodeSlopeSink out{h.data(), d0.data(), d1.data(), tau.size()};
+        const NodeSlopeSink out{m.data(), tau.size()};
         rule(tau, p.col(c).data(), out);
         if (!rule_slopes_match_boost<Interpolator>(tau, p.col(c).data(), reach, out, true)) return false;
     }
@@ -386,7 +369,7 @@ Interpolant detail::boost_pchip_interpolant_with_a_spoilt_rule(const PointList& 
     return componentwise_chord_interpolant<boost::math::interpolators::pchip<std::vector<double>>>(
         "cagd::methods::detail::boost_pchip_interpolant_with_a_spoilt_rule", p, 1, [](const std::vector<double>& x, const double* y, const NodeSlopeSink& out) {
             pchip_rule_slopes(x, y, out);
-            for (std::size_t k = 0; k + 1 < out.n; ++k) out.d0[k] = std::nextafter(out.d0[k], std::numeric_limits<double>::infinity());
+            for (std::size_t k = 0; k + 1 < out.n; ++k) out.m[k] = std::nextafter(out.m[k], std::numeric_limits<double>::infinity());
         });
 }
 
