@@ -388,13 +388,8 @@ void design_system_pass(const CurvatureProfileProblem& P, const Eigen::VectorXd&
     if (u.size() != cols) fail_input(who, "u needs " + std::to_string(cols) + " entries (eq 2), got " + std::to_string(u.size()));
     std::vector<double>& lengths = workspace.lengths;
     lengths.resize(static_cast<std::size_t>(k));
-    for (int j = 0; j < k; ++j) {
-        const double d = u(L.length_index(j));
-        if (!std::isfinite(d) || d <= 0) fail_input(who, "segment " + std::to_string(j) + " has length " + fmt(d) + " (finite and > 0 required)");
-        lengths[static_cast<std::size_t>(j)] = d;
-    }
-    for (int i = l; i < cols; ++i)
-        if (!std::isfinite(u(i))) fail_input(who, "de Boor ordinate B_" + std::to_string(i - l) + " = " + fmt(u(i)) + " is not finite");
+    for (int j = 0; j < k; ++j) lengths[static_cast<std::size_t>(j)] = u(L.length_index(j));
+    TangentAngleSpline::require_valid_values(who, lengths, u.data() + l, static_cast<std::size_t>(cols - l));
     const DesignPsi psi{L, lengths, u.data() + l};
     std::vector<SegmentJet>& jets = workspace.jets;
     jets.resize(static_cast<std::size_t>(k));

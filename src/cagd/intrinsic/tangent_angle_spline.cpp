@@ -61,14 +61,9 @@ TangentAngleSpline::TangentAngleSpline(KnotLayout layout, std::vector<double> se
     const int k = layout_.segments(), p = layout_.degree();
     if (static_cast<int>(lengths_.size()) != k) fail_input(who, "needs " + std::to_string(k) + " segment lengths, got " + std::to_string(lengths_.size()));
     if (de_boor_.size() != layout_.ordinates()) fail_input(who, "needs " + std::to_string(layout_.ordinates()) + " de Boor ordinates, got " + std::to_string(de_boor_.size()));
+    require_valid_values(who.c_str(), lengths_, de_boor_.data(), static_cast<std::size_t>(de_boor_.size()));
     w_.push_back(0.0);
-    for (int j = 0; j < k; ++j) {
-        const double d = lengths_[static_cast<std::size_t>(j)];
-        if (!std::isfinite(d) || d <= 0) fail_input(who, "segment " + std::to_string(j) + " has length " + full_precision(d) + " (finite and > 0 required)");
-        w_.push_back(w_.back() + d);
-    }
-    for (int i = 0; i < de_boor_.size(); ++i)
-        if (!std::isfinite(de_boor_(i))) fail_input(who, "de Boor ordinate B_" + std::to_string(i) + " = " + full_precision(de_boor_(i)) + " is not finite");
+    for (int j = 0; j < k; ++j) w_.push_back(w_.back() + lengths_[static_cast<std::size_t>(j)]);
     const std::vector<double> v = farin_knots();
     basis_knots_ = v;
     basis_knots_.insert(basis_knots_.begin(), w_.front());
@@ -82,6 +77,13 @@ TangentAngleSpline::TangentAngleSpline(KnotLayout layout, std::vector<double> se
         detail::bezier_from_de_boor(p, u, c, b);
         for (int m = 0; m <= p; ++m) bezier_(j, m) = b[m];
     }
+}
+
+void TangentAngleSpline::require_valid_values(const char* who, const std::vector<double>& lengths, const double* de_boor, std::size_t ordinates) {
+    for (std::size_t j = 0; j < lengths.size(); ++j)
+        if (!std::isfinite(lengths[j]) || lengths[j] <= 0) fail_input(who, "segment " + std::to_string(j) + " has length " + full_precision(lengths[j]) + " (finite and > 0 required)");
+    for (std::size_t i = 0; i < ordinates; ++i)
+        if (!std::isfinite(de_boor[i])) fail_input(who, "de Boor ordinate B_" + std::to_string(i) + " = " + full_precision(de_boor[i]) + " is not finite");
 }
 
 TangentAngleSpline TangentAngleSpline::from_unknowns(const KnotLayout& layout, const Eigen::VectorXd& u) {

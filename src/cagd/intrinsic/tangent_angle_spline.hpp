@@ -60,6 +60,10 @@ public:
     /// The same from a layout and segment lengths alone (no spline built: the Newton iterations'
     /// path); lengths has layout.segments() values.
     static void local_farin_knots_into(const KnotLayout& layout, const std::vector<double>& lengths, int segment, double* out);
+    /// InvalidInput naming `who` unless every segment length is finite and > 0 and every one of the
+    /// `ordinates` de Boor ordinates is finite (the constructor's checks, for callers that hold ψ's
+    /// values without building it).
+    static void require_valid_values(const char* who, const std::vector<double>& lengths, const double* de_boor, std::size_t ordinates);
     std::vector<double> greville_abscissae() const;               ///< one per de Boor ordinate
     const Eigen::MatrixXd& bezier() const { return bezier_; }  ///< k × (p + 1): the Bézier ordinates b_{j,r} of each segment
 

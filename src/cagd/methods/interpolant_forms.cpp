@@ -71,11 +71,14 @@ void for_each_slope_block(Eigen::Index n, Visit visit) {
 struct NodeSlopeSink {
     double* m;
     std::size_t n;  // nodes
-    void interior(std::size_t k, double s) const { m[k] = s; }
     void put(std::size_t k, double s) const { m[k] = s; }
     bool holds(std::size_t k, double s) const { return bits_of(m[k]) == bits_of(s); }  // bit for bit
 };
 
+// Boost pchip's rule (Fritsch–Butland): with secants d_k = Δy_k / h_k, h_k = τ_{k+1} − τ_k, the
+// slope at an interior node is 0 where d_{k−1} and d_k differ in sign or either is 0, else the
+// weighted harmonic mean (w1 + w2)/(w1/d_{k−1} + w2/d_k), w1 = 2h_k + h_{k−1}, w2 = h_k + 2h_{k−1};
+// at the ends the one-sided secant. Each secant is formed once (the same value as Boost's twice).
 void pchip_rule_slopes(const std::vector<double>& x, const double* y, const NodeSlopeSink& out) {
     const std::size_t n = x.size();
     double hkm1 = x[1] - x[0], dkm1 = (y[1] - y[0]) / hkm1;
@@ -83,7 +86,7 @@ void pchip_rule_slopes(const std::vector<double>& x, const double* y, const Node
     for (std::size_t k = 1; k + 1 < n; ++k) {
         const double hk = x[k + 1] - x[k], dk = (y[k + 1] - y[k]) / hk;
         const double w1 = 2 * hk + hkm1, w2 = hk + 2 * hkm1;
-        out.interior(k, ((dk > 0 && dkm1 < 0) || (dk < 0 && dkm1 > 0) || dk == 0 || dkm1 == 0) ? 0.0 : (w1 + w2) / (w1 / dkm1 + w2 / dk));
+        out.put(k, ((dk > 0 && dkm1 < 0) || (dk < 0 && dkm1 > 0) || dk == 0 || dkm1 == 0) ? 0.0 : (w1 + w2) / (w1 / dkm1 + w2 / dk));
         hkm1 = hk;
         dkm1 = dk;
     }
@@ -115,7 +118,7 @@ void makima_rule_slopes(const std::vector<double>& x, const double* y, const Nod
     double mim1 = secant(1), mi = secant(2), w_im2 = makima_weight(mim1, secant(0)), w_im1 = makima_weight(mi, mim1);
     for (std::size_t i = 2; i + 2 < n; ++i) {
         const double mip1 = secant(i + 1), w_i = makima_weight(mip1, mi);
-        out.interior(i, makima_weighted(w_i, mim1, w_im2, mi));
+        out.put(i, makima_weighted(w_i, mim1, w_im2, mi));
         mim1 = mi;
         mi = mip1;
         w_im2 = w_im1;
