@@ -19,9 +19,11 @@
 #include "cagd/analysis/fairness_measures.hpp"
 #include "cagd/analysis/log_curvature_graph.hpp"
 #include "cagd/compare/method_comparison.hpp"
+#include "cagd/core/errors.hpp"
 #include "cagd/core/finite.hpp"
 #include "cagd/core/parallel.hpp"
 #include "cagd/core/point_csv.hpp"
+#include "cagd/core/points.hpp"
 #include "cagd/core/random_walk.hpp"
 #include "cagd/methods/method_registry.hpp"
 
@@ -94,4 +96,48 @@ TEST(Points, AllFiniteFindsEveryNonFiniteValueAtEveryPosition) {
     EXPECT_TRUE(all_finite(m));
     m(3, 2) = std::numeric_limits<double>::infinity();
     EXPECT_FALSE(all_finite(m));
+}
+
+// require_valid_points finds a coinciding consecutive pair wherever it is (its pass runs by blocks
+// of 1024 pairs: both sides of a block's edge, the last pair, the closing pair) and names it; pairs
+// that differ in one coordinate only, or by the smallest subnormal, pass; −0 and +0 coincide.
+TEST(Points, RequireValidPointsNamesEveryCoincidingPair) {
+    const auto message = [](const PointList& p, bool closed) -> std::string {
+        try {
+            require_valid_points(p, 2, true, closed, "test");
+        } catch (const InvalidInput& e) {
+            return e.what();
+        }
+        return "";
+    };
+    for (Eigen::Index dim = 1; dim <= 3; ++dim)
+        for (Eigen::Index n : {2, 3, 1024, 1025, 1026, 2050}) {
+            PointList p(n, dim);
+            for (Eigen::Index i = 0; i < n; ++i)
+                for (Eigen::Index k = 0; k < dim; ++k) p(i, k) = static_cast<double>(i) + 0.5 * static_cast<double>(k);
+            const std::string where = "dim " + std::to_string(dim) + " n " + std::to_string(n);
+            ASSERT_EQ(message(p, false), "") << where;
+            ASSERT_EQ(message(p, n >= 3), "") << where;
+            for (Eigen::Index i : {Eigen::Index{0}, Eigen::Index{1022}, Eigen::Index{1023}, Eigen::Index{1024}, n - 2}) {
+                if (i < 0 || i + 1 >= n) continue;
+                PointList q = p;
+                q.row(i + 1) = q.row(i);
+                const std::string named = "points " + std::to_string(i) + " and " + std::to_string(i + 1) + " coincide";
+                EXPECT_NE(message(q, false).find(named), std::string::npos) << where << " pair " << i << ": " << message(q, false);
+                q(i + 1, dim - 1) = std::nextafter(q(i, dim - 1), 1e300);  // one coordinate differs, by one ulp
+                EXPECT_EQ(message(q, false), "") << where << " pair " << i;
+            }
+            if (n >= 3) {
+                PointList q = p;
+                q.row(n - 1) = q.row(0);
+                EXPECT_EQ(message(q, false), "") << where << ": open, the last point may equal the first";
+                const std::string named = "points " + std::to_string(n - 1) + " and 0 coincide";
+                EXPECT_NE(message(q, true).find(named), std::string::npos) << where << ": " << message(q, true);
+            }
+        }
+    PointList z(3, 2);
+    z << 0.0, 1.0, -0.0, 1.0, 2.0, 2.0;
+    EXPECT_NE(message(z, false).find("points 0 and 1 coincide"), std::string::npos) << "−0 and +0 are the same coordinate";
+    z << 0.0, 1.0, std::numeric_limits<double>::denorm_min(), 1.0, 2.0, 2.0;
+    EXPECT_EQ(message(z, false), "") << "distinct by the smallest subnormal";
 }
