@@ -229,18 +229,36 @@ struct CatmullRomSlopes {
     // Boost's slope at node k (at the last open node the last span's end derivative: Boost
     // evaluates the span on the left at s = max_parameter).
     Point boost(Eigen::Index k) const { return cr.prime(t(k + 1)); }
-    // By the rule, nodes a ≤ k < b, 1 ≤ a: node k is Boost's node i = k + 1, its points P_{k−1 … k+2}
-    // wrapped (node 0 would need Boost's private t_0). put(k, slope).
-    template <class Put>
-    void rule(Eigen::Index a, Eigen::Index b, Put put) const {
+    // By the rule, nodes a ≤ k < b, 1 ≤ a, into the columns m[c][k]: node k is Boost's node
+    // i = k + 1, its points P_{k−1 … k+2} wrapped (node 0 would need Boost's private t_0). Where
+    // no point wraps (k + 2 < n), by blocks of kRuleBlock nodes: the block's parameters and their
+    // reciprocals first (r_01, r_12, r_23 of node k are R1[k], R1[k+1], R1[k+2]; r_02, r_13 are
+    // R2[k], R2[k+1]: the same quotients of the same differences as one node at a time), then the
+    // pyramid node by node with nothing carried from one node to the next, which the compiler
+    // computes two nodes at a time.
+    void rule_into(Eigen::Index a, Eigen::Index b, const std::array<double*, D>& m) const {
         const Eigen::Index n = p.rows();
-        if (a >= b) return;
-        CatmullRomReciprocals r{1 / (t(a + 1) - t(a)), 1 / (t(a + 2) - t(a + 1)), 1 / (t(a + 3) - t(a + 2)), 1 / (t(a + 3) - t(a + 1)), 1 / (t(a + 2) - t(a))};
-        for (Eigen::Index k = a;; ++k) {
-            const std::array<const double*, 4> P{&p(k == 0 ? n - 1 : k - 1, 0), &p(k, 0), &p(k + 1 < n ? k + 1 : k + 1 - n, 0), &p(k + 2 < n ? k + 2 : k + 2 - n, 0)};
-            put(k, catmull_rom_slope_at_node<D>(t(k), t(k + 1), t(k + 2), t(k + 3), r, P, n));
-            if (k + 1 == b) break;
-            r = {r.r12, r.r23, 1 / (t(k + 4) - t(k + 3)), 1 / (t(k + 4) - t(k + 2)), r.r13};
+        const double* x = p.data();
+        const Eigen::Index unwrapped_end = std::max(a, std::min(b, n - 2));
+        constexpr Eigen::Index kRuleBlock = 256;
+        double T[kRuleBlock + 3], R1[kRuleBlock + 2], R2[kRuleBlock + 1];
+        for (Eigen::Index k0 = a; k0 < unwrapped_end; k0 += kRuleBlock) {
+            const Eigen::Index count = std::min(kRuleBlock, unwrapped_end - k0);
+            for (Eigen::Index i = 0; i < count + 3; ++i) T[i] = t(k0 + i);
+            for (Eigen::Index i = 0; i < count + 2; ++i) R1[i] = 1 / (T[i + 1] - T[i]);
+            for (Eigen::Index i = 0; i < count + 1; ++i) R2[i] = 1 / (T[i + 2] - T[i]);
+            for (Eigen::Index i = 0; i < count; ++i) {
+                const Eigen::Index k = k0 + i;
+                const std::array<double, D> d = catmull_rom_slope_at_node<D>(T[i], T[i + 1], T[i + 2], T[i + 3], {R1[i], R1[i + 1], R1[i + 2], R2[i + 1], R2[i]},
+                                                                             {x + k - 1, x + k, x + k + 1, x + k + 2}, n);
+                for (std::size_t c = 0; c < D; ++c) m[c][k] = d[c];
+            }
+        }
+        for (Eigen::Index k = unwrapped_end; k < b; ++k) {
+            const CatmullRomReciprocals r{1 / (t(k + 1) - t(k)), 1 / (t(k + 2) - t(k + 1)), 1 / (t(k + 3) - t(k + 2)), 1 / (t(k + 3) - t(k + 1)), 1 / (t(k + 2) - t(k))};
+            const std::array<const double*, 4> P{&p(k - 1, 0), &p(k, 0), &p(k + 1 < n ? k + 1 : k + 1 - n, 0), &p(k + 2 < n ? k + 2 : k + 2 - n, 0)};
+            const std::array<double, D> d = catmull_rom_slope_at_node<D>(t(k), t(k + 1), t(k + 2), t(k + 3), r, P, n);
+            for (std::size_t c = 0; c < D; ++c) m[c][k] = d[c];
         }
     }
     static bool same(const Point& a, const Point& b) {
@@ -263,7 +281,11 @@ enum class SlopeRule { checked, spoilt };
 // (Boost's construction only adds).
 template <std::size_t D>
 boost::math::catmull_rom<std::array<double, D>> boost_catmull_rom(const PointList& p, bool closed) {
-    std::vector<std::array<double, D>> pts(static_cast<std::size_t>(p.rows()));
+    // Boost's construction resizes its points to n + 3 (the ghost nodes): with that capacity
+    // reserved, it does so in place instead of copying them to a new array.
+    std::vector<std::array<double, D>> pts;
+    pts.reserve(static_cast<std::size_t>(p.rows()) + 3);
+    pts.resize(static_cast<std::size_t>(p.rows()));
     for (Eigen::Index k = 0; k < p.rows(); ++k)
         for (std::size_t c = 0; c < D; ++c) pts[static_cast<std::size_t>(k)][c] = p(k, static_cast<Eigen::Index>(c));
     boost::math::catmull_rom<std::array<double, D>> cr(std::move(pts), closed, 0.5);
@@ -286,8 +308,8 @@ Interpolant catmull_rom_interpolant(const PointList& p, bool closed, SlopeRule r
     const Eigen::Index n = p.rows(), spans = closed ? n : n - 1;
     std::vector<double> h(static_cast<std::size_t>(spans));
     // The unit-span Hermite form's slopes, filled as they come (NodeSlopeSink). For peak memory,
-    // they are allocated once Boost's spline is built (its construction copies its points into a
-    // longer array), and the nodes once it is gone.
+    // they are allocated once Boost's spline is built (its construction holds a copy of the points
+    // and writes its parameters), and the nodes once it is gone.
     Eigen::MatrixXd m;
     {  // Boost's spline lives only while its parameters and slopes are read (peak memory)
         const boost::math::catmull_rom<Point> cr = boost_catmull_rom<D>(p, closed);
@@ -306,10 +328,11 @@ Interpolant catmull_rom_interpolant(const PointList& p, bool closed, SlopeRule r
             return true;
         };
         put(0, at.boost(0));
-        at.rule(1, n, [&](Eigen::Index k, Point d) {
-            if (rule == SlopeRule::spoilt) d[0] = std::nextafter(d[0], std::numeric_limits<double>::infinity());
-            put(k, d);
-        });
+        std::array<double*, D> columns;
+        for (std::size_t c = 0; c < D; ++c) columns[c] = sinks[c].m;
+        at.rule_into(1, n, columns);
+        if (rule == SlopeRule::spoilt)
+            for (Eigen::Index k = 1; k < n; ++k) sinks[0].put(static_cast<std::size_t>(k), std::nextafter(sinks[0].m[k], std::numeric_limits<double>::infinity()));
         // The check, bit for bit: kCheckedBlocks blocks of kSlopeBlock nodes spread over 1 … n − 1,
         // both ends included. Should any derivative differ, every slope is Boost's.
         const Eigen::Index blocks = std::max<Eigen::Index>(1, (n - 1) / kSlopeBlock), checked = std::min(blocks, kCheckedBlocks);
@@ -383,9 +406,16 @@ template <std::size_t D>
 bool catmull_rom_rule_matches_everywhere(const PointList& p, bool closed) {
     const auto cr = boost_catmull_rom<D>(p, closed);
     const CatmullRomSlopes<D> at{cr, p};
-    bool same = true;
-    at.rule(1, p.rows(), [&](Eigen::Index k, const std::array<double, D>& d) { same = same && CatmullRomSlopes<D>::same(at.boost(k), d); });
-    return same;
+    Eigen::MatrixXd m(p.rows(), p.cols());
+    std::array<double*, D> columns;
+    for (std::size_t c = 0; c < D; ++c) columns[c] = m.col(static_cast<Eigen::Index>(c)).data();
+    at.rule_into(1, p.rows(), columns);
+    for (Eigen::Index k = 1; k < p.rows(); ++k) {
+        std::array<double, D> d;
+        for (std::size_t c = 0; c < D; ++c) d[c] = m(k, static_cast<Eigen::Index>(c));
+        if (!CatmullRomSlopes<D>::same(at.boost(k), d)) return false;
+    }
+    return true;
 }
 }  // namespace
 
