@@ -7,6 +7,7 @@
 #include <boost/math/quadrature/tanh_sinh.hpp>
 #include <cmath>
 
+#include <limits>
 #include <numbers>
 #include <random>
 #include "cagd/core/errors.hpp"
@@ -157,6 +158,18 @@ TEST(Tridiagonal, OnePassEliminationIsTheTextbookThomasBitForBit) {
         const Eigen::MatrixXd X = cagd::numeric::solve_tridiagonal(sub, diag, sup, R);
         for (Eigen::Index r = 0; r < X.rows(); ++r)
             for (int j = 0; j < cols; ++j) EXPECT_EQ(X(r, j), expected(r, j)) << "row " << r << ", column " << j << " of " << cols;
+        // The same elimination with each row formed when it is reached (its right-hand side written
+        // then, into the output), each row once and in order.
+        Eigen::MatrixXd Y = Eigen::MatrixXd::Constant(static_cast<Eigen::Index>(n), cols, std::numeric_limits<double>::quiet_NaN());
+        std::size_t next_row = 0;
+        cagd::numeric::solve_tridiagonal_rows(n, static_cast<std::size_t>(cols), [&](std::size_t r, double* rhs, std::size_t stride) {
+            EXPECT_EQ(r, next_row++) << "rows out of order";
+            for (int j = 0; j < cols; ++j) rhs[static_cast<std::size_t>(j) * stride] = R(static_cast<Eigen::Index>(r), j);
+            return cagd::numeric::TridiagonalRow{sub[r], diag[r], sup[r]};
+        }, Y.data());
+        EXPECT_EQ(next_row, n);
+        for (Eigen::Index r = 0; r < Y.rows(); ++r)
+            for (int j = 0; j < cols; ++j) EXPECT_EQ(Y(r, j), expected(r, j)) << "rows formed on demand: row " << r << ", column " << j << " of " << cols;
     }
     // A zero pivot after the first row (diag[1] − sub[1]·sup[0]/diag[0] = 1 − 1·1/1) still throws.
     try {

@@ -13,6 +13,7 @@
 #include "cagd/core/errors.hpp"
 #include "cagd/fairness/pseudo_spline.hpp"
 #include "cagd/locality/locality_spline.hpp"
+#include "cagd/numeric/tridiagonal.hpp"
 #include "cagd/spline/hermite_spline.hpp"
 
 #include "../support/point_lists.hpp"
@@ -229,6 +230,48 @@ TEST(CubicSplines, SlopeFormGivesThePairFormsJetsBitForBit) {
                     }
                 }
             }
+}
+
+// The slopes are the solution of the system the function states (row k: hn m_{k−1} + 2(hp + hn) m_k
+// + hp m_{k+1} = 3(hn Δ_{k−1}/hp + hp Δ_k/hn), open ends 2m_0 + m_1 = 3Δ_0/h_0 and
+// m_{K−1} + 2m_K = 3Δ_{K−1}/h_{K−1}), assembled here as three diagonals and a right-hand side and
+// solved by solve_tridiagonal (closed: solve_cyclic_tridiagonal), bit for bit: the construction
+// forms each row as the elimination reaches it.
+TEST(CubicSplines, SlopesAreTheSolveOfTheAssembledSystemBitForBit) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> coordinate(-1.0, 1.0);
+    for (int dim = 1; dim <= 3; ++dim)
+        for (bool closed : {false, true})
+            for (auto spacing : {spline::ParameterSpacing::uniform, spline::ParameterSpacing::chord_length})
+                for (int n : {2, 3, 4, 31}) {
+                    if (closed && n < 3) continue;
+                    PointList p(n, dim);
+                    for (Eigen::Index i = 0; i < p.rows(); ++i)
+                        for (int c = 0; c < dim; ++c) p(i, c) = coordinate(rng) + (c == 0 ? static_cast<double>(i) : 0.0);
+                    const int spans = closed ? n : n - 1, N = closed ? spans : spans + 1;
+                    const auto node = [&](int k) { return p.row(k % n); };
+                    std::vector<double> h(static_cast<std::size_t>(spans), 1.0), sub, diag, sup;
+                    if (spacing == spline::ParameterSpacing::chord_length)
+                        for (int k = 0; k < spans; ++k) h[static_cast<std::size_t>(k)] = (node(k + 1) - node(k)).norm();
+                    Eigen::MatrixXd rhs(N, dim);
+                    for (int k = 0; k < N; ++k) {
+                        if (!closed && (k == 0 || k == N - 1)) {
+                            const int span = k == 0 ? 0 : spans - 1;
+                            sub.push_back(k == 0 ? 0.0 : 1.0), diag.push_back(2.0), sup.push_back(k == 0 ? 1.0 : 0.0);
+                            rhs.row(k) = 3.0 * (node(span + 1) - node(span)) / h[static_cast<std::size_t>(span)];
+                            continue;
+                        }
+                        const int prev = k == 0 ? spans - 1 : k - 1, next = k;
+                        const double hp = h[static_cast<std::size_t>(prev)], hn = h[static_cast<std::size_t>(next)];
+                        sub.push_back(hn), diag.push_back(2.0 * (hp + hn)), sup.push_back(hp);
+                        rhs.row(k) = 3.0 * (hn * (node(prev + 1) - node(prev)) / hp + hp * (node(next + 1) - node(next)) / hn);
+                    }
+                    const Eigen::MatrixXd want = closed ? numeric::solve_cyclic_tridiagonal(sub, diag, sup, rhs) : numeric::solve_tridiagonal(sub, diag, sup, rhs);
+                    const PiecewiseHermiteCurve c = spline::cubic_spline_interpolant(p, spacing, closed);
+                    const std::string what = std::to_string(dim) + "-D, " + std::to_string(n) + " points, " + (closed ? "closed" : "open") +
+                                             (spacing == spline::ParameterSpacing::uniform ? ", uniform" : ", chord length");
+                    ASSERT_TRUE(c.node_slopes().topRows(N) == want) << what << "\n" << c.node_slopes().topRows(N) - want;
+                }
 }
 
 TEST(CubicSplines, SlopeFormRefusesWhatIsNotACurve) {

@@ -253,38 +253,42 @@ PiecewiseHermiteCurve cubic_spline_interpolant(const PointList& points, Paramete
     const bool uniform = spacing == ParameterSpacing::uniform;
     std::vector<double> chords = uniform ? std::vector<double>{} : chord_lengths(points, closed);
     const auto h = [&](int k) { return uniform ? 1.0 : chords[static_cast<std::size_t>(k)]; };
-    // Δ_k = P_{k+1} − P_k, formed where it is used (no n × dim temporary: at 10^5 points and more
-    // the cost of a construction is mostly fresh memory).
-    const auto delta = [&](int k) { return nodes.row(k + 1) - nodes.row(k); };
     // Unknowns m_0..m_{N−1}: N = n+1 for open, N = spans (m_K = m_0) for closed. Row k holds
     // hn m_{k−1} + 2(hp + hn) m_k + hp m_{k+1}: strictly diagonally dominant, so the Thomas
     // algorithm needs no pivoting (numeric/tridiagonal.hpp); closed: cyclic, the corners
     // A(0, N−1) = sub[0] and A(N−1, 0) = sup[N−1].
     const int N = closed ? spans : spans + 1;
-    const auto size = static_cast<std::size_t>(N);
-    // The three diagonals filled row by row, without zeroing them first (at 10^7 points a pass over
-    // 240 MB); the entries the solver ignores (open: sub[0], sup[N−1]) are 0.
-    std::vector<double> sub, diag, sup;
-    sub.reserve(size), diag.reserve(size), sup.reserve(size);
-    Eigen::MatrixXd rhs(N, dim);
-    for (int k = 0; k < N; ++k) {
-        if (!closed && k == 0) {
-            sub.push_back(0.0), diag.push_back(2.0), sup.push_back(1.0);
-            rhs.row(0) = 3.0 * delta(0) / h(0);
-            continue;
-        }
-        if (!closed && k == N - 1) {
-            sub.push_back(1.0), diag.push_back(2.0), sup.push_back(0.0);
-            rhs.row(k) = 3.0 * delta(spans - 1) / h(spans - 1);
-            continue;
+    // Row k: its entries, and its right-hand side written to rhs[c·stride], from the chords and
+    // Δ_k = P_{k+1} − P_k formed where used (no n-long arrays of them: at 10^5 points and more the
+    // cost of a construction is mostly memory). Open: the ends' rows 2m_0 + m_1 = 3Δ_0/h_0 and
+    // m_{K−1} + 2m_K = 3Δ_{K−1}/h_{K−1}.
+    const auto row = [&](std::size_t r, double* rhs, std::size_t stride) -> numeric::TridiagonalRow {
+        const int k = static_cast<int>(r);
+        const auto delta = [&](int span, int c) { return nodes(span + 1, c) - nodes(span, c); };
+        if (!closed && (k == 0 || k == N - 1)) {
+            const int span = k == 0 ? 0 : spans - 1;
+            for (int c = 0; c < dim; ++c) rhs[static_cast<std::size_t>(c) * stride] = 3.0 * delta(span, c) / h(span);
+            return k == 0 ? numeric::TridiagonalRow{0.0, 2.0, 1.0} : numeric::TridiagonalRow{1.0, 2.0, 0.0};
         }
         const int prev = k == 0 ? spans - 1 : k - 1;  // span ending at node k (closed: node 0 ends the last)
         const int next = k;                           // span starting at node k (k < spans here)
         const double hp = h(prev), hn = h(next);
-        sub.push_back(hn), diag.push_back(2.0 * (hp + hn)), sup.push_back(hp);
-        rhs.row(k) = 3.0 * (hn * delta(prev) / hp + hp * delta(next) / hn);
+        for (int c = 0; c < dim; ++c) rhs[static_cast<std::size_t>(c) * stride] = 3.0 * (hn * delta(prev, c) / hp + hp * delta(next, c) / hn);
+        return {hn, 2.0 * (hp + hn), hp};
+    };
+    Eigen::MatrixXd m(N, dim);
+    if (closed) {  // Sherman–Morrison on the three diagonals
+        const auto size = static_cast<std::size_t>(N);
+        std::vector<double> sub, diag, sup;
+        sub.reserve(size), diag.reserve(size), sup.reserve(size);
+        for (int k = 0; k < N; ++k) {
+            const numeric::TridiagonalRow a = row(static_cast<std::size_t>(k), m.data() + k, size);
+            sub.push_back(a.sub), diag.push_back(a.diag), sup.push_back(a.sup);
+        }
+        m = numeric::solve_cyclic_tridiagonal(sub, diag, sup, m);
+    } else {
+        numeric::solve_tridiagonal_rows(static_cast<std::size_t>(N), static_cast<std::size_t>(dim), row, m.data());
     }
-    Eigen::MatrixXd m = closed ? numeric::solve_cyclic_tridiagonal(sub, diag, sup, rhs) : numeric::solve_tridiagonal(sub, diag, sup, std::move(rhs));
     // The slope form: span k's d0 = h_k m_k, d1 = h_k m_{k+1} formed where evaluated (uniform: h_k = 1,
     // no scales kept), not stored as 2K rows.
     return PiecewiseHermiteCurve::from_node_slopes(std::move(nodes), std::move(m), std::move(chords));
