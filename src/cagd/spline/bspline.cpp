@@ -159,6 +159,52 @@ void basis_function_derivatives_into(int p, const std::vector<double>& U, int sp
     }
 }
 
+namespace {
+
+// D = ders · (the control points P_{first..first+p}), the basis derivatives of one span (rows
+// 0..p) times its control points, into out[k·dim + e]: D(k, e) = Σ_{i=0..p} ders(k, i) P_{first+i,e}
+// summed in the order i = 0, 1, …, p — the order of Eigen's coefficient-based product, which it
+// uses for these small dynamic sizes (degree ≤ 7), so the same values as
+// `ders * control.middleRows(first, p + 1)` bit for bit (tested: the Taylor table and the knot
+// jets against that product), without its dispatch per span. The usual degrees and dimensions
+// with both fixed at compile time (unrolled); P, Dim < 0: at run time.
+template <int P, int Dim>
+void basis_times_control_of(const BasisDerivatives& ders, const Eigen::MatrixXd& control, int first, int p_at_run_time, int dim_at_run_time, double* out) {
+    const int p = P >= 0 ? P : p_at_run_time, dim = Dim >= 0 ? Dim : dim_at_run_time;
+    for (int e = 0; e < dim; ++e) {
+        const double* x = control.col(e).data() + first;
+        for (int k = 0; k <= p; ++k) {
+            double sum = ders(k, 0) * x[0];
+            for (int i = 1; i <= p; ++i) sum += ders(k, i) * x[i];
+            out[k * dim + e] = sum;
+        }
+    }
+}
+
+void basis_times_control(const BasisDerivatives& ders, const Eigen::MatrixXd& control, int first, int p, double* out) {
+    const int dim = static_cast<int>(control.cols());
+    if (dim == 2) {
+        switch (p) {
+            case 2: return basis_times_control_of<2, 2>(ders, control, first, p, dim, out);
+            case 3: return basis_times_control_of<3, 2>(ders, control, first, p, dim, out);
+            case 4: return basis_times_control_of<4, 2>(ders, control, first, p, dim, out);
+            case 5: return basis_times_control_of<5, 2>(ders, control, first, p, dim, out);
+            default: break;
+        }
+    } else if (dim == 3) {
+        switch (p) {
+            case 2: return basis_times_control_of<2, 3>(ders, control, first, p, dim, out);
+            case 3: return basis_times_control_of<3, 3>(ders, control, first, p, dim, out);
+            case 4: return basis_times_control_of<4, 3>(ders, control, first, p, dim, out);
+            case 5: return basis_times_control_of<5, 3>(ders, control, first, p, dim, out);
+            default: break;
+        }
+    }
+    basis_times_control_of<-1, -1>(ders, control, first, p, dim, out);
+}
+
+}  // namespace
+
 double BSplineCurve::span_middle(int span) const { return 0.5 * (knots_[static_cast<std::size_t>(span)] + knots_[static_cast<std::size_t>(span) + 1]); }
 
 const double* BSplineCurve::taylor(int span) const {
@@ -172,17 +218,20 @@ const double* BSplineCurve::taylor(int span) const {
         Eigen::MatrixXd heap_ders, d;
         for (int s = p; s < n; ++s) {
             if (!(knots_[static_cast<std::size_t>(s)] < knots_[static_cast<std::size_t>(s) + 1])) continue;  // empty span: never located
+            double* row = c.data() + static_cast<std::size_t>((s - p) * (p + 1) * dim);  // D, then D(k, ·) / k!
             if (p + 1 <= kStackOrder) {
                 basis_function_derivatives_into(p, knots_, s, span_middle(s), p, stack_ders);
-                d.noalias() = stack_ders * control_.middleRows(s - p, p + 1);
+                basis_times_control(stack_ders, control_, s - p, p, row);
             } else {
                 heap_ders = basis_function_derivatives(p, knots_, s, span_middle(s), p);
                 d.noalias() = heap_ders * control_.middleRows(s - p, p + 1);
+                for (int k = 0; k <= p; ++k)
+                    for (int e = 0; e < dim; ++e) row[k * dim + e] = d(k, e);
             }
             double factorial = 1.0;
             for (int k = 0; k <= p; ++k) {
                 if (k > 0) factorial *= k;
-                for (int e = 0; e < dim; ++e) c[static_cast<std::size_t>(((s - p) * (p + 1) + k) * dim + e)] = d(k, e) / factorial;
+                for (int e = 0; e < dim; ++e) row[k * dim + e] /= factorial;
             }
         }
         taylor_.value = std::move(c);
@@ -195,15 +244,12 @@ const double* BSplineCurve::knot_jet(int span, bool at_end) const {
     std::call_once(*knot_jets_.once, [&] {
         const int p = degree_, dim = dimension(), n = static_cast<int>(control_.rows());
         std::vector<double> c(static_cast<std::size_t>((n - p) * 2 * (p + 1) * dim), 0.0);
-        Eigen::MatrixXd d;      // reused: no heap per knot
         BasisDerivatives ders;  // the very product the direct path forms (degree ≤ 7 only: see taylor_jet)
         for (int s = p; s < n; ++s) {
             if (!(knots_[static_cast<std::size_t>(s)] < knots_[static_cast<std::size_t>(s) + 1])) continue;  // empty span: never located
             for (int end = 0; end < 2; ++end) {
                 basis_function_derivatives_into(p, knots_, s, knots_[static_cast<std::size_t>(s + end)], p, ders);
-                d.noalias() = ders * control_.middleRows(s - p, p + 1);
-                for (int k = 0; k <= p; ++k)
-                    for (int e = 0; e < dim; ++e) c[static_cast<std::size_t>((((s - p) * 2 + end) * (p + 1) + k) * dim + e)] = d(k, e);
+                basis_times_control(ders, control_, s - p, p, c.data() + static_cast<std::size_t>(((s - p) * 2 + end) * (p + 1) * dim));
             }
         }
         knot_jets_.value = std::move(c);
