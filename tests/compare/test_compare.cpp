@@ -551,6 +551,16 @@ TEST(Compare, FigureSamplingKeepsLongInputsWithinTheBudget) {
         EXPECT_EQ(count, 200u * 2u + 2u) << "200 sampled spans, both ends, plus the last span";
         for (std::size_t r = first; r < first + count; ++r) ASSERT_EQ(d.profiles[r][0], static_cast<double>(i));
         EXPECT_NEAR(d.profiles[first + count - 1][1], c[i].length, 1e-6 * c[i].length) << c[i].method;
+        // The 9 spans skipped between sampled spans 10q and 10(q + 1) add the lengths the measures
+        // integrated (one piece per span for these methods), in order: row 2q + 1 is node 10q + 1,
+        // row 2q + 2 node 10q + 10.
+        const std::vector<double>& L = c[i].fairness->piece_lengths;
+        ASSERT_EQ(L.size(), 2000u);
+        for (std::size_t q = 0; q + 1 < 200; ++q) {
+            double s = d.profiles[first + 2 * q + 1][1];
+            for (std::size_t m = 10 * q + 1; m < 10 * q + 10; ++m) s += L[m];
+            ASSERT_EQ(d.profiles[first + 2 * q + 2][1], s) << c[i].method << ", sampled span " << 10 * (q + 1);
+        }
         expected_first += count;
     }
     EXPECT_EQ(expected_first, d.profiles.size());

@@ -117,7 +117,8 @@ std::string comparison_markdown(const std::vector<MethodComparison>& c, bool clo
 /// stays readable and cheap to draw however long the input; comb_scale and comb_stride record, per
 /// method, the length factor c and that stride (methods.csv prints both).
 /// Long inputs: only every `span_stride`-th span is sampled (the arc length s still runs over every
-/// span), so a figure of 10^5 spans stays a few MB; figure_sampling(spans, budget) picks per_span
+/// span: a span not sampled adds the length the measures integrated, where every node is a
+/// breakpoint, else one 20-point Gauss rule's), so a figure of 10^5 spans stays a few MB; figure_sampling(spans, budget) picks per_span
 /// (≤ 32) and the stride for at most about `budget` samples per method (a sampled span gives
 /// per_span + 1 samples).
 struct FigureData {
