@@ -181,25 +181,22 @@ void basis_times_control_of(const BasisDerivatives& ders, const Eigen::MatrixXd&
     }
 }
 
+// The unrolled product for degree p in Dim dimensions, when p is one of the unrolled degrees.
+template <int Dim>
+bool basis_times_control_unrolled(const BasisDerivatives& ders, const Eigen::MatrixXd& control, int first, int p, double* out) {
+    switch (p) {
+        case 2: basis_times_control_of<2, Dim>(ders, control, first, p, Dim, out); return true;
+        case 3: basis_times_control_of<3, Dim>(ders, control, first, p, Dim, out); return true;
+        case 4: basis_times_control_of<4, Dim>(ders, control, first, p, Dim, out); return true;
+        case 5: basis_times_control_of<5, Dim>(ders, control, first, p, Dim, out); return true;
+        default: return false;
+    }
+}
+
 void basis_times_control(const BasisDerivatives& ders, const Eigen::MatrixXd& control, int first, int p, double* out) {
     const int dim = static_cast<int>(control.cols());
-    if (dim == 2) {
-        switch (p) {
-            case 2: return basis_times_control_of<2, 2>(ders, control, first, p, dim, out);
-            case 3: return basis_times_control_of<3, 2>(ders, control, first, p, dim, out);
-            case 4: return basis_times_control_of<4, 2>(ders, control, first, p, dim, out);
-            case 5: return basis_times_control_of<5, 2>(ders, control, first, p, dim, out);
-            default: break;
-        }
-    } else if (dim == 3) {
-        switch (p) {
-            case 2: return basis_times_control_of<2, 3>(ders, control, first, p, dim, out);
-            case 3: return basis_times_control_of<3, 3>(ders, control, first, p, dim, out);
-            case 4: return basis_times_control_of<4, 3>(ders, control, first, p, dim, out);
-            case 5: return basis_times_control_of<5, 3>(ders, control, first, p, dim, out);
-            default: break;
-        }
-    }
+    if (dim == 2 && basis_times_control_unrolled<2>(ders, control, first, p, out)) return;
+    if (dim == 3 && basis_times_control_unrolled<3>(ders, control, first, p, out)) return;
     basis_times_control_of<-1, -1>(ders, control, first, p, dim, out);
 }
 
