@@ -27,6 +27,7 @@ using std::isnan;
 #include "cagd/core/point_csv.hpp"
 #include "cagd/methods/method_registry.hpp"
 #include "cagd/core/random_walk.hpp"
+#include "cagd/intrinsic/intrinsic_curve.hpp"
 
 using namespace cagd;
 using namespace cagd::compare;
@@ -780,6 +781,49 @@ TEST(Compare, SpanDisplacementsAreZeroOutsideALocalMethodsFootprint) {
               cagd::compare::span_displacements(a, curve("s-spline-m1", q), 5));
     EXPECT_THROW(cagd::compare::span_displacements(kept, cagd::compare::span_samples(a, 4), 5), cagd::InvalidInput);
     EXPECT_THROW(cagd::compare::span_samples(a, 0), cagd::InvalidInput);
+}
+
+// The curvature profile's footprint skips the spans whose offset bound (IntrinsicCurve::
+// segment_offset_bound) shows they cannot exceed the tolerance. The bound must cover every sampled
+// distance, the skip must leave the count what span_displacements gives, and on a long input it
+// must skip most spans (else the footprint samples every span again).
+TEST(Compare, CurvatureProfileFootprintCountsAsEverySpanSampled) {
+    for (const bool closed : {false, true})
+        for (const Eigen::Index n : {Eigen::Index{40}, Eigen::Index{400}}) {
+            // Open: a random walk; closed: a wavy loop (a closed random walk has no clothoid spline).
+            PointList p = random_walk_points(n);
+            if (closed)
+                for (Eigen::Index i = 0; i < n; ++i) {
+                    const double t = 2.0 * std::numbers::pi * static_cast<double>(i) / static_cast<double>(n);
+                    p.row(i) << (3.0 + 0.4 * std::sin(7.0 * t)) * std::cos(t), (2.0 + 0.3 * std::cos(5.0 * t)) * std::sin(t);
+                }
+            ComparisonOptions o;
+            o.methods = {"curvature-profile"};
+            o.closed = closed;
+            const std::vector<MethodComparison> c = compare_methods(p, o);
+            const std::string what = std::string(closed ? "closed" : "open") + ", " + std::to_string(n) + " points";
+            ASSERT_EQ(c[0].status, "ok") << what << ": " << c[0].note;
+            ASSERT_TRUE(c[0].locality_footprint.has_value()) << what;
+            // The moved build as compare_methods makes it.
+            const double diagonal = bounding_box_diagonal(p);
+            PointList moved = p;
+            moved(p.rows() / 2, 1) += 1e-3 * diagonal;
+            const InterpolationResult m = interpolate_from(find_configuration("curvature-profile"), moved, closed, c[0].solver_state);
+            ASSERT_TRUE(m.interpolant.has_value()) << what;
+            const Interpolant& a = *c[0].interpolant;
+            const std::vector<double> d = span_displacements(a, *m.interpolant);
+            const auto& ca = dynamic_cast<const intrinsic::IntrinsicCurve&>(*a.curve);
+            const auto& cb = dynamic_cast<const intrinsic::IntrinsicCurve&>(*m.interpolant->curve);
+            int skippable = 0;
+            for (std::size_t k = 0; k < d.size(); ++k) {
+                const double bound = ca.segment_offset_bound(cb, static_cast<int>(k));
+                ASSERT_GE(bound, d[k]) << what << ", span " << k;
+                if (bound <= 0.25 * 1e-9 * diagonal) ++skippable;
+            }
+            const long counted = std::count_if(d.begin(), d.end(), [&](double x) { return x > 1e-9 * diagonal; });
+            EXPECT_EQ(*c[0].locality_footprint, counted) << what;
+            if (n == 400) EXPECT_GT(skippable, 300) << what << ": the bound skips too few spans to be worth it";
+        }
 }
 
 TEST(Compare, ConfigurationOverridesReplaceThePresetsValues) {

@@ -315,6 +315,42 @@ TEST(IntrinsicCurve, ProfileSamplesShowOneSidedCurvatureAtJoins) {
     EXPECT_THROW(curvature_profile_samples(*sol.curve, 0), InvalidInput);
 }
 
+// segment_offset_bound covers the distance between two curves at equal fractions of a segment,
+// at fractions denser than any comparison samples: here the figure-3 design against the same
+// design with one tangent-angle ordinate and one length perturbed (from 1e-12 to 1e-2); a curve
+// against itself is bounded by the rounding margin alone; other segment counts or degrees throw.
+TEST(IntrinsicCurve, SegmentOffsetBoundCoversEveryFraction) {
+    const CurvatureProfileProblem P = fig3_problem();
+    const CurvatureProfileSolution sol = solve_curvature_profile(P);
+    ASSERT_TRUE(sol.outcome.ok()) << sol.outcome.message;
+    const IntrinsicCurve& a = *sol.curve;
+    const int segments = a.tangent_angle().segments(), l = P.layout.independent_lengths();
+    for (double size : {1e-12, 1e-6, 1e-2})
+        for (int which = 0; which < 3; ++which) {
+            Eigen::VectorXd u = sol.u;
+            u(l + (which == 0 ? 0 : P.layout.ordinates() / 2)) += size;  // an ordinate
+            if (which == 2) u(l / 2) *= 1.0 + size;                       // and a length
+            const IntrinsicCurve b(P.points.row(0).transpose(), TangentAngleSpline::from_unknowns(P.layout, u));
+            for (int j = 0; j < segments; ++j) {
+                const double bound = a.segment_offset_bound(b, j);
+                const double wa = a.breakpoints()[static_cast<std::size_t>(j)], da = a.tangent_angle().segment_lengths()[static_cast<std::size_t>(j)];
+                const double wb = b.breakpoints()[static_cast<std::size_t>(j)], db = b.tangent_angle().segment_lengths()[static_cast<std::size_t>(j)];
+                for (int q = 0; q <= 64; ++q) {
+                    const double f = q / 64.0;
+                    const double distance = (a.jet(f == 1.0 ? wa + da : wa + f * da, 0) - b.jet(f == 1.0 ? wb + db : wb + f * db, 0)).norm();
+                    ASSERT_LE(distance, bound) << "perturbation " << size << " (" << which << "), segment " << j << ", fraction " << f;
+                }
+            }
+        }
+    for (int j = 0; j < segments; ++j) {
+        const double scale = a.breakpoint_points().row(j).cwiseAbs().maxCoeff() + 2.0 * a.tangent_angle().segment_lengths()[static_cast<std::size_t>(j)] *
+                                                                                       (1.0 + a.tangent_angle().bezier().row(j).cwiseAbs().maxCoeff());
+        EXPECT_LE(a.segment_offset_bound(a, j), 3e-13 * scale) << "segment " << j << ": a curve does not move from itself";
+    }
+    EXPECT_THROW(a.segment_offset_bound(a, segments), InvalidInput);
+    EXPECT_THROW(a.segment_offset_bound(a, -1), InvalidInput);
+}
+
 TEST(CurvatureProfileDesign, JacobianMatchesCentralDifferences) {
     CurvatureProfileProblem cubic = closed_problem(3);
     cubic.closed = false;

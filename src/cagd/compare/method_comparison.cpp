@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <iterator>
+#include <limits>
 #include <mutex>
 #include <numeric>
 #include <sstream>
@@ -13,6 +14,7 @@
 #include "cagd/analysis/curve_measures.hpp"
 #include "cagd/core/csv.hpp"
 #include "cagd/core/parallel.hpp"
+#include "cagd/intrinsic/intrinsic_curve.hpp"
 
 namespace cagd::compare {
 
@@ -24,9 +26,53 @@ double span_parameter(const Interpolant& a, std::size_t k, double f) {
     return f == 1.0 ? t1 : t0 + f * (t1 - t0);
 }
 
-// Spans of a and b (same points but one moved) that differ by more than `tolerance` somewhere.
+// Rows j = 0..samples_per_span of span k's samples (span_samples) into out's rows first + j.
+void sample_span(const Interpolant& a, std::size_t k, int samples_per_span, Eigen::MatrixXd& out, Eigen::Index first) {
+    JetMatrix p;
+    for (int j = 0; j <= samples_per_span; ++j) {
+        a.curve->jet_into(span_parameter(a, k, static_cast<double>(j) / samples_per_span), 0, p);
+        out.row(first + j) = p.row(0);
+    }
+}
+
+// The samples per span of the locality footprint.
+constexpr int kFootprintSamplesPerSpan = 8;
+
+// Whether span k of the curvature-profile curves a and b (one segment per span, as the footprint's
+// builds have) cannot have moved by more than half the tolerance: IntrinsicCurve's bound of the
+// offset at equal fractions of the segment, plus the rounding of the sample parameters
+// s = w_k + f·d_k (a few ulps of w_k + d_k, at unit speed a distance as large) — so the sampled
+// distance, which that bound covers, stays below the tolerance.
+bool intrinsic_span_within_half(const intrinsic::IntrinsicCurve& a, const intrinsic::IntrinsicCurve& b, const Interpolant& ia, const Interpolant& ib, std::size_t k,
+                                double tolerance) {
+    const double parameter_rounding = 16.0 * std::numeric_limits<double>::epsilon() *
+                                      (std::abs(ia.node_parameters[k]) + std::abs(ia.node_parameters[k + 1]) + std::abs(ib.node_parameters[k]) + std::abs(ib.node_parameters[k + 1]));
+    return a.segment_offset_bound(b, static_cast<int>(k)) + parameter_rounding <= 0.5 * tolerance;
+}
+
+// Spans of a and b (same points but one moved) that differ by more than `tolerance` somewhere:
+// span_displacements counted. Curvature-profile curves with one segment per span skip the spans
+// whose offset bound shows they cannot count (intrinsic_span_within_half) and sample the others as
+// span_displacements does: the same count, without 16 sines and cosines per sample on every span
+// (at 10^5 points, 1.1 of the 2 CPU-s the curvature profile's footprint took).
 int spans_moved(const Interpolant& a, const Interpolant& b, double tolerance) {
-    const std::vector<double> moved = span_displacements(a, b);
+    const auto* ca = dynamic_cast<const intrinsic::IntrinsicCurve*>(a.curve.get());
+    const auto* cb = dynamic_cast<const intrinsic::IntrinsicCurve*>(b.curve.get());
+    const std::size_t spans = a.node_parameters.empty() ? 0 : a.node_parameters.size() - 1;
+    if (ca && cb && b.node_parameters.size() == a.node_parameters.size() && ca->tangent_angle().segments() == static_cast<int>(spans) &&
+        cb->tangent_angle().segments() == static_cast<int>(spans) && ca->tangent_angle().degree() == cb->tangent_angle().degree()) {
+        const Eigen::Index per = kFootprintSamplesPerSpan + 1;
+        Eigen::MatrixXd sa(per, 2), sb(per, 2);
+        int moved = 0;
+        for (std::size_t k = 0; k < spans; ++k) {
+            if (intrinsic_span_within_half(*ca, *cb, a, b, k, tolerance)) continue;
+            sample_span(a, k, kFootprintSamplesPerSpan, sa, 0);
+            sample_span(b, k, kFootprintSamplesPerSpan, sb, 0);
+            if (span_displacements(sa, sb, kFootprintSamplesPerSpan).front() > tolerance) ++moved;
+        }
+        return moved;
+    }
+    const std::vector<double> moved = span_displacements(a, b, kFootprintSamplesPerSpan);
     return static_cast<int>(std::count_if(moved.begin(), moved.end(), [&](double d) { return d > tolerance; }));
 }
 
@@ -93,12 +139,7 @@ Eigen::MatrixXd span_samples(const Interpolant& a, int samples_per_span) {
     if (samples_per_span < 1) fail_input("cagd::compare::span_samples", "samples_per_span must be >= 1, got " + std::to_string(samples_per_span));
     const Eigen::Index spans = a.node_parameters.empty() ? 0 : static_cast<Eigen::Index>(a.node_parameters.size()) - 1;
     Eigen::MatrixXd out(spans * (samples_per_span + 1), a.curve->dimension());
-    JetMatrix p;
-    for (Eigen::Index k = 0; k < spans; ++k)
-        for (int j = 0; j <= samples_per_span; ++j) {
-            a.curve->jet_into(span_parameter(a, static_cast<std::size_t>(k), static_cast<double>(j) / samples_per_span), 0, p);
-            out.row(k * (samples_per_span + 1) + j) = p.row(0);
-        }
+    for (Eigen::Index k = 0; k < spans; ++k) sample_span(a, static_cast<std::size_t>(k), samples_per_span, out, k * (samples_per_span + 1));
     return out;
 }
 

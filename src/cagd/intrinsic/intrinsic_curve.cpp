@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "cagd/core/errors.hpp"
 
@@ -14,6 +15,23 @@ IntrinsicCurve::IntrinsicCurve(Eigen::Vector2d start, TangentAngleSpline psi) : 
     points_.row(0) = start.transpose();
     for (int j = 0; j < k; ++j)
         points_.row(j + 1) = points_.row(j) + psi_.segment_lengths()[static_cast<std::size_t>(j)] * direction_integrals(psi_.bezier().row(j).transpose()).transpose();
+}
+
+double IntrinsicCurve::segment_offset_bound(const IntrinsicCurve& other, int j) const {
+    const char* who = "intrinsic::IntrinsicCurve::segment_offset_bound";
+    if (j < 0 || j >= psi_.segments() || j >= other.psi_.segments())
+        fail_input(who, "segment " + std::to_string(j) + " is not one of both curves (" + std::to_string(psi_.segments()) + " and " + std::to_string(other.psi_.segments()) +
+                            " segments)");
+    if (psi_.degree() != other.psi_.degree())
+        fail_input(who, "tangent angles of degree " + std::to_string(psi_.degree()) + " and " + std::to_string(other.psi_.degree()) + " have no common Bézier ordinates");
+    const double d = psi_.segment_lengths()[static_cast<std::size_t>(j)], e = other.psi_.segment_lengths()[static_cast<std::size_t>(j)];
+    const double angle = (psi_.bezier().row(j) - other.psi_.bezier().row(j)).cwiseAbs().maxCoeff();
+    const double bound = (points_.row(j) - other.points_.row(j)).norm() + std::abs(d - e) + std::min(d, e) * angle;
+    // The rounding's scale: the positions, the lengths, and ψ's ordinates times the length (ψ itself
+    // rounds relative to its own size, which an unwrapped tangent angle can make large).
+    const double turning = std::max(psi_.bezier().row(j).cwiseAbs().maxCoeff(), other.psi_.bezier().row(j).cwiseAbs().maxCoeff());
+    const double magnitude = points_.row(j).cwiseAbs().maxCoeff() + other.points_.row(j).cwiseAbs().maxCoeff() + (d + e) * (1.0 + turning);
+    return (bound + 1e-13 * magnitude) * (1.0 + 1e-12);
 }
 
 Eigen::MatrixXd IntrinsicCurve::jet(double s, int order) const { return jet_in_segment(psi_.segment_at(s), s, order); }

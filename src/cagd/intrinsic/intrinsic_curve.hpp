@@ -41,6 +41,19 @@ public:
     void derivatives_into(double s, int order, JetMatrix& out) const override;
     std::vector<double> breakpoints() const override { return psi_.breakpoints(); }
 
+    /// An upper bound on the distance between this curve and `other` at the same fraction τ of
+    /// their segment j, |r(w_j + τ d_j) − r'(w'_j + τ d'_j)| over τ ∈ [0, 1], as jet_into computes
+    /// them, without evaluating a position:
+    ///   |r_j − r'_j| + |d_j − d'_j| + min(d_j, d'_j) · max_r |b_{j,r} − b'_{j,r}|,
+    /// since |e^{iα} − e^{iβ}| ≤ |α − β| and ψ_j − ψ'_j, a Bernstein polynomial in τ with the
+    /// differences b_{j,r} − b'_{j,r} as ordinates, is at most their largest magnitude (the
+    /// quadrature's weights are positive: the computed integrals obey the same bound); enlarged by
+    /// 1e-13 of the magnitudes involved (positions, lengths, lengths times ψ's ordinates) for the
+    /// positions' rounding and quadrature error. It lets a
+    /// comparison skip segments that cannot have moved by more than a tolerance.
+    /// InvalidInput unless both have segment j and the same degree.
+    double segment_offset_bound(const IntrinsicCurve& other, int j) const;
+
 private:
     Eigen::MatrixXd jet_in_segment(int j, double s, int order) const;
     TangentAngleSpline psi_;
