@@ -49,8 +49,8 @@ public:
     /// differences b_{j,r} − b'_{j,r} as ordinates, is at most their largest magnitude (the
     /// quadrature's weights are positive: the computed integrals obey the same bound); enlarged by
     /// 1e-13 of the magnitudes involved (positions, lengths, lengths times ψ's ordinates) for the
-    /// positions' rounding and quadrature error. It lets a
-    /// comparison skip segments that cannot have moved by more than a tolerance.
+    /// positions' rounding and quadrature error. It lets a comparison skip segments that cannot
+    /// have moved by more than a tolerance (compare's locality footprint).
     /// InvalidInput unless both have segment j and the same degree.
     double segment_offset_bound(const IntrinsicCurve& other, int j) const;
 
