@@ -822,8 +822,45 @@ TEST(Compare, CurvatureProfileFootprintCountsAsEverySpanSampled) {
             }
             const long counted = std::count_if(d.begin(), d.end(), [&](double x) { return x > 1e-9 * diagonal; });
             EXPECT_EQ(*c[0].locality_footprint, counted) << what;
-            if (n == 400) EXPECT_GT(skippable, 300) << what << ": the bound skips too few spans to be worth it";
+            if (n == 400) {
+                EXPECT_GT(skippable, 300) << what << ": the bound skips too few spans to be worth it";
+            }
         }
+}
+
+// The footprint skips the spans a local method left unchanged (the same Hermite data, or the same
+// knots and control points under the span's samples) and samples the rest; its count must be the
+// one span_displacements gives, for Hermite-form, B-spline and other curves, open and closed.
+TEST(Compare, FootprintCountsAsEverySpanSampled) {
+    for (const bool closed : {false, true}) {
+        PointList p = random_walk_points(300);
+        if (closed)
+            for (Eigen::Index i = 0; i < p.rows(); ++i) {
+                const double t = 2.0 * std::numbers::pi * static_cast<double>(i) / static_cast<double>(p.rows());
+                p.row(i) << (3.0 + 0.4 * std::sin(7.0 * t)) * std::cos(t), (2.0 + 0.3 * std::cos(5.0 * t)) * std::sin(t);
+            }
+        ComparisonOptions o;
+        o.methods = {"hermite-a", "cubic-b", "pseudo-spline-none", "boost-pchip", "boost-catmull-rom", "s-spline-m1", "b2-spline-m2", "hosaka-c2-chord"};
+        o.closed = closed;
+        const std::vector<MethodComparison> c = compare_methods(p, o);
+        const double diagonal = bounding_box_diagonal(p);
+        PointList moved = p;
+        moved(p.rows() / 2, 1) += 1e-3 * diagonal;
+        int local = 0;
+        for (const MethodComparison& m : c) {
+            if (m.status == "not applicable") continue;
+            const std::string what = m.method + (closed ? ", closed" : ", open");
+            ASSERT_TRUE(m.locality_footprint.has_value()) << what << ": " << m.status << " " << m.note;
+            const InterpolationResult r = interpolate_from(find_configuration(m.method), moved, closed, m.solver_state);
+            ASSERT_TRUE(r.interpolant.has_value()) << what;
+            const std::vector<double> d = span_displacements(*m.interpolant, *r.interpolant);
+            EXPECT_EQ(*m.locality_footprint, std::count_if(d.begin(), d.end(), [&](double x) { return x > 1e-9 * diagonal; })) << what;
+            if (*m.locality_footprint < m.spans / 2) ++local;
+        }
+        if (!closed) {
+            EXPECT_GE(local, 5) << "local methods among them";
+        }
+    }
 }
 
 TEST(Compare, ConfigurationOverridesReplaceThePresetsValues) {
