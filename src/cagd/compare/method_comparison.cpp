@@ -48,10 +48,10 @@ constexpr int kFootprintSamplesPerSpan = 8;
 // offset at equal fractions of the segment, plus the rounding of the sample parameters
 // s = w_k + f·d_k (a few ulps of w_k + d_k, at unit speed a distance as large) — so the sampled
 // distance, which that bound covers, stays below the tolerance.
-bool intrinsic_span_within_half(const intrinsic::IntrinsicCurve& a, const intrinsic::IntrinsicCurve& b, const Interpolant& ia, const Interpolant& ib, std::size_t k,
+bool intrinsic_span_within_half(const intrinsic::IntrinsicCurve& a, const intrinsic::IntrinsicCurve& b, const Interpolant& of_a, const Interpolant& of_b, std::size_t k,
                                 double tolerance) {
     const double parameter_rounding = 16.0 * std::numeric_limits<double>::epsilon() *
-                                      (std::abs(ia.node_parameters[k]) + std::abs(ia.node_parameters[k + 1]) + std::abs(ib.node_parameters[k]) + std::abs(ib.node_parameters[k + 1]));
+                                      (std::abs(of_a.node_parameters[k]) + std::abs(of_a.node_parameters[k + 1]) + std::abs(of_b.node_parameters[k]) + std::abs(of_b.node_parameters[k + 1]));
     return a.segment_offset_bound(b, static_cast<int>(k)) + parameter_rounding <= 0.5 * tolerance;
 }
 
@@ -83,12 +83,12 @@ std::function<bool(std::size_t)> footprint_skip_rule(const Interpolant& a, const
             ha->span_scales().size() != hb->span_scales().size())
             return {};
         // The slope form's m_k and h_k, or the pair form's d0_k and d1_k (formed once here).
-        auto first = std::make_shared<std::array<Eigen::MatrixXd, 4>>();
-        if (!ha->holds_node_slopes()) *first = {ha->start_derivatives(), hb->start_derivatives(), ha->end_derivatives(), hb->end_derivatives()};
-        return [ha, hb, first, same_nodes](std::size_t k) {
+        auto pairs = std::make_shared<std::array<Eigen::MatrixXd, 4>>();  // d0 of a, of b; d1 of a, of b
+        if (!ha->holds_node_slopes()) *pairs = {ha->start_derivatives(), hb->start_derivatives(), ha->end_derivatives(), hb->end_derivatives()};
+        return [ha, hb, pairs, same_nodes](std::size_t k) {
             const auto i = static_cast<Eigen::Index>(k);
             if (!same_nodes(k) || !same_rows(ha->nodes(), hb->nodes(), i, i + 2)) return false;
-            if (!ha->holds_node_slopes()) return same_rows((*first)[0], (*first)[1], i, i + 1) && same_rows((*first)[2], (*first)[3], i, i + 1);
+            if (!ha->holds_node_slopes()) return same_rows((*pairs)[0], (*pairs)[1], i, i + 1) && same_rows((*pairs)[2], (*pairs)[3], i, i + 1);
             const std::vector<double>&sa = ha->span_scales(), &sb = hb->span_scales();
             for (std::size_t j = k; j < std::min(k + 2, sa.size()); ++j)
                 if (!(sa[j] == sb[j])) return false;
