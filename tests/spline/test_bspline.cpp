@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <thread>
 
 #include "cagd/analysis/curve_measures.hpp"
 #include "cagd/core/errors.hpp"
@@ -249,4 +250,49 @@ TEST(BSpline, TaylorTableIsTheA23ProductAtEachSpanMiddleBitForBit) {
                 }
             }
         }
+}
+
+// The tables are built block by block (1024 spans each) as spans are first evaluated: on a curve of
+// three blocks, asked span by span in a scattered order and from two threads at once, every jet at
+// a span's middle and at its knots is the one A2.3 gives there, bit for bit, as when the whole table
+// is built first (the same product, tested above on one block).
+TEST(BSpline, TablesBuiltBlockByBlockAreTheWholeTablesBitForBit) {
+    for (int p : {2, 3}) {
+        const BSplineCurve built_whole = random_curve(p, 2600, static_cast<unsigned>(90 + p), false);
+        const std::vector<double>& U = built_whole.knots();
+        const int n = static_cast<int>(built_whole.control_points().rows());
+        for (int s = p; s < n; ++s) (void)built_whole.jet(0.5 * (U[static_cast<std::size_t>(s)] + U[static_cast<std::size_t>(s) + 1]), p);  // every block, in order
+        const BSplineCurve scattered = random_curve(p, 2600, static_cast<unsigned>(90 + p), false);
+        std::vector<int> spans;
+        for (int k = 0; k < n - p; ++k) spans.push_back(p + (k * 997 + n - p - 1) % (n - p));  // every span, from the last on, 997 apart (a prime)
+        const auto same_jets = [&](int s) {
+            const double middle = 0.5 * (U[static_cast<std::size_t>(s)] + U[static_cast<std::size_t>(s) + 1]);
+            const Eigen::MatrixXd D = basis_function_derivatives(p, U, s, middle, p) * scattered.control_points().middleRows(s - p, p + 1);
+            const Eigen::MatrixXd jet = scattered.jet(middle, p), at_start = scattered.jet(U[static_cast<std::size_t>(s)], p),
+                                  at_end = scattered.jet_from_left(U[static_cast<std::size_t>(s) + 1], p);
+            const Eigen::MatrixXd start_direct = basis_function_derivatives(p, U, s, U[static_cast<std::size_t>(s)], p) * scattered.control_points().middleRows(s - p, p + 1);
+            const Eigen::MatrixXd end_direct = basis_function_derivatives(p, U, s, U[static_cast<std::size_t>(s) + 1], p) * scattered.control_points().middleRows(s - p, p + 1);
+            double factorial = 1.0;
+            for (int k = 0; k <= p; ++k) {
+                if (k > 0) factorial *= k;
+                for (int e = 0; e < 2; ++e)
+                    if (jet(k, e) != factorial * (D(k, e) / factorial) || at_start(k, e) != start_direct(k, e) || at_end(k, e) != end_direct(k, e) ||
+                        jet(k, e) != built_whole.jet(middle, p)(k, e))
+                        return false;
+            }
+            return true;
+        };
+        for (int s : spans) EXPECT_TRUE(same_jets(s)) << "degree " << p << " span " << s;
+        const BSplineCurve fresh = scattered;  // a copy builds its own tables: two threads ask for the same blocks
+        std::vector<char> ok(static_cast<std::size_t>(n), 0);
+        const auto ask = [&](int from, int step) {
+            for (int s = from; s >= p && s < n; s += step) {
+                const double middle = 0.5 * (U[static_cast<std::size_t>(s)] + U[static_cast<std::size_t>(s) + 1]);
+                ok[static_cast<std::size_t>(s)] = fresh.jet(middle, p) == built_whole.jet(middle, p) && fresh.jet(U[static_cast<std::size_t>(s)], p) == built_whole.jet(U[static_cast<std::size_t>(s)], p);
+            }
+        };
+        std::thread forward(ask, p, 2), backward(ask, n - 1 - (n - 1 - (p + 1)) % 2, -2);  // the spans p, p + 2, … and p + 1, p + 3, …
+        forward.join(), backward.join();
+        EXPECT_EQ(std::count(ok.begin() + p, ok.end(), 1), n - p) << "degree " << p;
+    }
 }

@@ -204,18 +204,36 @@ void basis_times_control(const BasisDerivatives& ders, const Eigen::MatrixXd& co
 
 double BSplineCurve::span_middle(int span) const { return 0.5 * (knots_[static_cast<std::size_t>(span)] + knots_[static_cast<std::size_t>(span) + 1]); }
 
+// Spans per block of the Taylor and knot-jet tables: a block of degree 3 in the plane holds 64 KB
+// of Taylor rows; 10^5 spans make 98 blocks, whose flags cost one more atomic load per lookup.
+constexpr int kSpansPerTableBlock = 1024;
+
+template <class Fill>
+const double* BSplineCurve::span_row(SpanTable& table, int span, std::size_t row_size, Fill fill) const {
+    const int count = static_cast<int>(control_.rows()) - degree_, index = span - degree_;
+    std::call_once(*table.allocated, [&] {
+        table.values.assign(static_cast<std::size_t>(count) * row_size, 0.0);  // empty spans: never located
+        table.built = std::make_unique<std::once_flag[]>(static_cast<std::size_t>((count + kSpansPerTableBlock - 1) / kSpansPerTableBlock));
+    });
+    const int block = index / kSpansPerTableBlock;
+    std::call_once(table.built[static_cast<std::size_t>(block)], [&] {
+        const int first = degree_ + block * kSpansPerTableBlock;
+        fill(first, std::min(first + kSpansPerTableBlock, degree_ + count), table.values.data());
+    });
+    return table.values.data() + static_cast<std::size_t>(index) * row_size;
+}
+
 const double* BSplineCurve::taylor(int span) const {
-    std::call_once(*taylor_.once, [&] {
-        const int p = degree_, dim = dimension(), n = static_cast<int>(control_.rows());
-        std::vector<double> c(static_cast<std::size_t>((n - p) * (p + 1) * dim), 0.0);
+    const int p = degree_, dim = dimension();
+    return span_row(taylor_, span, static_cast<std::size_t>((p + 1) * dim), [&](int first, int last, double* c) {
         // The basis derivatives on the stack (degree ≤ 7) and the product's array reused: no heap per
         // span. The same product, bit for bit, as from basis_function_derivatives' MatrixXd (both
         // sizes are dynamic, so Eigen sums each entry in the same order; tested).
         BasisDerivatives stack_ders;
         Eigen::MatrixXd heap_ders, d;
-        for (int s = p; s < n; ++s) {
+        for (int s = first; s < last; ++s) {
             if (!(knots_[static_cast<std::size_t>(s)] < knots_[static_cast<std::size_t>(s) + 1])) continue;  // empty span: never located
-            double* row = c.data() + static_cast<std::size_t>((s - p) * (p + 1) * dim);  // D, then D(k, ·) / k!
+            double* row = c + static_cast<std::size_t>((s - p) * (p + 1) * dim);  // D, then D(k, ·) / k!
             if (p + 1 <= kStackOrder) {
                 basis_function_derivatives_into(p, knots_, s, span_middle(s), p, stack_ders);
                 basis_times_control(stack_ders, control_, s - p, p, row);
@@ -231,27 +249,23 @@ const double* BSplineCurve::taylor(int span) const {
                 for (int e = 0; e < dim; ++e) row[k * dim + e] /= factorial;
             }
         }
-        taylor_.value = std::move(c);
     });
-    return taylor_.value.data() + static_cast<std::size_t>((span - degree_) * (degree_ + 1) * dimension());
 }
 
 const double* BSplineCurve::knot_jet(int span, bool at_end) const {
     if (degree_ + 1 > kStackOrder) fail_input("cagd::BSplineCurve::knot_jet", "the table of knot jets holds degrees up to 7");
-    std::call_once(*knot_jets_.once, [&] {
-        const int p = degree_, dim = dimension(), n = static_cast<int>(control_.rows());
-        std::vector<double> c(static_cast<std::size_t>((n - p) * 2 * (p + 1) * dim), 0.0);
+    const int p = degree_, dim = dimension();
+    const double* both = span_row(knot_jets_, span, static_cast<std::size_t>(2 * (p + 1) * dim), [&](int first, int last, double* c) {
         BasisDerivatives ders;  // the very product the direct path forms (degree ≤ 7 only: see taylor_jet)
-        for (int s = p; s < n; ++s) {
+        for (int s = first; s < last; ++s) {
             if (!(knots_[static_cast<std::size_t>(s)] < knots_[static_cast<std::size_t>(s) + 1])) continue;  // empty span: never located
             for (int end = 0; end < 2; ++end) {
                 basis_function_derivatives_into(p, knots_, s, knots_[static_cast<std::size_t>(s + end)], p, ders);
-                basis_times_control(ders, control_, s - p, p, c.data() + static_cast<std::size_t>(((s - p) * 2 + end) * (p + 1) * dim));
+                basis_times_control(ders, control_, s - p, p, c + static_cast<std::size_t>(((s - p) * 2 + end) * (p + 1) * dim));
             }
         }
-        knot_jets_.value = std::move(c);
     });
-    return knot_jets_.value.data() + static_cast<std::size_t>((((span - degree_) * 2 + (at_end ? 1 : 0)) * (degree_ + 1)) * dimension());
+    return both + (at_end ? static_cast<std::size_t>((p + 1) * dim) : 0);
 }
 
 namespace {

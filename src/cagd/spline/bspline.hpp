@@ -6,7 +6,7 @@
 /// with knots t_0 ≤ … ≤ t_{n+p} (n + p + 1 of them) and Cox–de Boor basis N_{i,p}.
 /// Evaluation with derivatives: per non-empty span, the Taylor coefficients at its middle m_s,
 /// c_k = r^(k)(m_s)/k! (basis-function derivatives by Piegl & Tiller, The NURBS Book, algorithm
-/// A2.3, once per span, on the first evaluation: thread-safe), then Horner in h = t − m_s
+/// A2.3, once per span, on the first evaluation of its block of spans: thread-safe), then Horner in h = t − m_s
 /// (|h| ≤ half the span, which keeps the rounding at the ends small): O(p·order) per point. At a
 /// knot itself the A2.3 values, as before: there the basis functions whose support ends are
 /// exactly zero, so a control point changes nothing beyond its support, bit for bit (the locality
@@ -77,6 +77,24 @@ private:
         OnceCache(OnceCache&&) noexcept = default;
         OnceCache& operator=(OnceCache&&) noexcept = default;
     };
+    /// Rows of doubles per non-empty span s (at s − p), built on first use block by block of
+    /// kSpansPerTableBlock spans (thread-safe), each row exactly as a whole-table build forms it: a
+    /// curve evaluated on a few spans only (the locality footprint's moved curve: a few dozen of 10^5)
+    /// builds their blocks, not the whole table. A copy builds its own.
+    struct SpanTable {
+        std::unique_ptr<std::once_flag> allocated = std::make_unique<std::once_flag>();
+        std::unique_ptr<std::once_flag[]> built;  ///< one per block
+        std::vector<double> values;
+        SpanTable() = default;
+        SpanTable(const SpanTable&) : SpanTable() {}
+        SpanTable& operator=(const SpanTable&) { return *this = SpanTable(); }
+        SpanTable(SpanTable&&) noexcept = default;
+        SpanTable& operator=(SpanTable&&) noexcept = default;
+    };
+    /// The row of `span` in `table` (row_size doubles per span), its block filled first if need be by
+    /// fill(first, last, values): the spans first ≤ s < last into values + (s − p)·row_size.
+    template <class Fill>
+    const double* span_row(SpanTable& table, int span, std::size_t row_size, Fill fill) const;
     /// Equal buckets over [t_min, t_max), one per span: first[b] is the span holding the bucket's
     /// left end, where find_span starts its forward scan.
     struct SpanBuckets {
@@ -93,9 +111,9 @@ private:
     int degree_;
     std::vector<double> knots_;
     Eigen::MatrixXd control_;
-    mutable OnceCache<std::vector<double>> taylor_;  ///< span s − p: (p + 1) × dimension, c_0 … c_p, row-major
+    mutable SpanTable taylor_;  ///< span s − p: (p + 1) × dimension, c_0 … c_p, row-major
     mutable OnceCache<SpanBuckets> span_buckets_;
-    mutable OnceCache<std::vector<double>> knot_jets_;  ///< span s − p: start then end, each (p + 1) × dimension, row-major
+    mutable SpanTable knot_jets_;  ///< span s − p: start then end, each (p + 1) × dimension, row-major
 };
 
 /// Derivatives 0..order of the p+1 basis functions non-zero on span s at t:
