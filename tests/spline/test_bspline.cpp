@@ -35,8 +35,8 @@ TEST(BSpline, BasisIsAPartitionOfUnityWithMatchingDerivatives) {
     }
 }
 
-// find_span starts from a bucket index on curves of many spans; it must return the span of the
-// definition (U_s ≤ t < U_{s+1}, the last non-empty one at t_max) for any knots: uneven gaps,
+// find_span starts from the span it found last, then from a bucket index on curves of many spans;
+// it must return the span of the definition (U_s ≤ t < U_{s+1}, the last non-empty one at t_max) for any knots: uneven gaps,
 // repeated knots (empty spans), a cluster of knots in one bucket, ends clamped or not, and t on
 // the knots and just beside them.
 TEST(BSpline, FindSpanIsTheSpanOfTheDefinitionOnManySpans) {
@@ -69,6 +69,17 @@ TEST(BSpline, FindSpanIsTheSpanOfTheDefinitionOnManySpans) {
         for (double t : ts) {
             if (t < c.t_min() || t > c.t_max()) continue;
             ASSERT_EQ(c.find_span(t), by_definition(t)) << "variant " << variant << ", t = " << t;
+        }
+        // find_span first tries the span it found last: in a shuffled order each t follows another
+        // span's (and a knot follows the ulps beside it), and outside the domain it leaves no hint
+        // that a t inside would take.
+        std::shuffle(ts.begin(), ts.end(), rng);
+        for (double t : ts) {
+            if (t < c.t_min() || t > c.t_max()) continue;
+            (void)c.find_span(std::nextafter(c.t_min(), -1e300));
+            ASSERT_EQ(c.find_span(t), by_definition(t)) << "variant " << variant << ", t = " << t;
+            const double below = std::max(c.t_min(), std::nextafter(t, -1e300));
+            ASSERT_EQ(c.find_span(below), by_definition(below)) << "variant " << variant << ", t = " << below << " after " << t;
         }
     }
 }

@@ -39,9 +39,15 @@ int BSplineCurve::find_span(double t) const {
         return s;
     }
     // The span s with U_s ≤ t < U_{s+1}, p ≤ s < n (unique: an empty span fails t < U_{s+1}).
-    // On a curve of many spans (a sampled curve asks for millions) first from the bucket of t: a
-    // start at or before the span, a short forward scan, and the definition checked; the binary
-    // search otherwise. The same span either way.
+    // First the last span found, if t is in it. On a curve of many spans (a sampled curve asks for
+    // millions) then from the bucket of t: a start at or before the span, a short forward scan, and
+    // the definition checked; the binary search otherwise. The same span either way.
+    const int hint = last_span_.span.load(std::memory_order_relaxed);
+    if (hint >= degree_ && knots_[static_cast<std::size_t>(hint)] <= t && t < knots_[static_cast<std::size_t>(hint) + 1]) return hint;  // (hint < n: t < t_max)
+    const auto found = [&](int s) {
+        last_span_.span.store(s, std::memory_order_relaxed);
+        return s;
+    };
     auto from = knots_.begin() + degree_;
     if (n - degree_ >= kIndexedSpans && t >= t_min()) {
         const SpanBuckets& b = span_buckets();
@@ -49,12 +55,12 @@ int BSplineCurve::find_span(double t) const {
         int s = b.first[bucket];
         if (knots_[static_cast<std::size_t>(s)] <= t) {
             for (int step = 0; step < 8; ++step, ++s)
-                if (s + 1 == n || t < knots_[static_cast<std::size_t>(s) + 1]) return s;  // (s + 1 = n: t < t_max = U_n)
-            from = knots_.begin() + s;                                                    // U_s ≤ t still: search on from there
+                if (s + 1 == n || t < knots_[static_cast<std::size_t>(s) + 1]) return found(s);  // (s + 1 = n: t < t_max = U_n)
+            from = knots_.begin() + s;                                                           // U_s ≤ t still: search on from there
         }
     }
     const auto it = std::upper_bound(from, knots_.begin() + n, t);
-    return static_cast<int>(it - knots_.begin()) - 1;
+    return found(static_cast<int>(it - knots_.begin()) - 1);
 }
 
 const BSplineCurve::SpanBuckets& BSplineCurve::span_buckets() const {

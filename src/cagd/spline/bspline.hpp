@@ -25,6 +25,7 @@
 /// Preconditions (InvalidInput otherwise): p ≥ 0; knots non-decreasing and finite;
 /// control point count n = knots − p − 1 ≥ p + 1; t_p < t_n; no knot of multiplicity > p+1.
 #include <Eigen/Dense>
+#include <atomic>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -95,6 +96,16 @@ private:
     /// fill(first, last, values): the spans first ≤ s < last into values + (s − p)·row_size.
     template <class Fill>
     const double* span_row(SpanTable& table, int span, std::size_t row_size, Fill fill) const;
+    /// The span find_span found last (a hint, checked against the definition before use: successive
+    /// evaluations, a quadrature's nodes or a sampling, mostly fall in the same span). Relaxed
+    /// atomic: threads evaluating one curve may overwrite each other's hint, never a result. A copy
+    /// starts without one.
+    struct SpanHint {
+        mutable std::atomic<int> span{-1};
+        SpanHint() = default;
+        SpanHint(const SpanHint&) {}
+        SpanHint& operator=(const SpanHint&) { span.store(-1, std::memory_order_relaxed); return *this; }
+    };
     /// Equal buckets over [t_min, t_max), one per span: first[b] is the span holding the bucket's
     /// left end, where find_span starts its forward scan.
     struct SpanBuckets {
@@ -113,6 +124,7 @@ private:
     Eigen::MatrixXd control_;
     mutable SpanTable taylor_;  ///< span s − p: (p + 1) × dimension, c_0 … c_p, row-major
     mutable OnceCache<SpanBuckets> span_buckets_;
+    SpanHint last_span_;
     mutable SpanTable knot_jets_;  ///< span s − p: start then end, each (p + 1) × dimension, row-major
 };
 
