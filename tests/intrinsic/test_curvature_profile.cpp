@@ -278,6 +278,59 @@ TEST(CurvatureProfileDesign, LongOpenSplineConvergesToTheTolerance) {
     EXPECT_LE(sol.history.size(), 8u);
 }
 
+// Continuation from the solution of nearby points: with one point of 2000 moved by a chord, the
+// window around it is solved alone and set into the old solution, and Newton from there stops at
+// its first evaluation, on the solution the design's own start reaches (to Newton's tolerance).
+// The start changes only in the window's lengths and ordinates; where it does not apply, or the
+// points did not move, the start comes back unchanged.
+TEST(CurvatureProfileDesign, ContinuationStartSolvesTheWindowAroundAMovedPoint) {
+    const auto problem_of = [](const PointList& p, bool closed) {
+        const std::vector<SegmentShape> free(static_cast<std::size_t>(p.rows() - (closed ? 0 : 1)), SegmentShape::free);
+        const KnotLayout layout = span_layout(free);
+        CurvatureProfileProblem problem{p, layout, segment_shapes(layout, free), {}, closed, 0};
+        add_natural_open_ends(problem);
+        return problem;
+    };
+    const PointList p = cagd::random_walk(2000, 3, 0.2, 1.0, 1.2);
+    const CurvatureProfileProblem before = problem_of(p, false);
+    const CurvatureProfileSolution first = solve_curvature_profile_auto(before);
+    ASSERT_TRUE(first.outcome.ok()) << first.outcome.message;
+    EXPECT_EQ(continuation_start(before, first.u), first.u) << "nothing moved";
+    const NewtonOptions continuation{.required_contraction = 0.5};
+    for (const int moved : {1000, 3, 1996}) {  // the middle, and windows clipped at either end
+        PointList q = p;
+        q(moved, 1) += 1.0;
+        const CurvatureProfileProblem after = problem_of(q, false);
+        const Eigen::VectorXd start = continuation_start(after, first.u, continuation);
+        // The window: spans moved − 1 and moved (the moved point's rows) widened by 64 on each side.
+        const int n = 1999, a = std::max(0, moved - 1 - kContinuationWindowSpans), b = std::min(n, moved + 1 + kContinuationWindowSpans);
+        for (int j = 0; j < n; ++j)
+            if (j < a || j >= b) ASSERT_EQ(start(j), first.u(j)) << "length " << j << " outside the window [" << a << ", " << b << ")";
+        for (int i = 0; i < n + 2; ++i)
+            if (i < a || i > b + 1) ASSERT_EQ(start(n + i), first.u(n + i)) << "ordinate " << i << " outside the window";
+        EXPECT_GT((start - first.u).lpNorm<Eigen::Infinity>(), 1e-3) << "the window was re-solved";
+        const CurvatureProfileSolution near = solve_curvature_profile_auto(after, start, continuation), cold = solve_curvature_profile_auto(after);
+        ASSERT_TRUE(near.outcome.ok() && cold.outcome.ok()) << near.outcome.message << " / " << cold.outcome.message;
+        EXPECT_EQ(near.history.size(), 1u) << "converged at the first evaluation, moved point " << moved;
+        EXPECT_LE((near.u - cold.u).lpNorm<Eigen::Infinity>(), 1e-10) << "moved point " << moved;
+        // From the old solution itself Newton does not contract (the case this start is for).
+        EXPECT_FALSE(solve_curvature_profile_auto(after, first.u, continuation).outcome.ok()) << "moved point " << moved;
+    }
+    // Not applicable: points moved far apart (a window over a quarter of the curve), a closed curve,
+    // too few spans, a start of another size.
+    PointList spread = p;
+    spread(200, 1) += 1.0, spread(1800, 1) += 1.0;
+    EXPECT_EQ(continuation_start(problem_of(spread, false), first.u), first.u);
+    const PointList ring = p.topRows(400);
+    const CurvatureProfileProblem closed = problem_of(ring, true);
+    const Eigen::VectorXd closed_start = c2_start(closed);
+    EXPECT_EQ(continuation_start(closed, closed_start), closed_start);
+    const CurvatureProfileProblem short_open = problem_of(p.topRows(200), false);
+    const Eigen::VectorXd short_start = c2_start(short_open);
+    EXPECT_EQ(continuation_start(short_open, short_start), short_start);
+    EXPECT_EQ(continuation_start(before, first.u.head(10)), first.u.head(10));
+}
+
 // The defaults' solve takes the Moore–Penrose step up to 64 unknowns (32 open points) and the LU
 // step above (rank −1 in the solution), and both reach the same curve.
 TEST(CurvatureProfileDesign, AutoTakesTheLuStepAbove64Unknowns) {

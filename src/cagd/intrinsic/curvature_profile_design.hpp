@@ -196,6 +196,24 @@ CurvatureProfileSolution solve_curvature_profile_auto(const CurvatureProfileProb
 /// The same from the given start.
 CurvatureProfileSolution solve_curvature_profile_auto(const CurvatureProfileProblem& problem, const Eigen::VectorXd& start, const NewtonOptions& options = {});
 
+/// Spans on either side of the unsatisfied ones that continuation_start solves with them: an
+/// interpolating spline's response to a moved point decays by a factor of about 0.27 per span (the
+/// C2 cubic's 2 − √3; at most 1/2 for any chords), so 64 spans take it below 1e−19 of the move.
+inline constexpr int kContinuationWindowSpans = 64;
+/// A start for Newton from the solution `start` of nearby points (a drag's next frame, the locality
+/// footprint's one moved point). Where the problem is an open curve of free spans on span_layout,
+/// its conditions at the two ends only, and `start` leaves only the interpolation rows (eq 3) of the
+/// spans i0..i1 above options.tolerance: the window of those spans widened by
+/// kContinuationWindowSpans on each side (clipped to the curve; at most a quarter of it) is solved
+/// alone — its ends held at start's tangent angles there, or at the curve's own end conditions —
+/// and its lengths and de Boor ordinates are set into `start` (those whose knots lie inside the
+/// window). Outside the window start already solves every row, and across its ends the change is
+/// below rounding, so Newton from the result typically stops at its first evaluation (10^5 points,
+/// one moved by a chord: 1 evaluation of f and J where start itself took 8). Otherwise, or when the
+/// window's own solve fails, `start` unchanged. Newton decides either way; this only picks where
+/// it begins. O(window) plus one evaluation of f (no Jacobian) on the whole.
+Eigen::VectorXd continuation_start(const CurvatureProfileProblem& problem, const Eigen::VectorXd& start, const NewtonOptions& options = {});
+
 /// The second solver: Ceres Levenberg–Marquardt on the same f, with its own central-difference
 /// Jacobian (DynamicNumericDiffCostFunction) and lengths bounded below — independent of ours.
 CurvatureProfileSolution solve_curvature_profile_levenberg_marquardt(const CurvatureProfileProblem& problem, const Eigen::VectorXd& start);

@@ -80,11 +80,12 @@ InterpolationResult curvature_profile_from(const PointList& points, bool closed,
     // A start of another size is not one of these unknowns (the layout and the conditions depend on
     // the number of points and the parameters only): the design's own start then. So too when
     // Newton from the given start does not contract (the points moved too far for continuation).
+    // Where a few points moved, the start is first re-solved around them (continuation_start).
     intrinsic::CurvatureProfileSolution sol;
     if (start.size() == intrinsic::design_unknowns(problem)) {
         intrinsic::NewtonOptions continuation;
         continuation.required_contraction = kContinuationContraction;
-        sol = intrinsic::solve_curvature_profile_auto(problem, start, continuation);
+        sol = intrinsic::solve_curvature_profile_auto(problem, intrinsic::continuation_start(problem, start, continuation), continuation);
     }
     if (!(sol.outcome.ok() && sol.curve)) sol = intrinsic::solve_curvature_profile_auto(problem);
     InterpolationResult r = solved_result(problem, sol);
