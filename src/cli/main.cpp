@@ -25,6 +25,7 @@
 #include "cli/commands.hpp"
 #include "cli/output.hpp"
 #include "cagd/core/errors.hpp"
+#include "cagd/numeric/dense_blocking.hpp"
 
 namespace {
 
@@ -47,6 +48,7 @@ void hold_closed_standard_descriptors() {
 int main(int argc, char** argv) {
     using namespace cagd::cli;
     hold_closed_standard_descriptors();
+    cagd::numeric::pin_dense_blocking();  // the same bits on every machine (numeric/dense_blocking.hpp)
     cagd::install_output_signal_cleanup();
     CLI::App app{"cagd — interpolating curves and surfaces from five Japanese CAGD papers (cagd-repro)"};
     app.require_subcommand(1);

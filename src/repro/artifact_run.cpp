@@ -11,6 +11,7 @@
 #include "cagd/core/errors.hpp"
 #include "cagd/core/file_lock.hpp"
 #include "cagd/core/output_file.hpp"
+#include "cagd/numeric/dense_blocking.hpp"
 
 #ifndef CAGD_SOURCE_DIR
 #define CAGD_SOURCE_DIR "."
@@ -50,6 +51,7 @@ ClaimStatus classify_over_choices(ClaimStatus stated, const std::vector<bool>& w
 
 ArtifactRun::ArtifactRun(std::string paper, std::string artifact, std::string section, std::string title, int argc, char** argv)
     : paper_(std::move(paper)), artifact_(std::move(artifact)), section_(std::move(section)), title_(std::move(title)), root_(CAGD_SOURCE_DIR) {
+    cagd::numeric::pin_dense_blocking();  // results/ the same on every machine (numeric/dense_blocking.hpp)
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         if (a == "--check")
