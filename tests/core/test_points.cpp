@@ -26,6 +26,7 @@
 #include "cagd/core/points.hpp"
 #include "cagd/core/random_walk.hpp"
 #include "cagd/methods/method_registry.hpp"
+#include "../support/messages.hpp"
 
 using std::isnan;
 using namespace cagd;
@@ -101,15 +102,21 @@ TEST(Points, AllFiniteFindsEveryNonFiniteValueAtEveryPosition) {
 // require_valid_points finds a coinciding consecutive pair wherever it is (its pass runs by blocks
 // of 1024 pairs: both sides of a block's edge, the last pair, the closing pair) and names it; pairs
 // that differ in one coordinate only, or by the smallest subnormal, pass; −0 and +0 coincide.
+// (require_valid_points_with_extent too: the same checks in its own pass, the same messages.)
 TEST(Points, RequireValidPointsNamesEveryCoincidingPair) {
-    const auto message = [](const PointList& p, bool closed) -> std::string {
+  for (const bool with_extent : {false, true}) {
+    const auto message = [with_extent](const PointList& p, bool closed) -> std::string {
         try {
-            require_valid_points(p, 2, true, closed, "test");
+            if (with_extent)
+                (void)require_valid_points_with_extent(p, 2, closed, "test");
+            else
+                require_valid_points(p, 2, true, closed, "test");
         } catch (const InvalidInput& e) {
             return e.what();
         }
         return "";
     };
+    SCOPED_TRACE(with_extent ? "require_valid_points_with_extent" : "require_valid_points");
     for (Eigen::Index dim = 1; dim <= 3; ++dim)
         for (Eigen::Index n : {2, 3, 1024, 1025, 1026, 2050}) {
             PointList p(n, dim);
@@ -140,4 +147,46 @@ TEST(Points, RequireValidPointsNamesEveryCoincidingPair) {
     EXPECT_NE(message(z, false).find("points 0 and 1 coincide"), std::string::npos) << "−0 and +0 are the same coordinate";
     z << 0.0, 1.0, std::numeric_limits<double>::denorm_min(), 1.0, 2.0, 2.0;
     EXPECT_EQ(message(z, false), "") << "distinct by the smallest subnormal";
+  }
+}
+
+// The extent is the largest |coordinate| and the smallest squared chord (closing chord included
+// when closed), as Eigen forms them from the rows, bit for bit: over several blocks of 1024 chords,
+// with the extremes placed at a block's edges, the last chord and the closing one. A NaN or too few
+// points give require_valid_points' own message.
+TEST(Points, RequireValidPointsWithExtentGivesTheLargestCoordinateAndShortestChord) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(-3.0, 3.0);
+    for (Eigen::Index dim = 1; dim <= 3; ++dim)
+        for (Eigen::Index n : {2, 3, 1025, 2600})
+            for (const bool closed : {false, true}) {
+                if (closed && n < 3) continue;
+                PointList p(n, dim);
+                for (Eigen::Index i = 0; i < p.size(); ++i) p.data()[i] = u(rng);
+                for (Eigen::Index at : {Eigen::Index{1023}, Eigen::Index{1024}, n - 1}) {
+                    if (at >= n) continue;
+                    PointList q = p;
+                    q(at, dim - 1) = -7.5;  // the largest |coordinate|
+                    if (at > 0) q.row(at - 1) = q.row(at), q(at - 1, 0) += 1e-9;  // the shortest chord ends there
+                    const PointExtent e = require_valid_points_with_extent(q, 2, closed, "test");
+                    double shortest = std::numeric_limits<double>::infinity();
+                    for (Eigen::Index k = 0; k + 1 < n || (closed && k < n); ++k) shortest = std::min(shortest, (q.row(k + 1 == n ? 0 : k + 1) - q.row(k)).squaredNorm());
+                    const std::string where = "dim " + std::to_string(dim) + " n " + std::to_string(n) + (closed ? " closed" : " open") + " at " + std::to_string(at);
+                    EXPECT_EQ(e.largest_abs_coordinate, q.cwiseAbs().maxCoeff()) << where;
+                    EXPECT_EQ(e.largest_abs_coordinate, 7.5) << where;
+                    EXPECT_EQ(e.shortest_squared_chord, shortest) << where;
+                }
+                if (closed) {  // the closing chord the shortest
+                    PointList q = p;
+                    q.row(n - 1) = q.row(0);
+                    q(n - 1, 0) += 1e-12;
+                    EXPECT_EQ(require_valid_points_with_extent(q, 3, true, "test").shortest_squared_chord, (q.row(0) - q.row(n - 1)).squaredNorm()) << n << " " << dim;
+                }
+            }
+    PointList bad(3, 2);
+    bad << 0, 0, 1, std::numeric_limits<double>::quiet_NaN(), 2, 2;
+    const std::string m = cagd::test::invalid_input_message([&] { (void)require_valid_points_with_extent(bad, 2, false, "test"); });
+    EXPECT_NE(m.find("point 1 coordinate 1 is nan"), std::string::npos) << m;
+    const std::string few = cagd::test::invalid_input_message([&] { (void)require_valid_points_with_extent(bad.topRows(1), 2, false, "test"); });
+    EXPECT_NE(few.find("needs at least 2 points, got 1"), std::string::npos) << few;
 }

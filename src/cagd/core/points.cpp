@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "cagd/core/errors.hpp"
 #include "cagd/core/finite.hpp"
@@ -95,6 +96,73 @@ void visit_squared_chords(const PointList& points, bool closed, Visit&& visit) {
 }
 
 }  // namespace
+
+namespace {
+
+// The pass of require_valid_points_with_extent for D coordinates: per block of kBlock chords, on
+// the stack, the sums Σ_k |Δx_k| (0 only for coinciding points) and the squared lengths, their
+// minima and the block's largest |coordinate| by Eigen's vectorised reductions, and the finiteness
+// of the block's coordinates. The closing chord is the caller's.
+template <int D>
+void survey_of_dimension(const PointList& points, bool& finite, bool& coincident, PointExtent& extent) {
+    const Eigen::Index n = points.rows();
+    const double* c[3] = {points.col(0).data(), D > 1 ? points.col(1).data() : nullptr, D > 2 ? points.col(2).data() : nullptr};
+    constexpr Eigen::Index kBlock = 1024;
+    double sums[kBlock], squares[kBlock];
+    double smallest_sum = std::numeric_limits<double>::infinity();
+    for (Eigen::Index a = 0; a < n; a += kBlock) {
+        const Eigen::Index rows = std::min(kBlock, n - a), chords = std::min(kBlock, n - 1 - a);
+        for (int k = 0; k < D; ++k) {
+            finite = finite && all_finite(c[k] + a, static_cast<std::size_t>(rows));
+            extent.largest_abs_coordinate = std::max(extent.largest_abs_coordinate, Eigen::Map<const Eigen::ArrayXd>(c[k] + a, rows).abs().maxCoeff());
+        }
+        if (chords <= 0) continue;
+        for (Eigen::Index i = 0; i < chords; ++i) {
+            const double d0 = c[0][a + i + 1] - c[0][a + i];
+            double sum = std::abs(d0), square = d0 * d0;
+            if constexpr (D > 1) {
+                const double d1 = c[1][a + i + 1] - c[1][a + i];
+                sum += std::abs(d1), square = square + d1 * d1;
+            }
+            if constexpr (D > 2) {
+                const double d2 = c[2][a + i + 1] - c[2][a + i];
+                sum += std::abs(d2), square = square + d2 * d2;
+            }
+            sums[i] = sum, squares[i] = square;
+        }
+        smallest_sum = std::min(smallest_sum, Eigen::Map<const Eigen::ArrayXd>(sums, chords).minCoeff());
+        extent.shortest_squared_chord = std::min(extent.shortest_squared_chord, Eigen::Map<const Eigen::ArrayXd>(squares, chords).minCoeff());
+    }
+    coincident = smallest_sum == 0.0;
+}
+
+}  // namespace
+
+PointExtent require_valid_points_with_extent(const PointList& points, Eigen::Index min_count, bool closed, const std::string& who) {
+    const Eigen::Index n = points.rows();
+    if (n < min_count || points.cols() < 1 || points.cols() > 3 || n == 0) {
+        require_valid_points(points, min_count, true, closed, who);  // throws, or accepts an empty list
+        return {0.0, std::numeric_limits<double>::infinity()};
+    }
+    PointExtent extent{0.0, std::numeric_limits<double>::infinity()};
+    bool finite = true, coincident = false;
+    switch (points.cols()) {
+        case 1: survey_of_dimension<1>(points, finite, coincident, extent); break;
+        case 2: survey_of_dimension<2>(points, finite, coincident, extent); break;
+        default: survey_of_dimension<3>(points, finite, coincident, extent); break;
+    }
+    if (closed) {
+        coincident = coincident || points.row(n - 1) == points.row(0);
+        double square = 0.0;  // the closing chord, summed as visit_squared_chords sums it
+        for (Eigen::Index k = 0; k < points.cols(); ++k) {
+            const double d = points(0, k) - points(n - 1, k);
+            square = k == 0 ? d * d : square + d * d;
+        }
+        extent.shortest_squared_chord = std::min(extent.shortest_squared_chord, square);
+    }
+    if (!finite || coincident) require_valid_points(points, min_count, true, closed, who);  // names the culprit and throws
+    return extent;
+}
 
 std::vector<double> chord_lengths(const PointList& points, bool closed) {
     const Eigen::Index n = points.rows(), spans = std::max<Eigen::Index>(closed ? n : n - 1, 0);

@@ -15,6 +15,19 @@ using PointList = Eigen::MatrixXd;  ///< n × dim, one point per row
 /// also last vs first). Messages name `who`, the row index and the value.
 void require_valid_points(const PointList& points, Eigen::Index min_count, bool distinct_consecutive, bool closed, const std::string& who);
 
+/// What a construction checks of its points besides require_valid_points: the largest |coordinate|
+/// and the smallest squared chord length (the squares summed as in chord_lengths; the closing
+/// chord included when closed).
+struct PointExtent {
+    double largest_abs_coordinate = 0.0;  ///< max |x_{i,k}|
+    double shortest_squared_chord = 0.0;  ///< min over the chords of |P_{k+1} − P_k|², +∞ without chords
+};
+/// require_valid_points(points, min_count, true, closed, who), with the same messages, and the
+/// extent above, in one pass over the points by blocks that stay in cache (at 10^6 planar points the
+/// three passes of require_valid_points, a largest coordinate and first_chord_shorter_than took
+/// about 4 ms, memory-bound, on a 2-core VM).
+PointExtent require_valid_points_with_extent(const PointList& points, Eigen::Index min_count, bool closed, const std::string& who);
+
 /// The lengths |P_{k+1} − P_k| of the chords, k = 0 … n − 2, and for a closed list also
 /// |P_0 − P_{n−1}| last. Each is the square root of the squared coordinate differences summed in
 /// coordinate order, as Eigen's `(row(k + 1) − row(k)).norm()` sums them: the same values bit for

@@ -79,20 +79,21 @@ InterpolationResult checked_build(const Method& method, const PointList& points,
     if (closed && !claims.supports_closed) fail_input(who, "draws open curves only (--closed is not supported)");
     if (claims.max_points > 0 && points.rows() > claims.max_points)
         fail_input(who, std::to_string(points.rows()) + " points; it takes at most " + std::to_string(claims.max_points));
-    require_valid_points(points, closed ? claims.min_points_closed : claims.min_points, true, closed, who);
+    const PointExtent extent = require_valid_points_with_extent(points, closed ? claims.min_points_closed : claims.min_points, closed, who);
     if (points.cols() < 2 || points.cols() > claims.max_dimension)
         fail_input(who, "needs points of dimension 2" + std::string(claims.max_dimension == 3 ? " or 3" : "") + ", got " + std::to_string(points.cols()));
     // Valid points whose arithmetic leaves double precision: differences of coordinates near 1e308
     // overflow, and chords below 1e-150 square to 0 (their norm underflows). The result is not
     // representable: an outcome, not bad input.
-    const double largest = points.cwiseAbs().maxCoeff();
+    const double largest = extent.largest_abs_coordinate;
     if (largest > kLargestCoordinate) {
         InterpolationResult r;
         r.outcome = {Status::not_representable, method.name + ": coordinates up to " + full_precision(largest) +
                                                     " overflow its arithmetic (at most 1e150: squared distances must stay finite); scale the points down"};
         return r;
     }
-    if (const Eigen::Index i = first_chord_shorter_than(points, closed, kShortestChord * std::max(1.0, largest)); i >= 0) {
+    const double shortest = kShortestChord * std::max(1.0, largest);
+    if (const Eigen::Index i = extent.shortest_squared_chord >= shortest * shortest ? -1 : first_chord_shorter_than(points, closed, shortest); i >= 0) {
         const Eigen::Index next = i + 1 == points.rows() ? 0 : i + 1;
         InterpolationResult r;
         r.outcome = {Status::not_representable, method.name + ": points " + std::to_string(i) + " and " + std::to_string(next) + " differ by " +
