@@ -215,6 +215,43 @@ template <std::size_t D>
     return Cp;
 }
 
+// The pyramid for the nodes k0 … k0 + count − 1 of a block (see rule_into below): node k0 + i has
+// the parameters T[i … i + 3], the reciprocals R1[i … i + 2], R2[i … i + 1] and the points
+// x + k − 1 … x + k + 2 (columns `stride` apart); its slope goes to m0[k], m1[k] (and m2[k]). The
+// outputs alias nothing else (__restrict), so the compiler computes several nodes at a time.
+template <std::size_t D>
+[[gnu::always_inline]] inline void catmull_rom_block(const double* __restrict T, const double* __restrict R1, const double* __restrict R2, const double* __restrict x,
+                                                     Eigen::Index stride, Eigen::Index k0, Eigen::Index count, double* __restrict m0, double* __restrict m1,
+                                                     double* __restrict m2) {
+    for (Eigen::Index i = 0; i < count; ++i) {
+        const Eigen::Index k = k0 + i;
+        const std::array<double, D> d = catmull_rom_slope_at_node<D>(T[i], T[i + 1], T[i + 2], T[i + 3], {R1[i], R1[i + 1], R1[i + 2], R2[i + 1], R2[i]},
+                                                                     {x + k - 1, x + k, x + k + 1, x + k + 2}, stride);
+        m0[k] = d[0];
+        m1[k] = d[1];
+        if constexpr (D == 3) m2[k] = d[2];
+    }
+}
+
+// The same compiled twice on x86-64 Linux, for the baseline and for AVX2 (four doubles per
+// instruction instead of two), the one for this CPU chosen when the program loads (GCC's
+// target_clones). AVX2 alone, without FMA: the same operations, each rounded as in the baseline,
+// so the same bits (the construction's check against Boost compares them on every build).
+#if defined(__x86_64__) && defined(__linux__) && defined(__GNUC__) && !defined(__clang__)
+#define CAGD_PYRAMID_CLONES [[gnu::target_clones("avx2", "default")]]
+#else
+#define CAGD_PYRAMID_CLONES
+#endif
+CAGD_PYRAMID_CLONES void catmull_rom_block_planar(const double* T, const double* R1, const double* R2, const double* x, Eigen::Index stride, Eigen::Index k0,
+                                                  Eigen::Index count, double* m0, double* m1) {
+    catmull_rom_block<2>(T, R1, R2, x, stride, k0, count, m0, m1, nullptr);
+}
+CAGD_PYRAMID_CLONES void catmull_rom_block_space(const double* T, const double* R1, const double* R2, const double* x, Eigen::Index stride, Eigen::Index k0,
+                                                 Eigen::Index count, double* m0, double* m1, double* m2) {
+    catmull_rom_block<3>(T, R1, R2, x, stride, k0, count, m0, m1, m2);
+}
+#undef CAGD_PYRAMID_CLONES
+
 // The slopes of Boost's centripetal Catmull–Rom spline at the nodes, its own (prime at each node's
 // parameter: a binary search each, 10^6 of them cost three times Boost's construction) or by the
 // rule above in O(n).
@@ -247,12 +284,10 @@ struct CatmullRomSlopes {
             for (Eigen::Index i = 0; i < count + 3; ++i) T[i] = t(k0 + i);
             for (Eigen::Index i = 0; i < count + 2; ++i) R1[i] = 1 / (T[i + 1] - T[i]);
             for (Eigen::Index i = 0; i < count + 1; ++i) R2[i] = 1 / (T[i + 2] - T[i]);
-            for (Eigen::Index i = 0; i < count; ++i) {
-                const Eigen::Index k = k0 + i;
-                const std::array<double, D> d = catmull_rom_slope_at_node<D>(T[i], T[i + 1], T[i + 2], T[i + 3], {R1[i], R1[i + 1], R1[i + 2], R2[i + 1], R2[i]},
-                                                                             {x + k - 1, x + k, x + k + 1, x + k + 2}, n);
-                for (std::size_t c = 0; c < D; ++c) m[c][k] = d[c];
-            }
+            if constexpr (D == 2)
+                catmull_rom_block_planar(T, R1, R2, x, n, k0, count, m[0], m[1]);
+            else
+                catmull_rom_block_space(T, R1, R2, x, n, k0, count, m[0], m[1], m[2]);
         }
         for (Eigen::Index k = unwrapped_end; k < b; ++k) {
             const CatmullRomReciprocals r{1 / (t(k + 1) - t(k)), 1 / (t(k + 2) - t(k + 1)), 1 / (t(k + 3) - t(k + 2)), 1 / (t(k + 3) - t(k + 1)), 1 / (t(k + 2) - t(k))};
