@@ -39,15 +39,18 @@ int BSplineCurve::find_span(double t) const {
         return s;
     }
     // The span s with U_s ≤ t < U_{s+1}, p ≤ s < n (unique: an empty span fails t < U_{s+1}).
-    // First the last span found, if t is in it. On a curve of many spans (a sampled curve asks for
+    // First the last span found, or the one after it, if t is in it. On a curve of many spans (a sampled curve asks for
     // millions) then from the bucket of t: a start at or before the span, a short forward scan, and
     // the definition checked; the binary search otherwise. The same span either way.
-    const int hint = last_span_.span.load(std::memory_order_relaxed);
-    if (hint >= degree_ && knots_[static_cast<std::size_t>(hint)] <= t && t < knots_[static_cast<std::size_t>(hint) + 1]) return hint;  // (hint < n: t < t_max)
     const auto found = [&](int s) {
         last_span_.span.store(s, std::memory_order_relaxed);
         return s;
     };
+    const int hint = last_span_.span.load(std::memory_order_relaxed);
+    if (hint >= degree_ && knots_[static_cast<std::size_t>(hint)] <= t) {  // (hint < n: t < t_max)
+        if (t < knots_[static_cast<std::size_t>(hint) + 1]) return hint;
+        if (hint + 1 < n && t < knots_[static_cast<std::size_t>(hint) + 2]) return found(hint + 1);  // the next span (U_{hint+1} ≤ t): a sampling's next step
+    }
     auto from = knots_.begin() + degree_;
     if (n - degree_ >= kIndexedSpans && t >= t_min()) {
         const SpanBuckets& b = span_buckets();
@@ -217,15 +220,23 @@ constexpr int kSpansPerTableBlock = 1024;
 template <class Fill>
 const double* BSplineCurve::span_row(SpanTable& table, int span, std::size_t row_size, Fill fill) const {
     const int count = static_cast<int>(control_.rows()) - degree_, index = span - degree_;
-    std::call_once(*table.allocated, [&] {
-        table.values.assign(static_cast<std::size_t>(count) * row_size, 0.0);  // empty spans: never located
-        table.built = std::make_unique<std::once_flag[]>(static_cast<std::size_t>((count + kSpansPerTableBlock - 1) / kSpansPerTableBlock));
-    });
-    const int block = index / kSpansPerTableBlock;
-    std::call_once(table.built[static_cast<std::size_t>(block)], [&] {
-        const int first = degree_ + block * kSpansPerTableBlock;
-        fill(first, std::min(first + kSpansPerTableBlock, degree_ + count), table.values.data());
-    });
+    if (!table.allocated.load(std::memory_order_acquire)) {
+        const std::lock_guard<std::mutex> lock(table.building);
+        if (!table.allocated.load(std::memory_order_relaxed)) {
+            table.values.assign(static_cast<std::size_t>(count) * row_size, 0.0);  // empty spans: never located
+            table.built = std::make_unique<std::atomic<std::uint8_t>[]>(static_cast<std::size_t>((count + kSpansPerTableBlock - 1) / kSpansPerTableBlock));
+            table.allocated.store(true, std::memory_order_release);
+        }
+    }
+    std::atomic<std::uint8_t>& built = table.built[static_cast<std::size_t>(index / kSpansPerTableBlock)];
+    if (!built.load(std::memory_order_acquire)) {
+        const std::lock_guard<std::mutex> lock(table.building);
+        if (!built.load(std::memory_order_relaxed)) {
+            const int first = degree_ + index / kSpansPerTableBlock * kSpansPerTableBlock;
+            fill(first, std::min(first + kSpansPerTableBlock, degree_ + count), table.values.data());
+            built.store(1, std::memory_order_release);
+        }
+    }
     return table.values.data() + static_cast<std::size_t>(index) * row_size;
 }
 

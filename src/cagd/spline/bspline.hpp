@@ -26,6 +26,7 @@
 /// control point count n = knots − p − 1 ≥ p + 1; t_p < t_n; no knot of multiplicity > p+1.
 #include <Eigen/Dense>
 #include <atomic>
+#include <cstdint>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -81,18 +82,25 @@ private:
     /// Rows of doubles per non-empty span s (at s − p), built on first use block by block of
     /// kSpansPerTableBlock spans (thread-safe), each row exactly as a whole-table build forms it: a
     /// curve evaluated on a few spans only (the locality footprint's moved curve: a few dozen of 10^5)
-    /// builds their blocks, not the whole table. A copy builds its own.
+    /// builds their blocks, not the whole table. A built block is found by one acquire load (the
+    /// lookup of every jet). A copy, or a moved curve, builds its own.
     struct SpanTable {
-        std::unique_ptr<std::once_flag> allocated = std::make_unique<std::once_flag>();
-        std::unique_ptr<std::once_flag[]> built;  ///< one per block
+        std::mutex building;                                ///< held while a block (or the array) is built
+        std::atomic<bool> allocated{false};                 ///< values and built exist (release/acquire)
+        std::unique_ptr<std::atomic<std::uint8_t>[]> built;  ///< per block: 1 once its rows are filled
         std::vector<double> values;
         SpanTable() = default;
         SpanTable(const SpanTable&) : SpanTable() {}
-        SpanTable& operator=(const SpanTable&) { return *this = SpanTable(); }
-        SpanTable(SpanTable&&) noexcept = default;
-        SpanTable& operator=(SpanTable&&) noexcept = default;
-    };
-    /// The row of `span` in `table` (row_size doubles per span), its block filled first if need be by
+        SpanTable(SpanTable&&) noexcept : SpanTable() {}
+        SpanTable& operator=(const SpanTable&) { return reset(); }
+        SpanTable& operator=(SpanTable&&) noexcept { return reset(); }
+        SpanTable& reset() {
+            allocated.store(false, std::memory_order_relaxed);
+            built.reset();
+            values.clear();
+            return *this;
+        }
+    };    /// The row of `span` in `table` (row_size doubles per span), its block filled first if need be by
     /// fill(first, last, values): the spans first ≤ s < last into values + (s − p)·row_size.
     template <class Fill>
     const double* span_row(SpanTable& table, int span, std::size_t row_size, Fill fill) const;
