@@ -15,62 +15,18 @@
 // the user's cache (core/user_cache.hpp); building one prints one line (unless --quiet), and
 // --no-cache (or CAGD_NO_CACHE=1) builds them in memory instead.
 #include <CLI/CLI.hpp>
-#include <fcntl.h>
-#if defined(__GLIBC__)
-#include <malloc.h>
-#endif
-#include <unistd.h>
-
 #include <iostream>
 #include <new>
 #include <vector>
 
 #include "cli/commands.hpp"
 #include "cli/output.hpp"
+#include "cli/process_setup.hpp"
 #include "cagd/core/errors.hpp"
-#include "cagd/numeric/dense_blocking.hpp"
-
-namespace {
-
-// A closed standard descriptor is held by /dev/null opened the wrong way round, so that no file the
-// command opens takes its number: writing to a closed standard output then fails instead of
-// landing in that file (standard error: messages are lost, as the caller asked).
-void hold_closed_standard_descriptors() {
-    for (int fd : {0, 1, 2})
-        if (::fcntl(fd, F_GETFD) < 0) {
-            const int held = ::open("/dev/null", fd == 0 ? O_WRONLY : O_RDONLY);
-            if (held >= 0 && held != fd) {
-                ::dup2(held, fd);
-                ::close(held);
-            }
-        }
-}
-
-}  // namespace
-
-namespace {
-
-// A command allocates and frees the same large arrays many times over (`cagd compare` builds 23
-// curves with their tables and Jacobians). glibc maps an allocation above its threshold afresh
-// and unmaps it when freed, and returns the freed top of the heap to the system, so the same pages
-// fault in again and again: at 10^5 points compare spent 0.58 of its 7.9 CPU-s in the kernel,
-// 0.26 with this. A command is short-lived: it keeps what it frees for reuse, and maps afresh
-// only allocations above 1 GiB. (Peak memory is unchanged: freed pages are reused, not added.)
-void keep_freed_memory() {
-#if defined(__GLIBC__)
-    mallopt(M_MMAP_THRESHOLD, 1 << 30);
-    mallopt(M_TRIM_THRESHOLD, 1 << 30);
-#endif
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
     using namespace cagd::cli;
-    hold_closed_standard_descriptors();
-    cagd::numeric::pin_dense_blocking();  // the same bits on every machine (numeric/dense_blocking.hpp)
-    keep_freed_memory();
-    cagd::install_output_signal_cleanup();
+    prepare_command_process();
     CLI::App app{"cagd — interpolating curves and surfaces from five Japanese CAGD papers (cagd-repro)"};
     app.require_subcommand(1);
     app.fallthrough();  // --quiet may follow the subcommand
