@@ -100,7 +100,8 @@ private:
             values.clear();
             return *this;
         }
-    };    /// The row of `span` in `table` (row_size doubles per span), its block filled first if need be by
+    };
+    /// The row of `span` in `table` (row_size doubles per span), its block filled first if need be by
     /// fill(first, last, values): the spans first ≤ s < last into values + (s − p)·row_size.
     template <class Fill>
     const double* span_row(SpanTable& table, int span, std::size_t row_size, Fill fill) const;
