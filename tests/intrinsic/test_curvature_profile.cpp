@@ -305,9 +305,13 @@ TEST(CurvatureProfileDesign, ContinuationStartSolvesTheWindowAroundAMovedPoint) 
         // The window: spans moved − 1 and moved (the moved point's rows) widened by 64 on each side.
         const int n = 1999, a = std::max(0, moved - 1 - kContinuationWindowSpans), b = std::min(n, moved + 1 + kContinuationWindowSpans);
         for (int j = 0; j < n; ++j)
-            if (j < a || j >= b) ASSERT_EQ(start(j), first.u(j)) << "length " << j << " outside the window [" << a << ", " << b << ")";
+            if (j < a || j >= b) {
+                ASSERT_EQ(start(j), first.u(j)) << "length " << j << " outside the window [" << a << ", " << b << ")";
+            }
         for (int i = 0; i < n + 2; ++i)
-            if (i < a || i > b + 1) ASSERT_EQ(start(n + i), first.u(n + i)) << "ordinate " << i << " outside the window";
+            if (i < a || i > b + 1) {
+                ASSERT_EQ(start(n + i), first.u(n + i)) << "ordinate " << i << " outside the window";
+            }
         EXPECT_GT((start - first.u).lpNorm<Eigen::Infinity>(), 1e-3) << "the window was re-solved";
         const CurvatureProfileSolution near = solve_curvature_profile_auto(after, start, continuation), cold = solve_curvature_profile_auto(after);
         ASSERT_TRUE(near.outcome.ok() && cold.outcome.ok()) << near.outcome.message << " / " << cold.outcome.message;

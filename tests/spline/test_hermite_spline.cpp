@@ -287,3 +287,73 @@ TEST(CubicSplines, SlopeFormRefusesWhatIsNotACurve) {
     EXPECT_THROW(PiecewiseHermiteCurve::from_node_slopes(nodes, bad, {}), InvalidInput);
     EXPECT_THROW(PiecewiseHermiteCurve::from_node_slopes(nodes, slopes, {1.0, INFINITY, 3.0}), InvalidInput);
 }
+
+// from_points_and_slope_blocks: the slope form of from_node_slopes, bit for bit, its slopes asked
+// for in consecutive blocks that cover every node once, and each block checked as it is written.
+TEST(CubicSplines, SlopeBlocksGiveTheSlopeFormBitForBitAndCheckEveryBlock) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-2.0, 2.0);
+    for (int dim = 1; dim <= 3; ++dim)
+        for (bool closed : {false, true}) {
+            const Eigen::Index n = 5000, spans = closed ? n : n - 1;  // three blocks of the factory's 2048
+            PointList p(n, dim);
+            Eigen::MatrixXd slopes(n, dim);
+            for (Eigen::Index i = 0; i < n; ++i)
+                for (int c = 0; c < dim; ++c) p(i, c) = u(rng), slopes(i, c) = u(rng);
+            std::vector<double> scales(static_cast<std::size_t>(spans));
+            for (double& h : scales) h = 1.0 + u(rng);
+            Eigen::Index next = 0;  // the first node not yet asked for
+            const auto fill = [&](Eigen::Index first, Eigen::Index end, double* const* m) {
+                ASSERT_EQ(first, next) << "blocks out of order";
+                ASSERT_LT(first, end);
+                for (Eigen::Index k = first; k < end; ++k)
+                    for (int c = 0; c < dim; ++c) m[c][k] = slopes(k, c);
+                next = end;
+            };
+            const auto copy = [&](Eigen::Index a, Eigen::Index b, double* const* m) {
+                for (Eigen::Index k = a; k < b; ++k)
+                    for (int c = 0; c < dim; ++c) m[c][k] = slopes(k, c);
+            };
+            const PiecewiseHermiteCurve blocks = PiecewiseHermiteCurve::from_points_and_slope_blocks(p, closed, fill, scales);
+            EXPECT_EQ(next, n) << "every node's slope asked for";
+            Eigen::MatrixXd nodes(spans + 1, dim);
+            nodes.topRows(n) = p;
+            if (closed) nodes.row(n) = p.row(0);
+            const PiecewiseHermiteCurve whole = PiecewiseHermiteCurve::from_node_slopes(nodes, slopes, scales);
+            const std::string what = std::to_string(dim) + "-D, " + (closed ? "closed" : "open");
+            EXPECT_TRUE(blocks.nodes() == whole.nodes()) << what;
+            EXPECT_TRUE(blocks.node_slopes() == whole.node_slopes()) << what;
+            EXPECT_EQ(blocks.span_scales(), whole.span_scales()) << what;
+            JetMatrix from_blocks, from_whole;
+            for (double t : {0.0, 0.37, 2500.5, static_cast<double>(spans)}) {
+                blocks.jet_into(t, 2, from_blocks);
+                whole.jet_into(t, 2, from_whole);
+                EXPECT_TRUE(from_blocks == from_whole) << what << ", u = " << t;
+            }
+            // A non-finite slope in the last block, and a non-finite point in the middle one.
+            const auto spoilt_at = [&](Eigen::Index row) {
+                return [&, row](Eigen::Index a, Eigen::Index b, double* const* m) {
+                    for (Eigen::Index k = a; k < b; ++k)
+                        for (int c = 0; c < dim; ++c) m[c][k] = k == row && c == dim - 1 ? std::numeric_limits<double>::infinity() : slopes(k, c);
+                };
+            };
+            try {
+                PiecewiseHermiteCurve::from_points_and_slope_blocks(p, closed, spoilt_at(n - 1), scales);
+                ADD_FAILURE() << what << ": an infinite slope accepted";
+            } catch (const InvalidInput& e) {
+                EXPECT_NE(std::string(e.what()).find("node 4999 coordinate " + std::to_string(dim - 1) + " is"), std::string::npos) << e.what();
+                EXPECT_NE(std::string(e.what()).find("slope inf"), std::string::npos) << e.what();
+            }
+            PointList bad = p;
+            bad(3000, 0) = std::nan("");
+            try {
+                PiecewiseHermiteCurve::from_points_and_slope_blocks(bad, closed, copy, scales);
+                ADD_FAILURE() << what << ": a NaN node accepted";
+            } catch (const InvalidInput& e) {
+                EXPECT_NE(std::string(e.what()).find("node 3000 coordinate 0 is nan"), std::string::npos) << e.what();
+            }
+            std::vector<double> bad_scales = scales;
+            bad_scales[7] = std::nan("");
+            EXPECT_THROW(PiecewiseHermiteCurve::from_points_and_slope_blocks(p, closed, copy, bad_scales), InvalidInput) << what;
+        }
+}

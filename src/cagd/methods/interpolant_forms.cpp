@@ -252,13 +252,36 @@ CAGD_PYRAMID_CLONES void catmull_rom_block_space(const double* T, const double* 
 }
 #undef CAGD_PYRAMID_CLONES
 
+// An allocator that leaves the elements it makes without arguments uninitialised: the points handed
+// to Boost are written right after (value-initialising them first zeroed 16 MB at 10^6 points).
+template <class T>
+struct UninitialisedAllocator : std::allocator<T> {
+    template <class U>
+    struct rebind {
+        using other = UninitialisedAllocator<U>;
+    };
+    UninitialisedAllocator() = default;
+    template <class U>
+    UninitialisedAllocator(const UninitialisedAllocator<U>&) noexcept {}
+    template <class U>
+    void construct(U* p) noexcept {
+        ::new (static_cast<void*>(p)) U;
+    }
+    template <class U, class... Args>
+    void construct(U* p, Args&&... args) {
+        ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+    }
+};
+template <std::size_t D>
+using BoostCatmullRom = boost::math::catmull_rom<std::array<double, D>, std::vector<std::array<double, D>, UninitialisedAllocator<std::array<double, D>>>>;
+
 // The slopes of Boost's centripetal Catmull–Rom spline at the nodes, its own (prime at each node's
 // parameter: a binary search each, 10^6 of them cost three times Boost's construction) or by the
 // rule above in O(n).
 template <std::size_t D>
 struct CatmullRomSlopes {
     using Point = std::array<double, D>;
-    const boost::math::catmull_rom<Point>& cr;
+    const BoostCatmullRom<D>& cr;
     const PointList& p;
     // Boost's public parameter_at_point(j) is its t_{j+1}: node k's parameter is t_{k+1}; after the
     // nodes come the ghost nodes' t_{n+1}, t_{n+2}.
@@ -313,63 +336,81 @@ enum class SlopeRule { checked, spoilt };
 // 1e100), a short chord's term vanishes in that sum, two parameters coincide, and Boost's span
 // search reads past its arrays (found by fuzzing). So each of the n + 1 steps of its parameters
 // must exceed 1e-12 of their sum (ε is 1.1e-16), checked here before anything searches them
-// (Boost's construction only adds).
+// (Boost's construction only adds). The spans' parameter lengths h_k = t_{k+2} − t_{k+1} (Boost's
+// numbering; step k of those), k < spans, go to `h` in the same pass.
 template <std::size_t D>
-boost::math::catmull_rom<std::array<double, D>> boost_catmull_rom(const PointList& p, bool closed) {
+BoostCatmullRom<D> boost_catmull_rom(const PointList& p, bool closed, std::vector<double>* h = nullptr) {
     // Boost's construction resizes its points to n + 3 (the ghost nodes): with that capacity
     // reserved, it does so in place instead of copying them to a new array.
-    std::vector<std::array<double, D>> pts;
+    std::vector<std::array<double, D>, UninitialisedAllocator<std::array<double, D>>> pts;
     pts.reserve(static_cast<std::size_t>(p.rows()) + 3);
     pts.resize(static_cast<std::size_t>(p.rows()));
     for (Eigen::Index k = 0; k < p.rows(); ++k)
         for (std::size_t c = 0; c < D; ++c) pts[static_cast<std::size_t>(k)][c] = p(k, static_cast<Eigen::Index>(c));
-    boost::math::catmull_rom<std::array<double, D>> cr(std::move(pts), closed, 0.5);
-    const Eigen::Index n = p.rows();
+    BoostCatmullRom<D> cr(std::move(pts), closed, 0.5);
+    const Eigen::Index n = p.rows(), spans = closed ? n : n - 1;
     const auto t = [&](Eigen::Index j) { return cr.parameter_at_point(static_cast<std::size_t>(j)); };  // Boost's t_{j+1}
     const double sum = t(n + 1);                                                                        // t_1 = 0
-    for (Eigen::Index j = 0; j <= n; ++j)
-        if (!(t(j + 1) - t(j) > 1e-12 * sum)) {
-            const Eigen::Index a = j % n, b = (j + 1) % n;  // j = n − 1, n: the ghost chords
-            fail_input("cagd::methods::boost_catmull_rom_interpolant", "the chord from point " + std::to_string(a) + " is " + full_precision((p.row(b) - p.row(a)).norm()) +
-                                                                           " long against a centripetal parameter sum of " + full_precision(sum) +
-                                                                           ": it vanishes in double precision (the points span too many orders of magnitude)");
+    const double shortest = 1e-12 * sum;
+    // An OR over all steps (vectorises); the culprit searched only on failure. Steps 0 … spans − 1
+    // also go to h.
+    unsigned short_steps = 0;
+    if (h) {
+        h->resize(static_cast<std::size_t>(spans));
+        double* out = h->data();
+        for (Eigen::Index j = 0; j < spans; ++j) {
+            const double step = t(j + 1) - t(j);
+            short_steps |= !(step > shortest);
+            out[j] = step;
         }
+    } else {
+        for (Eigen::Index j = 0; j < spans; ++j) short_steps |= !(t(j + 1) - t(j) > shortest);
+    }
+    for (Eigen::Index j = spans; j <= n; ++j) short_steps |= !(t(j + 1) - t(j) > shortest);
+    if (short_steps != 0)
+        for (Eigen::Index j = 0; j <= n; ++j)
+            if (!(t(j + 1) - t(j) > 1e-12 * sum)) {
+                const Eigen::Index a = j % n, b = (j + 1) % n;  // j = n − 1, n: the ghost chords
+                fail_input("cagd::methods::boost_catmull_rom_interpolant", "the chord from point " + std::to_string(a) + " is " + full_precision((p.row(b) - p.row(a)).norm()) +
+                                                                               " long against a centripetal parameter sum of " + full_precision(sum) +
+                                                                               ": it vanishes in double precision (the points span too many orders of magnitude)");
+            }
     return cr;
 }
 
 template <std::size_t D>
 Interpolant catmull_rom_interpolant(const PointList& p, bool closed, SlopeRule rule = SlopeRule::checked) {
     using Point = std::array<double, D>;
+    using spline::PiecewiseHermiteCurve;
     const Eigen::Index n = p.rows(), spans = closed ? n : n - 1;
-    std::vector<double> h(static_cast<std::size_t>(spans));
-    // The unit-span Hermite form's slopes, filled as they come (NodeSlopeSink). For peak memory,
-    // they are allocated once Boost's spline is built (its construction holds a copy of the points
-    // and writes its parameters), and the nodes once it is gone.
-    Eigen::MatrixXd m;
+    std::vector<double> h;  // the spans' parameter lengths: a closed curve's last span ends at t_{n+1} (max_parameter), an open one's at t_n
+    std::shared_ptr<const PiecewiseHermiteCurve> curve;
     {  // Boost's spline lives only while its parameters and slopes are read (peak memory)
-        const boost::math::catmull_rom<Point> cr = boost_catmull_rom<D>(p, closed);
-        m.resize(n, p.cols());
+        const BoostCatmullRom<D> cr = boost_catmull_rom<D>(p, closed, &h);
         const CatmullRomSlopes<D> at{cr, p};
-        // A closed curve's last span ends at t_{n+1} (max_parameter), an open one's at t_n.
-        for (Eigen::Index k = 0; k < spans; ++k) h[static_cast<std::size_t>(k)] = at.t(k + 2) - at.t(k + 1);
-        std::array<NodeSlopeSink, D> sinks;
-        for (std::size_t c = 0; c < D; ++c) sinks[c] = {m.col(static_cast<Eigen::Index>(c)).data(), static_cast<std::size_t>(n)};
-        const auto put = [&](Eigen::Index k, const Point& d) {
-            for (std::size_t c = 0; c < D; ++c) sinks[c].put(static_cast<std::size_t>(k), d[c]);
+        // The slopes block by block as the curve takes them (each block checked while in cache):
+        // node 0 Boost's own, the others by the rule.
+        const auto fill = [&](Eigen::Index a, Eigen::Index b, double* const* m) {
+            if (a == 0) {
+                const Point d = at.boost(0);
+                for (std::size_t c = 0; c < D; ++c) m[c][0] = d[c];
+                a = 1;
+            }
+            std::array<double*, D> columns;
+            for (std::size_t c = 0; c < D; ++c) columns[c] = m[c];
+            at.rule_into(a, b, columns);
+            if (rule == SlopeRule::spoilt)
+                for (Eigen::Index k = a; k < b; ++k) m[0][k] = std::nextafter(m[0][k], std::numeric_limits<double>::infinity());
         };
-        const auto holds = [&](Eigen::Index k, const Point& d) {
-            for (std::size_t c = 0; c < D; ++c)
-                if (!sinks[c].holds(static_cast<std::size_t>(k), d[c])) return false;
-            return true;
-        };
-        put(0, at.boost(0));
-        std::array<double*, D> columns;
-        for (std::size_t c = 0; c < D; ++c) columns[c] = sinks[c].m;
-        at.rule_into(1, n, columns);
-        if (rule == SlopeRule::spoilt)
-            for (Eigen::Index k = 1; k < n; ++k) sinks[0].put(static_cast<std::size_t>(k), std::nextafter(sinks[0].m[k], std::numeric_limits<double>::infinity()));
+        curve = std::make_shared<const PiecewiseHermiteCurve>(PiecewiseHermiteCurve::from_points_and_slope_blocks(p, closed, fill, h));
         // The check, bit for bit: kCheckedBlocks blocks of kSlopeBlock nodes spread over 1 … n − 1,
         // both ends included. Should any derivative differ, every slope is Boost's.
+        const Eigen::MatrixXd& m = curve->node_slopes();
+        const auto holds = [&](Eigen::Index k, const Point& d) {
+            for (std::size_t c = 0; c < D; ++c)
+                if (bits_of(m(k, static_cast<Eigen::Index>(c))) != bits_of(d[c])) return false;
+            return true;
+        };
         const Eigen::Index blocks = std::max<Eigen::Index>(1, (n - 1) / kSlopeBlock), checked = std::min(blocks, kCheckedBlocks);
         bool same = true;
         for (Eigen::Index j = 0; j < checked && same; ++j) {
@@ -377,14 +418,20 @@ Interpolant catmull_rom_interpolant(const PointList& p, bool closed, SlopeRule r
             const Eigen::Index a = 1 + block * kSlopeBlock, b = block + 1 == blocks ? n : a + kSlopeBlock;
             for (Eigen::Index k = a; k < b && same; ++k) same = holds(k, at.boost(k));
         }
-        if (!same)
-            for (Eigen::Index k = 1; k < n; ++k) put(k, at.boost(k));
+        if (!same) {
+            Eigen::MatrixXd boost_slopes(n, p.cols());
+            for (Eigen::Index k = 0; k < n; ++k) {
+                const Point d = at.boost(k);
+                for (std::size_t c = 0; c < D; ++c) boost_slopes(k, static_cast<Eigen::Index>(c)) = d[c];
+            }
+            curve.reset();
+            Eigen::MatrixXd nodes(spans + 1, p.cols());
+            nodes.topRows(n) = p;
+            if (closed) nodes.row(n) = p.row(0);
+            // (closed: n slopes for n spans; from_node_slopes repeats m_0 as m_n)
+            curve = std::make_shared<const PiecewiseHermiteCurve>(PiecewiseHermiteCurve::from_node_slopes(std::move(nodes), std::move(boost_slopes), h));
+        }
     }
-    Eigen::MatrixXd nodes(spans + 1, p.cols());
-    nodes.topRows(n) = p;
-    if (closed) nodes.row(n) = p.row(0);
-    // (closed: n slopes for n spans; from_node_slopes repeats m_0 as m_n)
-    auto curve = std::make_shared<spline::PiecewiseHermiteCurve>(spline::PiecewiseHermiteCurve::from_node_slopes(std::move(nodes), std::move(m), h));
     return unit_span_interpolant(std::move(curve), spans + 1, std::move(h));
 }
 

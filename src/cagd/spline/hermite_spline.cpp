@@ -1,5 +1,6 @@
 #include "cagd/spline/hermite_spline.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -30,8 +31,7 @@ PiecewiseHermiteCurve PiecewiseHermiteCurve::from_node_slopes(Eigen::MatrixXd no
         fail_input(who, "needs K span scales (or none), got " + std::to_string(scales.size()) + " for " + std::to_string(spans) + " spans");
     if (slopes.cols() != nodes.cols()) fail_input(who, "nodes and slopes must have the same dimension");
     if (!all_finite(nodes) || !all_finite(slopes)) fail_input(who, "nodes and slopes must be finite");
-    for (double h : scales)
-        if (!std::isfinite(h)) fail_input(who, "span scales must be finite");
+    if (!all_finite(scales.data(), scales.size())) fail_input(who, "span scales must be finite");
     if (slopes.rows() == spans) {  // closed: m_K = m_0 kept as a row, so that evaluation never wraps
         slopes.conservativeResize(spans + 1, Eigen::NoChange);
         slopes.row(spans) = slopes.row(0);
@@ -39,6 +39,40 @@ PiecewiseHermiteCurve PiecewiseHermiteCurve::from_node_slopes(Eigen::MatrixXd no
     PiecewiseHermiteCurve c;
     c.nodes_ = std::move(nodes);
     c.slopes_ = std::move(slopes);
+    c.scales_ = std::move(scales);
+    return c;
+}
+
+PiecewiseHermiteCurve PiecewiseHermiteCurve::from_points_and_slope_blocks(const PointList& points, bool closed, const SlopeBlockFill& fill, std::vector<double> scales) {
+    const char* who = "PiecewiseHermiteCurve::from_points_and_slope_blocks";
+    const Eigen::Index n = points.rows(), dim = points.cols(), spans = closed ? n : n - 1;
+    if (spans < 1 || n < 2) fail_input(who, "needs at least one span");
+    if (dim < 1 || dim > 3) fail_input(who, "needs points of 1 to 3 coordinates, got " + std::to_string(dim));
+    if (!scales.empty() && static_cast<Eigen::Index>(scales.size()) != spans)
+        fail_input(who, "needs K span scales (or none), got " + std::to_string(scales.size()) + " for " + std::to_string(spans) + " spans");
+    if (!all_finite(scales.data(), scales.size())) fail_input(who, "span scales must be finite");
+    PiecewiseHermiteCurve c;
+    c.nodes_.resize(spans + 1, dim);
+    c.slopes_.resize(spans + 1, dim);  // closed: row K = row 0, set below
+    double* columns[3] = {nullptr, nullptr, nullptr};
+    for (Eigen::Index k = 0; k < dim; ++k) columns[k] = c.slopes_.col(k).data();
+    // A block of nodes and slopes: 2 × 3 × 2048 doubles at most, 96 KB, in L2 while it is checked.
+    constexpr Eigen::Index kBlock = 2048;
+    for (Eigen::Index a = 0; a < n; a += kBlock) {
+        const Eigen::Index rows = std::min(kBlock, n - a);
+        fill(a, a + rows, columns);  // first: a fill that reads the block's points leaves them in cache for the copy
+        c.nodes_.middleRows(a, rows) = points.middleRows(a, rows);
+        for (Eigen::Index k = 0; k < dim; ++k)
+            if (!all_finite(c.nodes_.col(k).data() + a, static_cast<std::size_t>(rows)) || !all_finite(columns[k] + a, static_cast<std::size_t>(rows)))
+                for (Eigen::Index i = a; i < a + rows; ++i)  // the culprit, for the message
+                    if (!std::isfinite(c.nodes_(i, k)) || !std::isfinite(columns[k][i]))
+                        fail_input(who, "nodes and slopes must be finite; node " + std::to_string(i) + " coordinate " + std::to_string(k) + " is " +
+                                            full_precision(c.nodes_(i, k)) + " with slope " + full_precision(columns[k][i]));
+    }
+    if (closed) {
+        c.nodes_.row(n) = c.nodes_.row(0);
+        c.slopes_.row(n) = c.slopes_.row(0);
+    }
     c.scales_ = std::move(scales);
     return c;
 }
