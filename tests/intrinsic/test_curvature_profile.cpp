@@ -6,6 +6,8 @@
 #include <boost/math/quadrature/gauss.hpp>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <numbers>
 #include <random>
 
@@ -108,6 +110,26 @@ TEST(KnotDifferenceList, MalformedListsThrow) {
     EXPECT_THROW(KnotLayout(2, {1, 1}, {2, 1, 2}, {1, 0}), InvalidInput);  // indices not in order of first use
     const KnotLayout ok(2, {1}, {2, 2}, {0});
     EXPECT_THROW(format_knot_difference_list(ok, {0.0001}, 2), InvalidInput);  // would print as 0
+}
+
+// The lengths print as printf's "%.*f" prints them (format_knot_difference_list writes them with
+// std::to_chars where the standard library has it), rounding ties included.
+TEST(KnotDifferenceList, LengthsPrintAsPrintfFixed) {
+    const KnotLayout one(2, {1}, {2, 2}, {0});
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> mantissa(1.0, 10.0);
+    std::uniform_int_distribution<int> exponent(-4, 12), digits(0, 17);
+    std::vector<std::pair<double, int>> cases{{0.125, 2}, {0.375, 2}, {2.5, 0}, {3.5, 0}, {1e22, 3}, {0.1, 17}, {123456.0, 0}};
+    for (int i = 0; i < 2000; ++i) cases.emplace_back(mantissa(rng) * std::pow(10.0, exponent(rng)), digits(rng));
+    for (const auto& [v, decimals] : cases) {
+        char want[400];
+        std::snprintf(want, sizeof want, "%.*f", decimals, v);
+        if (std::strtod(want, nullptr) == 0.0) {
+            EXPECT_THROW(format_knot_difference_list(one, {v}, decimals), InvalidInput) << v << " with " << decimals << " decimals prints as " << want;
+            continue;
+        }
+        EXPECT_EQ(format_knot_difference_list(one, {v}, decimals), std::string("{0, ") + want + ", 0}") << full_precision(v) << " with " << decimals << " decimals";
+    }
 }
 
 TEST(TangentAngleSpline, BezierFormMatchesDeBoorEvaluation) {

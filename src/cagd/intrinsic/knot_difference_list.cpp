@@ -1,6 +1,7 @@
 #include "cagd/intrinsic/knot_difference_list.hpp"
 
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -184,10 +185,19 @@ private:
     std::size_t pos_ = 0;
 };
 
+// v with `decimals` decimals, exactly rounded: printf's "%.*f", which std::to_chars(fixed, precision)
+// is specified to print (and does several times faster: 10^5 lengths took 25 ms through snprintf).
+// The buffer holds any finite double's 309 integer digits and 17 decimals.
 std::string fixed(double v, int decimals) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-    return buf;
+    char buf[400];
+#if defined(__cpp_lib_to_chars)
+    const std::to_chars_result r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, decimals);
+    return std::string(buf, r.ptr);
+#else
+    // The WebAssembly build's standard library (Emscripten's libc++ 14) has no floating-point to_chars.
+    const int length = std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+    return std::string(buf, static_cast<std::size_t>(length));
+#endif
 }
 
 }  // namespace
@@ -272,17 +282,27 @@ KnotDifferenceList parse_knot_difference_list(const std::string& text, int degre
 
 namespace {
 
+// "{0, S0, {S1, 0, S2}, S3, 0}": the entries, separated by ", ", written straight into one string.
 std::string format_list(const KnotLayout& L, const std::vector<std::string>& seg_text) {
-    std::vector<std::string> out;
-    auto zeros = [&](int count) {
-        for (int z = 0; z < count; ++z) out.push_back("0");
+    std::string r = "{";
+    std::size_t length = 2;
+    for (const std::string& t : seg_text) length += t.size() + 4;
+    r.reserve(length + 8 * static_cast<std::size_t>(L.degree()));
+    bool first = true;
+    const auto entry = [&](const std::string& text) {
+        if (!first) r += ", ";
+        first = false;
+        r += text;
+    };
+    const auto zeros = [&](int count) {
+        for (int z = 0; z < count; ++z) entry("0");
     };
     zeros(L.degree() - 1);
     for (int s = 0; s < L.spans(); ++s) {
         const int a = L.first_segment(s), b = L.end_segment(s);
         if (s > 0) zeros(L.multiplicity(a) - 1);
         if (b - a == 1) {
-            out.push_back(seg_text[static_cast<std::size_t>(a)]);
+            entry(seg_text[static_cast<std::size_t>(a)]);
             continue;
         }
         std::string sub = "{";
@@ -293,11 +313,9 @@ std::string format_list(const KnotLayout& L, const std::vector<std::string>& seg
             sub += seg_text[static_cast<std::size_t>(j)];
             if (j + 1 < b) sub += ", ";
         }
-        out.push_back(sub + "}");
+        entry(sub + "}");
     }
     zeros(L.degree() - 1);
-    std::string r = "{";
-    for (std::size_t i = 0; i < out.size(); ++i) r += (i ? ", " : "") + out[i];
     return r + "}";
 }
 
@@ -308,10 +326,11 @@ std::string format_knot_difference_list(const KnotLayout& layout, const std::vec
         fail_input("intrinsic::format_knot_difference_list", "needs " + std::to_string(layout.segments()) + " segment lengths, got " + std::to_string(segment_lengths.size()));
     if (decimals < 0 || decimals > 17) fail_input("intrinsic::format_knot_difference_list", "decimals must be in 0..17, got " + std::to_string(decimals));
     std::vector<std::string> t;
+    t.reserve(segment_lengths.size());
     for (double v : segment_lengths) {
         if (!std::isfinite(v) || v <= 0) fail_input("intrinsic::format_knot_difference_list", "segment length " + full_precision(v) + " is not finite and > 0");
         t.push_back(fixed(v, decimals));
-        if (std::strtod(t.back().c_str(), nullptr) == 0.0)
+        if (t.back().find_first_of("123456789") == std::string::npos)  // reads as 0
             fail_input("intrinsic::format_knot_difference_list",
                        "segment length " + full_precision(v) + " prints as 0 with " + std::to_string(decimals) + " decimals (it would read as a repeated knot)");
     }

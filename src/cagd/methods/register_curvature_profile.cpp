@@ -17,8 +17,9 @@ namespace cagd::methods::detail {
 namespace {
 
 // The registry's result of a solved design: the Newton history, the system's size and rank, the
-// knot-difference list, and the curve with a node at the start of every span.
-InterpolationResult solved_result(const intrinsic::CurvatureProfileProblem& problem, const intrinsic::CurvatureProfileSolution& sol) {
+// knot-difference list, and the curve with a node at the start of every span (moved out of
+// sol.curve, which is left empty; the other members stay).
+InterpolationResult solved_result(const intrinsic::CurvatureProfileProblem& problem, intrinsic::CurvatureProfileSolution& sol) {
     using namespace intrinsic;
     const KnotLayout& layout = problem.layout;
     InterpolationResult r;
@@ -45,7 +46,8 @@ InterpolationResult solved_result(const intrinsic::CurvatureProfileProblem& prob
     const std::vector<double>& w = sol.curve->breakpoints();
     std::vector<double> nodes;
     for (int j = 0; j <= layout.spans(); ++j) nodes.push_back(w[static_cast<std::size_t>(layout.first_segment(j))]);
-    r.interpolant = Interpolant{std::make_shared<IntrinsicCurve>(*sol.curve), nodes, std::vector<double>(static_cast<std::size_t>(layout.spans()), 1.0)};
+    r.interpolant = Interpolant{std::make_shared<IntrinsicCurve>(std::move(*sol.curve)), std::move(nodes), std::vector<double>(static_cast<std::size_t>(layout.spans()), 1.0)};
+    sol.curve.reset();
     return r;
 }
 
@@ -98,7 +100,7 @@ InterpolationResult build_curvature_profile(const PointList& points, bool closed
 // Spiro (intrinsic/spiro.hpp): Levien's chordwise Newton polished by the arc-length one; from
 // `start` (non-empty), the arc-length Newton alone, continued as the curvature profile's is.
 InterpolationResult spiro_from(const PointList& points, bool closed, const ParameterValues&, const Eigen::VectorXd& start) {
-    const intrinsic::SpiroSolution spiro =
+    intrinsic::SpiroSolution spiro =
         start.size() > 0 ? intrinsic::solve_spiro_from(points, closed, start, kContinuationContraction) : intrinsic::solve_spiro(points, closed);
     InterpolationResult r = solved_result(spiro.problem, spiro.solution);
     r.report.insert(r.report.begin(), {"chordwise_newton_iterations", std::to_string(spiro.chordwise.iterations)});
