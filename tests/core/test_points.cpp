@@ -190,3 +190,30 @@ TEST(Points, RequireValidPointsWithExtentGivesTheLargestCoordinateAndShortestCho
     const std::string few = cagd::test::invalid_input_message([&] { (void)require_valid_points_with_extent(bad.topRows(1), 2, false, "test"); });
     EXPECT_NE(few.find("needs at least 2 points, got 1"), std::string::npos) << few;
 }
+
+// validate_points: require_valid_points_with_extent's checks and messages, its extent, and the
+// proof's coverage: a construction needing no more points than it checked for, closed as it was.
+TEST(Points, ValidPointsKeepWhatWasCheckedAndCoverNoMore) {
+    PointList p(4, 2);
+    p << 0, 0, 1, 0, 1, 1, 0, 1;
+    const ValidPoints open = validate_points(p, 3, false, "test");
+    EXPECT_EQ(&open.points(), &p);
+    EXPECT_EQ(open.min_count(), 3);
+    EXPECT_FALSE(open.closed());
+    EXPECT_EQ(open.extent().largest_abs_coordinate, 1.0);
+    EXPECT_EQ(open.extent().shortest_squared_chord, 1.0);
+    EXPECT_TRUE(open.cover(2, false));
+    EXPECT_TRUE(open.cover(3, false));
+    EXPECT_FALSE(open.cover(4, false)) << "checked for 3 points, not 4";
+    EXPECT_FALSE(open.cover(3, true)) << "the closing chord was not checked";
+    EXPECT_TRUE(validate_points(p, 3, true, "test").cover(3, true));
+    PointList bad = p;
+    bad(2, 0) = std::numeric_limits<double>::infinity();
+    const std::string m = cagd::test::invalid_input_message([&] { (void)validate_points(bad, 2, false, "test"); });
+    EXPECT_NE(m.find("point 2 coordinate 0 is inf"), std::string::npos) << m;
+    bad = p;
+    bad.row(3) = bad.row(0);
+    EXPECT_NO_THROW((void)validate_points(bad, 2, false, "test"));
+    const std::string closing = cagd::test::invalid_input_message([&] { (void)validate_points(bad, 2, true, "test"); });
+    EXPECT_NE(closing.find("points 3 and 0 coincide"), std::string::npos) << closing;
+}

@@ -90,6 +90,12 @@ TEST(PseudoSpline, CurveWithoutSpanRecordsIsThePseudoSplineBitForBit) {
                 EXPECT_EQ(lean.area_from_tables, full.area_from_tables()) << what;
                 EXPECT_EQ(lean.pseudo_energy_from_tables, full.pseudo_energy_from_tables()) << what;
                 EXPECT_GT(full.length_from_tables(), 0.0) << what;
+                // On points validated already (ValidPoints), the same again.
+                const PseudoSplineCurve validated = pseudo_spline_curve(validate_points(*p, 3, closed, "test"), oracle(), mode);
+                EXPECT_TRUE(validated.curve.nodes() == lean.curve.nodes() && validated.curve.start_derivatives() == lean.curve.start_derivatives() &&
+                            validated.curve.end_derivatives() == lean.curve.end_derivatives())
+                    << what << ", validated points";
+                EXPECT_EQ(validated.pseudo_energy_from_tables, lean.pseudo_energy_from_tables) << what << ", validated points";
             }
 }
 

@@ -280,3 +280,25 @@ TEST(Locality, ExtraPointsAreEq12SumsOfTheExtendedPoints) {
                         }
                     }
 }
+
+// On points validated already (ValidPoints) the construction is the PointList one bit for bit;
+// validated open, a closed construction checks them itself (the closing chord).
+TEST(Locality, ValidatedPointsGiveTheSameCurveAndAreCheckedWhereTheProofFallsShort) {
+    for (const SplineForm form : kForms)
+        for (const bool closed : {false, true}) {
+            const PointList p = random_points(200, 9, 3);
+            Options o;
+            o.form = form;
+            o.closed = closed;
+            o.m = {{2, 2}};
+            const LocalitySpline a = interpolate(validate_points(p, 3, closed, "test"), o), b = interpolate(p, o);
+            EXPECT_EQ(a.curve.knots(), b.curve.knots());
+            EXPECT_TRUE(a.curve.control_points() == b.curve.control_points()) << (closed ? "closed" : "open");
+        }
+    PointList q = random_points(6, 4);
+    q.row(5) = q.row(0);
+    Options o;
+    o.closed = true;
+    const ValidPoints open = validate_points(q, 3, false, "test");
+    EXPECT_THROW((void)interpolate(open, o), InvalidInput) << "last = first: no closing chord";
+}

@@ -16,6 +16,7 @@
 #include "cagd/numeric/tridiagonal.hpp"
 #include "cagd/spline/hermite_spline.hpp"
 
+#include "../support/messages.hpp"
 #include "../support/point_lists.hpp"
 
 using namespace cagd;
@@ -356,4 +357,34 @@ TEST(CubicSplines, SlopeBlocksGiveTheSlopeFormBitForBitAndCheckEveryBlock) {
             bad_scales[7] = std::nan("");
             EXPECT_THROW(PiecewiseHermiteCurve::from_points_and_slope_blocks(p, closed, copy, bad_scales), InvalidInput) << what;
         }
+}
+
+// The constructions on points validated already (ValidPoints) are the PointList ones bit for bit;
+// where the proof does not cover them (fewer points checked for, the other closedness) they check
+// the points as a PointList, with its messages.
+TEST(HermiteCurves, ValidatedPointsGiveTheSameCurvesAndAreCheckedWhereTheProofFallsShort) {
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    for (int dim = 2; dim <= 3; ++dim)
+        for (bool closed : {false, true}) {
+            PointList p(300, dim);
+            for (Eigen::Index i = 0; i < p.rows(); ++i)
+                for (int c = 0; c < dim; ++c) p(i, c) = static_cast<double>(i) * (c == 0) + u(rng);
+            const ValidPoints valid = validate_points(p, 3, closed, "test");
+            const std::string what = std::to_string(dim) + "-D, " + (closed ? "closed" : "open");
+            for (auto rule : {spline::TangentRule::chord_of_neighbours, spline::TangentRule::circle}) {
+                const PiecewiseHermiteCurve a = spline::hermite_spline(valid, rule), b = spline::hermite_spline(p, rule, closed);
+                EXPECT_TRUE(a.nodes() == b.nodes() && a.start_derivatives() == b.start_derivatives() && a.end_derivatives() == b.end_derivatives()) << what;
+            }
+            for (auto spacing : {spline::ParameterSpacing::uniform, spline::ParameterSpacing::chord_length}) {
+                const PiecewiseHermiteCurve a = spline::cubic_spline_interpolant(valid, spacing), b = spline::cubic_spline_interpolant(p, spacing, closed);
+                EXPECT_TRUE(a.nodes() == b.nodes() && a.node_slopes() == b.node_slopes() && a.span_scales() == b.span_scales()) << what;
+            }
+        }
+    PointList two(2, 2);
+    two << 0, 0, 1, 0;
+    const ValidPoints checked_for_two = validate_points(two, 2, false, "test");
+    const std::string m = cagd::test::invalid_input_message([&] { (void)spline::hermite_spline(checked_for_two, spline::TangentRule::circle); });
+    EXPECT_EQ(m, cagd::test::invalid_input_message([&] { (void)spline::hermite_spline(two, spline::TangentRule::circle, false); })) << "Hermite B needs 3 points";
+    EXPECT_NE(m.find("at least 3"), std::string::npos) << m;
 }

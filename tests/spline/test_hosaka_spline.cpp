@@ -235,3 +235,34 @@ TEST(HosakaSpline, JetIntoIsTheJetBitForBit) {
         }
     }
 }
+
+// On points validated already (ValidPoints) the C2 spline (m = 1) and the higher ones are the
+// PointList constructions bit for bit; validated open, a closed construction checks them itself.
+TEST(HosakaSpline, ValidatedPointsGiveTheSameCurves) {
+    std::mt19937 rng(21);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    PointList p(60, 2);
+    for (Eigen::Index i = 0; i < p.rows(); ++i) p(i, 0) = static_cast<double>(i) + 0.3 * u(rng), p(i, 1) = u(rng);
+    for (const bool closed : {false, true}) {
+        spline::HosakaSplineOptions o;
+        o.closed = closed;
+        const ValidPoints valid = validate_points(p, 3, closed, "test");
+        const spline::HosakaCurve c2 = spline::hosaka_c2_spline(valid, o).curve, c2_list = spline::hosaka_c2_spline(p, o).curve;
+        const spline::HosakaCurve c3 = spline::hosaka_spline(valid, 3, o), c3_list = spline::hosaka_spline(p, 3, o);
+        JetMatrix a, b;
+        for (double t = 0.0; t <= c2.t_max(); t += 0.37) {
+            c2.jet_into(t, 2, a);
+            c2_list.jet_into(t, 2, b);
+            EXPECT_TRUE(a == b) << (closed ? "closed" : "open") << " m = 1, u = " << t;
+            c3.jet_into(t, 2, a);
+            c3_list.jet_into(t, 2, b);
+            EXPECT_TRUE(a == b) << (closed ? "closed" : "open") << " m = 3, u = " << t;
+        }
+    }
+    PointList q = p.topRows(6);
+    q.row(5) = q.row(0);
+    spline::HosakaSplineOptions closed_options;
+    closed_options.closed = true;
+    EXPECT_THROW((void)spline::hosaka_c2_spline(validate_points(q, 3, false, "test"), closed_options), InvalidInput) << "last = first: no closing chord";
+    EXPECT_THROW((void)spline::hosaka_spline(validate_points(q, 3, false, "test"), 3, closed_options), InvalidInput) << "last = first: no closing chord";
+}

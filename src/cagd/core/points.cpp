@@ -164,6 +164,10 @@ PointExtent require_valid_points_with_extent(const PointList& points, Eigen::Ind
     return extent;
 }
 
+ValidPoints validate_points(const PointList& points, Eigen::Index min_count, bool closed, const std::string& who) {
+    return {points, min_count, closed, require_valid_points_with_extent(points, min_count, closed, who)};
+}
+
 std::vector<double> chord_lengths(const PointList& points, bool closed) {
     const Eigen::Index n = points.rows(), spans = std::max<Eigen::Index>(closed ? n : n - 1, 0);
     std::vector<double> h(static_cast<std::size_t>(spans));

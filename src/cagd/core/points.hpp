@@ -28,6 +28,33 @@ struct PointExtent {
 /// about 4 ms, memory-bound, on a 2-core VM).
 PointExtent require_valid_points_with_extent(const PointList& points, Eigen::Index min_count, bool closed, const std::string& who);
 
+/// Points that have passed require_valid_points(points, min_count, true, closed, …): the proof a
+/// construction takes so that the points are validated once (the registry validates them, and
+/// the construction it calls does not again: at 10^6 points a second pass cost 7–8 % of a Hermite,
+/// cubic or S/B2-spline construction). Made only by validate_points. It refers to the points: they
+/// must outlive it, unchanged. A construction needing more points than min_count(), or the other
+/// closedness, checks them itself as it would a PointList.
+class ValidPoints {
+public:
+    const PointList& points() const { return points_; }    ///< the points
+    Eigen::Index min_count() const { return min_count_; }  ///< the least number of points checked for
+    bool closed() const { return closed_; }                ///< whether the closing chord was checked (a closed curve)
+    const PointExtent& extent() const { return extent_; }  ///< what require_valid_points_with_extent found
+    /// Whether these checks are those a construction of a curve, closed or not as `closed`, through
+    /// at least `count` points needs.
+    bool cover(Eigen::Index count, bool closed) const { return count <= min_count_ && closed == closed_; }
+
+private:
+    ValidPoints(const PointList& points, Eigen::Index min_count, bool closed, PointExtent extent) : points_(points), min_count_(min_count), closed_(closed), extent_(extent) {}
+    friend ValidPoints validate_points(const PointList& points, Eigen::Index min_count, bool closed, const std::string& who);
+    const PointList& points_;
+    Eigen::Index min_count_;
+    bool closed_;
+    PointExtent extent_;
+};
+/// require_valid_points_with_extent(points, min_count, closed, who), its proof kept.
+ValidPoints validate_points(const PointList& points, Eigen::Index min_count, bool closed, const std::string& who);
+
 /// The lengths |P_{k+1} − P_k| of the chords, k = 0 … n − 2, and for a closed list also
 /// |P_0 − P_{n−1}| last. Each is the square root of the squared coordinate differences summed in
 /// coordinate order, as Eigen's `(row(k + 1) − row(k)).norm()` sums them: the same values bit for

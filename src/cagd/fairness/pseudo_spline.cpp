@@ -101,9 +101,10 @@ struct ConstructionOutputs {
     double length = 0.0, pseudo_energy = 0.0, area = 0.0;
 };
 
+// `validated`: the points have passed require_valid_points(points, closed ? 3 : 2, true, closed, …).
 spline::PiecewiseHermiteCurve construct(const char* who, const PointList& points, const SegmentOracle& oracle, TangentOptimization mode, bool closed, TangentTie tie,
-                                        ConstructionOutputs& result) {
-    require_valid_points(points, closed ? 3 : 2, true, closed, who);
+                                        ConstructionOutputs& result, bool validated = false) {
+    if (!validated) require_valid_points(points, closed ? 3 : 2, true, closed, who);
     if (points.cols() != 2) fail_input(who, "needs planar points (2 columns), got " + std::to_string(points.cols()));
     if (!(tie.position >= 0.0 && tie.position <= 1.0)) fail_input(who, "tie.position must lie in [0, 1], got " + full_precision(tie.position));
     const Eigen::Index np = points.rows();
@@ -228,12 +229,23 @@ PseudoSpline pseudo_spline(const PointList& points, const SegmentOracle& oracle,
     return ps;
 }
 
-PseudoSplineCurve pseudo_spline_curve(const PointList& points, const SegmentOracle& oracle, TangentOptimization mode, bool closed, TangentTie tie) {
+namespace {
+PseudoSplineCurve pseudo_spline_curve_of(const PointList& points, const SegmentOracle& oracle, TangentOptimization mode, bool closed, TangentTie tie, bool validated) {
     std::vector<double> alpha, chord_angle, chord_length;
     long calls = 0;
     ConstructionOutputs out{alpha, chord_angle, chord_length, nullptr, calls};
-    spline::PiecewiseHermiteCurve curve = construct("cagd::fairness::pseudo_spline_curve", points, oracle, mode, closed, tie, out);
+    spline::PiecewiseHermiteCurve curve = construct("cagd::fairness::pseudo_spline_curve", points, oracle, mode, closed, tie, out, validated);
     return PseudoSplineCurve{std::move(curve), out.length, out.area, out.pseudo_energy};
+}
+}  // namespace
+
+PseudoSplineCurve pseudo_spline_curve(const PointList& points, const SegmentOracle& oracle, TangentOptimization mode, bool closed, TangentTie tie) {
+    return pseudo_spline_curve_of(points, oracle, mode, closed, tie, false);
+}
+
+PseudoSplineCurve pseudo_spline_curve(const ValidPoints& points, const SegmentOracle& oracle, TangentOptimization mode, TangentTie tie) {
+    const bool closed = points.closed();
+    return pseudo_spline_curve_of(points.points(), oracle, mode, closed, tie, points.cover(closed ? 3 : 2, closed));
 }
 
 namespace {

@@ -202,6 +202,9 @@ struct PseudoSplineCurve {
 };
 /// The pseudo-spline's curve and table sums, without the per-span records (the same curve bit for bit; what the registry builds).
 PseudoSplineCurve pseudo_spline_curve(const PointList& points, const SegmentOracle& oracle, TangentOptimization mode, bool closed, TangentTie tie = {});
+/// The same through points validated already (closed as they were validated): the same curve, the
+/// points not checked again where their checks cover this construction's.
+PseudoSplineCurve pseudo_spline_curve(const ValidPoints& points, const SegmentOracle& oracle, TangentOptimization mode, TangentTie tie = {});
 
 /// "Equivalent points" of Tables 5 and 6 (section 5.1): the smallest N ≥ 3 for which the regular
 /// N-gon inscribed in the unit circle is closer to the circle than the spline, i.e.

@@ -216,8 +216,10 @@ Eigen::VectorXd bessel_tangent(const PointList& p) {
     return t;
 }
 
-LocalitySpline interpolate(const PointList& points, const Options& o) {
-    require_valid_points(points, o.closed ? 3 : 2, true, o.closed, kLocalityWho);
+namespace {
+
+// interpolate() of points that passed require_valid_points(points, o.closed ? 3 : 2, …).
+LocalitySpline interpolate_valid_points(const PointList& points, const Options& o) {
     const long n = points.rows();
     const long segments = o.closed ? n : n - 1;
     if (o.m.size() != 1 && static_cast<long>(o.m.size()) != segments)
@@ -306,6 +308,18 @@ LocalitySpline interpolate(const PointList& points, const Options& o) {
     }
     const int degree = o.form == SplineForm::b2_spline ? 3 : 4;
     return {BSplineCurve(degree, std::move(knots), std::move(control)), std::move(extra), -1};
+}
+
+}  // namespace
+
+LocalitySpline interpolate(const PointList& points, const Options& o) {
+    require_valid_points(points, o.closed ? 3 : 2, true, o.closed, kLocalityWho);
+    return interpolate_valid_points(points, o);
+}
+
+LocalitySpline interpolate(const ValidPoints& points, const Options& o) {
+    if (!points.cover(o.closed ? 3 : 2, o.closed)) return interpolate(points.points(), o);  // checked as a PointList
+    return interpolate_valid_points(points.points(), o);
 }
 
 Eigen::RowVectorXd extended_point(const PointList& points, const Options& o, long k) {

@@ -118,6 +118,9 @@ std::string format_m_vector(const MVector& m);
 
 /// The interpolating curve (the whole construction: virtual points, eq (12), eq (3)/(7)).
 LocalitySpline interpolate(const PointList& points, const Options& options);
+/// The same through points validated already: the same curve, the points not checked again where
+/// their checks cover this construction's (options.closed as they were validated).
+LocalitySpline interpolate(const ValidPoints& points, const Options& options);
 
 /// p_k for any integer k: the data point for 0 ≤ k ≤ n−1, otherwise the virtual point of
 /// section 3.3 given by the options' end conditions (index modulo n for closed curves).

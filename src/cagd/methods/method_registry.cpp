@@ -79,7 +79,8 @@ InterpolationResult checked_build(const Method& method, const PointList& points,
     if (closed && !claims.supports_closed) fail_input(who, "draws open curves only (--closed is not supported)");
     if (claims.max_points > 0 && points.rows() > claims.max_points)
         fail_input(who, std::to_string(points.rows()) + " points; it takes at most " + std::to_string(claims.max_points));
-    const PointExtent extent = require_valid_points_with_extent(points, closed ? claims.min_points_closed : claims.min_points, closed, who);
+    const ValidPoints valid = validate_points(points, closed ? claims.min_points_closed : claims.min_points, closed, who);
+    const PointExtent& extent = valid.extent();
     if (points.cols() < 2 || points.cols() > claims.max_dimension)
         fail_input(who, "needs points of dimension 2" + std::string(claims.max_dimension == 3 ? " or 3" : "") + ", got " + std::to_string(points.cols()));
     // Valid points whose arithmetic leaves double precision: differences of coordinates near 1e308
@@ -102,7 +103,7 @@ InterpolationResult checked_build(const Method& method, const PointList& points,
         return r;
     }
     try {
-        return method.rebuild && start.size() > 0 ? method.rebuild(points, closed, values, start) : method.build(points, closed, values);
+        return method.rebuild && start.size() > 0 ? method.rebuild(valid, values, start) : method.build(valid, values);
     } catch (const std::domain_error& e) {  // Boost.Math's own precondition checks
         fail_input(who, std::string("Boost.Math refused the points: ") + e.what());
     }

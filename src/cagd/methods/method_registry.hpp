@@ -111,8 +111,10 @@ struct Method {
     std::string summary{};               ///< one line for help texts and docs/methods.md
     std::vector<Parameter> parameters{};  ///< its typed parameters
     std::function<MethodClaims(const ParameterValues&)> claims{};  ///< what it claims, given the parameter values
-    /// Builds the curve through points already checked against the claims.
-    std::function<InterpolationResult(const PointList&, bool closed, const ParameterValues&)> build{};
+    /// Builds the curve through points already checked against the claims (ValidPoints: the points,
+    /// whether the curve is closed, and the proof that they passed require_valid_points with the
+    /// claims' least number of points, so that the constructions it calls need not check them again).
+    std::function<InterpolationResult(const ValidPoints& points, const ParameterValues&)> build{};
     std::vector<Preset> presets{};  ///< the comparison's configurations; none: the defaults, by name
     /// Builds by an iterative nonlinear solve, several times the cost of the direct methods on long
     /// inputs: a parallel comparison starts these first so that they do not finish last alone.
@@ -125,7 +127,7 @@ struct Method {
     /// of a build on nearby points of the same number (continuation: the locality footprint's moved
     /// point, a drag). The result meets the same tolerance as a build's, on the solution branch of
     /// the start. Empty for the direct methods (interpolate_from then builds).
-    std::function<InterpolationResult(const PointList&, bool closed, const ParameterValues&, const Eigen::VectorXd& start)> rebuild{};
+    std::function<InterpolationResult(const ValidPoints& points, const ParameterValues&, const Eigen::VectorXd& start)> rebuild{};
 };
 
 /// Every method, in the order of the tables.

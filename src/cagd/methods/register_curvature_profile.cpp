@@ -77,8 +77,8 @@ intrinsic::CurvatureProfileProblem curvature_profile_problem(const PointList& po
 // (the same points from the unmoved solution, one point moved by a chord: ratios 0.7 … 2.5).
 constexpr double kContinuationContraction = 0.5;
 
-InterpolationResult curvature_profile_from(const PointList& points, bool closed, const ParameterValues& v, const Eigen::VectorXd& start) {
-    const intrinsic::CurvatureProfileProblem problem = curvature_profile_problem(points, closed, v);
+InterpolationResult curvature_profile_from(const ValidPoints& valid, const ParameterValues& v, const Eigen::VectorXd& start) {
+    const intrinsic::CurvatureProfileProblem problem = curvature_profile_problem(valid.points(), valid.closed(), v);
     // A start of another size is not one of these unknowns (the layout and the conditions depend on
     // the number of points and the parameters only): the design's own start then. So too when
     // Newton from the given start does not contract (the points moved too far for continuation).
@@ -95,11 +95,13 @@ InterpolationResult curvature_profile_from(const PointList& points, bool closed,
     return r;
 }
 
-InterpolationResult build_curvature_profile(const PointList& points, bool closed, const ParameterValues& v) { return curvature_profile_from(points, closed, v, {}); }
+InterpolationResult build_curvature_profile(const ValidPoints& valid, const ParameterValues& v) { return curvature_profile_from(valid, v, {}); }
 
 // Spiro (intrinsic/spiro.hpp): Levien's chordwise Newton polished by the arc-length one; from
 // `start` (non-empty), the arc-length Newton alone, continued as the curvature profile's is.
-InterpolationResult spiro_from(const PointList& points, bool closed, const ParameterValues&, const Eigen::VectorXd& start) {
+InterpolationResult spiro_from(const ValidPoints& valid, const ParameterValues&, const Eigen::VectorXd& start) {
+    const PointList& points = valid.points();
+    const bool closed = valid.closed();
     intrinsic::SpiroSolution spiro =
         start.size() > 0 ? intrinsic::solve_spiro_from(points, closed, start, kContinuationContraction) : intrinsic::solve_spiro(points, closed);
     InterpolationResult r = solved_result(spiro.problem, spiro.solution);
@@ -108,7 +110,7 @@ InterpolationResult spiro_from(const PointList& points, bool closed, const Param
     return r;
 }
 
-InterpolationResult build_spiro(const PointList& points, bool closed, const ParameterValues& v) { return spiro_from(points, closed, v, {}); }
+InterpolationResult build_spiro(const ValidPoints& valid, const ParameterValues& v) { return spiro_from(valid, v, {}); }
 
 }  // namespace
 

@@ -63,7 +63,8 @@ std::vector<Method> eigen_methods() {
                                     .max_dimension = 3};
             },
         .build =
-            [](const PointList& p, bool, const ParameterValues& v) {
+            [](const ValidPoints& valid, const ParameterValues& v) {
+                const PointList& p = valid.points();
                 const int degree = v.integer("degree");
                 return p.cols() == 2 ? eigen_spline_interpolant<2>(p, degree) : eigen_spline_interpolant<3>(p, degree);
             },

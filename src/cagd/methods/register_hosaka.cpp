@@ -12,7 +12,9 @@ namespace {
 // 30 keeps a run within seconds.
 constexpr int kMaxHosakaOrder = 30;
 
-InterpolationResult build_hosaka(const PointList& points, bool closed, const ParameterValues& v) {
+InterpolationResult build_hosaka(const ValidPoints& valid, const ParameterValues& v) {
+    const PointList& points = valid.points();
+    const bool closed = valid.closed();
     spline::HosakaSplineOptions o;
     o.scale = v.text("scale") == "unit" ? spline::HosakaScale::unit : spline::HosakaScale::chord;
     o.closed = closed;
@@ -24,7 +26,7 @@ InterpolationResult build_hosaka(const PointList& points, bool closed, const Par
         o.end_tangent = lengths.back() * v.vector("end-tangent");
     }
     const int m = v.integer("m");
-    auto c = m == 1 ? std::make_shared<spline::HosakaCurve>(spline::hosaka_c2_spline(points, o).curve) : std::make_shared<spline::HosakaCurve>(spline::hosaka_spline(points, m, o));
+    auto c = m == 1 ? std::make_shared<spline::HosakaCurve>(spline::hosaka_c2_spline(valid, o).curve) : std::make_shared<spline::HosakaCurve>(spline::hosaka_spline(valid, m, o));
     return result_of(unit_span_interpolant(std::move(c), node_count(points, closed), lengths));
 }
 

@@ -85,7 +85,7 @@ std::vector<Method> opencascade_methods() {
                          .min_points = 2,
                          .min_points_closed = 3,
                          .max_dimension = 3}),
-        .build = [](const PointList& p, bool closed, const ParameterValues&) { return opencascade_interpolant(p, closed); },
+        .build = [](const ValidPoints& p, const ParameterValues&) { return opencascade_interpolant(p.points(), p.closed()); },
     }};
 }
 #else

@@ -45,14 +45,16 @@ InterpolationResult build_space_pseudo_spline(const PointList& points, bool clos
     return r;
 }
 
-InterpolationResult build_pseudo_spline(const PointList& points, bool closed, const ParameterValues& v) {
+InterpolationResult build_pseudo_spline(const ValidPoints& valid, const ParameterValues& v) {
+    const PointList& points = valid.points();
+    const bool closed = valid.closed();
     const auto mode = fairness::parse_tangent_optimization(v.text("optimize"));
     if (points.cols() == 3)
         return v.has("table") ? build_space_pseudo_spline(points, closed, v, fairness::PseudoSplineTables::from(fairness::PseudoEnergyTable::load(v.text("table"))))
                               : build_space_pseudo_spline(points, closed, v, default_pseudo_spline_tables());
     if (v.has("space-table")) fail_input("cagd::methods(pseudo-spline)", "--space-table is for 3-D points; these have 2 coordinates");
     if (v.text("space-spans") != "table") fail_input("cagd::methods(pseudo-spline)", "--space-spans is for 3-D points; these have 2 coordinates");
-    const auto make = [&](const fairness::PseudoSplineTables& t) { return fairness::pseudo_spline_curve(points, t.oracle(), mode, closed); };
+    const auto make = [&](const fairness::PseudoSplineTables& t) { return fairness::pseudo_spline_curve(valid, t.oracle(), mode); };
     fairness::PseudoSplineCurve ps =
         v.has("table") ? make(fairness::PseudoSplineTables::from(fairness::PseudoEnergyTable::load(v.text("table")))) : make(default_pseudo_spline_tables());
     const std::vector<std::pair<std::string, double>> quantities = {
@@ -64,16 +66,18 @@ InterpolationResult build_pseudo_spline(const PointList& points, bool closed, co
     return r;
 }
 
-InterpolationResult build_cubic(const PointList& points, bool closed, spline::ParameterSpacing spacing) {
-    auto c = std::make_shared<spline::PiecewiseHermiteCurve>(spline::cubic_spline_interpolant(points, spacing, closed));
+InterpolationResult build_cubic(const ValidPoints& valid, spline::ParameterSpacing spacing) {
+    const PointList& points = valid.points();
+    const bool closed = valid.closed();
+    auto c = std::make_shared<spline::PiecewiseHermiteCurve>(spline::cubic_spline_interpolant(valid, spacing));
     // dτ/du on span k: the chord the spline itself scales by (its h_k, chord_lengths' values), or 1.
     std::vector<double> dtau_du = spacing == spline::ParameterSpacing::chord_length ? c->span_scales() : unit_lengths(points, closed);
     return result_of(unit_span_interpolant(std::move(c), node_count(points, closed), std::move(dtau_du)));
 }
 
-InterpolationResult build_hermite(const PointList& points, bool closed, spline::TangentRule rule) {
-    auto c = std::make_shared<spline::PiecewiseHermiteCurve>(spline::hermite_spline(points, rule, closed));
-    return result_of(unit_span_interpolant(std::move(c), node_count(points, closed), unit_lengths(points, closed)));
+InterpolationResult build_hermite(const ValidPoints& valid, spline::TangentRule rule) {
+    auto c = std::make_shared<spline::PiecewiseHermiteCurve>(spline::hermite_spline(valid, rule));
+    return result_of(unit_span_interpolant(std::move(c), node_count(valid.points(), valid.closed()), unit_lengths(valid.points(), valid.closed())));
 }
 
 }  // namespace
@@ -120,7 +124,7 @@ std::vector<Method> pseudo_energy_methods() {
         .source = "sec 4.2 cubic spline A; = sb2_locality eq (10)",
         .summary = "natural C2 cubic spline, uniform parameter (the conventional interpolating cubic B-spline)",
         .claims = fixed({.parametric_continuity = 2, .geometric_continuity = 2, .parameter = "uniform", .invariance = Invariance::affine, .max_dimension = 3}),
-        .build = [](const PointList& p, bool closed, const ParameterValues&) { return build_cubic(p, closed, spline::ParameterSpacing::uniform); },
+        .build = [](const ValidPoints& p, const ParameterValues&) { return build_cubic(p, spline::ParameterSpacing::uniform); },
     });
     r.push_back({
         .name = "cubic-b",
@@ -128,7 +132,7 @@ std::vector<Method> pseudo_energy_methods() {
         .source = "sec 4.2 cubic spline B",
         .summary = "natural C2 cubic spline, chord-length parameter",
         .claims = fixed({.parametric_continuity = 2, .geometric_continuity = 2, .parameter = "chord length", .invariance = Invariance::similarity, .max_dimension = 3}),
-        .build = [](const PointList& p, bool closed, const ParameterValues&) { return build_cubic(p, closed, spline::ParameterSpacing::chord_length); },
+        .build = [](const ValidPoints& p, const ParameterValues&) { return build_cubic(p, spline::ParameterSpacing::chord_length); },
     });
     r.push_back({
         .name = "hermite-a",
@@ -136,7 +140,7 @@ std::vector<Method> pseudo_energy_methods() {
         .source = "sec 4.2 Hermite curve A",
         .summary = "cubic Hermite curve, tangents along the chord of the neighbours",
         .claims = fixed({.geometric_continuity = 1, .parameter = "u (unit spans)", .invariance = Invariance::similarity, .max_dimension = 3}),
-        .build = [](const PointList& p, bool closed, const ParameterValues&) { return build_hermite(p, closed, spline::TangentRule::chord_of_neighbours); },
+        .build = [](const ValidPoints& p, const ParameterValues&) { return build_hermite(p, spline::TangentRule::chord_of_neighbours); },
     });
     r.push_back({
         .name = "hermite-b",
@@ -144,7 +148,7 @@ std::vector<Method> pseudo_energy_methods() {
         .source = "sec 4.2 Hermite curve B",
         .summary = "cubic Hermite curve, tangents of the circle through three neighbours",
         .claims = fixed({.geometric_continuity = 1, .parameter = "u (unit spans)", .invariance = Invariance::similarity, .min_points = 3, .max_dimension = 3}),
-        .build = [](const PointList& p, bool closed, const ParameterValues&) { return build_hermite(p, closed, spline::TangentRule::circle); },
+        .build = [](const ValidPoints& p, const ParameterValues&) { return build_hermite(p, spline::TangentRule::circle); },
     });
     return r;
 }

@@ -36,7 +36,9 @@ MethodClaims locality_claims(const ParameterValues& v) {
             .max_dimension = 3};
 }
 
-InterpolationResult build_locality(const PointList& points, bool closed, const ParameterValues& v, locality::SplineForm form) {
+InterpolationResult build_locality(const ValidPoints& valid, const ParameterValues& v, locality::SplineForm form) {
+    const PointList& points = valid.points();
+    const bool closed = valid.closed();
     const std::string who = std::string("cagd::methods(") + (form == locality::SplineForm::s_spline ? "s-spline" : "b2-spline") + ")";
     locality::Options o;
     o.form = form;
@@ -58,7 +60,7 @@ InterpolationResult build_locality(const PointList& points, bool closed, const P
         o.start.tangent = v.vector("start-tangent");
         o.end.tangent = v.vector("end-tangent");
     }
-    auto c = std::make_shared<BSplineCurve>(locality::interpolate(points, o).curve);
+    auto c = std::make_shared<BSplineCurve>(locality::interpolate(valid, o).curve);
     return result_of(unit_span_interpolant(std::move(c), node_count(points, closed), unit_lengths(points, closed)));
 }
 
@@ -73,7 +75,7 @@ std::vector<Method> sb2_locality_methods() {
         .summary = "S-spline with controllable locality m",
         .parameters = locality_parameters(),
         .claims = locality_claims,
-        .build = [](const PointList& p, bool closed, const ParameterValues& v) { return build_locality(p, closed, v, locality::SplineForm::s_spline); },
+        .build = [](const ValidPoints& p, const ParameterValues& v) { return build_locality(p, v, locality::SplineForm::s_spline); },
         .presets = {{"s-spline-m1", {{"m", "1"}}}, {"s-spline-m2", {{"m", "2"}}}, {"s-spline-m4", {{"m", "4"}}}},
     });
     r.push_back({
@@ -83,7 +85,7 @@ std::vector<Method> sb2_locality_methods() {
         .summary = "B2-spline with controllable locality m",
         .parameters = locality_parameters(),
         .claims = locality_claims,
-        .build = [](const PointList& p, bool closed, const ParameterValues& v) { return build_locality(p, closed, v, locality::SplineForm::b2_spline); },
+        .build = [](const ValidPoints& p, const ParameterValues& v) { return build_locality(p, v, locality::SplineForm::b2_spline); },
         .presets = {{"b2-spline-m1", {{"m", "1"}}}, {"b2-spline-m2", {{"m", "2"}}}, {"b2-spline-m4", {{"m", "4"}}}},
     });
     return r;

@@ -275,9 +275,11 @@ Eigen::MatrixXd span_nodes(const PointList& points, bool closed) {
 
 }  // namespace
 
-PiecewiseHermiteCurve cubic_spline_interpolant(const PointList& points, ParameterSpacing spacing, bool closed) {
-    const char* who = "cubic_spline_interpolant";
-    require_valid_points(points, closed ? 3 : 2, true, closed, who);
+namespace {
+constexpr const char* kCubicSplineWho = "cubic_spline_interpolant";
+
+// cubic_spline_interpolant of points that passed require_valid_points(points, closed ? 3 : 2, …).
+PiecewiseHermiteCurve cubic_spline_of_valid_points(const PointList& points, ParameterSpacing spacing, bool closed) {
     Eigen::MatrixXd nodes = span_nodes(points, closed);
     const int spans = static_cast<int>(nodes.rows()) - 1;
     const int dim = static_cast<int>(points.cols());
@@ -326,6 +328,19 @@ PiecewiseHermiteCurve cubic_spline_interpolant(const PointList& points, Paramete
     // The slope form: span k's d0 = h_k m_k, d1 = h_k m_{k+1} formed where evaluated (uniform: h_k = 1,
     // no scales kept), not stored as 2K rows.
     return PiecewiseHermiteCurve::from_node_slopes(std::move(nodes), std::move(m), std::move(chords));
+}
+
+}  // namespace
+
+PiecewiseHermiteCurve cubic_spline_interpolant(const PointList& points, ParameterSpacing spacing, bool closed) {
+    require_valid_points(points, closed ? 3 : 2, true, closed, kCubicSplineWho);
+    return cubic_spline_of_valid_points(points, spacing, closed);
+}
+
+PiecewiseHermiteCurve cubic_spline_interpolant(const ValidPoints& points, ParameterSpacing spacing) {
+    const bool closed = points.closed();
+    if (!points.cover(closed ? 3 : 2, closed)) return cubic_spline_interpolant(points.points(), spacing, closed);  // checked as a PointList
+    return cubic_spline_of_valid_points(points.points(), spacing, closed);
 }
 
 namespace {
@@ -464,9 +479,11 @@ Eigen::MatrixXd hermite_tangent_directions(const PointList& points, TangentRule 
     return t;
 }
 
-PiecewiseHermiteCurve hermite_spline(const PointList& points, TangentRule rule, bool closed) {
+namespace {
+
+// hermite_spline of points that passed require_valid_points(points, (closed || circle) ? 3 : 2, …).
+PiecewiseHermiteCurve hermite_spline_of_valid_points(const PointList& points, TangentRule rule, bool closed) {
     const char* who = directions_who(rule);
-    require_valid_points(points, (closed || rule == TangentRule::circle) ? 3 : 2, true, closed, who);
     const Eigen::Index n = points.rows(), dim = points.cols(), spans = closed ? n : n - 1;
     Eigen::MatrixXd nodes = span_nodes(points, closed), d0(spans, dim), d1(spans, dim);
     // t_i starts span i and ends span i − 1 (closed: t_0 also ends span n − 1); the chords, |nodes_{k+1}
@@ -483,6 +500,21 @@ PiecewiseHermiteCurve hermite_spline(const PointList& points, TangentRule rule, 
         tangent_directions(points, rule, closed, who, put);
     }
     return PiecewiseHermiteCurve(std::move(nodes), std::move(d0), std::move(d1));
+}
+
+Eigen::Index hermite_spline_min_points(TangentRule rule, bool closed) { return (closed || rule == TangentRule::circle) ? 3 : 2; }
+
+}  // namespace
+
+PiecewiseHermiteCurve hermite_spline(const PointList& points, TangentRule rule, bool closed) {
+    require_valid_points(points, hermite_spline_min_points(rule, closed), true, closed, directions_who(rule));
+    return hermite_spline_of_valid_points(points, rule, closed);
+}
+
+PiecewiseHermiteCurve hermite_spline(const ValidPoints& points, TangentRule rule) {
+    const bool closed = points.closed();
+    if (!points.cover(hermite_spline_min_points(rule, closed), closed)) return hermite_spline(points.points(), rule, closed);  // checked as a PointList
+    return hermite_spline_of_valid_points(points.points(), rule, closed);
 }
 
 PiecewiseHermiteCurve hermite_interpolant(const PointList& points, const Eigen::MatrixXd& directions, bool closed) {

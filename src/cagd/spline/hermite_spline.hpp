@@ -116,6 +116,9 @@ enum class TangentRule { chord_of_neighbours, circle };
 
 /// The natural C2 cubic spline through the points (closed: periodic) in the given parameter, in Hermite form on unit spans.
 PiecewiseHermiteCurve cubic_spline_interpolant(const PointList& points, ParameterSpacing spacing, bool closed);
+/// The same through points validated already (closed as they were validated): the same curve, the
+/// points not checked again where their checks cover this construction's.
+PiecewiseHermiteCurve cubic_spline_interpolant(const ValidPoints& points, ParameterSpacing spacing);
 /// One unit direction per point (rows as `points`).
 Eigen::MatrixXd hermite_tangent_directions(const PointList& points, TangentRule rule, bool closed);
 /// Hermite curve through `points` with the given unit directions, magnitudes the chord lengths.
@@ -123,5 +126,8 @@ PiecewiseHermiteCurve hermite_interpolant(const PointList& points, const Eigen::
 /// hermite_interpolant(points, hermite_tangent_directions(points, rule, closed), closed) in one pass,
 /// without the directions' n × dim temporary: Hermite curve A or B, the same values bit for bit.
 PiecewiseHermiteCurve hermite_spline(const PointList& points, TangentRule rule, bool closed);
+/// The same through points validated already (closed as they were validated): the same curve, the
+/// points not checked again where their checks cover this construction's.
+PiecewiseHermiteCurve hermite_spline(const ValidPoints& points, TangentRule rule);
 
 }  // namespace cagd::spline

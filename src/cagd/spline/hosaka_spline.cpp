@@ -107,9 +107,11 @@ void HosakaCurve::derivatives_into(double u, int order, JetMatrix& out) const {
     hosaka_jet_rows(basis_, start_, end_, m(), s, t, 1, order, out);
 }
 
-HosakaSpline hosaka_c2_spline(const PointList& points, const HosakaSplineOptions& o) {
+namespace {
+// hosaka_c2_spline; `validated`: the points have passed require_valid_points(points, o.closed ? 3 : 2, …).
+HosakaSpline hosaka_c2_spline_of(const PointList& points, const HosakaSplineOptions& o, bool validated) {
     const char* who = "cagd::spline::hosaka_c2_spline";
-    require_valid_points(points, o.closed ? 3 : 2, true, o.closed, who);
+    if (!validated) require_valid_points(points, o.closed ? 3 : 2, true, o.closed, who);
     const int np = static_cast<int>(points.rows()), dim = static_cast<int>(points.cols());
     const int n = o.closed ? np : np - 1;  // segments
     if (!o.closed && o.end == HosakaEnd::tangent)
@@ -218,6 +220,12 @@ HosakaSpline hosaka_c2_spline(const PointList& points, const HosakaSplineOptions
     return HosakaSpline{HosakaCurve(1, std::move(start), std::move(end)), std::move(k), std::move(B), std::move(C)};
 }
 
+}  // namespace
+
+HosakaSpline hosaka_c2_spline(const PointList& points, const HosakaSplineOptions& o) { return hosaka_c2_spline_of(points, o, false); }
+
+HosakaSpline hosaka_c2_spline(const ValidPoints& points, const HosakaSplineOptions& o) { return hosaka_c2_spline_of(points.points(), o, points.cover(o.closed ? 3 : 2, o.closed)); }
+
 HosakaCurve hosaka_spline(const PointList& points, int m, HosakaScale scale, bool closed) {
     HosakaSplineOptions o;
     o.scale = scale;
@@ -225,12 +233,14 @@ HosakaCurve hosaka_spline(const PointList& points, int m, HosakaScale scale, boo
     return hosaka_spline(points, m, o);
 }
 
-HosakaCurve hosaka_spline(const PointList& points, int m, const HosakaSplineOptions& o) {
+namespace {
+// hosaka_spline; `validated`: the points have passed require_valid_points(points, o.closed ? 3 : 2, …).
+HosakaCurve hosaka_spline_of(const PointList& points, int m, const HosakaSplineOptions& o, bool validated) {
     const char* who = "cagd::spline::hosaka_spline";
     if (m < 1) fail_input(who, "m must be >= 1, got " + std::to_string(m));
     const bool closed = o.closed, tangent_ends = o.end == HosakaEnd::tangent && !closed;
     const HosakaScale scale = o.scale;
-    require_valid_points(points, closed ? 3 : 2, true, closed, who);
+    if (!validated) require_valid_points(points, closed ? 3 : 2, true, closed, who);
     const int np = static_cast<int>(points.rows()), dim = static_cast<int>(points.cols());
     if (tangent_ends)
         for (const Eigen::VectorXd* t : {&o.start_tangent, &o.end_tangent})
@@ -289,6 +299,14 @@ HosakaCurve hosaka_spline(const PointList& points, int m, const HosakaSplineOpti
         }
     }
     return HosakaCurve(m, std::move(start), std::move(end));
+}
+
+}  // namespace
+
+HosakaCurve hosaka_spline(const PointList& points, int m, const HosakaSplineOptions& o) { return hosaka_spline_of(points, m, o, false); }
+
+HosakaCurve hosaka_spline(const ValidPoints& points, int m, const HosakaSplineOptions& o) {
+    return hosaka_spline_of(points.points(), m, o, points.cover(o.closed ? 3 : 2, o.closed));
 }
 
 ExplicitSpline hosaka_explicit_spline(const std::vector<double>& x, const Eigen::MatrixXd& values) {

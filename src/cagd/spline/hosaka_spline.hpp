@@ -90,6 +90,9 @@ struct HosakaSpline {
 
 /// The C2 spline of eq (18)–(20) through the points; InvalidInput for fewer than 2 points (3 closed) or repeated consecutive points.
 HosakaSpline hosaka_c2_spline(const PointList& points, const HosakaSplineOptions& options = {});
+/// The same through points validated already (options.closed as they were validated): the same
+/// curve, the points not checked again where their checks cover this construction's.
+HosakaSpline hosaka_c2_spline(const ValidPoints& points, const HosakaSplineOptions& options);
 
 /// Higher order (end of section 3: "in general derivatives up to order 2m can be joined
 /// continuously"): the spline of m-th order segments (eq 15) through points whose derivatives up to
@@ -107,6 +110,9 @@ HosakaSpline hosaka_c2_spline(const PointList& points, const HosakaSplineOptions
 HosakaCurve hosaka_spline(const PointList& points, int m, HosakaScale scale = HosakaScale::chord, bool closed = false);
 /// The spline of order m (continuous to order 2m) through the points, with the given options.
 HosakaCurve hosaka_spline(const PointList& points, int m, const HosakaSplineOptions& options);
+/// The same through points validated already (options.closed as they were validated): the same
+/// curve, the points not checked again where their checks cover this construction's.
+HosakaCurve hosaka_spline(const ValidPoints& points, int m, const HosakaSplineOptions& options);
 
 /// The explicit form y(x), z(x) (eq 21–23): on [x_{i−1}, x_i] with u = (x − x_{i−1})/l, l = x_i − x_{i−1},
 ///     (y, z)(x) = Σ_{j=0}^{1} { (y, z)_{i−1}^{(j)} p_j(1, u) + (y, z)_i^{(j)} q_j(1, u) } l^j      (21, 22)
