@@ -236,8 +236,8 @@ val compare(const val& request) {
             if (with_figure && figure.comb_scale[i] > 0) comb_scale = figure.comb_scale[i];
             if (motion && r.interpolant) {
                 const auto a = anchors().find(r.method);
-                const Eigen::Index rows = static_cast<Eigen::Index>(r.interpolant->node_parameters.size() - 1) * (kMotionSamples + 1);
-                if (a != anchors().end() && a->second.rows() == rows) {
+                const Eigen::Index sample_rows = static_cast<Eigen::Index>(r.interpolant->node_parameters.size() - 1) * (kMotionSamples + 1);
+                if (a != anchors().end() && a->second.rows() == sample_rows) {
                     std::vector<double> moved = cagd::compare::span_displacements(a->second, cagd::compare::span_samples(*r.interpolant, kMotionSamples), kMotionSamples);
                     for (double& d : moved) d /= diagonal;
                     o.set("motion", float64_array(moved));
