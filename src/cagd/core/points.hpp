@@ -54,6 +54,8 @@ private:
 };
 /// require_valid_points_with_extent(points, min_count, closed, who), its proof kept.
 ValidPoints validate_points(const PointList& points, Eigen::Index min_count, bool closed, const std::string& who);
+/// Not for a temporary (or an Eigen expression made into one): the proof would outlive its points.
+ValidPoints validate_points(PointList&& points, Eigen::Index min_count, bool closed, const std::string& who) = delete;
 
 /// The lengths |P_{k+1} − P_k| of the chords, k = 0 … n − 2, and for a closed list also
 /// |P_0 − P_{n−1}| last. Each is the square root of the squared coordinate differences summed in

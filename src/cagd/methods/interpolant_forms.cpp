@@ -354,22 +354,19 @@ BoostCatmullRom<D> boost_catmull_rom(const PointList& p, bool closed, std::vecto
     const double shortest = 1e-12 * sum;
     // An OR over all steps (vectorises); the culprit searched only on failure. Steps 0 … spans − 1
     // also go to h.
+    std::vector<double> unused;
+    std::vector<double>& steps = h ? *h : unused;
+    steps.resize(static_cast<std::size_t>(spans));
     unsigned short_steps = 0;
-    if (h) {
-        h->resize(static_cast<std::size_t>(spans));
-        double* out = h->data();
-        for (Eigen::Index j = 0; j < spans; ++j) {
-            const double step = t(j + 1) - t(j);
-            short_steps |= !(step > shortest);
-            out[j] = step;
-        }
-    } else {
-        for (Eigen::Index j = 0; j < spans; ++j) short_steps |= !(t(j + 1) - t(j) > shortest);
+    for (Eigen::Index j = 0; j < spans; ++j) {
+        const double step = t(j + 1) - t(j);
+        short_steps |= !(step > shortest);
+        steps[static_cast<std::size_t>(j)] = step;
     }
     for (Eigen::Index j = spans; j <= n; ++j) short_steps |= !(t(j + 1) - t(j) > shortest);
     if (short_steps != 0)
         for (Eigen::Index j = 0; j <= n; ++j)
-            if (!(t(j + 1) - t(j) > 1e-12 * sum)) {
+            if (!(t(j + 1) - t(j) > shortest)) {
                 const Eigen::Index a = j % n, b = (j + 1) % n;  // j = n − 1, n: the ghost chords
                 fail_input("cagd::methods::boost_catmull_rom_interpolant", "the chord from point " + std::to_string(a) + " is " + full_precision((p.row(b) - p.row(a)).norm()) +
                                                                                " long against a centripetal parameter sum of " + full_precision(sum) +
