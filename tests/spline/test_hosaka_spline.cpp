@@ -266,3 +266,31 @@ TEST(HosakaSpline, ValidatedPointsGiveTheSameCurves) {
     EXPECT_THROW((void)spline::hosaka_c2_spline(validate_points(q, 3, false, "test"), closed_options), InvalidInput) << "last = first: no closing chord";
     EXPECT_THROW((void)spline::hosaka_spline(validate_points(q, 3, false, "test"), 3, closed_options), InvalidInput) << "last = first: no closing chord";
 }
+
+TEST(HosakaSpline, SpanLengthsAreTheChordsAndGiveEq19BitForBit) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    for (const int dim : {2, 3}) {
+        PointList p(40, dim);
+        for (Eigen::Index i = 0; i < p.rows(); ++i)
+            for (int c = 0; c < dim; ++c) p(i, c) = (c == 0 ? static_cast<double>(i) : 0.0) + u(rng);
+        for (const bool closed : {false, true}) {
+            spline::HosakaSplineOptions o;
+            o.closed = closed;
+            const spline::HosakaSpline s = spline::hosaka_c2_spline(p, o);
+            const std::vector<double> chords = chord_lengths(p, closed);
+            EXPECT_EQ(s.span_lengths, chords) << dim << "-D, " << (closed ? "closed" : "open");
+            const Eigen::Index n = static_cast<Eigen::Index>(chords.size());
+            ASSERT_EQ(s.k.size(), static_cast<std::size_t>(closed ? n : n - 1));
+            for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(s.k.size()); ++i) {
+                // eq (19) with |A_i| formed as a row's norm, as the construction formed it before
+                // it kept the lengths: the same bits.
+                const Eigen::Index a = (i + 1) % p.rows(), b = (i + 2) % p.rows();
+                const double ratio = (p.row(a) - p.row(i)).norm() / (p.row(b) - p.row(a)).norm();
+                EXPECT_EQ(s.k[static_cast<std::size_t>(i)], ratio) << dim << "-D, join " << i;
+            }
+            o.scale = spline::HosakaScale::unit;
+            EXPECT_EQ(spline::hosaka_c2_spline(p, o).span_lengths, std::vector<double>(chords.size(), 1.0));
+        }
+    }
+}

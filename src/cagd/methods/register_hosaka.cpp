@@ -19,15 +19,29 @@ InterpolationResult build_hosaka(const ValidPoints& valid, const ParameterValues
     o.scale = v.text("scale") == "unit" ? spline::HosakaScale::unit : spline::HosakaScale::chord;
     o.closed = closed;
     require_tangent_pair("cagd::methods(hosaka)", v);
-    const std::vector<double> lengths = o.scale == spline::HosakaScale::chord ? chord_lengths(points, closed) : unit_lengths(points, closed);
+    const bool chord = o.scale == spline::HosakaScale::chord;
     if (v.text("end") == "tangent") {  // given in the method's parameter t; Hosaka's B_1, C_n are per span: d/du = L d/dt
+        // The first and last spans' lengths only, as chord_lengths computes them.
+        const auto span_length = [&](Eigen::Index span) {
+            if (!chord) return 1.0;
+            PointList ends(2, points.cols());
+            ends << points.row(span), points.row((span + 1) % points.rows());
+            return chord_lengths(ends, false).front();
+        };
         o.end = spline::HosakaEnd::tangent;
-        o.start_tangent = lengths.front() * v.vector("start-tangent");
-        o.end_tangent = lengths.back() * v.vector("end-tangent");
+        o.start_tangent = span_length(0) * v.vector("start-tangent");
+        o.end_tangent = span_length(node_count(points, closed) - 2) * v.vector("end-tangent");
     }
     const int m = v.integer("m");
-    auto c = m == 1 ? std::make_shared<spline::HosakaCurve>(spline::hosaka_c2_spline(valid, o).curve) : std::make_shared<spline::HosakaCurve>(spline::hosaka_spline(valid, m, o));
-    return result_of(unit_span_interpolant(std::move(c), node_count(points, closed), lengths));
+    if (m == 1) {  // the chords once: the construction's |A_i| are the spans' dτ/dt
+        spline::HosakaSpline s = spline::hosaka_c2_spline(valid, o);
+        std::vector<double> lengths = std::move(s.span_lengths);
+        return result_of(unit_span_interpolant(std::make_shared<spline::HosakaCurve>(std::move(s.curve)), node_count(points, closed), std::move(lengths)));
+    }
+    // Order m > 1 forms its lengths inside a solve of 2m unknowns per point (SparseLU): these
+    // chords again are a small part of it.
+    std::vector<double> lengths = chord ? chord_lengths(points, closed) : unit_lengths(points, closed);
+    return result_of(unit_span_interpolant(std::make_shared<spline::HosakaCurve>(spline::hosaka_spline(valid, m, o)), node_count(points, closed), std::move(lengths)));
 }
 
 }  // namespace

@@ -119,10 +119,11 @@ HosakaSpline hosaka_c2_spline_of(const PointList& points, const HosakaSplineOpti
             if (v->size() != dim || !v->allFinite()) fail_input(who, "tangent ends need a finite start and end tangent of dimension " + std::to_string(dim));
     Eigen::MatrixXd A(n, dim);
     for (int i = 0; i < n; ++i) A.row(i) = points.row((i + 1) % np) - points.row(i);
-    // k_i at the join after segment i (closed: every segment; open: i = 0..n−2).
+    // |A_i| once (the result keeps them: the registry's dτ/dt), then k_i at the join after segment i
+    // (closed: every segment; open: i = 0..n−2).
+    std::vector<double> lengths = o.scale == HosakaScale::unit ? std::vector<double>(static_cast<std::size_t>(n), 1.0) : chord_lengths(points, o.closed);
     std::vector<double> k(static_cast<std::size_t>(o.closed ? n : std::max(n - 1, 0)));
-    for (std::size_t i = 0; i < k.size(); ++i)
-        k[i] = o.scale == HosakaScale::unit ? 1.0 : A.row(static_cast<Eigen::Index>(i)).norm() / A.row(static_cast<Eigen::Index>((i + 1) % n)).norm();
+    for (std::size_t i = 0; i < k.size(); ++i) k[i] = o.scale == HosakaScale::unit ? 1.0 : lengths[i] / lengths[(i + 1) % static_cast<std::size_t>(n)];
 
     // The system of eq (20) and its solution; its arrays are freed before the curve is formed
     // (peak memory).
@@ -217,7 +218,7 @@ HosakaSpline hosaka_c2_spline_of(const PointList& points, const HosakaSplineOpti
         B.row(i) = start.row(2 * i + 1);
         C.row(i) = end.row(2 * i + 1);
     }
-    return HosakaSpline{HosakaCurve(1, std::move(start), std::move(end)), std::move(k), std::move(B), std::move(C)};
+    return HosakaSpline{HosakaCurve(1, std::move(start), std::move(end)), std::move(k), std::move(B), std::move(C), std::move(lengths)};
 }
 
 }  // namespace

@@ -86,6 +86,8 @@ struct HosakaSpline {
     std::vector<double> k;  ///< k_i, one per join (closed: per segment, wrapping)
     Eigen::MatrixXd B;  ///< B_i of eq (20), one row per segment
     Eigen::MatrixXd C;  ///< C_i of eq (20), one row per segment
+    /// dτ/dt of each segment: |A_i| (chord scale, as chord_lengths computes it) or 1 (unit scale).
+    std::vector<double> span_lengths;
 };
 
 /// The C2 spline of eq (18)–(20) through the points; InvalidInput for fewer than 2 points (3 closed) or repeated consecutive points.
