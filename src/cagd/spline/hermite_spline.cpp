@@ -21,17 +21,26 @@ PiecewiseHermiteCurve::PiecewiseHermiteCurve(Eigen::MatrixXd nodes, Eigen::Matri
     if (!all_finite(nodes_) || !all_finite(d0_) || !all_finite(d1_)) fail_input(who, "nodes and derivatives must be finite");
 }
 
+namespace {
+
+// The span scales of the slope form: none, or one finite scale per span.
+void require_span_scales(const char* who, const std::vector<double>& scales, Eigen::Index spans) {
+    if (!scales.empty() && static_cast<Eigen::Index>(scales.size()) != spans)
+        fail_input(who, "needs K span scales (or none), got " + std::to_string(scales.size()) + " for " + std::to_string(spans) + " spans");
+    if (!all_finite(scales.data(), scales.size())) fail_input(who, "span scales must be finite");
+}
+
+}  // namespace
+
 PiecewiseHermiteCurve PiecewiseHermiteCurve::from_node_slopes(Eigen::MatrixXd nodes, Eigen::MatrixXd slopes, std::vector<double> scales) {
     const char* who = "PiecewiseHermiteCurve::from_node_slopes";
     const Eigen::Index spans = nodes.rows() - 1;
     if (spans < 1) fail_input(who, "needs at least one span");
     if (slopes.rows() != spans + 1 && slopes.rows() != spans)
         fail_input(who, "needs K+1 slopes (closed: K) for K+1 nodes, got " + std::to_string(slopes.rows()) + " for " + std::to_string(nodes.rows()));
-    if (!scales.empty() && static_cast<Eigen::Index>(scales.size()) != spans)
-        fail_input(who, "needs K span scales (or none), got " + std::to_string(scales.size()) + " for " + std::to_string(spans) + " spans");
+    require_span_scales(who, scales, spans);
     if (slopes.cols() != nodes.cols()) fail_input(who, "nodes and slopes must have the same dimension");
     if (!all_finite(nodes) || !all_finite(slopes)) fail_input(who, "nodes and slopes must be finite");
-    if (!all_finite(scales.data(), scales.size())) fail_input(who, "span scales must be finite");
     if (slopes.rows() == spans) {  // closed: m_K = m_0 kept as a row, so that evaluation never wraps
         slopes.conservativeResize(spans + 1, Eigen::NoChange);
         slopes.row(spans) = slopes.row(0);
@@ -48,9 +57,7 @@ PiecewiseHermiteCurve PiecewiseHermiteCurve::from_points_and_slope_blocks(const 
     const Eigen::Index n = points.rows(), dim = points.cols(), spans = closed ? n : n - 1;
     if (spans < 1 || n < 2) fail_input(who, "needs at least one span");
     if (dim < 1 || dim > 3) fail_input(who, "needs points of 1 to 3 coordinates, got " + std::to_string(dim));
-    if (!scales.empty() && static_cast<Eigen::Index>(scales.size()) != spans)
-        fail_input(who, "needs K span scales (or none), got " + std::to_string(scales.size()) + " for " + std::to_string(spans) + " spans");
-    if (!all_finite(scales.data(), scales.size())) fail_input(who, "span scales must be finite");
+    require_span_scales(who, scales, spans);
     PiecewiseHermiteCurve c;
     c.nodes_.resize(spans + 1, dim);
     c.slopes_.resize(spans + 1, dim);  // closed: row K = row 0, set below
