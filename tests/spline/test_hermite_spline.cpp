@@ -353,9 +353,24 @@ TEST(CubicSplines, SlopeBlocksGiveTheSlopeFormBitForBitAndCheckEveryBlock) {
             } catch (const InvalidInput& e) {
                 EXPECT_NE(std::string(e.what()).find("node 3000 coordinate 0 is nan"), std::string::npos) << e.what();
             }
-            std::vector<double> bad_scales = scales;
-            bad_scales[7] = std::nan("");
-            EXPECT_THROW(PiecewiseHermiteCurve::from_points_and_slope_blocks(p, closed, copy, bad_scales), InvalidInput) << what;
+            // The span scales, checked alike by both: one per span, finite.
+            std::vector<double> nan_scale = scales, short_scales(scales.begin(), scales.end() - 1);
+            nan_scale[7] = std::nan("");
+            for (const auto& [bad_scales, message] :
+                 {std::pair{nan_scale, std::string("span scales must be finite")},
+                  std::pair{short_scales, "needs K span scales (or none), got " + std::to_string(spans - 1) + " for " + std::to_string(spans) + " spans"}}) {
+                for (const bool by_blocks : {true, false}) {
+                    try {
+                        if (by_blocks)
+                            PiecewiseHermiteCurve::from_points_and_slope_blocks(p, closed, copy, bad_scales);
+                        else
+                            PiecewiseHermiteCurve::from_node_slopes(nodes, slopes, bad_scales);
+                        ADD_FAILURE() << what << ": bad scales accepted (" << message << ")";
+                    } catch (const InvalidInput& e) {
+                        EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << what << ": " << e.what();
+                    }
+                }
+            }
         }
 }
 
