@@ -5,12 +5,20 @@
 //    open G2 clothoid spline with natural ends through n = 10…1000 points on y = sin x: time per
 //    point should stay about constant (linear growth). BM_NewtonIterationDense/n, the dense
 //    Moore–Penrose step on the same systems, is the baseline that grows like n³.
+//  - BM_CurvatureProfileLuStep/100000: the linear algebra of one Newton step of the registry's
+//    curvature-profile on BM_Construct's random walk of 10^5 points (bench_methods.cpp): LAPACK's
+//    banded LU of the Jacobian at the C2 start (dgbtrf, through numeric::BandedOrSparseLu, its band
+//    analysed once as Newton analyses it) and the solve (dgbtrs). Times BM_Construct's newton_steps,
+//    it is the part of that construction no evaluation of f and J can shorten
+//    (scripts/bench-targets.py sets it beside the 50× cubic-b target).
 #include <benchmark/benchmark.h>
 
 #include <Eigen/SparseLU>
 #include <cmath>
 
+#include "cagd/core/random_walk.hpp"
 #include "cagd/intrinsic/curvature_profile_design.hpp"
+#include "cagd/numeric/banded_or_sparse_lu.hpp"
 
 using namespace cagd;
 using namespace cagd::intrinsic;
@@ -67,6 +75,32 @@ void BM_NewtonIterationDense(benchmark::State& state) {
     }
     state.counters["points"] = static_cast<double>(state.range(0));
 }
+// The registry's curvature-profile problem (methods/register_curvature_profile.cpp: free spans on
+// span_layout, natural ends) through BM_Construct's random walk.
+CurvatureProfileProblem random_walk_problem(long points) {
+    const PointList p = random_walk(points, 7, 0.1, 2.0, 1.0);
+    const std::vector<SegmentShape> spans(static_cast<std::size_t>(points) - 1, SegmentShape::free);
+    CurvatureProfileProblem P{p, span_layout(spans), {}, {}, false, 0};
+    P.shapes = segment_shapes(P.layout, spans);
+    add_natural_open_ends(P);
+    return P;
+}
+
+void BM_CurvatureProfileLuStep(benchmark::State& state) {
+    const CurvatureProfileProblem P = random_walk_problem(state.range(0));
+    const DesignSystem sys = design_system(P, c2_start(P), true);
+    numeric::BandedOrSparseLu lu;
+    DesignBandOrdering order = design_band_ordering(P);
+    lu.analyze(sys.jacobian, std::move(order.rows), std::move(order.columns), kMaxBandStorageRows);
+    if (!lu.banded()) state.SkipWithError("the Jacobian's band is not narrow: not the banded LU Newton takes");
+    for (auto _ : state) {
+        if (!lu.factorize(sys.jacobian)) state.SkipWithError("singular Jacobian");
+        const Eigen::VectorXd step = lu.solve(sys.f);
+        benchmark::DoNotOptimize(step.data());
+    }
+}
+BENCHMARK(BM_CurvatureProfileLuStep)->Arg(100000)->Unit(benchmark::kMillisecond)->Repetitions(3)->ReportAggregatesOnly(true);
+
 BENCHMARK(BM_NewtonIterationDense)->Arg(10)->Arg(100)->Arg(300)->Unit(benchmark::kMicrosecond);
 
 }  // namespace

@@ -26,7 +26,9 @@
 //    within 1.3× of raw pchip (median of 3); pchip also at 10^7.
 //  - BM_SpacePseudoSpline/100000: the registry's pseudo-spline on 3-D points (the spans from the
 //    cached space table, the table loaded outside the timing); target ≥ 10^5 points/s.
-//  - BM_Construct/curvature-profile/100000: one Newton solve; target ≤ 50× cubic-b at 10^5.
+//  - BM_Construct/curvature-profile/100000: one Newton solve; target ≤ 50× cubic-b at 10^5. Its
+//    counter newton_steps and BM_CurvatureProfileLuStep (bench_curvature_profile.cpp) give the part
+//    of it that is LAPACK's banded LU alone.
 //  - BM_BSplineJet/<knots|between>: a cubic B-spline's jet_into(t, 2) exactly at its knots (the
 //    A2.3 values, from the table of knot jets) and at the span middles (Taylor); target: the same
 //    cost.
@@ -79,6 +81,11 @@ void construct(benchmark::State& state, const std::string& method, bool fresh_me
         const methods::InterpolationResult r = methods::interpolate(method, p, false);
         if (!r.outcome.ok()) state.SkipWithError((method + ": " + r.outcome.message).c_str());
         benchmark::DoNotOptimize(r.interpolant);
+        // An iterative method's Newton steps: its history has one residual per iteration, the
+        // last one's without a step.
+        int residuals = 0;
+        for (const auto& [quantity, value] : r.report) residuals += quantity.starts_with("newton_") && quantity.ends_with("_residual");
+        if (residuals > 0) state.counters["newton_steps"] = residuals - 1;
     }
     state.SetItemsProcessed(state.iterations() * state.range(0));
 }

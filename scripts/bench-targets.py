@@ -164,6 +164,13 @@ def main():
     ratio_row("pseudo-spline-exact construction at 10^6 ≤ 10× pseudo-spline-approx", "BM_Construct/pseudo-spline/1000000", "BM_Construct/pseudo-spline-approx/1000000", 10.0,
               "pseudo-spline-approx")
     ratio_row("curvature-profile construction at 10^5 ≤ 50× cubic-b", "BM_Construct/curvature-profile/100000/iterations:1", "BM_Construct/cubic-b/100000", 50.0, "cubic-b")
+    # The part of that construction that is LAPACK's banded LU: its Newton steps, each a
+    # factorisation and a solve of the same size (BM_CurvatureProfileLuStep).
+    solve, lu_step, cubic_b = (bench.get(n) for n in ("BM_Construct/curvature-profile/100000/iterations:1", "BM_CurvatureProfileLuStep/100000", "BM_Construct/cubic-b/100000"))
+    if solve and lu_step and cubic_b and "newton_steps" in solve:
+        steps = int(solve["newton_steps"])
+        rows.append(("curvature-profile at 10^5: its Newton steps' banded LU alone (LAPACK dgbtrf and dgbtrs), no target", f"{steps * seconds(lu_step) / seconds(cubic_b):.1f}× cubic-b",
+                     f"{steps} steps of {seconds(lu_step) * 1e3:.1f} ms; cubic-b {seconds(cubic_b) * 1e3:.1f} ms", "—"))
     space = rate("BM_SpacePseudoSpline/100000")
     if space:
         rows.append(("space pseudo-spline (3-D points, cached space table) at 10^5 ≥ 10^5 points/s", f"{space / 1e3:.0f} k points/s", "—", "met" if space >= 1e5 else "not met"))
@@ -181,6 +188,14 @@ def main():
             ratio = peak / kept if kept > 0 else math.inf
             rows.append((f"{m}: peak heap bytes per point during construction at 10^6 ≤ 1.5× what the result keeps", f"{peak:.0f} B/point ({ratio:.2f}×)",
                          f"kept {kept:.0f} B/point", "met" if ratio <= 1.5 else "not met"))
+    # OpenCASCADE's own interpolation, which occt-interpolate wraps (bench_opencascade.cpp).
+    raw_occt, raw_occt_memory = bench.get("BM_RawOpenCascade/1000000"), bench.get("BM_RawOpenCascadeMemory/1000000/iterations:1")
+    occt, occt_memory = bench.get("BM_Construct/occt-interpolate/1000000"), bench.get("BM_ConstructMemory/occt-interpolate/1000000/iterations:1")
+    if raw_occt and raw_occt_memory and occt and occt_memory:
+        peak, kept = raw_occt_memory["peak_bytes_per_point"], raw_occt_memory["retained_bytes_per_point"]
+        rows.append(("OpenCASCADE's own Geom2dAPI_Interpolate at 10^6, the peer occt-interpolate wraps, no target",
+                     f"{raw_occt['items_per_second'] / 1e6:.1f} M points/s; peak {peak:.0f} B/point, {peak / kept:.2f}× its curve's {kept:.0f}",
+                     f"occt-interpolate: {seconds(occt) / seconds(raw_occt):.2f}× its time, {occt_memory['peak_bytes_per_point'] / peak:.2f}× its peak", "—"))
     hand = bench.get("BM_JetHandLoop")
     for name, b in sorted(bench.items()):
         if name.startswith("BM_Jet/") and hand:
@@ -268,6 +283,10 @@ slower by the page faults). Constructions, Boost's peer and the jets are each th
 5 repetitions; each whole `cagd` run is the fastest of 3, each Python call the fastest of 20. Memory is the heap in use, counted by the benchmark's own allocator entry points
 (`bench/allocation_tracking.cpp`): the peak while one construction runs and what its result keeps
 (the curve, its node parameters, its report), each less what was in use before, per point.
+
+Rows without a verdict set a peer, or a part of a construction, beside the targets: where a target
+is not met they show how much of it lies outside this library (OpenCASCADE's own interpolation
+under occt-interpolate; LAPACK's banded LU in each curvature-profile Newton step).
 
 """
 
