@@ -34,9 +34,14 @@ InterpolationResult build_hosaka(const ValidPoints& valid, const ParameterValues
     }
     const int m = v.integer("m");
     if (m == 1) {  // the chords once: the construction's |A_i| are the spans' dτ/dt
-        spline::HosakaSpline s = spline::hosaka_c2_spline(valid, o);
-        std::vector<double> lengths = std::move(s.span_lengths);
-        return result_of(unit_span_interpolant(std::make_shared<spline::HosakaCurve>(std::move(s.curve)), node_count(points, closed), std::move(lengths)));
+        std::shared_ptr<const spline::HosakaCurve> curve;
+        std::vector<double> lengths;
+        {  // k, B and C of eq (20) freed before the node parameters are made (peak memory)
+            spline::HosakaSpline s = spline::hosaka_c2_spline(valid, o);
+            lengths = std::move(s.span_lengths);
+            curve = std::make_shared<const spline::HosakaCurve>(std::move(s.curve));
+        }
+        return result_of(unit_span_interpolant(std::move(curve), node_count(points, closed), std::move(lengths)));
     }
     // Order m > 1 forms its lengths inside a solve of 2m unknowns per point (SparseLU): these
     // chords again are a small part of it.
