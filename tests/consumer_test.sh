@@ -2,7 +2,8 @@
 # The install as an outside project sees it (ctest install.consumer): cmake --install into a
 # temporary prefix; build examples/consumer against it with find_package(cagd), and its main.cpp
 # again with pkg-config's flags alone; both must print what the same source built in this tree
-# prints (the library's own value). Usage: consumer_test.sh BUILD_DIR SOURCE_DIR IN_TREE_EXE
+# prints (the library's own value); every installed header compiles alone and every docs/cpp.md
+# example builds against the install (installed_headers_test.py). Usage: consumer_test.sh BUILD_DIR SOURCE_DIR IN_TREE_EXE
 set -euo pipefail
 build=$1 source=$2 in_tree=$3
 work=$(mktemp -d)
@@ -27,3 +28,6 @@ ${CXX:-c++} -O2 "$source/examples/consumer/main.cpp" $flags -o "$work/consumer_p
 got=$("$work/consumer_pc")
 echo "pkg-config:   $got"
 [ "$got" = "$expected" ] || { echo "FAIL: the pkg-config build prints something else"; exit 1; }
+
+# Every installed header compiles alone, and every C++ example of docs/cpp.md builds against the install.
+/usr/bin/python3 "$source/tests/installed_headers_test.py" "$work/prefix" "$source"

@@ -24,8 +24,10 @@
 
 namespace cagd::detail {
 
+#ifdef CAGD_LIBRARY_VERSION  // defined by the build for the library's and the plugin's own sources
 /// What both sides must agree on; a plugin reporting anything else is not loaded.
 inline constexpr const char* kOpenCascadePluginInterface = "cagd-occt-plugin 3 " CAGD_LIBRARY_VERSION;
+#endif
 
 /// A B-spline in OpenCASCADE's terms: degree, the full knot vector (values repeated by
 /// multiplicity, clamped), poles one per row (x, y[, z]).
