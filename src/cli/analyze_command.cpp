@@ -5,8 +5,10 @@
 // (closed by the chord from the last point to the first), and what the method computes itself
 // (the pseudo-spline's length, area and pseudo-energy from its tables, eq 16–21).
 // `cagd analyze --in curve.json`: a curve document (export/curve_json.hpp) measured the same way.
+#include <cmath>
 #include <iostream>
 #include <memory>
+#include <string>
 
 #include "cagd/analysis/curve_measures.hpp"
 #include "cagd/analysis/log_curvature_graph.hpp"
@@ -63,8 +65,10 @@ int analyze_samples(const std::string& path) {
         s.second = matrix(d2);
     }
     // The parameter column: t (the method's own, cagd interpolate's default) or u (--parameter span).
-    if (const int u = t.column("t") >= 0 ? t.column("t") : t.column("u"); u >= 0)
-        for (const auto& r : t.rows) s.parameter.push_back(r[static_cast<std::size_t>(u)]);
+    // Where the extremes are is named as the file names it: at_t, at_u, or at_sample (0-based index).
+    const std::string parameter = t.column("t") >= 0 ? "t" : t.column("u") >= 0 ? "u" : "sample";
+    if (parameter != "sample")
+        for (const auto& r : t.rows) s.parameter.push_back(r[static_cast<std::size_t>(t.column(parameter))]);
     const analysis::SampledCurveMeasures m = analysis::sampled_curve_measures(s);
     Quantities q;
     q.add("samples", m.samples);
@@ -72,9 +76,9 @@ int analyze_samples(const std::string& path) {
     if (m.enclosed_area) q.add("enclosed_area", *m.enclosed_area);
     if (m.has_curvature) {
         q.add("curvature_min", m.curvature_min);
-        q.add("curvature_min_at_u", m.curvature_min_at);
+        q.add("curvature_min_at_" + parameter, m.curvature_min_at);
         q.add("curvature_max", m.curvature_max);
-        q.add("curvature_max_at_u", m.curvature_max_at);
+        q.add("curvature_max_at_" + parameter, m.curvature_max_at);
         q.add("bending_energy", m.bending_energy);
     }
     q.commit();
@@ -126,14 +130,23 @@ int analyze_method(const AnalyzeArgs& a) {
     if (a.method.empty()) fail_input("cagd analyze", "--in needs --method (cagd interpolate --list-methods)");
     const methods::Method& method = methods::find_method(a.method);
     const methods::ParameterValues values = methods::parse_parameter_values(method.name, method.parameters, given_parameters(a.options));
-    const methods::InterpolationResult r = methods::interpolate(method, read_points_csv(a.in), a.closed, values);
+    const PointList points = read_user_points(a.in, a.closed);
+    const methods::InterpolationResult r = methods::interpolate(method, points, a.closed, values);
     if (!r.outcome.ok() || !r.interpolant) throw NoResult(r.outcome.message);
     const Curve& c = *r.interpolant->curve;
     Quantities q;
     q.add("spans", static_cast<double>(r.interpolant->node_parameters.size() - 1));
     add_curve_measures(q, c);
     for (const auto& [name, value] : r.quantities) q.add(name, value);
+    // A closed planar curve: its turning number beside its polygon's, and a flag when it loops.
+    std::string anomaly;
+    if (a.closed && c.dimension() == 2) {
+        q.add("turning_number", static_cast<double>(std::lround(analysis::tangent_turns(c))));
+        q.add("polygon_turning_number", static_cast<double>(analysis::polygon_turning_number(points)));
+        anomaly = analysis::closed_curve_anomaly(c, points, analysis::accurate_arc_length(c).value);
+    }
     q.commit();
+    if (!anomaly.empty()) std::cerr << "cagd analyze: flagged: the closed curve loops where its points do not: " << anomaly << "\n";
     if (c.dimension() == 2) std::cerr << "cagd analyze: areas are signed (counter-clockwise positive); an open curve is closed by the line from its last point to its first\n";
     return 0;
 }

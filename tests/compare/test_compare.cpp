@@ -22,6 +22,7 @@ using std::isnan;
 #include "cagd/analysis/curve_measures.hpp"
 #include "cagd/analysis/fairness_measures.hpp"
 #include "cagd/analysis/log_curvature_graph.hpp"
+#include "cagd/compare/classic_benchmark.hpp"
 #include "cagd/compare/method_comparison.hpp"
 #include "cagd/core/parallel.hpp"
 #include "cagd/core/point_csv.hpp"
@@ -226,7 +227,7 @@ TEST_P(EveryMethod, DegenerateInputsHaveDefinedOutcomes) {
         interpolate(m, repeated, false);
         ADD_FAILURE() << m.name << " accepted a repeated point";
     } catch (const InvalidInput& e) {
-        EXPECT_NE(std::string(e.what()).find("points 2 and 3 coincide"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("point 3 (row 2) and point 4 (row 3) coincide"), std::string::npos) << e.what();
     }
     // Nearly coincident points (10^-9 of the diagonal apart) and coordinates of magnitude 1e-8 and
     // 1e8: a finite curve through every point, or a returned outcome.
@@ -742,6 +743,59 @@ TEST(Compare, AMethodThatRefusesThePointsIsARowAndTheOthersAreMeasured) {
     EXPECT_THROW(compare_methods(repeated, o), InvalidInput);
 }
 
+// A curve that throws what no valid input should make it throw, past the middle of its range (a
+// defect such as a peer whose range and knots disagree).
+class CurveFailingPastItsMiddle final : public Curve {
+public:
+    explicit CurveFailingPastItsMiddle(std::shared_ptr<const Curve> base) : base_(std::move(base)) {}
+    int dimension() const override { return base_->dimension(); }
+    double t_min() const override { return base_->t_min(); }
+    double t_max() const override { return base_->t_max(); }
+    Eigen::MatrixXd jet(double t, int order) const override {
+        if (t > 0.5 * (t_min() + t_max())) throw std::runtime_error("injected defect at t = " + std::to_string(t));
+        return base_->jet(t, order);
+    }
+    std::vector<double> breakpoints() const override { return base_->breakpoints(); }
+
+private:
+    std::shared_ptr<const Curve> base_;
+};
+
+TEST(Compare, AConfigurationThatFailsInAnyWayIsARowAndTheOthersAreMeasured) {
+    // Two injected configurations: one whose build throws a std::runtime_error, one whose curve
+    // throws when measured. Each becomes its own "failed" row; the table keeps every other row.
+    static const Method throwing_build{.name = "injected-throwing-build",
+                                       .claims = [](const ParameterValues&) { return MethodClaims{.max_dimension = 3}; },
+                                       .build = [](const ValidPoints&, const ParameterValues&) -> InterpolationResult { throw std::runtime_error("injected build failure"); }};
+    static const Method failing_curve{.name = "injected-failing-curve",
+                                      .claims = [](const ParameterValues&) { return MethodClaims{.max_dimension = 3}; },
+                                      .build = [](const ValidPoints& p, const ParameterValues&) {
+                                          InterpolationResult r = interpolate("cubic-b", p.points(), p.closed());
+                                          r.interpolant->curve = std::make_shared<CurveFailingPastItsMiddle>(r.interpolant->curve);
+                                          return r;
+                                      }};
+    const PointList p = random_walk_points(12);
+    ComparisonOptions o;
+    o.configurations = {find_configuration("cubic-b"), Configuration{.name = throwing_build.name, .method = &throwing_build, .values = {}, .claims = throwing_build.claims({})},
+                        find_configuration("hermite-a"), Configuration{.name = failing_curve.name, .method = &failing_curve, .values = {}, .claims = failing_curve.claims({})},
+                        find_configuration("s-spline-m2")};
+    const std::vector<MethodComparison> c = compare_methods(p, o);
+    ASSERT_EQ(c.size(), 5u);
+    for (std::size_t k : {0u, 2u, 4u}) {
+        EXPECT_EQ(c[k].status, "ok") << c[k].method << ": " << c[k].note;
+        EXPECT_GT(c[k].length, 0.0) << c[k].method;
+    }
+    EXPECT_EQ(c[1].status, "failed");
+    EXPECT_NE(c[1].note.find("injected build failure"), std::string::npos) << c[1].note;
+    EXPECT_EQ(c[3].status, "failed");
+    EXPECT_NE(c[3].note.find("injected defect"), std::string::npos) << c[3].note;
+    // The figure data and the Markdown table have every row.
+    const FigureData d = comparison_figure_data(c, p, figure_sampling(11, 4000));
+    EXPECT_FALSE(d.curves.empty());
+    const std::string md = comparison_markdown(c, false, false);
+    EXPECT_EQ(std::count(md.begin(), md.end(), '\n'), 7) << md;
+}
+
 // ---- the viewer's pieces: span displacements, configurations with overrides, drawing-only runs ----
 
 TEST(Compare, SpanDisplacementsAreZeroOutsideALocalMethodsFootprint) {
@@ -943,3 +997,57 @@ TEST(Compare, IterativeMethodsContinueFromAnEarlierComparison) {
         EXPECT_EQ(continued[1].interpolant->curve->jet(1.5, 2), fresh[1].interpolant->curve->jet(1.5, 2));
     }
 }
+
+namespace {
+
+// Seven points of a figure eight, x = 3 sin t, y = 1.5 sin 2t at t = 2π(k + phase)/7: the polygon
+// turns 0 times.
+PointList figure_eight_points(double phase) {
+    PointList p(7, 2);
+    for (int k = 0; k < 7; ++k) {
+        const double t = 2.0 * std::numbers::pi * (k + phase) / 7.0;
+        p.row(k) << 3.0 * std::sin(t), 1.5 * std::sin(2.0 * t);
+    }
+    return p;
+}
+
+TEST(Compare, AClosedCurveThatLoopsWhereItsPointsDoNotIsFlagged) {
+    // The curvature profile's closed curve through these points, where its Newton converges (at
+    // some phases it does not: its outcome then depends on the rounding of the input), turns once,
+    // a loop the points do not have: it is measured, but flagged.
+    ComparisonOptions o;
+    o.closed = true;
+    o.locality = false;
+    o.methods = {"cubic-b", "curvature-profile"};
+    int flagged = 0;
+    for (double phase : {0.2, 0.4, 0.6, 1.0}) {
+        const PointList p = figure_eight_points(phase);
+        EXPECT_EQ(analysis::polygon_turning_number(p), 0);
+        const std::vector<MethodComparison> c = compare_methods(p, o);
+        ASSERT_EQ(c.size(), 2u);
+        EXPECT_EQ(c[0].status, "ok") << "phase " << phase << ": " << c[0].note;
+        EXPECT_EQ(std::lround(analysis::tangent_turns(*c[0].interpolant->curve)), 0) << "phase " << phase;
+        if (c[1].status == "no result") continue;
+        ++flagged;
+        EXPECT_EQ(c[1].status, "loops") << "phase " << phase << ": " << c[1].note;
+        EXPECT_NE(c[1].note.find("against the polygon's 0"), std::string::npos) << c[1].note;
+        EXPECT_TRUE(c[1].fairness.has_value()) << "a flagged curve is still measured";
+    }
+    EXPECT_GE(flagged, 2) << "the curvature profile converged on fewer than two of the four figure eights";
+    // A circle's points, and every closed data set of the benchmark's classic data, give curves that
+    // are not flagged by the direct methods.
+    PointList circle(12, 2);
+    for (int k = 0; k < 12; ++k) circle.row(k) << std::cos(k * std::numbers::pi / 6), std::sin(k * std::numbers::pi / 6);
+    o.methods = {"cubic-b", "hermite-a", "s-spline-m2", "curvature-profile", "spiro"};
+    for (const MethodComparison& m : compare_methods(circle, o)) EXPECT_EQ(m.status, "ok") << m.method << ": " << m.note;
+    int closed_sets = 0;
+    for (const ClassicDataSet& d : read_classic_data(std::string(CAGD_SOURCE_DIR) + "/reference/benchmark/classic_data.csv")) {
+        if (!d.closed) continue;
+        ++closed_sets;
+        o.methods = {"cubic-b", "pseudo-spline-exact"};
+        for (const MethodComparison& m : compare_methods(d.points, o)) EXPECT_NE(m.status, "loops") << d.name << ", " << m.method << ": " << m.note;
+    }
+    EXPECT_GT(closed_sets, 0);
+}
+
+}  // namespace

@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <cmath>
+#include <cstdio>
+#include <numbers>
 #include <set>
+#include <string>
 
 #include "cagd/core/errors.hpp"
 #include "cagd/numeric/gauss_legendre.hpp"
@@ -204,6 +207,51 @@ double normal_offset(const Curve& a, const Curve& b, double t) {
     if (!(speed_b > 0.0)) fail_input("cagd::analysis::normal_offset", "b'(t) = 0 at t = " + full_precision(t));
     const Eigen::Vector2d normal(-J(1, 1) / speed_b, J(1, 0) / speed_b);
     return (a.point(t) - b.point(t)).dot(normal);
+}
+
+double tangent_turns(const Curve& c, int samples_per_piece) {
+    const char* who = "cagd::analysis::tangent_turns";
+    if (c.dimension() != 2) fail_input(who, "needs a planar curve, dimension is " + std::to_string(c.dimension()));
+    if (samples_per_piece < 1) fail_input(who, "samples_per_piece = " + std::to_string(samples_per_piece) + " < 1");
+    const std::vector<double> br = c.breakpoints();
+    JetMatrix D;
+    double turn = 0.0, px = 0.0, py = 0.0;
+    bool first = true;
+    for (std::size_t k = 0; k + 1 < br.size(); ++k)
+        for (int j = k == 0 ? 0 : 1; j <= samples_per_piece; ++j) {
+            const double t = br[k] + (br[k + 1] - br[k]) * j / samples_per_piece;
+            c.derivatives_into(t, 1, D);
+            const double x = D(0, 0), y = D(0, 1);
+            if (!(x * x + y * y > 0.0)) fail_input(who, "r'(t) = 0 at t = " + full_precision(t) + ": the tangent is undefined there");
+            if (!first) turn += std::atan2(px * y - py * x, px * x + py * y);
+            px = x, py = y, first = false;
+        }
+    return turn / (2.0 * std::numbers::pi);
+}
+
+int polygon_turning_number(const PointList& p) {
+    if (p.cols() != 2 || p.rows() < 3) fail_input("cagd::analysis::polygon_turning_number", "needs at least 3 planar points");
+    const Eigen::Index n = p.rows();
+    double turn = 0.0;
+    for (Eigen::Index i = 0; i < n; ++i) {
+        const Eigen::Vector2d a = p.row((i + 1) % n) - p.row(i), b = p.row((i + 2) % n) - p.row((i + 1) % n);
+        turn += std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+    }
+    return static_cast<int>(std::lround(turn / (2.0 * std::numbers::pi)));
+}
+
+std::string closed_curve_anomaly(const Curve& c, const PointList& points, double length) {
+    double perimeter = 0.0;
+    for (Eigen::Index i = 0; i < points.rows(); ++i) perimeter += (points.row((i + 1) % points.rows()) - points.row(i)).norm();
+    const long curve_turns = std::lround(tangent_turns(c)), polygon_turns = polygon_turning_number(points);
+    std::string reason;
+    if (curve_turns != polygon_turns) reason = "turning number " + std::to_string(curve_turns) + " against the polygon's " + std::to_string(polygon_turns);
+    if (length > kLoopingLengthFactor * perimeter) {
+        char ratio[32];
+        std::snprintf(ratio, sizeof ratio, "%.3g", length / perimeter);
+        reason += (reason.empty() ? "" : "; ") + std::string("length ") + ratio + " × the polygon's perimeter (more than " + std::to_string(kLoopingLengthFactor).substr(0, 3) + ")";
+    }
+    return reason;
 }
 
 }  // namespace cagd::analysis

@@ -13,7 +13,10 @@
 /// Preconditions: |r'(t)| > 0 where curvature is asked (InvalidInput names t otherwise); curves of
 /// dimension 1–3 (the integrands evaluate into a fixed-capacity JetMatrix, core/curve.hpp; a
 /// higher dimension throws InvalidInput).
+#include <string>
+
 #include "cagd/core/curve.hpp"
+#include "cagd/core/points.hpp"
 #include "cagd/numeric/romberg.hpp"
 
 namespace cagd::analysis {
@@ -69,5 +72,24 @@ double max_distance_same_parameter(const Curve& a, const Curve& b, double t0, do
 /// Planar: (a(t) − b(t)) · n_b(t), n_b the unit left normal of b at t (positive = a lies to the
 /// left of b). Precondition: b'(t) ≠ 0.
 double normal_offset(const Curve& a, const Curve& b, double t);
+
+/// The tangent's total turn of a closed planar curve over [t_min, t_max], in turns: the signed
+/// angles between the tangents r′ at `samples_per_piece` + 1 uniform samples of every piece, summed,
+/// divided by 2π (each step must turn by less than π, which 64 samples a piece ensure for every
+/// registry method on any data). For a closed G1 curve it is its turning number, an integer.
+/// Precondition: a planar curve with r′ ≠ 0 at the samples (InvalidInput names t).
+double tangent_turns(const Curve& c, int samples_per_piece = 64);
+/// The turning number of the closed polygon through `points` (planar, consecutive points distinct):
+/// its exterior angles, each in (−π, π], summed and divided by 2π.
+int polygon_turning_number(const PointList& points);
+/// How much longer than its polygon's perimeter a closed curve may be before it is flagged (a fair
+/// interpolant is at most a few per cent longer).
+inline constexpr double kLoopingLengthFactor = 1.5;
+/// A closed planar curve through `points`, of arc length `length`, is flagged when its turning
+/// number differs from its polygon's (it loops where the polygon does not), or its length exceeds
+/// kLoopingLengthFactor times the polygon's perimeter. Returns the reason in one line ("turning
+/// number 1 against the polygon's 0; length 1.62 × the polygon's perimeter …"), or "" when the
+/// curve is not flagged.
+std::string closed_curve_anomaly(const Curve& c, const PointList& points, double length);
 
 }  // namespace cagd::analysis

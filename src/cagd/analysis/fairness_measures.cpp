@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "cagd/analysis/curve_measures.hpp"
+#include "cagd/analysis/log_curvature_graph.hpp"
 #include "cagd/core/errors.hpp"
 
 namespace cagd::analysis {
@@ -68,7 +69,7 @@ FairnessMeasures fairness_measures(const Curve& c, const PointList& data, const 
                 const Eigen::Vector3d cr = d1.cross(d2), cr1 = d1.cross(d3);
                 const double v = std::sqrt(v2), cn = cr.norm();
                 kappa = cn / (v2 * v);
-                if (std::abs(kappa) * std::max(diagonal, 1e-300) > 1e-9) {
+                if (std::abs(kappa) * std::max(diagonal, 1e-300) > kFlatCurvature) {
                     const double dkappa_ds = (cr.dot(cr1) / cn - 3.0 * cn * d1.dot(d2) / v2) / (v2 * v2);
                     m.max_abs_curvature_derivative = std::max(m.max_abs_curvature_derivative, std::abs(dkappa_ds));
                     m.max_abs_torsion = std::max(m.max_abs_torsion, std::abs(cr.dot(d3)) / (cn * cn));
@@ -77,7 +78,7 @@ FairnessMeasures fairness_measures(const Curve& c, const PointList& data, const 
             m.max_abs_curvature = std::max(m.max_abs_curvature, std::abs(kappa));
             spike = std::max(spike, std::abs(kappa) * chord);
             if (dim == 2) {
-                const int sign = std::abs(kappa) * std::max(diagonal, 1e-300) <= 1e-9 ? 0 : (kappa > 0 ? 1 : -1);
+                const int sign = std::abs(kappa) * std::max(diagonal, 1e-300) <= kFlatCurvature ? 0 : (kappa > 0 ? 1 : -1);
                 if (sign != 0) {
                     if (last_sign != 0 && sign != last_sign) ++m.curvature_sign_changes;
                     last_sign = sign;

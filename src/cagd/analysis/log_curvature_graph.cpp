@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <vector>
 
 #include "cagd/analysis/curve_measures.hpp"
 #include "cagd/core/errors.hpp"
@@ -100,14 +102,28 @@ LcgSamples log_curvature_graph(const Curve& c, double t0, double t1, int samples
     });
 }
 
-double torsion(const Curve& c, double t) { return torsion_and_rate(c, t).tau; }
+double curve_extent(const Curve& c) {
+    const std::vector<double> br = c.breakpoints();
+    Eigen::VectorXd lo = c.point(br.front()), hi = lo;
+    for (double t : br) {
+        const Eigen::VectorXd p = c.point(t);
+        lo = lo.cwiseMin(p);
+        hi = hi.cwiseMax(p);
+    }
+    return (hi - lo).norm();
+}
+
+double torsion(const Curve& c, double t, double extent) {
+    const TorsionAndRate r = torsion_and_rate(c, t);
+    return r.defined && curvature(c, t) * extent > kFlatCurvature ? r.tau : std::numeric_limits<double>::quiet_NaN();
+}
+
+double torsion(const Curve& c, double t) { return torsion(c, t, curve_extent(c)); }
 double torsion_arc_derivative(const Curve& c, double t) { return torsion_and_rate(c, t).tau_s; }
 
 CurvatureTorsionExtremes curvature_torsion_extremes(const Curve& c, int samples_per_piece) {
     if (samples_per_piece < 1) fail_input("cagd::analysis::curvature_torsion_extremes", "samples_per_piece = " + std::to_string(samples_per_piece) + " < 1");
-    // tau = (r' x r'') . r''' / |r' x r''|^2 grows without bound as kappa -> 0 (an inflection of a
-    // space curve): it is measured only where kappa >= kTorsionCurvatureFloor * max kappa.
-    constexpr double kTorsionCurvatureFloor = 1e-3;
+    // τ is measured where it is defined by the flatness policy (torsion(c, t, extent) not NaN).
     CurvatureTorsionExtremes e;
     std::vector<std::pair<double, double>> samples;  // (t, kappa)
     const std::vector<double> br = c.breakpoints();
@@ -117,9 +133,11 @@ CurvatureTorsionExtremes curvature_torsion_extremes(const Curve& c, int samples_
             samples.emplace_back(t, curvature(c, t));
             e.max_abs_curvature = std::max(e.max_abs_curvature, samples.back().second);
         }
-    if (c.dimension() == 3)
+    if (c.dimension() == 3) {
+        const double extent = curve_extent(c);
         for (const auto& [t, kappa] : samples)
-            if (kappa > 0.0 && kappa >= kTorsionCurvatureFloor * e.max_abs_curvature) e.max_abs_torsion = std::max(e.max_abs_torsion, std::abs(torsion_and_rate(c, t).tau));
+            if (kappa * extent > kFlatCurvature) e.max_abs_torsion = std::max(e.max_abs_torsion, std::abs(torsion_and_rate(c, t).tau));
+    }
     return e;
 }
 

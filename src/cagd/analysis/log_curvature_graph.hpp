@@ -59,11 +59,22 @@ LineFit fit_line(const std::vector<double>& x, const std::vector<double>& y);
 /// The least-squares slope of the LCG over [t0, t1] (α for a log-aesthetic curve).
 LineFit lcg_slope(const Curve& c, double t0, double t1, int samples);
 
-/// Torsion τ(t) (0 where r' × r'' = 0) and dτ/ds, 3-D curves.
+/// The flatness policy: a point of a curve is straight (its curvature 0 to rounding) where
+/// κ · D ≤ kFlatCurvature, D a length of the whole curve (the diagonal of its data's, or its own,
+/// bounding box). There the torsion τ = det(r′, r″, r‴)/|r′ × r″|² is undefined (a quotient of
+/// rounding noise: at a natural end of a spline it came out as 1e15 or 0), and torsion() gives NaN.
+/// compare's largest |τ| skips the same points (fairness_measures).
+inline constexpr double kFlatCurvature = 1e-9;
+/// D of the flatness policy for a curve on its own: the diagonal of the bounding box of its
+/// positions at its breakpoints (O(pieces)).
+double curve_extent(const Curve& c);
+/// Torsion τ(t) of a 3-D curve, NaN where the curve is straight by the flatness policy with the
+/// length `extent` (see above).
+double torsion(const Curve& c, double t, double extent);
+/// The same with extent = curve_extent(c) (O(pieces) per call: give the extent in loops).
 double torsion(const Curve& c, double t);
 /// The largest |κ| and, for a space curve, the largest |τ| over samples_per_piece + 1 uniform
-/// samples of every piece (τ counts only where κ ≥ 1e-3 max κ: it is undefined where the curve is
-/// straight and unbounded near an inflection).
+/// samples of every piece (τ counts only where it is defined: the flatness policy above).
 /// Precondition: r'(t) ≠ 0 at the samples (InvalidInput names t).
 struct CurvatureTorsionExtremes {
     double max_abs_curvature = 0.0;  ///< largest sampled |κ|

@@ -12,6 +12,8 @@ const char* to_string(AttemptStatus status) {
         case AttemptStatus::refused: return "refused";
         case AttemptStatus::no_result: return "no result";
         case AttemptStatus::cusp: return "cusp";
+        case AttemptStatus::loops: return "loops";
+        case AttemptStatus::failed: return "failed";
     }
     return "?";
 }

@@ -12,6 +12,12 @@
 ///                   representable): its message is the note
 ///   cusp            a curve, but with a point of zero speed where its curvature is undefined (set
 ///                   by the caller that measures the curve: attempt_interpolation never returns it)
+///   loops           a closed planar curve, measured, but flagged: its turning number differs from
+///                   its polygon's, or it is much longer than the polygon (analysis::closed_curve_anomaly,
+///                   the reason the note); set by the caller that measures the curve
+///   failed          the method, or its curve when measured, threw what no valid input should make
+///                   it throw (an evaluation outside the range it states, memory): a defect of the
+///                   method, its message the note; the callers that measure set it, one row each
 #include <string>
 
 #include "cagd/core/points.hpp"
@@ -20,8 +26,8 @@
 namespace cagd::compare {
 
 /// What became of one interpolation (see above).
-enum class AttemptStatus { ok, not_applicable, refused, no_result, cusp };
-/// "ok", "not applicable", "refused", "no result", "cusp".
+enum class AttemptStatus { ok, not_applicable, refused, no_result, cusp, loops, failed };
+/// "ok", "not applicable", "refused", "no result", "cusp", "loops", "failed".
 const char* to_string(AttemptStatus status);
 
 /// One interpolation tried (see above).

@@ -14,7 +14,9 @@
 #include <stdexcept>
 
 #include "cagd/analysis/curvature_comb.hpp"
+#include "cagd/compare/interpolation_attempt.hpp"
 #include "cagd/analysis/curve_measures.hpp"
+#include "cagd/analysis/log_curvature_graph.hpp"
 #include "cagd/core/csv.hpp"
 #include "cagd/core/parallel.hpp"
 #include "cagd/intrinsic/intrinsic_curve.hpp"
@@ -255,7 +257,7 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
         if (options.methods.empty()) configurations = methods::configurations();
     }
     const double diagonal = bounding_box_diagonal(points);
-    const auto measure = [&](const methods::Configuration& configuration) {
+    const auto measure_unguarded = [&](const methods::Configuration& configuration) {
         MethodComparison c;
         c.method = configuration.name;
         c.note = method_applicability(configuration.claims, points, options.closed);
@@ -303,6 +305,12 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
             c.length = c.fairness->length;
             c.pseudo_energy = span_pseudo_energy(*c.interpolant, *c.fairness, sampling.quadrature_pieces);
             c.status = "ok";
+            // A closed planar curve that loops where its polygon does not is measured, but flagged.
+            if (options.closed && points.cols() == 2)
+                if (std::string anomaly = analysis::closed_curve_anomaly(curve, points, c.length); !anomaly.empty()) {
+                    c.status = to_string(AttemptStatus::loops);
+                    c.note = std::move(anomaly);
+                }
         } catch (const InvalidInput& e) {  // a sample of zero speed: κ undefined there
             c.length = analysis::arc_length(curve, sampling.quadrature_pieces);
             c.status = "cusp";
@@ -320,6 +328,19 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
             }
         }
         return c;
+    };
+    // Whatever one configuration throws beyond a refusal (its curve failing to evaluate inside its
+    // own range, memory) is that configuration's row, never the end of the comparison.
+    const auto measure = [&](const methods::Configuration& configuration) {
+        try {
+            return measure_unguarded(configuration);
+        } catch (const std::exception& e) {
+            MethodComparison c;
+            c.method = configuration.name;
+            c.status = to_string(AttemptStatus::failed);
+            c.note = "the method failed (a defect of the method, not of the points): " + one_line(e.what());
+            return c;
+        }
     };
     // The iterative methods are started first; the rows keep the configurations' order.
     std::vector<std::size_t> order(configurations.size());
@@ -460,7 +481,7 @@ FigureData comparison_figure_data(const std::vector<MethodComparison>& cs, const
                     const Eigen::Vector3d cr = d1.cross(d2);
                     const double v = d1.norm(), cn = cr.norm();
                     // τ is undefined where κ = 0 (a straight point): left at 0 there, as the table's maximum skips it.
-                    const double kappa = cn / (v * v * v), tau = kappa * diagonal > 1e-9 ? cr.dot(J.row(3).transpose()) / (cn * cn) : 0.0;
+                    const double kappa = cn / (v * v * v), tau = kappa * diagonal > analysis::kFlatCurvature ? cr.dot(J.row(3).transpose()) / (cn * cn) : 0.0;
                     d.profiles.push_back({index, s, kappa, tau});
                     continue;
                 }

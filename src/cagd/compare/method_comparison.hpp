@@ -23,7 +23,10 @@
 /// A method that does not apply (too few points, closed curves unsupported, 3-D) is listed with
 /// the reason; a returned outcome (the curvature-profile Newton) is listed with its message; a curve
 /// with a point of zero speed (a cusp: Boost's pchip does this where x and y turn together) has no
-/// curvature there, and its κ measures are left empty with that note. Nothing is NaN.
+/// curvature there, and its κ measures are left empty with that note; a method that throws anything
+/// else (a defect) is listed as "failed" with the message. A closed planar curve whose turning
+/// number differs from its polygon's, or that is more than 1.5 times the polygon's perimeter, is
+/// measured and listed as "loops" with the reason (analysis::closed_curve_anomaly). Nothing is NaN.
 /// Sampling: `samples` and `quadrature_pieces` per piece default to 128 and 16, reduced for long
 /// inputs so that a method measures about 2·10⁶ samples in all (at least 8 and 2 per piece).
 #include <functional>
@@ -69,7 +72,7 @@ struct ComparisonOptions {
 /// One method's row of the comparison.
 struct MethodComparison {
     std::string method;  ///< the configuration's name
-    std::string status;  ///< "ok", "not applicable", "refused", "no result", "cusp"
+    std::string status;  ///< "ok", "not applicable", "refused", "no result", "cusp", "loops", "failed" (AttemptStatus)
     std::string note;    ///< the reason when status is not ok
     std::optional<Interpolant> interpolant;  ///< the curve, when the method applies and succeeds
     Eigen::VectorXd solver_state;  ///< the build's InterpolationResult::solver_state (empty for direct methods)
