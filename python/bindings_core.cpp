@@ -42,8 +42,14 @@ void bind_core(py::module_& m) {
             py::arg("t"), "Curvature at t (a float for a number, an array of t's shape otherwise): signed (counter-clockwise positive) for planar curves, its absolute value for space curves. "
             "ValueError where the speed vanishes.")
         .def(
-            "torsion", [](const PyCurve& c, const py::object& t) { return c.map_parameters(t, [&](double u) { return cagd::analysis::torsion(*c.curve, u); }); }, py::arg("t"),
-            "Torsion at t (space curves).")
+            "torsion",
+            [](const PyCurve& c, const py::object& t) {
+                const double extent = cagd::analysis::curve_extent(*c.curve);
+                return c.map_parameters(t, [&](double u) { return cagd::analysis::torsion(*c.curve, u, extent); });
+            },
+            py::arg("t"),
+            "Torsion at t (space curves); NaN where the curve is straight, its curvature times the diagonal of its bounding box at most 1e-9 "
+            "(the library's flatness policy): there the torsion is undefined.")
         .def(
             "arc_length",
             [](const PyCurve& c, bool with_error) -> py::object {

@@ -6,28 +6,58 @@ namespace cagd_python {
 namespace {
 
 // Registry parameters arrive as Python values; the registry parses their text, so a value is
-// checked and reported exactly as on the command line. Sequences become comma-separated numbers.
-std::string parameter_text(const py::handle& v) {
+// checked and reported exactly as on the command line. A value of the wrong Python type is a
+// TypeError naming the parameter: a str for a number, a number for a choice or a text, a sequence
+// holding anything but real numbers. Sequences (a vector parameter) become comma-separated numbers;
+// a vector may also be given as its text ("2,3").
+[[noreturn]] void wrong_type(const std::string& name, const char* expected, const py::handle& v) {
+    throw py::type_error(name + ": expected " + expected + ", got " + std::string(py::str(py::type::of(v).attr("__name__"))) + " " + std::string(py::repr(v)));
+}
+
+bool real_number(const py::handle& v) { return py::isinstance<py::float_>(v) || py::isinstance<py::int_>(v) || py::isinstance(v, py::module_::import("numbers").attr("Real")); }
+
+std::string parameter_text(const std::string& name, const cagd::methods::Parameter* declared, const py::handle& v) {
+    using cagd::methods::ParameterType;
+    const ParameterType type = declared ? declared->type : ParameterType::text;
+    const bool numeric = declared && (type == ParameterType::integer || type == ParameterType::real);
+    if (py::isinstance<py::str>(v)) {
+        if (numeric) wrong_type(name, type == ParameterType::integer ? "an integer" : "a real number", v);
+        return py::str(v);
+    }
+    if (declared && (type == ParameterType::choice || type == ParameterType::text)) wrong_type(name, "a str", v);
     if (py::isinstance<py::bool_>(v)) return v.cast<bool>() ? "1" : "0";
-    if (py::isinstance<py::float_>(v)) return cagd::full_precision(v.cast<double>());
-    if (py::isinstance<py::str>(v) || py::isinstance<py::int_>(v)) return py::str(v);
+    if (py::isinstance<py::int_>(v)) return py::str(v);
+    if (real_number(v)) return cagd::full_precision(v.cast<double>());
     if (py::isinstance<py::sequence>(v) || py::isinstance<py::array>(v)) {
+        if (numeric) wrong_type(name, type == ParameterType::integer ? "an integer" : "a real number", v);
         std::string s;
         for (const py::handle& x : py::iter(v)) {
+            if (py::isinstance<py::str>(x) || py::isinstance<py::bool_>(x) || !real_number(x)) wrong_type(name, "real numbers in the sequence", x);
             if (!s.empty()) s += ",";
             s += cagd::full_precision(x.cast<double>());
         }
         return s;
     }
-    return py::str(v);
+    wrong_type(name, declared ? cagd::methods::to_string(type) : "a number, a str or a sequence of numbers", v);
 }
 
-cagd::methods::ParameterText parameter_texts(const py::kwargs& params) {
+cagd::methods::ParameterText parameter_texts(const std::string& method, const py::kwargs& params) {
+    // The declared parameters of the method (or of a configuration's method); an unknown method is
+    // left for the registry's own message.
+    const cagd::methods::Method* m = nullptr;
+    try {
+        m = cagd::methods::find_configuration(method).method;
+    } catch (const cagd::InvalidInput&) {
+    }
     cagd::methods::ParameterText text;
     for (const auto& [k, v] : params) {
         std::string name = py::str(k);
         std::replace(name.begin(), name.end(), '_', '-');  // keyword arguments cannot hold '-'
-        text[name] = parameter_text(v);
+        const cagd::methods::Parameter* declared = nullptr;
+        if (m)
+            for (const cagd::methods::Parameter& p : m->parameters)
+                if (p.name == name) declared = &p;
+        text[name] = parameter_text(std::string(py::str(k)), declared, v);
     }
     return text;
 }
@@ -42,7 +72,7 @@ struct Interpolation {
 
 Interpolation interpolate_result(const Array& points, const std::string& method, bool closed, const py::kwargs& params) {
     const Eigen::MatrixXd p = to_matrix(points, "interpolate: points");
-    const cagd::methods::ParameterText text = parameter_texts(params);
+    const cagd::methods::ParameterText text = parameter_texts(method, params);
     cagd::methods::InterpolationResult r;
     {
         py::gil_scoped_release release;

@@ -23,43 +23,13 @@ using namespace cagd_python;
 
 namespace {
 
-bool identifier_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
-
-// A library message in Python's terms. A leading qualified function name is dropped; any other
-// qualified C++ name (`cagd::smoothing::elastic_line`, `intrinsic::IntrinsicCurve::jet`) becomes its last component, `cagd::methods(s-spline)` the
-// method's name; an option `--start-tangent` becomes the keyword argument `start_tangent`.
-std::string python_message(const std::string& m) {
+// A library message in Python's terms: no C++ qualified names (cagd::in_user_terms), and an option
+// `--start-tangent` becomes the keyword argument `start_tangent`.
+std::string python_message(const std::string& message) {
+    const std::string m = cagd::in_user_terms(message);
     std::string out;
     std::size_t i = 0;
-    // A leading qualified C++ function name ("cagd::methods::find_configuration: …") says where in
-    // the library the check sits, nothing a Python caller can use: dropped with its ": ".
-    if (m.rfind("cagd::", 0) == 0) {
-        std::size_t end = 0;
-        while (end < m.size() && (identifier_char(m[end]) || m[end] == ':')) ++end;
-        if (m.compare(end > 0 ? end - 1 : 0, 2, ": ") == 0 && m.find("::") < end) i = end + 1;
-    }
     while (i < m.size()) {
-        if (identifier_char(m[i]) && (i == 0 || !identifier_char(m[i - 1]))) {
-            std::size_t end = i, last = i;
-            while (end < m.size() && identifier_char(m[end])) ++end;
-            const std::size_t first_end = end;
-            while (end + 2 < m.size() && m[end] == ':' && m[end + 1] == ':' && identifier_char(m[end + 2])) {
-                last = end + 2;
-                end = last;
-                while (end < m.size() && identifier_char(m[end])) ++end;
-            }
-            if (end == first_end) {
-                out.append(m, i, end - i);
-            } else if (m.compare(last, end - last, "methods") == 0 && end < m.size() && m[end] == '(' && m.find(')', end) != std::string::npos) {
-                const std::size_t close = m.find(')', end);
-                out.append(m, end + 1, close - end - 1);
-                end = close + 1;
-            } else {
-                out.append(m, last, end - last);
-            }
-            i = end;
-            continue;
-        }
         const bool option_start = i + 2 < m.size() && m[i] == '-' && m[i + 1] == '-' && std::islower(static_cast<unsigned char>(m[i + 2])) &&
                                   (i == 0 || std::string_view(" (,'\"").find(m[i - 1]) != std::string_view::npos);
         if (option_start) {

@@ -331,5 +331,29 @@ XDG_CACHE_HOME="$dir/xdg3" CAGD_NO_CACHE=1 "$cagd" analyze --in "$dir/ps.csv" --
 cmp -s <(XDG_CACHE_HOME="$dir/xdg" "$cagd" analyze --in "$dir/ps.csv" --method pseudo-spline 2>/dev/null) \
        <("$cagd" --no-cache analyze --in "$dir/ps.csv" --method pseudo-spline 2>/dev/null) || { echo "FAIL: the cached table gives other measures"; fails=$((fails+1)); }
 
+# Messages in the user's terms: a point is named by its ordinal and its line of the file, and no
+# C++ qualified name reaches the user.
+printf 'x,y\n# a comment\n0,0\n1,1\n1,1\n2,0\n' > "$dir/dup.csv"
+"$cagd" interpolate --method cubic-b --in "$dir/dup.csv" --out "$dir/o.csv" 2> "$dir/err.txt"
+grep -q 'point 2 (line 4) and point 3 (line 5) coincide' "$dir/err.txt" || { echo "FAIL: coincident points not named by their lines:"; cat "$dir/err.txt"; fails=$((fails+1)); }
+! grep -q '::' "$dir/err.txt" || { echo "FAIL: a C++ qualified name reached the user:"; cat "$dir/err.txt"; fails=$((fails+1)); }
+# --closed with the first point repeated at the end (a CAD export's closed polyline): the repeat is
+# the closing point, dropped with one line that says so; the curve is that of the points without it.
+printf '0,0\n1,0\n1,1\n0,1\n0,0\n' > "$dir/closing.csv"
+printf '0,0\n1,0\n1,1\n0,1\n' > "$dir/square.csv"
+"$cagd" interpolate --method cubic-b --closed --in "$dir/closing.csv" --out "$dir/closing_curve.csv" 2> "$dir/err.txt" || { echo "FAIL: --closed with a repeated closing point"; cat "$dir/err.txt"; fails=$((fails+1)); }
+[ "$(wc -l < "$dir/err.txt")" -eq 1 ] && grep -q 'closing.csv:5: the last point repeats the first' "$dir/err.txt" || { echo "FAIL: the dropped closing point is not said in one line:"; cat "$dir/err.txt"; fails=$((fails+1)); }
+"$cagd" interpolate --method cubic-b --closed --in "$dir/square.csv" --out "$dir/square_curve.csv" 2> /dev/null
+cmp -s "$dir/closing_curve.csv" "$dir/square_curve.csv" || { echo "FAIL: the curve with the closing point dropped differs from the curve of the points without it"; fails=$((fails+1)); }
+# Open, a repeated first point is a closed polyline's last point, and stays bad input for no method.
+"$cagd" analyze --in "$dir/closing.csv" --method cubic-b > "$dir/a.txt" 2> /dev/null || { echo "FAIL: analyze of an open polyline that returns to its start"; fails=$((fails+1)); }
+# compare on two points: gnuplot's warnings (empty ranges) never reach stderr.
+if command -v gnuplot > /dev/null; then
+  printf '0,0\n1,1\n' > "$dir/two.csv"
+  "$cagd" compare --in "$dir/two.csv" --methods cubic-b,hermite-a --out "$dir/cmp2" > /dev/null 2> "$dir/err.txt" || { echo "FAIL: compare on two points"; cat "$dir/err.txt"; fails=$((fails+1)); }
+  ! grep -qi 'warning' "$dir/err.txt" || { echo "FAIL: gnuplot's chatter reached stderr:"; cat "$dir/err.txt"; fails=$((fails+1)); }
+fi
+# analyze names where the curvature extremes are as the file names its parameter column.
+"$cagd" analyze "$dir/c.csv" 2> /dev/null | grep -q '^curvature_max_at_t,' || { echo "FAIL: analyze does not name the extremes' parameter t as the file does"; fails=$((fails+1)); }
 if [ "$fails" -eq 0 ]; then echo "cli: all checks passed"; fi
 exit $((fails > 0))

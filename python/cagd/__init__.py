@@ -55,6 +55,10 @@ Example (every example in these docstrings runs as a doctest in the package's te
     >>> round(c.arc_length(), 6)
     4.45534
 """
+# Annotations stay as written (PEP 563), so that help() shows "points: '_npt.ArrayLike'" and not
+# numpy's expanded Union of every array-like type.
+from __future__ import annotations
+
 from typing import Any, Dict, Iterable, List, Union
 
 import numpy as _np
@@ -198,7 +202,7 @@ def compare(points: _npt.ArrayLike, closed: bool = False, methods: Union[None, s
     """Every method (or the named configurations) on the same planar or space points, measured as
     by ``cagd compare``: a dict of arrays, one entry per configuration (``methods``: a list of
     names, or one name). ``method``, ``status`` ("ok", "not applicable", "refused", "no result",
-    "cusp") and ``note`` are lists of str; each measure
+    "cusp", "failed": a defect of the method, its message the note) and ``note`` are lists of str; each measure
     (length, area, pseudo_energy, bending_energy, curvature_sign_changes, max_abs_curvature,
     max_abs_curvature_derivative, overshoot, spans, locality_footprint, seconds, max_abs_torsion,
     shared_seconds) is a ``numpy.ma.MaskedArray``, masked where the measure does not exist (method

@@ -47,6 +47,8 @@ def cpp():
 
 
 def close(ours, theirs, scale=1.0):
+    if math.isnan(ours) or math.isnan(theirs):  # undefined (torsion at a straight point) on both sides
+        return math.isnan(ours) and math.isnan(theirs)
     return abs(ours - theirs) <= TOL * max(abs(theirs), scale)
 
 
@@ -224,7 +226,7 @@ def test_bad_input_is_value_error_with_the_library_message():
         cagd.interpolate(p, "nope")
     bad = p.copy()
     bad[3, 1] = float("nan")
-    with pytest.raises(ValueError, match="point 3"):
+    with pytest.raises(ValueError, match=r"point 4 \(row 3\) coordinate y is nan"):
         cagd.interpolate(bad, "cubic-b")
     with pytest.raises(ValueError, match="out of range"):
         cagd.interpolate(p, "s-spline", m=-3)
@@ -667,3 +669,70 @@ def test_at_arc_length_inverts_the_arc_length():
     assert t.shape == (2, 1) and 0.0 < t[0, 0] < t[1, 0] < c.parameter_range[1]
     with pytest.raises(ValueError, match="the curve's length"):
         c.at_arc_length(2 * c.arc_length())
+
+
+def end_of_range_walk(n, seed, max_turn):
+    """n points of a walk of unit steps, each turning by an angle uniform in [-max_turn, max_turn]
+    (pi: a uniformly random direction)."""
+    heading = np.cumsum(np.random.default_rng(seed).uniform(-max_turn, max_turn, n - 1))
+    steps = np.column_stack([np.cos(heading), np.sin(heading)])
+    return np.vstack([[0.0, 0.0], np.cumsum(steps, axis=0)])
+
+
+# The Newton methods take walks that turn by at most 1.2 rad a step, where their curves exist (as
+# tests/methods/test_end_of_range.cpp): on hairpins they end in no_convergence after many steps.
+NEWTON_METHODS = {"curvature-profile", "spiro"}
+
+
+@pytest.mark.parametrize("n", [10, 1000, 100000])
+def test_every_configuration_evaluates_at_both_ends_of_its_parameter_range(n):
+    # evaluate() works at both ends of parameter_range and gives the first and last point there
+    # (closed: the first point again), for every configuration (presets, else the method).
+    configurations = [(preset, m["name"], m["claims"]) for m in cagd.methods() for preset in (m["presets"] or [m["name"]])]
+    checked = 0
+    for name, method, claims in configurations:
+        count = min(n, claims["max_points"]) if claims["max_points"] > 0 else n
+        p = end_of_range_walk(count, 7, 1.2 if method in NEWTON_METHODS else math.pi)
+        extent = float(np.linalg.norm(p.max(axis=0) - p.min(axis=0)))
+        for closed in (False, True):
+            if closed and not claims["supports_closed"]:
+                continue
+            r = cagd.interpolate_result(p, name, closed=closed)
+            if not r.ok:
+                assert r.message, f"{name} closed={closed}: a numerical outcome says why"
+                continue
+            a, b = r.curve.parameter_range
+            ends = r.curve.evaluate(np.array([a, b]))
+            assert np.all(np.isfinite(ends)), name
+            last = p[0] if closed else p[-1]
+            assert np.linalg.norm(ends[0] - p[0]) <= 1e-8 * extent, f"{name} closed={closed} at t = {a!r}"
+            assert np.linalg.norm(ends[1] - last) <= 1e-8 * extent, f"{name} closed={closed} at t = {b!r}"
+            checked += 1
+    assert checked >= len(cagd.methods())
+
+
+def test_a_parameter_of_the_wrong_python_type_is_a_type_error_naming_it():
+    p = table1()
+    with pytest.raises(TypeError, match=r"^m: expected an integer, got str '2'"):
+        cagd.interpolate(p, "s-spline", m="2")
+    with pytest.raises(TypeError, match=r"^m_vector: expected a str, got list"):
+        cagd.interpolate(p, "s-spline", m_vector=["2", "3"])
+    # The right types still work, numpy's numbers included.
+    assert cagd.interpolate(p, "s-spline", m=np.int64(2)).dimension == 2
+
+
+def test_help_shows_readable_signatures():
+    import inspect
+    text = str(inspect.signature(cagd.interpolate))
+    assert "Union[" not in text and len(text) < 120, text
+    assert text.startswith("(points: '_npt.ArrayLike', method: 'str'"), text
+
+
+def test_torsion_is_nan_where_undefined_at_natural_ends():
+    t = 0.7 * np.arange(9)
+    helix = np.column_stack([np.cos(t), np.sin(t), 0.21 * np.arange(9)])
+    c = cagd.interpolate(helix, "cubic-b")
+    a, b = c.parameter_range
+    tau = c.torsion(np.array([a, 0.5 * (a + b), b]))
+    assert math.isnan(tau[0]) and math.isnan(tau[2]), tau
+    assert abs(tau[1] - 0.3 / 1.09) < 0.05, tau

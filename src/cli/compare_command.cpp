@@ -55,7 +55,7 @@ std::string shell_quoted(const std::string& s) {
 
 int run_compare(const CompareArgs& a) {
     const char* who = "cagd compare";
-    const PointList points = read_points_csv(a.in);
+    const PointList points = read_user_points(a.in, a.closed);
     compare::ComparisonOptions options;
     options.closed = a.closed;
     if (!a.methods.empty()) {
@@ -153,13 +153,21 @@ int run_compare(const CompareArgs& a) {
                                          // ≤ ~1000 in each small panel of the combs figure: it draws the points once per method, and
                                          // cairo's dots were two thirds of that figure's time at 10^5 points (1.1 of 1.6 s)
                                          "; panel_point_every=" + std::to_string(std::max<Eigen::Index>(1, points.rows() / 1000));
-            commands.push_back("gnuplot -e " + shell_quoted(settings) + " " + shell_quoted(script));
+            // gnuplot's messages (its warnings on few points, say) go to a log in the staging
+            // directory, never staged: it is read only when gnuplot fails, and leaves with the staging.
+            commands.push_back("gnuplot -e " + shell_quoted(settings) + " " + shell_quoted(script) + " 2> " + shell_quoted(out.staging() + "/" + figure + ".log"));
         }
         std::vector<int> status(commands.size(), 0);
         parallel_for(static_cast<long>(commands.size()), hardware_threads(),
                      [&](long k) { status[static_cast<std::size_t>(k)] = std::system(commands[static_cast<std::size_t>(k)].c_str()); }, {});
         for (std::size_t k = 0; k < commands.size(); ++k)
-            if (status[k] != 0) throw NoResult("gnuplot failed: " + commands[k] + " (nothing was written)");
+            if (status[k] != 0) {
+                std::ifstream log(out.staging() + "/" + figures[k] + ".log");
+                std::string line, reason;
+                while (reason.empty() && std::getline(log, line))
+                    if (line.find_first_not_of(" \t^") != std::string::npos) reason = line.substr(line.find_first_not_of(" \t"));
+                throw NoResult("gnuplot failed to draw the " + figures[k] + " figure" + (reason.empty() ? "" : ": " + reason) + " (nothing was written)");
+            }
     }
     out.commit();
     table_out.commit();

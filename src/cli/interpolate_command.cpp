@@ -39,7 +39,7 @@ int run_interpolate(const InterpolateArgs& a) {
     if (a.in.empty() || a.out.empty()) fail_input(who, "--in and --out are required (or --list-methods)");
     const methods::Method& method = methods::find_method(a.method);
     const methods::ParameterValues values = methods::parse_parameter_values(method.name, method.parameters, given_parameters(a.options));
-    const PointList points = read_points_csv(a.in);
+    const PointList points = read_user_points(a.in, a.closed);
     // The format, from --format or the extension, before any work (an unknown one is bad input).
     const exports::CurveFormat format = a.format.empty() ? exports::curve_format_of_path(a.out) : exports::curve_format_named(a.format);
     OutputFile out(a.out);  // checked before the work

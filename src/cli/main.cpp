@@ -52,19 +52,19 @@ int main(int argc, char** argv) {
         std::cerr << "cagd: error: " << e.what() << "\n";
         return 2;
     } catch (const cagd::InvalidInput& e) {
-        std::cerr << "cagd: error: " << e.what() << "\n";
+        std::cerr << "cagd: error: " << user_message(e.what()) << "\n";
         return 2;
     } catch (const cagd::OutputError& e) {
-        std::cerr << "cagd: cannot write: " << e.what() << "\n";
+        std::cerr << "cagd: cannot write: " << user_message(e.what()) << "\n";
         return 1;
     } catch (const NoResult& e) {
-        std::cerr << "cagd: no result: " << e.what() << "\n";
+        std::cerr << "cagd: no result: " << user_message(e.what()) << "\n";
         return 1;
     } catch (const std::bad_alloc&) {
         std::cerr << "cagd: no result: out of memory\n";
         return 1;
     } catch (const std::exception& e) {
-        std::cerr << "cagd: no result: " << e.what() << "\n";
+        std::cerr << "cagd: no result: " << user_message(e.what()) << "\n";
         return 1;
     }
     return 2;

@@ -5,11 +5,14 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <string>
 #include <system_error>
+#include <vector>
 
 #include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
@@ -21,6 +24,9 @@ namespace cagd::cli {
 namespace {
 
 bool quiet_flag = false;
+
+// The lines of the points file read last (read_user_points), for user_message.
+std::vector<long> point_lines;
 
 }  // namespace
 
@@ -87,8 +93,42 @@ void Quantities::commit() {
     print_standard_output(text);
 }
 
+PointList read_user_points(const std::string& path, bool closed) {
+    PointList p = read_points_csv(path, point_lines);
+    const Eigen::Index n = p.rows();
+    if (closed && n >= 3 && p.row(n - 1) == p.row(0)) {
+        std::cerr << "cagd: " << (path == "-" ? std::string("stdin") : path) << ":" << point_lines.back()
+                  << ": the last point repeats the first; with --closed it is the closing point and is dropped\n";
+        p.conservativeResize(n - 1, Eigen::NoChange);
+        point_lines.pop_back();
+    }
+    return p;
+}
+
+std::string user_message(const std::string& message) {
+    std::string m = in_user_terms(message);
+    // "(row i)" of point_label becomes "(line L)" of the points file.
+    std::string out;
+    std::size_t at = 0;
+    for (std::size_t k; (k = m.find("(row ", at)) != std::string::npos;) {
+        std::size_t end = k + 5;
+        while (end < m.size() && std::isdigit(static_cast<unsigned char>(m[end]))) ++end;
+        out += m.substr(at, k - at);
+        const std::string digits = m.substr(k + 5, end - k - 5);
+        std::size_t row = 0;
+        if (end < m.size() && m[end] == ')' && !digits.empty() && digits.size() < 10 && (row = std::stoul(digits)) < point_lines.size()) {
+            out += "(line " + std::to_string(point_lines[row]) + ")";
+            at = end + 1;
+        } else {
+            out += "(row ";
+            at = k + 5;
+        }
+    }
+    return out + m.substr(at);
+}
+
 PointList read_data_points(const std::string& path) {
-    PointList p = read_points_csv(path);
+    PointList p = read_user_points(path, false);
     const double largest = p.cwiseAbs().maxCoeff();
     if (largest > 1e150)
         throw NoResult(path + ": values up to " + full_precision(largest) + " overflow the arithmetic (at most 1e150: squares must stay finite); scale the data down");

@@ -67,6 +67,14 @@ private:
     std::vector<std::pair<std::string, std::string>> rows_;
 };
 
+// The points of the file `path` (core/point_csv.hpp rules). With `closed`, a last point equal to
+// the first is the closing point: dropped, and one line on stderr says so. The points' lines are
+// kept for user_message.
+PointList read_user_points(const std::string& path, bool closed);
+// A message in the user's terms (in_user_terms), with "(row i)" of a point read by
+// read_user_points given as "(line L)" of its file.
+std::string user_message(const std::string& message);
+
 // The points of a data file (core/point_csv.hpp rules), with coordinates at most 1e150 in
 // magnitude: beyond, the surfaces' and smoothers' arithmetic overflows, so larger data is a
 // numerical outcome (NoResult naming the largest value), not bad input.

@@ -129,7 +129,7 @@ TEST(Points, RequireValidPointsNamesEveryCoincidingPair) {
                 if (i < 0 || i + 1 >= n) continue;
                 PointList q = p;
                 q.row(i + 1) = q.row(i);
-                const std::string named = "points " + std::to_string(i) + " and " + std::to_string(i + 1) + " coincide";
+                const std::string named = cagd::point_label(i) + " and " + cagd::point_label(i + 1) + " coincide";
                 EXPECT_NE(message(q, false).find(named), std::string::npos) << where << " pair " << i << ": " << message(q, false);
                 q(i + 1, dim - 1) = std::nextafter(q(i, dim - 1), 1e300);  // one coordinate differs, by one ulp
                 EXPECT_EQ(message(q, false), "") << where << " pair " << i;
@@ -138,13 +138,13 @@ TEST(Points, RequireValidPointsNamesEveryCoincidingPair) {
                 PointList q = p;
                 q.row(n - 1) = q.row(0);
                 EXPECT_EQ(message(q, false), "") << where << ": open, the last point may equal the first";
-                const std::string named = "points " + std::to_string(n - 1) + " and 0 coincide";
+                const std::string named = cagd::point_label(n - 1) + " and point 1 (row 0) coincide";
                 EXPECT_NE(message(q, true).find(named), std::string::npos) << where << ": " << message(q, true);
             }
         }
     PointList z(3, 2);
     z << 0.0, 1.0, -0.0, 1.0, 2.0, 2.0;
-    EXPECT_NE(message(z, false).find("points 0 and 1 coincide"), std::string::npos) << "−0 and +0 are the same coordinate";
+    EXPECT_NE(message(z, false).find("point 1 (row 0) and point 2 (row 1) coincide"), std::string::npos) << "−0 and +0 are the same coordinate";
     z << 0.0, 1.0, std::numeric_limits<double>::denorm_min(), 1.0, 2.0, 2.0;
     EXPECT_EQ(message(z, false), "") << "distinct by the smallest subnormal";
   }
@@ -186,7 +186,7 @@ TEST(Points, RequireValidPointsWithExtentGivesTheLargestCoordinateAndShortestCho
     PointList bad(3, 2);
     bad << 0, 0, 1, std::numeric_limits<double>::quiet_NaN(), 2, 2;
     const std::string m = cagd::test::invalid_input_message([&] { (void)require_valid_points_with_extent(bad, 2, false, "test"); });
-    EXPECT_NE(m.find("point 1 coordinate 1 is nan"), std::string::npos) << m;
+    EXPECT_NE(m.find("point 2 (row 1) coordinate y is nan"), std::string::npos) << m;
     const std::string few = cagd::test::invalid_input_message([&] { (void)require_valid_points_with_extent(bad.topRows(1), 2, false, "test"); });
     EXPECT_NE(few.find("needs at least 2 points, got 1"), std::string::npos) << few;
 }
@@ -210,10 +210,10 @@ TEST(Points, ValidPointsKeepWhatWasCheckedAndCoverNoMore) {
     PointList bad = p;
     bad(2, 0) = std::numeric_limits<double>::infinity();
     const std::string m = cagd::test::invalid_input_message([&] { (void)validate_points(bad, 2, false, "test"); });
-    EXPECT_NE(m.find("point 2 coordinate 0 is inf"), std::string::npos) << m;
+    EXPECT_NE(m.find("point 3 (row 2) coordinate x is inf"), std::string::npos) << m;
     bad = p;
     bad.row(3) = bad.row(0);
     EXPECT_NO_THROW((void)validate_points(bad, 2, false, "test"));
     const std::string closing = cagd::test::invalid_input_message([&] { (void)validate_points(bad, 2, true, "test"); });
-    EXPECT_NE(closing.find("points 3 and 0 coincide"), std::string::npos) << closing;
+    EXPECT_NE(closing.find("point 4 (row 3) and point 1 (row 0) coincide"), std::string::npos) << closing;
 }

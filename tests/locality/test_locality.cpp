@@ -211,12 +211,12 @@ TEST(Locality, BadInputThrowsNamingTheValue) {
     expect_message(p.topRows(1), o, "at least 2 points");
     PointList bad = p;
     bad(2, 1) = NAN;
-    expect_message(bad, o, "point 2 coordinate 1 is nan");
+    expect_message(bad, o, "point 3 (row 2) coordinate y is nan");
     bad(2, 1) = INFINITY;
     expect_message(bad, o, "inf");
     bad = p;
     bad.row(3) = bad.row(2);
-    expect_message(bad, o, "points 2 and 3 coincide");
+    expect_message(bad, o, "point 3 (row 2) and point 4 (row 3) coincide");
     o.m = {{-1, -1}};
     expect_message(p, o, "m = -1");
     o.m = parse_m_vector("1,2,3");

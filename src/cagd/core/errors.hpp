@@ -35,6 +35,17 @@ std::string full_precision(double value);
 /// shown as `\xHH`, trailing blanks are dropped. Bytes of UTF-8 characters are kept.
 std::string one_line(const std::string& text);
 
+/// A data point in messages: "point k (row i)", k = i + 1 its ordinal and i its 0-based row of the
+/// point list (a numpy index; the command turns "(row i)" into the line of its file).
+std::string point_label(long row);
+
+/// A library message in its user's terms, so that no C++ qualified name reaches a user: a leading
+/// qualified function name with its ": " is dropped ("cagd::analysis::curvature: …"); any other
+/// loses its qualifiers ("cagd::methods::interpolate(cubic-b)" → "interpolate(cubic-b)",
+/// "cagd::BSplineCurve::jet" → "jet"), and "cagd::methods(s-spline)" becomes the method's name.
+/// The command and the Python module pass every message through it.
+std::string in_user_terms(const std::string& message);
+
 /// Throws InvalidInput("<who>: <what>"), `what` made one line (one_line) — the one way library
 /// code reports bad input.
 [[noreturn]] void fail_input(const std::string& who, const std::string& what);

@@ -13,7 +13,9 @@ namespace cagd {
 namespace {
 
 // Records of min_cols..max_cols finite numbers by the rules of point_csv.hpp.
-PointList read_number_rows(std::istream& in, const std::string& name, std::size_t min_cols, std::size_t max_cols, const std::string& who, const std::string& what) {
+// `lines`, when given, receives the line number of each row.
+PointList read_number_rows(std::istream& in, const std::string& name, std::size_t min_cols, std::size_t max_cols, const std::string& who, const std::string& what,
+                           std::vector<long>* lines = nullptr) {
     std::vector<std::vector<double>> rows;
     std::string line;
     int line_no = 0;
@@ -48,6 +50,7 @@ PointList read_number_rows(std::istream& in, const std::string& name, std::size_
         for (double v : values)
             if (!std::isfinite(v)) fail_input(who, where + "coordinate " + full_precision(v) + " is not finite");
         rows.push_back(values);
+        if (lines) lines->push_back(line_no);
     }
     if (rows.empty()) fail_input(who, name + ": no data rows (no points)");
     PointList p(static_cast<Eigen::Index>(rows.size()), static_cast<Eigen::Index>(rows.front().size()));
@@ -75,6 +78,12 @@ std::vector<double> read_values_csv(const std::string& path) {
 PointList read_points_csv(const std::string& path) {
     InputFile in(path);
     return read_points_csv(in.stream(), in.name());
+}
+
+PointList read_points_csv(const std::string& path, std::vector<long>& lines) {
+    InputFile in(path);
+    lines.clear();
+    return read_number_rows(in.stream(), in.name(), 2, 3, "cagd::read_points_csv", "2 or 3 comma-separated numbers (points need 2 or 3)", &lines);
 }
 
 }  // namespace cagd

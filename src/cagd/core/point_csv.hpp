@@ -24,6 +24,8 @@ namespace cagd {
 PointList read_points_csv(std::istream& in, const std::string& source_name);
 /// Points from the file `path` ("-": standard input) by the rules above.
 PointList read_points_csv(const std::string& path);
+/// The same, and in `lines` the line of the file each point (row) was read from, 1-based.
+PointList read_points_csv(const std::string& path, std::vector<long>& lines);
 /// One finite number per line (optional header, # comments), e.g. per-point smoothing weights.
 std::vector<double> read_values_csv(const std::string& path);
 /// One number per line from a stream by the same rules; `source_name` names the source in messages.

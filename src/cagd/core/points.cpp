@@ -51,7 +51,7 @@ void require_valid_points(const PointList& points, Eigen::Index min_count, bool 
         for (Eigen::Index i = 0; i < n; ++i)
             for (Eigen::Index k = 0; k < points.cols(); ++k)
                 if (!std::isfinite(points(i, k)))
-                    fail_input(who, "point " + std::to_string(i) + " coordinate " + std::to_string(k) + " is " + full_precision(points(i, k)) + "; coordinates must be finite");
+                    fail_input(who, point_label(i) + " coordinate " + "xyz"[k] + " is " + full_precision(points(i, k)) + "; coordinates must be finite");
     if (!distinct_consecutive) return;
     const bool open_pairs_distinct = !any_consecutive_rows_equal(points);
     if (open_pairs_distinct && !(closed && n > 0 && points.row(n - 1) == points.row(0))) return;
@@ -59,7 +59,7 @@ void require_valid_points(const PointList& points, Eigen::Index min_count, bool 
     for (Eigen::Index i = 0; i < pairs; ++i) {
         const Eigen::Index j = i + 1 == n ? 0 : i + 1;  // (no modulo per point: an integer division)
         if (points.row(i) == points.row(j))
-            fail_input(who, "points " + std::to_string(i) + " and " + std::to_string(j) + " coincide (zero-length chord); consecutive points must differ");
+            fail_input(who, point_label(i) + " and " + point_label(j) + " coincide (zero-length chord); consecutive points must differ");
     }
 }
 

@@ -97,7 +97,7 @@ InterpolationResult checked_build(const Method& method, const PointList& points,
     if (const Eigen::Index i = extent.shortest_squared_chord >= shortest * shortest ? -1 : first_chord_shorter_than(points, closed, shortest); i >= 0) {
         const Eigen::Index next = i + 1 == points.rows() ? 0 : i + 1;
         InterpolationResult r;
-        r.outcome = {Status::not_representable, method.name + ": points " + std::to_string(i) + " and " + std::to_string(next) + " differ by " +
+        r.outcome = {Status::not_representable, method.name + ": " + point_label(i) + " and " + point_label(next) + " differ by " +
                                                     full_precision((points.row(next) - points.row(i)).cwiseAbs().maxCoeff()) +
                                                     " at most per coordinate: below 1e-150 (times the coordinates' size) the chord's square underflows; scale the points up"};
         return r;

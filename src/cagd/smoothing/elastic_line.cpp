@@ -196,11 +196,11 @@ HermiteElasticLine elastic_line_hermite(const std::vector<double>& x, const Eige
         rows.emplace_back(dof, value);
     };
     for (int i = 0; i < nodes; ++i)
-        if (lambda[static_cast<std::size_t>(i)] == 0.0) fix(2 * i, a(i), "point " + std::to_string(i) + " (lambda = 0)");
+        if (lambda[static_cast<std::size_t>(i)] == 0.0) fix(2 * i, a(i), point_label(i) + " (lambda = 0)");
     for (const auto& [j, c] : constraints.fixed_values) {
         if (j < 0 || j >= nodes) fail_input(who, "fixed value index " + std::to_string(j) + " outside 0.." + std::to_string(nodes - 1));
         if (!std::isfinite(c)) fail_input(who, "fixed value at point " + std::to_string(j) + " is " + full_precision(c));
-        fix(2 * j, c, "point " + std::to_string(j));
+        fix(2 * j, c, point_label(j));
     }
     for (const auto& [slope, dof, name] : {std::tuple{constraints.start_slope, 1, "start slope"}, std::tuple{constraints.end_slope, dofs - 1, "end slope"}})
         if (slope) {
