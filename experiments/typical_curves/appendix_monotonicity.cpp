@@ -6,6 +6,7 @@
 // (0, π)²; the endpoint-interpolating rules of A.2 and the whole-curve checker.
 // Data (ours; the paper gives none): angle grids as stated; for the checker, the scale-1 typical
 // polygons of Fig. 1 (α = −0.5, L = 1, degrees 24, 49, 99) and 200 random unit-edge polygons.
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -189,6 +190,7 @@ int main(int argc, char** argv) {
         std::vector<std::string> header;
         for (int j = 0; j < m; ++j) header.push_back("theta1_" + format_number(90.0 * j / (m - 1), 6));
         CsvWriter codes = run.table("fig7_regions.csv", header);
+        std::array<long, 6> cells{};  // grid cells per class, for the caption
         for (int i = 0; i < m; ++i) {
             std::vector<std::string> line;
             for (int j = 0; j < m; ++j) {
@@ -201,14 +203,22 @@ int main(int argc, char** argv) {
                                 : r.exact == analysis::Trend::increasing ? 5
                                                                          : 0;
                 line.push_back(std::to_string(cls));
+                ++cells[static_cast<std::size_t>(cls)];
             }
             codes.row_text(line);
         }
         CsvWriter bound = run.table("fig7_bound.csv", {"theta0_deg", "theta1_bound_deg"});
         for (int i = 0; i <= 90; ++i) bound.row({static_cast<double>(i), theta1_bound(half_pi * i / 90) * 180 / std::numbers::pi});
-        run.figure("fig7_regions",
-                   "Fig. 7 redrawn as regions of the unit polygon's (θ0, θ1) ∈ [0°, 90°]²: where (29) holds (then every C_i < 0), where every C_i < 0 without (29), where the "
-                   "curvature is monotone only by the exact sign of dκ/dt, and where it is not monotone; the line is eq (30).");
+        // The caption says how many of the grid's cells each class has, and which classes are empty.
+        const std::array<const char*, 6> names{"not monotone", "monotone only by the exact sign of dκ/dt", "every C_i < 0 without (29)", "(29) holds (then every C_i < 0)",
+                                               "(29) holds but some C_i ≥ 0", "κ increasing (the mirrored case)"};
+        std::string shown, empty;
+        for (std::size_t k = 0; k < cells.size(); ++k) {
+            std::string& to = cells[k] > 0 ? shown : empty;
+            to += (to.empty() ? "" : "; ") + std::string(names[k]) + (cells[k] > 0 ? " (" + std::to_string(cells[k]) + " cells)" : "");
+        }
+        run.figure("fig7_regions", "Fig. 7 redrawn as regions of the unit polygon's (θ0, θ1) ∈ [0°, 90°]² on a " + std::to_string(m) + " × " + std::to_string(m) +
+                                       " grid: " + shown + "; the line is eq (30). Empty on this grid (in the legend, marked so): " + (empty.empty() ? "none" : empty) + ".");
     }
 
     // ---- A.2: endpoint-interpolating cubic B-splines.

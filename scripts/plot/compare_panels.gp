@@ -131,12 +131,15 @@ do for [t in formats] {
   unset key
   set output datadir.'/'.prefix.'curvature.'.t
   set size noratio
-  set multiplot layout rows,cols title heading.': curvature κ against arc length s' noenhanced
+  set multiplot layout rows,cols title heading.': curvature κ against arc length s (each panel on its own κ scale: its range is in its title)' noenhanced
   do for [i=1:n] {
     set title word(names, i) noenhanced
     set xlabel 's'
     set ylabel 'κ'
     if (int(word(kappa_count, i)) > 0) {
+      set autoscale xy   # (stats keeps to the ranges set before)
+      stats f_kappa skip 1 every ::first(kappa_first, i)::last(kappa_first, kappa_count, i) using kk nooutput
+      set title sprintf('%s: κ from %.4g to %.4g', word(names, i), STATS_min, STATS_max) noenhanced
       plot f_kappa skip 1 every ::first(kappa_first, i)::last(kappa_first, kappa_count, i) using ks:kk with lines lw 1.2 lc rgb '#d62728'
     } else {
       set label 1 'no curvature: '.status(i).' (see the table)' at graph 0.5, graph 0.5 center noenhanced
@@ -155,12 +158,15 @@ do for [t in formats] {
   unset key
   set output datadir.'/'.prefix.'torsion.'.t
   set size noratio
-  set multiplot layout rows,cols title heading.': torsion τ against arc length s' noenhanced
+  set multiplot layout rows,cols title heading.': torsion τ against arc length s (each panel on its own τ scale: its range is in its title)' noenhanced
   do for [i=1:n] {
     set title word(names, i) noenhanced
     set xlabel 's'
     set ylabel 'τ'
     if (int(word(kappa_count, i)) > 0) {
+      set autoscale xy
+      stats f_kappa skip 1 every ::first(kappa_first, i)::last(kappa_first, kappa_count, i) using kt nooutput
+      set title sprintf('%s: τ from %.4g to %.4g', word(names, i), STATS_min, STATS_max) noenhanced
       plot f_kappa skip 1 every ::first(kappa_first, i)::last(kappa_first, kappa_count, i) using ks:kt with lines lw 1.2 lc rgb '#2ca02c'
     } else {
       set label 1 'no torsion: '.status(i).' (see the table)' at graph 0.5, graph 0.5 center noenhanced

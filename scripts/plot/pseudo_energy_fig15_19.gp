@@ -17,7 +17,7 @@ last(m, a) = first(m, a) + block + 1
 do for [t in "png svg"] {
   if (t eq "png") { set terminal pngcairo size 2000,800 enhanced font 'DejaVu Sans,11' } else { set terminal svg size 2000,800 enhanced font 'DejaVu Sans,11' }
   set output datadir.'/fig15_19.'.t
-  set multiplot layout 2,5 title 'Figs. 15–19 — Table 2 (spike) data, y_4 = a for a = 0..5 (colour = a)'
+  set multiplot layout 2,5 title 'Figs. 15–19 — Table 2 (spike) data, y_4 = a for a = 0..5 (colour = a); curves on one scale, each κ panel on its own scale, given in its title'
   do for [m=1:5] {
     set title word(titles, m)
     set xlabel 'x'
@@ -28,9 +28,10 @@ do for [t in "png svg"] {
     plot for [a=0:5] f every ::(first(m, a))::(last(m, a)) u ($1==m && $2==a ? $4 : 1/0):($1==m && $2==a ? $5 : 1/0):(a) w l lw 2 lc palette, \
          for [a=0:5] f every ::(first(m, a))::(last(m, a)) u ($1==m && $2==a && $3==int($3) ? $4 : 1/0):($1==m && $2==a && $3==int($3) ? $5 : 1/0) w p ls 5
   }
-  set autoscale y
   do for [m=1:5] {
-    set title 'curvature κ(s)'
+    set autoscale y   # (stats of one column keeps to the y range set before)
+    stats f u ($1==m ? $7 : 1/0) nooutput
+    set title sprintf('curvature κ(s), from %.3g to %.3g', STATS_min, STATS_max)
     set xlabel 'arc length s'
     set ylabel 'κ'
     unset key
