@@ -19,6 +19,7 @@
 // options) writes DIR from the N parts, byte for byte what one whole run writes. cagd_benchmark_mpi
 // does both on MPI ranks. The plan's options are defined in benchmark_options.cpp for both.
 #include <filesystem>
+#include <system_error>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -89,12 +90,21 @@ int run_benchmark(const BenchmarkArgs& a) {
     std::vector<std::pair<std::string, std::string>> parts;
     for (const std::string& path : a.merge) parts.emplace_back(path, read_part(path));
     OutputDirectory out(a.out);  // checked before the work
+    // --timing-out is checked before the work too, except inside the --out directory, which exists
+    // only once the results are committed (docs/benchmark.md's DIR/random_sets_seconds.csv).
     std::optional<OutputFile> timing;
-    if (!a.timing_out.empty()) timing.emplace(a.timing_out, "--timing-out");  // checked before the work too
+    const auto directory = [](const std::filesystem::path& p) {
+        std::error_code ec;
+        std::filesystem::path c = std::filesystem::weakly_canonical(std::filesystem::absolute(p), ec);
+        return c.has_filename() ? c : c.parent_path();
+    };
+    const bool inside_out = !a.timing_out.empty() && directory(std::filesystem::path(a.timing_out).parent_path().empty() ? "." : std::filesystem::path(a.timing_out).parent_path()) == directory(a.out);
+    if (!a.timing_out.empty() && !inside_out) timing.emplace(a.timing_out, "--timing-out");
     if (progress_enabled() && parts.empty()) std::cerr << "cagd benchmark: " << plan.truth.sizes.size() << " sizes, " << plan.classic.size() << " classic data sets, " << plan.random.sets << " random sets per kind and size\n";
     const compare::BenchmarkResults results = parts.empty() ? compare::run_benchmark(plan, {}, a.plan.threads) : compare::merge_benchmark_parts(plan, parts);
     stage_benchmark_files(out, compare::benchmark_files(plan, results));
     out.commit();
+    if (inside_out) timing.emplace(a.timing_out, "--timing-out");
     if (timing) {
         timing->stream() << compare::benchmark_timing_csv(results);
         timing->commit();
