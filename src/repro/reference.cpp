@@ -99,16 +99,25 @@ Reference load_reference(const std::string& path) {
     return ref;
 }
 
-std::vector<std::string> load_erratum_ids(const std::string& errata_path) {
+std::vector<Erratum> load_errata(const std::string& errata_path) {
     std::ifstream in(errata_path);
-    if (!in) fail_input("cagd::repro::load_erratum_ids", "cannot read '" + errata_path + "'");
-    std::vector<std::string> ids;
+    if (!in) fail_input("cagd::repro::load_errata", "cannot read '" + errata_path + "'");
+    std::vector<Erratum> errata;
     std::string line;
+    const std::string dash = " — ";
     while (std::getline(in, line)) {
         if (line.rfind("## ", 0) != 0) continue;
         const auto end = line.find_first_of(" \t:", 3);
-        ids.push_back(line.substr(3, end == std::string::npos ? std::string::npos : end - 3));
+        Erratum e{line.substr(3, end == std::string::npos ? std::string::npos : end - 3), ""};
+        if (const auto d = line.find(dash); d != std::string::npos) e.title = line.substr(d + dash.size());
+        errata.push_back(std::move(e));
     }
+    return errata;
+}
+
+std::vector<std::string> load_erratum_ids(const std::string& errata_path) {
+    std::vector<std::string> ids;
+    for (Erratum& e : load_errata(errata_path)) ids.push_back(std::move(e.id));
     return ids;
 }
 

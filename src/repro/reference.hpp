@@ -47,7 +47,14 @@ struct Reference {
 // missing column, unparsable number, negative tolerance, duplicate id).
 Reference load_reference(const std::string& path);
 
-// The erratum ids defined in ERRATA.md: every heading line "## <id> …".
+// An entry of ERRATA.md: its heading "## <id> — <what is wrong>".
+struct Erratum {
+    std::string id;
+    std::string title;  // after the dash; empty if the heading has none
+};
+// The entries of ERRATA.md, in file order.
+std::vector<Erratum> load_errata(const std::string& errata_path);
+// Their ids.
 std::vector<std::string> load_erratum_ids(const std::string& errata_path);
 
 }  // namespace cagd::repro

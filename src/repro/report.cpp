@@ -10,6 +10,7 @@
 #include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
 #include "cagd/core/output_file.hpp"
+#include "repro/reference.hpp"
 
 namespace cagd::repro {
 
@@ -179,6 +180,10 @@ int write_report(const std::string& root) {
     std::ostringstream body, summary;
     summary << "| paper | claims | unconditional | reproduced | deviates | depends on a choice | failed | validations (passed / total) | claims of ours (hold / total) |\n"
                "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    // The digest: every claim that does not simply reproduce, one line each, grouped by paper.
+    std::map<std::string, std::string> erratum_titles;
+    for (const Erratum& e : load_errata((fs::path(root) / "reference" / "ERRATA.md").string())) erratum_titles[e.id] = e.title;
+    std::ostringstream digest;
     int total_n = 0, total_rep = 0, total_dev = 0, total_dep = 0, total_fail = 0, total_val = 0, total_val_ok = 0, total_ours = 0, total_ours_ok = 0;
     for (const auto& [paper, title] : kPapers) {
         const fs::path dir = results / paper;
@@ -195,6 +200,7 @@ int write_report(const std::string& root) {
         std::stable_sort(arts.begin(), arts.end(), [](const Artifact& x, const Artifact& y) { return std::make_pair(x.section, x.name) < std::make_pair(y.section, y.name); });
         int n = 0, rep = 0, dev = 0, dep = 0, fail = 0, val = 0, val_ok = 0, ours = 0, ours_ok = 0;
         body << "\n<a id=\"" << paper << "\"></a>\n\n## `" << paper << "` — " << title << "\n";
+        std::ostringstream paper_digest;
         for (const auto& a : arts) {
             body << "\n### " << a.title << " (`" << a.name << "`)\n\n";
             body << "Paper: " << a.section << ". Reference: [`" << a.reference << "`](../" << a.reference << "). Experiment: [`" << a.experiment << "`](../" << a.experiment
@@ -236,6 +242,16 @@ int write_report(const std::string& root) {
                         shown += std::string(status == "depends" ? " — ours ∈ " : " — unconditional: ours ∈ ") + r["ours_range"] + " over " + md(r["choices"]);
                     body << "| `" << r["id"].substr(paper.size() + 1) << "` | " << md(r["description"]) << " | " << md(r["paper_value"]) << " | " << r["ours"] << " | "
                          << r["abs_diff"] << " | " << r["tolerance"] << " | " << shown << " |\n";
+                    if (status != "reproduced") {
+                        paper_digest << "- `" << r["id"].substr(paper.size() + 1) << "` (" << a.name << "): printed " << md(r["paper_value"]) << ", ours " << r["ours"] << " — "
+                                     << (status == "deviates" ? "deviates" : "**" + status + "**");
+                        if (!r["erratum"].empty()) {
+                            const auto t = erratum_titles.find(r["erratum"]);
+                            paper_digest << ", [" << r["erratum"] << "](../reference/ERRATA.md#" << anchor(r["erratum"]) << ")";
+                            if (t != erratum_titles.end() && !t->second.empty()) paper_digest << ": " << md(t->second);
+                        }
+                        paper_digest << "\n";
+                    }
                 } else {
                     ++val;
                     val_ok += status == "reproduced";
@@ -278,6 +294,7 @@ int write_report(const std::string& root) {
                 body << "; script: [`" << script << "`](../" << script << ")\n";
             }
         }
+        if (!paper_digest.str().empty()) digest << "\n**[`" << paper << "`](#" << paper << ")** — " << dev + dep + fail << " of " << n << " claims:\n\n" << paper_digest.str();
         summary << "| [`" << paper << "`](#" << paper << ") | " << n << " | " << rep + dev << " | " << rep << " | " << dev << " | " << dep << " | " << fail << " | " << val_ok
                 << " / " << val << " | " << ours_ok << " / " << ours << " |\n";
         total_n += n, total_rep += rep, total_dev += dev, total_dep += dep, total_fail += fail, total_val += val, total_val_ok += val_ok, total_ours += ours,
@@ -310,7 +327,11 @@ int write_report(const std::string& root) {
               "are counted apart from the paper's claims (last column; `origin` = ours in claims.csv), and say\n"
               "whether they were written before or after a first measurement.\n\n"
               "## Summary\n\n"
-           << summary.str() << body.str() << benchmark_section(results);
+           << summary.str()
+           << "\n## Which published results do not hold\n\n"
+              "Every claim that is not reproduced, one line each: the paper's printed value, ours, the status and the erratum\n"
+              "that shows why (what is wrong, in its heading's words). The tables below give each claim's tolerance and source.\n"
+           << digest.str() << body.str() << benchmark_section(results);
     claims_file.commit();
     report_file.commit();
     return failed;

@@ -2,9 +2,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <string>
 
 #include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
@@ -116,6 +119,22 @@ TEST(Repro, EveryReferenceFileOfTheRepositoryLoads) {
         }
     EXPECT_GT(files, 0);
     EXPECT_FALSE(load_erratum_ids(std::string(CAGD_SOURCE_DIR) + "/reference/ERRATA.md").empty());
+}
+
+TEST(Repro, EveryErratumHeadingSaysWhatIsWrongAndKeepsItsAnchor) {
+    // "## <id> — <what is wrong>", after an explicit anchor <a id="<id in lower case>">, so that the
+    // report's links (ERRATA.md#<id>) do not depend on the heading's words.
+    const std::string path = std::string(CAGD_SOURCE_DIR) + "/reference/ERRATA.md";
+    const std::vector<Erratum> errata = load_errata(path);
+    ASSERT_GT(errata.size(), 30u);
+    std::ifstream in(path);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    for (const Erratum& e : errata) {
+        EXPECT_GE(e.title.size(), 20u) << e.id << ": the heading says what is wrong, not only the id";
+        std::string lower = e.id;
+        for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        EXPECT_NE(text.find("<a id=\"" + lower + "\"></a>\n\n## " + e.id + " — "), std::string::npos) << e.id;
+    }
 }
 
 TEST(Repro, NumberFormattingIsStable) {
