@@ -264,7 +264,7 @@
     ctx.lineJoin = 'round';
     if (r) {
       for (const m of r.results) {
-        if (m.status !== 'ok' && m.status !== 'cusp') continue;
+        if (m.status !== 'ok' && m.status !== 'cusp' && m.status !== 'loops') continue;  // a flagged loop is drawn, its note says why
         const n = m.curve.length / 2;
         if (s.comb && m.comb.length) {
           ctx.strokeStyle = colour(m.name, 0.35);
