@@ -260,7 +260,7 @@ val compare(const val& request) {
         out.set("figureSeconds", std::chrono::duration<double>(drawn - compared).count());
         return out;
     } catch (const std::exception& e) {
-        return failure(cagd::one_line(e.what()));
+        return failure(cagd::in_user_terms(cagd::one_line(e.what())));
     }
 }
 
@@ -286,7 +286,7 @@ val export_curve(const val& request) {
         out.set("text", text.str());
         return out;
     } catch (const std::exception& e) {
-        return failure(cagd::one_line(e.what()));
+        return failure(cagd::in_user_terms(cagd::one_line(e.what())));
     }
 }
 
@@ -308,7 +308,7 @@ val read_points(const std::string& text, const std::string& source) {
         out.set("points", points);
         return out;
     } catch (const std::exception& e) {
-        return failure(cagd::one_line(e.what()));
+        return failure(cagd::in_user_terms(cagd::one_line(e.what())));
     }
 }
 

@@ -274,7 +274,8 @@ test('bad points are answered with a message naming them', async () => {
   });
   assert.match(r.csv, /pasted points:3/);
   assert.equal(r.same.ok, false);
-  assert.match(r.same.message, /points 0 and 1 coincide/);
+  assert.match(r.same.message, /point 1 \(row 0\) and point 2 \(row 1\) coincide/);
+  for (const m of [r.same, r.unknown, r.parameter, r.format, r.odd]) assert.doesNotMatch(m.message, /::/, 'no C++ qualified name reaches the user');
   assert.match(r.unknown.message, /unknown method 'no-such-method'/);
   assert.match(r.parameter.message, /-4/);
   assert.match(r.format.message, /pdf/);
