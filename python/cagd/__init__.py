@@ -202,7 +202,8 @@ def compare(points: _npt.ArrayLike, closed: bool = False, methods: Union[None, s
     """Every method (or the named configurations) on the same planar or space points, measured as
     by ``cagd compare``: a dict of arrays, one entry per configuration (``methods``: a list of
     names, or one name). ``method``, ``status`` ("ok", "not applicable", "refused", "no result",
-    "cusp", "failed": a defect of the method, its message the note) and ``note`` are lists of str; each measure
+    "cusp", "loops": a closed curve measured but flagged, its turning number or length beside its
+    polygon's in the note, "failed": a defect of the method, its message the note) and ``note`` are lists of str; each measure
     (length, area, pseudo_energy, bending_energy, curvature_sign_changes, max_abs_curvature,
     max_abs_curvature_derivative, overshoot, spans, locality_footprint, seconds, max_abs_torsion,
     shared_seconds) is a ``numpy.ma.MaskedArray``, masked where the measure does not exist (method
