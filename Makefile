@@ -90,6 +90,7 @@ benchmark:
 	@cmake -S . -B $(BUILD) $(call generator_for,$(BUILD)) $(CMAKE_FLAGS) $(REPRODUCE_ON) >/dev/null
 	@cmake --build $(BUILD) -j$(JOBS) --target cagd_cli
 	@mkdir -p results/timing
+	@echo "make benchmark: truths, classic data and random sets into results/benchmark/ ..."
 	@$(TABLE_CACHE) $(BUILD)/cagd benchmark --out results/benchmark --classic reference/benchmark/classic_data.csv --timing-out results/timing/benchmark_random_sets.csv --quiet
 	@gnuplot -e "datadir='results/benchmark'" scripts/plot/benchmark_fig_convergence.gp
 

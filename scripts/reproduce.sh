@@ -43,8 +43,11 @@ run_one "$last" || status=1
 # (results/benchmark/; the random sets' run times in results/timing/, not compared); its figures are
 # rendered with the remaining scripts below.
 mkdir -p results/timing
+echo "reproduce: the interpolant benchmark (truths, classic data, random sets) into results/benchmark/ ..."
+started=$SECONDS
 "$build/cagd" benchmark --out results/benchmark --classic reference/benchmark/classic_data.csv --timing-out results/timing/benchmark_random_sets.csv --quiet ||
   { echo "reproduce: cagd benchmark failed" >&2; status=1; }
+echo "reproduce: the interpolant benchmark took $((SECONDS - started)) s"
 # Any figure script no experiment named (style.gp and compare_panels.gp are loaded by the figure
 # scripts, not figures themselves), $JOBS gnuplot processes at a time.
 # (grep -v selects nothing when every figure was rendered: that is not a failure.)

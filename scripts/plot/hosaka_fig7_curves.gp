@@ -6,7 +6,7 @@ set key autotitle columnheader
 do for [t in "png svg"] {
   if (t eq "png") { set terminal pngcairo size 900,600 enhanced font 'DejaVu Sans,11' } else { set terminal svg size 900,600 enhanced font 'DejaVu Sans,11' }
   set output datadir.'/fig7_curves.'.t
-  set title 'Hosaka Fig. 7: smoothing by an elastic line (eq 50-52)'
+  set title 'Hosaka Fig. 7: smoothing by an elastic line (eq 50-52); a graph y(x), axes not to scale'
   set xlabel 'x'
   set ylabel 'y'
   set key bottom left

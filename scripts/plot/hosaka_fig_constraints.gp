@@ -5,7 +5,7 @@ p = datadir.'/fig7_points.csv'
 do for [t in "png svg"] {
   if (t eq "png") { set terminal pngcairo size 900,600 enhanced font 'DejaVu Sans,11' } else { set terminal svg size 900,600 enhanced font 'DejaVu Sans,11' }
   set output datadir.'/fig_constraints.'.t
-  set title 'Elastic line (λ = 0.1) with constraints by Lagrange multipliers'
+  set title 'Elastic line (λ = 0.1) with constraints by Lagrange multipliers; a graph y(x), axes not to scale'
   set xlabel 'x'
   set ylabel 'y'
   set key bottom left

@@ -8,9 +8,11 @@ do for [t in "png svg"] {
   set xlabel 'x'
   set ylabel 'y'
   set title 'curves'
-  set key bottom center
+  set key top right
+  set size ratio -1
   plot for [m=1:3] f u ($1==m ? $3 : 1/0):($1==m ? $4 : 1/0) w l ls m t sprintf('m = %d (C%d)', m, 2*m), \
        f u ($1==1 && $2==int($2) ? $3 : 1/0):($1==1 && $2==int($2) ? $4 : 1/0) w p ls 5 t 'data'
+  set size noratio
   set title 'curvature along the parameter'
   set xlabel 'u (segment index + t)'
   set ylabel 'κ'

@@ -12,15 +12,19 @@ do for [t in "png svg"] {
     set xlabel 'x'
     set ylabel 'y'
     set key top right
+    set size ratio -1
     plot f u ($1==d && $2==1 ? $4 : 1/0):($1==d && $2==1 ? $5 : 1/0) w l ls 1 t 'k_i of eq (19)', \
          f u ($1==d && $2==2 ? $4 : 1/0):($1==d && $2==2 ? $5 : 1/0) w l ls 2 t 'k_i = 1', \
          f u ($1==d && $2==1 && $3==int($3) ? $4 : 1/0):($1==d && $2==1 && $3==int($3) ? $5 : 1/0) w p ls 5 t 'data'
   }
   do for [d=1:2] {
-    set title 'curvature κ(s)'
+    set size noratio
+    set autoscale y   # (stats keeps to the y range set before)
+    stats f u ($1==d ? $7 : 1/0) nooutput
+    if (d == 1) { set yrange [-20:20]; set title sprintf('curvature κ(s), shown from -20 to 20 (it spans %.3g to %.3g)', STATS_min, STATS_max) } \
+    else { set title sprintf('curvature κ(s), from %.3g to %.3g (its own scale)', STATS_min, STATS_max) }
     set xlabel 'arc length s'
     set ylabel 'κ'
-    if (d == 1) { set yrange [-20:20] } else { set autoscale y }
     plot f u ($1==d && $2==1 ? $6 : 1/0):($1==d && $2==1 ? $7 : 1/0) w l ls 1 t 'k_i of eq (19)', \
          f u ($1==d && $2==2 ? $6 : 1/0):($1==d && $2==2 ? $7 : 1/0) w l ls 2 t 'k_i = 1 (clipped at ±20)'
   }

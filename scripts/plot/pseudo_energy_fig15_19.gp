@@ -23,11 +23,13 @@ do for [t in "png svg"] {
     set xlabel 'x'
     set ylabel 'y'
     set yrange [-1.5:6.5]
+    set size ratio -1
     unset key
     unset colorbox
     plot for [a=0:5] f every ::(first(m, a))::(last(m, a)) u ($1==m && $2==a ? $4 : 1/0):($1==m && $2==a ? $5 : 1/0):(a) w l lw 2 lc palette, \
          for [a=0:5] f every ::(first(m, a))::(last(m, a)) u ($1==m && $2==a && $3==int($3) ? $4 : 1/0):($1==m && $2==a && $3==int($3) ? $5 : 1/0) w p ls 5
   }
+  set size noratio
   do for [m=1:5] {
     set autoscale y   # (stats of one column keeps to the y range set before)
     stats f u ($1==m ? $7 : 1/0) nooutput

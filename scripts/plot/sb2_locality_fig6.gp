@@ -3,6 +3,7 @@ f = datadir.'/fig6.csv'
 set title 'Fig. 6 — close-up of a convex span: S-spline (solid) and B2-spline (dashed)'
 set xlabel 'x'
 set ylabel 'y'
+set size ratio -1
 do for [t in "png svg"] {
   if (t eq "png") { eval png_terminal } else { eval svg_terminal }
   set output datadir.'/fig6.'.t

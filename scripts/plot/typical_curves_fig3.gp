@@ -25,7 +25,7 @@ do for [t in "png svg"] {
   do for [v=1:3] {
     cx = (v == 3 ? 4 : 3)
     cy = (v == 1 ? 4 : 5)
-    set title (v == 1 ? 'plan (x-y)' : (v == 2 ? 'front (x-z)' : 'side (y-z)'))
+    set title (v == 1 ? 'plan (x-y)' : (v == 2 ? 'front (x-z)' : 'side (y-z)')).', axes not to scale'
     set xlabel (v == 3 ? 'y' : 'x')
     set ylabel (v == 1 ? 'y' : 'z')
     plot c index 2 skip 1 u cx:cy w l ls 1 t 'Bézier curve', p index 2 skip 1 u (column(cx-1)):(column(cy-1)) w lp ls 5 t 'control polygon', \
