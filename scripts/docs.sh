@@ -9,6 +9,7 @@ command -v doxygen >/dev/null || { echo "docs: doxygen is not installed (scripts
 mkdir -p "$out"
 log="$out/warnings.log"
 cd "$root"
+echo "docs: Doxygen over the public headers into $out ..."
 { cat docs/Doxyfile; echo "OUTPUT_DIRECTORY = $out"; echo "WARN_LOGFILE = $log"; } | doxygen - >/dev/null
 if [ -s "$log" ]; then
   cat "$log" >&2
