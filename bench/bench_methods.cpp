@@ -22,8 +22,9 @@
 //    kept.
 //  - BM_RawBoost/<pchip|makima|catmull_rom>/1000000: the peers the boost-* methods wrap, used as a
 //    user would: chord-length parameters and one pchip (makima) per coordinate, or one centripetal
-//    catmull_rom over the points; target: each boost-* method within 1.5× of it, and hermite-a/b
-//    within 1.3× of raw pchip (median of 3); pchip also at 10^7.
+//    catmull_rom over the points; reported beside each boost-* method (no target: the peers read
+//    their slopes through Boost's prime), and target: hermite-a/b within 1.3× of raw pchip (median
+//    of 3); pchip also at 10^7.
 //  - BM_SpacePseudoSpline/100000: the registry's pseudo-spline on 3-D points (the spans from the
 //    cached space table, the table loaded outside the timing); target ≥ 10^5 points/s.
 //  - BM_Construct/curvature-profile/100000: one Newton solve; target ≤ 50× cubic-b at 10^5. Its

@@ -1,7 +1,7 @@
-// The Boost peers compute Boost's slopes by its rules in O(n), checked against Boost on sampled
-// blocks (methods/interpolant_forms.cpp): the curve must be the one a single Boost interpolator over
-// all the points gives, bit for bit: the derivatives at both ends of every span, on data that takes
-// every branch of the rules (zero secants, sign changes, flat coordinates, the ends, block edges).
+// The Boost peers read Boost's slopes through prime() (methods/boost_peers.hpp): the curve must be
+// the one a single Boost interpolator over all the points gives, bit for bit: the derivatives at
+// both ends of every span, on data that takes every branch of Boost's rules (zero secants, sign
+// changes, flat coordinates, the ends).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,7 +17,7 @@ using std::isnan;
 
 #include "cagd/core/errors.hpp"
 #include "cagd/core/random_walk.hpp"
-#include "cagd/methods/interpolant_forms.hpp"
+#include "cagd/methods/boost_peers.hpp"
 #include "cagd/methods/method_registry.hpp"
 #include "cagd/spline/hermite_spline.hpp"
 
@@ -124,30 +124,6 @@ TEST(BoostPeers, CatmullRomSlopesAreBoostsOverAllPointsBitForBit) {
             else
                 expect_boost_catmull_rom_bit_for_bit<3>(name, p, closed, *r.interpolant);
         }
-}
-
-// The curves above would be Boost's even with a wrong rule (the construction falls back); the rules
-// themselves must give Boost's slopes at every node, or every construction pays for the fallback.
-TEST(BoostPeers, TheRulesAreBoostsAtEveryNodeWithoutFallingBack) {
-    for (const auto& [what, p] : data_sets()) {
-        EXPECT_TRUE(methods::detail::boost_rules_match_everywhere(p)) << what;
-        if (refused_by_boost_catmull_rom(what)) continue;
-        for (bool closed : {false, true})
-            EXPECT_TRUE(methods::detail::boost_catmull_rom_rule_matches_everywhere(p, closed)) << "catmull-rom, " << what << (closed ? ", closed" : ", open");
-    }
-}
-
-// Should the O(n) rule ever differ from Boost (another Boost, another rounding), the sampled check
-// must notice and every slope come from Boost: a rule spoilt by one ulp still gives Boost's curve.
-TEST(BoostPeers, ASpoiltRuleFallsBackToBoostsSlopes) {
-    for (long n : {6L, 1500L}) {
-        const PointList p = random_walk(n, 5, 0.1, 2.0, 1.0);
-        expect_boost_curve_bit_for_bit<boost::math::interpolators::pchip<std::vector<double>>>("spoilt pchip rule, n " + std::to_string(n), p,
-                                                                                               methods::detail::boost_pchip_interpolant_with_a_spoilt_rule(p));
-        for (bool closed : {false, true})
-            expect_boost_catmull_rom_bit_for_bit<2>("spoilt catmull-rom rule, n " + std::to_string(n), p, closed,
-                                                    methods::detail::boost_catmull_rom_interpolant_with_a_spoilt_rule(p, closed));
-    }
 }
 
 TEST(BoostPeers, FewerThanFourPointsAreRefusedByName) {

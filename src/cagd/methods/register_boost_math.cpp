@@ -1,5 +1,6 @@
 // Boost.Math's interpolants as peers: pchip and makima per coordinate over chord length, and the
 // centripetal Catmull-Rom spline, converted exactly into the piecewise Hermite form.
+#include "cagd/methods/boost_peers.hpp"
 #include "cagd/methods/detail/registration.hpp"
 
 namespace cagd::methods::detail {

@@ -52,38 +52,6 @@ PiecewiseHermiteCurve PiecewiseHermiteCurve::from_node_slopes(Eigen::MatrixXd no
     return c;
 }
 
-PiecewiseHermiteCurve PiecewiseHermiteCurve::from_points_and_slope_blocks(const PointList& points, bool closed, const SlopeBlockFill& fill, std::vector<double> scales) {
-    const char* who = "PiecewiseHermiteCurve::from_points_and_slope_blocks";
-    const Eigen::Index n = points.rows(), dim = points.cols(), spans = closed ? n : n - 1;
-    if (spans < 1 || n < 2) fail_input(who, "needs at least one span");
-    if (dim < 1 || dim > 3) fail_input(who, "needs points of 1 to 3 coordinates, got " + std::to_string(dim));
-    require_span_scales(who, scales, spans);
-    PiecewiseHermiteCurve c;
-    c.nodes_.resize(spans + 1, dim);
-    c.slopes_.resize(spans + 1, dim);  // closed: row K = row 0, set below
-    double* columns[3] = {nullptr, nullptr, nullptr};
-    for (Eigen::Index k = 0; k < dim; ++k) columns[k] = c.slopes_.col(k).data();
-    // A block of nodes and slopes: 2 × 3 × 2048 doubles at most, 96 KB, in L2 while it is checked.
-    constexpr Eigen::Index kBlock = 2048;
-    for (Eigen::Index a = 0; a < n; a += kBlock) {
-        const Eigen::Index rows = std::min(kBlock, n - a);
-        fill(a, a + rows, columns);  // first: a fill that reads the block's points leaves them in cache for the copy
-        c.nodes_.middleRows(a, rows) = points.middleRows(a, rows);
-        for (Eigen::Index k = 0; k < dim; ++k)
-            if (!all_finite(c.nodes_.col(k).data() + a, static_cast<std::size_t>(rows)) || !all_finite(columns[k] + a, static_cast<std::size_t>(rows)))
-                for (Eigen::Index i = a; i < a + rows; ++i)  // the culprit, for the message
-                    if (!std::isfinite(c.nodes_(i, k)) || !std::isfinite(columns[k][i]))
-                        fail_input(who, "nodes and slopes must be finite; node " + std::to_string(i) + " coordinate " + std::to_string(k) + " is " +
-                                            full_precision(c.nodes_(i, k)) + " with slope " + full_precision(columns[k][i]));
-    }
-    if (closed) {
-        c.nodes_.row(n) = c.nodes_.row(0);
-        c.slopes_.row(n) = c.slopes_.row(0);
-    }
-    c.scales_ = std::move(scales);
-    return c;
-}
-
 namespace {
 // Span k's end derivatives, d0_k and d1_k, in either storage form (see the header): read from the
 // pairs, or formed from the slopes (K + 1 rows: a closed curve's row K repeats row 0) as m_k and
@@ -291,8 +259,7 @@ PiecewiseHermiteCurve cubic_spline_of_valid_points(const PointList& points, Para
     const int spans = static_cast<int>(nodes.rows()) - 1;
     const int dim = static_cast<int>(points.cols());
     // h_k: 1, or the chord |P_{k+1} − P_k| as core/points' chord_lengths forms it (the registry's
-    // node parameters are its running sum; the same bits as Eigen's norm of Δ_k, used until 2026-11-28).
-    // (Uniform: no array of ones, 8 bytes a point at the construction's peak.)
+    // node parameters are its running sum). Uniform: no array of ones.
     const bool uniform = spacing == ParameterSpacing::uniform;
     std::vector<double> chords = uniform ? std::vector<double>{} : chord_lengths(points, closed);
     const auto h = [&](int k) { return uniform ? 1.0 : chords[static_cast<std::size_t>(k)]; };

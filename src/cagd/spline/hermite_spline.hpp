@@ -45,7 +45,6 @@
 /// any closed curve. Hermite A: P_{i−1} = P_{i+1} (an exact reversal) leaves no direction and throws;
 /// Hermite B: a turn of exactly π at P_i (a, b antiparallel) likewise.
 #include <Eigen/Dense>
-#include <functional>
 #include <vector>
 
 #include "cagd/core/curve.hpp"
@@ -61,16 +60,6 @@ public:
     /// The slope form: nodes K+1 rows; slopes K+1 rows (closed: K rows, m_K = m_0); scales K values
     /// h_k, or none for h_k = 1. Span k has d0_k = h_k m_k, d1_k = h_k m_{k+1}.
     static PiecewiseHermiteCurve from_node_slopes(Eigen::MatrixXd nodes, Eigen::MatrixXd slopes, std::vector<double> scales);
-    /// Writes the slopes m_k of the nodes a ≤ k < b to columns[c][k], c < the points' dimension.
-    using SlopeBlockFill = std::function<void(Eigen::Index a, Eigen::Index b, double* const* columns)>;
-    /// The slope form through `points` (n rows; nodes P_0..P_{n−1}, closed: node K = n = node 0),
-    /// its n slopes written by `fill` in blocks of consecutive nodes, in order, and `scales` as for
-    /// from_node_slopes. The same curve as from_node_slopes(nodes, slopes, scales) with the same
-    /// values, and the same checks, made on each block of nodes and slopes as it is copied or
-    /// written, while it is in cache, instead of in passes over the whole arrays afterwards (at 10^6
-    /// points those passes read 32 MB, a tenth of a Catmull–Rom construction). Throws InvalidInput
-    /// (from the block where it is found) if a node or slope is not finite, like from_node_slopes.
-    static PiecewiseHermiteCurve from_points_and_slope_blocks(const PointList& points, bool closed, const SlopeBlockFill& fill, std::vector<double> scales);
 
     /// K.
     int spans() const { return static_cast<int>(nodes_.rows()) - 1; }

@@ -20,7 +20,6 @@
 
 #include "cagd/core/errors.hpp"
 #include "cagd/core/points.hpp"
-#include "cagd/methods/interpolant_forms.hpp"
 #include "cagd/methods/method_parameters.hpp"
 #include "cagd/methods/method_registry.hpp"
 
@@ -35,6 +34,14 @@ std::vector<Method> eigen_methods();
 std::vector<Method> opencascade_methods();  // empty in a library built without OpenCASCADE
 
 using P = ParameterType;
+
+// A curve whose data points sit at u = 0, 1, …, nodes − 1, with dτ/du per span: the form in which
+// the builders hand their curves to the registry.
+inline Interpolant unit_span_interpolant(std::shared_ptr<const Curve> curve, Eigen::Index nodes, std::vector<double> dtau_du) {
+    std::vector<double> u(static_cast<std::size_t>(nodes));
+    for (std::size_t i = 0; i < u.size(); ++i) u[i] = static_cast<double>(i);
+    return {std::move(curve), std::move(u), std::move(dtau_du)};
+}
 
 // Data points (closed: n + 1, the first repeated at the end).
 inline Eigen::Index node_count(const PointList& p, bool closed) { return closed ? p.rows() + 1 : p.rows(); }
