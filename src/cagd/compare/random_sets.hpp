@@ -36,8 +36,7 @@ struct RandomSetOptions {
     std::vector<int> sizes{8, 32, 128};  ///< numbers of points (each ≥ 3)
     /// Scattered sets only up to this many points (0: none). Beyond 32 nearly every scattered set
     /// defeats the two Newton methods (at 128 points: curvature-profile 93 %, Spiro 100 %), and
-    /// curvature-profile's dense Moore–Penrose fallback spends 0.2 s on each: 1000 sets of 128
-    /// points took 190 CPU-s of the 200 the whole run took.
+    /// curvature-profile's dense Moore–Penrose fallback on each failing set would dominate the run.
     int scatter_max_points = 32;
     int sets = 1000;                     ///< sets per kind and size (≥ 1)
     std::vector<std::string> methods;    ///< configuration or method names; empty: every configuration

@@ -22,8 +22,7 @@ constexpr int kNodesPerSpan = 16;
 // The leaderboard's shape table is for this many points.
 constexpr int kShapeTableSize = 24;
 // The interpolant's length: 20-point Gauss–Legendre on this many sub-pieces of every piece (the
-// tests hold it to adaptive Gauss–Kronrod; the adaptive rule itself took 6 s on one 768-point
-// degree-5 spline).
+// tests hold it to adaptive Gauss–Kronrod, which is too slow to run on every case).
 constexpr int kLengthPieces = 4;
 constexpr int kProjectionIterations = 30;
 // The observed order comes from the largest this many sizes: the smaller ones are before the

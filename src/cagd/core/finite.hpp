@@ -3,7 +3,7 @@
 /// Whether every value of a dense array is finite (no ±∞, no NaN): a test of the exponent bits by
 /// integer AND, ADD and OR over all values, which the compiler vectorises, with no early exit. Eigen's
 /// `allFinite()` forms x − x per value and stops at the first failure, which keeps it scalar; on
-/// the 10^6-point arrays a construction validates, this is several times faster.
+/// the 10^6-point arrays a construction validates, this vectorises.
 #include <Eigen/Core>
 #include <cstddef>
 #include <cstdint>

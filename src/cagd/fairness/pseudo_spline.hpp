@@ -63,8 +63,8 @@
 /// (J = 0, L = 1, S = 0); the table's (0, 0) node is undefined because r0, r1 are not determined there.
 ///
 /// Sources of J, θ1(θ), r0, r1, L, S: `TableOracle` (the lookup tables of pseudo_energy_table.hpp,
-/// the paper's method) or `ExactOracle` (the fast minimiser at the exact angles, no table: about
-/// 1 ms per span and 0.15 s per J(θ) value, for checking the tables).
+/// the paper's method) or `ExactOracle` (the fast minimiser at the exact angles, no table: slower,
+/// for checking the tables).
 ///
 /// Preconditions (InvalidInput): planar points, finite, no coincident consecutive points, at least
 /// 2 points open (2 points: the chord itself has no turn, both tangents along it) and 3 closed, no
@@ -192,8 +192,7 @@ PseudoSpline pseudo_spline(const PointList& points, const SegmentOracle& oracle,
 
 /// The curve and the three table sums alone: pseudo_spline(...).curve, .length_from_tables(),
 /// .area_from_tables() and .pseudo_energy_from_tables(), bit for bit, without the per-span records
-/// and per-point arrays (at 10^6 points those are ~90 MB of fresh memory, whose page faults were a
-/// quarter of the construction's time). What the method registry builds.
+/// and per-point arrays. What the method registry builds.
 struct PseudoSplineCurve {
     spline::PiecewiseHermiteCurve curve;  ///< the curve, in Hermite form on unit spans
     double length_from_tables = 0.0;  ///< eq (16)–(17)

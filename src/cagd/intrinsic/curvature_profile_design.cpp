@@ -707,8 +707,7 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
         if (options.step == NewtonStep::pseudo_inverse) {
             // The threshold before the decomposition: the Z factor is built for the rank the
             // threshold gives at compute time, and solve() applies it for the rank it gives then.
-            // Set afterwards (as before 2026-11-27), a lower rank made solve() apply Z reflectors
-            // never computed: uninitialised memory (valgrind), and rarely another Newton path.
+            // Set afterwards, a lower rank would make solve() apply Z reflectors never computed.
             Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod;
             cod.setThreshold(kRankThreshold);
             cod.compute(Eigen::MatrixXd(sys.jacobian));
@@ -847,11 +846,10 @@ CurvatureProfileSolution solve_curvature_profile_auto(const CurvatureProfileProb
 
 CurvatureProfileSolution solve_curvature_profile_auto(const CurvatureProfileProblem& problem, const Eigen::VectorXd& start, const NewtonOptions& options) {
     // The Moore–Penrose step forms the Jacobian densely: n² doubles and O(n³) work per iteration
-    // (2000 unknowns: 32 MB, seconds). Above that the sparse-LU outcome is the answer.
+    // Above 2000 unknowns the sparse-LU outcome is the answer.
     constexpr int kDenseFallbackUnknowns = 2000;
-    // Above this the LU step goes first. A whole solve from the C2 start, 4 iterations (open
-    // clothoid spline, one core): 60 unknowns 0.8 ms dense against 0.4 ms sparse LU; 100: 1.9 ms
-    // against 0.3 ms banded; 200 (100 points, a frame of the viewer): 9.2 ms against 0.7 ms.
+    // Above this the LU step goes first: from about 60 unknowns on, a sparse or banded LU solve
+    // costs less than the dense one.
     constexpr int kLuStepAboveUnknowns = 64;
     const int m = design_equations(problem), n = design_unknowns(problem);
     if (m == n && n > kLuStepAboveUnknowns) {

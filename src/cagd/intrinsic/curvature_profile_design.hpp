@@ -30,7 +30,7 @@
 /// sparse_lu solves square systems with Eigen's SparseLU instead (O(n) per iteration); NewtonStep::
 /// banded_lu with LAPACK's banded LU (numeric/banded_lu.hpp) on the band that ordering rows and
 /// unknowns by their place along the curve gives (open curves of degree 2: 4 sub- and 4
-/// superdiagonals; 10^5 points: 22 ms per factorisation against SparseLU's 265 ms), and with
+/// superdiagonals), and with
 /// SparseLU where that band is wide (a closed curve's closing rows join its ends) or the build has no
 /// LAPACK. Both are partial-pivoting LUs of the same J: the steps agree to rounding.
 /// Starting values (section 4): the chord-length parametric cubic C2 interpolant — span arc lengths
@@ -50,9 +50,8 @@
 /// that — the conditions are inconsistent (e.g. an arc span no arc with the given tangents joins);
 /// no_convergence when max_iterations pass, or when an iterate diverges: neighbouring de Boor
 /// ordinates B_i, B_{i+1} more than kMaxOrdinateTurning = 1000 rad apart (160 turns; the integrals
-/// of eq 3 would cost O(turning) per segment — found by fuzzing: a closed 6-point hairpin spent
-/// seconds on 50 such iterations). The message says what was tried, the residual, the rank, and the
-/// worst equation.
+/// of eq 3 would cost O(turning) per segment; found by fuzzing, on a closed 6-point hairpin). The
+/// message says what was tried, the residual, the rank, and the worst equation.
 /// Preconditions (InvalidInput): ≥ 2 points (closed: ≥ 3), finite, no coincident consecutive
 /// points (closed: last ≠ first); the layout's span count n matches the points; one shape per
 /// segment; linear_curvature only for p = 3; conditions name existing breakpoints and finite values
@@ -189,7 +188,7 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
 /// band is wide) for square systems of more than 64 unknowns (O(n) per iteration), the
 /// Moore–Penrose step otherwise or when the LU iteration
 /// fails (a singular or unconverged iteration) on at most 2000 unknowns. Above 2000 unknowns a failed
-/// LU iteration is returned as it is: the dense step would need n² doubles (10^5 points: 80 GB).
+/// LU iteration is returned as it is: the dense step would need n² doubles.
 void add_natural_open_ends(CurvatureProfileProblem& problem);
 /// The solve of the defaults above (the step chosen by size; the other options as given).
 CurvatureProfileSolution solve_curvature_profile_auto(const CurvatureProfileProblem& problem, const NewtonOptions& options = {});

@@ -186,7 +186,7 @@ private:
 };
 
 // v with `decimals` decimals, exactly rounded: printf's "%.*f", which std::to_chars(fixed, precision)
-// is specified to print (and does several times faster: 10^5 lengths took 25 ms through snprintf).
+// is specified to print.
 // The buffer holds any finite double's 309 integer digits and 17 decimals.
 std::string fixed(double v, int decimals) {
     char buf[400];

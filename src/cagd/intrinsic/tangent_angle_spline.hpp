@@ -17,8 +17,7 @@
 /// ordinates, ±1, give e^1.46 for p = 3 and e^2.36 for p = 4); Im ψ grows linearly with the turning,
 /// so on a piece of ≤ 3 rad it stays below e^{3·2.36} < 1200, and the Gauss error bound
 /// (64/15) M ρ^{−32}/(ρ² − 1) is < 2e−17 of the piece: the rule is exact to rounding (tested against
-/// adaptive Gauss–Kronrod). Until 2026-11-27 the pieces were of ≤ 1 rad: three times the sines and
-/// cosines for the same integrals (they agree to rounding).
+/// adaptive Gauss–Kronrod).
 ///
 /// Preconditions (InvalidInput): segment lengths finite and > 0, one per segment; de Boor ordinates
 /// finite, layout.ordinates() of them; s in [0, length()].

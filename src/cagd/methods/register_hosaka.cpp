@@ -8,8 +8,7 @@ namespace cagd::methods::detail {
 
 namespace {
 
-// Order 30 takes about 1.4 s on 6 points and order 50 about 10 s (2m unknowns per point):
-// 30 keeps a run within seconds.
+// 2m unknowns per point, and the cost grows fast with m: order 30 keeps a run within seconds.
 constexpr int kMaxHosakaOrder = 30;
 
 InterpolationResult build_hosaka(const ValidPoints& valid, const ParameterValues& v) {

@@ -12,7 +12,7 @@ namespace cagd::methods::detail {
 namespace {
 
 const fairness::PseudoSplineTables& default_pseudo_spline_tables() {
-    // The 36-node fast table: from the user's cache, built there once (about 0.2 s on two threads),
+    // The 36-node fast table: from the user's cache, built there once,
     // or in memory once per process when the cache is off.
     static const fairness::PseudoSplineTables tables =
         fairness::PseudoSplineTables::from(fairness::PseudoEnergyTable::user_cached({36, fairness::NodePlacement::periodic}, fairness::TableMethod::fast));
@@ -20,7 +20,7 @@ const fairness::PseudoSplineTables& default_pseudo_spline_tables() {
 }
 
 const fairness::SpacePseudoEnergyTable& default_space_table() {
-    // The 36 x 36 x 72 fast space table: from the user's cache, built there once (about 35 CPU-s).
+    // The 36 x 36 x 72 fast space table: from the user's cache, built there once.
     static const fairness::SpacePseudoEnergyTable table = fairness::SpacePseudoEnergyTable::user_cached({36, 72}, fairness::TableMethod::fast);
     return table;
 }
@@ -59,7 +59,7 @@ InterpolationResult build_pseudo_spline(const ValidPoints& valid, const Paramete
         v.has("table") ? make(fairness::PseudoSplineTables::from(fairness::PseudoEnergyTable::load(v.text("table")))) : make(default_pseudo_spline_tables());
     const std::vector<std::pair<std::string, double>> quantities = {
         {"length_from_tables", ps.length_from_tables}, {"area_from_tables", ps.area_from_tables}, {"pseudo_energy_from_tables", ps.pseudo_energy_from_tables}};
-    // The curve moves into the interpolant (a copy was 48 MB at 10^6 points).
+    // The curve moves into the interpolant (no copy).
     InterpolationResult r =
         result_of(unit_span_interpolant(std::make_shared<spline::PiecewiseHermiteCurve>(std::move(ps.curve)), node_count(points, closed), unit_lengths(points, closed)));
     r.quantities = quantities;

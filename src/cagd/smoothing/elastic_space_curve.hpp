@@ -25,8 +25,8 @@
 
 namespace cagd::smoothing {
 
-/// The most Hermite pieces one minimisation takes: Ceres holds about 4.4 KB per piece (its four
-/// quadrature residuals), so 2·10^4 pieces stay near 100 MB and ten seconds.
+/// The most Hermite pieces one minimisation takes: Ceres holds four quadrature residuals per piece,
+/// so memory and time grow with the pieces; 2·10^4 keeps one run within a desktop's means.
 inline constexpr long long kMaxSpaceCurvePieces = 20000;
 
 /// The minimiser as a Curve r(x) = (x, y(x), z(x)) (so analysis/ measures it), parameter x.

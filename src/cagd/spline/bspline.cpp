@@ -213,8 +213,8 @@ void basis_times_control(const BasisDerivatives& ders, const Eigen::MatrixXd& co
 
 double BSplineCurve::span_middle(int span) const { return 0.5 * (knots_[static_cast<std::size_t>(span)] + knots_[static_cast<std::size_t>(span) + 1]); }
 
-// Spans per block of the Taylor and knot-jet tables: a block of degree 3 in the plane holds 64 KB
-// of Taylor rows; 10^5 spans make 98 blocks, whose flags cost one more atomic load per lookup.
+// Spans per block of the Taylor and knot-jet tables: a block is built on first use, its flag one
+// atomic load per lookup.
 constexpr int kSpansPerTableBlock = 1024;
 
 template <class Fill>

@@ -13,8 +13,8 @@
 /// checks rely on it; tested). (A clamped end gives its control point to rounding, not exactly:
 /// A2.3 forms the end basis value 1 as r·(1/r).) They are computed once per span end with the Taylor
 /// coefficients (rows 0..p) and read from that table, so a jet at a knot costs what one off the
-/// knots does; orders above p at a knot run A2.3 itself. (A2.3 at every point, as before 2026-11-24, cost 3–4 times as much; the
-/// two agree to rounding, a few ε of the jet's terms.)
+/// knots does; orders above p at a knot run A2.3 itself. (The table and A2.3 agree to rounding, a
+/// few ε of the jet's terms.)
 /// Knot insertion: Boehm's algorithm (exact, convex combinations). Degree elevation:
 /// the elevated curve lies exactly in the spline space of degree p+1 whose knots are
 /// the old ones with every multiplicity raised by one; its control points are found by

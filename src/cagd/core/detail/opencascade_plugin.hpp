@@ -3,8 +3,8 @@
 // occt-interpolate peer, STEPControl_Writer for STEP export) live in a separate shared object,
 // libcagd_occt.so (src/occt_plugin/), which the library loads with dlopen the first time one of
 // them is needed. A program that never interpolates with OpenCASCADE nor writes STEP never loads
-// OpenCASCADE's fourteen shared libraries: they cost every process 30 ms at start-up (relocation and
-// static initialisation), two thirds of `cagd analyze` on 13 points.
+// OpenCASCADE's fourteen shared libraries, whose relocation and static initialisation every process
+// would otherwise pay at start-up.
 //
 // The plugin is searched for, first match wins (each must report kOpenCascadePluginInterface):
 //   1. the file named by the environment variable CAGD_OCCT_PLUGIN;
