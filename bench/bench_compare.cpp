@@ -7,6 +7,7 @@
 //    other 18 cost, the curvature-profile Newton above all.
 #include <benchmark/benchmark.h>
 
+#include "cagd/compare/comparison_figure.hpp"
 #include "cagd/compare/method_comparison.hpp"
 #include "cagd/core/random_walk.hpp"
 

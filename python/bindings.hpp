@@ -24,7 +24,7 @@
 #include "cagd/compare/method_comparison.hpp"
 #include "cagd/core/curve.hpp"
 #include "cagd/core/errors.hpp"
-#include "cagd/core/output_file.hpp"
+#include "cagd/io/output_file.hpp"
 #include "cagd/core/parallel.hpp"
 #include "cagd/export/curve_json.hpp"
 #include "cagd/fairness/pseudo_energy_minimum.hpp"

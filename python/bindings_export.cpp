@@ -5,6 +5,7 @@
 #include "cagd/export/bspline_form.hpp"
 #include "cagd/export/curve_formats.hpp"
 #include "cagd/export/surface_form.hpp"
+#include "cagd/methods/curve_provenance.hpp"
 
 namespace cagd_python {
 
@@ -288,7 +289,7 @@ void bind_export(py::module_& m) {
             o.comb = comb;
             cagd::exports::CurveProvenance provenance;
             if (c.provenance) provenance = *c.provenance;
-            else provenance.method = c.method;
+            else provenance = {.method = c.method, .registry = cagd::methods::registry_fingerprint()};
             cagd::OutputFile out(path, "path");  // the one atomic, checked writer
             cagd::Outcome written;
             {

@@ -1,5 +1,6 @@
 // methods/: the registry (cagd.methods) and interpolation by name (cagd.interpolate).
 #include "bindings.hpp"
+#include "cagd/methods/curve_provenance.hpp"
 
 namespace cagd_python {
 
@@ -98,8 +99,7 @@ Interpolation interpolate_result(const Array& points, const std::string& method,
         cagd::methods::ParameterText all = conf.values.as_text();
         for (const auto& [name, value] : text) all[name] = value;
         const cagd::methods::ParameterValues values = cagd::methods::parse_parameter_values(conf.method->name, conf.method->parameters, all);
-        out.curve->provenance = std::make_shared<const cagd::exports::CurveProvenance>(
-            cagd::exports::CurveProvenance{.method = conf.method->name, .parameters = values.as_text(), .parameter = conf.method->claims(values).parameter, .closed = closed, .points = p});
+        out.curve->provenance = std::make_shared<const cagd::exports::CurveProvenance>(cagd::methods::method_provenance(*conf.method, values, p, closed));
         out.dtau_du = r.interpolant->dtau_du;
     }
     return out;

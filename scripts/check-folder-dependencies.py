@@ -6,7 +6,9 @@ outside the library (docs/design.md, "Layers"):
   tracked file by its path (from src/, or from the including file's own folder);
 - no file under src/cagd/ includes the harness (src/repro/), the command (src/cli/), python/,
   bench/ or tests/, nor any header that is not the library's own;
-- no library folder includes, directly or through others, a folder that includes it (no cycle).
+- no library folder includes, directly or through others, a folder that includes it (no cycle);
+- each library folder includes only folders below it in LAYERS, the order docs/design.md draws
+  (a new folder must be given its place there).
 
 Prints each folder's dependencies and every violation; exit 1 if there is one.
 Usage: check-folder-dependencies.py [ROOT]
@@ -21,6 +23,21 @@ src = os.path.join(root, "src")
 library = os.path.join(src, "cagd")
 include = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.MULTILINE)
 problems = []
+
+# The layers, bottom first: a folder may include the folders of the layers below its own, never
+# one of its own layer or above. docs/design.md draws the same order.
+LAYERS = [
+    ["core"],
+    ["io", "numeric"],
+    ["spline"],
+    ["analysis", "fairness", "locality"],
+    ["intrinsic", "surface"],
+    ["aesthetic", "smoothing"],
+    ["export"],
+    ["methods"],
+    ["compare"],
+]
+layer_of = {folder: rank for rank, folders in enumerate(LAYERS) for folder in folders}
 
 # Headers the build generates (configure_file): found in the build tree, not in the source tree.
 generated = {"cli/compare_panels_script.hpp"}
@@ -67,6 +84,13 @@ def reaches(start, goal):
 
 for a, b in sorted({tuple(sorted((a, b))) for a in list(deps) for b in deps[a] if reaches(b, a)}):
     problems.append(f"cycle: src/cagd/{a} and src/cagd/{b} depend on each other")
+for folder in sorted(os.listdir(library)):
+    if os.path.isdir(os.path.join(library, folder)) and folder not in layer_of:
+        problems.append(f"src/cagd/{folder}/ has no place in LAYERS (scripts/check-folder-dependencies.py)")
+for a in sorted(deps):
+    for b in sorted(deps[a]):
+        if a in layer_of and b in layer_of and layer_of[b] >= layer_of[a]:
+            problems.append(f"src/cagd/{a} (layer {layer_of[a]}) includes src/cagd/{b} (layer {layer_of[b]}), not below it")
 for a in sorted(deps):
     print(f"{a} -> {', '.join(sorted(deps[a]))}")
 for p in problems:

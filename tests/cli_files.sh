@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The `cagd` command's file contract (docs/command.md). Writes (core/output_file.hpp): exit 0 only
+# The `cagd` command's file contract (docs/command.md). Writes (io/output_file.hpp): exit 0 only
 # when every byte arrived; a failed write is exit 1 with the old file kept; a bad place is exit 2
 # before any work; nothing outside the output changes and nothing is left behind, signals included.
 # Reads: lines of at most 1 MiB, subnormals are numbers, table files checked by their checksum and

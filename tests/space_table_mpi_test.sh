@@ -17,7 +17,7 @@ cmp "$dir/np3.txt" "$dir/np1.txt" || { echo "FAIL: 3 ranks differ"; exit 1; }
 [ "$(wc -l < "$dir/np2.txt")" -eq $((6 * 6 * 8 + 3)) ] || { echo "FAIL: row count (header, column names, one row per node, checksum)"; exit 1; }
 "$prog" --n-theta 1 --n-phi 8 --out "$dir/bad.txt" > "$dir/out" 2> "$dir/err"; code=$?
 [ "$code" -eq 2 ] && [ "$(wc -l < "$dir/err")" -eq 1 ] && [ ! -e "$dir/bad.txt" ] || { echo "FAIL: bad grid must exit 2 with one line (exit $code)"; cat "$dir/err"; exit 1; }
-# The output is the command's (core/output_file.hpp): - is standard output, a directory is refused
+# The output is the command's (io/output_file.hpp): - is standard output, a directory is refused
 # before the work with nothing left behind, a full device is exit 1.
 "$prog" --n-theta 6 --n-phi 8 --out - > "$dir/stdout.txt" 2> "$dir/err" || { echo "FAIL: --out -"; cat "$dir/err"; exit 1; }
 cmp "$dir/stdout.txt" "$dir/np1.txt" || { echo "FAIL: --out - differs from the file"; exit 1; }

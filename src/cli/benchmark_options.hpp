@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "cagd/compare/interpolant_benchmark.hpp"
-#include "cagd/core/output_file.hpp"
+#include "cagd/io/output_file.hpp"
 
 namespace cagd::cli {
 

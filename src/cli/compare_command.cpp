@@ -4,7 +4,7 @@
 // DIR/{points,curves,curvature,combs,methods}.csv, DIR/compare_panels.gp, and with gnuplot on the
 // PATH the figures DIR/{curves,combs,curvature}.png (space points: DIR/{curves,curvature,torsion}.png,
 // the curvature file holding τ too and combs.csv only its header). DIR is one output
-// (core/output_file.hpp, OutputDirectory): checked before the work, every file (figures included)
+// (io/output_file.hpp, OutputDirectory): checked before the work, every file (figures included)
 // made in a staging directory beside it and published together, or not at all.
 // Prints the Markdown table on stdout and one progress line per method on stderr.
 
@@ -22,12 +22,14 @@
 #include "cli/compare_panels_script.hpp"
 #include "cli/output.hpp"
 #include "cagd/compare/comparison_tables.hpp"
+#include "cagd/compare/comparison_figure.hpp"
 #include "cagd/compare/method_comparison.hpp"
 #include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
 #include "cagd/core/parallel.hpp"
 #include "cagd/core/point_csv.hpp"
 #include "cagd/export/curve_formats.hpp"
+#include "cagd/methods/curve_provenance.hpp"
 #include "cagd/methods/method_parameter_curve.hpp"
 
 namespace cagd::cli {
@@ -118,8 +120,7 @@ int run_compare(const CompareArgs& a) {
         if (!r.interpolant) continue;
         const methods::Configuration conf = methods::find_configuration(r.method);
         const methods::MethodParameterCurve curve(*r.interpolant);
-        const exports::CurveProvenance provenance{
-            .method = conf.method->name, .parameters = conf.values.as_text(), .parameter = conf.claims.parameter, .closed = a.closed, .points = points};
+        const exports::CurveProvenance provenance = methods::method_provenance(*conf.method, conf.values, points, a.closed);
         exports::ExportOptions export_options;
         export_options.points = true;
         export_options.comb = dimension == 2;

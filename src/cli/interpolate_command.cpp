@@ -15,6 +15,7 @@
 #include "cagd/core/errors.hpp"
 #include "cagd/core/point_csv.hpp"
 #include "cagd/export/curve_formats.hpp"
+#include "cagd/methods/curve_provenance.hpp"
 #include "cagd/methods/method_parameter_curve.hpp"
 #include "cagd/methods/method_registry.hpp"
 
@@ -50,7 +51,7 @@ int run_interpolate(const InterpolateArgs& a) {
     // The method's own parameter (t: chord length, arc length, … as the registry states), or the span index u.
     const methods::MethodParameterCurve in_method_parameter(*r.interpolant);
     const Curve& curve = a.parameter == "span" ? static_cast<const Curve&>(*r.interpolant->curve) : in_method_parameter;
-    exports::CurveProvenance provenance = exports::method_provenance(method, values, points, a.closed);
+    exports::CurveProvenance provenance = methods::method_provenance(method, values, points, a.closed);
     if (a.parameter == "span") provenance.parameter = "span index u";
     exports::ExportOptions options;
     options.approximation.relative_tolerance = a.tolerance;

@@ -5,14 +5,14 @@
 //           not representable (any non-finite value: it is never written out);
 //   exit 2  bad input or usage.
 // Every message is one line on stderr naming the file:line or the option and its value; every
-// exception is caught here. Output appears only after success (core/output_file.hpp: `-` and open
+// exception is caught here. Output appears only after success (io/output_file.hpp: `-` and open
 // descriptors written through, regular files replaced atomically, devices and pipes written
 // directly; a failed write is exit 1 and keeps the old file). INT, TERM, HUP and PIPE remove the
 // temporary files before the process ends by the signal. Sizes are checked
 // against their limits (in --help) before anything is allocated. Progress goes to stderr for long
 // work, only when stderr is a terminal and --quiet is not given. CMake defines CAGD_VERSION and
 // CAGD_REVISION (the git revision at configure time). Tables that take seconds to build come from
-// the user's cache (core/user_cache.hpp); building one prints one line (unless --quiet), and
+// the user's cache (io/user_cache.hpp); building one prints one line (unless --quiet), and
 // --no-cache (or CAGD_NO_CACHE=1) builds them in memory instead.
 #include <CLI/CLI.hpp>
 #include <iostream>

@@ -17,7 +17,7 @@
 #include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
 #include "cagd/core/point_csv.hpp"
-#include "cagd/core/user_cache.hpp"
+#include "cagd/io/user_cache.hpp"
 
 namespace cagd::cli {
 

@@ -1,6 +1,6 @@
 #pragma once
 // How the `cagd` command writes: through cagd::OutputFile and cagd::OutputDirectory
-// (core/output_file.hpp), which state the contract: `-`, /dev/stdout and open descriptors written
+// (io/output_file.hpp), which state the contract: `-`, /dev/stdout and open descriptors written
 // through, devices and pipes written in place, regular files replaced atomically, every write
 // checked (a failure is OutputError: exit 1, the old file kept), bad places found before any work.
 // CsvOutput is a CSV result of finite numbers: a non-finite value is a numerical outcome (NoResult,
@@ -14,7 +14,7 @@
 #include <utility>
 #include <vector>
 
-#include "cagd/core/output_file.hpp"
+#include "cagd/io/output_file.hpp"
 #include "cagd/core/points.hpp"
 #include "cagd/export/curve_formats.hpp"
 
@@ -85,7 +85,7 @@ PointList read_data_points(const std::string& path);
 bool progress_enabled();
 void set_quiet(bool on);
 bool quiet();  // --quiet was given
-// The user's table cache (core/user_cache.hpp) as the command uses it: off with --no-cache; one
+// The user's table cache (io/user_cache.hpp) as the command uses it: off with --no-cache; one
 // line on stderr when a table is built into it (unless --quiet), and its progress (as above).
 void set_up_table_cache(bool no_cache);
 

@@ -6,7 +6,7 @@
 #endif
 #include <unistd.h>
 
-#include "cagd/core/output_file.hpp"
+#include "cagd/io/output_file.hpp"
 #include "cagd/numeric/dense_blocking.hpp"
 
 namespace cagd::cli {

@@ -9,8 +9,8 @@
 #include <iostream>
 
 #include "cagd/core/errors.hpp"
-#include "cagd/core/file_lock.hpp"
-#include "cagd/core/output_file.hpp"
+#include "cagd/io/file_lock.hpp"
+#include "cagd/io/output_file.hpp"
 #include "cagd/numeric/dense_blocking.hpp"
 
 #ifndef CAGD_SOURCE_DIR

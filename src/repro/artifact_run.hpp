@@ -38,6 +38,7 @@
 #include <vector>
 
 #include "cagd/core/csv.hpp"
+#include "cagd/io/csv_writer.hpp"
 #include "repro/reference.hpp"
 
 namespace cagd::repro {

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "cagd/compare/comparison_figure.hpp"
 #include "cagd/analysis/curve_measures.hpp"
 #include "cagd/compare/comparison_tables.hpp"
 

@@ -9,7 +9,7 @@
 
 #include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
-#include "cagd/core/output_file.hpp"
+#include "cagd/io/output_file.hpp"
 #include "repro/reference.hpp"
 
 namespace cagd::repro {

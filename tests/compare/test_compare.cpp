@@ -22,6 +22,9 @@ using std::isnan;
 #include "cagd/analysis/curve_measures.hpp"
 #include "cagd/analysis/fairness_measures.hpp"
 #include "cagd/analysis/log_curvature_graph.hpp"
+#include "cagd/compare/comparison_figure.hpp"
+#include "cagd/compare/locality_footprint.hpp"
+#include "cagd/compare/comparison_tables.hpp"
 #include "cagd/compare/method_comparison.hpp"
 #include "cagd/core/parallel.hpp"
 #include "cagd/core/point_csv.hpp"
@@ -67,8 +70,6 @@ PointList random_points(std::mt19937_64& rng, int n, bool closed) {
     }
     return p;
 }
-
-double span_parameter(const Interpolant& a, std::size_t k, double f) { return a.node_parameters[k] + f * (a.node_parameters[k + 1] - a.node_parameters[k]); }
 
 // Relative difference of two vectors, measured against their size (and `floor`).
 double relative_gap(const Eigen::VectorXd& a, const Eigen::VectorXd& b, double floor) { return (a - b).norm() / std::max({a.norm(), b.norm(), floor}); }

@@ -25,7 +25,7 @@
 #include "cagd/compare/method_comparison.hpp"
 #include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
-#include "cagd/core/file_lock.hpp"
+#include "cagd/io/file_lock.hpp"
 #include "cagd/core/parallel.hpp"
 #include "cagd/core/point_csv.hpp"
 #include "cagd/core/random_walk.hpp"

@@ -12,6 +12,7 @@
 #include "cagd/export/curve_formats.hpp"
 #include "cagd/export/curve_json.hpp"
 #include "cagd/export/curve_samples.hpp"
+#include "cagd/methods/curve_provenance.hpp"
 #include "cagd/methods/method_parameter_curve.hpp"
 #include "cagd/methods/method_registry.hpp"
 #include "../support/messages.hpp"
@@ -198,14 +199,17 @@ TEST(CurveJson, ADocumentReadsBackBitForBit) {
     const methods::MethodParameterCurve c(*r.interpolant);
     const BezierForm f = to_bezier(c);
     std::stringstream s;
-    write_curve_json(s, f, {.method = "hosaka", .parameters = {{"m", "2"}}, .parameter = "chord length", .closed = false, .points = test::kNewberyGarrett});
+    const methods::Method& hosaka = methods::find_method("hosaka");
+    write_curve_json(s, f, methods::method_provenance(hosaka, methods::parse_parameter_values("hosaka", hosaka.parameters, {{"m", "2"}}), test::kNewberyGarrett, false));
     const CurveDocument d = read_curve_json(s, "memory");
     EXPECT_EQ(d.form.pieces.breaks, f.pieces.breaks);
     EXPECT_EQ(d.form.pieces.control, f.pieces.control);  // exact equality: shortest round-trip numbers
     EXPECT_EQ(d.form.pieces.degree, 5);
     EXPECT_EQ(d.provenance.points, test::kNewberyGarrett);
     EXPECT_EQ(d.provenance.parameters.at("m"), "2");
-    EXPECT_EQ(d.registry, registry_fingerprint());
+    EXPECT_EQ(d.provenance.parameter, "chord length");
+    EXPECT_EQ(d.provenance.registry, methods::registry_fingerprint());
+    EXPECT_EQ(d.provenance.registry.size(), 16u);
 }
 
 TEST(CurveJson, BadDocumentsAreRefusedNamingTheMember) {

@@ -13,7 +13,7 @@
 
 #include "cagd/core/checksum.hpp"
 #include "cagd/core/errors.hpp"
-#include "cagd/core/file_lock.hpp"
+#include "cagd/io/file_lock.hpp"
 #include "cagd/fairness/angle_minimum_table.hpp"
 #include "cagd/fairness/pseudo_energy_table.hpp"
 #include "cagd/fairness/space_pseudo_energy_table.hpp"

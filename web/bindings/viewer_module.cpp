@@ -28,12 +28,16 @@
 #include <string>
 #include <vector>
 
+#include "cagd/compare/comparison_figure.hpp"
+#include "cagd/compare/locality_footprint.hpp"
+#include "cagd/compare/comparison_tables.hpp"
 #include "cagd/compare/method_comparison.hpp"
 #include "cagd/core/errors.hpp"
 #include "cagd/core/point_csv.hpp"
 #include "cagd/core/points.hpp"
 #include "cagd/core/version.hpp"
 #include "cagd/export/curve_formats.hpp"
+#include "cagd/methods/curve_provenance.hpp"
 #include "cagd/methods/method_parameter_curve.hpp"
 #include "cagd/methods/method_registry.hpp"
 
@@ -274,7 +278,7 @@ val export_curve(const val& request) {
         if (!r.outcome.ok() || !r.interpolant) return failure(c.name + ": " + cagd::one_line(r.outcome.message));
         // As `cagd interpolate` writes it: the curve in the method's own parameter, with its provenance.
         const cagd::methods::MethodParameterCurve curve(*r.interpolant);
-        const cagd::exports::CurveProvenance provenance = cagd::exports::method_provenance(*c.method, c.values, points, closed);
+        const cagd::exports::CurveProvenance provenance = cagd::methods::method_provenance(*c.method, c.values, points, closed);
         cagd::exports::ExportOptions options;
         options.points = true;
         options.comb = flag(request, "comb");

@@ -16,10 +16,30 @@
 #include <string>
 #include <vector>
 
+#include "cagd/compare/comparison_figure.hpp"
 #include "cagd/compare/method_comparison.hpp"
 #include "cagd/core/points.hpp"
 
 namespace cagd::compare {
+
+/// The table: one row per method, numbers to `digits` significant digits, empty where undefined.
+/// With timing = false the seconds column is left out (deterministic output).
+/// `dimension` 3: the space columns (no area, no inflections, max_abs_torsion).
+std::vector<std::string> comparison_header(bool closed, bool timing, int dimension = 2);
+/// The table's rows, numbers to `digits` significant digits, empty where undefined.
+std::vector<std::vector<std::string>> comparison_rows(const std::vector<MethodComparison>& c, bool closed, bool timing, int digits = 8, int dimension = 2);
+/// The table in Markdown.
+std::string comparison_markdown(const std::vector<MethodComparison>& c, bool closed, bool timing, int digits = 6, int dimension = 2);
+
+/// The methods table of the figure data (methods.csv): index, method, and for each of curves,
+/// curvature and combs the first data row of that method (0-based after the header) and its row
+/// count; then comb_stride and comb_scale (0 for a method without a comb), and the status (as
+/// the measures table's, spaces written as '-': one word for the plot script). A method's rows are consecutive, so the plot script reads them with gnuplot's
+/// `every ::first::last`, which stops there — filtering whole files per panel costs methods² rows.
+std::vector<std::string> figure_methods_header();
+/// The rows of methods.csv.
+std::vector<std::vector<std::string>> figure_methods_rows(const std::vector<MethodComparison>& c, const FigureData& d);
+
 
 /// One file of a comparison folder: its name, header and rows.
 struct ComparisonTable {

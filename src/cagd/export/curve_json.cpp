@@ -5,15 +5,9 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "cagd/core/checksum.hpp"
 #include "cagd/core/version.hpp"
-#include "cagd/methods/method_registry.hpp"
 
 namespace cagd::exports {
-
-CurveProvenance method_provenance(const methods::Method& method, const methods::ParameterValues& values, const PointList& points, bool closed) {
-    return {.method = method.name, .parameters = values.as_text(), .parameter = method.claims(values).parameter, .closed = closed, .points = points};
-}
 
 namespace {
 
@@ -104,12 +98,6 @@ std::vector<double> read_breaks(const json& j, const DocumentReader& r, const st
 
 }  // namespace
 
-std::string registry_fingerprint() {
-    char hex[17];
-    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(fnv1a64(methods::registry_listing())));
-    return hex;
-}
-
 void write_curve_json(std::ostream& out, const BezierForm& f, const CurveProvenance& p) {
     json params = json::object();
     for (const auto& [name, value] : p.parameters) params[name] = value;
@@ -119,7 +107,7 @@ void write_curve_json(std::ostream& out, const BezierForm& f, const CurveProvena
         {"format", kCurveFormat},
         {"format_version", kCurveFormatVersion},
         {"library_version", library_version()},
-        {"registry", registry_fingerprint()},
+        {"registry", p.registry},
         {"method", {{"name", p.method}, {"parameters", params}, {"parameter", p.parameter}, {"closed", p.closed}}},
         {"points", point_rows(p.points)},
         {"dimension", f.pieces.dimension()},
@@ -138,7 +126,7 @@ CurveDocument read_curve_json(std::istream& in, const std::string& source) {
     const json j = parse_document(in, r, kCurveFormat, kCurveFormatVersion);
     CurveDocument d;
     d.library_version = r.text(r.member(j, "library_version"), "library_version");
-    d.registry = r.text(r.member(j, "registry"), "registry");
+    d.provenance.registry = r.text(r.member(j, "registry"), "registry");
     const json& m = r.member(j, "method");
     d.provenance.method = r.text(r.member(m, "name"), "method.name");
     d.provenance.parameter = r.text(r.member(m, "parameter"), "method.parameter");

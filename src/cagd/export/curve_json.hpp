@@ -7,7 +7,8 @@
 ///     "format": "cagd-curve", "format_version": 1,
 ///     "library_version": "0.1",            the library that wrote it (core/version.hpp)
 ///     "registry": "9f0c…",                 FNV-1a 64 of the registry's listing: the methods and
-///                                          parameters of that library (methods/method_registry.hpp)
+///                                          parameters of the library that built the curve
+///                                          (methods/curve_provenance.hpp); "" when unknown
 ///     "method": {"name": "s-spline", "parameters": {"m": "2", …},   as typed (ParameterValues::as_text)
 ///                "parameter": "uniform", "closed": false},         what t is; empty "name": unknown
 ///     "points": [[x, y], …],               the input points ([] when unknown)
@@ -35,6 +36,7 @@
 /// the format and its version, dimension 2 or 3, 0 ≤ degree ≤ 31, at most 10^7 pieces, breaks
 /// finite and increasing, every piece of degree + 1 points of `dimension` finite coordinates.
 #include <istream>
+#include <map>
 #include <ostream>
 #include <string>
 #include <utility>
@@ -43,34 +45,29 @@
 #include "cagd/core/points.hpp"
 #include "cagd/export/bezier_form.hpp"
 #include "cagd/export/surface_form.hpp"
-#include "cagd/methods/method_parameters.hpp"
-#include "cagd/methods/method_registry.hpp"
 
 namespace cagd::exports {
 
-/// What made a curve (all optional: a curve from elsewhere has an empty method name).
-struct CurveProvenance {
-    std::string method{};                 ///< registry name
-    methods::ParameterText parameters{};  ///< its parameter values as text
-    std::string parameter{};              ///< what the curve's parameter t is (MethodClaims::parameter)
-    bool closed = false;                  ///< a closed curve
-    PointList points{};                   ///< the input points (0 rows when unknown)
-};
+/// Parameter names and their values, as text.
+using ParameterText = std::map<std::string, std::string>;
 
-/// The provenance of a curve that `method` built under `values` through `points`, in the method's
-/// own parameter (MethodClaims::parameter): what `cagd interpolate` and the viewer write.
-CurveProvenance method_provenance(const methods::Method& method, const methods::ParameterValues& values, const PointList& points, bool closed);
+/// What made a curve, as plain data (all optional: a curve from elsewhere has an empty method
+/// name). methods::method_provenance fills it for a method of the registry.
+struct CurveProvenance {
+    std::string method{};       ///< registry name
+    ParameterText parameters{}; ///< its parameter values as text
+    std::string parameter{};    ///< what the curve's parameter t is (MethodClaims::parameter)
+    bool closed = false;        ///< a closed curve
+    PointList points{};         ///< the input points (0 rows when unknown)
+    std::string registry{};     ///< the fingerprint of the registry that built it ("" when unknown)
+};
 
 /// A curve document read back.
 struct CurveDocument {
     CurveProvenance provenance;  ///< what made it
     BezierForm form;             ///< its pieces, exactness and error bound
     std::string library_version; ///< as written
-    std::string registry;        ///< as written
 };
-
-/// The registry's fingerprint (FNV-1a 64 of registry_listing(), 16 hex digits).
-std::string registry_fingerprint();
 
 /// Writes the document of `form` and `provenance` (see above) to `out`.
 void write_curve_json(std::ostream& out, const BezierForm& form, const CurveProvenance& provenance);
@@ -81,8 +78,8 @@ CurveDocument read_curve_json_file(const std::string& path);
 
 /// What made a surface.
 struct SurfaceProvenance {
-    std::string kind{};                   ///< e.g. hosaka-tensor, hosaka-cartesian, hosaka-coons, typical-surface
-    methods::ParameterText parameters{};  ///< its inputs as text
+    std::string kind{};         ///< e.g. hosaka-tensor, hosaka-cartesian, hosaka-coons, typical-surface
+    ParameterText parameters{}; ///< its inputs as text
 };
 
 /// A surface document read back.

@@ -15,8 +15,8 @@
 
 #include "cagd/core/checksum.hpp"
 #include "cagd/core/csv.hpp"
-#include "cagd/core/file_lock.hpp"
-#include "cagd/core/output_file.hpp"
+#include "cagd/io/file_lock.hpp"
+#include "cagd/io/output_file.hpp"
 #include "cagd/core/parallel.hpp"
 
 namespace cagd::fairness {
@@ -129,7 +129,7 @@ AngleMinimumTable AngleMinimumTable::load_or_build(const std::string& path, cons
             std::snprintf(buf, sizeof buf, "%.17g,%.17g,%.17g,%d,", m.theta, m.theta1, m.pseudo_energy, static_cast<int>(m.outcome.status));
             text += buf + one_line(m.outcome.message) + "\n";
         }
-        OutputFile out(path, "table");  // core/output_file.hpp: written whole or not at all
+        OutputFile out(path, "table");  // io/output_file.hpp: written whole or not at all
         out.stream() << text << checksum_line(text);
         out.commit();
         return t;

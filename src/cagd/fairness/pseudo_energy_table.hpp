@@ -121,7 +121,7 @@ public:
     static PseudoEnergyTable load(const std::string& path);
     /// load(path) when the file holds a table of this grid and method, else build and save it (locked: a concurrent caller waits).
     static PseudoEnergyTable load_or_build(const std::string& path, const AngleGrid& grid, TableMethod method, int threads = 2);
-    /// The table from the user's cache (core/user_cache.hpp), built and saved there on a miss with
+    /// The table from the user's cache (io/user_cache.hpp), built and saved there on a miss with
     /// the build notice and progress; built in memory when the cache is off or cannot be written.
     /// The same table as build(grid, method, threads), bit for bit.
     static PseudoEnergyTable user_cached(const AngleGrid& grid, TableMethod method, int threads = 2);
@@ -144,7 +144,7 @@ public:
     /// Nodes whose second local minimum is within `within` of the global one in J.
     int runner_up_nodes(double within) const;
 
-    /// Writes the table to `path` as an OutputFile (core/output_file.hpp): whole or not at all; OutputError on a failed write.
+    /// Writes the table to `path` as an OutputFile (io/output_file.hpp): whole or not at all; OutputError on a failed write.
     void save(const std::string& path) const;
     /// The same text to a stream. Undefined nodes (θ0 or θ1 at 0 or ±π, eq 8) and nodes without a
     /// second minimum carry inf in J and runner_up: the format's own marks, read back by load().

@@ -23,9 +23,9 @@
 
 #include "cagd/core/checksum.hpp"
 #include "cagd/core/csv.hpp"
-#include "cagd/core/file_lock.hpp"
-#include "cagd/core/output_file.hpp"
-#include "cagd/core/user_cache.hpp"
+#include "cagd/io/file_lock.hpp"
+#include "cagd/io/output_file.hpp"
+#include "cagd/io/user_cache.hpp"
 
 namespace cagd::fairness {
 
@@ -60,7 +60,7 @@ void PseudoEnergyTable::save(std::ostream& out) const {
 }
 
 void PseudoEnergyTable::save(const std::string& path) const {
-    // core/output_file.hpp: a temporary file beside it, renamed at the end (concurrent builders never
+    // io/output_file.hpp: a temporary file beside it, renamed at the end (concurrent builders never
     // mix their lines; a failed write keeps the old file and throws OutputError); a device or an open
     // descriptor is written in place.
     OutputFile out(path, "table");

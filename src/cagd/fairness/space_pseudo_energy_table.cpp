@@ -13,10 +13,10 @@
 #include "cagd/core/checksum.hpp"
 #include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
-#include "cagd/core/file_lock.hpp"
-#include "cagd/core/output_file.hpp"
+#include "cagd/io/file_lock.hpp"
+#include "cagd/io/output_file.hpp"
 #include "cagd/core/parallel.hpp"
-#include "cagd/core/user_cache.hpp"
+#include "cagd/io/user_cache.hpp"
 
 namespace cagd::fairness {
 
@@ -130,7 +130,7 @@ void SpacePseudoEnergyTable::save(std::ostream& out) const {
 }
 
 void SpacePseudoEnergyTable::save(const std::string& path) const {
-    OutputFile out(path, "table");  // core/output_file.hpp: written whole or not at all
+    OutputFile out(path, "table");  // io/output_file.hpp: written whole or not at all
     save(out.stream());
     out.commit();
 }

@@ -68,7 +68,7 @@ public:
     static SpacePseudoEnergyTable load(const std::string& path);  ///< InvalidInput for a foreign or damaged file
     /// load(path) when the file holds this grid's table, else build and save it.
     static SpacePseudoEnergyTable load_or_build(const std::string& path, const SpaceAngleGrid& grid, TableMethod method, int threads = 2);
-    /// The table from the user's cache (core/user_cache.hpp), built and saved there on a miss with
+    /// The table from the user's cache (io/user_cache.hpp), built and saved there on a miss with
     /// the build notice and progress; built in memory when the cache is off or cannot be written.
     static SpacePseudoEnergyTable user_cached(const SpaceAngleGrid& grid, TableMethod method, int threads = 2);
 
@@ -84,7 +84,7 @@ public:
     /// θ0, θ1 ∈ [0, π], φ any finite angle (taken mod 2π); InvalidInput otherwise.
     SpaceTableValue lookup(double theta0, double theta1, double phi) const;
 
-    /// Writes the table to `path` as an OutputFile (core/output_file.hpp): whole or not at all; OutputError on a failed write.
+    /// Writes the table to `path` as an OutputFile (io/output_file.hpp): whole or not at all; OutputError on a failed write.
     void save(const std::string& path) const;
     /// The same text to a stream.
     void save(std::ostream& out) const;

@@ -3,7 +3,7 @@
 //   mpirun -np R cagd_benchmark_mpi --out DIR [the plan's options of cagd benchmark] [--timing-out FILE]
 // Rank r computes share r of R of the work (compare/work_share.hpp) with --threads threads, sends
 // its part (compare/interpolant_benchmark.hpp) to rank 0, which merges the parts and writes DIR as
-// `cagd benchmark` does (core/output_file.hpp: whole or not at all; checked by rank 0 before the
+// `cagd benchmark` does (io/output_file.hpp: whole or not at all; checked by rank 0 before the
 // work). DIR is the same, byte for byte, for any R and thread count, and equals what
 // `cagd benchmark` writes with the same options.
 // Exit 0 success, 2 bad arguments or output place (one line on stderr from rank 0), 1 a failure while
@@ -19,7 +19,7 @@
 
 #include "cagd/compare/interpolant_benchmark.hpp"
 #include "cagd/core/errors.hpp"
-#include "cagd/core/output_file.hpp"
+#include "cagd/io/output_file.hpp"
 #include "cli/benchmark_options.hpp"
 
 using namespace cagd;

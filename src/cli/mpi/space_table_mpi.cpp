@@ -2,7 +2,7 @@
 // MPI, for grids that outgrow one machine (the 1° table: 180 × 180 × 360 nodes, hours of CPU).
 //   mpirun -np R cagd_space_table_mpi --n-theta N --n-phi M [--method fast|reference] [--threads T] --out FILE
 // Rank r computes the block [r·K/R, (r+1)·K/R) of the K symmetry orbits with T threads, rank 0
-// gathers them, assembles the table and writes FILE (core/output_file.hpp: `-` is standard output,
+// gathers them, assembles the table and writes FILE (io/output_file.hpp: `-` is standard output,
 // a device is written in place, a regular file replaced whole; the place is checked by rank 0 before
 // the work). The result is the same, byte for byte, for any R and T (each node is computed on its
 // own), and equals SpacePseudoEnergyTable::build.
@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "cagd/core/errors.hpp"
-#include "cagd/core/output_file.hpp"
+#include "cagd/io/output_file.hpp"
 #include "cagd/fairness/space_pseudo_energy_table.hpp"
 
 using namespace cagd;

@@ -13,7 +13,7 @@
 ///
 /// What a cached table file is: the table's own text format with its checksum line, written whole
 /// (rename) under a lock on `<file>.lock`, so that two processes that miss at once build it once
-/// (core/file_lock.hpp); a damaged or foreign file is rebuilt with the rebuild notice. A file that
+/// (io/file_lock.hpp); a damaged or foreign file is rebuilt with the rebuild notice. A file that
 /// cannot be written leaves the built table in memory and the cache as it was.
 ///
 /// The library prints nothing: a program that wants a line when a cached table is built (the

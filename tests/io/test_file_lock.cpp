@@ -9,7 +9,7 @@
 
 #include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
-#include "cagd/core/file_lock.hpp"
+#include "cagd/io/file_lock.hpp"
 #include "cagd/core/point_csv.hpp"
 
 using namespace cagd;

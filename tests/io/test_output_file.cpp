@@ -13,8 +13,9 @@
 #include <string>
 
 #include "cagd/core/csv.hpp"
+#include "cagd/io/csv_writer.hpp"
 #include "cagd/core/errors.hpp"
-#include "cagd/core/output_file.hpp"
+#include "cagd/io/output_file.hpp"
 
 #include "../support/messages.hpp"
 #include "../support/scratch_directory.hpp"

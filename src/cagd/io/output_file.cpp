@@ -1,4 +1,4 @@
-#include "cagd/core/output_file.hpp"
+#include "cagd/io/output_file.hpp"
 
 #include <fcntl.h>
 #include <sys/file.h>

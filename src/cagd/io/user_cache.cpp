@@ -1,4 +1,4 @@
-#include "cagd/core/user_cache.hpp"
+#include "cagd/io/user_cache.hpp"
 
 #include <atomic>
 #include <cstdlib>

@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "cagd/core/user_cache.hpp"
+#include "cagd/io/user_cache.hpp"
 #include "cagd/fairness/pseudo_energy_table.hpp"
 
 using namespace cagd;

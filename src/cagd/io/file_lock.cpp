@@ -1,4 +1,4 @@
-#include "cagd/core/file_lock.hpp"
+#include "cagd/io/file_lock.hpp"
 
 #include <fcntl.h>
 #include <sys/file.h>
