@@ -175,6 +175,32 @@ test('a method that does not apply says why and draws nothing', async () => {
   assert.match(note, /not applicable/);
 });
 
+test('a closed curve that loops where its points do not is drawn, and its measures flag it', async () => {
+  // Seven points on a figure eight (turning number 0), at four phases, as in
+  // tests/compare/test_compare.cpp: the curvature profile's closed curve, where its Newton
+  // converges (at some phases it does not, depending on the rounding), turns once: drawn and
+  // flagged; cubic-b's does not turn and is ok.
+  let flagged = 0;
+  for (const phase of [0.2, 0.4, 0.6, 1.0]) {
+    const eight = Array.from({ length: 7 }, (_, k) => { const t = 2 * Math.PI * (k + phase) / 7; return [3 * Math.sin(t), 1.5 * Math.sin(2 * t)]; });
+    const r = await page.evaluate(async (pts) => {
+      const v = window.cagdViewer;
+      v.setState({ points: pts, closed: true, shown: [{ name: 'cubic-b', parameters: {} }, { name: 'curvature-profile', parameters: {} }] });
+      const m = await v.measuresSettled();
+      const status = m.header.indexOf('status'), note = m.header.indexOf('note');
+      return { drawn: v.result.results.map((x) => x.curve.length > 0), rows: m.rows.map((row) => [row[0], row[status], row[note]]) };
+    }, eight);
+    assert.equal(r.rows[0][1], 'ok', `phase ${phase}, cubic-b: ${r.rows[0][2]}`);
+    assert.ok(r.drawn[0], `phase ${phase}: cubic-b is drawn`);
+    if (r.rows[1][1] === 'no result') continue;
+    ++flagged;
+    assert.equal(r.rows[1][1], 'loops', `phase ${phase}, curvature-profile: ${r.rows[1][2]}`);
+    assert.match(r.rows[1][2], /against the polygon's 0/);
+    assert.ok(r.drawn[1], `phase ${phase}: the flagged curve is drawn`);
+  }
+  assert.ok(flagged >= 1, 'the curvature profile converged on none of the four figure eights');
+});
+
 test('dragging a point moves the curves, the measures and, for a local method, only nearby spans', async () => {
   await page.evaluate((pts) => {
     window.cagdViewer.setState({ points: pts, closed: false, locality: true, shown: [{ name: 's-spline-m1', parameters: {} }, { name: 'cubic-b', parameters: {} }] });
