@@ -194,10 +194,7 @@ TEST(ClassicBenchmark, RunsAreClassifiedAndMeasuredAsTheirCurvesAre) {
 TEST(ClassicBenchmark, NoClosedDataSetGivesALoopingCurve) {
     // compare flags a closed curve that loops where its points do not ("loops"); the direct methods'
     // curves through every closed data set of the manifest are not flagged.
-    ComparisonOptions o;
-    o.closed = true;
-    o.locality = false;
-    o.methods = {"cubic-b", "pseudo-spline-exact"};
+    const ComparisonOptions o{.methods = {"cubic-b", "pseudo-spline-exact"}, .closed = true, .locality = false};
     int closed_sets = 0;
     for (const ClassicDataSet& d : read_classic_data(kManifest)) {
         if (!d.closed) continue;

@@ -1015,10 +1015,7 @@ TEST(Compare, AClosedCurveThatLoopsWhereItsPointsDoNotIsFlagged) {
     // The curvature profile's closed curve through these points, where its Newton converges (at
     // some phases it does not: its outcome then depends on the rounding of the input), turns once,
     // a loop the points do not have: it is measured, but flagged.
-    ComparisonOptions o;
-    o.closed = true;
-    o.locality = false;
-    o.methods = {"cubic-b", "curvature-profile"};
+    ComparisonOptions o{.methods = {"cubic-b", "curvature-profile"}, .closed = true, .locality = false};
     int flagged = 0;
     for (double phase : {0.2, 0.4, 0.6, 1.0}) {
         const PointList p = figure_eight_points(phase);

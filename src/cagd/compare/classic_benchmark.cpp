@@ -103,7 +103,7 @@ std::vector<ClassicRun> run_classic_benchmark(const std::vector<ClassicDataSet>&
         try {
             r.overshoot = analysis::fairness_measures(*in.curve, d.points, kOvershootSampling).overshoot;
         } catch (const InvalidInput& e) {  // its samples include the spans' ends, where Boost's pchip stops (x' = y' = 0)
-            return cusp(e.what());
+            return cusp(in_user_terms(one_line(e.what())));
         }
         r.extensionality = extensionality(m, d.points, d.closed, in);
     });

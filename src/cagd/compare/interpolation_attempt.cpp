@@ -29,12 +29,12 @@ InterpolationAttempt attempt_interpolation(const methods::Configuration& configu
         a.result = methods::interpolate(configuration, points, closed);
     } catch (const InvalidInput& e) {
         a.status = AttemptStatus::refused;
-        a.note = e.what();
+        a.note = in_user_terms(one_line(e.what()));
         return a;
     }
     if (!a.result.outcome.ok() || !a.result.interpolant) {
         a.status = AttemptStatus::no_result;
-        a.note = a.result.outcome.message;
+        a.note = in_user_terms(one_line(a.result.outcome.message));
     }
     return a;
 }

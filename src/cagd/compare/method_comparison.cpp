@@ -138,13 +138,13 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
             }
         } catch (const InvalidInput& e) {  // this method refuses these points (Boost's Catmull–Rom on 1e-40 spacing): its row says why
             c.status = "refused";
-            c.note = one_line(e.what());
+            c.note = in_user_terms(one_line(e.what()));
             return c;
         }
         c.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (!r.outcome.ok() || !r.interpolant) {
             c.status = "no result";
-            c.note = one_line(r.outcome.message);
+            c.note = in_user_terms(one_line(r.outcome.message));
             return c;
         }
         c.solver_state = std::move(r.solver_state);  // also the start of the footprint's build (below)
@@ -171,7 +171,7 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
         } catch (const InvalidInput& e) {  // a sample of zero speed: κ undefined there
             c.length = analysis::arc_length(curve, sampling.quadrature_pieces);
             c.status = "cusp";
-            c.note = one_line(e.what());
+            c.note = in_user_terms(one_line(e.what()));
         }
         if (options.locality && points.rows() >= 3) {
             PointList moved = points;
@@ -195,7 +195,7 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
             MethodComparison c;
             c.method = configuration.name;
             c.status = to_string(AttemptStatus::failed);
-            c.note = "the method failed (a defect of the method, not of the points): " + one_line(e.what());
+            c.note = "the method failed (a defect of the method, not of the points): " + in_user_terms(one_line(e.what()));
             return c;
         }
     };

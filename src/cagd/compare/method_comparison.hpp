@@ -49,10 +49,10 @@ struct MethodComparison;
 
 /// What compare_methods measures and how.
 struct ComparisonOptions {
-    std::vector<std::string> methods;  ///< configuration or method names (methods::find_configuration); empty: every configuration
+    std::vector<std::string> methods{};  ///< configuration or method names (methods::find_configuration); empty: every configuration
     /// Configurations given whole (a method under parameter values of the caller's choice,
     /// methods::find_configuration with overrides); when not empty they are compared instead of `methods`.
-    std::vector<methods::Configuration> configurations;
+    std::vector<methods::Configuration> configurations{};
     bool closed = false;  ///< closed curves
     bool locality = true;  ///< measure the locality footprint (it interpolates once more per method)
     /// Compute the measures (length, energies, fairness). Off: the curves only, status "ok" for each
@@ -60,14 +60,14 @@ struct ComparisonOptions {
     /// then leaves out a sample of zero speed (κ undefined) instead of the whole profile.
     bool measures = true;
     /// Called as each method is done (progress), one call at a time, in completion order.
-    std::function<void(const MethodComparison&)> on_method;
+    std::function<void(const MethodComparison&)> on_method{};
     /// Methods measured in parallel, one per thread (0: the hardware's thread count). The results,
     /// in the configurations' order, do not depend on it (the `seconds` timings aside).
     int threads = 0;
     /// Continuation (the viewer's drag frames): by configuration name, the solver_state of an earlier
     /// comparison of as many points, open or closed alike; such a configuration's solve starts there
     /// (methods::interpolate_from). Empty: every method builds anew.
-    std::map<std::string, Eigen::VectorXd> starts;
+    std::map<std::string, Eigen::VectorXd> starts{};
 };
 
 /// One method's row of the comparison.
