@@ -171,7 +171,7 @@ std::string benchmark_section(const fs::path& results) {
 int write_report(const std::string& root) {
     const fs::path results = fs::path(root) / "results";
     int failed = 0;
-    // Both files through core/output_file: published whole after every write succeeded, or not at all.
+    // Both files through io/output_file: published whole after every write succeeded, or not at all.
     OutputFile claims_file((results / "claims.csv").string(), "");
     std::ostream& claims = claims_file.stream();
     // origin: paper (a claim the paper prints) or ours (a statement of ours where it prints none; its

@@ -1,4 +1,4 @@
-// core/file_lock: a second holder of the lock waits for the first.
+// io/file_lock: a second holder of the lock waits for the first.
 #include <gtest/gtest.h>
 
 #include <atomic>

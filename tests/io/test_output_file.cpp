@@ -1,4 +1,4 @@
-// core/output_file: a write is published whole by commit() or not at all; a failed write names the
+// io/output_file: a write is published whole by commit() or not at all; a failed write names the
 // path and the reason and keeps the old file; bad places are refused when the output is made; a
 // multi-file output is published as one; signal cleanup removes every temporary.
 #include <gtest/gtest.h>

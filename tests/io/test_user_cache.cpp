@@ -1,4 +1,4 @@
-// core/user_cache: where the user's table cache is, how it is turned off, and a cached table that
+// io/user_cache: where the user's table cache is, how it is turned off, and a cached table that
 // equals the built one bit for bit, built once (one notice) and then loaded.
 #include <gtest/gtest.h>
 
