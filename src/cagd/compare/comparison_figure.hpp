@@ -10,8 +10,8 @@
 
 namespace cagd::compare {
 
-/// Figure data (planar; for space points see above: curves (index, x, y, z), profiles (index, s, κ,
-/// τ), no combs). Curve samples (method index, method, x, y), `per_span` per span; the curvature
+/// Figure data (planar; for space points: curves (index, x, y, z), profiles (index, s, κ, τ), no
+/// combs). Curve samples (method index, method, x, y), `per_span` per span; the curvature
 /// profile (method index, s, κ), `per_span` per span with both ends of every span; the curvature
 /// comb (method index, x, y, tooth end x, y), the tooth r − c·κ·n (n the left unit normal), c one
 /// scale for every method, such that the 95th percentile of |κ| over all methods' samples draws
