@@ -43,7 +43,7 @@ TEST(MethodParameterCurve, EveryMethodIsEvaluatedInTheParameterItStates) {
             if (closed && !c.claims.supports_closed) continue;
             const InterpolationResult r = cagd::methods::interpolate(c, p, closed);
             if (!c.claims.always_solves && !r.outcome.ok()) {  // closed Spiro through these points does not exist (libspiro agrees)
-                EXPECT_EQ(r.outcome.status, Status::no_convergence) << c.name;
+                EXPECT_EQ(r.outcome.status, cagd::Status::no_convergence) << c.name;
                 continue;
             }
             ASSERT_TRUE(r.outcome.ok()) << c.name << ": " << r.outcome.message;

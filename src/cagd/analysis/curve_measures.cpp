@@ -8,6 +8,7 @@
 #include <set>
 #include <string>
 
+#include "cagd/analysis/frenet_jet.hpp"
 #include "cagd/core/errors.hpp"
 #include "cagd/numeric/gauss_legendre.hpp"
 
@@ -45,27 +46,23 @@ double speed(const Curve& c, double t) {
 }  // namespace
 
 namespace {
-// |r' × r''|² / |r'|⁶ from the first two derivatives (rows 0, 1 of Curve::derivatives); throws
-// naming `who` at a singular point.
-double squared_curvature(const JetMatrix& D, double t, const char* who) {
-    const double s2 = D.row(0).squaredNorm();
-    if (!(s2 > 0.0)) fail_input(who, "r'(t) = 0 at t = " + full_precision(t) + "; curvature undefined at a singular point");
-    const double cross2 = std::max(0.0, s2 * D.row(1).squaredNorm() - std::pow(D.row(0).dot(D.row(1)), 2));
-    return cross2 / (s2 * s2 * s2);
+// The geometry at t from r' and r'' (rows 0, 1 of Curve::derivatives); throws naming `who` at a
+// singular point.
+FrenetJet regular_frenet(const Curve& c, double t, const char* who) {
+    JetMatrix D;
+    c.derivatives_into(t, 2, D);
+    const FrenetJet f = frenet_jet(D);
+    if (!f.regular) fail_input(who, "r'(t) = 0 at t = " + full_precision(t) + "; curvature undefined at a singular point");
+    return f;
 }
 
 double bending_density(const Curve& c, double t) {  // κ² |r'|, the integrand of ∫ κ² ds in t
-    JetMatrix D;
-    c.derivatives_into(t, 2, D);
-    return squared_curvature(D, t, "cagd::analysis::curvature") * D.row(0).norm();
+    const FrenetJet f = regular_frenet(c, t, "cagd::analysis::curvature");
+    return f.curvature * f.curvature * f.speed;
 }
 }  // namespace
 
-double curvature(const Curve& c, double t) {
-    JetMatrix D;
-    c.derivatives_into(t, 2, D);
-    return std::sqrt(squared_curvature(D, t, "cagd::analysis::curvature"));
-}
+double curvature(const Curve& c, double t) { return std::abs(regular_frenet(c, t, "cagd::analysis::curvature").curvature); }
 
 Eigen::VectorXd curvature_vector(const Eigen::MatrixXd& J) {
     if (J.rows() < 3) fail_input("cagd::analysis::curvature_vector", "needs a jet of order >= 2, got " + std::to_string(J.rows() - 1));
@@ -77,11 +74,7 @@ Eigen::VectorXd curvature_vector(const Eigen::MatrixXd& J) {
 
 double signed_curvature(const Curve& c, double t) {
     if (c.dimension() != 2) fail_input("cagd::analysis::signed_curvature", "needs a planar curve, dimension is " + std::to_string(c.dimension()));
-    JetMatrix D;
-    c.derivatives_into(t, 2, D);
-    const double s2 = D.row(0).squaredNorm();
-    if (!(s2 > 0.0)) fail_input("cagd::analysis::signed_curvature", "r'(t) = 0 at t = " + full_precision(t) + "; curvature undefined");
-    return (D(0, 0) * D(1, 1) - D(0, 1) * D(1, 0)) / (s2 * std::sqrt(s2));
+    return regular_frenet(c, t, "cagd::analysis::signed_curvature").curvature;
 }
 
 double arc_length(const Curve& c, double a, double b, int pieces) {
@@ -165,12 +158,10 @@ double piece_bending_energy(const Curve& c, double a, double b, int pieces) {
 }
 
 std::pair<double, double> piece_length_and_bending_energy(const Curve& c, double a, double b, int pieces) {
-    JetMatrix D;
     return rule20().integrate_piecewise(
         [&](double t) {
-            c.derivatives_into(t, 2, D);
-            const double speed = D.row(0).norm();
-            return std::pair<double, double>{speed, squared_curvature(D, t, "cagd::analysis::curvature") * speed};
+            const FrenetJet f = regular_frenet(c, t, "cagd::analysis::curvature");
+            return std::pair<double, double>{f.speed, f.curvature * f.curvature * f.speed};
         },
         subdivided({a, b}, pieces));
 }

@@ -2,8 +2,7 @@
 /// @file
 /// Differential and integral measures of any Curve (docs/design.md: computed once, here).
 ///
-///   curvature κ(t) = sqrt(|r'|²|r''|² − (r'·r'')²) / |r'|³        (dimension 2 or 3)
-///   signed curvature (planar) κ(t) = (x'y'' − y'x'') / |r'|³
+///   curvature κ(t) and signed curvature: from frenet_jet (analysis/frenet_jet.hpp, the one kernel)
 ///   arc length L = ∫ |r'(t)| dt,  enclosed (signed) area A = ½ ∮ (x y' − y x') dt,
 ///   bending energy E = ∫ κ² ds = ∫ κ² |r'| dt.
 /// Integrals are taken piece by piece between Curve::breakpoints() with a 20-point

@@ -5,7 +5,7 @@
 #include <limits>
 
 #include "cagd/analysis/curve_measures.hpp"
-#include "cagd/analysis/log_curvature_graph.hpp"
+#include "cagd/analysis/frenet_jet.hpp"
 #include "cagd/core/errors.hpp"
 
 namespace cagd::analysis {
@@ -25,7 +25,8 @@ FairnessMeasures fairness_measures(const Curve& c, const PointList& data, const 
     FairnessMeasures m;
     m.dimension = dim;
     const std::vector<double> br = c.breakpoints();
-    int last_sign = 0;
+    const double extent = std::max(diagonal, 1e-300);  // D of the flatness policy
+    std::vector<int> signs;  // of κ at the samples (planar)
     for (std::size_t k = 0; k + 1 < br.size(); ++k) {
         const double a = br[k], b = br[k + 1];
         const auto [len, energy] = piece_length_and_bending_energy(c, a, b, pieces);
@@ -54,36 +55,18 @@ FairnessMeasures fairness_measures(const Curve& c, const PointList& data, const 
                 c.jet_into(u, 3, J);
             else
                 c.derivatives_into(u, 3, J);
-            double kappa = 0.0;  // signed in the plane, |κ| in space
+            const FrenetJet f = frenet_jet(J.middleRows(r1, 3));
+            if (!f.regular) fail_input(who, "zero speed (a cusp) at t = " + full_precision(u) + ": curvature is undefined there");
+            const double kappa = f.curvature;  // signed in the plane, |κ| in space
             if (dim == 2) {
-                const double x1 = J(r1, 0), y1 = J(r1, 1), v2 = x1 * x1 + y1 * y1;
-                if (!(v2 > 0.0)) fail_input(who, "zero speed (a cusp) at t = " + full_precision(u) + ": curvature is undefined there");
-                const double cross = x1 * J(r1 + 1, 1) - y1 * J(r1 + 1, 0), v = std::sqrt(v2);
-                kappa = cross / (v2 * v);
-                const double dkappa_ds = ((x1 * J(r1 + 2, 1) - y1 * J(r1 + 2, 0)) * v2 - 3.0 * cross * (x1 * J(r1 + 1, 0) + y1 * J(r1 + 1, 1))) / (v2 * v2 * v2);
-                m.max_abs_curvature_derivative = std::max(m.max_abs_curvature_derivative, std::abs(dkappa_ds));
-            } else {
-                const Eigen::Vector3d d1 = J.row(r1).head<3>().transpose(), d2 = J.row(r1 + 1).head<3>().transpose(), d3 = J.row(r1 + 2).head<3>().transpose();
-                const double v2 = d1.squaredNorm();
-                if (!(v2 > 0.0)) fail_input(who, "zero speed (a cusp) at t = " + full_precision(u) + ": curvature is undefined there");
-                const Eigen::Vector3d cr = d1.cross(d2), cr1 = d1.cross(d3);
-                const double v = std::sqrt(v2), cn = cr.norm();
-                kappa = cn / (v2 * v);
-                if (std::abs(kappa) * std::max(diagonal, 1e-300) > kFlatCurvature) {
-                    const double dkappa_ds = (cr.dot(cr1) / cn - 3.0 * cn * d1.dot(d2) / v2) / (v2 * v2);
-                    m.max_abs_curvature_derivative = std::max(m.max_abs_curvature_derivative, std::abs(dkappa_ds));
-                    m.max_abs_torsion = std::max(m.max_abs_torsion, std::abs(cr.dot(d3)) / (cn * cn));
-                }
+                m.max_abs_curvature_derivative = std::max(m.max_abs_curvature_derivative, std::abs(f.curvature_rate));
+                signs.push_back(curvature_sign(kappa, extent));
+            } else if (!is_straight(kappa, extent)) {
+                m.max_abs_curvature_derivative = std::max(m.max_abs_curvature_derivative, std::abs(f.curvature_rate));
+                m.max_abs_torsion = std::max(m.max_abs_torsion, std::abs(f.torsion));
             }
             m.max_abs_curvature = std::max(m.max_abs_curvature, std::abs(kappa));
             spike = std::max(spike, std::abs(kappa) * chord);
-            if (dim == 2) {
-                const int sign = std::abs(kappa) * std::max(diagonal, 1e-300) <= kFlatCurvature ? 0 : (kappa > 0 ? 1 : -1);
-                if (sign != 0) {
-                    if (last_sign != 0 && sign != last_sign) ++m.curvature_sign_changes;
-                    last_sign = sign;
-                }
-            }
             if (!needs_position) continue;
             double outside = 0.0;  // distance from the data's bounding box
             for (int d = 0; d < dim; ++d) {
@@ -95,6 +78,7 @@ FairnessMeasures fairness_measures(const Curve& c, const PointList& data, const 
         m.max_spike = std::max(m.max_spike, spike);
         if (spike > kCornerThreshold) ++m.corners;
     }
+    m.curvature_sign_changes = sign_changes(signs, false);
     return m;
 }
 

@@ -9,21 +9,21 @@
 ///                       (J = L²E is invariant under rotation and scales with l), so it equals the
 ///                       pseudo-spline's Σ l_i J_i (pseudo_energy eq 7, 12)
 ///   sign changes        of the signed curvature κ(u), sampled `samples` times per piece, zeros
-///                       (|κ| · diagonal ≤ 1e-9) skipped; a change inside a piece is an inflection,
+///                       (straight points by the flatness policy of analysis/frenet_jet.hpp,
+///                       D the data's diagonal) skipped; a change inside a piece is an inflection,
 ///                       a change across a breakpoint a jump of κ through 0 at a G1 join
 ///   max |κ|             over the same samples (an estimate from below; exact at a sample)
-///   max |dκ/ds|         over the same samples, dκ/ds = [(x'y''' − y'x''')|r'|² − 3(x'y'' − y'x'')(r'·r'')]/|r'|⁶
-///                       from the jet of order 3 (one-sided at breakpoints as Curve::jet is)
+///   max |dκ/ds|         over the same samples, from the jet of order 3 (one-sided at breakpoints
+///                       as Curve::jet is)
 ///   overshoot           max distance of the sampled curve outside the data's bounding box,
 ///                       divided by the box diagonal (0 when the curve stays inside)
 ///   curvature spike     the largest |κ| · l over the samples of each span, l the span's chord
 ///                       length: a radius of curvature below l/100 (value > 100) is a "corner"
 ///                       by our definition — at a cusp it is unbounded
 /// Space curves (dimension 3): κ = |r' × r''|/|r'|³ ≥ 0 has no sign, so no sign changes are counted
-/// (inflections are a planar notion); dκ/ds = [(c·c')/|c| − 3|c|(r'·r'')/|r'|²]/|r'|⁴ with
-/// c = r' × r'', c' = r' × r⁽³⁾ (skipped where c = 0, a straight point, where |c| has no derivative);
-/// and the torsion τ = det(r', r'', r⁽³⁾)/|c|², its largest |τ| over the samples where
-/// |κ| · diagonal > 1e-9 (undefined at a straight point).
+/// (inflections are a planar notion); dκ/ds and the torsion τ count only at samples that are not
+/// straight (flatness policy), where |r' × r''| has no derivative and τ is undefined.
+/// κ, dκ/ds and τ come from frenet_jet (analysis/frenet_jet.hpp), the one kernel.
 /// Accuracy: sampled maxima and counts resolve features wider than 1/samples of a span.
 /// Precondition: a curve of dimension 2 or 3 and data of the same dimension, r'(u) ≠ 0 at the
 /// samples (a sample on an exact cusp throws).

@@ -6,37 +6,25 @@
 #include <vector>
 
 #include "cagd/analysis/curve_measures.hpp"
+#include "cagd/analysis/frenet_jet.hpp"
 #include "cagd/core/errors.hpp"
 
 namespace cagd::analysis {
 
 namespace {
 
-// Cross product of a and b as a 3-vector (planar: (0, 0, a_x b_y − a_y b_x)).
-Eigen::Vector3d cross3(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
-    Eigen::Vector3d u = Eigen::Vector3d::Zero(), v = Eigen::Vector3d::Zero();
-    u.head(a.size()) = a;
-    v.head(b.size()) = b;
-    return u.cross(v);
-}
-
 struct CurvatureAndRate {
     double kappa, kappa_s;
 };
 
+// κ and dκ/ds (signed in the plane: the graph takes |κ| and |κ/κ_s|); 0 and 0 where r′ × r″ = 0.
 CurvatureAndRate curvature_and_rate(const Curve& c, double t) {
     if (c.dimension() < 2 || c.dimension() > 3) fail_input("cagd::analysis::log_curvature_graph", "curve dimension must be 2 or 3");
     const Eigen::MatrixXd j = c.jet(t, 3);
-    const Eigen::VectorXd d1 = j.row(1).transpose(), d2 = j.row(2).transpose(), d3 = j.row(3).transpose();
-    const double speed = d1.norm();
-    if (!(speed > 0.0)) fail_input("cagd::analysis::log_curvature_graph", "r'(t) = 0 at t = " + full_precision(t));
-    const Eigen::Vector3d cr = cross3(d1, d2), crd = cross3(d1, d3);
-    const double cn = cr.norm();
-    const double s3 = speed * speed * speed;
-    const double kappa = cn / s3;
-    if (cn == 0.0) return {0.0, 0.0};
-    const double dk = cr.dot(crd) / (cn * s3) - 3.0 * cn * d1.dot(d2) / (s3 * speed * speed);
-    return {kappa, dk / speed};
+    const FrenetJet f = frenet_jet(j.bottomRows(3));
+    if (!f.regular) fail_input("cagd::analysis::log_curvature_graph", "r'(t) = 0 at t = " + full_precision(t));
+    if (f.curvature == 0.0) return {0.0, 0.0};
+    return {f.curvature, f.curvature_rate};
 }
 
 }  // namespace
@@ -45,22 +33,13 @@ double curvature_arc_derivative(const Curve& c, double t) { return curvature_and
 
 namespace {
 
-struct TorsionAndRate {
-    double tau, tau_s;
-    bool defined;  // r' × r'' ≠ 0
-};
-
-TorsionAndRate torsion_and_rate(const Curve& c, double t) {
+// τ and dτ/ds of a 3-D curve (NaN where r′ × r″ = 0).
+FrenetJet torsion_and_rate(const Curve& c, double t) {
     if (c.dimension() != 3) fail_input("cagd::analysis::torsion", "torsion needs a 3-D curve, got dimension " + std::to_string(c.dimension()));
     const Eigen::MatrixXd j = c.jet(t, 4);
-    const Eigen::Vector3d d1 = j.row(1).transpose(), d2 = j.row(2).transpose(), d3 = j.row(3).transpose(), d4 = j.row(4).transpose();
-    const double speed = d1.norm();
-    if (!(speed > 0.0)) fail_input("cagd::analysis::torsion", "r'(t) = 0 at t = " + full_precision(t));
-    const Eigen::Vector3d cr = d1.cross(d2);
-    const double den = cr.squaredNorm();
-    if (den == 0.0) return {0.0, 0.0, false};
-    const double num = cr.dot(d3), dnum = cr.dot(d4), dden = 2.0 * cr.dot(d1.cross(d3));
-    return {num / den, (dnum * den - num * dden) / (den * den) / speed, true};
+    const FrenetJet f = frenet_jet(j.bottomRows(4));
+    if (!f.regular) fail_input("cagd::analysis::torsion", "r'(t) = 0 at t = " + full_precision(t));
+    return f;
 }
 
 // Samples (x, y) = (−log|r|, log|r/r_s|) of a rate r (curvature or torsion) at `samples` parameters.
@@ -113,13 +92,10 @@ double curve_extent(const Curve& c) {
     return (hi - lo).norm();
 }
 
-double torsion(const Curve& c, double t, double extent) {
-    const TorsionAndRate r = torsion_and_rate(c, t);
-    return r.defined && curvature(c, t) * extent > kFlatCurvature ? r.tau : std::numeric_limits<double>::quiet_NaN();
-}
+double torsion(const Curve& c, double t, double extent) { return defined_torsion(torsion_and_rate(c, t), extent); }
 
 double torsion(const Curve& c, double t) { return torsion(c, t, curve_extent(c)); }
-double torsion_arc_derivative(const Curve& c, double t) { return torsion_and_rate(c, t).tau_s; }
+double torsion_arc_derivative(const Curve& c, double t) { return torsion_and_rate(c, t).torsion_rate; }
 
 CurvatureTorsionExtremes curvature_torsion_extremes(const Curve& c, int samples_per_piece) {
     if (samples_per_piece < 1) fail_input("cagd::analysis::curvature_torsion_extremes", "samples_per_piece = " + std::to_string(samples_per_piece) + " < 1");
@@ -136,15 +112,15 @@ CurvatureTorsionExtremes curvature_torsion_extremes(const Curve& c, int samples_
     if (c.dimension() == 3) {
         const double extent = curve_extent(c);
         for (const auto& [t, kappa] : samples)
-            if (kappa * extent > kFlatCurvature) e.max_abs_torsion = std::max(e.max_abs_torsion, std::abs(torsion_and_rate(c, t).tau));
+            if (!is_straight(kappa, extent)) e.max_abs_torsion = std::max(e.max_abs_torsion, std::abs(torsion_and_rate(c, t).torsion));
     }
     return e;
 }
 
 LcgSamples log_torsion_graph(const Curve& c, double t0, double t1, int samples) {
     return log_rate_graph("cagd::analysis::log_torsion_graph", c, t0, t1, samples, [&c](double t) {
-        const TorsionAndRate r = torsion_and_rate(c, t);
-        return std::pair{r.tau, r.tau_s};
+        const FrenetJet f = torsion_and_rate(c, t);
+        return std::pair{f.torsion, f.torsion_rate};
     });
 }
 

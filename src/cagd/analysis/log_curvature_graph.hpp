@@ -7,8 +7,7 @@
 /// Since dρ/ds = −κ_s/κ², ρ ds/dρ = −κ/κ_s, so y = log |κ/κ_s| and x = −log |κ|: one jet of
 /// order 3 per sample. For a log-aesthetic curve ρ^α = c0 s + c1 (eq 8) the graph is the line
 /// y = α x + const, so its slope is α (the "LCG slope").
-///   κ  = |c| / |r'|³,  c = r' × r''   (z-component in the plane; any dimension ≥ 2)
-///   dκ/dt = (c·c')/(|c| |r'|³) − 3 |c| (r'·r'')/|r'|⁵,  c' = r' × r''',   κ_s = (dκ/dt)/|r'|.
+/// κ and κ_s = dκ/ds come from frenet_jet (analysis/frenet_jet.hpp, the one kernel).
 /// Samples where κ = 0 or κ_s = 0 (no finite LCG point) are skipped and counted, never NaN.
 /// lcg_slope: ordinary least squares of y on x over `samples` parameters uniform in [t0, t1]
 /// (the fit range is the caller's choice and changes the slope of a curve that is not exactly a
@@ -17,13 +16,13 @@
 /// The logarithmic torsion graph (LTG, typical_curves section 4) of a space curve is the same with
 /// the radius of torsion μ = 1/τ:  x = log μ = −log |τ|,  y = log |μ ds/dμ| = log |τ/τ_s|; for a
 /// log-aesthetic space curve μ^β = g s + h (eq 32) it is a line of slope β. From one jet of order 4:
-///   τ = N/D,  N = det(r', r'', r''') = c·r''',  D = |c|²,  c = r' × r'',
-///   dτ/dt = (N'D − N D')/D²,  N' = c·r'''',  D' = 2 c·(r' × r'''),   τ_s = (dτ/dt)/|r'|.
+/// τ and τ_s = dτ/ds come from frenet_jet too.
 /// Samples with τ = 0, τ_s = 0 or c = 0 (no osculating plane) are skipped and counted.
 /// Preconditions (InvalidInput): t_min ≤ t0 < t1 ≤ t_max, samples ≥ 2, regular curve (r' ≠ 0);
 /// torsion and LTG: 3-D curves.
 #include <vector>
 
+#include "cagd/analysis/frenet_jet.hpp"
 #include "cagd/core/curve.hpp"
 
 namespace cagd::analysis {
@@ -59,13 +58,7 @@ LineFit fit_line(const std::vector<double>& x, const std::vector<double>& y);
 /// The least-squares slope of the LCG over [t0, t1] (α for a log-aesthetic curve).
 LineFit lcg_slope(const Curve& c, double t0, double t1, int samples);
 
-/// The flatness policy: a point of a curve is straight (its curvature 0 to rounding) where
-/// κ · D ≤ kFlatCurvature, D a length of the whole curve (the diagonal of its data's, or its own,
-/// bounding box). There the torsion τ = det(r′, r″, r‴)/|r′ × r″|² is undefined (a quotient of
-/// rounding noise: at a natural end of a spline it came out as 1e15 or 0), and torsion() gives NaN.
-/// compare's largest |τ| skips the same points (fairness_measures).
-inline constexpr double kFlatCurvature = 1e-9;
-/// D of the flatness policy for a curve on its own: the diagonal of the bounding box of its
+/// D of the flatness policy (analysis/frenet_jet.hpp) for a curve on its own: the diagonal of the bounding box of its
 /// positions at its breakpoints (O(pieces)).
 double curve_extent(const Curve& c);
 /// Torsion τ(t) of a 3-D curve, NaN where the curve is straight by the flatness policy with the

@@ -4,6 +4,7 @@
 #include <limits>
 #include <string>
 
+#include "cagd/analysis/frenet_jet.hpp"
 #include "cagd/core/errors.hpp"
 
 namespace cagd::analysis {
@@ -12,11 +13,11 @@ namespace {
 
 // Signed (planar) or unsigned (3-D) curvature from first and second derivatives.
 double sample_curvature(const Eigen::RowVectorXd& d1, const Eigen::RowVectorXd& d2, int index) {
-    const double s2 = d1.squaredNorm();
-    if (s2 == 0.0) fail_input("cagd::analysis::sampled_curve_measures", "zero speed at sample " + std::to_string(index));
-    if (d1.size() == 2) return (d1(0) * d2(1) - d1(1) * d2(0)) / (s2 * std::sqrt(s2));
-    const Eigen::Vector3d a = d1.transpose(), b = d2.transpose();
-    return a.cross(b).norm() / (s2 * std::sqrt(s2));
+    Eigen::MatrixXd D(2, d1.size());
+    D << d1, d2;
+    const FrenetJet f = frenet_jet(D);
+    if (!f.regular) fail_input("cagd::analysis::sampled_curve_measures", "zero speed at sample " + std::to_string(index));
+    return f.curvature;
 }
 
 }  // namespace

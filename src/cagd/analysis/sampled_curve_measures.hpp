@@ -5,7 +5,7 @@
 ///
 ///   polyline length   Σ |r_i − r_{i−1}|                                  (2-D or 3-D)
 ///   enclosed area     ½ Σ (x_{i−1} y_i − x_i y_{i−1}), planar and closed only (signed, CCW > 0)
-///   curvature         κ_i = (x'y'' − y'x'')/|r'|³ (planar, signed) or |r' × r''|/|r'|³ (3-D)
+///   curvature         κ_i, signed in the plane, |κ_i| in 3-D (frenet_jet, analysis/frenet_jet.hpp)
 ///   bending energy    trapezoid rule Σ ½(κ_{i−1}² + κ_i²) |r_i − r_{i−1}|
 ///
 /// Accuracy: the chord sum and the trapezoid rule are O(h²) in the sample spacing h: sample the

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "cagd/analysis/curvature_comb.hpp"
+#include "cagd/analysis/frenet_jet.hpp"
 #include "cagd/analysis/curve_measures.hpp"
 #include "cagd/analysis/log_curvature_graph.hpp"
 #include "cagd/compare/locality_footprint.hpp"
@@ -76,11 +77,10 @@ FigureData comparison_figure_data(const std::vector<MethodComparison>& cs, const
                     previous = t;
                     previous_speed = speed;
                     if (cs[i].status == "cusp" || !(J.row(1).norm() > 0)) continue;
-                    const Eigen::Vector3d d1 = J.row(1).transpose(), d2 = J.row(2).transpose();
-                    const Eigen::Vector3d cr = d1.cross(d2);
-                    const double v = d1.norm(), cn = cr.norm();
-                    // τ is undefined where κ = 0 (a straight point): left at 0 there, as the table's maximum skips it.
-                    const double kappa = cn / (v * v * v), tau = kappa * diagonal > analysis::kFlatCurvature ? cr.dot(J.row(3).transpose()) / (cn * cn) : 0.0;
+                    const analysis::FrenetJet f = analysis::frenet_jet(J.bottomRows(3));
+                    // τ is undefined at a straight point (the flatness policy): plotted at 0 there,
+                    // as the table's largest |τ| skips it.
+                    const double kappa = f.curvature, tau = analysis::is_straight(kappa, diagonal) ? 0.0 : f.torsion;
                     d.profiles.push_back({index, s, kappa, tau});
                     continue;
                 }
@@ -90,9 +90,9 @@ FigureData comparison_figure_data(const std::vector<MethodComparison>& cs, const
                 if (t > previous) s += step_length();
                 previous = t;
                 previous_speed = speed;
-                const double v = std::hypot(J(1, 0), J(1, 1));
-                if (cs[i].status == "cusp" || !(v > 0)) continue;
-                const double kappa = (J(1, 0) * J(2, 1) - J(1, 1) * J(2, 0)) / (v * v * v);
+                const analysis::FrenetJet f = analysis::frenet_jet(J.bottomRows(2));
+                if (cs[i].status == "cusp" || !f.regular) continue;
+                const double kappa = f.curvature, v = f.speed;
                 d.profiles.push_back({index, s, kappa});
                 samples.push_back({J(0, 0), J(0, 1), -J(1, 1) / v, J(1, 0) / v, kappa});
             }

@@ -7,6 +7,7 @@
 #include <tuple>
 
 #include "cagd/analysis/curve_measures.hpp"
+#include "cagd/analysis/frenet_jet.hpp"
 #include "cagd/compare/interpolation_attempt.hpp"
 #include "cagd/compare/method_comparison.hpp"
 #include "cagd/core/csv.hpp"
@@ -31,14 +32,8 @@ constexpr int kProjectionIterations = 30;
 // 96/192, 192/384, 384/768 give 4.6, 4.1, 4.0).
 constexpr int kFittedSizes = 2;
 
-// κ of a jet: signed for planar curves, |κ| in space.
-double kappa(const Eigen::MatrixXd& jet) {
-    const Eigen::VectorXd d1 = jet.row(1).transpose(), d2 = jet.row(2).transpose();
-    const double speed = d1.norm();
-    if (d1.size() == 2) return (d1(0) * d2(1) - d1(1) * d2(0)) / (speed * speed * speed);
-    const Eigen::Vector3d a = d1, b = d2;
-    return a.cross(b).norm() / (speed * speed * speed);
-}
+// κ of a jet (signed for planar curves, |κ| in space); NaN at a point of zero speed.
+double kappa(const Eigen::MatrixXd& jet) { return analysis::frenet_jet(jet.bottomRows(jet.rows() - 1)).curvature; }
 
 double angle_between(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
     const double dot = a.dot(b);
@@ -64,42 +59,8 @@ double project(const Curve& truth, const Eigen::VectorXd& q, double t, double lo
     return t;
 }
 
-// κ and dκ/ds from a jet of order 3 (planar: signed; space: |κ|).
-std::pair<double, double> kappa_and_rate(const Eigen::MatrixXd& j) {
-    const Eigen::VectorXd d1 = j.row(1).transpose(), d2 = j.row(2).transpose(), d3 = j.row(3).transpose();
-    const double v = d1.norm(), v2 = v * v, v3 = v2 * v, along = d1.dot(d2);
-    double k = 0.0, ku = 0.0;
-    if (d1.size() == 2) {
-        k = (d1(0) * d2(1) - d1(1) * d2(0)) / v3;
-        ku = (d1(0) * d3(1) - d1(1) * d3(0)) / v3 - 3.0 * k * along / v2;
-    } else {
-        const Eigen::Vector3d w = Eigen::Vector3d(d1).cross(Eigen::Vector3d(d2)), wu = Eigen::Vector3d(d1).cross(Eigen::Vector3d(d3));
-        const double wn = w.norm();
-        k = wn / v3;
-        ku = (wn > 0.0 ? w.dot(wu) / wn : 0.0) / v3 - 3.0 * k * along / v2;
-    }
-    return {k, ku / v};
-}
-
-// A rate of curvature change counts as zero below this (× L²): a straight stretch has no extrema.
-constexpr double kFlatRate = 1e-9;
-// A curvature counts as zero below this (× L): a straight stretch has no sign.
-constexpr double kFlatCurvature = 1e-9;
 // A turn of the polygon (the sine of its angle) counts as none below this: collinear points.
 constexpr double kStraightTurn = 1e-12;
-
-// Sign changes in a sequence of −1, 0, 1 (zeros skipped); closed: also from the last sign to the first.
-int sign_changes(const std::vector<int>& signs, bool closed) {
-    int first = 0, last = 0, changes = 0;
-    for (int sign : signs) {
-        if (sign == 0) continue;
-        if (last != 0 && sign != last) ++changes;
-        if (first == 0) first = sign;
-        last = sign;
-    }
-    if (closed && first != 0 && last != first) ++changes;
-    return changes;
-}
 
 }  // namespace
 
@@ -121,7 +82,8 @@ ShapeMeasures shape_measures(const Curve& c, const std::vector<double>& nodes, b
         for (int q = 0; q < rule.size(); ++q) {
             const double u = u0 + 0.5 * (rule.nodes()[static_cast<std::size_t>(q)] + 1.0) * (u1 - u0);
             const Eigen::MatrixXd j = c.jet(u, 3);
-            const auto [kappa, rate] = kappa_and_rate(j);
+            const analysis::FrenetJet f = analysis::frenet_jet(j.bottomRows(3));
+            const double kappa = f.curvature, rate = f.curvature_rate;
             const double ds = 0.5 * rule.weights()[static_cast<std::size_t>(q)] * (u1 - u0) * j.row(1).norm();
             length += ds, bending += kappa * kappa * ds, variation += rate * rate * ds;
             max_kappa = std::max(max_kappa, std::abs(kappa));
@@ -134,19 +96,13 @@ ShapeMeasures shape_measures(const Curve& c, const std::vector<double>& nodes, b
     m.bending = length * bending;
     m.variation = length * length * length * variation;
     m.max_curvature = max_kappa * length;
-    int first = 0, last = 0;
-    for (double r : rates) {
-        const int sign = std::abs(r) * length * length <= kFlatRate ? 0 : (r > 0 ? 1 : -1);
-        if (sign == 0) continue;
-        if (last != 0 && sign != last) ++m.curvature_extrema;
-        if (first == 0) first = sign;
-        last = sign;
-    }
-    if (closed && first != 0 && last != first) ++m.curvature_extrema;
+    std::vector<int> rate_signs;
+    for (double r : rates) rate_signs.push_back(analysis::curvature_rate_sign(r, length));
+    m.curvature_extrema = analysis::sign_changes(rate_signs, closed);
     if (c.dimension() == 2) {
         std::vector<int> curve_signs, turn_signs;
         // (A point of zero speed at a span's end has no κ: no sign.)
-        for (double k : kappas) curve_signs.push_back(!std::isfinite(k) || std::abs(k) * length <= kFlatCurvature ? 0 : (k > 0 ? 1 : -1));
+        for (double k : kappas) curve_signs.push_back(analysis::curvature_sign(k, length));
         // The polygon through the curve's points at the nodes (closed: the last node is the first point).
         const std::size_t points = closed ? nodes.size() - 1 : nodes.size();
         std::vector<Eigen::Vector2d> p;
@@ -156,8 +112,8 @@ ShapeMeasures shape_measures(const Curve& c, const std::vector<double>& nodes, b
             const double turn = (a(0) * b(1) - a(1) * b(0)) / (a.norm() * b.norm());
             turn_signs.push_back(std::abs(turn) <= kStraightTurn ? 0 : (turn > 0 ? 1 : -1));
         }
-        m.inflections = sign_changes(curve_signs, closed);
-        m.unimplied_inflections = std::max(0, m.inflections - sign_changes(turn_signs, closed));
+        m.inflections = analysis::sign_changes(curve_signs, closed);
+        m.unimplied_inflections = std::max(0, m.inflections - analysis::sign_changes(turn_signs, closed));
     }
     const std::size_t count = nodes.size();
     for (std::size_t i = closed ? 0 : 1; i + 1 < count; ++i) {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cagd/analysis/curvature_comb.hpp"
+#include "cagd/analysis/frenet_jet.hpp"
 
 namespace cagd::exports {
 
@@ -56,9 +57,10 @@ void write_svg(std::ostream& out, const Curve& curve, const BezierForm& cubic, c
                 if (j == per_piece && k + 1 < pieces) continue;  // the next piece's first tooth
                 const double t = br[static_cast<std::size_t>(k)] + (br[static_cast<std::size_t>(k) + 1] - br[static_cast<std::size_t>(k)]) * j / per_piece;
                 const Eigen::MatrixXd J = j == per_piece ? curve.jet_from_left(t, 2) : curve.jet(t, 2);
-                const double v = std::hypot(J(1, 0), J(1, 1));
-                if (!(v > 0.0)) continue;  // no normal at a cusp
-                kappa.push_back((J(1, 0) * J(2, 1) - J(1, 1) * J(2, 0)) / (v * v * v));
+                const analysis::FrenetJet f = analysis::frenet_jet(J.bottomRows(2));
+                if (!f.regular) continue;  // no normal at a cusp
+                const double v = f.speed;
+                kappa.push_back(f.curvature);
                 normal.emplace_back(-J(1, 1) / v, J(1, 0) / v);
                 base.emplace_back(J(0, 0), J(0, 1));
             }
