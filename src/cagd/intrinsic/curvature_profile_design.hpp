@@ -52,6 +52,10 @@
 /// ordinates B_i, B_{i+1} more than kMaxOrdinateTurning = 1000 rad apart (160 turns; the integrals
 /// of eq 3 would cost O(turning) per segment; found by fuzzing, on a closed 6-point hairpin). The
 /// message says what was tried, the residual, the rank, and the worst equation.
+/// Sources, one concept each: the problem and its checks (curvature_profile_problem.cpp), the
+/// system f and its Jacobian (curvature_profile_system.cpp), Newton (curvature_profile_newton.cpp),
+/// the Ceres cross-check (curvature_profile_levenberg_marquardt.cpp), the windowed continuation
+/// (curvature_profile_continuation.cpp); their shared internals in detail/design_system.hpp.
 /// Preconditions (InvalidInput): ≥ 2 points (closed: ≥ 3), finite, no coincident consecutive
 /// points (closed: last ≠ first); the layout's span count n matches the points; one shape per
 /// segment; linear_curvature only for p = 3; conditions name existing breakpoints and finite values
