@@ -28,12 +28,13 @@ public:
     int dimension() const override { return 2; }
     double t_min() const override { return a_; }
     double t_max() const override { return b_; }
-    Eigen::MatrixXd jet(double t, int order) const override {
+    void evaluate_jet(double t, int first, cagd::JetSide, Eigen::Ref<Eigen::MatrixXd> out) const override {
+        const int order = first + static_cast<int>(out.rows()) - 1;
         Eigen::MatrixXd j = Eigen::MatrixXd::Zero(order + 1, 2);
         for (int k = 0; k <= order; ++k) j(k, 1) = std::sin(t + k * std::numbers::pi / 2);
         j(0, 0) = t;
         if (order >= 1) j(1, 0) = 1.0;
-        return j;
+        take_rows(j, first, out);
     }
     std::vector<double> breakpoints() const override { return {a_, b_}; }
 

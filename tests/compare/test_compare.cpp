@@ -751,9 +751,9 @@ public:
     int dimension() const override { return base_->dimension(); }
     double t_min() const override { return base_->t_min(); }
     double t_max() const override { return base_->t_max(); }
-    Eigen::MatrixXd jet(double t, int order) const override {
+    void evaluate_jet(double t, int first, cagd::JetSide side, Eigen::Ref<Eigen::MatrixXd> out) const override {
         if (t > 0.5 * (t_min() + t_max())) throw std::runtime_error("injected defect at t = " + std::to_string(t));
-        return base_->jet(t, order);
+        base_->evaluate_jet(t, first, side, out);
     }
     std::vector<double> breakpoints() const override { return base_->breakpoints(); }
 

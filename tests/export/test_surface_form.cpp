@@ -127,7 +127,8 @@ public:
     int dimension() const override { return 3; }
     double t_min() const override { return 0.0; }
     double t_max() const override { return 1.0; }
-    Eigen::MatrixXd jet(double t, int order) const override {
+    void evaluate_jet(double t, int first, cagd::JetSide, Eigen::Ref<Eigen::MatrixXd> out) const override {
+        const int order = first + static_cast<int>(out.rows()) - 1;
         Eigen::MatrixXd j = Eigen::MatrixXd::Zero(order + 1, 3);
         const double w = 0.5 * std::numbers::pi, a = w * t;
         for (int k = 0; k <= order; ++k) {
@@ -136,7 +137,7 @@ public:
             j(k, 1) = f * std::sin(a + w * k);
         }
         j(0, 0) -= 1.0;
-        return j;
+        take_rows(j, first, out);
     }
     std::vector<double> breakpoints() const override { return {0.0, 1.0}; }
 };

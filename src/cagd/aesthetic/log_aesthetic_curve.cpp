@@ -91,7 +91,7 @@ Eigen::Vector2d LogAestheticCurve::integrate(double a, double b) const {
     return {rule.integrate(fx, a, b, 1e-14), rule.integrate(fy, a, b, 1e-14)};
 }
 
-Eigen::MatrixXd LogAestheticCurve::jet(double s, int order) const {
+Eigen::MatrixXd LogAestheticCurve::whole_jet(double s, int order) const {
     if (!(s >= 0.0 && s <= p_.length)) fail_input(kPlanarCurveWho, "s = " + full_precision(s) + " outside [0, L = " + full_precision(p_.length) + "]");
     if (order < 0 || order > 3) fail_input(kPlanarCurveWho, "jet order " + std::to_string(order) + " outside 0..3");
     Eigen::MatrixXd j(order + 1, 2);

@@ -77,7 +77,7 @@ public:
     int dimension() const override { return 2; }
     double t_min() const override { return 0.0; }
     double t_max() const override { return p_.length; }
-    Eigen::MatrixXd jet(double s, int order) const override;  ///< order ≤ 3
+    void evaluate_jet(double s, int first, JetSide, Eigen::Ref<Eigen::MatrixXd> out) const override { take_rows(whole_jet(s, first + static_cast<int>(out.rows()) - 1), first, out); }  ///< order ≤ 3
     std::vector<double> breakpoints() const override { return {0.0, p_.length}; }
 
     double curvature(double s) const;             ///< signed κ(s)
@@ -89,6 +89,7 @@ public:
     std::optional<Eigen::Vector2d> closed_form_point(double s) const;
 
 private:
+    Eigen::MatrixXd whole_jet(double s, int order) const;  ///< rows 0..order
     Eigen::Vector2d integrate(double a, double b) const;
     LogAestheticParameters p_;
     LogAestheticRate rate_;

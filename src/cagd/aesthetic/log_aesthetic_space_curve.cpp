@@ -126,7 +126,7 @@ Eigen::Matrix3d LogAestheticSpaceCurve::frame(double s) const {
     return f;
 }
 
-Eigen::MatrixXd LogAestheticSpaceCurve::jet(double s, int order) const {
+Eigen::MatrixXd LogAestheticSpaceCurve::whole_jet(double s, int order) const {
     if (order < 0 || order > 4) fail_input(kSpaceCurveWho, "jet order " + std::to_string(order) + " outside 0..4");
     const State x = state_at(s);
     Eigen::MatrixXd j(order + 1, 3);

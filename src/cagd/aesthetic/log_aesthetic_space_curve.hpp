@@ -60,7 +60,7 @@ public:
     int dimension() const override { return 3; }
     double t_min() const override { return 0.0; }
     double t_max() const override { return p_.length; }
-    Eigen::MatrixXd jet(double s, int order) const override;  ///< order ≤ 4
+    void evaluate_jet(double s, int first, JetSide, Eigen::Ref<Eigen::MatrixXd> out) const override { take_rows(whole_jet(s, first + static_cast<int>(out.rows()) - 1), first, out); }  ///< order ≤ 4
     std::vector<double> breakpoints() const override { return {0.0, p_.length}; }
 
     /// κ(s).
@@ -73,6 +73,7 @@ public:
     Eigen::Matrix3d frame(double s) const;
 
 private:
+    Eigen::MatrixXd whole_jet(double s, int order) const;  ///< rows 0..order
     using State = std::array<double, 12>;  ///< r, t, n, b
     State state_at(double s) const;
     void check_s(double s) const;

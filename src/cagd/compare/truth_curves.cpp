@@ -22,12 +22,12 @@ public:
     int dimension() const override { return dimension_; }
     double t_min() const override { return 0.0; }
     double t_max() const override { return t_max_; }
-    Eigen::MatrixXd jet(double t, int order) const override {
-        if (order < 0 || order > 3) fail_input("compare::truth curve", "jet order must be 0..3, got " + std::to_string(order));
-        return jet_(t).topRows(order + 1);
-    }
     // Smooth everywhere: the limit from the left is the jet.
-    Eigen::MatrixXd jet_from_left(double t, int order) const override { return jet(t, order); }
+    void evaluate_jet(double t, int first, JetSide, Eigen::Ref<Eigen::MatrixXd> out) const override {
+        const int order = first + static_cast<int>(out.rows()) - 1;
+        if (order > 3) fail_input("compare::truth curve", "jet order must be 0..3, got " + std::to_string(order));
+        take_rows(jet_(t), first, out);
+    }
     std::vector<double> breakpoints() const override {
         std::vector<double> b;
         for (int i = 0; i <= 8; ++i) b.push_back(t_max_ * i / 8);  // pieces for the quadratures of analysis/
@@ -156,7 +156,7 @@ TruthSample truth_samples(const TruthFamily& family, int n, TruthSpacing spacing
         int dimension() const override { return base.dimension(); }
         double t_min() const override { return base.t_min(); }
         double t_max() const override { return end; }
-        Eigen::MatrixXd jet(double t, int order) const override { return base.jet(t, order); }
+        void evaluate_jet(double t, int first, JetSide side, Eigen::Ref<Eigen::MatrixXd> out) const override { base.evaluate_jet(t, first, side, out); }
         std::vector<double> breakpoints() const override {
             std::vector<double> b;
             for (double x : base.breakpoints())

@@ -27,10 +27,31 @@ PieceLocation locate_unit_piece_from_left(const char* who, double u, int pieces,
     return {s, u - s};
 }
 
-Eigen::MatrixXd Curve::derivatives(double t, int order) const {
-    if (order < 1) fail_input("cagd::Curve::derivatives", "order must be >= 1, got " + std::to_string(order));
-    return jet(t, order).bottomRows(order);
+namespace {
+// The conveniences' checks, once for every curve.
+void require_order(const char* who, int order, int least) {
+    if (order < least) fail_input(who, "order must be >= " + std::to_string(least) + ", got " + std::to_string(order));
 }
+void require_inside(const Curve& c, const char* who, double t, JetSide side) {
+    const double a = c.t_min(), b = c.t_max();
+    if (side == JetSide::left ? !(t > a && t <= b) : !(t >= a && t <= b))
+        fail_input(who, "t = " + full_precision(t) + " outside " + (side == JetSide::left ? "(" : "[") + full_precision(a) + ", " + full_precision(b) + "]" +
+                            (side == JetSide::left ? " (a left limit needs t > t_min)" : ""));
+}
+
+// Rows first..order of the jet at t, from `side`, after the checks every curve shares.
+Eigen::MatrixXd evaluated(const Curve& c, const char* who, double t, int order, int first, JetSide side) {
+    require_order(who, order, first);
+    require_inside(c, who, t, side);
+    Eigen::MatrixXd out(order + 1 - first, c.dimension());
+    c.evaluate_jet(t, first, side, out);
+    return out;
+}
+}  // namespace
+
+Eigen::MatrixXd Curve::jet(double t, int order) const { return evaluated(*this, "cagd::Curve::jet", t, order, 0, JetSide::right); }
+Eigen::MatrixXd Curve::jet_from_left(double t, int order) const { return evaluated(*this, "cagd::Curve::jet_from_left", t, order, 0, JetSide::left); }
+Eigen::MatrixXd Curve::derivatives(double t, int order) const { return evaluated(*this, "cagd::Curve::derivatives", t, order, 1, JetSide::right); }
 
 void reject_jet_capacity(const char* who, int rows, int dimension) {
     fail_input(who, "a JetMatrix holds 1.." + std::to_string(kJetCapacity) + " rows and 1..3 columns, asked for " + std::to_string(rows) + " x " + std::to_string(dimension));
@@ -38,7 +59,16 @@ void reject_jet_capacity(const char* who, int rows, int dimension) {
 
 void Curve::jet_into(double t, int order, JetMatrix& out) const {
     require_jet_capacity("cagd::Curve::jet_into", order + 1, dimension());
-    out = jet(t, order);
+    require_inside(*this, "cagd::Curve::jet_into", t, JetSide::right);
+    out.resize(order + 1, dimension());
+    evaluate_jet(t, 0, JetSide::right, out);
+}
+
+void Curve::derivatives_into(double t, int order, JetMatrix& out) const {
+    require_jet_capacity("cagd::Curve::derivatives_into", order, dimension());
+    require_inside(*this, "cagd::Curve::derivatives_into", t, JetSide::right);
+    out.resize(order, dimension());
+    evaluate_jet(t, 1, JetSide::right, out);
 }
 
 void Curve::jets_into(const double* t, std::size_t count, int order, double* out) const {
@@ -52,18 +82,6 @@ void Curve::jets_into(const double* t, std::size_t count, int order, double* out
         for (int r = 0; r <= order; ++r)
             for (int c = 0; c < dim; ++c) o[r * dim + c] = jet(r, c);
     }
-}
-
-void Curve::derivatives_into(double t, int order, JetMatrix& out) const {
-    require_jet_capacity("cagd::Curve::derivatives_into", order, dimension());
-    out = derivatives(t, order);
-}
-
-Eigen::MatrixXd Curve::jet_from_left(double t, int order) const {
-    if (breakpoints().size() > 2) throw std::logic_error("cagd::Curve::jet_from_left: a curve of several pieces must override it");
-    if (!(t > t_min() && t <= t_max()))
-        fail_input("cagd::Curve::jet_from_left", "t = " + full_precision(t) + " outside (" + full_precision(t_min()) + ", " + full_precision(t_max()) + "]");
-    return jet(t, order);
 }
 
 }  // namespace cagd

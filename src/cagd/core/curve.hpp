@@ -17,8 +17,16 @@ inline constexpr int kJetCapacity = 4;
 /// The storage of a jet (derivative orders in rows, coordinates in columns), at most kJetCapacity × 3.
 using JetMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, kJetCapacity, 3>;
 
+/// Which piece evaluates a parameter that is a breakpoint: the one that starts there (right, the
+/// default) or the one that ends there (left: the left limit t' → t⁻).
+enum class JetSide { right, left };
+
 /// A parametric curve r(t), t ∈ [t_min, t_max], in 2 or 3 dimensions: position and derivatives at
-/// any parameter (jet), the one interface analysis/ measures every curve through.
+/// any parameter, the one interface analysis/ measures every curve through.
+///
+/// One virtual evaluation primitive, evaluate_jet, as Geometric Tools' ParametricCurve::Evaluate;
+/// jet, jet_from_left, derivatives, point and their allocation-free forms are non-virtual
+/// conveniences on top of it, and check their arguments once for every curve.
 class Curve {
 public:
     virtual ~Curve() = default;
@@ -28,44 +36,49 @@ public:
     virtual double t_min() const = 0;
     /// Last parameter of the curve's domain.
     virtual double t_max() const = 0;
-    /// Row k of the result is the k-th derivative d^k r/dt^k at t, k = 0..order.
-    /// Precondition: t_min ≤ t ≤ t_max (throws InvalidInput otherwise), order ≥ 0.
-    virtual Eigen::MatrixXd jet(double t, int order) const = 0;
     /// Parameters in [t_min, t_max] between which the curve is polynomial (ascending,
     /// including both ends). Quadrature in analysis/ integrates piece by piece.
     virtual std::vector<double> breakpoints() const = 0;
-    /// The left limit lim_{t'→t⁻} jet(t', order), for t_min < t ≤ t_max: at a breakpoint, the jet of
-    /// the piece that ends there (jet(t) is the piece that starts there). Continuity at a join is
-    /// measured by comparing the two. The default serves curves of one piece (it throws
-    /// std::logic_error for a curve of several pieces that does not override it).
-    virtual Eigen::MatrixXd jet_from_left(double t, int order) const;
-    /// The derivatives without the position: row k − 1 is d^k r/dt^k at t, k = 1..order (order ≥ 1),
-    /// i.e. jet(t, order) without its first row. Speed, curvature and their integrals need only
-    /// these. The default slices jet(); a curve whose position is costly (IntrinsicCurve: a
-    /// quadrature per point) overrides it.
-    virtual Eigen::MatrixXd derivatives(double t, int order) const;
-    /// jet(t, order) written into `out` (resized to order + 1 rows × dimension()), for
-    /// 0 ≤ order < kJetCapacity (InvalidInput otherwise) and dimension() ≤ 3: the allocation-free
-    /// form for loops over many parameters. The default copies jet(); PiecewiseHermiteCurve and
-    /// BSplineCurve (degree ≤ 7) override it without allocating.
-    virtual void jet_into(double t, int order, JetMatrix& out) const;
-    /// derivatives(t, order) likewise, for 1 ≤ order ≤ kJetCapacity.
-    virtual void derivatives_into(double t, int order, JetMatrix& out) const;
-    /// jet_into at the `count` parameters t[0 … count − 1], each jet row by row (order r, then
-    /// coordinate c) into out[(k·(order + 1) + r)·dimension() + c]: bit for bit what jet_into gives
-    /// one parameter at a time, which the default does. PiecewiseHermiteCurve and
-    /// MethodParameterCurve override it to do the per-call work once per batch (Python's
-    /// Curve.evaluate runs it). Preconditions and errors as jet_into's; after an error `out` is
-    /// incomplete.
-    virtual void jets_into(const double* t, std::size_t count, int order, double* out) const;
     /// p ≥ 0 when every piece between consecutive breakpoints is a polynomial of degree at most p in
     /// t (Hermite and Bézier curves, B-splines, Hosaka's curves); −1 for a curve that is not
     /// polynomial (the intrinsic and log-aesthetic curves). export/ gives a polynomial curve's exact
     /// Bézier and B-spline forms from its jets, and approximates the others with a stated error.
     virtual int polynomial_degree() const { return -1; }
 
+    /// THE evaluation primitive: row i of `out` is the derivative d^k r/dt^k at t of order
+    /// k = first + i, i = 0..out.rows() − 1, from the piece that starts at t (JetSide::right) or
+    /// ends there (JetSide::left). first is 0 (with the position) or 1 (without: a curve whose
+    /// position is costly, IntrinsicCurve's quadrature, skips it). The conveniences below call it
+    /// with out.rows() ≥ 1, out.cols() == dimension(), t inside the domain (left: t > t_min), so an
+    /// implementation checks only what is its own (an order it does not provide: InvalidInput).
+    virtual void evaluate_jet(double t, int first, JetSide side, Eigen::Ref<Eigen::MatrixXd> out) const = 0;
+
+    /// Row k of the result is the k-th derivative d^k r/dt^k at t, k = 0..order.
+    /// Precondition: t_min ≤ t ≤ t_max, order ≥ 0 (InvalidInput otherwise).
+    Eigen::MatrixXd jet(double t, int order) const;
+    /// The left limit lim_{t'→t⁻} jet(t', order), for t_min < t ≤ t_max: at a breakpoint, the jet of
+    /// the piece that ends there (jet(t) is the piece that starts there). Continuity at a join is
+    /// measured by comparing the two.
+    Eigen::MatrixXd jet_from_left(double t, int order) const;
+    /// The derivatives without the position: row k − 1 is d^k r/dt^k at t, k = 1..order (order ≥ 1).
+    /// Speed, curvature and their integrals need only these.
+    Eigen::MatrixXd derivatives(double t, int order) const;
+    /// jet(t, order) written into `out` (resized to order + 1 rows × dimension()), for
+    /// 0 ≤ order < kJetCapacity and dimension() ≤ 3 (InvalidInput otherwise): the allocation-free
+    /// form for loops over many parameters.
+    void jet_into(double t, int order, JetMatrix& out) const;
+    /// derivatives(t, order) likewise, for 1 ≤ order ≤ kJetCapacity.
+    void derivatives_into(double t, int order, JetMatrix& out) const;
+    /// jet_into at the `count` parameters t[0 … count − 1], each jet row by row (order r, then
+    /// coordinate c) into out[(k·(order + 1) + r)·dimension() + c] (Python's Curve.evaluate runs it).
+    /// Preconditions and errors as jet_into's; after an error `out` is incomplete.
+    void jets_into(const double* t, std::size_t count, int order, double* out) const;
     /// Position r(t) (row 0 of jet(t, 0)) as a column vector.
     Eigen::VectorXd point(double t) const { return jet(t, 0).row(0).transpose(); }
+
+protected:
+    /// For a curve whose formula gives a whole jet at once: rows first.. of `jet` into out.
+    static void take_rows(const Eigen::MatrixXd& jet, int first, Eigen::Ref<Eigen::MatrixXd> out) { out = jet.middleRows(first, out.rows()); }
 };
 
 /// Throws InvalidInput naming `who` unless `rows` × `dimension` fits a JetMatrix.

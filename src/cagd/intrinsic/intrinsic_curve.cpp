@@ -34,15 +34,6 @@ double IntrinsicCurve::segment_offset_bound(const IntrinsicCurve& other, int j) 
     return (bound + 1e-13 * magnitude) * (1.0 + 1e-12);
 }
 
-Eigen::MatrixXd IntrinsicCurve::jet(double s, int order) const { return jet_in_segment(psi_.segment_at(s), s, order); }
-
-Eigen::MatrixXd IntrinsicCurve::jet_from_left(double s, int order) const {
-    if (!(s > 0.0 && s <= length())) fail_input("intrinsic::IntrinsicCurve::jet_from_left", "s = " + full_precision(s) + " outside (0, " + full_precision(length()) + "]");
-    const std::vector<double>& w = psi_.breakpoints();
-    const int j = static_cast<int>(std::lower_bound(w.begin(), w.end(), s) - w.begin()) - 1;  // w_j < s ≤ w_{j+1}
-    return jet_in_segment(j, s, order);
-}
-
 namespace {
 // r(s) in segment j at local τ = (s − w_j)/d_j: r_j + d_j ∫_0^τ (cos ψ, sin ψ) dt. At τ = 0 the
 // integral is +0 and at τ = 1 it is the one the constructor summed into r_{j+1}, so both ends are
@@ -66,45 +57,24 @@ void write_derivative_rows(const Jet& a, int order, Out& out, int first) {
 }
 }  // namespace
 
-Eigen::MatrixXd IntrinsicCurve::jet_in_segment(int j, double s, int order) const {
-    if (order < 0 || order > 4) fail_input("intrinsic::IntrinsicCurve::jet", "order must be in 0..4, got " + std::to_string(order));
-    const double w = psi_.breakpoints()[static_cast<std::size_t>(j)], d = psi_.segment_lengths()[static_cast<std::size_t>(j)];
-    const double tau = std::min(1.0, std::max(0.0, (s - w) / d));
-    Eigen::MatrixXd out(order + 1, 2);
-    out.row(0) = position_in_segment(points_, psi_, j, d, tau);
-    if (order == 0) return out;
-    write_derivative_rows(psi_.jet_in_segment(j, s, order - 1), order, out, 1);
-    return out;
-}
-
-void IntrinsicCurve::jet_into(double s, int order, JetMatrix& out) const {
-    if (order < 0 || order > 4) fail_input("intrinsic::IntrinsicCurve::jet", "order must be in 0..4, got " + std::to_string(order));
-    require_jet_capacity("intrinsic::IntrinsicCurve::jet_into", order + 1, 2);
-    const int j = psi_.segment_at(s);
-    const double w = psi_.breakpoints()[static_cast<std::size_t>(j)], d = psi_.segment_lengths()[static_cast<std::size_t>(j)];
-    const double tau = std::min(1.0, std::max(0.0, (s - w) / d));
-    out.resize(order + 1, 2);
-    out.row(0) = position_in_segment(points_, psi_, j, d, tau);
-    if (order == 0) return;
+void IntrinsicCurve::evaluate_jet(double s, int first, JetSide side, Eigen::Ref<Eigen::MatrixXd> out) const {
+    const int order = first + static_cast<int>(out.rows()) - 1;
+    if (order > 4) fail_input("intrinsic::IntrinsicCurve::jet", "order must be in 0..4, got " + std::to_string(order));
+    int j = 0;
+    if (side == JetSide::left) {
+        const std::vector<double>& w = psi_.breakpoints();
+        j = static_cast<int>(std::lower_bound(w.begin(), w.end(), s) - w.begin()) - 1;  // w_j < s ≤ w_{j+1}
+    } else {
+        j = psi_.segment_at(s);
+    }
+    if (first == 0) {
+        const double w = psi_.breakpoints()[static_cast<std::size_t>(j)], d = psi_.segment_lengths()[static_cast<std::size_t>(j)];
+        out.row(0) = position_in_segment(points_, psi_, j, d, std::min(1.0, std::max(0.0, (s - w) / d)));
+        if (order == 0) return;
+    }
     double a[4];
     psi_.jet_in_segment_into(j, s, order - 1, a);
-    write_derivative_rows(Eigen::Map<const Eigen::VectorXd>(a, order), order, out, 1);
-}
-
-void IntrinsicCurve::derivatives_into(double s, int order, JetMatrix& out) const {
-    if (order < 1 || order > 4) fail_input("intrinsic::IntrinsicCurve::derivatives", "order must be in 1..4, got " + std::to_string(order));
-    require_jet_capacity("intrinsic::IntrinsicCurve::derivatives_into", order, 2);
-    out.resize(order, 2);
-    double a[4];
-    psi_.jet_in_segment_into(psi_.segment_at(s), s, order - 1, a);
-    write_derivative_rows(Eigen::Map<const Eigen::VectorXd>(a, order), order, out, 0);
-}
-
-Eigen::MatrixXd IntrinsicCurve::derivatives(double s, int order) const {
-    if (order < 1 || order > 4) fail_input("intrinsic::IntrinsicCurve::derivatives", "order must be in 1..4, got " + std::to_string(order));
-    Eigen::MatrixXd out(order, 2);
-    write_derivative_rows(psi_.jet_in_segment(psi_.segment_at(s), s, order - 1), order, out, 0);
-    return out;
+    write_derivative_rows(Eigen::Map<const Eigen::VectorXd>(a, order), order, out, 1 - first);
 }
 
 std::vector<ProfileSample> curvature_profile_samples(const IntrinsicCurve& curve, int per_segment) {

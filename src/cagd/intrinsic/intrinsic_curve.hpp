@@ -31,14 +31,9 @@ public:
     int dimension() const override { return 2; }
     double t_min() const override { return 0.0; }
     double t_max() const override { return psi_.length(); }
-    Eigen::MatrixXd jet(double s, int order) const override;
-    Eigen::MatrixXd jet_from_left(double s, int order) const override;
-    /// r', r'', … from ψ alone (e = (cos ψ, sin ψ), n = e rotated by π/2; r' = e, r'' = ψ' n, …):
-    /// no position quadrature, so speed and curvature integrals cost a B-spline evaluation each.
-    Eigen::MatrixXd derivatives(double s, int order) const override;
-    /// The same two without allocating (the measures' hot path), bit for bit as jet and derivatives.
-    void jet_into(double s, int order, JetMatrix& out) const override;
-    void derivatives_into(double s, int order, JetMatrix& out) const override;
+    /// Rows r', r'', … from ψ alone (e = (cos ψ, sin ψ), n = e rotated by π/2; r' = e, r'' = ψ' n, …);
+    /// the position, a quadrature, only where first = 0. Orders up to 4.
+    void evaluate_jet(double s, int first, JetSide side, Eigen::Ref<Eigen::MatrixXd> out) const override;
     std::vector<double> breakpoints() const override { return psi_.breakpoints(); }
 
     /// An upper bound on the distance between this curve and `other` at the same fraction τ of
@@ -55,7 +50,6 @@ public:
     double segment_offset_bound(const IntrinsicCurve& other, int j) const;
 
 private:
-    Eigen::MatrixXd jet_in_segment(int j, double s, int order) const;
     TangentAngleSpline psi_;
     Eigen::MatrixXd points_;
 };

@@ -71,60 +71,17 @@ double MethodParameterCurve::method_parameter(double u) const {
     return std::min(tau_[k + 1], tau_[k] + dtau_du_[k] * (u - u_[k]));
 }
 
-Eigen::MatrixXd MethodParameterCurve::scaled(Eigen::MatrixXd j, int span) const {
-    const double inv = 1.0 / dtau_du_[static_cast<std::size_t>(span)];
-    double f = 1.0;
-    for (Eigen::Index i = 1; i < j.rows(); ++i) j.row(i) *= (f *= inv);
-    return j;
-}
-
-Eigen::MatrixXd MethodParameterCurve::jet(double tau, int order) const {
-    const int k = span_of_tau(tau, false);
-    const auto s = static_cast<std::size_t>(k);
-    return scaled(base_->jet(std::min(u_[s + 1], u_[s] + (tau - tau_[s]) / dtau_du_[s]), order), k);
-}
-
-void MethodParameterCurve::jet_into(double tau, int order, JetMatrix& out) const {
-    const int k = span_of_tau(tau, false);
-    const auto s = static_cast<std::size_t>(k);
-    base_->jet_into(std::min(u_[s + 1], u_[s] + (tau - tau_[s]) / dtau_du_[s]), order, out);
-    const double inv = 1.0 / dtau_du_[s];  // the same operations as scaled()
-    double f = 1.0;
-    for (Eigen::Index i = 1; i < out.rows(); ++i) out.row(i) *= (f *= inv);
-}
-
-void MethodParameterCurve::jets_into(const double* tau, std::size_t count, int order, double* out) const {
-    const int dim = dimension();
-    require_jet_capacity("cagd::methods::MethodParameterCurve::jets_into", order + 1, dim);
-    const std::size_t stride = static_cast<std::size_t>((order + 1) * dim);
-    constexpr std::size_t kBlock = 256;
-    double u[kBlock];
-    std::size_t span[kBlock];
-    for (std::size_t first = 0; first < count; first += kBlock) {
-        const std::size_t m = std::min(kBlock, count - first);
-        for (std::size_t i = 0; i < m; ++i) {
-            const auto s = static_cast<std::size_t>(span_of_tau(tau[first + i], false));
-            span[i] = s;
-            u[i] = std::min(u_[s + 1], u_[s] + (tau[first + i] - tau_[s]) / dtau_du_[s]);
-        }
-        base_->jets_into(u, m, order, out + first * stride);
-        for (std::size_t i = 0; i < m; ++i) {  // the same operations as jet_into's
-            const double inv = 1.0 / dtau_du_[span[i]];
-            double f = 1.0;
-            double* o = out + (first + i) * stride;
-            for (int r = 1; r <= order; ++r) {
-                f *= inv;
-                for (int c = 0; c < dim; ++c) o[r * dim + c] *= f;
-            }
-        }
-    }
-}
-
-Eigen::MatrixXd MethodParameterCurve::jet_from_left(double tau, int order) const {
-    const int k = span_of_tau(tau, true);
+void MethodParameterCurve::evaluate_jet(double tau, int first, JetSide side, Eigen::Ref<Eigen::MatrixXd> out) const {
+    const bool left = side == JetSide::left;
+    const int k = span_of_tau(tau, left);
     const auto s = static_cast<std::size_t>(k);
     const double u = std::min(u_[s + 1], u_[s] + (tau - tau_[s]) / dtau_du_[s]);
-    return scaled(u > base_->t_min() ? base_->jet_from_left(u, order) : base_->jet(u, order), k);
+    base_->evaluate_jet(u, first, left && u > base_->t_min() ? JetSide::left : JetSide::right, out);
+    // The chain rule: d^k r̃/dτ^k = (du/dτ)^k d^k r/du^k, u affine in τ on the span.
+    const double inv = 1.0 / dtau_du_[s];
+    double f = 1.0;
+    for (int order = 1; order < first; ++order) f *= inv;
+    for (Eigen::Index i = first == 0 ? 1 : 0; i < out.rows(); ++i) out.row(i) *= (f *= inv);
 }
 
 std::vector<double> MethodParameterCurve::breakpoints() const {

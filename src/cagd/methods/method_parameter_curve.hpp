@@ -28,14 +28,8 @@ public:
     int dimension() const override { return base_->dimension(); }
     double t_min() const override { return tau_.front(); }
     double t_max() const override { return tau_.back(); }
-    Eigen::MatrixXd jet(double tau, int order) const override;
-    Eigen::MatrixXd jet_from_left(double tau, int order) const override;
-    /// jet() into a fixed-capacity matrix: the span curve's own jet_into, then the chain rule in
-    /// place; no allocation (Python's evaluate runs it per parameter).
-    void jet_into(double tau, int order, JetMatrix& out) const override;
-    /// jet_into's arithmetic in blocks: the blocks' u, then the span curve's jets_into, then the
-    /// chain rule in place.
-    void jets_into(const double* tau, std::size_t count, int order, double* out) const override;
+    /// The span curve's jet at u(τ), then the chain rule in place.
+    void evaluate_jet(double tau, int first, JetSide side, Eigen::Ref<Eigen::MatrixXd> out) const override;
     std::vector<double> breakpoints() const override;
     /// The span curve's: τ is affine in u on every piece.
     int polynomial_degree() const override { return base_->polynomial_degree(); }
@@ -56,7 +50,6 @@ private:
     std::vector<int> bucket_span_;
     double buckets_per_unit_ = 0.0;
     int span_of_tau(double tau, bool from_left) const;
-    Eigen::MatrixXd scaled(Eigen::MatrixXd j, int span) const;
 };
 
 }  // namespace cagd::methods

@@ -58,11 +58,9 @@ struct SpringResidual {
 
 }  // namespace
 
-Eigen::MatrixXd ElasticSpaceCurve::jet(double at, int order) const {
-    const char* who = "cagd::smoothing::ElasticSpaceCurve::jet";
-    if (!(at >= knots.front() && at <= knots.back())) fail_input(who, "x = " + full_precision(at) + " outside the knots");
-    if (order < 0) fail_input(who, "order must be >= 0, got " + std::to_string(order));
-    const auto it = std::upper_bound(knots.begin(), knots.end(), at);
+Eigen::MatrixXd ElasticSpaceCurve::whole_jet(double at, int order, JetSide side) const {
+    // The piece that starts at or before x (right), or the one that ends at or after it (left).
+    const auto it = side == JetSide::left ? std::lower_bound(knots.begin(), knots.end(), at) : std::upper_bound(knots.begin(), knots.end(), at);
     const std::size_t i = std::min<std::size_t>(static_cast<std::size_t>(std::max<long>(it - knots.begin() - 1, 0)), knots.size() - 2);
     const Eigen::Index k = static_cast<Eigen::Index>(i);
     const double h = knots[i + 1] - knots[i], u = (at - knots[i]) / h;

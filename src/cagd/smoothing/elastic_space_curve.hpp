@@ -41,8 +41,13 @@ struct ElasticSpaceCurve final : Curve {
     int dimension() const override { return 3; }
     double t_min() const override { return knots.front(); }
     double t_max() const override { return knots.back(); }
-    Eigen::MatrixXd jet(double x, int order) const override;
+    void evaluate_jet(double x, int first, JetSide side, Eigen::Ref<Eigen::MatrixXd> out) const override {
+        take_rows(whole_jet(x, first + static_cast<int>(out.rows()) - 1, side), first, out);
+    }
     std::vector<double> breakpoints() const override { return knots; }
+
+private:
+    Eigen::MatrixXd whole_jet(double x, int order, JetSide side) const;  ///< rows 0..order of the piece on `side`
 };
 
 /// The minimiser described above: `subdivisions` Hermite pieces per data interval, Ceres from the elastic lines of y and z.

@@ -49,7 +49,7 @@ Eigen::MatrixXd bernstein_from_monomial(const Eigen::MatrixXd& monomial) {
     return control;
 }
 
-Eigen::MatrixXd BezierCurve::jet(double t, int order) const {
+Eigen::MatrixXd BezierCurve::whole_jet(double t, int order) const {
     if (!(t >= a_ && t <= b_)) fail_input("cagd::BezierCurve::jet", "t = " + full_precision(t) + " outside [" + full_precision(a_) + ", " + full_precision(b_) + "]");
     if (order < 0) fail_input("cagd::BezierCurve::jet", "order must be >= 0");
     const double s = std::min(1.0, std::max(0.0, (t - a_) / (b_ - a_)));

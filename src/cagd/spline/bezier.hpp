@@ -36,11 +36,12 @@ public:
     int dimension() const override { return static_cast<int>(control_.cols()); }
     double t_min() const override { return a_; }
     double t_max() const override { return b_; }
-    Eigen::MatrixXd jet(double t, int order) const override;
+    void evaluate_jet(double t, int first, JetSide, Eigen::Ref<Eigen::MatrixXd> out) const override { take_rows(whole_jet(t, first + static_cast<int>(out.rows()) - 1), first, out); }
     std::vector<double> breakpoints() const override { return {a_, b_}; }
     int polynomial_degree() const override { return degree(); }
 
 private:
+    Eigen::MatrixXd whole_jet(double t, int order) const;  ///< rows 0..order by the evaluation method
     Eigen::MatrixXd control_;
     double a_, b_;
     BezierEvaluation method_;

@@ -342,8 +342,7 @@ void taylor_rows(int p, int dim, const double* c, double h, int first, int last,
 
 // Rows 0..order of the jet at t from the Taylor coefficients of `span`: r^(d)(t) = Σ_{k≥d}
 // k!/(k−d)! c_k h^{k−d}, h = t − (the span's middle), by Horner; rows beyond the degree are zero.
-template <class Out>
-void BSplineCurve::taylor_jet(int span, double t, int order, Out& out) const {
+void BSplineCurve::taylor_jet(int span, double t, int order, Eigen::Ref<Eigen::MatrixXd> out) const {
     const int p = degree_, dim = dimension();
     const bool at_start = t == knots_[static_cast<std::size_t>(span)];
     if (at_start || t == knots_[static_cast<std::size_t>(span) + 1]) {
@@ -353,7 +352,6 @@ void BSplineCurve::taylor_jet(int span, double t, int order, Out& out) const {
         // 0..p come from the table of knot jets; higher orders run A2.3.
         if (order <= p && p + 1 <= kStackOrder) {  // (above degree 7 Eigen's product may sum in another order: computed here)
             const double* c = knot_jet(span, !at_start);
-            out.resize(order + 1, dim);
             for (int k = 0; k <= order; ++k)
                 for (int e = 0; e < dim; ++e) out(k, e) = c[k * dim + e];
             return;
@@ -369,54 +367,26 @@ void BSplineCurve::taylor_jet(int span, double t, int order, Out& out) const {
     }
     const double* c = taylor(span);
     const double h = t - span_middle(span);
-    out.resize(order + 1, dim);
     taylor_rows(p, dim, c, h, 0, order, out);
 }
 
-void BSplineCurve::jet_into(double t, int order, JetMatrix& out) const {
-    const char* who = "cagd::BSplineCurve::jet_into";
-    require_jet_capacity(who, order + 1, dimension());
-    if (!(t >= t_min() && t <= t_max())) fail_input(who, "t = " + full_precision(t) + " outside [" + full_precision(t_min()) + ", " + full_precision(t_max()) + "]");
-    taylor_jet(find_span(t), t, order, out);
-}
-
-void BSplineCurve::derivatives_into(double t, int order, JetMatrix& out) const {
-    require_jet_capacity("cagd::BSplineCurve::derivatives_into", order, dimension());
-    if (order + 1 > kJetCapacity) return Curve::derivatives_into(t, order, out);  // the jet would not fit
-    if (!(t >= t_min() && t <= t_max()))
-        fail_input("cagd::BSplineCurve::derivatives_into", "t = " + full_precision(t) + " outside [" + full_precision(t_min()) + ", " + full_precision(t_max()) + "]");
-    const int span = find_span(t);
-    if (t != knots_[static_cast<std::size_t>(span)] && t != knots_[static_cast<std::size_t>(span) + 1]) {
-        // Off the knots: the Taylor rows 1..order alone (the position is not needed).
-        out.resize(order, dimension());
-        taylor_rows(degree_, dimension(), taylor(span), t - span_middle(span), 1, order, out);
-        return;
+void BSplineCurve::evaluate_jet(double t, int first, JetSide side, Eigen::Ref<Eigen::MatrixXd> out) const {
+    const int order = first + static_cast<int>(out.rows()) - 1;
+    int span = 0;
+    if (side == JetSide::left) {
+        // The last non-empty span [U_i, U_{i+1}) with U_i < t: the polynomial piece that ends at or after t.
+        const int n = static_cast<int>(control_.rows());
+        const auto it = std::lower_bound(knots_.begin() + degree_, knots_.begin() + n + 1, t);
+        span = static_cast<int>(it - knots_.begin()) - 1;
+    } else {
+        span = find_span(t);
     }
-    JetMatrix jet;
+    if (first == 0) return taylor_jet(span, t, order, out);
+    if (t != knots_[static_cast<std::size_t>(span)] && t != knots_[static_cast<std::size_t>(span) + 1])
+        return taylor_rows(degree_, dimension(), taylor(span), t - span_middle(span), 1, order, out);  // off the knots: rows 1..order alone
+    Eigen::MatrixXd jet(order + 1, dimension());
     taylor_jet(span, t, order, jet);
     out = jet.bottomRows(order);
-}
-
-Eigen::MatrixXd BSplineCurve::jet(double t, int order) const {
-    if (!(t >= t_min() && t <= t_max()))
-        fail_input("cagd::BSplineCurve::jet", "t = " + full_precision(t) + " outside [" + full_precision(t_min()) + ", " + full_precision(t_max()) + "]");
-    if (order < 0) fail_input("cagd::BSplineCurve::jet", "order must be >= 0");
-    Eigen::MatrixXd out;
-    taylor_jet(find_span(t), t, order, out);
-    return out;
-}
-
-Eigen::MatrixXd BSplineCurve::jet_from_left(double t, int order) const {
-    if (!(t > t_min() && t <= t_max()))
-        fail_input("cagd::BSplineCurve::jet_from_left", "t = " + full_precision(t) + " outside (" + full_precision(t_min()) + ", " + full_precision(t_max()) + "]");
-    if (order < 0) fail_input("cagd::BSplineCurve::jet_from_left", "order must be >= 0");
-    // The last non-empty span [U_i, U_{i+1}) with U_i < t: the polynomial piece that ends at or after t.
-    const int n = static_cast<int>(control_.rows());
-    const auto it = std::lower_bound(knots_.begin() + degree_, knots_.begin() + n + 1, t);
-    const int span = static_cast<int>(it - knots_.begin()) - 1;
-    Eigen::MatrixXd out;
-    taylor_jet(span, t, order, out);
-    return out;
 }
 
 std::vector<double> BSplineCurve::breakpoints() const {

@@ -52,11 +52,8 @@ public:
     int dimension() const override { return static_cast<int>(control_.cols()); }
     double t_min() const override { return knots_[degree_]; }
     double t_max() const override { return knots_[control_.rows()]; }
-    Eigen::MatrixXd jet(double t, int order) const override;
-    Eigen::MatrixXd jet_from_left(double t, int order) const override;
     /// Allocation-free (after the first evaluation builds the Taylor coefficients).
-    void jet_into(double t, int order, JetMatrix& out) const override;
-    void derivatives_into(double t, int order, JetMatrix& out) const override;
+    void evaluate_jet(double t, int first, JetSide side, Eigen::Ref<Eigen::MatrixXd> out) const override;
     std::vector<double> breakpoints() const override;
     int polynomial_degree() const override { return degree_; }
 
@@ -124,8 +121,7 @@ private:
     const SpanBuckets& span_buckets() const;
     const double* taylor(int span) const;  ///< c_0 … c_p of `span`
     double span_middle(int span) const;
-    template <class Out>
-    void taylor_jet(int span, double t, int order, Out& out) const;
+    void taylor_jet(int span, double t, int order, Eigen::Ref<Eigen::MatrixXd> out) const;  ///< rows 0..order
     const double* knot_jet(int span, bool at_end) const;  ///< rows 0..p of the A2.3 jet at the span's start or end knot
 
     int degree_;

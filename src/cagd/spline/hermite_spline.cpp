@@ -103,16 +103,6 @@ Eigen::MatrixXd PiecewiseHermiteCurve::end_derivatives() const { return holds_no
 
 std::vector<double> PiecewiseHermiteCurve::breakpoints() const { return unit_piece_breakpoints(spans()); }
 
-Eigen::MatrixXd PiecewiseHermiteCurve::jet(double u, int order) const {
-    const auto [k, t] = locate_unit_piece("cagd::spline::PiecewiseHermiteCurve::jet", u, spans(), order);
-    return span_jet(k, t, order);
-}
-
-Eigen::MatrixXd PiecewiseHermiteCurve::jet_from_left(double u, int order) const {
-    const auto [k, t] = locate_unit_piece_from_left("cagd::spline::PiecewiseHermiteCurve::jet_from_left", u, spans(), order);
-    return span_jet(k, t, order);
-}
-
 namespace {
 // Row j of the basis: the j-th derivatives of H0..H3 at t (zero for j > 3).
 [[gnu::always_inline]] inline void hermite_basis_row(int j, double t, double h[4]) {
@@ -124,119 +114,27 @@ namespace {
         default: h[0] = h[1] = h[2] = h[3] = 0.0;
     }
 }
-
-// Rows First..Last of span k's jet at local t (see span_jet_rows), with the column count and the
-// rows known at compile time (Dim ≤ 3, First ≤ 1, Last ≤ 4), inlined into the jet_into overrides: the basis
-// rows are straight-line code, as in a hand-written loop.
-// The arithmetic, once: put(j − First, c, value) receives each entry (a JetMatrix here, a batch's
-// array in hermite_jets below).
-template <int Dim, int First, int Last, class Derivatives, class Put>
-[[gnu::always_inline]] inline void hermite_jet_entries(const Eigen::MatrixXd& nodes, const Derivatives& d, int k, double t, Put put) {
-    double p0[Dim], p1[Dim], a[Dim], b[Dim];
-    for (int c = 0; c < Dim; ++c) p0[c] = nodes(k, c), p1[c] = nodes(k + 1, c), a[c] = d.start(k, c), b[c] = d.end(k, c);
-    double h[Last + 1][4];
-    for (int j = First; j <= Last; ++j) hermite_basis_row(j, t, h[j]);
-    for (int c = 0; c < Dim; ++c)
-        for (int j = First; j <= Last; ++j) put(j - First, c, h[j][0] * p0[c] + h[j][1] * p1[c] + h[j][2] * a[c] + h[j][3] * b[c]);
-}
-
-template <int Dim, int First, int Last, class Derivatives>
-[[gnu::always_inline]] inline void hermite_jet_rows(const Eigen::MatrixXd& nodes, const Derivatives& d, int k, double t, JetMatrix& out) {
-    out.resize(Last - First + 1, Dim);
-    hermite_jet_entries<Dim, First, Last>(nodes, d, k, t, [&](int row, int c, double v) { out(row, c) = v; });
-}
-
-template <int Dim, class Derivatives>
-[[gnu::always_inline]] inline void hermite_jet_rows(const Eigen::MatrixXd& nodes, const Derivatives& d, int k, double t, int first, int last, JetMatrix& out) {
-    // first ∈ {0, 1}, first ≤ last ≤ 3 (require_jet_capacity in the callers)
-    switch (4 * first + last) {
-        case 0: return hermite_jet_rows<Dim, 0, 0>(nodes, d, k, t, out);
-        case 1: return hermite_jet_rows<Dim, 0, 1>(nodes, d, k, t, out);
-        case 2: return hermite_jet_rows<Dim, 0, 2>(nodes, d, k, t, out);
-        case 3: return hermite_jet_rows<Dim, 0, 3>(nodes, d, k, t, out);
-        case 5: return hermite_jet_rows<Dim, 1, 1>(nodes, d, k, t, out);
-        case 6: return hermite_jet_rows<Dim, 1, 2>(nodes, d, k, t, out);
-        case 7: return hermite_jet_rows<Dim, 1, 3>(nodes, d, k, t, out);
-        default: return hermite_jet_rows<Dim, 1, 4>(nodes, d, k, t, out);  // derivatives_into(u, 4): row 4 is zero
-    }
-}
 }  // namespace
 
-Eigen::MatrixXd PiecewiseHermiteCurve::span_jet(int k, double t, int order) const {
-    Eigen::MatrixXd out = Eigen::MatrixXd::Zero(order + 1, dimension());
-    Eigen::RowVectorXd a(dimension()), b(dimension());
+void PiecewiseHermiteCurve::evaluate_jet(double u, int first, JetSide side, Eigen::Ref<Eigen::MatrixXd> out) const {
+    const char* who = "cagd::spline::PiecewiseHermiteCurve::evaluate_jet";
+    const int last = first + static_cast<int>(out.rows()) - 1;
+    const PieceLocation at = side == JetSide::left ? locate_unit_piece_from_left(who, u, spans(), last) : locate_unit_piece(who, u, spans(), last);
+    const int k = at.piece;
+    const double t = at.t;
+    const Eigen::Index dim = nodes_.cols();
     with_derivatives(slopes_, scales_, d0_, d1_, [&](const auto& d) {
-        for (Eigen::Index c = 0; c < a.size(); ++c) a(c) = d.start(k, c), b(c) = d.end(k, c);
-    });
-    double h[4];
-    for (int j = 0; j <= std::min(order, 3); ++j) {
-        hermite_basis_row(j, t, h);
-        out.row(j) = h[0] * nodes_.row(k) + h[1] * nodes_.row(k + 1) + h[2] * a + h[3] * b;
-    }
-    return out;
-}
-
-inline void PiecewiseHermiteCurve::span_jet_rows(int k, double t, int first, int last, JetMatrix& out) const {
-    const int dim = static_cast<int>(nodes_.cols());
-    with_derivatives(slopes_, scales_, d0_, d1_, [&](const auto& d) __attribute__((always_inline)) {
-        switch (dim) {  // dimension() ≤ 3 (require_jet_capacity)
-            case 1: return hermite_jet_rows<1>(nodes_, d, k, t, first, last, out);
-            case 2: return hermite_jet_rows<2>(nodes_, d, k, t, first, last, out);
-            default: return hermite_jet_rows<3>(nodes_, d, k, t, first, last, out);
+        double h[4];
+        for (int j = first; j <= last; ++j) {
+            if (j > 3) {  // a cubic's higher derivatives
+                out.row(j - first).setZero();
+                continue;
+            }
+            hermite_basis_row(j, t, h);
+            for (Eigen::Index c = 0; c < dim; ++c) out(j - first, c) = h[0] * nodes_(k, c) + h[1] * nodes_(k + 1, c) + h[2] * d.start(k, c) + h[3] * d.end(k, c);
         }
     });
 }
-
-void PiecewiseHermiteCurve::jet_into(double u, int order, JetMatrix& out) const {
-    const char* who = "cagd::spline::PiecewiseHermiteCurve::jet_into";
-    require_jet_capacity(who, order + 1, static_cast<int>(nodes_.cols()));  // not the virtual dimension()
-    const auto [k, t] = locate_unit_piece(who, u, spans(), order);
-    span_jet_rows(k, t, 0, order, out);
-}
-
-namespace {
-// jets_into of rows 0..Last, Dim columns: hermite_jet_entries per parameter, written to out row by
-// row (the arithmetic of jet_into).
-template <int Dim, int Last, class Derivatives>
-void hermite_jets(const Eigen::MatrixXd& nodes, const Derivatives& d, const double* u, std::size_t count, double* out) {
-    const char* who = "cagd::spline::PiecewiseHermiteCurve::jets_into";
-    const int spans = static_cast<int>(nodes.rows()) - 1;
-    for (std::size_t i = 0; i < count; ++i) {
-        const auto [k, t] = locate_unit_piece(who, u[i], spans, Last);
-        double* o = out + i * (Last + 1) * Dim;
-        hermite_jet_entries<Dim, 0, Last>(nodes, d, k, t, [&](int row, int c, double v) { o[row * Dim + c] = v; });
-    }
-}
-
-template <int Dim, class Derivatives>
-void hermite_jets(const Eigen::MatrixXd& nodes, const Derivatives& d, const double* u, std::size_t count, int order, double* out) {
-    switch (order) {  // 0 ≤ order < kJetCapacity (require_jet_capacity in the caller)
-        case 0: return hermite_jets<Dim, 0>(nodes, d, u, count, out);
-        case 1: return hermite_jets<Dim, 1>(nodes, d, u, count, out);
-        case 2: return hermite_jets<Dim, 2>(nodes, d, u, count, out);
-        default: return hermite_jets<Dim, 3>(nodes, d, u, count, out);
-    }
-}
-}  // namespace
-
-void PiecewiseHermiteCurve::jets_into(const double* u, std::size_t count, int order, double* out) const {
-    require_jet_capacity("cagd::spline::PiecewiseHermiteCurve::jets_into", order + 1, static_cast<int>(nodes_.cols()));
-    with_derivatives(slopes_, scales_, d0_, d1_, [&](const auto& d) __attribute__((always_inline)) {
-        switch (nodes_.cols()) {
-            case 1: return hermite_jets<1>(nodes_, d, u, count, order, out);
-            case 2: return hermite_jets<2>(nodes_, d, u, count, order, out);
-            default: return hermite_jets<3>(nodes_, d, u, count, order, out);
-        }
-    });
-}
-
-void PiecewiseHermiteCurve::derivatives_into(double u, int order, JetMatrix& out) const {
-    const char* who = "cagd::spline::PiecewiseHermiteCurve::derivatives_into";
-    require_jet_capacity(who, order, static_cast<int>(nodes_.cols()));
-    const auto [k, t] = locate_unit_piece(who, u, spans(), order);
-    span_jet_rows(k, t, 1, order, out);
-}
-
 
 namespace {
 

@@ -79,20 +79,12 @@ public:
     int dimension() const override { return static_cast<int>(nodes_.cols()); }
     double t_min() const override { return 0.0; }
     double t_max() const override { return spans(); }
-    Eigen::MatrixXd jet(double u, int order) const override;
-    Eigen::MatrixXd jet_from_left(double u, int order) const override;
-    void jet_into(double u, int order, JetMatrix& out) const override;
-    void derivatives_into(double u, int order, JetMatrix& out) const override;
-    /// jet_into's arithmetic written straight into `out`, the dimension and order dispatched once.
-    void jets_into(const double* u, std::size_t count, int order, double* out) const override;
+    void evaluate_jet(double u, int first, JetSide side, Eigen::Ref<Eigen::MatrixXd> out) const override;
     std::vector<double> breakpoints() const override;
     int polynomial_degree() const override { return 3; }
 
 private:
     PiecewiseHermiteCurve() = default;
-    Eigen::MatrixXd span_jet(int k, double t, int order) const;  ///< span k at local t ∈ [0, 1]
-    /// Rows first..last of span k's jet at local t into out (rows last − first + 1).
-    void span_jet_rows(int k, double t, int first, int last, JetMatrix& out) const;
     Eigen::MatrixXd nodes_, d0_, d1_;  ///< the pair form (d0_, d1_ empty in the slope form)
     Eigen::MatrixXd slopes_;           ///< the slope form: m_k (empty in the pair form)
     std::vector<double> scales_;       ///< the slope form: h_k, or empty for 1

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "cagd/core/errors.hpp"
 #include "cagd/core/points.hpp"
@@ -43,68 +44,40 @@ void HosakaCurve::validate() const {
 
 std::vector<double> HosakaCurve::breakpoints() const { return unit_piece_breakpoints(segments()); }
 
-Eigen::MatrixXd HosakaCurve::jet(double u, int order) const {
-    const auto [s, t] = locate_unit_piece("cagd::spline::HosakaCurve::jet", u, segments(), order);
-    return segment_jet(s, t, order);
-}
-
-Eigen::MatrixXd HosakaCurve::jet_from_left(double u, int order) const {
-    const auto [s, t] = locate_unit_piece_from_left("cagd::spline::HosakaCurve::jet_from_left", u, segments(), order);
-    return segment_jet(s, t, order);
-}
-
 namespace {
-
-template <class Out>
-void hosaka_segment_jet(const HosakaBasis& basis, const Eigen::MatrixXd& start, const Eigen::MatrixXd& end, int m, int s, double t, int order, Out& out) {
-    const Eigen::Index first = static_cast<Eigen::Index>(s) * (m + 1);
-    out.setZero(order + 1, start.cols());
-    for (int k = 0; k <= order; ++k)
-        for (int i = 0; i <= m; ++i) out.row(k) += basis.p(i, t, k) * start.row(first + i) + basis.q(i, t, k) * end.row(first + i);
+// Rows first.. of segment s's jet at local t into out: row k − first = Σ_{i=0..m} p_i^(k)(t) S_i +
+// q_i^(k)(t) E_i (eq 18), S_i, E_i the segment's start and end derivatives.
+void hosaka_jet_rows(const HosakaBasis& basis, const Eigen::MatrixXd& start, const Eigen::MatrixXd& end, int m, int s, double t, int first, Eigen::Ref<Eigen::MatrixXd> out) {
+    constexpr int kStackM = 15;  // the basis values on the stack up to this m
+    const int dim = static_cast<int>(start.cols());
+    const Eigen::Index row0 = static_cast<Eigen::Index>(s) * (m + 1);
+    std::vector<double> heap(m > kStackM ? 2 * static_cast<std::size_t>(m + 1) : 0);
+    double stack[2 * (kStackM + 1)];
+    double* p = m > kStackM ? heap.data() : stack;
+    double* q = p + m + 1;
+    out.setZero();
+    for (Eigen::Index r = 0; r < out.rows(); ++r) {
+        basis.values(t, first + static_cast<int>(r), p, q);
+        for (int i = 0; i <= m; ++i)
+            for (int c = 0; c < dim; ++c) out(r, c) += p[i] * start(row0 + i, c) + q[i] * end(row0 + i, c);
+    }
 }
-
 }  // namespace
+
+void HosakaCurve::evaluate_jet(double u, int first, JetSide side, Eigen::Ref<Eigen::MatrixXd> out) const {
+    const char* who = "cagd::spline::HosakaCurve::evaluate_jet";
+    const int order = first + static_cast<int>(out.rows()) - 1;
+    const auto [s, t] = side == JetSide::left ? locate_unit_piece_from_left(who, u, segments(), order) : locate_unit_piece(who, u, segments(), order);
+    hosaka_jet_rows(basis_, start_, end_, m(), s, t, first, out);
+}
 
 Eigen::MatrixXd HosakaCurve::segment_jet(int s, double t, int order) const {
     if (s < 0 || s >= segments() || !(t >= 0.0 && t <= 1.0) || order < 0)
         fail_input("cagd::spline::HosakaCurve::segment_jet", "needs 0 <= s < " + std::to_string(segments()) + ", t in [0, 1], order >= 0; got s = " + std::to_string(s) +
                                                                  ", t = " + full_precision(t) + ", order " + std::to_string(order));
-    Eigen::MatrixXd out;
-    hosaka_segment_jet(basis_, start_, end_, m(), s, t, order, out);
+    Eigen::MatrixXd out(order + 1, dimension());
+    hosaka_jet_rows(basis_, start_, end_, m(), s, t, 0, out);
     return out;
-}
-
-namespace {
-// Rows first..last of segment s's jet at t into out, as hosaka_segment_jet computes them (row k
-// += p_i S_i + q_i E_i, i = 0..m: the same products and sums in the same order) but with a row's
-// basis values at once and scalar sums, without per-value checks or dynamic row expressions.
-// m ≤ kMaxJetM (the callers fall back to hosaka_segment_jet otherwise).
-constexpr int kMaxJetM = 15;
-void hosaka_jet_rows(const HosakaBasis& basis, const Eigen::MatrixXd& start, const Eigen::MatrixXd& end, int m, int s, double t, int first, int last, JetMatrix& out) {
-    const int dim = static_cast<int>(start.cols());
-    const Eigen::Index row0 = static_cast<Eigen::Index>(s) * (m + 1);
-    out.setZero(last - first + 1, dim);
-    double p[kMaxJetM + 1], q[kMaxJetM + 1];
-    for (int k = first; k <= last; ++k) {
-        basis.values(t, k, p, q);
-        for (int i = 0; i <= m; ++i)
-            for (int c = 0; c < dim; ++c) out(k - first, c) += p[i] * start(row0 + i, c) + q[i] * end(row0 + i, c);
-    }
-}
-}  // namespace
-
-void HosakaCurve::jet_into(double u, int order, JetMatrix& out) const {
-    require_jet_capacity("cagd::spline::HosakaCurve::jet_into", order + 1, dimension());
-    const auto [s, t] = locate_unit_piece("cagd::spline::HosakaCurve::jet", u, segments(), order);
-    if (m() > kMaxJetM) return hosaka_segment_jet(basis_, start_, end_, m(), s, t, order, out);
-    hosaka_jet_rows(basis_, start_, end_, m(), s, t, 0, order, out);
-}
-
-void HosakaCurve::derivatives_into(double u, int order, JetMatrix& out) const {
-    require_jet_capacity("cagd::spline::HosakaCurve::derivatives_into", order, dimension());
-    if (m() > kMaxJetM || order < 1) return Curve::derivatives_into(u, order, out);
-    const auto [s, t] = locate_unit_piece("cagd::spline::HosakaCurve::derivatives", u, segments(), order);
-    hosaka_jet_rows(basis_, start_, end_, m(), s, t, 1, order, out);
 }
 
 namespace {

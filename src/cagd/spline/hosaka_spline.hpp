@@ -51,10 +51,7 @@ public:
     int dimension() const override { return static_cast<int>(start_.cols()); }
     double t_min() const override { return 0.0; }
     double t_max() const override { return segments(); }
-    Eigen::MatrixXd jet(double u, int order) const override;
-    Eigen::MatrixXd jet_from_left(double u, int order) const override;
-    void jet_into(double u, int order, JetMatrix& out) const override;          ///< as jet, without allocating
-    void derivatives_into(double u, int order, JetMatrix& out) const override;  ///< likewise
+    void evaluate_jet(double u, int first, JetSide side, Eigen::Ref<Eigen::MatrixXd> out) const override;
     std::vector<double> breakpoints() const override;
     int polynomial_degree() const override { return 2 * m() + 1; }  ///< p_i(m, t), q_i(m, t) are of degree 2m + 1
     /// Row k: the k-th derivative of segment s at its local t ∈ [0, 1] (one-sided at the joins).
