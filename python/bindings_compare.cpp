@@ -21,7 +21,7 @@ py::dict comparison_dict(const std::vector<cagd::compare::MethodComparison>& row
     for (py::ssize_t i = 0; i < n; ++i) {
         const auto& c = rows[static_cast<std::size_t>(i)];
         method.push_back(c.method);
-        status.push_back(c.status);
+        status.push_back(cagd::compare::to_string(c.status));
         note.push_back(c.note);
         const bool built = c.interpolant.has_value();
         const bool measured = c.fairness.has_value();
@@ -38,7 +38,7 @@ py::dict comparison_dict(const std::vector<cagd::compare::MethodComparison>& row
             c.locality_footprint ? std::optional<double>(*c.locality_footprint) : std::nullopt,
             built ? std::optional<double>(c.seconds) : std::nullopt,
             measured && dimension == 3 ? std::optional<double>(c.fairness->max_abs_torsion) : std::nullopt,
-            c.status != "not applicable" ? std::optional<double>(c.shared_seconds) : std::nullopt,
+            c.status != cagd::compare::AttemptStatus::not_applicable ? std::optional<double>(c.shared_seconds) : std::nullopt,
         };
         for (std::size_t k = 0; k < names.size(); ++k) {
             values[k].mutable_data()[i] = v[k].value_or(0.0);

@@ -83,7 +83,7 @@ int run_compare(const CompareArgs& a) {
     if (progress)
         std::cerr << "cagd compare: " << points.rows() << " points, " << (options.methods.empty() ? methods::configurations().size() : options.methods.size()) << " methods\n";
     options.on_method = [progress](const compare::MethodComparison& r) {
-        if (progress) std::cerr << "cagd compare: " << r.method << ": " << r.status << (r.note.empty() ? "" : " (" + r.note + ")") << ", " << format_number(r.seconds, 3) << " s\n";
+        if (progress) std::cerr << "cagd compare: " << r.method << ": " << compare::to_string(r.status) << (r.note.empty() ? "" : " (" + r.note + ")") << ", " << format_number(r.seconds, 3) << " s\n";
     };
     const std::vector<compare::MethodComparison> results = compare::compare_methods(points, options);
 

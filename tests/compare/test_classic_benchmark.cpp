@@ -153,16 +153,16 @@ TEST(ClassicBenchmark, RunsAreClassifiedAndMeasuredAsTheirCurvesAre) {
     ASSERT_EQ(runs.size(), 6u);
     for (const ClassicRun& r : runs) {
         if (r.method == "boost-pchip" && r.data_set == "glyph-C") {
-            EXPECT_EQ(r.status, "not applicable") << "pchip is not periodic";
+            EXPECT_EQ(r.status, cagd::compare::AttemptStatus::not_applicable) << "pchip is not periodic";
             continue;
         }
         if (r.method == "boost-pchip") {
             // Its x(u) and y(u) are flat together at the knot's middle points: zero speed.
-            EXPECT_EQ(r.status, "cusp") << r.note;
+            EXPECT_EQ(r.status, cagd::compare::AttemptStatus::cusp) << r.note;
             EXPECT_NE(r.note.find("zero speed"), std::string::npos) << r.note;
             continue;
         }
-        ASSERT_EQ(r.status, "ok") << r.data_set << " " << r.method << ": " << r.note;
+        ASSERT_EQ(r.status, cagd::compare::AttemptStatus::ok) << r.data_set << " " << r.method << ": " << r.note;
         // The same curve measured directly.
         const ClassicDataSet& d = r.data_set == "knot" ? sets[0] : sets[1];
         const methods::InterpolationResult c = methods::interpolate(methods::find_configuration(r.method), d.points, d.closed);
@@ -184,7 +184,7 @@ TEST(ClassicBenchmark, RunsAreClassifiedAndMeasuredAsTheirCurvesAre) {
     ASSERT_EQ(rows.size(), runs.size());
     for (std::size_t i = 0; i < rows.size(); ++i) {
         ASSERT_EQ(rows[i].size(), classic_runs_header().size());
-        EXPECT_EQ(rows[i][6].empty(), runs[i].status != "ok");
+        EXPECT_EQ(rows[i][6].empty(), runs[i].status != cagd::compare::AttemptStatus::ok);
     }
     // The tables name every data set with its source.
     const std::string md = classic_tables_markdown(runs, sets);
@@ -200,7 +200,7 @@ TEST(ClassicBenchmark, NoClosedDataSetGivesALoopingCurve) {
     for (const ClassicDataSet& d : read_classic_data(kManifest)) {
         if (!d.closed) continue;
         ++closed_sets;
-        for (const MethodComparison& m : compare_methods(d.points, o)) EXPECT_NE(m.status, "loops") << d.name << ", " << m.method << ": " << m.note;
+        for (const MethodComparison& m : compare_methods(d.points, o)) EXPECT_NE(m.status, cagd::compare::AttemptStatus::loops) << d.name << ", " << m.method << ": " << m.note;
     }
     EXPECT_GT(closed_sets, 0);
 }

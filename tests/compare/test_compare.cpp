@@ -387,7 +387,7 @@ TEST(Compare, TableOnTable1DataHasEveryMethod) {
     const std::vector<MethodComparison> c = compare_methods(p, {});
     ASSERT_EQ(c.size(), configurations().size());
     for (const MethodComparison& m : c) {
-        EXPECT_EQ(m.status, "ok") << m.method << ": " << m.note;
+        EXPECT_EQ(m.status, cagd::compare::AttemptStatus::ok) << m.method << ": " << m.note;
         ASSERT_TRUE(m.fairness.has_value()) << m.method;
         EXPECT_GT(m.length, bounding_box_diagonal(p));
         EXPECT_TRUE(std::isfinite(m.fairness->bending_energy) && std::isfinite(m.pseudo_energy));
@@ -408,7 +408,7 @@ TEST(Compare, TableOnTable1DataHasEveryMethod) {
     closed.locality = false;
     for (const MethodComparison& m : compare_methods(p, closed))
         if (!find_configuration(m.method).claims.supports_closed) {
-            EXPECT_EQ(m.status, "not applicable") << m.method;
+            EXPECT_EQ(m.status, cagd::compare::AttemptStatus::not_applicable) << m.method;
         }
     EXPECT_THROW(compare_methods(PointList::Zero(5, 4), {}), InvalidInput);
     EXPECT_THROW(find_configuration("no-such-method"), InvalidInput);
@@ -469,11 +469,11 @@ TEST(Compare, SpacePointsGetTheSpaceColumnsAndFigureData) {
     EXPECT_EQ(std::count(header.begin(), header.end(), "inflections"), 0);
     EXPECT_EQ(std::count(header.begin(), header.end(), "max_abs_torsion"), 1);
     for (const auto& row : comparison_rows(c, true, false, 8, 3)) EXPECT_EQ(row.size(), header.size());
-    EXPECT_EQ(find_comparison(c, "curvature-profile").status, "not applicable");
+    EXPECT_EQ(find_comparison(c, "curvature-profile").status, cagd::compare::AttemptStatus::not_applicable);
     EXPECT_EQ(find_comparison(c, "curvature-profile").note, "planar points only");
     for (const char* m : {"pseudo-spline-approx", "hosaka-c2-chord", "cubic-b", "hermite-b"}) {
         const MethodComparison& r = find_comparison(c, m);
-        ASSERT_EQ(r.status, "ok") << m << ": " << r.note;
+        ASSERT_EQ(r.status, cagd::compare::AttemptStatus::ok) << m << ": " << r.note;
         EXPECT_GT(r.fairness->max_abs_torsion, 0.0) << m;
         EXPECT_EQ(r.area, 0.0) << m;
         ASSERT_TRUE(r.locality_footprint.has_value()) << m;
@@ -496,7 +496,7 @@ TEST(Compare, PseudoEnergyFromMeasuredPiecesEqualsSpanIntegration) {
     o.methods = {"hermite-a", "s-spline-m2", "b2-spline-m1", "curvature-profile"};
     o.locality = false;
     for (const MethodComparison& m : compare_methods(p, o)) {
-        ASSERT_EQ(m.status, "ok") << m.method;
+        ASSERT_EQ(m.status, cagd::compare::AttemptStatus::ok) << m.method;
         const Interpolant& a = *m.interpolant;
         double reference = 0.0;
         for (std::size_t k = 0; k + 1 < a.node_parameters.size(); ++k) {
@@ -730,9 +730,9 @@ TEST(Compare, AMethodThatRefusesThePointsIsARowAndTheOthersAreMeasured) {
     o.methods = {"cubic-b", "hermite-a", "boost-catmull-rom"};
     const std::vector<MethodComparison> c = compare_methods(p, o);
     ASSERT_EQ(c.size(), 3u);
-    EXPECT_EQ(c[0].status, "ok") << c[0].note;
-    EXPECT_EQ(c[1].status, "ok") << c[1].note;
-    EXPECT_EQ(c[2].status, "refused");
+    EXPECT_EQ(c[0].status, cagd::compare::AttemptStatus::ok) << c[0].note;
+    EXPECT_EQ(c[1].status, cagd::compare::AttemptStatus::ok) << c[1].note;
+    EXPECT_EQ(c[2].status, cagd::compare::AttemptStatus::refused);
     EXPECT_NE(c[2].note.find("boost-catmull-rom"), std::string::npos) << c[2].note;
     EXPECT_EQ(c[2].note.find('\n'), std::string::npos) << "a note is one line: " << c[2].note;
     const std::string md = comparison_markdown(c, false, false);
@@ -782,12 +782,12 @@ TEST(Compare, AConfigurationThatFailsInAnyWayIsARowAndTheOthersAreMeasured) {
     const std::vector<MethodComparison> c = compare_methods(p, o);
     ASSERT_EQ(c.size(), 5u);
     for (std::size_t k : {0u, 2u, 4u}) {
-        EXPECT_EQ(c[k].status, "ok") << c[k].method << ": " << c[k].note;
+        EXPECT_EQ(c[k].status, cagd::compare::AttemptStatus::ok) << c[k].method << ": " << c[k].note;
         EXPECT_GT(c[k].length, 0.0) << c[k].method;
     }
-    EXPECT_EQ(c[1].status, "failed");
+    EXPECT_EQ(c[1].status, cagd::compare::AttemptStatus::failed);
     EXPECT_NE(c[1].note.find("injected build failure"), std::string::npos) << c[1].note;
-    EXPECT_EQ(c[3].status, "failed");
+    EXPECT_EQ(c[3].status, cagd::compare::AttemptStatus::failed);
     EXPECT_NE(c[3].note.find("injected defect"), std::string::npos) << c[3].note;
     // The figure data and the Markdown table have every row.
     const FigureData d = comparison_figure_data(c, p, figure_sampling(11, 4000));
@@ -856,7 +856,7 @@ TEST(Compare, CurvatureProfileFootprintCountsAsEverySpanSampled) {
             o.closed = closed;
             const std::vector<MethodComparison> c = compare_methods(p, o);
             const std::string what = std::string(closed ? "closed" : "open") + ", " + std::to_string(n) + " points";
-            ASSERT_EQ(c[0].status, "ok") << what << ": " << c[0].note;
+            ASSERT_EQ(c[0].status, cagd::compare::AttemptStatus::ok) << what << ": " << c[0].note;
             ASSERT_TRUE(c[0].locality_footprint.has_value()) << what;
             // The moved build as compare_methods makes it.
             const double diagonal = bounding_box_diagonal(p);
@@ -902,9 +902,9 @@ TEST(Compare, FootprintCountsAsEverySpanSampled) {
         moved(p.rows() / 2, 1) += 1e-3 * diagonal;
         int local = 0;
         for (const MethodComparison& m : c) {
-            if (m.status == "not applicable") continue;
+            if (m.status == cagd::compare::AttemptStatus::not_applicable) continue;
             const std::string what = m.method + (closed ? ", closed" : ", open");
-            ASSERT_TRUE(m.locality_footprint.has_value()) << what << ": " << m.status << " " << m.note;
+            ASSERT_TRUE(m.locality_footprint.has_value()) << what << ": " << cagd::compare::to_string(m.status) << " " << m.note;
             const InterpolationResult r = interpolate_from(find_configuration(m.method), moved, closed, m.solver_state);
             ASSERT_TRUE(r.interpolant.has_value()) << what;
             const std::vector<double> d = span_displacements(*m.interpolant, *r.interpolant);
@@ -944,7 +944,7 @@ TEST(Compare, DrawingOnlyRunsGiveTheSameCurvesAndAProfileByTheTrapezoidRule) {
     drawing.measures = false;
     const auto a = cagd::compare::compare_methods(p, full), b = cagd::compare::compare_methods(p, drawing);
     for (std::size_t i = 0; i < a.size(); ++i) {
-        EXPECT_EQ(b[i].status, "ok");
+        EXPECT_EQ(b[i].status, cagd::compare::AttemptStatus::ok);
         EXPECT_FALSE(b[i].fairness.has_value());
         EXPECT_EQ(a[i].interpolant->curve->jet(1.5, 2), b[i].interpolant->curve->jet(1.5, 2));
     }
@@ -973,7 +973,7 @@ TEST(Compare, IterativeMethodsContinueFromAnEarlierComparison) {
     o.locality = false;
     o.measures = false;
     const auto first = cagd::compare::compare_methods(p, o);
-    ASSERT_EQ(first[0].status, "ok");
+    ASSERT_EQ(first[0].status, cagd::compare::AttemptStatus::ok);
     ASSERT_GT(first[0].solver_state.size(), 0);
     EXPECT_EQ(first[1].solver_state.size(), 0) << "cubic-b is direct";
     PointList moved = p;
@@ -983,7 +983,7 @@ TEST(Compare, IterativeMethodsContinueFromAnEarlierComparison) {
         cagd::compare::ComparisonOptions c = o;
         c.starts.emplace("curvature-profile", wrong_size ? Eigen::VectorXd::Zero(3) : first[0].solver_state);
         const auto continued = cagd::compare::compare_methods(moved, c);
-        ASSERT_EQ(continued[0].status, "ok");
+        ASSERT_EQ(continued[0].status, cagd::compare::AttemptStatus::ok);
         const cagd::Curve &a = *fresh[0].interpolant->curve, &b = *continued[0].interpolant->curve;
         double largest = 0.0;
         for (int k = 0; k <= 100; ++k) {
@@ -1022,11 +1022,11 @@ TEST(Compare, AClosedCurveThatLoopsWhereItsPointsDoNotIsFlagged) {
         EXPECT_EQ(analysis::polygon_turning_number(p), 0);
         const std::vector<MethodComparison> c = compare_methods(p, o);
         ASSERT_EQ(c.size(), 2u);
-        EXPECT_EQ(c[0].status, "ok") << "phase " << phase << ": " << c[0].note;
+        EXPECT_EQ(c[0].status, cagd::compare::AttemptStatus::ok) << "phase " << phase << ": " << c[0].note;
         EXPECT_EQ(std::lround(analysis::tangent_turns(*c[0].interpolant->curve)), 0) << "phase " << phase;
-        if (c[1].status == "no result") continue;
+        if (c[1].status == cagd::compare::AttemptStatus::no_result) continue;
         ++flagged;
-        EXPECT_EQ(c[1].status, "loops") << "phase " << phase << ": " << c[1].note;
+        EXPECT_EQ(c[1].status, cagd::compare::AttemptStatus::loops) << "phase " << phase << ": " << c[1].note;
         EXPECT_NE(c[1].note.find("against the polygon's 0"), std::string::npos) << c[1].note;
         EXPECT_TRUE(c[1].fairness.has_value()) << "a flagged curve is still measured";
     }
@@ -1035,7 +1035,7 @@ TEST(Compare, AClosedCurveThatLoopsWhereItsPointsDoNotIsFlagged) {
     PointList circle(12, 2);
     for (int k = 0; k < 12; ++k) circle.row(k) << std::cos(k * std::numbers::pi / 6), std::sin(k * std::numbers::pi / 6);
     o.methods = {"cubic-b", "hermite-a", "s-spline-m2", "curvature-profile", "spiro"};
-    for (const MethodComparison& m : compare_methods(circle, o)) EXPECT_EQ(m.status, "ok") << m.method << ": " << m.note;
+    for (const MethodComparison& m : compare_methods(circle, o)) EXPECT_EQ(m.status, cagd::compare::AttemptStatus::ok) << m.method << ": " << m.note;
 }
 
 }  // namespace

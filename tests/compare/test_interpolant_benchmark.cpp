@@ -84,7 +84,7 @@ TEST(InterpolantBenchmark, APartCarriesEveryValueBitForBit) {
         if (a.extensionality) {
             EXPECT_TRUE(same_bits(*a.extensionality, *b.extensionality));
         }
-        ok += a.status == "ok";
+        ok += a.status == cagd::compare::AttemptStatus::ok;
     }
     EXPECT_GT(ok, 0);
     ASSERT_EQ(back.classic.size(), 3u);

@@ -159,7 +159,7 @@ TEST(TruthBenchmark, OrdersFromTheTwoLargestSizes) {
     std::vector<TruthRun> runs;
     for (int n : {6, 12, 24, 48}) {
         TruthRun r;
-        r.family = "circle", r.closed = true, r.n = n, r.method = "cubic-b", r.status = "ok";
+        r.family = "circle", r.closed = true, r.n = n, r.method = "cubic-b", r.status = cagd::compare::AttemptStatus::ok;
         // Pre-asymptotic at n = 6 (a bump), then exactly n^-4; the length at rounding level.
         r.errors.distance = (n == 6 ? 10.0 : 1.0) * std::pow(n, -4.0);
         r.errors.tangent_angle = r.errors.curvature_max = r.errors.curvature_l2 = 3.0 * std::pow(n, -2.0);
@@ -178,7 +178,7 @@ TEST(TruthBenchmark, OrdersFromTheTwoLargestSizes) {
     EXPECT_TRUE(orders[4].exact);
     EXPECT_FALSE(orders[4].order.has_value());
     // A failed size leaves the case without orders.
-    runs[2].status = "no result";
+    runs[2].status = cagd::compare::AttemptStatus::no_result;
     EXPECT_TRUE(convergence_orders(runs).empty());
 }
 
@@ -195,10 +195,10 @@ TEST(TruthBenchmark, ResultsDoNotDependOnTheThreadCount) {
     // Spiro is planar: not applicable to the helix; pchip is open only.
     for (const TruthRun& r : a) {
         if (r.family == "helix" && r.method == "spiro") {
-            EXPECT_EQ(r.status, "not applicable");
+            EXPECT_EQ(r.status, cagd::compare::AttemptStatus::not_applicable);
         }
         if (r.closed && r.method == "boost-pchip") {
-            EXPECT_EQ(r.status, "not applicable");
+            EXPECT_EQ(r.status, cagd::compare::AttemptStatus::not_applicable);
         }
     }
     TruthBenchmarkOptions bad;

@@ -230,7 +230,7 @@ val compare(const val& request) {
             const auto& r = rows[i];
             val o = val::object();
             o.set("name", r.method);
-            o.set("status", r.status);
+            o.set("status", std::string(cagd::compare::to_string(r.status)));
             o.set("note", r.note);
             o.set("seconds", r.seconds);
             o.set("spans", r.spans);

@@ -88,14 +88,14 @@ std::vector<ClassicRun> run_classic_benchmark(const std::vector<ClassicDataSet>&
         ClassicRun& r = runs[static_cast<std::size_t>(index)];
         r.data_set = d.name, r.group = d.group, r.n = static_cast<int>(d.points.rows()), r.closed = d.closed, r.method = m.name;
         const InterpolationAttempt attempt = attempt_interpolation(m, d.points, d.closed);
-        r.status = to_string(attempt.status);
+        r.status = attempt.status;
         r.note = attempt.note;
         if (attempt.status != AttemptStatus::ok) return;
         const methods::Interpolant& in = *attempt.result.interpolant;
         r.shape = shape_measures(*in.curve, in.node_parameters, d.closed);
         const bool finite = std::isfinite(r.shape.bending) && std::isfinite(r.shape.variation) && std::isfinite(r.shape.max_curvature) && std::isfinite(r.shape.g2_defect);
         const auto cusp = [&r](const std::string& note) {
-            r.status = to_string(AttemptStatus::cusp);
+            r.status = AttemptStatus::cusp;
             r.note = note;
             r.shape = {};
         };
@@ -122,8 +122,8 @@ std::vector<std::string> classic_runs_header() {
 std::vector<std::vector<std::string>> classic_runs_rows(const std::vector<ClassicRun>& runs, int digits) {
     std::vector<std::vector<std::string>> rows;
     for (const ClassicRun& r : runs) {
-        const bool ok = r.status == "ok";
-        std::vector<std::string> row{r.data_set, r.group, std::to_string(r.n), r.closed ? "1" : "0", r.method, r.status};
+        const bool ok = r.status == AttemptStatus::ok;
+        std::vector<std::string> row{r.data_set, r.group, std::to_string(r.n), r.closed ? "1" : "0", r.method, to_string(r.status)};
         const ShapeMeasures& s = r.shape;
         for (const double v : {s.bending, s.variation, s.max_curvature, static_cast<double>(s.curvature_extrema), s.g2_defect, static_cast<double>(s.inflections),
                                static_cast<double>(s.unimplied_inflections), r.overshoot})
@@ -147,8 +147,8 @@ std::vector<const ClassicRun*> ordered_runs(const std::vector<ClassicRun>& runs,
     for (const ClassicRun& r : runs)
         if (r.data_set == name) rows.push_back(&r);
     std::stable_sort(rows.begin(), rows.end(), [](const ClassicRun* a, const ClassicRun* b) {
-        if ((a->status == "ok") != (b->status == "ok")) return a->status == "ok";
-        return a->status == "ok" && a->shape.bending < b->shape.bending;
+        if ((a->status == AttemptStatus::ok) != (b->status == AttemptStatus::ok)) return a->status == AttemptStatus::ok;
+        return a->status == AttemptStatus::ok && a->shape.bending < b->shape.bending;
     });
     return rows;
 }
@@ -172,8 +172,8 @@ std::string classic_tables_markdown(const std::vector<ClassicRun>& runs, const s
            << "| method | bending | variation | max κ·L | κ extrema | G2 defect | inflections | overshoot | extension |\n"
            << "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
         for (const ClassicRun* r : rows) {
-            if (r->status != "ok") {
-                md << "| `" << r->method << "` | " << r->status << " | | | | | | | |\n";
+            if (r->status != AttemptStatus::ok) {
+                md << "| `" << r->method << "` | " << to_string(r->status) << " | | | | | | | |\n";
                 continue;
             }
             const ShapeMeasures& s = r->shape;
@@ -199,8 +199,8 @@ std::string classic_summary_markdown(const std::vector<ClassicRun>& runs, const 
         std::vector<const ClassicRun*> with, without;  // ok runs with and without unimplied inflections
         const ClassicRun* worst = nullptr;
         for (const ClassicRun* r : rows) {
-            if (r->status != "ok") {
-                if (r->status != "not applicable") failed += (failed.empty() ? "`" : ", `") + r->method + "` (" + r->status + ")";
+            if (r->status != AttemptStatus::ok) {
+                if (r->status != AttemptStatus::not_applicable) failed += (failed.empty() ? "`" : ", `") + r->method + "` (" + to_string(r->status) + ")";
                 continue;
             }
             if (lowest == "—") lowest = "`" + r->method + "` " + number(r->shape.bending);

@@ -48,7 +48,7 @@ struct ClassicRun {
     int n = 0;             ///< number of points
     bool closed = false;   ///< closed curve
     std::string method;    ///< configuration name
-    std::string status;    ///< interpolation_attempt.hpp's status
+    AttemptStatus status = AttemptStatus::ok;  ///< what became of it (interpolation_attempt.hpp)
     std::string note;      ///< why not ok
     ShapeMeasures shape;   ///< when ok
     double overshoot = 0.0;  ///< when ok: outside the points' bounding box ÷ its diagonal

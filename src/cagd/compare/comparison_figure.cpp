@@ -76,7 +76,7 @@ FigureData comparison_figure_data(const std::vector<MethodComparison>& cs, const
                     if (t > previous) s += step_length();
                     previous = t;
                     previous_speed = speed;
-                    if (cs[i].status == "cusp" || !(J.row(1).norm() > 0)) continue;
+                    if (cs[i].status == AttemptStatus::cusp || !(J.row(1).norm() > 0)) continue;
                     const analysis::FrenetJet f = analysis::frenet_jet(J.bottomRows(3));
                     // τ is undefined at a straight point (the flatness policy): plotted at 0 there,
                     // as the table's largest |τ| skips it.
@@ -91,7 +91,7 @@ FigureData comparison_figure_data(const std::vector<MethodComparison>& cs, const
                 previous = t;
                 previous_speed = speed;
                 const analysis::FrenetJet f = analysis::frenet_jet(J.bottomRows(2));
-                if (cs[i].status == "cusp" || !f.regular) continue;
+                if (cs[i].status == AttemptStatus::cusp || !f.regular) continue;
                 const double kappa = f.curvature, v = f.speed;
                 d.profiles.push_back({index, s, kappa});
                 samples.push_back({J(0, 0), J(0, 1), -J(1, 1) / v, J(1, 0) / v, kappa});

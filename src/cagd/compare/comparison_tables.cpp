@@ -50,7 +50,7 @@ std::vector<std::vector<std::string>> comparison_rows(const std::vector<MethodCo
     const auto num = [&](double v) { return format_number(v, digits); };
     for (const MethodComparison& c : cs) {
         const bool built = c.interpolant.has_value();
-        std::vector<std::string> r{c.method, c.status, built ? std::to_string(c.spans) : "", built ? num(c.length) : ""};
+        std::vector<std::string> r{c.method, to_string(c.status), built ? std::to_string(c.spans) : "", built ? num(c.length) : ""};
         if (closed && dimension == 2) r.push_back(built ? num(c.area) : "");
         if (c.fairness && dimension == 2) {
             const analysis::FairnessMeasures& f = *c.fairness;
@@ -66,7 +66,7 @@ std::vector<std::vector<std::string>> comparison_rows(const std::vector<MethodCo
             r.insert(r.end(), 6, "");
         }
         r.push_back(c.locality_footprint ? std::to_string(*c.locality_footprint) : "");
-        if (timing) r.push_back(built ? format_number(c.seconds, 3) : ""), r.push_back(c.status == "not applicable" ? "" : format_number(c.shared_seconds, 3));
+        if (timing) r.push_back(built ? format_number(c.seconds, 3) : ""), r.push_back(c.status == AttemptStatus::not_applicable ? "" : format_number(c.shared_seconds, 3));
         r.push_back(c.note);
         rows.push_back(std::move(r));
     }
@@ -118,7 +118,7 @@ std::vector<std::vector<std::string>> figure_methods_rows(const std::vector<Meth
         const bool comb = i < d.comb_stride.size() && d.comb_stride[i] > 0;
         out[i].push_back(comb ? std::to_string(d.comb_stride[i]) : "0");  // 0 (not empty): the plot script reads the column as words
         out[i].push_back(comb ? format_number(d.comb_scale[i], 6) : "0");
-        std::string status = cs[i].status;  // one word for the plot script: "not applicable" → "not-applicable"
+        std::string status = to_string(cs[i].status);  // one word for the plot script: "not applicable" → "not-applicable"
         std::replace(status.begin(), status.end(), ' ', '-');
         out[i].push_back(status);
     }

@@ -117,12 +117,18 @@ std::string line(const std::vector<std::string>& fields) {
 }
 
 std::string truth_record(long index, const TruthRun& r) {
-    std::vector<std::string> f{"truth", std::to_string(index), escaped(r.family), to_string(r.spacing), r.closed ? "1" : "0", std::to_string(r.n), escaped(r.method), escaped(r.status), escaped(r.note)};
+    std::vector<std::string> f{"truth", std::to_string(index), escaped(r.family), to_string(r.spacing), r.closed ? "1" : "0", std::to_string(r.n), escaped(r.method), escaped(to_string(r.status)), escaped(r.note)};
     for (int e = 0; e < 5; ++e) f.push_back(exact(truth_error(r.errors, e)));
     put_shape(f, r.shape);
     put_shape(f, r.truth_shape);
     f.push_back(exact(r.extensionality));
     return line(f);
+}
+AttemptStatus read_status(Fields& f, const std::string& where) {
+    const std::string text = f.text();
+    const std::optional<AttemptStatus> s = attempt_status_from_string(text);
+    if (!s) fail_input(kWho, where + ": status \"" + excerpt(text) + "\" is none of ok, not applicable, refused, no result, cusp, loops, failed");
+    return *s;
 }
 TruthRun read_truth(Fields& f, const std::string& where) {
     TruthRun r;
@@ -132,7 +138,7 @@ TruthRun read_truth(Fields& f, const std::string& where) {
     r.spacing = spacing == to_string(TruthSpacing::uniform) ? TruthSpacing::uniform : TruthSpacing::nonuniform;
     r.closed = f.integer(0, 1) == 1;
     r.n = static_cast<int>(f.integer(0, 100000));
-    r.method = f.text(), r.status = f.text(), r.note = f.text();
+    r.method = f.text(), r.status = read_status(f, where), r.note = f.text();
     r.errors.distance = f.number(), r.errors.tangent_angle = f.number(), r.errors.curvature_max = f.number(), r.errors.curvature_l2 = f.number(), r.errors.length = f.number();
     r.shape = get_shape(f);
     r.truth_shape = get_shape(f);
@@ -141,7 +147,7 @@ TruthRun read_truth(Fields& f, const std::string& where) {
 }
 
 std::string classic_record(long index, const ClassicRun& r) {
-    std::vector<std::string> f{"classic", std::to_string(index), escaped(r.data_set), escaped(r.group), std::to_string(r.n), r.closed ? "1" : "0", escaped(r.method), escaped(r.status), escaped(r.note)};
+    std::vector<std::string> f{"classic", std::to_string(index), escaped(r.data_set), escaped(r.group), std::to_string(r.n), r.closed ? "1" : "0", escaped(r.method), escaped(to_string(r.status)), escaped(r.note)};
     put_shape(f, r.shape);
     f.push_back(exact(r.overshoot));
     f.push_back(exact(r.extensionality));
@@ -152,7 +158,7 @@ ClassicRun read_classic(Fields& f) {
     r.data_set = f.text(), r.group = f.text();
     r.n = static_cast<int>(f.integer(0, 100000000));
     r.closed = f.integer(0, 1) == 1;
-    r.method = f.text(), r.status = f.text(), r.note = f.text();
+    r.method = f.text(), r.status = read_status(f, "a classic run"), r.note = f.text();
     r.shape = get_shape(f);
     r.overshoot = f.number();
     r.extensionality = f.optional_number();
@@ -363,7 +369,7 @@ std::vector<std::pair<std::string, std::string>> benchmark_files(const Benchmark
         for (std::size_t m = 0; m < order.size(); ++m) {
             f << (m ? "\n\n" : "") << "n \"" << order[m] << "\" distance\n";
             for (const TruthRun& r : results.truth)
-                if (r.family == family.name && r.method == order[m] && r.spacing == TruthSpacing::uniform && r.closed == family.closed && r.status == "ok")
+                if (r.family == family.name && r.method == order[m] && r.spacing == TruthSpacing::uniform && r.closed == family.closed && r.status == AttemptStatus::ok)
                     f << r.n << " " << r.n << " " << format_number(std::max(r.errors.distance, kDrawnFloor), 6) << "\n";
         }
         files.emplace_back("convergence_" + family.name + ".dat", f.str());

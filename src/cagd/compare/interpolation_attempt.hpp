@@ -18,6 +18,7 @@
 ///   failed          the method, or its curve when measured, threw what no valid input should make
 ///                   it throw (an evaluation outside the range it states, memory): a defect of the
 ///                   method, its message the note; the callers that measure set it, one row each
+#include <optional>
 #include <string>
 
 #include "cagd/core/points.hpp"
@@ -27,16 +28,24 @@ namespace cagd::compare {
 
 /// What became of one interpolation (see above).
 enum class AttemptStatus { ok, not_applicable, refused, no_result, cusp, loops, failed };
-/// "ok", "not applicable", "refused", "no result", "cusp", "loops", "failed".
+/// "ok", "not applicable", "refused", "no result", "cusp", "loops", "failed": the one text of each,
+/// written only where text is written (tables, parts, the viewer, Python).
 const char* to_string(AttemptStatus status);
+/// The status whose to_string is `text`; nothing for any other text (a reader names its file).
+std::optional<AttemptStatus> attempt_status_from_string(const std::string& text);
 
 /// One interpolation tried (see above).
 struct InterpolationAttempt {
     AttemptStatus status = AttemptStatus::ok;  ///< its outcome
     std::string note;                          ///< why not ok (empty when ok)
     methods::InterpolationResult result;       ///< the curve when ok
+    /// Wall time of Method::prepare (the tables a method shares between builds, loaded from the
+    /// user's cache or built) and of the build itself; not deterministic. Both 0 when not applicable.
+    double prepare_seconds = 0.0, build_seconds = 0.0;
 };
 /// `configuration` on `points` (open or closed), classified; never throws for a method's refusal.
-InterpolationAttempt attempt_interpolation(const methods::Configuration& configuration, const PointList& points, bool closed);
+/// With `start` (an earlier build's solver_state for as many points), the solve starts there
+/// (methods::interpolate_from).
+InterpolationAttempt attempt_interpolation(const methods::Configuration& configuration, const PointList& points, bool closed, const Eigen::VectorXd* start = nullptr);
 
 }  // namespace cagd::compare

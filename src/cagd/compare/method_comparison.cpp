@@ -117,60 +117,34 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
     const auto measure_unguarded = [&](const methods::Configuration& configuration) {
         MethodComparison c;
         c.method = configuration.name;
-        c.note = method_applicability(configuration.claims, points, options.closed);
-        if (!c.note.empty()) {
-            c.status = "not applicable";
-            return c;
-        }
-        // What builds share (the pseudo-spline's tables) is loaded outside the timing, so that
-        // `seconds` does not charge it to whichever configuration runs first.
-        const auto prepared = std::chrono::steady_clock::now();
-        if (configuration.method->prepare) configuration.method->prepare(configuration.values, static_cast<int>(points.cols()));
-        const auto start = std::chrono::steady_clock::now();
-        c.shared_seconds = std::chrono::duration<double>(start - prepared).count();
-        InterpolationResult r;
-        try {
-            const auto start_state = options.starts.find(configuration.name);
-            if (start_state != options.starts.end()) {
-                r = methods::interpolate_from(configuration, points, options.closed, start_state->second);
-            } else {
-                r = methods::interpolate(configuration, points, options.closed);
-            }
-        } catch (const InvalidInput& e) {  // this method refuses these points (Boost's Catmull–Rom on 1e-40 spacing): its row says why
-            c.status = "refused";
-            c.note = in_user_terms(one_line(e.what()));
-            return c;
-        }
-        c.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        if (!r.outcome.ok() || !r.interpolant) {
-            c.status = "no result";
-            c.note = in_user_terms(one_line(r.outcome.message));
-            return c;
-        }
+        const auto start_state = options.starts.find(configuration.name);
+        InterpolationAttempt attempt = attempt_interpolation(configuration, points, options.closed, start_state != options.starts.end() ? &start_state->second : nullptr);
+        c.status = attempt.status;
+        c.note = std::move(attempt.note);
+        c.shared_seconds = attempt.prepare_seconds;
+        c.seconds = attempt.build_seconds;
+        if (attempt.status != AttemptStatus::ok) return c;
+        InterpolationResult& r = attempt.result;
         c.solver_state = std::move(r.solver_state);  // also the start of the footprint's build (below)
         c.interpolant = std::move(r.interpolant);
         const Curve& curve = *c.interpolant->curve;
         c.spans = static_cast<int>(c.interpolant->node_parameters.size()) - 1;
-        if (!options.measures) {
-            c.status = "ok";
-            return c;
-        }
+        if (!options.measures) return c;
         const analysis::FairnessSampling sampling = comparison_sampling(static_cast<int>(curve.breakpoints().size()) - 1);
         if (options.closed && points.cols() == 2) c.area = analysis::enclosed_area(curve);
         try {
             c.fairness = analysis::fairness_measures(curve, points, sampling);
             c.length = c.fairness->length;
             c.pseudo_energy = span_pseudo_energy(*c.interpolant, *c.fairness, sampling.quadrature_pieces);
-            c.status = "ok";
             // A closed planar curve that loops where its polygon does not is measured, but flagged.
             if (options.closed && points.cols() == 2)
                 if (std::string anomaly = analysis::closed_curve_anomaly(curve, points, c.length); !anomaly.empty()) {
-                    c.status = to_string(AttemptStatus::loops);
+                    c.status = AttemptStatus::loops;
                     c.note = std::move(anomaly);
                 }
         } catch (const InvalidInput& e) {  // a sample of zero speed: κ undefined there
             c.length = analysis::arc_length(curve, sampling.quadrature_pieces);
-            c.status = "cusp";
+            c.status = AttemptStatus::cusp;
             c.note = in_user_terms(one_line(e.what()));
         }
         if (options.locality && points.rows() >= 3) {
@@ -194,7 +168,7 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
         } catch (const std::exception& e) {
             MethodComparison c;
             c.method = configuration.name;
-            c.status = to_string(AttemptStatus::failed);
+            c.status = AttemptStatus::failed;
             c.note = "the method failed (a defect of the method, not of the points): " + in_user_terms(one_line(e.what()));
             return c;
         }

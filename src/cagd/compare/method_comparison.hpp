@@ -37,6 +37,7 @@
 #include <utility>
 #include <vector>
 
+#include "cagd/compare/interpolation_attempt.hpp"
 #include "cagd/analysis/fairness_measures.hpp"
 #include "cagd/methods/method_registry.hpp"
 
@@ -73,7 +74,7 @@ struct ComparisonOptions {
 /// One method's row of the comparison.
 struct MethodComparison {
     std::string method;  ///< the configuration's name
-    std::string status;  ///< "ok", "not applicable", "refused", "no result", "cusp", "loops", "failed" (AttemptStatus)
+    AttemptStatus status = AttemptStatus::ok;  ///< what became of it (interpolation_attempt.hpp)
     std::string note;    ///< the reason when status is not ok
     std::optional<Interpolant> interpolant;  ///< the curve, when the method applies and succeeds
     Eigen::VectorXd solver_state;  ///< the build's InterpolationResult::solver_state (empty for direct methods)

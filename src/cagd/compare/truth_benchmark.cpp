@@ -257,18 +257,17 @@ std::vector<TruthRun> run_truth_benchmark(const TruthBenchmarkOptions& o) {
         r.family = k.family->name, r.spacing = k.spacing, r.closed = k.closed, r.n = k.n, r.method = m.name;
         r.truth_shape = truth_shapes[static_cast<std::size_t>(index) / configurations.size()];
         InterpolationAttempt attempt = attempt_interpolation(m, sample.points, k.closed);
-        r.status = to_string(attempt.status);
+        r.status = attempt.status;
         r.note = attempt.note;
         if (attempt.status != AttemptStatus::ok) return;
         const methods::InterpolationResult& result = attempt.result;
         r.errors = truth_errors(*result.interpolant, sample, *k.family->curve);
         r.shape = shape_measures(*result.interpolant->curve, result.interpolant->node_parameters, k.closed);
         r.extensionality = extensionality(m, sample.points, k.closed, *result.interpolant);
-        r.status = "ok";
         bool finite = std::isfinite(r.shape.bending) && std::isfinite(r.shape.variation) && std::isfinite(r.shape.max_curvature) && std::isfinite(r.shape.g2_defect);
         for (int e = 0; e < 5; ++e) finite = finite && std::isfinite(truth_error(r.errors, e));
         if (!finite) {  // a node of zero speed: κ undefined there
-            r.status = to_string(AttemptStatus::cusp);
+            r.status = AttemptStatus::cusp;
             r.note = "the curve has a point of zero speed, where its curvature is undefined";
             r.errors = {};
             r.shape = {};
@@ -301,7 +300,7 @@ std::vector<ConvergenceOrder> convergence_orders(const std::vector<TruthRun>& ru
     std::vector<ConvergenceOrder> out;
     for (const Key& k : order_of_keys) {
         const std::vector<const TruthRun*>& g = groups[k];
-        if (std::any_of(g.begin(), g.end(), [](const TruthRun* r) { return r->status != "ok"; })) continue;
+        if (std::any_of(g.begin(), g.end(), [](const TruthRun* r) { return r->status != AttemptStatus::ok; })) continue;
         for (int measure = 0; measure < static_cast<int>(truth_error_names().size()); ++measure) {
             ConvergenceOrder c;
             c.family = std::get<0>(k), c.spacing = static_cast<TruthSpacing>(std::get<1>(k)), c.closed = std::get<2>(k), c.method = std::get<3>(k);
@@ -343,15 +342,15 @@ std::vector<std::string> truth_runs_header() {
 std::vector<std::vector<std::string>> truth_runs_rows(const std::vector<TruthRun>& runs, int digits) {
     std::vector<std::vector<std::string>> rows;
     for (const TruthRun& r : runs) {
-        std::vector<std::string> row{r.family, to_string(r.spacing), r.closed ? "1" : "0", std::to_string(r.n), r.method, r.status};
-        for (int m = 0; m < 5; ++m) row.push_back(r.status == "ok" ? format_number(truth_error(r.errors, m), digits) : "");
+        std::vector<std::string> row{r.family, to_string(r.spacing), r.closed ? "1" : "0", std::to_string(r.n), r.method, to_string(r.status)};
+        for (int m = 0; m < 5; ++m) row.push_back(r.status == AttemptStatus::ok ? format_number(truth_error(r.errors, m), digits) : "");
         const auto shape = [&](const ShapeMeasures& s, bool shown) {
             for (const double v : {s.bending, s.variation, s.max_curvature, static_cast<double>(s.curvature_extrema), s.g2_defect, static_cast<double>(s.inflections),
                                    static_cast<double>(s.unimplied_inflections)})
                 row.push_back(shown ? format_number(v, digits) : "");
         };
-        shape(r.shape, r.status == "ok");
-        row.push_back(r.status == "ok" && r.extensionality ? format_number(*r.extensionality, digits) : "");
+        shape(r.shape, r.status == AttemptStatus::ok);
+        row.push_back(r.status == AttemptStatus::ok && r.extensionality ? format_number(*r.extensionality, digits) : "");
         shape(r.truth_shape, true);
         std::string note = r.note;
         std::replace(note.begin(), note.end(), '\n', ' ');
@@ -411,8 +410,8 @@ std::string truth_leaderboard_markdown(const std::vector<TruthRun>& runs, const 
         for (const TruthRun& r : runs)
             if (r.family == f.name && r.n == largest && r.spacing == TruthSpacing::uniform && r.closed == f.closed) rows.push_back(&r);
         std::stable_sort(rows.begin(), rows.end(), [](const TruthRun* a, const TruthRun* b) {
-            if ((a->status == "ok") != (b->status == "ok")) return a->status == "ok";
-            return a->status == "ok" && a->errors.distance < b->errors.distance;
+            if ((a->status == AttemptStatus::ok) != (b->status == AttemptStatus::ok)) return a->status == AttemptStatus::ok;
+            return a->status == AttemptStatus::ok && a->errors.distance < b->errors.distance;
         });
         md << "\n#### " << f.name << ": " << f.description << "\n\n"
            << largest << " points uniform in arc length" << (f.closed ? ", closed" : "") << "; errors dimensionless (see the notes above); order = observed order of the distance over n = ";
@@ -423,8 +422,8 @@ std::string truth_leaderboard_markdown(const std::vector<TruthRun>& runs, const 
         md << ".\n\n| rank | method | distance | order | tangent angle | curvature max | curvature L2 | length |\n|---:|---|---:|---:|---:|---:|---:|---:|\n";
         int rank = 0;
         for (const TruthRun* r : rows) {
-            if (r->status != "ok") {
-                md << "| — | `" << r->method << "` | " << r->status << " | | | | | |\n";
+            if (r->status != AttemptStatus::ok) {
+                md << "| — | `" << r->method << "` | " << to_string(r->status) << " | | | | | |\n";
                 continue;
             }
             const ConvergenceOrder* o = find_order(*r, "distance");
@@ -435,7 +434,7 @@ std::string truth_leaderboard_markdown(const std::vector<TruthRun>& runs, const 
         std::vector<const TruthRun*> shaped;
         for (const TruthRun* r : rows)
             for (const TruthRun& s : runs)
-                if (s.family == f.name && s.n == kShapeTableSize && s.spacing == TruthSpacing::uniform && s.closed == f.closed && s.method == r->method && s.status == "ok")
+                if (s.family == f.name && s.n == kShapeTableSize && s.spacing == TruthSpacing::uniform && s.closed == f.closed && s.method == r->method && s.status == AttemptStatus::ok)
                     shaped.push_back(&s);
         if (shaped.empty()) continue;
         const auto shape_row = [&](const std::string& name, const ShapeMeasures& s, const std::string& extension) {

@@ -24,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "cagd/compare/interpolation_attempt.hpp"
 #include "cagd/compare/truth_curves.hpp"
 #include "cagd/compare/work_share.hpp"
 #include "cagd/methods/method_registry.hpp"
@@ -96,7 +97,7 @@ struct TruthRun {
     bool closed = false;      ///< closed points
     int n = 0;                ///< number of points
     std::string method;       ///< configuration name
-    std::string status;       ///< "ok", "not applicable", "refused", "no result", "cusp"
+    AttemptStatus status = AttemptStatus::ok;  ///< what became of it (interpolation_attempt.hpp)
     std::string note;         ///< why not ok
     TruthErrors errors;       ///< when ok
     ShapeMeasures shape;      ///< when ok
