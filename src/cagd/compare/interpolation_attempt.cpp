@@ -29,7 +29,7 @@ std::optional<AttemptStatus> attempt_status_from_string(const std::string& text)
 
 InterpolationAttempt attempt_interpolation(const methods::Configuration& configuration, const PointList& points, bool closed, const Eigen::VectorXd* start) {
     InterpolationAttempt a;
-    a.note = method_applicability(configuration.claims, points, closed);
+    a.note = methods::method_applicability(configuration.claims, points, closed);
     if (!a.note.empty()) {
         a.status = AttemptStatus::not_applicable;
         return a;

@@ -4,7 +4,7 @@
 /// classification the benchmark's truth runs, classic runs and random sets share.
 ///
 ///   ok              a curve
-///   not applicable  the method's claims exclude the input (method_applicability: too few points,
+///   not applicable  the method's claims exclude the input (methods::method_applicability: too few points,
 ///                   closed curves unsupported, 3-D); the method is not called
 ///   refused         the method's own input check threw InvalidInput (a reversal where no tangent
 ///                   exists, a degenerate span): the message is the note

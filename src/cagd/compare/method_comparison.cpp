@@ -77,15 +77,6 @@ double span_pseudo_energy(const Interpolant& a, const analysis::FairnessMeasures
 
 }  // namespace
 
-std::string method_applicability(const methods::MethodClaims& m, const PointList& points, bool closed) {
-    if (closed && !m.supports_closed) return "open curves only";
-    const int need = closed ? m.min_points_closed : m.min_points;
-    if (points.rows() < need) return "needs at least " + std::to_string(need) + " points";
-    if (m.max_points > 0 && points.rows() > m.max_points) return "takes at most " + std::to_string(m.max_points) + " points";
-    if (points.cols() > m.max_dimension) return m.max_dimension == 2 ? "planar points only" : "at most " + std::to_string(m.max_dimension) + " dimensions";
-    return "";
-}
-
 analysis::FairnessSampling comparison_sampling(int pieces) {
     const int budget = 2'000'000 / std::max(pieces, 1);
     // Quadrature sub-pieces: up to 512 per piece for curves of few pieces. A single cubic that nearly

@@ -94,9 +94,6 @@ struct MethodComparison {
 /// integrated, summed over its pieces — where every node parameter is a breakpoint (every method
 /// but Eigen's spline fits, whose knots average the node parameters); nothing otherwise.
 std::optional<std::vector<std::pair<double, double>>> measured_span_integrals(const Interpolant& a, const analysis::FairnessMeasures& f);
-/// Why a method with these claims does not apply to the points ("open curves only", "needs at least
-/// 4 points", "takes at most 2000 points", "planar points only"), or "" when it applies.
-std::string method_applicability(const methods::MethodClaims& claims, const PointList& points, bool closed);
 /// Samples (8 to 128) and Gauss–Legendre sub-pieces (2 to 512) per piece for a curve of `pieces`
 /// pieces: about 2·10^6 of each in all, fewer per piece for long inputs.
 analysis::FairnessSampling comparison_sampling(int pieces);

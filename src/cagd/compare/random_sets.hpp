@@ -10,7 +10,7 @@
 /// Set s of a kind and size has seed s (s = 0 … sets − 1). Each configuration interpolates every set
 /// as an open curve; the outcome is counted as ok, no result (a returned status: no solution, no
 /// convergence, not representable), refused (InvalidInput: the method's own check, e.g. a reversal
-/// where no tangent exists) or not applicable (method_applicability). The failure rate is
+/// where no tangent exists) or not applicable (methods::method_applicability). The failure rate is
 /// (no result + refused) / (sets − not applicable).
 ///
 /// Run times are wall-clock seconds per construction (methods::interpolate, its input checks

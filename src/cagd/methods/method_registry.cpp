@@ -69,6 +69,16 @@ constexpr double kShortestChord = 1e-150;
 
 }  // namespace
 
+std::string method_applicability(const MethodClaims& m, const PointList& points, bool closed) {
+    if (closed && !m.supports_closed) return "open curves only";
+    const int need = closed ? m.min_points_closed : m.min_points;
+    if (points.rows() < need) return "needs at least " + std::to_string(need) + " points";
+    if (m.max_points > 0 && points.rows() > m.max_points) return "takes at most " + std::to_string(m.max_points) + " points";
+    if (points.cols() < 2) return "needs points of dimension 2 or 3";
+    if (points.cols() > m.max_dimension) return m.max_dimension == 2 ? "planar points only" : "at most " + std::to_string(m.max_dimension) + " dimensions";
+    return "";
+}
+
 namespace {
 
 // interpolate()'s checks and build, with the solve started from `start` when the method has a
@@ -76,13 +86,10 @@ namespace {
 InterpolationResult checked_build(const Method& method, const PointList& points, bool closed, const ParameterValues& values, const Eigen::VectorXd& start) {
     const MethodClaims claims = method.claims(values);
     const std::string who = "cagd::methods::interpolate(" + method.name + ")";
-    if (closed && !claims.supports_closed) fail_input(who, "draws open curves only (--closed is not supported)");
-    if (claims.max_points > 0 && points.rows() > claims.max_points)
-        fail_input(who, std::to_string(points.rows()) + " points; it takes at most " + std::to_string(claims.max_points));
+    if (const std::string why = method_applicability(claims, points, closed); !why.empty())
+        fail_input(who, why + "; got " + std::to_string(points.rows()) + (closed ? " points of a closed curve" : " points") + " in dimension " + std::to_string(points.cols()));
     const ValidPoints valid = validate_points(points, closed ? claims.min_points_closed : claims.min_points, closed, who);
     const PointExtent& extent = valid.extent();
-    if (points.cols() < 2 || points.cols() > claims.max_dimension)
-        fail_input(who, "needs points of dimension 2" + std::string(claims.max_dimension == 3 ? " or 3" : "") + ", got " + std::to_string(points.cols()));
     // Valid points whose arithmetic leaves double precision: differences of coordinates near 1e308
     // overflow, and chords below 1e-150 square to 0 (their norm underflows). The result is not
     // representable: an outcome, not bad input.

@@ -136,8 +136,13 @@ const std::vector<Method>& registry();
 const Method& find_method(const std::string& name);
 std::vector<std::string> method_names();  ///< names and aliases, for a command line's choices
 
-/// Checks the points against the method's claims (count, dimension, closed, finiteness,
-/// coincident neighbours), then builds the curve.
+/// Why a method with these claims does not take the points (open or closed): "open curves only",
+/// "needs at least 4 points", "takes at most 2000 points", "planar points only", or "" when it
+/// does. The one check of the claims: interpolate() throws it as InvalidInput, and compare reports
+/// the method as not applicable with it.
+std::string method_applicability(const MethodClaims& claims, const PointList& points, bool closed);
+/// Checks the points against the method's claims (method_applicability), then the points
+/// themselves (finiteness, coincident neighbours), then builds the curve.
 InterpolationResult interpolate(const Method& method, const PointList& points, bool closed, const ParameterValues& values);
 /// By method or preset name ("s-spline-m2"); `values` add to, or override, a preset's.
 InterpolationResult interpolate(const std::string& name, const PointList& points, bool closed, const ParameterText& values = {});
