@@ -174,60 +174,31 @@ TEST(HermiteCurves, PlanarColumnWisePathIsTheSpaceCurvesBitForBit) {
         }
 }
 
-// The cubic splines are held in the slope form: m_k and h_k, with d0_k = h_k m_k and d1_k =
-// h_k m_{k+1} formed where evaluated. Every jet equals, bit for bit, that of the same curve held
-// as derivative pairs stored from those products (what cubic_spline_interpolant built until
-// 2026-11-28): jet, jet_from_left, jet_into, jets_into and derivatives_into, open and closed,
-// uniform (no scales kept) and chord length, 1 to 3 dimensions.
-TEST(CubicSplines, SlopeFormGivesThePairFormsJetsBitForBit) {
+// from_node_slopes forms span k's d0_k = h_k m_k and d1_k = h_k m_{k+1} (closed: m_K = m_0; no
+// scales: h_k = 1, d0_k = m_k exactly), bit for bit.
+TEST(PiecewiseHermiteCurve, FromNodeSlopesFormsTheDerivativePairs) {
     std::mt19937 rng(7);
     std::uniform_real_distribution<double> coordinate(-1.0, 1.0);
     for (int dim = 1; dim <= 3; ++dim)
         for (bool closed : {false, true})
-            for (auto spacing : {spline::ParameterSpacing::uniform, spline::ParameterSpacing::chord_length}) {
-                PointList p(23, dim);
-                for (Eigen::Index i = 0; i < p.rows(); ++i)
-                    for (int c = 0; c < dim; ++c) p(i, c) = coordinate(rng) + (c == 0 ? static_cast<double>(i) : 0.0);
-                const PiecewiseHermiteCurve slope = spline::cubic_spline_interpolant(p, spacing, closed);
-                ASSERT_TRUE(slope.holds_node_slopes());
-                const Eigen::MatrixXd& m = slope.node_slopes();
-                const std::vector<double>& h = slope.span_scales();
-                const int spans = slope.spans();
-                ASSERT_EQ(m.rows(), spans + 1);
-                if (closed) {
-                    ASSERT_TRUE(m.row(spans) == m.row(0));
-                }
-                ASSERT_EQ(h.size(), spacing == spline::ParameterSpacing::uniform ? 0u : static_cast<std::size_t>(spans));
-                Eigen::MatrixXd d0(spans, dim), d1(spans, dim);
+            for (bool scaled : {false, true}) {
+                const int spans = 9, slopes = closed ? spans : spans + 1;
+                Eigen::MatrixXd nodes(spans + 1, dim), m(slopes, dim);
+                for (Eigen::Index i = 0; i < nodes.rows(); ++i)
+                    for (int c = 0; c < dim; ++c) nodes(i, c) = coordinate(rng) + (c == 0 ? static_cast<double>(i) : 0.0);
+                for (Eigen::Index i = 0; i < m.rows(); ++i)
+                    for (int c = 0; c < dim; ++c) m(i, c) = coordinate(rng);
+                std::vector<double> h;
+                if (scaled)
+                    for (int k = 0; k < spans; ++k) h.push_back(0.5 + std::abs(coordinate(rng)));
+                const PiecewiseHermiteCurve c = PiecewiseHermiteCurve::from_node_slopes(nodes, m, h);
+                const std::string what = std::to_string(dim) + "-D, " + (closed ? "closed" : "open") + (scaled ? ", scaled" : ", unit scales");
                 for (int k = 0; k < spans; ++k) {
-                    const double hk = h.empty() ? 1.0 : h[static_cast<std::size_t>(k)];
-                    d0.row(k) = hk * m.row(k);
-                    d1.row(k) = hk * m.row(k + 1 == spans && closed ? 0 : k + 1);
-                }
-                const PiecewiseHermiteCurve pairs(slope.nodes(), d0, d1);
-                const std::string what = std::to_string(dim) + "-D, " + (closed ? "closed" : "open") + (h.empty() ? ", uniform" : ", chord length");
-                EXPECT_TRUE(slope.start_derivatives() == d0 && slope.end_derivatives() == d1) << what;
-                std::vector<double> u;
-                for (int j = 0; j <= 4 * spans; ++j) u.push_back(0.25 * j + (j % 4 == 1 ? 0.013 : 0.0));
-                for (int order = 0; order <= 3; ++order) {
-                    std::vector<double> a(u.size() * static_cast<std::size_t>((order + 1) * dim)), b(a.size());
-                    slope.jets_into(u.data(), u.size(), order, a.data());
-                    pairs.jets_into(u.data(), u.size(), order, b.data());
-                    EXPECT_EQ(a, b) << what << ", jets_into order " << order;
-                    for (double x : u) {
-                        JetMatrix ja, jb;
-                        slope.jet_into(x, order, ja);
-                        pairs.jet_into(x, order, jb);
-                        ASSERT_TRUE(ja == jb) << what << " u " << x;
-                        ASSERT_TRUE(slope.jet(x, order) == pairs.jet(x, order)) << what << " u " << x;
-                        if (x > 0) {
-                            ASSERT_TRUE(slope.jet_from_left(x, order) == pairs.jet_from_left(x, order)) << what << " u " << x;
-                        }
-                        if (order >= 1) {
-                            slope.derivatives_into(x, order, ja);
-                            pairs.derivatives_into(x, order, jb);
-                            ASSERT_TRUE(ja == jb) << what << " u " << x;
-                        }
+                    const int next = k + 1 == slopes ? 0 : k + 1;
+                    for (int col = 0; col < dim; ++col) {
+                        const double hk = scaled ? h[static_cast<std::size_t>(k)] : 1.0;
+                        ASSERT_EQ(c.start_derivatives()(k, col), scaled ? hk * m(k, col) : m(k, col)) << what << " span " << k;
+                        ASSERT_EQ(c.end_derivatives()(k, col), scaled ? hk * m(next, col) : m(next, col)) << what << " span " << k;
                     }
                 }
             }
@@ -236,8 +207,8 @@ TEST(CubicSplines, SlopeFormGivesThePairFormsJetsBitForBit) {
 // The slopes are the solution of the system the function states (row k: hn m_{k−1} + 2(hp + hn) m_k
 // + hp m_{k+1} = 3(hn Δ_{k−1}/hp + hp Δ_k/hn), open ends 2m_0 + m_1 = 3Δ_0/h_0 and
 // m_{K−1} + 2m_K = 3Δ_{K−1}/h_{K−1}), assembled here as three diagonals and a right-hand side and
-// solved by solve_tridiagonal (closed: solve_cyclic_tridiagonal), bit for bit: the construction
-// forms each row as the elimination reaches it.
+// solved by solve_tridiagonal (closed: solve_cyclic_tridiagonal), bit for bit (each span's pairs
+// are h_k times them): the construction forms each row as the elimination reaches it.
 TEST(CubicSplines, SlopesAreTheSolveOfTheAssembledSystemBitForBit) {
     std::mt19937 rng(11);
     std::uniform_real_distribution<double> coordinate(-1.0, 1.0);
@@ -271,7 +242,13 @@ TEST(CubicSplines, SlopesAreTheSolveOfTheAssembledSystemBitForBit) {
                     const PiecewiseHermiteCurve c = spline::cubic_spline_interpolant(p, spacing, closed);
                     const std::string what = std::to_string(dim) + "-D, " + std::to_string(n) + " points, " + (closed ? "closed" : "open") +
                                              (spacing == spline::ParameterSpacing::uniform ? ", uniform" : ", chord length");
-                    ASSERT_TRUE(c.node_slopes().topRows(N) == want) << what << "\n" << c.node_slopes().topRows(N) - want;
+                    for (int k = 0; k < spans; ++k) {
+                        const double hk = h[static_cast<std::size_t>(k)];
+                        const Eigen::RowVectorXd m0 = want.row(k), m1 = want.row(k + 1 == N ? 0 : k + 1);
+                        const Eigen::RowVectorXd d0 = spacing == spline::ParameterSpacing::uniform ? m0 : Eigen::RowVectorXd(hk * m0);
+                        const Eigen::RowVectorXd d1 = spacing == spline::ParameterSpacing::uniform ? m1 : Eigen::RowVectorXd(hk * m1);
+                        ASSERT_TRUE(c.start_derivatives().row(k) == d0 && c.end_derivatives().row(k) == d1) << what << ", span " << k;
+                    }
                 }
 }
 
@@ -308,7 +285,7 @@ TEST(HermiteCurves, ValidatedPointsGiveTheSameCurvesAndAreCheckedWhereTheProofFa
             }
             for (auto spacing : {spline::ParameterSpacing::uniform, spline::ParameterSpacing::chord_length}) {
                 const PiecewiseHermiteCurve a = spline::cubic_spline_interpolant(valid, spacing), b = spline::cubic_spline_interpolant(p, spacing, closed);
-                EXPECT_TRUE(a.nodes() == b.nodes() && a.node_slopes() == b.node_slopes() && a.span_scales() == b.span_scales()) << what;
+                EXPECT_TRUE(a.nodes() == b.nodes() && a.start_derivatives() == b.start_derivatives() && a.end_derivatives() == b.end_derivatives()) << what;
             }
         }
     PointList two(2, 2);

@@ -69,20 +69,11 @@ std::function<bool(std::size_t)> footprint_skip_rule(const Interpolant& a, const
         return [ca, cb, &a, &b, tolerance](std::size_t k) { return intrinsic_span_within_half(*ca, *cb, a, b, k, tolerance); };
     }
     if (const auto *ha = dynamic_cast<const spline::PiecewiseHermiteCurve*>(a.curve.get()), *hb = dynamic_cast<const spline::PiecewiseHermiteCurve*>(b.curve.get()); ha && hb) {
-        if (ha->spans() != hb->spans() || ha->dimension() != hb->dimension() || ha->holds_node_slopes() != hb->holds_node_slopes() ||
-            ha->span_scales().size() != hb->span_scales().size())
-            return {};
-        // The slope form's m_k and h_k, or the pair form's d0_k and d1_k (formed once here).
-        auto pairs = std::make_shared<std::array<Eigen::MatrixXd, 4>>();  // d0 of a, of b; d1 of a, of b
-        if (!ha->holds_node_slopes()) *pairs = {ha->start_derivatives(), hb->start_derivatives(), ha->end_derivatives(), hb->end_derivatives()};
-        return [ha, hb, pairs, same_nodes](std::size_t k) {
+        if (ha->spans() != hb->spans() || ha->dimension() != hb->dimension()) return {};
+        return [ha, hb, same_nodes](std::size_t k) {
             const auto i = static_cast<Eigen::Index>(k);
-            if (!same_nodes(k) || !same_rows(ha->nodes(), hb->nodes(), i, i + 2)) return false;
-            if (!ha->holds_node_slopes()) return same_rows((*pairs)[0], (*pairs)[1], i, i + 1) && same_rows((*pairs)[2], (*pairs)[3], i, i + 1);
-            const std::vector<double>&sa = ha->span_scales(), &sb = hb->span_scales();
-            for (std::size_t j = k; j < std::min(k + 2, sa.size()); ++j)
-                if (!(sa[j] == sb[j])) return false;
-            return same_rows(ha->node_slopes(), hb->node_slopes(), i, i + 2);
+            return same_nodes(k) && same_rows(ha->nodes(), hb->nodes(), i, i + 2) && same_rows(ha->start_derivatives(), hb->start_derivatives(), i, i + 1) &&
+                   same_rows(ha->end_derivatives(), hb->end_derivatives(), i, i + 1);
         };
     }
     if (const auto *ba = dynamic_cast<const BSplineCurve*>(a.curve.get()), *bb = dynamic_cast<const BSplineCurve*>(b.curve.get()); ba && bb) {

@@ -71,7 +71,7 @@ InterpolationResult build_cubic(const ValidPoints& valid, spline::ParameterSpaci
     const bool closed = valid.closed();
     auto c = std::make_shared<spline::PiecewiseHermiteCurve>(spline::cubic_spline_interpolant(valid, spacing));
     // dτ/du on span k: the chord the spline itself scales by (its h_k, chord_lengths' values), or 1.
-    std::vector<double> dtau_du = spacing == spline::ParameterSpacing::chord_length ? c->span_scales() : unit_lengths(points, closed);
+    std::vector<double> dtau_du = spacing == spline::ParameterSpacing::chord_length ? chord_lengths(points, closed) : unit_lengths(points, closed);
     return result_of(unit_span_interpolant(std::move(c), node_count(points, closed), std::move(dtau_du)));
 }
 

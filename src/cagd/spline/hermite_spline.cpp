@@ -23,7 +23,7 @@ PiecewiseHermiteCurve::PiecewiseHermiteCurve(Eigen::MatrixXd nodes, Eigen::Matri
 
 namespace {
 
-// The span scales of the slope form: none, or one finite scale per span.
+// The span scales of from_node_slopes: none, or one finite scale per span.
 void require_span_scales(const char* who, const std::vector<double>& scales, Eigen::Index spans) {
     if (!scales.empty() && static_cast<Eigen::Index>(scales.size()) != spans)
         fail_input(who, "needs K span scales (or none), got " + std::to_string(scales.size()) + " for " + std::to_string(spans) + " spans");
@@ -41,65 +41,20 @@ PiecewiseHermiteCurve PiecewiseHermiteCurve::from_node_slopes(Eigen::MatrixXd no
     require_span_scales(who, scales, spans);
     if (slopes.cols() != nodes.cols()) fail_input(who, "nodes and slopes must have the same dimension");
     if (!all_finite(nodes) || !all_finite(slopes)) fail_input(who, "nodes and slopes must be finite");
-    if (slopes.rows() == spans) {  // closed: m_K = m_0 kept as a row, so that evaluation never wraps
-        slopes.conservativeResize(spans + 1, Eigen::NoChange);
-        slopes.row(spans) = slopes.row(0);
-    }
     PiecewiseHermiteCurve c;
+    c.d0_.resize(spans, slopes.cols());
+    c.d1_.resize(spans, slopes.cols());
+    for (Eigen::Index k = 0; k < spans; ++k) {
+        const double h = scales.empty() ? 1.0 : scales[static_cast<std::size_t>(k)];
+        const Eigen::Index next = k + 1 == slopes.rows() ? 0 : k + 1;  // closed: m_K = m_0
+        for (Eigen::Index col = 0; col < slopes.cols(); ++col) {
+            c.d0_(k, col) = scales.empty() ? slopes(k, col) : h * slopes(k, col);
+            c.d1_(k, col) = scales.empty() ? slopes(next, col) : h * slopes(next, col);
+        }
+    }
     c.nodes_ = std::move(nodes);
-    c.slopes_ = std::move(slopes);
-    c.scales_ = std::move(scales);
     return c;
 }
-
-namespace {
-// Span k's end derivatives, d0_k and d1_k, in either storage form (see the header): read from the
-// pairs, or formed from the slopes (K + 1 rows: a closed curve's row K repeats row 0) as m_k and
-// m_{k+1}, or h_k m_k and h_k m_{k+1}: the product the pairs of the same curve were stored from.
-// One type per form, so that an evaluation tests nothing per entry.
-struct DerivativePairs {
-    const Eigen::MatrixXd &d0, &d1;
-    [[gnu::always_inline]] double start(Eigen::Index k, Eigen::Index c) const { return d0(k, c); }
-    [[gnu::always_inline]] double end(Eigen::Index k, Eigen::Index c) const { return d1(k, c); }
-};
-struct UnitSlopes {  // h_k = 1: d0 = m exactly
-    const Eigen::MatrixXd& m;
-    [[gnu::always_inline]] double start(Eigen::Index k, Eigen::Index c) const { return m(k, c); }
-    [[gnu::always_inline]] double end(Eigen::Index k, Eigen::Index c) const { return m(k + 1, c); }
-};
-struct ScaledSlopes {
-    const Eigen::MatrixXd& m;
-    const double* h;
-    [[gnu::always_inline]] double start(Eigen::Index k, Eigen::Index c) const { return h[k] * m(k, c); }
-    [[gnu::always_inline]] double end(Eigen::Index k, Eigen::Index c) const { return h[k] * m(k + 1, c); }
-};
-
-// f(reader) with the derivatives' reader of a curve's form.
-template <class F>
-[[gnu::always_inline]] inline void with_derivatives(const Eigen::MatrixXd& slopes, const std::vector<double>& scales, const Eigen::MatrixXd& d0, const Eigen::MatrixXd& d1,
-                                                    F&& f) {
-    if (slopes.rows() == 0)
-        f(DerivativePairs{d0, d1});
-    else if (scales.empty())
-        f(UnitSlopes{slopes});
-    else
-        f(ScaledSlopes{slopes, scales.data()});
-}
-
-// All K start (or end) derivatives of the slope form, formed as evaluation forms them.
-Eigen::MatrixXd formed_derivatives(const Eigen::MatrixXd& slopes, const std::vector<double>& scales, Eigen::Index spans, bool at_end) {
-    Eigen::MatrixXd out(spans, slopes.cols());
-    with_derivatives(slopes, scales, out, out, [&](const auto& d) {
-        for (Eigen::Index k = 0; k < out.rows(); ++k)
-            for (Eigen::Index c = 0; c < out.cols(); ++c) out(k, c) = at_end ? d.end(k, c) : d.start(k, c);
-    });
-    return out;
-}
-}  // namespace
-
-Eigen::MatrixXd PiecewiseHermiteCurve::start_derivatives() const { return holds_node_slopes() ? formed_derivatives(slopes_, scales_, spans(), false) : d0_; }
-
-Eigen::MatrixXd PiecewiseHermiteCurve::end_derivatives() const { return holds_node_slopes() ? formed_derivatives(slopes_, scales_, spans(), true) : d1_; }
 
 std::vector<double> PiecewiseHermiteCurve::breakpoints() const { return unit_piece_breakpoints(spans()); }
 
@@ -123,17 +78,15 @@ void PiecewiseHermiteCurve::evaluate_jet(double u, int first, JetSide side, Eige
     const int k = at.piece;
     const double t = at.t;
     const Eigen::Index dim = nodes_.cols();
-    with_derivatives(slopes_, scales_, d0_, d1_, [&](const auto& d) {
-        double h[4];
-        for (int j = first; j <= last; ++j) {
-            if (j > 3) {  // a cubic's higher derivatives
-                out.row(j - first).setZero();
-                continue;
-            }
-            hermite_basis_row(j, t, h);
-            for (Eigen::Index c = 0; c < dim; ++c) out(j - first, c) = h[0] * nodes_(k, c) + h[1] * nodes_(k + 1, c) + h[2] * d.start(k, c) + h[3] * d.end(k, c);
+    double h[4];
+    for (int j = first; j <= last; ++j) {
+        if (j > 3) {  // a cubic's higher derivatives
+            out.row(j - first).setZero();
+            continue;
         }
-    });
+        hermite_basis_row(j, t, h);
+        for (Eigen::Index c = 0; c < dim; ++c) out(j - first, c) = h[0] * nodes_(k, c) + h[1] * nodes_(k + 1, c) + h[2] * d0_(k, c) + h[3] * d1_(k, c);
+    }
 }
 
 namespace {
@@ -197,8 +150,7 @@ PiecewiseHermiteCurve cubic_spline_of_valid_points(const PointList& points, Para
     } else {
         numeric::solve_tridiagonal_rows(static_cast<std::size_t>(N), static_cast<std::size_t>(dim), row, m.data());
     }
-    // The slope form: span k's d0 = h_k m_k, d1 = h_k m_{k+1} formed where evaluated (uniform: h_k = 1,
-    // no scales kept), not stored as 2K rows.
+    // Span k's d0 = h_k m_k, d1 = h_k m_{k+1} (uniform: h_k = 1).
     return PiecewiseHermiteCurve::from_node_slopes(std::move(nodes), std::move(m), std::move(chords));
 }
 

@@ -10,12 +10,9 @@
 /// so r(0) = p_k, r(1) = p_{k+1}, r'(0) = d0_k, r'(1) = d1_k. The end derivatives belong to the
 /// span, so a curve is only G1 where d1_{k−1} ∥ d0_k with different lengths (the pseudo-spline),
 /// and C1 where they are equal. Closed curves repeat p_0 as p_K.
-/// Two storage forms, the same curve: the derivative pairs d0_k, d1_k (2K rows), or, for a curve
-/// whose pairs come from one slope per node, the slopes m_k and span scales h_k with d0_k = h_k m_k
-/// and d1_k = h_k m_{k+1} (no scales: h_k = 1), formed at each evaluation by the very product the
-/// pairs were once stored from, so the same values bit for bit. The slope form holds the C2 cubic
-/// splines and Boost's pchip, makima and Catmull–Rom (one slope per node): per planar node 16 bytes
-/// of slopes and 8 of scale, against 32 of pairs.
+/// One storage form: the derivative pairs d0_k, d1_k. A curve whose pairs come from one slope per
+/// node (the C2 cubic splines, Boost's pchip, makima and Catmull–Rom) is built by from_node_slopes,
+/// which forms d0_k = h_k m_k and d1_k = h_k m_{k+1} once.
 ///
 /// Interpolants (points P_0..P_n, open, or P_0..P_{n−1} closed):
 ///   cubic_spline_interpolant   C2 cubic spline in a parameter τ: uniform (τ_k = k, "spline A") or
@@ -57,24 +54,18 @@ class PiecewiseHermiteCurve : public Curve {
 public:
     /// nodes: K+1 rows (node K = node 0 for a closed curve); d0, d1: K rows each.
     PiecewiseHermiteCurve(Eigen::MatrixXd nodes, Eigen::MatrixXd d0, Eigen::MatrixXd d1);
-    /// The slope form: nodes K+1 rows; slopes K+1 rows (closed: K rows, m_K = m_0); scales K values
-    /// h_k, or none for h_k = 1. Span k has d0_k = h_k m_k, d1_k = h_k m_{k+1}.
+    /// From one slope per node: nodes K+1 rows; slopes K+1 rows (closed: K rows, m_K = m_0); scales
+    /// K values h_k, or none for h_k = 1. Span k gets d0_k = h_k m_k, d1_k = h_k m_{k+1}.
     static PiecewiseHermiteCurve from_node_slopes(Eigen::MatrixXd nodes, Eigen::MatrixXd slopes, std::vector<double> scales);
 
     /// K.
     int spans() const { return static_cast<int>(nodes_.rows()) - 1; }
     /// The K + 1 nodes, one per row.
     const Eigen::MatrixXd& nodes() const { return nodes_; }
-    /// The derivative d/du at the start of each span (K rows; formed for the slope form).
-    Eigen::MatrixXd start_derivatives() const;
-    /// The derivative d/du at the end of each span (K rows; formed for the slope form).
-    Eigen::MatrixXd end_derivatives() const;
-    /// Whether the curve is held in the slope form (from_node_slopes).
-    bool holds_node_slopes() const { return slopes_.rows() > 0; }
-    /// The slope form's m_k, K + 1 rows (closed: row K repeats row 0; empty in the pair form).
-    const Eigen::MatrixXd& node_slopes() const { return slopes_; }
-    /// The slope form's h_k (empty in the pair form, and for h_k = 1).
-    const std::vector<double>& span_scales() const { return scales_; }
+    /// The derivative d/du at the start of each span (K rows).
+    const Eigen::MatrixXd& start_derivatives() const { return d0_; }
+    /// The derivative d/du at the end of each span (K rows).
+    const Eigen::MatrixXd& end_derivatives() const { return d1_; }
 
     int dimension() const override { return static_cast<int>(nodes_.cols()); }
     double t_min() const override { return 0.0; }
@@ -85,9 +76,7 @@ public:
 
 private:
     PiecewiseHermiteCurve() = default;
-    Eigen::MatrixXd nodes_, d0_, d1_;  ///< the pair form (d0_, d1_ empty in the slope form)
-    Eigen::MatrixXd slopes_;           ///< the slope form: m_k (empty in the pair form)
-    std::vector<double> scales_;       ///< the slope form: h_k, or empty for 1
+    Eigen::MatrixXd nodes_, d0_, d1_;
 };
 
 /// The parameter of the C2 cubic spline: uniform (cubic spline A) or chord length (cubic spline B).
