@@ -26,8 +26,7 @@ void count_allocated(void* p) {
     const auto size = static_cast<std::ptrdiff_t>(malloc_usable_size(p));
     const auto now = live.fetch_add(size, std::memory_order_relaxed) + size;
     auto seen = peak.load(std::memory_order_relaxed);
-    while (now > seen && !peak.compare_exchange_weak(seen, now, std::memory_order_relaxed)) {
-    }
+    while (now > seen && !peak.compare_exchange_weak(seen, now, std::memory_order_relaxed)) {}
 }
 
 void count_freed(void* p) {

@@ -17,7 +17,9 @@ using namespace cagd;
 
 namespace {
 
-PointList table1() { return read_points_csv(std::string(CAGD_SOURCE_DIR) + "/reference/pseudo_energy/data/table1.csv"); }
+PointList table1() {
+    return read_points_csv(std::string(CAGD_SOURCE_DIR) + "/reference/pseudo_energy/data/table1.csv");
+}
 
 void BM_AnalyzeIn(benchmark::State& state, const char* method) {
     const PointList p = table1();
@@ -25,7 +27,8 @@ void BM_AnalyzeIn(benchmark::State& state, const char* method) {
     for (auto _ : state) {
         const methods::InterpolationResult r = methods::interpolate(method, p, false);
         const Curve& c = *r.interpolant->curve;
-        benchmark::DoNotOptimize(analysis::accurate_arc_length(c).value + analysis::area_closed_by_chord(c) + analysis::curvature_torsion_extremes(c).max_abs_curvature);
+        benchmark::DoNotOptimize(analysis::accurate_arc_length(c).value + analysis::area_closed_by_chord(c) +
+                                 analysis::curvature_torsion_extremes(c).max_abs_curvature);
     }
 }
 BENCHMARK_CAPTURE(BM_AnalyzeIn, pseudo_spline, "pseudo-spline")->Unit(benchmark::kMillisecond);

@@ -21,10 +21,12 @@ void run_comparison(benchmark::State& state, const std::vector<std::string>& met
     o.methods = methods;
     for (auto _ : state) {
         const std::vector<compare::MethodComparison> c = compare::compare_methods(p, o);
-        const compare::FigureData d = compare::comparison_figure_data(c, p, compare::figure_sampling(static_cast<int>(p.rows()) - 1, 10000));
+        const compare::FigureData d =
+            compare::comparison_figure_data(c, p, compare::figure_sampling(static_cast<int>(p.rows()) - 1, 10000));
         benchmark::DoNotOptimize(d.curves.data());
         for (const compare::MethodComparison& m : c)
-            if (m.status != compare::AttemptStatus::ok) state.SkipWithError((m.method + ": " + compare::to_string(m.status) + " " + m.note).c_str());
+            if (m.status != compare::AttemptStatus::ok)
+                state.SkipWithError((m.method + ": " + compare::to_string(m.status) + " " + m.note).c_str());
     }
     state.counters["points"] = static_cast<double>(state.range(0));
 }

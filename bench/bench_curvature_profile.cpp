@@ -28,8 +28,16 @@ namespace {
 CurvatureProfileProblem fig3_problem() {
     PointList p(13, 2);
     p << 9, 1, 4, 1, 1, 3, 1, 6, 2, 7, 7, 7, 10, 3.5, 14, 3.5, 14, 6, 15, 7, 17, 4.2, 20, 3, 22, 3;
-    const KnotLayout layout = parse_knot_difference_list("{0, S0, 0, S1, 0, S2, 0, S3, 0, S4, 0, S5, 0, S6, 0, S7, 0, S8, 0, {S9, S10}, S11, S12, 0}", 2).layout;
-    return {p, layout, segment_shapes(layout, parse_span_shapes("line,free,line,arc,line,free,arc,line,arc,free,free,line")), {}, false, 0};
+    const KnotLayout layout =
+        parse_knot_difference_list(
+            "{0, S0, 0, S1, 0, S2, 0, S3, 0, S4, 0, S5, 0, S6, 0, S7, 0, S8, 0, {S9, S10}, S11, S12, 0}", 2)
+            .layout;
+    return {p,
+            layout,
+            segment_shapes(layout, parse_span_shapes("line,free,line,arc,line,free,arc,line,arc,free,free,line")),
+            {},
+            false,
+            0};
 }
 
 CurvatureProfileProblem sine_problem(int points) {
@@ -37,7 +45,13 @@ CurvatureProfileProblem sine_problem(int points) {
     for (int i = 0; i < points; ++i) p.row(i) << 0.5 * i, std::sin(0.5 * i);
     const std::vector<SegmentShape> spans(static_cast<std::size_t>(points) - 1, SegmentShape::free);
     const KnotLayout layout = span_layout(spans);
-    return {p, layout, spans, {{DesignCondition::Kind::curvature, 0, 0.0, false}, {DesignCondition::Kind::curvature, points - 1, 0.0, true}}, false, 0};
+    return {
+        p,
+        layout,
+        spans,
+        {{DesignCondition::Kind::curvature, 0, 0.0, false}, {DesignCondition::Kind::curvature, points - 1, 0.0, true}},
+        false,
+        0};
 }
 
 void BM_Fig3Solve(benchmark::State& state) {
@@ -60,7 +74,9 @@ void BM_NewtonIterationSparse(benchmark::State& state) {
         benchmark::DoNotOptimize(step.data());
     }
     state.counters["points"] = static_cast<double>(state.range(0));
-    state.counters["per_point"] = benchmark::Counter(static_cast<double>(state.range(0)), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+    state.counters["per_point"] =
+        benchmark::Counter(static_cast<double>(state.range(0)),
+                           benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_NewtonIterationSparse)->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMicrosecond);
 
@@ -99,7 +115,11 @@ void BM_CurvatureProfileLuStep(benchmark::State& state) {
         benchmark::DoNotOptimize(step.data());
     }
 }
-BENCHMARK(BM_CurvatureProfileLuStep)->Arg(100000)->Unit(benchmark::kMillisecond)->Repetitions(3)->ReportAggregatesOnly(true);
+BENCHMARK(BM_CurvatureProfileLuStep)
+    ->Arg(100000)
+    ->Unit(benchmark::kMillisecond)
+    ->Repetitions(3)
+    ->ReportAggregatesOnly(true);
 
 BENCHMARK(BM_NewtonIterationDense)->Arg(10)->Arg(100)->Arg(300)->Unit(benchmark::kMicrosecond);
 

@@ -9,8 +9,8 @@
 #include <random>
 #include <vector>
 
-#include "cagd/spline/hosaka_spline.hpp"
 #include "cagd/core/random_walk.hpp"
+#include "cagd/spline/hosaka_spline.hpp"
 
 namespace {
 cagd::PointList walk(long n) { return cagd::random_walk(n, 11, 0.1, 2.0, 1.0); }

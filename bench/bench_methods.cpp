@@ -53,12 +53,12 @@ using std::isnan;
 #include <string>
 #include <vector>
 
+#include "allocation_tracking.hpp"
+#include "cagd/core/random_walk.hpp"
 #include "cagd/methods/method_parameter_curve.hpp"
 #include "cagd/methods/method_registry.hpp"
 #include "cagd/spline/bspline.hpp"
 #include "cagd/spline/hermite_spline.hpp"
-#include "allocation_tracking.hpp"
-#include "cagd/core/random_walk.hpp"
 
 using namespace cagd;
 
@@ -67,10 +67,13 @@ namespace {
 PointList walk(long n) { return cagd::random_walk(n, 7, 0.1, 2.0, 1.0); }
 
 // Before any benchmark runs (see the top of the file).
-const bool allocator_keeps_memory = [] { return mallopt(M_MMAP_THRESHOLD, 32 << 20) == 1 && mallopt(M_TRIM_THRESHOLD, 1 << 30) == 1; }();
+const bool allocator_keeps_memory = [] {
+    return mallopt(M_MMAP_THRESHOLD, 32 << 20) == 1 && mallopt(M_TRIM_THRESHOLD, 1 << 30) == 1;
+}();
 
 void construct(benchmark::State& state, const std::string& method, bool fresh_memory) {
-    if (!allocator_keeps_memory) state.SkipWithError("mallopt failed: the allocator's state is not the one these figures assume");
+    if (!allocator_keeps_memory)
+        state.SkipWithError("mallopt failed: the allocator's state is not the one these figures assume");
     const PointList p = walk(state.range(0));
     methods::interpolate(method, walk(20), false);  // per-process tables, outside the timing
     for (auto _ : state) {
@@ -85,7 +88,8 @@ void construct(benchmark::State& state, const std::string& method, bool fresh_me
         // An iterative method's Newton steps: its history has one residual per iteration, the
         // last one's without a step.
         int residuals = 0;
-        for (const auto& [quantity, value] : r.report) residuals += quantity.starts_with("newton_") && quantity.ends_with("_residual");
+        for (const auto& [quantity, value] : r.report)
+            residuals += quantity.starts_with("newton_") && quantity.ends_with("_residual");
         if (residuals > 0) state.counters["newton_steps"] = residuals - 1;
     }
     state.SetItemsProcessed(state.iterations() * state.range(0));
@@ -103,12 +107,14 @@ void BM_ConstructMemory(benchmark::State& state, const std::string& method) {
         const std::ptrdiff_t before = cagd_bench::live_heap_bytes();
         cagd_bench::reset_peak_heap_bytes();
         const methods::InterpolationResult r = methods::interpolate(method, p, false);
-        const std::ptrdiff_t peak = cagd_bench::peak_heap_bytes() - before, kept = cagd_bench::live_heap_bytes() - before;
+        const std::ptrdiff_t peak = cagd_bench::peak_heap_bytes() - before,
+                             kept = cagd_bench::live_heap_bytes() - before;
         if (!r.outcome.ok()) state.SkipWithError((method + ": " + r.outcome.message).c_str());
         const double n = static_cast<double>(state.range(0));
         state.counters["peak_bytes_per_point"] = static_cast<double>(peak) / n;
         state.counters["retained_bytes_per_point"] = static_cast<double>(kept) / n;
-        state.counters["peak_over_retained"] = static_cast<double>(peak) / static_cast<double>(std::max<std::ptrdiff_t>(kept, 1));
+        state.counters["peak_over_retained"] =
+            static_cast<double>(peak) / static_cast<double>(std::max<std::ptrdiff_t>(kept, 1));
     }
 }
 
@@ -124,14 +130,19 @@ void raw_boost_componentwise(benchmark::State& state) {
     const PointList p = walk(state.range(0));
     for (auto _ : state) {
         const std::vector<double> tau = chord_parameters(p);
-        std::vector<double> tx = tau, x(p.col(0).data(), p.col(0).data() + p.rows()), ty = tau, y(p.col(1).data(), p.col(1).data() + p.rows());
+        std::vector<double> tx = tau, x(p.col(0).data(), p.col(0).data() + p.rows()), ty = tau,
+                            y(p.col(1).data(), p.col(1).data() + p.rows());
         const Interpolator fx(std::move(tx), std::move(x)), fy(std::move(ty), std::move(y));
         benchmark::DoNotOptimize(fx(1.0) + fy(1.0));
     }
     state.SetItemsProcessed(state.iterations() * state.range(0));
 }
-void BM_RawBoostPchip(benchmark::State& state) { raw_boost_componentwise<boost::math::interpolators::pchip<std::vector<double>>>(state); }
-void BM_RawBoostMakima(benchmark::State& state) { raw_boost_componentwise<boost::math::interpolators::makima<std::vector<double>>>(state); }
+void BM_RawBoostPchip(benchmark::State& state) {
+    raw_boost_componentwise<boost::math::interpolators::pchip<std::vector<double>>>(state);
+}
+void BM_RawBoostMakima(benchmark::State& state) {
+    raw_boost_componentwise<boost::math::interpolators::makima<std::vector<double>>>(state);
+}
 void BM_RawBoostCatmullRom(benchmark::State& state) {
     if (!allocator_keeps_memory) state.SkipWithError("mallopt failed");
     const PointList p = walk(state.range(0));
@@ -168,7 +179,8 @@ constexpr long kJetPoints = 10000, kJetParameters = 1000000;
 
 std::vector<double> jet_parameters(double t_max) {
     std::vector<double> u(static_cast<std::size_t>(kJetParameters));
-    for (std::size_t i = 0; i < u.size(); ++i) u[i] = t_max * static_cast<double>(i) / static_cast<double>(u.size() - 1);
+    for (std::size_t i = 0; i < u.size(); ++i)
+        u[i] = t_max * static_cast<double>(i) / static_cast<double>(u.size() - 1);
     return u;
 }
 
@@ -193,7 +205,8 @@ void BM_JetHandLoop(benchmark::State& state) {
     const methods::InterpolationResult r = methods::interpolate("cubic-a", walk(kJetPoints), false);
     const auto& c = dynamic_cast<const spline::PiecewiseHermiteCurve&>(*r.interpolant->curve);
     const int spans = c.spans();
-    std::vector<double> px(static_cast<std::size_t>(spans + 1)), py(px.size()), ax(static_cast<std::size_t>(spans)), ay(ax.size()), bx(ax.size()), by(ax.size());
+    std::vector<double> px(static_cast<std::size_t>(spans + 1)), py(px.size()), ax(static_cast<std::size_t>(spans)),
+        ay(ax.size()), bx(ax.size()), by(ax.size());
     for (int k = 0; k <= spans; ++k) {
         px[static_cast<std::size_t>(k)] = c.nodes()(k, 0);
         py[static_cast<std::size_t>(k)] = c.nodes()(k, 1);
@@ -211,12 +224,16 @@ void BM_JetHandLoop(benchmark::State& state) {
             const int k = std::min(static_cast<int>(v), spans - 1);
             const double t = v - k;
             const auto s = static_cast<std::size_t>(k);
-            const double h0 = 2 * t * t * t - 3 * t * t + 1, h1 = -2 * t * t * t + 3 * t * t, h2 = t * t * t - 2 * t * t + t, h3 = t * t * t - t * t;
+            const double h0 = 2 * t * t * t - 3 * t * t + 1, h1 = -2 * t * t * t + 3 * t * t,
+                         h2 = t * t * t - 2 * t * t + t, h3 = t * t * t - t * t;
             const double d1 = -6 * t * t + 6 * t, d3 = 3 * t * t - 2 * t, d2 = 3 * t * t - 4 * t + 1;  // H0' = −H1'
             const double e0 = 12 * t - 6, e2 = 6 * t - 4, e3 = 6 * t - 2;                              // H1'' = −H0''
-            const double x = h0 * px[s] + h1 * px[s + 1] + h2 * ax[s] + h3 * bx[s], y = h0 * py[s] + h1 * py[s + 1] + h2 * ay[s] + h3 * by[s];
-            const double x1 = -d1 * px[s] + d1 * px[s + 1] + d2 * ax[s] + d3 * bx[s], y1 = -d1 * py[s] + d1 * py[s + 1] + d2 * ay[s] + d3 * by[s];
-            const double x2 = e0 * px[s] - e0 * px[s + 1] + e2 * ax[s] + e3 * bx[s], y2 = e0 * py[s] - e0 * py[s + 1] + e2 * ay[s] + e3 * by[s];
+            const double x = h0 * px[s] + h1 * px[s + 1] + h2 * ax[s] + h3 * bx[s],
+                         y = h0 * py[s] + h1 * py[s + 1] + h2 * ay[s] + h3 * by[s];
+            const double x1 = -d1 * px[s] + d1 * px[s + 1] + d2 * ax[s] + d3 * bx[s],
+                         y1 = -d1 * py[s] + d1 * py[s + 1] + d2 * ay[s] + d3 * by[s];
+            const double x2 = e0 * px[s] - e0 * px[s + 1] + e2 * ax[s] + e3 * bx[s],
+                         y2 = e0 * py[s] - e0 * py[s + 1] + e2 * ay[s] + e3 * by[s];
             sum += x + y + x1 + y1 + x2 + y2;
         }
         benchmark::DoNotOptimize(sum);
@@ -230,10 +247,12 @@ void BM_JetHandLoop(benchmark::State& state) {
 // times the module's evaluate on the same curve size and count against it.
 void BM_EvaluateMillion(benchmark::State& state) {
     // In the method's parameter (chord length), as Python's Curve evaluates it.
-    const auto c = std::make_shared<methods::MethodParameterCurve>(*methods::interpolate("cubic-b", walk(1000), false).interpolant);
+    const auto c = std::make_shared<methods::MethodParameterCurve>(
+        *methods::interpolate("cubic-b", walk(1000), false).interpolant);
     const int count = 1000000;
     std::vector<double> t(count), out(2 * static_cast<std::size_t>(count));
-    for (int k = 0; k < count; ++k) t[static_cast<std::size_t>(k)] = c->t_min() + (c->t_max() - c->t_min()) * k / (count - 1);
+    for (int k = 0; k < count; ++k)
+        t[static_cast<std::size_t>(k)] = c->t_min() + (c->t_max() - c->t_min()) * k / (count - 1);
     JetMatrix jet;
     for (auto _ : state) {
         for (std::size_t k = 0; k < t.size(); ++k) {
@@ -258,26 +277,50 @@ const int registered = [] {
         // A method that takes at most some number of points (eigen-spline: its dense system) is
         // not timed beyond it.
         if (const long most = methods::find_configuration(m).claims.max_points; most > 0 && most < 100000) continue;
-        benchmark::internal::Benchmark* b = benchmark::RegisterBenchmark(("BM_Construct/" + m).c_str(), BM_Construct, m)->Arg(100000)->Arg(1000000);
-        if (m == "cubic-a" || m == "cubic-b" || m == "hermite-a" || m == "hermite-b") b->Arg(10000000);  // the 10^7 targets (about 1 GB each)
+        benchmark::internal::Benchmark* b =
+            benchmark::RegisterBenchmark(("BM_Construct/" + m).c_str(), BM_Construct, m)->Arg(100000)->Arg(1000000);
+        if (m == "cubic-a" || m == "cubic-b" || m == "hermite-a" || m == "hermite-b")
+            b->Arg(10000000);  // the 10^7 targets (about 1 GB each)
         b->Unit(benchmark::kMillisecond)->Repetitions(3)->ReportAggregatesOnly(true);
         benchmark::RegisterBenchmark(("BM_ConstructFresh/" + m).c_str(), BM_ConstructFresh, m)
             ->Arg(1000000)
             ->Unit(benchmark::kMillisecond)
             ->Repetitions(3)
             ->ReportAggregatesOnly(true);
-        benchmark::RegisterBenchmark(("BM_ConstructMemory/" + m).c_str(), BM_ConstructMemory, m)->Arg(1000000)->Iterations(1)->Unit(benchmark::kMillisecond);
+        benchmark::RegisterBenchmark(("BM_ConstructMemory/" + m).c_str(), BM_ConstructMemory, m)
+            ->Arg(1000000)
+            ->Iterations(1)
+            ->Unit(benchmark::kMillisecond);
     }
     for (const char* m : {"cubic-a", "cubic-b", "hermite-a", "hermite-b"})
-        benchmark::RegisterBenchmark((std::string("BM_Jet/") + m).c_str(), BM_Jet, std::string(m))->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
+        benchmark::RegisterBenchmark((std::string("BM_Jet/") + m).c_str(), BM_Jet, std::string(m))
+            ->Unit(benchmark::kMillisecond)
+            ->Repetitions(5)
+            ->ReportAggregatesOnly(true);
     return 0;
 }();
 
 }  // namespace
 
-BENCHMARK(BM_RawBoostPchip)->Name("BM_RawBoost/pchip")->Arg(1000000)->Arg(10000000)->Unit(benchmark::kMillisecond)->Repetitions(3)->ReportAggregatesOnly(true);
-BENCHMARK(BM_RawBoostMakima)->Name("BM_RawBoost/makima")->Arg(1000000)->Unit(benchmark::kMillisecond)->Repetitions(3)->ReportAggregatesOnly(true);
-BENCHMARK(BM_RawBoostCatmullRom)->Name("BM_RawBoost/catmull_rom")->Arg(1000000)->Unit(benchmark::kMillisecond)->Repetitions(3)->ReportAggregatesOnly(true);
+BENCHMARK(BM_RawBoostPchip)
+    ->Name("BM_RawBoost/pchip")
+    ->Arg(1000000)
+    ->Arg(10000000)
+    ->Unit(benchmark::kMillisecond)
+    ->Repetitions(3)
+    ->ReportAggregatesOnly(true);
+BENCHMARK(BM_RawBoostMakima)
+    ->Name("BM_RawBoost/makima")
+    ->Arg(1000000)
+    ->Unit(benchmark::kMillisecond)
+    ->Repetitions(3)
+    ->ReportAggregatesOnly(true);
+BENCHMARK(BM_RawBoostCatmullRom)
+    ->Name("BM_RawBoost/catmull_rom")
+    ->Arg(1000000)
+    ->Unit(benchmark::kMillisecond)
+    ->Repetitions(3)
+    ->ReportAggregatesOnly(true);
 void BM_BSplineJet(benchmark::State& state, bool at_knots) {
     const int n = 10000, p = 3;
     std::vector<double> knots;
@@ -302,5 +345,9 @@ BENCHMARK_CAPTURE(BM_BSplineJet, knots, true)->Name("BM_BSplineJet/knots");
 BENCHMARK_CAPTURE(BM_BSplineJet, between, false)->Name("BM_BSplineJet/between");
 BENCHMARK(BM_SpacePseudoSpline)->Arg(100000)->Unit(benchmark::kMillisecond);
 // The curvature-profile Newton solve, once (about 1.3 s); target ≤ 50× cubic-b's construction at 10^5.
-BENCHMARK_CAPTURE(BM_Construct, curvature_profile, std::string("curvature-profile"))->Name("BM_Construct/curvature-profile")->Arg(100000)->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Construct, curvature_profile, std::string("curvature-profile"))
+    ->Name("BM_Construct/curvature-profile")
+    ->Arg(100000)
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_JetHandLoop)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);

@@ -44,7 +44,8 @@ void BM_RawOpenCascadeMemory(benchmark::State& state) {
         const std::ptrdiff_t before = cagd_bench::live_heap_bytes();
         cagd_bench::reset_peak_heap_bytes();
         const Handle(Geom2d_BSplineCurve) curve = raw_interpolation(p);
-        const std::ptrdiff_t peak = cagd_bench::peak_heap_bytes() - before, kept = cagd_bench::live_heap_bytes() - before;
+        const std::ptrdiff_t peak = cagd_bench::peak_heap_bytes() - before,
+                             kept = cagd_bench::live_heap_bytes() - before;
         if (curve.IsNull()) state.SkipWithError("Geom2dAPI_Interpolate found no curve");
         const double n = static_cast<double>(state.range(0));
         state.counters["peak_bytes_per_point"] = static_cast<double>(peak) / n;

@@ -11,13 +11,17 @@ namespace {
 using namespace cagd::fairness;
 
 void BM_table36_reference(benchmark::State& s) {
-    for (auto _ : s) benchmark::DoNotOptimize(PseudoEnergyTable::build({36, NodePlacement::periodic}, TableMethod::reference, 2, false));
+    for (auto _ : s)
+        benchmark::DoNotOptimize(
+            PseudoEnergyTable::build({36, NodePlacement::periodic}, TableMethod::reference, 2, false));
 }
 void BM_table36_fast(benchmark::State& s) {
-    for (auto _ : s) benchmark::DoNotOptimize(PseudoEnergyTable::build({36, NodePlacement::periodic}, TableMethod::fast, 2, true));
+    for (auto _ : s)
+        benchmark::DoNotOptimize(PseudoEnergyTable::build({36, NodePlacement::periodic}, TableMethod::fast, 2, true));
 }
 void BM_table361_fast(benchmark::State& s) {
-    for (auto _ : s) benchmark::DoNotOptimize(PseudoEnergyTable::build({361, NodePlacement::endpoints}, TableMethod::fast, 2, true));
+    for (auto _ : s)
+        benchmark::DoNotOptimize(PseudoEnergyTable::build({361, NodePlacement::endpoints}, TableMethod::fast, 2, true));
 }
 void BM_single_minimum_fast(benchmark::State& s) {
     double a = 0.3;

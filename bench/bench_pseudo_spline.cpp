@@ -15,9 +15,9 @@
 #include <vector>
 
 #include "cagd/analysis/curve_measures.hpp"
+#include "cagd/core/random_walk.hpp"
 #include "cagd/fairness/pseudo_spline.hpp"
 #include "cagd/spline/hermite_spline.hpp"
-#include "cagd/core/random_walk.hpp"
 
 namespace {
 using namespace cagd;
@@ -48,14 +48,17 @@ void BM_pseudo_spline(benchmark::State& s) {
 void BM_hermite_a(benchmark::State& s) {
     Fixture& f = fixture();
     for (auto _ : s)
-        benchmark::DoNotOptimize(spline::hermite_interpolant(f.points, spline::hermite_tangent_directions(f.points, spline::TangentRule::chord_of_neighbours, false), false));
+        benchmark::DoNotOptimize(spline::hermite_interpolant(
+            f.points, spline::hermite_tangent_directions(f.points, spline::TangentRule::chord_of_neighbours, false),
+            false));
     s.SetItemsProcessed(s.iterations() * f.points.rows());
 }
 
 void BM_catmull_rom_boost(benchmark::State& s) {
     Fixture& f = fixture();
     std::vector<std::array<double, 2>> pts(static_cast<std::size_t>(f.points.rows()));
-    for (Eigen::Index i = 0; i < f.points.rows(); ++i) pts[static_cast<std::size_t>(i)] = {f.points(i, 0), f.points(i, 1)};
+    for (Eigen::Index i = 0; i < f.points.rows(); ++i)
+        pts[static_cast<std::size_t>(i)] = {f.points(i, 0), f.points(i, 1)};
     for (auto _ : s) {
         auto copy = pts;  // catmull_rom takes the points by value
         benchmark::DoNotOptimize(boost::math::catmull_rom<std::array<double, 2>>(std::move(copy)));
@@ -77,7 +80,8 @@ void BM_length_area(benchmark::State& s) {
         } else {
             length = analysis::adaptive_arc_length(ps.curve, 1e-10);
             const Eigen::MatrixXd& n = ps.curve.nodes();
-            area = analysis::enclosed_area(ps.curve) + 0.5 * (n(n.rows() - 1, 0) * n(0, 1) - n(n.rows() - 1, 1) * n(0, 0));
+            area =
+                analysis::enclosed_area(ps.curve) + 0.5 * (n(n.rows() - 1, 0) * n(0, 1) - n(n.rows() - 1, 1) * n(0, 0));
         }
         benchmark::DoNotOptimize(length);
         benchmark::DoNotOptimize(area);

@@ -59,7 +59,10 @@ GridData noisy_grid(long n) {
         g.y.push_back(static_cast<double>(i) / static_cast<double>(n - 1));
     }
     for (long i = 0; i < n; ++i)
-        for (long j = 0; j < n; ++j) g.a(i, j) = std::sin(3 * g.x[static_cast<std::size_t>(i)]) * std::cos(2 * g.y[static_cast<std::size_t>(j)]) + noise(rng);
+        for (long j = 0; j < n; ++j)
+            g.a(i, j) =
+                std::sin(3 * g.x[static_cast<std::size_t>(i)]) * std::cos(2 * g.y[static_cast<std::size_t>(j)]) +
+                noise(rng);
     return g;
 }
 
@@ -82,11 +85,21 @@ void BM_surface_method(benchmark::State& s) {
     using cagd::smoothing::PlateEnergy;
     for (auto _ : s) switch (s.range(0)) {
             case 0: benchmark::DoNotOptimize(cagd::smoothing::net_spline_smoothing(g.x, g.y, g.a, lambda)); break;
-            case 1: benchmark::DoNotOptimize(cagd::smoothing::plate_smoothing(g.x, g.y, g.a, lambda, PlateEnergy::no_twist)); break;
-            case 2: benchmark::DoNotOptimize(cagd::smoothing::boundary_plate_smoothing(g.x, g.y, g.a, lambda, PlateEnergy::no_twist, 2)); break;
-            default: benchmark::DoNotOptimize(cagd::smoothing::local_orthogonal_smoothing(g.x, g.y, g.a, 1e-5, PlateEnergy::no_twist)); break;
+            case 1:
+                benchmark::DoNotOptimize(
+                    cagd::smoothing::plate_smoothing(g.x, g.y, g.a, lambda, PlateEnergy::no_twist));
+                break;
+            case 2:
+                benchmark::DoNotOptimize(
+                    cagd::smoothing::boundary_plate_smoothing(g.x, g.y, g.a, lambda, PlateEnergy::no_twist, 2));
+                break;
+            default:
+                benchmark::DoNotOptimize(
+                    cagd::smoothing::local_orthogonal_smoothing(g.x, g.y, g.a, 1e-5, PlateEnergy::no_twist));
+                break;
         }
-    static const char* names[] = {"approx2 (net + splines)", "plate (i) eq 57", "plate (ii) eq 57 m=2", "approx1 eq 57"};
+    static const char* names[] = {"approx2 (net + splines)", "plate (i) eq 57", "plate (ii) eq 57 m=2",
+                                  "approx1 eq 57"};
     s.SetLabel(names[s.range(0)]);
 }
 

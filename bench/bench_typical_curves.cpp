@@ -27,7 +27,9 @@ std::vector<Eigen::MatrixXd> reference_jets(const Eigen::MatrixXd& cp) {
     std::vector<std::vector<std::array<Big, 2>>> diffs(4);
     for (int i = 0; i <= n; ++i) diffs[0].push_back({Big(cp(i, 0)), Big(cp(i, 1))});
     for (int k = 1; k <= 3; ++k)
-        for (std::size_t i = 0; i + 1 < diffs[k - 1].size(); ++i) diffs[k].push_back({diffs[k - 1][i + 1][0] - diffs[k - 1][i][0], diffs[k - 1][i + 1][1] - diffs[k - 1][i][1]});
+        for (std::size_t i = 0; i + 1 < diffs[k - 1].size(); ++i)
+            diffs[k].push_back(
+                {diffs[k - 1][i + 1][0] - diffs[k - 1][i][0], diffs[k - 1][i + 1][1] - diffs[k - 1][i][1]});
     std::vector<Eigen::MatrixXd> out;
     for (int q = 0; q < kParams; ++q) {
         const Big t = Big(q) / (kParams - 1);
@@ -57,11 +59,15 @@ void BM_degree99_jets(benchmark::State& s) {
     double err = 0;
     for (int q = 0; q < kParams; ++q) {
         const Eigen::MatrixXd j = c.jet(static_cast<double>(q) / (kParams - 1), 3);
-        for (int k = 0; k <= 3; ++k) err = std::max(err, (j.row(k) - ref[static_cast<std::size_t>(q)].row(k)).norm() / (1e-300 + ref[static_cast<std::size_t>(q)].row(k).norm()));
+        for (int k = 0; k <= 3; ++k)
+            err = std::max(err, (j.row(k) - ref[static_cast<std::size_t>(q)].row(k)).norm() /
+                                    (1e-300 + ref[static_cast<std::size_t>(q)].row(k).norm()));
     }
     s.counters["max_error"] = err;
     s.SetItemsProcessed(s.iterations() * kParams);
-    s.SetLabel(method == cagd::BezierEvaluation::de_casteljau ? "de Casteljau (baseline)" : method == cagd::BezierEvaluation::bernstein ? "Bernstein O(n)" : "power basis");
+    s.SetLabel(method == cagd::BezierEvaluation::de_casteljau ? "de Casteljau (baseline)"
+               : method == cagd::BezierEvaluation::bernstein  ? "Bernstein O(n)"
+                                                              : "power basis");
 }
 
 void BM_fig7_region(benchmark::State& s) {
@@ -73,7 +79,9 @@ void BM_fig7_condition29_baseline(benchmark::State& s) {
     for (auto _ : s) {
         double count = 0;
         for (int i = 0; i < 1000; ++i)
-            for (int j = 0; j < 1000; ++j) count += cagd::aesthetic::condition29(std::numbers::pi / 2 * i / 999, std::numbers::pi / 2 * j / 999) > 0.0;
+            for (int j = 0; j < 1000; ++j)
+                count +=
+                    cagd::aesthetic::condition29(std::numbers::pi / 2 * i / 999, std::numbers::pi / 2 * j / 999) > 0.0;
         benchmark::DoNotOptimize(count);
     }
     s.SetItemsProcessed(s.iterations() * 1000000);

@@ -19,7 +19,8 @@ namespace {
 constexpr int kGrid = 200;
 
 const cagd::surface::BezierPatch& fig6_patch() {
-    static const cagd::surface::BezierPatch patch(cagd::aesthetic::log_aesthetic_typical_net(-0.5, -0.6, 1.0, 24, 0.01 * std::numbers::pi / 180.0));
+    static const cagd::surface::BezierPatch patch(
+        cagd::aesthetic::log_aesthetic_typical_net(-0.5, -0.6, 1.0, 24, 0.01 * std::numbers::pi / 180.0));
     return patch;
 }
 
@@ -47,7 +48,8 @@ void BM_bi24_curvature_grid(benchmark::State& state) {
     for (Eigen::Index a = 0; a < kGrid; a += 7)
         for (Eigen::Index b = 0; b < kGrid; b += 7) {
             const cagd::analysis::SurfaceCurvatures x = cagd::analysis::surface_curvatures(g.jet(a, b));
-            const cagd::analysis::SurfaceCurvatures y = cagd::analysis::surface_curvatures(patch.jet(t[static_cast<std::size_t>(a)], t[static_cast<std::size_t>(b)]));
+            const cagd::analysis::SurfaceCurvatures y = cagd::analysis::surface_curvatures(
+                patch.jet(t[static_cast<std::size_t>(a)], t[static_cast<std::size_t>(b)]));
             max_diff = std::max(max_diff, std::abs(x.gaussian - y.gaussian) + std::abs(x.mean - y.mean));
         }
     state.counters["max_diff"] = max_diff;

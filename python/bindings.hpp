@@ -24,11 +24,11 @@
 #include "cagd/compare/method_comparison.hpp"
 #include "cagd/core/curve.hpp"
 #include "cagd/core/errors.hpp"
-#include "cagd/io/output_file.hpp"
 #include "cagd/core/parallel.hpp"
 #include "cagd/export/curve_json.hpp"
 #include "cagd/fairness/pseudo_energy_minimum.hpp"
 #include "cagd/fairness/pseudo_energy_table.hpp"
+#include "cagd/io/output_file.hpp"
 #include "cagd/methods/method_parameter_curve.hpp"
 #include "cagd/methods/method_registry.hpp"
 #include "cagd/smoothing/elastic_line.hpp"
@@ -62,7 +62,9 @@ inline void require_ok(const cagd::Outcome& outcome) {
 
 // An (n, d) array of finite or non-finite doubles (the library checks the values) → n × d.
 inline Eigen::MatrixXd to_matrix(const Array& a, const char* name) {
-    if (a.ndim() != 2) throw cagd::InvalidInput(std::string(name) + ": expected a 2-D array (n, d), got " + std::to_string(a.ndim()) + " dimension(s)");
+    if (a.ndim() != 2)
+        throw cagd::InvalidInput(std::string(name) + ": expected a 2-D array (n, d), got " + std::to_string(a.ndim()) +
+                                 " dimension(s)");
     Eigen::MatrixXd m(a.shape(0), a.shape(1));
     auto r = a.unchecked<2>();
     for (py::ssize_t i = 0; i < a.shape(0); ++i)
@@ -71,7 +73,9 @@ inline Eigen::MatrixXd to_matrix(const Array& a, const char* name) {
 }
 
 inline std::vector<double> to_vector(const Array& a, const char* name) {
-    if (a.ndim() != 1) throw cagd::InvalidInput(std::string(name) + ": expected a 1-D array, got " + std::to_string(a.ndim()) + " dimension(s)");
+    if (a.ndim() != 1)
+        throw cagd::InvalidInput(std::string(name) + ": expected a 1-D array, got " + std::to_string(a.ndim()) +
+                                 " dimension(s)");
     return std::vector<double>(a.data(), a.data() + a.shape(0));
 }
 
@@ -101,8 +105,10 @@ inline Array real_array(const py::object& value, const char* name) {
     }
     const char kind = raw ? raw.dtype().kind() : 'O';
     if (kind != 'i' && kind != 'u' && kind != 'f')
-        throw py::type_error(std::string(name) + ": expected real numbers, got " + std::string(py::str(py::type::of(value).attr("__name__"))) +
-                             (raw && raw.ndim() > 0 ? " of dtype " + std::string(py::str(raw.dtype())) : std::string()));
+        throw py::type_error(
+            std::string(name) + ": expected real numbers, got " +
+            std::string(py::str(py::type::of(value).attr("__name__"))) +
+            (raw && raw.ndim() > 0 ? " of dtype " + std::string(py::str(raw.dtype())) : std::string()));
     return Array::ensure(raw);
 }
 
@@ -127,7 +133,8 @@ void for_each_chunk(long m, const Body& body) {
         body(0L, m);
         return;
     }
-    cagd::parallel_for(kEvaluationChunks, cagd::hardware_threads(), [&](long c) { body(m * c / kEvaluationChunks, m * (c + 1) / kEvaluationChunks); });
+    cagd::parallel_for(kEvaluationChunks, cagd::hardware_threads(),
+                       [&](long c) { body(m * c / kEvaluationChunks, m * (c + 1) / kEvaluationChunks); });
 }
 
 // A curve of the library with what its construction reported.
@@ -151,7 +158,8 @@ struct PyCurve {
     // dim)): rows are r, r', r'', … at each t. A number (or 0-d array) gives (dim,) or (k + 1, dim).
     py::array evaluate(const py::object& t_in, int derivatives) const {
         if (derivatives < 0 || derivatives > kMaxPythonDerivatives)
-            throw cagd::InvalidInput("derivatives = " + std::to_string(derivatives) + "; allowed 0.." + std::to_string(kMaxPythonDerivatives));
+            throw cagd::InvalidInput("derivatives = " + std::to_string(derivatives) + "; allowed 0.." +
+                                     std::to_string(kMaxPythonDerivatives));
         const Array t = parameter_array(t_in);
         const py::ssize_t m = t.size(), rows = derivatives + 1, dim = curve->dimension();
         std::vector<py::ssize_t> shape(t.shape(), t.shape() + t.ndim());
@@ -163,7 +171,10 @@ struct PyCurve {
         {
             py::gil_scoped_release release;
             if (rows <= cagd::kJetCapacity && dim <= 3) {
-                for_each_chunk(m, [&](long begin, long end) { curve->jets_into(ts + begin, static_cast<std::size_t>(end - begin), derivatives, w + begin * rows * dim); });
+                for_each_chunk(m, [&](long begin, long end) {
+                    curve->jets_into(ts + begin, static_cast<std::size_t>(end - begin), derivatives,
+                                     w + begin * rows * dim);
+                });
             } else {
                 for (py::ssize_t k = 0; k < m; ++k) {
                     const Eigen::MatrixXd jet = curve->jet(ts[k], derivatives);
@@ -199,7 +210,8 @@ inline PyCurve wrap(std::shared_ptr<const cagd::Curve> c, std::string method = {
 }
 
 // The curve with the recipe of the cagd function `name` that built it (PyCurve::recipe).
-inline PyCurve with_recipe(PyCurve c, const char* name, py::tuple args, py::dict kwargs = py::dict(), py::object key = py::none()) {
+inline PyCurve with_recipe(PyCurve c, const char* name, py::tuple args, py::dict kwargs = py::dict(),
+                           py::object key = py::none()) {
     c.recipe = py::make_tuple(name, std::move(args), std::move(kwargs), std::move(key));
     return c;
 }

@@ -9,9 +9,19 @@ py::dict comparison_dict(const std::vector<cagd::compare::MethodComparison>& row
     const auto n = static_cast<py::ssize_t>(rows.size());
     std::vector<std::string> method, status, note;
     // Each measure with a validity mask (cagd.compare turns the pairs into masked arrays).
-    const std::vector<std::string> names = {
-        "length",    "area",  "pseudo_energy",      "bending_energy", "curvature_sign_changes", "max_abs_curvature", "max_abs_curvature_derivative",
-        "overshoot", "spans", "locality_footprint", "seconds",        "max_abs_torsion", "shared_seconds"};
+    const std::vector<std::string> names = {"length",
+                                            "area",
+                                            "pseudo_energy",
+                                            "bending_energy",
+                                            "curvature_sign_changes",
+                                            "max_abs_curvature",
+                                            "max_abs_curvature_derivative",
+                                            "overshoot",
+                                            "spans",
+                                            "locality_footprint",
+                                            "seconds",
+                                            "max_abs_torsion",
+                                            "shared_seconds"};
     std::vector<py::array_t<double>> values;
     std::vector<py::array_t<bool>> valid;
     for (std::size_t k = 0; k < names.size(); ++k) {
@@ -38,7 +48,8 @@ py::dict comparison_dict(const std::vector<cagd::compare::MethodComparison>& row
             c.locality_footprint ? std::optional<double>(*c.locality_footprint) : std::nullopt,
             built ? std::optional<double>(c.seconds) : std::nullopt,
             measured && dimension == 3 ? std::optional<double>(c.fairness->max_abs_torsion) : std::nullopt,
-            c.status != cagd::compare::AttemptStatus::not_applicable ? std::optional<double>(c.shared_seconds) : std::nullopt,
+            c.status != cagd::compare::AttemptStatus::not_applicable ? std::optional<double>(c.shared_seconds)
+                                                                     : std::nullopt,
         };
         for (std::size_t k = 0; k < names.size(); ++k) {
             values[k].mutable_data()[i] = v[k].value_or(0.0);
@@ -72,7 +83,8 @@ void bind_compare(py::module_& m) {
             }
             return comparison_dict(rows, closed, static_cast<int>(p.cols()));
         },
-        py::arg("points"), py::arg("closed") = false, py::arg("methods") = std::vector<std::string>{}, py::arg("locality") = true, py::arg("threads") = 0);
+        py::arg("points"), py::arg("closed") = false, py::arg("methods") = std::vector<std::string>{},
+        py::arg("locality") = true, py::arg("threads") = 0);
 }
 
 }  // namespace cagd_python

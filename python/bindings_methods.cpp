@@ -12,10 +12,14 @@ namespace {
 // holding anything but real numbers. Sequences (a vector parameter) become comma-separated numbers;
 // a vector may also be given as its text ("2,3").
 [[noreturn]] void wrong_type(const std::string& name, const char* expected, const py::handle& v) {
-    throw py::type_error(name + ": expected " + expected + ", got " + std::string(py::str(py::type::of(v).attr("__name__"))) + " " + std::string(py::repr(v)));
+    throw py::type_error(name + ": expected " + expected + ", got " +
+                         std::string(py::str(py::type::of(v).attr("__name__"))) + " " + std::string(py::repr(v)));
 }
 
-bool real_number(const py::handle& v) { return py::isinstance<py::float_>(v) || py::isinstance<py::int_>(v) || py::isinstance(v, py::module_::import("numbers").attr("Real")); }
+bool real_number(const py::handle& v) {
+    return py::isinstance<py::float_>(v) || py::isinstance<py::int_>(v) ||
+           py::isinstance(v, py::module_::import("numbers").attr("Real"));
+}
 
 std::string parameter_text(const std::string& name, const cagd::methods::Parameter* declared, const py::handle& v) {
     using cagd::methods::ParameterType;
@@ -33,7 +37,8 @@ std::string parameter_text(const std::string& name, const cagd::methods::Paramet
         if (numeric) wrong_type(name, type == ParameterType::integer ? "an integer" : "a real number", v);
         std::string s;
         for (const py::handle& x : py::iter(v)) {
-            if (py::isinstance<py::str>(x) || py::isinstance<py::bool_>(x) || !real_number(x)) wrong_type(name, "real numbers in the sequence", x);
+            if (py::isinstance<py::str>(x) || py::isinstance<py::bool_>(x) || !real_number(x))
+                wrong_type(name, "real numbers in the sequence", x);
             if (!s.empty()) s += ",";
             s += cagd::full_precision(x.cast<double>());
         }
@@ -48,8 +53,7 @@ cagd::methods::ParameterText parameter_texts(const std::string& method, const py
     const cagd::methods::Method* m = nullptr;
     try {
         m = cagd::methods::find_configuration(method).method;
-    } catch (const cagd::InvalidInput&) {
-    }
+    } catch (const cagd::InvalidInput&) {}
     cagd::methods::ParameterText text;
     for (const auto& [k, v] : params) {
         std::string name = py::str(k);
@@ -71,7 +75,8 @@ struct Interpolation {
     std::vector<double> dtau_du;
 };
 
-Interpolation interpolate_result(const Array& points, const std::string& method, bool closed, const py::kwargs& params) {
+Interpolation interpolate_result(const Array& points, const std::string& method, bool closed,
+                                 const py::kwargs& params) {
     const Eigen::MatrixXd p = to_matrix(points, "interpolate: points");
     const cagd::methods::ParameterText text = parameter_texts(method, params);
     cagd::methods::InterpolationResult r;
@@ -90,7 +95,8 @@ Interpolation interpolate_result(const Array& points, const std::string& method,
         kwargs["closed"] = closed;
         // Evaluated in the method's own parameter (chord length, arc length, …: MethodClaims::parameter).
         auto in_tau = std::make_shared<const cagd::methods::MethodParameterCurve>(*r.interpolant);
-        out.curve = with_recipe(wrap(in_tau, method, in_tau->node_parameters()), "interpolate", py::make_tuple(from_matrix(p)), kwargs);
+        out.curve = with_recipe(wrap(in_tau, method, in_tau->node_parameters()), "interpolate",
+                                py::make_tuple(from_matrix(p)), kwargs);
         out.curve->points = static_cast<int>(p.rows());
         out.curve->closed = closed;
         out.curve->in_tau = in_tau;
@@ -98,8 +104,10 @@ Interpolation interpolate_result(const Array& points, const std::string& method,
         const cagd::methods::Configuration conf = cagd::methods::find_configuration(method);
         cagd::methods::ParameterText all = conf.values.as_text();
         for (const auto& [name, value] : text) all[name] = value;
-        const cagd::methods::ParameterValues values = cagd::methods::parse_parameter_values(conf.method->name, conf.method->parameters, all);
-        out.curve->provenance = std::make_shared<const cagd::exports::CurveProvenance>(cagd::methods::method_provenance(*conf.method, values, p, closed));
+        const cagd::methods::ParameterValues values =
+            cagd::methods::parse_parameter_values(conf.method->name, conf.method->parameters, all);
+        out.curve->provenance = std::make_shared<const cagd::exports::CurveProvenance>(
+            cagd::methods::method_provenance(*conf.method, values, p, closed));
         out.dtau_du = r.interpolant->dtau_du;
     }
     return out;
@@ -108,25 +116,34 @@ Interpolation interpolate_result(const Array& points, const std::string& method,
 }  // namespace
 
 void bind_methods(py::module_& m) {
-    py::class_<Interpolation>(m, "Interpolation", "The whole result of an interpolation: status, message, the curve when ok, and what the method reported (interpolate_result).\n\n"
-                                      ">>> import numpy as np, cagd\n"
-                                      ">>> r = cagd.interpolate_result(np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 0.0], [3.0, 1.0]]), \"curvature-profile\")\n"
-                                      ">>> r.ok, r.status, r.dtau_du  # arc length is the curve's own parameter\n"
-                                      "(True, 'ok', array([1., 1., 1.]))\n")
-        .def_readonly("status", &Interpolation::status, "\"ok\", or the numerical outcome: \"no_solution\", \"no_convergence\"")
+    py::class_<Interpolation>(m, "Interpolation",
+                              "The whole result of an interpolation: status, message, the curve when ok, and what the "
+                              "method reported (interpolate_result).\n\n"
+                              ">>> import numpy as np, cagd\n"
+                              ">>> r = cagd.interpolate_result(np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 0.0], [3.0, "
+                              "1.0]]), \"curvature-profile\")\n"
+                              ">>> r.ok, r.status, r.dtau_du  # arc length is the curve's own parameter\n"
+                              "(True, 'ok', array([1., 1., 1.]))\n")
+        .def_readonly("status", &Interpolation::status,
+                      "\"ok\", or the numerical outcome: \"no_solution\", \"no_convergence\"")
         .def_readonly("message", &Interpolation::message, "why there is no curve (empty when ok)")
         .def_readonly("curve", &Interpolation::curve, "the Curve when ok, else None")
-        .def_property_readonly("ok", [](const Interpolation& r) { return r.curve.has_value(); }, "whether there is a curve")
-        .def_property_readonly("report", [](const Interpolation& r) { return r.report; }, "what the method reports, as (quantity, text) pairs (the Newton history)")
-        .def_property_readonly("quantities",
-                               [](const Interpolation& r) {
-                                   py::dict d;
-                                   for (const auto& [k, v] : r.quantities) d[py::str(k)] = v;
-                                   return d;
-                               },
-                               "quantities the method computes along the way, by name (the pseudo-spline's table length and area)")
         .def_property_readonly(
-            "dtau_du", [](const Interpolation& r) { return from_vector(r.dtau_du); }, "per span, dτ/du: the method's parameter τ against the span index u");
+            "ok", [](const Interpolation& r) { return r.curve.has_value(); }, "whether there is a curve")
+        .def_property_readonly(
+            "report", [](const Interpolation& r) { return r.report; },
+            "what the method reports, as (quantity, text) pairs (the Newton history)")
+        .def_property_readonly(
+            "quantities",
+            [](const Interpolation& r) {
+                py::dict d;
+                for (const auto& [k, v] : r.quantities) d[py::str(k)] = v;
+                return d;
+            },
+            "quantities the method computes along the way, by name (the pseudo-spline's table length and area)")
+        .def_property_readonly(
+            "dtau_du", [](const Interpolation& r) { return from_vector(r.dtau_du); },
+            "per span, dτ/du: the method's parameter τ against the span index u");
 
     m.def("_interpolate_result", &interpolate_result, py::arg("points"), py::arg("method"), py::arg("closed") = false);
 
@@ -153,7 +170,8 @@ void bind_methods(py::module_& m) {
             std::vector<std::string> presets;
             for (const auto& pr : method.presets) presets.push_back(pr.name);
             d["presets"] = presets;
-            const cagd::methods::MethodClaims c = method.claims(cagd::methods::parse_parameter_values(method.name, method.parameters, {}));
+            const cagd::methods::MethodClaims c =
+                method.claims(cagd::methods::parse_parameter_values(method.name, method.parameters, {}));
             py::dict claims;
             claims["parametric_continuity"] = c.parametric_continuity;
             claims["geometric_continuity"] = c.geometric_continuity;

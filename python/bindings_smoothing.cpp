@@ -28,8 +28,10 @@ void bind_smoothing(py::module_& m) {
         },
         py::arg("x"), py::arg("a"), py::arg("lam"),
         "Hosaka's elastic line (hosaka eq 44–51): y(x) minimising ½ Σ (y(x_i) − a_i)² / λ_i + ½ ∫ y''² dx.\n\n"
-        "x: increasing abscissae, shape (n,); a: values, shape (n,) or (n, columns); lam: λ = EI/k ≥ 0, one number or one per point "
-        "(0 interpolates). Returns (ExplicitSpline, y'' at the nodes, shape (n, columns)). ValueError for bad values, TypeError for non-real input.\n\n"
+        "x: increasing abscissae, shape (n,); a: values, shape (n,) or (n, columns); lam: λ = EI/k ≥ 0, one number or "
+        "one per point "
+        "(0 interpolates). Returns (ExplicitSpline, y'' at the nodes, shape (n, columns)). ValueError for bad values, "
+        "TypeError for non-real input.\n\n"
         ">>> import numpy as np, cagd\n"
         ">>> x = np.arange(6.0)\n"
         ">>> spline, second = cagd.elastic_line(x, np.sin(x), 0.1)\n"
@@ -45,7 +47,8 @@ void bind_smoothing(py::module_& m) {
             return cagd::smoothing::elastic_line_parametric(p, lam).curve;
         },
         py::arg("points"), py::arg("lam"),
-        "The parametric elastic line (hosaka section 6): each coordinate of points (n, d) smoothed as elastic_line over the chord-length "
+        "The parametric elastic line (hosaka section 6): each coordinate of points (n, d) smoothed as elastic_line "
+        "over the chord-length "
         "parameter, with lam as there. Returns the ExplicitSpline of the coordinates.\n\n"
         ">>> import numpy as np, cagd\n"
         ">>> p = np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 0.0], [3.0, 1.0]])\n"
@@ -60,17 +63,22 @@ void bind_smoothing(py::module_& m) {
             std::shared_ptr<cagd::smoothing::ElasticSpaceCurve> c;
             {
                 py::gil_scoped_release release;
-                c = std::make_shared<cagd::smoothing::ElasticSpaceCurve>(cagd::smoothing::elastic_space_curve(xs, values, lam, subdivisions));
+                c = std::make_shared<cagd::smoothing::ElasticSpaceCurve>(
+                    cagd::smoothing::elastic_space_curve(xs, values, lam, subdivisions));
             }
             require_ok(c->outcome);
-            return py::make_tuple(with_recipe(wrap(c, "elastic-space-curve"), "elastic_space_curve", py::make_tuple(from_vector(xs), from_matrix(values), from_vector(lam), subdivisions),
-                                              py::dict(), py::int_(0)),
-                                  c->energy);
+            return py::make_tuple(
+                with_recipe(wrap(c, "elastic-space-curve"), "elastic_space_curve",
+                            py::make_tuple(from_vector(xs), from_matrix(values), from_vector(lam), subdivisions),
+                            py::dict(), py::int_(0)),
+                c->energy);
         },
         py::arg("x"), py::arg("a"), py::arg("lam"), py::arg("subdivisions") = 8,
-        "The elastic line in space with the true bending energy ½ ∫ κ² ds (hosaka section 6, after Fig. 7), minimised by Ceres over C1 cubic "
+        "The elastic line in space with the true bending energy ½ ∫ κ² ds (hosaka section 6, after Fig. 7), minimised "
+        "by Ceres over C1 cubic "
         "pieces, `subdivisions` per data interval ((n − 1) · subdivisions ≤ 20000).\n\n"
-        "x: increasing abscissae (n,); a: the values (y, z), shape (n, 2); lam > 0, one number or one per point. Returns (Curve r(x) = (x, y, z), "
+        "x: increasing abscissae (n,); a: the values (y, z), shape (n, 2); lam > 0, one number or one per point. "
+        "Returns (Curve r(x) = (x, y, z), "
         "energy). NoSolution when Ceres does not converge.\n\n"
         ">>> import numpy as np, cagd\n"
         ">>> x = np.arange(6.0)\n"

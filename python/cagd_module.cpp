@@ -30,11 +30,14 @@ std::string python_message(const std::string& message) {
     std::string out;
     std::size_t i = 0;
     while (i < m.size()) {
-        const bool option_start = i + 2 < m.size() && m[i] == '-' && m[i + 1] == '-' && std::islower(static_cast<unsigned char>(m[i + 2])) &&
+        const bool option_start = i + 2 < m.size() && m[i] == '-' && m[i + 1] == '-' &&
+                                  std::islower(static_cast<unsigned char>(m[i + 2])) &&
                                   (i == 0 || std::string_view(" (,'\"").find(m[i - 1]) != std::string_view::npos);
         if (option_start) {
             std::size_t end = i + 2;
-            while (end < m.size() && (std::islower(static_cast<unsigned char>(m[end])) || std::isdigit(static_cast<unsigned char>(m[end])) || m[end] == '-')) ++end;
+            while (end < m.size() && (std::islower(static_cast<unsigned char>(m[end])) ||
+                                      std::isdigit(static_cast<unsigned char>(m[end])) || m[end] == '-'))
+                ++end;
             for (std::size_t k = i + 2; k < end; ++k) out += m[k] == '-' ? '_' : m[k];
             i = end;
             continue;

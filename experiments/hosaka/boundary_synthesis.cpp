@@ -11,8 +11,8 @@
 #include <string>
 
 #include "cagd/numeric/finite_difference.hpp"
-#include "repro/artifact_run.hpp"
 #include "cagd/surface/boundary_surface.hpp"
+#include "repro/artifact_run.hpp"
 
 using namespace cagd;
 using namespace cagd::surface;
@@ -20,19 +20,28 @@ using namespace cagd::surface;
 namespace {
 
 BoundaryCurve lower(int m) {
-    BoundaryCurve c{0.0, 2.0, sinusoid(0.2, 1.0, 0.0), {sinusoid(0.3, 1.2, 0.0), sinusoid(0.4, 0.8, std::numbers::pi / 2), sinusoid(0.2, 1.0, 0.0, -0.5)}};
+    BoundaryCurve c{0.0,
+                    2.0,
+                    sinusoid(0.2, 1.0, 0.0),
+                    {sinusoid(0.3, 1.2, 0.0), sinusoid(0.4, 0.8, std::numbers::pi / 2), sinusoid(0.2, 1.0, 0.0, -0.5)}};
     c.phi.resize(static_cast<std::size_t>(m) + 1);
     return c;
 }
 
 BoundaryCurve upper(int m) {
-    BoundaryCurve c{0.0, 2.0, polynomial_function({1.5, 0.0, 0.1}), {sinusoid(0.2, 1.5, 1.0, 0.6), sinusoid(0.1, 2.0, 0.0, -0.3), sinusoid(0.3, 1.0, 0.5)}};
+    BoundaryCurve c{0.0,
+                    2.0,
+                    polynomial_function({1.5, 0.0, 0.1}),
+                    {sinusoid(0.2, 1.5, 1.0, 0.6), sinusoid(0.1, 2.0, 0.0, -0.3), sinusoid(0.3, 1.0, 0.5)}};
     c.phi.resize(static_cast<std::size_t>(m) + 1);
     return c;
 }
 
 BoundaryCurve far_curve(int m, double y0, double y1) {
-    BoundaryCurve c{y0, y1, sinusoid(0.2, 2.0, 0.0, 3.0), {sinusoid(0.3, 1.5, 0.0, 0.5), sinusoid(0.2, 1.0, std::numbers::pi / 2), sinusoid(0.1, 1.0, 0.0)}};
+    BoundaryCurve c{y0,
+                    y1,
+                    sinusoid(0.2, 2.0, 0.0, 3.0),
+                    {sinusoid(0.3, 1.5, 0.0, 0.5), sinusoid(0.2, 1.0, std::numbers::pi / 2), sinusoid(0.1, 1.0, 0.0)}};
     c.phi.resize(static_cast<std::size_t>(m) + 1);
     return c;
 }
@@ -41,20 +50,29 @@ BoundaryCurve far_curve(int m, double y0, double y1) {
 RationalPolynomial printed_bracket(int m, int j, int k, int s) {
     const RationalPolynomial v = RationalPolynomial::monomial(1), v_minus_1 = RationalPolynomial::linear(-1, 1);
     const RationalPolynomial pj = spline::hosaka_p(m, j), qj = spline::hosaka_q(m, j);
-    const RationalPolynomial b = k == 0 ? pj : qj, prev = j == 0 ? RationalPolynomial() : (k == 0 ? spline::hosaka_p(m, j - 1) : spline::hosaka_q(m, j - 1));
-    const RationalPolynomial first_prime = m >= 1 ? (k == 0 ? spline::hosaka_p(m, 1) : spline::hosaka_q(m, 1)).derivative() : RationalPolynomial();
-    if (s == 0) return Rational(-j) * pj + (k == 0 ? prev : RationalPolynomial()) + first_prime * v_minus_1 + b.derivative(m + 1)(0) * spline::hosaka_p(m, m);
+    const RationalPolynomial b = k == 0 ? pj : qj,
+                             prev = j == 0 ? RationalPolynomial()
+                                           : (k == 0 ? spline::hosaka_p(m, j - 1) : spline::hosaka_q(m, j - 1));
+    const RationalPolynomial first_prime =
+        m >= 1 ? (k == 0 ? spline::hosaka_p(m, 1) : spline::hosaka_q(m, 1)).derivative() : RationalPolynomial();
+    if (s == 0)
+        return Rational(-j) * pj + (k == 0 ? prev : RationalPolynomial()) + first_prime * v_minus_1 +
+               b.derivative(m + 1)(0) * spline::hosaka_p(m, m);
     return identity40_bracket(m, j, k, s);  // the y_1' brackets are printed right
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    repro::ArtifactRun run("hosaka", "boundary_synthesis", "4-5", "Surfaces between boundary curves (eq 31-40) and joined across a section (eq 41-43)", argc, argv);
+    repro::ArtifactRun run("hosaka", "boundary_synthesis", "4-5",
+                           "Surfaces between boundary curves (eq 31-40) and joined across a section (eq 41-43)", argc,
+                           argv);
 
-    double boundary_error = 0, boundary_size = 0, induction = 0, fd_gap = 0, seam = 0, seam_next = INFINITY, fd_error = 0;
+    double boundary_error = 0, boundary_size = 0, induction = 0, fd_gap = 0, seam = 0, seam_next = INFINITY,
+           fd_error = 0;
     CsvWriter fig = run.table("fig_joined.csv", {"surface", "s", "t", "x", "y", "z"});
-    CsvWriter seam_table = run.table("seam_jumps.csv", {"m", "i", "jump_one_sided_differences", "jump_analytic", "max_abs_zeta_i0"});
+    CsvWriter seam_table =
+        run.table("seam_jumps.csv", {"m", "i", "jump_one_sided_differences", "jump_analytic", "max_abs_zeta_i0"});
     for (int m = 1; m <= 2; ++m) {
         const BoundaryCurve lo = lower(m), hi = upper(m);
         const BoundaryConformingSurface a(m, lo, hi);
@@ -71,11 +89,14 @@ int main(int argc, char** argv) {
                 for (int i = 0; i <= m + 2; ++i)
                     for (int n = 0; n <= 2 * m + 1; ++n) {
                         const double direct = a.derivative_direct(x, y, i, n);
-                        induction = std::max(induction, std::abs(a.derivative(x, y, i, n) - direct) / (1 + std::abs(direct)));
+                        induction =
+                            std::max(induction, std::abs(a.derivative(x, y, i, n) - direct) / (1 + std::abs(direct)));
                     }
                 if (sx > 0 && sx < 8 && v > 0 && v < 1) {  // Taylor jets against a fourth-order central difference in x
                     const double h = 1e-3;
-                    const double fd = (-a.value(x + 2 * h, y) + 8 * a.value(x + h, y) - 8 * a.value(x - h, y) + a.value(x - 2 * h, y)) / (12 * h);
+                    const double fd = (-a.value(x + 2 * h, y) + 8 * a.value(x + h, y) - 8 * a.value(x - h, y) +
+                                       a.value(x - 2 * h, y)) /
+                                      (12 * h);
                     fd_gap = std::max(fd_gap, std::abs(fd - a.derivative_direct(x, y, 1, 0)));
                 }
             }
@@ -85,16 +106,20 @@ int main(int argc, char** argv) {
         // the section; the same stencil against S^A's own analytic derivatives gives the method's error.
         const double x0 = 2.0, y0 = a.y_lower(x0), y1 = a.y_upper(x0);
         const SectionJoinedSurface b(a, x0, far_curve(m, y0, y1));
-        std::vector<double> jump(static_cast<std::size_t>(m) + 2, 0.0), size(jump.size(), 0.0), code_jump(jump.size(), 0.0);
+        std::vector<double> jump(static_cast<std::size_t>(m) + 2, 0.0), size(jump.size(), 0.0),
+            code_jump(jump.size(), 0.0);
         for (int sy = 1; sy <= 9; ++sy) {
             const double y = y0 + (y1 - y0) * (0.1 + 0.8 * (sy - 1) / 8);
-            const std::vector<double> left = numeric::one_sided_derivatives([&](double x) { return a.value(x, y); }, x0, 0.02, -1, 7);
-            const std::vector<double> right = numeric::one_sided_derivatives([&](double x) { return b.value(x, y); }, x0, 0.02, +1, 7);
+            const std::vector<double> left =
+                numeric::one_sided_derivatives([&](double x) { return a.value(x, y); }, x0, 0.02, -1, 7);
+            const std::vector<double> right =
+                numeric::one_sided_derivatives([&](double x) { return b.value(x, y); }, x0, 0.02, +1, 7);
             for (int i = 0; i <= m + 1; ++i) {
                 const std::size_t ii = static_cast<std::size_t>(i);
                 jump[ii] = std::max(jump[ii], std::abs(left[ii] - right[ii]));
                 size[ii] = std::max(size[ii], std::abs(a.derivative(x0, y, i, 0)));
-                code_jump[ii] = std::max(code_jump[ii], std::abs(a.derivative(x0, y, i, 0) - b.derivative(x0, y, i, 0)));
+                code_jump[ii] =
+                    std::max(code_jump[ii], std::abs(a.derivative(x0, y, i, 0) - b.derivative(x0, y, i, 0)));
                 if (i <= m) fd_error = std::max(fd_error, std::abs(left[ii] - a.derivative(x0, y, i, 0)) / size[ii]);
             }
         }
@@ -137,17 +162,25 @@ int main(int argc, char** argv) {
     run.check("eq40.identity", printed_nonzero, corrected_nonzero);
     run.check("eq43.seam_continuity", seam);
     run.validate("seam_difference_error",
-                 "the one-sided 7-point stencil (h = 0.02) on S^A alone vs its analytic zeta^(i,0), i ≤ m (relative): the resolution of eq43.seam_continuity", fd_error, 0.0, 1e-6,
-                 "truncation O(h^5) for i = 2");
-    run.validate("jets_vs_finite_differences", "ζ^(1,0) by Taylor arithmetic vs a fourth-order central difference (h = 1e-3) inside the sections, m = 1, 2", fd_gap, 0.0, 1e-9,
-                 "truncation O(h^4) and rounding O(1e-16/h)");
+                 "the one-sided 7-point stencil (h = 0.02) on S^A alone vs its analytic zeta^(i,0), i ≤ m (relative): "
+                 "the resolution of eq43.seam_continuity",
+                 fd_error, 0.0, 1e-6, "truncation O(h^5) for i = 2");
+    run.validate(
+        "jets_vs_finite_differences",
+        "ζ^(1,0) by Taylor arithmetic vs a fourth-order central difference (h = 1e-3) inside the sections, m = 1, 2",
+        fd_gap, 0.0, 1e-9, "truncation O(h^4) and rounding O(1e-16/h)");
     std::string note40 = "Eq (40): of the ";
     note40 += std::to_string(brackets);
-    run.note(note40 + " brackets (m = 0..5, j = 0..m, two boundaries, two slopes) the transcribed form leaves " + std::to_string(printed_nonzero) +
-             " non-zero, the corrected one " + std::to_string(corrected_nonzero) + " (exact rational arithmetic).");
-    run.note("Seam x0 = 2: the x-derivatives of order m + 1 are not matched (smallest relative jump over m = 1, 2: " + format_number(seam_next, 3) +
-             "), as the theory says. Analytically (column jump_analytic) the orders ≤ m agree exactly, because S^B takes S^A's zeta^(i,0)(x0, y) as data: "
+    run.note(note40 + " brackets (m = 0..5, j = 0..m, two boundaries, two slopes) the transcribed form leaves " +
+             std::to_string(printed_nonzero) + " non-zero, the corrected one " + std::to_string(corrected_nonzero) +
+             " (exact rational arithmetic).");
+    run.note("Seam x0 = 2: the x-derivatives of order m + 1 are not matched (smallest relative jump over m = 1, 2: " +
+             format_number(seam_next, 3) +
+             "), as the theory says. Analytically (column jump_analytic) the orders ≤ m agree exactly, because S^B "
+             "takes S^A's zeta^(i,0)(x0, y) as data: "
              "[seam_jumps.csv](hosaka/seam_jumps.csv).");
-    run.figure("fig_joined", "Fig. 5 analogue (m = 1): the surface S^A between L0 and L1 (x in [0, 2]) and S^B joined to it at the section x0 = 2, up to L3.");
+    run.figure("fig_joined",
+               "Fig. 5 analogue (m = 1): the surface S^A between L0 and L1 (x in [0, 2]) and S^B joined to it at the "
+               "section x0 = 2, up to L3.");
     return run.finish();
 }

@@ -7,10 +7,10 @@
 
 #include "cagd/analysis/curve_measures.hpp"
 #include "cagd/analysis/fairness_measures.hpp"
-#include "repro/artifact_run.hpp"
 #include "cagd/spline/hermite_spline.hpp"
 #include "cagd/spline/hosaka_spline.hpp"
 #include "curve_data.hpp"
+#include "repro/artifact_run.hpp"
 
 using namespace cagd;
 using namespace cagd::spline;
@@ -18,7 +18,8 @@ using namespace cagd::spline;
 namespace {}  // namespace
 
 int main(int argc, char** argv) {
-    repro::ArtifactRun run("hosaka", "c2_spline", "3", "The C2 spline with scale factors (eq 16-20) and the conventional k = 1", argc, argv);
+    repro::ArtifactRun run("hosaka", "c2_spline", "3",
+                           "The C2 spline with scale factors (eq 16-20) and the conventional k = 1", argc, argv);
     const PointList uneven = hosaka_data::uneven_points(), even = hosaka_data::even_points();
 
     HosakaSplineOptions chord_o, unit_o;
@@ -39,30 +40,41 @@ int main(int argc, char** argv) {
     }
     run.check("eq18.tangent_condition", r1 / scale1);
     run.check("eq18.curvature_condition", r2 / scale2);
-    run.check("sec3.natural_ends", std::max(chord.curve.jet(0, 2).row(2).norm(), chord.curve.jet(chord.curve.segments(), 2).row(2).norm()) / scale2);
+    run.check("sec3.natural_ends",
+              std::max(chord.curve.jet(0, 2).row(2).norm(), chord.curve.jet(chord.curve.segments(), 2).row(2).norm()) /
+                  scale2);
 
     // The paper: with k_i near 1 the conventional form gives about the same curve; where k_i varies
     // strongly it does not give the expected shape.
     const HosakaSpline even_chord = hosaka_c2_spline(even, chord_o), even_unit = hosaka_c2_spline(even, unit_o);
-    const double even_gap = analysis::max_distance_same_parameter(even_chord.curve, even_unit.curve) / bounding_box_diagonal(even);
+    const double even_gap =
+        analysis::max_distance_same_parameter(even_chord.curve, even_unit.curve) / bounding_box_diagonal(even);
     // "About the same": within the reference row's thresholds (1 % of the diagonal; also 0.5, 2, 5 %).
     run.check_threshold("sec3.unit_scale_similar_when_k_near_1", even_gap, "max distance / diagonal");
-    const analysis::FairnessMeasures fc = analysis::fairness_measures(chord.curve, uneven), fu = analysis::fairness_measures(unit.curve, uneven);
+    const analysis::FairnessMeasures fc = analysis::fairness_measures(chord.curve, uneven),
+                                     fu = analysis::fairness_measures(unit.curve, uneven);
     const int xc = analysis::self_intersections(chord.curve), xu = analysis::self_intersections(unit.curve);
     // "Not the expected shape": a self-intersection or an inflection more, or a bending energy at least
     // 1.5 times as large (our factor; also checked at 1.25, 2 and 4).
-    const auto unexpected_at = [&](double factor) { return fu.bending_energy >= factor * fc.bending_energy || xu > xc || fu.curvature_sign_changes > fc.curvature_sign_changes; };
+    const auto unexpected_at = [&](double factor) {
+        return fu.bending_energy >= factor * fc.bending_energy || xu > xc ||
+               fu.curvature_sign_changes > fc.curvature_sign_changes;
+    };
     std::vector<repro::ChoiceValue> unexpected;
-    for (double factor : {1.25, 2.0, 4.0}) unexpected.push_back({"energy factor " + format_number(factor), unexpected_at(factor) ? 1.0 : 0.0});
-    run.check_over_choices("sec3.unit_scale_unexpected_when_k_varies", unexpected_at(1.5) ? 1.0 : 0.0, "energy factor 1.5", unexpected);
+    for (double factor : {1.25, 2.0, 4.0})
+        unexpected.push_back({"energy factor " + format_number(factor), unexpected_at(factor) ? 1.0 : 0.0});
+    run.check_over_choices("sec3.unit_scale_unexpected_when_k_varies", unexpected_at(1.5) ? 1.0 : 0.0,
+                           "energy factor 1.5", unexpected);
     CsvWriter t = run.table("scale_comparison.csv",
-                            {"data", "scale", "k_min", "k_max", "length", "bending_energy", "curvature_sign_changes", "max_abs_curvature", "overshoot", "self_intersections"});
+                            {"data", "scale", "k_min", "k_max", "length", "bending_energy", "curvature_sign_changes",
+                             "max_abs_curvature", "overshoot", "self_intersections"});
     const auto row = [&](const char* data, const char* scale, const HosakaSpline& s, const PointList& p) {
         const analysis::FairnessMeasures f = analysis::fairness_measures(s.curve, p);
         double kmin = INFINITY, kmax = 0;
         for (double k : s.k) kmin = std::min(kmin, k), kmax = std::max(kmax, k);
-        t.row_text({data, scale, format_number(kmin, 4), format_number(kmax, 4), format_number(f.length, 8), format_number(f.bending_energy, 8),
-                    std::to_string(f.curvature_sign_changes), format_number(f.max_abs_curvature, 6), format_number(f.overshoot, 4),
+        t.row_text({data, scale, format_number(kmin, 4), format_number(kmax, 4), format_number(f.length, 8),
+                    format_number(f.bending_energy, 8), std::to_string(f.curvature_sign_changes),
+                    format_number(f.max_abs_curvature, 6), format_number(f.overshoot, 4),
                     std::to_string(analysis::self_intersections(s.curve))});
     };
     row("uneven", "chord (eq 19)", chord, uneven);
@@ -70,13 +82,16 @@ int main(int argc, char** argv) {
     row("even", "chord (eq 19)", even_chord, even);
     row("even", "unit (k = 1)", even_unit, even);
     run.note(
-        "Data (ours; the paper gives none for this claim): uneven = (0,0), (1,0.8), (1.15,0.95), (3,1.2), (3.2,0.9), (5,0); even = (i, sin i), i = 0..6. "
+        "Data (ours; the paper gives none for this claim): uneven = (0,0), (1,0.8), (1.15,0.95), (3,1.2), (3.2,0.9), "
+        "(5,0); even = (i, sin i), i = 0..6. "
         "'About the same' = within 1 % of the data diagonal (even data: " +
         format_number(100 * even_gap, 3) +
-        " %); 'not the expected shape' = bending energy at least 1.5 times that of the scaled curve, or more inflections, or a loop the scaled curve has not (uneven data: "
+        " %); 'not the expected shape' = bending energy at least 1.5 times that of the scaled curve, or more "
+        "inflections, or a loop the scaled curve has not (uneven data: "
         "energy " +
-        format_number(fu.bending_energy, 5) + " vs " + format_number(fc.bending_energy, 5) + ", inflections " + std::to_string(fu.curvature_sign_changes) + " vs " +
-        std::to_string(fc.curvature_sign_changes) + ", crossings " + std::to_string(xu) + " vs " + std::to_string(xc) +
+        format_number(fu.bending_energy, 5) + " vs " + format_number(fc.bending_energy, 5) + ", inflections " +
+        std::to_string(fu.curvature_sign_changes) + " vs " + std::to_string(fc.curvature_sign_changes) +
+        ", crossings " + std::to_string(xu) + " vs " + std::to_string(xc) +
         "). Measures: [scale_comparison.csv](hosaka/scale_comparison.csv).");
 
     // Independent implementations: the chord-length and uniform cubic splines of spline/hermite_spline
@@ -85,12 +100,18 @@ int main(int argc, char** argv) {
         HosakaSplineOptions oc = chord_o, ou = unit_o;
         oc.closed = ou.closed = closed;
         const std::string tag = closed ? "closed" : "open";
-        run.validate("sec3.chord_scale_is_chord_length_spline_" + tag, "k_i of eq (19) vs the chord-length cubic spline (" + tag + "): max distance",
-                     analysis::max_distance_same_parameter(hosaka_c2_spline(uneven, oc).curve, cubic_spline_interpolant(uneven, ParameterSpacing::chord_length, closed)), 0.0,
-                     1e-12, "rounding");
-        run.validate("sec3.unit_scale_is_uniform_spline_" + tag, "k_i = 1 vs the uniform-parameter cubic spline (" + tag + "): max distance",
-                     analysis::max_distance_same_parameter(hosaka_c2_spline(uneven, ou).curve, cubic_spline_interpolant(uneven, ParameterSpacing::uniform, closed)), 0.0, 1e-12,
-                     "rounding");
+        run.validate("sec3.chord_scale_is_chord_length_spline_" + tag,
+                     "k_i of eq (19) vs the chord-length cubic spline (" + tag + "): max distance",
+                     analysis::max_distance_same_parameter(
+                         hosaka_c2_spline(uneven, oc).curve,
+                         cubic_spline_interpolant(uneven, ParameterSpacing::chord_length, closed)),
+                     0.0, 1e-12, "rounding");
+        run.validate(
+            "sec3.unit_scale_is_uniform_spline_" + tag,
+            "k_i = 1 vs the uniform-parameter cubic spline (" + tag + "): max distance",
+            analysis::max_distance_same_parameter(hosaka_c2_spline(uneven, ou).curve,
+                                                  cubic_spline_interpolant(uneven, ParameterSpacing::uniform, closed)),
+            0.0, 1e-12, "rounding");
     }
 
     // Figure data: both curves on both data sets, with curvature.
@@ -105,6 +126,7 @@ int main(int argc, char** argv) {
         ++data_index;
     }
     run.figure("fig_scale",
-               "Hosaka's C2 spline with scale factors k_i = |A_i|/|A_{i+1}| (eq 19) and with k_i = 1, on uneven and even data (top), and their curvature κ(s) (bottom).");
+               "Hosaka's C2 spline with scale factors k_i = |A_i|/|A_{i+1}| (eq 19) and with k_i = 1, on uneven and "
+               "even data (top), and their curvature κ(s) (bottom).");
     return run.finish();
 }

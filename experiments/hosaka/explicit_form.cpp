@@ -11,8 +11,8 @@
 #include <random>
 
 #include "cagd/numeric/gauss_legendre.hpp"
-#include "repro/artifact_run.hpp"
 #include "cagd/spline/hosaka_spline.hpp"
+#include "repro/artifact_run.hpp"
 
 using namespace cagd;
 using namespace cagd::spline;
@@ -20,7 +20,8 @@ using namespace cagd::spline;
 namespace {
 
 // ∫ |y''(x)|² dx of the C2 quintic through (x_i, Y_i) with slopes S_i and second derivatives C_i.
-double quintic_energy(const std::vector<double>& x, const Eigen::MatrixXd& Y, const Eigen::MatrixXd& S, const Eigen::MatrixXd& C) {
+double quintic_energy(const std::vector<double>& x, const Eigen::MatrixXd& Y, const Eigen::MatrixXd& S,
+                      const Eigen::MatrixXd& C) {
     static const HosakaBasis b(2);
     static const numeric::GaussLegendreRule rule(6);  // exact: y''² has degree 6
     double e = 0.0;
@@ -29,7 +30,8 @@ double quintic_energy(const std::vector<double>& x, const Eigen::MatrixXd& Y, co
         const double l = x[i + 1] - x[i];
         e += rule.integrate(
             [&](double u) {
-                const Eigen::RowVectorXd y2 = (b.p(0, u, 2) * Y.row(a) + b.q(0, u, 2) * Y.row(c) + l * (b.p(1, u, 2) * S.row(a) + b.q(1, u, 2) * S.row(c)) +
+                const Eigen::RowVectorXd y2 = (b.p(0, u, 2) * Y.row(a) + b.q(0, u, 2) * Y.row(c) +
+                                               l * (b.p(1, u, 2) * S.row(a) + b.q(1, u, 2) * S.row(c)) +
                                                l * l * (b.p(2, u, 2) * C.row(a) + b.q(2, u, 2) * C.row(c))) /
                                               (l * l);
                 return y2.squaredNorm() * l;
@@ -45,7 +47,8 @@ double second_derivative_jump(const std::vector<double>& x, const Eigen::MatrixX
     double jump = 0.0, size = 0.0;
     for (std::size_t i = 1; i + 1 < x.size(); ++i) {
         // y'' at x_i from the left interval and from the right one.
-        const Eigen::RowVectorXd left = s.evaluate_in(static_cast<int>(i) - 1, 1.0, 2), right = s.evaluate_in(static_cast<int>(i), 0.0, 2);
+        const Eigen::RowVectorXd left = s.evaluate_in(static_cast<int>(i) - 1, 1.0, 2),
+                                 right = s.evaluate_in(static_cast<int>(i), 0.0, 2);
         jump = std::max(jump, (left - right).norm());
         size = std::max({size, left.norm(), right.norm()});
     }
@@ -55,11 +58,13 @@ double second_derivative_jump(const std::vector<double>& x, const Eigen::MatrixX
 }  // namespace
 
 int main(int argc, char** argv) {
-    repro::ArtifactRun run("hosaka", "explicit_form", "3", "The explicit form y(x), z(x) and its minimum property (eq 21-24)", argc, argv);
+    repro::ArtifactRun run("hosaka", "explicit_form", "3",
+                           "The explicit form y(x), z(x) and its minimum property (eq 21-24)", argc, argv);
     const std::vector<double> x{0, 0.5, 1.7, 2.0, 3.1, 4.5, 5.0};
     const int n = static_cast<int>(x.size());
     Eigen::MatrixXd Y(n, 2);
-    for (int i = 0; i < n; ++i) Y.row(i) << std::sin(1.3 * x[static_cast<std::size_t>(i)]), std::cos(0.8 * x[static_cast<std::size_t>(i)]);
+    for (int i = 0; i < n; ++i)
+        Y.row(i) << std::sin(1.3 * x[static_cast<std::size_t>(i)]), std::cos(0.8 * x[static_cast<std::size_t>(i)]);
     const ExplicitSpline spline = hosaka_explicit_spline(x, Y);
 
     // Eq (23) as printed: right-hand side 3/(x_i − x_{i−1}) (y_i − y_{i−1}) + 3/(x_{i+1} − x_i) (y_{i+1} − y_i),
@@ -79,7 +84,8 @@ int main(int argc, char** argv) {
     M(n - 1, n - 1) = 2;
     rhs.row(n - 1) = 3 * (Y.row(n - 1) - Y.row(n - 2)) / h(n - 2);
     const Eigen::MatrixXd printed_slopes = M.partialPivLu().solve(rhs);
-    run.check("eq23.c2_at_joins", second_derivative_jump(x, Y, printed_slopes), second_derivative_jump(x, Y, spline.slopes));
+    run.check("eq23.c2_at_joins", second_derivative_jump(x, Y, printed_slopes),
+              second_derivative_jump(x, Y, spline.slopes));
 
     // Natural ends and interpolation.
     double ends = std::max(spline.evaluate(x.front(), 2).norm(), spline.evaluate(x.back(), 2).norm());
@@ -89,8 +95,10 @@ int main(int argc, char** argv) {
     Eigen::MatrixXd C(n, 2);
     for (int i = 0; i < n; ++i) C.row(i) = spline.evaluate(x[static_cast<std::size_t>(i)], 2);
     const double e_spline = spline.bending_energy();
-    run.validate("eq24.quintic_energy_of_the_spline", "the spline written as a C2 quintic (its own y', y'') has the spline's energy: relative difference",
-                 std::abs(quintic_energy(x, Y, spline.slopes, C) - e_spline) / e_spline, 0.0, 1e-12, "Gauss-Legendre exact for the degree, rounding");
+    run.validate("eq24.quintic_energy_of_the_spline",
+                 "the spline written as a C2 quintic (its own y', y'') has the spline's energy: relative difference",
+                 std::abs(quintic_energy(x, Y, spline.slopes, C) - e_spline) / e_spline, 0.0, 1e-12,
+                 "Gauss-Legendre exact for the degree, rounding");
     std::mt19937 rng(24);
     std::normal_distribution<double> g(0.0, 1.0);
     int lower = 0;
@@ -109,9 +117,12 @@ int main(int argc, char** argv) {
     }
     run.check("eq24.no_lower_energy", lower);
     run.note(
-        "Eq (24): 2000 C2 quintic interpolants of the same data with slopes and second derivatives perturbed by ε·N(0, 1), ε = 1e-3, 1e-2, 0.1, 1 (seeded); the smallest relative "
+        "Eq (24): 2000 C2 quintic interpolants of the same data with slopes and second derivatives perturbed by ε·N(0, "
+        "1), ε = 1e-3, 1e-2, 0.1, 1 (seeded); the smallest relative "
         "energy increase was " +
-        format_number(min_increase, 3) + " (ε = 1e-3 gives increases of order ε², as a minimum should). Spline energy ∫(y''² + z''²) dx = " + format_number(e_spline, 10) + ".");
+        format_number(min_increase, 3) +
+        " (ε = 1e-3 gives increases of order ε², as a minimum should). Spline energy ∫(y''² + z''²) dx = " +
+        format_number(e_spline, 10) + ".");
 
     CsvWriter fig = run.table("fig_explicit.csv", {"x", "y", "z", "y2", "z2"});
     for (int k = 0; k <= 500; ++k) {
@@ -119,6 +130,8 @@ int main(int argc, char** argv) {
         const Eigen::RowVectorXd v = spline.evaluate(xx), v2 = spline.evaluate(xx, 2);
         fig.row({xx, v(0), v(1), v2(0), v2(1)});
     }
-    run.figure("fig_explicit", "The explicit form y(x), z(x) of eq (21)-(23) through our data (left) and its second derivatives, continuous and zero at the ends (right).");
+    run.figure("fig_explicit",
+               "The explicit form y(x), z(x) of eq (21)-(23) through our data (left) and its second derivatives, "
+               "continuous and zero at the ends (right).");
     return run.finish();
 }

@@ -12,9 +12,9 @@
 #include <numbers>
 #include <string>
 
-#include "repro/artifact_run.hpp"
 #include "cagd/surface/boundary_surface.hpp"
 #include "cagd/surface/hosaka_patch.hpp"
+#include "repro/artifact_run.hpp"
 
 using namespace cagd;
 using namespace cagd::surface;
@@ -45,12 +45,17 @@ CornerDerivatives corner_data(int m) {
 }
 
 // ζ = 0.5 sin(1.1x) cos(0.9y) and its derivatives.
-double grid_function(double x, double y, int i, int j) { return sinusoid(0.5, 1.1, 0.0)(x, i) * sinusoid(1.0, 0.9, std::numbers::pi / 2)(y, j); }
+double grid_function(double x, double y, int i, int j) {
+    return sinusoid(0.5, 1.1, 0.0)(x, i) * sinusoid(1.0, 0.9, std::numbers::pi / 2)(y, j);
+}
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    repro::ArtifactRun run("hosaka", "patches", "4", "Surface patches: tensor form (eq 27), edge-curve form and Coons (eq 28-29), Cartesian patch (eq 30)", argc, argv);
+    repro::ArtifactRun run(
+        "hosaka", "patches", "4",
+        "Surface patches: tensor form (eq 27), edge-curve form and Coons (eq 28-29), Cartesian patch (eq 30)", argc,
+        argv);
 
     double corner_error = 0, printed_28 = 0, corrected_28 = 0, coons_gap = 0, coons_twist = 0, data_twist = 0, size = 0;
     CsvWriter fig = run.table("fig_patches.csv", {"m", "u", "v", "x", "y", "z_eq27", "z_coons"});
@@ -115,53 +120,69 @@ int main(int argc, char** argv) {
                         // The printed eq (30) subtracts the ζ_11 terms: it equals ours minus twice them.
                         double z11_terms = 0;
                         for (int i = 0; i <= m; ++i)
-                            for (int j = 0; j <= m; ++j) z11_terms += std::pow(lx, i) * std::pow(ly, j) * s.node(cx + 1, cy + 1)(i, j) * basis.q(i, k, 0) * basis.q(j, l, 0);
-                        printed_30 = std::max(printed_30, std::abs(s.derivative_in(cx, cy, k, l, 0, 0) - 2 * z11_terms - want(0, 0)));
+                            for (int j = 0; j <= m; ++j)
+                                z11_terms += std::pow(lx, i) * std::pow(ly, j) * s.node(cx + 1, cy + 1)(i, j) *
+                                             basis.q(i, k, 0) * basis.q(j, l, 0);
+                        printed_30 = std::max(
+                            printed_30, std::abs(s.derivative_in(cx, cy, k, l, 0, 0) - 2 * z11_terms - want(0, 0)));
                         z_size = std::max(z_size, std::abs(want(0, 0)));
                         for (int i = 0; i <= m; ++i)
                             for (int j = 0; j <= m; ++j)
-                                corrected_30 = std::max(corrected_30, std::abs(s.derivative_in(cx, cy, k, l, i, j) - want(i, j)) / (1 + std::abs(want(i, j))));
+                                corrected_30 =
+                                    std::max(corrected_30, std::abs(s.derivative_in(cx, cy, k, l, i, j) - want(i, j)) /
+                                                               (1 + std::abs(want(i, j))));
                     }
                 // Continuity across the cell's right edge (x = const) of ζ^{(a,b)}, a ≤ m, b ≤ 2.
                 if (cx + 2 < static_cast<int>(gx.size()))
                     for (double v : {0.25, 0.5, 0.9})
                         for (int a = 0; a <= m; ++a)
                             for (int b = 0; b <= 2; ++b) {
-                                const double left = s.derivative_in(cx, cy, 1.0, v, a, b), right = s.derivative_in(cx + 1, cy, 0.0, v, a, b);
+                                const double left = s.derivative_in(cx, cy, 1.0, v, a, b),
+                                             right = s.derivative_in(cx + 1, cy, 0.0, v, a, b);
                                 jump = std::max(jump, std::abs(left - right));
                                 jump_size = std::max(jump_size, std::abs(left));
                             }
             }
     }
     run.check("eq30.interpolates_node_derivatives", printed_30 / z_size, corrected_30);
-    run.validate("eq30.continuity_across_grid_lines", "eq (30): ζ^(a,b), a ≤ m, b ≤ 2, continuous across x = const grid lines (largest jump, relative), m = 1, 2", jump / jump_size,
-                 0.0, 1e-12, "rounding");
+    run.validate(
+        "eq30.continuity_across_grid_lines",
+        "eq (30): ζ^(a,b), a ≤ m, b ≤ 2, continuous across x = const grid lines (largest jump, relative), m = 1, 2",
+        jump / jump_size, 0.0, 1e-12, "rounding");
 
     // Fig. 4: the m = 1 surface over the grid from heights only (section 7 (iv) node derivatives).
     Eigen::MatrixXd heights(static_cast<Eigen::Index>(gx.size()), static_cast<Eigen::Index>(gy.size()));
     for (std::size_t a = 0; a < gx.size(); ++a)
-        for (std::size_t b = 0; b < gy.size(); ++b) heights(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b)) = grid_function(gx[a], gy[b], 0, 0);
+        for (std::size_t b = 0; b < gy.size(); ++b)
+            heights(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b)) = grid_function(gx[a], gy[b], 0, 0);
     const CartesianSurface from_heights = cartesian_spline_surface(gx, gy, heights);
     CsvWriter g = run.table("fig_cartesian.csv", {"x", "y", "z", "z_exact"});
     double worst = 0;
     for (int a = 0; a <= 40; ++a)
         for (int b = 0; b <= 30; ++b) {
-            const double x = gx.back() * a / 40.0, y = gy.back() * b / 30.0, z = from_heights.value(x, y), exact = grid_function(x, y, 0, 0);
+            const double x = gx.back() * a / 40.0, y = gy.back() * b / 30.0, z = from_heights.value(x, y),
+                         exact = grid_function(x, y, 0, 0);
             worst = std::max(worst, std::abs(z - exact));
             g.row({x, y, z, exact});
             if (b == 30) g.end_scan();
         }
     std::string grid_note = "Fig. 4 analogue: the m = 1 Cartesian surface from the ";
     grid_note += std::to_string(gx.size()) + " × " + std::to_string(gy.size()) +
-                 " heights alone (node derivatives from natural splines along the grid lines, section 7 (iv)) differs from ζ by at most " + format_number(worst, 3) +
-                 " on a 41 × 31 sampling: [fig_cartesian.csv](hosaka/fig_cartesian.csv).";
+                 " heights alone (node derivatives from natural splines along the grid lines, section 7 (iv)) differs "
+                 "from ζ by at most " +
+                 format_number(worst, 3) + " on a 41 × 31 sampling: [fig_cartesian.csv](hosaka/fig_cartesian.csv).";
     run.note(grid_note);
     run.note(
-        "The twist of the eq (27) patch at the corners is the data's; Coons' surface (eq 28 with S0 = 0) has every corner derivative S^(i,j), i, j ≥ 1, "
+        "The twist of the eq (27) patch at the corners is the data's; Coons' surface (eq 28 with S0 = 0) has every "
+        "corner derivative S^(i,j), i, j ≥ 1, "
         "zero (relative size " +
-        format_number(coons_twist / data_twist, 3) + "), while keeping the edges: [fig_patches.csv](hosaka/fig_patches.csv).");
+        format_number(coons_twist / data_twist, 3) +
+        "), while keeping the edges: [fig_patches.csv](hosaka/fig_patches.csv).");
     run.figure("fig_patches",
-               "The m = 1 tensor patch of eq (27) from our corner data (left) and Coons' surface with the same edges (eq 28 with S0 = 0, right): zero twist flattens the corners.");
-    run.figure("fig_cartesian", "Fig. 4 analogue: the Cartesian surface of eq (30) (m = 1) over our 6 × 5 grid, node derivatives from splines along the grid lines.");
+               "The m = 1 tensor patch of eq (27) from our corner data (left) and Coons' surface with the same edges "
+               "(eq 28 with S0 = 0, right): zero twist flattens the corners.");
+    run.figure("fig_cartesian",
+               "Fig. 4 analogue: the Cartesian surface of eq (30) (m = 1) over our 6 × 5 grid, node derivatives from "
+               "splines along the grid lines.");
     return run.finish();
 }

@@ -8,8 +8,8 @@
 #include <numbers>
 
 #include "cagd/analysis/curve_measures.hpp"
-#include "repro/artifact_run.hpp"
 #include "cagd/spline/hosaka_spline.hpp"
+#include "repro/artifact_run.hpp"
 
 using namespace cagd;
 using namespace cagd::spline;
@@ -18,7 +18,8 @@ int main(int argc, char** argv) {
     repro::ArtifactRun run("hosaka", "space_curves", "3", "Space curves through 8 and 9 points (Fig. 2)", argc, argv);
     const double theta[] = {0, 0.6, 1.5, 2.1, 3.2, 3.8, 4.9, 5.5};
     PointList open(8, 3), closed(9, 3);
-    for (int i = 0; i < 8; ++i) open.row(i) << (1 + 0.1 * i) * std::cos(theta[i]), (1 + 0.1 * i) * std::sin(theta[i]), 0.25 * theta[i];
+    for (int i = 0; i < 8; ++i)
+        open.row(i) << (1 + 0.1 * i) * std::cos(theta[i]), (1 + 0.1 * i) * std::sin(theta[i]), 0.25 * theta[i];
     for (int i = 0; i < 9; ++i) {
         const double t = 2 * std::numbers::pi * i / 9 + 0.2 * (i % 2);
         closed.row(i) << 1.5 * std::cos(t), std::sin(t), 0.5 * std::sin(2 * t);
@@ -28,7 +29,8 @@ int main(int argc, char** argv) {
     const HosakaSpline a = hosaka_c2_spline(open), b = hosaka_c2_spline(closed, closed_options);
 
     double jump = 0, size = 0;
-    CsvWriter t = run.table("space_joins.csv", {"curve", "join", "curvature_left", "curvature_right", "curvature_vector_jump"});
+    CsvWriter t =
+        run.table("space_joins.csv", {"curve", "join", "curvature_left", "curvature_right", "curvature_vector_jump"});
     for (const auto& [name, s] : {std::pair<const char*, const HosakaSpline*>{"open8", &a}, {"closed9", &b}}) {
         const int segs = s->curve.segments(), closed_curve = s == &b;
         for (int j = closed_curve ? 0 : 1; j < segs; ++j) {  // join between segment j−1 (wrapping) and j
@@ -37,13 +39,15 @@ int main(int argc, char** argv) {
             const Eigen::VectorXd right = analysis::curvature_vector(s->curve.segment_jet(j, 0.0, 2));
             jump = std::max(jump, (left - right).norm());
             size = std::max({size, left.norm(), right.norm()});
-            t.row_text({name, std::to_string(j), format_number(left.norm(), 10), format_number(right.norm(), 10), format_number((left - right).norm(), 3)});
+            t.row_text({name, std::to_string(j), format_number(left.norm(), 10), format_number(right.norm(), 10),
+                        format_number((left - right).norm(), 3)});
         }
     }
     run.check("fig2.space_curves_curvature_continuous", jump / size);
 
     CsvWriter fig = run.table("fig_space.csv", {"curve", "u", "x", "y", "z", "is_data"});
-    for (const auto& [index, s, p] : {std::tuple<int, const HosakaSpline*, const PointList*>{0, &a, &open}, {1, &b, &closed}}) {
+    for (const auto& [index, s, p] :
+         {std::tuple<int, const HosakaSpline*, const PointList*>{0, &a, &open}, {1, &b, &closed}}) {
         for (int k = 0; k <= 32 * s->curve.segments(); ++k) {
             const Eigen::VectorXd q = s->curve.point(k / 32.0);
             fig.row({double(index), k / 32.0, q(0), q(1), q(2), k % 32 == 0 ? 1.0 : 0.0});
@@ -53,6 +57,7 @@ int main(int argc, char** argv) {
     }
     run.note("Joins of both curves, curvature from either side: [space_joins.csv](hosaka/space_joins.csv).");
     run.figure("fig_space",
-               "Fig. 2 analogue: the C2 spline of eq (20) through 8 points (open) and 9 points (closed) in space, in perspective and in the three orthographic projections.");
+               "Fig. 2 analogue: the C2 spline of eq (20) through 8 points (open) and 9 points (closed) in space, in "
+               "perspective and in the three orthographic projections.");
     return run.finish();
 }

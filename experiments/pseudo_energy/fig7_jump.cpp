@@ -16,9 +16,11 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 }
 
 int main(int argc, char** argv) {
-    repro::ArtifactRun run("pseudo_energy", "fig7_jump", "4.1", "The jump from s- to c-shaped minimisers (Fig. 7)", argc, argv);
+    repro::ArtifactRun run("pseudo_energy", "fig7_jump", "4.1", "The jump from s- to c-shaped minimisers (Fig. 7)",
+                           argc, argv);
     const double theta0s[] = {10, 20, 30, 45, 60, 90, 120, 150};
-    CsvWriter jumps = run.table("jump_angles.csv", {"theta0_deg", "jump_theta1_deg", "type_changes", "J_left", "J_right", "r0_left", "r0_right", "r1_left", "r1_right"});
+    CsvWriter jumps = run.table("jump_angles.csv", {"theta0_deg", "jump_theta1_deg", "type_changes", "J_left",
+                                                    "J_right", "r0_left", "r0_right", "r1_left", "r1_right"});
     CsvWriter profile = run.table("fig7.csv", {"theta1_deg", "J", "r0", "r1", "c_type"});
     int pattern = 0;
     double min_jump = INFINITY, max_dj = 0, fig_jump = 0;
@@ -58,8 +60,9 @@ int main(int argc, char** argv) {
         if (th0 <= 120)
             pattern += s_then_c ? 1 : 0;  // the claim's range (reference file)
         else
-            run.note("θ0 = " + format_number(th0) + "° (beyond the claim's range): the minimiser is " + (starts_s ? "s" : "c") + "-type at θ1 = 0 and changes type " +
-                     std::to_string(changes) + " times for θ1 in [0°, 180°), first at θ1 = " + format_number(lo / kDeg, 6) + "°" +
+            run.note("θ0 = " + format_number(th0) + "° (beyond the claim's range): the minimiser is " +
+                     (starts_s ? "s" : "c") + "-type at θ1 = 0 and changes type " + std::to_string(changes) +
+                     " times for θ1 in [0°, 180°), first at θ1 = " + format_number(lo / kDeg, 6) + "°" +
                      (s_then_c ? "." : " — not the single s → c jump of Fig. 7."));
         min_jump = std::min(min_jump, std::max(std::abs(l.r0 - r.r0), std::abs(l.r1 - r.r1)));
         max_dj = std::max(max_dj, std::abs(l.pseudo_energy - r.pseudo_energy) / l.pseudo_energy);
@@ -75,12 +78,14 @@ int main(int argc, char** argv) {
     }
     run.check("fig7.s_then_c", pattern);
     run.check("fig7.minimiser_jumps", min_jump > 1e-3 ? 1.0 : 0.0);
-    run.validate("fig7.J_continuous", "J on both sides of the jump (θ1 ± 5e-10 rad): max relative difference over θ0", max_dj, 0.0, 1e-7,
-                 "both branches tie at the jump; J changes by O(|∂J/∂θ1|·1e-9)");
-    run.note("Jump angles for θ0 = 10° … 150° are in jump_angles.csv; for θ0 = 30° the jump is at θ1 = " + format_number(fig_jump, 8) +
+    run.validate("fig7.J_continuous", "J on both sides of the jump (θ1 ± 5e-10 rad): max relative difference over θ0",
+                 max_dj, 0.0, 1e-7, "both branches tie at the jump; J changes by O(|∂J/∂θ1|·1e-9)");
+    run.note("Jump angles for θ0 = 10° … 150° are in jump_angles.csv; for θ0 = 30° the jump is at θ1 = " +
+             format_number(fig_jump, 8) +
              "°, and the smallest jump of the minimiser over all θ0 is |Δr| = " + format_number(min_jump, 4) + ".");
-    run.figure("fig7",
-               "Fig. 7 — θ0 = 30°: the minimising segment just before (s-type) and just after (c-type) the jump (left); "
-               "r0, r1 and J against θ1 (right).");
+    run.figure(
+        "fig7",
+        "Fig. 7 — θ0 = 30°: the minimising segment just before (s-type) and just after (c-type) the jump (left); "
+        "r0, r1 and J against θ1 (right).");
     return run.finish();
 }

@@ -27,9 +27,11 @@ struct ErrorStats {
 }  // namespace
 
 int main(int argc, char** argv) {
-    repro::ArtifactRun run("pseudo_energy", "fine_grid", "4.1", "Fine grids: existence of the minimum and table interpolation error", argc, argv);
+    repro::ArtifactRun run("pseudo_energy", "fine_grid", "4.1",
+                           "Fine grids: existence of the minimum and table interpolation error", argc, argv);
     const AngleGrid one_degree{361, NodePlacement::endpoints};
-    const PseudoEnergyTable fine = PseudoEnergyTable::load_or_build(run.cache_path("table361_fast.txt"), one_degree, TableMethod::fast);
+    const PseudoEnergyTable fine =
+        PseudoEnergyTable::load_or_build(run.cache_path("table361_fast.txt"), one_degree, TableMethod::fast);
     int no_minimum = 0;
     double r_min = INFINITY, r_max = 0;
     for (int i = 0; i < one_degree.n; ++i)
@@ -41,7 +43,8 @@ int main(int argc, char** argv) {
             r_max = std::max({r_max, m.r0, m.r1});
         }
     run.check("sec2.minimum_exists_1deg", no_minimum);
-    run.note("1° grid (361 × 361 nodes, fast path, one node per symmetry orbit): minimisers range over r ∈ [" + format_number(r_min, 4) + ", " + format_number(r_max, 4) +
+    run.note("1° grid (361 × 361 nodes, fast path, one node per symmetry orbit): minimisers range over r ∈ [" +
+             format_number(r_min, 4) + ", " + format_number(r_max, 4) +
              "]; the smallest occur next to the undefined nodes (±180°, 0), where r0 → 0 as θ1 → 0.");
 
     // Seeded random sample of direction pairs and their exact minima (fast path).
@@ -54,12 +57,21 @@ int main(int argc, char** argv) {
         const PseudoEnergyMinimum m = minimize_pseudo_energy(a, b);
         if (m.outcome.ok()) exact.push_back(m);
     }
-    CsvWriter out = run.table("interpolation_error.csv", {"nodes_per_axis", "placement", "rule", "quantity", "max_error", "rms_error"});
-    CsvWriter fig = run.table("fig_interpolation_error.csv", {"nodes_per_axis", "spacing_deg", "max_rel_J_same_type", "rms_rel_J_same_type", "max_rel_J_plain", "rms_rel_J_plain"});
-    const std::pair<int, NodePlacement> grids[] = {{36, NodePlacement::periodic}, {72, NodePlacement::periodic}, {180, NodePlacement::periodic}, {361, NodePlacement::endpoints}};
+    CsvWriter out = run.table("interpolation_error.csv",
+                              {"nodes_per_axis", "placement", "rule", "quantity", "max_error", "rms_error"});
+    CsvWriter fig =
+        run.table("fig_interpolation_error.csv", {"nodes_per_axis", "spacing_deg", "max_rel_J_same_type",
+                                                  "rms_rel_J_same_type", "max_rel_J_plain", "rms_rel_J_plain"});
+    const std::pair<int, NodePlacement> grids[] = {{36, NodePlacement::periodic},
+                                                   {72, NodePlacement::periodic},
+                                                   {180, NodePlacement::periodic},
+                                                   {361, NodePlacement::endpoints}};
     for (const auto& [n, placement] : grids) {
         const AngleGrid g{n, placement};
-        const PseudoEnergyTable t = n == 361 ? fine : PseudoEnergyTable::load_or_build(run.cache_path("table" + std::to_string(n) + "_fast.txt"), g, TableMethod::fast);
+        const PseudoEnergyTable t =
+            n == 361 ? fine
+                     : PseudoEnergyTable::load_or_build(run.cache_path("table" + std::to_string(n) + "_fast.txt"), g,
+                                                        TableMethod::fast);
         double fig_row[4] = {0, 0, 0, 0};
         for (bool same : {true, false}) {
             ErrorStats ej, er0, er1, el, es;
@@ -72,13 +84,18 @@ int main(int argc, char** argv) {
                 es.add(v.area - m.area);
             }
             const std::string rule = same ? "same_type" : "plain_bilinear";
-            const std::pair<const char*, const ErrorStats*> rows[] = {{"J_relative", &ej}, {"r0", &er0}, {"r1", &er1}, {"L", &el}, {"S", &es}};
-            for (const auto& [q, st] : rows) out.row_text({std::to_string(n), to_string(placement), rule, q, format_number(st->max, 6), format_number(st->rms(), 6)});
+            const std::pair<const char*, const ErrorStats*> rows[] = {
+                {"J_relative", &ej}, {"r0", &er0}, {"r1", &er1}, {"L", &el}, {"S", &es}};
+            for (const auto& [q, st] : rows)
+                out.row_text({std::to_string(n), to_string(placement), rule, q, format_number(st->max, 6),
+                              format_number(st->rms(), 6)});
             fig_row[same ? 0 : 2] = ej.max;
             fig_row[same ? 1 : 3] = ej.rms();
             if (n == 36 && same)
-                run.note("36-node table, same-type bilinear rule, " + std::to_string(samples) + " random pairs: max relative error of J " + format_number(ej.max, 3) + " (RMS " +
-                         format_number(ej.rms(), 3) + "), of r0 " + format_number(er0.max, 3) + " (RMS " + format_number(er0.rms(), 3) + ").");
+                run.note("36-node table, same-type bilinear rule, " + std::to_string(samples) +
+                         " random pairs: max relative error of J " + format_number(ej.max, 3) + " (RMS " +
+                         format_number(ej.rms(), 3) + "), of r0 " + format_number(er0.max, 3) + " (RMS " +
+                         format_number(er0.rms(), 3) + ").");
         }
         const double spacing = placement == NodePlacement::endpoints ? 360.0 / (n - 1) : 360.0 / n;
         fig.row({double(n), spacing, fig_row[0], fig_row[1], fig_row[2], fig_row[3]});
@@ -95,7 +112,10 @@ int main(int argc, char** argv) {
         dj = std::max(dj, std::abs(f.pseudo_energy - r.pseudo_energy) / std::max(1.0, r.pseudo_energy));
         dr = std::max({dr, std::abs(f.r0 - r.r0), std::abs(f.r1 - r.r1)});
     }
-    run.validate("random.fast_vs_reference_J", "fast vs reference minimum at 200 random direction pairs: max |ΔJ| / max(1, J)", dj, 0.0, 1e-10, "required agreement of the fast path with the reference path");
-    run.validate("random.fast_vs_reference_r", "fast vs reference minimiser at 200 random direction pairs: max |Δr|", dr, 0.0, 1e-8, "required agreement of the fast path with the reference path");
+    run.validate("random.fast_vs_reference_J",
+                 "fast vs reference minimum at 200 random direction pairs: max |ΔJ| / max(1, J)", dj, 0.0, 1e-10,
+                 "required agreement of the fast path with the reference path");
+    run.validate("random.fast_vs_reference_r", "fast vs reference minimiser at 200 random direction pairs: max |Δr|",
+                 dr, 0.0, 1e-8, "required agreement of the fast path with the reference path");
     return run.finish();
 }

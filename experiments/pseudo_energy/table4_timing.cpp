@@ -29,9 +29,10 @@ double draw(const PointList& p, const SegmentOracle& oracle, TangentOptimization
 }  // namespace
 
 int main(int argc, char** argv) {
-    repro::ArtifactRun run("pseudo_energy", "table4_timing", "4.2", "Computation time with and without tangent optimisation (Table 4)", argc, argv);
-    const PseudoSplineTables tables =
-        PseudoSplineTables::from(PseudoEnergyTable::load_or_build(run.cache_path("table36_reference.txt"), {36, NodePlacement::periodic}, TableMethod::reference));
+    repro::ArtifactRun run("pseudo_energy", "table4_timing", "4.2",
+                           "Computation time with and without tangent optimisation (Table 4)", argc, argv);
+    const PseudoSplineTables tables = PseudoSplineTables::from(PseudoEnergyTable::load_or_build(
+        run.cache_path("table36_reference.txt"), {36, NodePlacement::periodic}, TableMethod::reference));
     const TableOracle oracle = tables.oracle();
 
     std::vector<std::pair<std::string, std::vector<PointList>>> sets;
@@ -47,7 +48,8 @@ int main(int argc, char** argv) {
     }
     sets.push_back({"table3", {read_points_csv(run.reference_path("data/table3.csv"))}});
 
-    const TangentOptimization modes[] = {TangentOptimization::none, TangentOptimization::exact, TangentOptimization::approximate};
+    const TangentOptimization modes[] = {TangentOptimization::none, TangentOptimization::exact,
+                                         TangentOptimization::approximate};
     volatile double sink = 0.0;
     for (const auto& [name, curves] : sets) {
         const auto work = [&](TangentOptimization m) {
@@ -60,7 +62,8 @@ int main(int argc, char** argv) {
         for (;;) {
             const auto t0 = std::chrono::steady_clock::now();
             for (int r = 0; r < reps; ++r) sink = sink + work(TangentOptimization::none);
-            if (std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() > 0.02 || reps > (1 << 20)) break;
+            if (std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() > 0.02 || reps > (1 << 20))
+                break;
             reps *= 2;
         }
         std::vector<double> trials[3];
@@ -68,14 +71,17 @@ int main(int argc, char** argv) {
             for (int k = 0; k < 3; ++k) {
                 const auto t0 = std::chrono::steady_clock::now();
                 for (int r = 0; r < reps; ++r) sink = sink + work(modes[k]);
-                trials[k].push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() / reps);
+                trials[k].push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() /
+                                    reps);
             }
         double median[3];
         for (int k = 0; k < 3; ++k) {
             std::sort(trials[k].begin(), trials[k].end());
             median[k] = trials[k][3];
         }
-        const auto row = [&](const char* mode) { return run.reference().row("pseudo_energy.table4." + name + "." + mode); };
+        const auto row = [&](const char* mode) {
+            return run.reference().row("pseudo_energy.table4." + name + "." + mode);
+        };
         const repro::ReferenceRow none = row("none");
         for (int k : {1, 2}) {
             const std::string mode = to_string(modes[k]);
@@ -84,18 +90,22 @@ int main(int argc, char** argv) {
             const double lo = (r.paper_value - r.tolerance) / (none.paper_value + none.tolerance);
             const double hi = (r.paper_value + r.tolerance) / (none.paper_value - none.tolerance);
             run.timing("table4." + name + "." + paper_mode + "_over_none",
-                       "Table 4, " + name + " data: time with " + (k == 1 ? "exact" : "approximate") + " optimisation / time without",
-                       {"table4." + name + ".none", "table4." + name + "." + paper_mode}, r.paper_value / none.paper_value, lo, hi, median[k] / median[0]);
+                       "Table 4, " + name + " data: time with " + (k == 1 ? "exact" : "approximate") +
+                           " optimisation / time without",
+                       {"table4." + name + ".none", "table4." + name + "." + paper_mode},
+                       r.paper_value / none.paper_value, lo, hi, median[k] / median[0]);
         }
         // Deterministic part: J(θ) lookups spent on the tangent directions.
         long calls[3] = {0, 0, 0};
         for (int k = 0; k < 3; ++k)
             for (const PointList& p : curves) calls[k] += pseudo_spline(p, oracle, modes[k], false).oracle_calls;
-        run.note(name + " data: J(θ) lookups for the tangent directions — none " + std::to_string(calls[0]) + ", exact (w at each breakpoint) " + std::to_string(calls[1]) + ", approximate " +
+        run.note(name + " data: J(θ) lookups for the tangent directions — none " + std::to_string(calls[0]) +
+                 ", exact (w at each breakpoint) " + std::to_string(calls[1]) + ", approximate " +
                  std::to_string(calls[2]) + " (2 per w evaluation; the end tangents of eq (13) are not counted).");
     }
     run.note(
-        "Timed work: build the pseudo-spline from the points with the tables in memory and evaluate it at 100 points per span; median of 7 trials. The paper's seconds "
+        "Timed work: build the pseudo-spline from the points with the tables in memory and evaluate it at 100 points "
+        "per span; median of 7 trials. The paper's seconds "
         "(SPARCstation 10) are not comparable; the claims are the ratios to mode none.");
     return run.finish();
 }

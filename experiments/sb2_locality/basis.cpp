@@ -46,7 +46,8 @@ double l1_norm(const std::function<double(double)>& f) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    repro::ArtifactRun run("sb2_locality", "basis", "2", "Basis and blending functions of the B2- and S-spline (eq 1–8, Fig. 2)", argc, argv);
+    repro::ArtifactRun run("sb2_locality", "basis", "2",
+                           "Basis and blending functions of the B2- and S-spline (eq 1–8, Fig. 2)", argc, argv);
     const Fn e = [](double u, int k) { return basis_e(u, k); };
     const Fn eh = [](double u, int k) { return basis_e_hat(u, k); };
     const Fn fh = [](double u, int k) { return basis_f_hat(u, k); };
@@ -56,14 +57,18 @@ int main(int argc, char** argv) {
         double u0, scale;
         int degree;
     };
-    const Piece pieces[] = {{"eq4.e_piece1", e, 0.5, 0.5, 3},     {"eq4.e_piece2", e, 0.0, 0.5, 3},      {"eq4.e_piece3", e, -0.5, 0.5, 3},
-                            {"eq4.e_piece4", e, -1.0, 0.5, 3},    {"eq8.fhat_piece1", fh, 1.0, 1.0, 4},  {"eq8.ehat_piece1", eh, 0.0, 1.0, 4},
-                            {"eq8.fhat_piece2", fh, 0.0, 1.0, 4}, {"eq8.ehat_piece2", eh, -1.0, 1.0, 4}, {"eq8.fhat_piece3", fh, -1.0, 1.0, 4}};
+    const Piece pieces[] = {{"eq4.e_piece1", e, 0.5, 0.5, 3},     {"eq4.e_piece2", e, 0.0, 0.5, 3},
+                            {"eq4.e_piece3", e, -0.5, 0.5, 3},    {"eq4.e_piece4", e, -1.0, 0.5, 3},
+                            {"eq8.fhat_piece1", fh, 1.0, 1.0, 4}, {"eq8.ehat_piece1", eh, 0.0, 1.0, 4},
+                            {"eq8.fhat_piece2", fh, 0.0, 1.0, 4}, {"eq8.ehat_piece2", eh, -1.0, 1.0, 4},
+                            {"eq8.fhat_piece3", fh, -1.0, 1.0, 4}};
     for (const auto& p : pieces) {
         const Eigen::VectorXd c = taylor(p.f, p.u0, p.scale, p.degree);
         for (int k = 0; k <= p.degree; ++k) run.check(std::string(p.id) + ".c" + std::to_string(k), c(k));
-        run.validate(std::string(p.id) + ".fit", "Taylor coefficients vs polynomial interpolation of the same piece (max |Δ|)",
-                     (c - fitted(p.f, p.u0, p.scale, p.degree)).cwiseAbs().maxCoeff(), 0.0, 1e-12, "Vandermonde solve, condition ~1e3");
+        run.validate(std::string(p.id) + ".fit",
+                     "Taylor coefficients vs polynomial interpolation of the same piece (max |Δ|)",
+                     (c - fitted(p.f, p.u0, p.scale, p.degree)).cwiseAbs().maxCoeff(), 0.0, 1e-12,
+                     "Vandermonde solve, condition ~1e3");
     }
     const KnotRelation b2 = knot_relation(SplineForm::b2_spline), s = knot_relation(SplineForm::s_spline);
     run.check("eq3.side", b2.side);
@@ -84,7 +89,8 @@ int main(int argc, char** argv) {
     Range r[4];
     for (int k = -192; k <= 192; ++k) {
         const double u = k / 64.0;
-        const double v[4] = {blending_g(SplineForm::b2_spline, u), blending_h(SplineForm::b2_spline, u), blending_g(SplineForm::s_spline, u), blending_h(SplineForm::s_spline, u)};
+        const double v[4] = {blending_g(SplineForm::b2_spline, u), blending_h(SplineForm::b2_spline, u),
+                             blending_g(SplineForm::s_spline, u), blending_h(SplineForm::s_spline, u)};
         if (u >= -1.5 && u <= 2.5) fig.row({u, v[0], v[1], v[2], v[3]});
         for (int j = 0; j < 4; ++j) {
             r[j].min = std::min(r[j].min, v[j]);
@@ -99,11 +105,15 @@ int main(int argc, char** argv) {
     for (int j = 0; j < 4; ++j) run.check(ids[j], (std::ceil(r[j].hi / spacing[j]) - std::floor(r[j].lo / spacing[j])));
     run.check("sec23.g_nonnegative", (r[0].min >= 0.0 && r[2].min >= 0.0) ? 1.0 : 0.0);
     run.check("sec23.h_negative", (r[1].min < 0.0 && r[3].min < 0.0) ? 1.0 : 0.0);
-    const auto norm = [](SplineForm f, bool g) { return l1_norm([=](double u) { return g ? blending_g(f, u) : blending_h(f, u); }); };
+    const auto norm = [](SplineForm f, bool g) {
+        return l1_norm([=](double u) { return g ? blending_g(f, u) : blending_h(f, u); });
+    };
     run.check("sec23.s_h_smaller", norm(SplineForm::s_spline, false) < norm(SplineForm::b2_spline, false) ? 1.0 : 0.0);
     run.check("sec23.s_g_larger", norm(SplineForm::s_spline, true) > norm(SplineForm::b2_spline, true) ? 1.0 : 0.0);
-    run.note("L1 norms: |g| = " + format_number(norm(SplineForm::b2_spline, true), 6) + ", |ĝ| = " + format_number(norm(SplineForm::s_spline, true), 6) +
-             ", |h| = " + format_number(norm(SplineForm::b2_spline, false), 6) + ", |ĥ| = " + format_number(norm(SplineForm::s_spline, false), 6) + ".");
+    run.note("L1 norms: |g| = " + format_number(norm(SplineForm::b2_spline, true), 6) +
+             ", |ĝ| = " + format_number(norm(SplineForm::s_spline, true), 6) +
+             ", |h| = " + format_number(norm(SplineForm::b2_spline, false), 6) +
+             ", |ĥ| = " + format_number(norm(SplineForm::s_spline, false), 6) + ".");
     run.figure("fig2", "Fig. 2 — blending functions g, h (B2-spline) and ĝ, ĥ (S-spline)");
     return run.finish();
 }

@@ -6,8 +6,8 @@
 #include <numbers>
 
 #include "cagd/locality/locality_spline.hpp"
-#include "repro/artifact_run.hpp"
 #include "cagd/spline/bspline.hpp"
+#include "repro/artifact_run.hpp"
 
 using namespace cagd;
 using namespace cagd::locality;
@@ -26,7 +26,8 @@ Eigen::Index control_with_knots(const BSplineCurve& c, const std::vector<double>
 }  // namespace
 
 int main(int argc, char** argv) {
-    repro::ArtifactRun run("sb2_locality", "coincidence", "2.3", "Coincidence with the conventional interpolant (eq 9–11)", argc, argv);
+    repro::ArtifactRun run("sb2_locality", "coincidence", "2.3",
+                           "Coincidence with the conventional interpolant (eq 9–11)", argc, argv);
     const int n = 12;
     PointList p(n, 2);
     for (int k = 0; k < n; ++k) {
@@ -34,7 +35,10 @@ int main(int argc, char** argv) {
         p.row(k) << 2 * std::cos(t) + 0.3 * std::cos(3 * t), std::sin(t) + 0.2 * std::sin(2 * t);
     }
     const double diag = bounding_box_diagonal(p);
-    run.note("Data: 12 points (2cos θ + 0.3cos 3θ, sin θ + 0.2 sin 2θ), θ = 2πk/12, closed; residuals divided by the bounding-box diagonal " + format_number(diag, 6) + ".");
+    run.note(
+        "Data: 12 points (2cos θ + 0.3cos 3θ, sin θ + 0.2 sin 2θ), θ = 2πk/12, closed; residuals divided by the "
+        "bounding-box diagonal " +
+        format_number(diag, 6) + ".");
 
     // α measured from eq (10): impulse response of the (1,4,1)/6 system, far from the ends.
     PointList impulse = PointList::Zero(201, 2);
@@ -43,8 +47,8 @@ int main(int argc, char** argv) {
     const BSplineCurve ci = cubic_bspline_interpolant(impulse, false);
     const double ratio = ci.control_points()(1 + 106, 1) / ci.control_points()(1 + 105, 1);
     run.check("eq11.alpha", ratio);
-    run.validate("eq11.alpha_root", "α from the impulse response vs the root −2+√3 of α² + 4α + 1 = 0", ratio, alpha(), 1e-12,
-                 "SparseLU solve of a diagonally dominant system; rounding");
+    run.validate("eq11.alpha_root", "α from the impulse response vs the root −2+√3 of α² + 4α + 1 = 0", ratio, alpha(),
+                 1e-12, "SparseLU solve of a diagonally dominant system; rounding");
     run.check("eq11.constant", std::abs(std::sqrt(3.0) * (1 + alpha()) - (1 - alpha())));
 
     // The conventional interpolant, its B2 form (knot insertion) and S form (degree elevation).
@@ -70,13 +74,15 @@ int main(int argc, char** argv) {
         const Eigen::RowVector2d rhs = 3.0 * (p.row(i) + p.row(i + 1));
         printed = std::max(printed, (d(2 * i - 1) + 4 * d(2 * i) + d(2 * i + 1) - rhs).norm() / diag);
         corrected = std::max(corrected, (d(2 * i - 1) + 4 * d(2 * i + 1) + d(2 * i + 3) - rhs).norm() / diag);
-        eq3 = std::max(eq3, (d(2 * i - 1) + 4 * d(2 * i) + d(2 * i + 1) - 6.0 * Eigen::RowVector2d(p.row(i))).norm() / diag);
+        eq3 = std::max(eq3,
+                       (d(2 * i - 1) + 4 * d(2 * i) + d(2 * i + 1) - 6.0 * Eigen::RowVector2d(p.row(i))).norm() / diag);
         b2_mid = std::max(b2_mid, (d(2 * i + 1) - 0.5 * (c(i) + c(i + 1))).norm() / diag);
         s_mid = std::max(s_mid, (dhat_odd(i) - 0.5 * (c(i) + c(i + 1))).norm() / diag);
     }
     run.check("eq9.b2_condition", printed, corrected);
-    run.validate("eq3.on_b2_form", "eq (3) d_{2i−1} + 4d_{2i} + d_{2i+1} = 6p_i on the knot-inserted interpolant (max residual / diag)", eq3, 0.0, 1e-12,
-                 "rounding of knot insertion");
+    run.validate("eq3.on_b2_form",
+                 "eq (3) d_{2i−1} + 4d_{2i} + d_{2i+1} = 6p_i on the knot-inserted interpolant (max residual / diag)",
+                 eq3, 0.0, 1e-12, "rounding of knot insertion");
     run.check("eq9.b2_midpoint", b2_mid);
     run.check("eq9.s_midpoint", s_mid);
 
@@ -95,7 +101,7 @@ int main(int argc, char** argv) {
         series_corrected = std::max(series_corrected, (std::sqrt(3.0) * (1 + alpha()) * b - target).norm() / diag);
     }
     run.check("eq11.series", series_printed, series_corrected);
-    run.note("With the corrections of errata E1 and E2: eq (9) residual " + format_number(corrected, 3) + ", eq (11) deviation " + format_number(series_corrected, 3) +
-             " (relative to the diagonal).");
+    run.note("With the corrections of errata E1 and E2: eq (9) residual " + format_number(corrected, 3) +
+             ", eq (11) deviation " + format_number(series_corrected, 3) + " (relative to the diagonal).");
     return run.finish();
 }

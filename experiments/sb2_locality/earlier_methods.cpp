@@ -12,17 +12,21 @@ using namespace cagd;
 using namespace cagd::locality;
 
 int main(int argc, char** argv) {
-    repro::ArtifactRun run("sb2_locality", "earlier_methods", "3.4", "Earlier extra-point rules I, II(a), II(b) and eq (18)", argc, argv);
+    repro::ArtifactRun run("sb2_locality", "earlier_methods", "3.4",
+                           "Earlier extra-point rules I, II(a), II(b) and eq (18)", argc, argv);
     PointList p(10, 2);
     p << 0, 0, 1.1, 0.9, 2.0, 1.2, 3.2, 0.4, 4.0, -0.6, 5.3, -0.9, 6.1, 0.1, 7.0, 1.4, 8.4, 1.0, 9.0, 0.2;
     const double diag = bounding_box_diagonal(p);
-    run.note("Data: 10 points (0,0) (1.1,0.9) (2,1.2) (3.2,0.4) (4,−0.6) (5.3,−0.9) (6.1,0.1) (7,1.4) (8.4,1) (9,0.2), open, natural ends.");
+    run.note(
+        "Data: 10 points (0,0) (1.1,0.9) (2,1.2) (3.2,0.4) (4,−0.6) (5.3,−0.9) (6.1,0.1) (7,1.4) (8.4,1) (9,0.2), "
+        "open, natural ends.");
 
     const auto w = extra_point_weights({1, 1});
     const double w0 = w.left(0) + w.right(0), w1 = w.left(1) + w.right(1);  // weights of q_{i,0}, q_{i,1}
     run.check("eq18.w0", w0);
     run.check("eq18.w1", w1);
-    run.validate("eq18.closed_form", "eq (12) weight of q_{i,0} at m = 1 vs 1/(1+α)", w0, 1 / (1 + alpha()), 1e-15, "rounding");
+    run.validate("eq18.closed_form", "eq (12) weight of q_{i,0} at m = 1 vs 1/(1+α)", w0, 1 / (1 + alpha()), 1e-15,
+                 "rounding");
     run.check("eq18.w0_denominator", double(numeric::simplest_fraction_within(w0, 5e-4).denominator));
     run.check("eq18.w1_denominator", double(numeric::simplest_fraction_within(w1, 5e-4).denominator));
     run.check("eq16.w0_quarters", std::round(4 * w0) / 4);
@@ -34,7 +38,8 @@ int main(int argc, char** argv) {
         a.form = b.form = f;
         a.m = {{0, 0}};
         b.rule = ExtraPointRule::method_I;
-        i_vs_m0 = std::max(i_vs_m0, analysis::max_distance_same_parameter(interpolate(p, a).curve, interpolate(p, b).curve) / diag);
+        i_vs_m0 = std::max(
+            i_vs_m0, analysis::max_distance_same_parameter(interpolate(p, a).curve, interpolate(p, b).curve) / diag);
     }
     run.check("eq15.I_equals_m0", i_vs_m0);
 
@@ -47,7 +52,8 @@ int main(int argc, char** argv) {
         const Eigen::RowVector2d q0 = 0.5 * (p.row(i) + p.row(i + 1));
         const Eigen::RowVector2d lib = s1.extra_points.row(i + 1);
         const Eigen::RowVector2d pr = q0 + a / (1 + a) * ((p.row(i + 1) - p.row(i)) - (p.row(i + 2) - p.row(i + 1)));
-        const Eigen::RowVector2d co = q0 + a / (2 * (1 + a)) * ((p.row(i + 2) - p.row(i + 1)) - (p.row(i) - p.row(i - 1)));
+        const Eigen::RowVector2d co =
+            q0 + a / (2 * (1 + a)) * ((p.row(i + 2) - p.row(i + 1)) - (p.row(i) - p.row(i - 1)));
         printed = std::max(printed, (pr - lib).norm() / diag);
         corrected = std::max(corrected, (co - lib).norm() / diag);
     }
@@ -72,7 +78,8 @@ int main(int argc, char** argv) {
     run.check("sec34.fmill_reproduces_lines", off_line(fmill));
     const double fm_vs_m1 = analysis::max_distance_same_parameter(interpolate(p, fmill).curve, s1.curve) / diag;
     run.check("sec34.fmill_differs_from_m1", fm_vs_m1 > 1e-6 ? 1.0 : 0.0);
-    run.note("FMILL vs m = 1 (S-spline): max distance " + format_number(fm_vs_m1, 4) + " of the diagonal. Rearranged m = 1 form with the correction of erratum E3: max |Δ| " +
+    run.note("FMILL vs m = 1 (S-spline): max distance " + format_number(fm_vs_m1, 4) +
+             " of the diagonal. Rearranged m = 1 form with the correction of erratum E3: max |Δ| " +
              format_number(corrected, 3) + ".");
     return run.finish();
 }

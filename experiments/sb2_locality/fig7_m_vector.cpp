@@ -18,25 +18,30 @@ int main(int argc, char** argv) {
     run.check("fig7.vector_lengths", double(solid_printed.size()) - double(dotted.size()));
     MVector solid = solid_printed;
     solid.push_back(solid.back());  // 20 segments: last entry repeated (erratum E4)
-    run.note("Caption m-vectors: dotted " + format_m_vector(dotted) + " (" + std::to_string(dotted.size()) + " entries); solid " + format_m_vector(solid_printed) + " (" +
-             std::to_string(solid_printed.size()) + " entries, used with its last entry repeated).");
+    run.note("Caption m-vectors: dotted " + format_m_vector(dotted) + " (" + std::to_string(dotted.size()) +
+             " entries); solid " + format_m_vector(solid_printed) + " (" + std::to_string(solid_printed.size()) +
+             " entries, used with its last entry repeated).");
 
     PointList p(21, 2);
     for (int k = 0; k <= 20; ++k) {
         const double t = k / 20.0;
         p.row(k) << 10 * t + 1.2 * std::sin(9 * t), 6 * (1 - t) + 1.5 * std::sin(13 * t) + 0.6 * std::cos(29 * t);
     }
-    run.note("Data (chosen): p_k = (10t + 1.2 sin 9t, 6(1−t) + 1.5 sin 13t + 0.6 cos 29t), t = k/20, k = 0..20; open, natural ends.");
+    run.note(
+        "Data (chosen): p_k = (10t + 1.2 sin 9t, 6(1−t) + 1.5 sin 13t + 0.6 cos 29t), t = k/20, k = 0..20; open, "
+        "natural ends.");
     const double diag = bounding_box_diagonal(p);
     Options a, b;
     a.m = dotted;
     b.m = solid;
     const BSplineCurve ca = interpolate(p, a).curve, cb = interpolate(p, b).curve;
     int disagreements = 0;
-    auto spans = run.table("fig7_spans.csv", {"span", "m_dotted", "m_solid", "max_distance_over_diag", "predicted_to_move"});
+    auto spans =
+        run.table("fig7_spans.csv", {"span", "m_dotted", "m_solid", "max_distance_over_diag", "predicted_to_move"});
     for (int s = 0; s < 20; ++s) {
         bool predicted = false;
-        for (int i = std::max(0, s - 1); i <= std::min(19, s + 1); ++i) predicted = predicted || dotted[i].left != solid[i].left || dotted[i].right != solid[i].right;
+        for (int i = std::max(0, s - 1); i <= std::min(19, s + 1); ++i)
+            predicted = predicted || dotted[i].left != solid[i].left || dotted[i].right != solid[i].right;
         const double d = analysis::max_distance_same_parameter(ca, cb, s, s + 1, 65) / diag;
         disagreements += (d > 1e-12) != predicted;
         spans.row({double(s), double(dotted[s].left), double(solid[s].left), d, predicted ? 1.0 : 0.0});
@@ -50,6 +55,8 @@ int main(int argc, char** argv) {
     }
     auto pts = run.table("fig7_points.csv", {"x", "y"});
     for (int k = 0; k <= 20; ++k) pts.row({p(k, 0), p(k, 1)});
-    run.figure("fig7", "Fig. 7 — interpolating S-spline with the caption's two m-vectors (dotted, solid); circles: data points");
+    run.figure(
+        "fig7",
+        "Fig. 7 — interpolating S-spline with the caption's two m-vectors (dotted, solid); circles: data points");
     return run.finish();
 }

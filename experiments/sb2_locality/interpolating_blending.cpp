@@ -10,7 +10,8 @@ using namespace cagd;
 using namespace cagd::locality;
 
 int main(int argc, char** argv) {
-    repro::ArtifactRun run("sb2_locality", "interpolating_blending", "3.2", "Interpolating blending functions and their difference (Figs. 3, 4)", argc, argv);
+    repro::ArtifactRun run("sb2_locality", "interpolating_blending", "3.2",
+                           "Interpolating blending functions and their difference (Figs. 3, 4)", argc, argv);
     auto fig3 = run.table("fig3.csv", {"u", "b2_m0", "b2_m1", "b2_m2", "b2_m3", "s_m0", "s_m1", "s_m2", "s_m3"});
     auto fig4 = run.table("fig4.csv", {"u", "diff_m0", "diff_m1", "diff_m2", "diff_m3"});
     auto spans = run.table("span_difference.csv", {"m", "span_start", "max_abs_s_minus_b2"});
@@ -50,7 +51,8 @@ int main(int argc, char** argv) {
         }
         shrinking = shrinking && overall < previous;
         previous = overall;
-        run.note("m = " + std::to_string(m) + ": max |S − B2| = " + format_number(overall, 4) + ", " + std::to_string(differing) + " differing spans.");
+        run.note("m = " + std::to_string(m) + ": max |S − B2| = " + format_number(overall, 4) + ", " +
+                 std::to_string(differing) + " differing spans.");
     }
     run.check("sec32.difference_shrinks", shrinking ? 1.0 : 0.0);
     run.figure("fig3", "Fig. 3 — interpolating blending functions (B2 solid, S dashed), m = 0..3");

@@ -17,13 +17,15 @@ using namespace cagd;
 using namespace cagd::locality;
 
 int main(int argc, char** argv) {
-    repro::ArtifactRun run("sb2_locality", "truncation", "3.1", "Truncated series and its error (eq 12–14)", argc, argv);
+    repro::ArtifactRun run("sb2_locality", "truncation", "3.1", "Truncated series and its error (eq 12–14)", argc,
+                           argv);
     auto tab = run.table("truncation_weights.csv", {"m", "w0", "wm", "wm1", "relative_error"});
     // "Within 0.1 %" of eq (9) is not defined in the paper: we take the sum of the deviations
     // |w0 − 1| + |w_m| + |w_{m+1}|; the claims are also checked with their largest, their Euclidean
     // norm, and the deviation of w0 alone.
     const std::vector<std::pair<std::string, std::function<double(const Eigen::Vector3d&)>>> measures = {
-        {"sum of the deviations", [](const Eigen::Vector3d& w) { return std::abs(w(0) - 1) + std::abs(w(1)) + std::abs(w(2)); }},
+        {"sum of the deviations",
+         [](const Eigen::Vector3d& w) { return std::abs(w(0) - 1) + std::abs(w(1)) + std::abs(w(2)); }},
         {"largest deviation",
          [](const Eigen::Vector3d& w) {
              return std::max({std::abs(w(0) - 1), std::abs(w(1)), std::abs(w(2))});
@@ -48,8 +50,10 @@ int main(int argc, char** argv) {
             run.check(k + ".w0", w(0));
             run.check(k + ".wm", w(1));
             run.check(k + ".wm1", w(2));
-            run.validate(k + ".stencil", "closed form vs (1,4,1)/6 stencil on eq (12) weights (max |Δ|, and no other q_{i,j} left)",
-                         std::max((w - stencil.weights).cwiseAbs().maxCoeff(), stencil.largest_other), 0.0, 1e-15, "rounding (a dozen terms)");
+            run.validate(k + ".stencil",
+                         "closed form vs (1,4,1)/6 stencil on eq (12) weights (max |Δ|, and no other q_{i,j} left)",
+                         std::max((w - stencil.weights).cwiseAbs().maxCoeff(), stencil.largest_other), 0.0, 1e-15,
+                         "rounding (a dozen terms)");
         }
     }
     std::vector<repro::ChoiceValue> m5_choices, smallest_choices;
@@ -79,10 +83,12 @@ int main(int argc, char** argv) {
         for (int i = 0; i <= m + 1; ++i) {
             const double expect = i <= m ? K * std::pow(alpha(), i) / 2 : 0.0;
             // extra_points row r is segment r−1; d_{2i+1} is segment half+i, d_{−2i−1} segment half−i−1.
-            eq14 = std::max({eq14, std::abs(s.extra_points(half + i + 1, 1) - expect), std::abs(s.extra_points(half - i, 1) - expect)});
+            eq14 = std::max({eq14, std::abs(s.extra_points(half + i + 1, 1) - expect),
+                             std::abs(s.extra_points(half - i, 1) - expect)});
         }
     }
     run.check("eq14.extra_points", eq14);
-    run.note("Relative error of eq (9) after truncation, |w0 − 1| + |w_m| + |w_{m+1}|, per m: see truncation_weights.csv.");
+    run.note(
+        "Relative error of eq (9) after truncation, |w0 − 1| + |w_m| + |w_{m+1}|, per m: see truncation_weights.csv.");
     return run.finish();
 }

@@ -27,12 +27,16 @@ std::array<double, 6> printed_coefficients(double a, double b) {
     using std::cos;
     using std::sin;
     const double C0 = std::pow(cos(a / 2), 3) * (sin(a / 2 + b) - 3 * sin(a / 2));
-    const double C1 = -0.4 * (2 - 4 * cos(a) + cos(b) + cos(a + b)) * sin(a) - std::pow(cos(a / 2), 3) * (3 * sin(a / 2) - sin(a / 2 + b));
-    const double C2 =
-        (-22 * sin(a) + 7 * sin(2 * a) - 2 * cos(a / 2) * (32 * sin(a / 2) - b) + 14 * sin(a / 2 + b) - 6 * sin(1.5 * a + b) + sin(a / 2 + 2 * b) + sin(1.5 * a + 2 * b)) / 40;
-    const double C3 =
-        -(-22 * sin(b) + 7 * sin(2 * b) - 2 * cos(b / 2) * (-32 * sin(a - b / 2) + 14 * sin(a + b / 2)) - 6 * sin(a + 1.5 * b) + sin(2 * a + b / 2) + sin(a + 1.5 * b)) / 40;
-    const double C4 = 0.4 * (2 + cos(a) - 4 * cos(b) + cos(a + b)) * sin(b) + std::pow(cos(b / 2), 3) * (3 * sin(b / 2) - sin(a + b / 2));
+    const double C1 = -0.4 * (2 - 4 * cos(a) + cos(b) + cos(a + b)) * sin(a) -
+                      std::pow(cos(a / 2), 3) * (3 * sin(a / 2) - sin(a / 2 + b));
+    const double C2 = (-22 * sin(a) + 7 * sin(2 * a) - 2 * cos(a / 2) * (32 * sin(a / 2) - b) + 14 * sin(a / 2 + b) -
+                       6 * sin(1.5 * a + b) + sin(a / 2 + 2 * b) + sin(1.5 * a + 2 * b)) /
+                      40;
+    const double C3 = -(-22 * sin(b) + 7 * sin(2 * b) - 2 * cos(b / 2) * (-32 * sin(a - b / 2) + 14 * sin(a + b / 2)) -
+                        6 * sin(a + 1.5 * b) + sin(2 * a + b / 2) + sin(a + 1.5 * b)) /
+                      40;
+    const double C4 = 0.4 * (2 + cos(a) - 4 * cos(b) + cos(a + b)) * sin(b) +
+                      std::pow(cos(b / 2), 3) * (3 * sin(b / 2) - sin(a + b / 2));
     const double C5 = -std::pow(cos(b / 2), 3) * (sin(a + b / 2) - 3 * sin(b / 2));
     return {C0, C1, C2, C3, C4, C5};
 }
@@ -40,12 +44,20 @@ std::array<double, 6> printed_coefficients(double a, double b) {
 double printed_c2_bracket_extended(double a, double b) {
     using std::cos;
     using std::sin;
-    return (-22 * sin(a) + 7 * sin(2 * a) - 2 * cos(a / 2) * (32 * sin(a / 2 - b) + 14 * sin(a / 2 + b) - 6 * sin(1.5 * a + b) + sin(a / 2 + 2 * b) + sin(1.5 * a + 2 * b))) / 40;
+    return (-22 * sin(a) + 7 * sin(2 * a) -
+            2 * cos(a / 2) *
+                (32 * sin(a / 2 - b) + 14 * sin(a / 2 + b) - 6 * sin(1.5 * a + b) + sin(a / 2 + 2 * b) +
+                 sin(1.5 * a + 2 * b))) /
+           40;
 }
 double printed_c3_corrected(double a, double b) {
     using std::cos;
     using std::sin;
-    return -(-22 * sin(b) + 7 * sin(2 * b) - 2 * cos(b / 2) * (-32 * sin(a - b / 2) + 14 * sin(a + b / 2) - 6 * sin(a + 1.5 * b) + sin(2 * a + b / 2) + sin(2 * a + 1.5 * b))) / 40;
+    return -(-22 * sin(b) + 7 * sin(2 * b) -
+             2 * cos(b / 2) *
+                 (-32 * sin(a - b / 2) + 14 * sin(a + b / 2) - 6 * sin(a + 1.5 * b) + sin(2 * a + b / 2) +
+                  sin(2 * a + 1.5 * b))) /
+           40;
 }
 double printed_condition29(double a, double b) { return std::sin(a + b / 2) - 3 * std::sin(a / 2); }
 
@@ -59,13 +71,15 @@ std::vector<double> h_with_factor(double a, double b, double k, double scale = 1
 }  // namespace
 
 int main(int argc, char** argv) {
-    repro::ArtifactRun run(
-        "typical_curves", "appendix_monotonicity", "3.4",
-        "Curvature monotonicity of cubic B-spline segments: coefficients C0–C5, condition (29)–(30), Fig. 7 regions, endpoint interpolation (section 3.4, appendix A)", argc, argv);
+    repro::ArtifactRun run("typical_curves", "appendix_monotonicity", "3.4",
+                           "Curvature monotonicity of cubic B-spline segments: coefficients C0–C5, condition "
+                           "(29)–(30), Fig. 7 regions, endpoint interpolation (section 3.4, appendix A)",
+                           argc, argv);
     const double half_pi = std::numbers::pi / 2;
 
     // ---- A.1: the printed coefficients against the exact ones, on a 41 × 41 grid of [0, π/2]².
-    double diff[6] = {0, 0, 0, 0, 0, 0}, diff_c2_ext = 0, diff_c3_cor = 0, diff_closed = 0, diff_two_thirds = 0, ratio_scaled = 0, ratio_unscaled = 0;
+    double diff[6] = {0, 0, 0, 0, 0, 0}, diff_c2_ext = 0, diff_c3_cor = 0, diff_closed = 0, diff_two_thirds = 0,
+           ratio_scaled = 0, ratio_unscaled = 0;
     for (int i = 0; i <= 40; ++i)
         for (int j = 0; j <= 40; ++j) {
             const double a = half_pi * i / 40, b = half_pi * j / 40;
@@ -92,8 +106,10 @@ int main(int argc, char** argv) {
     run.check("appendix.C5", diff[5]);
     run.check("appendix.eq40_factor", diff_two_thirds, diff[1]);
     run.check("appendix.scaled_q1q2", ratio_scaled, ratio_unscaled);
-    run.validate("closed_forms", "library closed forms C0–C5 (monotonicity_coefficients) vs the Bernstein-product h, largest difference on the grid", diff_closed, 0.0, 1e-13,
-                 "rounding (measured ~1e-15)");
+    run.validate("closed_forms",
+                 "library closed forms C0–C5 (monotonicity_coefficients) vs the Bernstein-product h, largest "
+                 "difference on the grid",
+                 diff_closed, 0.0, 1e-13, "rounding (measured ~1e-15)");
 
     // eq (39): dκ/dt against central differences of κ(t) at t = 0.1 … 0.9, one segment.
     {
@@ -102,7 +118,8 @@ int main(int argc, char** argv) {
         double err_printed = 0, err_corrected = 0;
         for (int k = 1; k <= 9; ++k) {
             const double t = 0.1 * k, e = 1e-5;
-            const double fd = (analysis::signed_curvature(seg, t + e) - analysis::signed_curvature(seg, t - e)) / (2 * e);
+            const double fd =
+                (analysis::signed_curvature(seg, t + e) - analysis::signed_curvature(seg, t - e)) / (2 * e);
             const double f = p.f(t), g = p.g(t), df = p.f.derivative()(t), dg = p.g.derivative()(t);
             const double printed = (df * g - 2.0 / 3.0 * f * dg) / std::pow(f, 1.5);
             const double corrected = (df * g - 1.5 * f * dg) / std::pow(g, 2.5);
@@ -115,7 +132,8 @@ int main(int argc, char** argv) {
     // ---- (29), (30) and the deciding coefficient, on the Fig. 7 domain (1000 × 1000 grid).
     const int n = 1000;
     const std::vector<RegionPoint> region = monotonicity_region(n, 0.0, half_pi);
-    double c5 = 0, c5_all = 0, p29 = 0, p29_c4 = 0, p29_mono = 0, agree29_c5 = 0, agree_printed29_c5 = 0, agree_c0_all = 0, agree_c5_all = 0, exact_mono = 0, all_neg = 0;
+    double c5 = 0, c5_all = 0, p29 = 0, p29_c4 = 0, p29_mono = 0, agree29_c5 = 0, agree_printed29_c5 = 0,
+           agree_c0_all = 0, agree_c5_all = 0, exact_mono = 0, all_neg = 0;
     double p29_c1 = 0, differ = 0, exact_inc = 0;
     for (int i = 0; i < n; ++i)
         for (int j = 0; j < n; ++j) {
@@ -151,11 +169,14 @@ int main(int argc, char** argv) {
     run.check("fig7.caption_c1_negative_where_29", static_cast<double>(p29_c1) / static_cast<double>(p29));
     run.check("appendix.deciding_coefficient", agree_c0_all / total, agree_c5_all / total);
     run.check("sec3.4.condition29_monotone", static_cast<double>(p29_mono) / static_cast<double>(p29));
-    run.note("Fig. 7 domain [0, π/2]², " + std::to_string(n) + " × " + std::to_string(n) + " grid: (29) holds on " + format_number(100.0 * p29 / total, 4) +
-             " % of it, every C_i < 0 on " + format_number(100.0 * all_neg / total, 4) + " %, dκ/dt ≤ 0 on [0, 1] by the exact sign on " +
-             format_number(100.0 * exact_mono / total, 4) + " % (dκ/dt ≥ 0, the mirrored case θ1 > θ0, on " + format_number(100.0 * exact_inc / total, 4) +
+    run.note("Fig. 7 domain [0, π/2]², " + std::to_string(n) + " × " + std::to_string(n) + " grid: (29) holds on " +
+             format_number(100.0 * p29 / total, 4) + " % of it, every C_i < 0 on " +
+             format_number(100.0 * all_neg / total, 4) + " %, dκ/dt ≤ 0 on [0, 1] by the exact sign on " +
+             format_number(100.0 * exact_mono / total, 4) + " % (dκ/dt ≥ 0, the mirrored case θ1 > θ0, on " +
+             format_number(100.0 * exact_inc / total, 4) +
              " %). Grid points where 'decreasing' and (29) disagree: " + format_number(differ, 6) +
-             ". (29) is necessary as well as sufficient for decreasing curvature, because C5 = h(1): if C5 > 0 the curvature increases at the segment's end.");
+             ". (29) is necessary as well as sufficient for decreasing curvature, because C5 = h(1): if C5 > 0 the "
+             "curvature increases at the segment's end.");
     // The same tests over (0, π)² (the paper states (29) for any θ0 > 0).
     {
         const int m = 600;
@@ -175,10 +196,13 @@ int main(int argc, char** argv) {
                 }
             }
         run.check("sec3.4.condition29_all_negative_wide", static_cast<double>(w29_all) / static_cast<double>(w29));
-        run.note("Over (0, π)² (" + std::to_string(m) + " × " + std::to_string(m) + " grid): where (29) holds, every C_i < 0 at " +
-                 format_number(100.0 * w29_all / static_cast<double>(w29), 6) + " % of the points and dκ/dt ≤ 0 (exact) at " +
+        run.note("Over (0, π)² (" + std::to_string(m) + " × " + std::to_string(m) +
+                 " grid): where (29) holds, every C_i < 0 at " +
+                 format_number(100.0 * w29_all / static_cast<double>(w29), 6) +
+                 " % of the points and dκ/dt ≤ 0 (exact) at " +
                  format_number(100.0 * w29_mono / static_cast<double>(w29), 6) + " %" +
-                 (worst_a >= 0 ? "; first counterexample to 'all C_i < 0' at (θ0, θ1) = (" + format_number(worst_a, 6) + ", " + format_number(worst_b, 6) + ")."
+                 (worst_a >= 0 ? "; first counterexample to 'all C_i < 0' at (θ0, θ1) = (" + format_number(worst_a, 6) +
+                                     ", " + format_number(worst_b, 6) + ")."
                                : "; no counterexample."));
     }
 
@@ -208,17 +232,25 @@ int main(int argc, char** argv) {
             codes.row_text(line);
         }
         CsvWriter bound = run.table("fig7_bound.csv", {"theta0_deg", "theta1_bound_deg"});
-        for (int i = 0; i <= 90; ++i) bound.row({static_cast<double>(i), theta1_bound(half_pi * i / 90) * 180 / std::numbers::pi});
+        for (int i = 0; i <= 90; ++i)
+            bound.row({static_cast<double>(i), theta1_bound(half_pi * i / 90) * 180 / std::numbers::pi});
         // The caption says how many of the grid's cells each class has, and which classes are empty.
-        const std::array<const char*, 6> names{"not monotone", "monotone only by the exact sign of dκ/dt", "every C_i < 0 without (29)", "(29) holds (then every C_i < 0)",
-                                               "(29) holds but some C_i ≥ 0", "κ increasing (the mirrored case)"};
+        const std::array<const char*, 6> names{"not monotone",
+                                               "monotone only by the exact sign of dκ/dt",
+                                               "every C_i < 0 without (29)",
+                                               "(29) holds (then every C_i < 0)",
+                                               "(29) holds but some C_i ≥ 0",
+                                               "κ increasing (the mirrored case)"};
         std::string shown, empty;
         for (std::size_t k = 0; k < cells.size(); ++k) {
             std::string& to = cells[k] > 0 ? shown : empty;
-            to += (to.empty() ? "" : "; ") + std::string(names[k]) + (cells[k] > 0 ? " (" + std::to_string(cells[k]) + " cells)" : "");
+            to += (to.empty() ? "" : "; ") + std::string(names[k]) +
+                  (cells[k] > 0 ? " (" + std::to_string(cells[k]) + " cells)" : "");
         }
-        run.figure("fig7_regions", "Fig. 7 redrawn as regions of the unit polygon's (θ0, θ1) ∈ [0°, 90°]² on a " + std::to_string(m) + " × " + std::to_string(m) +
-                                       " grid: " + shown + "; the line is eq (30). Empty on this grid (in the legend, marked so): " + (empty.empty() ? "none" : empty) + ".");
+        run.figure("fig7_regions", "Fig. 7 redrawn as regions of the unit polygon's (θ0, θ1) ∈ [0°, 90°]² on a " +
+                                       std::to_string(m) + " × " + std::to_string(m) + " grid: " + shown +
+                                       "; the line is eq (30). Empty on this grid (in the legend, marked so): " +
+                                       (empty.empty() ? "none" : empty) + ".");
     }
 
     // ---- A.2: endpoint-interpolating cubic B-splines.
@@ -236,7 +268,8 @@ int main(int argc, char** argv) {
         const std::vector<BezierCurve> segs = bezier_segments(curve);
         Eigen::MatrixXd q0(4, 2), q1(4, 2);
         q0 << p.row(0), p.row(1), (p.row(1) + p.row(2)) / 2, (3 * p.row(1) + 7 * p.row(2) + 2 * p.row(3)) / 12;
-        q1 << (3 * p.row(1) + 7 * p.row(2) + 2 * p.row(3)) / 12, (2 * p.row(2) + p.row(3)) / 3, (p.row(2) + 2 * p.row(3)) / 3, (p.row(2) + 4 * p.row(3) + p.row(4)) / 6;
+        q1 << (3 * p.row(1) + 7 * p.row(2) + 2 * p.row(3)) / 12, (2 * p.row(2) + p.row(3)) / 3,
+            (p.row(2) + 2 * p.row(3)) / 3, (p.row(2) + 4 * p.row(3) + p.row(4)) / 6;
         run.check("A2.first_segment_bezier", (segs[0].control_points() - q0).cwiseAbs().maxCoeff());
         run.check("A2.second_segment_bezier", (segs[1].control_points() - q1).cwiseAbs().maxCoeff());
         CubicPoints second_uniform;
@@ -244,10 +277,13 @@ int main(int argc, char** argv) {
         run.check("A2.p1_prime", (uniform_segment_bezier(second_uniform) - q1).cwiseAbs().maxCoeff());
         const MonotonicityReport rep = cubic_bspline_curvature_monotonicity(curve);
         const SegmentVerdict& first = rep.segments[0];
-        const double edge_dev = std::max({std::abs(first.edges[0] - 1), std::abs(first.edges[1] - 1), std::abs(first.edges[2] - 1)});
+        const double edge_dev =
+            std::max({std::abs(first.edges[0] - 1), std::abs(first.edges[1] - 1), std::abs(first.edges[2] - 1)});
         run.check("sec3.4.first_segment_twice_angle", std::max(std::abs(first.turn0 - 2 * turns[1]), edge_dev));
-        run.check("A2.r2_is_p1_moved", std::abs((first.polygon.row(1) - p.row(0)).norm() - 1.0 / 3.0), std::abs((first.polygon.row(1) - p.row(1)).norm() - 1.0 / 3.0));
-        run.check("A2.r0_r2_p2_p3", (uniform_segment_bezier(first.polygon) - segs[0].control_points()).cwiseAbs().maxCoeff());
+        run.check("A2.r2_is_p1_moved", std::abs((first.polygon.row(1) - p.row(0)).norm() - 1.0 / 3.0),
+                  std::abs((first.polygon.row(1) - p.row(1)).norm() - 1.0 / 3.0));
+        run.check("A2.r0_r2_p2_p3",
+                  (uniform_segment_bezier(first.polygon) - segs[0].control_points()).cwiseAbs().maxCoeff());
     }
 
     // ---- The whole-curve checker against dense sampling of dκ/dt (2001 samples per segment).
@@ -269,10 +305,13 @@ int main(int argc, char** argv) {
                 pos = pos || x > 1e-9 * scale;
                 neg = neg || x < -1e-9 * scale;
             }
-            return pos && neg ? analysis::Trend::not_monotone : pos ? analysis::Trend::increasing : analysis::Trend::decreasing;
+            return pos && neg ? analysis::Trend::not_monotone
+                   : pos      ? analysis::Trend::increasing
+                              : analysis::Trend::decreasing;
         };
         CsvWriter table =
-            run.table("checker_typical_polygons.csv", {"degree", "knots", "segments", "condition29_monotone", "bernstein_monotone", "exact_monotone", "whole_curve_monotone"});
+            run.table("checker_typical_polygons.csv", {"degree", "knots", "segments", "condition29_monotone",
+                                                       "bernstein_monotone", "exact_monotone", "whole_curve_monotone"});
         auto tally = [&](const BSplineCurve& c) {
             const MonotonicityReport rep = cubic_bspline_curvature_monotonicity(c);
             std::vector<BezierCurve> segs = bezier_segments(c);
@@ -290,17 +329,20 @@ int main(int argc, char** argv) {
                 kb += v.bernstein_verdict == Guarantee::monotone;
                 ke += v.exact != analysis::Trend::not_monotone;
             }
-            return std::array<double, 4>{static_cast<double>(k29), static_cast<double>(kb), static_cast<double>(ke), rep.whole_curve != analysis::Trend::not_monotone ? 1.0 : 0.0};
+            return std::array<double, 4>{static_cast<double>(k29), static_cast<double>(kb), static_cast<double>(ke),
+                                         rep.whole_curve != analysis::Trend::not_monotone ? 1.0 : 0.0};
         };
         for (int degree : {24, 49, 99}) {
             const TypicalPolygon poly = scale_one_typical_polygon(-0.5, 1.0, degree);
             const auto u = tally(uniform_cubic_bspline(poly.points));
-            table.row_text({std::to_string(degree), "uniform", std::to_string(poly.points.rows() - 3), format_number(u[0], 6), format_number(u[1], 6), format_number(u[2], 6),
+            table.row_text({std::to_string(degree), "uniform", std::to_string(poly.points.rows() - 3),
+                            format_number(u[0], 6), format_number(u[1], 6), format_number(u[2], 6),
                             format_number(u[3], 6)});
             const Eigen::MatrixXd ends = endpoint_interpolating_polygon(poly.points * degree);  // unit edges
             const auto e = tally(endpoint_interpolating_cubic_bspline(ends));
-            table.row_text({std::to_string(degree), "endpoint_interpolating", std::to_string(ends.rows() - 3), format_number(e[0], 6), format_number(e[1], 6),
-                            format_number(e[2], 6), format_number(e[3], 6)});
+            table.row_text({std::to_string(degree), "endpoint_interpolating", std::to_string(ends.rows() - 3),
+                            format_number(e[0], 6), format_number(e[1], 6), format_number(e[2], 6),
+                            format_number(e[3], 6)});
         }
         for (int trial = 0; trial < 200; ++trial) {
             Eigen::MatrixXd q(9, 2);
@@ -312,11 +354,16 @@ int main(int argc, char** argv) {
             }
             tally(endpoint_interpolating_cubic_bspline(endpoint_interpolating_polygon(q)));
         }
-        run.validate("checker_vs_sampling",
-                     "per-segment exact verdict (Bernstein subdivision) equals the verdict of 2001 samples of h (fraction of " + std::to_string(segments) + " segments)",
-                     static_cast<double>(agree) / segments, 1.0, 0.0, "yes/no per segment");
-        run.validate("guarantee_sound", "segments guaranteed monotone by (29) or by the Bernstein signs are monotone by sampling (fraction of " + std::to_string(guaranteed) + ")",
-                     static_cast<double>(guaranteed_and_monotone) / guaranteed, 1.0, 0.0, "yes/no per segment");
+        run.validate(
+            "checker_vs_sampling",
+            "per-segment exact verdict (Bernstein subdivision) equals the verdict of 2001 samples of h (fraction of " +
+                std::to_string(segments) + " segments)",
+            static_cast<double>(agree) / segments, 1.0, 0.0, "yes/no per segment");
+        run.validate(
+            "guarantee_sound",
+            "segments guaranteed monotone by (29) or by the Bernstein signs are monotone by sampling (fraction of " +
+                std::to_string(guaranteed) + ")",
+            static_cast<double>(guaranteed_and_monotone) / guaranteed, 1.0, 0.0, "yes/no per segment");
     }
     return run.finish();
 }

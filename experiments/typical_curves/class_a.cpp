@@ -2,17 +2,17 @@
 // have monotone curvature (and torsion in 3-D), tested on random class A matrices and degrees, and
 // just outside the conditions.
 // Data (ours): symmetric M = U diag(σ) Uᵀ, non-symmetric U diag(σ) Vᵀ (random rotations U, V, σ in
-// [1, 2.5], seeded) and typical s R_θ (3-D: rotation about z, scale s), kept when the stated tests pass; degrees 3 … 8, b0 = 0, Δb0 = e_x; 400 curves per set.
-// Monotonicity is decided exactly (Bernstein subdivision of the derivative's numerator,
-// analysis::curvature_monotonicity) and cross-checked by 2001 samples.
+// [1, 2.5], seeded) and typical s R_θ (3-D: rotation about z, scale s), kept when the stated tests pass; degrees 3 … 8,
+// b0 = 0, Δb0 = e_x; 400 curves per set. Monotonicity is decided exactly (Bernstein subdivision of the derivative's
+// numerator, analysis::curvature_monotonicity) and cross-checked by 2001 samples.
 #include <cmath>
 #include <numbers>
 #include <random>
 
 #include "cagd/aesthetic/class_a.hpp"
 #include "cagd/analysis/curvature_monotonicity.hpp"
-#include "repro/artifact_run.hpp"
 #include "cagd/spline/bezier.hpp"
+#include "repro/artifact_run.hpp"
 
 using namespace cagd;
 using namespace cagd::aesthetic;
@@ -48,7 +48,8 @@ Eigen::MatrixXd random_matrix(int d, Set set, std::mt19937& rng) {
     for (;;) {
         if (set == Set::typical_class_a || set == Set::typical_not_eq4) {
             const double s = u(rng), bound = std::acos(1.0 / s);
-            const double theta = set == Set::typical_class_a ? bound * frac(rng) : bound * (1.0 + 0.2 * frac(rng)) + 1e-9;
+            const double theta =
+                set == Set::typical_class_a ? bound * frac(rng) : bound * (1.0 + 0.2 * frac(rng)) + 1e-9;
             Eigen::MatrixXd m = Eigen::MatrixXd::Identity(d, d);
             m.topLeftCorner(2, 2) = typical_matrix(theta, s);
             if (d == 3) m(2, 2) = s;  // 3-D: rotation about z with the same scale
@@ -58,8 +59,9 @@ Eigen::MatrixXd random_matrix(int d, Set set, std::mt19937& rng) {
         Eigen::VectorXd sigma(d);
         for (int i = 0; i < d; ++i) sigma(i) = u(rng);
         const Eigen::MatrixXd q = random_rotation(d, rng);
-        const Eigen::MatrixXd m = set == Set::general_class_a_tests ? Eigen::MatrixXd(q * sigma.asDiagonal() * random_rotation(d, rng).transpose())
-                                                                    : Eigen::MatrixXd(q * sigma.asDiagonal() * q.transpose());
+        const Eigen::MatrixXd m = set == Set::general_class_a_tests
+                                      ? Eigen::MatrixXd(q * sigma.asDiagonal() * random_rotation(d, rng).transpose())
+                                      : Eigen::MatrixXd(q * sigma.asDiagonal() * q.transpose());
         const ClassATest t = class_a_test(m);
         if ((set == Set::symmetric_class_a || set == Set::general_class_a_tests) && t.class_a) return m;
         if (set == Set::symmetric_not_eq3 && t.eq2 && t.singular_at_least_one && !t.cao_wang) return m;
@@ -81,7 +83,9 @@ analysis::Trend sampled_trend(const BernsteinPolynomial& p) {
     return pos && neg ? analysis::Trend::not_monotone : pos ? analysis::Trend::increasing : analysis::Trend::decreasing;
 }
 
-bool monotone(analysis::Trend t) { return t == analysis::Trend::increasing || t == analysis::Trend::decreasing || t == analysis::Trend::constant; }
+bool monotone(analysis::Trend t) {
+    return t == analysis::Trend::increasing || t == analysis::Trend::decreasing || t == analysis::Trend::constant;
+}
 
 // The exact verdict checked independently: "monotone" must survive 2001 samples; "changes sign" must
 // come with witnesses where p really is negative and positive.
@@ -94,7 +98,9 @@ bool consistent(const BernsteinPolynomial& p, const SignAnalysis& s) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    repro::ArtifactRun run("typical_curves", "class_a", "2.1", "Class A matrices and monotone curvature of class A Bézier curves (section 2.1, eq 1–4)", argc, argv);
+    repro::ArtifactRun run("typical_curves", "class_a", "2.1",
+                           "Class A matrices and monotone curvature of class A Bézier curves (section 2.1, eq 1–4)",
+                           argc, argv);
 
     // ---- Condition (4) against the class A tests, on a grid of typical matrices.
     {
@@ -121,12 +127,15 @@ int main(int argc, char** argv) {
 
     // ---- Random matrices: class A, and just outside.
     std::mt19937 rng(2026);
-    CsvWriter table = run.table("class_a_random.csv", {"dimension", "set", "curves", "monotone_curvature", "monotone_torsion"});
-    double planar_class_a = 0, space_curv = 0, space_tors = 0, planar_typical = 0, space_typical = 0, space_typical_tors = 0;
+    CsvWriter table =
+        run.table("class_a_random.csv", {"dimension", "set", "curves", "monotone_curvature", "monotone_torsion"});
+    double planar_class_a = 0, space_curv = 0, space_tors = 0, planar_typical = 0, space_typical = 0,
+           space_typical_tors = 0;
     int agree = 0, checked = 0;
     std::string counterexample;
     for (int d : {2, 3})
-        for (Set set : {Set::symmetric_class_a, Set::typical_class_a, Set::symmetric_not_eq3, Set::typical_not_eq4, Set::general_class_a_tests}) {
+        for (Set set : {Set::symmetric_class_a, Set::typical_class_a, Set::symmetric_not_eq3, Set::typical_not_eq4,
+                        Set::general_class_a_tests}) {
             const int curves = 400;
             int mono_k = 0, mono_t = 0;
             for (int c = 0; c < curves; ++c) {
@@ -136,7 +145,8 @@ int main(int argc, char** argv) {
                 db0(0) = 1.0;
                 if (d == 3) db0(2) = 0.3;  // off the plane of the typical rotation: a true space curve
                 const BezierCurve curve(class_a_control_points(b0, db0, m, degree));
-                const BernsteinPolynomial kp = d == 2 ? analysis::curvature_derivative_numerator(curve) : analysis::squared_curvature_derivative_numerator(curve);
+                const BernsteinPolynomial kp = d == 2 ? analysis::curvature_derivative_numerator(curve)
+                                                      : analysis::squared_curvature_derivative_numerator(curve);
                 const SignAnalysis sk = sign_on_unit_interval(kp);
                 const analysis::Trend tk = analysis::trend_of(sk);
                 mono_k += monotone(tk);
@@ -147,25 +157,30 @@ int main(int argc, char** argv) {
                     const SignAnalysis st = sign_on_unit_interval(tp);
                     mono_t += monotone(analysis::trend_of(st));
                     if (set == Set::typical_class_a && !monotone(analysis::trend_of(st)) && counterexample.empty())
-                        counterexample = "M = s R_z(θ) with s = " + format_number(m(2, 2), 8) + ", θ = " + format_number(std::atan2(m(1, 0), m(0, 0)), 8) + ", degree " +
-                                         std::to_string(degree) + ", Δb0 = (1, 0, 0.3): dτ/dt is negative at t = " + format_number(st.t_negative, 6) +
+                        counterexample = "M = s R_z(θ) with s = " + format_number(m(2, 2), 8) +
+                                         ", θ = " + format_number(std::atan2(m(1, 0), m(0, 0)), 8) + ", degree " +
+                                         std::to_string(degree) + ", Δb0 = (1, 0, 0.3): dτ/dt is negative at t = " +
+                                         format_number(st.t_negative, 6) +
                                          " and positive at t = " + format_number(st.t_positive, 6);
                     ++checked;
                     agree += consistent(tp, st);
                 }
             }
-            table.row_text({std::to_string(d), name(set), std::to_string(curves), std::to_string(mono_k), d == 3 ? std::to_string(mono_t) : ""});
+            table.row_text({std::to_string(d), name(set), std::to_string(curves), std::to_string(mono_k),
+                            d == 3 ? std::to_string(mono_t) : ""});
             if (set == Set::symmetric_class_a) {
                 if (d == 2)
                     planar_class_a = mono_k / static_cast<double>(curves);
                 else
-                    space_curv = mono_k / static_cast<double>(curves), space_tors = mono_t / static_cast<double>(curves);
+                    space_curv = mono_k / static_cast<double>(curves),
+                    space_tors = mono_t / static_cast<double>(curves);
             }
             if (set == Set::typical_class_a) {
                 if (d == 2)
                     planar_typical = mono_k / static_cast<double>(curves);
                 else
-                    space_typical = mono_k / static_cast<double>(curves), space_typical_tors = mono_t / static_cast<double>(curves);
+                    space_typical = mono_k / static_cast<double>(curves),
+                    space_typical_tors = mono_t / static_cast<double>(curves);
             }
         }
     run.check("sec2.1.class_a_monotone_curvature_2d", planar_class_a);
@@ -175,14 +190,18 @@ int main(int argc, char** argv) {
     run.check("sec2.1.typical_monotone_curvature_3d", space_typical);
     // Torsion for the non-symmetric (typical) class A matrices; corrected: symmetric class A.
     run.check("sec2.1.typical_monotone_torsion_3d", space_typical_tors, space_tors);
-    if (!counterexample.empty()) run.note("A class A space curve whose torsion is not monotone: " + counterexample + ".");
+    if (!counterexample.empty())
+        run.note("A class A space curve whose torsion is not monotone: " + counterexample + ".");
     run.validate("exact_vs_sampled",
-                 "exact verdicts confirmed: monotone ones by 2001 samples of the numerator, sign changes by evaluating their witnesses (fraction of " + std::to_string(checked) +
-                     " polynomials)",
+                 "exact verdicts confirmed: monotone ones by 2001 samples of the numerator, sign changes by evaluating "
+                 "their witnesses (fraction of " +
+                     std::to_string(checked) + " polynomials)",
                  agree / static_cast<double>(checked), 1.0, 0.0, "yes/no per polynomial");
     run.note(
-        "class_a_random.csv: out of 400 curves per set (degrees 3–8), how many have monotone curvature (and torsion): symmetric class A and typical matrices, and just outside — "
-        "symmetric matrices failing eq (3), typical matrices failing (4) slightly, and non-symmetric matrices that pass every test of eq (2)–(3) (the paper states (3) for "
+        "class_a_random.csv: out of 400 curves per set (degrees 3–8), how many have monotone curvature (and torsion): "
+        "symmetric class A and typical matrices, and just outside — "
+        "symmetric matrices failing eq (3), typical matrices failing (4) slightly, and non-symmetric matrices that "
+        "pass every test of eq (2)–(3) (the paper states (3) for "
         "symmetric matrices only).");
     return run.finish();
 }

@@ -14,13 +14,17 @@ using namespace cagd;
 using namespace cagd::aesthetic;
 
 int main(int argc, char** argv) {
-    repro::ArtifactRun run("typical_curves", "log_aesthetic", "2.2", "Log-aesthetic curves: general formulas and parametric form for every α (section 2.2, eq 5–15)", argc, argv);
+    repro::ArtifactRun run(
+        "typical_curves", "log_aesthetic", "2.2",
+        "Log-aesthetic curves: general formulas and parametric form for every α (section 2.2, eq 5–15)", argc, argv);
     struct Case {
         double alpha, c0, c1;
     };
-    const std::vector<Case> cases{{-2.0, 1.0, 0.5}, {-1.0, 1.0, 0.2}, {-0.5, 2.0, 0.3}, {0.0, 1.2, 0.7}, {0.5, 1.0, 1.0},
-                                  {1.0, 0.8, 0.5},  {1.5, 1.0, 0.4},  {2.0, 1.0, 0.4},  {3.0, -0.3, 1.0}};
-    CsvWriter table = run.table("lac_cases.csv", {"alpha", "c0", "c1", "lcg_slope", "lcg_max_residual", "theta_error", "closed_form_error"});
+    const std::vector<Case> cases{{-2.0, 1.0, 0.5}, {-1.0, 1.0, 0.2}, {-0.5, 2.0, 0.3},
+                                  {0.0, 1.2, 0.7},  {0.5, 1.0, 1.0},  {1.0, 0.8, 0.5},
+                                  {1.5, 1.0, 0.4},  {2.0, 1.0, 0.4},  {3.0, -0.3, 1.0}};
+    CsvWriter table = run.table(
+        "lac_cases.csv", {"alpha", "c0", "c1", "lcg_slope", "lcg_max_residual", "theta_error", "closed_form_error"});
     const numeric::GaussLegendreRule gl(20);
     double worst_slope = 0, worst_slope_alpha0 = 0, worst_theta = 0, worst_closed = 0, worst_position = 0;
     for (const Case& cs : cases) {
@@ -35,14 +39,16 @@ int main(int argc, char** argv) {
         double theta_err = 0, closed_err = -1;
         for (int k = 1; k <= 20; ++k) {
             const double s = 0.1 * k;
-            const double integral = boost::math::quadrature::gauss_kronrod<double, 61>::integrate([&](double v) { return c.curvature(v); }, 0.0, s, 15, 1e-15);
+            const double integral = boost::math::quadrature::gauss_kronrod<double, 61>::integrate(
+                [&](double v) { return c.curvature(v); }, 0.0, s, 15, 1e-15);
             theta_err = std::max(theta_err, std::abs(c.tangent_angle(s) - p.start_angle - integral));
             if (auto closed = c.closed_form_point(s)) closed_err = std::max(closed_err, (*closed - c.point(s)).norm());
             // Second quadrature: composite 20-point Gauss–Legendre on 400 panels.
             std::vector<double> breaks;
             for (int q = 0; q <= 400; ++q) breaks.push_back(s * q / 400);
-            const Eigen::Vector2d second(gl.integrate_piecewise([&](double v) { return std::cos(c.tangent_angle(v)); }, breaks),
-                                         gl.integrate_piecewise([&](double v) { return std::sin(c.tangent_angle(v)); }, breaks));
+            const Eigen::Vector2d second(
+                gl.integrate_piecewise([&](double v) { return std::cos(c.tangent_angle(v)); }, breaks),
+                gl.integrate_piecewise([&](double v) { return std::sin(c.tangent_angle(v)); }, breaks));
             worst_position = std::max(worst_position, (second - c.point(s)).norm());
         }
         if (cs.alpha == 0.0)
@@ -58,7 +64,8 @@ int main(int argc, char** argv) {
     run.check("eq13.tangent_angle", worst_theta);
     run.check("sec3.closed_form_alpha_1_2", worst_closed);
     run.validate("position_quadrature",
-                 "C(s) of eq (14): adaptive Gauss–Kronrod (library) vs composite 20-point Gauss–Legendre on 400 panels, largest distance over all cases and s = 0.1 … 2",
+                 "C(s) of eq (14): adaptive Gauss–Kronrod (library) vs composite 20-point Gauss–Legendre on 400 "
+                 "panels, largest distance over all cases and s = 0.1 … 2",
                  worst_position, 0.0, 1e-12, "quadrature error (measured ~1e-15)");
 
     // eq (15) represents a general curve ρ^α = c0 s + c1 (c1 > 0) up to similarity: shift s by c1/c0,
@@ -99,7 +106,8 @@ int main(int argc, char** argv) {
                 const double lr = k >= 1 ? g.points[static_cast<std::size_t>(k - 1)].log_radius : NAN;
                 const double lg = k >= 1 ? g.points[static_cast<std::size_t>(k - 1)].log_gradient : NAN;
                 if (k == 0)
-                    curves.row_text({format_number(alpha), "0", format_number(pts(0, 0)), format_number(pts(0, 1)), "", ""});
+                    curves.row_text(
+                        {format_number(alpha), "0", format_number(pts(0, 0)), format_number(pts(0, 1)), "", ""});
                 else
                     curves.row({alpha, 2.0 * k / 200, pts(k, 0), pts(k, 1), lr, lg});
             }
@@ -107,7 +115,8 @@ int main(int argc, char** argv) {
             curves.end_scan();
         }
         run.figure("fig_lac_curves",
-                   "Eq. (15), C(s) = ∫ e^{iα v^{(α−1)/α}} dv on s ∈ [0, 2], for α = −2, −1, −0.5, 1.5, 2, 3 (left) and their logarithmic curvature graphs, straight lines of slope "
+                   "Eq. (15), C(s) = ∫ e^{iα v^{(α−1)/α}} dv on s ∈ [0, 2], for α = −2, −1, −0.5, 1.5, 2, 3 (left) and "
+                   "their logarithmic curvature graphs, straight lines of slope "
                    "α (right).");
     }
     return run.finish();

@@ -13,9 +13,6 @@
 #include "cagd/analysis/curve_measures.hpp"
 #include "cagd/analysis/log_curvature_graph.hpp"
 #include "cagd/analysis/sampled_curve_measures.hpp"
-#include "cli/commands.hpp"
-#include "cli/method_options.hpp"
-#include "cli/output.hpp"
 #include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
 #include "cagd/core/point_csv.hpp"
@@ -24,6 +21,9 @@
 #include "cagd/export/curve_json.hpp"
 #include "cagd/methods/method_parameter_curve.hpp"
 #include "cagd/methods/method_registry.hpp"
+#include "cli/commands.hpp"
+#include "cli/method_options.hpp"
+#include "cli/output.hpp"
 
 namespace cagd::cli {
 
@@ -49,7 +49,9 @@ int analyze_samples(const std::string& path) {
     const auto matrix = [&](const std::vector<int>& cols) {
         Eigen::MatrixXd m(static_cast<Eigen::Index>(t.rows.size()), static_cast<Eigen::Index>(cols.size()));
         for (std::size_t i = 0; i < t.rows.size(); ++i)
-            for (std::size_t k = 0; k < cols.size(); ++k) m(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k)) = t.rows[i][static_cast<std::size_t>(cols[k])];
+            for (std::size_t k = 0; k < cols.size(); ++k)
+                m(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k)) =
+                    t.rows[i][static_cast<std::size_t>(cols[k])];
         return m;
     };
     analysis::CurveSamples s;
@@ -82,7 +84,8 @@ int analyze_samples(const std::string& path) {
         q.add("bending_energy", m.bending_energy);
     }
     q.commit();
-    std::cerr << "cagd analyze: sample-based (polyline length, trapezoid energy); accuracy grows with the samples of cagd interpolate --samples\n";
+    std::cerr << "cagd analyze: sample-based (polyline length, trapezoid energy); accuracy grows with the samples of "
+                 "cagd interpolate --samples\n";
     return 0;
 }
 
@@ -109,27 +112,37 @@ int analyze_document(const std::string& path) {
     q.add("max_distance_stated", d.form.max_distance, 3);
     add_curve_measures(q, c);
     if (!d.provenance.method.empty() && d.provenance.points.rows() > 0) {
-        const methods::InterpolationResult r = methods::interpolate(d.provenance.method, d.provenance.points, d.provenance.closed, d.provenance.parameters);
-        if (!r.outcome.ok() || !r.interpolant) throw NoResult("rebuilding " + d.provenance.method + ": " + r.outcome.message);
+        const methods::InterpolationResult r = methods::interpolate(d.provenance.method, d.provenance.points,
+                                                                    d.provenance.closed, d.provenance.parameters);
+        if (!r.outcome.ok() || !r.interpolant)
+            throw NoResult("rebuilding " + d.provenance.method + ": " + r.outcome.message);
         const methods::MethodParameterCurve rebuilt(*r.interpolant);
-        if (std::abs(rebuilt.t_max() - c.t_max()) > 1e-9 * std::max(1.0, std::abs(c.t_max())) || rebuilt.dimension() != c.dimension())
-            throw NoResult(path + ": the rebuilt " + d.provenance.method + " curve has another parameter range or dimension than the document's pieces");
+        if (std::abs(rebuilt.t_max() - c.t_max()) > 1e-9 * std::max(1.0, std::abs(c.t_max())) ||
+            rebuilt.dimension() != c.dimension())
+            throw NoResult(path + ": the rebuilt " + d.provenance.method +
+                           " curve has another parameter range or dimension than the document's pieces");
         q.add("rebuilt_max_distance", analysis::max_distance_same_parameter(rebuilt, c, 16), 3);
     }
     q.commit();
-    std::cerr << "cagd analyze: " << path << ": the document's " << (d.form.exact ? "exact" : "approximating") << " pieces, measured by quadrature"
-              << (d.provenance.method.empty() ? "" : "; rebuilt_max_distance compares them with " + d.provenance.method + " rebuilt from the document's points") << '\n';
+    std::cerr << "cagd analyze: " << path << ": the document's " << (d.form.exact ? "exact" : "approximating")
+              << " pieces, measured by quadrature"
+              << (d.provenance.method.empty() ? ""
+                                              : "; rebuilt_max_distance compares them with " + d.provenance.method +
+                                                    " rebuilt from the document's points")
+              << '\n';
     return 0;
 }
 
 int analyze_method(const AnalyzeArgs& a) {
     if (exports::curve_format_of_path(a.in) == exports::CurveFormat::json) {
-        if (!a.method.empty()) fail_input("cagd analyze", "--in " + a.in + " is a curve document; it names its method (drop --method)");
+        if (!a.method.empty())
+            fail_input("cagd analyze", "--in " + a.in + " is a curve document; it names its method (drop --method)");
         return analyze_document(a.in);
     }
     if (a.method.empty()) fail_input("cagd analyze", "--in needs --method (cagd interpolate --list-methods)");
     const methods::Method& method = methods::find_method(a.method);
-    const methods::ParameterValues values = methods::parse_parameter_values(method.name, method.parameters, given_parameters(a.options));
+    const methods::ParameterValues values =
+        methods::parse_parameter_values(method.name, method.parameters, given_parameters(a.options));
     const PointList points = read_user_points(a.in, a.closed);
     const methods::InterpolationResult r = methods::interpolate(method, points, a.closed, values);
     if (!r.outcome.ok() || !r.interpolant) throw NoResult(r.outcome.message);
@@ -146,8 +159,11 @@ int analyze_method(const AnalyzeArgs& a) {
         anomaly = analysis::closed_curve_anomaly(c, points, analysis::accurate_arc_length(c).value);
     }
     q.commit();
-    if (!anomaly.empty()) std::cerr << "cagd analyze: flagged: the closed curve loops where its points do not: " << anomaly << "\n";
-    if (c.dimension() == 2) std::cerr << "cagd analyze: areas are signed (counter-clockwise positive); an open curve is closed by the line from its last point to its first\n";
+    if (!anomaly.empty())
+        std::cerr << "cagd analyze: flagged: the closed curve loops where its points do not: " << anomaly << "\n";
+    if (c.dimension() == 2)
+        std::cerr << "cagd analyze: areas are signed (counter-clockwise positive); an open curve is closed by the line "
+                     "from its last point to its first\n";
     return 0;
 }
 
@@ -155,9 +171,15 @@ int analyze_method(const AnalyzeArgs& a) {
 
 Command add_analyze_command(CLI::App& app) {
     auto a = std::make_shared<AnalyzeArgs>();
-    CLI::App* c = app.add_subcommand("analyze", "Length, enclosed area, curvature extrema and bending energy of a curve CSV, or of a method's curve through points");
-    CLI::Option* curve = c->add_option("curve", a->curve, "curve CSV as written by cagd interpolate (sample-based measures); - for stdin");
-    CLI::Option* in = c->add_option("--in", a->in, "points CSV: build the curve with --method and integrate it; - for stdin; or a curve document (.json, cagd interpolate --out c.json): its pieces integrated, and compared with its method rebuilt");
+    CLI::App* c = app.add_subcommand("analyze",
+                                     "Length, enclosed area, curvature extrema and bending energy of a curve CSV, or "
+                                     "of a method's curve through points");
+    CLI::Option* curve = c->add_option("curve", a->curve,
+                                       "curve CSV as written by cagd interpolate (sample-based measures); - for stdin");
+    CLI::Option* in = c->add_option(
+        "--in", a->in,
+        "points CSV: build the curve with --method and integrate it; - for stdin; or a curve document (.json, cagd "
+        "interpolate --out c.json): its pieces integrated, and compared with its method rebuilt");
     add_method_options(c, a->method, a->options);
     c->add_flag("--closed", a->closed, "closed curve (with --in)");
     curve->excludes(in);

@@ -19,12 +19,12 @@
 // options) writes DIR from the N parts, byte for byte what one whole run writes. cagd_benchmark_mpi
 // does both on MPI ranks. The plan's options are defined in benchmark_options.cpp for both.
 #include <filesystem>
-#include <system_error>
 #include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
 #include <sstream>
+#include <system_error>
 
 #include "cagd/compare/interpolant_benchmark.hpp"
 #include "cagd/core/errors.hpp"
@@ -61,7 +61,8 @@ compare::WorkShare parse_part(const std::string& text) {
             good = false;
         }
     }
-    if (!good || n < 1 || n > 4096 || k < 1 || k > n) fail_input("cagd benchmark", "--part \"" + text + "\": expected K/N with 1 <= K <= N <= 4096");
+    if (!good || n < 1 || n > 4096 || k < 1 || k > n)
+        fail_input("cagd benchmark", "--part \"" + text + "\": expected K/N with 1 <= K <= N <= 4096");
     return {k - 1, n};
 }
 
@@ -69,10 +70,13 @@ std::string read_part(const std::string& path) {
     std::error_code ec;
     const std::uintmax_t size = std::filesystem::file_size(path, ec);
     if (ec) fail_input("cagd benchmark", "--merge " + path + ": " + ec.message());
-    if (size > kMaxPartBytes) fail_input("cagd benchmark", "--merge " + path + ": " + std::to_string(size) + " bytes, more than a part holds");
+    if (size > kMaxPartBytes)
+        fail_input("cagd benchmark",
+                   "--merge " + path + ": " + std::to_string(size) + " bytes, more than a part holds");
     std::ifstream in(path, std::ios::binary);
     std::string text(static_cast<std::size_t>(size), '\0');
-    if (!in.read(text.data(), static_cast<std::streamsize>(size))) fail_input("cagd benchmark", "--merge " + path + ": cannot be read");
+    if (!in.read(text.data(), static_cast<std::streamsize>(size)))
+        fail_input("cagd benchmark", "--merge " + path + ": cannot be read");
     return text;
 }
 
@@ -80,9 +84,12 @@ int run_benchmark(const BenchmarkArgs& a) {
     const compare::BenchmarkPlan plan = benchmark_plan(a.plan);
     if (!a.part.empty()) {
         const compare::WorkShare share = parse_part(a.part);
-        if (!a.timing_out.empty()) fail_input("cagd benchmark", "--timing-out: with --part the run times go into the part; give --timing-out to --merge");
+        if (!a.timing_out.empty())
+            fail_input("cagd benchmark",
+                       "--timing-out: with --part the run times go into the part; give --timing-out to --merge");
         OutputFile part(a.out, "--out");  // checked before the work
-        if (progress_enabled()) std::cerr << "cagd benchmark: part " << share.index + 1 << " of " << share.count << "\n";
+        if (progress_enabled())
+            std::cerr << "cagd benchmark: part " << share.index + 1 << " of " << share.count << "\n";
         part.stream() << compare::benchmark_part_text(plan, share, compare::run_benchmark(plan, share, a.plan.threads));
         part.commit();
         return 0;
@@ -98,10 +105,16 @@ int run_benchmark(const BenchmarkArgs& a) {
         std::filesystem::path c = std::filesystem::weakly_canonical(std::filesystem::absolute(p), ec);
         return c.has_filename() ? c : c.parent_path();
     };
-    const bool inside_out = !a.timing_out.empty() && directory(std::filesystem::path(a.timing_out).parent_path().empty() ? "." : std::filesystem::path(a.timing_out).parent_path()) == directory(a.out);
+    const bool inside_out =
+        !a.timing_out.empty() && directory(std::filesystem::path(a.timing_out).parent_path().empty()
+                                               ? "."
+                                               : std::filesystem::path(a.timing_out).parent_path()) == directory(a.out);
     if (!a.timing_out.empty() && !inside_out) timing.emplace(a.timing_out, "--timing-out");
-    if (progress_enabled() && parts.empty()) std::cerr << "cagd benchmark: " << plan.truth.sizes.size() << " sizes, " << plan.classic.size() << " classic data sets, " << plan.random.sets << " random sets per kind and size\n";
-    const compare::BenchmarkResults results = parts.empty() ? compare::run_benchmark(plan, {}, a.plan.threads) : compare::merge_benchmark_parts(plan, parts);
+    if (progress_enabled() && parts.empty())
+        std::cerr << "cagd benchmark: " << plan.truth.sizes.size() << " sizes, " << plan.classic.size()
+                  << " classic data sets, " << plan.random.sets << " random sets per kind and size\n";
+    const compare::BenchmarkResults results =
+        parts.empty() ? compare::run_benchmark(plan, {}, a.plan.threads) : compare::merge_benchmark_parts(plan, parts);
     stage_benchmark_files(out, compare::benchmark_files(plan, results));
     out.commit();
     if (inside_out) timing.emplace(a.timing_out, "--timing-out");
@@ -116,13 +129,23 @@ int run_benchmark(const BenchmarkArgs& a) {
 
 Command add_benchmark_command(CLI::App& app) {
     auto a = std::make_shared<BenchmarkArgs>();
-    auto* c = app.add_subcommand("benchmark", "Every method on points sampled from curves with a known answer: errors, convergence orders, leaderboards");
-    c->add_option("--out", a->out, "directory for truth_runs.csv, convergence_orders.csv, random_sets.csv, leaderboard.md, convergence_<family>.dat; with --part the part file")
+    auto* c = app.add_subcommand(
+        "benchmark",
+        "Every method on points sampled from curves with a known answer: errors, convergence orders, leaderboards");
+    c->add_option("--out", a->out,
+                  "directory for truth_runs.csv, convergence_orders.csv, random_sets.csv, leaderboard.md, "
+                  "convergence_<family>.dat; with --part the part file")
         ->required();
     add_benchmark_plan_options(c, a->plan);
-    c->add_option("--timing-out", a->timing_out, "CSV file for the random sets' run times per configuration (median, 90th percentile, largest); absent: not written");
-    auto* part = c->add_option("--part", a->part, "K/N: compute only share K of N of the work and write it to --out as a part file, for --merge");
-    c->add_option("--merge", a->merge, "part files (all N of one plan, any order; the same options as their runs): write --out from them instead of computing")
+    c->add_option("--timing-out", a->timing_out,
+                  "CSV file for the random sets' run times per configuration (median, 90th percentile, largest); "
+                  "absent: not written");
+    auto* part =
+        c->add_option("--part", a->part,
+                      "K/N: compute only share K of N of the work and write it to --out as a part file, for --merge");
+    c->add_option("--merge", a->merge,
+                  "part files (all N of one plan, any order; the same options as their runs): write --out from them "
+                  "instead of computing")
         ->excludes(part);
     return {c, [a] { return run_benchmark(*a); }};
 }

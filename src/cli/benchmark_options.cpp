@@ -28,7 +28,8 @@ std::vector<int> parse_sizes(const std::string& option, const std::string& text)
         } catch (const std::exception&) {
             used = 0;
         }
-        if (used != s.size() || n < 3 || n > 100000) fail_input("cagd benchmark", option + ": \"" + s + "\" is not a whole number of points in 3..100000");
+        if (used != s.size() || n < 3 || n > 100000)
+            fail_input("cagd benchmark", option + ": \"" + s + "\" is not a whole number of points in 3..100000");
         sizes.push_back(n);
     }
     return sizes;
@@ -38,18 +39,26 @@ std::vector<int> parse_sizes(const std::string& option, const std::string& text)
 
 void add_benchmark_plan_options(CLI::App* c, BenchmarkPlanArgs& a) {
     c->add_option("--sizes", a.sizes, "numbers of points, comma-separated (each 3..100000)")->capture_default_str();
-    c->add_option("--families", a.families, "truth families, comma-separated (absent: all: line, circle, ellipse, epitrochoid, clothoid, log-aesthetic, helix, trefoil)");
+    c->add_option("--families", a.families,
+                  "truth families, comma-separated (absent: all: line, circle, ellipse, epitrochoid, clothoid, "
+                  "log-aesthetic, helix, trefoil)");
     c->add_option("--methods", a.methods, "configurations, comma-separated (absent: every configuration)");
-    c->add_option("--threads", a.threads, "cases measured at once (0: the hardware's; results do not depend on it)")->check(CLI::Range(0, 256));
-    c->add_option("--random-sets", a.random_sets, "seeded random sets per kind (walk, scatter) and size, for the failure rates (0: none)")
+    c->add_option("--threads", a.threads, "cases measured at once (0: the hardware's; results do not depend on it)")
+        ->check(CLI::Range(0, 256));
+    c->add_option("--random-sets", a.random_sets,
+                  "seeded random sets per kind (walk, scatter) and size, for the failure rates (0: none)")
         ->capture_default_str()
         ->check(CLI::Range(0, 100000));
-    c->add_option("--random-sizes", a.random_sizes, "numbers of points of the random sets, comma-separated (each 3..100000)")->capture_default_str();
-    c->add_option("--scatter-max-points", a.scatter_max_points, "scattered random sets only up to this many points (walks at every --random-sizes)")
+    c->add_option("--random-sizes", a.random_sizes,
+                  "numbers of points of the random sets, comma-separated (each 3..100000)")
+        ->capture_default_str();
+    c->add_option("--scatter-max-points", a.scatter_max_points,
+                  "scattered random sets only up to this many points (walks at every --random-sizes)")
         ->capture_default_str()
         ->check(CLI::Range(0, 100000));
     c->add_option("--classic", a.classic,
-                  "manifest of classic data sets (CSV: name, group, file, closed, source; reference/benchmark/classic_data.csv): classic_runs.csv, classic.md "
+                  "manifest of classic data sets (CSV: name, group, file, closed, source; "
+                  "reference/benchmark/classic_data.csv): classic_runs.csv, classic.md "
                   "and a summary in leaderboard.md; absent: none");
 }
 

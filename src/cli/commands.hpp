@@ -32,10 +32,12 @@ Command add_benchmark_command(CLI::App& app);
 // An option whose text names one value of an enumeration (CLI11's checked transform): the help
 // lists the names and shows the current value of `value` as the default.
 template <class Enum>
-CLI::Option* add_enum_option(CLI::App* app, const std::string& name, Enum& value, const std::map<std::string, Enum>& names, const std::string& help) {
+CLI::Option* add_enum_option(CLI::App* app, const std::string& name, Enum& value,
+                             const std::map<std::string, Enum>& names, const std::string& help) {
     std::string listed;
     for (const auto& [text, e] : names) listed += (listed.empty() ? "" : "|") + text;
-    CLI::Option* o = app->add_option(name, value, help)->transform(CLI::CheckedTransformer(names).description("{" + listed + "}"));
+    CLI::Option* o =
+        app->add_option(name, value, help)->transform(CLI::CheckedTransformer(names).description("{" + listed + "}"));
     for (const auto& [text, e] : names)
         if (e == value) o->default_str(text);
     return o;

@@ -18,11 +18,8 @@
 #include <string>
 #include <vector>
 
-#include "cli/commands.hpp"
-#include "cli/compare_panels_script.hpp"
-#include "cli/output.hpp"
-#include "cagd/compare/comparison_tables.hpp"
 #include "cagd/compare/comparison_figure.hpp"
+#include "cagd/compare/comparison_tables.hpp"
 #include "cagd/compare/method_comparison.hpp"
 #include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
@@ -31,6 +28,9 @@
 #include "cagd/export/curve_formats.hpp"
 #include "cagd/methods/curve_provenance.hpp"
 #include "cagd/methods/method_parameter_curve.hpp"
+#include "cli/commands.hpp"
+#include "cli/compare_panels_script.hpp"
+#include "cli/output.hpp"
 
 namespace cagd::cli {
 
@@ -65,7 +65,9 @@ int run_compare(const CompareArgs& a) {
         std::string m;
         while (std::getline(ss, m, ',')) options.methods.push_back(methods::find_configuration(m).name);
     }
-    if (points.cols() != 2 && points.cols() != 3) fail_input(who, a.in + ": compares planar or space curves, the points have " + std::to_string(points.cols()) + " columns");
+    if (points.cols() != 2 && points.cols() != 3)
+        fail_input(who, a.in + ": compares planar or space curves, the points have " + std::to_string(points.cols()) +
+                            " columns");
     const int dimension = static_cast<int>(points.cols());
     // --export: the formats of the per-method curve files, checked before the work.
     std::vector<exports::CurveFormat> export_formats;
@@ -74,16 +76,21 @@ int run_compare(const CompareArgs& a) {
         std::string f;
         while (std::getline(ss, f, ',')) {
             export_formats.push_back(exports::curve_format_named(f));
-            if (dimension == 3 && !exports::curve_format_info(export_formats.back()).space_curves) fail_input(who, "--export " + f + ": the format is planar, the points have 3 columns");
+            if (dimension == 3 && !exports::curve_format_info(export_formats.back()).space_curves)
+                fail_input(who, "--export " + f + ": the format is planar, the points have 3 columns");
         }
     }
-    OutputDirectory out(a.out);         // checked before the work
-    OutputFile table_out("-", "");      // the Markdown table on standard output, checked too
+    OutputDirectory out(a.out);     // checked before the work
+    OutputFile table_out("-", "");  // the Markdown table on standard output, checked too
     const bool progress = progress_enabled();
     if (progress)
-        std::cerr << "cagd compare: " << points.rows() << " points, " << (options.methods.empty() ? methods::configurations().size() : options.methods.size()) << " methods\n";
+        std::cerr << "cagd compare: " << points.rows() << " points, "
+                  << (options.methods.empty() ? methods::configurations().size() : options.methods.size())
+                  << " methods\n";
     options.on_method = [progress](const compare::MethodComparison& r) {
-        if (progress) std::cerr << "cagd compare: " << r.method << ": " << compare::to_string(r.status) << (r.note.empty() ? "" : " (" + r.note + ")") << ", " << format_number(r.seconds, 3) << " s\n";
+        if (progress)
+            std::cerr << "cagd compare: " << r.method << ": " << compare::to_string(r.status)
+                      << (r.note.empty() ? "" : " (" + r.note + ")") << ", " << format_number(r.seconds, 3) << " s\n";
     };
     const std::vector<compare::MethodComparison> results = compare::compare_methods(points, options);
 
@@ -100,11 +107,12 @@ int run_compare(const CompareArgs& a) {
     // pixels wide, so 4000 samples still put several on every pixel column.
     constexpr int kFigureSamplesPerMethod = 4000;
     const int spans = static_cast<int>(points.rows()) - (a.closed ? 0 : 1);
-    const compare::FigureData fig = compare::comparison_figure_data(results, points, compare::figure_sampling(std::max(spans, 1), kFigureSamplesPerMethod));
+    const compare::FigureData fig = compare::comparison_figure_data(
+        results, points, compare::figure_sampling(std::max(spans, 1), kFigureSamplesPerMethod));
     // The folder's tables (compare/comparison_tables.hpp) are independent: written in parallel (at
     // 10^5 points, 0.9 s one after another).
-    const std::vector<compare::ComparisonTable> tables =
-        compare::comparison_tables(results, fig, points, a.closed, {.timing = true, .measure_digits = 8, .figure_digits = 8, .point_digits = 17});
+    const std::vector<compare::ComparisonTable> tables = compare::comparison_tables(
+        results, fig, points, a.closed, {.timing = true, .measure_digits = 8, .figure_digits = 8, .point_digits = 17});
     std::vector<std::string> staged;
     for (const compare::ComparisonTable& t : tables) staged.push_back(out.staged(t.file));
     parallel_for(static_cast<long>(tables.size()), hardware_threads(), [&](long k) {
@@ -120,14 +128,17 @@ int run_compare(const CompareArgs& a) {
         if (!r.interpolant) continue;
         const methods::Configuration conf = methods::find_configuration(r.method);
         const methods::MethodParameterCurve curve(*r.interpolant);
-        const exports::CurveProvenance provenance = methods::method_provenance(*conf.method, conf.values, points, a.closed);
+        const exports::CurveProvenance provenance =
+            methods::method_provenance(*conf.method, conf.values, points, a.closed);
         exports::ExportOptions export_options;
         export_options.points = true;
         export_options.comb = dimension == 2;
         for (const exports::CurveFormat format : export_formats) {
             OutputFile f(out.staged("curve_" + r.method + exports::curve_format_info(format).extensions.front()));
-            if (const Outcome written = exports::write_curve(f.stream(), format, curve, provenance, export_options); !written.ok())
-                throw NoResult(r.method + " as " + exports::curve_format_info(format).name + ": " + written.message + " (nothing was written)");
+            if (const Outcome written = exports::write_curve(f.stream(), format, curve, provenance, export_options);
+                !written.ok())
+                throw NoResult(r.method + " as " + exports::curve_format_info(format).name + ": " + written.message +
+                               " (nothing was written)");
             f.commit();
         }
     }
@@ -139,40 +150,54 @@ int run_compare(const CompareArgs& a) {
     }
     table_out.stream() << md;
     const bool plot = !a.no_plot && std::system("command -v gnuplot > /dev/null 2>&1") == 0;
-    if (!a.no_plot && !plot) std::cerr << "cagd compare: gnuplot not found; the figure data and compare_panels.gp are in " << a.out << "\n";
+    if (!a.no_plot && !plot)
+        std::cerr << "cagd compare: gnuplot not found; the figure data and compare_panels.gp are in " << a.out << "\n";
     if (plot) {
         // The three figures are independent: one gnuplot each, as many at a time as there are cores,
         // drawn into the staging directory.
         const std::vector<std::string> figures =
-            dimension == 2 ? std::vector<std::string>{"combs", "curvature", "curves"} : std::vector<std::string>{"curvature", "torsion", "curves"};  // the slowest first
+            dimension == 2 ? std::vector<std::string>{"combs", "curvature", "curves"}
+                           : std::vector<std::string>{"curvature", "torsion", "curves"};  // the slowest first
         std::vector<std::string> commands;
         for (const std::string& figure : figures) {
             out.staged(figure + ".png");
-            const std::string settings = "datadir=" + gnuplot_quoted(out.staging()) + "; prefix=''; space=" + std::to_string(dimension == 3 ? 1 : 0) +
-                                         "; heading=" + gnuplot_quoted(std::filesystem::path(a.in).filename().string()) + "; formats='png'; figures='" + figure +
-                                         "'; point_every=" + std::to_string(std::max<Eigen::Index>(1, points.rows() / 5000)) +  // ≤ ~5000 dots in a figure's panel
-                                         // ≤ ~1000 in each small panel of the combs figure: it draws the points once per method, and
-                                         // cairo's dots were two thirds of that figure's time at 10^5 points (1.1 of 1.6 s)
-                                         "; panel_point_every=" + std::to_string(std::max<Eigen::Index>(1, points.rows() / 1000));
+            const std::string settings =
+                "datadir=" + gnuplot_quoted(out.staging()) +
+                "; prefix=''; space=" + std::to_string(dimension == 3 ? 1 : 0) +
+                "; heading=" + gnuplot_quoted(std::filesystem::path(a.in).filename().string()) +
+                "; formats='png'; figures='" + figure + "'; point_every=" +
+                std::to_string(std::max<Eigen::Index>(1, points.rows() / 5000)) +  // ≤ ~5000 dots in a figure's panel
+                // ≤ ~1000 in each small panel of the combs figure: it draws the points once per method, and
+                // cairo's dots were two thirds of that figure's time at 10^5 points (1.1 of 1.6 s)
+                "; panel_point_every=" + std::to_string(std::max<Eigen::Index>(1, points.rows() / 1000));
             // gnuplot's messages (its warnings on few points, say) go to a log in the staging
             // directory, never staged: it is read only when gnuplot fails, and leaves with the staging.
-            commands.push_back("gnuplot -e " + shell_quoted(settings) + " " + shell_quoted(script) + " 2> " + shell_quoted(out.staging() + "/" + figure + ".log"));
+            commands.push_back("gnuplot -e " + shell_quoted(settings) + " " + shell_quoted(script) + " 2> " +
+                               shell_quoted(out.staging() + "/" + figure + ".log"));
         }
         std::vector<int> status(commands.size(), 0);
         parallel_for(static_cast<long>(commands.size()), hardware_threads(),
-                     [&](long k) { status[static_cast<std::size_t>(k)] = std::system(commands[static_cast<std::size_t>(k)].c_str()); }, {});
+                     [&](long k) {
+                         status[static_cast<std::size_t>(k)] =
+                             std::system(commands[static_cast<std::size_t>(k)].c_str());
+                     },
+                     {});
         for (std::size_t k = 0; k < commands.size(); ++k)
             if (status[k] != 0) {
                 std::ifstream log(out.staging() + "/" + figures[k] + ".log");
                 std::string line, reason;
                 while (reason.empty() && std::getline(log, line))
-                    if (line.find_first_not_of(" \t^") != std::string::npos) reason = line.substr(line.find_first_not_of(" \t"));
-                throw NoResult("gnuplot failed to draw the " + figures[k] + " figure" + (reason.empty() ? "" : ": " + reason) + " (nothing was written)");
+                    if (line.find_first_not_of(" \t^") != std::string::npos)
+                        reason = line.substr(line.find_first_not_of(" \t"));
+                throw NoResult("gnuplot failed to draw the " + figures[k] + " figure" +
+                               (reason.empty() ? "" : ": " + reason) + " (nothing was written)");
             }
     }
     out.commit();
     table_out.commit();
-    if (progress && plot) std::cerr << "cagd compare: figures " << a.out << (dimension == 2 ? "/{curves,combs,curvature}.png\n" : "/{curves,curvature,torsion}.png\n");
+    if (progress && plot)
+        std::cerr << "cagd compare: figures " << a.out
+                  << (dimension == 2 ? "/{curves,combs,curvature}.png\n" : "/{curves,curvature,torsion}.png\n");
     return 0;
 }
 
@@ -180,14 +205,19 @@ int run_compare(const CompareArgs& a) {
 
 Command add_compare_command(CLI::App& app) {
     auto a = std::make_shared<CompareArgs>();
-    CLI::App* c = app.add_subcommand("compare", "Every interpolation method on the same points: fairness table (CSV, Markdown) and figures");
+    CLI::App* c = app.add_subcommand(
+        "compare", "Every interpolation method on the same points: fairness table (CSV, Markdown) and figures");
     c->add_option("--in", a->in, "points CSV: x,y or x,y,z per line, optional header")->required();
     c->add_option("--out", a->out, "output directory (created, or its files replaced, as a whole)")->required();
-    c->add_flag("--closed", a->closed, "closed curves (methods that draw open curves only are listed as not applicable)");
-    c->add_option("--methods", a->methods, "comma-separated presets or methods (a method runs with its defaults), e.g. pseudo-spline-exact,cubic-b,hosaka (default: every preset)");
+    c->add_flag("--closed", a->closed,
+                "closed curves (methods that draw open curves only are listed as not applicable)");
+    c->add_option("--methods", a->methods,
+                  "comma-separated presets or methods (a method runs with its defaults), e.g. "
+                  "pseudo-spline-exact,cubic-b,hosaka (default: every preset)");
     c->add_flag("--no-plot", a->no_plot, "write the figure data and script but do not run gnuplot");
     c->add_option("--export", a->export_formats,
-                  "also write each method's curve as curve_<method>.<ext> in these comma-separated formats: csv, json, svg (planar), dxf, step (e.g. svg,dxf)");
+                  "also write each method's curve as curve_<method>.<ext> in these comma-separated formats: csv, json, "
+                  "svg (planar), dxf, step (e.g. svg,dxf)");
     return {c, [a] { return run_compare(*a); }};
 }
 

@@ -19,10 +19,10 @@
 #include <new>
 #include <vector>
 
+#include "cagd/core/errors.hpp"
 #include "cli/commands.hpp"
 #include "cli/output.hpp"
 #include "cli/process_setup.hpp"
-#include "cagd/core/errors.hpp"
 
 int main(int argc, char** argv) {
     using namespace cagd::cli;
@@ -35,10 +35,14 @@ int main(int argc, char** argv) {
     bool quiet = false;
     app.add_flag("--quiet", quiet, "no progress on stderr (it is shown only when stderr is a terminal anyway)");
     bool no_cache = false;
-    app.add_flag("--no-cache", no_cache, "build the pseudo-energy tables in memory, not in the user's cache ($XDG_CACHE_HOME/cagd or ~/.cache/cagd; also CAGD_NO_CACHE=1)");
+    app.add_flag("--no-cache", no_cache,
+                 "build the pseudo-energy tables in memory, not in the user's cache ($XDG_CACHE_HOME/cagd or "
+                 "~/.cache/cagd; also CAGD_NO_CACHE=1)");
     const std::vector<Command> commands = {
-        add_interpolate_command(app), add_analyze_command(app),      add_compare_command(app), add_surface_command(app),  add_smooth_command(app), add_smooth_surface_command(app),
-        add_energy_command(app),      add_energy_table_command(app), add_lac_command(app),     add_monotone_command(app), add_lac3d_command(app),  add_typical_surface_command(app),
+        add_interpolate_command(app), add_analyze_command(app),      add_compare_command(app),
+        add_surface_command(app),     add_smooth_command(app),       add_smooth_surface_command(app),
+        add_energy_command(app),      add_energy_table_command(app), add_lac_command(app),
+        add_monotone_command(app),    add_lac3d_command(app),        add_typical_surface_command(app),
         add_benchmark_command(app),
     };
     try {

@@ -10,7 +10,9 @@ namespace cagd::cli {
 CLI::Option* add_method_options(CLI::App* app, std::string& method, MethodOptions& o) {
     std::string names;
     for (const std::string& n : methods::method_names()) names += (names.empty() ? "" : " | ") + n;
-    CLI::Option* m = app->add_option("--method", method, "interpolation method: " + names + " (--list-methods describes each)")->check(CLI::IsMember(methods::method_names()));
+    CLI::Option* m =
+        app->add_option("--method", method, "interpolation method: " + names + " (--list-methods describes each)")
+            ->check(CLI::IsMember(methods::method_names()));
     // Each parameter name once; its help says what it is for each method that has it, methods
     // with the same declaration named together.
     std::vector<std::string> order;
@@ -19,7 +21,8 @@ CLI::Option* add_method_options(CLI::App* app, std::string& method, MethodOption
     for (const methods::Method& method_entry : methods::registry())
         for (const methods::Parameter& p : method_entry.parameters) {
             if (!meanings.count(p.name)) order.push_back(p.name);
-            const std::string text = p.help + " [" + p.domain() + (p.default_text.empty() ? "" : ", default " + p.default_text) + "]";
+            const std::string text =
+                p.help + " [" + p.domain() + (p.default_text.empty() ? "" : ", default " + p.default_text) + "]";
             auto& list = meanings[p.name];
             bool merged = false;
             for (auto& [who, t] : list)
@@ -32,7 +35,8 @@ CLI::Option* add_method_options(CLI::App* app, std::string& method, MethodOption
         for (const auto& [who, text] : list) help[name] += (help[name].empty() ? "" : "; ") + who + ": " + text;
     for (const std::string& name : order) {
         CLI::Option* opt = app->add_option("--" + name, o.text[name], help[name]);
-        if (choices.count(name)) opt->check(CLI::IsMember(std::vector<std::string>(choices[name].begin(), choices[name].end())));
+        if (choices.count(name))
+            opt->check(CLI::IsMember(std::vector<std::string>(choices[name].begin(), choices[name].end())));
         o.options[name] = opt;
     }
     return m;

@@ -14,9 +14,9 @@
 #include <utility>
 #include <vector>
 
-#include "cagd/io/output_file.hpp"
 #include "cagd/core/points.hpp"
 #include "cagd/export/curve_formats.hpp"
+#include "cagd/io/output_file.hpp"
 
 namespace cagd::cli {
 

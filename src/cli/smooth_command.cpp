@@ -3,12 +3,12 @@
 // point list.
 #include <memory>
 
-#include "cli/commands.hpp"
-#include "cli/output.hpp"
 #include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
 #include "cagd/core/point_csv.hpp"
 #include "cagd/smoothing/elastic_line.hpp"
+#include "cli/commands.hpp"
+#include "cli/output.hpp"
 
 namespace cagd::cli {
 
@@ -30,7 +30,8 @@ int run_smooth(const SmoothArgs& a) {
     const PointList points = read_data_points(a.in);
     std::vector<double> lambda{a.lambda};
     if (!a.lambda_file.empty()) lambda = read_values_csv(a.lambda_file);
-    require_output_rows(static_cast<double>(a.samples) * static_cast<double>(points.rows()) + 1, "--samples " + std::to_string(a.samples));
+    require_output_rows(static_cast<double>(a.samples) * static_cast<double>(points.rows()) + 1,
+                        "--samples " + std::to_string(a.samples));
     OutputFile out(a.out);
     const char* names = "xyz";
     if (a.form == SmoothForm::yx) {  // rows x, y[, z]: y(x) (and z(x)) smoothed
@@ -75,14 +76,17 @@ int run_smooth(const SmoothArgs& a) {
 
 Command add_smooth_command(CLI::App& app) {
     auto a = std::make_shared<SmoothArgs>();
-    CLI::App* c = app.add_subcommand("smooth", "Elastic-line smoothing (hosaka section 6, eq 50-52): y(x) data or a parametric point list");
-    CLI::Option* lambda = c->add_option("--lambda", a->lambda, "lambda = EI/k for every point (>= 0; 0 interpolates; units length^3)");
+    CLI::App* c = app.add_subcommand(
+        "smooth", "Elastic-line smoothing (hosaka section 6, eq 50-52): y(x) data or a parametric point list");
+    CLI::Option* lambda =
+        c->add_option("--lambda", a->lambda, "lambda = EI/k for every point (>= 0; 0 interpolates; units length^3)");
     c->add_option("--lambda-file", a->lambda_file, "one lambda per data point, one per line");
     add_enum_option(c, "--form", a->form, {{"yx", SmoothForm::yx}, {"parametric", SmoothForm::parametric}},
                     "yx: rows x,y[,z], x strictly increasing | parametric: 2-D/3-D points, chord parameter");
     c->add_option("--samples", a->samples, "samples per interval")->check(CLI::Range(1, 100000));
     c->add_option("--in", a->in, "data CSV; - for stdin")->required();
-    c->add_option("--out", a->out, "smoothed curve CSV (yx: x, values, first and second derivatives); - for stdout")->required();
+    c->add_option("--out", a->out, "smoothed curve CSV (yx: x, values, first and second derivatives); - for stdout")
+        ->required();
     return {c, [a, lambda] {
                 a->lambda_given = lambda->count() > 0;
                 return run_smooth(*a);

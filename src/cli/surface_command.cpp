@@ -3,8 +3,6 @@
 // patches (--out S.json) or one B-spline surface (--out S.step), export/surface_form.hpp.
 #include <memory>
 
-#include "cli/commands.hpp"
-#include "cli/output.hpp"
 #include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
 #include "cagd/core/point_csv.hpp"
@@ -12,6 +10,8 @@
 #include "cagd/export/surface_form.hpp"
 #include "cagd/surface/boundary_surface.hpp"
 #include "cagd/surface/hosaka_patch.hpp"
+#include "cli/commands.hpp"
+#include "cli/output.hpp"
 
 namespace cagd::cli {
 
@@ -32,8 +32,10 @@ void require(const std::string& value, const char* kind, const char* option) {
 
 // The exact patches of a polynomial surface in json or step (exports::write_surface refuses a form
 // that is not exact: a numerical outcome, nothing written).
-void write_patches(const exports::SurfaceForm& form, exports::CurveFormat format, const exports::SurfaceProvenance& provenance, OutputFile& out) {
-    if (const Outcome written = exports::write_surface(out.stream(), format, form, provenance); !written.ok()) throw NoResult(written.message);
+void write_patches(const exports::SurfaceForm& form, exports::CurveFormat format,
+                   const exports::SurfaceProvenance& provenance, OutputFile& out) {
+    if (const Outcome written = exports::write_surface(out.stream(), format, form, provenance); !written.ok())
+        throw NoResult(written.message);
 }
 
 // eq (30), m = 1, node derivatives from splines along the grid lines.
@@ -41,7 +43,8 @@ void write_tensor(const SurfaceArgs& a, exports::CurveFormat format, OutputFile&
     require(a.in, "tensor", "--in");
     const int n = a.samples;
     const surface::CartesianSurface s = surface::cartesian_spline_surface(read_data_points(a.in));
-    if (format != exports::CurveFormat::csv) return write_patches(exports::to_bezier(s), format, {"hosaka-cartesian", {{"m", "1"}, {"in", a.in}}}, out);
+    if (format != exports::CurveFormat::csv)
+        return write_patches(exports::to_bezier(s), format, {"hosaka-cartesian", {{"m", "1"}, {"in", a.in}}}, out);
     CsvOutput w(out, {"x", "y", "z", "zx", "zy"});
     for (int i = 0; i <= n; ++i)
         for (int j = 0; j <= n; ++j) {
@@ -54,11 +57,18 @@ void write_tensor(const SurfaceArgs& a, exports::CurveFormat format, OutputFile&
 
 // eq (28) with S0 = 0.
 void write_coons(const SurfaceArgs& a, exports::CurveFormat format, OutputFile& out) {
-    for (const auto& [v, o] : {std::pair{a.bottom, "--bottom"}, {a.left, "--left"}, {a.top, "--top"}, {a.right, "--right"}}) require(v, "coons", o);
+    for (const auto& [v, o] :
+         {std::pair{a.bottom, "--bottom"}, {a.left, "--left"}, {a.top, "--top"}, {a.right, "--right"}})
+        require(v, "coons", o);
     const int n = a.samples;
-    const surface::EdgeFormPatch s(1, surface::edges_through_points(read_data_points(a.bottom), read_data_points(a.left), read_data_points(a.top), read_data_points(a.right)));
+    const surface::EdgeFormPatch s(
+        1, surface::edges_through_points(read_data_points(a.bottom), read_data_points(a.left), read_data_points(a.top),
+                                         read_data_points(a.right)));
     if (format != exports::CurveFormat::csv)
-        return write_patches(exports::to_bezier(s), format, {"hosaka-coons", {{"m", "1"}, {"bottom", a.bottom}, {"left", a.left}, {"top", a.top}, {"right", a.right}}}, out);
+        return write_patches(
+            exports::to_bezier(s), format,
+            {"hosaka-coons", {{"m", "1"}, {"bottom", a.bottom}, {"left", a.left}, {"top", a.top}, {"right", a.right}}},
+            out);
     const Eigen::VectorXd probe = s.point(0, 0);
     std::vector<std::string> header{"u", "v", "x", "y"};
     if (probe.size() == 3) header.push_back("z");
@@ -75,7 +85,9 @@ void write_coons(const SurfaceArgs& a, exports::CurveFormat format, OutputFile& 
 // eq (31) between two boundary curves.
 void write_boundary(const SurfaceArgs& a, exports::CurveFormat format, OutputFile& out) {
     if (format != exports::CurveFormat::csv)
-        fail_input("cagd surface", "--kind boundary: the surface between two boundary curves is not polynomial (eq 31 over y between y_0(x) and y_1(x)); it leaves as a csv grid only");
+        fail_input("cagd surface",
+                   "--kind boundary: the surface between two boundary curves is not polynomial (eq 31 over y between "
+                   "y_0(x) and y_1(x)); it leaves as a csv grid only");
     require(a.lower, "boundary", "--lower");
     require(a.upper, "boundary", "--upper");
     const int n = a.samples;
@@ -84,7 +96,8 @@ void write_boundary(const SurfaceArgs& a, exports::CurveFormat format, OutputFil
         lower_d.push_back(a.lower_curvature);
         upper_d.push_back(a.upper_curvature);
     }
-    const surface::BoundaryConformingSurface s(a.m, surface::boundary_through_points(read_data_points(a.lower), lower_d),
+    const surface::BoundaryConformingSurface s(a.m,
+                                               surface::boundary_through_points(read_data_points(a.lower), lower_d),
                                                surface::boundary_through_points(read_data_points(a.upper), upper_d));
     CsvOutput w(out, {"x", "y", "z"});
     for (int i = 0; i <= n; ++i) {
@@ -100,8 +113,14 @@ void write_boundary(const SurfaceArgs& a, exports::CurveFormat format, OutputFil
 
 Command add_surface_command(CLI::App& app) {
     auto a = std::make_shared<SurfaceArgs>();
-    CLI::App* c = app.add_subcommand("surface", "Hosaka surfaces (section 4): tensor (eq 30 over a grid of heights), coons (eq 28, S0 = 0), boundary (eq 31)");
-    add_enum_option(c, "--kind", a->kind, {{"tensor", SurfaceKind::tensor}, {"coons", SurfaceKind::coons}, {"boundary", SurfaceKind::boundary}}, "surface kind")->required();
+    CLI::App* c = app.add_subcommand(
+        "surface",
+        "Hosaka surfaces (section 4): tensor (eq 30 over a grid of heights), coons (eq 28, S0 = 0), boundary (eq 31)");
+    add_enum_option(
+        c, "--kind", a->kind,
+        {{"tensor", SurfaceKind::tensor}, {"coons", SurfaceKind::coons}, {"boundary", SurfaceKind::boundary}},
+        "surface kind")
+        ->required();
     c->add_option("--in", a->in, "tensor: heights CSV, x,y,z per line covering a rectangular grid");
     c->add_option("--bottom", a->bottom, "coons: points of the edge v = 0 (R1), from S(0,0) to S(1,0)");
     c->add_option("--left", a->left, "coons: points of the edge u = 0 (R2), from S(0,0) to S(0,1)");
@@ -115,8 +134,12 @@ Command add_surface_command(CLI::App& app) {
     c->add_option("--lower-curvature", a->lower_curvature, "boundary, m = 2: d2z/dy2 along L0 (constant)");
     c->add_option("--upper-curvature", a->upper_curvature, "boundary, m = 2: d2z/dy2 along L1 (constant)");
     c->add_option("--samples", a->samples, "samples per direction ((N+1)^2 rows)")->check(CLI::Range(1, 3000));
-    c->add_option("--out", a->out, "by extension: .csv grid of samples, .json exact Bezier patches (tensor, coons), .step/.stp one B-spline surface (tensor, coons); - for stdout (csv unless --format)")->required();
-    c->add_option("--format", a->format, "output format, whatever the extension")->check(CLI::IsMember(surface_format_names()));
+    c->add_option("--out", a->out,
+                  "by extension: .csv grid of samples, .json exact Bezier patches (tensor, coons), .step/.stp one "
+                  "B-spline surface (tensor, coons); - for stdout (csv unless --format)")
+        ->required();
+    c->add_option("--format", a->format, "output format, whatever the extension")
+        ->check(CLI::IsMember(surface_format_names()));
     return {c, [a] {
                 const exports::CurveFormat format = surface_output_format(a->format, a->out, "cagd surface");
                 OutputFile out(a->out);

@@ -44,7 +44,9 @@ using cagd::detail::OpenCascadeBSpline;
 // which interpolates on two threads.
 void silence_messenger() { Message::DefaultMessenger()->ChangePrinters().Clear(); }
 
-gp_Pnt point(const Eigen::MatrixXd& rows, Eigen::Index i) { return gp_Pnt(rows(i, 0), rows(i, 1), rows.cols() > 2 ? rows(i, 2) : 0.0); }
+gp_Pnt point(const Eigen::MatrixXd& rows, Eigen::Index i) {
+    return gp_Pnt(rows(i, 0), rows(i, 1), rows.cols() > 2 ? rows(i, 2) : 0.0);
+}
 
 // Row i of `rows` mapped to (row − centre) / scale: a gp_Pnt2d for planar rows, a gp_Pnt otherwise.
 template <class Point>
@@ -61,14 +63,17 @@ Point mapped_point(const Eigen::MatrixXd& rows, Eigen::Index i, const Eigen::Row
 // GeomAPI_Interpolate, or for planar points Geom2dAPI_Interpolate (the same algorithm on 2-D
 // points: its arrays hold two coordinates, not three with z = 0), into `out`, mapped back.
 template <class Interpolator, class PointArray, class Point>
-bool interpolate_with(const Eigen::MatrixXd& points, const Eigen::RowVectorXd& centre, double scale, bool closed, double tolerance, OpenCascadeBSpline& out,
-                      std::string& message) {
+bool interpolate_with(const Eigen::MatrixXd& points, const Eigen::RowVectorXd& centre, double scale, bool closed,
+                      double tolerance, OpenCascadeBSpline& out, std::string& message) {
     Handle(PointArray) array = new PointArray(1, static_cast<int>(points.rows()));
-    for (Eigen::Index i = 0; i < points.rows(); ++i) array->SetValue(static_cast<int>(i) + 1, mapped_point<Point>(points, i, centre, scale));
+    for (Eigen::Index i = 0; i < points.rows(); ++i)
+        array->SetValue(static_cast<int>(i) + 1, mapped_point<Point>(points, i, centre, scale));
     Interpolator interpolate(array, closed, tolerance);
     interpolate.Perform();
     if (!interpolate.IsDone()) {
-        message = std::string("OpenCASCADE's ") + (std::is_same_v<Point, gp_Pnt2d> ? "Geom2dAPI_Interpolate" : "GeomAPI_Interpolate") + " did not find a curve";
+        message = std::string("OpenCASCADE's ") +
+                  (std::is_same_v<Point, gp_Pnt2d> ? "Geom2dAPI_Interpolate" : "GeomAPI_Interpolate") +
+                  " did not find a curve";
         return false;
     }
     // The interpolator's own curve, changed in place (no copy: the interpolator ends here).
@@ -77,22 +82,28 @@ bool interpolate_with(const Eigen::MatrixXd& points, const Eigen::RowVectorXd& c
     out.degree = curve->Degree();
     out.knots.clear();
     out.knots.reserve(static_cast<std::size_t>(curve->NbPoles() + curve->Degree() + 1));
-    for (int k = 1; k <= curve->NbKnots(); ++k) out.knots.insert(out.knots.end(), static_cast<std::size_t>(curve->Multiplicity(k)), curve->Knot(k) * scale);
+    for (int k = 1; k <= curve->NbKnots(); ++k)
+        out.knots.insert(out.knots.end(), static_cast<std::size_t>(curve->Multiplicity(k)), curve->Knot(k) * scale);
     out.poles.resize(curve->NbPoles(), points.cols());
     for (int i = 1; i <= curve->NbPoles(); ++i) {
         const Point& q = curve->Pole(i);
-        for (Eigen::Index c = 0; c < points.cols(); ++c) out.poles(i - 1, c) = q.Coord(static_cast<int>(c) + 1) * scale + centre(c);
+        for (Eigen::Index c = 0; c < points.cols(); ++c)
+            out.poles(i - 1, c) = q.Coord(static_cast<int>(c) + 1) * scale + centre(c);
     }
     return true;
 }
 
-bool interpolate(const Eigen::MatrixXd& points, const Eigen::RowVectorXd& centre, double scale, bool closed, double tolerance, OpenCascadeBSpline& out,
-                 std::string& message) {
+bool interpolate(const Eigen::MatrixXd& points, const Eigen::RowVectorXd& centre, double scale, bool closed,
+                 double tolerance, OpenCascadeBSpline& out, std::string& message) {
     try {
-        if (points.cols() == 2) return interpolate_with<Geom2dAPI_Interpolate, TColgp_HArray1OfPnt2d, gp_Pnt2d>(points, centre, scale, closed, tolerance, out, message);
-        return interpolate_with<GeomAPI_Interpolate, TColgp_HArray1OfPnt, gp_Pnt>(points, centre, scale, closed, tolerance, out, message);
+        if (points.cols() == 2)
+            return interpolate_with<Geom2dAPI_Interpolate, TColgp_HArray1OfPnt2d, gp_Pnt2d>(
+                points, centre, scale, closed, tolerance, out, message);
+        return interpolate_with<GeomAPI_Interpolate, TColgp_HArray1OfPnt, gp_Pnt>(points, centre, scale, closed,
+                                                                                  tolerance, out, message);
     } catch (const Standard_Failure& e) {
-        message = std::string("OpenCASCADE's ") + (points.cols() == 2 ? "Geom2dAPI_Interpolate: " : "GeomAPI_Interpolate: ") + e.GetMessageString();
+        message = std::string("OpenCASCADE's ") +
+                  (points.cols() == 2 ? "Geom2dAPI_Interpolate: " : "GeomAPI_Interpolate: ") + e.GetMessageString();
         return false;
     }
 }
@@ -112,7 +123,8 @@ bool write_shape(const TopoDS_Shape& shape, const char* what, std::string& step,
     std::string pattern = (std::filesystem::temp_directory_path() / "cagd-step-XXXXXX").string();
     const int fd = mkstemp(pattern.data());
     if (fd < 0) {
-        message = "no temporary file for OpenCASCADE's STEP writer in " + std::filesystem::temp_directory_path().string();
+        message =
+            "no temporary file for OpenCASCADE's STEP writer in " + std::filesystem::temp_directory_path().string();
         return false;
     }
     close(fd);
@@ -160,7 +172,8 @@ bool step_curve(const OpenCascadeBSpline& curve, std::string& step, std::string&
     const std::lock_guard<std::mutex> lock(step_writer_mutex);
     try {
         TColgp_Array1OfPnt poles(1, static_cast<int>(curve.poles.rows()));
-        for (Eigen::Index i = 0; i < curve.poles.rows(); ++i) poles.SetValue(static_cast<int>(i) + 1, point(curve.poles, i));
+        for (Eigen::Index i = 0; i < curve.poles.rows(); ++i)
+            poles.SetValue(static_cast<int>(i) + 1, point(curve.poles, i));
         TColStd_Array1OfReal knots(1, 1);
         TColStd_Array1OfInteger multiplicities(1, 1);
         fill_knots(curve.knots, knots, multiplicities);
@@ -177,13 +190,15 @@ bool step_curve(const OpenCascadeBSpline& curve, std::string& step, std::string&
     }
 }
 
-bool step_surface(int du, int dv, const std::vector<double>& ku, const std::vector<double>& kv, const Eigen::MatrixXd& x, const Eigen::MatrixXd& y, const Eigen::MatrixXd& z,
-                  std::string& step, std::string& message) {
+bool step_surface(int du, int dv, const std::vector<double>& ku, const std::vector<double>& kv,
+                  const Eigen::MatrixXd& x, const Eigen::MatrixXd& y, const Eigen::MatrixXd& z, std::string& step,
+                  std::string& message) {
     const std::lock_guard<std::mutex> lock(step_writer_mutex);
     try {
         TColgp_Array2OfPnt poles(1, static_cast<int>(x.rows()), 1, static_cast<int>(x.cols()));
         for (Eigen::Index i = 0; i < x.rows(); ++i)
-            for (Eigen::Index j = 0; j < x.cols(); ++j) poles.SetValue(static_cast<int>(i) + 1, static_cast<int>(j) + 1, gp_Pnt(x(i, j), y(i, j), z(i, j)));
+            for (Eigen::Index j = 0; j < x.cols(); ++j)
+                poles.SetValue(static_cast<int>(i) + 1, static_cast<int>(j) + 1, gp_Pnt(x(i, j), y(i, j), z(i, j)));
         TColStd_Array1OfReal uknots(1, 1), vknots(1, 1);
         TColStd_Array1OfInteger umults(1, 1), vmults(1, 1);
         fill_knots(ku, uknots, umults);

@@ -49,7 +49,8 @@ enum class ClaimStatus { reproduced, deviates, depends, failed, holds, fails };
 const char* to_string(ClaimStatus s);
 
 // The classification rule above, as a pure function (unit-tested).
-ClaimStatus classify(const ReferenceRow& row, double ours, std::optional<double> ours_corrected, bool erratum_documented);
+ClaimStatus classify(const ReferenceRow& row, double ours, std::optional<double> ours_corrected,
+                     bool erratum_documented);
 
 // reading: an alternative the paper's text allows (it can make a claim `depends`); note: one that
 // exists only to reach the printed number (reported beside the claim, never deciding).
@@ -94,7 +95,8 @@ public:
     void check(const std::string& short_id, double ours, double ours_corrected);
     // A claim whose value depends on a choice the paper leaves open: ours under our stated choice
     // (named by `stated`, the value the report shows) and under every other allowed choice.
-    void check_over_choices(const std::string& short_id, double ours, const std::string& stated, const std::vector<ChoiceValue>& others);
+    void check_over_choices(const std::string& short_id, double ours, const std::string& stated,
+                            const std::vector<ChoiceValue>& others);
     // A statement "measure < threshold" (a vague word of the paper made a number: "nearly the same"
     // = within 1 % of the diagonal): the thresholds come from the claim's reference row (column
     // `thresholds`, the stated one first), never from the experiment. The claim's value is 1 when
@@ -102,14 +104,16 @@ public:
     // `note_thresholds` are shown as notes.
     void check_threshold(const std::string& short_id, double measure, const std::string& what);
     // An independent recomputation of a library value: |fast − reference| ≤ tolerance.
-    void validate(const std::string& short_id, const std::string& description, double fast, double reference_value, double tolerance, const std::string& tolerance_reason);
+    void validate(const std::string& short_id, const std::string& description, double fast, double reference_value,
+                  double tolerance, const std::string& tolerance_reason);
 
     // A timing claim (timing is never pass/fail and never byte-stable): `ours` is
     // tested against the interval [lo, hi] the paper's printed digits allow. It is written to
     // <root>/results/timing/<paper>_<artifact>.csv (not committed, not compared by CI) and listed
     // in the report without the measured value; the reference rows in `rows_used` (the printed
     // times it is derived from) count as checked.
-    void timing(const std::string& short_id, const std::string& description, const std::vector<std::string>& rows_used, double paper_ratio, double lo, double hi, double ours);
+    void timing(const std::string& short_id, const std::string& description, const std::vector<std::string>& rows_used,
+                double paper_ratio, double lo, double hi, double ours);
 
     void figure(const std::string& name, const std::string& caption);
     void note(const std::string& text);

@@ -13,6 +13,7 @@
 
 namespace cagd::repro {
 
-std::vector<compare::MethodComparison> record_comparison(ArtifactRun& run, const std::string& prefix, const PointList& points, bool closed);
+std::vector<compare::MethodComparison> record_comparison(ArtifactRun& run, const std::string& prefix,
+                                                         const PointList& points, bool closed);
 
 }  // namespace cagd::repro

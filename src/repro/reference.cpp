@@ -45,7 +45,9 @@ Reference load_reference(const std::string& path) {
             }
             continue;
         }
-        if (fields.size() != header.size()) fail_input(who, where + ": " + std::to_string(fields.size()) + " fields, header has " + std::to_string(header.size()));
+        if (fields.size() != header.size())
+            fail_input(who, where + ": " + std::to_string(fields.size()) + " fields, header has " +
+                                std::to_string(header.size()));
         ReferenceRow r;
         for (std::size_t i = 0; i < header.size(); ++i) {
             const std::string& h = header[i];
@@ -67,10 +69,13 @@ Reference load_reference(const std::string& path) {
                 } else if (h == "description")
                     r.description = v;
                 else if (h == "origin") {
-                    if (v != "" && v != "paper" && v != "ours") fail_input(who, where + ": column 'origin' is '" + v + "'; allowed: paper, ours (or empty)");
+                    if (v != "" && v != "paper" && v != "ours")
+                        fail_input(who, where + ": column 'origin' is '" + v + "'; allowed: paper, ours (or empty)");
                     r.ours = v == "ours";
                 } else if (h == "stated") {
-                    if (v != "" && v != "before" && v != "after") fail_input(who, where + ": column 'stated' is '" + v + "'; allowed: before, after (a first measurement)");
+                    if (v != "" && v != "before" && v != "after")
+                        fail_input(who, where + ": column 'stated' is '" + v +
+                                            "'; allowed: before, after (a first measurement)");
                     r.stated = v;
                 } else if (h == "thresholds" || h == "note_thresholds") {
                     std::vector<double>& out = h == "thresholds" ? r.thresholds : r.note_thresholds;
@@ -78,7 +83,9 @@ Reference load_reference(const std::string& path) {
                     while (start <= v.size() && !v.empty()) {
                         const std::size_t end = std::min(v.find(';', start), v.size());
                         const double t = parse_number(v.substr(start, end - start));
-                        if (!(t > 0.0)) fail_input(who, where + ": column '" + h + "': threshold " + v.substr(start, end - start) + " must be > 0");
+                        if (!(t > 0.0))
+                            fail_input(who, where + ": column '" + h + "': threshold " + v.substr(start, end - start) +
+                                                " must be > 0");
                         out.push_back(t);
                         start = end + 1;
                     }
@@ -90,7 +97,10 @@ Reference load_reference(const std::string& path) {
         if (r.id.empty()) fail_input(who, where + ": empty id");
         if (!(r.tolerance >= 0.0)) fail_input(who, where + ": tolerance must be >= 0");
         if (r.tolerance_reason.empty()) fail_input(who, where + ": tolerance_reason is empty");
-        if (r.ours && r.stated.empty()) fail_input(who, where + ": a claim of ours must say in column 'stated' whether it was written before or after a first measurement");
+        if (r.ours && r.stated.empty())
+            fail_input(who, where +
+                                ": a claim of ours must say in column 'stated' whether it was written before or after "
+                                "a first measurement");
         if (!ids.insert(r.id).second) fail_input(who, where + ": duplicate id '" + r.id + "'");
         ref.rows.push_back(r);
     }

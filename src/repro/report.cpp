@@ -38,7 +38,8 @@ const std::vector<std::pair<std::string, std::string>> kPapers = {
     {"sb2_locality", "Kuroda, Furukawa, Kimura — S-splines and B2-splines with controllable locality"},
     {"hosaka", "Hosaka — theory of curve and surface synthesis and smoothing"},
     {"typical_curves", "Miura, Shirahata, Agari — nonstationary typical curves, extension to surfaces"},
-    {"curvature_profile", "Kuroda, Higashi, Saito, Watanabe — composite interpolants, curvature piecewise 0–2nd degree in arc length"},
+    {"curvature_profile",
+     "Kuroda, Higashi, Saito, Watanabe — composite interpolants, curvature piecewise 0–2nd degree in arc length"},
 };
 
 std::vector<Row> read_checks(const fs::path& p) {
@@ -113,14 +114,18 @@ std::string anchor(const std::string& erratum) {
 // The CSV files a figure's gnuplot script reads, in order: its `datadir.'/FILE.csv'` and
 // `datadir.'/'.name.'SUFFIX.csv'` references (name = the figure's name), following `load`ed scripts
 // other than the shared style.
-std::vector<std::string> figure_data_files(const fs::path& root, const fs::path& script, const std::string& name, int depth = 0) {
+std::vector<std::string> figure_data_files(const fs::path& root, const fs::path& script, const std::string& name,
+                                           int depth = 0) {
     std::ifstream in(root / script);
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     std::vector<std::string> out;
     auto add = [&](const std::string& file) {
-        if (file.size() > 4 && file.compare(file.size() - 4, 4, ".csv") == 0 && std::find(out.begin(), out.end(), file) == out.end()) out.push_back(file);
+        if (file.size() > 4 && file.compare(file.size() - 4, 4, ".csv") == 0 &&
+            std::find(out.begin(), out.end(), file) == out.end())
+            out.push_back(file);
     };
-    for (const auto& [key, prefix] : {std::pair<std::string, std::string>{"datadir.'/'.name.'", name}, {"datadir.'/", ""}})
+    for (const auto& [key, prefix] :
+         {std::pair<std::string, std::string>{"datadir.'/'.name.'", name}, {"datadir.'/", ""}})
         for (std::size_t at = text.find(key); at != std::string::npos; at = text.find(key, at + 1)) {
             const std::size_t start = at + key.size(), end = text.find('\'', start);
             if (end == std::string::npos) break;
@@ -150,17 +155,24 @@ std::string benchmark_section(const fs::path& results) {
     // The leaderboard links its neighbours (classic.md, classic_runs.csv) from results/benchmark/;
     // here they are one folder down.
     std::string board_text = text.str();
-    for (std::size_t at = 0; (at = board_text.find("](classic", at)) != std::string::npos; at += 2) board_text.insert(at + 2, "benchmark/");
+    for (std::size_t at = 0; (at = board_text.find("](classic", at)) != std::string::npos; at += 2)
+        board_text.insert(at + 2, "benchmark/");
     std::ostringstream s;
     s << "\n<a id=\"benchmark\"></a>\n\n## Beyond the papers: the interpolant benchmark\n\n"
-         "Not a claim of any paper: every configuration of the registry on points sampled from curves with a known answer "
-         "(`cagd benchmark`, `src/cagd/compare/truth_benchmark.hpp`; docs/benchmark.md). Errors are dimensionless: the largest "
-         "distance to the true curve and the length error divided by the true length, the tangent angle in radians, the curvature "
-         "error times the true length (largest and L2 over arc length). An observed order comes from the two largest sizes. "
-         "Data: [`benchmark/truth_runs.csv`](benchmark/truth_runs.csv), [`benchmark/convergence_orders.csv`](benchmark/convergence_orders.csv); "
+         "Not a claim of any paper: every configuration of the registry on points sampled from curves with a known "
+         "answer "
+         "(`cagd benchmark`, `src/cagd/compare/truth_benchmark.hpp`; docs/benchmark.md). Errors are dimensionless: the "
+         "largest "
+         "distance to the true curve and the length error divided by the true length, the tangent angle in radians, "
+         "the curvature "
+         "error times the true length (largest and L2 over arc length). An observed order comes from the two largest "
+         "sizes. "
+         "Data: [`benchmark/truth_runs.csv`](benchmark/truth_runs.csv), "
+         "[`benchmark/convergence_orders.csv`](benchmark/convergence_orders.csv); "
          "script: [`scripts/plot/benchmark_fig_convergence.gp`](../scripts/plot/benchmark_fig_convergence.gp).\n"
       << board_text << "\n#### Convergence\n\n";
-    for (const char* family : {"line", "circle", "ellipse", "epitrochoid", "clothoid", "log-aesthetic", "helix", "trefoil"})
+    for (const char* family :
+         {"line", "circle", "ellipse", "epitrochoid", "clothoid", "log-aesthetic", "helix", "trefoil"})
         if (fs::exists(dir / (std::string("convergence_") + family + ".png")))
             s << "![" << family << "](benchmark/convergence_" << family << ".png)\n\n";
     return s.str();
@@ -178,13 +190,16 @@ int write_report(const std::string& root) {
     // status is "ours: holds" or "ours: fails", and paper_value holds our stated value).
     claims << "paper,artifact,claim,paper_value,ours,abs_diff,tolerance,status,erratum,ours_range,choices,origin\n";
     std::ostringstream body, summary;
-    summary << "| paper | claims | unconditional | reproduced | deviates | depends on a choice | failed | validations (passed / total) | claims of ours (hold / total) |\n"
+    summary << "| paper | claims | unconditional | reproduced | deviates | depends on a choice | failed | validations "
+               "(passed / total) | claims of ours (hold / total) |\n"
                "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     // The digest: every claim that does not simply reproduce, one line each, grouped by paper.
     std::map<std::string, std::string> erratum_titles;
-    for (const Erratum& e : load_errata((fs::path(root) / "reference" / "ERRATA.md").string())) erratum_titles[e.id] = e.title;
+    for (const Erratum& e : load_errata((fs::path(root) / "reference" / "ERRATA.md").string()))
+        erratum_titles[e.id] = e.title;
     std::ostringstream digest;
-    int total_n = 0, total_rep = 0, total_dev = 0, total_dep = 0, total_fail = 0, total_val = 0, total_val_ok = 0, total_ours = 0, total_ours_ok = 0;
+    int total_n = 0, total_rep = 0, total_dev = 0, total_dep = 0, total_fail = 0, total_val = 0, total_val_ok = 0,
+        total_ours = 0, total_ours_ok = 0;
     for (const auto& [paper, title] : kPapers) {
         const fs::path dir = results / paper;
         if (!fs::exists(dir)) {
@@ -197,18 +212,21 @@ int write_report(const std::string& root) {
             if (e.path().extension() == ".meta") metas.push_back(e.path());
         std::sort(metas.begin(), metas.end());
         for (const auto& m : metas) arts.push_back(read_artifact(m, paper));
-        std::stable_sort(arts.begin(), arts.end(), [](const Artifact& x, const Artifact& y) { return std::make_pair(x.section, x.name) < std::make_pair(y.section, y.name); });
+        std::stable_sort(arts.begin(), arts.end(), [](const Artifact& x, const Artifact& y) {
+            return std::make_pair(x.section, x.name) < std::make_pair(y.section, y.name);
+        });
         int n = 0, rep = 0, dev = 0, dep = 0, fail = 0, val = 0, val_ok = 0, ours = 0, ours_ok = 0;
         body << "\n<a id=\"" << paper << "\"></a>\n\n## `" << paper << "` — " << title << "\n";
         std::ostringstream paper_digest;
         for (const auto& a : arts) {
             body << "\n### " << a.title << " (`" << a.name << "`)\n\n";
-            body << "Paper: " << a.section << ". Reference: [`" << a.reference << "`](../" << a.reference << "). Experiment: [`" << a.experiment << "`](../" << a.experiment
-                 << ").\n";
+            body << "Paper: " << a.section << ". Reference: [`" << a.reference << "`](../" << a.reference
+                 << "). Experiment: [`" << a.experiment << "`](../" << a.experiment << ").\n";
             for (const auto& p : a.provenance) body << "> " << p << "\n";
             if (!a.provenance.empty()) body << "\n";
             for (const auto& note : a.notes) body << "- " << note << "\n";
-            const bool has_claims = std::any_of(a.rows.begin(), a.rows.end(), [](const Row& r) { return r["kind"] == "claim"; });
+            const bool has_claims =
+                std::any_of(a.rows.begin(), a.rows.end(), [](const Row& r) { return r["kind"] == "claim"; });
             if (has_claims)
                 body << "\n| claim | statement | paper | ours | \\|Δ\\| | tolerance | status |\n"
                         "|---|---|---:|---:|---:|---:|---|\n";
@@ -218,11 +236,13 @@ int write_report(const std::string& root) {
                 if (r["kind"] == "ours") {
                     ++ours;
                     ours_ok += status == "ours: holds";
-                    claims << csv_field(paper) << "," << csv_field(a.name) << "," << csv_field(r["id"]) << "," << csv_field(r["paper_value"]) << "," << r["ours"] << ","
-                           << r["abs_diff"] << "," << r["tolerance"] << "," << status << "," << r["erratum"] << "," << csv_field(r["ours_range"]) << "," << csv_field(r["choices"])
-                           << ",ours\n";
-                    own << "| `" << r["id"].substr(paper.size() + 1) << "` | " << md(r["description"]) << " | " << md(r["paper_value"]) << " | " << r["ours"] << " | "
-                        << r["abs_diff"] << " | " << r["tolerance"] << " | " << (status == "ours: holds" ? "holds" : "**fails**") << " |\n";
+                    claims << csv_field(paper) << "," << csv_field(a.name) << "," << csv_field(r["id"]) << ","
+                           << csv_field(r["paper_value"]) << "," << r["ours"] << "," << r["abs_diff"] << ","
+                           << r["tolerance"] << "," << status << "," << r["erratum"] << ","
+                           << csv_field(r["ours_range"]) << "," << csv_field(r["choices"]) << ",ours\n";
+                    own << "| `" << r["id"].substr(paper.size() + 1) << "` | " << md(r["description"]) << " | "
+                        << md(r["paper_value"]) << " | " << r["ours"] << " | " << r["abs_diff"] << " | "
+                        << r["tolerance"] << " | " << (status == "ours: holds" ? "holds" : "**fails**") << " |\n";
                     failed += status != "ours: holds";
                     continue;
                 }
@@ -232,22 +252,30 @@ int write_report(const std::string& root) {
                     dev += status == "deviates";
                     dep += status == "depends";
                     fail += status == "failed";
-                    claims << csv_field(paper) << "," << csv_field(a.name) << "," << csv_field(r["id"]) << "," << csv_field(r["paper_value"]) << "," << r["ours"] << ","
-                           << r["abs_diff"] << "," << r["tolerance"] << "," << status << "," << r["erratum"] << "," << csv_field(r["ours_range"]) << "," << csv_field(r["choices"])
-                           << ",paper\n";
-                    std::string shown = status == "failed" ? "**failed**" : status == "depends" ? "**depends**" : status;
-                    if (!r["erratum"].empty()) shown += " ([" + r["erratum"] + "](../reference/ERRATA.md#" + anchor(r["erratum"]) + "))";
+                    claims << csv_field(paper) << "," << csv_field(a.name) << "," << csv_field(r["id"]) << ","
+                           << csv_field(r["paper_value"]) << "," << r["ours"] << "," << r["abs_diff"] << ","
+                           << r["tolerance"] << "," << status << "," << r["erratum"] << ","
+                           << csv_field(r["ours_range"]) << "," << csv_field(r["choices"]) << ",paper\n";
+                    std::string shown = status == "failed"    ? "**failed**"
+                                        : status == "depends" ? "**depends**"
+                                                              : status;
+                    if (!r["erratum"].empty())
+                        shown += " ([" + r["erratum"] + "](../reference/ERRATA.md#" + anchor(r["erratum"]) + "))";
                     // Checked over the choices the paper leaves open: the range, and which choices decide.
                     if (!r["choices"].empty())
-                        shown += std::string(status == "depends" ? " — ours ∈ " : " — unconditional: ours ∈ ") + r["ours_range"] + " over " + md(r["choices"]);
-                    body << "| `" << r["id"].substr(paper.size() + 1) << "` | " << md(r["description"]) << " | " << md(r["paper_value"]) << " | " << r["ours"] << " | "
-                         << r["abs_diff"] << " | " << r["tolerance"] << " | " << shown << " |\n";
+                        shown += std::string(status == "depends" ? " — ours ∈ " : " — unconditional: ours ∈ ") +
+                                 r["ours_range"] + " over " + md(r["choices"]);
+                    body << "| `" << r["id"].substr(paper.size() + 1) << "` | " << md(r["description"]) << " | "
+                         << md(r["paper_value"]) << " | " << r["ours"] << " | " << r["abs_diff"] << " | "
+                         << r["tolerance"] << " | " << shown << " |\n";
                     if (status != "reproduced") {
-                        paper_digest << "- `" << r["id"].substr(paper.size() + 1) << "` (" << a.name << "): printed " << md(r["paper_value"]) << ", ours " << r["ours"] << " — "
+                        paper_digest << "- `" << r["id"].substr(paper.size() + 1) << "` (" << a.name << "): printed "
+                                     << md(r["paper_value"]) << ", ours " << r["ours"] << " — "
                                      << (status == "deviates" ? "deviates" : "**" + status + "**");
                         if (!r["erratum"].empty()) {
                             const auto t = erratum_titles.find(r["erratum"]);
-                            paper_digest << ", [" << r["erratum"] << "](../reference/ERRATA.md#" << anchor(r["erratum"]) << ")";
+                            paper_digest << ", [" << r["erratum"] << "](../reference/ERRATA.md#" << anchor(r["erratum"])
+                                         << ")";
                             if (t != erratum_titles.end() && !t->second.empty()) paper_digest << ": " << md(t->second);
                         }
                         paper_digest << "\n";
@@ -255,13 +283,16 @@ int write_report(const std::string& root) {
                 } else {
                     ++val;
                     val_ok += status == "reproduced";
-                    vals << "| `" << r["id"].substr(paper.size() + 1) << "` | " << md(r["description"]) << " | " << r["paper_value"] << " | " << r["ours"] << " | " << r["abs_diff"]
-                         << " | " << r["tolerance"] << " (" << md(r["tolerance_reason"]) << ") | " << (status == "reproduced" ? "passed" : "**failed**") << " |\n";
+                    vals << "| `" << r["id"].substr(paper.size() + 1) << "` | " << md(r["description"]) << " | "
+                         << r["paper_value"] << " | " << r["ours"] << " | " << r["abs_diff"] << " | " << r["tolerance"]
+                         << " (" << md(r["tolerance_reason"]) << ") | "
+                         << (status == "reproduced" ? "passed" : "**failed**") << " |\n";
                 }
                 failed += status == "failed";
             }
             if (!own.str().empty())
-                body << "\nClaims of ours — statements we make where the paper prints no number, counted apart from the paper's (the statement says "
+                body << "\nClaims of ours — statements we make where the paper prints no number, counted apart from "
+                        "the paper's (the statement says "
                         "whether it was written before or after a first measurement):\n\n"
                         "| claim | statement | stated value | ours | \\|Δ\\| | tolerance | verdict |\n"
                         "|---|---|---:|---:|---:|---:|---|\n"
@@ -272,7 +303,8 @@ int write_report(const std::string& root) {
                         "|---|---|---:|---:|---:|---|---|\n"
                      << vals.str();
             if (!a.timings.empty()) {
-                body << "\nTiming claims — measured in every run, never pass/fail, not byte-stable: the measured ratios are in "
+                body << "\nTiming claims — measured in every run, never pass/fail, not byte-stable: the measured "
+                        "ratios are in "
                         "`results/timing/"
                      << paper << "_" << a.name
                      << ".csv` (not committed).\n\n"
@@ -282,26 +314,35 @@ int write_report(const std::string& root) {
                     std::stringstream ss(t);
                     std::string x;
                     while (std::getline(ss, x, '|')) f.push_back(x);
-                    if (f.size() == 5) body << "| `" << f[0].substr(paper.size() + 1) << "` | " << md(f[1]) << " | " << f[2] << " | [" << f[3] << ", " << f[4] << "] |\n";
+                    if (f.size() == 5)
+                        body << "| `" << f[0].substr(paper.size() + 1) << "` | " << md(f[1]) << " | " << f[2] << " | ["
+                             << f[3] << ", " << f[4] << "] |\n";
                 }
             }
             for (const auto& [name, caption] : a.figures) {
                 const std::string script = "scripts/plot/" + paper + "_" + name + ".gp";
                 body << "\n![" << md(caption) << "](" << paper << "/" << name << ".png)\n\n*" << caption << "* — data:";
                 const std::vector<std::string> files = figure_data_files(fs::path(root), script, name);
-                for (std::size_t i = 0; i < files.size(); ++i) body << (i ? ", " : " ") << "[`" << paper << "/" << files[i] << "`](" << paper << "/" << files[i] << ")";
+                for (std::size_t i = 0; i < files.size(); ++i)
+                    body << (i ? ", " : " ") << "[`" << paper << "/" << files[i] << "`](" << paper << "/" << files[i]
+                         << ")";
                 if (files.empty()) body << " (none read by the script)";
                 body << "; script: [`" << script << "`](../" << script << ")\n";
             }
         }
-        if (!paper_digest.str().empty()) digest << "\n**[`" << paper << "`](#" << paper << ")** — " << dev + dep + fail << " of " << n << " claims:\n\n" << paper_digest.str();
-        summary << "| [`" << paper << "`](#" << paper << ") | " << n << " | " << rep + dev << " | " << rep << " | " << dev << " | " << dep << " | " << fail << " | " << val_ok
-                << " / " << val << " | " << ours_ok << " / " << ours << " |\n";
-        total_n += n, total_rep += rep, total_dev += dev, total_dep += dep, total_fail += fail, total_val += val, total_val_ok += val_ok, total_ours += ours,
-            total_ours_ok += ours_ok;
+        if (!paper_digest.str().empty())
+            digest << "\n**[`" << paper << "`](#" << paper << ")** — " << dev + dep + fail << " of " << n
+                   << " claims:\n\n"
+                   << paper_digest.str();
+        summary << "| [`" << paper << "`](#" << paper << ") | " << n << " | " << rep + dev << " | " << rep << " | "
+                << dev << " | " << dep << " | " << fail << " | " << val_ok << " / " << val << " | " << ours_ok << " / "
+                << ours << " |\n";
+        total_n += n, total_rep += rep, total_dev += dev, total_dep += dep, total_fail += fail, total_val += val,
+            total_val_ok += val_ok, total_ours += ours, total_ours_ok += ours_ok;
     }
-    summary << "| **all** | " << total_n << " | " << total_rep + total_dev << " | " << total_rep << " | " << total_dev << " | " << total_dep << " | " << total_fail << " | "
-            << total_val_ok << " / " << total_val << " | " << total_ours_ok << " / " << total_ours << " |\n";
+    summary << "| **all** | " << total_n << " | " << total_rep + total_dev << " | " << total_rep << " | " << total_dev
+            << " | " << total_dep << " | " << total_fail << " | " << total_val_ok << " / " << total_val << " | "
+            << total_ours_ok << " / " << total_ours << " |\n";
     OutputFile report_file((results / "REPORT.md").string(), "");
     std::ostream& report = report_file.stream();
     report << "# cagd-repro — reproduction report\n\n"
@@ -329,8 +370,10 @@ int write_report(const std::string& root) {
               "## Summary\n\n"
            << summary.str()
            << "\n## Which published results do not hold\n\n"
-              "Every claim that is not reproduced, one line each: the paper's printed value, ours, the status and the erratum\n"
-              "that shows why (what is wrong, in its heading's words). The tables below give each claim's tolerance and source.\n"
+              "Every claim that is not reproduced, one line each: the paper's printed value, ours, the status and the "
+              "erratum\n"
+              "that shows why (what is wrong, in its heading's words). The tables below give each claim's tolerance "
+              "and source.\n"
            << digest.str() << body.str() << benchmark_section(results);
     claims_file.commit();
     report_file.commit();

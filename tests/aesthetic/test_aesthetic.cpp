@@ -25,7 +25,8 @@ TEST(CubicBsplineMonotonicity, ClosedFormCoefficientsEqualTheProductComputation)
     for (int k = 0; k < 200; ++k) {
         const double a = ang(rng), b = ang(rng);
         const auto closed = monotonicity_coefficients(a, b);
-        const BernsteinPolynomial h = analysis::curvature_derivative_numerator(BezierCurve(uniform_segment_bezier(unit_edge_polygon(a, b))));
+        const BernsteinPolynomial h =
+            analysis::curvature_derivative_numerator(BezierCurve(uniform_segment_bezier(unit_edge_polygon(a, b))));
         for (int i = 0; i < 6; ++i) EXPECT_NEAR(closed[i], h.coefficients()[i], 1e-13) << a << " " << b << " C" << i;
     }
     for (double t0 : {0.2, 0.8, 1.5, 2.5}) EXPECT_NEAR(condition29(t0, theta1_bound(t0)), 0.0, 1e-14);
@@ -64,7 +65,8 @@ TEST(LogAestheticCurve, TangentAngleClosedFormsAndLcgSlope) {
     struct Case {
         double alpha, c0, c1;
     };
-    for (const Case& cs : {Case{-1.5, 1.0, 0.5}, Case{-0.5, 2.0, 0.3}, Case{0.0, 1.2, 0.7}, Case{0.5, 1.0, 1.0}, Case{1.0, 0.8, 0.5}, Case{2.0, 1.0, 0.4}, Case{1.5, -0.2, 1.0}}) {
+    for (const Case& cs : {Case{-1.5, 1.0, 0.5}, Case{-0.5, 2.0, 0.3}, Case{0.0, 1.2, 0.7}, Case{0.5, 1.0, 1.0},
+                           Case{1.0, 0.8, 0.5}, Case{2.0, 1.0, 0.4}, Case{1.5, -0.2, 1.0}}) {
         LogAestheticParameters p;
         p.alpha = cs.alpha;
         p.c0 = cs.c0;
@@ -73,7 +75,8 @@ TEST(LogAestheticCurve, TangentAngleClosedFormsAndLcgSlope) {
         p.start_angle = 0.3;
         const LogAestheticCurve c(p);
         for (double s : {0.5, 1.3, 2.0}) {
-            const double integral = boost::math::quadrature::gauss_kronrod<double, 61>::integrate([&](double v) { return c.curvature(v); }, 0.0, s, 15, 1e-14);
+            const double integral = boost::math::quadrature::gauss_kronrod<double, 61>::integrate(
+                [&](double v) { return c.curvature(v); }, 0.0, s, 15, 1e-14);
             EXPECT_NEAR(c.tangent_angle(s) - 0.3, integral, 1e-12) << cs.alpha;
         }
         const analysis::LineFit fit = analysis::lcg_slope(c, 0.1, 1.9, 30);
@@ -115,8 +118,10 @@ TEST(ClassA, TypicalMatrixConditionIsEq2ForScaleAboveOneAndReversedBelow) {
                 EXPECT_EQ(cond4, class_a_test(m.inverse()).eq2) << s << " " << th;
         }
     EXPECT_THROW(class_a_test(Eigen::MatrixXd::Identity(4, 4)), InvalidInput);
-    EXPECT_THROW(class_a_control_points(Eigen::Vector2d(0, 0), Eigen::Vector2d(1, 0), Eigen::Matrix2d::Identity(), 0), InvalidInput);
-    EXPECT_THROW(class_a_control_points(Eigen::Vector2d(0, 0), Eigen::Vector2d(0, 0), Eigen::Matrix2d::Identity(), 3), InvalidInput);
+    EXPECT_THROW(class_a_control_points(Eigen::Vector2d(0, 0), Eigen::Vector2d(1, 0), Eigen::Matrix2d::Identity(), 0),
+                 InvalidInput);
+    EXPECT_THROW(class_a_control_points(Eigen::Vector2d(0, 0), Eigen::Vector2d(0, 0), Eigen::Matrix2d::Identity(), 3),
+                 InvalidInput);
 }
 
 TEST(TypicalPolygon, ConstructionsAndUndefinedAlphas) {
@@ -124,12 +129,16 @@ TEST(TypicalPolygon, ConstructionsAndUndefinedAlphas) {
     EXPECT_EQ(a.points.rows(), 25);
     for (double l : a.edge_lengths) EXPECT_NEAR(l, 1.5 / 24, 1e-15);
     for (std::size_t j = 0; j < a.rotations.size(); ++j)
-        EXPECT_NEAR(a.rotations[j], -0.5 * (std::pow(static_cast<double>(j + 1) * 1.5 / 24, 3) - std::pow(static_cast<double>(j) * 1.5 / 24, 3)), 1e-15);
+        EXPECT_NEAR(a.rotations[j],
+                    -0.5 * (std::pow(static_cast<double>(j + 1) * 1.5 / 24, 3) -
+                            std::pow(static_cast<double>(j) * 1.5 / 24, 3)),
+                    1e-15);
     const TypicalPolygon b = constant_rotation_typical_polygon(-0.5, 1.5, 24);
     double total = 0.0;
     for (double l : b.edge_lengths) total += l;
     EXPECT_NEAR(total, 1.5, 1e-13);
-    for (std::size_t j = 0; j < b.scales.size(); ++j) EXPECT_NEAR(b.scales[j], constant_rotation_scale_ratio(-0.5, static_cast<int>(j)), 1e-13);
+    for (std::size_t j = 0; j < b.scales.size(); ++j)
+        EXPECT_NEAR(b.scales[j], constant_rotation_scale_ratio(-0.5, static_cast<int>(j)), 1e-13);
     const TypicalPolygon sp = log_spiral_polygon(0.2, 1.0, 0.1, 20);
     for (std::size_t j = 1; j < sp.scales.size(); ++j) {
         EXPECT_NEAR(sp.scales[j], sp.scales[0], 1e-12);

@@ -29,7 +29,8 @@ TEST(LogAestheticSpaceCurve, ConstantRatesGiveTheHelix) {
     const Eigen::Vector3d d = Eigen::Vector3d(tau, 0.0, k) / w, ex = Eigen::Vector3d::UnitX();
     const Eigen::Vector3d perp = ex - d.dot(ex) * d;
     for (double s : {0.0, 0.7, 1.9, 3.0}) {
-        const Eigen::Vector3d expect = d.dot(ex) * d * s + std::sin(w * s) / w * perp + (1.0 - std::cos(w * s)) / w * d.cross(perp);
+        const Eigen::Vector3d expect =
+            d.dot(ex) * d * s + std::sin(w * s) / w * perp + (1.0 - std::cos(w * s)) / w * d.cross(perp);
         EXPECT_LT((c.point(s) - expect).norm(), 1e-11) << "s = " << s;
         if (s > 0) {
             EXPECT_NEAR(analysis::curvature_arc_derivative(c, s), 0.0, 1e-10);
@@ -71,7 +72,8 @@ TEST(LogAestheticSpaceCurve, RejectsBadParameters) {
 TEST(SpaceTypicalPolygon, DihedralAnglesShowWhichTorsionRotationIsLost) {
     const LogAestheticSpaceParameters p = normalized_log_aesthetic_space_parameters(1.5, 1.2, 1.0, 0.1);
     const int n = 30;
-    for (FrenetComposition comp : {FrenetComposition::kappa_then_tau, FrenetComposition::tau_then_kappa, FrenetComposition::alexa}) {
+    for (FrenetComposition comp :
+         {FrenetComposition::kappa_then_tau, FrenetComposition::tau_then_kappa, FrenetComposition::alexa}) {
         const SpaceTypicalPolygon poly = space_typical_polygon(p, n, comp);
         ASSERT_EQ(poly.points.rows(), n + 1);
         for (int j = 0; j < n; ++j) EXPECT_NEAR((poly.points.row(j + 1) - poly.points.row(j)).norm(), 1.0 / n, 1e-15);
@@ -98,7 +100,9 @@ TEST(SpaceTypicalPolygon, RejectsBadInput) {
     EXPECT_THROW(space_typical_polygon_from_rotations({0.1, 0.1}, {0.1}, 0.1), InvalidInput);
     EXPECT_THROW(space_typical_polygon_from_rotations({0.1, 0.1}, {0.1, 0.1}, 0.0), InvalidInput);
     EXPECT_THROW(space_typical_polygon_from_rotations({0.1, 4.0}, {0.1, 0.1}, 0.1), InvalidInput);
-    EXPECT_THROW(space_typical_polygon_from_rotations({0.1, 0.1}, {0.1, 0.1}, 0.1, FrenetComposition::alexa, 2.0 * Eigen::Matrix3d::Identity()), InvalidInput);
+    EXPECT_THROW(space_typical_polygon_from_rotations({0.1, 0.1}, {0.1, 0.1}, 0.1, FrenetComposition::alexa,
+                                                      2.0 * Eigen::Matrix3d::Identity()),
+                 InvalidInput);
     Eigen::MatrixXd straight(4, 3);
     straight << 0, 0, 0, 1, 0, 0, 2, 0, 0, 3, 1, 0;
     EXPECT_THROW(polygon_frenet_angles(straight), InvalidInput);
@@ -118,7 +122,8 @@ TEST(TypicalSurface, RotationAboutTheDiagonalKeepsEdgesAndZeroAngleGivesATransla
     const surface::ControlNet flat = log_aesthetic_typical_net(-0.5, -0.6, 1.0, 10, 0.0);
     for (int i = 0; i <= 10; ++i)
         for (int j = 0; j <= 10; ++j)
-            for (std::size_t c = 0; c < 3; ++c) EXPECT_NEAR(flat[c](i, j), flat[c](i, 0) + flat[c](0, j) - flat[c](0, 0), 1e-14);
+            for (std::size_t c = 0; c < 3; ++c)
+                EXPECT_NEAR(flat[c](i, j), flat[c](i, 0) + flat[c](0, j) - flat[c](0, 0), 1e-14);
     const surface::ControlNet turned = log_aesthetic_typical_net(-0.5, -0.6, 1.0, 10, 0.2);
     auto pt = [&](int i, int j) { return Eigen::Vector3d(turned[0](i, j), turned[1](i, j), turned[2](i, j)); };
     for (int i = 0; i < 10; ++i)
@@ -142,5 +147,6 @@ TEST(TypicalSurface, RejectsBadBoundaries) {
     repeated.row(0).setZero();
     EXPECT_THROW(typical_surface_net(repeated, v, 0.1), InvalidInput);
     EXPECT_THROW(typical_surface_net(u.leftCols(2), v, 0.1), InvalidInput);
-    EXPECT_THROW(rotated_fourth_point(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitX(), 0.1), InvalidInput);
+    EXPECT_THROW(rotated_fourth_point(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitX(), 0.1),
+                 InvalidInput);
 }

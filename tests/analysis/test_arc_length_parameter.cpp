@@ -24,7 +24,8 @@ TEST(ArcLengthParameter, InvertsTheArcLengthOfEveryMethodsCurve) {
         EXPECT_NEAR(inverse.length(), length, 1e-11 * length) << c.name;
         for (double f : {0.0, 0.013, 0.25, 0.5, 0.777, 1.0}) {
             const double s = f * inverse.length(), t = inverse.parameter_at(s);
-            EXPECT_NEAR(cagd::analysis::arc_length(*curve, curve->t_min(), t, 64), s, 1e-11 * length) << c.name << ": ∫|r'| up to t(s) is s, s = " << s;
+            EXPECT_NEAR(cagd::analysis::arc_length(*curve, curve->t_min(), t, 64), s, 1e-11 * length)
+                << c.name << ": ∫|r'| up to t(s) is s, s = " << s;
         }
         // Where the parameter is arc length already (curvature-profile), t(s) = s.
         if (c.claims.parameter == "arc length") {
@@ -34,7 +35,8 @@ TEST(ArcLengthParameter, InvertsTheArcLengthOfEveryMethodsCurve) {
 }
 
 TEST(ArcLengthParameter, RefusesAnArcLengthOutsideTheCurve) {
-    const cagd::methods::InterpolationResult r = cagd::methods::interpolate("cubic-b", cagd::test::kNewberyGarrett, false);
+    const cagd::methods::InterpolationResult r =
+        cagd::methods::interpolate("cubic-b", cagd::test::kNewberyGarrett, false);
     const cagd::analysis::ArcLengthParameter inverse(r.interpolant->curve);
     try {
         inverse.parameter_at(inverse.length() * 1.5);

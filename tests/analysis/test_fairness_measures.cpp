@@ -34,7 +34,8 @@ TEST(FairnessMeasures, CountInflectionsCornersOvershootAndCrossings) {
     EXPECT_EQ(f.overshoot, 0.0);
     EXPECT_EQ(f.corners, 0);
     EXPECT_NEAR(f.length, analysis::arc_length(s, 8), 1e-12);
-    EXPECT_NEAR(analysis::adaptive_arc_length(s, 1e-12), analysis::romberg_arc_length(s).value, 1e-11) << "two integrators agree";
+    EXPECT_NEAR(analysis::adaptive_arc_length(s, 1e-12), analysis::romberg_arc_length(s).value, 1e-11)
+        << "two integrators agree";
     EXPECT_NEAR(f.pseudo_energy, f.length * f.length * f.bending_energy, 1e-12) << "one piece: L² E";
     // A near-cusp: tangents reversed against the chord.
     d0 << -1.45, 0.02;
@@ -42,12 +43,14 @@ TEST(FairnessMeasures, CountInflectionsCornersOvershootAndCrossings) {
     const analysis::FairnessMeasures g = analysis::fairness_measures(PiecewiseHermiteCurve(nodes, d0, d1), data);
     EXPECT_EQ(g.corners, 1);
     const PiecewiseHermiteCurve near_cusp(nodes, d0, d1);
-    EXPECT_NEAR(analysis::adaptive_arc_length(near_cusp, 1e-12), analysis::romberg_arc_length(near_cusp).value, 1e-10) << "adaptive Gauss–Kronrod at a near-cusp";
+    EXPECT_NEAR(analysis::adaptive_arc_length(near_cusp, 1e-12), analysis::romberg_arc_length(near_cusp).value, 1e-10)
+        << "adaptive Gauss–Kronrod at a near-cusp";
     EXPECT_GT(g.max_spike, analysis::kCornerThreshold);
     // Overshoot: a span bulging above the box of its data.
     d0 << 0, 4;
     d1 << 0, -4;
-    EXPECT_GT(analysis::fairness_measures(PiecewiseHermiteCurve(nodes, d0, d1), points({{0, 0}, {1, 0.1}})).overshoot, 0.5);
+    EXPECT_GT(analysis::fairness_measures(PiecewiseHermiteCurve(nodes, d0, d1), points({{0, 0}, {1, 0.1}})).overshoot,
+              0.5);
     // A simple closed loop does not cross itself.
     Eigen::MatrixXd loop(5, 2), l0(4, 2), l1(4, 2);
     loop << 0, 0, 1, 1, 0, 2, -1, 1, 0, 0;

@@ -17,7 +17,7 @@ TEST(FrenetJet, ACircleTraversedAtAnySpeedHasCurvatureOneOverItsRadius) {
     const double R = 2.5, w = 3.0, t = 0.7;
     for (const double sense : {1.0, -1.0}) {
         Eigen::MatrixXd D(3, 2);
-        D << -R * w * std::sin(w * t), sense * R * w * std::cos(w * t),  //
+        D << -R * w * std::sin(w * t), sense * R * w * std::cos(w * t),          //
             -R * w * w * std::cos(w * t), -sense * R * w * w * std::sin(w * t),  //
             R * w * w * w * std::sin(w * t), -sense * R * w * w * w * std::cos(w * t);
         const FrenetJet f = frenet_jet(D);
@@ -34,7 +34,8 @@ TEST(FrenetJet, AClothoidsCurvatureGrowsLinearlyInArcLength) {
     // r''' = θ'' (−sin θ, cos θ) − θ'² (cos θ, sin θ), so κ = θ' = a s, dκ/ds = a.
     const double a = 0.8, s = 1.3, th = 0.5 * a * s * s, k = a * s;
     Eigen::MatrixXd D(3, 2);
-    D << std::cos(th), std::sin(th), -k * std::sin(th), k * std::cos(th), -a * std::sin(th) - k * k * std::cos(th), a * std::cos(th) - k * k * std::sin(th);
+    D << std::cos(th), std::sin(th), -k * std::sin(th), k * std::cos(th), -a * std::sin(th) - k * k * std::cos(th),
+        a * std::cos(th) - k * k * std::sin(th);
     const FrenetJet f = frenet_jet(D);
     EXPECT_NEAR(f.curvature, k, 1e-15) << "κ = a s";
     EXPECT_NEAR(f.curvature_rate, a, 1e-14) << "dκ/ds = a";
@@ -44,9 +45,9 @@ TEST(FrenetJet, AHelixHasConstantCurvatureAndTorsion) {
     // r(t) = (R cos t, R sin t, c t): κ = R/(R² + c²), τ = c/(R² + c²), both rates 0.
     const double R = 1.5, c = 0.4, t = 2.1;
     Eigen::MatrixXd D(4, 3);
-    D << -R * std::sin(t), R * std::cos(t), c,  //
+    D << -R * std::sin(t), R * std::cos(t), c,    //
         -R * std::cos(t), -R * std::sin(t), 0.0,  //
-        R * std::sin(t), -R * std::cos(t), 0.0,  //
+        R * std::sin(t), -R * std::cos(t), 0.0,   //
         R * std::cos(t), R * std::sin(t), 0.0;
     const FrenetJet f = frenet_jet(D);
     const double h = R * R + c * c;

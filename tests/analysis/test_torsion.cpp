@@ -21,13 +21,17 @@ TEST(Torsion, IsNaNAtTheNaturalEndsOfASpaceSplineAndFiniteInside) {
         ASSERT_TRUE(r.outcome.ok()) << method;
         const cagd::Curve& c = *r.interpolant->curve;
         const double extent = cagd::analysis::curve_extent(c);
-        EXPECT_NEAR(extent, (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm(), 0.5) << "the breakpoints are the points";
+        EXPECT_NEAR(extent, (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm(), 0.5)
+            << "the breakpoints are the points";
         for (double t : {c.t_min(), c.t_max()}) {
-            ASSERT_LE(cagd::analysis::curvature(c, t) * extent, cagd::analysis::kFlatCurvature) << method << ": a natural end is straight, t = " << t;
-            EXPECT_TRUE(std::isnan(cagd::analysis::torsion(c, t))) << method << ": τ at a natural end is undefined, not rounding noise, t = " << t;
+            ASSERT_LE(cagd::analysis::curvature(c, t) * extent, cagd::analysis::kFlatCurvature)
+                << method << ": a natural end is straight, t = " << t;
+            EXPECT_TRUE(std::isnan(cagd::analysis::torsion(c, t)))
+                << method << ": τ at a natural end is undefined, not rounding noise, t = " << t;
         }
         const double middle = 0.5 * (c.t_min() + c.t_max());
-        EXPECT_NEAR(cagd::analysis::torsion(c, middle), 0.3 / 1.09, 0.05) << method << ": the helix's torsion in the middle";
+        EXPECT_NEAR(cagd::analysis::torsion(c, middle), 0.3 / 1.09, 0.05)
+            << method << ": the helix's torsion in the middle";
     }
 }
 

@@ -79,7 +79,8 @@ TEST(ClassicBenchmark, TheManifestReadsEveryDataSetWithItsProvenance) {
     EXPECT_GE(literature, 2);
     EXPECT_GE(glyphs, 5);
     // The papers' files are read where the experiments read them: Newbery and Garrett's 13 points.
-    const auto table1 = std::find_if(sets.begin(), sets.end(), [](const ClassicDataSet& d) { return d.name == "newbery-garrett"; });
+    const auto table1 =
+        std::find_if(sets.begin(), sets.end(), [](const ClassicDataSet& d) { return d.name == "newbery-garrett"; });
     ASSERT_NE(table1, sets.end());
     EXPECT_EQ(table1->points.rows(), 13);
     EXPECT_EQ(table1->points(1, 0), 0.3);
@@ -87,18 +88,29 @@ TEST(ClassicBenchmark, TheManifestReadsEveryDataSetWithItsProvenance) {
 
 TEST(ClassicBenchmark, ABadManifestIsRefusedNamingTheLineAndTheValue) {
     const std::string header = "name,group,file,closed,source";
-    EXPECT_NE(refusal(write_manifest("column", "name,group,file,source", "x,paper,points.csv,a source\n")).find("no column \"closed\""), std::string::npos);
+    EXPECT_NE(refusal(write_manifest("column", "name,group,file,source", "x,paper,points.csv,a source\n"))
+                  .find("no column \"closed\""),
+              std::string::npos);
     const std::string two = refusal(write_manifest("closed", header, "x,paper,points.csv,2,a source\n"));
     EXPECT_NE(two.find("manifest.csv:3"), std::string::npos) << two;
     EXPECT_NE(two.find("closed \"2\""), std::string::npos) << two;
-    EXPECT_NE(refusal(write_manifest("twice", header, "x,paper,points.csv,0,s\nx,paper,points.csv,1,s\n")).find("\"x\" is used twice"), std::string::npos);
-    EXPECT_NE(refusal(write_manifest("name", header, "a b,paper,points.csv,0,s\n")).find("name \"a b\""), std::string::npos);
-    EXPECT_NE(refusal(write_manifest("source", header, "x,paper,points.csv,0,\n")).find("needs a group, a file and a source"), std::string::npos);
-    EXPECT_NE(refusal(write_manifest("missing", header, "x,paper,absent.csv,0,s\n")).find("absent.csv"), std::string::npos);
-    EXPECT_NE(refusal(write_manifest("fields", header, "x,paper,points.csv,0\n")).find("4 fields where the header has 5"), std::string::npos);
+    EXPECT_NE(refusal(write_manifest("twice", header, "x,paper,points.csv,0,s\nx,paper,points.csv,1,s\n"))
+                  .find("\"x\" is used twice"),
+              std::string::npos);
+    EXPECT_NE(refusal(write_manifest("name", header, "a b,paper,points.csv,0,s\n")).find("name \"a b\""),
+              std::string::npos);
+    EXPECT_NE(
+        refusal(write_manifest("source", header, "x,paper,points.csv,0,\n")).find("needs a group, a file and a source"),
+        std::string::npos);
+    EXPECT_NE(refusal(write_manifest("missing", header, "x,paper,absent.csv,0,s\n")).find("absent.csv"),
+              std::string::npos);
+    EXPECT_NE(
+        refusal(write_manifest("fields", header, "x,paper,points.csv,0\n")).find("4 fields where the header has 5"),
+        std::string::npos);
     EXPECT_NE(refusal(write_manifest("empty", header, "")).find("no data set"), std::string::npos);
     // Quoted sources hold commas.
-    const auto sets = read_classic_data(write_manifest("quoted", header, "x,paper,points.csv,1,\"A. Author, B. Author, J. Curves 1 (2000) 1-2\"\n"));
+    const auto sets = read_classic_data(
+        write_manifest("quoted", header, "x,paper,points.csv,1,\"A. Author, B. Author, J. Curves 1 (2000) 1-2\"\n"));
     ASSERT_EQ(sets.size(), 1u);
     EXPECT_EQ(sets[0].source, "A. Author, B. Author, J. Curves 1 (2000) 1-2");
     EXPECT_TRUE(sets[0].closed);
@@ -131,12 +143,16 @@ TEST(InflectionMeasures, TheCountAgreesWithTheSampledSignChangesOnEveryClassicSe
     // piece (not around a closed curve, hence at most one less there).
     for (const ClassicDataSet& d : read_classic_data(kManifest))
         for (const char* method : {"cubic-b", "pseudo-spline-none", "s-spline-m1"}) {
-            const InterpolationAttempt a = attempt_interpolation(methods::find_configuration(method), d.points, d.closed);
+            const InterpolationAttempt a =
+                attempt_interpolation(methods::find_configuration(method), d.points, d.closed);
             ASSERT_EQ(a.status, AttemptStatus::ok) << d.name << " " << method << ": " << a.note;
-            const ShapeMeasures m = shape_measures(*a.result.interpolant->curve, a.result.interpolant->node_parameters, d.closed);
-            const int sampled = analysis::fairness_measures(*a.result.interpolant->curve, d.points, 512).curvature_sign_changes;
+            const ShapeMeasures m =
+                shape_measures(*a.result.interpolant->curve, a.result.interpolant->node_parameters, d.closed);
+            const int sampled =
+                analysis::fairness_measures(*a.result.interpolant->curve, d.points, 512).curvature_sign_changes;
             if (d.closed)
-                EXPECT_TRUE(m.inflections == sampled || m.inflections == sampled + 1) << d.name << " " << method << ": " << m.inflections << " vs " << sampled;
+                EXPECT_TRUE(m.inflections == sampled || m.inflections == sampled + 1)
+                    << d.name << " " << method << ": " << m.inflections << " vs " << sampled;
             else
                 EXPECT_EQ(m.inflections, sampled) << d.name << " " << method;
             EXPECT_LE(m.unimplied_inflections, m.inflections);
@@ -149,7 +165,8 @@ TEST(ClassicBenchmark, RunsAreClassifiedAndMeasuredAsTheirCurvesAre) {
     for (const ClassicDataSet& d : all)
         if (d.name == "knot" || d.name == "glyph-C") sets.push_back(d);
     ASSERT_EQ(sets.size(), 2u);
-    const std::vector<ClassicRun> runs = run_classic_benchmark(sets, {"cubic-b", "boost-pchip", "curvature-profile"}, 2);
+    const std::vector<ClassicRun> runs =
+        run_classic_benchmark(sets, {"cubic-b", "boost-pchip", "curvature-profile"}, 2);
     ASSERT_EQ(runs.size(), 6u);
     for (const ClassicRun& r : runs) {
         if (r.method == "boost-pchip" && r.data_set == "glyph-C") {
@@ -165,7 +182,8 @@ TEST(ClassicBenchmark, RunsAreClassifiedAndMeasuredAsTheirCurvesAre) {
         ASSERT_EQ(r.status, cagd::compare::AttemptStatus::ok) << r.data_set << " " << r.method << ": " << r.note;
         // The same curve measured directly.
         const ClassicDataSet& d = r.data_set == "knot" ? sets[0] : sets[1];
-        const methods::InterpolationResult c = methods::interpolate(methods::find_configuration(r.method), d.points, d.closed);
+        const methods::InterpolationResult c =
+            methods::interpolate(methods::find_configuration(r.method), d.points, d.closed);
         const ShapeMeasures direct = shape_measures(*c.interpolant->curve, c.interpolant->node_parameters, d.closed);
         EXPECT_DOUBLE_EQ(r.shape.bending, direct.bending);
         EXPECT_EQ(r.shape.inflections, direct.inflections);
@@ -200,7 +218,8 @@ TEST(ClassicBenchmark, NoClosedDataSetGivesALoopingCurve) {
     for (const ClassicDataSet& d : read_classic_data(kManifest)) {
         if (!d.closed) continue;
         ++closed_sets;
-        for (const MethodComparison& m : compare_methods(d.points, o)) EXPECT_NE(m.status, cagd::compare::AttemptStatus::loops) << d.name << ", " << m.method << ": " << m.note;
+        for (const MethodComparison& m : compare_methods(d.points, o))
+            EXPECT_NE(m.status, cagd::compare::AttemptStatus::loops) << d.name << ", " << m.method << ": " << m.note;
     }
     EXPECT_GT(closed_sets, 0);
 }

@@ -23,14 +23,14 @@ using std::isnan;
 #include "cagd/analysis/fairness_measures.hpp"
 #include "cagd/analysis/log_curvature_graph.hpp"
 #include "cagd/compare/comparison_figure.hpp"
-#include "cagd/compare/locality_footprint.hpp"
 #include "cagd/compare/comparison_tables.hpp"
+#include "cagd/compare/locality_footprint.hpp"
 #include "cagd/compare/method_comparison.hpp"
 #include "cagd/core/parallel.hpp"
 #include "cagd/core/point_csv.hpp"
-#include "cagd/methods/method_registry.hpp"
 #include "cagd/core/random_walk.hpp"
 #include "cagd/intrinsic/intrinsic_curve.hpp"
+#include "cagd/methods/method_registry.hpp"
 
 using namespace cagd;
 using namespace cagd::compare;
@@ -54,7 +54,8 @@ PointList random_points(std::mt19937_64& rng, int n, bool closed) {
     PointList p(n, 2);
     if (closed) {
         std::vector<double> a(static_cast<std::size_t>(n));
-        for (int i = 0; i < n; ++i) a[static_cast<std::size_t>(i)] = 2 * std::numbers::pi * (i + 0.1 + 0.8 * u(rng)) / n;
+        for (int i = 0; i < n; ++i)
+            a[static_cast<std::size_t>(i)] = 2 * std::numbers::pi * (i + 0.1 + 0.8 * u(rng)) / n;
         for (int i = 0; i < n; ++i) {
             const double r = 0.5 + u(rng);
             p.row(i) << r * std::cos(a[static_cast<std::size_t>(i)]), r * std::sin(a[static_cast<std::size_t>(i)]);
@@ -72,7 +73,9 @@ PointList random_points(std::mt19937_64& rng, int n, bool closed) {
 }
 
 // Relative difference of two vectors, measured against their size (and `floor`).
-double relative_gap(const Eigen::VectorXd& a, const Eigen::VectorXd& b, double floor) { return (a - b).norm() / std::max({a.norm(), b.norm(), floor}); }
+double relative_gap(const Eigen::VectorXd& a, const Eigen::VectorXd& b, double floor) {
+    return (a - b).norm() / std::max({a.norm(), b.norm(), floor});
+}
 
 struct PropertyTally {
     int sets = 0, no_result = 0, other_solution = 0;
@@ -98,13 +101,15 @@ void check_properties(const Configuration& m, const PointList& p, bool closed, P
     // 1. every data point is on the curve
     for (std::size_t i = 0; i < nodes; ++i) {
         const Eigen::VectorXd q = a.curve->point(a.node_parameters[i]);
-        const double e = (q - p.row(static_cast<Eigen::Index>(i % static_cast<std::size_t>(n))).transpose()).norm() / diag;
+        const double e =
+            (q - p.row(static_cast<Eigen::Index>(i % static_cast<std::size_t>(n))).transpose()).norm() / diag;
         t.worst_interpolation = std::max(t.worst_interpolation, e);
     }
     // 2. the claimed continuity at every interior join (and the closing join of a closed curve)
     for (std::size_t i = closed ? 0 : 1; i + 1 < nodes || (closed && i + 1 == nodes); ++i) {
         const std::size_t left_span = i == 0 ? nodes - 2 : i - 1, right_span = i == nodes - 1 ? 0 : i;
-        const double tl = i == 0 ? a.node_parameters.back() : a.node_parameters[i], tr = i == nodes - 1 ? a.node_parameters.front() : a.node_parameters[i];
+        const double tl = i == 0 ? a.node_parameters.back() : a.node_parameters[i],
+                     tr = i == nodes - 1 ? a.node_parameters.front() : a.node_parameters[i];
         if (closed && i == nodes - 1) break;
         const int order = std::max(2, m.claims.parametric_continuity);  // every claimed derivative, and κ
         const Eigen::MatrixXd L = a.curve->jet_from_left(tl, order), R = a.curve->jet(tr, order);
@@ -118,12 +123,14 @@ void check_properties(const Configuration& m, const PointList& p, bool closed, P
             t.worst_geometric = std::max(t.worst_geometric, (el - er).norm());
         }
         if (m.claims.geometric_continuity >= 2)
-            t.worst_geometric = std::max(
-                t.worst_geometric, (analysis::curvature_vector(L) - analysis::curvature_vector(R)).norm() * diag / std::max(1.0, diag * analysis::curvature_vector(R).norm()));
+            t.worst_geometric =
+                std::max(t.worst_geometric, (analysis::curvature_vector(L) - analysis::curvature_vector(R)).norm() *
+                                                diag / std::max(1.0, diag * analysis::curvature_vector(R).norm()));
     }
     // 3. nothing is NaN or infinite
     for (std::size_t k = 0; k + 1 < nodes; ++k)
-        for (double f : {0.0, 0.25, 0.5, 0.75}) ASSERT_TRUE(a.curve->jet(span_parameter(a, k, f), 2).allFinite()) << m.name << " span " << k;
+        for (double f : {0.0, 0.25, 0.5, 0.75})
+            ASSERT_TRUE(a.curve->jet(span_parameter(a, k, f), 2).allFinite()) << m.name << " span " << k;
     // 4. invariance: the curve through T(P) is T(the curve through P), span by span
     const auto compare_under = [&](const Eigen::Matrix2d& A, const Eigen::RowVector2d& b, double& worst) {
         const PointList q = (p * A.transpose()).rowwise() + b;
@@ -185,15 +192,20 @@ TEST_P(EveryMethod, RandomPointSetsKeepEveryClaim) {
     // Spiro (not always_solves) has no solution for about a fifth of these random walks, whose
     // turns reach 150° (measured 26 % of open walks, 3 % of closed star polygons; libspiro fails on
     // such points too); another solution for a transformed copy must stay rare.
-    EXPECT_LE(t.no_result, m.claims.always_solves ? sets / 100 : sets * 3 / 10) << m.name << ": no result for " << t.no_result << " of " << sets;
-    EXPECT_LE(t.other_solution, sets / 200) << m.name << ": another solution under a similarity for " << t.other_solution << " of " << sets;
+    EXPECT_LE(t.no_result, m.claims.always_solves ? sets / 100 : sets * 3 / 10)
+        << m.name << ": no result for " << t.no_result << " of " << sets;
+    EXPECT_LE(t.other_solution, sets / 200)
+        << m.name << ": another solution under a similarity for " << t.other_solution << " of " << sets;
     EXPECT_LE(t.worst_interpolation, 1e-9) << m.name;
     EXPECT_LE(t.worst_parametric, 1e-6) << m.name;
     EXPECT_LE(t.worst_geometric, 1e-6) << m.name;
     EXPECT_LE(t.worst_invariance, 1e-9) << m.name;
     EXPECT_LE(t.worst_affine, 1e-9) << m.name;
-    std::printf("%s: %d sets, %d without result, %d with another solution when transformed; worst interpolation %.2e, C^k %.2e, G^k %.2e, invariance %.2e, affine %.2e\n",
-                m.name.c_str(), t.sets, t.no_result, t.other_solution, t.worst_interpolation, t.worst_parametric, t.worst_geometric, t.worst_invariance, t.worst_affine);
+    std::printf(
+        "%s: %d sets, %d without result, %d with another solution when transformed; worst interpolation %.2e, C^k "
+        "%.2e, G^k %.2e, invariance %.2e, affine %.2e\n",
+        m.name.c_str(), t.sets, t.no_result, t.other_solution, t.worst_interpolation, t.worst_parametric,
+        t.worst_geometric, t.worst_invariance, t.worst_affine);
 }
 
 // Degenerate inputs, each with its defined outcome.
@@ -227,7 +239,8 @@ TEST_P(EveryMethod, DegenerateInputsHaveDefinedOutcomes) {
         interpolate(m, repeated, false);
         ADD_FAILURE() << m.name << " accepted a repeated point";
     } catch (const InvalidInput& e) {
-        EXPECT_NE(std::string(e.what()).find("point 3 (row 2) and point 4 (row 3) coincide"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("point 3 (row 2) and point 4 (row 3) coincide"), std::string::npos)
+            << e.what();
     }
     // Nearly coincident points (10^-9 of the diagonal apart) and coordinates of magnitude 1e-8 and
     // 1e8: a finite curve through every point, or a returned outcome.
@@ -235,8 +248,10 @@ TEST_P(EveryMethod, DegenerateInputsHaveDefinedOutcomes) {
     PointList base = random_points(rng, 7, false);
     PointList near = base;
     near.row(4) = near.row(3) + 1e-9 * bounding_box_diagonal(base) * Eigen::RowVector2d(0.6, 0.8);
-    for (const auto& [points, label] :
-         {std::pair<PointList, const char*>{near, "nearly coincident"}, {base * 1e-8, "1e-8"}, {base * 1e8, "1e8"}, {(base.array() + 1e8).matrix(), "offset 1e8"}}) {
+    for (const auto& [points, label] : {std::pair<PointList, const char*>{near, "nearly coincident"},
+                                        {base * 1e-8, "1e-8"},
+                                        {base * 1e8, "1e8"},
+                                        {(base.array() + 1e8).matrix(), "offset 1e8"}}) {
         const InterpolationResult rr = interpolate(m, points, false);
         if (!rr.outcome.ok()) {
             EXPECT_FALSE(rr.outcome.message.empty()) << m.name << " " << label;
@@ -245,8 +260,12 @@ TEST_P(EveryMethod, DegenerateInputsHaveDefinedOutcomes) {
         const Interpolant& a = *rr.interpolant;
         const double scale = points.cwiseAbs().maxCoeff();
         for (std::size_t i = 0; i < a.node_parameters.size(); ++i)
-            EXPECT_LE((a.curve->point(a.node_parameters[i]) - points.row(static_cast<Eigen::Index>(i)).transpose()).norm(), 1e-9 * scale) << m.name << " " << label;
-        for (std::size_t k = 0; k + 1 < a.node_parameters.size(); ++k) EXPECT_TRUE(a.curve->jet(span_parameter(a, k, 0.5), 2).allFinite()) << m.name << " " << label;
+            EXPECT_LE(
+                (a.curve->point(a.node_parameters[i]) - points.row(static_cast<Eigen::Index>(i)).transpose()).norm(),
+                1e-9 * scale)
+                << m.name << " " << label;
+        for (std::size_t k = 0; k + 1 < a.node_parameters.size(); ++k)
+            EXPECT_TRUE(a.curve->jet(span_parameter(a, k, 0.5), 2).allFinite()) << m.name << " " << label;
     }
     // A hairpin (the path turns back by exactly π at P_2): InvalidInput, or a finite curve.
     PointList hairpin(5, 2);
@@ -255,7 +274,8 @@ TEST_P(EveryMethod, DegenerateInputsHaveDefinedOutcomes) {
         const InterpolationResult rh = interpolate(m, hairpin, false);
         if (rh.outcome.ok())
             for (std::size_t k = 0; k + 1 < rh.interpolant->node_parameters.size(); ++k)
-                EXPECT_TRUE(rh.interpolant->curve->jet(span_parameter(*rh.interpolant, k, 0.5), 1).allFinite()) << m.name << " hairpin";
+                EXPECT_TRUE(rh.interpolant->curve->jet(span_parameter(*rh.interpolant, k, 0.5), 1).allFinite())
+                    << m.name << " hairpin";
         else
             EXPECT_FALSE(rh.outcome.message.empty());
     } catch (const InvalidInput&) {}
@@ -269,11 +289,14 @@ TEST_P(EveryMethod, DegenerateInputsHaveDefinedOutcomes) {
 // bench times it at 10^5).
 TEST_P(EveryMethod, MillionPointsAreInterpolated) {
     const Configuration m = find_configuration(GetParam());
-    const int most = m.claims.max_points > 0 ? m.claims.max_points : 1'000'000;  // a method's stated limit (dense solves)
+    const int most =
+        m.claims.max_points > 0 ? m.claims.max_points : 1'000'000;  // a method's stated limit (dense solves)
     // Spiro (not always_solves) on a walk that turns at most 0.3 rad per point (a solution exists
     // there; the 1.2 rad walk has none at 10^4 points), and 5·10^4 of them: its two sparse Newton
     // solves cost 16 s at 2·10^5.
-    const PointList p = m.claims.always_solves ? random_walk_points(std::min(m.method->iterative ? 200'000 : 1'000'000, most)) : cagd::random_walk(50'000, 1, 0.2, 1.0, 0.3);
+    const PointList p = m.claims.always_solves
+                            ? random_walk_points(std::min(m.method->iterative ? 200'000 : 1'000'000, most))
+                            : cagd::random_walk(50'000, 1, 0.2, 1.0, 0.3);
     const InterpolationResult r = interpolate(m, p, false);
     ASSERT_TRUE(r.outcome.ok() && r.interpolant) << m.name << ": " << r.outcome.message;
     const Interpolant& a = *r.interpolant;
@@ -282,12 +305,15 @@ TEST_P(EveryMethod, MillionPointsAreInterpolated) {
     double worst = 0.0;
     const std::size_t last = a.node_parameters.size() - 1;
     for (std::size_t i = 0; i < last; i += 997) {
-        worst = std::max(worst, (a.curve->point(a.node_parameters[i]) - p.row(static_cast<Eigen::Index>(i)).transpose()).norm());
+        worst = std::max(
+            worst, (a.curve->point(a.node_parameters[i]) - p.row(static_cast<Eigen::Index>(i)).transpose()).norm());
         ASSERT_TRUE(a.curve->jet(span_parameter(a, i, 0.5), 2).allFinite()) << m.name << " span " << i;
     }
-    worst = std::max(worst, (a.curve->point(a.node_parameters[last]) - p.row(static_cast<Eigen::Index>(last)).transpose()).norm());
+    worst = std::max(
+        worst, (a.curve->point(a.node_parameters[last]) - p.row(static_cast<Eigen::Index>(last)).transpose()).norm());
     EXPECT_LE(worst, tolerance) << m.name;
-    std::printf("%s: %ld points, worst interpolation error %.2e (diagonal %.0f)\n", m.name.c_str(), static_cast<long>(p.rows()), worst, bounding_box_diagonal(p));
+    std::printf("%s: %ld points, worst interpolation error %.2e (diagonal %.0f)\n", m.name.c_str(),
+                static_cast<long>(p.rows()), worst, bounding_box_diagonal(p));
 }
 
 INSTANTIATE_TEST_SUITE_P(Compare, EveryMethod, ::testing::ValuesIn([] {
@@ -311,12 +337,15 @@ TEST(Compare, ResultsDoNotDependOnTheThreadCount) {
     compare::ComparisonOptions one, three;
     one.threads = 1;
     three.threads = 3;
-    const std::vector<compare::MethodComparison> a = compare::compare_methods(p, one), b = compare::compare_methods(p, three);
+    const std::vector<compare::MethodComparison> a = compare::compare_methods(p, one),
+                                                 b = compare::compare_methods(p, three);
     ASSERT_EQ(a.size(), b.size());
-    const auto rows_a = compare::comparison_rows(a, false, false, 17), rows_b = compare::comparison_rows(b, false, false, 17);
+    const auto rows_a = compare::comparison_rows(a, false, false, 17),
+               rows_b = compare::comparison_rows(b, false, false, 17);
     EXPECT_EQ(rows_a, rows_b);
     const compare::FigureSampling sampling = compare::figure_sampling(79, 2000);
-    const compare::FigureData fa = compare::comparison_figure_data(a, p, sampling), fb = compare::comparison_figure_data(b, p, sampling);
+    const compare::FigureData fa = compare::comparison_figure_data(a, p, sampling),
+                              fb = compare::comparison_figure_data(b, p, sampling);
     EXPECT_EQ(fa.curves, fb.curves);
     EXPECT_EQ(fa.profiles, fb.profiles);
     EXPECT_EQ(fa.combs, fb.combs);
@@ -337,15 +366,18 @@ TEST(Compare, BoostPeersAreRepresentedExactly) {
             EXPECT_NEAR(ours.y(), y_of_tau(mid), 1e-13 * bounding_box_diagonal(p)) << name << " span " << k;
         }
     };
-    const std::vector<double> xs(p.col(0).data(), p.col(0).data() + p.rows()), ys(p.col(1).data(), p.col(1).data() + p.rows());
+    const std::vector<double> xs(p.col(0).data(), p.col(0).data() + p.rows()),
+        ys(p.col(1).data(), p.col(1).data() + p.rows());
     {
         std::vector<double> t1 = tau, t2 = tau, x = xs, y = ys;
-        const boost::math::interpolators::pchip<std::vector<double>> fx(std::move(t1), std::move(x)), fy(std::move(t2), std::move(y));
+        const boost::math::interpolators::pchip<std::vector<double>> fx(std::move(t1), std::move(x)),
+            fy(std::move(t2), std::move(y));
         check("boost-pchip", fx, fy, tau);
     }
     {
         std::vector<double> t1 = tau, t2 = tau, x = xs, y = ys;
-        const boost::math::interpolators::makima<std::vector<double>> fx(std::move(t1), std::move(x)), fy(std::move(t2), std::move(y));
+        const boost::math::interpolators::makima<std::vector<double>> fx(std::move(t1), std::move(x)),
+            fy(std::move(t2), std::move(y));
         check("boost-makima", fx, fy, tau);
     }
     {
@@ -372,7 +404,8 @@ TEST(Compare, CurvatureDerivativeMatchesFiniteDifferences) {
         const double fd = (analysis::signed_curvature(c, t + h) - analysis::signed_curvature(c, t - h)) / ds;
         const Eigen::MatrixXd J = c.jet(t, 3);
         const double x1 = J(1, 0), y1 = J(1, 1), v2 = x1 * x1 + y1 * y1, cross = x1 * J(2, 1) - y1 * J(2, 0);
-        const double exact = ((x1 * J(3, 1) - y1 * J(3, 0)) * v2 - 3.0 * cross * (x1 * J(2, 0) + y1 * J(2, 1))) / (v2 * v2 * v2);
+        const double exact =
+            ((x1 * J(3, 1) - y1 * J(3, 0)) * v2 - 3.0 * cross * (x1 * J(2, 0) + y1 * J(2, 1))) / (v2 * v2 * v2);
         worst = std::max(worst, std::abs(fd - exact));
         largest = std::max(largest, std::abs(exact));
     }
@@ -398,7 +431,8 @@ TEST(Compare, TableOnTable1DataHasEveryMethod) {
     // The pseudo-spline (eq 12–13: α_i depends on P_{i−1}, P_i, P_{i+1}) keeps locality; the global
     // C2 splines move every span.
     EXPECT_LE(*find_comparison(c, "pseudo-spline-exact").locality_footprint, 4);
-    for (const char* global : {"cubic-a", "curvature-profile"}) EXPECT_EQ(*find_comparison(c, global).locality_footprint, find_comparison(c, global).spans) << global;
+    for (const char* global : {"cubic-a", "curvature-profile"})
+        EXPECT_EQ(*find_comparison(c, global).locality_footprint, find_comparison(c, global).spans) << global;
     EXPECT_THROW(find_comparison(c, "cubic-z"), InvalidInput);
     const std::string md = comparison_markdown(c, false, false);
     EXPECT_NE(md.find("| pseudo-spline-exact | ok | 12 |"), std::string::npos) << md;
@@ -429,7 +463,8 @@ TEST(Compare, SpaceFairnessMeasuresMatchTheCurvesOwnCurvatureAndTorsion) {
         const double ds = analysis::arc_length(c, t - h, t + h, 4);
         const double fd = (analysis::curvature(c, t + h) - analysis::curvature(c, t - h)) / ds;
         const Eigen::MatrixXd J = c.jet(t, 3);
-        const Eigen::Vector3d d1 = J.row(1).transpose(), d2 = J.row(2).transpose(), d3 = J.row(3).transpose(), cr = d1.cross(d2);
+        const Eigen::Vector3d d1 = J.row(1).transpose(), d2 = J.row(2).transpose(), d3 = J.row(3).transpose(),
+                              cr = d1.cross(d2);
         const double v2 = d1.squaredNorm();
         const double exact = (cr.dot(d1.cross(d3)) / cr.norm() - 3.0 * cr.norm() * d1.dot(d2) / v2) / (v2 * v2);
         worst = std::max(worst, std::abs(fd - exact));
@@ -479,7 +514,8 @@ TEST(Compare, SpacePointsGetTheSpaceColumnsAndFigureData) {
         ASSERT_TRUE(r.locality_footprint.has_value()) << m;
     }
     // hosaka-c2-chord is the chord-length C2 spline, as cubic-b: the same row.
-    EXPECT_NEAR(find_comparison(c, "hosaka-c2-chord").fairness->max_abs_torsion, find_comparison(c, "cubic-b").fairness->max_abs_torsion, 1e-9);
+    EXPECT_NEAR(find_comparison(c, "hosaka-c2-chord").fairness->max_abs_torsion,
+                find_comparison(c, "cubic-b").fairness->max_abs_torsion, 1e-9);
     const FigureData d = comparison_figure_data(c, p, figure_sampling(24, 2000));
     ASSERT_FALSE(d.curves.empty());
     EXPECT_EQ(d.curves.front().size(), 4u);    // index, x, y, z
@@ -507,7 +543,8 @@ TEST(Compare, PseudoEnergyFromMeasuredPiecesEqualsSpanIntegration) {
                 if (b > t0 && b < t1) cuts.push_back(b);
             cuts.push_back(t1);
             for (std::size_t q = 0; q + 1 < cuts.size(); ++q) {
-                L += boost::math::quadrature::gauss_kronrod<double, 31>::integrate([&](double t) { return a.curve->derivatives(t, 1).norm(); }, cuts[q], cuts[q + 1], 15, 1e-13);
+                L += boost::math::quadrature::gauss_kronrod<double, 31>::integrate(
+                    [&](double t) { return a.curve->derivatives(t, 1).norm(); }, cuts[q], cuts[q + 1], 15, 1e-13);
                 E += boost::math::quadrature::gauss_kronrod<double, 31>::integrate(
                     [&](double t) {
                         const double k2 = analysis::curvature(*a.curve, t);
@@ -582,10 +619,12 @@ TEST(Compare, CombsAreThinnedAndSayHow) {
     EXPECT_EQ(stride, static_cast<int>((d.profiles.size() + kMaxCombTeeth - 2) / (kMaxCombTeeth - 1)));
     EXPECT_GT(stride, 1);
     EXPECT_LE(d.combs.size(), static_cast<std::size_t>(kMaxCombTeeth));
-    EXPECT_EQ(d.combs.size(), (d.profiles.size() - 1) / static_cast<std::size_t>(stride) + 1 + ((d.profiles.size() - 1) % static_cast<std::size_t>(stride) != 0 ? 1 : 0));
+    EXPECT_EQ(d.combs.size(), (d.profiles.size() - 1) / static_cast<std::size_t>(stride) + 1 +
+                                  ((d.profiles.size() - 1) % static_cast<std::size_t>(stride) != 0 ? 1 : 0));
     EXPECT_EQ(d.combs.back()[1], d.curves.back()[1]);  // the last sample keeps its tooth
     EXPECT_EQ(d.combs.back()[2], d.curves.back()[2]);
-    for (std::size_t k = 0; k < d.combs.size(); k += 97) {  // tooth k is sample k·stride (the last excepted): its length is scale·|κ|
+    for (std::size_t k = 0; k < d.combs.size();
+         k += 97) {  // tooth k is sample k·stride (the last excepted): its length is scale·|κ|
         const std::size_t sample = std::min(k * static_cast<std::size_t>(stride), d.profiles.size() - 1);
         const double tooth = std::hypot(d.combs[k][3] - d.combs[k][1], d.combs[k][4] - d.combs[k][2]);
         EXPECT_NEAR(tooth, d.comb_scale.at(0) * std::abs(d.profiles[sample][2]), 1e-9 * (1.0 + tooth)) << k;
@@ -658,9 +697,13 @@ TEST(Compare, PseudoSplineModesAreRotationInvariant) {
         Eigen::Matrix2d R;
         R << std::cos(a), -std::sin(a), std::sin(a), std::cos(a);
         for (int m = 0; m < 3; ++m) {
-            const Interpolant c = *interpolate(names[m], p, false).interpolant, r = *interpolate(names[m], p * R.transpose(), false).interpolant;
+            const Interpolant c = *interpolate(names[m], p, false).interpolant,
+                              r = *interpolate(names[m], p * R.transpose(), false).interpolant;
             for (std::size_t k = 0; k + 1 < c.node_parameters.size(); ++k)
-                worst[m] = std::max(worst[m], (R * c.curve->point(span_parameter(c, k, 0.5)) - r.curve->point(span_parameter(r, k, 0.5))).norm() / bounding_box_diagonal(p));
+                worst[m] = std::max(
+                    worst[m],
+                    (R * c.curve->point(span_parameter(c, k, 0.5)) - r.curve->point(span_parameter(r, k, 0.5))).norm() /
+                        bounding_box_diagonal(p));
         }
     }
     std::printf("rotation deviation: none %.2e, exact %.2e, approx %.2e\n", worst[0], worst[1], worst[2]);
@@ -710,8 +753,8 @@ TEST(Compare, OvershootSkipsNoSampleOutsideTheBox) {
 // InvalidInput; input of a wide but representable range is still accepted.
 TEST(Compare, CatmullRomRefusesPointsWhoseChordsVanishInItsParameters) {
     PointList absorbed(4, 2);
-    absorbed << -2.944495781822957e+47, -2.5773528032350093e-69, -2.463211248477935e-69, 1.745188899073996e-24, -4.469195348508078e+100, -2.590421391080513e-69,
-        -1.8659157147815346e-68, 8.145974672594484e-260;
+    absorbed << -2.944495781822957e+47, -2.5773528032350093e-69, -2.463211248477935e-69, 1.745188899073996e-24,
+        -4.469195348508078e+100, -2.590421391080513e-69, -1.8659157147815346e-68, 8.145974672594484e-260;
     EXPECT_THROW(interpolate("boost-catmull-rom", absorbed, false), InvalidInput);
     EXPECT_THROW(interpolate("boost-catmull-rom", absorbed, true), InvalidInput);
     PointList wide(4, 2);
@@ -764,21 +807,31 @@ private:
 TEST(Compare, AConfigurationThatFailsInAnyWayIsARowAndTheOthersAreMeasured) {
     // Two injected configurations: one whose build throws a std::runtime_error, one whose curve
     // throws when measured. Each becomes its own "failed" row; the table keeps every other row.
-    static const Method throwing_build{.name = "injected-throwing-build",
-                                       .claims = [](const ParameterValues&) { return MethodClaims{.max_dimension = 3}; },
-                                       .build = [](const ValidPoints&, const ParameterValues&) -> InterpolationResult { throw std::runtime_error("injected build failure"); }};
+    static const Method throwing_build{
+        .name = "injected-throwing-build",
+        .claims = [](const ParameterValues&) { return MethodClaims{.max_dimension = 3}; },
+        .build = [](const ValidPoints&, const ParameterValues&) -> InterpolationResult {
+            throw std::runtime_error("injected build failure");
+        }};
     static const Method failing_curve{.name = "injected-failing-curve",
                                       .claims = [](const ParameterValues&) { return MethodClaims{.max_dimension = 3}; },
-                                      .build = [](const ValidPoints& p, const ParameterValues&) {
-                                          InterpolationResult r = interpolate("cubic-b", p.points(), p.closed());
-                                          r.interpolant->curve = std::make_shared<CurveFailingPastItsMiddle>(r.interpolant->curve);
-                                          return r;
-                                      }};
+                                      .build =
+                                          [](const ValidPoints& p, const ParameterValues&) {
+                                              InterpolationResult r = interpolate("cubic-b", p.points(), p.closed());
+                                              r.interpolant->curve =
+                                                  std::make_shared<CurveFailingPastItsMiddle>(r.interpolant->curve);
+                                              return r;
+                                          }};
     const PointList p = random_walk_points(12);
     ComparisonOptions o;
-    o.configurations = {find_configuration("cubic-b"), Configuration{.name = throwing_build.name, .method = &throwing_build, .values = {}, .claims = throwing_build.claims({})},
-                        find_configuration("hermite-a"), Configuration{.name = failing_curve.name, .method = &failing_curve, .values = {}, .claims = failing_curve.claims({})},
-                        find_configuration("s-spline-m2")};
+    o.configurations = {
+        find_configuration("cubic-b"),
+        Configuration{
+            .name = throwing_build.name, .method = &throwing_build, .values = {}, .claims = throwing_build.claims({})},
+        find_configuration("hermite-a"),
+        Configuration{
+            .name = failing_curve.name, .method = &failing_curve, .values = {}, .claims = failing_curve.claims({})},
+        find_configuration("s-spline-m2")};
     const std::vector<MethodComparison> c = compare_methods(p, o);
     ASSERT_EQ(c.size(), 5u);
     for (std::size_t k : {0u, 2u, 4u}) {
@@ -805,12 +858,17 @@ TEST(Compare, SpanDisplacementsAreZeroOutsideALocalMethodsFootprint) {
     for (int i = 0; i < 15; ++i) p.row(i) << i, std::sin(0.8 * i) + 0.1 * i;
     q = p;
     q(7, 1) += 0.3;
-    const auto curve = [](const std::string& name, const PointList& pts) { return *cagd::methods::interpolate(name, pts, false).interpolant; };
-    const std::vector<double> local = cagd::compare::span_displacements(curve("s-spline-m1", p), curve("s-spline-m1", q));
+    const auto curve = [](const std::string& name, const PointList& pts) {
+        return *cagd::methods::interpolate(name, pts, false).interpolant;
+    };
+    const std::vector<double> local =
+        cagd::compare::span_displacements(curve("s-spline-m1", p), curve("s-spline-m1", q));
     ASSERT_EQ(local.size(), 14u);
     for (std::size_t k = 0; k < local.size(); ++k) {
-        if (k >= 4 && k <= 9) EXPECT_GT(local[k], 1e-6) << "span " << k;
-        else EXPECT_EQ(local[k], 0.0) << "span " << k;
+        if (k >= 4 && k <= 9)
+            EXPECT_GT(local[k], 1e-6) << "span " << k;
+        else
+            EXPECT_EQ(local[k], 0.0) << "span " << k;
     }
     const std::vector<double> global = cagd::compare::span_displacements(curve("cubic-b", p), curve("cubic-b", q));
     for (std::size_t k = 0; k < global.size(); ++k) EXPECT_GT(global[k], 0.0) << "span " << k;
@@ -849,7 +907,8 @@ TEST(Compare, CurvatureProfileFootprintCountsAsEverySpanSampled) {
             if (closed)
                 for (Eigen::Index i = 0; i < n; ++i) {
                     const double t = 2.0 * std::numbers::pi * static_cast<double>(i) / static_cast<double>(n);
-                    p.row(i) << (3.0 + 0.4 * std::sin(7.0 * t)) * std::cos(t), (2.0 + 0.3 * std::cos(5.0 * t)) * std::sin(t);
+                    p.row(i) << (3.0 + 0.4 * std::sin(7.0 * t)) * std::cos(t),
+                        (2.0 + 0.3 * std::cos(5.0 * t)) * std::sin(t);
                 }
             ComparisonOptions o;
             o.methods = {"curvature-profile"};
@@ -862,7 +921,8 @@ TEST(Compare, CurvatureProfileFootprintCountsAsEverySpanSampled) {
             const double diagonal = bounding_box_diagonal(p);
             PointList moved = p;
             moved(p.rows() / 2, 1) += 1e-3 * diagonal;
-            const InterpolationResult m = interpolate_from(find_configuration("curvature-profile"), moved, closed, c[0].solver_state);
+            const InterpolationResult m =
+                interpolate_from(find_configuration("curvature-profile"), moved, closed, c[0].solver_state);
             ASSERT_TRUE(m.interpolant.has_value()) << what;
             const Interpolant& a = *c[0].interpolant;
             const std::vector<double> d = span_displacements(a, *m.interpolant);
@@ -891,10 +951,12 @@ TEST(Compare, FootprintCountsAsEverySpanSampled) {
         if (closed)
             for (Eigen::Index i = 0; i < p.rows(); ++i) {
                 const double t = 2.0 * std::numbers::pi * static_cast<double>(i) / static_cast<double>(p.rows());
-                p.row(i) << (3.0 + 0.4 * std::sin(7.0 * t)) * std::cos(t), (2.0 + 0.3 * std::cos(5.0 * t)) * std::sin(t);
+                p.row(i) << (3.0 + 0.4 * std::sin(7.0 * t)) * std::cos(t),
+                    (2.0 + 0.3 * std::cos(5.0 * t)) * std::sin(t);
             }
         ComparisonOptions o;
-        o.methods = {"hermite-a", "cubic-b", "pseudo-spline-none", "boost-pchip", "boost-catmull-rom", "s-spline-m1", "b2-spline-m2", "hosaka-c2-chord"};
+        o.methods = {"hermite-a",         "cubic-b",     "pseudo-spline-none", "boost-pchip",
+                     "boost-catmull-rom", "s-spline-m1", "b2-spline-m2",       "hosaka-c2-chord"};
         o.closed = closed;
         const std::vector<MethodComparison> c = compare_methods(p, o);
         const double diagonal = bounding_box_diagonal(p);
@@ -904,11 +966,14 @@ TEST(Compare, FootprintCountsAsEverySpanSampled) {
         for (const MethodComparison& m : c) {
             if (m.status == cagd::compare::AttemptStatus::not_applicable) continue;
             const std::string what = m.method + (closed ? ", closed" : ", open");
-            ASSERT_TRUE(m.locality_footprint.has_value()) << what << ": " << cagd::compare::to_string(m.status) << " " << m.note;
+            ASSERT_TRUE(m.locality_footprint.has_value())
+                << what << ": " << cagd::compare::to_string(m.status) << " " << m.note;
             const InterpolationResult r = interpolate_from(find_configuration(m.method), moved, closed, m.solver_state);
             ASSERT_TRUE(r.interpolant.has_value()) << what;
             const std::vector<double> d = span_displacements(*m.interpolant, *r.interpolant);
-            EXPECT_EQ(*m.locality_footprint, std::count_if(d.begin(), d.end(), [&](double x) { return x > 1e-9 * diagonal; })) << what;
+            EXPECT_EQ(*m.locality_footprint, std::count_if(d.begin(), d.end(), [&](double x) {
+                return x > 1e-9 * diagonal;
+            })) << what;
             if (*m.locality_footprint < m.spans / 2) ++local;
         }
         if (!closed) {
@@ -949,7 +1014,8 @@ TEST(Compare, DrawingOnlyRunsGiveTheSameCurvesAndAProfileByTheTrapezoidRule) {
         EXPECT_EQ(a[i].interpolant->curve->jet(1.5, 2), b[i].interpolant->curve->jet(1.5, 2));
     }
     const auto exact = cagd::compare::comparison_figure_data(a, p, {.per_span = 16});
-    const auto quick = cagd::compare::comparison_figure_data(b, p, {.per_span = 16, .arc_length = cagd::compare::FigureSampling::ArcLength::trapezoid});
+    const auto quick = cagd::compare::comparison_figure_data(
+        b, p, {.per_span = 16, .arc_length = cagd::compare::FigureSampling::ArcLength::trapezoid});
     ASSERT_EQ(exact.profiles.size(), quick.profiles.size());
     EXPECT_EQ(exact.curves, quick.curves);
     EXPECT_EQ(exact.combs, quick.combs);
@@ -958,8 +1024,11 @@ TEST(Compare, DrawingOnlyRunsGiveTheSameCurvesAndAProfileByTheTrapezoidRule) {
         EXPECT_EQ(exact.profiles[k][2], quick.profiles[k][2]);
         EXPECT_NEAR(quick.profiles[k][1], exact.profiles[k][1], 1e-3 * std::max(1.0, exact.profiles[k][1]));
     }
-    EXPECT_THROW(cagd::compare::comparison_figure_data(b, p, {.per_span = 16, .span_stride = 2, .arc_length = cagd::compare::FigureSampling::ArcLength::trapezoid}),
-                 cagd::InvalidInput);
+    EXPECT_THROW(
+        cagd::compare::comparison_figure_data(
+            b, p,
+            {.per_span = 16, .span_stride = 2, .arc_length = cagd::compare::FigureSampling::ArcLength::trapezoid}),
+        cagd::InvalidInput);
 }
 
 // Continuation (the viewer's drag frames): a comparison given the solver states of an earlier one on
@@ -988,11 +1057,14 @@ TEST(Compare, IterativeMethodsContinueFromAnEarlierComparison) {
         double largest = 0.0;
         for (int k = 0; k <= 100; ++k) {
             const double t = k / 100.0;
-            largest = std::max(largest, (a.jet(a.t_min() + t * (a.t_max() - a.t_min()), 0).row(0) - b.jet(b.t_min() + t * (b.t_max() - b.t_min()), 0).row(0)).norm());
+            largest = std::max(largest, (a.jet(a.t_min() + t * (a.t_max() - a.t_min()), 0).row(0) -
+                                         b.jet(b.t_min() + t * (b.t_max() - b.t_min()), 0).row(0))
+                                            .norm());
         }
         EXPECT_LT(largest, 1e-9) << (wrong_size ? "a start of another size" : "the earlier solution");
         if (wrong_size) {
-            EXPECT_EQ(continued[0].solver_state, fresh[0].solver_state) << "a start of another size is ignored: the fresh solve";
+            EXPECT_EQ(continued[0].solver_state, fresh[0].solver_state)
+                << "a start of another size is ignored: the fresh solve";
         }
         EXPECT_EQ(continued[1].interpolant->curve->jet(1.5, 2), fresh[1].interpolant->curve->jet(1.5, 2));
     }
@@ -1033,9 +1105,11 @@ TEST(Compare, AClosedCurveThatLoopsWhereItsPointsDoNotIsFlagged) {
     EXPECT_GE(flagged, 2) << "the curvature profile converged on fewer than two of the four figure eights";
     // A circle's points give curves that are not flagged (the classic data: test_classic_benchmark).
     PointList circle(12, 2);
-    for (int k = 0; k < 12; ++k) circle.row(k) << std::cos(k * std::numbers::pi / 6), std::sin(k * std::numbers::pi / 6);
+    for (int k = 0; k < 12; ++k)
+        circle.row(k) << std::cos(k * std::numbers::pi / 6), std::sin(k * std::numbers::pi / 6);
     o.methods = {"cubic-b", "hermite-a", "s-spline-m2", "curvature-profile", "spiro"};
-    for (const MethodComparison& m : compare_methods(circle, o)) EXPECT_EQ(m.status, cagd::compare::AttemptStatus::ok) << m.method << ": " << m.note;
+    for (const MethodComparison& m : compare_methods(circle, o))
+        EXPECT_EQ(m.status, cagd::compare::AttemptStatus::ok) << m.method << ": " << m.note;
 }
 
 }  // namespace

@@ -25,7 +25,12 @@ BenchmarkPlan small_plan() {
     p.random.methods = p.truth.methods;
     PointList zigzag(5, 2);
     zigzag << 0, 0, 1, 1, 2, 0, 3, 1, 4, 0;
-    p.classic.push_back({.name = "zigzag", .group = "test", .file = "zigzag.csv", .closed = false, .source = "a zigzag, 100% made up", .points = zigzag});
+    p.classic.push_back({.name = "zigzag",
+                         .group = "test",
+                         .file = "zigzag.csv",
+                         .closed = false,
+                         .source = "a zigzag, 100% made up",
+                         .points = zigzag});
     return p;
 }
 
@@ -34,7 +39,8 @@ std::vector<std::pair<std::string, std::string>> parts_of(const BenchmarkPlan& p
     std::vector<std::pair<std::string, std::string>> parts;
     for (int k = 0; k < count; ++k) {
         const WorkShare share{k, count};
-        parts.emplace_back("part " + std::to_string(k + 1), benchmark_part_text(plan, share, run_benchmark(plan, share, 1)));
+        parts.emplace_back("part " + std::to_string(k + 1),
+                           benchmark_part_text(plan, share, run_benchmark(plan, share, 1)));
     }
     return parts;
 }
@@ -57,14 +63,16 @@ TEST(InterpolantBenchmark, PartsOfAnyShareCountMergeIntoTheWholeRunsFiles) {
     const BenchmarkPlan plan = small_plan();
     const BenchmarkResults whole = run_benchmark(plan, {}, 2);
     const auto files = benchmark_files(plan, whole);
-    ASSERT_GE(files.size(), 7u) << "truth_runs, convergence_orders, leaderboard, random_sets, classic_runs, classic.md, convergence .dat";
+    ASSERT_GE(files.size(), 7u)
+        << "truth_runs, convergence_orders, leaderboard, random_sets, classic_runs, classic.md, convergence .dat";
     for (const int count : {1, 2, 3, 5}) {
         auto parts = parts_of(plan, count);
         std::swap(parts.front(), parts.back());  // any order
         const BenchmarkResults merged = merge_benchmark_parts(plan, parts);
         EXPECT_EQ(benchmark_files(plan, merged), files) << count << " shares";
         ASSERT_EQ(merged.random.size(), whole.random.size());
-        for (std::size_t i = 0; i < merged.random.size(); ++i) EXPECT_EQ(merged.random[i].seconds.size(), whole.random[i].seconds.size()) << "every run time travels";
+        for (std::size_t i = 0; i < merged.random.size(); ++i)
+            EXPECT_EQ(merged.random[i].seconds.size(), whole.random[i].seconds.size()) << "every run time travels";
     }
 }
 
@@ -78,8 +86,11 @@ TEST(InterpolantBenchmark, APartCarriesEveryValueBitForBit) {
         const TruthRun &a = whole.truth[i], &b = back.truth[i];
         EXPECT_EQ(b.method, a.method);
         EXPECT_EQ(b.note, a.note);
-        for (int e = 0; e < 5; ++e) EXPECT_TRUE(same_bits(truth_error(a.errors, e), truth_error(b.errors, e))) << a.method << " " << truth_error_names()[static_cast<std::size_t>(e)];
-        EXPECT_TRUE(same_bits(a.shape.bending, b.shape.bending) && same_bits(a.truth_shape.variation, b.truth_shape.variation));
+        for (int e = 0; e < 5; ++e)
+            EXPECT_TRUE(same_bits(truth_error(a.errors, e), truth_error(b.errors, e)))
+                << a.method << " " << truth_error_names()[static_cast<std::size_t>(e)];
+        EXPECT_TRUE(same_bits(a.shape.bending, b.shape.bending) &&
+                    same_bits(a.truth_shape.variation, b.truth_shape.variation));
         EXPECT_EQ(a.extensionality.has_value(), b.extensionality.has_value());
         if (a.extensionality) {
             EXPECT_TRUE(same_bits(*a.extensionality, *b.extensionality));
@@ -106,7 +117,8 @@ TEST(InterpolantBenchmark, MissingTwiceForeignAndDamagedPartsAreRefusedByName) {
     const BenchmarkPlan plan = small_plan();
     auto parts = parts_of(plan, 3);
     EXPECT_EQ(merge_error(plan, parts), "");
-    EXPECT_NE(merge_error(plan, {parts[0], parts[2]}).find("part 2 of 3 is missing"), std::string::npos) << merge_error(plan, {parts[0], parts[2]});
+    EXPECT_NE(merge_error(plan, {parts[0], parts[2]}).find("part 2 of 3 is missing"), std::string::npos)
+        << merge_error(plan, {parts[0], parts[2]});
     const std::string twice = merge_error(plan, {parts[0], parts[1], parts[1], parts[2]});
     EXPECT_NE(twice.find("part 2 of 3 again (first in part 2)"), std::string::npos) << twice;
     BenchmarkPlan other = plan;
@@ -145,7 +157,8 @@ TEST(InterpolantBenchmark, ASharesRunsOutsideItAreLeftEmpty) {
     for (std::size_t i = 0; i < half.classic.size(); ++i) EXPECT_EQ(half.classic[i].method.empty(), i % 2 == 0) << i;
     int sets = 0;
     for (const RandomSetSummary& s : half.random) sets += s.sets;
-    EXPECT_EQ(sets, 7 * 3) << "the odd tasks of 14 (walk and scatter, 7 sets each): 7 sets for each of 3 configurations";
+    EXPECT_EQ(sets, 7 * 3)
+        << "the odd tasks of 14 (walk and scatter, 7 sets each): 7 sets for each of 3 configurations";
     try {
         run_benchmark(plan, {2, 2});
         ADD_FAILURE() << "share 2 of 2 accepted";

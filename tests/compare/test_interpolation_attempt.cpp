@@ -10,13 +10,16 @@ namespace {
 using cagd::compare::AttemptStatus;
 
 TEST(AttemptStatus, EveryStatusReadsBackFromItsTextAndNothingElseDoes) {
-    for (const AttemptStatus s : {AttemptStatus::ok, AttemptStatus::not_applicable, AttemptStatus::refused, AttemptStatus::no_result, AttemptStatus::cusp,
-                                  AttemptStatus::loops, AttemptStatus::failed}) {
-        const std::optional<AttemptStatus> back = cagd::compare::attempt_status_from_string(cagd::compare::to_string(s));
+    for (const AttemptStatus s :
+         {AttemptStatus::ok, AttemptStatus::not_applicable, AttemptStatus::refused, AttemptStatus::no_result,
+          AttemptStatus::cusp, AttemptStatus::loops, AttemptStatus::failed}) {
+        const std::optional<AttemptStatus> back =
+            cagd::compare::attempt_status_from_string(cagd::compare::to_string(s));
         ASSERT_TRUE(back.has_value()) << cagd::compare::to_string(s);
         EXPECT_EQ(*back, s) << cagd::compare::to_string(s);
     }
-    for (const char* text : {"", "OK", "no-result", "not_applicable", "?"}) EXPECT_FALSE(cagd::compare::attempt_status_from_string(text).has_value()) << text;
+    for (const char* text : {"", "OK", "no-result", "not_applicable", "?"})
+        EXPECT_FALSE(cagd::compare::attempt_status_from_string(text).has_value()) << text;
 }
 
 TEST(AttemptInterpolation, CompareReportsWhatTheAttemptReports) {
@@ -31,7 +34,8 @@ TEST(AttemptInterpolation, CompareReportsWhatTheAttemptReports) {
     const std::vector<cagd::compare::MethodComparison> rows = cagd::compare::compare_methods(p, o);
     ASSERT_EQ(rows.size(), 3u);
     for (const auto& row : rows) {
-        const auto attempt = cagd::compare::attempt_interpolation(cagd::methods::find_configuration(row.method), p, true);
+        const auto attempt =
+            cagd::compare::attempt_interpolation(cagd::methods::find_configuration(row.method), p, true);
         EXPECT_EQ(row.status, attempt.status) << row.method << ": " << row.note << " / " << attempt.note;
         EXPECT_EQ(row.note, attempt.note) << row.method;
     }

@@ -43,10 +43,12 @@ TEST(RandomSets, CountsAddUpAndDoNotDependOnTheThreads) {
     // Spiro has no solution on some scattered points (about a third at 16 points); walks turning
     // at most 1 rad are easier.
     const auto find = [&](RandomSetKind kind, int n, const std::string& m) {
-        return *std::find_if(one.begin(), one.end(), [&](const RandomSetSummary& s) { return s.kind == kind && s.n == n && s.method == m; });
+        return *std::find_if(one.begin(), one.end(),
+                             [&](const RandomSetSummary& s) { return s.kind == kind && s.n == n && s.method == m; });
     };
     EXPECT_GT(find(RandomSetKind::scatter, 16, "spiro").no_result, 0);
-    EXPECT_LT(find(RandomSetKind::walk, 16, "spiro").failure_rate(), find(RandomSetKind::scatter, 16, "spiro").failure_rate());
+    EXPECT_LT(find(RandomSetKind::walk, 16, "spiro").failure_rate(),
+              find(RandomSetKind::scatter, 16, "spiro").failure_rate());
 }
 
 TEST(RandomSets, TimingRowsAreOrderedQuantiles) {

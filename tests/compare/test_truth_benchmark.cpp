@@ -4,8 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 #include <numbers>
+#include <optional>
 
 #include "cagd/analysis/curve_measures.hpp"
 #include "cagd/compare/truth_benchmark.hpp"
@@ -65,14 +65,17 @@ TEST(TruthCurves, JetsAreTheDerivativesOfThePosition) {
             const Eigen::MatrixXd j = c.jet(t, 3), plus = c.jet(t + h, 3), minus = c.jet(t - h, 3);
             for (int k = 1; k <= 3; ++k) {
                 const Eigen::RowVectorXd fd = (plus.row(k - 1) - minus.row(k - 1)) / (2 * h);
-                EXPECT_LE((fd - j.row(k)).norm(), 1e-6 * (1 + j.row(k).norm())) << f.name << ": r^(" << k << ") at t = " << t;
+                EXPECT_LE((fd - j.row(k)).norm(), 1e-6 * (1 + j.row(k).norm()))
+                    << f.name << ": r^(" << k << ") at t = " << t;
             }
         }
     }
 }
 
 TEST(TruthCurves, LengthsAreTheClosedForms) {
-    const auto length = [](const std::string& name) { return analysis::accurate_arc_length(*find_truth_family(name).curve).value; };
+    const auto length = [](const std::string& name) {
+        return analysis::accurate_arc_length(*find_truth_family(name).curve).value;
+    };
     EXPECT_NEAR(length("line"), std::sqrt(20.0), 1e-13);
     EXPECT_NEAR(length("circle"), 2 * kPi, 1e-13);
     EXPECT_NEAR(length("helix"), 3 * kPi * std::sqrt(1 + 1.0 / 16), 1e-12);
@@ -81,7 +84,8 @@ TEST(TruthCurves, LengthsAreTheClosedForms) {
     // The clothoid's curvature is s; the log-aesthetic curve's (1 + s)^(−1/2).
     for (double s : {0.3, 1.7}) {
         EXPECT_NEAR(analysis::signed_curvature(*find_truth_family("clothoid").curve, s), s, 1e-12);
-        EXPECT_NEAR(analysis::signed_curvature(*find_truth_family("log-aesthetic").curve, s), 1 / std::sqrt(1 + s), 1e-12);
+        EXPECT_NEAR(analysis::signed_curvature(*find_truth_family("log-aesthetic").curve, s), 1 / std::sqrt(1 + s),
+                    1e-12);
     }
     EXPECT_THROW(find_truth_family("square"), InvalidInput);
 }
@@ -95,11 +99,18 @@ TEST(TruthCurves, SamplesAreOnTheCurveAtTheirArcLengths) {
             ASSERT_EQ(s.params.size(), closed ? 11u : 10u);
             const int N = closed ? 10 : 9;
             for (int i = 0; i < 10; ++i) {
-                EXPECT_LE((f.curve->jet(s.params[static_cast<std::size_t>(i)], 0).row(0) - s.points.row(i)).norm(), 1e-15);
-                const double u = static_cast<double>(i) / N, g = spacing == TruthSpacing::uniform ? u : u - 0.6 * std::sin(2 * kPi * u) / (2 * kPi);
-                EXPECT_NEAR(analysis::arc_length(*f.curve, f.curve->t_min(), s.params[static_cast<std::size_t>(i)], 16), g * s.length, 1e-10) << i;
+                EXPECT_LE((f.curve->jet(s.params[static_cast<std::size_t>(i)], 0).row(0) - s.points.row(i)).norm(),
+                          1e-15);
+                const double u = static_cast<double>(i) / N,
+                             g = spacing == TruthSpacing::uniform ? u : u - 0.6 * std::sin(2 * kPi * u) / (2 * kPi);
+                EXPECT_NEAR(analysis::arc_length(*f.curve, f.curve->t_min(), s.params[static_cast<std::size_t>(i)], 16),
+                            g * s.length, 1e-10)
+                    << i;
             }
-            EXPECT_NEAR(s.length, closed ? analysis::accurate_arc_length(*f.curve).value : analysis::arc_length(*f.curve, 0.0, 1.5 * kPi, 16), 1e-10);
+            EXPECT_NEAR(s.length,
+                        closed ? analysis::accurate_arc_length(*f.curve).value
+                               : analysis::arc_length(*f.curve, 0.0, 1.5 * kPi, 16),
+                        1e-10);
         }
     EXPECT_THROW(truth_samples(find_truth_family("clothoid"), 10, TruthSpacing::uniform, true), InvalidInput);
     EXPECT_THROW(truth_samples(find_truth_family("circle"), 2, TruthSpacing::uniform, true), InvalidInput);
@@ -125,25 +136,32 @@ TEST(TruthBenchmark, ErrorsAgreeWithASecondComputation) {
                     const Eigen::VectorXd q = c.jet(t, 0).row(0).transpose();
                     const double tt = brute_force_parameter(truth, q, m.sample.t_first, m.sample.t_last);
                     dense = std::max(dense, (truth.jet(tt, 0).row(0).transpose() - q).norm() / m.sample.length);
-                    const double dk = (analysis::signed_curvature(c, t) - analysis::signed_curvature(truth, tt)) * m.sample.length;
+                    const double dk =
+                        (analysis::signed_curvature(c, t) - analysis::signed_curvature(truth, tt)) * m.sample.length;
                     const double f = dk * dk, speed = c.jet(t, 1).row(1).norm(), h = (u[k + 1] - u[k]) / 64;
-                    if (i > 0) l2 += 0.5 * h * (f * speed + previous_f * previous_speed), arc += 0.5 * h * (speed + previous_speed);
+                    if (i > 0)
+                        l2 += 0.5 * h * (f * speed + previous_f * previous_speed),
+                            arc += 0.5 * h * (speed + previous_speed);
                     previous_f = f, previous_speed = speed;
                 }
             }
             // Both are maxima over samples: 16 Gauss nodes per span and 65 equally spaced points agree
             // to within 5 %.
             EXPECT_NEAR(m.errors.distance, dense, 0.05 * dense) << method << " on " << family;
-            EXPECT_NEAR(m.errors.length, std::abs(analysis::accurate_arc_length(c).value - m.sample.length) / m.sample.length, 1e-12) << method << " on " << family;
+            EXPECT_NEAR(m.errors.length,
+                        std::abs(analysis::accurate_arc_length(c).value - m.sample.length) / m.sample.length, 1e-12)
+                << method << " on " << family;
             // The curvature's L2 by Gauss nodes and by the trapezoid rule on 64 samples per span.
-            EXPECT_NEAR(m.errors.curvature_l2, std::sqrt(l2 / arc), 0.02 * m.errors.curvature_l2) << method << " on " << family;
+            EXPECT_NEAR(m.errors.curvature_l2, std::sqrt(l2 / arc), 0.02 * m.errors.curvature_l2)
+                << method << " on " << family;
         }
 }
 
 TEST(TruthBenchmark, KnownReproductionsAndOrders) {
     // Every method reproduces a line; the clothoid spline and Spiro a closed circle.
     for (const char* method : {"cubic-a", "hermite-b", "curvature-profile", "spiro", "eigen-spline-3"})
-        EXPECT_LE(measure(method, "line", 12, TruthSpacing::uniform, false).errors.distance, truth_exact_level(12)) << method;
+        EXPECT_LE(measure(method, "line", 12, TruthSpacing::uniform, false).errors.distance, truth_exact_level(12))
+            << method;
     for (const char* method : {"curvature-profile", "spiro"}) {
         const TruthErrors e = measure(method, "circle", 7, TruthSpacing::nonuniform, true).errors;
         EXPECT_LE(e.distance, truth_exact_level(7)) << method;
@@ -159,7 +177,8 @@ TEST(TruthBenchmark, OrdersFromTheTwoLargestSizes) {
     std::vector<TruthRun> runs;
     for (int n : {6, 12, 24, 48}) {
         TruthRun r;
-        r.family = "circle", r.closed = true, r.n = n, r.method = "cubic-b", r.status = cagd::compare::AttemptStatus::ok;
+        r.family = "circle", r.closed = true, r.n = n, r.method = "cubic-b",
+        r.status = cagd::compare::AttemptStatus::ok;
         // Pre-asymptotic at n = 6 (a bump), then exactly n^-4; the length at rounding level.
         r.errors.distance = (n == 6 ? 10.0 : 1.0) * std::pow(n, -4.0);
         r.errors.tangent_angle = r.errors.curvature_max = r.errors.curvature_l2 = 3.0 * std::pow(n, -2.0);
@@ -231,7 +250,8 @@ TEST(TruthBenchmark, ShapeMeasures) {
     // On interpolants: the bending energy by the library's own quadrature; C2 against G1 joins.
     for (const char* method : {"cubic-b", "hermite-a"}) {
         const TruthSample s = truth_samples(find_truth_family("ellipse"), 10, TruthSpacing::nonuniform, true);
-        const methods::InterpolationResult r = methods::interpolate(methods::find_configuration(method), s.points, true);
+        const methods::InterpolationResult r =
+            methods::interpolate(methods::find_configuration(method), s.points, true);
         ASSERT_TRUE(r.outcome.ok());
         const Curve& c = *r.interpolant->curve;
         const ShapeMeasures m = shape_measures(c, r.interpolant->node_parameters, true);
@@ -274,7 +294,8 @@ TEST(TruthBenchmark, ExtensionalityOfTheSpiralSplinesAndNotOfTheCubic) {
     o.methods = {"spiro", "cubic-a"};
     const std::vector<TruthRun> runs = run_truth_benchmark(o);
     const std::vector<std::string> header = truth_runs_header();
-    const auto column = static_cast<std::size_t>(std::find(header.begin(), header.end(), "extensionality") - header.begin());
+    const auto column =
+        static_cast<std::size_t>(std::find(header.begin(), header.end(), "extensionality") - header.begin());
     ASSERT_LT(column, header.size());
     for (const auto& row : truth_runs_rows(runs)) EXPECT_EQ(row[5] == "ok", !row[column].empty()) << row[4];
 }

@@ -64,7 +64,9 @@ TEST(BernsteinBasis, StableValuesAgreeWithDeCasteljauAtHighDegree) {
         const BezierCurve dc(cp), bern(cp, 0.0, 1.0, BezierEvaluation::bernstein);
         for (double t : {0.0, 0.01, 0.37, 0.5, 0.93, 1.0}) {
             const Eigen::MatrixXd a = dc.jet(t, 3), b = bern.jet(t, 3);
-            for (int k = 0; k <= 3; ++k) EXPECT_LT((a.row(k) - b.row(k)).norm(), 1e-11 * std::pow(degree, k) + 1e-13) << degree << " " << t << " " << k;
+            for (int k = 0; k <= 3; ++k)
+                EXPECT_LT((a.row(k) - b.row(k)).norm(), 1e-11 * std::pow(degree, k) + 1e-13)
+                    << degree << " " << t << " " << k;
         }
         double sum = 0.0;
         for (double v : bernstein_basis_values(degree, 0.37)) sum += v;
@@ -73,9 +75,12 @@ TEST(BernsteinBasis, StableValuesAgreeWithDeCasteljauAtHighDegree) {
     // The power basis is exact for low degree and useless at degree 99.
     Eigen::MatrixXd cp(4, 2);
     cp << 0, 0, 1, 2, 3, 2, 4, 0;
-    EXPECT_LT((BezierCurve(cp, 0, 1, BezierEvaluation::power_basis).jet(0.3, 3) - BezierCurve(cp).jet(0.3, 3)).norm(), 1e-12);
+    EXPECT_LT((BezierCurve(cp, 0, 1, BezierEvaluation::power_basis).jet(0.3, 3) - BezierCurve(cp).jet(0.3, 3)).norm(),
+              1e-12);
     const TypicalPolygon poly = scale_one_typical_polygon(-0.5, 1.5, 99);
-    const double err = (BezierCurve(poly.points, 0, 1, BezierEvaluation::power_basis).point(0.5) - BezierCurve(poly.points).point(0.5)).norm();
+    const double err =
+        (BezierCurve(poly.points, 0, 1, BezierEvaluation::power_basis).point(0.5) - BezierCurve(poly.points).point(0.5))
+            .norm();
     EXPECT_GT(err, 1e-3);
 }
 
@@ -91,10 +96,14 @@ TEST(BernsteinBasis, SmallDegreeTriangleAndRatioPathAgreeWithTheDefinition) {
             long double binom = 1.0L;
             for (int i = 0; i <= d; ++i) {
                 if (i > 0) binom = binom * (d - i + 1) / i;
-                const long double exact = binom * std::pow(static_cast<long double>(t), i) * std::pow(1.0L - static_cast<long double>(t), d - i);
-                const double tol = 4.0 * (d + 1) * std::numeric_limits<double>::epsilon() * static_cast<double>(exact) + 1e-300;
-                EXPECT_NEAR(b[static_cast<std::size_t>(i)], static_cast<double>(exact), tol) << "d " << d << " t " << t << " i " << i;
-                EXPECT_EQ(into[static_cast<std::size_t>(i)], b[static_cast<std::size_t>(i)]) << "d " << d << " t " << t << " i " << i;
+                const long double exact = binom * std::pow(static_cast<long double>(t), i) *
+                                          std::pow(1.0L - static_cast<long double>(t), d - i);
+                const double tol =
+                    4.0 * (d + 1) * std::numeric_limits<double>::epsilon() * static_cast<double>(exact) + 1e-300;
+                EXPECT_NEAR(b[static_cast<std::size_t>(i)], static_cast<double>(exact), tol)
+                    << "d " << d << " t " << t << " i " << i;
+                EXPECT_EQ(into[static_cast<std::size_t>(i)], b[static_cast<std::size_t>(i)])
+                    << "d " << d << " t " << t << " i " << i;
             }
         }
     }

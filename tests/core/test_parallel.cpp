@@ -40,7 +40,8 @@ TEST(Parallel, TheLowestFailingIndexIsRethrownWhateverTheThreadCount) {
         } catch (const std::runtime_error& e) {
             EXPECT_EQ(std::string(e.what()), "index 7") << threads << " threads";
         }
-        for (int k = 0; k <= 7; ++k) EXPECT_EQ(ran[static_cast<std::size_t>(k)], 1) << "index " << k << " with " << threads << " threads";
+        for (int k = 0; k <= 7; ++k)
+            EXPECT_EQ(ran[static_cast<std::size_t>(k)], 1) << "index " << k << " with " << threads << " threads";
     }
     std::vector<long> square(1000);
     cagd::parallel_for(1000, 3, [&](long k) { square[static_cast<std::size_t>(k)] = k * k; });

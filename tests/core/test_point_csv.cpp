@@ -25,10 +25,10 @@
 #include "cagd/compare/method_comparison.hpp"
 #include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
-#include "cagd/io/file_lock.hpp"
 #include "cagd/core/parallel.hpp"
 #include "cagd/core/point_csv.hpp"
 #include "cagd/core/random_walk.hpp"
+#include "cagd/io/file_lock.hpp"
 #include "cagd/locality/locality_spline.hpp"
 #include "cagd/methods/method_registry.hpp"
 
@@ -104,10 +104,11 @@ TEST(PointReader, ErrorsNameTheLine) {
 }
 
 TEST(PointReader, KeepsEveryPointWhateverTheLineEndsAndMarks) {
-    for (const std::string text : {"0,0\n1,2\n", "0,0\r\n1,2\r\n",
-                                   "\xEF\xBB\xBF"
-                                   "0,0\n1,2\n",
-                                   "\xEF\xBB\xBFx,y\r\n0,0\r\n1,2\r\n", "# c\n 0 , 0 # first\n\n1,\t2\n", "x_1,y-2\n0,0\n1,2\n"}) {
+    for (const std::string text :
+         {"0,0\n1,2\n", "0,0\r\n1,2\r\n",
+          "\xEF\xBB\xBF"
+          "0,0\n1,2\n",
+          "\xEF\xBB\xBFx,y\r\n0,0\r\n1,2\r\n", "# c\n 0 , 0 # first\n\n1,\t2\n", "x_1,y-2\n0,0\n1,2\n"}) {
         const PointList p = points_from_text(text);
         ASSERT_EQ(p.rows(), 2) << text;
         EXPECT_EQ(p(0, 0), 0.0) << text;
@@ -117,7 +118,8 @@ TEST(PointReader, KeepsEveryPointWhateverTheLineEndsAndMarks) {
 
 TEST(PointReader, AFirstLineIsAHeaderOnlyIfAllItsFieldsAreNames) {
     // A typo, a whitespace separator, a mixed line, names that are numbers: errors naming line 1.
-    for (const std::string text : {"0,0x\n1,1\n2,0\n", "0 0\n1 1\n", "x,1\n1,1\n2,0\n", "nan,inf\n1,1\n2,0\n", "x,\n1,1\n", "1x,y\n1,1\n"}) {
+    for (const std::string text :
+         {"0,0x\n1,1\n2,0\n", "0 0\n1 1\n", "x,1\n1,1\n2,0\n", "nan,inf\n1,1\n2,0\n", "x,\n1,1\n", "1x,y\n1,1\n"}) {
         const std::string m = message_of(text);
         EXPECT_NE(m.find("p.csv:1:"), std::string::npos) << text << " -> " << m;
     }
@@ -127,8 +129,10 @@ TEST(PointReader, AFirstLineIsAHeaderOnlyIfAllItsFieldsAreNames) {
 }
 
 TEST(PointReader, NamesTheLineOfEveryOtherFault) {
-    EXPECT_NE(message_of("0,0\n1,1,1\n").find("p.csv:2: 3 columns, earlier lines have 2"), std::string::npos) << message_of("0,0\n1,1,1\n");
-    EXPECT_NE(message_of("0,0\n1,nan\n").find("p.csv:2: coordinate nan is not finite"), std::string::npos) << message_of("0,0\n1,nan\n");
+    EXPECT_NE(message_of("0,0\n1,1,1\n").find("p.csv:2: 3 columns, earlier lines have 2"), std::string::npos)
+        << message_of("0,0\n1,1,1\n");
+    EXPECT_NE(message_of("0,0\n1,nan\n").find("p.csv:2: coordinate nan is not finite"), std::string::npos)
+        << message_of("0,0\n1,nan\n");
     EXPECT_NE(message_of("0\n1\n").find("p.csv:1: 1 columns"), std::string::npos) << message_of("0\n1\n");
     EXPECT_NE(message_of("x,y\n").find("no data rows"), std::string::npos);
     EXPECT_NE(message_of("").find("no data rows"), std::string::npos);
@@ -154,11 +158,13 @@ TEST(ValuesAndTables, FollowTheSameRules) {
         read_numeric_table(no_header, "t.csv");
         ADD_FAILURE() << "a table without header accepted";
     } catch (const InvalidInput& e) {
-        EXPECT_NE(std::string(e.what()).find("t.csv:1: needs a header line of column names"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("t.csv:1: needs a header line of column names"), std::string::npos)
+            << e.what();
     }
     std::istringstream inf_row("u,x\n0,inf\n");
     EXPECT_THROW(read_numeric_table(inf_row, "t.csv"), InvalidInput);
-    EXPECT_TRUE(is_column_name("dx") && is_column_name("_a.b-c") && !is_column_name("nan") && !is_column_name("Inf") && !is_column_name("1x") && !is_column_name(""));
+    EXPECT_TRUE(is_column_name("dx") && is_column_name("_a.b-c") && !is_column_name("nan") && !is_column_name("Inf") &&
+                !is_column_name("1x") && !is_column_name(""));
 }
 
 TEST(PointReader, ReadsHeaderCommentsBlanksAndThreeColumns) {
@@ -168,4 +174,3 @@ TEST(PointReader, ReadsHeaderCommentsBlanksAndThreeColumns) {
     ASSERT_EQ(p.cols(), 3);
     EXPECT_EQ(p(1, 2), 6.0);
 }
-

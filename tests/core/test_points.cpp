@@ -15,6 +15,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "../support/messages.hpp"
 #include "cagd/analysis/curve_measures.hpp"
 #include "cagd/analysis/fairness_measures.hpp"
 #include "cagd/analysis/log_curvature_graph.hpp"
@@ -26,7 +27,6 @@
 #include "cagd/core/points.hpp"
 #include "cagd/core/random_walk.hpp"
 #include "cagd/methods/method_registry.hpp"
-#include "../support/messages.hpp"
 
 using std::isnan;
 using namespace cagd;
@@ -46,7 +46,8 @@ namespace {
 // Eigen's row norm, chord by chord: the reference chord_lengths must equal bit for bit.
 std::vector<double> row_norm_chords(const PointList& p, bool closed) {
     std::vector<double> h;
-    for (Eigen::Index k = 0; k + 1 < p.rows() || (closed && k < p.rows()); ++k) h.push_back((p.row(k + 1 == p.rows() ? 0 : k + 1) - p.row(k)).norm());
+    for (Eigen::Index k = 0; k + 1 < p.rows() || (closed && k < p.rows()); ++k)
+        h.push_back((p.row(k + 1 == p.rows() ? 0 : k + 1) - p.row(k)).norm());
     return h;
 }
 
@@ -58,11 +59,13 @@ TEST(Points, ChordLengthsAreEigensRowNormsBitForBit) {
     for (Eigen::Index dim = 1; dim <= 3; ++dim)
         for (Eigen::Index n : {2, 3, 7, 101}) {
             PointList p(n, dim);
-            for (Eigen::Index i = 0; i < p.size(); ++i) p.data()[i] = std::ldexp(u(rng), static_cast<int>(i % 40) - 20);  // magnitudes 2^-20 … 2^19
+            for (Eigen::Index i = 0; i < p.size(); ++i)
+                p.data()[i] = std::ldexp(u(rng), static_cast<int>(i % 40) - 20);  // magnitudes 2^-20 … 2^19
             for (bool closed : {false, true}) {
                 const std::vector<double> h = chord_lengths(p, closed), want = row_norm_chords(p, closed);
                 ASSERT_EQ(h.size(), want.size()) << "dim " << dim << " n " << n << " closed " << closed;
-                for (std::size_t k = 0; k < h.size(); ++k) ASSERT_EQ(h[k], want[k]) << "chord " << k << " dim " << dim << " n " << n << " closed " << closed;
+                for (std::size_t k = 0; k < h.size(); ++k)
+                    ASSERT_EQ(h[k], want[k]) << "chord " << k << " dim " << dim << " n " << n << " closed " << closed;
             }
         }
     EXPECT_TRUE(chord_lengths(PointList(1, 2), false).empty());
@@ -79,8 +82,8 @@ TEST(Points, FirstChordShorterThanFindsTheFirstShortChord) {
 }
 
 TEST(Points, AllFiniteFindsEveryNonFiniteValueAtEveryPosition) {
-    const double bad[] = {std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN(),
-                          -std::numeric_limits<double>::quiet_NaN()};
+    const double bad[] = {std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+                          std::numeric_limits<double>::quiet_NaN(), -std::numeric_limits<double>::quiet_NaN()};
     for (std::size_t n : {1u, 2u, 3u, 5u, 8u, 17u}) {
         // finite extremes: the largest, the smallest subnormal, −0
         std::vector<double> v(n, std::numeric_limits<double>::max());
@@ -104,50 +107,54 @@ TEST(Points, AllFiniteFindsEveryNonFiniteValueAtEveryPosition) {
 // that differ in one coordinate only, or by the smallest subnormal, pass; −0 and +0 coincide.
 // (require_valid_points_with_extent too: the same checks in its own pass, the same messages.)
 TEST(Points, RequireValidPointsNamesEveryCoincidingPair) {
-  for (const bool with_extent : {false, true}) {
-    const auto message = [with_extent](const PointList& p, bool closed) -> std::string {
-        try {
-            if (with_extent)
-                (void)require_valid_points_with_extent(p, 2, closed, "test");
-            else
-                require_valid_points(p, 2, true, closed, "test");
-        } catch (const InvalidInput& e) {
-            return e.what();
-        }
-        return "";
-    };
-    SCOPED_TRACE(with_extent ? "require_valid_points_with_extent" : "require_valid_points");
-    for (Eigen::Index dim = 1; dim <= 3; ++dim)
-        for (Eigen::Index n : {2, 3, 1024, 1025, 1026, 2050}) {
-            PointList p(n, dim);
-            for (Eigen::Index i = 0; i < n; ++i)
-                for (Eigen::Index k = 0; k < dim; ++k) p(i, k) = static_cast<double>(i) + 0.5 * static_cast<double>(k);
-            const std::string where = "dim " + std::to_string(dim) + " n " + std::to_string(n);
-            ASSERT_EQ(message(p, false), "") << where;
-            ASSERT_EQ(message(p, n >= 3), "") << where;
-            for (Eigen::Index i : {Eigen::Index{0}, Eigen::Index{1022}, Eigen::Index{1023}, Eigen::Index{1024}, n - 2}) {
-                if (i < 0 || i + 1 >= n) continue;
-                PointList q = p;
-                q.row(i + 1) = q.row(i);
-                const std::string named = cagd::point_label(i) + " and " + cagd::point_label(i + 1) + " coincide";
-                EXPECT_NE(message(q, false).find(named), std::string::npos) << where << " pair " << i << ": " << message(q, false);
-                q(i + 1, dim - 1) = std::nextafter(q(i, dim - 1), 1e300);  // one coordinate differs, by one ulp
-                EXPECT_EQ(message(q, false), "") << where << " pair " << i;
+    for (const bool with_extent : {false, true}) {
+        const auto message = [with_extent](const PointList& p, bool closed) -> std::string {
+            try {
+                if (with_extent)
+                    (void)require_valid_points_with_extent(p, 2, closed, "test");
+                else
+                    require_valid_points(p, 2, true, closed, "test");
+            } catch (const InvalidInput& e) {
+                return e.what();
             }
-            if (n >= 3) {
-                PointList q = p;
-                q.row(n - 1) = q.row(0);
-                EXPECT_EQ(message(q, false), "") << where << ": open, the last point may equal the first";
-                const std::string named = cagd::point_label(n - 1) + " and point 1 (row 0) coincide";
-                EXPECT_NE(message(q, true).find(named), std::string::npos) << where << ": " << message(q, true);
+            return "";
+        };
+        SCOPED_TRACE(with_extent ? "require_valid_points_with_extent" : "require_valid_points");
+        for (Eigen::Index dim = 1; dim <= 3; ++dim)
+            for (Eigen::Index n : {2, 3, 1024, 1025, 1026, 2050}) {
+                PointList p(n, dim);
+                for (Eigen::Index i = 0; i < n; ++i)
+                    for (Eigen::Index k = 0; k < dim; ++k)
+                        p(i, k) = static_cast<double>(i) + 0.5 * static_cast<double>(k);
+                const std::string where = "dim " + std::to_string(dim) + " n " + std::to_string(n);
+                ASSERT_EQ(message(p, false), "") << where;
+                ASSERT_EQ(message(p, n >= 3), "") << where;
+                for (Eigen::Index i :
+                     {Eigen::Index{0}, Eigen::Index{1022}, Eigen::Index{1023}, Eigen::Index{1024}, n - 2}) {
+                    if (i < 0 || i + 1 >= n) continue;
+                    PointList q = p;
+                    q.row(i + 1) = q.row(i);
+                    const std::string named = cagd::point_label(i) + " and " + cagd::point_label(i + 1) + " coincide";
+                    EXPECT_NE(message(q, false).find(named), std::string::npos)
+                        << where << " pair " << i << ": " << message(q, false);
+                    q(i + 1, dim - 1) = std::nextafter(q(i, dim - 1), 1e300);  // one coordinate differs, by one ulp
+                    EXPECT_EQ(message(q, false), "") << where << " pair " << i;
+                }
+                if (n >= 3) {
+                    PointList q = p;
+                    q.row(n - 1) = q.row(0);
+                    EXPECT_EQ(message(q, false), "") << where << ": open, the last point may equal the first";
+                    const std::string named = cagd::point_label(n - 1) + " and point 1 (row 0) coincide";
+                    EXPECT_NE(message(q, true).find(named), std::string::npos) << where << ": " << message(q, true);
+                }
             }
-        }
-    PointList z(3, 2);
-    z << 0.0, 1.0, -0.0, 1.0, 2.0, 2.0;
-    EXPECT_NE(message(z, false).find("point 1 (row 0) and point 2 (row 1) coincide"), std::string::npos) << "−0 and +0 are the same coordinate";
-    z << 0.0, 1.0, std::numeric_limits<double>::denorm_min(), 1.0, 2.0, 2.0;
-    EXPECT_EQ(message(z, false), "") << "distinct by the smallest subnormal";
-  }
+        PointList z(3, 2);
+        z << 0.0, 1.0, -0.0, 1.0, 2.0, 2.0;
+        EXPECT_NE(message(z, false).find("point 1 (row 0) and point 2 (row 1) coincide"), std::string::npos)
+            << "−0 and +0 are the same coordinate";
+        z << 0.0, 1.0, std::numeric_limits<double>::denorm_min(), 1.0, 2.0, 2.0;
+        EXPECT_EQ(message(z, false), "") << "distinct by the smallest subnormal";
+    }
 }
 
 // The extent is the largest |coordinate| and the smallest squared chord (closing chord included
@@ -166,12 +173,14 @@ TEST(Points, RequireValidPointsWithExtentGivesTheLargestCoordinateAndShortestCho
                 for (Eigen::Index at : {Eigen::Index{1023}, Eigen::Index{1024}, n - 1}) {
                     if (at >= n) continue;
                     PointList q = p;
-                    q(at, dim - 1) = -7.5;  // the largest |coordinate|
+                    q(at, dim - 1) = -7.5;                                        // the largest |coordinate|
                     if (at > 0) q.row(at - 1) = q.row(at), q(at - 1, 0) += 1e-9;  // the shortest chord ends there
                     const PointExtent e = require_valid_points_with_extent(q, 2, closed, "test");
                     double shortest = std::numeric_limits<double>::infinity();
-                    for (Eigen::Index k = 0; k + 1 < n || (closed && k < n); ++k) shortest = std::min(shortest, (q.row(k + 1 == n ? 0 : k + 1) - q.row(k)).squaredNorm());
-                    const std::string where = "dim " + std::to_string(dim) + " n " + std::to_string(n) + (closed ? " closed" : " open") + " at " + std::to_string(at);
+                    for (Eigen::Index k = 0; k + 1 < n || (closed && k < n); ++k)
+                        shortest = std::min(shortest, (q.row(k + 1 == n ? 0 : k + 1) - q.row(k)).squaredNorm());
+                    const std::string where = "dim " + std::to_string(dim) + " n " + std::to_string(n) +
+                                              (closed ? " closed" : " open") + " at " + std::to_string(at);
                     EXPECT_EQ(e.largest_abs_coordinate, q.cwiseAbs().maxCoeff()) << where;
                     EXPECT_EQ(e.largest_abs_coordinate, 7.5) << where;
                     EXPECT_EQ(e.shortest_squared_chord, shortest) << where;
@@ -180,14 +189,18 @@ TEST(Points, RequireValidPointsWithExtentGivesTheLargestCoordinateAndShortestCho
                     PointList q = p;
                     q.row(n - 1) = q.row(0);
                     q(n - 1, 0) += 1e-12;
-                    EXPECT_EQ(require_valid_points_with_extent(q, 3, true, "test").shortest_squared_chord, (q.row(0) - q.row(n - 1)).squaredNorm()) << n << " " << dim;
+                    EXPECT_EQ(require_valid_points_with_extent(q, 3, true, "test").shortest_squared_chord,
+                              (q.row(0) - q.row(n - 1)).squaredNorm())
+                        << n << " " << dim;
                 }
             }
     PointList bad(3, 2);
     bad << 0, 0, 1, std::numeric_limits<double>::quiet_NaN(), 2, 2;
-    const std::string m = cagd::test::invalid_input_message([&] { (void)require_valid_points_with_extent(bad, 2, false, "test"); });
+    const std::string m =
+        cagd::test::invalid_input_message([&] { (void)require_valid_points_with_extent(bad, 2, false, "test"); });
     EXPECT_NE(m.find("point 2 (row 1) coordinate y is nan"), std::string::npos) << m;
-    const std::string few = cagd::test::invalid_input_message([&] { (void)require_valid_points_with_extent(bad.topRows(1), 2, false, "test"); });
+    const std::string few = cagd::test::invalid_input_message(
+        [&] { (void)require_valid_points_with_extent(bad.topRows(1), 2, false, "test"); });
     EXPECT_NE(few.find("needs at least 2 points, got 1"), std::string::npos) << few;
 }
 

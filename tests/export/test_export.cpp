@@ -7,6 +7,8 @@
 #include <numbers>
 #include <sstream>
 
+#include "../support/messages.hpp"
+#include "../support/point_lists.hpp"
 #include "cagd/analysis/curve_measures.hpp"
 #include "cagd/export/bspline_form.hpp"
 #include "cagd/export/curve_formats.hpp"
@@ -15,8 +17,6 @@
 #include "cagd/methods/curve_provenance.hpp"
 #include "cagd/methods/method_parameter_curve.hpp"
 #include "cagd/methods/method_registry.hpp"
-#include "../support/messages.hpp"
-#include "../support/point_lists.hpp"
 
 using namespace cagd;
 using namespace cagd::exports;
@@ -57,7 +57,10 @@ std::vector<Case> registry_curves() {
             if (points->cols() > c.claims.max_dimension || (is_closed && !c.claims.supports_closed)) continue;
             const methods::InterpolationResult r = methods::interpolate(c, *points, is_closed);
             if (!r.outcome.ok()) continue;
-            out.push_back({c.name + (is_closed ? " closed" : points->cols() == 3 ? " 3-D" : " open"), std::make_shared<methods::MethodParameterCurve>(*r.interpolant), is_closed});
+            out.push_back({c.name + (is_closed             ? " closed"
+                                     : points->cols() == 3 ? " 3-D"
+                                                           : " open"),
+                           std::make_shared<methods::MethodParameterCurve>(*r.interpolant), is_closed});
         }
     }
     return out;
@@ -75,11 +78,13 @@ double relative_jet_difference(const Curve& curve, const BezierPieces& pieces) {
             const Eigen::MatrixXd a = j == 8 ? curve.jet_from_left(t, 2) : curve.jet(t, 2), b = piece.jet(t, 2);
             for (int k = 0; k < 3; ++k) {
                 scale[static_cast<std::size_t>(k)] = std::max(scale[static_cast<std::size_t>(k)], a.row(k).norm());
-                diff[static_cast<std::size_t>(k)] = std::max(diff[static_cast<std::size_t>(k)], (a.row(k) - b.row(k)).norm());
+                diff[static_cast<std::size_t>(k)] =
+                    std::max(diff[static_cast<std::size_t>(k)], (a.row(k) - b.row(k)).norm());
             }
         }
     }
-    for (int k = 0; k < 3; ++k) worst = std::max(worst, diff[static_cast<std::size_t>(k)] / scale[static_cast<std::size_t>(k)]);
+    for (int k = 0; k < 3; ++k)
+        worst = std::max(worst, diff[static_cast<std::size_t>(k)] / scale[static_cast<std::size_t>(k)]);
     return worst;
 }
 
@@ -93,7 +98,8 @@ TEST(BezierForm, ExactPiecesOfEveryPolynomialMethodAgreeWithTheCurve) {
         ASSERT_TRUE(f.exact) << c.name;
         EXPECT_EQ(f.pieces.degree, c.curve->polynomial_degree()) << c.name;
         EXPECT_EQ(f.pieces.breaks, c.curve->breakpoints()) << c.name;
-        EXPECT_LE(relative_jet_difference(*c.curve, f.pieces), kExactRelative) << c.name << ": |r^(k) − b^(k)| / max |r^(k)|, k ≤ 2, ≤ 1e-12";
+        EXPECT_LE(relative_jet_difference(*c.curve, f.pieces), kExactRelative)
+            << c.name << ": |r^(k) − b^(k)| / max |r^(k)|, k ≤ 2, ≤ 1e-12";
         ++exact;
     }
     EXPECT_GE(exact, 30);  // every configuration but the curvature profile, on two or three point sets
@@ -120,7 +126,8 @@ TEST(BezierForm, ApproximationOfTheCurvatureProfileIsWithinItsStatedDistance) {
                 // Degree 5 matches the second derivative at both ends, so curvature is exact at the joins.
                 if (degree == 5) {
                     const Eigen::MatrixXd a = c.curve->jet(piece.t_min(), 2), b = piece.jet(piece.t_min(), 2);
-                    EXPECT_LE((a.row(2) - b.row(2)).norm(), 1e-9 * std::max(1.0, a.row(2).norm())) << c.name << " piece " << i;
+                    EXPECT_LE((a.row(2) - b.row(2)).norm(), 1e-9 * std::max(1.0, a.row(2).norm()))
+                        << c.name << " piece " << i;
                 }
             }
             EXPECT_LE(worst, f.tolerance) << c.name << " degree " << degree;
@@ -156,8 +163,12 @@ TEST(BSplineForm, EveryCurveAsOneBSplineWithTheFewestKnots) {
         for (const double t : f.pieces.breaks) scale = std::max(scale, full.point(t).norm());
         for (int i = 0; i < f.pieces.pieces(); ++i)
             for (int j = 0; j < 7; ++j) {
-                const double t = f.pieces.breaks[static_cast<std::size_t>(i)] + (f.pieces.breaks[static_cast<std::size_t>(i) + 1] - f.pieces.breaks[static_cast<std::size_t>(i)]) * (j + 0.5) / 7;
-                worst = std::max({worst, (b.curve.point(t) - c.curve->point(t)).norm(), (full.point(t) - c.curve->point(t)).norm()});
+                const double t =
+                    f.pieces.breaks[static_cast<std::size_t>(i)] +
+                    (f.pieces.breaks[static_cast<std::size_t>(i) + 1] - f.pieces.breaks[static_cast<std::size_t>(i)]) *
+                        (j + 0.5) / 7;
+                worst = std::max(
+                    {worst, (b.curve.point(t) - c.curve->point(t)).norm(), (full.point(t) - c.curve->point(t)).norm()});
             }
         EXPECT_LE(worst, f.exact ? kExactRelative * std::max(1.0, scale) : f.tolerance * 1.0000001) << c.name;
     }
@@ -200,7 +211,10 @@ TEST(CurveJson, ADocumentReadsBackBitForBit) {
     const BezierForm f = to_bezier(c);
     std::stringstream s;
     const methods::Method& hosaka = methods::find_method("hosaka");
-    write_curve_json(s, f, methods::method_provenance(hosaka, methods::parse_parameter_values("hosaka", hosaka.parameters, {{"m", "2"}}), test::kNewberyGarrett, false));
+    write_curve_json(
+        s, f,
+        methods::method_provenance(hosaka, methods::parse_parameter_values("hosaka", hosaka.parameters, {{"m", "2"}}),
+                                   test::kNewberyGarrett, false));
     const CurveDocument d = read_curve_json(s, "memory");
     EXPECT_EQ(d.form.pieces.breaks, f.pieces.breaks);
     EXPECT_EQ(d.form.pieces.control, f.pieces.control);  // exact equality: shortest round-trip numbers
@@ -224,9 +238,14 @@ TEST(CurveJson, BadDocumentsAreRefusedNamingTheMember) {
     const std::string head = R"({"format": "cagd-curve", "format_version": 1, "library_version": "0.1", "registry": "x",
         "method": {"name": "", "parameters": {}, "parameter": "", "closed": false}, "points": [], "dimension": 2, "exact": true,
         "max_distance": 0, "tolerance": 0, )";
-    EXPECT_NE(message(head + R"("degree": 1, "breaks": [0, 0], "pieces": [[[0, 0], [1, 1]]]})").find("breaks must increase (breaks[1])"), std::string::npos);
-    EXPECT_NE(message(head + R"("degree": 1, "breaks": [0, 1], "pieces": [[[0, 0], [1]]]})").find("pieces[0][1] must have 2 coordinates"), std::string::npos);
-    EXPECT_NE(message(head + R"("degree": 99, "breaks": [0, 1], "pieces": []})").find("degree = 99 outside [0, 31]"), std::string::npos);
+    EXPECT_NE(message(head + R"("degree": 1, "breaks": [0, 0], "pieces": [[[0, 0], [1, 1]]]})")
+                  .find("breaks must increase (breaks[1])"),
+              std::string::npos);
+    EXPECT_NE(message(head + R"("degree": 1, "breaks": [0, 1], "pieces": [[[0, 0], [1]]]})")
+                  .find("pieces[0][1] must have 2 coordinates"),
+              std::string::npos);
+    EXPECT_NE(message(head + R"("degree": 99, "breaks": [0, 1], "pieces": []})").find("degree = 99 outside [0, 31]"),
+              std::string::npos);
 }
 
 TEST(CurveFormats, ChosenByExtensionAndUnknownOnesAreBadInput) {
@@ -234,15 +253,18 @@ TEST(CurveFormats, ChosenByExtensionAndUnknownOnesAreBadInput) {
     EXPECT_EQ(curve_format_of_path("c.stp"), CurveFormat::step);
     EXPECT_EQ(curve_format_of_path("-"), CurveFormat::csv);
     EXPECT_EQ(curve_format_of_path("/dev/stdout"), CurveFormat::csv);
-    EXPECT_NE(test::invalid_input_message([] { curve_format_of_path("curve.txt"); }).find("unknown extension '.txt'"), std::string::npos);
-    EXPECT_NE(test::invalid_input_message([] { curve_format_named("pdf"); }).find("unknown format 'pdf'"), std::string::npos);
+    EXPECT_NE(test::invalid_input_message([] { curve_format_of_path("curve.txt"); }).find("unknown extension '.txt'"),
+              std::string::npos);
+    EXPECT_NE(test::invalid_input_message([] { curve_format_named("pdf"); }).find("unknown format 'pdf'"),
+              std::string::npos);
 }
 
 TEST(CurveFormats, SvgIsACubicPathAndRefusesSpaceCurves) {
     const methods::InterpolationResult r = methods::interpolate("cubic-b", test::kNewberyGarrett, false);
     const methods::MethodParameterCurve c(*r.interpolant);
     std::stringstream s;
-    ASSERT_TRUE(write_curve(s, CurveFormat::svg, c, {.points = test::kNewberyGarrett}, {.points = true, .comb = true}).ok());
+    ASSERT_TRUE(
+        write_curve(s, CurveFormat::svg, c, {.points = test::kNewberyGarrett}, {.points = true, .comb = true}).ok());
     const std::string svg = s.str();
     std::size_t segments = 0;
     for (std::size_t at = svg.find("\nC"); at != std::string::npos; at = svg.find("\nC", at + 1)) ++segments;
@@ -253,7 +275,10 @@ TEST(CurveFormats, SvgIsACubicPathAndRefusesSpaceCurves) {
     const methods::InterpolationResult h = methods::interpolate("cubic-b", helix_points(), false);
     const methods::MethodParameterCurve space(*h.interpolant);
     std::stringstream t;
-    EXPECT_NE(test::invalid_input_message([&] { (void)write_curve(t, CurveFormat::svg, space, {}, {}); }).find("svg is planar"), std::string::npos);
+    EXPECT_NE(test::invalid_input_message([&] {
+                  (void)write_curve(t, CurveFormat::svg, space, {}, {});
+              }).find("svg is planar"),
+              std::string::npos);
 }
 
 namespace {
@@ -321,5 +346,6 @@ TEST(CurveSamples, ArcLengthSamplesAreEquallySpacedInArcLength) {
     const double L = analysis::adaptive_arc_length(c, 1e-12);
     // The t column has 15 digits; |r'| ≤ a few times L / t_max, so each arc is exact to ~1e-13 L.
     for (std::size_t k = 0; k + 1 < ts.size(); ++k)
-        EXPECT_NEAR(analysis::arc_length(c, ts[k], ts[k + 1], 8), L / 10, 1e-10 * L) << "between samples " << k << " and " << k + 1;
+        EXPECT_NEAR(analysis::arc_length(c, ts[k], ts[k + 1], 8), L / 10, 1e-10 * L)
+            << "between samples " << k << " and " << k + 1;
 }

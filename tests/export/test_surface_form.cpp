@@ -8,12 +8,12 @@
 #include <random>
 #include <sstream>
 
+#include "../support/messages.hpp"
 #include "cagd/aesthetic/typical_surface.hpp"
 #include "cagd/export/curve_formats.hpp"
 #include "cagd/export/curve_json.hpp"
 #include "cagd/export/surface_form.hpp"
 #include "cagd/spline/bspline.hpp"
-#include "../support/messages.hpp"
 
 using namespace cagd;
 using namespace cagd::exports;
@@ -31,7 +31,12 @@ surface::CornerDerivatives corners_of(int m, int dim, unsigned seed) {
         for (int l = 0; l < 2; ++l)
             for (int i = 0; i <= m; ++i)
                 for (int j = 0; j <= m; ++j)
-                    for (int x = 0; x < dim; ++x) c.at(k, l, i, j)(x) = (i == 0 && j == 0 ? 3.0 * (x == 0 ? k : x == 1 ? l : k * l) : 0.0) + d(rng);
+                    for (int x = 0; x < dim; ++x)
+                        c.at(k, l, i, j)(x) = (i == 0 && j == 0 ? 3.0 * (x == 0   ? k
+                                                                         : x == 1 ? l
+                                                                                  : k * l)
+                                                                : 0.0) +
+                                              d(rng);
     return c;
 }
 
@@ -48,7 +53,9 @@ Eigen::Vector3d bspline_surface_point(const BSplineSurface& s, double u, double 
 }
 
 // The pieces as one BezierPatch per cell, for derivatives.
-surface::BezierPatch cell_patch(const BezierSurfacePieces& p, int a, int b) { return surface::BezierPatch(p.net(a, b)); }
+surface::BezierPatch cell_patch(const BezierSurfacePieces& p, int a, int b) {
+    return surface::BezierPatch(p.net(a, b));
+}
 
 }  // namespace
 
@@ -65,7 +72,9 @@ TEST(SurfaceForm, HosakaTensorPatchIsItsNetWithEveryDerivative) {
             for (double u : {0.0, 0.13, 0.5, 0.91, 1.0})
                 for (double v : {0.0, 0.29, 0.77, 1.0}) {
                     const analysis::SurfaceJet2 jet = net.jet(u, v);
-                    const auto three = [&](const Eigen::VectorXd& x) { return Eigen::Vector3d(x(0), x(1), dim == 3 ? x(2) : 0.0); };
+                    const auto three = [&](const Eigen::VectorXd& x) {
+                        return Eigen::Vector3d(x(0), x(1), dim == 3 ? x(2) : 0.0);
+                    };
                     EXPECT_LE((jet.s - three(patch.point(u, v))).norm(), kSurfaceExactRelative * scale);
                     EXPECT_LE((jet.su - three(patch.derivative(u, v, 1, 0))).norm(), 1e-11 * scale);
                     EXPECT_LE((jet.svv - three(patch.derivative(u, v, 0, 2))).norm(), 1e-10 * scale);
@@ -100,7 +109,9 @@ TEST(SurfaceForm, CartesianSurfaceIsAGraphOfPatchesOneACell) {
     EXPECT_LE(mismatch, kSurfaceExactRelative * scale);
     EXPECT_EQ(b.knots_u.size(), static_cast<std::size_t>(b.control[0].rows() + 4));
     for (double xv : {0.0, 0.5, 0.7, 2.2, 3.0})
-        for (double yv : {-1.0, 0.0, 1.3, 2.5}) EXPECT_LE((bspline_surface_point(b, xv, yv) - f.pieces.point(xv, yv)).norm(), kSurfaceExactRelative * scale);
+        for (double yv : {-1.0, 0.0, 1.3, 2.5})
+            EXPECT_LE((bspline_surface_point(b, xv, yv) - f.pieces.point(xv, yv)).norm(),
+                      kSurfaceExactRelative * scale);
 }
 
 TEST(SurfaceForm, CoonsPatchHasACellPerSpanOfItsEdges) {
@@ -117,7 +128,8 @@ TEST(SurfaceForm, CoonsPatchHasACellPerSpanOfItsEdges) {
     EXPECT_GE(f.pieces.cells_v(), 2);
     const double scale = net_diagonal(f.pieces);
     for (double u : {0.0, 0.2, 0.5, 0.999, 1.0})
-        for (double v : {0.0, 0.45, 1.0}) EXPECT_LE((f.pieces.point(u, v) - patch.point(u, v)).norm(), kSurfaceExactRelative * scale);
+        for (double v : {0.0, 0.45, 1.0})
+            EXPECT_LE((f.pieces.point(u, v) - patch.point(u, v)).norm(), kSurfaceExactRelative * scale);
 }
 
 namespace {
@@ -176,7 +188,8 @@ TEST(SurfaceJson, ADocumentReadsBackBitForBit) {
     EXPECT_EQ(d.form.exact, f.exact);
     EXPECT_EQ(d.form.conversion_error, f.conversion_error);
     ASSERT_EQ(d.form.pieces.nets.size(), 1u);
-    for (int c = 0; c < 3; ++c) EXPECT_EQ(d.form.pieces.nets[0][static_cast<std::size_t>(c)], f.pieces.nets[0][static_cast<std::size_t>(c)]);
+    for (int c = 0; c < 3; ++c)
+        EXPECT_EQ(d.form.pieces.nets[0][static_cast<std::size_t>(c)], f.pieces.nets[0][static_cast<std::size_t>(c)]);
 }
 
 TEST(SurfaceJson, BadDocumentsAreRefusedNamingTheMember) {
@@ -215,13 +228,17 @@ TEST(SurfaceFormats, AFormThatIsNotExactIsNotWritten) {
 TEST(SurfaceFormats, JsonAndStepOnlyWithTheirLimits) {
     const SurfaceForm f = to_bezier(surface::HosakaPatch(corners_of(1, 3, 7u)));
     std::ostringstream out;
-    EXPECT_NE(invalid_input_message([&] { (void)write_surface(out, CurveFormat::svg, f, {}); }).find("svg"), std::string::npos);
-    EXPECT_NE(invalid_input_message([&] { (void)write_surface(out, CurveFormat::dxf, f, {}); }).find("dxf"), std::string::npos);
+    EXPECT_NE(invalid_input_message([&] { (void)write_surface(out, CurveFormat::svg, f, {}); }).find("svg"),
+              std::string::npos);
+    EXPECT_NE(invalid_input_message([&] { (void)write_surface(out, CurveFormat::dxf, f, {}); }).find("dxf"),
+              std::string::npos);
     if (!step_available()) GTEST_SKIP() << "no OpenCASCADE in this build";
     std::ostringstream step;
     ASSERT_TRUE(write_surface(step, CurveFormat::step, f, {}).ok());
     EXPECT_NE(step.str().find("B_SPLINE_SURFACE_WITH_KNOTS"), std::string::npos);
-    const SurfaceForm high = to_bezier(surface::BezierPatch(aesthetic::log_aesthetic_typical_net(-0.5, 2.0, 1.0, 30, 0.3)));
+    const SurfaceForm high =
+        to_bezier(surface::BezierPatch(aesthetic::log_aesthetic_typical_net(-0.5, 2.0, 1.0, 30, 0.3)));
     std::ostringstream too_high;
-    EXPECT_NE(invalid_input_message([&] { (void)write_surface(too_high, CurveFormat::step, high, {}); }).find("25"), std::string::npos);
+    EXPECT_NE(invalid_input_message([&] { (void)write_surface(too_high, CurveFormat::step, high, {}); }).find("25"),
+              std::string::npos);
 }

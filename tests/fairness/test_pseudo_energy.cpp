@@ -26,7 +26,8 @@ TEST(HermiteSegment, EndConditionsOfEq1To5) {
     const UnitChordHermite s(0.7, -1.2, 1.3, 0.6);
     EXPECT_NEAR(s.position(0).norm(), 0.0, 1e-15);
     EXPECT_NEAR((s.position(1) - Eigen::Vector2d(1, 0)).norm(), 0.0, 1e-15) << "P(1) = P1 = (1, 0)";
-    EXPECT_NEAR((s.first(0) - 1.3 * Eigen::Vector2d(std::cos(0.7), std::sin(0.7))).norm(), 0.0, 1e-15) << "P'(0) = r0 (cos θ0, sin θ0)";
+    EXPECT_NEAR((s.first(0) - 1.3 * Eigen::Vector2d(std::cos(0.7), std::sin(0.7))).norm(), 0.0, 1e-15)
+        << "P'(0) = r0 (cos θ0, sin θ0)";
     EXPECT_NEAR((s.first(1) - 0.6 * Eigen::Vector2d(std::cos(-1.2), std::sin(-1.2))).norm(), 0.0, 1e-15);
     // The Bézier form through the Curve interface is the same cubic.
     const BezierCurve b = s.bezier();
@@ -55,7 +56,9 @@ TEST(HermiteSegment, GradientMatchesCentralDifferences) {
     for (const auto& p : {std::array<double, 4>{0.5, 0.3, 1.0, 1.2}, {2.5, -2.0, 0.4, 3.0}, {-1.0, 1.5, 2.0, 0.7}}) {
         const SegmentEnergy e = segment_energy_fast(UnitChordHermite(p[0], p[1], p[2], p[3]));
         const double h = 1e-6;
-        const auto j = [&](double a, double b) { return segment_energy_fast(UnitChordHermite(p[0], p[1], a, b), false).pseudo_energy; };
+        const auto j = [&](double a, double b) {
+            return segment_energy_fast(UnitChordHermite(p[0], p[1], a, b), false).pseudo_energy;
+        };
         const double d0 = (j(p[2] * std::exp(h), p[3]) - j(p[2] * std::exp(-h), p[3])) / (2 * h);
         const double d1 = (j(p[2], p[3] * std::exp(h)) - j(p[2], p[3] * std::exp(-h))) / (2 * h);
         EXPECT_NEAR(e.dj_dlog_r0, d0, 1e-6 * (1 + std::abs(d0)));
@@ -103,13 +106,17 @@ TEST(PseudoEnergyMinimum, FastAgreesWithReferenceAndIsStationary) {
         EXPECT_NEAR(f.r1, r.r1, 1e-8);
         EXPECT_LT(f.gradient_norm, 1e-8 * (1 + f.pseudo_energy));
         // No nearby (r0, r1) is lower.
-        for (double d : {-1e-3, 1e-3}) EXPECT_GE(segment_energy_fast(UnitChordHermite(p.first, p.second, f.r0 * std::exp(d), f.r1), false).pseudo_energy, f.pseudo_energy);
+        for (double d : {-1e-3, 1e-3})
+            EXPECT_GE(
+                segment_energy_fast(UnitChordHermite(p.first, p.second, f.r0 * std::exp(d), f.r1), false).pseudo_energy,
+                f.pseudo_energy);
     }
 }
 
 TEST(PseudoEnergyMinimum, Symmetries) {
     const double a = 0.8, b = -2.1;
-    const PseudoEnergyMinimum m = minimize_pseudo_energy(a, b), swapped = minimize_pseudo_energy(b, a), negated = minimize_pseudo_energy(-a, -b);
+    const PseudoEnergyMinimum m = minimize_pseudo_energy(a, b), swapped = minimize_pseudo_energy(b, a),
+                              negated = minimize_pseudo_energy(-a, -b);
     EXPECT_NEAR(m.pseudo_energy, swapped.pseudo_energy, 1e-11 * m.pseudo_energy);
     EXPECT_NEAR(m.r0, swapped.r1, 1e-8);
     EXPECT_NEAR(m.area, -swapped.area, 1e-8);
@@ -124,7 +131,8 @@ TEST(PseudoEnergyMinimum, UndefinedNodes) {
     EXPECT_EQ(zero.outcome.status, Status::no_solution);
     EXPECT_EQ(zero.pseudo_energy, 0.0);
     EXPECT_EQ(zero.type, SegmentType::x);
-    for (const auto& p : {std::pair{std::numbers::pi, 0.0}, {0.0, -std::numbers::pi}, {-std::numbers::pi, std::numbers::pi}}) {
+    for (const auto& p :
+         {std::pair{std::numbers::pi, 0.0}, {0.0, -std::numbers::pi}, {-std::numbers::pi, std::numbers::pi}}) {
         const PseudoEnergyMinimum m = minimize_pseudo_energy(p.first, p.second);
         EXPECT_EQ(m.outcome.status, Status::no_solution);
         EXPECT_TRUE(std::isinf(m.pseudo_energy));
@@ -139,12 +147,14 @@ TEST(PseudoEnergyMinimum, TheCensusFindsMinimaInNarrowValleys) {
     const double deg = std::numbers::pi / 180;
     const std::vector<LocalMinimum> a = local_minima_census(-70 * deg, 30 * deg);
     ASSERT_GE(a.size(), 3u);
-    EXPECT_NEAR(a[0].pseudo_energy, minimize_pseudo_energy_reference(-70 * deg, 30 * deg).pseudo_energy, 1e-10) << "the global minimum first";
+    EXPECT_NEAR(a[0].pseudo_energy, minimize_pseudo_energy_reference(-70 * deg, 30 * deg).pseudo_energy, 1e-10)
+        << "the global minimum first";
     EXPECT_NEAR(a[1].r0, 0.14, 0.01);
     EXPECT_NEAR((a[1].pseudo_energy - a[0].pseudo_energy) / a[0].pseudo_energy, 1.44e-3, 1e-5);
     const std::vector<LocalMinimum> b = local_minima_census(60 * deg, -60 * deg);
     ASSERT_GE(b.size(), 3u);
-    EXPECT_NEAR(b[1].pseudo_energy, b[2].pseudo_energy, 1e-9 * b[1].pseudo_energy) << "J(θ0, θ1; r0, r1) = J(−θ1, −θ0; r1, r0): the pair has one J";
+    EXPECT_NEAR(b[1].pseudo_energy, b[2].pseudo_energy, 1e-9 * b[1].pseudo_energy)
+        << "J(θ0, θ1; r0, r1) = J(−θ1, −θ0; r1, r0): the pair has one J";
     EXPECT_NEAR(std::min(b[1].r0, b[1].r1), 0.0293, 1e-3);
     EXPECT_NEAR(std::max(b[1].r0, b[1].r1), 3.0, 1e-2);
     EXPECT_NEAR(b[1].r0, b[2].r1, 1e-6) << "mirror images";
@@ -155,8 +165,13 @@ TEST(PseudoEnergyMinimum, TheCensusFindsMinimaInNarrowValleys) {
     EXPECT_NEAR(m.runner_up, b[1].pseudo_energy, 1e-9 * b[1].pseudo_energy);
     const std::vector<LocalMinimum> other = local_minima_multistart(-70 * deg, 30 * deg);
     for (const LocalMinimum& o : other)
-        EXPECT_TRUE(std::any_of(a.begin(), a.end(), [&](const LocalMinimum& c) { return std::abs(std::log(c.r0 / o.r0)) < 1e-2 && std::abs(std::log(c.r1 / o.r1)) < 1e-2; }))
-            << "the multistart's minimum J = " << o.pseudo_energy << " at (" << o.r0 << ", " << o.r1 << ") is in the census";
+        EXPECT_TRUE(std::any_of(a.begin(), a.end(),
+                                [&](const LocalMinimum& c) {
+                                    return std::abs(std::log(c.r0 / o.r0)) < 1e-2 &&
+                                           std::abs(std::log(c.r1 / o.r1)) < 1e-2;
+                                }))
+            << "the multistart's minimum J = " << o.pseudo_energy << " at (" << o.r0 << ", " << o.r1
+            << ") is in the census";
     EXPECT_TRUE(local_minima_census(0.0, std::numbers::pi).empty()) << "an undefined node has no minima";
     try {
         local_minima_census(0.3, 0.2, ScanBox{1e-3, 1e3, 5000});
@@ -202,30 +217,40 @@ TEST(PseudoEnergyTable, SameTypeRulesWeighTheDiagonalEightToTwo) {
     ASSERT_EQ(node(-20, 10).type, SegmentType::s);
     ASSERT_EQ(node(-10, 20).type, SegmentType::s);
     const double expected = 0.8 * node(-20, 20).length + 0.2 * node(-10, 10).length;
-    for (CellRule rule : {CellRule::same_type_linear, CellRule::same_type_inverse_distance, CellRule::same_type_mean_filled}) {
+    for (CellRule rule :
+         {CellRule::same_type_linear, CellRule::same_type_inverse_distance, CellRule::same_type_mean_filled}) {
         const TableValue v = t.lookup(-18 * deg, 18 * deg, TableReading{rule, false, 0.0});
         EXPECT_NEAR(v.length, expected, 1e-14) << to_string(rule) << ": L = 0.8 L(-20°, 20°) + 0.2 L(-10°, 10°)";
         EXPECT_EQ(v.type, SegmentType::c) << to_string(rule);
     }
     // The renormalised bilinear rule (same_type) weighs them 0.64 / 0.04, i.e. 0.94 / 0.06.
-    EXPECT_NEAR(t.lookup(-18 * deg, 18 * deg, TableReading{}).length, (0.64 * node(-20, 20).length + 0.04 * node(-10, 10).length) / 0.68, 1e-14);
+    EXPECT_NEAR(t.lookup(-18 * deg, 18 * deg, TableReading{}).length,
+                (0.64 * node(-20, 20).length + 0.04 * node(-10, 10).length) / 0.68, 1e-14);
     // In cells of one type every rule is plain bilinear interpolation (all_corners).
     int one_type_cells = 0;
     for (int a = -170; a < 170; a += 10)
         for (int b = -170; b < 170; b += 10) {
             const SegmentType kind = node(a, b).type;
-            if (kind == SegmentType::x || node(a + 10, b).type != kind || node(a, b + 10).type != kind || node(a + 10, b + 10).type != kind) continue;
+            if (kind == SegmentType::x || node(a + 10, b).type != kind || node(a, b + 10).type != kind ||
+                node(a + 10, b + 10).type != kind)
+                continue;
             ++one_type_cells;
             const double u = 0.37, v = 0.61, x = (a + 10 * u) * deg, y = (b + 10 * v) * deg;
             const double bilinear = t.lookup(x, y, TableReading{CellRule::all_corners, false, 0.0}).area;
-            EXPECT_NEAR(t.lookup(x, y, TableReading{CellRule::same_type_linear, false, 0.0}).area, bilinear, 1e-14) << "linear at (" << a << ", " << b << ")";
-            EXPECT_NEAR(t.lookup(x, y, TableReading{CellRule::same_type_mean_filled, false, 0.0}).area, bilinear, 1e-14) << "mean-filled at (" << a << ", " << b << ")";
+            EXPECT_NEAR(t.lookup(x, y, TableReading{CellRule::same_type_linear, false, 0.0}).area, bilinear, 1e-14)
+                << "linear at (" << a << ", " << b << ")";
+            EXPECT_NEAR(t.lookup(x, y, TableReading{CellRule::same_type_mean_filled, false, 0.0}).area, bilinear, 1e-14)
+                << "mean-filled at (" << a << ", " << b << ")";
             // Shepard's weights 1/d over the four corners, written out.
-            const double d[4] = {std::hypot(u, v), std::hypot(1 - u, v), std::hypot(u, 1 - v), std::hypot(1 - u, 1 - v)};
-            const double S[4] = {node(a, b).area, node(a + 10, b).area, node(a, b + 10).area, node(a + 10, b + 10).area};
+            const double d[4] = {std::hypot(u, v), std::hypot(1 - u, v), std::hypot(u, 1 - v),
+                                 std::hypot(1 - u, 1 - v)};
+            const double S[4] = {node(a, b).area, node(a + 10, b).area, node(a, b + 10).area,
+                                 node(a + 10, b + 10).area};
             double num = 0, den = 0;
             for (int k = 0; k < 4; ++k) num += S[k] / d[k], den += 1 / d[k];
-            EXPECT_NEAR(t.lookup(x, y, TableReading{CellRule::same_type_inverse_distance, false, 0.0}).area, num / den, 1e-14) << "inverse distance at (" << a << ", " << b << ")";
+            EXPECT_NEAR(t.lookup(x, y, TableReading{CellRule::same_type_inverse_distance, false, 0.0}).area, num / den,
+                        1e-14)
+                << "inverse distance at (" << a << ", " << b << ")";
         }
     EXPECT_GT(one_type_cells, 500) << "cells of one type";
     // Linear over three same-type corners: the plane through them, solved here as a 3 × 3 system.
@@ -251,8 +276,10 @@ TEST(PseudoEnergyTable, SameTypeRulesWeighTheDiagonalEightToTwo) {
             if (same != 3) continue;
             ++three_corner_cells;
             const Eigen::Vector3d plane = m.partialPivLu().solve(f);
-            EXPECT_NEAR(t.lookup((a + 10 * u) * deg, (b + 10 * v) * deg, TableReading{CellRule::same_type_linear, false, 0.0}).length, plane(0) + plane(1) * u + plane(2) * v,
-                        1e-14)
+            EXPECT_NEAR(
+                t.lookup((a + 10 * u) * deg, (b + 10 * v) * deg, TableReading{CellRule::same_type_linear, false, 0.0})
+                    .length,
+                plane(0) + plane(1) * u + plane(2) * v, 1e-14)
                 << "the plane through three corners at (" << a << ", " << b << ")";
         }
     EXPECT_GT(three_corner_cells, 0) << "cells with three corners of one type";
@@ -263,7 +290,8 @@ TEST(PseudoEnergyTable, ReadingsOfTheTable) {
     const auto& nodes = t.nodes();
     const double a = nodes[3] + 0.3 * (nodes[4] - nodes[3]), b = nodes[8] + 0.5 * (nodes[9] - nodes[8]);  // b half-way
     // The default reading and plain bilinear are the two lookups, bit for bit.
-    const TableValue same = t.lookup(a, b, TableReading{}), all = t.lookup(a, b, TableReading{CellRule::all_corners, false, 0.0});
+    const TableValue same = t.lookup(a, b, TableReading{}),
+                     all = t.lookup(a, b, TableReading{CellRule::all_corners, false, 0.0});
     EXPECT_EQ(same.length, t.lookup(a, b, true).length);
     EXPECT_EQ(all.length, t.lookup(a, b, false).length);
     EXPECT_EQ(all.area, t.lookup(a, b, false).area);
@@ -285,7 +313,9 @@ TEST(PseudoEnergyTable, ReadingsOfTheTable) {
         for (int j = 0; j < 12; ++j) {
             const PseudoEnergyMinimum& n = t.node(i, j);
             if (n.type == SegmentType::x || !std::isfinite(n.runner_up)) continue;
-            const TableValue second = t.lookup(nodes[i], nodes[j], TableReading{CellRule::nearest_node_down, false, n.runner_up - n.pseudo_energy + 1e-12});
+            const TableValue second =
+                t.lookup(nodes[i], nodes[j],
+                         TableReading{CellRule::nearest_node_down, false, n.runner_up - n.pseudo_energy + 1e-12});
             EXPECT_NEAR(second.pseudo_energy, n.runner_up, 1e-9 * n.runner_up) << i << "," << j;
             EXPECT_EQ(second.r0, measure_segment(nodes[i], nodes[j], n.runner_up_r0, n.runner_up_r1).r0);
             EXPECT_EQ(t.runner_up_nodes(-1.0), 0);
@@ -318,16 +348,23 @@ TEST(PseudoEnergyTable, CacheRoundTripAndVersionedHeader) {
 // both, so L and E agree to the bit on the same graded pieces (short end tangents too); the gradient's
 // terms are grouped differently (w·∂w against k ∂k), so it agrees to rounding.
 TEST(PseudoEnergy, VectorisedPlanarIntegrandsAgreeWithThePointwiseSpaceOnes) {
-    for (const auto& [t0, t1, r0, r1] : std::vector<std::array<double, 4>>{{0.7, -1.1, 0.9, 1.3}, {2.9, 2.5, 0.004, 3.0}, {-1.5, 0.2, 6.0, 0.01}}) {
+    for (const auto& [t0, t1, r0, r1] :
+         std::vector<std::array<double, 4>>{{0.7, -1.1, 0.9, 1.3}, {2.9, 2.5, 0.004, 3.0}, {-1.5, 0.2, 6.0, 0.01}}) {
         for (const bool fast : {true, false}) {
-            const SegmentEnergy p = fast ? segment_energy_fast(UnitChordHermite(t0, t1, r0, r1)) : segment_energy_reference(UnitChordHermite(t0, t1, r0, r1));
-            const SegmentEnergy s = fast ? space_segment_energy_fast(SpaceUnitChordHermite(std::abs(t0), std::abs(t1), t1 * t0 >= 0 ? 0.0 : std::numbers::pi, r0, r1))
-                                         : space_segment_energy_reference(SpaceUnitChordHermite(std::abs(t0), std::abs(t1), t1 * t0 >= 0 ? 0.0 : std::numbers::pi, r0, r1));
+            const SegmentEnergy p = fast ? segment_energy_fast(UnitChordHermite(t0, t1, r0, r1))
+                                         : segment_energy_reference(UnitChordHermite(t0, t1, r0, r1));
+            const SegmentEnergy s =
+                fast ? space_segment_energy_fast(SpaceUnitChordHermite(std::abs(t0), std::abs(t1),
+                                                                       t1 * t0 >= 0 ? 0.0 : std::numbers::pi, r0, r1))
+                     : space_segment_energy_reference(SpaceUnitChordHermite(
+                           std::abs(t0), std::abs(t1), t1 * t0 >= 0 ? 0.0 : std::numbers::pi, r0, r1));
             EXPECT_EQ(p.evaluations, s.evaluations);
             EXPECT_EQ(p.length, s.length) << t0 << " " << t1 << (fast ? " fast" : " reference");
             EXPECT_EQ(p.strain_energy, s.strain_energy) << t0 << " " << t1 << (fast ? " fast" : " reference");
-            EXPECT_NEAR(p.dj_dlog_r0, s.dj_dlog_r0, 1e-13 * std::abs(s.dj_dlog_r0)) << t0 << " " << t1 << (fast ? " fast" : " reference");
-            EXPECT_NEAR(p.dj_dlog_r1, s.dj_dlog_r1, 1e-13 * std::abs(s.dj_dlog_r1)) << t0 << " " << t1 << (fast ? " fast" : " reference");
+            EXPECT_NEAR(p.dj_dlog_r0, s.dj_dlog_r0, 1e-13 * std::abs(s.dj_dlog_r0))
+                << t0 << " " << t1 << (fast ? " fast" : " reference");
+            EXPECT_NEAR(p.dj_dlog_r1, s.dj_dlog_r1, 1e-13 * std::abs(s.dj_dlog_r1))
+                << t0 << " " << t1 << (fast ? " fast" : " reference");
         }
     }
 }
@@ -378,7 +415,8 @@ TEST(AngleMinimumTable, CacheRoundTripsExactly) {
         EXPECT_EQ(a.outcome.status, b.outcome.status) << k;
         EXPECT_EQ(a.outcome.message, b.outcome.message) << k;
     }
-    const AngleMinimumTable other = AngleMinimumTable::load_or_build(path, {4, NodePlacement::periodic});  // another grid: rebuilt
+    const AngleMinimumTable other =
+        AngleMinimumTable::load_or_build(path, {4, NodePlacement::periodic});  // another grid: rebuilt
     EXPECT_EQ(other.values().size(), 4u);
     EXPECT_EQ(other.nodes(), (AngleGrid{4, NodePlacement::periodic}).nodes());
     std::remove(path.c_str());

@@ -5,9 +5,9 @@
 #include <boost/math/tools/minima.hpp>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <numbers>
 #include <random>
 
@@ -51,7 +51,8 @@ TEST(PseudoSpline, InterpolatesIsG1AndKeepsTangentsBetweenTheChords) {
             const Eigen::RowVectorXd a = c.end_derivatives().row(k - 1), b = c.start_derivatives().row(k);
             EXPECT_NEAR(wrap_angle(angle_of(a) - angle_of(b)), 0.0, 1e-12) << "join " << k;
             // α_k lies between 0 and φ_{k−1} − φ_k (the search interval of eq 12).
-            const double lim = -turning_angle(kNewberyGarrett.row(k) - kNewberyGarrett.row(k - 1), kNewberyGarrett.row(k + 1) - kNewberyGarrett.row(k));
+            const double lim = -turning_angle(kNewberyGarrett.row(k) - kNewberyGarrett.row(k - 1),
+                                              kNewberyGarrett.row(k + 1) - kNewberyGarrett.row(k));
             EXPECT_GE(ps.alpha[static_cast<std::size_t>(k)] * (lim >= 0 ? 1 : -1), -1e-12);
             EXPECT_LE(std::abs(ps.alpha[static_cast<std::size_t>(k)]), std::abs(lim) + 1e-12);
         }
@@ -79,7 +80,8 @@ TEST(PseudoSpline, CurveWithoutSpanRecordsIsThePseudoSplineBitForBit) {
     const PointList straight = points({{0, 0}, {1, 0}, {2, 0}, {3, 1}, {4, 2}, {5, 3}, {5, 5}});
     for (const PointList* p : std::array<const PointList*, 2>{&walk, &straight})
         for (const bool closed : {false, true})
-            for (auto mode : {TangentOptimization::none, TangentOptimization::exact, TangentOptimization::approximate}) {
+            for (auto mode :
+                 {TangentOptimization::none, TangentOptimization::exact, TangentOptimization::approximate}) {
                 const PseudoSpline full = pseudo_spline(*p, oracle(), mode, closed);
                 const PseudoSplineCurve lean = pseudo_spline_curve(*p, oracle(), mode, closed);
                 const std::string what = std::string(closed ? "closed " : "open ") + to_string(mode);
@@ -91,11 +93,14 @@ TEST(PseudoSpline, CurveWithoutSpanRecordsIsThePseudoSplineBitForBit) {
                 EXPECT_EQ(lean.pseudo_energy_from_tables, full.pseudo_energy_from_tables()) << what;
                 EXPECT_GT(full.length_from_tables(), 0.0) << what;
                 // On points validated already (ValidPoints), the same again.
-                const PseudoSplineCurve validated = pseudo_spline_curve(validate_points(*p, 3, closed, "test"), oracle(), mode);
-                EXPECT_TRUE(validated.curve.nodes() == lean.curve.nodes() && validated.curve.start_derivatives() == lean.curve.start_derivatives() &&
+                const PseudoSplineCurve validated =
+                    pseudo_spline_curve(validate_points(*p, 3, closed, "test"), oracle(), mode);
+                EXPECT_TRUE(validated.curve.nodes() == lean.curve.nodes() &&
+                            validated.curve.start_derivatives() == lean.curve.start_derivatives() &&
                             validated.curve.end_derivatives() == lean.curve.end_derivatives())
                     << what << ", validated points";
-                EXPECT_EQ(validated.pseudo_energy_from_tables, lean.pseudo_energy_from_tables) << what << ", validated points";
+                EXPECT_EQ(validated.pseudo_energy_from_tables, lean.pseudo_energy_from_tables)
+                    << what << ", validated points";
             }
 }
 
@@ -111,16 +116,19 @@ TEST(PseudoSpline, ExactModeMinimisesWAndApproximateModeComesClose) {
     const PseudoSpline ex = pseudo_spline(kNewberyGarrett, oracle(), TangentOptimization::exact, false);
     const PseudoSpline ap = pseudo_spline(kNewberyGarrett, oracle(), TangentOptimization::approximate, false);
     for (int i = 1; i < 12; ++i) {
-        const double tau = wrap_angle(ex.chord_angle[static_cast<std::size_t>(i)] - ex.chord_angle[static_cast<std::size_t>(i - 1)]);
+        const double tau =
+            wrap_angle(ex.chord_angle[static_cast<std::size_t>(i)] - ex.chord_angle[static_cast<std::size_t>(i - 1)]);
         const auto w = [&](double a) {
-            return ex.chord_length[static_cast<std::size_t>(i - 1)] * oracle().angle_minimum(wrap_angle(a + tau)).first +
+            return ex.chord_length[static_cast<std::size_t>(i - 1)] *
+                       oracle().angle_minimum(wrap_angle(a + tau)).first +
                    ex.chord_length[static_cast<std::size_t>(i)] * oracle().angle_minimum(a).first;
         };
         const double best = w(ex.alpha[static_cast<std::size_t>(i)]);
         double grid_min = INFINITY;
         for (int k = 0; k <= 200; ++k) grid_min = std::min(grid_min, w(-tau * k / 200.0));
         EXPECT_LE(best, grid_min + 1e-9 * grid_min) << "point " << i;
-        EXPECT_LE(w(ap.alpha[static_cast<std::size_t>(i)]), 1.05 * best) << "approximate within 5 % of the minimum of w, point " << i;
+        EXPECT_LE(w(ap.alpha[static_cast<std::size_t>(i)]), 1.05 * best)
+            << "approximate within 5 % of the minimum of w, point " << i;
     }
     EXPECT_EQ(ap.oracle_calls, 11 * 6) << "the approximate mode costs three w evaluations per interior point";
 }
@@ -141,17 +149,23 @@ TEST(PseudoSpline, ExactModeTakesTheLeastBreakpointOfW) {
         const PseudoSpline ex = pseudo_spline(p, oracle(), TangentOptimization::exact, false);
         for (std::size_t i = 1; i + 1 < 8; ++i) {
             const double tau = wrap_angle(ex.chord_angle[i] - ex.chord_angle[i - 1]);
-            const auto w = [&](double a) { return ex.chord_length[i - 1] * oracle().angle_energy(wrap_angle(a + tau)) + ex.chord_length[i] * oracle().angle_energy(wrap_angle(a)); };
+            const auto w = [&](double a) {
+                return ex.chord_length[i - 1] * oracle().angle_energy(wrap_angle(a + tau)) +
+                       ex.chord_length[i] * oracle().angle_energy(wrap_angle(a));
+            };
             const double lo = std::min(0.0, -tau), hi = std::max(0.0, -tau), alpha = ex.alpha[i], best = w(alpha);
             double grid_min = INFINITY;
             for (int k = 0; k <= 2000; ++k) grid_min = std::min(grid_min, w(lo + (hi - lo) * k / 2000.0));
             EXPECT_LE(best, grid_min * (1 + 1e-15)) << "set " << set << ", point " << i;
             std::uintmax_t iterations = 200;
-            const double brent = boost::math::tools::brent_find_minima(w, lo, hi, std::numeric_limits<double>::digits / 2, iterations).first;
+            const double brent =
+                boost::math::tools::brent_find_minima(w, lo, hi, std::numeric_limits<double>::digits / 2, iterations)
+                    .first;
             EXPECT_LE(best, w(brent) * (1 + 1e-15)) << "set " << set << ", point " << i;
             double gap = std::min(std::abs(alpha - lo), std::abs(alpha - hi));
             for (const double x : nodes)
-                for (const double shift : {-2 * std::numbers::pi, 0.0, 2 * std::numbers::pi}) gap = std::min({gap, std::abs(alpha - (x + shift)), std::abs(alpha + tau - (x + shift))});
+                for (const double shift : {-2 * std::numbers::pi, 0.0, 2 * std::numbers::pi})
+                    gap = std::min({gap, std::abs(alpha - (x + shift)), std::abs(alpha + tau - (x + shift))});
             if (gap <= 1e-14) {
                 ++at_breakpoint;
             } else {
@@ -173,7 +187,9 @@ TEST(PseudoSpline, ExactModeBreaksATieBetweenTwoMinimaTowardLowerAlpha) {
     for (int k = 0; k < 36; ++k) nodes.push_back(-std::numbers::pi + k * std::numbers::pi / 18);
     const double b1 = nodes[19], b2 = nodes[22];  // 10° and 40°, inside [0, 1] with τ = −1
     for (const double delta : {1e-14, -1e-14, 1e-6}) {
-        const auto w = [&](double a) { return 1.0 + std::min(std::abs(a - b1), std::abs(a - b2)) - (a == b2 ? delta : 0.0); };
+        const auto w = [&](double a) {
+            return 1.0 + std::min(std::abs(a - b1), std::abs(a - b2)) - (a == b2 ? delta : 0.0);
+        };
         const double alpha = detail::minimise_piecewise_linear_w(w, 0.0, 1.0, -1.0, nodes);
         EXPECT_EQ(alpha, delta > 1e-10 ? b2 : b1) << delta;
     }
@@ -208,7 +224,8 @@ TEST(PseudoSpline, InvariantUnderRotationScalingAndTranslation) {
         const Eigen::Vector2d mapped(3.0 * (c * p.x() - s * p.y()) + 5.0, 3.0 * (s * p.x() + c * p.y()) - 2.0);
         EXPECT_NEAR((mapped - r).norm(), 0.0, 1e-9) << "u = " << u;
     }
-    EXPECT_NEAR(b.pseudo_energy_from_tables(), 3.0 * a.pseudo_energy_from_tables(), 1e-9) << "J scales with the chord length";
+    EXPECT_NEAR(b.pseudo_energy_from_tables(), 3.0 * a.pseudo_energy_from_tables(), 1e-9)
+        << "J scales with the chord length";
 }
 
 TEST(PseudoSpline, KnotDataTurnClockwiseAtBothInteriorPointsAndLoop) {
@@ -238,9 +255,12 @@ TEST(PseudoSpline, CollinearPointsGiveTheStraightLine) {
 TEST(PseudoSpline, BadInputIsRejected) {
     const auto& o = oracle();
     EXPECT_THROW(pseudo_spline(points({{0, 0}}), o, TangentOptimization::exact, false), InvalidInput) << "one point";
-    EXPECT_THROW(pseudo_spline(points({{0, 0}, {1, 0}}), o, TangentOptimization::exact, true), InvalidInput) << "closed needs 3";
-    EXPECT_THROW(pseudo_spline(points({{0, 0}, {1, 0}, {1, 0}}), o, TangentOptimization::exact, false), InvalidInput) << "coincident";
-    EXPECT_THROW(pseudo_spline(points({{0, 0}, {1, NAN}, {2, 0}}), o, TangentOptimization::exact, false), InvalidInput) << "NaN";
+    EXPECT_THROW(pseudo_spline(points({{0, 0}, {1, 0}}), o, TangentOptimization::exact, true), InvalidInput)
+        << "closed needs 3";
+    EXPECT_THROW(pseudo_spline(points({{0, 0}, {1, 0}, {1, 0}}), o, TangentOptimization::exact, false), InvalidInput)
+        << "coincident";
+    EXPECT_THROW(pseudo_spline(points({{0, 0}, {1, NAN}, {2, 0}}), o, TangentOptimization::exact, false), InvalidInput)
+        << "NaN";
     try {
         pseudo_spline(points({{0, 0}, {2, 0}, {1, 0}, {3, 1}}), o, TangentOptimization::exact, false);
         FAIL() << "a hairpin (turn of exactly π) must throw";
@@ -257,12 +277,15 @@ TEST(PseudoSpline, LengthAndAreaOfEq16To21MatchIntegrationWithExactSegments) {
     // With the exact oracle (no table) every span's L and S belong to the drawn segment, so eq (17)
     // and (20) must equal the integrals of the curve to quadrature accuracy.
     PointList hexagon(6, 2);
-    for (int k = 0; k < 6; ++k) hexagon.row(k) << 2 * std::cos(k * std::numbers::pi / 3) + 0.3 * (k % 2), 2 * std::sin(k * std::numbers::pi / 3);
+    for (int k = 0; k < 6; ++k)
+        hexagon.row(k) << 2 * std::cos(k * std::numbers::pi / 3) + 0.3 * (k % 2),
+            2 * std::sin(k * std::numbers::pi / 3);
     const PseudoSpline ps = pseudo_spline(hexagon, ExactOracle{}, TangentOptimization::none, true);
     EXPECT_NEAR(ps.length_from_tables(), analysis::romberg_arc_length(ps.curve).value, 1e-11);
     EXPECT_NEAR(ps.area_from_tables(), analysis::enclosed_area(ps.curve), 1e-11);
     // Open curve: the region is closed by the line from the last point to the first (eq 19, 21).
-    const PseudoSpline open = pseudo_spline(points({{0.5, 0.2}, {1, 0.8}, {2.5, 0.6}, {3, -0.4}}), ExactOracle{}, TangentOptimization::none, false);
+    const PseudoSpline open = pseudo_spline(points({{0.5, 0.2}, {1, 0.8}, {2.5, 0.6}, {3, -0.4}}), ExactOracle{},
+                                            TangentOptimization::none, false);
     const double closing = 0.5 * (3 * 0.2 - (-0.4) * 0.5);  // ½(x_n y_0 − y_n x_0), the line back to P_0
     EXPECT_NEAR(open.area_from_tables(), analysis::enclosed_area(open.curve) + closing, 1e-11);
 }
@@ -273,8 +296,9 @@ TEST(PseudoSpline, EquivalentPolygonPointsIsTheFirstPolygonBelowTheError) {
             const long n = equivalent_polygon_points(err, m);
             const auto pe = [&](long k) {
                 const double x = std::numbers::pi / static_cast<double>(k);
-                return m == CircleMeasure::perimeter ? 2 * std::numbers::pi - 2.0 * static_cast<double>(k) * std::sin(x)
-                                                     : std::numbers::pi - 0.5 * static_cast<double>(k) * std::sin(2 * x);
+                return m == CircleMeasure::perimeter
+                           ? 2 * std::numbers::pi - 2.0 * static_cast<double>(k) * std::sin(x)
+                           : std::numbers::pi - 0.5 * static_cast<double>(k) * std::sin(2 * x);
             };
             EXPECT_LT(pe(n), err);
             if (n > 3) {
@@ -292,25 +316,34 @@ TEST(PseudoSpline, EquivalentPolygonPointsIsTheFirstPolygonBelowTheError) {
 TEST(PseudoSpline, FlatTableEnergyGivesTheBisectorInEveryMode) {
     for (int n : {4, 8, 64, 96, 128}) {
         PointList circle(n, 2);
-        for (int i = 0; i < n; ++i) circle.row(i) << 5.0 * std::cos(2 * std::numbers::pi * i / n) + 3.0, 5.0 * std::sin(2 * std::numbers::pi * i / n) - 1.0;
+        for (int i = 0; i < n; ++i)
+            circle.row(i) << 5.0 * std::cos(2 * std::numbers::pi * i / n) + 3.0,
+                5.0 * std::sin(2 * std::numbers::pi * i / n) - 1.0;
         const PseudoSpline none = pseudo_spline(circle, oracle(), TangentOptimization::none, true);
         for (TangentOptimization mode : {TangentOptimization::exact, TangentOptimization::approximate}) {
             const PseudoSpline p = pseudo_spline(circle, oracle(), mode, true);
             for (int i = 0; i < n; ++i)
-                EXPECT_NEAR(p.alpha[static_cast<std::size_t>(i)], none.alpha[static_cast<std::size_t>(i)], 1e-9) << "n = " << n << ", mode " << to_string(mode) << ", point " << i;
+                EXPECT_NEAR(p.alpha[static_cast<std::size_t>(i)], none.alpha[static_cast<std::size_t>(i)], 1e-9)
+                    << "n = " << n << ", mode " << to_string(mode) << ", point " << i;
         }
         // The tie's ends: any stop is a minimum of the table's w, the ends symmetric about the bisector.
-        const double lower = pseudo_spline(circle, oracle(), TangentOptimization::exact, true, TangentTie{0.0}).alpha[0];
-        const double upper = pseudo_spline(circle, oracle(), TangentOptimization::exact, true, TangentTie{1.0}).alpha[0];
+        const double lower =
+            pseudo_spline(circle, oracle(), TangentOptimization::exact, true, TangentTie{0.0}).alpha[0];
+        const double upper =
+            pseudo_spline(circle, oracle(), TangentOptimization::exact, true, TangentTie{1.0}).alpha[0];
         EXPECT_NEAR(0.5 * (lower + upper), none.alpha[0], 1e-9) << n;
         EXPECT_LT(lower, upper) << n;
     }
-    EXPECT_THROW(pseudo_spline(points({{0, 0}, {1, 1}, {2, 0}}), oracle(), TangentOptimization::exact, false, TangentTie{1.5}), InvalidInput);
+    EXPECT_THROW(
+        pseudo_spline(points({{0, 0}, {1, 1}, {2, 0}}), oracle(), TangentOptimization::exact, false, TangentTie{1.5}),
+        InvalidInput);
 }
 
 TEST(PseudoSpline, EquivalentHelixPolygonPointsMeasuresThePolygonAgainstTheHelix) {
     // No rise: the circle's perimeter rule relative to 2π.
-    for (double err : {0.05, 3e-3, 2e-6}) EXPECT_EQ(equivalent_helix_polygon_points(err / (2 * std::numbers::pi), 0.0), equivalent_polygon_points(err, CircleMeasure::perimeter));
+    for (double err : {0.05, 3e-3, 2e-6})
+        EXPECT_EQ(equivalent_helix_polygon_points(err / (2 * std::numbers::pi), 0.0),
+                  equivalent_polygon_points(err, CircleMeasure::perimeter));
     // A rise of 1.5 per turn: the polygon's length from its vertices, against the helix's.
     const double p = 1.5, turn = std::sqrt(4 * std::numbers::pi * std::numbers::pi + p * p);
     const auto polygon_error = [&](long n) {

@@ -1,6 +1,6 @@
-// The space pseudo-energy (pseudo_energy section 6, extended to space): the 3-D unit-chord segment, its energies and the
-// minimum of J = L²E over r0, r1; checked against the planar segment at φ = 0 and π, its
-// symmetries, finite differences, the generic analysis module and the reference path.
+// The space pseudo-energy (pseudo_energy section 6, extended to space): the 3-D unit-chord segment, its energies and
+// the minimum of J = L²E over r0, r1; checked against the planar segment at φ = 0 and π, its symmetries, finite
+// differences, the generic analysis module and the reference path.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -19,7 +19,8 @@ using namespace cagd;
 using namespace cagd::fairness;
 
 namespace {
-const double kAngles[][2] = {{0.3, 0.7}, {1.2, 2.5}, {2.9, 0.4}, {0.8, 0.8}, {std::numbers::pi / 2, std::numbers::pi / 3}};
+const double kAngles[][2] = {
+    {0.3, 0.7}, {1.2, 2.5}, {2.9, 0.4}, {0.8, 0.8}, {std::numbers::pi / 2, std::numbers::pi / 3}};
 }  // namespace
 
 TEST(SpacePseudoEnergy, PlanarAtPhiZeroAndPi) {
@@ -30,7 +31,8 @@ TEST(SpacePseudoEnergy, PlanarAtPhiZeroAndPi) {
             const PseudoEnergyMinimum p = minimize_pseudo_energy(a[0], sign * a[1]);
             ASSERT_TRUE(s.outcome.ok()) << s.outcome.message;
             ASSERT_TRUE(p.outcome.ok()) << p.outcome.message;
-            EXPECT_NEAR(s.pseudo_energy, p.pseudo_energy, 1e-12 * (1 + p.pseudo_energy)) << a[0] << " " << a[1] << " " << phi;
+            EXPECT_NEAR(s.pseudo_energy, p.pseudo_energy, 1e-12 * (1 + p.pseudo_energy))
+                << a[0] << " " << a[1] << " " << phi;
             EXPECT_NEAR(s.r0, p.r0, 1e-12 * p.r0);
             EXPECT_NEAR(s.r1, p.r1, 1e-12 * p.r1);
             EXPECT_NEAR(s.length, p.length, 1e-12);
@@ -71,7 +73,11 @@ TEST(SpacePseudoEnergy, GradientMatchesCentralDifferences) {
         for (double phi : {0.4, 2.0, 4.5}) {
             const double r0 = 0.8, r1 = 1.1;
             const SegmentEnergy e = space_segment_energy_fast(SpaceUnitChordHermite(a[0], a[1], phi, r0, r1));
-            const auto J = [&](double x0, double x1) { return space_segment_energy_fast(SpaceUnitChordHermite(a[0], a[1], phi, std::exp(x0), std::exp(x1)), false).pseudo_energy; };
+            const auto J = [&](double x0, double x1) {
+                return space_segment_energy_fast(SpaceUnitChordHermite(a[0], a[1], phi, std::exp(x0), std::exp(x1)),
+                                                 false)
+                    .pseudo_energy;
+            };
             const double g0 = (J(std::log(r0) + h, std::log(r1)) - J(std::log(r0) - h, std::log(r1))) / (2 * h);
             const double g1 = (J(std::log(r0), std::log(r1) + h) - J(std::log(r0), std::log(r1) - h)) / (2 * h);
             EXPECT_NEAR(e.dj_dlog_r0, g0, 1e-7 * (1 + std::abs(g0)));
@@ -113,7 +119,8 @@ TEST(SpacePseudoEnergy, FastAgreesWithReferenceOnRandomDirections) {
 
 TEST(SpacePseudoEnergy, TypesAndUndefinedDirectionsAndBadInput) {
     // The type is the planar eq (14) in the plane and the binormal rule in space.
-    EXPECT_EQ(SpaceUnitChordHermite(0.5, 0.5, std::numbers::pi, 1, 1).type(), SegmentType::c);  // planar (0.5, −0.5): an arc
+    EXPECT_EQ(SpaceUnitChordHermite(0.5, 0.5, std::numbers::pi, 1, 1).type(),
+              SegmentType::c);                                                     // planar (0.5, −0.5): an arc
     EXPECT_EQ(SpaceUnitChordHermite(0.5, 0.5, 0.0, 1, 1).type(), SegmentType::s);  // planar (0.5, 0.5): an S
     const SpacePseudoEnergyMinimum straight = minimize_space_pseudo_energy(0.0, 0.0, 1.0);
     EXPECT_EQ(straight.outcome.status, Status::no_solution);
@@ -171,7 +178,8 @@ TEST(SpacePseudoEnergyTable, NodesSymmetriesAndThePlane) {
     const PseudoEnergyMinimum p = minimize_pseudo_energy(th[1], th[4]);
     EXPECT_NEAR(t.node(1, 4, 0).pseudo_energy, p.pseudo_energy, 1e-12 * p.pseudo_energy);
     // φ is periodic; θ outside [0, π] is refused.
-    EXPECT_NEAR(t.lookup(1.0, 2.0, 0.3).pseudo_energy, t.lookup(1.0, 2.0, 0.3 + 2 * std::numbers::pi).pseudo_energy, 1e-12);
+    EXPECT_NEAR(t.lookup(1.0, 2.0, 0.3).pseudo_energy, t.lookup(1.0, 2.0, 0.3 + 2 * std::numbers::pi).pseudo_energy,
+                1e-12);
     EXPECT_THROW(t.lookup(-0.1, 1.0, 0.0), InvalidInput);
     EXPECT_THROW(t.lookup(1.0, 1.0, NAN), InvalidInput);
     EXPECT_THROW(SpacePseudoEnergyTable::build({6, 7}, TableMethod::fast, 1), InvalidInput);
@@ -190,7 +198,8 @@ TEST(SpacePseudoEnergyTable, InterpolationErrorFallsWithTheGrid) {
     int level = 0;
     for (const SpaceAngleGrid g : {SpaceAngleGrid{8, 16}, SpaceAngleGrid{16, 32}}) {
         const SpacePseudoEnergyTable t = SpacePseudoEnergyTable::build(g, TableMethod::fast, 2);
-        for (const auto& p : probes) err[level] = std::max(err[level], std::abs(t.lookup(p[0], p[1], p[2]).pseudo_energy - p[3]) / p[3]);
+        for (const auto& p : probes)
+            err[level] = std::max(err[level], std::abs(t.lookup(p[0], p[1], p[2]).pseudo_energy - p[3]) / p[3]);
         ++level;
     }
     EXPECT_LT(err[1], 0.5 * err[0]) << err[0] << " " << err[1];
@@ -206,7 +215,8 @@ TEST(SpacePseudoEnergyTable, InterpolationErrorFallsWithTheGrid) {
 namespace {
 // Exact segments, J(θ) from the 36-node fast tables (ExactOracle's J(θ) costs 0.15 s a value).
 const SegmentOracle& hybrid() {
-    static const PseudoSplineTables tables = PseudoSplineTables::from(PseudoEnergyTable::build({36, NodePlacement::periodic}, TableMethod::fast, 2));
+    static const PseudoSplineTables tables =
+        PseudoSplineTables::from(PseudoEnergyTable::build({36, NodePlacement::periodic}, TableMethod::fast, 2));
     static const TableOracle angles = tables.oracle();
     static const ExactSegmentOracle h(angles);
     return h;
@@ -217,8 +227,12 @@ TEST(SpacePseudoSpline, FarEndOptimumIsPlanarAndJOfThetaGrows) {
     // (a) of space_pseudo_spline.hpp: over φ the energy is least at φ = 0 or π.
     for (double t0 : {0.3, 1.0, 2.0})
         for (double t1 : {0.4, 1.3, 2.6}) {
-            const double plane = std::min(minimize_space_pseudo_energy(t0, t1, 0.0).pseudo_energy, minimize_space_pseudo_energy(t0, t1, std::numbers::pi).pseudo_energy);
-            for (int k = 1; k < 12; ++k) EXPECT_GE(minimize_space_pseudo_energy(t0, t1, std::numbers::pi * k / 6).pseudo_energy, plane * (1 - 1e-12)) << t0 << " " << t1 << " " << k;
+            const double plane = std::min(minimize_space_pseudo_energy(t0, t1, 0.0).pseudo_energy,
+                                          minimize_space_pseudo_energy(t0, t1, std::numbers::pi).pseudo_energy);
+            for (int k = 1; k < 12; ++k)
+                EXPECT_GE(minimize_space_pseudo_energy(t0, t1, std::numbers::pi * k / 6).pseudo_energy,
+                          plane * (1 - 1e-12))
+                    << t0 << " " << t1 << " " << k;
         }
     // (b): J(θ) grows on [0, π].
     double prev = -1.0;
@@ -233,7 +247,8 @@ TEST(SpacePseudoSpline, PlanarPointsGiveThePlanarPseudoSpline) {
     const PointList p = read_points_csv(std::string(CAGD_SOURCE_DIR) + "/reference/pseudo_energy/data/table1.csv");
     const ExactSpaceOracle space(hybrid());
     for (bool closed : {false, true})
-        for (TangentOptimization mode : {TangentOptimization::none, TangentOptimization::exact, TangentOptimization::approximate}) {
+        for (TangentOptimization mode :
+             {TangentOptimization::none, TangentOptimization::exact, TangentOptimization::approximate}) {
             const PseudoSpline plane = pseudo_spline(p, hybrid(), mode, closed);
             const SpacePseudoSpline s = space_pseudo_spline(p, space, mode, closed);
             const double scale = bounding_box_diagonal(p);
@@ -243,7 +258,8 @@ TEST(SpacePseudoSpline, PlanarPointsGiveThePlanarPseudoSpline) {
                 // Exact mode: Brent stops at a relative 2^-26 of the tangent angle (method_registry.hpp), and
                 // the two constructions evaluate w at different angles (signed in the plane, turned in space).
                 const double tol = mode == TangentOptimization::exact ? 1e-7 : 1e-12;
-                EXPECT_NEAR((b.head<2>() - a).norm(), 0.0, tol * scale) << to_string(mode) << " closed " << closed << " u " << u;
+                EXPECT_NEAR((b.head<2>() - a).norm(), 0.0, tol * scale)
+                    << to_string(mode) << " closed " << closed << " u " << u;
                 EXPECT_EQ(b(2), 0.0);
             }
             EXPECT_NEAR(s.length_from_tables(), plane.length_from_tables(), 1e-9 * plane.length_from_tables());
@@ -289,7 +305,9 @@ TEST(SpacePseudoSpline, InterpolatesIsInvariantAndInPlaneOptimal) {
     const SpacePseudoSpline sq = space_pseudo_spline(q, smooth_space, TangentOptimization::exact, false);
     for (int k = 0; k <= 80; ++k) {
         const double u = 8.0 * k / 80;
-        EXPECT_NEAR((sq.curve.point(u) - (2.5 * R * sm.curve.point(u) + shift)).norm(), 0.0, 1e-7 * 2.5 * bounding_box_diagonal(p)) << u;
+        EXPECT_NEAR((sq.curve.point(u) - (2.5 * R * sm.curve.point(u) + shift)).norm(), 0.0,
+                    1e-7 * 2.5 * bounding_box_diagonal(p))
+            << u;
     }
     EXPECT_THROW(space_pseudo_spline(PointList::Zero(3, 4), space, TangentOptimization::exact, false), InvalidInput);
 }

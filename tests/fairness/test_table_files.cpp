@@ -13,10 +13,10 @@
 
 #include "cagd/core/checksum.hpp"
 #include "cagd/core/errors.hpp"
-#include "cagd/io/file_lock.hpp"
 #include "cagd/fairness/angle_minimum_table.hpp"
 #include "cagd/fairness/pseudo_energy_table.hpp"
 #include "cagd/fairness/space_pseudo_energy_table.hpp"
+#include "cagd/io/file_lock.hpp"
 
 #include "../support/messages.hpp"
 #include "../support/scratch_directory.hpp"
@@ -58,7 +58,8 @@ TEST(TableFiles, AChecksumFindsAFlippedDigitAndATruncation) {
     const std::string m = invalid_input_message([&] { checked_content(flipped, "f.txt"); });
     EXPECT_NE(m.find("f.txt: its checksum does not match"), std::string::npos) << m;
     const std::string truncated = good.substr(0, 6);
-    EXPECT_NE(invalid_input_message([&] { checked_content(truncated, "f.txt"); }).find("no checksum line"), std::string::npos);
+    EXPECT_NE(invalid_input_message([&] { checked_content(truncated, "f.txt"); }).find("no checksum line"),
+              std::string::npos);
 }
 
 TEST(TableFiles, APlanarTableLoadsBackBitForBitAndRefusesBadValues) {
@@ -79,7 +80,8 @@ TEST(TableFiles, APlanarTableLoadsBackBitForBitAndRefusesBadValues) {
         if (n == 13) {
             std::stringstream row(line);
             std::string field, out;
-            for (int k = 1; std::getline(row, field, ','); ++k) out += (k > 1 ? "," : "") + (k == 6 ? std::string("-1") : field);
+            for (int k = 1; std::getline(row, field, ','); ++k)
+                out += (k > 1 ? "," : "") + (k == 6 ? std::string("-1") : field);
             line = out;
         }
         rebuilt += line + "\n";
@@ -88,12 +90,17 @@ TEST(TableFiles, APlanarTableLoadsBackBitForBitAndRefusesBadValues) {
     const std::string m = invalid_input_message([&] { PseudoEnergyTable::load(s.path("bad.txt")); });
     EXPECT_NE(m.find("bad.txt':13: r0 = -1"), std::string::npos) << m;
     // A header that declares a huge grid is refused before a row is read (and before memory for it).
-    write_text(s.path("huge.txt"), with_checksum("# cagd pseudo_energy table format 7 grid 6000 placement periodic method fast\ncolumns\n"));
+    write_text(
+        s.path("huge.txt"),
+        with_checksum("# cagd pseudo_energy table format 7 grid 6000 placement periodic method fast\ncolumns\n"));
     const std::string h = invalid_input_message([&] { PseudoEnergyTable::load(s.path("huge.txt")); });
     EXPECT_NE(h.find("grid 6000; it must be in [2, 720]"), std::string::npos) << h;
     // Too few rows for the grid.
     write_text(s.path("short.txt"), with_checksum(content.substr(0, content.rfind('\n', content.size() - 2) + 1)));
-    EXPECT_NE(invalid_input_message([&] { PseudoEnergyTable::load(s.path("short.txt")); }).find("63 node rows, the grid 8 has 64"), std::string::npos);
+    EXPECT_NE(invalid_input_message([&] {
+                  PseudoEnergyTable::load(s.path("short.txt"));
+              }).find("63 node rows, the grid 8 has 64"),
+              std::string::npos);
 }
 
 // What the cache notice was told (the harness prints it as one line).
@@ -105,7 +112,8 @@ std::vector<std::string>& cache_notices() {
 TEST(TableFiles, ADamagedCacheIsRebuilt) {
     cagd::test::ScratchDirectory s;
     cache_notices().clear();
-    set_cache_rebuild_notice([](const std::string& path, const std::string& reason) { cache_notices().push_back(path + ": " + reason); });
+    set_cache_rebuild_notice(
+        [](const std::string& path, const std::string& reason) { cache_notices().push_back(path + ": " + reason); });
     const AngleGrid grid{8, NodePlacement::periodic};
     const PseudoEnergyTable t = PseudoEnergyTable::load_or_build(s.path("cache.txt"), grid, TableMethod::fast);
     EXPECT_TRUE(cache_notices().empty()) << "a missing cache is built without a notice";
@@ -117,7 +125,8 @@ TEST(TableFiles, ADamagedCacheIsRebuilt) {
     EXPECT_NO_THROW(PseudoEnergyTable::load(s.path("cache.txt"))) << "the rebuilt cache is whole again";
     ASSERT_EQ(cache_notices().size(), 1u) << "one notice for the rebuilt cache";
     EXPECT_NE(cache_notices()[0].find(s.path("cache.txt") + ": "), std::string::npos) << cache_notices()[0];
-    EXPECT_NE(cache_notices()[0].find("checksum"), std::string::npos) << "the reason is the failed checksum: " << cache_notices()[0];
+    EXPECT_NE(cache_notices()[0].find("checksum"), std::string::npos)
+        << "the reason is the failed checksum: " << cache_notices()[0];
     (void)PseudoEnergyTable::load_or_build(s.path("cache.txt"), grid, TableMethod::fast);
     EXPECT_EQ(cache_notices().size(), 1u) << "a sound cache is used silently";
     // The angle table's cache likewise.

@@ -19,7 +19,8 @@
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
     cagd::PointList p(8, 2);
     p << 0, 0, 1, 0.5, 2, 0, 3, 1, 4, 0.2, 5, 0.9, 6, 0.1, 7, 0.6;
-    for (const cagd::methods::Configuration& c : cagd::methods::configurations()) cagd::methods::interpolate(c, p, false);
+    for (const cagd::methods::Configuration& c : cagd::methods::configurations())
+        cagd::methods::interpolate(c, p, false);
     return 0;
 }
 
@@ -39,7 +40,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             std::memcpy(&y, q + 8, 8);
             p.row(static_cast<Eigen::Index>(i)) << x, y;
         } else {
-            p.row(static_cast<Eigen::Index>(i)) << static_cast<std::int8_t>(q[0]) / 4.0, static_cast<std::int8_t>(q[1]) / 4.0;
+            p.row(static_cast<Eigen::Index>(i)) << static_cast<std::int8_t>(q[0]) / 4.0,
+                static_cast<std::int8_t>(q[1]) / 4.0;
         }
     }
     try {

@@ -73,11 +73,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                 break;
             }
             case 3: locality::parse_m_vector(text); break;
-            case 4: intrinsic::parse_knot_difference_list(text.substr(text.empty() ? 0 : 1), text.empty() || text[0] % 2 ? 2 : 3); break;
+            case 4:
+                intrinsic::parse_knot_difference_list(text.substr(text.empty() ? 0 : 1),
+                                                      text.empty() || text[0] % 2 ? 2 : 3);
+                break;
             case 5: intrinsic::parse_span_shapes(text); break;
             case 6: {
                 if (text.empty()) break;
-                const methods::Method& m = methods::registry()[static_cast<unsigned char>(text[0]) % methods::registry().size()];
+                const methods::Method& m =
+                    methods::registry()[static_cast<unsigned char>(text[0]) % methods::registry().size()];
                 methods::ParameterText given;
                 std::istringstream lines(text.substr(1));
                 std::string line;

@@ -11,19 +11,21 @@
 #include <numbers>
 #include <random>
 
+#include "../support/messages.hpp"
 #include "cagd/core/errors.hpp"
-#include "cagd/numeric/banded_lu.hpp"
+#include "cagd/core/random_walk.hpp"
 #include "cagd/intrinsic/design_verification.hpp"
 #include "cagd/intrinsic/spiro.hpp"
-#include "cagd/core/random_walk.hpp"
-#include "../support/messages.hpp"
+#include "cagd/numeric/banded_lu.hpp"
 
 using namespace cagd;
 using namespace cagd::intrinsic;
 
 namespace {
 
-const char* kFig3List = "{0, 5.000, 0, 4.018, 0, 3.000, 0, 1.571, 0, 5.000, 0, 5.123, 0, 6.282, 0, 2.500, 0, 1.571, 0, {2.053, 1.806}, 3.430, 2.000, 0}";
+const char* kFig3List =
+    "{0, 5.000, 0, 4.018, 0, 3.000, 0, 1.571, 0, 5.000, 0, 5.123, 0, 6.282, 0, 2.500, 0, 1.571, 0, {2.053, 1.806}, "
+    "3.430, 2.000, 0}";
 
 PointList fig3_points() {
     PointList p(13, 2);
@@ -33,7 +35,12 @@ PointList fig3_points() {
 
 CurvatureProfileProblem fig3_problem() {
     const KnotLayout layout = parse_knot_difference_list(kFig3List, 2).layout;
-    return {fig3_points(), layout, segment_shapes(layout, parse_span_shapes("line,free,line,arc,line,free,arc,line,arc,free,free,line")), {}, false, 0};
+    return {fig3_points(),
+            layout,
+            segment_shapes(layout, parse_span_shapes("line,free,line,arc,line,free,arc,line,arc,free,free,line")),
+            {},
+            false,
+            0};
 }
 
 CurvatureProfileProblem closed_problem(int degree) {
@@ -42,7 +49,8 @@ CurvatureProfileProblem closed_problem(int degree) {
     std::vector<int> mult(7, degree - 1), index{0, 1, 2, 3, 4, 5};
     mult.front() = mult.back() = degree;
     const KnotLayout layout(degree, std::vector<int>(6, 1), mult, index);
-    return {p, layout, std::vector<SegmentShape>(6, degree == 3 ? SegmentShape::linear_curvature : SegmentShape::free), {}, true, 0};
+    return {p,  layout, std::vector<SegmentShape>(6, degree == 3 ? SegmentShape::linear_curvature : SegmentShape::free),
+            {}, true,   0};
 }
 
 // Spiro's layout (degree 4, simple knots) on the same points: open with κ' = κ'' = 0 at both ends,
@@ -59,7 +67,9 @@ CurvatureProfileProblem spiro_problem(bool closed) {
     P.points.conservativeResize(7, 2);
     P.points.row(6) << -2, 0.5;
     using K = DesignCondition::Kind;
-    for (int order : {1, 2}) P.conditions.push_back({K::curvature_derivative, 0, 0.0, false, order}), P.conditions.push_back({K::curvature_derivative, 6, 0.0, true, order});
+    for (int order : {1, 2})
+        P.conditions.push_back({K::curvature_derivative, 0, 0.0, false, order}),
+            P.conditions.push_back({K::curvature_derivative, 6, 0.0, true, order});
     return P;
 }
 
@@ -72,7 +82,8 @@ TEST(KnotDifferenceList, Figure1ExampleStructureAndRoundTrip) {
     EXPECT_EQ(l.layout.segments(), 5);
     EXPECT_EQ(l.layout.independent_lengths(), 4);  // S0 shared by span 0's two segments
     const std::vector<int> mult{3, 1, 2, 1, 2, 3};
-    for (int g = 0; g <= 5; ++g) EXPECT_EQ(l.layout.multiplicity(g), mult[static_cast<std::size_t>(g)]) << "breakpoint " << g;
+    for (int g = 0; g <= 5; ++g)
+        EXPECT_EQ(l.layout.multiplicity(g), mult[static_cast<std::size_t>(g)]) << "breakpoint " << g;
     EXPECT_EQ(l.layout.ordinates(), 12 - 3 + 1);
     EXPECT_EQ(format_knot_difference_list(l.layout), fig1);
     const std::vector<double> lengths{1.25, 1.25, 2.5, 0.75, 3.0};
@@ -102,8 +113,9 @@ TEST(KnotDifferenceList, Figure3PrintedListRoundTripsAtDegreeTwo) {
 }
 
 TEST(KnotDifferenceList, MalformedListsThrow) {
-    for (const char* bad : {"", "{}", "{0, 5, 0", "{0, 5, 0} x", "{0, {1, {2}}, 0}", "{0, -1, 0}", "{0, 1, …, 0}", "{0, 1, ..., 0}", "{0, 1, 0, 0, 2, 0}", "{0, {0, 1}, 0}",
-                            "{0, {1, 0}, 0}", "{0, 0, 0}", "{1, 2, 0}", "{0, 1, 2}", "{0, 1e999, 0}", "{0, 1; 2, 0}"})
+    for (const char* bad : {"", "{}", "{0, 5, 0", "{0, 5, 0} x", "{0, {1, {2}}, 0}", "{0, -1, 0}", "{0, 1, …, 0}",
+                            "{0, 1, ..., 0}", "{0, 1, 0, 0, 2, 0}", "{0, {0, 1}, 0}", "{0, {1, 0}, 0}", "{0, 0, 0}",
+                            "{1, 2, 0}", "{0, 1, 2}", "{0, 1e999, 0}", "{0, 1; 2, 0}"})
         EXPECT_THROW(parse_knot_difference_list(bad, 2), InvalidInput) << bad;
     EXPECT_THROW(parse_knot_difference_list("{0, 1, 0}", 4), InvalidInput);
     EXPECT_THROW(KnotLayout(2, {1, 1}, {2, 3, 2}, {0, 1}), InvalidInput);  // interior multiplicity > p
@@ -119,16 +131,19 @@ TEST(KnotDifferenceList, LengthsPrintAsPrintfFixed) {
     std::mt19937 rng(5);
     std::uniform_real_distribution<double> mantissa(1.0, 10.0);
     std::uniform_int_distribution<int> exponent(-4, 12), digits(0, 17);
-    std::vector<std::pair<double, int>> cases{{0.125, 2}, {0.375, 2}, {2.5, 0}, {3.5, 0}, {1e22, 3}, {0.1, 17}, {123456.0, 0}};
+    std::vector<std::pair<double, int>> cases{{0.125, 2}, {0.375, 2}, {2.5, 0},     {3.5, 0},
+                                              {1e22, 3},  {0.1, 17},  {123456.0, 0}};
     for (int i = 0; i < 2000; ++i) cases.emplace_back(mantissa(rng) * std::pow(10.0, exponent(rng)), digits(rng));
     for (const auto& [v, decimals] : cases) {
         char want[400];
         std::snprintf(want, sizeof want, "%.*f", decimals, v);
         if (std::strtod(want, nullptr) == 0.0) {
-            EXPECT_THROW(format_knot_difference_list(one, {v}, decimals), InvalidInput) << v << " with " << decimals << " decimals prints as " << want;
+            EXPECT_THROW(format_knot_difference_list(one, {v}, decimals), InvalidInput)
+                << v << " with " << decimals << " decimals prints as " << want;
             continue;
         }
-        EXPECT_EQ(format_knot_difference_list(one, {v}, decimals), std::string("{0, ") + want + ", 0}") << full_precision(v) << " with " << decimals << " decimals";
+        EXPECT_EQ(format_knot_difference_list(one, {v}, decimals), std::string("{0, ") + want + ", 0}")
+            << full_precision(v) << " with " << decimals << " decimals";
     }
 }
 
@@ -144,10 +159,12 @@ TEST(TangentAngleSpline, BezierFormMatchesDeBoorEvaluation) {
         const TangentAngleSpline psi(layout, lengths, c);
         for (int j = 0; j < 5; ++j)
             for (double t : {0.0, 0.3, 0.71, 1.0}) {
-                const double s = psi.breakpoints()[static_cast<std::size_t>(j)] + t * lengths[static_cast<std::size_t>(j)];
+                const double s =
+                    psi.breakpoints()[static_cast<std::size_t>(j)] + t * lengths[static_cast<std::size_t>(j)];
                 double bez = 0.0;
                 for (int r = 0; r <= p; ++r)
-                    bez += psi.bezier()(j, r) * std::tgamma(p + 1) / (std::tgamma(r + 1) * std::tgamma(p - r + 1)) * std::pow(t, r) * std::pow(1 - t, p - r);
+                    bez += psi.bezier()(j, r) * std::tgamma(p + 1) / (std::tgamma(r + 1) * std::tgamma(p - r + 1)) *
+                           std::pow(t, r) * std::pow(1 - t, p - r);
                 EXPECT_NEAR(bez, psi.jet_in_segment(j, s, 0)(0), 1e-13) << "p=" << p << " segment " << j << " t=" << t;
             }
         // Clamped ends interpolate the end ordinates; Greville abscissae start at 0 and end at L.
@@ -159,12 +176,22 @@ TEST(TangentAngleSpline, BezierFormMatchesDeBoorEvaluation) {
 
 TEST(TangentAngleSpline, DirectionIntegralsMatchAdaptiveGaussKronrod) {
     using GK = boost::math::quadrature::gauss_kronrod<double, 31>;
-    for (const Eigen::Vector4d& b : {Eigen::Vector4d(0, 5, -3, 8), Eigen::Vector4d(1, 1, 1, 1), Eigen::Vector4d(-20, 3, 30, -2)}) {
-        auto psi = [&](double t) { return b(0) * std::pow(1 - t, 3) + 3 * b(1) * t * (1 - t) * (1 - t) + 3 * b(2) * t * t * (1 - t) + b(3) * t * t * t; };
+    for (const Eigen::Vector4d& b :
+         {Eigen::Vector4d(0, 5, -3, 8), Eigen::Vector4d(1, 1, 1, 1), Eigen::Vector4d(-20, 3, 30, -2)}) {
+        auto psi = [&](double t) {
+            return b(0) * std::pow(1 - t, 3) + 3 * b(1) * t * (1 - t) * (1 - t) + 3 * b(2) * t * t * (1 - t) +
+                   b(3) * t * t * t;
+        };
         for (double tau : {1.0, 0.37}) {
             const Eigen::Vector2d I = direction_integrals(b, tau);
-            EXPECT_NEAR(I(0), GK::integrate([&](double t) { return std::cos(psi(t)) + 2.0; }, 0.0, tau, 15, 1e-15) - 2.0 * tau, 1e-14) << b.transpose();
-            EXPECT_NEAR(I(1), GK::integrate([&](double t) { return std::sin(psi(t)) + 2.0; }, 0.0, tau, 15, 1e-15) - 2.0 * tau, 1e-14) << b.transpose();
+            EXPECT_NEAR(
+                I(0), GK::integrate([&](double t) { return std::cos(psi(t)) + 2.0; }, 0.0, tau, 15, 1e-15) - 2.0 * tau,
+                1e-14)
+                << b.transpose();
+            EXPECT_NEAR(
+                I(1), GK::integrate([&](double t) { return std::sin(psi(t)) + 2.0; }, 0.0, tau, 15, 1e-15) - 2.0 * tau,
+                1e-14)
+                << b.transpose();
         }
     }
     EXPECT_THROW(direction_integrals(Eigen::Vector4d(0, 1, 2, 3), 1.5), InvalidInput);
@@ -175,15 +202,23 @@ TEST(TangentAngleSpline, DirectionIntegralsMatchAdaptiveGaussKronrod) {
 TEST(TangentAngleSpline, QuarticDirectionIntegralsMatchAdaptiveGaussKronrod) {
     using GK = boost::math::quadrature::gauss_kronrod<double, 31>;
     using Vector5d = Eigen::Matrix<double, 5, 1>;
-    for (const Vector5d& b : {Vector5d(0, 5, -3, 8, 1), Vector5d(2, 2, 2, 2, 2), Vector5d(-20, 3, 30, -2, 10), Vector5d(0, 0.1, 0.3, 0.2, -0.1)}) {
+    for (const Vector5d& b : {Vector5d(0, 5, -3, 8, 1), Vector5d(2, 2, 2, 2, 2), Vector5d(-20, 3, 30, -2, 10),
+                              Vector5d(0, 0.1, 0.3, 0.2, -0.1)}) {
         auto psi = [&](double t) {
             const double u = 1 - t;
-            return b(0) * u * u * u * u + 4 * b(1) * t * u * u * u + 6 * b(2) * t * t * u * u + 4 * b(3) * t * t * t * u + b(4) * t * t * t * t;
+            return b(0) * u * u * u * u + 4 * b(1) * t * u * u * u + 6 * b(2) * t * t * u * u +
+                   4 * b(3) * t * t * t * u + b(4) * t * t * t * t;
         };
         for (double tau : {1.0, 0.37}) {
             const Eigen::Vector2d I = direction_integrals(b, tau);
-            EXPECT_NEAR(I(0), GK::integrate([&](double t) { return std::cos(psi(t)) + 2.0; }, 0.0, tau, 15, 1e-15) - 2.0 * tau, 1e-14) << b.transpose();
-            EXPECT_NEAR(I(1), GK::integrate([&](double t) { return std::sin(psi(t)) + 2.0; }, 0.0, tau, 15, 1e-15) - 2.0 * tau, 1e-14) << b.transpose();
+            EXPECT_NEAR(
+                I(0), GK::integrate([&](double t) { return std::cos(psi(t)) + 2.0; }, 0.0, tau, 15, 1e-15) - 2.0 * tau,
+                1e-14)
+                << b.transpose();
+            EXPECT_NEAR(
+                I(1), GK::integrate([&](double t) { return std::sin(psi(t)) + 2.0; }, 0.0, tau, 15, 1e-15) - 2.0 * tau,
+                1e-14)
+                << b.transpose();
         }
     }
     EXPECT_THROW(direction_integrals(Eigen::Matrix<double, 6, 1>::Zero(), 1.0), InvalidInput);
@@ -202,7 +237,9 @@ TEST(TangentAngleSpline, PiecesOfThreeRadiansIntegrateToRounding) {
                 for (int r = 0; r <= p; ++r) b(r) = offset + (r % 2 == 0 ? 0.0 : turning / p);  // |p Δb| = turning
                 auto psi = [&](double t) {
                     double v = 0.0;
-                    for (int r = 0; r <= p; ++r) v += b(r) * std::tgamma(p + 1) / (std::tgamma(r + 1) * std::tgamma(p - r + 1)) * std::pow(t, r) * std::pow(1 - t, p - r);
+                    for (int r = 0; r <= p; ++r)
+                        v += b(r) * std::tgamma(p + 1) / (std::tgamma(r + 1) * std::tgamma(p - r + 1)) *
+                             std::pow(t, r) * std::pow(1 - t, p - r);
                     return v;
                 };
                 double c = 0.0, s = 0.0;
@@ -254,14 +291,19 @@ TEST(IntrinsicCurve, PositionsAtTheJoinsAreTheQuadratureBitForBit) {
     const TangentAngleSpline& psi = c.tangent_angle();
     JetMatrix J;
     for (int j = 0; j < psi.segments(); ++j) {
-        const double w = psi.breakpoints()[static_cast<std::size_t>(j)], d = psi.segment_lengths()[static_cast<std::size_t>(j)];
-        const Eigen::RowVector2d start = c.breakpoint_points().row(j), quadrature_start = start + d * direction_integrals(psi.bezier().row(j).transpose(), 0.0).transpose();
+        const double w = psi.breakpoints()[static_cast<std::size_t>(j)],
+                     d = psi.segment_lengths()[static_cast<std::size_t>(j)];
+        const Eigen::RowVector2d start = c.breakpoint_points().row(j),
+                                 quadrature_start =
+                                     start + d * direction_integrals(psi.bezier().row(j).transpose(), 0.0).transpose();
         c.jet_into(w, 1, J);  // s = w_j: segment j at τ = 0
         EXPECT_EQ(J(0, 0), quadrature_start(0)) << "segment " << j;
         EXPECT_EQ(J(0, 1), quadrature_start(1)) << "segment " << j;
-        EXPECT_EQ(std::signbit(J(0, 0)), std::signbit(quadrature_start(0))) << "segment " << j << ": r_j + (+0) is +0 for r_j = −0";
+        EXPECT_EQ(std::signbit(J(0, 0)), std::signbit(quadrature_start(0)))
+            << "segment " << j << ": r_j + (+0) is +0 for r_j = −0";
         EXPECT_EQ(c.jet(w, 0).row(0), J.row(0)) << "segment " << j;
-        const Eigen::RowVector2d quadrature_end = start + d * direction_integrals(psi.bezier().row(j).transpose(), 1.0).transpose();
+        const Eigen::RowVector2d quadrature_end =
+            start + d * direction_integrals(psi.bezier().row(j).transpose(), 1.0).transpose();
         if (j + 1 == psi.segments()) {
             c.jet_into(c.length(), 0, J);  // the last segment at τ = (L − w)/d (1 unless it rounds below)
             const double tau = std::min(1.0, std::max(0.0, (c.length() - w) / d));
@@ -281,7 +323,9 @@ TEST(TangentAngleSpline, LocalKnotsAreTheFarinKnotsShiftedToTheSegmentStart) {
         ASSERT_EQ(local.size(), static_cast<std::size_t>(2 * p));
         const int k0 = P.layout.last_knot_of_breakpoint(j) - p + 1;
         for (int m = 0; m < 2 * p; ++m)
-            EXPECT_NEAR(local[static_cast<std::size_t>(m)], v[static_cast<std::size_t>(k0 + m)] - psi.breakpoints()[static_cast<std::size_t>(j)], 1e-13) << j << " " << m;
+            EXPECT_NEAR(local[static_cast<std::size_t>(m)],
+                        v[static_cast<std::size_t>(k0 + m)] - psi.breakpoints()[static_cast<std::size_t>(j)], 1e-13)
+                << j << " " << m;
     }
 }
 
@@ -325,7 +369,8 @@ TEST(CurvatureProfileDesign, ContinuationStartSolvesTheWindowAroundAMovedPoint) 
         const CurvatureProfileProblem after = problem_of(q, false);
         const Eigen::VectorXd start = continuation_start(after, first.u, continuation);
         // The window: spans moved − 1 and moved (the moved point's rows) widened by 64 on each side.
-        const int n = 1999, a = std::max(0, moved - 1 - kContinuationWindowSpans), b = std::min(n, moved + 1 + kContinuationWindowSpans);
+        const int n = 1999, a = std::max(0, moved - 1 - kContinuationWindowSpans),
+                  b = std::min(n, moved + 1 + kContinuationWindowSpans);
         for (int j = 0; j < n; ++j)
             if (j < a || j >= b) {
                 ASSERT_EQ(start(j), first.u(j)) << "length " << j << " outside the window [" << a << ", " << b << ")";
@@ -335,12 +380,14 @@ TEST(CurvatureProfileDesign, ContinuationStartSolvesTheWindowAroundAMovedPoint) 
                 ASSERT_EQ(start(n + i), first.u(n + i)) << "ordinate " << i << " outside the window";
             }
         EXPECT_GT((start - first.u).lpNorm<Eigen::Infinity>(), 1e-3) << "the window was re-solved";
-        const CurvatureProfileSolution near = solve_curvature_profile_auto(after, start, continuation), cold = solve_curvature_profile_auto(after);
+        const CurvatureProfileSolution near = solve_curvature_profile_auto(after, start, continuation),
+                                       cold = solve_curvature_profile_auto(after);
         ASSERT_TRUE(near.outcome.ok() && cold.outcome.ok()) << near.outcome.message << " / " << cold.outcome.message;
         EXPECT_EQ(near.history.size(), 1u) << "converged at the first evaluation, moved point " << moved;
         EXPECT_LE((near.u - cold.u).lpNorm<Eigen::Infinity>(), 1e-10) << "moved point " << moved;
         // From the old solution itself Newton does not contract (the case this start is for).
-        EXPECT_FALSE(solve_curvature_profile_auto(after, first.u, continuation).outcome.ok()) << "moved point " << moved;
+        EXPECT_FALSE(solve_curvature_profile_auto(after, first.u, continuation).outcome.ok())
+            << "moved point " << moved;
     }
     // Not applicable: points moved far apart (a window over a quarter of the curve), a closed curve,
     // too few spans, a start of another size.
@@ -366,7 +413,8 @@ TEST(CurvatureProfileDesign, AutoTakesTheLuStepAbove64Unknowns) {
         const KnotLayout layout = span_layout(free);
         CurvatureProfileProblem problem{p, layout, segment_shapes(layout, free), {}, false, 0};
         add_natural_open_ends(problem);
-        const CurvatureProfileSolution automatic = solve_curvature_profile_auto(problem), dense = solve_curvature_profile(problem);
+        const CurvatureProfileSolution automatic = solve_curvature_profile_auto(problem),
+                                       dense = solve_curvature_profile(problem);
         ASSERT_TRUE(automatic.outcome.ok() && dense.outcome.ok()) << points;
         EXPECT_EQ(automatic.unknowns, 2 * points);
         if (automatic.unknowns > 64)
@@ -408,23 +456,30 @@ TEST(IntrinsicCurve, SegmentOffsetBoundCoversEveryFraction) {
         for (int which = 0; which < 3; ++which) {
             Eigen::VectorXd u = sol.u;
             u(l + (which == 0 ? 0 : P.layout.ordinates() / 2)) += size;  // an ordinate
-            if (which == 2) u(l / 2) *= 1.0 + size;                       // and a length
+            if (which == 2) u(l / 2) *= 1.0 + size;                      // and a length
             const IntrinsicCurve b(P.points.row(0).transpose(), TangentAngleSpline::from_unknowns(P.layout, u));
             for (int j = 0; j < segments; ++j) {
                 const double bound = a.segment_offset_bound(b, j);
-                const double wa = a.breakpoints()[static_cast<std::size_t>(j)], da = a.tangent_angle().segment_lengths()[static_cast<std::size_t>(j)];
-                const double wb = b.breakpoints()[static_cast<std::size_t>(j)], db = b.tangent_angle().segment_lengths()[static_cast<std::size_t>(j)];
+                const double wa = a.breakpoints()[static_cast<std::size_t>(j)],
+                             da = a.tangent_angle().segment_lengths()[static_cast<std::size_t>(j)];
+                const double wb = b.breakpoints()[static_cast<std::size_t>(j)],
+                             db = b.tangent_angle().segment_lengths()[static_cast<std::size_t>(j)];
                 for (int q = 0; q <= 64; ++q) {
                     const double f = q / 64.0;
-                    const double distance = (a.jet(f == 1.0 ? wa + da : wa + f * da, 0) - b.jet(f == 1.0 ? wb + db : wb + f * db, 0)).norm();
-                    ASSERT_LE(distance, bound) << "perturbation " << size << " (" << which << "), segment " << j << ", fraction " << f;
+                    const double distance =
+                        (a.jet(f == 1.0 ? wa + da : wa + f * da, 0) - b.jet(f == 1.0 ? wb + db : wb + f * db, 0))
+                            .norm();
+                    ASSERT_LE(distance, bound)
+                        << "perturbation " << size << " (" << which << "), segment " << j << ", fraction " << f;
                 }
             }
         }
     for (int j = 0; j < segments; ++j) {
-        const double scale = a.breakpoint_points().row(j).cwiseAbs().maxCoeff() + 2.0 * a.tangent_angle().segment_lengths()[static_cast<std::size_t>(j)] *
-                                                                                       (1.0 + a.tangent_angle().bezier().row(j).cwiseAbs().maxCoeff());
-        EXPECT_LE(a.segment_offset_bound(a, j), 3e-13 * scale) << "segment " << j << ": a curve does not move from itself";
+        const double scale = a.breakpoint_points().row(j).cwiseAbs().maxCoeff() +
+                             2.0 * a.tangent_angle().segment_lengths()[static_cast<std::size_t>(j)] *
+                                 (1.0 + a.tangent_angle().bezier().row(j).cwiseAbs().maxCoeff());
+        EXPECT_LE(a.segment_offset_bound(a, j), 3e-13 * scale)
+            << "segment " << j << ": a curve does not move from itself";
     }
     EXPECT_THROW(a.segment_offset_bound(a, segments), InvalidInput);
     EXPECT_THROW(a.segment_offset_bound(a, -1), InvalidInput);
@@ -435,10 +490,15 @@ TEST(CurvatureProfileDesign, JacobianMatchesCentralDifferences) {
     cubic.closed = false;
     cubic.points.conservativeResize(5, 2);
     cubic.layout = KnotLayout(3, {2, 1, 1, 1}, {3, 1, 2, 3, 2, 3}, {0, 0, 1, 2, 3});
-    cubic.shapes = {SegmentShape::free, SegmentShape::arc, SegmentShape::linear_curvature, SegmentShape::line, SegmentShape::free};
+    cubic.shapes = {SegmentShape::free, SegmentShape::arc, SegmentShape::linear_curvature, SegmentShape::line,
+                    SegmentShape::free};
     using K = DesignCondition::Kind;
-    cubic.conditions = {{K::tangent_angle, 0, 0.1, false}, {K::curvature, 3, 0.2, true}, {K::curvature_radius, 2, 4.0, false}, {K::segment_length, 4, 2.0, false}};
-    for (const CurvatureProfileProblem& P : {fig3_problem(), closed_problem(2), closed_problem(3), cubic, spiro_problem(false), spiro_problem(true)}) {
+    cubic.conditions = {{K::tangent_angle, 0, 0.1, false},
+                        {K::curvature, 3, 0.2, true},
+                        {K::curvature_radius, 2, 4.0, false},
+                        {K::segment_length, 4, 2.0, false}};
+    for (const CurvatureProfileProblem& P :
+         {fig3_problem(), closed_problem(2), closed_problem(3), cubic, spiro_problem(false), spiro_problem(true)}) {
         Eigen::VectorXd u = c2_start(P);
         std::mt19937 rng(3);
         std::uniform_real_distribution<double> jitter(-0.05, 0.05);
@@ -472,7 +532,8 @@ TEST(CurvatureProfileDesign, Figure3ConvergesQuadraticallyToTheForcedArcs) {
     EXPECT_NEAR(L[11], 3.43018694456654, 1e-11);
     const auto& h = sol.history;
     ASSERT_GE(h.size(), 4u);
-    for (std::size_t k = 2; k + 1 < h.size(); ++k) EXPECT_LT(h[k + 1].residual, 10.0 * h[k].residual * h[k].residual) << "r_{k+1} ≤ C r_k² at k = " << k;
+    for (std::size_t k = 2; k + 1 < h.size(); ++k)
+        EXPECT_LT(h[k + 1].residual, 10.0 * h[k].residual * h[k].residual) << "r_{k+1} ≤ C r_k² at k = " << k;
     const DesignVerification v = verify_design(P, *sol.curve);
     EXPECT_LT(v.interpolation_error, 1e-10);
     EXPECT_LT(v.line_curvature, 1e-10);
@@ -493,7 +554,8 @@ TEST(CurvatureProfileDesign, ClosedClothoidSplineSparseAndDenseAgree) {
     EXPECT_LT(v.g2_curvature_jump, 1e-12);
     EXPECT_LT(v.interpolation_error, 1e-10);
     const TangentAngleSpline& psi = a.curve->tangent_angle();
-    EXPECT_NEAR(psi.angle(5, true) - psi.angle(0, false), 2 * std::numbers::pi, 1e-12);  // counter-clockwise: turns = +1
+    EXPECT_NEAR(psi.angle(5, true) - psi.angle(0, false), 2 * std::numbers::pi,
+                1e-12);  // counter-clockwise: turns = +1
 }
 
 // The banded step: the layout's ordering makes J of an open clothoid spline banded (degree 2:
@@ -509,28 +571,35 @@ TEST(CurvatureProfileDesign, BandedStepAgreesWithSparseAndDense) {
     CurvatureProfileProblem P{p, span_layout(spans), spans, {}, false, 0};
     add_natural_open_ends(P);
     DesignBandOrdering order = design_band_ordering(P);
-    const cagd::numeric::BandedLu band(design_system(P, c2_start(P), true).jacobian, std::move(order.rows), std::move(order.columns));
+    const cagd::numeric::BandedLu band(design_system(P, c2_start(P), true).jacobian, std::move(order.rows),
+                                       std::move(order.columns));
     EXPECT_LE(band.lower_width(), 4);
     EXPECT_LE(band.upper_width(), 4);
     NewtonOptions banded, sparse, dense;
     banded.step = NewtonStep::banded_lu;
     sparse.step = NewtonStep::sparse_lu;
-    const CurvatureProfileSolution a = solve_curvature_profile(P, banded), b = solve_curvature_profile(P, sparse), c = solve_curvature_profile(P, dense);
-    ASSERT_TRUE(a.outcome.ok() && b.outcome.ok() && c.outcome.ok()) << a.outcome.message << b.outcome.message << c.outcome.message;
+    const CurvatureProfileSolution a = solve_curvature_profile(P, banded), b = solve_curvature_profile(P, sparse),
+                                   c = solve_curvature_profile(P, dense);
+    ASSERT_TRUE(a.outcome.ok() && b.outcome.ok() && c.outcome.ok())
+        << a.outcome.message << b.outcome.message << c.outcome.message;
     EXPECT_LT((a.u - b.u).lpNorm<Eigen::Infinity>(), 1e-10);
     EXPECT_LT((a.u - c.u).lpNorm<Eigen::Infinity>(), 1e-10);
     EXPECT_EQ(a.history.size(), b.history.size()) << "the same Newton path";
 
     const CurvatureProfileProblem Q = closed_problem(2);
     DesignBandOrdering closed_order = design_band_ordering(Q);
-    const cagd::numeric::BandedLu closed_band(design_system(Q, c2_start(Q), true).jacobian, std::move(closed_order.rows), std::move(closed_order.columns));
+    const cagd::numeric::BandedLu closed_band(design_system(Q, c2_start(Q), true).jacobian,
+                                              std::move(closed_order.rows), std::move(closed_order.columns));
     EXPECT_GT(closed_band.storage_rows(), 2 * 4 + 4 + 1) << "the closing rows widen the band";
     const CurvatureProfileSolution d = solve_curvature_profile(Q, banded), e = solve_curvature_profile(Q, sparse);
     ASSERT_TRUE(d.outcome.ok() && e.outcome.ok()) << d.outcome.message << e.outcome.message;
     EXPECT_LT((d.u - e.u).lpNorm<Eigen::Infinity>(), 1e-10);
     CurvatureProfileProblem overdetermined = P;
     overdetermined.conditions.push_back({DesignCondition::Kind::tangent_angle, 3, 0.5});
-    EXPECT_NE(cagd::test::invalid_input_message([&] { solve_curvature_profile(overdetermined, banded); }).find("the banded LU step needs a square system"), std::string::npos);
+    EXPECT_NE(cagd::test::invalid_input_message([&] {
+                  solve_curvature_profile(overdetermined, banded);
+              }).find("the banded LU step needs a square system"),
+              std::string::npos);
 }
 
 TEST(CurvatureProfileDesign, DivergingIterationStopsEarly) {
@@ -578,7 +647,8 @@ TEST(CurvatureProfileDesign, InconsistentArcIsNoSolutionNotAWrongCurve) {
     EXPECT_EQ(stopped.outcome.status, Status::no_convergence);
     EXPECT_EQ(stopped.history.size(), 2u) << "the start and one step";
     EXPECT_NE(stopped.outcome.message.find("does not contract"), std::string::npos) << stopped.outcome.message;
-    EXPECT_TRUE(solve_curvature_profile(fig3_problem(), NewtonOptions{.required_contraction = 0.5}).outcome.ok()) << "Newton's own contraction passes 0.5";
+    EXPECT_TRUE(solve_curvature_profile(fig3_problem(), NewtonOptions{.required_contraction = 0.5}).outcome.ok())
+        << "Newton's own contraction passes 0.5";
     strict.required_contraction = 1.0;
     const std::string m = cagd::test::invalid_input_message([&] { solve_curvature_profile(fig3_problem(), strict); });
     EXPECT_NE(m.find("required_contraction < 1, got 1"), std::string::npos) << m;
@@ -597,7 +667,9 @@ TEST(CurvatureProfileDesign, SpanShapesAndDefaultLayout) {
 
 TEST(CurvatureProfileDesign, BadInputThrows) {
     CurvatureProfileProblem P = fig3_problem();
-    auto expect_bad = [](CurvatureProfileProblem q, const char* what) { EXPECT_THROW(solve_curvature_profile(q), InvalidInput) << what; };
+    auto expect_bad = [](CurvatureProfileProblem q, const char* what) {
+        EXPECT_THROW(solve_curvature_profile(q), InvalidInput) << what;
+    };
     {
         CurvatureProfileProblem q = P;
         q.points.conservativeResize(1, 2);
@@ -661,7 +733,8 @@ TEST(Spiro, ChordwiseJacobianMatchesCentralDifferences) {
             auto up = ks, down = ks;
             up[static_cast<std::size_t>(c / 4)][static_cast<std::size_t>(c % 4)] += 1e-6;
             down[static_cast<std::size_t>(c / 4)][static_cast<std::size_t>(c % 4)] -= 1e-6;
-            const Eigen::VectorXd fd = (spiro_chordwise_system(points, closed, up).f - spiro_chordwise_system(points, closed, down).f) / 2e-6;
+            const Eigen::VectorXd fd =
+                (spiro_chordwise_system(points, closed, up).f - spiro_chordwise_system(points, closed, down).f) / 2e-6;
             worst = std::max(worst, (fd - J.col(c)).lpNorm<Eigen::Infinity>());
         }
         EXPECT_LT(worst, 1e-8) << (closed ? "closed" : "open");
@@ -679,17 +752,22 @@ TEST(Spiro, BothFormulationsGiveOneG4Curve) {
         for (int j = 0; j < psi.segments(); ++j) {
             const double l = psi.segment_lengths()[static_cast<std::size_t>(j)];
             EXPECT_NEAR(l, s.chordwise.arc_lengths[static_cast<std::size_t>(j)], 1e-10 * l);
-            const Eigen::VectorXd jet = psi.jet_in_segment(j, psi.breakpoints()[static_cast<std::size_t>(j)] + 0.5 * l, 4);
-            for (int d = 0; d < 4; ++d) EXPECT_NEAR(std::pow(l, d + 1) * jet(d + 1), s.chordwise.ks[static_cast<std::size_t>(j)][static_cast<std::size_t>(d)], 1e-9);
+            const Eigen::VectorXd jet =
+                psi.jet_in_segment(j, psi.breakpoints()[static_cast<std::size_t>(j)] + 0.5 * l, 4);
+            for (int d = 0; d < 4; ++d)
+                EXPECT_NEAR(std::pow(l, d + 1) * jet(d + 1),
+                            s.chordwise.ks[static_cast<std::size_t>(j)][static_cast<std::size_t>(d)], 1e-9);
         }
         // G4: ψ, κ, κ', κ'' continuous at every interior breakpoint (and across the seam).
         for (int g = 1; g < psi.segments(); ++g) {
             const double w = psi.breakpoints()[static_cast<std::size_t>(g)];
             const Eigen::VectorXd left = psi.jet_in_segment(g - 1, w, 4), right = psi.jet_in_segment(g, w, 4);
-            for (int d = 0; d < 4; ++d) EXPECT_NEAR(left(d), right(d), 1e-9 * (1 + std::abs(left(d)))) << "ψ^(" << d << ") at breakpoint " << g;
+            for (int d = 0; d < 4; ++d)
+                EXPECT_NEAR(left(d), right(d), 1e-9 * (1 + std::abs(left(d)))) << "ψ^(" << d << ") at breakpoint " << g;
             EXPECT_GT(std::abs(left(4) - right(4)), 1e-6) << "a knot: ψ'''' jumps at breakpoint " << g;
         }
-        const Eigen::VectorXd start = psi.jet_in_segment(0, 0.0, 3), end = psi.jet_in_segment(psi.segments() - 1, psi.length(), 3);
+        const Eigen::VectorXd start = psi.jet_in_segment(0, 0.0, 3),
+                              end = psi.jet_in_segment(psi.segments() - 1, psi.length(), 3);
         if (closed) {
             EXPECT_NEAR(end(0) - start(0), 2 * std::numbers::pi, 1e-10);
             for (int d = 1; d < 4; ++d) EXPECT_NEAR(end(d), start(d), 1e-9 * (1 + std::abs(start(d))));
@@ -701,7 +779,10 @@ TEST(Spiro, BothFormulationsGiveOneG4Curve) {
         }
         // The curve passes through the points.
         for (int i = 0; i < s.problem.layout.spans(); ++i)
-            EXPECT_LE((s.solution.curve->point(psi.breakpoints()[static_cast<std::size_t>(i)]) - points.row(i).transpose()).norm(), 1e-10);
+            EXPECT_LE(
+                (s.solution.curve->point(psi.breakpoints()[static_cast<std::size_t>(i)]) - points.row(i).transpose())
+                    .norm(),
+                1e-10);
     }
 }
 

@@ -9,8 +9,8 @@
 
 #include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
-#include "cagd/io/file_lock.hpp"
 #include "cagd/core/point_csv.hpp"
+#include "cagd/io/file_lock.hpp"
 
 using namespace cagd;
 

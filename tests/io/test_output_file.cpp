@@ -13,8 +13,8 @@
 #include <string>
 
 #include "cagd/core/csv.hpp"
-#include "cagd/io/csv_writer.hpp"
 #include "cagd/core/errors.hpp"
+#include "cagd/io/csv_writer.hpp"
 #include "cagd/io/output_file.hpp"
 
 #include "../support/messages.hpp"
@@ -36,7 +36,8 @@ std::string contents(const std::string& path) {
 // Names in `dir` that the writer makes for itself (".name.cagd-XXXXXX").
 int temporaries_in(const fs::path& dir) {
     int n = 0;
-    for (const auto& e : fs::directory_iterator(dir)) n += e.path().filename().string().find(".cagd-") != std::string::npos;
+    for (const auto& e : fs::directory_iterator(dir))
+        n += e.path().filename().string().find(".cagd-") != std::string::npos;
     return n;
 }
 
@@ -45,9 +46,7 @@ int temporaries_in(const fs::path& dir) {
 TEST(OutputFile, CommitPublishesAndKeepsTheReplacedFilesMode) {
     cagd::test::ScratchDirectory s;
     const std::string f = s.path("out.csv");
-    {
-        std::ofstream(f) << "old\n";
-    }
+    { std::ofstream(f) << "old\n"; }
     ::chmod(f.c_str(), 0640);
     OutputFile out(f);
     out.stream() << "new\n";
@@ -56,7 +55,7 @@ TEST(OutputFile, CommitPublishesAndKeepsTheReplacedFilesMode) {
     out.commit();
     EXPECT_EQ(contents(f), "new\n");
     EXPECT_EQ(temporaries_in(s.dir), 0);
-    struct stat st{};
+    struct stat st {};
     ASSERT_EQ(::stat(f.c_str(), &st), 0);
     EXPECT_EQ(st.st_mode & 0777, 0640u) << "the replaced file's mode";
 }
@@ -64,9 +63,7 @@ TEST(OutputFile, CommitPublishesAndKeepsTheReplacedFilesMode) {
 TEST(OutputFile, WithoutCommitTheOldFileStaysAndNothingIsLeft) {
     cagd::test::ScratchDirectory s;
     const std::string f = s.path("out.csv");
-    {
-        std::ofstream(f) << "old\n";
-    }
+    { std::ofstream(f) << "old\n"; }
     {
         OutputFile out(f);
         out.stream() << "half a result";
@@ -77,9 +74,7 @@ TEST(OutputFile, WithoutCommitTheOldFileStaysAndNothingIsLeft) {
 
 TEST(OutputFile, ALinkKeepsPointingWhereItDidAndItsTargetIsReplaced) {
     cagd::test::ScratchDirectory s;
-    {
-        std::ofstream(s.path("target.csv")) << "old\n";
-    }
+    { std::ofstream(s.path("target.csv")) << "old\n"; }
     fs::create_symlink("target.csv", s.path("link.csv"));
     OutputFile out(s.path("link.csv"));
     out.stream() << "new\n";
@@ -133,9 +128,7 @@ TEST(OutputDirectory, PublishesItsFilesTogetherAndReplacesPlantedLinks) {
     EXPECT_EQ(contents(target + "/a.csv"), "a.csv\n");
     EXPECT_EQ(contents(target + "/b.csv"), "b.csv\n");
     // A second run into the existing folder, which now holds a link to a file outside it.
-    {
-        std::ofstream(s.path("outside.txt")) << "secret\n";
-    }
+    { std::ofstream(s.path("outside.txt")) << "secret\n"; }
     fs::remove(target + "/a.csv");
     fs::create_symlink("../outside.txt", target + "/a.csv");
     {
@@ -195,8 +188,7 @@ TEST(CsvWriter, PublishesAtCloseOrScopeEndAndNothingWhenAnExceptionAbandonsIt) {
         CsvWriter w(f, {"x"});
         w.row({3.0});
         throw std::runtime_error("the experiment failed");
-    } catch (const std::runtime_error&) {
-    }
+    } catch (const std::runtime_error&) {}
     EXPECT_EQ(contents(f), "a,b\n1.5,2\n") << "an abandoned writer keeps the old file";
     EXPECT_EQ(temporaries_in(s.dir), 0) << "and leaves no temporary";
     CsvWriter w(f, {"x"});

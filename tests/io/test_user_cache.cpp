@@ -8,8 +8,8 @@
 #include <optional>
 #include <string>
 
-#include "cagd/io/user_cache.hpp"
 #include "cagd/fairness/pseudo_energy_table.hpp"
+#include "cagd/io/user_cache.hpp"
 
 using namespace cagd;
 namespace fs = std::filesystem;
@@ -100,11 +100,13 @@ TEST(UserCache, PseudoEnergyTableIsBuiltOnceThenLoadedEqualToTheBuild) {
     const fairness::PseudoEnergyTable built = fairness::PseudoEnergyTable::build(grid, fairness::TableMethod::fast);
     set_cache_build_notice(count_cache_build_notice);
     cache_build_notices = 0;
-    const fairness::PseudoEnergyTable first = fairness::PseudoEnergyTable::user_cached(grid, fairness::TableMethod::fast);
+    const fairness::PseudoEnergyTable first =
+        fairness::PseudoEnergyTable::user_cached(grid, fairness::TableMethod::fast);
     EXPECT_EQ(cache_build_notices, 1);
     EXPECT_EQ(cache_noticed_path.rfind(xdg + "/cagd/", 0), 0u) << cache_noticed_path;
     EXPECT_TRUE(fs::exists(cache_noticed_path));
-    const fairness::PseudoEnergyTable second = fairness::PseudoEnergyTable::user_cached(grid, fairness::TableMethod::fast);
+    const fairness::PseudoEnergyTable second =
+        fairness::PseudoEnergyTable::user_cached(grid, fairness::TableMethod::fast);
     EXPECT_EQ(cache_build_notices, 1) << "a warm cache is loaded, not built";
     for (const fairness::PseudoEnergyTable* t : {&first, &second})
         for (int i = 0; i < grid.n; ++i)
@@ -115,7 +117,8 @@ TEST(UserCache, PseudoEnergyTableIsBuiltOnceThenLoadedEqualToTheBuild) {
             }
     const CacheEnvironment off("CAGD_NO_CACHE", "1");
     fs::remove_all(xdg + "/cagd");
-    const fairness::PseudoEnergyTable third = fairness::PseudoEnergyTable::user_cached(grid, fairness::TableMethod::fast);
+    const fairness::PseudoEnergyTable third =
+        fairness::PseudoEnergyTable::user_cached(grid, fairness::TableMethod::fast);
     EXPECT_EQ(cache_build_notices, 1) << "with the cache off, no cached table is built";
     EXPECT_FALSE(fs::exists(xdg + "/cagd"));
     EXPECT_EQ(third.node(3, 5).pseudo_energy, built.node(3, 5).pseudo_energy);

@@ -63,7 +63,8 @@ TEST(Locality, InterpolatesEveryPointForEveryFormEndAndM) {
                     o.closed = closed;
                     const auto s = interpolate(p, o);
                     for (Eigen::Index i = 0; i < p.rows(); ++i)
-                        EXPECT_LT((s.curve.point(double(i)) - p.row(i).transpose()).norm(), 1e-13) << "r(" << i << ") = p_" << i << ", m = " << m;
+                        EXPECT_LT((s.curve.point(double(i)) - p.row(i).transpose()).norm(), 1e-13)
+                            << "r(" << i << ") = p_" << i << ", m = " << m;
                     if (closed) {
                         EXPECT_LT((s.curve.point(double(p.rows())) - p.row(0).transpose()).norm(), 1e-13);
                     }
@@ -95,9 +96,11 @@ TEST(Locality, MZeroIsMethodIAndLargeMIsTheCubicInterpolant) {
         b.rule = ExtraPointRule::method_I;
         EXPECT_LT(analysis::max_distance_same_parameter(interpolate(p, a).curve, interpolate(p, b).curve), 1e-15);
         a.m = {{60, 60}};
-        EXPECT_LT(analysis::max_distance_same_parameter(interpolate(p, a).curve, cubic_bspline_interpolant(p, false)), 1e-13);
+        EXPECT_LT(analysis::max_distance_same_parameter(interpolate(p, a).curve, cubic_bspline_interpolant(p, false)),
+                  1e-13);
         a.closed = true;
-        EXPECT_LT(analysis::max_distance_same_parameter(interpolate(p, a).curve, cubic_bspline_interpolant(p, true)), 1e-13);
+        EXPECT_LT(analysis::max_distance_same_parameter(interpolate(p, a).curve, cubic_bspline_interpolant(p, true)),
+                  1e-13);
     }
 }
 
@@ -167,7 +170,8 @@ TEST(Locality, StraightLinesAndAffineMapsAreReproduced) {
         o.form = f;
         o.m = {{2, 2}};
         const auto cp = interpolate(p, o).curve, cq = interpolate(q, o).curve;
-        for (double u = 0; u <= 6; u += 0.1) EXPECT_LT((A * cp.point(u) + shift.transpose() - cq.point(u)).norm(), 1e-12);
+        for (double u = 0; u <= 6; u += 0.1)
+            EXPECT_LT((A * cp.point(u) + shift.transpose() - cq.point(u)).norm(), 1e-12);
     }
 }
 
@@ -273,10 +277,14 @@ TEST(Locality, ExtraPointsAreEq12SumsOfTheExtendedPoints) {
                         ASSERT_EQ(s.extra_points.rows(), N + 1);
                         for (long i = -1; i <= N - 1; ++i) {
                             Eigen::RowVectorXd d = Eigen::RowVectorXd::Zero(dim);
-                            for (Eigen::Index j = 0; j < w.left.size(); ++j) d += w.left(j) * extended_point(p, o, i - j);
-                            for (Eigen::Index j = 0; j < w.right.size(); ++j) d += w.right(j) * extended_point(p, o, i + 1 + j);
+                            for (Eigen::Index j = 0; j < w.left.size(); ++j)
+                                d += w.left(j) * extended_point(p, o, i - j);
+                            for (Eigen::Index j = 0; j < w.right.size(); ++j)
+                                d += w.right(j) * extended_point(p, o, i + 1 + j);
                             for (Eigen::Index c = 0; c < dim; ++c)
-                                ASSERT_EQ(s.extra_points(i + 1, c), d(c)) << "segment " << i << ", m = " << m << (closed ? ", closed" : ", open") << ", dim " << dim;
+                                ASSERT_EQ(s.extra_points(i + 1, c), d(c))
+                                    << "segment " << i << ", m = " << m << (closed ? ", closed" : ", open") << ", dim "
+                                    << dim;
                         }
                     }
 }

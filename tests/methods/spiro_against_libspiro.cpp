@@ -50,11 +50,24 @@ std::vector<SpiroCase> cases() {
     out.push_back({"open S with a loop", rows({{0, 0}, {2, 1}, {3, 3}, {2, 5}, {4, 6}}), false});
     out.push_back({"three points", rows({{0, 0}, {1, 1}, {2, 0}}), false});
     PointList ellipse(9, 2);
-    for (int i = 0; i < 9; ++i) ellipse(i, 0) = 3 * std::cos(2 * std::numbers::pi * i / 9), ellipse(i, 1) = 1.5 * std::sin(2 * std::numbers::pi * i / 9);
+    for (int i = 0; i < 9; ++i)
+        ellipse(i, 0) = 3 * std::cos(2 * std::numbers::pi * i / 9),
+                   ellipse(i, 1) = 1.5 * std::sin(2 * std::numbers::pi * i / 9);
     out.push_back({"closed ellipse", ellipse, true});
     out.push_back({"closed blob", rows({{0, 0}, {4, -1}, {7, 1}, {6, 5}, {2, 6}, {-1, 3}}), true});
     // libspiro's own test shape (its tests' "path0" letter outline, open).
-    out.push_back({"open hook", rows({{334, 117}, {305, 176}, {212, 142}, {159, 171}, {224, 237}, {347, 335}, {202, 467}, {81, 429}, {114, 368}, {201, 402}}), false});
+    out.push_back({"open hook",
+                   rows({{334, 117},
+                         {305, 176},
+                         {212, 142},
+                         {159, 171},
+                         {224, 237},
+                         {347, 335},
+                         {202, 467},
+                         {81, 429},
+                         {114, 368},
+                         {201, 402}}),
+                   false});
     return out;
 }
 
@@ -99,21 +112,27 @@ TEST(SpiroAgainstLibspiro, CurvatureCoefficientsAgreeSegmentBySegment) {
         const intrinsic::TangentAngleSpline& psi = curve->tangent_angle();
         ASSERT_EQ(static_cast<std::size_t>(psi.segments()), theirs.size()) << c.name;
         for (int j = 0; j < psi.segments(); ++j) {
-            const double l = psi.segment_lengths()[static_cast<std::size_t>(j)], mid = psi.breakpoints()[static_cast<std::size_t>(j)] + 0.5 * l;
+            const double l = psi.segment_lengths()[static_cast<std::size_t>(j)],
+                         mid = psi.breakpoints()[static_cast<std::size_t>(j)] + 0.5 * l;
             const Eigen::VectorXd jet = psi.jet_in_segment(j, mid, 4);
             for (int d = 0; d < 4; ++d) {
                 const double ours = std::pow(l, d + 1) * jet(d + 1);
                 const double raw = std::abs(ours - theirs[static_cast<std::size_t>(j)][static_cast<std::size_t>(d)]);
-                const double after = std::abs(ours - polished[static_cast<std::size_t>(j)][static_cast<std::size_t>(d)]);
+                const double after =
+                    std::abs(ours - polished[static_cast<std::size_t>(j)][static_cast<std::size_t>(d)]);
                 worst_raw = std::max(worst_raw, raw);
                 worst_polished = std::max(worst_polished, after);
-                EXPECT_LE(raw, 1e-6) << c.name << ", segment " << j << ", ks[" << d << "]: ours " << ours << ", libspiro " << theirs[static_cast<std::size_t>(j)][static_cast<std::size_t>(d)];
-                EXPECT_LE(after, 1e-9) << c.name << ", segment " << j << ", ks[" << d << "] after one Newton step from libspiro's: ours " << ours << ", libspiro's "
+                EXPECT_LE(raw, 1e-6) << c.name << ", segment " << j << ", ks[" << d << "]: ours " << ours
+                                     << ", libspiro "
+                                     << theirs[static_cast<std::size_t>(j)][static_cast<std::size_t>(d)];
+                EXPECT_LE(after, 1e-9) << c.name << ", segment " << j << ", ks[" << d
+                                       << "] after one Newton step from libspiro's: ours " << ours << ", libspiro's "
                                        << polished[static_cast<std::size_t>(j)][static_cast<std::size_t>(d)];
             }
         }
     }
-    std::printf("largest |ks difference| against libspiro: %.3g as it returns them, %.3g after one Newton step\n", worst_raw, worst_polished);
+    std::printf("largest |ks difference| against libspiro: %.3g as it returns them, %.3g after one Newton step\n",
+                worst_raw, worst_polished);
 }
 
 // libspiro's own solution satisfies our chordwise equations (intrinsic::spiro_chordwise_system),
@@ -180,7 +199,8 @@ TEST(SpiroAgainstLibspiro, SeededPolygons) {
         const bool closed = trial % 2 == 1;
         PointList p(n, 2);
         for (int i = 0; i < n; ++i) {
-            const double a = (closed ? 2 * std::numbers::pi : 1.5 * std::numbers::pi) * (i + 0.5 * jitter(rng)) / n, r = 1.0 + jitter(rng);
+            const double a = (closed ? 2 * std::numbers::pi : 1.5 * std::numbers::pi) * (i + 0.5 * jitter(rng)) / n,
+                         r = 1.0 + jitter(rng);
             p(i, 0) = r * std::cos(a), p(i, 1) = r * std::sin(a);
         }
         const SpiroCase c{"seeded", p, closed};
@@ -211,15 +231,19 @@ TEST(SpiroAgainstLibspiro, SeededPolygons) {
         const auto& psi = dynamic_cast<const intrinsic::IntrinsicCurve&>(*r.interpolant->curve).tangent_angle();
         for (int j = 0; j < psi.segments(); ++j) {
             const double l = psi.segment_lengths()[static_cast<std::size_t>(j)];
-            const Eigen::VectorXd jet = psi.jet_in_segment(j, psi.breakpoints()[static_cast<std::size_t>(j)] + 0.5 * l, 4);
+            const Eigen::VectorXd jet =
+                psi.jet_in_segment(j, psi.breakpoints()[static_cast<std::size_t>(j)] + 0.5 * l, 4);
             for (int d = 0; d < 4; ++d) {
-                const double diff = std::abs(std::pow(l, d + 1) * jet(d + 1) - theirs[static_cast<std::size_t>(j)][static_cast<std::size_t>(d)]);
+                const double diff = std::abs(std::pow(l, d + 1) * jet(d + 1) -
+                                             theirs[static_cast<std::size_t>(j)][static_cast<std::size_t>(d)]);
                 worst = std::max(worst, diff);
                 EXPECT_LE(diff, 1e-9) << "trial " << trial << ", segment " << j << ", ks[" << d << "]";
             }
         }
     }
-    std::printf("200 seeded polygons: both solve %d, only the method %d, only libspiro %d, neither %d; largest |ks difference| %.3g\n", both, only_ours, only_theirs,
-                neither, worst);
+    std::printf(
+        "200 seeded polygons: both solve %d, only the method %d, only libspiro %d, neither %d; largest |ks difference| "
+        "%.3g\n",
+        both, only_ours, only_theirs, neither, worst);
     EXPECT_GE(both + only_ours, 180);
 }

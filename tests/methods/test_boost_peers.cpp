@@ -34,10 +34,13 @@ void expect_boost_curve_bit_for_bit(const std::string& what, const PointList& p,
     for (Eigen::Index col = 0; col < p.cols(); ++col) {
         std::vector<double> x = tau, y(p.col(col).data(), p.col(col).data() + p.rows());
         const Interpolator f(std::move(x), std::move(y));
-        for (Eigen::Index k = 0; k + 1 < p.rows(); ++k) {  // span k's end derivatives (d/du) = h_k · Boost's slopes at its ends
+        for (Eigen::Index k = 0; k + 1 < p.rows();
+             ++k) {  // span k's end derivatives (d/du) = h_k · Boost's slopes at its ends
             const double h = (p.row(k + 1) - p.row(k)).norm();
-            ASSERT_EQ(c->start_derivatives()(k, col), h * f.prime(tau[static_cast<std::size_t>(k)])) << what << " node " << k << " coordinate " << col;
-            ASSERT_EQ(c->end_derivatives()(k, col), h * f.prime(tau[static_cast<std::size_t>(k) + 1])) << what << " node " << k + 1 << " coordinate " << col;
+            ASSERT_EQ(c->start_derivatives()(k, col), h * f.prime(tau[static_cast<std::size_t>(k)]))
+                << what << " node " << k << " coordinate " << col;
+            ASSERT_EQ(c->end_derivatives()(k, col), h * f.prime(tau[static_cast<std::size_t>(k) + 1]))
+                << what << " node " << k + 1 << " coordinate " << col;
         }
     }
 }
@@ -46,7 +49,8 @@ void expect_boost_curve_bit_for_bit(const std::string& what, const PointList& p,
 // span k's derivatives d/du at its ends are h_k times Boost's prime at its nodes, h_k its length
 // in Boost's parameter.
 template <std::size_t D>
-void expect_boost_catmull_rom_bit_for_bit(const std::string& what, const PointList& p, bool closed, const methods::Interpolant& curve) {
+void expect_boost_catmull_rom_bit_for_bit(const std::string& what, const PointList& p, bool closed,
+                                          const methods::Interpolant& curve) {
     const auto* c = dynamic_cast<const spline::PiecewiseHermiteCurve*>(curve.curve.get());
     ASSERT_NE(c, nullptr);
     std::vector<std::array<double, D>> pts(static_cast<std::size_t>(p.rows()));
@@ -56,11 +60,15 @@ void expect_boost_catmull_rom_bit_for_bit(const std::string& what, const PointLi
     const Eigen::Index n = p.rows(), spans = closed ? n : n - 1;
     ASSERT_EQ(c->start_derivatives().rows(), spans) << what;
     for (Eigen::Index k = 0; k < spans; ++k) {
-        const double t0 = cr.parameter_at_point(static_cast<std::size_t>(k)), t1 = cr.parameter_at_point(static_cast<std::size_t>(k + 1)), h = t1 - t0;
-        const auto s0 = cr.prime(t0), s1 = cr.prime(cr.parameter_at_point(static_cast<std::size_t>((k + 1) % n)));  // closed: node 0's slope again
+        const double t0 = cr.parameter_at_point(static_cast<std::size_t>(k)),
+                     t1 = cr.parameter_at_point(static_cast<std::size_t>(k + 1)), h = t1 - t0;
+        const auto s0 = cr.prime(t0), s1 = cr.prime(cr.parameter_at_point(
+                                          static_cast<std::size_t>((k + 1) % n)));  // closed: node 0's slope again
         for (std::size_t j = 0; j < D; ++j) {
-            ASSERT_EQ(c->start_derivatives()(k, static_cast<Eigen::Index>(j)), h * s0[j]) << what << " node " << k << " coordinate " << j;
-            ASSERT_EQ(c->end_derivatives()(k, static_cast<Eigen::Index>(j)), h * s1[j]) << what << " node " << (k + 1) % n << " coordinate " << j;
+            ASSERT_EQ(c->start_derivatives()(k, static_cast<Eigen::Index>(j)), h * s0[j])
+                << what << " node " << k << " coordinate " << j;
+            ASSERT_EQ(c->end_derivatives()(k, static_cast<Eigen::Index>(j)), h * s1[j])
+                << what << " node " << (k + 1) % n << " coordinate " << j;
         }
     }
 }
@@ -69,10 +77,13 @@ void expect_boost_catmull_rom_bit_for_bit(const std::string& what, const PointLi
 std::vector<std::pair<std::string, PointList>> data_sets() {
     std::vector<std::pair<std::string, PointList>> sets;
     sets.emplace_back("random walk of 1500", random_walk(1500, 5, 0.1, 2.0, 1.0));
-    for (long n : {4L, 5L, 7L, 63L, 256L, 257L, 320L, 1100L}) sets.emplace_back("random walk of " + std::to_string(n), random_walk(n, 9, 0.1, 2.0, 1.0));
+    for (long n : {4L, 5L, 7L, 63L, 256L, 257L, 320L, 1100L})
+        sets.emplace_back("random walk of " + std::to_string(n), random_walk(n, 9, 0.1, 2.0, 1.0));
     {  // staircase: runs of equal y (zero secants) and, with the zigzag in x, secants changing sign
         PointList p(600, 2);
-        for (Eigen::Index k = 0; k < p.rows(); ++k) p.row(k) << (k % 2 == 0 ? 1.0 : -1.0) * 0.3 + static_cast<double>(k), std::floor(static_cast<double>(k) / 3.0);
+        for (Eigen::Index k = 0; k < p.rows(); ++k)
+            p.row(k) << (k % 2 == 0 ? 1.0 : -1.0) * 0.3 + static_cast<double>(k),
+                std::floor(static_cast<double>(k) / 3.0);
         sets.emplace_back("staircase", p);
     }
     {  // 3-D, its z constant (makima's 0/0 weights) or a zigzag
@@ -93,7 +104,8 @@ TEST(BoostPeers, PchipSlopesAreBoostsOverAllPointsBitForBit) {
     for (const auto& [what, p] : data_sets()) {
         const methods::InterpolationResult r = methods::interpolate("boost-pchip", p, false);
         ASSERT_TRUE(r.outcome.ok()) << what << ": " << r.outcome.message;
-        expect_boost_curve_bit_for_bit<boost::math::interpolators::pchip<std::vector<double>>>("boost-pchip, " + what, p, *r.interpolant);
+        expect_boost_curve_bit_for_bit<boost::math::interpolators::pchip<std::vector<double>>>("boost-pchip, " + what,
+                                                                                               p, *r.interpolant);
     }
 }
 
@@ -101,7 +113,8 @@ TEST(BoostPeers, MakimaSlopesAreBoostsOverAllPointsBitForBit) {
     for (const auto& [what, p] : data_sets()) {
         const methods::InterpolationResult r = methods::interpolate("boost-makima", p, false);
         ASSERT_TRUE(r.outcome.ok()) << what << ": " << r.outcome.message;
-        expect_boost_curve_bit_for_bit<boost::math::interpolators::makima<std::vector<double>>>("boost-makima, " + what, p, *r.interpolant);
+        expect_boost_curve_bit_for_bit<boost::math::interpolators::makima<std::vector<double>>>("boost-makima, " + what,
+                                                                                                p, *r.interpolant);
     }
 }
 

@@ -5,9 +5,9 @@
 
 #include <cmath>
 
+#include "../support/messages.hpp"
 #include "cagd/methods/method_registry.hpp"
 #include "cagd/spline/bspline.hpp"
-#include "../support/messages.hpp"
 
 using namespace cagd;
 using namespace cagd::methods;
@@ -15,7 +15,8 @@ using namespace cagd::methods;
 namespace {
 PointList spiral_points(int n) {
     PointList p(n, 3);
-    for (int i = 0; i < n; ++i) p.row(i) << (1.0 + 0.05 * i) * std::cos(0.9 * i), (1.0 + 0.05 * i) * std::sin(0.9 * i), 0.1 * i * (i % 3);
+    for (int i = 0; i < n; ++i)
+        p.row(i) << (1.0 + 0.05 * i) * std::cos(0.9 * i), (1.0 + 0.05 * i) * std::sin(0.9 * i), 0.1 * i * (i % 3);
     return p;
 }
 }  // namespace
@@ -41,7 +42,8 @@ TEST(EigenPeer, KnotsAreAveragedChordLengthsAndThePointsLieOnTheCurve) {
             for (int i = 0; i < degree; ++i) mean += u[j + static_cast<std::size_t>(i)] / degree;
             EXPECT_NEAR(k[j + static_cast<std::size_t>(degree)], mean, 1e-15);
         }
-        for (Eigen::Index i = 0; i < p.rows(); ++i) EXPECT_LE((b->point(u[static_cast<std::size_t>(i)]) - p.row(i).transpose()).norm(), 1e-12);
+        for (Eigen::Index i = 0; i < p.rows(); ++i)
+            EXPECT_LE((b->point(u[static_cast<std::size_t>(i)]) - p.row(i).transpose()).norm(), 1e-12);
     }
 }
 

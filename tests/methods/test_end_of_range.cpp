@@ -49,7 +49,8 @@ constexpr double kEndPositionTolerance = 1e-8;
 // The largest turn per step of the iterative methods' walks (see the file comment).
 constexpr double kIterativeMaxTurn = 1.2;
 
-void expect_ends_interpolate(const cagd::methods::Configuration& c, const PointList& p, bool closed, const std::string& what) {
+void expect_ends_interpolate(const cagd::methods::Configuration& c, const PointList& p, bool closed,
+                             const std::string& what) {
     SCOPED_TRACE(c.name + (closed ? " closed, " : " open, ") + what + ", n = " + std::to_string(p.rows()));
     cagd::methods::InterpolationResult r;
     ASSERT_NO_THROW(r = cagd::methods::interpolate(c, p, closed));
@@ -68,9 +69,11 @@ void expect_ends_interpolate(const cagd::methods::Configuration& c, const PointL
     std::optional<cagd::methods::MethodParameterCurve> wrapped;
     ASSERT_NO_THROW(wrapped.emplace(*r.interpolant));
     const cagd::methods::MethodParameterCurve& in_tau = *wrapped;
-    for (const cagd::Curve* curve : {static_cast<const cagd::Curve*>(r.interpolant->curve.get()), static_cast<const cagd::Curve*>(&in_tau)}) {
+    for (const cagd::Curve* curve :
+         {static_cast<const cagd::Curve*>(r.interpolant->curve.get()), static_cast<const cagd::Curve*>(&in_tau)}) {
         const Eigen::RowVectorXd last = closed ? p.row(0) : p.row(p.rows() - 1);
-        for (const auto& [t, point] : {std::pair{curve->t_min(), Eigen::RowVectorXd(p.row(0))}, std::pair{curve->t_max(), last}}) {
+        for (const auto& [t, point] :
+             {std::pair{curve->t_min(), Eigen::RowVectorXd(p.row(0))}, std::pair{curve->t_max(), last}}) {
             const std::string at = (curve == &in_tau ? "tau = " : "u = ") + cagd::full_precision(t);
             Eigen::MatrixXd jet;
             ASSERT_NO_THROW(jet = curve->jet(t, 2)) << at;
@@ -87,9 +90,12 @@ void check_every_configuration_at(long n) {
         const double turn = iterative ? kIterativeMaxTurn : std::numbers::pi;
         for (bool closed : {false, true}) {
             if (closed && !c.claims.supports_closed) continue;
-            for (unsigned seed : {1u, 2u}) expect_ends_interpolate(c, end_of_range_walk(count, seed, 0.0, turn), closed, "unit steps, seed " + std::to_string(seed));
+            for (unsigned seed : {1u, 2u})
+                expect_ends_interpolate(c, end_of_range_walk(count, seed, 0.0, turn), closed,
+                                        "unit steps, seed " + std::to_string(seed));
             // Chords 10^6-fold: at 10^5 points the iterative methods end in no_convergence (seconds each).
-            if (!(iterative && n >= 100000)) expect_ends_interpolate(c, end_of_range_walk(count, 3u, 3.0, turn), closed, "chords 1e-3..1e3");
+            if (!(iterative && n >= 100000))
+                expect_ends_interpolate(c, end_of_range_walk(count, 3u, 3.0, turn), closed, "chords 1e-3..1e3");
         }
     }
 }

@@ -18,8 +18,8 @@ namespace {
 
 using cagd::InvalidInput;
 using cagd::PointList;
-using cagd::methods::configurations;
 using cagd::methods::Configuration;
+using cagd::methods::configurations;
 using cagd::methods::Interpolant;
 using cagd::methods::InterpolationResult;
 using cagd::methods::MethodParameterCurve;
@@ -42,7 +42,8 @@ TEST(MethodParameterCurve, EveryMethodIsEvaluatedInTheParameterItStates) {
         for (bool closed : {false, true}) {
             if (closed && !c.claims.supports_closed) continue;
             const InterpolationResult r = cagd::methods::interpolate(c, p, closed);
-            if (!c.claims.always_solves && !r.outcome.ok()) {  // closed Spiro through these points does not exist (libspiro agrees)
+            if (!c.claims.always_solves &&
+                !r.outcome.ok()) {  // closed Spiro through these points does not exist (libspiro agrees)
                 EXPECT_EQ(r.outcome.status, cagd::Status::no_convergence) << c.name;
                 continue;
             }
@@ -53,14 +54,19 @@ TEST(MethodParameterCurve, EveryMethodIsEvaluatedInTheParameterItStates) {
             const Eigen::Index n = p.rows();
             ASSERT_EQ(tau.size(), in.node_parameters.size()) << c.name;
             for (std::size_t k = 0; k + 1 < tau.size(); ++k) {
-                const double chord = (p.row(static_cast<Eigen::Index>(k + 1) % n) - p.row(static_cast<Eigen::Index>(k))).norm();
-                const double arc = analysis::arc_length(*in.curve, in.node_parameters[k], in.node_parameters[k + 1], 64);
+                const double chord =
+                    (p.row(static_cast<Eigen::Index>(k + 1) % n) - p.row(static_cast<Eigen::Index>(k))).norm();
+                const double arc =
+                    analysis::arc_length(*in.curve, in.node_parameters[k], in.node_parameters[k + 1], 64);
                 EXPECT_NEAR(tau[k + 1] - tau[k], expected_span(c.claims.parameter, chord, arc), 1e-9 * (1 + chord))
-                    << c.name << (closed ? " closed" : " open") << ", span " << k << ": the τ-length under '" << c.claims.parameter << "'";
+                    << c.name << (closed ? " closed" : " open") << ", span " << k << ": the τ-length under '"
+                    << c.claims.parameter << "'";
                 // Positions are the curve's; d/dτ is the central difference in τ.
                 const double t = tau[k] + 0.37 * (tau[k + 1] - tau[k]), h = 1e-6 * (tau[k + 1] - tau[k]);
                 const Eigen::MatrixXd j = m.jet(t, 2);
-                EXPECT_LT((j.row(0) - in.curve->jet(m.span_parameter(t), 0).row(0)).norm(), 1e-13 * (1 + j.row(0).norm())) << c.name;
+                EXPECT_LT((j.row(0) - in.curve->jet(m.span_parameter(t), 0).row(0)).norm(),
+                          1e-13 * (1 + j.row(0).norm()))
+                    << c.name;
                 const Eigen::RowVectorXd fd = (m.jet(t + h, 0).row(0) - m.jet(t - h, 0).row(0)) / (2 * h);
                 EXPECT_LT((j.row(1) - fd).norm(), 1e-6 * (1 + j.row(1).norm())) << c.name << ": r' is d/dτ";
                 const Eigen::RowVectorXd fd2 = (m.jet(t + h, 1).row(1) - m.jet(t - h, 1).row(1)) / (2 * h);
@@ -70,7 +76,8 @@ TEST(MethodParameterCurve, EveryMethodIsEvaluatedInTheParameterItStates) {
             const int k_claimed = c.claims.parametric_continuity;
             for (std::size_t k = 1; k_claimed > 0 && k + 1 < tau.size(); ++k) {
                 const Eigen::MatrixXd left = m.jet_from_left(tau[k], k_claimed), right = m.jet(tau[k], k_claimed);
-                EXPECT_LT((left - right).norm(), 1e-8 * (1 + right.norm())) << c.name << ": C^" << k_claimed << " in τ at node " << k;
+                EXPECT_LT((left - right).norm(), 1e-8 * (1 + right.norm()))
+                    << c.name << ": C^" << k_claimed << " in τ at node " << k;
             }
             ++checked;
         }

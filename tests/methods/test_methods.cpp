@@ -38,7 +38,8 @@ TEST(Methods, NamesAreUniqueAndFound) {
         EXPECT_TRUE(seen.insert(n).second) << "name given twice: " << n;
         EXPECT_EQ(&find_method(n), &find_method(find_method(n).name)) << n;
     }
-    for (const Configuration& c : configurations()) EXPECT_TRUE(seen.insert(c.name).second || find_method(c.name).presets.empty()) << c.name;
+    for (const Configuration& c : configurations())
+        EXPECT_TRUE(seen.insert(c.name).second || find_method(c.name).presets.empty()) << c.name;
     const std::string m = invalid_input_message([] { find_method("cubic"); });
     EXPECT_NE(m.find("unknown method 'cubic'"), std::string::npos) << m;
     EXPECT_NE(m.find("curvature-profile"), std::string::npos) << "the message lists the known names: " << m;
@@ -54,9 +55,12 @@ TEST(Methods, EveryRegisteredMethodReachesEveryFront) {
     const std::vector<std::string> choices = method_names();
     const std::string listing = registry_listing(), table = registry_markdown();
     for (const Method& m : registry()) {
-        EXPECT_NE(std::find(choices.begin(), choices.end(), m.name), choices.end()) << m.name << " is not a --method choice";
-        EXPECT_NE(("\n" + listing).find("\n" + m.name + " "), std::string::npos) << m.name << " is not in --list-methods";
-        EXPECT_NE(table.find("| `" + m.name + "`"), std::string::npos) << m.name << " is not in docs/methods.md's table";
+        EXPECT_NE(std::find(choices.begin(), choices.end(), m.name), choices.end())
+            << m.name << " is not a --method choice";
+        EXPECT_NE(("\n" + listing).find("\n" + m.name + " "), std::string::npos)
+            << m.name << " is not in --list-methods";
+        EXPECT_NE(table.find("| `" + m.name + "`"), std::string::npos)
+            << m.name << " is not in docs/methods.md's table";
         int found = 0;
         for (const Configuration& c : configurations()) found += c.method == &m;
         EXPECT_GE(found, 1) << m.name << " is not compared";
@@ -93,7 +97,9 @@ TEST(Methods, EveryMethodInterpolatesWithItsDefaults) {
         const Interpolant& a = *r.interpolant;
         ASSERT_EQ(a.node_parameters.size(), 6u) << m.name;
         for (Eigen::Index i = 0; i < p.rows(); ++i)
-            EXPECT_LE((a.curve->point(a.node_parameters[static_cast<std::size_t>(i)]) - p.row(i).transpose()).norm(), 1e-9) << m.name << " point " << i;
+            EXPECT_LE((a.curve->point(a.node_parameters[static_cast<std::size_t>(i)]) - p.row(i).transpose()).norm(),
+                      1e-9)
+                << m.name << " point " << i;
     }
 }
 
@@ -131,11 +137,13 @@ TEST(Methods, AllocationFreeJetsEqualTheAllocatingOnes) {
             }
             for (int order = 1; order <= kJetCapacity; ++order) {
                 c.derivatives_into(t, order, J);
-                EXPECT_TRUE((J.array() == c.derivatives(t, order).array()).all()) << which << " derivatives, t = " << t << ", order " << order;
+                EXPECT_TRUE((J.array() == c.derivatives(t, order).array()).all())
+                    << which << " derivatives, t = " << t << ", order " << order;
                 if (order < kJetCapacity) {
                     JetMatrix full;
                     c.jet_into(t, order, full);
-                    EXPECT_TRUE((J.array() == full.bottomRows(order).array()).all()) << which << " derivatives against the jet, t = " << t << ", order " << order;
+                    EXPECT_TRUE((J.array() == full.bottomRows(order).array()).all())
+                        << which << " derivatives against the jet, t = " << t << ", order " << order;
                 }
             }
         }
@@ -164,8 +172,10 @@ TEST(Methods, BatchJetsEqualTheJetsOneByOne) {
                 c.jet_into(t[k], order, J);
                 for (int row = 0; row <= order; ++row)
                     for (int col = 0; col < dim; ++col)
-                        ASSERT_EQ(bits_of(batch[k * stride + static_cast<std::size_t>(row * dim + col)]), bits_of(J(row, col)))
-                            << which << ", t = " << t[k] << ", order " << order << ", row " << row << ", column " << col;
+                        ASSERT_EQ(bits_of(batch[k * stride + static_cast<std::size_t>(row * dim + col)]),
+                                  bits_of(J(row, col)))
+                            << which << ", t = " << t[k] << ", order " << order << ", row " << row << ", column "
+                            << col;
             }
         }
         std::vector<double> out(64);
@@ -177,13 +187,15 @@ TEST(Methods, BatchJetsEqualTheJetsOneByOne) {
 
 TEST(Methods, MethodsPageIsTheRegistry) {
     const auto names = method_names();
-    if (std::find(names.begin(), names.end(), "occt-interpolate") == names.end()) GTEST_SKIP() << "a library without OpenCASCADE: docs/methods.md lists its peer too";
+    if (std::find(names.begin(), names.end(), "occt-interpolate") == names.end())
+        GTEST_SKIP() << "a library without OpenCASCADE: docs/methods.md lists its peer too";
     std::ifstream in(std::string(CAGD_SOURCE_DIR) + "/docs/methods.md");
     std::stringstream ss;
     ss << in.rdbuf();
     const std::string page = ss.str(), table = registry_markdown();
     EXPECT_NE(page.find("<!-- methods:begin -->\n" + table + "<!-- methods:end -->"), std::string::npos)
-        << "docs/methods.md's method table differs from the registry: run scripts/update-docs-methods.sh (make reproduce does)";
+        << "docs/methods.md's method table differs from the registry: run scripts/update-docs-methods.sh (make "
+           "reproduce does)";
     for (const Method& m : registry()) EXPECT_NE(table.find("`" + m.name + "`"), std::string::npos) << m.name;
 }
 
@@ -212,7 +224,9 @@ TEST(Methods, ParametersAreCheckedAgainstTheirDeclarations) {
     bad({{"start-tangent", "1,x"}}, "'x' is not a number");
     bad({{"scale", "unit"}}, "--scale is not a parameter of s-spline");
     const Method& boost = find_method("boost-pchip");
-    const std::string none = invalid_input_message([&] { parse_parameter_values(boost.name, boost.parameters, {{"m", "1"}}); });
+    const std::string none = invalid_input_message([&] {
+        parse_parameter_values(boost.name, boost.parameters, {{"m", "1"}});
+    });
     EXPECT_NE(none.find("it has none"), std::string::npos) << none;
 }
 
@@ -220,7 +234,9 @@ TEST(Methods, BuildersCheckCombinationsOfParameters) {
     const PointList p = wave(5);
     std::string m = invalid_input_message([&] { interpolate("s-spline", p, false, {{"end", "tangent"}}); });
     EXPECT_NE(m.find("--end tangent needs --start-tangent and --end-tangent"), std::string::npos) << m;
-    m = invalid_input_message([&] { interpolate("hosaka", p, false, {{"start-tangent", "1,0"}, {"end-tangent", "1,0"}}); });
+    m = invalid_input_message([&] {
+        interpolate("hosaka", p, false, {{"start-tangent", "1,0"}, {"end-tangent", "1,0"}});
+    });
     EXPECT_NE(m.find("--start-tangent applies with --end tangent only"), std::string::npos) << m;
     m = invalid_input_message([&] { interpolate("s-spline", p, false, {{"m", "1"}, {"m-vector", "1,1,1,1"}}); });
     EXPECT_NE(m.find("give --m or --m-vector, not both"), std::string::npos) << m;
@@ -229,7 +245,8 @@ TEST(Methods, BuildersCheckCombinationsOfParameters) {
     m = invalid_input_message([&] { interpolate("hosaka", p, false, {{"m", "31"}}); });
     EXPECT_NE(m.find("--m '31': out of range; allowed: integer in [1, 30]"), std::string::npos) << m;
     // A preset's values can be overridden by name.
-    const InterpolationResult r1 = interpolate("s-spline-m1", p, false), r4 = interpolate("s-spline-m1", p, false, {{"m", "4"}});
+    const InterpolationResult r1 = interpolate("s-spline-m1", p, false),
+                              r4 = interpolate("s-spline-m1", p, false, {{"m", "4"}});
     const InterpolationResult s4 = interpolate("s-spline", p, false, {{"m", "4"}});
     EXPECT_GT(analysis::max_distance_same_parameter(*r1.interpolant->curve, *r4.interpolant->curve), 1e-6);
     EXPECT_EQ(analysis::max_distance_same_parameter(*s4.interpolant->curve, *r4.interpolant->curve), 0.0);
@@ -237,7 +254,8 @@ TEST(Methods, BuildersCheckCombinationsOfParameters) {
 
 TEST(Methods, ClaimsFollowTheParameters) {
     const Method& h = find_method("hosaka");
-    EXPECT_EQ(h.claims(parse_parameter_values(h.name, h.parameters, {{"scale", "unit"}})).invariance, Invariance::affine);
+    EXPECT_EQ(h.claims(parse_parameter_values(h.name, h.parameters, {{"scale", "unit"}})).invariance,
+              Invariance::affine);
     EXPECT_EQ(h.claims(parse_parameter_values(h.name, h.parameters, {})).parameter, "chord length");
     // Open-only methods refuse closed curves, naming the method.
     const std::string m = invalid_input_message([] { interpolate("boost-pchip", wave(6), true); });
@@ -251,7 +269,8 @@ TEST(Methods, CubicBsplineAliasIsCubicA) {
         const PointList p = wave(7);
         const InterpolationResult a = interpolate("cubic-bspline", p, closed);
         const BSplineCurve b = locality::cubic_bspline_interpolant(p, closed);
-        EXPECT_LE(analysis::max_distance_same_parameter(*a.interpolant->curve, b), 1e-13) << (closed ? "closed" : "open");
+        EXPECT_LE(analysis::max_distance_same_parameter(*a.interpolant->curve, b), 1e-13)
+            << (closed ? "closed" : "open");
     }
 }
 
@@ -293,7 +312,8 @@ double largest_gap_at_same_fractions(const InterpolationResult& a, const Interpo
 // (sparse-LU steps) and for 12 (Moore–Penrose), open and closed; methods without a rebuild build anew.
 TEST(Methods, CurvatureProfileRebuildsFromAnEarlierSolution) {
     const auto iterations = [](const InterpolationResult& r) {
-        return std::count_if(r.report.begin(), r.report.end(), [](const auto& q) { return q.first.ends_with("_residual"); });
+        return std::count_if(r.report.begin(), r.report.end(),
+                             [](const auto& q) { return q.first.ends_with("_residual"); });
     };
     const Configuration cp = find_configuration("curvature-profile");
     for (const long n : {12L, 300L})
@@ -310,10 +330,12 @@ TEST(Methods, CurvatureProfileRebuildsFromAnEarlierSolution) {
             ASSERT_GT(first.solver_state.size(), 0) << "the final iterate is kept";
             PointList moved = p;
             moved(n / 2, 1) += 1e-3;
-            const InterpolationResult cold = interpolate(cp, moved, closed), warm = interpolate_from(cp, moved, closed, first.solver_state);
+            const InterpolationResult cold = interpolate(cp, moved, closed),
+                                      warm = interpolate_from(cp, moved, closed, first.solver_state);
             ASSERT_TRUE(cold.outcome.ok() && warm.outcome.ok()) << cold.outcome.message << warm.outcome.message;
             EXPECT_LT(iterations(warm), iterations(cold)) << n << (closed ? " closed" : " open");
-            EXPECT_LT(largest_gap_at_same_fractions(cold, warm), 1e-9) << "the warm solution is the cold one: " << n << (closed ? " closed" : " open");
+            EXPECT_LT(largest_gap_at_same_fractions(cold, warm), 1e-9)
+                << "the warm solution is the cold one: " << n << (closed ? " closed" : " open");
             // Without a rebuild (cubic-b) the state is empty and interpolate_from builds anew.
             const InterpolationResult direct = interpolate(find_configuration("cubic-b"), p, closed);
             EXPECT_EQ(direct.solver_state.size(), 0);
@@ -334,7 +356,8 @@ TEST(Methods, SpiroRebuildsOpenCurvesFromAnEarlierSolution) {
         for (Eigen::Index i = 0; i < p.rows(); ++i) {
             const double a = 2.0 * 3.141592653589793 * static_cast<double>(i) / static_cast<double>(p.rows());
             if (closed)
-                p.row(i) << 10 * std::cos(a) * (1 + 0.2 * std::sin(3 * a)), 10 * std::sin(a) * (1 + 0.2 * std::sin(3 * a));
+                p.row(i) << 10 * std::cos(a) * (1 + 0.2 * std::sin(3 * a)),
+                    10 * std::sin(a) * (1 + 0.2 * std::sin(3 * a));
             else
                 p.row(i) << static_cast<double>(i), std::sin(0.7 * static_cast<double>(i));
         }
@@ -343,7 +366,8 @@ TEST(Methods, SpiroRebuildsOpenCurvesFromAnEarlierSolution) {
         ASSERT_GT(first.solver_state.size(), 0);
         PointList moved = p;
         moved(20, 1) += 1e-3;
-        const InterpolationResult cold = interpolate(spiro, moved, closed), warm = interpolate_from(spiro, moved, closed, first.solver_state);
+        const InterpolationResult cold = interpolate(spiro, moved, closed),
+                                  warm = interpolate_from(spiro, moved, closed, first.solver_state);
         ASSERT_TRUE(cold.outcome.ok() && warm.outcome.ok()) << cold.outcome.message << warm.outcome.message;
         EXPECT_GT(chordwise(cold), 0);
         if (closed)
@@ -363,14 +387,18 @@ TEST(Methods, InterpolateFromAFarStartSolvesFromTheDesignsOwn) {
     ASSERT_TRUE(first.outcome.ok()) << first.outcome.message;
     PointList moved = p;
     moved(30, 1) += 5.0;
-    const InterpolationResult cold = interpolate(cp, moved, false), warm = interpolate_from(cp, moved, false, first.solver_state);
+    const InterpolationResult cold = interpolate(cp, moved, false),
+                              warm = interpolate_from(cp, moved, false, first.solver_state);
     ASSERT_TRUE(cold.outcome.ok()) << cold.outcome.message;
     ASSERT_TRUE(warm.outcome.ok()) << warm.outcome.message;
     double largest = 0.0;
     for (int k = 0; k <= 64; ++k) {
-        const double uc = cold.interpolant->curve->t_min() + k / 64.0 * (cold.interpolant->curve->t_max() - cold.interpolant->curve->t_min());
-        const double uw = warm.interpolant->curve->t_min() + k / 64.0 * (warm.interpolant->curve->t_max() - warm.interpolant->curve->t_min());
-        largest = std::max(largest, (cold.interpolant->curve->jet(uc, 0).row(0) - warm.interpolant->curve->jet(uw, 0).row(0)).norm());
+        const double uc = cold.interpolant->curve->t_min() +
+                          k / 64.0 * (cold.interpolant->curve->t_max() - cold.interpolant->curve->t_min());
+        const double uw = warm.interpolant->curve->t_min() +
+                          k / 64.0 * (warm.interpolant->curve->t_max() - warm.interpolant->curve->t_min());
+        largest = std::max(
+            largest, (cold.interpolant->curve->jet(uc, 0).row(0) - warm.interpolant->curve->jet(uw, 0).row(0)).norm());
     }
     EXPECT_LT(largest, 1e-9);
 }
@@ -390,7 +418,7 @@ TEST(Methods, OverflowAndUnderflowAreOutcomes) {
     }
     // fuzz_interpolate: Boost's centripetal Catmull-Rom read past its knots when a chord overflowed.
     PointList found(4, 2);
-    found << -2.5637160159163056e-69, -2.563716015893285e-69, -2.463211248477931e-69, -4.634680644701329e+158, -4.556343627664677e+100, -4.634630171264599e+158,
-        -4.0672354653460985e+289, 8.145974672594263e-260;
+    found << -2.5637160159163056e-69, -2.563716015893285e-69, -2.463211248477931e-69, -4.634680644701329e+158,
+        -4.556343627664677e+100, -4.634630171264599e+158, -4.0672354653460985e+289, 8.145974672594263e-260;
     EXPECT_EQ(interpolate("boost-catmull-rom", found, false).outcome.status, Status::not_representable);
 }

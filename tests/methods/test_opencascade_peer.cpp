@@ -82,7 +82,8 @@ TEST(OpenCascadePeer, ClosedCurveIsC2InsideAndOnlyC1WhereItCloses) {
     // Across the closing point: first derivatives agree, second derivatives do not.
     const Eigen::MatrixXd start = c.jet(c.t_min(), 2), end = c.jet_from_left(c.t_max(), 2);
     EXPECT_LE((start.row(1) - end.row(1)).norm(), 1e-11 * start.row(1).norm());
-    EXPECT_GT((start.row(2) - end.row(2)).norm(), 1e-3 * start.row(2).norm()) << "OpenCASCADE's periodic interpolation is C1 only where it closes";
+    EXPECT_GT((start.row(2) - end.row(2)).norm(), 1e-3 * start.row(2).norm())
+        << "OpenCASCADE's periodic interpolation is C1 only where it closes";
 }
 
 TEST(OpenCascadePeer, TinyAndHugeDataGiveTheSameShape) {
@@ -94,7 +95,10 @@ TEST(OpenCascadePeer, TinyAndHugeDataGiveTheSameShape) {
         ASSERT_TRUE(s.outcome.ok()) << s.outcome.message;
         for (int k = 0; k <= 20; ++k) {
             const double t = one.interpolant->curve->t_max() * k / 20;
-            EXPECT_LE((s.interpolant->curve->point(std::min(t * scale, s.interpolant->curve->t_max())) / scale - one.interpolant->curve->point(t)).norm(), 1e-12);
+            EXPECT_LE((s.interpolant->curve->point(std::min(t * scale, s.interpolant->curve->t_max())) / scale -
+                       one.interpolant->curve->point(t))
+                          .norm(),
+                      1e-12);
         }
     }
 }
@@ -108,7 +112,8 @@ TEST(OpenCascadePeer, PlanarPointsGiveTheCurveOfTheSpacePathBitForBit) {
         planar(7, 0) += 1e-3;  // not symmetric
         PointList space(planar.rows(), 3);
         space << planar, Eigen::VectorXd::Zero(planar.rows());
-        const InterpolationResult a = interpolate("occt-interpolate", planar, closed), b = interpolate("occt-interpolate", space, closed);
+        const InterpolationResult a = interpolate("occt-interpolate", planar, closed),
+                                  b = interpolate("occt-interpolate", space, closed);
         ASSERT_TRUE(a.outcome.ok() && b.outcome.ok()) << a.outcome.message << b.outcome.message;
         const auto* ca = dynamic_cast<const BSplineCurve*>(a.interpolant->curve.get());
         const auto* cb = dynamic_cast<const BSplineCurve*>(b.interpolant->curve.get());

@@ -27,7 +27,8 @@ TEST(AlexaProduct, IsTheSimultaneousRotationAndCommutes) {
     // Commuting factors (same axis): the ordinary product.
     const Eigen::Matrix3d c = curvature_rotation(0.25);
     EXPECT_LT((numeric::alexa_product(a, c) - Eigen::MatrixXd(a * c)).cwiseAbs().maxCoeff(), 1e-14);
-    EXPECT_LT((numeric::alexa_product(a, Eigen::Matrix3d::Identity()) - Eigen::MatrixXd(a)).cwiseAbs().maxCoeff(), 1e-14);
+    EXPECT_LT((numeric::alexa_product(a, Eigen::Matrix3d::Identity()) - Eigen::MatrixXd(a)).cwiseAbs().maxCoeff(),
+              1e-14);
 }
 
 TEST(AlexaProduct, LimitDefinitionConvergesLikeOneOverN) {
@@ -50,5 +51,6 @@ TEST(AlexaProduct, RejectsMatricesWithoutARealLogarithm) {
     Eigen::Matrix3d bad = Eigen::Matrix3d::Identity();
     bad(0, 1) = std::nan("");
     EXPECT_THROW(numeric::alexa_product(bad, Eigen::Matrix3d::Identity()), InvalidInput);
-    EXPECT_THROW(numeric::alexa_product_limit(Eigen::Matrix3d::Identity(), Eigen::Matrix3d::Identity(), 61), InvalidInput);
+    EXPECT_THROW(numeric::alexa_product_limit(Eigen::Matrix3d::Identity(), Eigen::Matrix3d::Identity(), 61),
+                 InvalidInput);
 }

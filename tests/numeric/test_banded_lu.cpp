@@ -9,10 +9,10 @@
 #include <stdexcept>
 #include <vector>
 
+#include "../support/messages.hpp"
 #include "cagd/core/errors.hpp"
 #include "cagd/numeric/banded_lu.hpp"
 #include "cagd/numeric/banded_or_sparse_lu.hpp"
-#include "../support/messages.hpp"
 
 namespace {
 
@@ -36,7 +36,9 @@ Scrambled scrambled_band(int n, std::mt19937& rng, bool zero_diagonal = false) {
     std::shuffle(row.begin(), row.end(), rng);
     std::shuffle(col.begin(), col.end(), rng);
     std::vector<int> row_at(static_cast<std::size_t>(n)), col_at(static_cast<std::size_t>(n));  // inverse permutations
-    for (int i = 0; i < n; ++i) row_at[static_cast<std::size_t>(row[static_cast<std::size_t>(i)])] = i, col_at[static_cast<std::size_t>(col[static_cast<std::size_t>(i)])] = i;
+    for (int i = 0; i < n; ++i)
+        row_at[static_cast<std::size_t>(row[static_cast<std::size_t>(i)])] = i,
+        col_at[static_cast<std::size_t>(col[static_cast<std::size_t>(i)])] = i;
     std::vector<Eigen::Triplet<double>> t;
     for (int i = 0; i < n; ++i)
         for (int j = std::max(0, i - 3); j <= std::min(n - 1, i + 2); ++j) {
@@ -64,12 +66,14 @@ TEST(BandedLu, SolvesLikeADenseLuThroughItsOrderings) {
         EXPECT_EQ(lu.upper_width(), 2);
         EXPECT_EQ(lu.storage_rows(), 2 * 3 + 2 + 1);
         const BandedLu natural(s.a, identity(n), identity(n));
-        EXPECT_GT(natural.lower_width() + natural.upper_width(), 50) << "the scrambled matrix in its own order is not banded";
+        EXPECT_GT(natural.lower_width() + natural.upper_width(), 50)
+            << "the scrambled matrix in its own order is not banded";
         EXPECT_THROW(static_cast<void>(lu.solve(Eigen::VectorXd::Ones(n))), std::logic_error);
         ASSERT_TRUE(lu.factorize(s.a));
         const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0);
         const Eigen::VectorXd dense = Eigen::MatrixXd(s.a).partialPivLu().solve(b);
-        EXPECT_LT((lu.solve(b) - dense).cwiseAbs().maxCoeff(), 1e-12 * (1.0 + dense.cwiseAbs().maxCoeff())) << "zero diagonal: " << zero_diagonal;
+        EXPECT_LT((lu.solve(b) - dense).cwiseAbs().maxCoeff(), 1e-12 * (1.0 + dense.cwiseAbs().maxCoeff()))
+            << "zero diagonal: " << zero_diagonal;
         EXPECT_LT((s.a * lu.solve(b) - b).cwiseAbs().maxCoeff(), 1e-12);
         Eigen::SparseMatrix<double> a2 = s.a;
         for (int k = 0; k < a2.nonZeros(); ++k) a2.valuePtr()[k] *= 1.0 + 0.01 * (k % 7);
@@ -93,27 +97,40 @@ TEST(BandedLu, ReportsASingularMatrix) {
 // an entry outside the band analysed, a right-hand side of another size.
 TEST(BandedLu, RefusesBadInputByName) {
     if (!BandedLu::available()) {
-        EXPECT_NE(invalid_input_message([] { BandedLu(Eigen::SparseMatrix<double>(2, 2), identity(2), identity(2)); }).find("LAPACK"), std::string::npos);
+        EXPECT_NE(invalid_input_message([] {
+                      BandedLu(Eigen::SparseMatrix<double>(2, 2), identity(2), identity(2));
+                  }).find("LAPACK"),
+                  std::string::npos);
         return;
     }
     std::mt19937 rng(5);
     const Scrambled s = scrambled_band(30, rng);
     std::vector<int> repeated = s.row;
     repeated[4] = repeated[9];
-    EXPECT_NE(invalid_input_message([&] { BandedLu(s.a, repeated, s.col); }).find("entry 9 is " + std::to_string(repeated[9]) + " again"), std::string::npos);
+    EXPECT_NE(invalid_input_message([&] {
+                  BandedLu(s.a, repeated, s.col);
+              }).find("entry 9 is " + std::to_string(repeated[9]) + " again"),
+              std::string::npos);
     std::vector<int> outside = s.col;
     outside[2] = 30;
     EXPECT_NE(invalid_input_message([&] { BandedLu(s.a, s.row, outside); }).find("entry 2 is 30"), std::string::npos);
     EXPECT_NE(invalid_input_message([&] { BandedLu(s.a, identity(29), s.col); }).find("29 entries"), std::string::npos);
-    EXPECT_NE(invalid_input_message([] { BandedLu(Eigen::SparseMatrix<double>(3, 4), identity(3), identity(3)); }).find("3 × 4"), std::string::npos);
+    EXPECT_NE(invalid_input_message([] {
+                  BandedLu(Eigen::SparseMatrix<double>(3, 4), identity(3), identity(3));
+              }).find("3 × 4"),
+              std::string::npos);
     BandedLu lu(s.a, s.row, s.col);
     Eigen::SparseMatrix<double> wider = s.a;
     const int r = static_cast<int>(std::find(s.row.begin(), s.row.end(), 0) - s.row.begin());   // band row 0
     const int c = static_cast<int>(std::find(s.col.begin(), s.col.end(), 29) - s.col.begin());  // band column 29
     wider.coeffRef(r, c) = 1.0;
-    EXPECT_NE(invalid_input_message([&] { lu.factorize(wider); }).find("entry (" + std::to_string(r) + ", " + std::to_string(c) + ") lies outside the band"), std::string::npos);
+    EXPECT_NE(invalid_input_message([&] {
+                  lu.factorize(wider);
+              }).find("entry (" + std::to_string(r) + ", " + std::to_string(c) + ") lies outside the band"),
+              std::string::npos);
     ASSERT_TRUE(lu.factorize(s.a));
-    EXPECT_NE(invalid_input_message([&] { static_cast<void>(lu.solve(Eigen::VectorXd::Ones(3))); }).find("3 entries"), std::string::npos);
+    EXPECT_NE(invalid_input_message([&] { static_cast<void>(lu.solve(Eigen::VectorXd::Ones(3))); }).find("3 entries"),
+              std::string::npos);
 }
 
 // numeric/banded_or_sparse_lu.hpp: the band where it is narrow and LAPACK is there, SparseLU
@@ -130,7 +147,8 @@ TEST(BandedOrSparseLu, TakesTheBandWhereItIsNarrowAndSolvesAlike) {
         lu.analyze(s.a, s.row, s.col, limit);
         EXPECT_EQ(lu.banded(), limit >= 9 && BandedLu::available()) << limit;
         ASSERT_TRUE(lu.factorize(s.a)) << limit;
-        EXPECT_LE((lu.solve(b) - expected).lpNorm<Eigen::Infinity>(), 1e-10 * (1 + expected.lpNorm<Eigen::Infinity>())) << limit;
+        EXPECT_LE((lu.solve(b) - expected).lpNorm<Eigen::Infinity>(), 1e-10 * (1 + expected.lpNorm<Eigen::Infinity>()))
+            << limit;
         // A singular matrix of the same pattern (one column zeroed) is reported, not solved.
         Eigen::SparseMatrix<double> singular = s.a;
         for (Eigen::SparseMatrix<double>::InnerIterator it(singular, 7); it; ++it) it.valueRef() = 0.0;

@@ -61,7 +61,9 @@ TEST(GaussLegendre, ExactForPolynomialsOfDegree2nMinus1) {
         const int deg = 2 * n - 1;
         // ∫_{-0.5}^{2} x^deg dx
         const double exact = (std::pow(2.0, deg + 1) - std::pow(-0.5, deg + 1)) / (deg + 1);
-        EXPECT_NEAR(rule.integrate([&](double x) { return std::pow(x, deg); }, -0.5, 2.0), exact, 1e-13 * std::max(1.0, std::abs(exact))) << "n = " << n;
+        EXPECT_NEAR(rule.integrate([&](double x) { return std::pow(x, deg); }, -0.5, 2.0), exact,
+                    1e-13 * std::max(1.0, std::abs(exact)))
+            << "n = " << n;
         // and not exact for degree 2n (the rule's order is sharp)
         const double exact2 = (std::pow(2.0, deg + 2) - std::pow(-0.5, deg + 2)) / (deg + 2);
         EXPECT_GT(std::abs(rule.integrate([&](double x) { return std::pow(x, deg + 1); }, -0.5, 2.0) - exact2), 1e-10);
@@ -124,7 +126,8 @@ TEST(Tridiagonal, MatchesADenseSolveAndRejectsAZeroPivot) {
     const Eigen::MatrixXd X = cagd::numeric::solve_tridiagonal(sub, diag, sup, R);
     EXPECT_LT((A * X - R).norm(), 1e-13);
     EXPECT_LT((X - A.partialPivLu().solve(R)).norm(), 1e-13);
-    EXPECT_THROW(cagd::numeric::solve_tridiagonal({0, 1}, {0, 1}, {1, 0}, Eigen::MatrixXd::Ones(2, 1)), cagd::InvalidInput);
+    EXPECT_THROW(cagd::numeric::solve_tridiagonal({0, 1}, {0, 1}, {1, 0}, Eigen::MatrixXd::Ones(2, 1)),
+                 cagd::InvalidInput);
 }
 
 // The solver eliminates all columns in one pass over the rows; each entry must still see the
@@ -157,19 +160,27 @@ TEST(Tridiagonal, OnePassEliminationIsTheTextbookThomasBitForBit) {
         }
         const Eigen::MatrixXd X = cagd::numeric::solve_tridiagonal(sub, diag, sup, R);
         for (Eigen::Index r = 0; r < X.rows(); ++r)
-            for (int j = 0; j < cols; ++j) EXPECT_EQ(X(r, j), expected(r, j)) << "row " << r << ", column " << j << " of " << cols;
+            for (int j = 0; j < cols; ++j)
+                EXPECT_EQ(X(r, j), expected(r, j)) << "row " << r << ", column " << j << " of " << cols;
         // The same elimination with each row formed when it is reached (its right-hand side written
         // then, into the output), each row once and in order.
-        Eigen::MatrixXd Y = Eigen::MatrixXd::Constant(static_cast<Eigen::Index>(n), cols, std::numeric_limits<double>::quiet_NaN());
+        Eigen::MatrixXd Y =
+            Eigen::MatrixXd::Constant(static_cast<Eigen::Index>(n), cols, std::numeric_limits<double>::quiet_NaN());
         std::size_t next_row = 0;
-        cagd::numeric::solve_tridiagonal_rows(n, static_cast<std::size_t>(cols), [&](std::size_t r, double* rhs, std::size_t stride) {
-            EXPECT_EQ(r, next_row++) << "rows out of order";
-            for (int j = 0; j < cols; ++j) rhs[static_cast<std::size_t>(j) * stride] = R(static_cast<Eigen::Index>(r), j);
-            return cagd::numeric::TridiagonalRow{sub[r], diag[r], sup[r]};
-        }, Y.data());
+        cagd::numeric::solve_tridiagonal_rows(
+            n, static_cast<std::size_t>(cols),
+            [&](std::size_t r, double* rhs, std::size_t stride) {
+                EXPECT_EQ(r, next_row++) << "rows out of order";
+                for (int j = 0; j < cols; ++j)
+                    rhs[static_cast<std::size_t>(j) * stride] = R(static_cast<Eigen::Index>(r), j);
+                return cagd::numeric::TridiagonalRow{sub[r], diag[r], sup[r]};
+            },
+            Y.data());
         EXPECT_EQ(next_row, n);
         for (Eigen::Index r = 0; r < Y.rows(); ++r)
-            for (int j = 0; j < cols; ++j) EXPECT_EQ(Y(r, j), expected(r, j)) << "rows formed on demand: row " << r << ", column " << j << " of " << cols;
+            for (int j = 0; j < cols; ++j)
+                EXPECT_EQ(Y(r, j), expected(r, j))
+                    << "rows formed on demand: row " << r << ", column " << j << " of " << cols;
     }
     // A zero pivot after the first row (diag[1] − sub[1]·sup[0]/diag[0] = 1 − 1·1/1) still throws.
     try {
@@ -200,7 +211,8 @@ TEST(CyclicTridiagonal, MatchesDenseLuWithCornerEntries) {
         EXPECT_LT((A * X - R).norm(), 1e-13) << n;
         EXPECT_LT((X - A.partialPivLu().solve(R)).norm(), 1e-13) << n;
     }
-    EXPECT_THROW(cagd::numeric::solve_cyclic_tridiagonal({1, 1}, {3, 3}, {1, 1}, Eigen::MatrixXd::Ones(2, 1)), cagd::InvalidInput);
+    EXPECT_THROW(cagd::numeric::solve_cyclic_tridiagonal({1, 1}, {3, 3}, {1, 1}, Eigen::MatrixXd::Ones(2, 1)),
+                 cagd::InvalidInput);
 }
 
 TEST(OneSidedDerivatives, ExactForPolynomialsAndAccurateForSine) {
@@ -213,7 +225,8 @@ TEST(OneSidedDerivatives, ExactForPolynomialsAndAccurateForSine) {
         EXPECT_NEAR(d[3], 18, 1e-7);
         EXPECT_NEAR(d[4], 0, 1e-5);
     }
-    const std::vector<double> s = cagd::numeric::one_sided_derivatives([](double x) { return std::sin(x); }, 1.0, 0.02, -1, 7);
+    const std::vector<double> s =
+        cagd::numeric::one_sided_derivatives([](double x) { return std::sin(x); }, 1.0, 0.02, -1, 7);
     EXPECT_NEAR(s[1], std::cos(1.0), 1e-9);
     EXPECT_NEAR(s[2], -std::sin(1.0), 1e-6);
     EXPECT_THROW(cagd::numeric::one_sided_derivatives(cubic, 0, 0.1, 0, 4), cagd::InvalidInput);
@@ -242,7 +255,9 @@ TEST(Pentadiagonal, MatchesDenseSolveOfAnSpdBandMatrix) {
         const Eigen::MatrixXd x = cagd::numeric::solve_symmetric_pentadiagonal(d, f, s, rhs);
         EXPECT_LT((a * x - rhs).cwiseAbs().maxCoeff(), 1e-12) << "n = " << n;
     }
-    EXPECT_THROW(cagd::numeric::solve_symmetric_pentadiagonal({1.0, 1.0}, {2.0}, {}, Eigen::MatrixXd::Ones(2, 1)), cagd::InvalidInput) << "indefinite";
+    EXPECT_THROW(cagd::numeric::solve_symmetric_pentadiagonal({1.0, 1.0}, {2.0}, {}, Eigen::MatrixXd::Ones(2, 1)),
+                 cagd::InvalidInput)
+        << "indefinite";
 }
 
 #include "cagd/numeric/sparse_lu.hpp"
@@ -272,7 +287,8 @@ TEST(SparseLu, SolvesLikeADenseLuInBothOrderingsAndReportsSingularity) {
     for (int i = 0; i < n; ++i)
         for (int j = 0; j < 3; ++j) b(i, j) = u(rng);
     const Eigen::MatrixXd dense = Eigen::MatrixXd(a).partialPivLu().solve(b);
-    for (const cagd::numeric::ColumnOrdering ordering : {cagd::numeric::ColumnOrdering::colamd, cagd::numeric::ColumnOrdering::natural}) {
+    for (const cagd::numeric::ColumnOrdering ordering :
+         {cagd::numeric::ColumnOrdering::colamd, cagd::numeric::ColumnOrdering::natural}) {
         cagd::numeric::SparseLu lu(ordering);
         EXPECT_THROW(static_cast<void>(lu.solve(Eigen::VectorXd(b.col(0)))), std::logic_error);
         ASSERT_TRUE(lu.compute(a));

@@ -57,7 +57,8 @@ TEST(RombergVector, BatchesSumLikeOnePointAtATime) {
         for (int c = 0; c < 2; ++c) row[0][c] = 0.5 * prev_row[0][c] + h * sum[c];
         for (int j = 1; j <= k; ++j) {
             factor *= 4.0;
-            for (int c = 0; c < 2; ++c) row[j][c] = row[j - 1][c] + (row[j - 1][c] - prev_row[j - 1][c]) / (factor - 1.0);
+            for (int c = 0; c < 2; ++c)
+                row[j][c] = row[j - 1][c] + (row[j - 1][c] - prev_row[j - 1][c]) / (factor - 1.0);
         }
         std::copy(&row[0][0], &row[0][0] + 62, &prev_row[0][0]);
     }

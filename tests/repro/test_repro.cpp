@@ -53,7 +53,9 @@ TEST(Repro, AThresholdChosenAfterTheResultCannotTurnADeviationIntoDepends) {
     std::filesystem::create_directories(root / "reference" / "t");
     std::ofstream(root / "reference" / "ERRATA.md") << "## t-E1\n";
     std::ofstream(root / "reference" / "t" / "a.csv")
-        << "# source: a test\nid,paper_value,tolerance,tolerance_reason,erratum,corrected_value,description,thresholds,note_thresholds\n"
+        << "# source: a "
+           "test\nid,paper_value,tolerance,tolerance_reason,erratum,corrected_value,description,thresholds,note_"
+           "thresholds\n"
            "t.same,1,0,yes/no,t-E1,0,nearly the same,0.01,0.05\n"
            "t.same_code,1,0,yes/no,t-E1,0,nearly the same,0.01,\n"
            "t.value,0,0.01,definition,t-E1,0.0216,a distance,0.01,\n"
@@ -72,7 +74,8 @@ TEST(Repro, AThresholdChosenAfterTheResultCannotTurnADeviationIntoDepends) {
     EXPECT_EQ(run.records().back().status, ClaimStatus::depends);
     // A tolerance given by the experiment that the row does not declare: failed.
     run.check_over_choices("value", 0.0216, "threshold 1 %", {{"threshold 5 %", 0.0216, 0.05}});
-    EXPECT_EQ(run.records().back().status, ClaimStatus::failed) << "an undeclared threshold fails the claim: " << run.records().back().choices;
+    EXPECT_EQ(run.records().back().status, ClaimStatus::failed)
+        << "an undeclared threshold fails the claim: " << run.records().back().choices;
     EXPECT_NE(run.records().back().choices.find("not declared"), std::string::npos) << run.records().back().choices;
     // As a note, it is shown and the deviation stands; declared in the row, it may decide.
     run.check_over_choices("value_note", 0.0216, "threshold 1 %", {{"threshold 5 %", 0.0216, 0.05, ChoiceKind::note}});
@@ -113,7 +116,8 @@ TEST(Repro, EveryReferenceFileOfTheRepositoryLoads) {
     const std::filesystem::path benchmark = std::filesystem::path(CAGD_SOURCE_DIR) / "reference" / "benchmark";
     for (const auto& e : std::filesystem::recursive_directory_iterator(std::string(CAGD_SOURCE_DIR) + "/reference"))
         if (e.path().extension() == ".csv" && e.path().parent_path().filename() != "data" &&
-            std::mismatch(benchmark.begin(), benchmark.end(), e.path().begin(), e.path().end()).first != benchmark.end()) {
+            std::mismatch(benchmark.begin(), benchmark.end(), e.path().begin(), e.path().end()).first !=
+                benchmark.end()) {
             EXPECT_NO_THROW(load_reference(e.path().string())) << e.path();
             ++files;
         }

@@ -38,7 +38,9 @@ Data noisy_sine(int n, unsigned seed) {
 double max_curve_difference(const spline::ExplicitSpline& p, const spline::ExplicitSpline& q) {
     double diff = 0.0;
     for (std::size_t s = 0; s + 1 < p.x.size(); ++s)
-        for (double u : {0.0, 0.25, 0.5, 0.75, 1.0}) diff = std::max(diff, (p.evaluate_in(static_cast<int>(s), u) - q.evaluate_in(static_cast<int>(s), u)).norm());
+        for (double u : {0.0, 0.25, 0.5, 0.75, 1.0})
+            diff =
+                std::max(diff, (p.evaluate_in(static_cast<int>(s), u) - q.evaluate_in(static_cast<int>(s), u)).norm());
     return diff;
 }
 
@@ -63,11 +65,13 @@ TEST(ElasticLine, SpringLawEq50CorrectedHoldsAndNaturalEnds) {
         double d2 = 0.0;  // δ²M_i with the terms beyond the ends dropped
         if (i + 1 < d.x.size()) d2 += (m(k + 1) - m(k)) / (d.x[i + 1] - d.x[i]);
         if (i > 0) d2 -= (m(k) - m(k - 1)) / (d.x[i] - d.x[i - 1]);
-        EXPECT_NEAR(line.values()(k, 0) - d.a(k) + d.lambda[i] * d2, 0.0, 1e-12) << "y_i - a_i + lambda_i delta^2 y''_i = 0 at i = " << i;
+        EXPECT_NEAR(line.values()(k, 0) - d.a(k) + d.lambda[i] * d2, 0.0, 1e-12)
+            << "y_i - a_i + lambda_i delta^2 y''_i = 0 at i = " << i;
     }
     // The curve's own second derivatives at the nodes are the M_i (the curve is C2).
     for (std::size_t i = 1; i + 1 < d.x.size(); ++i)
-        EXPECT_NEAR(line.curve.evaluate(d.x[i], 2)(0), m(static_cast<Eigen::Index>(i)), 1e-10 * (1 + std::abs(m(static_cast<Eigen::Index>(i)))));
+        EXPECT_NEAR(line.curve.evaluate(d.x[i], 2)(0), m(static_cast<Eigen::Index>(i)),
+                    1e-10 * (1 + std::abs(m(static_cast<Eigen::Index>(i)))));
 }
 
 TEST(ElasticLine, FiveTermSystemEqualsHermiteMinimisationOfV) {
@@ -108,7 +112,8 @@ TEST(ElasticLine, FixedEndSlopesHoldAndCostEnergy) {
     EXPECT_GT(clamped.energy, free.energy);
     // Interior joins stay C2 (eq 49 holds at the free nodes).
     for (std::size_t i = 1; i + 1 < d.x.size(); ++i)
-        EXPECT_NEAR(clamped.curve.evaluate_in(static_cast<int>(i) - 1, 1.0, 2)(0), clamped.curve.evaluate_in(static_cast<int>(i), 0.0, 2)(0), 1e-9);
+        EXPECT_NEAR(clamped.curve.evaluate_in(static_cast<int>(i) - 1, 1.0, 2)(0),
+                    clamped.curve.evaluate_in(static_cast<int>(i), 0.0, 2)(0), 1e-9);
 }
 
 TEST(ElasticLine, LargeLambdaTendsToTheLeastSquaresLine) {
@@ -140,7 +145,8 @@ TEST(ElasticLine, InflectionsAreSignChangesOfSecondDerivatives) {
     const std::vector<double> x{0, 1, 2, 3, 4, 5};
     Eigen::VectorXd zigzag(6), convex(6);
     zigzag << 0, 1, 0, 1, 0, 1;
-    for (int i = 0; i < 6; ++i) convex(i) = 0.1 * i * i + (i % 2 ? 0.3 : -0.3);  // a convex trend plus alternating noise
+    for (int i = 0; i < 6; ++i)
+        convex(i) = 0.1 * i * i + (i % 2 ? 0.3 : -0.3);  // a convex trend plus alternating noise
     EXPECT_EQ(inflection_count(elastic_line(x, zigzag, 0.0)), 3);
     EXPECT_EQ(inflection_count(elastic_line(x, convex, 0.0)), 3);
     EXPECT_EQ(inflection_count(elastic_line(x, convex, 1e3)), 0) << "the stiff line follows the convex trend";
@@ -190,7 +196,9 @@ Eigen::MatrixXd scalar(double v) { return Eigen::MatrixXd::Constant(1, 1, v); }
 double node_error(const surface::CartesianSurface& s, const Grid& g) {
     double e = 0;
     for (std::size_t i = 0; i < g.x.size(); ++i)
-        for (std::size_t j = 0; j < g.y.size(); ++j) e = std::max(e, std::abs(s.value(g.x[i], g.y[j]) - g.a(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j))));
+        for (std::size_t j = 0; j < g.y.size(); ++j)
+            e = std::max(
+                e, std::abs(s.value(g.x[i], g.y[j]) - g.a(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j))));
     return e;
 }
 }  // namespace
@@ -205,7 +213,8 @@ TEST(SurfaceSmoothing, EnergyFreeSurfacesAreKept) {
     EXPECT_GT(node_error(plate_smoothing(g.x, g.y, g.a, scalar(0.5), PlateEnergy::no_poisson).surface, g), 1e-4);
     // A plane has no energy under any of (55)–(58).
     const Grid p = uneven_grid([](double x, double y) { return 0.3 - x + 2 * y; });
-    for (PlateEnergy e : {PlateEnergy::poisson, PlateEnergy::no_poisson, PlateEnergy::no_twist, PlateEnergy::mean_curvature})
+    for (PlateEnergy e :
+         {PlateEnergy::poisson, PlateEnergy::no_poisson, PlateEnergy::no_twist, PlateEnergy::mean_curvature})
         EXPECT_LT(node_error(plate_smoothing(p.x, p.y, p.a, scalar(0.5), e).surface, p), 1e-10);
 }
 
@@ -216,7 +225,8 @@ TEST(SurfaceSmoothing, SmallLambdaInterpolatesAndLargeLambdaSmooths) {
     const surface::CartesianSurface rough = surface::cartesian_spline_surface(g.x, g.y, g.a);
     const double e_rough = plate_energy(rough, PlateEnergy::no_twist);
     for (PlateEnergy e : {PlateEnergy::no_poisson, PlateEnergy::no_twist}) {
-        const PlateSmoothing small = plate_smoothing(g.x, g.y, g.a, scalar(1e-9), e), large = plate_smoothing(g.x, g.y, g.a, scalar(10.0), e);
+        const PlateSmoothing small = plate_smoothing(g.x, g.y, g.a, scalar(1e-9), e),
+                             large = plate_smoothing(g.x, g.y, g.a, scalar(10.0), e);
         EXPECT_LT(node_error(small.surface, g), 1e-6);
         EXPECT_LT(plate_energy(large.surface, PlateEnergy::no_twist), 0.1 * e_rough);
     }
@@ -229,13 +239,18 @@ TEST(SurfaceSmoothing, PlateSolutionIsStationary) {
     const auto total = [&](const surface::CartesianSurface& c) {
         double springs = 0;
         for (std::size_t i = 0; i < g.x.size(); ++i)
-            for (std::size_t j = 0; j < g.y.size(); ++j) springs += std::pow(c.value(g.x[i], g.y[j]) - g.a(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)), 2) / 0.2;
+            for (std::size_t j = 0; j < g.y.size(); ++j)
+                springs +=
+                    std::pow(c.value(g.x[i], g.y[j]) - g.a(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)),
+                             2) /
+                    0.2;
         return 0.5 * springs + 0.5 * plate_energy(c, PlateEnergy::no_poisson);
     };
     const double u0 = total(s.surface);
     std::vector<Eigen::MatrixXd> nodes;
     for (std::size_t j = 0; j < g.y.size(); ++j)
-        for (std::size_t i = 0; i < g.x.size(); ++i) nodes.push_back(s.surface.node(static_cast<int>(i), static_cast<int>(j)));
+        for (std::size_t i = 0; i < g.x.size(); ++i)
+            nodes.push_back(s.surface.node(static_cast<int>(i), static_cast<int>(j)));
     for (double eps : {1e-3, 1e-4}) {
         std::vector<Eigen::MatrixXd> moved = nodes;
         moved[3 + 8 * 2](0, 0) += eps;
@@ -265,7 +280,8 @@ TEST(SurfaceSmoothing, OrthonormalPolynomialsAndApproximationOne) {
         for (int j = 0; j < 7; ++j) {
             EXPECT_NEAR(s.node(i, j)(0, 0), a(i, j), 1e-11);
             EXPECT_NEAR(s.node(i, j)(1, 0),
-                        3 * x[static_cast<std::size_t>(i)] * x[static_cast<std::size_t>(i)] - 2 * y[static_cast<std::size_t>(j)] * y[static_cast<std::size_t>(j)] +
+                        3 * x[static_cast<std::size_t>(i)] * x[static_cast<std::size_t>(i)] -
+                            2 * y[static_cast<std::size_t>(j)] * y[static_cast<std::size_t>(j)] +
                             std::pow(y[static_cast<std::size_t>(j)], 3),
                         1e-10);
         }
@@ -275,22 +291,28 @@ TEST(SurfaceSmoothing, BoundaryPlateKeepsTheSmoothedBoundaryRows) {
     const Grid g = uneven_grid([](double x, double y) { return std::sin(0.5 * x) + y * y; });
     const BoundaryPlateSmoothing s = boundary_plate_smoothing(g.x, g.y, g.a, scalar(0.05), PlateEnergy::no_twist, 2);
     const ElasticLine lower = elastic_line(g.x, g.a.col(0), 0.05);
-    for (std::size_t i = 0; i < g.x.size(); ++i) EXPECT_NEAR(s.surface.value(g.x[i], g.y.front()), lower.values()(static_cast<Eigen::Index>(i), 0), 1e-12);
+    for (std::size_t i = 0; i < g.x.size(); ++i)
+        EXPECT_NEAR(s.surface.value(g.x[i], g.y.front()), lower.values()(static_cast<Eigen::Index>(i), 0), 1e-12);
     EXPECT_EQ(s.system_size, 2 * 2 * 8);
 }
 
 TEST(SurfaceSmoothing, BadInputThrows) {
     const Grid g = uneven_grid([](double x, double y) { return x + y; });
     EXPECT_THROW(elastic_net(g.x, g.y, g.a, scalar(-1.0)), InvalidInput);
-    EXPECT_THROW(elastic_net(g.x, g.y, g.a.topRows(7), scalar(1.0)), InvalidInput) << "ragged: heights do not match the grid";
+    EXPECT_THROW(elastic_net(g.x, g.y, g.a.topRows(7), scalar(1.0)), InvalidInput)
+        << "ragged: heights do not match the grid";
     EXPECT_THROW(elastic_net(g.x, g.y, g.a, Eigen::MatrixXd::Ones(3, 3)), InvalidInput);
     Eigen::MatrixXd bad = g.a;
     bad(2, 3) = std::nan("");
     EXPECT_THROW(elastic_net(g.x, g.y, bad, scalar(1.0)), InvalidInput);
-    EXPECT_THROW(plate_smoothing(g.x, g.y, g.a, scalar(0.0), PlateEnergy::no_twist), InvalidInput) << "plates need finite springs";
+    EXPECT_THROW(plate_smoothing(g.x, g.y, g.a, scalar(0.0), PlateEnergy::no_twist), InvalidInput)
+        << "plates need finite springs";
     EXPECT_THROW(plate_energy_form(PlateEnergy::poisson, 0.7), InvalidInput);
     EXPECT_THROW(local_orthogonal_smoothing(g.x, g.y, g.a, 0.1, PlateEnergy::no_twist), InvalidInput) << "uneven grid";
     std::vector<double> x{0, 1, 2, 3}, y{0, 1, 2, 3, 4};
-    EXPECT_THROW(local_orthogonal_smoothing(x, y, Eigen::MatrixXd::Zero(4, 5), 0.1, PlateEnergy::no_twist), InvalidInput) << "fewer than 5 lines";
-    EXPECT_THROW(surface::grid_from_points((PointList(3, 3) << 0, 0, 1, 1, 0, 1, 0, 1, 1).finished()), InvalidInput) << "ragged point grid";
+    EXPECT_THROW(local_orthogonal_smoothing(x, y, Eigen::MatrixXd::Zero(4, 5), 0.1, PlateEnergy::no_twist),
+                 InvalidInput)
+        << "fewer than 5 lines";
+    EXPECT_THROW(surface::grid_from_points((PointList(3, 3) << 0, 0, 1, 1, 0, 1, 0, 1, 1).finished()), InvalidInput)
+        << "ragged point grid";
 }

@@ -36,9 +36,9 @@ TEST(BSpline, BasisIsAPartitionOfUnityWithMatchingDerivatives) {
 }
 
 // find_span starts from the span it found last, then from a bucket index on curves of many spans;
-// it must return the span of the definition (U_s ≤ t < U_{s+1}, the last non-empty one at t_max) for any knots: uneven gaps,
-// repeated knots (empty spans), a cluster of knots in one bucket, ends clamped or not, and t on
-// the knots and just beside them.
+// it must return the span of the definition (U_s ≤ t < U_{s+1}, the last non-empty one at t_max) for any knots: uneven
+// gaps, repeated knots (empty spans), a cluster of knots in one bucket, ends clamped or not, and t on the knots and
+// just beside them.
 TEST(BSpline, FindSpanIsTheSpanOfTheDefinitionOnManySpans) {
     std::mt19937 rng(3);
     std::uniform_real_distribution<double> gap(0.1, 2.0), unit(0.0, 1.0);
@@ -79,7 +79,8 @@ TEST(BSpline, FindSpanIsTheSpanOfTheDefinitionOnManySpans) {
             (void)c.find_span(std::nextafter(c.t_min(), -1e300));
             ASSERT_EQ(c.find_span(t), by_definition(t)) << "variant " << variant << ", t = " << t;
             const double below = std::max(c.t_min(), std::nextafter(t, -1e300));
-            ASSERT_EQ(c.find_span(below), by_definition(below)) << "variant " << variant << ", t = " << below << " after " << t;
+            ASSERT_EQ(c.find_span(below), by_definition(below))
+                << "variant " << variant << ", t = " << below << " after " << t;
         }
     }
 }
@@ -127,7 +128,9 @@ TEST(BSpline, ElevatedUniformCubicHasDoubleKnotsAndKnownControls) {
     int matched = 0;
     for (Eigen::Index j = 1; j + 1 < D.rows(); ++j)
         for (Eigen::Index i = 1; i + 1 < C.rows(); ++i)
-            if ((D.row(j) - (C.row(i - 1) + 10 * C.row(i) + C.row(i + 1)) / 12.0).norm() < 1e-12 && (D.row(j + 1) - (C.row(i) + C.row(i + 1)) / 2.0).norm() < 1e-12) ++matched;
+            if ((D.row(j) - (C.row(i - 1) + 10 * C.row(i) + C.row(i + 1)) / 12.0).norm() < 1e-12 &&
+                (D.row(j + 1) - (C.row(i) + C.row(i + 1)) / 2.0).norm() < 1e-12)
+                ++matched;
     EXPECT_GE(matched, 6);
 }
 
@@ -187,18 +190,22 @@ TEST(BSpline, JetIntoAndDerivativesIntoAreTheJetBitForBit) {
                 // jet() itself against the definition, Σ N^(d)_{i,p}(t) P_i by Piegl & Tiller A2.3 (the
                 // Taylor form differs by rounding only: 1e-9 of the jet's size at these degrees).
                 const int span = c.find_span(t);
-                const Eigen::MatrixXd by_basis = basis_function_derivatives(degree, knots, span, t, kJetCapacity - 1) * control.middleRows(span - degree, degree + 1);
+                const Eigen::MatrixXd by_basis = basis_function_derivatives(degree, knots, span, t, kJetCapacity - 1) *
+                                                 control.middleRows(span - degree, degree + 1);
                 const Eigen::MatrixXd taylor = c.jet(t, kJetCapacity - 1);
-                EXPECT_LT((taylor - by_basis).norm(), 1e-9 * (1.0 + by_basis.norm())) << "degree " << degree << ", dim " << dim << ", t " << t;
+                EXPECT_LT((taylor - by_basis).norm(), 1e-9 * (1.0 + by_basis.norm()))
+                    << "degree " << degree << ", dim " << dim << ", t " << t;
                 for (int order = 0; order < kJetCapacity; ++order) {
                     c.jet_into(t, order, J);
                     ASSERT_EQ(J.rows(), order + 1);
-                    EXPECT_EQ(Eigen::MatrixXd(J), c.jet(t, order)) << "degree " << degree << ", dim " << dim << ", t " << t << ", order " << order;
+                    EXPECT_EQ(Eigen::MatrixXd(J), c.jet(t, order))
+                        << "degree " << degree << ", dim " << dim << ", t " << t << ", order " << order;
                 }
                 for (int order = 1; order < kJetCapacity; ++order) {
                     c.derivatives_into(t, order, J);
                     ASSERT_EQ(J.rows(), order);
-                    EXPECT_EQ(Eigen::MatrixXd(J), c.jet(t, order).bottomRows(order)) << "degree " << degree << ", dim " << dim << ", t " << t << ", order " << order;
+                    EXPECT_EQ(Eigen::MatrixXd(J), c.jet(t, order).bottomRows(order))
+                        << "degree " << degree << ", dim " << dim << ", t " << t << ", order " << order;
                 }
             }
             EXPECT_THROW(c.derivatives_into(c.t_max() + 1.0, 1, J), InvalidInput);
@@ -215,7 +222,8 @@ TEST(BSpline, JetsAtKnotsAreTheA23ValuesBitForBit) {
             std::vector<double> knots = free.knots();
             for (int i = 0; i <= p; ++i) {  // clamp both ends: p + 1 equal knots
                 knots[static_cast<std::size_t>(i)] = knots[static_cast<std::size_t>(p)];
-                knots[knots.size() - 1 - static_cast<std::size_t>(i)] = knots[knots.size() - 1 - static_cast<std::size_t>(p)];
+                knots[knots.size() - 1 - static_cast<std::size_t>(i)] =
+                    knots[knots.size() - 1 - static_cast<std::size_t>(p)];
             }
             const BSplineCurve c(p, knots, free.control_points());
             const int n = static_cast<int>(c.control_points().rows());
@@ -223,11 +231,14 @@ TEST(BSpline, JetsAtKnotsAreTheA23ValuesBitForBit) {
                 for (int end = 0; end < 2; ++end) {
                     const double t = knots[static_cast<std::size_t>(s + end)];
                     for (int order = 0; order <= p + 1; ++order) {
-                        const Eigen::MatrixXd direct = basis_function_derivatives(p, knots, s, t, order) * c.control_points().middleRows(s - p, p + 1);
+                        const Eigen::MatrixXd direct = basis_function_derivatives(p, knots, s, t, order) *
+                                                       c.control_points().middleRows(s - p, p + 1);
                         const Eigen::MatrixXd ours = end == 0 ? c.jet(t, order) : c.jet_from_left(t, order);
                         ASSERT_EQ(ours.rows(), order + 1);
                         for (int k = 0; k <= std::min(order, p); ++k)
-                            for (int e = 0; e < 2; ++e) ASSERT_EQ(ours(k, e), direct(k, e)) << "degree " << p << " span " << s << " end " << end << " order " << order << " row " << k;
+                            for (int e = 0; e < 2; ++e)
+                                ASSERT_EQ(ours(k, e), direct(k, e)) << "degree " << p << " span " << s << " end " << end
+                                                                    << " order " << order << " row " << k;
                     }
                 }
             // A clamped end gives its control point, to rounding (A2.3 forms 1 as r·(1/r)).
@@ -251,13 +262,15 @@ TEST(BSpline, TaylorTableIsTheA23ProductAtEachSpanMiddleBitForBit) {
             const std::vector<double>& U = c.knots();
             for (int s = p; s < static_cast<int>(control.rows()); ++s) {
                 const double middle = 0.5 * (U[static_cast<std::size_t>(s)] + U[static_cast<std::size_t>(s) + 1]);
-                const Eigen::MatrixXd D = basis_function_derivatives(p, U, s, middle, p) * control.middleRows(s - p, p + 1);
+                const Eigen::MatrixXd D =
+                    basis_function_derivatives(p, U, s, middle, p) * control.middleRows(s - p, p + 1);
                 const Eigen::MatrixXd jet = c.jet(middle, p);
                 double factorial = 1.0;
                 for (int k = 0; k <= p; ++k) {
                     if (k > 0) factorial *= k;
                     for (int e = 0; e < dim; ++e)
-                        ASSERT_EQ(jet(k, e), factorial * (D(k, e) / factorial)) << "degree " << p << " dimension " << dim << " span " << s << " row " << k;
+                        ASSERT_EQ(jet(k, e), factorial * (D(k, e) / factorial))
+                            << "degree " << p << " dimension " << dim << " span " << s << " row " << k;
                 }
             }
         }
@@ -272,23 +285,32 @@ TEST(BSpline, TablesBuiltBlockByBlockAreTheWholeTablesBitForBit) {
         const BSplineCurve built_whole = random_curve(p, 2600, static_cast<unsigned>(90 + p), false);
         const std::vector<double>& U = built_whole.knots();
         const int n = static_cast<int>(built_whole.control_points().rows());
-        for (int s = p; s < n; ++s) (void)built_whole.jet(0.5 * (U[static_cast<std::size_t>(s)] + U[static_cast<std::size_t>(s) + 1]), p);  // every block, in order
+        for (int s = p; s < n; ++s)
+            (void)built_whole.jet(0.5 * (U[static_cast<std::size_t>(s)] + U[static_cast<std::size_t>(s) + 1]),
+                                  p);  // every block, in order
         const BSplineCurve scattered = random_curve(p, 2600, static_cast<unsigned>(90 + p), false);
         std::vector<int> spans;
-        for (int k = 0; k < n - p; ++k) spans.push_back(p + (k * 997 + n - p - 1) % (n - p));  // every span, from the last on, 997 apart (a prime)
+        for (int k = 0; k < n - p; ++k)
+            spans.push_back(p + (k * 997 + n - p - 1) % (n - p));  // every span, from the last on, 997 apart (a prime)
         const auto same_jets = [&](int s) {
             const double middle = 0.5 * (U[static_cast<std::size_t>(s)] + U[static_cast<std::size_t>(s) + 1]);
-            const Eigen::MatrixXd D = basis_function_derivatives(p, U, s, middle, p) * scattered.control_points().middleRows(s - p, p + 1);
-            const Eigen::MatrixXd jet = scattered.jet(middle, p), at_start = scattered.jet(U[static_cast<std::size_t>(s)], p),
+            const Eigen::MatrixXd D =
+                basis_function_derivatives(p, U, s, middle, p) * scattered.control_points().middleRows(s - p, p + 1);
+            const Eigen::MatrixXd jet = scattered.jet(middle, p),
+                                  at_start = scattered.jet(U[static_cast<std::size_t>(s)], p),
                                   at_end = scattered.jet_from_left(U[static_cast<std::size_t>(s) + 1], p);
-            const Eigen::MatrixXd start_direct = basis_function_derivatives(p, U, s, U[static_cast<std::size_t>(s)], p) * scattered.control_points().middleRows(s - p, p + 1);
-            const Eigen::MatrixXd end_direct = basis_function_derivatives(p, U, s, U[static_cast<std::size_t>(s) + 1], p) * scattered.control_points().middleRows(s - p, p + 1);
+            const Eigen::MatrixXd start_direct =
+                basis_function_derivatives(p, U, s, U[static_cast<std::size_t>(s)], p) *
+                scattered.control_points().middleRows(s - p, p + 1);
+            const Eigen::MatrixXd end_direct =
+                basis_function_derivatives(p, U, s, U[static_cast<std::size_t>(s) + 1], p) *
+                scattered.control_points().middleRows(s - p, p + 1);
             double factorial = 1.0;
             for (int k = 0; k <= p; ++k) {
                 if (k > 0) factorial *= k;
                 for (int e = 0; e < 2; ++e)
-                    if (jet(k, e) != factorial * (D(k, e) / factorial) || at_start(k, e) != start_direct(k, e) || at_end(k, e) != end_direct(k, e) ||
-                        jet(k, e) != built_whole.jet(middle, p)(k, e))
+                    if (jet(k, e) != factorial * (D(k, e) / factorial) || at_start(k, e) != start_direct(k, e) ||
+                        at_end(k, e) != end_direct(k, e) || jet(k, e) != built_whole.jet(middle, p)(k, e))
                         return false;
             }
             return true;
@@ -299,10 +321,13 @@ TEST(BSpline, TablesBuiltBlockByBlockAreTheWholeTablesBitForBit) {
         const auto ask = [&](int from, int step) {
             for (int s = from; s >= p && s < n; s += step) {
                 const double middle = 0.5 * (U[static_cast<std::size_t>(s)] + U[static_cast<std::size_t>(s) + 1]);
-                ok[static_cast<std::size_t>(s)] = fresh.jet(middle, p) == built_whole.jet(middle, p) && fresh.jet(U[static_cast<std::size_t>(s)], p) == built_whole.jet(U[static_cast<std::size_t>(s)], p);
+                ok[static_cast<std::size_t>(s)] =
+                    fresh.jet(middle, p) == built_whole.jet(middle, p) &&
+                    fresh.jet(U[static_cast<std::size_t>(s)], p) == built_whole.jet(U[static_cast<std::size_t>(s)], p);
             }
         };
-        std::thread forward(ask, p, 2), backward(ask, n - 1 - (n - 1 - (p + 1)) % 2, -2);  // the spans p, p + 2, … and p + 1, p + 3, …
+        std::thread forward(ask, p, 2),
+            backward(ask, n - 1 - (n - 1 - (p + 1)) % 2, -2);  // the spans p, p + 2, … and p + 1, p + 3, …
         forward.join(), backward.join();
         EXPECT_EQ(std::count(ok.begin() + p, ok.end(), 1), n - p) << "degree " << p;
     }

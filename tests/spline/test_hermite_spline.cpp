@@ -46,17 +46,20 @@ TEST(PiecewiseHermite, InterpolatesNodesAndEndDerivativesAndMatchesFiniteDiffere
 }
 
 TEST(CubicSplines, NaturalUniformSplineAIsTheBSplineInterpolantOfSb2LocalityEq10) {
-    const PiecewiseHermiteCurve a = spline::cubic_spline_interpolant(kNewberyGarrett, spline::ParameterSpacing::uniform, false);
+    const PiecewiseHermiteCurve a =
+        spline::cubic_spline_interpolant(kNewberyGarrett, spline::ParameterSpacing::uniform, false);
     const BSplineCurve b = locality::cubic_bspline_interpolant(kNewberyGarrett, false);
     EXPECT_LT(analysis::max_distance_same_parameter(a, b), 1e-12);
-    const PiecewiseHermiteCurve ac = spline::cubic_spline_interpolant(kNewberyGarrett, spline::ParameterSpacing::uniform, true);
+    const PiecewiseHermiteCurve ac =
+        spline::cubic_spline_interpolant(kNewberyGarrett, spline::ParameterSpacing::uniform, true);
     const BSplineCurve bc = locality::cubic_bspline_interpolant(kNewberyGarrett, true);
     EXPECT_LT(analysis::max_distance_same_parameter(ac, bc), 1e-12) << "closed";
 }
 
 TEST(CubicSplines, ChordLengthSplineBIsC2InItsParameterWithNaturalEnds) {
     for (bool closed : {false, true}) {
-        const PiecewiseHermiteCurve c = spline::cubic_spline_interpolant(kNewberyGarrett, spline::ParameterSpacing::chord_length, closed);
+        const PiecewiseHermiteCurve c =
+            spline::cubic_spline_interpolant(kNewberyGarrett, spline::ParameterSpacing::chord_length, closed);
         const Eigen::MatrixXd& p = c.nodes();
         const auto h = [&](int k) { return (p.row(k + 1) - p.row(k)).norm(); };
         for (int k = 1; k <= c.spans(); ++k) {
@@ -65,7 +68,8 @@ TEST(CubicSplines, ChordLengthSplineBIsC2InItsParameterWithNaturalEnds) {
             const Eigen::MatrixXd left = c.jet(k - 1e-13, 2), right = c.jet(next == 0 ? 0.0 : k, 2);
             // dr/dτ = r'(t)/h, d²r/dτ² = r''(t)/h² on each span.
             EXPECT_NEAR((left.row(1) / h(k - 1) - right.row(1) / h(next)).norm(), 0.0, 1e-9) << "C1 at node " << k;
-            EXPECT_NEAR((left.row(2) / (h(k - 1) * h(k - 1)) - right.row(2) / (h(next) * h(next))).norm(), 0.0, 1e-8) << "C2 at node " << k;
+            EXPECT_NEAR((left.row(2) / (h(k - 1) * h(k - 1)) - right.row(2) / (h(next) * h(next))).norm(), 0.0, 1e-8)
+                << "C2 at node " << k;
         }
         if (!closed) {
             EXPECT_NEAR(c.jet(0, 2).row(2).norm(), 0.0, 1e-10) << "natural start";
@@ -94,24 +98,32 @@ TEST(HermiteCurves, CircleTangentsAreThoseOfTheCircumcircle) {
             EXPECT_NEAR(t.row(i).norm(), 1.0, 1e-14);
         }
         // All three tangents turn the same way round the circle (a consistent orientation).
-        const double s0 = Eigen::Vector2d(p.row(0).transpose() - centre).x() * t(0, 1) - Eigen::Vector2d(p.row(0).transpose() - centre).y() * t(0, 0);
-        const double s1 = Eigen::Vector2d(p.row(1).transpose() - centre).x() * t(1, 1) - Eigen::Vector2d(p.row(1).transpose() - centre).y() * t(1, 0);
-        const double s2 = Eigen::Vector2d(p.row(2).transpose() - centre).x() * t(2, 1) - Eigen::Vector2d(p.row(2).transpose() - centre).y() * t(2, 0);
+        const double s0 = Eigen::Vector2d(p.row(0).transpose() - centre).x() * t(0, 1) -
+                          Eigen::Vector2d(p.row(0).transpose() - centre).y() * t(0, 0);
+        const double s1 = Eigen::Vector2d(p.row(1).transpose() - centre).x() * t(1, 1) -
+                          Eigen::Vector2d(p.row(1).transpose() - centre).y() * t(1, 0);
+        const double s2 = Eigen::Vector2d(p.row(2).transpose() - centre).x() * t(2, 1) -
+                          Eigen::Vector2d(p.row(2).transpose() - centre).y() * t(2, 0);
         EXPECT_GT(s0 * s1, 0.0);
         EXPECT_GT(s1 * s2, 0.0);
     }
 }
 
 TEST(HermiteCurves, HermiteAUsesNeighbourChordsAndChordLengthMagnitudes) {
-    const Eigen::MatrixXd t = spline::hermite_tangent_directions(kNewberyGarrett, spline::TangentRule::chord_of_neighbours, false);
+    const Eigen::MatrixXd t =
+        spline::hermite_tangent_directions(kNewberyGarrett, spline::TangentRule::chord_of_neighbours, false);
     EXPECT_NEAR(angle_of(t.row(0)), angle_of(kNewberyGarrett.row(1) - kNewberyGarrett.row(0)), 1e-14);
     EXPECT_NEAR(angle_of(t.row(5)), angle_of(kNewberyGarrett.row(6) - kNewberyGarrett.row(4)), 1e-14);
     const PiecewiseHermiteCurve c = spline::hermite_interpolant(kNewberyGarrett, t, false);
     EXPECT_NEAR(c.start_derivatives().row(3).norm(), (kNewberyGarrett.row(4) - kNewberyGarrett.row(3)).norm(), 1e-14);
     EXPECT_NEAR(c.end_derivatives().row(3).norm(), (kNewberyGarrett.row(4) - kNewberyGarrett.row(3)).norm(), 1e-14);
-    EXPECT_THROW(spline::hermite_tangent_directions(points({{0, 0}, {1, 0}, {0, 0.0}}), spline::TangentRule::chord_of_neighbours, false), InvalidInput)
+    EXPECT_THROW(spline::hermite_tangent_directions(points({{0, 0}, {1, 0}, {0, 0.0}}),
+                                                    spline::TangentRule::chord_of_neighbours, false),
+                 InvalidInput)
         << "P0 = P2: no direction (and coincident points)";
-    EXPECT_THROW(spline::hermite_tangent_directions(points({{0, 0}, {1, 0}, {0.0, 0.0}, {2, 0}}), spline::TangentRule::circle, false), InvalidInput)
+    EXPECT_THROW(spline::hermite_tangent_directions(points({{0, 0}, {1, 0}, {0.0, 0.0}, {2, 0}}),
+                                                    spline::TangentRule::circle, false),
+                 InvalidInput)
         << "an exact reversal with equal chords";
 }
 
@@ -122,17 +134,21 @@ TEST(HermiteCurves, OnePassCurveIsTheInterpolantOfTheDirections) {
     std::uniform_real_distribution<double> coordinate(-2.0, 2.0);
     for (const int dim : {2, 3})
         for (const bool closed : {false, true})
-            for (const spline::TangentRule rule : {spline::TangentRule::chord_of_neighbours, spline::TangentRule::circle})
+            for (const spline::TangentRule rule :
+                 {spline::TangentRule::chord_of_neighbours, spline::TangentRule::circle})
                 for (const int n : {3, 4, 50}) {
                     PointList p(n, dim);
                     for (Eigen::Index i = 0; i < n; ++i)
                         for (Eigen::Index c = 0; c < dim; ++c) p(i, c) = coordinate(rng);
                     const PiecewiseHermiteCurve one = spline::hermite_spline(p, rule, closed);
-                    const PiecewiseHermiteCurve two = spline::hermite_interpolant(p, spline::hermite_tangent_directions(p, rule, closed), closed);
+                    const PiecewiseHermiteCurve two =
+                        spline::hermite_interpolant(p, spline::hermite_tangent_directions(p, rule, closed), closed);
                     ASSERT_EQ(one.spans(), closed ? n : n - 1);
                     EXPECT_EQ(one.nodes(), two.nodes());
-                    EXPECT_EQ(one.start_derivatives(), two.start_derivatives()) << n << " points, dim " << dim << (closed ? ", closed" : ", open");
-                    EXPECT_EQ(one.end_derivatives(), two.end_derivatives()) << n << " points, dim " << dim << (closed ? ", closed" : ", open");
+                    EXPECT_EQ(one.start_derivatives(), two.start_derivatives())
+                        << n << " points, dim " << dim << (closed ? ", closed" : ", open");
+                    EXPECT_EQ(one.end_derivatives(), two.end_derivatives())
+                        << n << " points, dim " << dim << (closed ? ", closed" : ", open");
                 }
 }
 
@@ -154,15 +170,20 @@ TEST(HermiteCurves, PlanarColumnWisePathIsTheSpaceCurvesBitForBit) {
         PointList space = PointList::Zero(n, 3);
         space.leftCols(2) = p;
         for (const bool closed : {false, true})
-            for (const spline::TangentRule rule : {spline::TangentRule::chord_of_neighbours, spline::TangentRule::circle}) {
+            for (const spline::TangentRule rule :
+                 {spline::TangentRule::chord_of_neighbours, spline::TangentRule::circle}) {
                 if (n < 3 && (closed || rule == spline::TangentRule::circle)) continue;
-                const PiecewiseHermiteCurve planar = spline::hermite_spline(p, rule, closed), spatial = spline::hermite_spline(space, rule, closed);
-                EXPECT_EQ(planar.start_derivatives(), spatial.start_derivatives().leftCols(2)) << n << (closed ? " closed" : " open");
-                EXPECT_EQ(planar.end_derivatives(), spatial.end_derivatives().leftCols(2)) << n << (closed ? " closed" : " open");
+                const PiecewiseHermiteCurve planar = spline::hermite_spline(p, rule, closed),
+                                            spatial = spline::hermite_spline(space, rule, closed);
+                EXPECT_EQ(planar.start_derivatives(), spatial.start_derivatives().leftCols(2))
+                    << n << (closed ? " closed" : " open");
+                EXPECT_EQ(planar.end_derivatives(), spatial.end_derivatives().leftCols(2))
+                    << n << (closed ? " closed" : " open");
             }
     }
     PointList reverses(7, 2);
-    reverses << 0, 0, 1, 0, 2, 1, 3, 0, 2, 1, 3, 0, 5, 5;  // reverses at points 3 and 4 (P_2 = P_4, P_3 = P_5): the first is named
+    reverses << 0, 0, 1, 0, 2, 1, 3, 0, 2, 1, 3, 0, 5,
+        5;  // reverses at points 3 and 4 (P_2 = P_4, P_3 = P_5): the first is named
     for (const spline::TangentRule rule : {spline::TangentRule::chord_of_neighbours, spline::TangentRule::circle})
         for (const bool closed : {false, true}) {
             try {
@@ -185,20 +206,24 @@ TEST(PiecewiseHermiteCurve, FromNodeSlopesFormsTheDerivativePairs) {
                 const int spans = 9, slopes = closed ? spans : spans + 1;
                 Eigen::MatrixXd nodes(spans + 1, dim), m(slopes, dim);
                 for (Eigen::Index i = 0; i < nodes.rows(); ++i)
-                    for (int c = 0; c < dim; ++c) nodes(i, c) = coordinate(rng) + (c == 0 ? static_cast<double>(i) : 0.0);
+                    for (int c = 0; c < dim; ++c)
+                        nodes(i, c) = coordinate(rng) + (c == 0 ? static_cast<double>(i) : 0.0);
                 for (Eigen::Index i = 0; i < m.rows(); ++i)
                     for (int c = 0; c < dim; ++c) m(i, c) = coordinate(rng);
                 std::vector<double> h;
                 if (scaled)
                     for (int k = 0; k < spans; ++k) h.push_back(0.5 + std::abs(coordinate(rng)));
                 const PiecewiseHermiteCurve c = PiecewiseHermiteCurve::from_node_slopes(nodes, m, h);
-                const std::string what = std::to_string(dim) + "-D, " + (closed ? "closed" : "open") + (scaled ? ", scaled" : ", unit scales");
+                const std::string what = std::to_string(dim) + "-D, " + (closed ? "closed" : "open") +
+                                         (scaled ? ", scaled" : ", unit scales");
                 for (int k = 0; k < spans; ++k) {
                     const int next = k + 1 == slopes ? 0 : k + 1;
                     for (int col = 0; col < dim; ++col) {
                         const double hk = scaled ? h[static_cast<std::size_t>(k)] : 1.0;
-                        ASSERT_EQ(c.start_derivatives()(k, col), scaled ? hk * m(k, col) : m(k, col)) << what << " span " << k;
-                        ASSERT_EQ(c.end_derivatives()(k, col), scaled ? hk * m(next, col) : m(next, col)) << what << " span " << k;
+                        ASSERT_EQ(c.start_derivatives()(k, col), scaled ? hk * m(k, col) : m(k, col))
+                            << what << " span " << k;
+                        ASSERT_EQ(c.end_derivatives()(k, col), scaled ? hk * m(next, col) : m(next, col))
+                            << what << " span " << k;
                     }
                 }
             }
@@ -219,7 +244,8 @@ TEST(CubicSplines, SlopesAreTheSolveOfTheAssembledSystemBitForBit) {
                     if (closed && n < 3) continue;
                     PointList p(n, dim);
                     for (Eigen::Index i = 0; i < p.rows(); ++i)
-                        for (int c = 0; c < dim; ++c) p(i, c) = coordinate(rng) + (c == 0 ? static_cast<double>(i) : 0.0);
+                        for (int c = 0; c < dim; ++c)
+                            p(i, c) = coordinate(rng) + (c == 0 ? static_cast<double>(i) : 0.0);
                     const int spans = closed ? n : n - 1, N = closed ? spans : spans + 1;
                     const auto node = [&](int k) { return p.row(k % n); };
                     std::vector<double> h(static_cast<std::size_t>(spans), 1.0), sub, diag, sup;
@@ -236,18 +262,24 @@ TEST(CubicSplines, SlopesAreTheSolveOfTheAssembledSystemBitForBit) {
                         const int prev = k == 0 ? spans - 1 : k - 1, next = k;
                         const double hp = h[static_cast<std::size_t>(prev)], hn = h[static_cast<std::size_t>(next)];
                         sub.push_back(hn), diag.push_back(2.0 * (hp + hn)), sup.push_back(hp);
-                        rhs.row(k) = 3.0 * (hn * (node(prev + 1) - node(prev)) / hp + hp * (node(next + 1) - node(next)) / hn);
+                        rhs.row(k) =
+                            3.0 * (hn * (node(prev + 1) - node(prev)) / hp + hp * (node(next + 1) - node(next)) / hn);
                     }
-                    const Eigen::MatrixXd want = closed ? numeric::solve_cyclic_tridiagonal(sub, diag, sup, rhs) : numeric::solve_tridiagonal(sub, diag, sup, rhs);
+                    const Eigen::MatrixXd want = closed ? numeric::solve_cyclic_tridiagonal(sub, diag, sup, rhs)
+                                                        : numeric::solve_tridiagonal(sub, diag, sup, rhs);
                     const PiecewiseHermiteCurve c = spline::cubic_spline_interpolant(p, spacing, closed);
-                    const std::string what = std::to_string(dim) + "-D, " + std::to_string(n) + " points, " + (closed ? "closed" : "open") +
-                                             (spacing == spline::ParameterSpacing::uniform ? ", uniform" : ", chord length");
+                    const std::string what =
+                        std::to_string(dim) + "-D, " + std::to_string(n) + " points, " + (closed ? "closed" : "open") +
+                        (spacing == spline::ParameterSpacing::uniform ? ", uniform" : ", chord length");
                     for (int k = 0; k < spans; ++k) {
                         const double hk = h[static_cast<std::size_t>(k)];
                         const Eigen::RowVectorXd m0 = want.row(k), m1 = want.row(k + 1 == N ? 0 : k + 1);
-                        const Eigen::RowVectorXd d0 = spacing == spline::ParameterSpacing::uniform ? m0 : Eigen::RowVectorXd(hk * m0);
-                        const Eigen::RowVectorXd d1 = spacing == spline::ParameterSpacing::uniform ? m1 : Eigen::RowVectorXd(hk * m1);
-                        ASSERT_TRUE(c.start_derivatives().row(k) == d0 && c.end_derivatives().row(k) == d1) << what << ", span " << k;
+                        const Eigen::RowVectorXd d0 =
+                            spacing == spline::ParameterSpacing::uniform ? m0 : Eigen::RowVectorXd(hk * m0);
+                        const Eigen::RowVectorXd d1 =
+                            spacing == spline::ParameterSpacing::uniform ? m1 : Eigen::RowVectorXd(hk * m1);
+                        ASSERT_TRUE(c.start_derivatives().row(k) == d0 && c.end_derivatives().row(k) == d1)
+                            << what << ", span " << k;
                     }
                 }
 }
@@ -280,18 +312,27 @@ TEST(HermiteCurves, ValidatedPointsGiveTheSameCurvesAndAreCheckedWhereTheProofFa
             const ValidPoints valid = validate_points(p, 3, closed, "test");
             const std::string what = std::to_string(dim) + "-D, " + (closed ? "closed" : "open");
             for (auto rule : {spline::TangentRule::chord_of_neighbours, spline::TangentRule::circle}) {
-                const PiecewiseHermiteCurve a = spline::hermite_spline(valid, rule), b = spline::hermite_spline(p, rule, closed);
-                EXPECT_TRUE(a.nodes() == b.nodes() && a.start_derivatives() == b.start_derivatives() && a.end_derivatives() == b.end_derivatives()) << what;
+                const PiecewiseHermiteCurve a = spline::hermite_spline(valid, rule),
+                                            b = spline::hermite_spline(p, rule, closed);
+                EXPECT_TRUE(a.nodes() == b.nodes() && a.start_derivatives() == b.start_derivatives() &&
+                            a.end_derivatives() == b.end_derivatives())
+                    << what;
             }
             for (auto spacing : {spline::ParameterSpacing::uniform, spline::ParameterSpacing::chord_length}) {
-                const PiecewiseHermiteCurve a = spline::cubic_spline_interpolant(valid, spacing), b = spline::cubic_spline_interpolant(p, spacing, closed);
-                EXPECT_TRUE(a.nodes() == b.nodes() && a.start_derivatives() == b.start_derivatives() && a.end_derivatives() == b.end_derivatives()) << what;
+                const PiecewiseHermiteCurve a = spline::cubic_spline_interpolant(valid, spacing),
+                                            b = spline::cubic_spline_interpolant(p, spacing, closed);
+                EXPECT_TRUE(a.nodes() == b.nodes() && a.start_derivatives() == b.start_derivatives() &&
+                            a.end_derivatives() == b.end_derivatives())
+                    << what;
             }
         }
     PointList two(2, 2);
     two << 0, 0, 1, 0;
     const ValidPoints checked_for_two = validate_points(two, 2, false, "test");
-    const std::string m = cagd::test::invalid_input_message([&] { (void)spline::hermite_spline(checked_for_two, spline::TangentRule::circle); });
-    EXPECT_EQ(m, cagd::test::invalid_input_message([&] { (void)spline::hermite_spline(two, spline::TangentRule::circle, false); })) << "Hermite B needs 3 points";
+    const std::string m = cagd::test::invalid_input_message(
+        [&] { (void)spline::hermite_spline(checked_for_two, spline::TangentRule::circle); });
+    EXPECT_EQ(m, cagd::test::invalid_input_message(
+                     [&] { (void)spline::hermite_spline(two, spline::TangentRule::circle, false); }))
+        << "Hermite B needs 3 points";
     EXPECT_NE(m.find("at least 3"), std::string::npos) << m;
 }

@@ -82,10 +82,14 @@ TEST(HosakaSpline, ChordScaleIsTheChordLengthCubicSplineAndUnitScaleTheUniformOn
         spline::HosakaSplineOptions o;
         o.closed = closed;
         const auto chord = spline::hosaka_c2_spline(p, o);
-        EXPECT_LT(analysis::max_distance_same_parameter(chord.curve, spline::cubic_spline_interpolant(p, spline::ParameterSpacing::chord_length, closed)), 1e-12);
+        EXPECT_LT(analysis::max_distance_same_parameter(
+                      chord.curve, spline::cubic_spline_interpolant(p, spline::ParameterSpacing::chord_length, closed)),
+                  1e-12);
         o.scale = spline::HosakaScale::unit;
         const auto unit = spline::hosaka_c2_spline(p, o);
-        EXPECT_LT(analysis::max_distance_same_parameter(unit.curve, spline::cubic_spline_interpolant(p, spline::ParameterSpacing::uniform, closed)), 1e-12);
+        EXPECT_LT(analysis::max_distance_same_parameter(
+                      unit.curve, spline::cubic_spline_interpolant(p, spline::ParameterSpacing::uniform, closed)),
+                  1e-12);
     }
 }
 
@@ -96,7 +100,8 @@ TEST(HosakaSpline, JoinsSatisfyEq18WithTheErratumAndEndsHaveZeroCurvature) {
         const Eigen::MatrixXd right = s.curve.jet(j + 1, 2);
         const double kj = s.k[static_cast<std::size_t>(j)];
         EXPECT_NEAR(kj, (p.row(j + 1) - p.row(j)).norm() / (p.row(j + 2) - p.row(j + 1)).norm(), 1e-15) << "eq (19)";
-        EXPECT_NEAR((s.curve.jet(j + 0.999999999999, 2).row(1) - kj * right.row(1)).norm(), 0.0, 1e-9) << "R_i'(1) = k_i R_{i+1}'(0)";
+        EXPECT_NEAR((s.curve.jet(j + 0.999999999999, 2).row(1) - kj * right.row(1)).norm(), 0.0, 1e-9)
+            << "R_i'(1) = k_i R_{i+1}'(0)";
         EXPECT_NEAR((s.C.row(j) - kj * right.row(1)).norm(), 0.0, 1e-12);
         // Second derivatives from the segment's own end data (exact end values of the basis).
         const Eigen::RowVectorXd r2_end = -6 * (p.row(j + 1) - p.row(j)) + 2 * s.B.row(j) + 4 * s.C.row(j);
@@ -139,7 +144,9 @@ TEST(HosakaExplicit, InterpolatesIsC2WithNaturalEndsAndRejectsBadAbscissae) {
     const auto s = spline::hosaka_explicit_spline(x, y);
     for (int i = 0; i < 5; ++i) EXPECT_NEAR(s.evaluate(x[static_cast<std::size_t>(i)])(0), y(i, 0), 1e-14);
     for (int i = 1; i < 4; ++i)
-        for (int k : {1, 2}) EXPECT_NEAR(s.evaluate_in(i - 1, 1.0, k)(0), s.evaluate_in(i, 0.0, k)(0), 1e-12) << "C" << k << " at x_" << i;
+        for (int k : {1, 2})
+            EXPECT_NEAR(s.evaluate_in(i - 1, 1.0, k)(0), s.evaluate_in(i, 0.0, k)(0), 1e-12)
+                << "C" << k << " at x_" << i;
     EXPECT_NEAR(s.evaluate(0.0, 2)(0), 0.0, 1e-12);
     EXPECT_NEAR(s.evaluate(4.0, 2)(0), 0.0, 1e-12);
     // A straight line is reproduced and has zero energy.
@@ -154,16 +161,21 @@ TEST(HosakaExplicit, InterpolatesIsC2WithNaturalEndsAndRejectsBadAbscissae) {
 
 TEST(HosakaSpline, OrderMSplineIsContinuousTo2mAndReducesToEq20ForM1) {
     const cagd::PointList p = uneven_points();
-    EXPECT_LT(analysis::max_distance_same_parameter(spline::hosaka_spline(p, 1), spline::hosaka_c2_spline(p).curve), 1e-12);
+    EXPECT_LT(analysis::max_distance_same_parameter(spline::hosaka_spline(p, 1), spline::hosaka_c2_spline(p).curve),
+              1e-12);
     spline::HosakaSplineOptions closed;
     closed.closed = true;
-    EXPECT_LT(analysis::max_distance_same_parameter(spline::hosaka_spline(p, 1, spline::HosakaScale::chord, true), spline::hosaka_c2_spline(p, closed).curve), 1e-12);
+    EXPECT_LT(analysis::max_distance_same_parameter(spline::hosaka_spline(p, 1, spline::HosakaScale::chord, true),
+                                                    spline::hosaka_c2_spline(p, closed).curve),
+              1e-12);
     const spline::HosakaCurve c = spline::hosaka_spline(p, 2, spline::HosakaScale::unit);
     for (int s = 1; s < c.segments(); ++s)
         for (int k = 1; k <= 4; ++k) {  // unit scale: τ = u, so t-derivatives must match directly
             const spline::HosakaBasis b(2);
             Eigen::RowVectorXd left = Eigen::RowVectorXd::Zero(2);
-            for (int i = 0; i <= 2; ++i) left += b.p(i, 1.0, k) * c.start_derivatives(s - 1).row(i) + b.q(i, 1.0, k) * c.end_derivatives(s - 1).row(i);
+            for (int i = 0; i <= 2; ++i)
+                left += b.p(i, 1.0, k) * c.start_derivatives(s - 1).row(i) +
+                        b.q(i, 1.0, k) * c.end_derivatives(s - 1).row(i);
             const Eigen::RowVectorXd right = c.jet(s, k).row(k);
             EXPECT_NEAR((left - right).norm(), 0.0, 1e-9 * (1 + right.norm())) << "order " << k << " at join " << s;
         }
@@ -178,13 +190,16 @@ TEST(HosakaSpline, TangentEndsForAnyOrder) {
     o.start_tangent = Eigen::Vector2d(0.5, 1.0);
     o.end_tangent = Eigen::Vector2d(1.0, -2.0);
     // m = 1: the clamped spline of eq (20).
-    EXPECT_LT(analysis::max_distance_same_parameter(spline::hosaka_spline(p, 1, o), spline::hosaka_c2_spline(p, o).curve), 1e-12);
+    EXPECT_LT(
+        analysis::max_distance_same_parameter(spline::hosaka_spline(p, 1, o), spline::hosaka_c2_spline(p, o).curve),
+        1e-12);
     const spline::HosakaCurve c = spline::hosaka_spline(p, 2, o);
     const int last = c.segments() - 1;
     EXPECT_LT((c.segment_jet(0, 0.0, 1).row(1).transpose() - o.start_tangent).norm(), 1e-12);
     EXPECT_LT((c.segment_jet(last, 1.0, 1).row(1).transpose() - o.end_tangent).norm(), 1e-12);
-    EXPECT_LT(c.segment_jet(0, 0.0, 3).row(3).norm(), 1e-9 * c.segment_jet(0, 0.5, 3).row(3).norm() + 1e-9);  // order m+1 = 3 vanishes
-    EXPECT_GT(c.segment_jet(0, 0.0, 4).row(4).norm(), 1e-3);                                                  // order 2m does not
+    EXPECT_LT(c.segment_jet(0, 0.0, 3).row(3).norm(),
+              1e-9 * c.segment_jet(0, 0.5, 3).row(3).norm() + 1e-9);  // order m+1 = 3 vanishes
+    EXPECT_GT(c.segment_jet(0, 0.0, 4).row(4).norm(), 1e-3);          // order 2m does not
     // Differs from the natural m = 2 spline, and bad tangents are rejected.
     EXPECT_GT(analysis::max_distance_same_parameter(c, spline::hosaka_spline(p, 2)), 1e-3);
     o.end_tangent = Eigen::Vector3d(1, 0, 0);
@@ -222,14 +237,16 @@ TEST(HosakaSpline, JetIntoIsTheJetBitForBit) {
                     const Eigen::MatrixXd expected = curve.jet(x, order);
                     ASSERT_EQ(J.rows(), expected.rows());
                     for (Eigen::Index r = 0; r < J.rows(); ++r)
-                        for (int c = 0; c < dim; ++c) EXPECT_EQ(J(r, c), expected(r, c)) << "m " << m << ", u " << x << ", row " << r;
+                        for (int c = 0; c < dim; ++c)
+                            EXPECT_EQ(J(r, c), expected(r, c)) << "m " << m << ", u " << x << ", row " << r;
                 }
                 for (int order = 1; order <= kJetCapacity; ++order) {  // derivatives_into: the jet without its position
                     curve.derivatives_into(x, order, J);
                     const Eigen::MatrixXd expected = curve.jet(x, order).bottomRows(order);
                     ASSERT_EQ(J.rows(), expected.rows());
                     for (Eigen::Index r = 0; r < J.rows(); ++r)
-                        for (int c = 0; c < dim; ++c) EXPECT_EQ(J(r, c), expected(r, c)) << "m " << m << ", u " << x << ", derivative " << r + 1;
+                        for (int c = 0; c < dim; ++c)
+                            EXPECT_EQ(J(r, c), expected(r, c)) << "m " << m << ", u " << x << ", derivative " << r + 1;
                 }
             }
         }
@@ -247,7 +264,8 @@ TEST(HosakaSpline, ValidatedPointsGiveTheSameCurves) {
         spline::HosakaSplineOptions o;
         o.closed = closed;
         const ValidPoints valid = validate_points(p, 3, closed, "test");
-        const spline::HosakaCurve c2 = spline::hosaka_c2_spline(valid, o).curve, c2_list = spline::hosaka_c2_spline(p, o).curve;
+        const spline::HosakaCurve c2 = spline::hosaka_c2_spline(valid, o).curve,
+                                  c2_list = spline::hosaka_c2_spline(p, o).curve;
         const spline::HosakaCurve c3 = spline::hosaka_spline(valid, 3, o), c3_list = spline::hosaka_spline(p, 3, o);
         JetMatrix a, b;
         for (double t = 0.0; t <= c2.t_max(); t += 0.37) {
@@ -263,8 +281,10 @@ TEST(HosakaSpline, ValidatedPointsGiveTheSameCurves) {
     q.row(5) = q.row(0);
     spline::HosakaSplineOptions closed_options;
     closed_options.closed = true;
-    EXPECT_THROW((void)spline::hosaka_c2_spline(validate_points(q, 3, false, "test"), closed_options), InvalidInput) << "last = first: no closing chord";
-    EXPECT_THROW((void)spline::hosaka_spline(validate_points(q, 3, false, "test"), 3, closed_options), InvalidInput) << "last = first: no closing chord";
+    EXPECT_THROW((void)spline::hosaka_c2_spline(validate_points(q, 3, false, "test"), closed_options), InvalidInput)
+        << "last = first: no closing chord";
+    EXPECT_THROW((void)spline::hosaka_spline(validate_points(q, 3, false, "test"), 3, closed_options), InvalidInput)
+        << "last = first: no closing chord";
 }
 
 TEST(HosakaSpline, SpanLengthsAreTheChordsAndGiveEq19BitForBit) {

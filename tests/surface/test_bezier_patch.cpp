@@ -55,7 +55,8 @@ TEST(BezierPatch, GridAndDeCasteljauAgreeAtDegree24) {
     const surface::SurfaceGrid g = patch.evaluate_grid(us, vs);
     for (Eigen::Index a = 0; a < 3; ++a)
         for (Eigen::Index b = 0; b < 3; ++b) {
-            const analysis::SurfaceJet2 x = g.jet(a, b), y = patch.jet_de_casteljau(us[static_cast<std::size_t>(a)], vs[static_cast<std::size_t>(b)]);
+            const analysis::SurfaceJet2 x = g.jet(a, b), y = patch.jet_de_casteljau(us[static_cast<std::size_t>(a)],
+                                                                                    vs[static_cast<std::size_t>(b)]);
             EXPECT_LT((x.s - y.s).norm(), 1e-13);
             EXPECT_LT((x.suv - y.suv).norm(), 1e-10);
             EXPECT_LT((x.svv - y.svv).norm(), 1e-10);

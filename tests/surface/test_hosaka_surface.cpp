@@ -27,7 +27,8 @@ CornerDerivatives random_corners(int m, int dim, unsigned seed) {
             for (int i = 0; i <= m; ++i)
                 for (int j = 0; j <= m; ++j) {
                     Eigen::VectorXd v(dim);
-                    for (int r = 0; r < dim; ++r) v(r) = d(rng) + (i == 0 && j == 0 ? 2.0 * (r == 0 ? k : r == 1 ? l : 0) : 0.0);
+                    for (int r = 0; r < dim; ++r)
+                        v(r) = d(rng) + (i == 0 && j == 0 ? 2.0 * (r == 0 ? k : r == 1 ? l : 0) : 0.0);
                     c.at(k, l, i, j) = v;
                 }
     return c;
@@ -40,7 +41,8 @@ BoundaryCurve boundary(int m, int k) {
     c.x_min = 0.0;
     c.x_max = 2.0;
     c.y = k == 0 ? sinusoid(0.2, 1.0, 0.0) : polynomial_function({1.5, 0.0, 0.1});
-    for (int j = 0; j <= m; ++j) c.phi.push_back(sinusoid(0.5 / (j + 1), 1.0 + 0.3 * j + 0.2 * k, 0.4 * j - k, j == 0 ? 0.3 * k : 0.0));
+    for (int j = 0; j <= m; ++j)
+        c.phi.push_back(sinusoid(0.5 / (j + 1), 1.0 + 0.3 * j + 0.2 * k, 0.4 * j - k, j == 0 ? 0.3 * k : 0.0));
     return c;
 }
 
@@ -52,7 +54,9 @@ TEST(HosakaPatch, InterpolatesEveryCornerDerivative) {
         for (int k = 0; k < 2; ++k)
             for (int l = 0; l < 2; ++l)
                 for (int i = 0; i <= m; ++i)
-                    for (int j = 0; j <= m; ++j) EXPECT_LT((patch.derivative(k, l, i, j) - patch.corners().at(k, l, i, j)).norm(), 1e-11) << m << k << l << i << j;
+                    for (int j = 0; j <= m; ++j)
+                        EXPECT_LT((patch.derivative(k, l, i, j) - patch.corners().at(k, l, i, j)).norm(), 1e-11)
+                            << m << k << l << i << j;
     }
     EXPECT_THROW(HosakaPatch(random_corners(1, 3, 1)).point(1.5, 0.5), InvalidInput);
 }
@@ -67,7 +71,8 @@ TEST(EdgeFormPatch, WithTwistsEqualsTensorPatchAndWithoutIsCoons) {
         for (int s = 0; s < 50; ++s) {
             const double u = d(rng), v = d(rng);
             for (int a = 0; a <= 2; ++a)
-                for (int b = 0; b <= 2; ++b) EXPECT_LT((full.derivative(u, v, a, b) - patch.derivative(u, v, a, b)).norm(), 1e-11);
+                for (int b = 0; b <= 2; ++b)
+                    EXPECT_LT((full.derivative(u, v, a, b) - patch.derivative(u, v, a, b)).norm(), 1e-11);
             EXPECT_LT((coons.point(u, v) - coons_boolean_sum(edges, m, u, v)).norm(), 1e-13);
             // Coons contains the edges.
             EXPECT_LT((coons.point(u, 0) - patch.point(u, 0)).norm(), 1e-13);
@@ -75,9 +80,10 @@ TEST(EdgeFormPatch, WithTwistsEqualsTensorPatchAndWithoutIsCoons) {
         }
         for (int k = 0; k < 2; ++k)
             for (int l = 0; l < 2; ++l) {
-                EXPECT_LT(coons.derivative(k, l, 1, 1).norm(), 1e-12);                                   // zero twist
-                EXPECT_GT(patch.derivative(k, l, 1, 1).norm(), 1e-3);                                    // the data's is not
-                EXPECT_LT((coons.derivative(k, l, 1, 0) - patch.derivative(k, l, 1, 0)).norm(), 1e-12);  // edge tangents kept
+                EXPECT_LT(coons.derivative(k, l, 1, 1).norm(), 1e-12);  // zero twist
+                EXPECT_GT(patch.derivative(k, l, 1, 1).norm(), 1e-3);   // the data's is not
+                EXPECT_LT((coons.derivative(k, l, 1, 0) - patch.derivative(k, l, 1, 0)).norm(),
+                          1e-12);  // edge tangents kept
             }
     }
 }
@@ -96,8 +102,12 @@ TEST(EdgeFormPatch, RejectsEdgesThatDoNotMeet) {
 TEST(CartesianSurface, ReproducesPolynomialsOfDegreeTwoMPlusOneAndIsCmAcrossLines) {
     // ζ = x³y² − 2xy³ + y (bidegree ≤ 3): m = 1 with exact node derivatives reproduces it exactly.
     const auto zeta = [](double x, double y, int a, int b) {
-        const auto px = [&](int p) { return a > p ? 0.0 : std::tgamma(p + 1) / std::tgamma(p - a + 1) * std::pow(x, p - a); };
-        const auto py = [&](int p) { return b > p ? 0.0 : std::tgamma(p + 1) / std::tgamma(p - b + 1) * std::pow(y, p - b); };
+        const auto px = [&](int p) {
+            return a > p ? 0.0 : std::tgamma(p + 1) / std::tgamma(p - a + 1) * std::pow(x, p - a);
+        };
+        const auto py = [&](int p) {
+            return b > p ? 0.0 : std::tgamma(p + 1) / std::tgamma(p - b + 1) * std::pow(y, p - b);
+        };
         return px(3) * py(2) - 2 * px(1) * py(3) + px(0) * py(1);
     };
     const std::vector<double> x{0, 0.4, 1.5, 2}, y{-1, 0.3, 1};
@@ -113,7 +123,8 @@ TEST(CartesianSurface, ReproducesPolynomialsOfDegreeTwoMPlusOneAndIsCmAcrossLine
     for (double xs : {0.0, 0.3, 0.9, 1.7, 2.0})
         for (double ys : {-1.0, -0.2, 0.5, 1.0})
             for (int a = 0; a <= 2; ++a)
-                for (int b = 0; b <= 2; ++b) EXPECT_NEAR(s.derivative(xs, ys, a, b), zeta(xs, ys, a, b), 1e-11) << xs << ys << a << b;
+                for (int b = 0; b <= 2; ++b)
+                    EXPECT_NEAR(s.derivative(xs, ys, a, b), zeta(xs, ys, a, b), 1e-11) << xs << ys << a << b;
     EXPECT_THROW(s.value(2.5, 0), InvalidInput);
     EXPECT_THROW(CartesianSurface(1, {0, 0}, y, nodes), InvalidInput);
 }
@@ -122,12 +133,15 @@ TEST(CartesianSplineSurface, InterpolatesHeightsAndIsC2AlongGridLines) {
     const std::vector<double> x{0, 0.5, 1.6, 2.0, 3.0}, y{0, 0.7, 1.1, 2.0};
     Eigen::MatrixXd z(5, 4);
     for (int a = 0; a < 5; ++a)
-        for (int b = 0; b < 4; ++b) z(a, b) = std::sin(x[static_cast<std::size_t>(a)]) * std::cos(y[static_cast<std::size_t>(b)]);
+        for (int b = 0; b < 4; ++b)
+            z(a, b) = std::sin(x[static_cast<std::size_t>(a)]) * std::cos(y[static_cast<std::size_t>(b)]);
     const CartesianSurface s = cartesian_spline_surface(x, y, z);
     for (int a = 0; a < 5; ++a)
-        for (int b = 0; b < 4; ++b) EXPECT_NEAR(s.value(x[static_cast<std::size_t>(a)], y[static_cast<std::size_t>(b)]), z(a, b), 1e-14);
+        for (int b = 0; b < 4; ++b)
+            EXPECT_NEAR(s.value(x[static_cast<std::size_t>(a)], y[static_cast<std::size_t>(b)]), z(a, b), 1e-14);
     // ζ^{(2,0)} continuous across x = x_1 (the spline's C2) for v inside a cell.
-    for (double v : {0.2, 0.6}) EXPECT_NEAR(s.derivative_in(0, 1, 1.0, v, 2, 0), s.derivative_in(1, 1, 0.0, v, 2, 0), 1e-11);
+    for (double v : {0.2, 0.6})
+        EXPECT_NEAR(s.derivative_in(0, 1, 1.0, v, 2, 0), s.derivative_in(1, 1, 0.0, v, 2, 0), 1e-11);
     // ζ^{(1,1)} from the splines along y of ζ^{(1,0)} equals the one along x of ζ^{(0,1)} (tensor spline).
     const Eigen::MatrixXd zy = spline::hosaka_explicit_spline(y, z.transpose()).slopes;    // ny × nx
     const Eigen::MatrixXd zyx = spline::hosaka_explicit_spline(x, zy.transpose()).slopes;  // nx × ny
@@ -157,7 +171,8 @@ TEST(BoundaryConformingSurface, RecurrenceAgreesWithDirectDifferentiationAndFini
                 for (int i = 0; i <= 4; ++i)
                     for (int n = 0; n <= 3; ++n) {
                         const double direct = s.derivative_direct(x, y, i, n);
-                        EXPECT_NEAR(s.derivative(x, y, i, n), direct, 1e-10 * (1 + std::abs(direct))) << m << " " << x << " " << v << " " << i << " " << n;
+                        EXPECT_NEAR(s.derivative(x, y, i, n), direct, 1e-10 * (1 + std::abs(direct)))
+                            << m << " " << x << " " << v << " " << i << " " << n;
                     }
                 if (v > 0.0 && v < 1.0) {  // the jets against a central difference in x (inside the section)
                     const double h = 1e-5, fd = (s.value(x + h, y) - s.value(x - h, y)) / (2 * h);
@@ -203,7 +218,8 @@ TEST(SectionJoinedSurface, AgreesWithTheFirstSurfaceToOrderMAcrossTheSeam) {
         for (double v : {0.1, 0.5, 0.9}) {
             const double y = y0 + v * (y1 - y0);
             for (int n = 0; n <= 2; ++n) {
-                for (int i = 0; i <= m; ++i) worst = std::max(worst, std::abs(a.derivative(x0, y, i, n) - b.derivative(x0, y, i, n)));
+                for (int i = 0; i <= m; ++i)
+                    worst = std::max(worst, std::abs(a.derivative(x0, y, i, n) - b.derivative(x0, y, i, n)));
                 next = std::max(next, std::abs(a.derivative(x0, y, m + 1, n) - b.derivative(x0, y, m + 1, n)));
             }
         }

@@ -29,8 +29,8 @@
 #include <vector>
 
 #include "cagd/compare/comparison_figure.hpp"
-#include "cagd/compare/locality_footprint.hpp"
 #include "cagd/compare/comparison_tables.hpp"
+#include "cagd/compare/locality_footprint.hpp"
 #include "cagd/compare/method_comparison.hpp"
 #include "cagd/core/errors.hpp"
 #include "cagd/core/point_csv.hpp"
@@ -67,11 +67,16 @@ cagd::PointList points_of(const val& request) {
     const val p = request["points"];
     if (p.isUndefined() || p.isNull()) cagd::fail_input("viewer", "the request has no points");
     const std::vector<double> flat = emscripten::convertJSArrayToNumberVector<double>(p);
-    if (flat.size() % 2 != 0) cagd::fail_input("viewer", "points needs an even count of coordinates (x, y pairs), got " + std::to_string(flat.size()));
+    if (flat.size() % 2 != 0)
+        cagd::fail_input("viewer",
+                         "points needs an even count of coordinates (x, y pairs), got " + std::to_string(flat.size()));
     const long n = static_cast<long>(flat.size() / 2);
-    if (n > kMaxViewerPoints) cagd::fail_input("viewer", std::to_string(n) + " points; the viewer takes at most " + std::to_string(kMaxViewerPoints));
+    if (n > kMaxViewerPoints)
+        cagd::fail_input("viewer",
+                         std::to_string(n) + " points; the viewer takes at most " + std::to_string(kMaxViewerPoints));
     cagd::PointList points(n, 2);
-    for (long i = 0; i < n; ++i) points.row(i) << flat[static_cast<std::size_t>(2 * i)], flat[static_cast<std::size_t>(2 * i + 1)];
+    for (long i = 0; i < n; ++i)
+        points.row(i) << flat[static_cast<std::size_t>(2 * i)], flat[static_cast<std::size_t>(2 * i + 1)];
     return points;
 }
 
@@ -83,7 +88,8 @@ bool flag(const val& request, const char* name) {
 cagd::methods::ParameterText parameters_of(const val& object) {
     cagd::methods::ParameterText text;
     if (object.isUndefined() || object.isNull()) return text;
-    const std::vector<std::string> keys = emscripten::vecFromJSArray<std::string>(val::global("Object").call<val>("keys", object));
+    const std::vector<std::string> keys =
+        emscripten::vecFromJSArray<std::string>(val::global("Object").call<val>("keys", object));
     // As text whatever JavaScript type it has (a number typed into the console, a string from the page).
     for (const std::string& k : keys) text[k] = val::global("String")(object[k]).as<std::string>();
     return text;
@@ -194,14 +200,18 @@ val compare(const val& request) {
         const int count = list.isUndefined() ? 0 : list["length"].as<int>();
         if (count == 0) return failure("viewer: no configuration chosen");
         for (int i = 0; i < count; ++i)
-            options.configurations.push_back(cagd::methods::find_configuration(val::global("String")(list[i]["name"]).as<std::string>(), parameters_of(list[i]["parameters"])));
+            options.configurations.push_back(cagd::methods::find_configuration(
+                val::global("String")(list[i]["name"]).as<std::string>(), parameters_of(list[i]["parameters"])));
         const int per_span = request["perSpan"].isUndefined() ? 16 : request["perSpan"].as<int>();
-        if (per_span < 1 || per_span > kMaxPerSpan) return failure("viewer: perSpan = " + std::to_string(per_span) + "; allowed 1.." + std::to_string(kMaxPerSpan));
+        if (per_span < 1 || per_span > kMaxPerSpan)
+            return failure("viewer: perSpan = " + std::to_string(per_span) + "; allowed 1.." +
+                           std::to_string(kMaxPerSpan));
         // A drag frame (continuation) starts the iterative methods from the last frame's solutions:
         // fewer Newton iterations, the same solution branch. Other frames (the drag's end, a new
         // state, a link) solve anew, as the native library does.
         SolverStates& states = last_solver_states();
-        if (flag(request, "continuation") && states.points == points.rows() && states.closed == options.closed) options.starts = states.by_configuration;
+        if (flag(request, "continuation") && states.points == points.rows() && states.closed == options.closed)
+            options.starts = states.by_configuration;
         const auto start = std::chrono::steady_clock::now();
         const std::vector<cagd::compare::MethodComparison> rows = cagd::compare::compare_methods(points, options);
         states = {points.rows(), options.closed, {}};
@@ -210,20 +220,32 @@ val compare(const val& request) {
         const auto compared = std::chrono::steady_clock::now();
         const bool with_figure = request["figure"].isUndefined() || request["figure"].as<bool>();
         const cagd::compare::FigureData figure =
-            with_figure ? cagd::compare::comparison_figure_data(rows, points, {.per_span = per_span, .span_stride = 1, .arc_length = cagd::compare::FigureSampling::ArcLength::trapezoid}) : cagd::compare::FigureData{};
+            with_figure ? cagd::compare::comparison_figure_data(
+                              rows, points,
+                              {.per_span = per_span,
+                               .span_stride = 1,
+                               .arc_length = cagd::compare::FigureSampling::ArcLength::trapezoid})
+                        : cagd::compare::FigureData{};
         const auto drawn = std::chrono::steady_clock::now();
         const double diagonal = cagd::bounding_box_diagonal(points);
         if (flag(request, "anchor")) {
             anchors().clear();
             for (const auto& r : rows)
-                if (r.interpolant) anchors().emplace(r.method, cagd::compare::span_samples(*r.interpolant, kMotionSamples));
+                if (r.interpolant)
+                    anchors().emplace(r.method, cagd::compare::span_samples(*r.interpolant, kMotionSamples));
         }
         const bool motion = flag(request, "motion");
         // The figure data's rows, split by method index (column 0).
         std::vector<std::vector<double>> curves(rows.size()), profiles(rows.size()), combs(rows.size());
-        for (const auto& r : figure.curves) curves[static_cast<std::size_t>(r[0])].insert(curves[static_cast<std::size_t>(r[0])].end(), r.begin() + 1, r.end());
-        for (const auto& r : figure.profiles) profiles[static_cast<std::size_t>(r[0])].insert(profiles[static_cast<std::size_t>(r[0])].end(), r.begin() + 1, r.end());
-        for (const auto& r : figure.combs) combs[static_cast<std::size_t>(r[0])].insert(combs[static_cast<std::size_t>(r[0])].end(), r.begin() + 1, r.end());
+        for (const auto& r : figure.curves)
+            curves[static_cast<std::size_t>(r[0])].insert(curves[static_cast<std::size_t>(r[0])].end(), r.begin() + 1,
+                                                          r.end());
+        for (const auto& r : figure.profiles)
+            profiles[static_cast<std::size_t>(r[0])].insert(profiles[static_cast<std::size_t>(r[0])].end(),
+                                                            r.begin() + 1, r.end());
+        for (const auto& r : figure.combs)
+            combs[static_cast<std::size_t>(r[0])].insert(combs[static_cast<std::size_t>(r[0])].end(), r.begin() + 1,
+                                                         r.end());
         val results = val::array();
         double comb_scale = 0.0;
         for (std::size_t i = 0; i < rows.size(); ++i) {
@@ -240,9 +262,11 @@ val compare(const val& request) {
             if (with_figure && figure.comb_scale[i] > 0) comb_scale = figure.comb_scale[i];
             if (motion && r.interpolant) {
                 const auto a = anchors().find(r.method);
-                const Eigen::Index sample_rows = static_cast<Eigen::Index>(r.interpolant->node_parameters.size() - 1) * (kMotionSamples + 1);
+                const Eigen::Index sample_rows =
+                    static_cast<Eigen::Index>(r.interpolant->node_parameters.size() - 1) * (kMotionSamples + 1);
                 if (a != anchors().end() && a->second.rows() == sample_rows) {
-                    std::vector<double> moved = cagd::compare::span_displacements(a->second, cagd::compare::span_samples(*r.interpolant, kMotionSamples), kMotionSamples);
+                    std::vector<double> moved = cagd::compare::span_displacements(
+                        a->second, cagd::compare::span_samples(*r.interpolant, kMotionSamples), kMotionSamples);
                     for (double& d : moved) d /= diagonal;
                     o.set("motion", float64_array(moved));
                 }
@@ -252,7 +276,8 @@ val compare(const val& request) {
         val out = val::object();
         if (options.measures) {
             val table = val::array();
-            for (const auto& row : cagd::compare::comparison_rows(rows, options.closed, false, 6)) table.call<void>("push", js_array(row));
+            for (const auto& row : cagd::compare::comparison_rows(rows, options.closed, false, 6))
+                table.call<void>("push", js_array(row));
             out.set("header", js_array(cagd::compare::comparison_header(options.closed, false)));
             out.set("rows", table);
         }
@@ -272,19 +297,24 @@ val export_curve(const val& request) {
     try {
         const cagd::PointList points = points_of(request);
         const bool closed = flag(request, "closed");
-        const cagd::methods::Configuration c = cagd::methods::find_configuration(val::global("String")(request["name"]).as<std::string>(), parameters_of(request["parameters"]));
-        const cagd::exports::CurveFormat format = cagd::exports::curve_format_named(val::global("String")(request["format"]).as<std::string>());
+        const cagd::methods::Configuration c = cagd::methods::find_configuration(
+            val::global("String")(request["name"]).as<std::string>(), parameters_of(request["parameters"]));
+        const cagd::exports::CurveFormat format =
+            cagd::exports::curve_format_named(val::global("String")(request["format"]).as<std::string>());
         const cagd::methods::InterpolationResult r = cagd::methods::interpolate(c, points, closed);
         if (!r.outcome.ok() || !r.interpolant) return failure(c.name + ": " + cagd::one_line(r.outcome.message));
         // As `cagd interpolate` writes it: the curve in the method's own parameter, with its provenance.
         const cagd::methods::MethodParameterCurve curve(*r.interpolant);
-        const cagd::exports::CurveProvenance provenance = cagd::methods::method_provenance(*c.method, c.values, points, closed);
+        const cagd::exports::CurveProvenance provenance =
+            cagd::methods::method_provenance(*c.method, c.values, points, closed);
         cagd::exports::ExportOptions options;
         options.points = true;
         options.comb = flag(request, "comb");
         if (!request["samples"].isUndefined()) options.samples.per_piece = request["samples"].as<int>();
         std::ostringstream text;
-        if (const cagd::Outcome written = cagd::exports::write_curve(text, format, curve, provenance, options); !written.ok()) return failure(cagd::one_line(written.message));
+        if (const cagd::Outcome written = cagd::exports::write_curve(text, format, curve, provenance, options);
+            !written.ok())
+            return failure(cagd::one_line(written.message));
         val out = val::object();
         out.set("ok", true);
         out.set("text", text.str());
@@ -298,8 +328,11 @@ val read_points(const std::string& text, const std::string& source) {
     try {
         std::istringstream in(text);
         const cagd::PointList p = cagd::read_points_csv(in, source);
-        if (p.cols() != 2) return failure(source + ": the viewer is planar: needs 2 columns (x, y), got " + std::to_string(p.cols()));
-        if (p.rows() > kMaxViewerPoints) return failure(source + ": " + std::to_string(p.rows()) + " points; the viewer takes at most " + std::to_string(kMaxViewerPoints));
+        if (p.cols() != 2)
+            return failure(source + ": the viewer is planar: needs 2 columns (x, y), got " + std::to_string(p.cols()));
+        if (p.rows() > kMaxViewerPoints)
+            return failure(source + ": " + std::to_string(p.rows()) + " points; the viewer takes at most " +
+                           std::to_string(kMaxViewerPoints));
         val points = val::array();
         for (Eigen::Index i = 0; i < p.rows(); ++i) {
             val row = val::array();

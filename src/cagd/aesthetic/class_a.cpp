@@ -8,7 +8,8 @@ namespace cagd::aesthetic {
 
 namespace {
 void require_square(const Eigen::MatrixXd& m, const char* who) {
-    if (m.rows() != m.cols() || m.rows() < 2 || m.rows() > 3) fail_input(who, "matrix must be 2x2 or 3x3, got " + std::to_string(m.rows()) + "x" + std::to_string(m.cols()));
+    if (m.rows() != m.cols() || m.rows() < 2 || m.rows() > 3)
+        fail_input(who, "matrix must be 2x2 or 3x3, got " + std::to_string(m.rows()) + "x" + std::to_string(m.cols()));
     if (!m.allFinite()) fail_input(who, "matrix has a non-finite entry");
 }
 }  // namespace
@@ -18,7 +19,8 @@ ClassATest class_a_test(const Eigen::MatrixXd& m, double tolerance) {
     const Eigen::Index d = m.rows();
     const Eigen::MatrixXd id = Eigen::MatrixXd::Identity(d, d);
     ClassATest r;
-    r.min_eig_symmetric_part = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(m.transpose() + m - 2.0 * id).eigenvalues().minCoeff();
+    r.min_eig_symmetric_part =
+        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(m.transpose() + m - 2.0 * id).eigenvalues().minCoeff();
     r.min_eig_gram = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(m.transpose() * m - id).eigenvalues().minCoeff();
     r.singular_values = Eigen::JacobiSVD<Eigen::MatrixXd>(m).singularValues();
     r.eq1 = r.min_eig_symmetric_part >= -tolerance;
@@ -35,7 +37,9 @@ ClassATest class_a_test(const Eigen::MatrixXd& m, double tolerance) {
 
 Eigen::Matrix2d typical_matrix(double theta, double scale) {
     if (!std::isfinite(theta) || !(scale > 0.0) || !std::isfinite(scale))
-        fail_input("cagd::aesthetic::typical_matrix", "theta = " + full_precision(theta) + ", scale = " + full_precision(scale) + " (need finite theta, finite scale > 0)");
+        fail_input("cagd::aesthetic::typical_matrix", "theta = " + full_precision(theta) +
+                                                          ", scale = " + full_precision(scale) +
+                                                          " (need finite theta, finite scale > 0)");
     Eigen::Matrix2d m;
     m << std::cos(theta), -std::sin(theta), std::sin(theta), std::cos(theta);
     return scale * m;
@@ -43,16 +47,19 @@ Eigen::Matrix2d typical_matrix(double theta, double scale) {
 
 bool typical_matrix_condition(double theta, double scale) {
     if (!std::isfinite(theta) || !(scale > 0.0) || !std::isfinite(scale))
-        fail_input("cagd::aesthetic::typical_matrix_condition",
-                   "theta = " + full_precision(theta) + ", scale = " + full_precision(scale) + " (need finite theta, finite scale > 0)");
+        fail_input("cagd::aesthetic::typical_matrix_condition", "theta = " + full_precision(theta) +
+                                                                    ", scale = " + full_precision(scale) +
+                                                                    " (need finite theta, finite scale > 0)");
     if (scale > 1.0) return std::cos(theta) > 1.0 / scale;
     if (scale < 1.0) return std::cos(theta) > scale;
     return false;  // s = 1: (4) is silent; Mᵀ + M − 2I = 2(cos θ − 1) I ≥ 0 only for θ = 0
 }
 
-Eigen::MatrixXd nonstationary_control_points(const Eigen::VectorXd& b0, const Eigen::VectorXd& db0, const std::vector<Eigen::MatrixXd>& matrices) {
+Eigen::MatrixXd nonstationary_control_points(const Eigen::VectorXd& b0, const Eigen::VectorXd& db0,
+                                             const std::vector<Eigen::MatrixXd>& matrices) {
     const char* who = "cagd::aesthetic::nonstationary_control_points";
-    if (b0.size() != db0.size() || b0.size() < 2 || b0.size() > 3) fail_input(who, "b0 and db0 must both be 2- or 3-vectors");
+    if (b0.size() != db0.size() || b0.size() < 2 || b0.size() > 3)
+        fail_input(who, "b0 and db0 must both be 2- or 3-vectors");
     if (!b0.allFinite() || !db0.allFinite()) fail_input(who, "b0 or db0 has a non-finite entry");
     if (!(db0.norm() > 0.0)) fail_input(who, "db0 is the zero vector (zero-length first edge)");
     for (const auto& m : matrices) {
@@ -70,7 +77,8 @@ Eigen::MatrixXd nonstationary_control_points(const Eigen::VectorXd& b0, const Ei
     return pts;
 }
 
-Eigen::MatrixXd class_a_control_points(const Eigen::VectorXd& b0, const Eigen::VectorXd& db0, const Eigen::MatrixXd& m, int degree) {
+Eigen::MatrixXd class_a_control_points(const Eigen::VectorXd& b0, const Eigen::VectorXd& db0, const Eigen::MatrixXd& m,
+                                       int degree) {
     if (degree < 1) fail_input("cagd::aesthetic::class_a_control_points", "degree " + std::to_string(degree) + " < 1");
     return nonstationary_control_points(b0, db0, std::vector<Eigen::MatrixXd>(static_cast<std::size_t>(degree - 1), m));
 }
@@ -80,7 +88,8 @@ PlanarTransitions planar_transitions(const Eigen::MatrixXd& points) {
     if (points.cols() != 2 || points.rows() < 3) fail_input(who, "needs at least 3 planar points");
     PlanarTransitions t;
     for (Eigen::Index j = 0; j + 2 < points.rows(); ++j) {
-        const Eigen::Vector2d a = (points.row(j + 1) - points.row(j)).transpose(), b = (points.row(j + 2) - points.row(j + 1)).transpose();
+        const Eigen::Vector2d a = (points.row(j + 1) - points.row(j)).transpose(),
+                              b = (points.row(j + 2) - points.row(j + 1)).transpose();
         if (!(a.norm() > 0.0) || !(b.norm() > 0.0)) fail_input(who, "zero-length edge at point " + std::to_string(j));
         t.rotations.push_back(std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b)));
         t.scales.push_back(b.norm() / a.norm());

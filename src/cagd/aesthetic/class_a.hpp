@@ -30,8 +30,8 @@ struct ClassATest {
     bool eq2 = false;                     ///< both eigenvalue tests of eq (2)
     bool singular_at_least_one = false;   ///< σ_min ≥ 1
     bool cao_wang = false;                ///< eq (3)
-    bool symmetric = false;  ///< M symmetric (to the tolerance)
-    bool class_a = false;  ///< eq2 && singular_at_least_one && cao_wang
+    bool symmetric = false;               ///< M symmetric (to the tolerance)
+    bool class_a = false;                 ///< eq2 && singular_at_least_one && cao_wang
 };
 /// The tests above for M; `tolerance` relaxes every inequality by that amount.
 ClassATest class_a_test(const Eigen::MatrixXd& m, double tolerance = 0.0);
@@ -40,15 +40,17 @@ Eigen::Matrix2d typical_matrix(double theta, double scale);  ///< s R_θ
 bool typical_matrix_condition(double theta, double scale);   ///< eq (4)
 
 /// b_0, b_1 = b_0 + Δb_0, b_{j+1} = b_j + M^j Δb_0, j < degree: (degree + 1) × dim.
-Eigen::MatrixXd class_a_control_points(const Eigen::VectorXd& b0, const Eigen::VectorXd& db0, const Eigen::MatrixXd& m, int degree);
+Eigen::MatrixXd class_a_control_points(const Eigen::VectorXd& b0, const Eigen::VectorXd& db0, const Eigen::MatrixXd& m,
+                                       int degree);
 /// Δb_j = M_{j−1} ⋯ M_0 Δb_0 for matrices M_0 … M_{n−2}: n + 1 points.
-Eigen::MatrixXd nonstationary_control_points(const Eigen::VectorXd& b0, const Eigen::VectorXd& db0, const std::vector<Eigen::MatrixXd>& matrices);
+Eigen::MatrixXd nonstationary_control_points(const Eigen::VectorXd& b0, const Eigen::VectorXd& db0,
+                                             const std::vector<Eigen::MatrixXd>& matrices);
 
 /// Planar polygon → the similarity M_j = s_j R_{φ_j} mapping edge j to edge j + 1:
 /// rotations φ_j ∈ (−π, π] and scales s_j = |Δb_{j+1}|/|Δb_j|, j = 0 … n−2.
 struct PlanarTransitions {
     std::vector<double> rotations;  ///< φ_j
-    std::vector<double> scales;  ///< s_j
+    std::vector<double> scales;     ///< s_j
 };
 /// The transitions of a planar polygon (no zero edge).
 PlanarTransitions planar_transitions(const Eigen::MatrixXd& points);

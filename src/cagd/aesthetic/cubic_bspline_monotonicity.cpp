@@ -12,10 +12,13 @@ namespace {
 
 void require_angles(double theta0, double theta1, const char* who) {
     for (double a : {theta0, theta1})
-        if (!std::isfinite(a) || a < 0.0 || a >= std::numbers::pi) fail_input(who, "angle " + full_precision(a) + " outside [0, pi)");
+        if (!std::isfinite(a) || a < 0.0 || a >= std::numbers::pi)
+            fail_input(who, "angle " + full_precision(a) + " outside [0, pi)");
 }
 
-double signed_turn(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b)); }
+double signed_turn(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+}
 
 // C0, C1, C2 of the header; the others by C_{5−k}(θ0, θ1) = −C_k(θ1, θ0).
 std::array<double, 3> leading_coefficients(double a, double b) {
@@ -24,8 +27,11 @@ std::array<double, 3> leading_coefficients(double a, double b) {
     const double c3 = std::pow(cos(a / 2), 3);
     const double c0 = c3 * (sin(a / 2 + b) - 3 * sin(a / 2));
     const double c1 = -0.4 * (2 - 4 * cos(a) + cos(b) + cos(a + b)) * sin(a) - c3 * (3 * sin(a / 2) - sin(a / 2 + b));
-    const double c2 =
-        (-22 * sin(a) + 7 * sin(2 * a) - 2 * cos(a / 2) * (32 * sin(a / 2 - b) + 14 * sin(a / 2 + b) - 6 * sin(1.5 * a + b) + sin(a / 2 + 2 * b) + sin(1.5 * a + 2 * b))) / 40;
+    const double c2 = (-22 * sin(a) + 7 * sin(2 * a) -
+                       2 * cos(a / 2) *
+                           (32 * sin(a / 2 - b) + 14 * sin(a / 2 + b) - 6 * sin(1.5 * a + b) + sin(a / 2 + 2 * b) +
+                            sin(1.5 * a + 2 * b))) /
+                      40;
     return {c0, c1, c2};
 }
 
@@ -82,10 +88,12 @@ Eigen::MatrixXd endpoint_interpolating_polygon(const Eigen::MatrixXd& unit_polyg
     auto adjust = [&](Eigen::Index q0, Eigen::Index q1, Eigen::Index q2) {
         const Eigen::Vector2d a = (unit_polygon.row(q1) - unit_polygon.row(q0)).transpose();
         const Eigen::Vector2d b = (unit_polygon.row(q2) - unit_polygon.row(q1)).transpose();
-        if (!(a.norm() > 0.0) || !(b.norm() > 0.0)) fail_input(who, "zero-length edge next to point " + std::to_string(q1));
+        if (!(a.norm() > 0.0) || !(b.norm() > 0.0))
+            fail_input(who, "zero-length edge next to point " + std::to_string(q1));
         const double turn = signed_turn(a, b);
         if (!(std::abs(turn) < std::numbers::pi / 2))
-            fail_input(who, "turning angle " + full_precision(turn) + " at point " + std::to_string(q1) + " must be below pi/2 in magnitude (|P0P1| = cos(theta0)/3 > 0)");
+            fail_input(who, "turning angle " + full_precision(turn) + " at point " + std::to_string(q1) +
+                                " must be below pi/2 in magnitude (|P0P1| = cos(theta0)/3 > 0)");
         p.row(q1) = unit_polygon.row(q2) + (2.0 / 3.0) * b.normalized().transpose() * -1.0;
         p.row(q0) = p.row(q1) - (std::cos(turn) / 3.0) * a.normalized().transpose();
     };
@@ -102,7 +110,10 @@ RegionPoint classify_unit_polygon(double theta0, double theta1) {
     r.c0_negative = c[0] < 0.0;
     r.c4_negative = c[4] < 0.0;
     r.c5_negative = c[5] < 0.0;
-    r.exact = r.all_negative ? analysis::Trend::decreasing : analysis::trend_of(sign_on_unit_interval(BernsteinPolynomial(std::vector<double>(c.begin(), c.end()))));
+    r.exact =
+        r.all_negative
+            ? analysis::Trend::decreasing
+            : analysis::trend_of(sign_on_unit_interval(BernsteinPolynomial(std::vector<double>(c.begin(), c.end()))));
     return r;
 }
 
@@ -112,19 +123,24 @@ std::vector<RegionPoint> monotonicity_region(int n, double lo, double hi) {
     std::vector<RegionPoint> out;
     out.reserve(static_cast<std::size_t>(n) * static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i)
-        for (int j = 0; j < n; ++j) out.push_back(classify_unit_polygon(lo + (hi - lo) * i / (n - 1), lo + (hi - lo) * j / (n - 1)));
+        for (int j = 0; j < n; ++j)
+            out.push_back(classify_unit_polygon(lo + (hi - lo) * i / (n - 1), lo + (hi - lo) * j / (n - 1)));
     return out;
 }
 
 BSplineCurve uniform_cubic_bspline(const Eigen::MatrixXd& control) {
-    if (control.rows() < 4) fail_input("cagd::aesthetic::uniform_cubic_bspline", "needs at least 4 control points, got " + std::to_string(control.rows()));
+    if (control.rows() < 4)
+        fail_input("cagd::aesthetic::uniform_cubic_bspline",
+                   "needs at least 4 control points, got " + std::to_string(control.rows()));
     std::vector<double> knots;
     for (Eigen::Index i = 0; i < control.rows() + 4; ++i) knots.push_back(static_cast<double>(i));
     return BSplineCurve(3, knots, control);
 }
 
 BSplineCurve endpoint_interpolating_cubic_bspline(const Eigen::MatrixXd& control) {
-    if (control.rows() < 4) fail_input("cagd::aesthetic::endpoint_interpolating_cubic_bspline", "needs at least 4 control points, got " + std::to_string(control.rows()));
+    if (control.rows() < 4)
+        fail_input("cagd::aesthetic::endpoint_interpolating_cubic_bspline",
+                   "needs at least 4 control points, got " + std::to_string(control.rows()));
     const int spans = static_cast<int>(control.rows()) - 3;
     std::vector<double> knots{0.0, 0.0, 0.0};
     for (int i = 0; i <= spans; ++i) knots.push_back(i);
@@ -147,7 +163,9 @@ MonotonicityReport cubic_bspline_curvature_monotonicity(const BSplineCurve& curv
     const Eigen::MatrixXd& d = curve.control_points();
     if (!d.allFinite()) fail_input(who, "a control point coordinate is not finite");
     for (Eigen::Index k = 0; k + 1 < d.rows(); ++k)
-        if (!((d.row(k + 1) - d.row(k)).norm() > 0.0)) fail_input(who, "control points " + std::to_string(k) + " and " + std::to_string(k + 1) + " coincide (zero-length edge)");
+        if (!((d.row(k + 1) - d.row(k)).norm() > 0.0))
+            fail_input(who, "control points " + std::to_string(k) + " and " + std::to_string(k + 1) +
+                                " coincide (zero-length edge)");
     MonotonicityReport report;
     int index = 0;
     bool any_inc = false, any_dec = false, any_bad = false, any_undetermined = false;
@@ -156,21 +174,27 @@ MonotonicityReport cubic_bspline_curvature_monotonicity(const BSplineCurve& curv
         v.segment = index++;
         v.bezier = piece.control_points();
         v.polygon = equivalent_uniform_polygon(v.bezier);
-        for (Eigen::Index k = 0; k < 3; ++k) v.edges[static_cast<std::size_t>(k)] = (v.polygon.row(k + 1) - v.polygon.row(k)).norm();
+        for (Eigen::Index k = 0; k < 3; ++k)
+            v.edges[static_cast<std::size_t>(k)] = (v.polygon.row(k + 1) - v.polygon.row(k)).norm();
         const bool edges_ok = v.edges[0] > 0.0 && v.edges[1] > 0.0 && v.edges[2] > 0.0;
         if (edges_ok) {
-            v.turn0 = signed_turn((v.polygon.row(1) - v.polygon.row(0)).transpose(), (v.polygon.row(2) - v.polygon.row(1)).transpose());
-            v.turn1 = signed_turn((v.polygon.row(2) - v.polygon.row(1)).transpose(), (v.polygon.row(3) - v.polygon.row(2)).transpose());
-            v.equal_edges = std::abs(v.edges[1] - v.edges[0]) <= 1e-9 * v.edges[0] && std::abs(v.edges[2] - v.edges[0]) <= 1e-9 * v.edges[0];
+            v.turn0 = signed_turn((v.polygon.row(1) - v.polygon.row(0)).transpose(),
+                                  (v.polygon.row(2) - v.polygon.row(1)).transpose());
+            v.turn1 = signed_turn((v.polygon.row(2) - v.polygon.row(1)).transpose(),
+                                  (v.polygon.row(3) - v.polygon.row(2)).transpose());
+            v.equal_edges = std::abs(v.edges[1] - v.edges[0]) <= 1e-9 * v.edges[0] &&
+                            std::abs(v.edges[2] - v.edges[0]) <= 1e-9 * v.edges[0];
         }
         if (v.equal_edges && v.turn0 * v.turn1 > 0.0) {
-            const double a = std::max(std::abs(v.turn0), std::abs(v.turn1)), b = std::min(std::abs(v.turn0), std::abs(v.turn1));
+            const double a = std::max(std::abs(v.turn0), std::abs(v.turn1)),
+                         b = std::min(std::abs(v.turn0), std::abs(v.turn1));
             v.condition29_value = condition29(a, b);
             v.condition29_verdict = v.condition29_value > 0.0 ? Guarantee::monotone : Guarantee::not_guaranteed;
         }
         const BezierCurve unit(piece.control_points());
         const BernsteinPolynomial h = analysis::curvature_derivative_numerator(unit);
-        for (std::size_t k = 0; k < 6; ++k) v.h_coefficients[k] = k < h.coefficients().size() ? h.coefficients()[k] : 0.0;
+        for (std::size_t k = 0; k < 6; ++k)
+            v.h_coefficients[k] = k < h.coefficients().size() ? h.coefficients()[k] : 0.0;
         bool all_neg = true, all_pos = true;
         for (double c : h.coefficients()) {
             all_neg = all_neg && c < 0.0;

@@ -59,11 +59,11 @@ Eigen::MatrixXd endpoint_interpolating_polygon(const Eigen::MatrixXd& unit_polyg
 /// Fig. 7 classification of one (θ0, θ1) of the unit polygon: (29), the Bernstein signs, and the
 /// exact sign of dκ/dt on [0, 1] (Bernstein subdivision of h from the closed-form C_i).
 struct RegionPoint {
-    bool condition29 = false;   ///< sin(θ0 + θ1/2) − 3 sin(θ1/2) > 0
-    bool all_negative = false;  ///< every C_i < 0
-    bool c0_negative = false;  ///< C_0 < 0
-    bool c4_negative = false;  ///< C_4 < 0
-    bool c5_negative = false;  ///< C_5 < 0
+    bool condition29 = false;                               ///< sin(θ0 + θ1/2) − 3 sin(θ1/2) > 0
+    bool all_negative = false;                              ///< every C_i < 0
+    bool c0_negative = false;                               ///< C_0 < 0
+    bool c4_negative = false;                               ///< C_4 < 0
+    bool c5_negative = false;                               ///< C_5 < 0
     analysis::Trend exact = analysis::Trend::undetermined;  ///< the exact trend of κ on the segment
 };
 /// The verdicts for the unit-edge polygon with turning angles θ0, θ1.
@@ -84,22 +84,22 @@ const char* to_string(Guarantee g);
 
 /// The verdicts on one segment of a cubic B-spline.
 struct SegmentVerdict {
-    int segment = 0;  ///< the segment's index
-    CubicPoints bezier;  ///< the segment's Bézier points
-    CubicPoints polygon;  ///< the equivalent uniform polygon
+    int segment = 0;                                            ///< the segment's index
+    CubicPoints bezier;                                         ///< the segment's Bézier points
+    CubicPoints polygon;                                        ///< the equivalent uniform polygon
     std::array<double, 3> edges{};                              ///< its edge lengths
-    double turn0 = 0.0;  ///< its signed turning angle at the 2nd point
-    double turn1 = 0.0;  ///< at the 3rd point
+    double turn0 = 0.0;                                         ///< its signed turning angle at the 2nd point
+    double turn1 = 0.0;                                         ///< at the 3rd point
     bool equal_edges = false;                                   ///< |e_k − e_0| ≤ 1e-9 |e_0|
     Guarantee condition29_verdict = Guarantee::not_applicable;  ///< (29), equal edges, same-sign turns
-    double condition29_value = 0.0;                             ///< sin(θa + θb/2) − 3 sin(θb/2), θa = the larger |turn|
-    std::array<double, 6> h_coefficients{};                     ///< Bernstein coefficients of h
-    Guarantee bernstein_verdict = Guarantee::not_guaranteed;    ///< all C_i strictly one sign
-    analysis::Trend exact = analysis::Trend::undetermined;      ///< sign of dκ/dt on the segment
+    double condition29_value = 0.0;          ///< sin(θa + θb/2) − 3 sin(θb/2), θa = the larger |turn|
+    std::array<double, 6> h_coefficients{};  ///< Bernstein coefficients of h
+    Guarantee bernstein_verdict = Guarantee::not_guaranteed;  ///< all C_i strictly one sign
+    analysis::Trend exact = analysis::Trend::undetermined;    ///< sign of dκ/dt on the segment
 };
 /// The verdicts on every segment and on the whole curve.
 struct MonotonicityReport {
-    std::vector<SegmentVerdict> segments;  ///< one per segment
+    std::vector<SegmentVerdict> segments;                         ///< one per segment
     analysis::Trend whole_curve = analysis::Trend::undetermined;  ///< all segments one trend
 };
 /// Any planar cubic B-spline (degree 3, dimension 2).

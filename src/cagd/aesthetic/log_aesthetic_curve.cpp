@@ -17,14 +17,17 @@ void LogAestheticRate::validate(const char* who, const char* name, double length
     const std::string n(name);
     for (const auto& [label, v] : {std::pair{"alpha", alpha}, {"c0", c0}, {"c1", c1}})
         if (!std::isfinite(v)) fail_input(who, n + " " + label + " = " + full_precision(v) + " is not finite");
-    if (!(length > 0.0) || !std::isfinite(length)) fail_input(who, "length L = " + full_precision(length) + " must be finite and > 0");
+    if (!(length > 0.0) || !std::isfinite(length))
+        fail_input(who, "length L = " + full_precision(length) + " must be finite and > 0");
     if (alpha == 0.0) {
-        if (!(c0 > 0.0)) fail_input(who, n + ": alpha = 0 (rho = c0 exp(c1 s), eq 9) needs c0 > 0, got c0 = " + full_precision(c0));
+        if (!(c0 > 0.0))
+            fail_input(who, n + ": alpha = 0 (rho = c0 exp(c1 s), eq 9) needs c0 > 0, got c0 = " + full_precision(c0));
         return;
     }
     const double u0 = base(0.0), u1 = base(length);
     if (u0 < 0.0 || u1 < 0.0 || (u0 == 0.0 && u1 == 0.0))
-        fail_input(who, n + ": rho^alpha = c0 s + c1 must be > 0 on (0, L): c0 s + c1 = " + full_precision(u0) + " at s = 0 and " + full_precision(u1) + " at s = L");
+        fail_input(who, n + ": rho^alpha = c0 s + c1 must be > 0 on (0, L): c0 s + c1 = " + full_precision(u0) +
+                            " at s = 0 and " + full_precision(u1) + " at s = L");
     if ((u0 == 0.0 || u1 == 0.0) && !finite_turning_at_zero_base(alpha))
         fail_input(who, n + ": c0 s + c1 = 0 at an end of [0, L] with alpha = " + full_precision(alpha) +
                             ": the turning angle diverges there for 0 < alpha <= 1 (allowed: alpha < 0 or alpha > 1)");
@@ -53,9 +56,12 @@ double LogAestheticRate::antiderivative(double s) const {
 }
 
 LogAestheticCurve::LogAestheticCurve(const LogAestheticParameters& p) : p_(p), rate_{p.alpha, p.c0, p.c1} {
-    for (const auto& [name, v] : {std::pair{"start_angle", p.start_angle}, {"start.x", p.start.x()}, {"start.y", p.start.y()}})
-        if (!std::isfinite(v)) fail_input(kPlanarCurveWho, std::string(name) + " = " + full_precision(v) + " is not finite");
-    if (p.turn != 1 && p.turn != -1) fail_input(kPlanarCurveWho, "turn = " + std::to_string(p.turn) + " must be +1 or -1");
+    for (const auto& [name, v] :
+         {std::pair{"start_angle", p.start_angle}, {"start.x", p.start.x()}, {"start.y", p.start.y()}})
+        if (!std::isfinite(v))
+            fail_input(kPlanarCurveWho, std::string(name) + " = " + full_precision(v) + " is not finite");
+    if (p.turn != 1 && p.turn != -1)
+        fail_input(kPlanarCurveWho, "turn = " + std::to_string(p.turn) + " must be +1 or -1");
     rate_.validate(kPlanarCurveWho, "curvature", p.length);
     theta_origin_ = rate_.antiderivative(0.0);
 }
@@ -67,16 +73,19 @@ double LogAestheticCurve::tangent_angle(double s) const {
 
 double LogAestheticCurve::curvature(double s) const {
     if (p_.alpha != 0.0 && rate_.base(s) == 0.0 && p_.alpha > 0.0)
-        fail_input(kPlanarCurveWho, "curvature is unbounded at s = " + full_precision(s) + " (c0 s + c1 = 0, alpha > 1)");
+        fail_input(kPlanarCurveWho,
+                   "curvature is unbounded at s = " + full_precision(s) + " (c0 s + c1 = 0, alpha > 1)");
     return p_.turn * rate_.value(s);
 }
 
 double LogAestheticCurve::curvature_derivative(double s) const {
     if (p_.alpha != 0.0 && rate_.base(s) == 0.0 && p_.alpha > 0.0)
-        fail_input(kPlanarCurveWho, "curvature is unbounded at s = " + full_precision(s) + " (c0 s + c1 = 0, alpha > 1)");
+        fail_input(kPlanarCurveWho,
+                   "curvature is unbounded at s = " + full_precision(s) + " (c0 s + c1 = 0, alpha > 1)");
     const double d = p_.turn * rate_.derivative(s);
     if (!std::isfinite(d))
-        fail_input(kPlanarCurveWho, "dkappa/ds is unbounded at s = " + full_precision(s) + " (c0 s + c1 = 0 with alpha < -1: alpha = " + full_precision(p_.alpha) + ")");
+        fail_input(kPlanarCurveWho, "dkappa/ds is unbounded at s = " + full_precision(s) +
+                                        " (c0 s + c1 = 0 with alpha < -1: alpha = " + full_precision(p_.alpha) + ")");
     return d;
 }
 
@@ -92,7 +101,8 @@ Eigen::Vector2d LogAestheticCurve::integrate(double a, double b) const {
 }
 
 Eigen::MatrixXd LogAestheticCurve::whole_jet(double s, int order) const {
-    if (!(s >= 0.0 && s <= p_.length)) fail_input(kPlanarCurveWho, "s = " + full_precision(s) + " outside [0, L = " + full_precision(p_.length) + "]");
+    if (!(s >= 0.0 && s <= p_.length))
+        fail_input(kPlanarCurveWho, "s = " + full_precision(s) + " outside [0, L = " + full_precision(p_.length) + "]");
     if (order < 0 || order > 3) fail_input(kPlanarCurveWho, "jet order " + std::to_string(order) + " outside 0..3");
     Eigen::MatrixXd j(order + 1, 2);
     j.row(0) = (p_.start + integrate(0.0, s)).transpose();
@@ -145,10 +155,13 @@ std::optional<Eigen::Vector2d> LogAestheticCurve::closed_form_point(double s) co
 }
 
 LogAestheticCurve normalized_log_aesthetic_curve(double alpha, double length) {
-    if (!std::isfinite(alpha)) fail_input("cagd::aesthetic::normalized_log_aesthetic_curve", "alpha = " + full_precision(alpha) + " is not finite");
+    if (!std::isfinite(alpha))
+        fail_input("cagd::aesthetic::normalized_log_aesthetic_curve",
+                   "alpha = " + full_precision(alpha) + " is not finite");
     if (!finite_turning_at_zero_base(alpha))
         fail_input("cagd::aesthetic::normalized_log_aesthetic_curve",
-                   "eq (15) is defined only for alpha < 0 or alpha > 1 (its turning angle alpha s^((alpha-1)/alpha) diverges at s = 0 for 0 < alpha < 1, is constant for alpha = "
+                   "eq (15) is defined only for alpha < 0 or alpha > 1 (its turning angle alpha s^((alpha-1)/alpha) "
+                   "diverges at s = 0 for 0 < alpha < 1, is constant for alpha = "
                    "1, undefined for alpha = 0); got alpha = " +
                        full_precision(alpha));
     LogAestheticParameters p;

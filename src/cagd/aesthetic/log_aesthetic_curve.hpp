@@ -42,9 +42,10 @@ namespace cagd::aesthetic {
 /// it is unbounded.
 struct LogAestheticRate {
     double alpha = -1.0;  ///< α
-    double c0 = 1.0;  ///< c0
-    double c1 = 1.0;  ///< c1
-    /// InvalidInput naming `who` and `name` unless α, c0, c1 are finite and c0 s + c1 > 0 on [0, length] (where the power needs it).
+    double c0 = 1.0;      ///< c0
+    double c1 = 1.0;      ///< c1
+    /// InvalidInput naming `who` and `name` unless α, c0, c1 are finite and c0 s + c1 > 0 on [0, length] (where the
+    /// power needs it).
     void validate(const char* who, const char* name, double length) const;
     /// c0 s + c1.
     double base(double s) const { return c0 * s + c1; }
@@ -57,12 +58,12 @@ struct LogAestheticRate {
 
 /// The parameters of a planar log-aesthetic curve ρ^α = c0 s + c1 of length `length`.
 struct LogAestheticParameters {
-    double alpha = -1.0;  ///< α, the slope of the logarithmic curvature graph
-    double c0 = 1.0;  ///< c0
-    double c1 = 1.0;  ///< c1
-    double length = 1.0;  ///< the arc length
-    int turn = 1;              ///< σ: +1 counter-clockwise, −1 clockwise
-    double start_angle = 0.0;  ///< θ_start
+    double alpha = -1.0;                              ///< α, the slope of the logarithmic curvature graph
+    double c0 = 1.0;                                  ///< c0
+    double c1 = 1.0;                                  ///< c1
+    double length = 1.0;                              ///< the arc length
+    int turn = 1;                                     ///< σ: +1 counter-clockwise, −1 clockwise
+    double start_angle = 0.0;                         ///< θ_start
     Eigen::Vector2d start = Eigen::Vector2d::Zero();  ///< the start point
 };
 
@@ -77,7 +78,9 @@ public:
     int dimension() const override { return 2; }
     double t_min() const override { return 0.0; }
     double t_max() const override { return p_.length; }
-    void evaluate_jet(double s, int first, JetSide, Eigen::Ref<Eigen::MatrixXd> out) const override { take_rows(whole_jet(s, first + static_cast<int>(out.rows()) - 1), first, out); }  ///< order ≤ 3
+    void evaluate_jet(double s, int first, JetSide, Eigen::Ref<Eigen::MatrixXd> out) const override {
+        take_rows(whole_jet(s, first + static_cast<int>(out.rows()) - 1), first, out);
+    }  ///< order ≤ 3
     std::vector<double> breakpoints() const override { return {0.0, p_.length}; }
 
     double curvature(double s) const;             ///< signed κ(s)

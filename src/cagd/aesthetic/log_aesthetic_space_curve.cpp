@@ -30,7 +30,8 @@ struct FrenetSerretSystem {
     int m;
     void operator()(const std::array<double, 12>& x, std::array<double, 12>& dx, double w) const {
         const double js = m * p->length * std::pow(w, m - 1);
-        const double k = rate_times_jacobian(p->curvature, p->length, m, w), tau = rate_times_jacobian(p->torsion, p->length, m, w);
+        const double k = rate_times_jacobian(p->curvature, p->length, m, w),
+                     tau = rate_times_jacobian(p->torsion, p->length, m, w);
         for (std::size_t i = 0; i < 3; ++i) {
             const double t = x[3 + i], n = x[6 + i], b = x[9 + i];
             dx[i] = js * t;
@@ -41,23 +42,30 @@ struct FrenetSerretSystem {
     }
 };
 
-void integrate_frenet_serret(const FrenetSerretSystem& system, std::array<double, 12>& x, double w0, double w1, double first_step) {
+void integrate_frenet_serret(const FrenetSerretSystem& system, std::array<double, 12>& x, double w0, double w1,
+                             double first_step) {
     namespace odeint = boost::numeric::odeint;
-    auto stepper = odeint::make_controlled(kTolerance, kTolerance, odeint::runge_kutta_dopri5<std::array<double, 12>>());
+    auto stepper =
+        odeint::make_controlled(kTolerance, kTolerance, odeint::runge_kutta_dopri5<std::array<double, 12>>());
     odeint::integrate_adaptive(stepper, system, x, w0, w1, first_step);
 }
 
 }  // namespace
 
-LogAestheticSpaceParameters normalized_log_aesthetic_space_parameters(double alpha, double beta, double length, double start) {
+LogAestheticSpaceParameters normalized_log_aesthetic_space_parameters(double alpha, double beta, double length,
+                                                                      double start) {
     const char* who = "cagd::aesthetic::normalized_log_aesthetic_space_parameters";
-    if (!(start >= 0.0) || !std::isfinite(start)) fail_input(who, "start s0 = " + full_precision(start) + " must be finite and >= 0");
+    if (!(start >= 0.0) || !std::isfinite(start))
+        fail_input(who, "start s0 = " + full_precision(start) + " must be finite and >= 0");
     for (const auto& [name, v] : {std::pair{"alpha", alpha}, {"beta", beta}}) {
         if (!std::isfinite(v)) fail_input(who, std::string(name) + " = " + full_precision(v) + " is not finite");
-        if (v == 0.0 || v == 1.0) fail_input(who, std::string(name) + " = " + full_precision(v) + ": the normalised law |slope - 1| s^(-1/slope) needs a slope other than 0 and 1");
+        if (v == 0.0 || v == 1.0)
+            fail_input(who, std::string(name) + " = " + full_precision(v) +
+                                ": the normalised law |slope - 1| s^(-1/slope) needs a slope other than 0 and 1");
         if (start == 0.0 && v > 0.0 && v < 1.0)
-            fail_input(
-                who, std::string(name) + " = " + full_precision(v) + " with start s0 = 0: the turning angle diverges at s = 0 for 0 < slope < 1 (use slope < 0 or > 1, or s0 > 0)");
+            fail_input(who, std::string(name) + " = " + full_precision(v) +
+                                " with start s0 = 0: the turning angle diverges at s = 0 for 0 < slope < 1 (use slope "
+                                "< 0 or > 1, or s0 > 0)");
     }
     LogAestheticSpaceParameters p;
     const double c = std::pow(std::abs(alpha - 1.0), -alpha), g = std::pow(std::abs(beta - 1.0), -beta);
@@ -74,9 +82,12 @@ LogAestheticSpaceCurve::LogAestheticSpaceCurve(const LogAestheticSpaceParameters
     for (const auto& [name, r] : {std::pair{"curvature", p.curvature}, {"torsion", p.torsion}})
         if (r.alpha != 0.0 && r.base(p.length) == 0.0)
             fail_input(kSpaceCurveWho,
-                       std::string(name) + ": c s + d = 0 at s = L = " + full_precision(p.length) + " (a singular end is not supported; reverse the curve so that it is at s = 0)");
+                       std::string(name) + ": c s + d = 0 at s = L = " + full_precision(p.length) +
+                           " (a singular end is not supported; reverse the curve so that it is at s = 0)");
     for (const LogAestheticRate& r : {p.curvature, p.torsion})
-        if (vanishes_at_start(r)) exponent_ = std::max({exponent_, 2, r.alpha > 1.0 ? static_cast<int>(std::ceil(2.0 * r.alpha / (r.alpha - 1.0))) : 2});
+        if (vanishes_at_start(r))
+            exponent_ = std::max(
+                {exponent_, 2, r.alpha > 1.0 ? static_cast<int>(std::ceil(2.0 * r.alpha / (r.alpha - 1.0))) : 2});
 
     State x{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
     nodes_.reserve(kNodes);
@@ -90,7 +101,8 @@ LogAestheticSpaceCurve::LogAestheticSpaceCurve(const LogAestheticSpaceParameters
 }
 
 void LogAestheticSpaceCurve::check_s(double s) const {
-    if (!(s >= 0.0 && s <= p_.length)) fail_input(kSpaceCurveWho, "s = " + full_precision(s) + " outside [0, L = " + full_precision(p_.length) + "]");
+    if (!(s >= 0.0 && s <= p_.length))
+        fail_input(kSpaceCurveWho, "s = " + full_precision(s) + " outside [0, L = " + full_precision(p_.length) + "]");
 }
 
 LogAestheticSpaceCurve::State LogAestheticSpaceCurve::state_at(double s) const {
@@ -139,12 +151,16 @@ Eigen::MatrixXd LogAestheticSpaceCurve::whole_jet(double s, int order) const {
         j.row(2) = (k * n).transpose();
         if (order >= 3) {
             const double dk = p_.curvature.derivative(s), tau = torsion(s);
-            if (!std::isfinite(dk) || !std::isfinite(tau)) fail_input(kSpaceCurveWho, "dkappa/ds or torsion is unbounded at s = " + full_precision(s));
+            if (!std::isfinite(dk) || !std::isfinite(tau))
+                fail_input(kSpaceCurveWho, "dkappa/ds or torsion is unbounded at s = " + full_precision(s));
             j.row(3) = (-k * k * t + dk * n + k * tau * b).transpose();
             if (order >= 4) {
                 const double ddk = p_.curvature.second_derivative(s), dtau = p_.torsion.derivative(s);
-                if (!std::isfinite(ddk) || !std::isfinite(dtau)) fail_input(kSpaceCurveWho, "a derivative of curvature or torsion is unbounded at s = " + full_precision(s));
-                j.row(4) = (-3.0 * k * dk * t + (ddk - k * k * k - k * tau * tau) * n + (2.0 * dk * tau + k * dtau) * b).transpose();
+                if (!std::isfinite(ddk) || !std::isfinite(dtau))
+                    fail_input(kSpaceCurveWho,
+                               "a derivative of curvature or torsion is unbounded at s = " + full_precision(s));
+                j.row(4) = (-3.0 * k * dk * t + (ddk - k * k * k - k * tau * tau) * n + (2.0 * dk * tau + k * dtau) * b)
+                               .transpose();
             }
         }
     }

@@ -43,11 +43,12 @@ namespace cagd::aesthetic {
 struct LogAestheticSpaceParameters {
     LogAestheticRate curvature{1.5, 1.0, 1.0};  ///< ρ^α = c s + d
     LogAestheticRate torsion{1.2, 1.0, 1.0};    ///< μ^β = g s + h
-    double length = 1.0;  ///< the arc length
+    double length = 1.0;                        ///< the arc length
 };
 
 /// The normalised parameters of typical_curves section 4 for α, β, the length and the start s0.
-LogAestheticSpaceParameters normalized_log_aesthetic_space_parameters(double alpha, double beta, double length, double start = 0.0);
+LogAestheticSpaceParameters normalized_log_aesthetic_space_parameters(double alpha, double beta, double length,
+                                                                      double start = 0.0);
 
 /// The log-aesthetic space curve in arc length, solved from the Frenet–Serret equations (eq 31–35).
 class LogAestheticSpaceCurve : public Curve {
@@ -60,7 +61,9 @@ public:
     int dimension() const override { return 3; }
     double t_min() const override { return 0.0; }
     double t_max() const override { return p_.length; }
-    void evaluate_jet(double s, int first, JetSide, Eigen::Ref<Eigen::MatrixXd> out) const override { take_rows(whole_jet(s, first + static_cast<int>(out.rows()) - 1), first, out); }  ///< order ≤ 4
+    void evaluate_jet(double s, int first, JetSide, Eigen::Ref<Eigen::MatrixXd> out) const override {
+        take_rows(whole_jet(s, first + static_cast<int>(out.rows()) - 1), first, out);
+    }  ///< order ≤ 4
     std::vector<double> breakpoints() const override { return {0.0, p_.length}; }
 
     /// κ(s).
@@ -74,7 +77,7 @@ public:
 
 private:
     Eigen::MatrixXd whole_jet(double s, int order) const;  ///< rows 0..order
-    using State = std::array<double, 12>;  ///< r, t, n, b
+    using State = std::array<double, 12>;                  ///< r, t, n, b
     State state_at(double s) const;
     void check_s(double s) const;
     LogAestheticSpaceParameters p_;

@@ -48,19 +48,21 @@ Eigen::Matrix3d frenet_transition(double curvature_angle, double torsion_angle, 
 
 /// A typical Bézier space polygon: its points, frames and rotations.
 struct SpaceTypicalPolygon {
-    Eigen::MatrixXd points;                                      ///< (n + 1) × 3
-    std::vector<Eigen::Matrix3d> frames;                         ///< F_0 … F_{n−1}
+    Eigen::MatrixXd points;                   ///< (n + 1) × 3
+    std::vector<Eigen::Matrix3d> frames;      ///< F_0 … F_{n−1}
     std::vector<double> curvature_rotations;  ///< Δθ_κ,j, j = 0 … n−2
-    std::vector<double> torsion_rotations;  ///< Δθ_τ,j, j = 0 … n−2
-    double edge_length = 0.0;                                    ///< Δs
+    std::vector<double> torsion_rotations;    ///< Δθ_τ,j, j = 0 … n−2
+    double edge_length = 0.0;                 ///< Δs
 };
 
 /// The space typical polygon of degree n approximating the log-aesthetic space curve p (eq 36).
-SpaceTypicalPolygon space_typical_polygon(const LogAestheticSpaceParameters& p, int degree, FrenetComposition composition = FrenetComposition::alexa);
+SpaceTypicalPolygon space_typical_polygon(const LogAestheticSpaceParameters& p, int degree,
+                                          FrenetComposition composition = FrenetComposition::alexa);
 /// The same construction from given rotation angles (n − 1 of each) and edge length.
-SpaceTypicalPolygon space_typical_polygon_from_rotations(const std::vector<double>& curvature_rotations, const std::vector<double>& torsion_rotations, double edge_length,
-                                                         FrenetComposition composition = FrenetComposition::alexa,
-                                                         const Eigen::Matrix3d& initial_frame = Eigen::Matrix3d::Identity());
+SpaceTypicalPolygon space_typical_polygon_from_rotations(
+    const std::vector<double>& curvature_rotations, const std::vector<double>& torsion_rotations, double edge_length,
+    FrenetComposition composition = FrenetComposition::alexa,
+    const Eigen::Matrix3d& initial_frame = Eigen::Matrix3d::Identity());
 
 /// The discrete Frenet angles of a space polygon.
 struct PolygonFrenetAngles {

@@ -16,7 +16,9 @@ void require_finite_alpha(double alpha, const char* who) {
 // Eq (20)–(21) divide by α and by α − 1.
 void require_rotation_alpha(double alpha, const char* who) {
     require_finite_alpha(alpha, who);
-    if (alpha == 0.0 || alpha == 1.0) fail_input(who, "alpha = " + full_precision(alpha) + ": eq (20)-(21) divide by alpha and by alpha - 1 (allowed: alpha not 0 or 1)");
+    if (alpha == 0.0 || alpha == 1.0)
+        fail_input(who, "alpha = " + full_precision(alpha) +
+                            ": eq (20)-(21) divide by alpha and by alpha - 1 (allowed: alpha not 0 or 1)");
 }
 
 void require_degree(int degree, int minimum, const char* who) {
@@ -24,7 +26,8 @@ void require_degree(int degree, int minimum, const char* who) {
 }
 
 void require_length(double length, const char* who) {
-    if (!(length > 0.0) || !std::isfinite(length)) fail_input(who, "length L = " + full_precision(length) + " must be finite and > 0");
+    if (!(length > 0.0) || !std::isfinite(length))
+        fail_input(who, "length L = " + full_precision(length) + " must be finite and > 0");
 }
 
 TypicalPolygon polygon_from_edges(const std::vector<double>& lengths, const std::vector<double>& angles) {
@@ -51,10 +54,9 @@ TypicalPolygon scale_one_typical_polygon(double alpha, double length, int degree
     const char* who = "cagd::aesthetic::scale_one_typical_polygon";
     require_finite_alpha(alpha, who);
     if (!(alpha < 0.0 || alpha > 1.0))
-        fail_input(
-            who,
-            "alpha = " + full_precision(alpha) +
-                ": eq (16) needs alpha < 0 or alpha > 1 (0 < alpha < 1: (j ds)^((alpha-1)/alpha) diverges at j = 0; alpha = 1: all edges parallel; alpha = 0: division by alpha)");
+        fail_input(who, "alpha = " + full_precision(alpha) +
+                            ": eq (16) needs alpha < 0 or alpha > 1 (0 < alpha < 1: (j ds)^((alpha-1)/alpha) diverges "
+                            "at j = 0; alpha = 1: all edges parallel; alpha = 0: division by alpha)");
     require_length(length, who);
     require_degree(degree, 1, who);
     const double ds = length / degree;
@@ -66,7 +68,8 @@ TypicalPolygon scale_one_typical_polygon(double alpha, double length, int degree
 TypicalPolygon constant_rotation_typical_polygon_by_angle(double alpha, double rotation, int degree) {
     const char* who = "cagd::aesthetic::constant_rotation_typical_polygon";
     require_rotation_alpha(alpha, who);
-    if (!std::isfinite(rotation) || rotation == 0.0) fail_input(who, "rotation = " + full_precision(rotation) + " must be finite and non-zero");
+    if (!std::isfinite(rotation) || rotation == 0.0)
+        fail_input(who, "rotation = " + full_precision(rotation) + " must be finite and non-zero");
     require_degree(degree, 2, who);
     const double turn = alpha > 1.0 ? 1.0 : -1.0;
     const double k = std::pow(std::abs(rotation) / std::abs(alpha - 1.0), alpha / (alpha - 1.0));
@@ -92,8 +95,10 @@ TypicalPolygon constant_rotation_typical_polygon(double alpha, double length, in
 
 TypicalPolygon log_spiral_polygon(double a, double b, double rotation, int degree) {
     const char* who = "cagd::aesthetic::log_spiral_polygon";
-    if (!std::isfinite(a) || !std::isfinite(b) || b == 0.0) fail_input(who, "a = " + full_precision(a) + ", b = " + full_precision(b) + " (need finite a, finite b != 0)");
-    if (!std::isfinite(rotation) || rotation == 0.0) fail_input(who, "rotation = " + full_precision(rotation) + " must be finite and non-zero");
+    if (!std::isfinite(a) || !std::isfinite(b) || b == 0.0)
+        fail_input(who, "a = " + full_precision(a) + ", b = " + full_precision(b) + " (need finite a, finite b != 0)");
+    if (!std::isfinite(rotation) || rotation == 0.0)
+        fail_input(who, "rotation = " + full_precision(rotation) + " must be finite and non-zero");
     require_degree(degree, 2, who);
     TypicalPolygon p;
     p.points.resize(degree + 1, 2);
@@ -108,12 +113,19 @@ TypicalPolygon log_spiral_polygon(double a, double b, double rotation, int degre
     return p;
 }
 
-double first_order_rotation(double alpha, double ds, int j) { return alpha * (alpha - 1.0) / alpha * std::pow((j + 1.0) * ds, -1.0 / alpha) * ds; }
+double first_order_rotation(double alpha, double ds, int j) {
+    return alpha * (alpha - 1.0) / alpha * std::pow((j + 1.0) * ds, -1.0 / alpha) * ds;
+}
 
 double first_order_rotation_ratio(double alpha, int j) { return std::pow((j + 1.0) / (j + 2.0), 1.0 / alpha); }
 
-double constant_rotation_scale_ratio(double alpha, int j) { return std::pow((j + 2.0) / (j + 1.0), 1.0 / (alpha - 1.0)); }
+double constant_rotation_scale_ratio(double alpha, int j) {
+    return std::pow((j + 2.0) / (j + 1.0), 1.0 / (alpha - 1.0));
+}
 
-double exact_rotation_ratio(double alpha, int j) { return (direction(alpha, j + 3.0) - direction(alpha, j + 2.0)) / (direction(alpha, j + 2.0) - direction(alpha, j + 1.0)); }
+double exact_rotation_ratio(double alpha, int j) {
+    return (direction(alpha, j + 3.0) - direction(alpha, j + 2.0)) /
+           (direction(alpha, j + 2.0) - direction(alpha, j + 1.0));
+}
 
 }  // namespace cagd::aesthetic

@@ -30,11 +30,14 @@
 namespace cagd::aesthetic {
 
 /// The fourth point of one control polygon (the rotation about its diagonal).
-Eigen::Vector3d rotated_fourth_point(const Eigen::Vector3d& p00, const Eigen::Vector3d& p10, const Eigen::Vector3d& p01, double angle);
+Eigen::Vector3d rotated_fourth_point(const Eigen::Vector3d& p00, const Eigen::Vector3d& p10, const Eigen::Vector3d& p01,
+                                     double angle);
 
 /// u_boundary: (m+1)×3, the points P_{i,0}; v_boundary: (n+1)×3, the points P_{0,j}.
-surface::ControlNet typical_surface_net(const Eigen::MatrixXd& u_boundary, const Eigen::MatrixXd& v_boundary, double angle);
-/// The nonstationary typical surface net of typical_curves section 5: scale-1 typical polygons for α_u and α_v as its boundaries (degree n, polygon length `length`), every further point turned by `angle`.
+surface::ControlNet typical_surface_net(const Eigen::MatrixXd& u_boundary, const Eigen::MatrixXd& v_boundary,
+                                        double angle);
+/// The nonstationary typical surface net of typical_curves section 5: scale-1 typical polygons for α_u and α_v as its
+/// boundaries (degree n, polygon length `length`), every further point turned by `angle`.
 surface::ControlNet log_aesthetic_typical_net(double alpha_u, double alpha_v, double length, int degree, double angle);
 
 }  // namespace cagd::aesthetic

@@ -32,8 +32,9 @@ ArcLengthParameter::ArcLengthParameter(std::shared_ptr<const Curve> curve) : cur
     breaks_ = curve_->breakpoints();
     cumulative_.assign(breaks_.size(), 0.0);
     for (std::size_t k = 0; k + 1 < breaks_.size(); ++k)
-        cumulative_[k + 1] = cumulative_[k] + boost::math::quadrature::gauss_kronrod<double, 31>::integrate([&](double t) { return inverse_speed_at(*curve_, t); }, breaks_[k],
-                                                                                                         breaks_[k + 1], kInverseKronrodDepth, kInversePieceRelTol);
+        cumulative_[k + 1] = cumulative_[k] + boost::math::quadrature::gauss_kronrod<double, 31>::integrate(
+                                                  [&](double t) { return inverse_speed_at(*curve_, t); }, breaks_[k],
+                                                  breaks_[k + 1], kInverseKronrodDepth, kInversePieceRelTol);
 }
 
 double ArcLengthParameter::parameter_at(double s) const {
@@ -41,7 +42,8 @@ double ArcLengthParameter::parameter_at(double s) const {
     // Lengths computed elsewhere (accurate_arc_length) agree with this one to about 1e-12: an s that
     // far beyond L is L.
     if (!(s >= 0.0 && s <= total * (1.0 + kLengthAgreement)))
-        fail_input("cagd::analysis::ArcLengthParameter::parameter_at", "s = " + full_precision(s) + "; allowed [0, " + full_precision(total) + "] (the curve's length)");
+        fail_input("cagd::analysis::ArcLengthParameter::parameter_at",
+                   "s = " + full_precision(s) + "; allowed [0, " + full_precision(total) + "] (the curve's length)");
     if (s >= total) return breaks_.back();
     const auto it = std::upper_bound(cumulative_.begin(), cumulative_.end(), s);
     const std::size_t k = static_cast<std::size_t>(std::max<std::ptrdiff_t>(it - cumulative_.begin() - 1, 0));
@@ -50,7 +52,11 @@ double ArcLengthParameter::parameter_at(double s) const {
     const double guess = a + (b - a) * target / (cumulative_[k + 1] - cumulative_[k]);
     std::uintmax_t steps = kInverseNewtonSteps;
     return boost::math::tools::newton_raphson_iterate(
-        [&](double t) { return std::make_pair(arc_length(*curve_, a, t, kInversePartialPieces) - target, inverse_speed_at(*curve_, t)); }, guess, a, b, kInverseNewtonBits, steps);
+        [&](double t) {
+            return std::make_pair(arc_length(*curve_, a, t, kInversePartialPieces) - target,
+                                  inverse_speed_at(*curve_, t));
+        },
+        guess, a, b, kInverseNewtonBits, steps);
 }
 
 }  // namespace cagd::analysis

@@ -20,8 +20,10 @@ BernsteinPolynomial hodograph(const BezierCurve& c, int m, Eigen::Index k) {
 }
 
 void require(const BezierCurve& c, int min_degree, int dim_lo, int dim_hi, const char* who) {
-    if (c.degree() < min_degree) fail_input(who, "degree " + std::to_string(c.degree()) + " < " + std::to_string(min_degree));
-    if (c.dimension() < dim_lo || c.dimension() > dim_hi) fail_input(who, "dimension " + std::to_string(c.dimension()) + " not supported");
+    if (c.degree() < min_degree)
+        fail_input(who, "degree " + std::to_string(c.degree()) + " < " + std::to_string(min_degree));
+    if (c.dimension() < dim_lo || c.dimension() > dim_hi)
+        fail_input(who, "dimension " + std::to_string(c.dimension()) + " not supported");
     if (c.t_min() != 0.0 || c.t_max() != 1.0) fail_input(who, "the curve must be parametrised on [0, 1]");
 }
 
@@ -46,10 +48,12 @@ BernsteinPolynomial dot(const std::vector<BernsteinPolynomial>& a, const std::ve
 }
 
 // Components of r' × r'' (planar: one component, the z one); a = r', b = r''.
-std::vector<BernsteinPolynomial> cross(const std::vector<BernsteinPolynomial>& a, const std::vector<BernsteinPolynomial>& b) {
+std::vector<BernsteinPolynomial> cross(const std::vector<BernsteinPolynomial>& a,
+                                       const std::vector<BernsteinPolynomial>& b) {
     // r' × r'' has degree 2n − 4, one below the product's 2n − 3: reduce exactly.
     if (a.size() == 2) return {(a[0] * b[1] - a[1] * b[0]).reduced()};
-    return {(a[1] * b[2] - a[2] * b[1]).reduced(), (a[2] * b[0] - a[0] * b[2]).reduced(), (a[0] * b[1] - a[1] * b[0]).reduced()};
+    return {(a[1] * b[2] - a[2] * b[1]).reduced(), (a[2] * b[0] - a[0] * b[2]).reduced(),
+            (a[0] * b[1] - a[1] * b[0]).reduced()};
 }
 
 }  // namespace

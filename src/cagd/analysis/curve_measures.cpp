@@ -52,7 +52,8 @@ FrenetJet regular_frenet(const Curve& c, double t, const char* who) {
     JetMatrix D;
     c.derivatives_into(t, 2, D);
     const FrenetJet f = frenet_jet(D);
-    if (!f.regular) fail_input(who, "r'(t) = 0 at t = " + full_precision(t) + "; curvature undefined at a singular point");
+    if (!f.regular)
+        fail_input(who, "r'(t) = 0 at t = " + full_precision(t) + "; curvature undefined at a singular point");
     return f;
 }
 
@@ -62,10 +63,14 @@ double bending_density(const Curve& c, double t) {  // κ² |r'|, the integrand 
 }
 }  // namespace
 
-double curvature(const Curve& c, double t) { return std::abs(regular_frenet(c, t, "cagd::analysis::curvature").curvature); }
+double curvature(const Curve& c, double t) {
+    return std::abs(regular_frenet(c, t, "cagd::analysis::curvature").curvature);
+}
 
 Eigen::VectorXd curvature_vector(const Eigen::MatrixXd& J) {
-    if (J.rows() < 3) fail_input("cagd::analysis::curvature_vector", "needs a jet of order >= 2, got " + std::to_string(J.rows() - 1));
+    if (J.rows() < 3)
+        fail_input("cagd::analysis::curvature_vector",
+                   "needs a jet of order >= 2, got " + std::to_string(J.rows() - 1));
     const Eigen::VectorXd d1 = J.row(1).transpose(), d2 = J.row(2).transpose();
     const double s2 = d1.squaredNorm();
     if (!(s2 > 0.0)) fail_input("cagd::analysis::curvature_vector", "r' = 0: curvature undefined at a singular point");
@@ -73,14 +78,18 @@ Eigen::VectorXd curvature_vector(const Eigen::MatrixXd& J) {
 }
 
 double signed_curvature(const Curve& c, double t) {
-    if (c.dimension() != 2) fail_input("cagd::analysis::signed_curvature", "needs a planar curve, dimension is " + std::to_string(c.dimension()));
+    if (c.dimension() != 2)
+        fail_input("cagd::analysis::signed_curvature",
+                   "needs a planar curve, dimension is " + std::to_string(c.dimension()));
     return regular_frenet(c, t, "cagd::analysis::signed_curvature").curvature;
 }
 
 double arc_length(const Curve& c, double a, double b, int pieces) {
     if (!(a >= c.t_min() && b <= c.t_max() && a <= b))
-        fail_input("cagd::analysis::arc_length", "interval [" + full_precision(a) + ", " + full_precision(b) + "] not inside the domain");
-    return rule20().integrate_piecewise([&](double t) { return speed(c, t); }, subdivided(clipped_breaks(c, a, b), pieces));
+        fail_input("cagd::analysis::arc_length",
+                   "interval [" + full_precision(a) + ", " + full_precision(b) + "] not inside the domain");
+    return rule20().integrate_piecewise([&](double t) { return speed(c, t); },
+                                        subdivided(clipped_breaks(c, a, b), pieces));
 }
 
 double arc_length(const Curve& c, int pieces) { return arc_length(c, c.t_min(), c.t_max(), pieces); }
@@ -98,7 +107,8 @@ double adaptive_arc_length(const Curve& c, double rel_tol) {
     const std::vector<double> br = c.breakpoints();
     double total = 0.0;
     for (std::size_t k = 0; k + 1 < br.size(); ++k)
-        total += boost::math::quadrature::gauss_kronrod<double, 31>::integrate([&](double t) { return speed(c, t); }, br[k], br[k + 1], kKronrodDepth, rel_tol);
+        total += boost::math::quadrature::gauss_kronrod<double, 31>::integrate(
+            [&](double t) { return speed(c, t); }, br[k], br[k + 1], kKronrodDepth, rel_tol);
     return total;
 }
 
@@ -106,7 +116,8 @@ numeric::RombergResult romberg_arc_length(const Curve& c, double rel_tol) {
     numeric::RombergResult total;
     const std::vector<double> br = c.breakpoints();
     for (std::size_t k = 0; k + 1 < br.size(); ++k) {
-        const auto r = numeric::romberg([&](double t) { return speed(c, t); }, br[k], br[k + 1], rel_tol, kRombergAbsTol, kRombergLevels);
+        const auto r = numeric::romberg([&](double t) { return speed(c, t); }, br[k], br[k + 1], rel_tol,
+                                        kRombergAbsTol, kRombergLevels);
         total.value += r.value;
         total.error_estimate += r.error_estimate;
         total.evaluations += r.evaluations;
@@ -121,7 +132,8 @@ ArcLength accurate_arc_length(const Curve& c) {
     const std::vector<double> br = c.breakpoints();
     for (std::size_t k = 0; k + 1 < br.size(); ++k) {
         double error = 0.0;
-        a.value += boost::math::quadrature::gauss_kronrod<double, 31>::integrate([&](double t) { return speed(c, t); }, br[k], br[k + 1], kKronrodDepth, kAccurateRelTol, &error);
+        a.value += boost::math::quadrature::gauss_kronrod<double, 31>::integrate(
+            [&](double t) { return speed(c, t); }, br[k], br[k + 1], kKronrodDepth, kAccurateRelTol, &error);
         a.error_estimate += error;
     }
     return a;
@@ -133,7 +145,9 @@ double area_closed_by_chord(const Curve& c) {
 }
 
 double enclosed_area(const Curve& c) {
-    if (c.dimension() != 2) fail_input("cagd::analysis::enclosed_area", "needs a planar curve, dimension is " + std::to_string(c.dimension()));
+    if (c.dimension() != 2)
+        fail_input("cagd::analysis::enclosed_area",
+                   "needs a planar curve, dimension is " + std::to_string(c.dimension()));
     return 0.5 * rule20().integrate_piecewise(
                      [&](double t) {
                          JetMatrix J;
@@ -145,8 +159,10 @@ double enclosed_area(const Curve& c) {
 
 double bending_energy(const Curve& c, double a, double b, int pieces) {
     if (!(a >= c.t_min() && b <= c.t_max() && a <= b))
-        fail_input("cagd::analysis::bending_energy", "interval [" + full_precision(a) + ", " + full_precision(b) + "] not inside the domain");
-    return rule20().integrate_piecewise([&](double t) { return bending_density(c, t); }, subdivided(clipped_breaks(c, a, b), pieces));
+        fail_input("cagd::analysis::bending_energy",
+                   "interval [" + full_precision(a) + ", " + full_precision(b) + "] not inside the domain");
+    return rule20().integrate_piecewise([&](double t) { return bending_density(c, t); },
+                                        subdivided(clipped_breaks(c, a, b), pieces));
 }
 
 double piece_arc_length(const Curve& c, double a, double b, int pieces) {
@@ -187,7 +203,8 @@ double max_distance_same_parameter(const Curve& a, const Curve& b, int samples_p
         if (t > t0 && t < t1) br.insert(t);
     const std::vector<double> v(br.begin(), br.end());
     double worst = 0.0;
-    for (std::size_t k = 0; k + 1 < v.size(); ++k) worst = std::max(worst, max_distance_same_parameter(a, b, v[k], v[k + 1], samples_per_piece + 1));
+    for (std::size_t k = 0; k + 1 < v.size(); ++k)
+        worst = std::max(worst, max_distance_same_parameter(a, b, v[k], v[k + 1], samples_per_piece + 1));
     return worst;
 }
 
@@ -213,7 +230,8 @@ double tangent_turns(const Curve& c, int samples_per_piece) {
             const double t = br[k] + (br[k + 1] - br[k]) * j / samples_per_piece;
             c.derivatives_into(t, 1, D);
             const double x = D(0, 0), y = D(0, 1);
-            if (!(x * x + y * y > 0.0)) fail_input(who, "r'(t) = 0 at t = " + full_precision(t) + ": the tangent is undefined there");
+            if (!(x * x + y * y > 0.0))
+                fail_input(who, "r'(t) = 0 at t = " + full_precision(t) + ": the tangent is undefined there");
             if (!first) turn += std::atan2(px * y - py * x, px * x + py * y);
             px = x, py = y, first = false;
         }
@@ -221,7 +239,8 @@ double tangent_turns(const Curve& c, int samples_per_piece) {
 }
 
 int polygon_turning_number(const PointList& p) {
-    if (p.cols() != 2 || p.rows() < 3) fail_input("cagd::analysis::polygon_turning_number", "needs at least 3 planar points");
+    if (p.cols() != 2 || p.rows() < 3)
+        fail_input("cagd::analysis::polygon_turning_number", "needs at least 3 planar points");
     const Eigen::Index n = p.rows();
     double turn = 0.0;
     for (Eigen::Index i = 0; i < n; ++i) {
@@ -233,14 +252,18 @@ int polygon_turning_number(const PointList& p) {
 
 std::string closed_curve_anomaly(const Curve& c, const PointList& points, double length) {
     double perimeter = 0.0;
-    for (Eigen::Index i = 0; i < points.rows(); ++i) perimeter += (points.row((i + 1) % points.rows()) - points.row(i)).norm();
+    for (Eigen::Index i = 0; i < points.rows(); ++i)
+        perimeter += (points.row((i + 1) % points.rows()) - points.row(i)).norm();
     const long curve_turns = std::lround(tangent_turns(c)), polygon_turns = polygon_turning_number(points);
     std::string reason;
-    if (curve_turns != polygon_turns) reason = "turning number " + std::to_string(curve_turns) + " against the polygon's " + std::to_string(polygon_turns);
+    if (curve_turns != polygon_turns)
+        reason =
+            "turning number " + std::to_string(curve_turns) + " against the polygon's " + std::to_string(polygon_turns);
     if (length > kLoopingLengthFactor * perimeter) {
         char ratio[32];
         std::snprintf(ratio, sizeof ratio, "%.3g", length / perimeter);
-        reason += (reason.empty() ? "" : "; ") + std::string("length ") + ratio + " × the polygon's perimeter (more than " + std::to_string(kLoopingLengthFactor).substr(0, 3) + ")";
+        reason += (reason.empty() ? "" : "; ") + std::string("length ") + ratio +
+                  " × the polygon's perimeter (more than " + std::to_string(kLoopingLengthFactor).substr(0, 3) + ")";
     }
     return reason;
 }

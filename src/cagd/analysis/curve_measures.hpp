@@ -44,7 +44,7 @@ double area_closed_by_chord(const Curve& c);
 /// per piece to rel 1e-12, with Boost's error estimate summed over the pieces. Milliseconds where
 /// Romberg to 1e-13 takes seconds per piece (and on some pieces stalls at rounding, unconverged).
 struct ArcLength {
-    double value = 0.0;  ///< the arc length
+    double value = 0.0;           ///< the arc length
     double error_estimate = 0.0;  ///< its error estimate
 };
 /// Arc length by the reference path with its error estimate.

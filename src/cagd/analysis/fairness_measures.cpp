@@ -10,7 +10,9 @@
 
 namespace cagd::analysis {
 
-FairnessMeasures fairness_measures(const Curve& c, const PointList& data, int samples) { return fairness_measures(c, data, FairnessSampling{samples, 64}); }
+FairnessMeasures fairness_measures(const Curve& c, const PointList& data, int samples) {
+    return fairness_measures(c, data, FairnessSampling{samples, 64});
+}
 
 FairnessMeasures fairness_measures(const Curve& c, const PointList& data, const FairnessSampling& sampling) {
     const char* who = "cagd::analysis::fairness_measures";
@@ -18,7 +20,8 @@ FairnessMeasures fairness_measures(const Curve& c, const PointList& data, const 
     if (pieces < 1) fail_input(who, "quadrature_pieces must be >= 1, got " + std::to_string(pieces));
     const int dim = c.dimension();
     if (dim != 2 && dim != 3) fail_input(who, "needs a planar or space curve, dimension is " + std::to_string(dim));
-    if (data.cols() != dim || data.rows() < 1) fail_input(who, "needs data points of the curve's dimension " + std::to_string(dim));
+    if (data.cols() != dim || data.rows() < 1)
+        fail_input(who, "needs data points of the curve's dimension " + std::to_string(dim));
     if (samples < 2) fail_input(who, "samples must be >= 2, got " + std::to_string(samples));
     const Eigen::RowVectorXd lo = data.colwise().minCoeff(), hi = data.colwise().maxCoeff();
     const double diagonal = (hi - lo).norm();
@@ -26,7 +29,7 @@ FairnessMeasures fairness_measures(const Curve& c, const PointList& data, const 
     m.dimension = dim;
     const std::vector<double> br = c.breakpoints();
     const double extent = std::max(diagonal, 1e-300);  // D of the flatness policy
-    std::vector<int> signs;  // of κ at the samples (planar)
+    std::vector<int> signs;                            // of κ at the samples (planar)
     for (std::size_t k = 0; k + 1 < br.size(); ++k) {
         const double a = br[k], b = br[k + 1];
         const auto [len, energy] = piece_length_and_bending_energy(c, a, b, pieces);
@@ -56,7 +59,8 @@ FairnessMeasures fairness_measures(const Curve& c, const PointList& data, const 
             else
                 c.derivatives_into(u, 3, J);
             const FrenetJet f = frenet_jet(J.middleRows(r1, 3));
-            if (!f.regular) fail_input(who, "zero speed (a cusp) at t = " + full_precision(u) + ": curvature is undefined there");
+            if (!f.regular)
+                fail_input(who, "zero speed (a cusp) at t = " + full_precision(u) + ": curvature is undefined there");
             const double kappa = f.curvature;  // signed in the plane, |κ| in space
             if (dim == 2) {
                 m.max_abs_curvature_derivative = std::max(m.max_abs_curvature_derivative, std::abs(f.curvature_rate));
@@ -83,7 +87,8 @@ FairnessMeasures fairness_measures(const Curve& c, const PointList& data, const 
 }
 
 std::vector<CurvatureSample> curvature_profile(const Curve& c, int samples) {
-    if (samples < 1) fail_input("cagd::analysis::curvature_profile", "samples must be >= 1, got " + std::to_string(samples));
+    if (samples < 1)
+        fail_input("cagd::analysis::curvature_profile", "samples must be >= 1, got " + std::to_string(samples));
     std::vector<CurvatureSample> out;
     const std::vector<double> br = c.breakpoints();
     double s = 0.0;
@@ -102,11 +107,13 @@ std::vector<CurvatureSample> curvature_profile(const Curve& c, int samples) {
 
 int self_intersections(const Curve& c, int samples) {
     if (c.dimension() != 2) fail_input("cagd::analysis::self_intersections", "needs a planar curve");
-    if (samples < 1) fail_input("cagd::analysis::self_intersections", "samples must be >= 1, got " + std::to_string(samples));
+    if (samples < 1)
+        fail_input("cagd::analysis::self_intersections", "samples must be >= 1, got " + std::to_string(samples));
     std::vector<Eigen::Vector2d> p;
     const std::vector<double> br = c.breakpoints();
     for (std::size_t k = 0; k + 1 < br.size(); ++k)
-        for (int j = 0; j < samples + (k + 2 == br.size() ? 1 : 0); ++j) p.push_back(c.point(br[k] + (br[k + 1] - br[k]) * j / samples));
+        for (int j = 0; j < samples + (k + 2 == br.size() ? 1 : 0); ++j)
+            p.push_back(c.point(br[k] + (br[k + 1] - br[k]) * j / samples));
     const auto cross = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); };
     const bool closed = (p.front() - p.back()).norm() == 0.0;
     int count = 0;

@@ -36,20 +36,20 @@ namespace cagd::analysis {
 
 /// The measures above for one curve.
 struct FairnessMeasures {
-    double length = 0.0;  ///< arc length
+    double length = 0.0;          ///< arc length
     double bending_energy = 0.0;  ///< ∫ κ² ds
-    double pseudo_energy = 0.0;  ///< Σ L_k² E_k over the pieces
+    double pseudo_energy = 0.0;   ///< Σ L_k² E_k over the pieces
     /// Sign changes of the signed curvature (planar).
     int curvature_sign_changes = 0;
-    double max_abs_curvature = 0.0;  ///< largest sampled |κ|
+    double max_abs_curvature = 0.0;             ///< largest sampled |κ|
     double max_abs_curvature_derivative = 0.0;  ///< max |dκ/ds|
     double overshoot = 0.0;                     ///< relative to the data's bounding-box diagonal
     double max_spike = 0.0;                     ///< max over spans of max |κ| · chord
     int corners = 0;                            ///< spans with |κ| · chord > corner_threshold
-    int dimension = 2;  ///< 2 (planar) or 3 (space)
-    double max_abs_torsion = 0.0;  ///< space curves; 0 for planar ones
+    int dimension = 2;                          ///< 2 (planar) or 3 (space)
+    double max_abs_torsion = 0.0;               ///< space curves; 0 for planar ones
     /// Per piece between consecutive breakpoints (what the totals above sum): length L_k and ∫κ² ds E_k.
-    std::vector<double> piece_lengths;  ///< L_k per piece
+    std::vector<double> piece_lengths;   ///< L_k per piece
     std::vector<double> piece_energies;  ///< E_k per piece
 };
 
@@ -60,7 +60,7 @@ constexpr double kCornerThreshold = 100.0;
 /// 20-point Gauss–Legendre rule) for length and energy: 512 and 64 by default; long inputs (10^5
 /// pieces) take fewer of both, trading resolution for time linearly.
 struct FairnessSampling {
-    int samples = 512;  ///< samples per piece (sign changes, maxima, overshoot)
+    int samples = 512;           ///< samples per piece (sign changes, maxima, overshoot)
     int quadrature_pieces = 64;  ///< Gauss–Legendre sub-pieces per piece (length, energies)
 };
 /// The measures of `c` through `data` (the data give the bounding box and the spans' chords).
@@ -70,8 +70,8 @@ FairnessMeasures fairness_measures(const Curve& c, const PointList& data, int sa
 
 /// One sample of a curvature profile κ(s).
 struct CurvatureSample {
-    double u = 0.0;  ///< the curve's parameter
-    double s = 0.0;  ///< arc length from t_min
+    double u = 0.0;      ///< the curve's parameter
+    double s = 0.0;      ///< arc length from t_min
     double kappa = 0.0;  ///< signed curvature (planar) or κ ≥ 0 (space)
 };
 /// κ(s) profile: `samples` per piece (plus the last point), s the arc length from u = t_min.

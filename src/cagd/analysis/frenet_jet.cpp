@@ -10,7 +10,8 @@ namespace cagd::analysis {
 FrenetJet frenet_jet(const Eigen::Ref<const Eigen::MatrixXd>& D) {
     const char* who = "cagd::analysis::frenet_jet";
     if (D.rows() < 2) fail_input(who, "needs r' and r'' (2 rows of derivatives), got " + std::to_string(D.rows()));
-    if (D.cols() != 2 && D.cols() != 3) fail_input(who, "needs a curve of dimension 2 or 3, got " + std::to_string(D.cols()));
+    if (D.cols() != 2 && D.cols() != 3)
+        fail_input(who, "needs a curve of dimension 2 or 3, got " + std::to_string(D.cols()));
     FrenetJet f;
     const double v2 = D.row(0).squaredNorm(), v = std::sqrt(v2);
     f.speed = v;
@@ -21,7 +22,8 @@ FrenetJet frenet_jet(const Eigen::Ref<const Eigen::MatrixXd>& D) {
         const double x1 = D(0, 0), y1 = D(0, 1);
         const double cross = x1 * D(1, 1) - y1 * D(1, 0);
         f.curvature = cross / (v2 * v);
-        if (D.rows() >= 3) f.curvature_rate = ((x1 * D(2, 1) - y1 * D(2, 0)) * v2 - 3.0 * cross * along) / (v2 * v2 * v2);
+        if (D.rows() >= 3)
+            f.curvature_rate = ((x1 * D(2, 1) - y1 * D(2, 0)) * v2 - 3.0 * cross * along) / (v2 * v2 * v2);
         return f;
     }
     const Eigen::Vector3d d1 = D.row(0).transpose(), d2 = D.row(1).transpose();

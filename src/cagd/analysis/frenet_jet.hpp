@@ -36,8 +36,8 @@ inline constexpr double kFlatCurvature = 1e-9;  ///< the flatness policy's bound
 /// are NaN (dκ/ds and τ need r‴, dτ/ds needs r⁗); at a point of zero speed (regular = false) every
 /// field but speed is NaN.
 struct FrenetJet {
-    bool regular = false;  ///< |r′| > 0
-    double speed = 0.0;    ///< v = |r′|
+    bool regular = false;                                              ///< |r′| > 0
+    double speed = 0.0;                                                ///< v = |r′|
     double curvature = std::numeric_limits<double>::quiet_NaN();       ///< κ: signed in the plane, ≥ 0 in space
     double curvature_rate = std::numeric_limits<double>::quiet_NaN();  ///< dκ/ds
     double torsion = std::numeric_limits<double>::quiet_NaN();         ///< τ (space; NaN where r′ × r″ = 0)

@@ -19,7 +19,8 @@ struct CurvatureAndRate {
 
 // κ and dκ/ds (signed in the plane: the graph takes |κ| and |κ/κ_s|); 0 and 0 where r′ × r″ = 0.
 CurvatureAndRate curvature_and_rate(const Curve& c, double t) {
-    if (c.dimension() < 2 || c.dimension() > 3) fail_input("cagd::analysis::log_curvature_graph", "curve dimension must be 2 or 3");
+    if (c.dimension() < 2 || c.dimension() > 3)
+        fail_input("cagd::analysis::log_curvature_graph", "curve dimension must be 2 or 3");
     const Eigen::MatrixXd j = c.jet(t, 3);
     const FrenetJet f = frenet_jet(j.bottomRows(3));
     if (!f.regular) fail_input("cagd::analysis::log_curvature_graph", "r'(t) = 0 at t = " + full_precision(t));
@@ -35,7 +36,9 @@ namespace {
 
 // τ and dτ/ds of a 3-D curve (NaN where r′ × r″ = 0).
 FrenetJet torsion_and_rate(const Curve& c, double t) {
-    if (c.dimension() != 3) fail_input("cagd::analysis::torsion", "torsion needs a 3-D curve, got dimension " + std::to_string(c.dimension()));
+    if (c.dimension() != 3)
+        fail_input("cagd::analysis::torsion",
+                   "torsion needs a 3-D curve, got dimension " + std::to_string(c.dimension()));
     const Eigen::MatrixXd j = c.jet(t, 4);
     const FrenetJet f = frenet_jet(j.bottomRows(4));
     if (!f.regular) fail_input("cagd::analysis::torsion", "r'(t) = 0 at t = " + full_precision(t));
@@ -46,8 +49,8 @@ FrenetJet torsion_and_rate(const Curve& c, double t) {
 template <class RateAndDerivative>
 LcgSamples log_rate_graph(const char* who, const Curve& c, double t0, double t1, int samples, RateAndDerivative rate) {
     if (!(t0 >= c.t_min() && t1 <= c.t_max() && t0 < t1))
-        fail_input(who,
-                   "range [" + full_precision(t0) + ", " + full_precision(t1) + "] not inside [" + full_precision(c.t_min()) + ", " + full_precision(c.t_max()) + "] or empty");
+        fail_input(who, "range [" + full_precision(t0) + ", " + full_precision(t1) + "] not inside [" +
+                            full_precision(c.t_min()) + ", " + full_precision(c.t_max()) + "] or empty");
     if (samples < 2) fail_input(who, "samples = " + std::to_string(samples) + " < 2");
     LcgSamples out;
     for (int k = 0; k < samples; ++k) {
@@ -98,7 +101,9 @@ double torsion(const Curve& c, double t) { return torsion(c, t, curve_extent(c))
 double torsion_arc_derivative(const Curve& c, double t) { return torsion_and_rate(c, t).torsion_rate; }
 
 CurvatureTorsionExtremes curvature_torsion_extremes(const Curve& c, int samples_per_piece) {
-    if (samples_per_piece < 1) fail_input("cagd::analysis::curvature_torsion_extremes", "samples_per_piece = " + std::to_string(samples_per_piece) + " < 1");
+    if (samples_per_piece < 1)
+        fail_input("cagd::analysis::curvature_torsion_extremes",
+                   "samples_per_piece = " + std::to_string(samples_per_piece) + " < 1");
     // τ is measured where it is defined by the flatness policy (torsion(c, t, extent) not NaN).
     CurvatureTorsionExtremes e;
     std::vector<std::pair<double, double>> samples;  // (t, kappa)
@@ -112,7 +117,8 @@ CurvatureTorsionExtremes curvature_torsion_extremes(const Curve& c, int samples_
     if (c.dimension() == 3) {
         const double extent = curve_extent(c);
         for (const auto& [t, kappa] : samples)
-            if (!is_straight(kappa, extent)) e.max_abs_torsion = std::max(e.max_abs_torsion, std::abs(torsion_and_rate(c, t).torsion));
+            if (!is_straight(kappa, extent))
+                e.max_abs_torsion = std::max(e.max_abs_torsion, std::abs(torsion_and_rate(c, t).torsion));
     }
     return e;
 }
@@ -125,7 +131,8 @@ LcgSamples log_torsion_graph(const Curve& c, double t0, double t1, int samples) 
 }
 
 LineFit fit_line(const std::vector<double>& x, const std::vector<double>& y) {
-    if (x.size() != y.size() || x.size() < 2) fail_input("cagd::analysis::fit_line", "needs at least two (x, y) pairs of equal count");
+    if (x.size() != y.size() || x.size() < 2)
+        fail_input("cagd::analysis::fit_line", "needs at least two (x, y) pairs of equal count");
     const double n = static_cast<double>(x.size());
     double mx = 0.0, my = 0.0;
     for (std::size_t i = 0; i < x.size(); ++i) {
@@ -144,12 +151,17 @@ LineFit fit_line(const std::vector<double>& x, const std::vector<double>& y) {
     f.slope = sxy / sxx;
     f.intercept = my - f.slope * mx;
     f.points = static_cast<int>(x.size());
-    for (std::size_t i = 0; i < x.size(); ++i) f.max_residual = std::max(f.max_residual, std::abs(y[i] - (f.slope * x[i] + f.intercept)));
+    for (std::size_t i = 0; i < x.size(); ++i)
+        f.max_residual = std::max(f.max_residual, std::abs(y[i] - (f.slope * x[i] + f.intercept)));
     return f;
 }
 
-LineFit lcg_slope(const Curve& c, double t0, double t1, int samples) { return fit_graph("cagd::analysis::lcg_slope", log_curvature_graph(c, t0, t1, samples)); }
+LineFit lcg_slope(const Curve& c, double t0, double t1, int samples) {
+    return fit_graph("cagd::analysis::lcg_slope", log_curvature_graph(c, t0, t1, samples));
+}
 
-LineFit ltg_slope(const Curve& c, double t0, double t1, int samples) { return fit_graph("cagd::analysis::ltg_slope", log_torsion_graph(c, t0, t1, samples)); }
+LineFit ltg_slope(const Curve& c, double t0, double t1, int samples) {
+    return fit_graph("cagd::analysis::ltg_slope", log_torsion_graph(c, t0, t1, samples));
+}
 
 }  // namespace cagd::analysis

@@ -29,7 +29,7 @@ namespace cagd::analysis {
 
 /// One point of a logarithmic curvature (or torsion) graph.
 struct LcgPoint {
-    double t;  ///< the curve parameter of the sample
+    double t;             ///< the curve parameter of the sample
     double log_radius;    ///< x = log ρ
     double log_gradient;  ///< y = log |ρ ds/dρ|
 };
@@ -37,7 +37,7 @@ struct LcgPoint {
 /// The samples of a logarithmic curvature (or torsion) graph.
 struct LcgSamples {
     std::vector<LcgPoint> points;  ///< the usable samples
-    int skipped = 0;  ///< samples with κ = 0 or κ_s = 0
+    int skipped = 0;               ///< samples with κ = 0 or κ_s = 0
 };
 
 /// dκ/ds of the unsigned curvature κ = |r' × r''|/|r'|³ at t.
@@ -48,10 +48,10 @@ LcgSamples log_curvature_graph(const Curve& c, double t0, double t1, int samples
 
 /// A least-squares line y = slope x + intercept.
 struct LineFit {
-    double slope = 0.0;  ///< the slope (the LCG slope α for a log-aesthetic curve)
-    double intercept = 0.0;  ///< the intercept
+    double slope = 0.0;         ///< the slope (the LCG slope α for a log-aesthetic curve)
+    double intercept = 0.0;     ///< the intercept
     double max_residual = 0.0;  ///< largest |y − (slope x + intercept)|
-    int points = 0;  ///< points fitted
+    int points = 0;             ///< points fitted
 };
 /// Least-squares line through (x, y); at least two distinct x (InvalidInput otherwise).
 LineFit fit_line(const std::vector<double>& x, const std::vector<double>& y);
@@ -71,7 +71,7 @@ double torsion(const Curve& c, double t);
 /// Precondition: r'(t) ≠ 0 at the samples (InvalidInput names t).
 struct CurvatureTorsionExtremes {
     double max_abs_curvature = 0.0;  ///< largest sampled |κ|
-    double max_abs_torsion = 0.0;  ///< 0 for planar curves
+    double max_abs_torsion = 0.0;    ///< 0 for planar curves
 };
 /// The largest |κ| and |τ| over `samples_per_piece` samples of each piece.
 CurvatureTorsionExtremes curvature_torsion_extremes(const Curve& c, int samples_per_piece = 32);

@@ -16,7 +16,8 @@ double sample_curvature(const Eigen::RowVectorXd& d1, const Eigen::RowVectorXd& 
     Eigen::MatrixXd D(2, d1.size());
     D << d1, d2;
     const FrenetJet f = frenet_jet(D);
-    if (!f.regular) fail_input("cagd::analysis::sampled_curve_measures", "zero speed at sample " + std::to_string(index));
+    if (!f.regular)
+        fail_input("cagd::analysis::sampled_curve_measures", "zero speed at sample " + std::to_string(index));
     return f.curvature;
 }
 
@@ -29,11 +30,14 @@ SampledCurveMeasures sampled_curve_measures(const CurveSamples& s) {
     if (n < 2) fail_input(who, "needs at least 2 samples, got " + std::to_string(n));
     if (d != 2 && d != 3) fail_input(who, "needs 2 or 3 coordinates, got " + std::to_string(d));
     if (!p.allFinite()) fail_input(who, "a position is not finite");
-    if (s.first.has_value() != s.second.has_value()) fail_input(who, "needs both first and second derivatives, or neither");
+    if (s.first.has_value() != s.second.has_value())
+        fail_input(who, "needs both first and second derivatives, or neither");
     if (s.first && (s.first->rows() != n || s.first->cols() != d || s.second->rows() != n || s.second->cols() != d))
-        fail_input(who, "derivative columns do not match the position's " + std::to_string(n) + " x " + std::to_string(d));
+        fail_input(who,
+                   "derivative columns do not match the position's " + std::to_string(n) + " x " + std::to_string(d));
     if (s.first && (!s.first->allFinite() || !s.second->allFinite())) fail_input(who, "a derivative is not finite");
-    if (!s.parameter.empty() && static_cast<Eigen::Index>(s.parameter.size()) != n) fail_input(who, "one parameter value per sample is needed");
+    if (!s.parameter.empty() && static_cast<Eigen::Index>(s.parameter.size()) != n)
+        fail_input(who, "one parameter value per sample is needed");
 
     SampledCurveMeasures m;
     m.samples = static_cast<int>(n);

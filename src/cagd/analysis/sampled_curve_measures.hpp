@@ -33,15 +33,15 @@ struct CurveSamples {
 
 /// What sampled_curve_measures finds.
 struct SampledCurveMeasures {
-    int samples = 0;  ///< samples read
-    double polyline_length = 0.0;  ///< length of the polyline through the samples
-    bool closed = false;  ///< first and last sample within kClosedRelativeGap of the length
+    int samples = 0;                      ///< samples read
+    double polyline_length = 0.0;         ///< length of the polyline through the samples
+    bool closed = false;                  ///< first and last sample within kClosedRelativeGap of the length
     std::optional<double> enclosed_area;  ///< planar closed curves
     bool has_curvature = false;           ///< derivatives given
-    double curvature_min = 0.0;  ///< smallest (signed) curvature
-    double curvature_min_at = 0.0;  ///< its parameter
-    double curvature_max = 0.0;  ///< largest (signed) curvature
-    double curvature_max_at = 0.0;  ///< its parameter
+    double curvature_min = 0.0;           ///< smallest (signed) curvature
+    double curvature_min_at = 0.0;        ///< its parameter
+    double curvature_max = 0.0;           ///< largest (signed) curvature
+    double curvature_max_at = 0.0;        ///< its parameter
     double bending_energy = 0.0;  ///< ∫ κ² ds by the trapezoid rule over the polyline's arc length (derivatives given)
 };
 

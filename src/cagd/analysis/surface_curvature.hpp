@@ -17,9 +17,9 @@ namespace cagd::analysis {
 
 /// S and its derivatives to second order at one (u, v).
 struct SurfaceJet2 {
-    Eigen::Vector3d s;  ///< S
-    Eigen::Vector3d su;  ///< S_u
-    Eigen::Vector3d sv;  ///< S_v
+    Eigen::Vector3d s;    ///< S
+    Eigen::Vector3d su;   ///< S_u
+    Eigen::Vector3d sv;   ///< S_v
     Eigen::Vector3d suu;  ///< S_uu
     Eigen::Vector3d suv;  ///< S_uv
     Eigen::Vector3d svv;  ///< S_vv
@@ -28,13 +28,14 @@ struct SurfaceJet2 {
 /// Gaussian and mean curvature at a point.
 struct SurfaceCurvatures {
     double gaussian = 0.0;  ///< K
-    double mean = 0.0;  ///< H, signed with S_u × S_v
+    double mean = 0.0;      ///< H, signed with S_u × S_v
 };
 
 /// K and H from the second-derivative route above.
 SurfaceCurvatures surface_curvatures(const SurfaceJet2& jet);
 /// K and H by Weingarten's equations from S_u, S_v and the unit normal's derivatives N_u, N_v.
-SurfaceCurvatures surface_curvatures_weingarten(const Eigen::Vector3d& su, const Eigen::Vector3d& sv, const Eigen::Vector3d& nu, const Eigen::Vector3d& nv);
+SurfaceCurvatures surface_curvatures_weingarten(const Eigen::Vector3d& su, const Eigen::Vector3d& sv,
+                                                const Eigen::Vector3d& nu, const Eigen::Vector3d& nv);
 Eigen::Vector3d unit_normal(const SurfaceJet2& jet);  ///< S_u × S_v / |S_u × S_v|
 
 }  // namespace cagd::analysis

@@ -24,7 +24,9 @@ namespace {
 constexpr analysis::FairnessSampling kOvershootSampling{.samples = 64, .quadrature_pieces = 2};
 
 bool is_data_set_name(const std::string& s) {
-    return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.'; });
+    return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.';
+    });
 }
 
 }  // namespace
@@ -50,19 +52,26 @@ std::vector<ClassicDataSet> read_classic_data(const std::string& path) {
             header = fields;
             for (std::size_t i = 0; i < header.size(); ++i) column[header[i]] = i;
             for (const char* name : {"name", "group", "file", "closed", "source"})
-                if (!column.count(name)) fail_input(who, where + ": the header \"" + excerpt(line) + "\" has no column \"" + name + "\" (needs name, group, file, closed, source)");
+                if (!column.count(name))
+                    fail_input(who, where + ": the header \"" + excerpt(line) + "\" has no column \"" + name +
+                                        "\" (needs name, group, file, closed, source)");
             continue;
         }
         if (fields.size() != header.size())
-            fail_input(who, where + ": " + std::to_string(fields.size()) + " fields where the header has " + std::to_string(header.size()) + ": \"" + excerpt(line) + "\"");
+            fail_input(who, where + ": " + std::to_string(fields.size()) + " fields where the header has " +
+                                std::to_string(header.size()) + ": \"" + excerpt(line) + "\"");
         ClassicDataSet d;
-        d.name = fields[column["name"]], d.group = fields[column["group"]], d.file = fields[column["file"]], d.source = fields[column["source"]];
+        d.name = fields[column["name"]], d.group = fields[column["group"]], d.file = fields[column["file"]],
+        d.source = fields[column["source"]];
         const std::string closed = fields[column["closed"]];
-        if (!is_data_set_name(d.name)) fail_input(who, where + ": name \"" + excerpt(d.name) + "\" is not letters, digits, '-', '_', '.'");
+        if (!is_data_set_name(d.name))
+            fail_input(who, where + ": name \"" + excerpt(d.name) + "\" is not letters, digits, '-', '_', '.'");
         for (const ClassicDataSet& other : sets)
             if (other.name == d.name) fail_input(who, where + ": the name \"" + d.name + "\" is used twice");
-        if (closed != "0" && closed != "1") fail_input(who, where + ": closed \"" + excerpt(closed) + "\" is neither 0 nor 1");
-        if (d.group.empty() || d.source.empty() || d.file.empty()) fail_input(who, where + ": " + d.name + " needs a group, a file and a source");
+        if (closed != "0" && closed != "1")
+            fail_input(who, where + ": closed \"" + excerpt(closed) + "\" is neither 0 nor 1");
+        if (d.group.empty() || d.source.empty() || d.file.empty())
+            fail_input(who, where + ": " + d.name + " needs a group, a file and a source");
         d.closed = closed == "1";
         d.points = read_points_csv((folder / d.file).string());
         sets.push_back(std::move(d));
@@ -71,7 +80,9 @@ std::vector<ClassicDataSet> read_classic_data(const std::string& path) {
     return sets;
 }
 
-std::vector<ClassicRun> run_classic_benchmark(const std::vector<ClassicDataSet>& sets, const std::vector<std::string>& names, int threads, const WorkShare& share) {
+std::vector<ClassicRun> run_classic_benchmark(const std::vector<ClassicDataSet>& sets,
+                                              const std::vector<std::string>& names, int threads,
+                                              const WorkShare& share) {
     check_work_share(share, "compare::run_classic_benchmark");
     std::vector<methods::Configuration> configurations;
     for (const std::string& name : names) configurations.push_back(methods::find_configuration(name));
@@ -86,14 +97,16 @@ std::vector<ClassicRun> run_classic_benchmark(const std::vector<ClassicDataSet>&
         const ClassicDataSet& d = sets[static_cast<std::size_t>(index) / configurations.size()];
         const methods::Configuration& m = configurations[static_cast<std::size_t>(index) % configurations.size()];
         ClassicRun& r = runs[static_cast<std::size_t>(index)];
-        r.data_set = d.name, r.group = d.group, r.n = static_cast<int>(d.points.rows()), r.closed = d.closed, r.method = m.name;
+        r.data_set = d.name, r.group = d.group, r.n = static_cast<int>(d.points.rows()), r.closed = d.closed,
+        r.method = m.name;
         const InterpolationAttempt attempt = attempt_interpolation(m, d.points, d.closed);
         r.status = attempt.status;
         r.note = attempt.note;
         if (attempt.status != AttemptStatus::ok) return;
         const methods::Interpolant& in = *attempt.result.interpolant;
         r.shape = shape_measures(*in.curve, in.node_parameters, d.closed);
-        const bool finite = std::isfinite(r.shape.bending) && std::isfinite(r.shape.variation) && std::isfinite(r.shape.max_curvature) && std::isfinite(r.shape.g2_defect);
+        const bool finite = std::isfinite(r.shape.bending) && std::isfinite(r.shape.variation) &&
+                            std::isfinite(r.shape.max_curvature) && std::isfinite(r.shape.g2_defect);
         const auto cusp = [&r](const std::string& note) {
             r.status = AttemptStatus::cusp;
             r.note = note;
@@ -102,7 +115,8 @@ std::vector<ClassicRun> run_classic_benchmark(const std::vector<ClassicDataSet>&
         if (!finite) return cusp("the curve has a point of zero speed, where its curvature is undefined");
         try {
             r.overshoot = analysis::fairness_measures(*in.curve, d.points, kOvershootSampling).overshoot;
-        } catch (const InvalidInput& e) {  // its samples include the spans' ends, where Boost's pchip stops (x' = y' = 0)
+        } catch (
+            const InvalidInput& e) {  // its samples include the spans' ends, where Boost's pchip stops (x' = y' = 0)
             return cusp(in_user_terms(one_line(e.what())));
         }
         r.extensionality = extensionality(m, d.points, d.closed, in);
@@ -123,10 +137,12 @@ std::vector<std::vector<std::string>> classic_runs_rows(const std::vector<Classi
     std::vector<std::vector<std::string>> rows;
     for (const ClassicRun& r : runs) {
         const bool ok = r.status == AttemptStatus::ok;
-        std::vector<std::string> row{r.data_set, r.group, std::to_string(r.n), r.closed ? "1" : "0", r.method, to_string(r.status)};
+        std::vector<std::string> row{r.data_set,           r.group,  std::to_string(r.n),
+                                     r.closed ? "1" : "0", r.method, to_string(r.status)};
         const ShapeMeasures& s = r.shape;
-        for (const double v : {s.bending, s.variation, s.max_curvature, static_cast<double>(s.curvature_extrema), s.g2_defect, static_cast<double>(s.inflections),
-                               static_cast<double>(s.unimplied_inflections), r.overshoot})
+        for (const double v :
+             {s.bending, s.variation, s.max_curvature, static_cast<double>(s.curvature_extrema), s.g2_defect,
+              static_cast<double>(s.inflections), static_cast<double>(s.unimplied_inflections), r.overshoot})
             row.push_back(ok ? format_number(v, digits) : "");
         row.push_back(ok && r.extensionality ? format_number(*r.extensionality, digits) : "");
         std::string note = r.note;
@@ -153,23 +169,31 @@ std::vector<const ClassicRun*> ordered_runs(const std::vector<ClassicRun>& runs,
     return rows;
 }
 
-std::string points_text(const ClassicDataSet& d) { return std::to_string(d.points.rows()) + (d.closed ? " points, closed" : " points, open"); }
+std::string points_text(const ClassicDataSet& d) {
+    return std::to_string(d.points.rows()) + (d.closed ? " points, closed" : " points, open");
+}
 
 }  // namespace
 
 std::string classic_tables_markdown(const std::vector<ClassicRun>& runs, const std::vector<ClassicDataSet>& sets) {
     std::ostringstream md;
     md << "# The interpolant benchmark on classic data\n\n"
-          "Generated by `cagd benchmark --classic` (`src/cagd/compare/classic_benchmark.hpp`); do not edit. Data with no true curve: per data set every "
-          "configuration's scale-free shape measures, ordered by the bending energy (lowest first). bending L∫κ² ds; variation L³∫κ'² ds; max |κ|·L; "
-          "κ extrema: sign changes of κ'; G2 defect: the largest curvature jump at a point × L; inflections: sign changes of κ, (+u): u of them not implied "
-          "by the polygon through the points; overshoot: how far the curve leaves the points' bounding box ÷ its diagonal; extension: how far the curve "
+          "Generated by `cagd benchmark --classic` (`src/cagd/compare/classic_benchmark.hpp`); do not edit. Data with "
+          "no true curve: per data set every "
+          "configuration's scale-free shape measures, ordered by the bending energy (lowest first). bending L∫κ² ds; "
+          "variation L³∫κ'² ds; max |κ|·L; "
+          "κ extrema: sign changes of κ'; G2 defect: the largest curvature jump at a point × L; inflections: sign "
+          "changes of κ, (+u): u of them not implied "
+          "by the polygon through the points; overshoot: how far the curve leaves the points' bounding box ÷ its "
+          "diagonal; extension: how far the curve "
           "moves, ÷ L, when a point taken on it is added. Data: [`classic_runs.csv`](classic_runs.csv).\n";
     for (const ClassicDataSet& d : sets) {
         const std::vector<const ClassicRun*> rows = ordered_runs(runs, d.name);
         if (rows.empty()) continue;
-        md << "\n## " << d.name << "\n\n" << points_text(d) << " (" << d.group << "). Source: " << d.source << ".\n\n"
-           << "| method | bending | variation | max κ·L | κ extrema | G2 defect | inflections | overshoot | extension |\n"
+        md << "\n## " << d.name << "\n\n"
+           << points_text(d) << " (" << d.group << "). Source: " << d.source << ".\n\n"
+           << "| method | bending | variation | max κ·L | κ extrema | G2 defect | inflections | overshoot | extension "
+              "|\n"
            << "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
         for (const ClassicRun* r : rows) {
             if (r->status != AttemptStatus::ok) {
@@ -177,8 +201,10 @@ std::string classic_tables_markdown(const std::vector<ClassicRun>& runs, const s
                 continue;
             }
             const ShapeMeasures& s = r->shape;
-            md << "| `" << r->method << "` | " << number(s.bending) << " | " << number(s.variation) << " | " << number(s.max_curvature) << " | " << s.curvature_extrema
-               << " | " << number(s.g2_defect) << " | " << inflections_text(s, d.points.cols() == 3) << " | " << number(r->overshoot) << " | " << (r->extensionality ? number(*r->extensionality) : "no curve") << " |\n";
+            md << "| `" << r->method << "` | " << number(s.bending) << " | " << number(s.variation) << " | "
+               << number(s.max_curvature) << " | " << s.curvature_extrema << " | " << number(s.g2_defect) << " | "
+               << inflections_text(s, d.points.cols() == 3) << " | " << number(r->overshoot) << " | "
+               << (r->extensionality ? number(*r->extensionality) : "no curve") << " |\n";
         }
     }
     return md.str();
@@ -187,11 +213,15 @@ std::string classic_tables_markdown(const std::vector<ClassicRun>& runs, const s
 std::string classic_summary_markdown(const std::vector<ClassicRun>& runs, const std::vector<ClassicDataSet>& sets) {
     if (runs.empty()) return "";
     std::ostringstream md;
-    md << "\n#### Classic data\n\nData with a history and no true curve: the papers' data, data sets from the interpolation literature and glyph outlines "
-          "(every configuration's measures in [`classic.md`](classic.md), the data in [`classic_runs.csv`](classic_runs.csv)). Per data set the lowest "
-          "bending energy L∫κ² ds, the configurations whose curve has inflections the polygon through the points does not imply (how many), and the "
+    md << "\n#### Classic data\n\nData with a history and no true curve: the papers' data, data sets from the "
+          "interpolation literature and glyph outlines "
+          "(every configuration's measures in [`classic.md`](classic.md), the data in "
+          "[`classic_runs.csv`](classic_runs.csv)). Per data set the lowest "
+          "bending energy L∫κ² ds, the configurations whose curve has inflections the polygon through the points does "
+          "not imply (how many), and the "
           "largest overshoot beyond the points' bounding box (÷ its diagonal):\n\n"
-          "| data set | points | lowest bending | unimplied inflections | largest overshoot | no curve |\n|---|---|---|---|---|---|\n";
+          "| data set | points | lowest bending | unimplied inflections | largest overshoot | no curve "
+          "|\n|---|---|---|---|---|---|\n";
     for (const ClassicDataSet& d : sets) {
         const std::vector<const ClassicRun*> rows = ordered_runs(runs, d.name);
         if (rows.empty()) continue;
@@ -200,7 +230,8 @@ std::string classic_summary_markdown(const std::vector<ClassicRun>& runs, const 
         const ClassicRun* worst = nullptr;
         for (const ClassicRun* r : rows) {
             if (r->status != AttemptStatus::ok) {
-                if (r->status != AttemptStatus::not_applicable) failed += (failed.empty() ? "`" : ", `") + r->method + "` (" + to_string(r->status) + ")";
+                if (r->status != AttemptStatus::not_applicable)
+                    failed += (failed.empty() ? "`" : ", `") + r->method + "` (" + to_string(r->status) + ")";
                 continue;
             }
             if (lowest == "—") lowest = "`" + r->method + "` " + number(r->shape.bending);
@@ -209,12 +240,18 @@ std::string classic_summary_markdown(const std::vector<ClassicRun>& runs, const 
         }
         if (worst) overshoot = worst->overshoot > 0 ? "`" + worst->method + "` " + number(worst->overshoot) : "none";
         // The shorter list: the configurations with unimplied inflections (how many), or those without.
-        std::string unimplied = with.empty() ? "none" : without.empty() ? "every one" : with.size() <= without.size() ? "" : "every one but ";
+        std::string unimplied = with.empty()                    ? "none"
+                                : without.empty()               ? "every one"
+                                : with.size() <= without.size() ? ""
+                                                                : "every one but ";
         const std::vector<const ClassicRun*>& listed = with.size() <= without.size() ? with : without;
         for (std::size_t i = 0; i < listed.size(); ++i)
-            unimplied += (i ? ", `" : "`") + listed[i]->method + "`" + (listed[i]->shape.unimplied_inflections > 0 ? " (" + std::to_string(listed[i]->shape.unimplied_inflections) + ")" : "");
-        md << "| " << d.name << " | " << points_text(d) << " | " << lowest << " | " << unimplied << " | " << overshoot << " | "
-           << (failed.empty() ? "—" : failed) << " |\n";
+            unimplied += (i ? ", `" : "`") + listed[i]->method + "`" +
+                         (listed[i]->shape.unimplied_inflections > 0
+                              ? " (" + std::to_string(listed[i]->shape.unimplied_inflections) + ")"
+                              : "");
+        md << "| " << d.name << " | " << points_text(d) << " | " << lowest << " | " << unimplied << " | " << overshoot
+           << " | " << (failed.empty() ? "—" : failed) << " |\n";
     }
     return md.str();
 }

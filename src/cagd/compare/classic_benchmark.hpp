@@ -31,33 +31,34 @@ namespace cagd::compare {
 
 /// One classic data set (see above).
 struct ClassicDataSet {
-    std::string name;    ///< unique name
-    std::string group;   ///< "paper", "literature", "glyph", …
-    std::string file;    ///< the point file as the manifest names it
-    bool closed = false; ///< interpolated as a closed curve
-    std::string source;  ///< bibliographic provenance
-    PointList points;    ///< the points read from `file`
+    std::string name;     ///< unique name
+    std::string group;    ///< "paper", "literature", "glyph", …
+    std::string file;     ///< the point file as the manifest names it
+    bool closed = false;  ///< interpolated as a closed curve
+    std::string source;   ///< bibliographic provenance
+    PointList points;     ///< the points read from `file`
 };
 /// The data sets of the manifest at `path` (see above), their points read.
 std::vector<ClassicDataSet> read_classic_data(const std::string& path);
 
 /// One configuration on one classic data set.
 struct ClassicRun {
-    std::string data_set;  ///< ClassicDataSet::name
-    std::string group;     ///< ClassicDataSet::group
-    int n = 0;             ///< number of points
-    bool closed = false;   ///< closed curve
-    std::string method;    ///< configuration name
+    std::string data_set;                      ///< ClassicDataSet::name
+    std::string group;                         ///< ClassicDataSet::group
+    int n = 0;                                 ///< number of points
+    bool closed = false;                       ///< closed curve
+    std::string method;                        ///< configuration name
     AttemptStatus status = AttemptStatus::ok;  ///< what became of it (interpolation_attempt.hpp)
-    std::string note;      ///< why not ok
-    ShapeMeasures shape;   ///< when ok
-    double overshoot = 0.0;  ///< when ok: outside the points' bounding box ÷ its diagonal
-    std::optional<double> extensionality;  ///< when ok (truth_benchmark.hpp's extensionality)
+    std::string note;                          ///< why not ok
+    ShapeMeasures shape;                       ///< when ok
+    double overshoot = 0.0;                    ///< when ok: outside the points' bounding box ÷ its diagonal
+    std::optional<double> extensionality;      ///< when ok (truth_benchmark.hpp's extensionality)
 };
 /// Every data set × configuration (`methods`: configuration or method names; empty: every one),
 /// data sets in the given order; `threads` runs at once (0: the hardware's). With a share of the
 /// work, the runs outside it (by their index in the result) are left empty (ClassicRun{}).
-std::vector<ClassicRun> run_classic_benchmark(const std::vector<ClassicDataSet>& sets, const std::vector<std::string>& methods, int threads = 0,
+std::vector<ClassicRun> run_classic_benchmark(const std::vector<ClassicDataSet>& sets,
+                                              const std::vector<std::string>& methods, int threads = 0,
                                               const WorkShare& share = {});
 
 /// classic_runs.csv's columns: data_set, group, n, closed, method, status, the shape measures

@@ -3,14 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
-#include <optional>
-#include <utility>
 #include <limits>
+#include <optional>
 #include <string>
+#include <utility>
 
 #include "cagd/analysis/curvature_comb.hpp"
-#include "cagd/analysis/frenet_jet.hpp"
 #include "cagd/analysis/curve_measures.hpp"
+#include "cagd/analysis/frenet_jet.hpp"
 #include "cagd/analysis/log_curvature_graph.hpp"
 #include "cagd/compare/locality_footprint.hpp"
 #include "cagd/core/errors.hpp"
@@ -19,7 +19,9 @@
 namespace cagd::compare {
 
 FigureSampling figure_sampling(int spans, int budget) {
-    if (spans < 1 || budget < 2) fail_input("cagd::compare::figure_sampling", "needs spans >= 1 and budget >= 2, got " + std::to_string(spans) + " and " + std::to_string(budget));
+    if (spans < 1 || budget < 2)
+        fail_input("cagd::compare::figure_sampling",
+                   "needs spans >= 1 and budget >= 2, got " + std::to_string(spans) + " and " + std::to_string(budget));
     // A sampled span yields per_span + 1 samples (both ends).
     const long total = static_cast<long>(spans), b = budget;
     if (total * 33 <= b) return {32, 1};
@@ -27,12 +29,17 @@ FigureSampling figure_sampling(int spans, int budget) {
     return {1, static_cast<int>((2 * total + b - 1) / b)};
 }
 
-FigureData comparison_figure_data(const std::vector<MethodComparison>& cs, const PointList& points, const FigureSampling& sampling) {
+FigureData comparison_figure_data(const std::vector<MethodComparison>& cs, const PointList& points,
+                                  const FigureSampling& sampling) {
     const int per_span = sampling.per_span, stride = sampling.span_stride;
     if (per_span < 1 || stride < 1)
-        fail_input("cagd::compare::comparison_figure_data", "per_span and span_stride must be >= 1, got " + std::to_string(per_span) + " and " + std::to_string(stride));
+        fail_input("cagd::compare::comparison_figure_data", "per_span and span_stride must be >= 1, got " +
+                                                                std::to_string(per_span) + " and " +
+                                                                std::to_string(stride));
     const bool trapezoid = sampling.arc_length == FigureSampling::ArcLength::trapezoid;
-    if (trapezoid && stride != 1) fail_input("cagd::compare::comparison_figure_data", "the trapezoid arc length needs every span sampled (span_stride 1), got " + std::to_string(stride));
+    if (trapezoid && stride != 1)
+        fail_input("cagd::compare::comparison_figure_data",
+                   "the trapezoid arc length needs every span sampled (span_stride 1), got " + std::to_string(stride));
     const double diagonal = bounding_box_diagonal(points);
     const bool space = points.cols() == 3;  // curves x, y, z; profiles s, κ, τ; no combs
     // One part per method, computed in parallel and joined in the methods' order.
@@ -61,16 +68,22 @@ FigureData comparison_figure_data(const std::vector<MethodComparison>& cs, const
         for (std::size_t k = 0; k + 1 < a.node_parameters.size(); ++k) {
             const bool last = k + 2 == a.node_parameters.size();
             if (k % static_cast<std::size_t>(stride) != 0 && !last) {
-                s += measured ? (*measured)[k].first : analysis::piece_arc_length(*a.curve, a.node_parameters[k], a.node_parameters[k + 1], 1);
+                s += measured ? (*measured)[k].first
+                              : analysis::piece_arc_length(*a.curve, a.node_parameters[k], a.node_parameters[k + 1], 1);
                 continue;
             }
             double previous = a.node_parameters[k], previous_speed = 0.0;
             for (int j = 0; j <= per_span; ++j) {
                 const double t = span_parameter(a, k, double(j) / per_span);
-                const Eigen::MatrixXd J = j == per_span && t > a.curve->t_min() ? a.curve->jet_from_left(t, space ? 3 : 2) : a.curve->jet(t, space ? 3 : 2);
+                const Eigen::MatrixXd J = j == per_span && t > a.curve->t_min()
+                                              ? a.curve->jet_from_left(t, space ? 3 : 2)
+                                              : a.curve->jet(t, space ? 3 : 2);
                 // The step's arc length: by quadrature, or the trapezoid rule on the speeds at its ends.
                 const double speed = J.row(1).norm();
-                const auto step_length = [&] { return trapezoid ? 0.5 * (t - previous) * (previous_speed + speed) : analysis::piece_arc_length(*a.curve, previous, t, 1); };
+                const auto step_length = [&] {
+                    return trapezoid ? 0.5 * (t - previous) * (previous_speed + speed)
+                                     : analysis::piece_arc_length(*a.curve, previous, t, 1);
+                };
                 if (space) {
                     if (j < per_span || last) d.curves.push_back({index, J(0, 0), J(0, 1), J(0, 2)});
                     if (t > previous) s += step_length();
@@ -109,7 +122,8 @@ FigureData comparison_figure_data(const std::vector<MethodComparison>& cs, const
         const std::vector<CombSample>& samples = comb_samples[i];
         if (samples.empty()) continue;
         const double index = static_cast<double>(i);
-        const std::size_t teeth_stride = (samples.size() + kMaxCombTeeth - 2) / (kMaxCombTeeth - 1);  // ≤ kMaxCombTeeth − 1 strided teeth, and the last
+        const std::size_t teeth_stride = (samples.size() + kMaxCombTeeth - 2) /
+                                         (kMaxCombTeeth - 1);  // ≤ kMaxCombTeeth − 1 strided teeth, and the last
         comb_scale[i] = scale;
         comb_stride[i] = static_cast<int>(std::max<std::size_t>(teeth_stride, 1));
         for (std::size_t k = 0; k < samples.size(); ++k) {

@@ -22,21 +22,21 @@ namespace cagd::compare {
 /// method, the length factor c and that stride (methods.csv prints both).
 /// Long inputs: only every `span_stride`-th span is sampled (the arc length s still runs over every
 /// span: a span not sampled adds the length the measures integrated, where every node is a
-/// breakpoint, else one 20-point Gauss rule's), so a figure of 10^5 spans stays a few MB; figure_sampling(spans, budget) picks per_span
-/// (≤ 32) and the stride for at most about `budget` samples per method (a sampled span gives
+/// breakpoint, else one 20-point Gauss rule's), so a figure of 10^5 spans stays a few MB; figure_sampling(spans,
+/// budget) picks per_span (≤ 32) and the stride for at most about `budget` samples per method (a sampled span gives
 /// per_span + 1 samples).
 struct FigureData {
-    std::vector<std::vector<double>> curves;  ///< curve samples (method index, x, y[, z])
+    std::vector<std::vector<double>> curves;    ///< curve samples (method index, x, y[, z])
     std::vector<std::vector<double>> profiles;  ///< the curvature profiles (method index, s, κ[, τ])
-    std::vector<std::vector<double>> combs;  ///< the comb teeth (method index, x, y, tip x, tip y)
-    std::vector<double> comb_scale;  ///< per method: c, the tooth length per unit curvature (0: no comb)
-    std::vector<int> comb_stride;  ///< per method: a tooth at every comb_stride-th sample (0: no comb)
+    std::vector<std::vector<double>> combs;     ///< the comb teeth (method index, x, y, tip x, tip y)
+    std::vector<double> comb_scale;             ///< per method: c, the tooth length per unit curvature (0: no comb)
+    std::vector<int> comb_stride;               ///< per method: a tooth at every comb_stride-th sample (0: no comb)
 };
 /// The most teeth a method's curvature comb draws.
 inline constexpr int kMaxCombTeeth = 1000;
 /// How densely the figure data sample a curve.
 struct FigureSampling {
-    int per_span = 32;  ///< samples per sampled span
+    int per_span = 32;    ///< samples per sampled span
     int span_stride = 1;  ///< every span_stride-th span is sampled
     /// How the profiles' arc length s is summed from sample to sample: the 20-point Gauss rule on
     /// each step (quadrature, the figures'), or the trapezoid rule on the samples' own speeds
@@ -48,7 +48,7 @@ struct FigureSampling {
 /// per_span and the stride for at most about `budget` samples per method over `spans` spans.
 FigureSampling figure_sampling(int spans, int budget);
 /// The figure data of a comparison (see above).
-FigureData comparison_figure_data(const std::vector<MethodComparison>& c, const PointList& points, const FigureSampling& sampling);
-
+FigureData comparison_figure_data(const std::vector<MethodComparison>& c, const PointList& points,
+                                  const FigureSampling& sampling);
 
 }  // namespace cagd::compare

@@ -56,12 +56,14 @@ std::string benchmark_part_text(const BenchmarkPlan& plan, const WorkShare& shar
 /// The results of the whole plan from its parts, each (a name for messages, its text). InvalidInput,
 /// naming the part and line, when a part is damaged, belongs to another plan or build, comes twice,
 /// is missing, or does not hold exactly its share's units.
-BenchmarkResults merge_benchmark_parts(const BenchmarkPlan& plan, const std::vector<std::pair<std::string, std::string>>& parts);
+BenchmarkResults merge_benchmark_parts(const BenchmarkPlan& plan,
+                                       const std::vector<std::pair<std::string, std::string>>& parts);
 
 /// The deterministic files of results/benchmark/, (name, content), from the whole plan's results:
 /// truth_runs.csv, convergence_orders.csv, leaderboard.md, convergence_<family>.dat; with random
 /// sets random_sets.csv; with classic data classic_runs.csv and classic.md.
-std::vector<std::pair<std::string, std::string>> benchmark_files(const BenchmarkPlan& plan, const BenchmarkResults& results);
+std::vector<std::pair<std::string, std::string>> benchmark_files(const BenchmarkPlan& plan,
+                                                                 const BenchmarkResults& results);
 /// The random sets' run times as CSV (random_set_timing_header and rows): not deterministic.
 std::string benchmark_timing_csv(const BenchmarkResults& results);
 

@@ -21,13 +21,15 @@ const char* to_string(AttemptStatus status) {
 }
 
 std::optional<AttemptStatus> attempt_status_from_string(const std::string& text) {
-    for (const AttemptStatus s : {AttemptStatus::ok, AttemptStatus::not_applicable, AttemptStatus::refused, AttemptStatus::no_result, AttemptStatus::cusp, AttemptStatus::loops,
-                                  AttemptStatus::failed})
+    for (const AttemptStatus s :
+         {AttemptStatus::ok, AttemptStatus::not_applicable, AttemptStatus::refused, AttemptStatus::no_result,
+          AttemptStatus::cusp, AttemptStatus::loops, AttemptStatus::failed})
         if (text == to_string(s)) return s;
     return std::nullopt;
 }
 
-InterpolationAttempt attempt_interpolation(const methods::Configuration& configuration, const PointList& points, bool closed, const Eigen::VectorXd* start) {
+InterpolationAttempt attempt_interpolation(const methods::Configuration& configuration, const PointList& points,
+                                           bool closed, const Eigen::VectorXd* start) {
     InterpolationAttempt a;
     a.note = methods::method_applicability(configuration.claims, points, closed);
     if (!a.note.empty()) {
@@ -37,12 +39,15 @@ InterpolationAttempt attempt_interpolation(const methods::Configuration& configu
     // What builds share (the pseudo-spline's tables) is loaded apart, so that build_seconds does
     // not charge it to whichever configuration runs first.
     const auto prepared = std::chrono::steady_clock::now();
-    if (configuration.method->prepare) configuration.method->prepare(configuration.values, static_cast<int>(points.cols()));
+    if (configuration.method->prepare)
+        configuration.method->prepare(configuration.values, static_cast<int>(points.cols()));
     const auto built = std::chrono::steady_clock::now();
     a.prepare_seconds = std::chrono::duration<double>(built - prepared).count();
     try {
-        a.result = start ? methods::interpolate_from(configuration, points, closed, *start) : methods::interpolate(configuration, points, closed);
-    } catch (const InvalidInput& e) {  // this method refuses these points (Boost's Catmull–Rom on 1e-40 spacing): its row says why
+        a.result = start ? methods::interpolate_from(configuration, points, closed, *start)
+                         : methods::interpolate(configuration, points, closed);
+    } catch (const InvalidInput&
+                 e) {  // this method refuses these points (Boost's Catmull–Rom on 1e-40 spacing): its row says why
         a.status = AttemptStatus::refused;
         a.note = in_user_terms(one_line(e.what()));
         return a;

@@ -46,6 +46,7 @@ struct InterpolationAttempt {
 /// `configuration` on `points` (open or closed), classified; never throws for a method's refusal.
 /// With `start` (an earlier build's solver_state for as many points), the solve starts there
 /// (methods::interpolate_from).
-InterpolationAttempt attempt_interpolation(const methods::Configuration& configuration, const PointList& points, bool closed, const Eigen::VectorXd* start = nullptr);
+InterpolationAttempt attempt_interpolation(const methods::Configuration& configuration, const PointList& points,
+                                           bool closed, const Eigen::VectorXd* start = nullptr);
 
 }  // namespace cagd::compare

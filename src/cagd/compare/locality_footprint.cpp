@@ -18,7 +18,6 @@ double span_parameter(const Interpolant& a, std::size_t k, double f) {
     return f == 1.0 ? t1 : t0 + f * (t1 - t0);
 }
 
-
 namespace {
 
 // Rows j = 0..samples_per_span of span k's samples (span_samples) into out's rows first + j.
@@ -38,10 +37,11 @@ constexpr int kFootprintSamplesPerSpan = 8;
 // offset at equal fractions of the segment, plus the rounding of the sample parameters
 // s = w_k + f·d_k (a few ulps of w_k + d_k, at unit speed a distance as large) — so the sampled
 // distance, which that bound covers, stays below the tolerance.
-bool intrinsic_span_within_half(const intrinsic::IntrinsicCurve& a, const intrinsic::IntrinsicCurve& b, const Interpolant& of_a, const Interpolant& of_b, std::size_t k,
-                                double tolerance) {
+bool intrinsic_span_within_half(const intrinsic::IntrinsicCurve& a, const intrinsic::IntrinsicCurve& b,
+                                const Interpolant& of_a, const Interpolant& of_b, std::size_t k, double tolerance) {
     const double parameter_rounding = 16.0 * std::numeric_limits<double>::epsilon() *
-                                      (std::abs(of_a.node_parameters[k]) + std::abs(of_a.node_parameters[k + 1]) + std::abs(of_b.node_parameters[k]) + std::abs(of_b.node_parameters[k + 1]));
+                                      (std::abs(of_a.node_parameters[k]) + std::abs(of_a.node_parameters[k + 1]) +
+                                       std::abs(of_b.node_parameters[k]) + std::abs(of_b.node_parameters[k + 1]));
     return a.segment_offset_bound(b, static_cast<int>(k)) + parameter_rounding <= 0.5 * tolerance;
 }
 
@@ -61,29 +61,43 @@ bool same_rows(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b, Eigen::Index 
 std::function<bool(std::size_t)> footprint_skip_rule(const Interpolant& a, const Interpolant& b, double tolerance) {
     const std::size_t spans = a.node_parameters.empty() ? 0 : a.node_parameters.size() - 1;
     if (b.node_parameters.size() != a.node_parameters.size()) return {};
-    const auto same_nodes = [&a, &b](std::size_t k) { return a.node_parameters[k] == b.node_parameters[k] && a.node_parameters[k + 1] == b.node_parameters[k + 1]; };
-    if (const auto *ca = dynamic_cast<const intrinsic::IntrinsicCurve*>(a.curve.get()), *cb = dynamic_cast<const intrinsic::IntrinsicCurve*>(b.curve.get()); ca && cb) {
-        if (ca->tangent_angle().segments() != static_cast<int>(spans) || cb->tangent_angle().segments() != static_cast<int>(spans) ||
+    const auto same_nodes = [&a, &b](std::size_t k) {
+        return a.node_parameters[k] == b.node_parameters[k] && a.node_parameters[k + 1] == b.node_parameters[k + 1];
+    };
+    if (const auto* ca = dynamic_cast<const intrinsic::IntrinsicCurve*>(a.curve.get()),
+        *cb = dynamic_cast<const intrinsic::IntrinsicCurve*>(b.curve.get());
+        ca && cb) {
+        if (ca->tangent_angle().segments() != static_cast<int>(spans) ||
+            cb->tangent_angle().segments() != static_cast<int>(spans) ||
             ca->tangent_angle().degree() != cb->tangent_angle().degree())
             return {};
-        return [ca, cb, &a, &b, tolerance](std::size_t k) { return intrinsic_span_within_half(*ca, *cb, a, b, k, tolerance); };
+        return [ca, cb, &a, &b, tolerance](std::size_t k) {
+            return intrinsic_span_within_half(*ca, *cb, a, b, k, tolerance);
+        };
     }
-    if (const auto *ha = dynamic_cast<const spline::PiecewiseHermiteCurve*>(a.curve.get()), *hb = dynamic_cast<const spline::PiecewiseHermiteCurve*>(b.curve.get()); ha && hb) {
+    if (const auto* ha = dynamic_cast<const spline::PiecewiseHermiteCurve*>(a.curve.get()),
+        *hb = dynamic_cast<const spline::PiecewiseHermiteCurve*>(b.curve.get());
+        ha && hb) {
         if (ha->spans() != hb->spans() || ha->dimension() != hb->dimension()) return {};
         return [ha, hb, same_nodes](std::size_t k) {
             const auto i = static_cast<Eigen::Index>(k);
-            return same_nodes(k) && same_rows(ha->nodes(), hb->nodes(), i, i + 2) && same_rows(ha->start_derivatives(), hb->start_derivatives(), i, i + 1) &&
+            return same_nodes(k) && same_rows(ha->nodes(), hb->nodes(), i, i + 2) &&
+                   same_rows(ha->start_derivatives(), hb->start_derivatives(), i, i + 1) &&
                    same_rows(ha->end_derivatives(), hb->end_derivatives(), i, i + 1);
         };
     }
-    if (const auto *ba = dynamic_cast<const BSplineCurve*>(a.curve.get()), *bb = dynamic_cast<const BSplineCurve*>(b.curve.get()); ba && bb) {
-        if (ba->degree() != bb->degree() || ba->knots().size() != bb->knots().size() || ba->control_points().rows() != bb->control_points().rows() ||
+    if (const auto* ba = dynamic_cast<const BSplineCurve*>(a.curve.get()),
+        *bb = dynamic_cast<const BSplineCurve*>(b.curve.get());
+        ba && bb) {
+        if (ba->degree() != bb->degree() || ba->knots().size() != bb->knots().size() ||
+            ba->control_points().rows() != bb->control_points().rows() ||
             ba->control_points().cols() != bb->control_points().cols())
             return {};
         return [ba, bb, &a, same_nodes](std::size_t k) {
             if (!same_nodes(k)) return false;
             // The knot spans of the samples t0 ≤ t ≤ t1, and what A2.3 and the tables read for them.
-            const int p = ba->degree(), s0 = ba->find_span(a.node_parameters[k]), s1 = ba->find_span(a.node_parameters[k + 1]);
+            const int p = ba->degree(), s0 = ba->find_span(a.node_parameters[k]),
+                      s1 = ba->find_span(a.node_parameters[k + 1]);
             const std::vector<double>&U = ba->knots(), &V = bb->knots();
             for (int i = s0 - p; i <= s1 + p + 1; ++i)
                 if (!(U[static_cast<std::size_t>(i)] == V[static_cast<std::size_t>(i)])) return false;
@@ -121,26 +135,32 @@ int spans_moved(const Interpolant& a, const Interpolant& b, double tolerance) {
 
 std::vector<double> span_displacements(const Interpolant& a, const Interpolant& b, int samples_per_span) {
     if (a.node_parameters.size() != b.node_parameters.size())
-        fail_input("cagd::compare::span_displacements",
-                   "the curves have " + std::to_string(a.node_parameters.size()) + " and " + std::to_string(b.node_parameters.size()) + " node parameters; they must agree");
+        fail_input("cagd::compare::span_displacements", "the curves have " + std::to_string(a.node_parameters.size()) +
+                                                            " and " + std::to_string(b.node_parameters.size()) +
+                                                            " node parameters; they must agree");
     return span_displacements(span_samples(a, samples_per_span), span_samples(b, samples_per_span), samples_per_span);
 }
 
 Eigen::MatrixXd span_samples(const Interpolant& a, int samples_per_span) {
-    if (samples_per_span < 1) fail_input("cagd::compare::span_samples", "samples_per_span must be >= 1, got " + std::to_string(samples_per_span));
+    if (samples_per_span < 1)
+        fail_input("cagd::compare::span_samples",
+                   "samples_per_span must be >= 1, got " + std::to_string(samples_per_span));
     const Eigen::Index spans = a.node_parameters.empty() ? 0 : static_cast<Eigen::Index>(a.node_parameters.size()) - 1;
     Eigen::MatrixXd out(spans * (samples_per_span + 1), a.curve->dimension());
-    for (Eigen::Index k = 0; k < spans; ++k) sample_span(a, static_cast<std::size_t>(k), samples_per_span, out, k * (samples_per_span + 1));
+    for (Eigen::Index k = 0; k < spans; ++k)
+        sample_span(a, static_cast<std::size_t>(k), samples_per_span, out, k * (samples_per_span + 1));
     return out;
 }
 
-std::vector<double> span_displacements(const Eigen::MatrixXd& a_samples, const Eigen::MatrixXd& b_samples, int samples_per_span) {
+std::vector<double> span_displacements(const Eigen::MatrixXd& a_samples, const Eigen::MatrixXd& b_samples,
+                                       int samples_per_span) {
     const char* who = "cagd::compare::span_displacements";
     if (samples_per_span < 1) fail_input(who, "samples_per_span must be >= 1, got " + std::to_string(samples_per_span));
     const Eigen::Index per = samples_per_span + 1;
     if (a_samples.rows() != b_samples.rows() || a_samples.cols() != b_samples.cols() || a_samples.rows() % per != 0)
-        fail_input(who, "samples of " + std::to_string(a_samples.rows()) + " x " + std::to_string(a_samples.cols()) + " and " + std::to_string(b_samples.rows()) + " x " +
-                            std::to_string(b_samples.cols()) + " are not the same whole number of spans of " + std::to_string(per) + " rows");
+        fail_input(who, "samples of " + std::to_string(a_samples.rows()) + " x " + std::to_string(a_samples.cols()) +
+                            " and " + std::to_string(b_samples.rows()) + " x " + std::to_string(b_samples.cols()) +
+                            " are not the same whole number of spans of " + std::to_string(per) + " rows");
     std::vector<double> moved(static_cast<std::size_t>(a_samples.rows() / per), 0.0);
     for (Eigen::Index r = 0; r < a_samples.rows(); ++r) {
         double& m = moved[static_cast<std::size_t>(r / per)];

@@ -31,7 +31,8 @@ Eigen::MatrixXd span_samples(const Interpolant& a, int samples_per_span = 8);
 /// span_displacements from two curves' span_samples taken with the same samples_per_span: per span,
 /// the largest distance between corresponding rows. InvalidInput unless both have the same shape, a
 /// whole number of spans of samples_per_span + 1 rows.
-std::vector<double> span_displacements(const Eigen::MatrixXd& a_samples, const Eigen::MatrixXd& b_samples, int samples_per_span);
+std::vector<double> span_displacements(const Eigen::MatrixXd& a_samples, const Eigen::MatrixXd& b_samples,
+                                       int samples_per_span);
 /// The locality footprint: how many data spans of `a` and `b` (the same method, the same number of
 /// points, one moved) moved by more than `tolerance` — span_displacements at 8 samples per span
 /// counted, without sampling the spans that cannot have moved (a local method's unchanged spans,

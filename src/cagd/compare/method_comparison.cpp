@@ -14,10 +14,10 @@
 #include <stdexcept>
 
 #include "cagd/analysis/curvature_comb.hpp"
-#include "cagd/compare/interpolation_attempt.hpp"
-#include "cagd/compare/locality_footprint.hpp"
 #include "cagd/analysis/curve_measures.hpp"
 #include "cagd/analysis/log_curvature_graph.hpp"
+#include "cagd/compare/interpolation_attempt.hpp"
+#include "cagd/compare/locality_footprint.hpp"
 #include "cagd/core/csv.hpp"
 #include "cagd/core/parallel.hpp"
 #include "cagd/intrinsic/intrinsic_curve.hpp"
@@ -26,10 +26,12 @@
 
 namespace cagd::compare {
 
-std::optional<std::vector<std::pair<double, double>>> measured_span_integrals(const Interpolant& a, const analysis::FairnessMeasures& f) {
+std::optional<std::vector<std::pair<double, double>>> measured_span_integrals(const Interpolant& a,
+                                                                              const analysis::FairnessMeasures& f) {
     const std::vector<double> br = a.curve->breakpoints();
     const std::vector<double>& nodes = a.node_parameters;
-    if (!(f.piece_lengths.size() + 1 == br.size() && std::includes(br.begin(), br.end(), nodes.begin(), nodes.end()))) return std::nullopt;
+    if (!(f.piece_lengths.size() + 1 == br.size() && std::includes(br.begin(), br.end(), nodes.begin(), nodes.end())))
+        return std::nullopt;
     std::vector<std::pair<double, double>> out;
     out.reserve(nodes.size());
     std::size_t b = 0;
@@ -94,7 +96,9 @@ const MethodComparison& find_comparison(const std::vector<MethodComparison>& c, 
 
 std::vector<MethodComparison> compare_methods(const PointList& points, const ComparisonOptions& options) {
     const char* who = "cagd::compare::compare_methods";
-    if (points.cols() != 2 && points.cols() != 3) fail_input(who, "compares planar or space curves: needs 2 or 3 columns (x, y[, z]), got " + std::to_string(points.cols()));
+    if (points.cols() != 2 && points.cols() != 3)
+        fail_input(who, "compares planar or space curves: needs 2 or 3 columns (x, y[, z]), got " +
+                            std::to_string(points.cols()));
     if (points.rows() < 2) fail_input(who, "needs at least 2 points, got " + std::to_string(points.rows()));
     // What no method could accept is bad input of the whole comparison (finite coordinates, no two
     // consecutive points equal); what one method refuses beyond that is that method's row.
@@ -109,7 +113,9 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
         MethodComparison c;
         c.method = configuration.name;
         const auto start_state = options.starts.find(configuration.name);
-        InterpolationAttempt attempt = attempt_interpolation(configuration, points, options.closed, start_state != options.starts.end() ? &start_state->second : nullptr);
+        InterpolationAttempt attempt =
+            attempt_interpolation(configuration, points, options.closed,
+                                  start_state != options.starts.end() ? &start_state->second : nullptr);
         c.status = attempt.status;
         c.note = std::move(attempt.note);
         c.shared_seconds = attempt.prepare_seconds;
@@ -121,7 +127,8 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
         const Curve& curve = *c.interpolant->curve;
         c.spans = static_cast<int>(c.interpolant->node_parameters.size()) - 1;
         if (!options.measures) return c;
-        const analysis::FairnessSampling sampling = comparison_sampling(static_cast<int>(curve.breakpoints().size()) - 1);
+        const analysis::FairnessSampling sampling =
+            comparison_sampling(static_cast<int>(curve.breakpoints().size()) - 1);
         if (options.closed && points.cols() == 2) c.area = analysis::enclosed_area(curve);
         try {
             c.fairness = analysis::fairness_measures(curve, points, sampling);
@@ -144,8 +151,10 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
             try {
                 // From this build's final iterate (continuation: fewer Newton iterations, and the
                 // same solution branch); a direct method builds anew.
-                const InterpolationResult m = methods::interpolate_from(configuration, moved, options.closed, c.solver_state);
-                if (m.outcome.ok() && m.interpolant) c.locality_footprint = spans_moved(*c.interpolant, *m.interpolant, 1e-9 * diagonal);
+                const InterpolationResult m =
+                    methods::interpolate_from(configuration, moved, options.closed, c.solver_state);
+                if (m.outcome.ok() && m.interpolant)
+                    c.locality_footprint = spans_moved(*c.interpolant, *m.interpolant, 1e-9 * diagonal);
             } catch (const InvalidInput&) {  // the moved point made the input invalid for this method
             }
         }
@@ -160,14 +169,16 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
             MethodComparison c;
             c.method = configuration.name;
             c.status = AttemptStatus::failed;
-            c.note = "the method failed (a defect of the method, not of the points): " + in_user_terms(one_line(e.what()));
+            c.note =
+                "the method failed (a defect of the method, not of the points): " + in_user_terms(one_line(e.what()));
             return c;
         }
     };
     // The iterative methods are started first; the rows keep the configurations' order.
     std::vector<std::size_t> order(configurations.size());
     std::iota(order.begin(), order.end(), std::size_t{0});
-    std::stable_partition(order.begin(), order.end(), [&](std::size_t k) { return configurations[k].method->iterative; });
+    std::stable_partition(order.begin(), order.end(),
+                          [&](std::size_t k) { return configurations[k].method->iterative; });
     std::vector<MethodComparison> out(configurations.size());
     std::mutex report;
     const int threads = options.threads > 0 ? options.threads : hardware_threads();

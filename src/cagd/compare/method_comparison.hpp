@@ -37,8 +37,8 @@
 #include <utility>
 #include <vector>
 
-#include "cagd/compare/interpolation_attempt.hpp"
 #include "cagd/analysis/fairness_measures.hpp"
+#include "cagd/compare/interpolation_attempt.hpp"
 #include "cagd/methods/method_registry.hpp"
 
 namespace cagd::compare {
@@ -50,11 +50,12 @@ struct MethodComparison;
 
 /// What compare_methods measures and how.
 struct ComparisonOptions {
-    std::vector<std::string> methods{};  ///< configuration or method names (methods::find_configuration); empty: every configuration
+    std::vector<std::string>
+        methods{};  ///< configuration or method names (methods::find_configuration); empty: every configuration
     /// Configurations given whole (a method under parameter values of the caller's choice,
     /// methods::find_configuration with overrides); when not empty they are compared instead of `methods`.
     std::vector<methods::Configuration> configurations{};
-    bool closed = false;  ///< closed curves
+    bool closed = false;   ///< closed curves
     bool locality = true;  ///< measure the locality footprint (it interpolates once more per method)
     /// Compute the measures (length, energies, fairness). Off: the curves only, status "ok" for each
     /// that exists and no measure, for drawing them (the viewer's frames); comparison_figure_data
@@ -73,18 +74,18 @@ struct ComparisonOptions {
 
 /// One method's row of the comparison.
 struct MethodComparison {
-    std::string method;  ///< the configuration's name
+    std::string method;                        ///< the configuration's name
     AttemptStatus status = AttemptStatus::ok;  ///< what became of it (interpolation_attempt.hpp)
-    std::string note;    ///< the reason when status is not ok
-    std::optional<Interpolant> interpolant;  ///< the curve, when the method applies and succeeds
+    std::string note;                          ///< the reason when status is not ok
+    std::optional<Interpolant> interpolant;    ///< the curve, when the method applies and succeeds
     Eigen::VectorXd solver_state;  ///< the build's InterpolationResult::solver_state (empty for direct methods)
-    double length = 0.0;  ///< arc length
-    double area = 0.0;  ///< enclosed area (closed)
-    double pseudo_energy = 0.0;  ///< Σ L_k² E_k over the data spans
+    double length = 0.0;           ///< arc length
+    double area = 0.0;             ///< enclosed area (closed)
+    double pseudo_energy = 0.0;    ///< Σ L_k² E_k over the data spans
     std::optional<analysis::FairnessMeasures> fairness;  ///< absent for a cusp
-    int spans = 0;  ///< data spans
+    int spans = 0;                                       ///< data spans
     std::optional<int> locality_footprint;  ///< spans moved when the middle point moves (absent when not measured)
-    double seconds = 0.0;  ///< wall time of interpolate() (not deterministic)
+    double seconds = 0.0;                   ///< wall time of interpolate() (not deterministic)
     /// Wall time of Method::prepare before it: the tables the method shares between builds, loaded
     /// from the user's cache or built (not deterministic; about 0 for a method with nothing shared).
     double shared_seconds = 0.0;
@@ -93,7 +94,8 @@ struct MethodComparison {
 /// Per data span k of `a`, the length L_k and bending energy E_k that fairness_measures `f`
 /// integrated, summed over its pieces — where every node parameter is a breakpoint (every method
 /// but Eigen's spline fits, whose knots average the node parameters); nothing otherwise.
-std::optional<std::vector<std::pair<double, double>>> measured_span_integrals(const Interpolant& a, const analysis::FairnessMeasures& f);
+std::optional<std::vector<std::pair<double, double>>> measured_span_integrals(const Interpolant& a,
+                                                                              const analysis::FairnessMeasures& f);
 /// Samples (8 to 128) and Gauss–Legendre sub-pieces (2 to 512) per piece for a curve of `pieces`
 /// pieces: about 2·10^6 of each in all, fewer per piece for long inputs.
 analysis::FairnessSampling comparison_sampling(int pieces);

@@ -4,9 +4,9 @@
 #include <chrono>
 #include <cmath>
 #include <random>
-#include <utility>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "cagd/compare/interpolation_attempt.hpp"
 #include "cagd/core/csv.hpp"
@@ -43,7 +43,8 @@ std::vector<RandomSetSummary> run_random_sets(const RandomSetOptions& o) {
     for (const int n : o.sizes)
         if (n < 3) fail_input(who, "size " + std::to_string(n) + "; each size needs at least 3 points");
     check_work_share(o.share, who);
-    if (o.scatter_max_points < 0) fail_input(who, "scatter_max_points = " + std::to_string(o.scatter_max_points) + "; at least 0");
+    if (o.scatter_max_points < 0)
+        fail_input(who, "scatter_max_points = " + std::to_string(o.scatter_max_points) + "; at least 0");
     std::vector<methods::Configuration> configurations;
     for (const std::string& name : o.methods) configurations.push_back(methods::find_configuration(name));
     if (o.methods.empty()) configurations = methods::configurations();
@@ -98,27 +99,37 @@ std::vector<RandomSetSummary> run_random_sets(const RandomSetOptions& o) {
 }
 
 void merge_random_sets(std::vector<RandomSetSummary>& total, const std::vector<RandomSetSummary>& part) {
-    if (part.size() != total.size()) throw std::logic_error("compare::merge_random_sets: " + std::to_string(part.size()) + " summaries into " + std::to_string(total.size()));
+    if (part.size() != total.size())
+        throw std::logic_error("compare::merge_random_sets: " + std::to_string(part.size()) + " summaries into " +
+                               std::to_string(total.size()));
     for (std::size_t i = 0; i < total.size(); ++i) {
         RandomSetSummary& t = total[i];
         const RandomSetSummary& p = part[i];
-        if (p.kind != t.kind || p.n != t.n || p.method != t.method) throw std::logic_error("compare::merge_random_sets: summary " + std::to_string(i) + " is " + p.method + ", not " + t.method);
-        t.sets += p.sets, t.ok += p.ok, t.no_result += p.no_result, t.refused += p.refused, t.not_applicable += p.not_applicable;
+        if (p.kind != t.kind || p.n != t.n || p.method != t.method)
+            throw std::logic_error("compare::merge_random_sets: summary " + std::to_string(i) + " is " + p.method +
+                                   ", not " + t.method);
+        t.sets += p.sets, t.ok += p.ok, t.no_result += p.no_result, t.refused += p.refused,
+            t.not_applicable += p.not_applicable;
         t.seconds.insert(t.seconds.end(), p.seconds.begin(), p.seconds.end());
     }
 }
 
-std::vector<std::string> random_sets_header() { return {"kind", "n", "method", "sets", "ok", "no_result", "refused", "not_applicable", "failure_rate"}; }
+std::vector<std::string> random_sets_header() {
+    return {"kind", "n", "method", "sets", "ok", "no_result", "refused", "not_applicable", "failure_rate"};
+}
 
 std::vector<std::vector<std::string>> random_sets_rows(const std::vector<RandomSetSummary>& summaries) {
     std::vector<std::vector<std::string>> rows;
     for (const RandomSetSummary& s : summaries)
-        rows.push_back({to_string(s.kind), std::to_string(s.n), s.method, std::to_string(s.sets), std::to_string(s.ok), std::to_string(s.no_result), std::to_string(s.refused),
-                        std::to_string(s.not_applicable), format_number(s.failure_rate(), 6)});
+        rows.push_back({to_string(s.kind), std::to_string(s.n), s.method, std::to_string(s.sets), std::to_string(s.ok),
+                        std::to_string(s.no_result), std::to_string(s.refused), std::to_string(s.not_applicable),
+                        format_number(s.failure_rate(), 6)});
     return rows;
 }
 
-std::vector<std::string> random_set_timing_header() { return {"kind", "n", "method", "runs", "median_seconds", "p90_seconds", "max_seconds"}; }
+std::vector<std::string> random_set_timing_header() {
+    return {"kind", "n", "method", "runs", "median_seconds", "p90_seconds", "max_seconds"};
+}
 
 std::vector<std::vector<std::string>> random_set_timing_rows(const std::vector<RandomSetSummary>& summaries) {
     std::vector<std::vector<std::string>> rows;
@@ -126,8 +137,13 @@ std::vector<std::vector<std::string>> random_set_timing_rows(const std::vector<R
         std::vector<double> t = s.seconds;
         std::sort(t.begin(), t.end());
         // Nearest rank: the smallest value with at least q of the runs at or below it.
-        const auto rank = [&](double q) { return t.empty() ? std::string() : format_number(t[static_cast<std::size_t>(std::ceil(q * static_cast<double>(t.size()))) - 1], 4); };
-        rows.push_back({to_string(s.kind), std::to_string(s.n), s.method, std::to_string(t.size()), rank(0.5), rank(0.9), t.empty() ? std::string() : format_number(t.back(), 4)});
+        const auto rank = [&](double q) {
+            return t.empty() ? std::string()
+                             : format_number(
+                                   t[static_cast<std::size_t>(std::ceil(q * static_cast<double>(t.size()))) - 1], 4);
+        };
+        rows.push_back({to_string(s.kind), std::to_string(s.n), s.method, std::to_string(t.size()), rank(0.5),
+                        rank(0.9), t.empty() ? std::string() : format_number(t.back(), 4)});
     }
     return rows;
 }
@@ -137,11 +153,15 @@ std::string random_sets_markdown(const std::vector<RandomSetSummary>& summaries)
     if (summaries.empty()) return "";
     s << "\n#### Failure rates on seeded random sets\n\n"
       << summaries.front().sets
-      << " sets per kind and size, each interpolated as an open curve by every configuration (compare/random_sets.hpp). "
-         "*walk*: chords in [0.1, 2], turns within ±1 rad; *scatter*: points uniform in the unit square (at the smaller sizes only: "
+      << " sets per kind and size, each interpolated as an open curve by every configuration "
+         "(compare/random_sets.hpp). "
+         "*walk*: chords in [0.1, 2], turns within ±1 rad; *scatter*: points uniform in the unit square (at the "
+         "smaller sizes only: "
          "beyond them nearly every set defeats the two Newton methods). A failure is no curve "
-         "(a returned status) or a refusal (the method's own input check); not applicable sets are left out of the rate. "
-         "Run times are not deterministic, so they stay out of these counts: `cagd benchmark --timing-out FILE` writes them "
+         "(a returned status) or a refusal (the method's own input check); not applicable sets are left out of the "
+         "rate. "
+         "Run times are not deterministic, so they stay out of these counts: `cagd benchmark --timing-out FILE` writes "
+         "them "
          "(`make benchmark` and `make reproduce`: results/timing/benchmark_random_sets.csv).\n";
     for (const RandomSetKind kind : {RandomSetKind::walk, RandomSetKind::scatter}) {
         std::vector<int> sizes;
@@ -156,7 +176,8 @@ std::string random_sets_markdown(const std::vector<RandomSetSummary>& summaries)
         std::vector<std::string> never;
         std::vector<std::string> methods;
         for (const RandomSetSummary& r : summaries)
-            if (r.kind == kind && std::find(methods.begin(), methods.end(), r.method) == methods.end()) methods.push_back(r.method);
+            if (r.kind == kind && std::find(methods.begin(), methods.end(), r.method) == methods.end())
+                methods.push_back(r.method);
         for (const std::string& m : methods) {
             std::ostringstream line;
             bool fails = false;
@@ -178,7 +199,11 @@ std::string random_sets_markdown(const std::vector<RandomSetSummary>& summaries)
                 never.push_back(m);
                 continue;
             }
-            line << " " << (applicable == 0 ? std::string("—") : std::to_string(no_result) + " no result, " + std::to_string(refused) + " refused") << " |\n";
+            line << " "
+                 << (applicable == 0
+                         ? std::string("—")
+                         : std::to_string(no_result) + " no result, " + std::to_string(refused) + " refused")
+                 << " |\n";
             s << line.str();
         }
         if (!never.empty()) {

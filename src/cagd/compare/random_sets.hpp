@@ -38,9 +38,9 @@ struct RandomSetOptions {
     /// defeats the two Newton methods (at 128 points: curvature-profile 93 %, Spiro 100 %), and
     /// curvature-profile's dense Moore–Penrose fallback on each failing set would dominate the run.
     int scatter_max_points = 32;
-    int sets = 1000;                     ///< sets per kind and size (≥ 1)
-    std::vector<std::string> methods;    ///< configuration or method names; empty: every configuration
-    int threads = 0;                     ///< sets interpolated at once (0: the hardware's)
+    int sets = 1000;                   ///< sets per kind and size (≥ 1)
+    std::vector<std::string> methods;  ///< configuration or method names; empty: every configuration
+    int threads = 0;                   ///< sets interpolated at once (0: the hardware's)
     /// The sets interpolated, by task (kind, size, set) in run order: task k = case × sets + set,
     /// the cases in the order below; default: all. A share's summaries count its own sets only
     /// (`sets` too): summed over the shares they are the whole run's (merge_random_sets).
@@ -50,14 +50,14 @@ struct RandomSetOptions {
 /// One configuration on the sets of one kind and size.
 struct RandomSetSummary {
     RandomSetKind kind = RandomSetKind::walk;  ///< the kind
-    int n = 0;                ///< points per set
-    std::string method;       ///< configuration
-    int sets = 0;             ///< sets interpolated
-    int ok = 0;               ///< a curve
-    int no_result = 0;        ///< a returned status without a curve
-    int refused = 0;          ///< InvalidInput from the method
-    int not_applicable = 0;   ///< outside the method's claims
-    std::vector<double> seconds;  ///< per construction that ran (ok, no result, refused), in set order
+    int n = 0;                                 ///< points per set
+    std::string method;                        ///< configuration
+    int sets = 0;                              ///< sets interpolated
+    int ok = 0;                                ///< a curve
+    int no_result = 0;                         ///< a returned status without a curve
+    int refused = 0;                           ///< InvalidInput from the method
+    int not_applicable = 0;                    ///< outside the method's claims
+    std::vector<double> seconds;               ///< per construction that ran (ok, no result, refused), in set order
     /// (no_result + refused) / (sets − not_applicable); 0 when every set is not applicable.
     double failure_rate() const;
 };

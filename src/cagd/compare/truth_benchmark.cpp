@@ -65,12 +65,14 @@ constexpr double kStraightTurn = 1e-12;
 }  // namespace
 
 const std::vector<std::string>& shape_measure_names() {
-    static const std::vector<std::string> names{"bending", "variation", "max_curvature", "curvature_extrema", "g2_defect", "inflections", "unimplied_inflections"};
+    static const std::vector<std::string> names{"bending",   "variation",   "max_curvature",        "curvature_extrema",
+                                                "g2_defect", "inflections", "unimplied_inflections"};
     return names;
 }
 
 ShapeMeasures shape_measures(const Curve& c, const std::vector<double>& nodes, bool closed) {
-    if (nodes.size() < 2) fail_input("compare::shape_measures", "needs at least two nodes, got " + std::to_string(nodes.size()));
+    if (nodes.size() < 2)
+        fail_input("compare::shape_measures", "needs at least two nodes, got " + std::to_string(nodes.size()));
     static const numeric::GaussLegendreRule rule(kNodesPerSpan);
     double length = 0.0, bending = 0.0, variation = 0.0, max_kappa = 0.0;
     std::vector<double> rates, kappas;
@@ -117,7 +119,8 @@ ShapeMeasures shape_measures(const Curve& c, const std::vector<double>& nodes, b
     }
     const std::size_t count = nodes.size();
     for (std::size_t i = closed ? 0 : 1; i + 1 < count; ++i) {
-        const double left = kappa(i == 0 ? c.jet_from_left(nodes.back(), 2) : c.jet_from_left(nodes[i], 2)), right = kappa(c.jet(nodes[i], 2));
+        const double left = kappa(i == 0 ? c.jet_from_left(nodes.back(), 2) : c.jet_from_left(nodes[i], 2)),
+                     right = kappa(c.jet(nodes[i], 2));
         m.g2_defect = std::max(m.g2_defect, std::abs(left - right) * length);
     }
     return m;
@@ -125,7 +128,8 @@ ShapeMeasures shape_measures(const Curve& c, const std::vector<double>& nodes, b
 
 std::string inflections_text(const ShapeMeasures& s, bool space) {
     if (space) return "—";
-    return std::to_string(s.inflections) + (s.unimplied_inflections > 0 ? " (+" + std::to_string(s.unimplied_inflections) + ")" : "");
+    return std::to_string(s.inflections) +
+           (s.unimplied_inflections > 0 ? " (+" + std::to_string(s.unimplied_inflections) + ")" : "");
 }
 
 const std::vector<std::string>& truth_error_names() {
@@ -147,7 +151,9 @@ double truth_error(const TruthErrors& e, int index) {
 TruthErrors truth_errors(const methods::Interpolant& in, const TruthSample& sample, const Curve& truth) {
     const char* who = "compare::truth_errors";
     const std::size_t nodes = in.node_parameters.size();
-    if (nodes != sample.params.size()) fail_input(who, "the interpolant has " + std::to_string(nodes) + " nodes, the sample " + std::to_string(sample.params.size()));
+    if (nodes != sample.params.size())
+        fail_input(who, "the interpolant has " + std::to_string(nodes) + " nodes, the sample " +
+                            std::to_string(sample.params.size()));
     static const numeric::GaussLegendreRule rule(kNodesPerSpan);
     const Curve& c = *in.curve;
     const double L = sample.length;
@@ -157,7 +163,8 @@ TruthErrors truth_errors(const methods::Interpolant& in, const TruthSample& samp
         const double u0 = in.node_parameters[k], u1 = in.node_parameters[k + 1];
         const double t0 = sample.params[k], t1 = sample.params[k + 1];
         for (int q = 0; q < rule.size(); ++q) {
-            const double f = 0.5 * (rule.nodes()[static_cast<std::size_t>(q)] + 1.0), w = 0.5 * rule.weights()[static_cast<std::size_t>(q)];
+            const double f = 0.5 * (rule.nodes()[static_cast<std::size_t>(q)] + 1.0),
+                         w = 0.5 * rule.weights()[static_cast<std::size_t>(q)];
             const double u = u0 + f * (u1 - u0);
             const Eigen::MatrixXd jc = c.jet(u, 2);
             const Eigen::VectorXd point = jc.row(0).transpose();
@@ -177,11 +184,13 @@ TruthErrors truth_errors(const methods::Interpolant& in, const TruthSample& samp
     return e;
 }
 
-std::optional<double> extensionality(const methods::Configuration& configuration, const PointList& points, bool closed, const methods::Interpolant& in) {
+std::optional<double> extensionality(const methods::Configuration& configuration, const PointList& points, bool closed,
+                                     const methods::Interpolant& in) {
     const char* who = "compare::extensionality";
     const std::vector<double>& u = in.node_parameters;
     if (u.size() < 2 || u.size() != static_cast<std::size_t>(points.rows()) + (closed ? 1 : 0))
-        fail_input(who, "the interpolant has " + std::to_string(u.size()) + " nodes for " + std::to_string(points.rows()) + (closed ? " closed" : " open") + " points");
+        fail_input(who, "the interpolant has " + std::to_string(u.size()) + " nodes for " +
+                            std::to_string(points.rows()) + (closed ? " closed" : " open") + " points");
     const std::size_t k = (u.size() - 1) / 2;  // the middle span
     const double middle = 0.5 * (u[k] + u[k + 1]);
     PointList more(points.rows() + 1, points.cols());
@@ -197,7 +206,12 @@ std::optional<double> extensionality(const methods::Configuration& configuration
     }
     if (!again.outcome.ok() || !again.interpolant) return std::nullopt;
     // The old curve as the truth: its parameters at the n + 1 points, its whole stretch.
-    TruthSample old{.points = more, .params = u, .t_first = in.curve->t_min(), .t_last = in.curve->t_max(), .length = analysis::arc_length(*in.curve, kLengthPieces), .closed = closed};
+    TruthSample old{.points = more,
+                    .params = u,
+                    .t_first = in.curve->t_min(),
+                    .t_last = in.curve->t_max(),
+                    .length = analysis::arc_length(*in.curve, kLengthPieces),
+                    .closed = closed};
     old.params.insert(old.params.begin() + static_cast<std::ptrdiff_t>(k + 1), middle);
     return truth_errors(*again.interpolant, old, *in.curve).distance;
 }
@@ -241,7 +255,8 @@ std::vector<TruthRun> run_truth_benchmark(const TruthBenchmarkOptions& o) {
         if (!case_needed(k)) return;
         const Case& c = cases[static_cast<std::size_t>(k)];
         samples[static_cast<std::size_t>(k)] = truth_samples(*c.family, c.n, c.spacing, c.closed);
-        truth_shapes[static_cast<std::size_t>(k)] = shape_measures(*c.family->curve, samples[static_cast<std::size_t>(k)].params, c.closed);
+        truth_shapes[static_cast<std::size_t>(k)] =
+            shape_measures(*c.family->curve, samples[static_cast<std::size_t>(k)].params, c.closed);
     });
     std::vector<TruthRun> runs(cases.size() * configurations.size());
     // The shared tables (the pseudo-spline's) are loaded once, before the workers start.
@@ -264,7 +279,8 @@ std::vector<TruthRun> run_truth_benchmark(const TruthBenchmarkOptions& o) {
         r.errors = truth_errors(*result.interpolant, sample, *k.family->curve);
         r.shape = shape_measures(*result.interpolant->curve, result.interpolant->node_parameters, k.closed);
         r.extensionality = extensionality(m, sample.points, k.closed, *result.interpolant);
-        bool finite = std::isfinite(r.shape.bending) && std::isfinite(r.shape.variation) && std::isfinite(r.shape.max_curvature) && std::isfinite(r.shape.g2_defect);
+        bool finite = std::isfinite(r.shape.bending) && std::isfinite(r.shape.variation) &&
+                      std::isfinite(r.shape.max_curvature) && std::isfinite(r.shape.g2_defect);
         for (int e = 0; e < 5; ++e) finite = finite && std::isfinite(truth_error(r.errors, e));
         if (!finite) {  // a node of zero speed: κ undefined there
             r.status = AttemptStatus::cusp;
@@ -280,9 +296,11 @@ std::vector<TruthRun> run_truth_benchmark(const TruthBenchmarkOptions& o) {
 const std::vector<PredictedOrder>& predicted_orders() {
     static const std::vector<PredictedOrder> p{
         {"cubic-b", "distance", true, 4.0,
-         "M. S. Floater, Chordal cubic spline interpolation is fourth order accurate, IMA J. Numer. Anal. 26 (2006) 25-33 (closed: no end conditions)"},
+         "M. S. Floater, Chordal cubic spline interpolation is fourth order accurate, IMA J. Numer. Anal. 26 (2006) "
+         "25-33 (closed: no end conditions)"},
         {"cubic-b", "distance", false, 2.0,
-         "C. de Boor, A Practical Guide to Splines (1978), ch. IV: natural end conditions force zero curvature at the ends, an O(h^2) error there"},
+         "C. de Boor, A Practical Guide to Splines (1978), ch. IV: natural end conditions force zero curvature at the "
+         "ends, an O(h^2) error there"},
     };
     return p;
 }
@@ -303,11 +321,13 @@ std::vector<ConvergenceOrder> convergence_orders(const std::vector<TruthRun>& ru
         if (std::any_of(g.begin(), g.end(), [](const TruthRun* r) { return r->status != AttemptStatus::ok; })) continue;
         for (int measure = 0; measure < static_cast<int>(truth_error_names().size()); ++measure) {
             ConvergenceOrder c;
-            c.family = std::get<0>(k), c.spacing = static_cast<TruthSpacing>(std::get<1>(k)), c.closed = std::get<2>(k), c.method = std::get<3>(k);
+            c.family = std::get<0>(k), c.spacing = static_cast<TruthSpacing>(std::get<1>(k)), c.closed = std::get<2>(k),
+            c.method = std::get<3>(k);
             c.measure = truth_error_names()[static_cast<std::size_t>(measure)];
             // The largest kFittedSizes sizes above the exact level, in decreasing n.
             std::vector<const TruthRun*> by_size(g.begin(), g.end());
-            std::stable_sort(by_size.begin(), by_size.end(), [](const TruthRun* a, const TruthRun* b) { return a->n > b->n; });
+            std::stable_sort(by_size.begin(), by_size.end(),
+                             [](const TruthRun* a, const TruthRun* b) { return a->n > b->n; });
             double sx = 0, sy = 0, sxx = 0, sxy = 0;
             int count = 0, above = 0;
             for (const TruthRun* r : by_size) {
@@ -322,7 +342,8 @@ std::vector<ConvergenceOrder> convergence_orders(const std::vector<TruthRun>& ru
             c.exact = above == 0;
             if (count == kFittedSizes) c.order = -(count * sxy - sx * sy) / (count * sxx - sx * sx);
             for (const PredictedOrder& p : predicted_orders())
-                if (p.method == c.method && p.measure == c.measure && p.closed == c.closed) c.predicted = p.order, c.source = p.source;
+                if (p.method == c.method && p.measure == c.measure && p.closed == c.closed)
+                    c.predicted = p.order, c.source = p.source;
             out.push_back(c);
         }
     }
@@ -342,15 +363,19 @@ std::vector<std::string> truth_runs_header() {
 std::vector<std::vector<std::string>> truth_runs_rows(const std::vector<TruthRun>& runs, int digits) {
     std::vector<std::vector<std::string>> rows;
     for (const TruthRun& r : runs) {
-        std::vector<std::string> row{r.family, to_string(r.spacing), r.closed ? "1" : "0", std::to_string(r.n), r.method, to_string(r.status)};
-        for (int m = 0; m < 5; ++m) row.push_back(r.status == AttemptStatus::ok ? format_number(truth_error(r.errors, m), digits) : "");
+        std::vector<std::string> row{r.family, to_string(r.spacing), r.closed ? "1" : "0", std::to_string(r.n),
+                                     r.method, to_string(r.status)};
+        for (int m = 0; m < 5; ++m)
+            row.push_back(r.status == AttemptStatus::ok ? format_number(truth_error(r.errors, m), digits) : "");
         const auto shape = [&](const ShapeMeasures& s, bool shown) {
-            for (const double v : {s.bending, s.variation, s.max_curvature, static_cast<double>(s.curvature_extrema), s.g2_defect, static_cast<double>(s.inflections),
-                                   static_cast<double>(s.unimplied_inflections)})
+            for (const double v :
+                 {s.bending, s.variation, s.max_curvature, static_cast<double>(s.curvature_extrema), s.g2_defect,
+                  static_cast<double>(s.inflections), static_cast<double>(s.unimplied_inflections)})
                 row.push_back(shown ? format_number(v, digits) : "");
         };
         shape(r.shape, r.status == AttemptStatus::ok);
-        row.push_back(r.status == AttemptStatus::ok && r.extensionality ? format_number(*r.extensionality, digits) : "");
+        row.push_back(r.status == AttemptStatus::ok && r.extensionality ? format_number(*r.extensionality, digits)
+                                                                        : "");
         shape(r.truth_shape, true);
         std::string note = r.note;
         std::replace(note.begin(), note.end(), '\n', ' ');
@@ -361,7 +386,8 @@ std::vector<std::vector<std::string>> truth_runs_rows(const std::vector<TruthRun
 }
 
 std::vector<std::string> convergence_orders_header() {
-    return {"family", "spacing", "closed", "method", "measure", "order", "exact", "sizes_fitted", "predicted", "verdict", "source"};
+    return {"family", "spacing",      "closed",    "method",  "measure", "order",
+            "exact",  "sizes_fitted", "predicted", "verdict", "source"};
 }
 
 namespace {
@@ -388,8 +414,9 @@ std::string order_text(const ConvergenceOrder& c) {
 std::vector<std::vector<std::string>> convergence_orders_rows(const std::vector<ConvergenceOrder>& orders) {
     std::vector<std::vector<std::string>> rows;
     for (const ConvergenceOrder& c : orders)
-        rows.push_back({c.family, to_string(c.spacing), c.closed ? "1" : "0", c.method, c.measure, c.order ? format_number(*c.order, 4) : "", c.exact ? "1" : "0",
-                        std::to_string(c.sizes_fitted), c.predicted ? format_number(*c.predicted, 3) : "", verdict(c), c.source});
+        rows.push_back({c.family, to_string(c.spacing), c.closed ? "1" : "0", c.method, c.measure,
+                        c.order ? format_number(*c.order, 4) : "", c.exact ? "1" : "0", std::to_string(c.sizes_fitted),
+                        c.predicted ? format_number(*c.predicted, 3) : "", verdict(c), c.source});
     return rows;
 }
 
@@ -398,7 +425,9 @@ std::string truth_leaderboard_markdown(const std::vector<TruthRun>& runs, const 
     const auto number = [](double v) { return format_number(v, 3); };
     const auto find_order = [&](const TruthRun& r, const std::string& measure) -> const ConvergenceOrder* {
         for (const ConvergenceOrder& c : orders)
-            if (c.family == r.family && c.spacing == r.spacing && c.closed == r.closed && c.method == r.method && c.measure == measure) return &c;
+            if (c.family == r.family && c.spacing == r.spacing && c.closed == r.closed && c.method == r.method &&
+                c.measure == measure)
+                return &c;
         return nullptr;
     };
     for (const TruthFamily& f : truth_families()) {
@@ -408,18 +437,22 @@ std::string truth_leaderboard_markdown(const std::vector<TruthRun>& runs, const 
         if (largest == 0) continue;
         std::vector<const TruthRun*> rows;
         for (const TruthRun& r : runs)
-            if (r.family == f.name && r.n == largest && r.spacing == TruthSpacing::uniform && r.closed == f.closed) rows.push_back(&r);
+            if (r.family == f.name && r.n == largest && r.spacing == TruthSpacing::uniform && r.closed == f.closed)
+                rows.push_back(&r);
         std::stable_sort(rows.begin(), rows.end(), [](const TruthRun* a, const TruthRun* b) {
-            if ((a->status == AttemptStatus::ok) != (b->status == AttemptStatus::ok)) return a->status == AttemptStatus::ok;
+            if ((a->status == AttemptStatus::ok) != (b->status == AttemptStatus::ok))
+                return a->status == AttemptStatus::ok;
             return a->status == AttemptStatus::ok && a->errors.distance < b->errors.distance;
         });
         md << "\n#### " << f.name << ": " << f.description << "\n\n"
-           << largest << " points uniform in arc length" << (f.closed ? ", closed" : "") << "; errors dimensionless (see the notes above); order = observed order of the distance over n = ";
+           << largest << " points uniform in arc length" << (f.closed ? ", closed" : "")
+           << "; errors dimensionless (see the notes above); order = observed order of the distance over n = ";
         std::vector<int> sizes;
         for (const TruthRun& r : runs)
             if (r.family == f.name && std::find(sizes.begin(), sizes.end(), r.n) == sizes.end()) sizes.push_back(r.n);
         for (std::size_t i = 0; i < sizes.size(); ++i) md << (i ? ", " : "") << sizes[i];
-        md << ".\n\n| rank | method | distance | order | tangent angle | curvature max | curvature L2 | length |\n|---:|---|---:|---:|---:|---:|---:|---:|\n";
+        md << ".\n\n| rank | method | distance | order | tangent angle | curvature max | curvature L2 | length "
+              "|\n|---:|---|---:|---:|---:|---:|---:|---:|\n";
         int rank = 0;
         for (const TruthRun* r : rows) {
             if (r->status != AttemptStatus::ok) {
@@ -427,29 +460,38 @@ std::string truth_leaderboard_markdown(const std::vector<TruthRun>& runs, const 
                 continue;
             }
             const ConvergenceOrder* o = find_order(*r, "distance");
-            md << "| " << ++rank << " | `" << r->method << "` | " << number(r->errors.distance) << " | " << (o ? order_text(*o) : "-") << " | " << number(r->errors.tangent_angle)
-               << " | " << number(r->errors.curvature_max) << " | " << number(r->errors.curvature_l2) << " | " << number(r->errors.length) << " |\n";
+            md << "| " << ++rank << " | `" << r->method << "` | " << number(r->errors.distance) << " | "
+               << (o ? order_text(*o) : "-") << " | " << number(r->errors.tangent_angle) << " | "
+               << number(r->errors.curvature_max) << " | " << number(r->errors.curvature_l2) << " | "
+               << number(r->errors.length) << " |\n";
         }
         // The shape at a size where the methods still differ visibly, beside the truth's.
         std::vector<const TruthRun*> shaped;
         for (const TruthRun* r : rows)
             for (const TruthRun& s : runs)
-                if (s.family == f.name && s.n == kShapeTableSize && s.spacing == TruthSpacing::uniform && s.closed == f.closed && s.method == r->method && s.status == AttemptStatus::ok)
+                if (s.family == f.name && s.n == kShapeTableSize && s.spacing == TruthSpacing::uniform &&
+                    s.closed == f.closed && s.method == r->method && s.status == AttemptStatus::ok)
                     shaped.push_back(&s);
         if (shaped.empty()) continue;
         const auto shape_row = [&](const std::string& name, const ShapeMeasures& s, const std::string& extension) {
-            md << "| " << name << " | " << number(s.bending) << " | " << number(s.variation) << " | " << number(s.max_curvature) << " | " << s.curvature_extrema << " | "
-               << number(s.g2_defect) << " | " << inflections_text(s, f.dimension == 3) << " | " << extension << " |\n";
+            md << "| " << name << " | " << number(s.bending) << " | " << number(s.variation) << " | "
+               << number(s.max_curvature) << " | " << s.curvature_extrema << " | " << number(s.g2_defect) << " | "
+               << inflections_text(s, f.dimension == 3) << " | " << extension << " |\n";
         };
-        md << "\nShape at " << kShapeTableSize << " points (scale-free: L∫κ² ds, L³∫κ'² ds, max |κ|·L, sign changes of κ', the largest curvature jump at a point × L; "
+        md << "\nShape at " << kShapeTableSize
+           << " points (scale-free: L∫κ² ds, L³∫κ'² ds, max |κ|·L, sign changes of κ', the largest curvature jump at a "
+              "point × L; "
            << "inflections: sign changes of κ, (+u): u of them not implied by the polygon through the points; "
            << "extension: how far the curve moves, ÷ L, when a point taken on it is added):\n\n"
-           << "| | bending | variation | max κ·L | κ extrema | G2 defect | inflections | extension |\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
+           << "| | bending | variation | max κ·L | κ extrema | G2 defect | inflections | extension "
+              "|\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
         shape_row("**truth**", shaped.front()->truth_shape, "—");
-        for (const TruthRun* s : shaped) shape_row("`" + s->method + "`", s->shape, s->extensionality ? number(*s->extensionality) : "no curve");
+        for (const TruthRun* s : shaped)
+            shape_row("`" + s->method + "`", s->shape, s->extensionality ? number(*s->extensionality) : "no curve");
     }
     // Exact reproduction: every size at rounding level, in both spacings.
-    md << "\n#### Exact reproduction\n\nA method reproduces a curve when its distance is at most " << format_number(kTruthExactLevelPerPoint, 2) << " × n"
+    md << "\n#### Exact reproduction\n\nA method reproduces a curve when its distance is at most "
+       << format_number(kTruthExactLevelPerPoint, 2) << " × n"
        << " at every size and spacing (closed where the curve is closed):\n\n| family | methods |\n|---|---|\n";
     for (const char* name : {"line", "circle", "clothoid"}) {
         std::vector<std::string> exact;
@@ -464,12 +506,16 @@ std::string truth_leaderboard_markdown(const std::vector<TruthRun>& runs, const 
             if (all[m]) list += (list.empty() ? "`" : ", `") + m + "`";
         md << "| " << name << " | " << (list.empty() ? "none" : list) << " |\n";
     }
-    md << "\n#### Predicted orders\n\nWhere a theorem predicts the order of convergence, the observed order must be within " << kPredictedOrderTolerance
-       << " of it:\n\n| method | family | spacing | closed | measure | predicted | observed | verdict | source |\n|---|---|---|---|---|---:|---:|---|---|\n";
+    md << "\n#### Predicted orders\n\nWhere a theorem predicts the order of convergence, the observed order must be "
+          "within "
+       << kPredictedOrderTolerance
+       << " of it:\n\n| method | family | spacing | closed | measure | predicted | observed | verdict | source "
+          "|\n|---|---|---|---|---|---:|---:|---|---|\n";
     for (const ConvergenceOrder& c : orders)
         if (c.predicted)
-            md << "| `" << c.method << "` | " << c.family << " | " << to_string(c.spacing) << " | " << (c.closed ? "yes" : "no") << " | " << c.measure << " | "
-               << format_number(*c.predicted, 3) << " | " << order_text(c) << " | " << verdict(c) << " | " << c.source << " |\n";
+            md << "| `" << c.method << "` | " << c.family << " | " << to_string(c.spacing) << " | "
+               << (c.closed ? "yes" : "no") << " | " << c.measure << " | " << format_number(*c.predicted, 3) << " | "
+               << order_text(c) << " | " << verdict(c) << " | " << c.source << " |\n";
     return md.str();
 }
 

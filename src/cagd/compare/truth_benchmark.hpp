@@ -5,9 +5,9 @@
 /// curve measured against the curve the points came from.
 ///
 /// Errors of one interpolant (truth_errors), on 16 Gauss–Legendre nodes in the interpolant's own
-/// parameter on every span (8 left the curvature's L2 3 % low on 9 points of the ellipse); each node q = c(u) is projected onto the truth, T(t*) nearest to q
-/// (Newton on (T(t) − q)·T'(t) = 0 from the truth parameter at the same fraction of the span,
-/// clamped to the sampled stretch):
+/// parameter on every span (8 left the curvature's L2 3 % low on 9 points of the ellipse); each node q = c(u) is
+/// projected onto the truth, T(t*) nearest to q (Newton on (T(t) − q)·T'(t) = 0 from the truth parameter at the same
+/// fraction of the span, clamped to the sampled stretch):
 ///   distance       max |q − T(t*)| over the nodes (a sample of the maximum: the tests find it
 ///                  within 5 % of 65 equally spaced samples per span), ÷ the truth's length L
 ///   tangent angle  max angle between c'(u) and T'(t*) (radians)
@@ -18,8 +18,8 @@
 ///
 /// Observed order (convergence_orders): p = −log(e_2/e_1)/log(n_2/n_1) from the two largest sizes
 /// whose error is above truth_exact_level(n) (smaller sizes are before the asymptotic regime: the
-/// slope fitted over 6..96 mixes regimes); "exact" when no size is above it, none when only one is. An order is a claim where a theorem predicts it (predicted_orders: the source
-/// is named) and otherwise a measurement.
+/// slope fitted over 6..96 mixes regimes); "exact" when no size is above it, none when only one is. An order is a claim
+/// where a theorem predicts it (predicted_orders: the source is named) and otherwise a measurement.
 #include <optional>
 #include <string>
 #include <vector>
@@ -88,30 +88,31 @@ const std::vector<std::string>& shape_measure_names();
 /// interpolates the n + 1 points again, and the result is the largest distance of the new curve
 /// from the old, ÷ the old curve's length (truth_errors' distance with the old curve as the truth;
 /// 16 Gauss nodes per span). Absent when the method refuses the new points or has no curve for them.
-std::optional<double> extensionality(const methods::Configuration& configuration, const PointList& points, bool closed, const methods::Interpolant& interpolant);
+std::optional<double> extensionality(const methods::Configuration& configuration, const PointList& points, bool closed,
+                                     const methods::Interpolant& interpolant);
 
 /// One interpolation of the benchmark.
 struct TruthRun {
-    std::string family;       ///< truth family
+    std::string family;                            ///< truth family
     TruthSpacing spacing = TruthSpacing::uniform;  ///< where the points are
-    bool closed = false;      ///< closed points
-    int n = 0;                ///< number of points
-    std::string method;       ///< configuration name
-    AttemptStatus status = AttemptStatus::ok;  ///< what became of it (interpolation_attempt.hpp)
-    std::string note;         ///< why not ok
-    TruthErrors errors;       ///< when ok
-    ShapeMeasures shape;      ///< when ok
-    ShapeMeasures truth_shape;  ///< the truth's over the same stretch (the same for every method of a case)
+    bool closed = false;                           ///< closed points
+    int n = 0;                                     ///< number of points
+    std::string method;                            ///< configuration name
+    AttemptStatus status = AttemptStatus::ok;      ///< what became of it (interpolation_attempt.hpp)
+    std::string note;                              ///< why not ok
+    TruthErrors errors;                            ///< when ok
+    ShapeMeasures shape;                           ///< when ok
+    ShapeMeasures truth_shape;             ///< the truth's over the same stretch (the same for every method of a case)
     std::optional<double> extensionality;  ///< when ok: how far a point taken on the curve moves it (extensionality())
 };
 
 /// What run_truth_benchmark runs.
 struct TruthBenchmarkOptions {
     std::vector<int> sizes{6, 12, 24, 48, 96, 192, 384, 768};  ///< numbers of points (each ≥ 3)
-    std::vector<std::string> families;         ///< empty: every family
-    std::vector<std::string> methods;          ///< configuration or method names; empty: every configuration
-    int threads = 0;                           ///< cases measured at once (0: the hardware's); results do not depend on it
-    WorkShare share;                           ///< the runs computed (by their index in the result); default: all
+    std::vector<std::string> families;                         ///< empty: every family
+    std::vector<std::string> methods;  ///< configuration or method names; empty: every configuration
+    int threads = 0;                   ///< cases measured at once (0: the hardware's); results do not depend on it
+    WorkShare share;                   ///< the runs computed (by their index in the result); default: all
 };
 /// Every family (closed families also as open arcs) × spacing × size × configuration, in that order.
 /// With a share of the work, the runs outside it are left empty (TruthRun{}: no method), the others
@@ -131,16 +132,16 @@ const std::vector<PredictedOrder>& predicted_orders();
 
 /// The observed order of one measure of one configuration on one family, spacing and closedness.
 struct ConvergenceOrder {
-    std::string family;   ///< truth family
+    std::string family;                            ///< truth family
     TruthSpacing spacing = TruthSpacing::uniform;  ///< where the points are
-    bool closed = false;  ///< closed points
-    std::string method;   ///< configuration
-    std::string measure;  ///< one of truth_error_names()
-    std::optional<double> order;  ///< p, from the two largest sizes above truth_exact_level(n)
-    bool exact = false;           ///< every size at or below truth_exact_level(n)
-    int sizes_fitted = 0;         ///< sizes in the fit
-    std::optional<double> predicted;  ///< the predicted order, when there is one
-    std::string source;           ///< its source
+    bool closed = false;                           ///< closed points
+    std::string method;                            ///< configuration
+    std::string measure;                           ///< one of truth_error_names()
+    std::optional<double> order;                   ///< p, from the two largest sizes above truth_exact_level(n)
+    bool exact = false;                            ///< every size at or below truth_exact_level(n)
+    int sizes_fitted = 0;                          ///< sizes in the fit
+    std::optional<double> predicted;               ///< the predicted order, when there is one
+    std::string source;                            ///< its source
 };
 /// Observed orders of every measure, from the runs (ok runs only; a case with a failed size has none).
 std::vector<ConvergenceOrder> convergence_orders(const std::vector<TruthRun>& runs);

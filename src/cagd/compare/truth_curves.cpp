@@ -18,7 +18,8 @@ constexpr double kPi = std::numbers::pi;
 class AnalyticCurve : public Curve {
 public:
     using JetFunction = Eigen::MatrixXd (*)(double t);
-    AnalyticCurve(int dimension, double t_max, JetFunction jet_function) : dimension_(dimension), t_max_(t_max), jet_(jet_function) {}
+    AnalyticCurve(int dimension, double t_max, JetFunction jet_function)
+        : dimension_(dimension), t_max_(t_max), jet_(jet_function) {}
     int dimension() const override { return dimension_; }
     double t_min() const override { return 0.0; }
     double t_max() const override { return t_max_; }
@@ -100,7 +101,8 @@ std::shared_ptr<const Curve> clothoid(double length) {
     const intrinsic::KnotLayout layout(2, {1}, {2, 2}, {0});
     Eigen::VectorXd ordinates(3);
     ordinates << 0.0, 0.0, 0.5 * length * length;
-    return std::make_shared<intrinsic::IntrinsicCurve>(Eigen::Vector2d::Zero(), intrinsic::TangentAngleSpline(layout, {length}, ordinates));
+    return std::make_shared<intrinsic::IntrinsicCurve>(Eigen::Vector2d::Zero(),
+                                                       intrinsic::TangentAngleSpline(layout, {length}, ordinates));
 }
 
 std::shared_ptr<const Curve> log_aesthetic() {
@@ -117,15 +119,22 @@ std::shared_ptr<const Curve> log_aesthetic() {
 const std::vector<TruthFamily>& truth_families() {
     static const std::vector<TruthFamily> families = [] {
         std::vector<TruthFamily> f;
-        f.push_back({"line", "the segment (t, t/2), 0 ≤ t ≤ 4", 2, false, std::make_shared<AnalyticCurve>(2, 4.0, line_jet)});
-        f.push_back({"circle", "the unit circle (cos t, sin t)", 2, true, std::make_shared<AnalyticCurve>(2, 2 * kPi, circle_jet)});
-        f.push_back({"ellipse", "the ellipse (2 cos t, sin t)", 2, true, std::make_shared<AnalyticCurve>(2, 2 * kPi, ellipse_jet)});
-        f.push_back({"epitrochoid", "the epitrochoid R = 3, r = 1, d = 1/2: (4 cos t − cos 4t / 2, 4 sin t − sin 4t / 2)", 2, true,
+        f.push_back(
+            {"line", "the segment (t, t/2), 0 ≤ t ≤ 4", 2, false, std::make_shared<AnalyticCurve>(2, 4.0, line_jet)});
+        f.push_back({"circle", "the unit circle (cos t, sin t)", 2, true,
+                     std::make_shared<AnalyticCurve>(2, 2 * kPi, circle_jet)});
+        f.push_back({"ellipse", "the ellipse (2 cos t, sin t)", 2, true,
+                     std::make_shared<AnalyticCurve>(2, 2 * kPi, ellipse_jet)});
+        f.push_back({"epitrochoid",
+                     "the epitrochoid R = 3, r = 1, d = 1/2: (4 cos t − cos 4t / 2, 4 sin t − sin 4t / 2)", 2, true,
                      std::make_shared<AnalyticCurve>(2, 2 * kPi, epitrochoid_jet)});
         f.push_back({"clothoid", "the clothoid κ(s) = s, 0 ≤ s ≤ 2.5", 2, false, clothoid(2.5)});
-        f.push_back({"log-aesthetic", "the log-aesthetic curve ρ² = s + 1 (α = 2), 0 ≤ s ≤ 4", 2, false, log_aesthetic()});
-        f.push_back({"helix", "the helix (cos t, sin t, t/4), 0 ≤ t ≤ 3π", 3, false, std::make_shared<AnalyticCurve>(3, 3 * kPi, helix_jet)});
-        f.push_back({"trefoil", "the trefoil knot (sin t + 2 sin 2t, cos t − 2 cos 2t, −sin 3t)", 3, true, std::make_shared<AnalyticCurve>(3, 2 * kPi, trefoil_jet)});
+        f.push_back(
+            {"log-aesthetic", "the log-aesthetic curve ρ² = s + 1 (α = 2), 0 ≤ s ≤ 4", 2, false, log_aesthetic()});
+        f.push_back({"helix", "the helix (cos t, sin t, t/4), 0 ≤ t ≤ 3π", 3, false,
+                     std::make_shared<AnalyticCurve>(3, 3 * kPi, helix_jet)});
+        f.push_back({"trefoil", "the trefoil knot (sin t + 2 sin 2t, cos t − 2 cos 2t, −sin 3t)", 3, true,
+                     std::make_shared<AnalyticCurve>(3, 2 * kPi, trefoil_jet)});
         return f;
     }();
     return families;
@@ -156,7 +165,9 @@ TruthSample truth_samples(const TruthFamily& family, int n, TruthSpacing spacing
         int dimension() const override { return base.dimension(); }
         double t_min() const override { return base.t_min(); }
         double t_max() const override { return end; }
-        void evaluate_jet(double t, int first, JetSide side, Eigen::Ref<Eigen::MatrixXd> out) const override { base.evaluate_jet(t, first, side, out); }
+        void evaluate_jet(double t, int first, JetSide side, Eigen::Ref<Eigen::MatrixXd> out) const override {
+            base.evaluate_jet(t, first, side, out);
+        }
         std::vector<double> breakpoints() const override {
             std::vector<double> b;
             for (double x : base.breakpoints())

@@ -37,10 +37,10 @@ namespace cagd::compare {
 
 /// A family of curves with a truth.
 struct TruthFamily {
-    std::string name;         ///< "circle", "ellipse", …
-    std::string description;  ///< the curve in words and formulae
-    int dimension = 2;        ///< 2 or 3
-    bool closed = false;      ///< a closed curve (sampled closed, or as an open arc of 3/4 of it)
+    std::string name;                    ///< "circle", "ellipse", …
+    std::string description;             ///< the curve in words and formulae
+    int dimension = 2;                   ///< 2 or 3
+    bool closed = false;                 ///< a closed curve (sampled closed, or as an open arc of 3/4 of it)
     std::shared_ptr<const Curve> curve;  ///< the curve itself
 };
 /// Every family, in the order of the header's table.

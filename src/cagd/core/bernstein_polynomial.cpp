@@ -30,7 +30,9 @@ double max_abs(const std::vector<double>& c) {
 BernsteinPolynomial::BernsteinPolynomial(std::vector<double> coefficients) : c_(std::move(coefficients)) {
     if (c_.empty()) fail_input("cagd::BernsteinPolynomial", "needs at least one coefficient");
     for (std::size_t i = 0; i < c_.size(); ++i)
-        if (!std::isfinite(c_[i])) fail_input("cagd::BernsteinPolynomial", "coefficient " + std::to_string(i) + " = " + full_precision(c_[i]) + " is not finite");
+        if (!std::isfinite(c_[i]))
+            fail_input("cagd::BernsteinPolynomial",
+                       "coefficient " + std::to_string(i) + " = " + full_precision(c_[i]) + " is not finite");
 }
 
 double BernsteinPolynomial::operator()(double t) const {
@@ -49,7 +51,9 @@ BernsteinPolynomial BernsteinPolynomial::derivative() const {
 }
 
 BernsteinPolynomial BernsteinPolynomial::elevated(int to_degree) const {
-    if (to_degree < degree()) fail_input("cagd::BernsteinPolynomial::elevated", "target degree " + std::to_string(to_degree) + " below the degree " + std::to_string(degree()));
+    if (to_degree < degree())
+        fail_input("cagd::BernsteinPolynomial::elevated",
+                   "target degree " + std::to_string(to_degree) + " below the degree " + std::to_string(degree()));
     std::vector<double> c = c_;
     for (int d = degree(); d < to_degree; ++d) {
         std::vector<double> e(static_cast<std::size_t>(d + 2));
@@ -204,7 +208,8 @@ namespace {
 
 void require_basis_arguments(int degree, double t) {
     if (degree < 0) fail_input("cagd::bernstein_basis_values", "degree " + std::to_string(degree) + " < 0");
-    if (!(t >= 0.0 && t <= 1.0)) fail_input("cagd::bernstein_basis_values", "t = " + full_precision(t) + " outside [0, 1]");
+    if (!(t >= 0.0 && t <= 1.0))
+        fail_input("cagd::bernstein_basis_values", "t = " + full_precision(t) + " outside [0, 1]");
 }
 
 // B_{0..d,d}(t) by the triangle of convex combinations (d ≤ kSmallBernsteinDegree).
@@ -223,8 +228,8 @@ void small_degree_basis(int d, double t, double* b) {
 void bernstein_basis_values(int degree, double t, std::span<double> out) {
     require_basis_arguments(degree, t);
     if (out.size() != static_cast<std::size_t>(degree) + 1)
-        fail_input("cagd::bernstein_basis_values",
-                   "output holds " + std::to_string(out.size()) + " values; degree " + std::to_string(degree) + " needs " + std::to_string(degree + 1));
+        fail_input("cagd::bernstein_basis_values", "output holds " + std::to_string(out.size()) + " values; degree " +
+                                                       std::to_string(degree) + " needs " + std::to_string(degree + 1));
     if (degree <= kSmallBernsteinDegree) {
         small_degree_basis(degree, t, out.data());
         return;
@@ -246,7 +251,8 @@ std::vector<double> bernstein_basis_values(int degree, double t) {
         return b;
     }
     const int mode = std::clamp(static_cast<int>(std::lround(d * t)), 0, d);
-    const double log_mode = std::lgamma(d + 1.0) - std::lgamma(mode + 1.0) - std::lgamma(d - mode + 1.0) + mode * std::log(t) + (d - mode) * std::log1p(-t);
+    const double log_mode = std::lgamma(d + 1.0) - std::lgamma(mode + 1.0) - std::lgamma(d - mode + 1.0) +
+                            mode * std::log(t) + (d - mode) * std::log1p(-t);
     b[mode] = std::exp(log_mode);
     const double ratio = t / (1.0 - t);
     for (int i = mode; i < d; ++i) b[i + 1] = b[i] * (d - i) / (i + 1.0) * ratio;

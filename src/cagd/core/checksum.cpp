@@ -36,12 +36,14 @@ std::string_view checked_content(std::string_view text, const std::string& sourc
     const std::size_t start = body.rfind('\n');
     const std::string_view last = start == std::string_view::npos ? body : body.substr(start + 1);
     if (last.substr(0, kPrefix.size()) != kPrefix)
-        fail_input(who, source + ": no checksum line at its end (a table file ends with '" + std::string(kPrefix) + "…'; the file is truncated, or not written by cagd)");
+        fail_input(who, source + ": no checksum line at its end (a table file ends with '" + std::string(kPrefix) +
+                            "…'; the file is truncated, or not written by cagd)");
     const std::string_view content = text.substr(0, start == std::string_view::npos ? 0 : start + 1);
     const std::string expected = checksum_line(content);
     if (std::string(last) + "\n" != expected)
-        fail_input(who, source + ": its checksum does not match its content (" + std::string(last.substr(kPrefix.size())) + " recorded, " +
-                            fnv1a64_hex(content) + " computed): the file is damaged or was edited");
+        fail_input(who, source + ": its checksum does not match its content (" +
+                            std::string(last.substr(kPrefix.size())) + " recorded, " + fnv1a64_hex(content) +
+                            " computed): the file is damaged or was edited");
     return content;
 }
 

@@ -3,13 +3,13 @@
 #include <cctype>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <exception>
-#include <limits>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
 
 #include "cagd/core/errors.hpp"
 
@@ -83,18 +83,22 @@ bool read_line(std::istream& in, std::string& line, const std::string& source, i
         const char ch = std::streambuf::traits_type::to_char_type(c);
         if (ch == '\n') return true;
         if (line.size() >= kMaxLineBytes)
-            fail_input("cagd::read_line", source + ":" + std::to_string(line_no) + ": the line is longer than " + std::to_string(kMaxLineBytes) + " bytes (at most 1 MiB a line)");
+            fail_input("cagd::read_line", source + ":" + std::to_string(line_no) + ": the line is longer than " +
+                                              std::to_string(kMaxLineBytes) + " bytes (at most 1 MiB a line)");
         line += ch;
     }
 }
 
 double parse_number(const std::string& text) {
-    const auto fail = [&]() -> double { fail_input("cagd::parse_number", "'" + text + "' is not a number or fraction a/b"); };
+    const auto fail = [&]() -> double {
+        fail_input("cagd::parse_number", "'" + text + "' is not a number or fraction a/b");
+    };
     const auto slash = text.find('/');
     double v = 0.0;
     if (slash == std::string::npos) return parse_decimal(text, v) ? v : fail();
     double num = 0.0, den = 0.0;
-    if (!parse_decimal(text.substr(0, slash), num) || !parse_decimal(text.substr(slash + 1), den) || den == 0.0) return fail();
+    if (!parse_decimal(text.substr(0, slash), num) || !parse_decimal(text.substr(slash + 1), den) || den == 0.0)
+        return fail();
     return num / den;
 }
 
@@ -147,7 +151,8 @@ InputFile::InputFile(const std::string& path) : path_(path), name_(path == "-" ?
         return;
     }
     std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) fail_input("cagd::InputFile", "'" + path + "' is a directory, not a file");
+    if (std::filesystem::is_directory(path, ec))
+        fail_input("cagd::InputFile", "'" + path + "' is a directory, not a file");
     file_.open(path);
     if (!file_) fail_input("cagd::InputFile", "cannot open '" + path + "'");
 }
@@ -169,7 +174,8 @@ NumericTable read_numeric_table(std::istream& stream, const std::string& name) {
         const std::string where = name + ":" + std::to_string(line_no) + ": ";
         if (t.header.empty()) {
             for (const std::string& f : fields)
-                if (!is_column_name(f)) fail_input(who, where + "needs a header line of column names, got '" + excerpt(line) + "'");
+                if (!is_column_name(f))
+                    fail_input(who, where + "needs a header line of column names, got '" + excerpt(line) + "'");
             t.header = fields;
             continue;
         }
@@ -184,7 +190,9 @@ NumericTable read_numeric_table(std::istream& stream, const std::string& name) {
             if (!std::isfinite(v)) fail_input(who, where + "'" + excerpt(f) + "' is not finite");
             row.push_back(v);
         }
-        if (row.size() != t.header.size()) fail_input(who, where + std::to_string(row.size()) + " fields, the header has " + std::to_string(t.header.size()));
+        if (row.size() != t.header.size())
+            fail_input(
+                who, where + std::to_string(row.size()) + " fields, the header has " + std::to_string(t.header.size()));
         t.rows.push_back(std::move(row));
     }
     if (t.header.empty()) fail_input(who, name + ": empty (no header line)");

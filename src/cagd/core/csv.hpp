@@ -6,7 +6,6 @@
 #include <string>
 #include <vector>
 
-
 namespace cagd {
 
 /// The fields of one CSV line, unquoted (RFC 4180: quoted fields may hold commas and doubled quotes).
@@ -61,8 +60,8 @@ private:
 /// by the rules above (the header is required). InvalidInput names path:line and the field when a
 /// field is not a number or not finite, or a row's field count differs from the header's.
 struct NumericTable {
-    std::vector<std::string> header;  ///< the column names of the first line
-    std::vector<std::vector<double>> rows;  ///< one vector of numbers per data line, as many as the header's names
+    std::vector<std::string> header;            ///< the column names of the first line
+    std::vector<std::vector<double>> rows;      ///< one vector of numbers per data line, as many as the header's names
     int column(const std::string& name) const;  ///< −1 when absent
 };
 /// The table in the file `path` ("-": standard input) by the rules above.

@@ -16,12 +16,14 @@ std::vector<double> unit_piece_breakpoints(int pieces) {
 }
 
 void reject_unit_piece(const char* who, double u, int pieces, int order) {
-    if (!(u >= 0.0 && u <= pieces)) fail_input(who, "u = " + full_precision(u) + " outside [0, " + std::to_string(pieces) + "]");
+    if (!(u >= 0.0 && u <= pieces))
+        fail_input(who, "u = " + full_precision(u) + " outside [0, " + std::to_string(pieces) + "]");
     fail_input(who, "order must be >= 0, got " + std::to_string(order));
 }
 
 PieceLocation locate_unit_piece_from_left(const char* who, double u, int pieces, int order) {
-    if (!(u > 0.0 && u <= pieces)) fail_input(who, "left limit at u = " + full_precision(u) + " needs u in (0, " + std::to_string(pieces) + "]");
+    if (!(u > 0.0 && u <= pieces))
+        fail_input(who, "left limit at u = " + full_precision(u) + " needs u in (0, " + std::to_string(pieces) + "]");
     if (order < 0) fail_input(who, "order must be >= 0, got " + std::to_string(order));
     const int s = std::max(static_cast<int>(std::ceil(u)) - 1, 0);
     return {s, u - s};
@@ -35,7 +37,8 @@ void require_order(const char* who, int order, int least) {
 void require_inside(const Curve& c, const char* who, double t, JetSide side) {
     const double a = c.t_min(), b = c.t_max();
     if (side == JetSide::left ? !(t > a && t <= b) : !(t >= a && t <= b))
-        fail_input(who, "t = " + full_precision(t) + " outside " + (side == JetSide::left ? "(" : "[") + full_precision(a) + ", " + full_precision(b) + "]" +
+        fail_input(who, "t = " + full_precision(t) + " outside " + (side == JetSide::left ? "(" : "[") +
+                            full_precision(a) + ", " + full_precision(b) + "]" +
                             (side == JetSide::left ? " (a left limit needs t > t_min)" : ""));
 }
 
@@ -49,12 +52,19 @@ Eigen::MatrixXd evaluated(const Curve& c, const char* who, double t, int order, 
 }
 }  // namespace
 
-Eigen::MatrixXd Curve::jet(double t, int order) const { return evaluated(*this, "cagd::Curve::jet", t, order, 0, JetSide::right); }
-Eigen::MatrixXd Curve::jet_from_left(double t, int order) const { return evaluated(*this, "cagd::Curve::jet_from_left", t, order, 0, JetSide::left); }
-Eigen::MatrixXd Curve::derivatives(double t, int order) const { return evaluated(*this, "cagd::Curve::derivatives", t, order, 1, JetSide::right); }
+Eigen::MatrixXd Curve::jet(double t, int order) const {
+    return evaluated(*this, "cagd::Curve::jet", t, order, 0, JetSide::right);
+}
+Eigen::MatrixXd Curve::jet_from_left(double t, int order) const {
+    return evaluated(*this, "cagd::Curve::jet_from_left", t, order, 0, JetSide::left);
+}
+Eigen::MatrixXd Curve::derivatives(double t, int order) const {
+    return evaluated(*this, "cagd::Curve::derivatives", t, order, 1, JetSide::right);
+}
 
 void reject_jet_capacity(const char* who, int rows, int dimension) {
-    fail_input(who, "a JetMatrix holds 1.." + std::to_string(kJetCapacity) + " rows and 1..3 columns, asked for " + std::to_string(rows) + " x " + std::to_string(dimension));
+    fail_input(who, "a JetMatrix holds 1.." + std::to_string(kJetCapacity) + " rows and 1..3 columns, asked for " +
+                        std::to_string(rows) + " x " + std::to_string(dimension));
 }
 
 void Curve::jet_into(double t, int order, JetMatrix& out) const {

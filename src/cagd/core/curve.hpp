@@ -78,7 +78,9 @@ public:
 
 protected:
     /// For a curve whose formula gives a whole jet at once: rows first.. of `jet` into out.
-    static void take_rows(const Eigen::MatrixXd& jet, int first, Eigen::Ref<Eigen::MatrixXd> out) { out = jet.middleRows(first, out.rows()); }
+    static void take_rows(const Eigen::MatrixXd& jet, int first, Eigen::Ref<Eigen::MatrixXd> out) {
+        out = jet.middleRows(first, out.rows());
+    }
 };
 
 /// Throws InvalidInput naming `who` unless `rows` × `dimension` fits a JetMatrix.

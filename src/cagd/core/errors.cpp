@@ -58,7 +58,8 @@ std::string in_user_terms(const std::string& m) {
             }
             if (end == first_end) {
                 out.append(m, i, end - i);
-            } else if (m.compare(last, end - last, "methods") == 0 && end < m.size() && m[end] == '(' && m.find(')', end) != std::string::npos) {
+            } else if (m.compare(last, end - last, "methods") == 0 && end < m.size() && m[end] == '(' &&
+                       m.find(')', end) != std::string::npos) {
                 const std::size_t close = m.find(')', end);  // "cagd::methods(s-spline)": the method's name
                 out.append(m, end + 1, close - end - 1);
                 end = close + 1;

@@ -23,7 +23,7 @@ enum class Status { ok, no_convergence, no_solution, not_representable };
 /// The outcome of a computation on valid input: ok, or why there is no result (never an exception).
 struct Outcome {
     Status status = Status::ok;  ///< ok, or the reason there is no result
-    std::string message;  ///< what happened, in one line, when not ok
+    std::string message;         ///< what happened, in one line, when not ok
     /// Whether a result exists.
     bool ok() const { return status == Status::ok; }
 };

@@ -24,7 +24,9 @@ struct Loaded {
 
 // Appends "; <path> (<why>)" to `looked` (appends, not operator+: GCC 12 warns falsely of an
 // overlapping memcpy in a chain of string concatenations).
-void note(std::string& looked, const std::filesystem::path& path, const std::string& why) { looked.append("; ").append(path.string()).append(" (").append(why).append(")"); }
+void note(std::string& looked, const std::filesystem::path& path, const std::string& why) {
+    looked.append("; ").append(path.string()).append(" (").append(why).append(")");
+}
 
 // The plugin at `path`, or null with the reason appended to `looked`.
 const OpenCascadePlugin* try_load(const std::filesystem::path& path, std::string& looked) {
@@ -42,7 +44,8 @@ const OpenCascadePlugin* try_load(const std::filesystem::path& path, std::string
     const auto entry = reinterpret_cast<Entry>(dlsym(handle, "cagd_opencascade_plugin"));
     const OpenCascadePlugin* plugin = entry ? entry() : nullptr;
     if (!plugin || !plugin->interface || std::string(plugin->interface) != kOpenCascadePluginInterface) {
-        note(looked, path, std::string("another build: ").append(plugin && plugin->interface ? plugin->interface : "no interface"));
+        note(looked, path,
+             std::string("another build: ").append(plugin && plugin->interface ? plugin->interface : "no interface"));
         dlclose(handle);
         return nullptr;
     }

@@ -45,8 +45,11 @@ bool built_with(OptionalDependency d) {
 
 void require_built_with(OptionalDependency d, const std::string& who) {
     if (built_with(d)) return;
-    const char* option = d == OptionalDependency::ceres ? "CAGD_WITH_CERES" : d == OptionalDependency::nlopt ? "CAGD_WITH_NLOPT" : "CAGD_WITH_OPENCASCADE";
-    fail_input(who, std::string("needs a cagd library built with ") + to_string(d) + " (CMake option " + option + "); this one was built without it");
+    const char* option = d == OptionalDependency::ceres   ? "CAGD_WITH_CERES"
+                         : d == OptionalDependency::nlopt ? "CAGD_WITH_NLOPT"
+                                                          : "CAGD_WITH_OPENCASCADE";
+    fail_input(who, std::string("needs a cagd library built with ") + to_string(d) + " (CMake option " + option +
+                        "); this one was built without it");
 }
 
 }  // namespace cagd

@@ -27,7 +27,9 @@ inline constexpr bool kThreadsAvailable = true;
 
 /// The hardware's thread count (at least 1): the default for the callers' `threads`. 1 in a
 /// WebAssembly build without threads (Emscripten without -pthread cannot start a std::thread).
-inline int hardware_threads() { return kThreadsAvailable ? static_cast<int>(std::max(1u, std::thread::hardware_concurrency())) : 1; }
+inline int hardware_threads() {
+    return kThreadsAvailable ? static_cast<int>(std::max(1u, std::thread::hardware_concurrency())) : 1;
+}
 
 template <class Body>
 /// Runs body(k) for k = 0..count−1 on `threads` threads (at most count), each k once; an exception

@@ -14,8 +14,8 @@ namespace {
 
 // Records of min_cols..max_cols finite numbers by the rules of point_csv.hpp.
 // `lines`, when given, receives the line number of each row.
-PointList read_number_rows(std::istream& in, const std::string& name, std::size_t min_cols, std::size_t max_cols, const std::string& who, const std::string& what,
-                           std::vector<long>* lines = nullptr) {
+PointList read_number_rows(std::istream& in, const std::string& name, std::size_t min_cols, std::size_t max_cols,
+                           const std::string& who, const std::string& what, std::vector<long>* lines = nullptr) {
     std::vector<std::vector<double>> rows;
     std::string line;
     int line_no = 0;
@@ -40,13 +40,17 @@ PointList read_number_rows(std::istream& in, const std::string& name, std::size_
             for (const auto& field : fields) {
                 double v = 0;
                 if (!parse_decimal(field, v))
-                    fail_input(who, where + "'" + excerpt(field) + "' in '" + excerpt(line) + "' is not a number (" + what +
-                                        (line_no == 1 || rows.empty() ? "; a header line has names only" : "") + ")");
+                    fail_input(who, where + "'" + excerpt(field) + "' in '" + excerpt(line) + "' is not a number (" +
+                                        what + (line_no == 1 || rows.empty() ? "; a header line has names only" : "") +
+                                        ")");
             }
         }
-        if (values.size() < min_cols || values.size() > max_cols) fail_input(who, where + std::to_string(values.size()) + " columns in '" + excerpt(line) + "'; expected " + what);
+        if (values.size() < min_cols || values.size() > max_cols)
+            fail_input(who,
+                       where + std::to_string(values.size()) + " columns in '" + excerpt(line) + "'; expected " + what);
         if (!rows.empty() && values.size() != rows.front().size())
-            fail_input(who, where + std::to_string(values.size()) + " columns, earlier lines have " + std::to_string(rows.front().size()));
+            fail_input(who, where + std::to_string(values.size()) + " columns, earlier lines have " +
+                                std::to_string(rows.front().size()));
         for (double v : values)
             if (!std::isfinite(v)) fail_input(who, where + "coordinate " + full_precision(v) + " is not finite");
         rows.push_back(values);
@@ -55,14 +59,16 @@ PointList read_number_rows(std::istream& in, const std::string& name, std::size_
     if (rows.empty()) fail_input(who, name + ": no data rows (no points)");
     PointList p(static_cast<Eigen::Index>(rows.size()), static_cast<Eigen::Index>(rows.front().size()));
     for (std::size_t i = 0; i < rows.size(); ++i)
-        for (std::size_t k = 0; k < rows[i].size(); ++k) p(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k)) = rows[i][k];
+        for (std::size_t k = 0; k < rows[i].size(); ++k)
+            p(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k)) = rows[i][k];
     return p;
 }
 
 }  // namespace
 
 PointList read_points_csv(std::istream& in, const std::string& name) {
-    return read_number_rows(in, name, 2, 3, "cagd::read_points_csv", "2 or 3 comma-separated numbers (points need 2 or 3)");
+    return read_number_rows(in, name, 2, 3, "cagd::read_points_csv",
+                            "2 or 3 comma-separated numbers (points need 2 or 3)");
 }
 
 std::vector<double> read_values_csv(std::istream& in, const std::string& name) {
@@ -83,7 +89,8 @@ PointList read_points_csv(const std::string& path) {
 PointList read_points_csv(const std::string& path, std::vector<long>& lines) {
     InputFile in(path);
     lines.clear();
-    return read_number_rows(in.stream(), in.name(), 2, 3, "cagd::read_points_csv", "2 or 3 comma-separated numbers (points need 2 or 3)", &lines);
+    return read_number_rows(in.stream(), in.name(), 2, 3, "cagd::read_points_csv",
+                            "2 or 3 comma-separated numbers (points need 2 or 3)", &lines);
 }
 
 }  // namespace cagd

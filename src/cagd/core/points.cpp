@@ -17,7 +17,8 @@ namespace {
 template <int D>
 bool any_consecutive_rows_equal_of_dimension(const PointList& points) {
     const Eigen::Index n = points.rows();
-    const double* c[3] = {points.col(0).data(), D > 1 ? points.col(1).data() : nullptr, D > 2 ? points.col(2).data() : nullptr};
+    const double* c[3] = {points.col(0).data(), D > 1 ? points.col(1).data() : nullptr,
+                          D > 2 ? points.col(2).data() : nullptr};
     constexpr Eigen::Index kBlock = 1024;
     double sums[kBlock];
     for (Eigen::Index a = 0; a + 1 < n; a += kBlock) {
@@ -43,15 +44,19 @@ bool any_consecutive_rows_equal(const PointList& points) {
 
 }  // namespace
 
-void require_valid_points(const PointList& points, Eigen::Index min_count, bool distinct_consecutive, bool closed, const std::string& who) {
+void require_valid_points(const PointList& points, Eigen::Index min_count, bool distinct_consecutive, bool closed,
+                          const std::string& who) {
     const Eigen::Index n = points.rows();
-    if (n < min_count) fail_input(who, "needs at least " + std::to_string(min_count) + " points, got " + std::to_string(n));
-    if (points.cols() < 1 || points.cols() > 3) fail_input(who, "points must have 1, 2 or 3 coordinates, got " + std::to_string(points.cols()));
+    if (n < min_count)
+        fail_input(who, "needs at least " + std::to_string(min_count) + " points, got " + std::to_string(n));
+    if (points.cols() < 1 || points.cols() > 3)
+        fail_input(who, "points must have 1, 2 or 3 coordinates, got " + std::to_string(points.cols()));
     if (!all_finite(points))  // one vectorised pass; the search for the first culprit only on failure
         for (Eigen::Index i = 0; i < n; ++i)
             for (Eigen::Index k = 0; k < points.cols(); ++k)
                 if (!std::isfinite(points(i, k)))
-                    fail_input(who, point_label(i) + " coordinate " + "xyz"[k] + " is " + full_precision(points(i, k)) + "; coordinates must be finite");
+                    fail_input(who, point_label(i) + " coordinate " + "xyz"[k] + " is " + full_precision(points(i, k)) +
+                                        "; coordinates must be finite");
     if (!distinct_consecutive) return;
     const bool open_pairs_distinct = !any_consecutive_rows_equal(points);
     if (open_pairs_distinct && !(closed && n > 0 && points.row(n - 1) == points.row(0))) return;
@@ -59,7 +64,8 @@ void require_valid_points(const PointList& points, Eigen::Index min_count, bool 
     for (Eigen::Index i = 0; i < pairs; ++i) {
         const Eigen::Index j = i + 1 == n ? 0 : i + 1;  // (no modulo per point: an integer division)
         if (points.row(i) == points.row(j))
-            fail_input(who, point_label(i) + " and " + point_label(j) + " coincide (zero-length chord); consecutive points must differ");
+            fail_input(who, point_label(i) + " and " + point_label(j) +
+                                " coincide (zero-length chord); consecutive points must differ");
     }
 }
 
@@ -72,7 +78,8 @@ namespace {
 template <int D, class Visit>
 void visit_squared_chords(const PointList& points, bool closed, Visit&& visit) {
     const Eigen::Index n = points.rows();
-    const double* c[3] = {points.col(0).data(), D > 1 ? points.col(1).data() : nullptr, D > 2 ? points.col(2).data() : nullptr};
+    const double* c[3] = {points.col(0).data(), D > 1 ? points.col(1).data() : nullptr,
+                          D > 2 ? points.col(2).data() : nullptr};
     const auto squared = [&](Eigen::Index a, Eigen::Index b) {
         double sum = (c[0][b] - c[0][a]) * (c[0][b] - c[0][a]);
         if constexpr (D > 1) sum = sum + (c[1][b] - c[1][a]) * (c[1][b] - c[1][a]);
@@ -106,7 +113,8 @@ namespace {
 template <int D>
 void survey_of_dimension(const PointList& points, bool& finite, bool& coincident, PointExtent& extent) {
     const Eigen::Index n = points.rows();
-    const double* c[3] = {points.col(0).data(), D > 1 ? points.col(1).data() : nullptr, D > 2 ? points.col(2).data() : nullptr};
+    const double* c[3] = {points.col(0).data(), D > 1 ? points.col(1).data() : nullptr,
+                          D > 2 ? points.col(2).data() : nullptr};
     constexpr Eigen::Index kBlock = 1024;
     double sums[kBlock], squares[kBlock];
     double smallest_sum = std::numeric_limits<double>::infinity();
@@ -114,7 +122,8 @@ void survey_of_dimension(const PointList& points, bool& finite, bool& coincident
         const Eigen::Index rows = std::min(kBlock, n - a), chords = std::min(kBlock, n - 1 - a);
         for (int k = 0; k < D; ++k) {
             finite = finite && all_finite(c[k] + a, static_cast<std::size_t>(rows));
-            extent.largest_abs_coordinate = std::max(extent.largest_abs_coordinate, Eigen::Map<const Eigen::ArrayXd>(c[k] + a, rows).abs().maxCoeff());
+            extent.largest_abs_coordinate = std::max(extent.largest_abs_coordinate,
+                                                     Eigen::Map<const Eigen::ArrayXd>(c[k] + a, rows).abs().maxCoeff());
         }
         if (chords <= 0) continue;
         for (Eigen::Index i = 0; i < chords; ++i) {
@@ -131,14 +140,16 @@ void survey_of_dimension(const PointList& points, bool& finite, bool& coincident
             sums[i] = sum, squares[i] = square;
         }
         smallest_sum = std::min(smallest_sum, Eigen::Map<const Eigen::ArrayXd>(sums, chords).minCoeff());
-        extent.shortest_squared_chord = std::min(extent.shortest_squared_chord, Eigen::Map<const Eigen::ArrayXd>(squares, chords).minCoeff());
+        extent.shortest_squared_chord =
+            std::min(extent.shortest_squared_chord, Eigen::Map<const Eigen::ArrayXd>(squares, chords).minCoeff());
     }
     coincident = smallest_sum == 0.0;
 }
 
 }  // namespace
 
-PointExtent require_valid_points_with_extent(const PointList& points, Eigen::Index min_count, bool closed, const std::string& who) {
+PointExtent require_valid_points_with_extent(const PointList& points, Eigen::Index min_count, bool closed,
+                                             const std::string& who) {
     const Eigen::Index n = points.rows();
     if (n < min_count || points.cols() < 1 || points.cols() > 3 || n == 0) {
         require_valid_points(points, min_count, true, closed, who);  // throws, or accepts an empty list
@@ -160,7 +171,8 @@ PointExtent require_valid_points_with_extent(const PointList& points, Eigen::Ind
         }
         extent.shortest_squared_chord = std::min(extent.shortest_squared_chord, square);
     }
-    if (!finite || coincident) require_valid_points(points, min_count, true, closed, who);  // names the culprit and throws
+    if (!finite || coincident)
+        require_valid_points(points, min_count, true, closed, who);  // names the culprit and throws
     return extent;
 }
 
@@ -190,12 +202,18 @@ Eigen::Index first_chord_shorter_than(const PointList& points, bool closed, doub
     return first;
 }
 
-void require_increasing(const std::vector<double>& values, std::size_t min_count, const std::string& name, const std::string& who) {
-    if (values.size() < min_count) fail_input(who, "needs at least " + std::to_string(min_count) + " values of " + name + ", got " + std::to_string(values.size()));
+void require_increasing(const std::vector<double>& values, std::size_t min_count, const std::string& name,
+                        const std::string& who) {
+    if (values.size() < min_count)
+        fail_input(who, "needs at least " + std::to_string(min_count) + " values of " + name + ", got " +
+                            std::to_string(values.size()));
     for (std::size_t i = 0; i < values.size(); ++i) {
-        if (!std::isfinite(values[i])) fail_input(who, name + "[" + std::to_string(i) + "] is " + full_precision(values[i]) + "; it must be finite");
+        if (!std::isfinite(values[i]))
+            fail_input(who,
+                       name + "[" + std::to_string(i) + "] is " + full_precision(values[i]) + "; it must be finite");
         if (i > 0 && !(values[i] > values[i - 1]))
-            fail_input(who, name + " must increase strictly: " + name + "[" + std::to_string(i) + "] = " + full_precision(values[i]) + " after " + full_precision(values[i - 1]));
+            fail_input(who, name + " must increase strictly: " + name + "[" + std::to_string(i) +
+                                "] = " + full_precision(values[i]) + " after " + full_precision(values[i - 1]));
     }
 }
 

@@ -13,7 +13,8 @@ using PointList = Eigen::MatrixXd;  ///< n × dim, one point per row
 /// Throws InvalidInput unless: rows ≥ min_count, 1 ≤ cols ≤ 3, every coordinate finite,
 /// and (if distinct_consecutive) no two consecutive points coincide (for closed lists
 /// also last vs first). Messages name `who`, the row index and the value.
-void require_valid_points(const PointList& points, Eigen::Index min_count, bool distinct_consecutive, bool closed, const std::string& who);
+void require_valid_points(const PointList& points, Eigen::Index min_count, bool distinct_consecutive, bool closed,
+                          const std::string& who);
 
 /// What a construction checks of its points besides require_valid_points: the largest |coordinate|
 /// and the smallest squared chord length (the squares summed as in chord_lengths; the closing
@@ -24,7 +25,8 @@ struct PointExtent {
 };
 /// require_valid_points(points, min_count, true, closed, who), with the same messages, and the
 /// extent above, in one pass over the points by blocks that stay in cache.
-PointExtent require_valid_points_with_extent(const PointList& points, Eigen::Index min_count, bool closed, const std::string& who);
+PointExtent require_valid_points_with_extent(const PointList& points, Eigen::Index min_count, bool closed,
+                                             const std::string& who);
 
 /// Points that have passed require_valid_points(points, min_count, true, closed, …): the proof a
 /// construction takes so that the points are validated once (the registry validates them, and
@@ -43,8 +45,10 @@ public:
     bool cover(Eigen::Index count, bool closed) const { return count <= min_count_ && closed == closed_; }
 
 private:
-    ValidPoints(const PointList& points, Eigen::Index min_count, bool closed, PointExtent extent) : points_(points), min_count_(min_count), closed_(closed), extent_(extent) {}
-    friend ValidPoints validate_points(const PointList& points, Eigen::Index min_count, bool closed, const std::string& who);
+    ValidPoints(const PointList& points, Eigen::Index min_count, bool closed, PointExtent extent)
+        : points_(points), min_count_(min_count), closed_(closed), extent_(extent) {}
+    friend ValidPoints validate_points(const PointList& points, Eigen::Index min_count, bool closed,
+                                       const std::string& who);
     const PointList& points_;
     Eigen::Index min_count_;
     bool closed_;
@@ -69,7 +73,8 @@ Eigen::Index first_chord_shorter_than(const PointList& points, bool closed, doub
 /// Throws InvalidInput unless `values` has at least min_count entries, all finite and strictly
 /// increasing (abscissae of y(x) data, grid lines). `name` ("x", "y") appears in the message with
 /// the index and the offending value.
-void require_increasing(const std::vector<double>& values, std::size_t min_count, const std::string& name, const std::string& who);
+void require_increasing(const std::vector<double>& values, std::size_t min_count, const std::string& name,
+                        const std::string& who);
 
 /// The diagonal of the points' axis-aligned bounding box: the length scale against which distances
 /// between curves, overshoot and tolerances are measured. 0 for a single point or an empty list.

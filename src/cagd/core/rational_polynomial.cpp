@@ -24,13 +24,16 @@ RationalPolynomial::RationalPolynomial(std::vector<Rational> coefficients) : c_(
 RationalPolynomial RationalPolynomial::constant(const Rational& c) { return RationalPolynomial({c}); }
 
 RationalPolynomial RationalPolynomial::monomial(int degree, const Rational& c) {
-    if (degree < 0) fail_input("cagd::RationalPolynomial::monomial", "degree must be >= 0, got " + std::to_string(degree));
+    if (degree < 0)
+        fail_input("cagd::RationalPolynomial::monomial", "degree must be >= 0, got " + std::to_string(degree));
     std::vector<Rational> v(static_cast<std::size_t>(degree) + 1, Rational(0));
     v.back() = c;
     return RationalPolynomial(std::move(v));
 }
 
-RationalPolynomial RationalPolynomial::linear(const Rational& c0, const Rational& c1) { return RationalPolynomial({c0, c1}); }
+RationalPolynomial RationalPolynomial::linear(const Rational& c0, const Rational& c1) {
+    return RationalPolynomial({c0, c1});
+}
 
 int RationalPolynomial::degree() const {
     for (int k = static_cast<int>(c_.size()) - 1; k >= 0; --k)
@@ -38,7 +41,9 @@ int RationalPolynomial::degree() const {
     return -1;
 }
 
-Rational RationalPolynomial::coefficient(int k) const { return k >= 0 && k < static_cast<int>(c_.size()) ? c_[static_cast<std::size_t>(k)] : Rational(0); }
+Rational RationalPolynomial::coefficient(int k) const {
+    return k >= 0 && k < static_cast<int>(c_.size()) ? c_[static_cast<std::size_t>(k)] : Rational(0);
+}
 
 Rational RationalPolynomial::operator()(const Rational& t) const {
     Rational v = 0;
@@ -53,7 +58,8 @@ double RationalPolynomial::value(double t) const {
 }
 
 RationalPolynomial RationalPolynomial::derivative(int order) const {
-    if (order < 0) fail_input("cagd::RationalPolynomial::derivative", "order must be >= 0, got " + std::to_string(order));
+    if (order < 0)
+        fail_input("cagd::RationalPolynomial::derivative", "order must be >= 0, got " + std::to_string(order));
     std::vector<Rational> d = c_;
     for (int r = 0; r < order; ++r) {
         if (d.size() <= 1) return RationalPolynomial();

@@ -19,10 +19,13 @@ constexpr double kSecondDerivativeSafety = 2.0;
 constexpr double kShortestPiece = 1e-12;
 
 void check_options(const ApproximationOptions& o) {
-    if (o.degree != 3 && o.degree != 5) fail_input(kToBezierWho, "approximation degree must be 3 or 5, got " + std::to_string(o.degree));
+    if (o.degree != 3 && o.degree != 5)
+        fail_input(kToBezierWho, "approximation degree must be 3 or 5, got " + std::to_string(o.degree));
     if (!(o.relative_tolerance >= 1e-14 && o.relative_tolerance <= 0.1))
-        fail_input(kToBezierWho, "relative tolerance must be in [1e-14, 0.1], got " + full_precision(o.relative_tolerance));
-    if (o.max_pieces < 1) fail_input(kToBezierWho, "max_pieces must be at least 1, got " + std::to_string(o.max_pieces));
+        fail_input(kToBezierWho,
+                   "relative tolerance must be in [1e-14, 0.1], got " + full_precision(o.relative_tolerance));
+    if (o.max_pieces < 1)
+        fail_input(kToBezierWho, "max_pieces must be at least 1, got " + std::to_string(o.max_pieces));
 }
 
 // The Hermite piece of degree q ∈ {3, 5} on [a, b] and its error bound (header).
@@ -59,23 +62,29 @@ BezierForm approximate(const Curve& c, int degree, const ApproximationOptions& o
             const auto [a, b] = todo.back();
             todo.pop_back();
             auto [control, bound] = hermite_piece(c, degree, a, b);
-            if (bound > f.tolerance && b - a > shortest && static_cast<int>(accepted.size() + todo.size()) + 2 <= o.max_pieces) {
+            if (bound > f.tolerance && b - a > shortest &&
+                static_cast<int>(accepted.size() + todo.size()) + 2 <= o.max_pieces) {
                 const double mid = 0.5 * (a + b);
                 todo.emplace_back(mid, b);
                 todo.emplace_back(a, mid);
                 continue;
             }
             if (bound > f.tolerance && f.outcome.ok())
-                f.outcome = {Status::no_convergence, "the degree-" + std::to_string(degree) + " approximation reaches " + full_precision(bound) + " > tolerance " +
-                                                         full_precision(f.tolerance) + " on [" + full_precision(a) + ", " + full_precision(b) + "] (" +
-                                                         (b - a <= shortest ? "a piece of 1e-12 of the range" : "the limit of " + std::to_string(o.max_pieces) + " pieces") + ")"};
+                f.outcome = {Status::no_convergence,
+                             "the degree-" + std::to_string(degree) + " approximation reaches " +
+                                 full_precision(bound) + " > tolerance " + full_precision(f.tolerance) + " on [" +
+                                 full_precision(a) + ", " + full_precision(b) + "] (" +
+                                 (b - a <= shortest ? "a piece of 1e-12 of the range"
+                                                    : "the limit of " + std::to_string(o.max_pieces) + " pieces") +
+                                 ")"};
             f.max_distance = std::max(f.max_distance, bound);
             accepted.push_back(std::move(control));
             f.pieces.breaks.push_back(b);
         }
     }
     f.pieces.control.resize(static_cast<Eigen::Index>(accepted.size()) * (degree + 1), c.dimension());
-    for (std::size_t i = 0; i < accepted.size(); ++i) f.pieces.control.middleRows(static_cast<Eigen::Index>(i) * (degree + 1), degree + 1) = accepted[i];
+    for (std::size_t i = 0; i < accepted.size(); ++i)
+        f.pieces.control.middleRows(static_cast<Eigen::Index>(i) * (degree + 1), degree + 1) = accepted[i];
     return f;
 }
 
@@ -95,7 +104,9 @@ double sampled_diagonal(const Curve& c) {
 
 BezierPieces exact_bezier_pieces(const Curve& c) {
     const int p = c.polynomial_degree();
-    if (p < 0) fail_input("cagd::exports::exact_bezier_pieces", "the curve is not polynomial (polynomial_degree() = " + std::to_string(p) + ")");
+    if (p < 0)
+        fail_input("cagd::exports::exact_bezier_pieces",
+                   "the curve is not polynomial (polynomial_degree() = " + std::to_string(p) + ")");
     BezierPieces out;
     out.degree = p;
     out.breaks = c.breakpoints();
@@ -104,13 +115,16 @@ BezierPieces exact_bezier_pieces(const Curve& c) {
     const int start_order = p / 2, end_order = std::max(0, p - p / 2 - 1);
     for (int i = 0; i < K; ++i) {
         const double a = out.breaks[static_cast<std::size_t>(i)], b = out.breaks[static_cast<std::size_t>(i) + 1];
-        out.control.middleRows(static_cast<Eigen::Index>(i) * (p + 1), p + 1) = bezier_from_end_jets(p, b - a, c.jet(a, start_order), c.jet_from_left(b, end_order));
+        out.control.middleRows(static_cast<Eigen::Index>(i) * (p + 1), p + 1) =
+            bezier_from_end_jets(p, b - a, c.jet(a, start_order), c.jet_from_left(b, end_order));
     }
     return out;
 }
 
 BezierPieces elevate_degree(const BezierPieces& in, int degree) {
-    if (degree < in.degree) fail_input("cagd::exports::elevate_degree", "cannot lower degree " + std::to_string(in.degree) + " to " + std::to_string(degree));
+    if (degree < in.degree)
+        fail_input("cagd::exports::elevate_degree",
+                   "cannot lower degree " + std::to_string(in.degree) + " to " + std::to_string(degree));
     BezierPieces out = in;
     for (int p = in.degree; p < degree; ++p) {
         const int K = out.pieces();
@@ -132,8 +146,11 @@ BezierPieces elevate_degree(const BezierPieces& in, int degree) {
 }
 
 BezierCurve piece_curve(const BezierPieces& pieces, int i) {
-    if (i < 0 || i >= pieces.pieces()) fail_input("cagd::exports::piece_curve", "piece " + std::to_string(i) + " outside 0.." + std::to_string(pieces.pieces() - 1));
-    return BezierCurve(pieces.piece(i), pieces.breaks[static_cast<std::size_t>(i)], pieces.breaks[static_cast<std::size_t>(i) + 1]);
+    if (i < 0 || i >= pieces.pieces())
+        fail_input("cagd::exports::piece_curve",
+                   "piece " + std::to_string(i) + " outside 0.." + std::to_string(pieces.pieces() - 1));
+    return BezierCurve(pieces.piece(i), pieces.breaks[static_cast<std::size_t>(i)],
+                       pieces.breaks[static_cast<std::size_t>(i) + 1]);
 }
 
 BezierForm to_bezier(const Curve& c, const ApproximationOptions& o) {
@@ -166,7 +183,9 @@ BezierForm to_bezier_of_degree(const Curve& c, int degree, const ApproximationOp
 BezierPieces bezier_pieces_from_power(const PowerPieces& power) {
     const char* who = "cagd::exports::bezier_pieces_from_power";
     const std::size_t K = power.coefficients.size();
-    if (K == 0 || power.breaks.size() != K + 1) fail_input(who, "needs one more break than pieces, has " + std::to_string(power.breaks.size()) + " breaks and " + std::to_string(K) + " pieces");
+    if (K == 0 || power.breaks.size() != K + 1)
+        fail_input(who, "needs one more break than pieces, has " + std::to_string(power.breaks.size()) +
+                            " breaks and " + std::to_string(K) + " pieces");
     if (power.degree < 0) fail_input(who, "degree " + std::to_string(power.degree) + " < 0");
     const Eigen::Index dim = power.coefficients.front().cols();
     BezierPieces b;
@@ -175,14 +194,17 @@ BezierPieces bezier_pieces_from_power(const PowerPieces& power) {
     b.control.resize(static_cast<Eigen::Index>(K) * (power.degree + 1), dim);
     for (std::size_t i = 0; i < K; ++i) {
         const double x0 = power.breaks[i], x1 = power.breaks[i + 1];
-        if (!std::isfinite(x0) || !std::isfinite(x1) || !(x0 < x1)) fail_input(who, "breaks must be finite and increase (break " + std::to_string(i + 1) + ")");
+        if (!std::isfinite(x0) || !std::isfinite(x1) || !(x0 < x1))
+            fail_input(who, "breaks must be finite and increase (break " + std::to_string(i + 1) + ")");
         const Eigen::MatrixXd& c = power.coefficients[i];
         if (c.rows() != power.degree + 1 || c.cols() != dim || !c.allFinite())
-            fail_input(who, "piece " + std::to_string(i) + " must have degree + 1 rows of " + std::to_string(dim) + " finite coefficients");
+            fail_input(who, "piece " + std::to_string(i) + " must have degree + 1 rows of " + std::to_string(dim) +
+                                " finite coefficients");
         Eigen::MatrixXd monomial(power.degree + 1, dim);  // row j: coefficient of s^j, s = (t − x0)/h
         double hj = 1.0;
         for (int j = 0; j <= power.degree; ++j, hj *= x1 - x0) monomial.row(j) = c.row(power.degree - j) * hj;
-        b.control.middleRows(static_cast<Eigen::Index>(i) * (power.degree + 1), power.degree + 1) = bernstein_from_monomial(monomial);
+        b.control.middleRows(static_cast<Eigen::Index>(i) * (power.degree + 1), power.degree + 1) =
+            bernstein_from_monomial(monomial);
     }
     return b;
 }

@@ -44,7 +44,9 @@ struct BezierPieces {
     /// 2 or 3.
     int dimension() const { return static_cast<int>(control.cols()); }
     /// Piece i's p + 1 control points.
-    Eigen::MatrixXd piece(int i) const { return control.middleRows(static_cast<Eigen::Index>(i) * (degree + 1), degree + 1); }
+    Eigen::MatrixXd piece(int i) const {
+        return control.middleRows(static_cast<Eigen::Index>(i) * (degree + 1), degree + 1);
+    }
 };
 
 /// What to_bezier gives: the pieces, and how far they may be from the curve.
@@ -82,8 +84,8 @@ BezierCurve piece_curve(const BezierPieces& pieces, int i);
 /// Piecewise polynomials in the local power basis, as scipy.interpolate.PPoly holds them: piece i
 /// on [x_i, x_{i+1}] is Σ_k coefficients[i](k, ·) (t − x_i)^(p − k), highest power first.
 struct PowerPieces {
-    int degree = 0;                            ///< p
-    std::vector<double> breaks;                ///< x_0 < … < x_K
+    int degree = 0;                             ///< p
+    std::vector<double> breaks;                 ///< x_0 < … < x_K
     std::vector<Eigen::MatrixXd> coefficients;  ///< K matrices of p + 1 rows (highest power first) × dimension
 };
 /// The same pieces in Bézier form (exact conversion: with h = x_{i+1} − x_i, the monomial

@@ -14,15 +14,19 @@ namespace {
 constexpr double kBlossomTolerance = 1e-13;
 
 void check_pieces(const BezierPieces& b, const char* who) {
-    if (b.pieces() < 1 || b.degree < 0 || b.control.rows() != static_cast<Eigen::Index>(b.pieces()) * (b.degree + 1) || b.dimension() < 1)
+    if (b.pieces() < 1 || b.degree < 0 || b.control.rows() != static_cast<Eigen::Index>(b.pieces()) * (b.degree + 1) ||
+        b.dimension() < 1)
         fail_input(who, "needs at least one piece of degree >= 0 and (degree + 1) control points per piece");
     for (std::size_t i = 0; i + 1 < b.breaks.size(); ++i)
         if (!(b.breaks[i] < b.breaks[i + 1]))
-            fail_input(who, "breaks must increase, got " + full_precision(b.breaks[i]) + " then " + full_precision(b.breaks[i + 1]));
+            fail_input(who, "breaks must increase, got " + full_precision(b.breaks[i]) + " then " +
+                                full_precision(b.breaks[i + 1]));
     if (!b.control.allFinite()) fail_input(who, "control points must be finite");
 }
 
-double control_diagonal(const BezierPieces& b) { return (b.control.colwise().maxCoeff() - b.control.colwise().minCoeff()).norm(); }
+double control_diagonal(const BezierPieces& b) {
+    return (b.control.colwise().maxCoeff() - b.control.colwise().minCoeff()).norm();
+}
 
 // The continuity order c at the join of piece L (left) and R (right), as the header defines it:
 // −1 when even the positions differ by more than the tolerance.
@@ -35,7 +39,8 @@ int join_continuity(const BezierPieces& b, int L, int R, double tol) {
     for (int j = 0; j <= p; ++j) {
         Eigen::RowVectorXd back = Eigen::RowVectorXd::Zero(b.dimension()), forward = back;
         for (int m = 0; m <= j; ++m) {
-            const double w = boost::math::binomial_coefficient<double>(static_cast<unsigned>(j), static_cast<unsigned>(m));
+            const double w =
+                boost::math::binomial_coefficient<double>(static_cast<unsigned>(j), static_cast<unsigned>(m));
             back += ((m % 2) ? -w : w) * bl.row(p - m);
             forward += (((j - m) % 2) ? -w : w) * br.row(m);
         }
@@ -75,7 +80,8 @@ Eigen::RowVectorXd blossom(const BezierPieces& b, int i, const double* u, double
 
 // Control points d_0 … d_{count−1} on the knots of `plan` (each the blossom of its first
 // non-empty span; spread[j] = the largest distance of the other spans' blossoms from it).
-Eigen::MatrixXd blossom_control_points(const BezierPieces& b, const KnotPlan& plan, int count, std::vector<double>& spread) {
+Eigen::MatrixXd blossom_control_points(const BezierPieces& b, const KnotPlan& plan, int count,
+                                       std::vector<double>& spread) {
     const int p = b.degree;
     Eigen::MatrixXd d(count, b.dimension());
     spread.assign(static_cast<std::size_t>(count), 0.0);
@@ -89,10 +95,13 @@ Eigen::MatrixXd blossom_control_points(const BezierPieces& b, const KnotPlan& pl
                 d.row(j) = v;
                 first = false;
             } else {
-                spread[static_cast<std::size_t>(j)] = std::max(spread[static_cast<std::size_t>(j)], (v - d.row(j)).norm());
+                spread[static_cast<std::size_t>(j)] =
+                    std::max(spread[static_cast<std::size_t>(j)], (v - d.row(j)).norm());
             }
         }
-        if (first) fail_input("cagd::exports::to_bspline", "control point " + std::to_string(j) + " touches no span (internal)");
+        if (first)
+            fail_input("cagd::exports::to_bspline",
+                       "control point " + std::to_string(j) + " touches no span (internal)");
     }
     return d;
 }
@@ -101,7 +110,8 @@ KnotPlan clamped_plan(const BezierPieces& b, const std::vector<int>& mu) {
     KnotPlan plan;
     const int K = b.pieces(), p = b.degree;
     plan.add(b.breaks.front(), 0, 0.0, p + 1);
-    for (int i = 1; i < K; ++i) plan.add(b.breaks[static_cast<std::size_t>(i)], i, 0.0, mu[static_cast<std::size_t>(i)]);
+    for (int i = 1; i < K; ++i)
+        plan.add(b.breaks[static_cast<std::size_t>(i)], i, 0.0, mu[static_cast<std::size_t>(i)]);
     plan.add(b.breaks.back(), -1, 0.0, p + 1);
     return plan;
 }
@@ -109,7 +119,8 @@ KnotPlan clamped_plan(const BezierPieces& b, const std::vector<int>& mu) {
 // Raises to p the multiplicity of every break i (index into mu, 0 = the closing point of a periodic
 // curve) among the knots t_{j+1} … t_{j+p} of a control point whose blossoms spread beyond tol.
 // False when nothing could be raised.
-bool raise_multiplicities(const KnotPlan& plan, const std::vector<double>& spread, double tol, int p, int K, std::vector<int>& mu) {
+bool raise_multiplicities(const KnotPlan& plan, const std::vector<double>& spread, double tol, int p, int K,
+                          std::vector<int>& mu) {
     bool raised = false;
     for (std::size_t j = 0; j < spread.size(); ++j) {
         if (spread[j] <= tol) continue;
@@ -145,14 +156,17 @@ BSplineForm to_bspline(const BezierPieces& b_in) {
     const int K = b.pieces(), p = b.degree;
     const double tol = kBlossomTolerance * control_diagonal(b);
     std::vector<int> mu(static_cast<std::size_t>(K), p);  // mu[0] unused (clamped start)
-    for (int i = 1; i < K; ++i) mu[static_cast<std::size_t>(i)] = std::clamp(p - join_continuity(b, i - 1, i, tol), 1, p);
+    for (int i = 1; i < K; ++i)
+        mu[static_cast<std::size_t>(i)] = std::clamp(p - join_continuity(b, i - 1, i, tol), 1, p);
     for (;;) {
         const KnotPlan plan = clamped_plan(b, mu);
         const int count = static_cast<int>(plan.value.size()) - p - 1;
         std::vector<double> spread;
         Eigen::MatrixXd d = blossom_control_points(b, plan, count, spread);
-        if (*std::max_element(spread.begin(), spread.end()) > tol && raise_multiplicities(plan, spread, tol, p, K, mu)) continue;
-        return BSplineForm{BSplineCurve(p, plan.value, std::move(d)), std::vector<int>(mu.begin() + 1, mu.end()), *std::max_element(spread.begin(), spread.end())};
+        if (*std::max_element(spread.begin(), spread.end()) > tol && raise_multiplicities(plan, spread, tol, p, K, mu))
+            continue;
+        return BSplineForm{BSplineCurve(p, plan.value, std::move(d)), std::vector<int>(mu.begin() + 1, mu.end()),
+                           *std::max_element(spread.begin(), spread.end())};
     }
 }
 
@@ -163,25 +177,31 @@ PeriodicBSpline periodic_bspline(const BezierPieces& b_in) {
     const double tol = kBlossomTolerance * control_diagonal(b);
     const double T = b.breaks.back() - b.breaks.front();
     std::vector<int> mu(static_cast<std::size_t>(K));
-    for (int i = 0; i < K; ++i) mu[static_cast<std::size_t>(i)] = std::clamp(p - join_continuity(b, (i + K - 1) % K, i, tol), 1, p);
+    for (int i = 0; i < K; ++i)
+        mu[static_cast<std::size_t>(i)] = std::clamp(p - join_continuity(b, (i + K - 1) % K, i, tol), 1, p);
     if (join_continuity(b, K - 1, 0, tol) < 0) return {};  // not closed
     for (;;) {
         // One period of knots (break i repeated mu_i times), extended by whole periods on both sides.
         KnotPlan period;
-        for (int i = 0; i < K; ++i) period.add(b.breaks[static_cast<std::size_t>(i)], i, 0.0, mu[static_cast<std::size_t>(i)]);
+        for (int i = 0; i < K; ++i)
+            period.add(b.breaks[static_cast<std::size_t>(i)], i, 0.0, mu[static_cast<std::size_t>(i)]);
         const int n = static_cast<int>(period.value.size());
         KnotPlan plan;
         for (int k = 0; k <= n + 2 * p; ++k) {
             const int m = k - p;
             const int q = (m % n + n) % n;
             const double shift = T * static_cast<double>((m - q) / n);
-            plan.add(period.value[static_cast<std::size_t>(q)] + shift, period.piece[static_cast<std::size_t>(q)], shift, 1);
+            plan.add(period.value[static_cast<std::size_t>(q)] + shift, period.piece[static_cast<std::size_t>(q)],
+                     shift, 1);
         }
         std::vector<double> spread;
         Eigen::MatrixXd d = blossom_control_points(b, plan, n + p, spread);
         // The wrapped control points must repeat the first ones.
-        for (int j = 0; j < p; ++j) spread[static_cast<std::size_t>(j)] = std::max(spread[static_cast<std::size_t>(j)], (d.row(n + j) - d.row(j)).norm());
-        if (*std::max_element(spread.begin(), spread.end()) > tol && raise_multiplicities(plan, spread, tol, p, K, mu)) continue;
+        for (int j = 0; j < p; ++j)
+            spread[static_cast<std::size_t>(j)] =
+                std::max(spread[static_cast<std::size_t>(j)], (d.row(n + j) - d.row(j)).norm());
+        if (*std::max_element(spread.begin(), spread.end()) > tol && raise_multiplicities(plan, spread, tol, p, K, mu))
+            continue;
         if (*std::max_element(spread.begin(), spread.end()) > tol) return {};
         return PeriodicBSpline{p, plan.value, d.topRows(n)};
     }

@@ -31,9 +31,9 @@ namespace cagd::exports {
 
 /// A curve as one B-spline (see above).
 struct BSplineForm {
-    BSplineCurve curve;                   ///< clamped, on the pieces' parameter interval
+    BSplineCurve curve;                        ///< clamped, on the pieces' parameter interval
     std::vector<int> interior_multiplicities;  ///< μ_1 … μ_{K−1}
-    double conversion_error = 0.0;        ///< largest spread of a control point's blossoms
+    double conversion_error = 0.0;             ///< largest spread of a control point's blossoms
 };
 
 /// The B-spline of the pieces (see above); InvalidInput for pieces without a piece or with

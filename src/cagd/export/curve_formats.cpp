@@ -15,10 +15,25 @@ namespace cagd::exports {
 const std::vector<CurveFormatInfo>& curve_formats() {
     static const std::vector<CurveFormatInfo> formats{
         {CurveFormat::csv, "csv", {".csv"}, "samples: parameter, position, 1st and 2nd derivative", true, true},
-        {CurveFormat::json, "json", {".json"}, "the Bezier pieces with method, parameters and points (cagd analyze --in reads it)", true, true},
-        {CurveFormat::svg, "svg", {".svg"}, "a path of cubic Beziers (planar), optional points and curvature comb", false, false},
+        {CurveFormat::json,
+         "json",
+         {".json"},
+         "the Bezier pieces with method, parameters and points (cagd analyze --in reads it)",
+         true,
+         true},
+        {CurveFormat::svg,
+         "svg",
+         {".svg"},
+         "a path of cubic Beziers (planar), optional points and curvature comb",
+         false,
+         false},
         {CurveFormat::dxf, "dxf", {".dxf"}, "one SPLINE entity (AutoCAD 2000 DXF), the exact B-spline", true, false},
-        {CurveFormat::step, "step", {".step", ".stp"}, "a B_SPLINE_CURVE_WITH_KNOTS (AP214, through OpenCASCADE)", true, true},
+        {CurveFormat::step,
+         "step",
+         {".step", ".stp"},
+         "a B_SPLINE_CURVE_WITH_KNOTS (AP214, through OpenCASCADE)",
+         true,
+         true},
     };
     return formats;
 }
@@ -33,7 +48,8 @@ namespace {
 std::string known_formats(bool extensions) {
     std::string s;
     for (const CurveFormatInfo& i : curve_formats())
-        for (const std::string& e : extensions ? i.extensions : std::vector<std::string>{i.name}) s += (s.empty() ? "" : ", ") + e;
+        for (const std::string& e : extensions ? i.extensions : std::vector<std::string>{i.name})
+            s += (s.empty() ? "" : ", ") + e;
     return s;
 }
 }  // namespace
@@ -47,15 +63,19 @@ CurveFormat curve_format_named(const std::string& name) {
 CurveFormat curve_format_of_path(const std::string& path) {
     std::string ext = std::filesystem::path(path).extension().string();
     if (ext.empty()) return CurveFormat::csv;
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
     for (const CurveFormatInfo& i : curve_formats())
         if (std::find(i.extensions.begin(), i.extensions.end(), ext) != i.extensions.end()) return i.format;
-    fail_input("cagd::exports::curve_format_of_path", path + ": unknown extension '" + ext + "'; known: " + known_formats(true) + " (or give --format)");
+    fail_input("cagd::exports::curve_format_of_path",
+               path + ": unknown extension '" + ext + "'; known: " + known_formats(true) + " (or give --format)");
 }
 
-Outcome write_curve(std::ostream& out, CurveFormat format, const Curve& curve, const CurveProvenance& provenance, const ExportOptions& o) {
+Outcome write_curve(std::ostream& out, CurveFormat format, const Curve& curve, const CurveProvenance& provenance,
+                    const ExportOptions& o) {
     const CurveFormatInfo& info = curve_format_info(format);
-    if (curve.dimension() == 3 && !info.space_curves) fail_input("cagd::exports::write_curve", std::string(info.name) + " is planar; the curve has 3 coordinates");
+    if (curve.dimension() == 3 && !info.space_curves)
+        fail_input("cagd::exports::write_curve", std::string(info.name) + " is planar; the curve has 3 coordinates");
     const PointList no_points;
     switch (format) {
         case CurveFormat::csv: return write_curve_samples(out, curve, o.samples);
@@ -73,10 +93,13 @@ Outcome write_curve(std::ostream& out, CurveFormat format, const Curve& curve, c
         case CurveFormat::dxf:
         case CurveFormat::step: {
             if (format == CurveFormat::step && !step_available())
-                fail_input("cagd::exports::write_curve", "STEP needs a cagd library built with OpenCASCADE (Debian libocct-data-exchange-dev); this one was built without it");
+                fail_input("cagd::exports::write_curve",
+                           "STEP needs a cagd library built with OpenCASCADE (Debian libocct-data-exchange-dev); this "
+                           "one was built without it");
             const BezierForm form = to_bezier(curve, o.approximation);
             if (!form.outcome.ok()) return form.outcome;
-            if (!form.pieces.control.allFinite()) return {Status::not_representable, "a control point of the curve is not finite"};
+            if (!form.pieces.control.allFinite())
+                return {Status::not_representable, "a control point of the curve is not finite"};
             if (format == CurveFormat::json) {
                 write_curve_json(out, form, provenance);
                 return {};
@@ -101,13 +124,17 @@ Outcome write_curve(std::ostream& out, CurveFormat format, const Curve& curve, c
     return {};
 }
 
-Outcome write_surface(std::ostream& out, CurveFormat format, const SurfaceForm& form, const SurfaceProvenance& provenance) {
+Outcome write_surface(std::ostream& out, CurveFormat format, const SurfaceForm& form,
+                      const SurfaceProvenance& provenance) {
     const char* who = "cagd::exports::write_surface";
     const CurveFormatInfo& info = curve_format_info(format);
     if (!info.surfaces || format == CurveFormat::csv)
-        fail_input(who, std::string(info.name) + " does not take surfaces; they leave in json or step (and as csv grids from the command)");
+        fail_input(who, std::string(info.name) +
+                            " does not take surfaces; they leave in json or step (and as csv grids from the command)");
     // A conversion that is not exact to rounding is a numerical outcome, never written.
-    if (!form.exact) return {Status::not_representable, "the Bézier patches differ from the surface by " + full_precision(form.conversion_error) + ": no exact form to write"};
+    if (!form.exact)
+        return {Status::not_representable, "the Bézier patches differ from the surface by " +
+                                               full_precision(form.conversion_error) + ": no exact form to write"};
     for (const surface::ControlNet& net : form.pieces.nets)
         for (const Eigen::MatrixXd& c : net)
             if (!c.allFinite()) return {Status::not_representable, "a control point of the surface is not finite"};
@@ -115,7 +142,10 @@ Outcome write_surface(std::ostream& out, CurveFormat format, const SurfaceForm& 
         write_surface_json(out, form, provenance);
         return {};
     }
-    if (!step_available()) fail_input(who, "STEP needs a cagd library built with OpenCASCADE (Debian libocct-data-exchange-dev); this one was built without it");
+    if (!step_available())
+        fail_input(who,
+                   "STEP needs a cagd library built with OpenCASCADE (Debian libocct-data-exchange-dev); this one was "
+                   "built without it");
     return write_step(out, bspline_surface(form.pieces));
 }
 

@@ -43,12 +43,12 @@ enum class CurveFormat {
 
 /// One format's name, extensions and reach.
 struct CurveFormatInfo {
-    CurveFormat format;                    ///< the format
-    const char* name;                      ///< as --format takes it
-    std::vector<std::string> extensions;   ///< with the dot, lower case
-    const char* summary;                   ///< one line for help texts
-    bool space_curves;                     ///< takes 3-D curves
-    bool surfaces;                         ///< takes surfaces (csv: the command's grids)
+    CurveFormat format;                   ///< the format
+    const char* name;                     ///< as --format takes it
+    std::vector<std::string> extensions;  ///< with the dot, lower case
+    const char* summary;                  ///< one line for help texts
+    bool space_curves;                    ///< takes 3-D curves
+    bool surfaces;                        ///< takes surfaces (csv: the command's grids)
 };
 /// Every format, in the order above.
 const std::vector<CurveFormatInfo>& curve_formats();
@@ -73,12 +73,14 @@ struct ExportOptions {
 /// not publish) when an approximation does not reach its tolerance or a value is not finite;
 /// InvalidInput for a format that does not take the curve (svg of a 3-D curve, step without
 /// OpenCASCADE) or invalid options.
-Outcome write_curve(std::ostream& out, CurveFormat format, const Curve& curve, const CurveProvenance& provenance, const ExportOptions& options);
+Outcome write_curve(std::ostream& out, CurveFormat format, const Curve& curve, const CurveProvenance& provenance,
+                    const ExportOptions& options);
 
 /// Writes the patches of a surface in json or step. InvalidInput for another format, or step
 /// without OpenCASCADE or above its degree limit; Outcome not_representable (nothing written) for a
 /// form that is not exact (SurfaceForm::exact false) or a control point that is not finite, not ok
 /// for a surface OpenCASCADE rejects.
-Outcome write_surface(std::ostream& out, CurveFormat format, const SurfaceForm& form, const SurfaceProvenance& provenance);
+Outcome write_surface(std::ostream& out, CurveFormat format, const SurfaceForm& form,
+                      const SurfaceProvenance& provenance);
 
 }  // namespace cagd::exports

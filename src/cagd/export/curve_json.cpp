@@ -46,7 +46,9 @@ struct DocumentReader {
     int integer(const json& j, const std::string& what, int lo, int hi) const {
         if (!j.is_number_integer()) fail(what + " must be a whole number");
         const long long v = j.get<long long>();
-        if (v < lo || v > hi) fail(what + " = " + std::to_string(v) + " outside [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+        if (v < lo || v > hi)
+            fail(what + " = " + std::to_string(v) + " outside [" + std::to_string(lo) + ", " + std::to_string(hi) +
+                 "]");
         return static_cast<int>(v);
     }
     std::string text(const json& j, const std::string& what) const {
@@ -56,12 +58,16 @@ struct DocumentReader {
     // rows × dim coordinates; `rows` < 0: any count.
     Eigen::MatrixXd matrix(const json& j, const std::string& what, long rows, int dim) const {
         if (!j.is_array()) fail(what + " must be an array of points");
-        if (rows >= 0 && static_cast<long>(j.size()) != rows) fail(what + " must have " + std::to_string(rows) + " points, has " + std::to_string(j.size()));
+        if (rows >= 0 && static_cast<long>(j.size()) != rows)
+            fail(what + " must have " + std::to_string(rows) + " points, has " + std::to_string(j.size()));
         Eigen::MatrixXd m(static_cast<Eigen::Index>(j.size()), dim);
         for (std::size_t i = 0; i < j.size(); ++i) {
             const json& r = j[i];
-            if (!r.is_array() || static_cast<int>(r.size()) != dim) fail(what + "[" + std::to_string(i) + "] must have " + std::to_string(dim) + " coordinates");
-            for (int k = 0; k < dim; ++k) m(static_cast<Eigen::Index>(i), k) = number(r[static_cast<std::size_t>(k)], what + "[" + std::to_string(i) + "]");
+            if (!r.is_array() || static_cast<int>(r.size()) != dim)
+                fail(what + "[" + std::to_string(i) + "] must have " + std::to_string(dim) + " coordinates");
+            for (int k = 0; k < dim; ++k)
+                m(static_cast<Eigen::Index>(i), k) =
+                    number(r[static_cast<std::size_t>(k)], what + "[" + std::to_string(i) + "]");
         }
         return m;
     }
@@ -135,7 +141,8 @@ CurveDocument read_curve_json(std::istream& in, const std::string& source) {
     d.provenance.closed = closed.get<bool>();
     const json& params = r.member(m, "parameters");
     if (!params.is_object()) r.fail("method.parameters must be an object");
-    for (const auto& [name, value] : params.items()) d.provenance.parameters[name] = r.text(value, "method.parameters." + name);
+    for (const auto& [name, value] : params.items())
+        d.provenance.parameters[name] = r.text(value, "method.parameters." + name);
     const int dim = r.integer(r.member(j, "dimension"), "dimension", 2, 3);
     const int degree = r.integer(r.member(j, "degree"), "degree", 0, kMaxDocumentDegree);
     d.provenance.points = r.matrix(r.member(j, "points"), "points", -1, dim);
@@ -149,15 +156,19 @@ CurveDocument read_curve_json(std::istream& in, const std::string& source) {
     if (!breaks.is_array() || !pieces.is_array()) r.fail("breaks and pieces must be arrays");
     if (pieces.empty() || static_cast<long>(pieces.size()) > kMaxDocumentPieces)
         r.fail("needs 1 to " + std::to_string(kMaxDocumentPieces) + " pieces, has " + std::to_string(pieces.size()));
-    if (breaks.size() != pieces.size() + 1) r.fail("needs one more break than pieces, has " + std::to_string(breaks.size()) + " breaks and " + std::to_string(pieces.size()) + " pieces");
+    if (breaks.size() != pieces.size() + 1)
+        r.fail("needs one more break than pieces, has " + std::to_string(breaks.size()) + " breaks and " +
+               std::to_string(pieces.size()) + " pieces");
     d.form.pieces.degree = degree;
     for (std::size_t i = 0; i < breaks.size(); ++i) {
         d.form.pieces.breaks.push_back(r.number(breaks[i], "breaks[" + std::to_string(i) + "]"));
-        if (i > 0 && !(d.form.pieces.breaks[i - 1] < d.form.pieces.breaks[i])) r.fail("breaks must increase (breaks[" + std::to_string(i) + "])");
+        if (i > 0 && !(d.form.pieces.breaks[i - 1] < d.form.pieces.breaks[i]))
+            r.fail("breaks must increase (breaks[" + std::to_string(i) + "])");
     }
     d.form.pieces.control.resize(static_cast<Eigen::Index>(pieces.size()) * (degree + 1), dim);
     for (std::size_t i = 0; i < pieces.size(); ++i)
-        d.form.pieces.control.middleRows(static_cast<Eigen::Index>(i) * (degree + 1), degree + 1) = r.matrix(pieces[i], "pieces[" + std::to_string(i) + "]", degree + 1, dim);
+        d.form.pieces.control.middleRows(static_cast<Eigen::Index>(i) * (degree + 1), degree + 1) =
+            r.matrix(pieces[i], "pieces[" + std::to_string(i) + "]", degree + 1, dim);
     return d;
 }
 
@@ -206,7 +217,8 @@ SurfaceDocument read_surface_json(std::istream& in, const std::string& source) {
     d.provenance.kind = r.text(r.member(src, "kind"), "source.kind");
     const json& params = r.member(src, "parameters");
     if (!params.is_object()) r.fail("source.parameters must be an object");
-    for (const auto& [name, value] : params.items()) d.provenance.parameters[name] = r.text(value, "source.parameters." + name);
+    for (const auto& [name, value] : params.items())
+        d.provenance.parameters[name] = r.text(value, "source.parameters." + name);
     const json& exact = r.member(j, "exact");
     if (!exact.is_boolean()) r.fail("exact must be true or false");
     d.form.exact = exact.get<bool>();
@@ -225,12 +237,14 @@ SurfaceDocument read_surface_json(std::istream& in, const std::string& source) {
     for (std::size_t n = 0; n < patches.size(); ++n) {
         const std::string what = "patches[" + std::to_string(n) + "]";
         const json& rows = patches[n];
-        if (!rows.is_array() || static_cast<int>(rows.size()) != p.degree_u + 1) r.fail(what + " must have degree_u + 1 rows");
+        if (!rows.is_array() || static_cast<int>(rows.size()) != p.degree_u + 1)
+            r.fail(what + " must have degree_u + 1 rows");
         surface::ControlNet net;
         for (auto& c : net) c.resize(p.degree_u + 1, p.degree_v + 1);
         for (std::size_t i = 0; i < rows.size(); ++i) {
             const Eigen::MatrixXd row = r.matrix(rows[i], what + "[" + std::to_string(i) + "]", p.degree_v + 1, 3);
-            for (int c = 0; c < 3; ++c) net[static_cast<std::size_t>(c)].row(static_cast<Eigen::Index>(i)) = row.col(c).transpose();
+            for (int c = 0; c < 3; ++c)
+                net[static_cast<std::size_t>(c)].row(static_cast<Eigen::Index>(i)) = row.col(c).transpose();
         }
         p.nets.push_back(std::move(net));
     }

@@ -54,19 +54,19 @@ using ParameterText = std::map<std::string, std::string>;
 /// What made a curve, as plain data (all optional: a curve from elsewhere has an empty method
 /// name). methods::method_provenance fills it for a method of the registry.
 struct CurveProvenance {
-    std::string method{};       ///< registry name
-    ParameterText parameters{}; ///< its parameter values as text
-    std::string parameter{};    ///< what the curve's parameter t is (MethodClaims::parameter)
-    bool closed = false;        ///< a closed curve
-    PointList points{};         ///< the input points (0 rows when unknown)
-    std::string registry{};     ///< the fingerprint of the registry that built it ("" when unknown)
+    std::string method{};        ///< registry name
+    ParameterText parameters{};  ///< its parameter values as text
+    std::string parameter{};     ///< what the curve's parameter t is (MethodClaims::parameter)
+    bool closed = false;         ///< a closed curve
+    PointList points{};          ///< the input points (0 rows when unknown)
+    std::string registry{};      ///< the fingerprint of the registry that built it ("" when unknown)
 };
 
 /// A curve document read back.
 struct CurveDocument {
-    CurveProvenance provenance;  ///< what made it
-    BezierForm form;             ///< its pieces, exactness and error bound
-    std::string library_version; ///< as written
+    CurveProvenance provenance;   ///< what made it
+    BezierForm form;              ///< its pieces, exactness and error bound
+    std::string library_version;  ///< as written
 };
 
 /// Writes the document of `form` and `provenance` (see above) to `out`.
@@ -78,8 +78,8 @@ CurveDocument read_curve_json_file(const std::string& path);
 
 /// What made a surface.
 struct SurfaceProvenance {
-    std::string kind{};         ///< e.g. hosaka-tensor, hosaka-cartesian, hosaka-coons, typical-surface
-    ParameterText parameters{}; ///< its inputs as text
+    std::string kind{};          ///< e.g. hosaka-tensor, hosaka-cartesian, hosaka-coons, typical-surface
+    ParameterText parameters{};  ///< its inputs as text
 };
 
 /// A surface document read back.

@@ -37,19 +37,27 @@ Outcome write_curve_samples(std::ostream& out, const Curve& c, const SampleOptio
     const char* who = "cagd::exports::write_curve_samples";
     const std::vector<double> br = c.breakpoints();
     const bool by_length = o.arc_length_samples != 0;
-    if (by_length && o.arc_length_samples < 2) fail_input(who, "arc-length samples must be at least 2, got " + std::to_string(o.arc_length_samples));
-    if (!by_length && o.per_piece < 1) fail_input(who, "samples per piece must be at least 1, got " + std::to_string(o.per_piece));
-    const double rows = by_length ? o.arc_length_samples : static_cast<double>(o.per_piece) * static_cast<double>(br.size() - 1) + 1;
+    if (by_length && o.arc_length_samples < 2)
+        fail_input(who, "arc-length samples must be at least 2, got " + std::to_string(o.arc_length_samples));
+    if (!by_length && o.per_piece < 1)
+        fail_input(who, "samples per piece must be at least 1, got " + std::to_string(o.per_piece));
+    const double rows =
+        by_length ? o.arc_length_samples : static_cast<double>(o.per_piece) * static_cast<double>(br.size() - 1) + 1;
     if (rows > static_cast<double>(o.max_rows))
-        fail_input(who, "the samples would make " + full_precision(rows) + " rows, more than the limit of " + std::to_string(o.max_rows));
+        fail_input(who, "the samples would make " + full_precision(rows) + " rows, more than the limit of " +
+                            std::to_string(o.max_rows));
     std::vector<double> ts;
     ts.reserve(static_cast<std::size_t>(rows));
     if (by_length) {
-        const analysis::ArcLengthParameter s(std::shared_ptr<const Curve>(std::shared_ptr<const Curve>{}, &c));  // non-owning
-        for (int j = 0; j < o.arc_length_samples; ++j) ts.push_back(j + 1 == o.arc_length_samples ? c.t_max() : s.parameter_at(s.length() * j / (o.arc_length_samples - 1)));
+        const analysis::ArcLengthParameter s(
+            std::shared_ptr<const Curve>(std::shared_ptr<const Curve>{}, &c));  // non-owning
+        for (int j = 0; j < o.arc_length_samples; ++j)
+            ts.push_back(j + 1 == o.arc_length_samples ? c.t_max()
+                                                       : s.parameter_at(s.length() * j / (o.arc_length_samples - 1)));
     } else {
         for (std::size_t k = 0; k + 1 < br.size(); ++k)
-            for (int j = 0; j < o.per_piece + (k + 2 == br.size() ? 1 : 0); ++j) ts.push_back(br[k] + (br[k + 1] - br[k]) * j / o.per_piece);
+            for (int j = 0; j < o.per_piece + (k + 2 == br.size() ? 1 : 0); ++j)
+                ts.push_back(br[k] + (br[k + 1] - br[k]) * j / o.per_piece);
     }
     const int d = c.dimension();
     const char* names = "xyz";
@@ -63,7 +71,9 @@ Outcome write_curve_samples(std::ostream& out, const Curve& c, const SampleOptio
         for (int k = 0; k < 3; ++k)
             for (int i = 0; i < d; ++i)
                 if (!std::isfinite(J(k, i)))
-                    return {Status::not_representable, "column " + header[static_cast<std::size_t>(1 + k * d + i)] + " of row " + std::to_string(row + 1) + " is " + full_precision(J(k, i))};
+                    return {Status::not_representable, "column " + header[static_cast<std::size_t>(1 + k * d + i)] +
+                                                           " of row " + std::to_string(row + 1) + " is " +
+                                                           full_precision(J(k, i))};
         put_sample_number(out, ts[row]);
         for (int k = 0; k < 3; ++k)
             for (int i = 0; i < d; ++i) {

@@ -20,10 +20,10 @@ namespace cagd::exports {
 
 /// How a curve is sampled into CSV (see above).
 struct SampleOptions {
-    int per_piece = 16;              ///< samples per piece, ≥ 1 (equal parameter steps)
-    int arc_length_samples = 0;      ///< N ≥ 2: N samples at equal arc length instead; 0: off
+    int per_piece = 16;                  ///< samples per piece, ≥ 1 (equal parameter steps)
+    int arc_length_samples = 0;          ///< N ≥ 2: N samples at equal arc length instead; 0: off
     std::string parameter_column = "t";  ///< the name of the parameter column
-    long max_rows = 10'000'000;      ///< the most rows written
+    long max_rows = 10'000'000;          ///< the most rows written
 };
 
 /// Writes the sample CSV of `curve` (see above).

@@ -38,7 +38,8 @@ int cell_of(const std::vector<double>& breaks, double x) {
 
 // The net of degree d × d from the jets ∂^{i+j} S/∂u^i ∂v^j, i, j ≤ ⌊d/2⌋ (d odd), at the corners
 // (k, l) of a cell of sides hu × hv: jet(k, l, i, j) as a 3-vector. See the header.
-surface::ControlNet net_from_corner_jets(int d, double hu, double hv, const std::function<Eigen::Vector3d(int k, int l, int i, int j)>& jet) {
+surface::ControlNet net_from_corner_jets(int d, double hu, double hv,
+                                         const std::function<Eigen::Vector3d(int k, int l, int i, int j)>& jet) {
     const int m = d / 2;
     // rows[l][j]: the Bézier points in u of ∂^j S/∂v^j (·, l).
     std::vector<Eigen::MatrixXd> rows[2];
@@ -74,14 +75,16 @@ Eigen::Vector3d as_point3(const Eigen::VectorXd& v, const char* who) {
 
 // Measures the pieces against `surface(a, b, s, t)` (cell (a, b), local (s, t)) and says whether
 // the form is exact.
-SurfaceForm measured(BezierSurfacePieces pieces, const std::function<Eigen::Vector3d(int a, int b, double s, double t)>& surface) {
+SurfaceForm measured(BezierSurfacePieces pieces,
+                     const std::function<Eigen::Vector3d(int a, int b, double s, double t)>& surface) {
     SurfaceForm f;
     for (int b = 0; b < pieces.cells_v(); ++b)
         for (int a = 0; a < pieces.cells_u(); ++a)
             for (int i = 0; i < kMeasuredPerDirection; ++i)
                 for (int j = 0; j < kMeasuredPerDirection; ++j) {
                     const double s = measured_local(i), t = measured_local(j);
-                    f.conversion_error = std::max(f.conversion_error, (net_point(pieces.net(a, b), s, t) - surface(a, b, s, t)).norm());
+                    f.conversion_error =
+                        std::max(f.conversion_error, (net_point(pieces.net(a, b), s, t) - surface(a, b, s, t)).norm());
                 }
     f.exact = f.conversion_error <= kExactRelative * std::max(net_diagonal(pieces), 1e-300);
     f.pieces = std::move(pieces);
@@ -117,8 +120,10 @@ void merge_edge_breaks(const Curve& edge, std::vector<double>& into) {
 
 Eigen::Vector3d BezierSurfacePieces::point(double u, double v) const {
     const int a = cell_of(u_breaks, u), b = cell_of(v_breaks, v);
-    const double s = (u - u_breaks[static_cast<std::size_t>(a)]) / (u_breaks[static_cast<std::size_t>(a) + 1] - u_breaks[static_cast<std::size_t>(a)]);
-    const double t = (v - v_breaks[static_cast<std::size_t>(b)]) / (v_breaks[static_cast<std::size_t>(b) + 1] - v_breaks[static_cast<std::size_t>(b)]);
+    const double s = (u - u_breaks[static_cast<std::size_t>(a)]) /
+                     (u_breaks[static_cast<std::size_t>(a) + 1] - u_breaks[static_cast<std::size_t>(a)]);
+    const double t = (v - v_breaks[static_cast<std::size_t>(b)]) /
+                     (v_breaks[static_cast<std::size_t>(b) + 1] - v_breaks[static_cast<std::size_t>(b)]);
     return net_point(net(a, b), s, t);
 }
 
@@ -150,7 +155,8 @@ SurfaceForm to_bezier(const surface::HosakaPatch& patch) {
     BezierSurfacePieces p;
     p.degree_u = p.degree_v = d;
     p.u_breaks = p.v_breaks = {0.0, 1.0};
-    p.nets = {net_from_corner_jets(d, 1.0, 1.0, [&](int k, int l, int i, int j) { return as_point3(c.at(k, l, i, j), who); })};
+    p.nets = {net_from_corner_jets(d, 1.0, 1.0,
+                                   [&](int k, int l, int i, int j) { return as_point3(c.at(k, l, i, j), who); })};
     return measured(std::move(p), [&](int, int, double s, double t) { return as_point3(patch.point(s, t), who); });
 }
 
@@ -174,8 +180,10 @@ SurfaceForm to_bezier(const surface::CartesianSurface& surface) {
             p.nets.push_back(std::move(net));
         }
     return measured(std::move(p), [&](int a, int b, double s, double t) {
-        const double xv = x[static_cast<std::size_t>(a)] + s * (x[static_cast<std::size_t>(a) + 1] - x[static_cast<std::size_t>(a)]);
-        const double yv = y[static_cast<std::size_t>(b)] + t * (y[static_cast<std::size_t>(b) + 1] - y[static_cast<std::size_t>(b)]);
+        const double xv =
+            x[static_cast<std::size_t>(a)] + s * (x[static_cast<std::size_t>(a) + 1] - x[static_cast<std::size_t>(a)]);
+        const double yv =
+            y[static_cast<std::size_t>(b)] + t * (y[static_cast<std::size_t>(b) + 1] - y[static_cast<std::size_t>(b)]);
         return Eigen::Vector3d(xv, yv, surface.derivative_in(a, b, s, t, 0, 0));
     });
 }
@@ -183,11 +191,14 @@ SurfaceForm to_bezier(const surface::CartesianSurface& surface) {
 SurfaceForm to_bezier(const surface::EdgeFormPatch& patch) {
     const char* who = "cagd::exports::to_bezier(EdgeFormPatch)";
     const surface::PatchEdges& e = patch.edges();
-    const std::pair<const Curve*, const char*> named[] = {{e.r1.get(), "R1 (v = 0)"}, {e.r2.get(), "R2 (u = 0)"}, {e.r3.get(), "R3 (v = 1)"}, {e.r4.get(), "R4 (u = 1)"}};
+    const std::pair<const Curve*, const char*> named[] = {
+        {e.r1.get(), "R1 (v = 0)"}, {e.r2.get(), "R2 (u = 0)"}, {e.r3.get(), "R3 (v = 1)"}, {e.r4.get(), "R4 (u = 1)"}};
     int du = 2 * patch.m() + 1, dv = du;
     for (int k = 0; k < 4; ++k) {
         const int deg = named[k].first->polynomial_degree();
-        if (deg < 0) fail_input(who, std::string("edge ") + named[k].second + " is not a polynomial curve: the patch has no exact Bezier form");
+        if (deg < 0)
+            fail_input(who, std::string("edge ") + named[k].second +
+                                " is not a polynomial curve: the patch has no exact Bezier form");
         (k % 2 == 0 ? du : dv) = std::max(k % 2 == 0 ? du : dv, deg);
     }
     BezierSurfacePieces p;
@@ -201,8 +212,10 @@ SurfaceForm to_bezier(const surface::EdgeFormPatch& patch) {
     const Eigen::PartialPivLU<Eigen::MatrixXd> nu(chebyshev_collocation(du, su)), nv(chebyshev_collocation(dv, sv));
     // The breaks by value: `p` moves into measured() before this is called there.
     const auto global = [&patch, who, ub = p.u_breaks, vb = p.v_breaks](int a, int b, double s, double t) {
-        const double u = ub[static_cast<std::size_t>(a)] + s * (ub[static_cast<std::size_t>(a) + 1] - ub[static_cast<std::size_t>(a)]);
-        const double v = vb[static_cast<std::size_t>(b)] + t * (vb[static_cast<std::size_t>(b) + 1] - vb[static_cast<std::size_t>(b)]);
+        const double u = ub[static_cast<std::size_t>(a)] +
+                         s * (ub[static_cast<std::size_t>(a) + 1] - ub[static_cast<std::size_t>(a)]);
+        const double v = vb[static_cast<std::size_t>(b)] +
+                         t * (vb[static_cast<std::size_t>(b) + 1] - vb[static_cast<std::size_t>(b)]);
         return as_point3(patch.point(u, v), who);
     };
     for (int b = 0; b < p.cells_v(); ++b)
@@ -211,7 +224,8 @@ SurfaceForm to_bezier(const surface::EdgeFormPatch& patch) {
             for (auto& c : values) c.resize(du + 1, dv + 1);
             for (int i = 0; i <= du; ++i)
                 for (int j = 0; j <= dv; ++j) {
-                    const Eigen::Vector3d s = global(a, b, su[static_cast<std::size_t>(i)], sv[static_cast<std::size_t>(j)]);
+                    const Eigen::Vector3d s =
+                        global(a, b, su[static_cast<std::size_t>(i)], sv[static_cast<std::size_t>(j)]);
                     for (int c = 0; c < 3; ++c) values[static_cast<std::size_t>(c)](i, j) = s(c);
                 }
             surface::ControlNet net;
@@ -227,7 +241,8 @@ SurfaceForm to_bezier(const surface::EdgeFormPatch& patch) {
 
 BSplineSurface bspline_surface(const BezierSurfacePieces& pieces, double* mismatch) {
     const char* who = "cagd::exports::bspline_surface";
-    if (pieces.cells_u() < 1 || pieces.cells_v() < 1 || pieces.nets.size() != static_cast<std::size_t>(pieces.cells_u() * pieces.cells_v()))
+    if (pieces.cells_u() < 1 || pieces.cells_v() < 1 ||
+        pieces.nets.size() != static_cast<std::size_t>(pieces.cells_u() * pieces.cells_v()))
         fail_input(who, "the pieces need at least one cell and one net per cell");
     const int p = pieces.degree_u, q = pieces.degree_v, K = pieces.cells_u(), L = pieces.cells_v();
     BSplineSurface s;
@@ -235,7 +250,8 @@ BSplineSurface bspline_surface(const BezierSurfacePieces& pieces, double* mismat
     s.degree_v = q;
     const auto clamped = [](const std::vector<double>& breaks, int degree) {
         std::vector<double> k(static_cast<std::size_t>(degree) + 1, breaks.front());
-        for (std::size_t i = 1; i + 1 < breaks.size(); ++i) k.insert(k.end(), static_cast<std::size_t>(degree), breaks[i]);
+        for (std::size_t i = 1; i + 1 < breaks.size(); ++i)
+            k.insert(k.end(), static_cast<std::size_t>(degree), breaks[i]);
         k.insert(k.end(), static_cast<std::size_t>(degree) + 1, breaks.back());
         return k;
     };

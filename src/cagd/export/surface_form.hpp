@@ -77,11 +77,11 @@ SurfaceForm to_bezier(const surface::EdgeFormPatch& patch);
 
 /// A B-spline surface: clamped knots in u and v, (n_u × n_v) control points per coordinate.
 struct BSplineSurface {
-    int degree_u = 0;               ///< p
-    int degree_v = 0;               ///< q
-    std::vector<double> knots_u;    ///< n_u + p + 1 knots
-    std::vector<double> knots_v;    ///< n_v + q + 1 knots
-    surface::ControlNet control;    ///< x, y, z, each n_u × n_v
+    int degree_u = 0;             ///< p
+    int degree_v = 0;             ///< q
+    std::vector<double> knots_u;  ///< n_u + p + 1 knots
+    std::vector<double> knots_v;  ///< n_v + q + 1 knots
+    surface::ControlNet control;  ///< x, y, z, each n_u × n_v
 };
 /// The patches as one B-spline surface (see above); `mismatch` receives the largest distance
 /// between the rows or columns that neighbouring nets share (0 for a continuous surface).

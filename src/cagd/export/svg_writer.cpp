@@ -38,9 +38,11 @@ std::string xml_text(const std::string& s) {
 void write_svg(std::ostream& out, const Curve& curve, const BezierForm& cubic, const SvgOptions& o) {
     const char* who = "cagd::exports::write_svg";
     const BezierPieces& b = cubic.pieces;
-    if (curve.dimension() != 2 || b.dimension() != 2) fail_input(who, "SVG is planar; the curve has " + std::to_string(curve.dimension()) + " coordinates");
+    if (curve.dimension() != 2 || b.dimension() != 2)
+        fail_input(who, "SVG is planar; the curve has " + std::to_string(curve.dimension()) + " coordinates");
     if (b.degree != 3 || b.pieces() < 1) fail_input(who, "needs cubic pieces, got degree " + std::to_string(b.degree));
-    if (o.comb && o.comb_teeth < 2) fail_input(who, "comb teeth must be at least 2, got " + std::to_string(o.comb_teeth));
+    if (o.comb && o.comb_teeth < 2)
+        fail_input(who, "comb teeth must be at least 2, got " + std::to_string(o.comb_teeth));
     Eigen::Vector2d lo = b.control.colwise().minCoeff().transpose(), hi = b.control.colwise().maxCoeff().transpose();
     const double diagonal = (hi - lo).norm();
     // The comb: teeth spread over the curve's pieces, at equal parameter steps within each.
@@ -55,7 +57,9 @@ void write_svg(std::ostream& out, const Curve& curve, const BezierForm& cubic, c
         for (int k = 0; k < pieces && static_cast<int>(base.size()) < o.comb_teeth; ++k)
             for (int j = 0; j <= per_piece; ++j) {
                 if (j == per_piece && k + 1 < pieces) continue;  // the next piece's first tooth
-                const double t = br[static_cast<std::size_t>(k)] + (br[static_cast<std::size_t>(k) + 1] - br[static_cast<std::size_t>(k)]) * j / per_piece;
+                const double t =
+                    br[static_cast<std::size_t>(k)] +
+                    (br[static_cast<std::size_t>(k) + 1] - br[static_cast<std::size_t>(k)]) * j / per_piece;
                 const Eigen::MatrixXd J = j == per_piece ? curve.jet_from_left(t, 2) : curve.jet(t, 2);
                 const analysis::FrenetJet f = analysis::frenet_jet(J.bottomRows(2));
                 if (!f.regular) continue;  // no normal at a cusp
@@ -81,30 +85,42 @@ void write_svg(std::ostream& out, const Curve& curve, const BezierForm& cubic, c
     const double pixels_high = std::clamp(800.0 * h / w, 50.0, 4000.0);
     // y flipped: the group maps (x, y) to (x, −y), so the viewBox spans −(hi.y + margin) … −(lo.y − margin).
     out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-    out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"800\" height=\"" << svg_number(std::round(pixels_high)) << "\" viewBox=\"" << svg_number(lo.x() - margin) << ' '
-        << svg_number(-(hi.y() + margin)) << ' ' << svg_number(w) << ' ' << svg_number(h) << "\">\n";
+    out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"800\" height=\"" << svg_number(std::round(pixels_high))
+        << "\" viewBox=\"" << svg_number(lo.x() - margin) << ' ' << svg_number(-(hi.y() + margin)) << ' '
+        << svg_number(w) << ' ' << svg_number(h) << "\">\n";
     if (!o.title.empty()) out << "<title>" << xml_text(o.title) << "</title>\n";
-    out << "<desc>cagd: " << (cubic.exact ? "the curve's exact cubic pieces" : "cubic pieces within " + svg_number(cubic.max_distance) + " of the curve (tolerance " + svg_number(cubic.tolerance) + ")")
+    out << "<desc>cagd: "
+        << (cubic.exact ? "the curve's exact cubic pieces"
+                        : "cubic pieces within " + svg_number(cubic.max_distance) + " of the curve (tolerance " +
+                              svg_number(cubic.tolerance) + ")")
         << (o.comb ? "; curvature comb tooth = -c kappa n, c = " + svg_number(scale) : "") << "</desc>\n";
     out << "<g transform=\"scale(1,-1)\" fill=\"none\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
     if (o.comb && !base.empty()) {
-        out << "<g id=\"comb\" data-comb-scale=\"" << svg_number(scale) << "\" stroke=\"#4f81bd\" stroke-width=\"1\" vector-effect=\"non-scaling-stroke\">\n<path vector-effect=\"non-scaling-stroke\" d=\"";
+        out << "<g id=\"comb\" data-comb-scale=\"" << svg_number(scale)
+            << "\" stroke=\"#4f81bd\" stroke-width=\"1\" vector-effect=\"non-scaling-stroke\">\n<path "
+               "vector-effect=\"non-scaling-stroke\" d=\"";
         for (std::size_t i = 0; i < base.size(); ++i)
-            out << "M" << svg_number(base[i].x()) << ' ' << svg_number(base[i].y()) << 'L' << svg_number(tip[i].x()) << ' ' << svg_number(tip[i].y());
+            out << "M" << svg_number(base[i].x()) << ' ' << svg_number(base[i].y()) << 'L' << svg_number(tip[i].x())
+                << ' ' << svg_number(tip[i].y());
         out << "\"/>\n<path vector-effect=\"non-scaling-stroke\" d=\"";
-        for (std::size_t i = 0; i < tip.size(); ++i) out << (i ? "L" : "M") << svg_number(tip[i].x()) << ' ' << svg_number(tip[i].y());
+        for (std::size_t i = 0; i < tip.size(); ++i)
+            out << (i ? "L" : "M") << svg_number(tip[i].x()) << ' ' << svg_number(tip[i].y());
         out << "\"/>\n</g>\n";
     }
-    out << "<path id=\"curve\" stroke=\"#000000\" stroke-width=\"2\" vector-effect=\"non-scaling-stroke\" d=\"M" << svg_number(b.control(0, 0)) << ' ' << svg_number(b.control(0, 1));
+    out << "<path id=\"curve\" stroke=\"#000000\" stroke-width=\"2\" vector-effect=\"non-scaling-stroke\" d=\"M"
+        << svg_number(b.control(0, 0)) << ' ' << svg_number(b.control(0, 1));
     for (int i = 0; i < b.pieces(); ++i) {
         out << "\nC";
-        for (int k = 1; k <= 3; ++k) out << (k > 1 ? " " : "") << svg_number(b.control(4 * i + k, 0)) << ' ' << svg_number(b.control(4 * i + k, 1));
+        for (int k = 1; k <= 3; ++k)
+            out << (k > 1 ? " " : "") << svg_number(b.control(4 * i + k, 0)) << ' '
+                << svg_number(b.control(4 * i + k, 1));
     }
     out << "\"/>\n";
     if (o.points.rows() > 0 && o.points.cols() == 2) {
         out << "<g id=\"points\" fill=\"#c0504d\" stroke=\"none\">\n";
         for (Eigen::Index i = 0; i < o.points.rows(); ++i)
-            out << "<circle cx=\"" << svg_number(o.points(i, 0)) << "\" cy=\"" << svg_number(o.points(i, 1)) << "\" r=\"" << svg_number(0.006 * span) << "\"/>\n";
+            out << "<circle cx=\"" << svg_number(o.points(i, 0)) << "\" cy=\"" << svg_number(o.points(i, 1))
+                << "\" r=\"" << svg_number(0.006 * span) << "\"/>\n";
         out << "</g>\n";
     }
     out << "</g>\n</svg>\n";

@@ -23,10 +23,10 @@ namespace cagd::exports {
 
 /// What the SVG shows besides the curve.
 struct SvgOptions {
-    PointList points{};   ///< drawn as circles in group "points" when it has rows
-    bool comb = false;    ///< the curvature comb in group "comb"
+    PointList points{};     ///< drawn as circles in group "points" when it has rows
+    bool comb = false;      ///< the curvature comb in group "comb"
     int comb_teeth = 1000;  ///< the most teeth of the comb
-    std::string title{};  ///< the `title` (e.g. the method)
+    std::string title{};    ///< the `title` (e.g. the method)
 };
 
 /// Writes `cubic` (the curve's cubic pieces, from to_bezier_of_degree(curve, 3)) as SVG to `out`.

@@ -15,9 +15,9 @@
 
 #include "cagd/core/checksum.hpp"
 #include "cagd/core/csv.hpp"
+#include "cagd/core/parallel.hpp"
 #include "cagd/io/file_lock.hpp"
 #include "cagd/io/output_file.hpp"
-#include "cagd/core/parallel.hpp"
 
 namespace cagd::fairness {
 
@@ -31,16 +31,20 @@ using detail::next_node;
 
 AngleMinimumTable AngleMinimumTable::build(const AngleGrid& grid, int threads) { return build(grid, nullptr, threads); }
 
-AngleMinimumTable AngleMinimumTable::build(const AngleGrid& grid, const PseudoEnergyTable& scan_source, int threads) { return build(grid, &scan_source, threads); }
+AngleMinimumTable AngleMinimumTable::build(const AngleGrid& grid, const PseudoEnergyTable& scan_source, int threads) {
+    return build(grid, &scan_source, threads);
+}
 
 AngleMinimumTable AngleMinimumTable::build(const AngleGrid& grid, const PseudoEnergyTable* scan_source, int threads) {
     int stride = 0;
     if (scan_source) {
         const AngleGrid& g = scan_source->grid();
-        if (scan_source->method() != TableMethod::fast || g.placement != NodePlacement::endpoints || (g.n - 1) % kEndAngleScanSteps != 0)
+        if (scan_source->method() != TableMethod::fast || g.placement != NodePlacement::endpoints ||
+            (g.n - 1) % kEndAngleScanSteps != 0)
             fail_input("cagd::fairness::AngleMinimumTable::build",
-                       "the scan source must be a fast table on an endpoints grid of 180·k + 1 nodes (its nodes then hold the 2° scan), got grid " + std::to_string(g.n) + " " +
-                           to_string(g.placement) + " " + to_string(scan_source->method()));
+                       "the scan source must be a fast table on an endpoints grid of 180·k + 1 nodes (its nodes then "
+                       "hold the 2° scan), got grid " +
+                           std::to_string(g.n) + " " + to_string(g.placement) + " " + to_string(scan_source->method()));
         stride = (g.n - 1) / kEndAngleScanSteps;
     }
     AngleMinimumTable t;
@@ -52,7 +56,8 @@ AngleMinimumTable AngleMinimumTable::build(const AngleGrid& grid, const PseudoEn
                      const double theta = t.axis_.nodes[static_cast<std::size_t>(k)];
                      AngleMinimum& out = t.values_[static_cast<std::size_t>(k)];
                      const std::vector<double>* source_nodes = scan_source ? &scan_source->nodes() : nullptr;
-                     const auto row = source_nodes ? std::find(source_nodes->begin(), source_nodes->end(), theta) : std::vector<double>::const_iterator{};
+                     const auto row = source_nodes ? std::find(source_nodes->begin(), source_nodes->end(), theta)
+                                                   : std::vector<double>::const_iterator{};
                      if (!source_nodes || row == source_nodes->end()) {
                          out = minimize_over_end_angle(theta);
                          return;
@@ -64,25 +69,31 @@ AngleMinimumTable AngleMinimumTable::build(const AngleGrid& grid, const PseudoEn
                          ts.push_back((*source_nodes)[static_cast<std::size_t>(j)]);
                          vs.push_back(end_angle_energy(scan_source->node(i, j)));
                      }
-                     out = refine_end_angle_scan(theta, ts, vs, [theta](double theta1) { return end_angle_energy(theta, theta1); });
+                     out = refine_end_angle_scan(theta, ts, vs,
+                                                 [theta](double theta1) { return end_angle_energy(theta, theta1); });
                  },
                  {});
     return t;
 }
 
-AngleMinimumTable AngleMinimumTable::load_or_build(const std::string& path, const AngleGrid& grid, int threads) { return load_or_build(path, grid, nullptr, threads); }
+AngleMinimumTable AngleMinimumTable::load_or_build(const std::string& path, const AngleGrid& grid, int threads) {
+    return load_or_build(path, grid, nullptr, threads);
+}
 
-AngleMinimumTable AngleMinimumTable::load_or_build(const std::string& path, const AngleGrid& grid, const PseudoEnergyTable& scan_source, int threads) {
+AngleMinimumTable AngleMinimumTable::load_or_build(const std::string& path, const AngleGrid& grid,
+                                                   const PseudoEnergyTable& scan_source, int threads) {
     return load_or_build(path, grid, &scan_source, threads);
 }
 
-AngleMinimumTable AngleMinimumTable::load_or_build(const std::string& path, const AngleGrid& grid, const PseudoEnergyTable* scan_source, int threads) {
+AngleMinimumTable AngleMinimumTable::load_or_build(const std::string& path, const AngleGrid& grid,
+                                                   const PseudoEnergyTable* scan_source, int threads) {
     // The cache file: a header line, the column names, one row per node, the checksum line
     // (core/checksum.hpp). A damaged, foreign or stale file, or one whose values leave their domain
     // (a node angle off the grid, θ1 outside [−π, π], J not finite and ≥ 0 where the status is ok),
     // is rebuilt.
     std::ostringstream header;
-    header << "# cagd pseudo_energy angle-minimum table format 2 grid " << grid.n << " placement " << to_string(grid.placement);
+    header << "# cagd pseudo_energy angle-minimum table format 2 grid " << grid.n << " placement "
+           << to_string(grid.placement);
     const auto try_load = [&](std::string& why) -> std::optional<AngleMinimumTable> {
         std::ifstream file(path, std::ios::binary);
         if (!file) return std::nullopt;
@@ -109,12 +120,16 @@ AngleMinimumTable AngleMinimumTable::load_or_build(const std::string& path, cons
                 if (!std::getline(row, x, ',')) return std::nullopt;
             AngleMinimum m;
             double status = 0;
-            if (!parse_decimal(f[0], m.theta) || !parse_decimal(f[1], m.theta1) || !parse_decimal(f[2], m.pseudo_energy) || !parse_decimal(f[3], status)) return std::nullopt;
-            if (!(status >= 0 && status <= static_cast<int>(Status::not_representable) && status == std::floor(status))) return std::nullopt;
+            if (!parse_decimal(f[0], m.theta) || !parse_decimal(f[1], m.theta1) ||
+                !parse_decimal(f[2], m.pseudo_energy) || !parse_decimal(f[3], status))
+                return std::nullopt;
+            if (!(status >= 0 && status <= static_cast<int>(Status::not_representable) && status == std::floor(status)))
+                return std::nullopt;
             m.outcome.status = static_cast<Status>(static_cast<int>(status));
             std::getline(row, m.outcome.message);
             if (m.theta != t.axis_.nodes[t.values_.size()]) return std::nullopt;  // another grid
-            if (m.outcome.ok() && !(std::isfinite(m.pseudo_energy) && m.pseudo_energy >= 0 && m.theta1 >= -std::numbers::pi - 1e-12 && m.theta1 <= std::numbers::pi + 1e-12))
+            if (m.outcome.ok() && !(std::isfinite(m.pseudo_energy) && m.pseudo_energy >= 0 &&
+                                    m.theta1 >= -std::numbers::pi - 1e-12 && m.theta1 <= std::numbers::pi + 1e-12))
                 return std::nullopt;
             t.values_.push_back(m);
         }
@@ -126,7 +141,8 @@ AngleMinimumTable AngleMinimumTable::load_or_build(const std::string& path, cons
         std::string text = header.str() + "\ntheta,theta1,J,status,message\n";
         char buf[128];
         for (const AngleMinimum& m : t.values_) {
-            std::snprintf(buf, sizeof buf, "%.17g,%.17g,%.17g,%d,", m.theta, m.theta1, m.pseudo_energy, static_cast<int>(m.outcome.status));
+            std::snprintf(buf, sizeof buf, "%.17g,%.17g,%.17g,%d,", m.theta, m.theta1, m.pseudo_energy,
+                          static_cast<int>(m.outcome.status));
             text += buf + one_line(m.outcome.message) + "\n";
         }
         OutputFile out(path, "table");  // io/output_file.hpp: written whole or not at all
@@ -136,7 +152,9 @@ AngleMinimumTable AngleMinimumTable::load_or_build(const std::string& path, cons
     });
 }
 
-AngleMinimumTable AngleMinimumTable::from_energy_table(const PseudoEnergyTable& table) { return from_energy_table(table, TableReading{}); }
+AngleMinimumTable AngleMinimumTable::from_energy_table(const PseudoEnergyTable& table) {
+    return from_energy_table(table, TableReading{});
+}
 
 AngleMinimumTable AngleMinimumTable::from_energy_table(const PseudoEnergyTable& table, const TableReading& reading_in) {
     TableReading reading = reading_in;
@@ -159,7 +177,8 @@ std::pair<double, double> AngleMinimumTable::lookup(double theta) const {
     int i = 0;
     double u = 0.0;
     axis_.locate(theta, i, u);
-    const std::size_t a = static_cast<std::size_t>(i), b = static_cast<std::size_t>(next_node(i, static_cast<int>(axis_.nodes.size())));
+    const std::size_t a = static_cast<std::size_t>(i),
+                      b = static_cast<std::size_t>(next_node(i, static_cast<int>(axis_.nodes.size())));
     const double j = (1 - u) * values_[a].pseudo_energy + u * values_[b].pseudo_energy;
     // θ1 is an angle: interpolate the wrapped difference.
     const double d = wrap_angle(values_[b].theta1 - values_[a].theta1);

@@ -37,7 +37,8 @@ public:
     /// load equals a build bit for bit), otherwise built and saved (temporary file, then rename).
     static AngleMinimumTable load_or_build(const std::string& path, const AngleGrid& grid, int threads = 2);
     /// load_or_build with the 2° scans read from `scan_source` (see build).
-    static AngleMinimumTable load_or_build(const std::string& path, const AngleGrid& grid, const PseudoEnergyTable& scan_source, int threads = 2);
+    static AngleMinimumTable load_or_build(const std::string& path, const AngleGrid& grid,
+                                           const PseudoEnergyTable& scan_source, int threads = 2);
     /// The node angles.
     const std::vector<double>& nodes() const { return axis_.nodes; }
     /// J(θ), θ1(θ) at the nodes.
@@ -52,7 +53,8 @@ private:
     detail::PeriodicAxis axis_;
     std::vector<AngleMinimum> values_;
     static AngleMinimumTable build(const AngleGrid& grid, const PseudoEnergyTable* scan_source, int threads);
-    static AngleMinimumTable load_or_build(const std::string& path, const AngleGrid& grid, const PseudoEnergyTable* scan_source, int threads);
+    static AngleMinimumTable load_or_build(const std::string& path, const AngleGrid& grid,
+                                           const PseudoEnergyTable* scan_source, int threads);
 };
 
 inline double AngleMinimumTable::pseudo_energy(double theta) const {
@@ -60,7 +62,8 @@ inline double AngleMinimumTable::pseudo_energy(double theta) const {
     int i = 0;
     double u = 0.0;
     axis_.locate(theta, i, u);
-    const std::size_t a = static_cast<std::size_t>(i), b = static_cast<std::size_t>(detail::next_node(i, static_cast<int>(axis_.nodes.size())));
+    const std::size_t a = static_cast<std::size_t>(i),
+                      b = static_cast<std::size_t>(detail::next_node(i, static_cast<int>(axis_.nodes.size())));
     return (1 - u) * values_[a].pseudo_energy + u * values_[b].pseudo_energy;
 }
 

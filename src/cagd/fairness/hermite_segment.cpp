@@ -81,7 +81,8 @@ void integrands_pass(const UnitChordHermite& s, const double* t, std::size_t m, 
 }
 
 void integrands(const UnitChordHermite& s, const double* t, std::size_t m, bool with_gradient, Integrands* out) {
-    for (std::size_t i0 = 0; i0 < m; i0 += kIntegrandPass) integrands_pass(s, t + i0, std::min(kIntegrandPass, m - i0), with_gradient, out + i0);
+    for (std::size_t i0 = 0; i0 < m; i0 += kIntegrandPass)
+        integrands_pass(s, t + i0, std::min(kIntegrandPass, m - i0), with_gradient, out + i0);
 }
 
 }  // namespace
@@ -104,7 +105,8 @@ double wrap_angle_out_of_range(double theta) {
         const double w = theta + 2.0 * std::numbers::pi;
         if (w <= std::numbers::pi && w > -std::numbers::pi) return w;
     }
-    if (!std::isfinite(theta)) fail_input("cagd::fairness::wrap_angle", "angle must be finite, got " + full_precision(theta));
+    if (!std::isfinite(theta))
+        fail_input("cagd::fairness::wrap_angle", "angle must be finite, got " + full_precision(theta));
     double w = std::remainder(theta, 2.0 * std::numbers::pi);  // in [−π, π]
     if (w <= -std::numbers::pi) w += 2.0 * std::numbers::pi;
     return w;
@@ -114,7 +116,8 @@ void fail_tangent_angle(const char* who, double theta, const char* name) {
     fail_input(who, std::string(name) + " must be a finite angle in [-pi, pi] (radians), got " + full_precision(theta));
 }
 
-UnitChordHermite::UnitChordHermite(double theta0, double theta1, double r0, double r1) : theta0_(theta0), theta1_(theta1), r0_(r0), r1_(r1) {
+UnitChordHermite::UnitChordHermite(double theta0, double theta1, double r0, double r1)
+    : theta0_(theta0), theta1_(theta1), r0_(r0), r1_(r1) {
     const char* who = "cagd::fairness::UnitChordHermite";
     require_tangent_angle(who, theta0, "theta0");
     require_tangent_angle(who, theta1, "theta1");
@@ -134,7 +137,9 @@ Eigen::Vector2d UnitChordHermite::first(double t) const { return a_ + t * (b_ + 
 Eigen::Vector2d UnitChordHermite::second(double t) const { return b_ + 2.0 * t * c_; }
 double UnitChordHermite::curvature_numerator(double t) const { return cross(second(t), first(t)); }
 
-SegmentType UnitChordHermite::type() const { return curvature_numerator(0.0) * curvature_numerator(1.0) >= 0.0 ? SegmentType::c : SegmentType::s; }
+SegmentType UnitChordHermite::type() const {
+    return curvature_numerator(0.0) * curvature_numerator(1.0) >= 0.0 ? SegmentType::c : SegmentType::s;
+}
 
 BezierCurve UnitChordHermite::bezier() const {
     Eigen::MatrixXd cp(4, 2);
@@ -158,16 +163,22 @@ std::vector<double> integration_breaks(const UnitChordHermite& seg) {
 }
 
 SegmentEnergy segment_energy_reference(const UnitChordHermite& seg, double rel_tol, bool with_gradient) {
-    if (!(rel_tol > 0.0 && rel_tol <= 1e-12)) fail_input("cagd::fairness::segment_energy_reference", "rel_tol must be in (0, 1e-12], got " + full_precision(rel_tol));
+    if (!(rel_tol > 0.0 && rel_tol <= 1e-12))
+        fail_input("cagd::fairness::segment_energy_reference",
+                   "rel_tol must be in (0, 1e-12], got " + full_precision(rel_tol));
     return detail::energy_reference(
-        seg, [&](const double* t, std::size_t m, Integrands* out) { integrands(seg, t, m, with_gradient, out); }, rel_tol);
+        seg, [&](const double* t, std::size_t m, Integrands* out) { integrands(seg, t, m, with_gradient, out); },
+        rel_tol);
 }
 
 SegmentEnergy segment_energy_fast(const UnitChordHermite& seg, bool with_gradient, int rule_nodes) {
     static const numeric::GaussLegendreRule rule20(20), rule8(8);
-    if (rule_nodes != 8 && rule_nodes != 20) fail_input("cagd::fairness::segment_energy_fast", "rule_nodes must be 8 or 20, got " + std::to_string(rule_nodes));
+    if (rule_nodes != 8 && rule_nodes != 20)
+        fail_input("cagd::fairness::segment_energy_fast",
+                   "rule_nodes must be 8 or 20, got " + std::to_string(rule_nodes));
     return detail::energy_fast(
-        seg, [&](const double* t, std::size_t m, Integrands* out) { integrands(seg, t, m, with_gradient, out); }, rule_nodes == 8 ? rule8 : rule20);
+        seg, [&](const double* t, std::size_t m, Integrands* out) { integrands(seg, t, m, with_gradient, out); },
+        rule_nodes == 8 ? rule8 : rule20);
 }
 
 double signed_area(const UnitChordHermite& seg) {

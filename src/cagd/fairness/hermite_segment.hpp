@@ -50,7 +50,9 @@ const char* to_string(SegmentType t);
 /// wrap_angle_out_of_range.
 double wrap_angle_out_of_range(double theta);
 /// θ wrapped to (−π, π] (θ ± 2πk).
-inline double wrap_angle(double theta) { return theta > -std::numbers::pi && theta <= std::numbers::pi ? theta : wrap_angle_out_of_range(theta); }
+inline double wrap_angle(double theta) {
+    return theta > -std::numbers::pi && theta <= std::numbers::pi ? theta : wrap_angle_out_of_range(theta);
+}
 
 /// The tangent-angle domain of this module, [−π, π] with a slack of 1e-12 (see above): throws
 /// InvalidInput("<who>: <name> must be …") for a non-finite angle or one outside it.
@@ -101,7 +103,7 @@ private:
 
 /// The local minima of |P'(t)| inside (0, 1), ascending, with |P'| there.
 struct SpeedMinimum {
-    double t = 0.0;  ///< t* ∈ (0, 1)
+    double t = 0.0;      ///< t* ∈ (0, 1)
     double speed = 0.0;  ///< |P'(t*)|
     double width = 0.0;  ///< δ = |P'(t*)| / |P''(t*)|
 };
@@ -120,12 +122,12 @@ struct SegmentEnergy {
     double length = 0.0;         ///< L
     double pseudo_energy = 0.0;  ///< J = L² E (7)
     /// Gradient of J with respect to log r0, log r1 (the minimisers' variables).
-    double dj_dlog_r0 = 0.0;  ///< ∂J/∂ log r0
-    double dj_dlog_r1 = 0.0;  ///< ∂J/∂ log r1
+    double dj_dlog_r0 = 0.0;      ///< ∂J/∂ log r0
+    double dj_dlog_r1 = 0.0;      ///< ∂J/∂ log r1
     double error_estimate = 0.0;  ///< bound on |ΔJ| from the quadrature (reference path)
-    long evaluations = 0;  ///< integrand evaluations
-    bool cusp = false;  ///< E = J = +∞
-    Outcome outcome;    ///< no_convergence if Romberg did not converge
+    long evaluations = 0;         ///< integrand evaluations
+    bool cusp = false;            ///< E = J = +∞
+    Outcome outcome;              ///< no_convergence if Romberg did not converge
 };
 
 /// Reference path: Romberg on every piece of integration_breaks, rel_tol (≤ 1e-12) per integral.
@@ -142,11 +144,11 @@ double signed_area(const UnitChordHermite& seg);
 /// the exact binary values given; cos and sin are evaluated in 50 digits. Slow (~0.1 s).
 /// E, L and J of one segment to 40 significant digits, and the same rounded to double.
 struct SegmentEnergyDigits {
-    std::string strain_energy;  ///< E, 40 digits
-    std::string length;  ///< L, 40 digits
-    std::string pseudo_energy;  ///< J, 40 digits
+    std::string strain_energy;       ///< E, 40 digits
+    std::string length;              ///< L, 40 digits
+    std::string pseudo_energy;       ///< J, 40 digits
     double strain_energy_value = 0;  ///< E rounded
-    double length_value = 0;  ///< L rounded
+    double length_value = 0;         ///< L rounded
     double pseudo_energy_value = 0;  ///< J rounded
 };
 /// E, L and J of the segment (θ0, θ1, r0, r1) to 40 digits (see above).

@@ -16,7 +16,9 @@ struct Vec {
 
 SegmentEnergyDigits segment_energy_high_precision(double theta0, double theta1, double r0, double r1) {
     const UnitChordHermite seg(theta0, theta1, r0, r1);  // validates; gives the graded pieces
-    if (has_cusp(seg)) fail_input("cagd::fairness::segment_energy_high_precision", "the segment has a cusp: its strain energy diverges");
+    if (has_cusp(seg))
+        fail_input("cagd::fairness::segment_energy_high_precision",
+                   "the segment has a cusp: its strain energy diverges");
     const Real R0(r0), R1(r1);
     const Vec u0{cos(Real(theta0)), sin(Real(theta0))}, u1{cos(Real(theta1)), sin(Real(theta1))};
     // Exact directions at multiples of π/2 as in the double path.

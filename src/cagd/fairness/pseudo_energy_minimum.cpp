@@ -19,7 +19,9 @@ namespace {
 
 using namespace detail;
 
-bool is_multiple_of_pi(double theta) { return std::abs(theta) < 1e-12 || std::abs(std::abs(theta) - std::numbers::pi) < 1e-12; }
+bool is_multiple_of_pi(double theta) {
+    return std::abs(theta) < 1e-12 || std::abs(std::abs(theta) - std::numbers::pi) < 1e-12;
+}
 
 void require_angles(const char* who, double theta0, double theta1) {
     const std::string w = std::string("cagd::fairness::") + who;
@@ -37,15 +39,19 @@ PseudoEnergyMinimum undefined_node(double theta0, double theta1) {
     m.pseudo_energy = straight ? 0.0 : kInf;
     m.strain_energy = straight ? 0.0 : kInf;
     m.length = straight ? 1.0 : 0.0;
-    m.outcome = {Status::no_solution, straight ? "undefined node (0, 0): the straight segment has J = 0 and r0, r1 are not determined (paper §4.1)"
-                                               : "undefined node: both tangents are parallel to the chord and point so that every segment has a "
-                                                 "cusp; no minimum exists (paper §4.1)"};
+    m.outcome = {
+        Status::no_solution,
+        straight ? "undefined node (0, 0): the straight segment has J = 0 and r0, r1 are not determined (paper §4.1)"
+                 : "undefined node: both tangents are parallel to the chord and point so that every segment has a "
+                   "cusp; no minimum exists (paper §4.1)"};
     return m;
 }
 
 // The scan's cheap energy of the planar segment (θ0, θ1) at (r0, r1).
 auto planar_scan_energy(double theta0, double theta1) {
-    return [=](double r0, double r1) { return segment_energy_fast(UnitChordHermite(theta0, theta1, r0, r1), false, 8).pseudo_energy; };
+    return [=](double r0, double r1) {
+        return segment_energy_fast(UnitChordHermite(theta0, theta1, r0, r1), false, 8).pseudo_energy;
+    };
 }
 
 // Fills the measures of the segment at (r0, r1).
@@ -67,14 +73,17 @@ PseudoEnergyMinimum choose(double theta0, double theta1, const std::vector<Desce
     PseudoEnergyMinimum m;
     m.theta0 = theta0;
     m.theta1 = theta1;
-    return choose_minimum(m, runs, evaluations, [&](PseudoEnergyMinimum& out, const Descent& best) { fill_measures(out, std::exp(best.rho0), std::exp(best.rho1), best.energy); });
+    return choose_minimum(m, runs, evaluations, [&](PseudoEnergyMinimum& out, const Descent& best) {
+        fill_measures(out, std::exp(best.rho0), std::exp(best.rho1), best.energy);
+    });
 }
 
 }  // namespace
 
 bool is_undefined_node(double theta0, double theta1) { return is_multiple_of_pi(theta0) && is_multiple_of_pi(theta1); }
 
-PseudoEnergyMinimum minimize_pseudo_energy_reference(double theta0, double theta1, const ReferenceMinimizerOptions& opt) {
+PseudoEnergyMinimum minimize_pseudo_energy_reference(double theta0, double theta1,
+                                                     const ReferenceMinimizerOptions& opt) {
     require_angles("minimize_pseudo_energy_reference", theta0, theta1);
     require_built_with(OptionalDependency::ceres, "cagd::fairness::minimize_pseudo_energy_reference");
     if (is_undefined_node(theta0, theta1)) return undefined_node(theta0, theta1);
@@ -99,18 +108,23 @@ PseudoEnergyMinimum minimize_pseudo_energy_reference(double theta0, double theta
             ++evaluations;
             return segment_energy_fast(UnitChordHermite(theta0, theta1, std::exp(a), std::exp(b)));
         };
-        for (const ScanPoint& seed : census_seeds(planar_scan_energy(theta0, theta1), opt.census, evaluations)) census.push_back(newton_descent(fast_energy, seed.rho0, seed.rho1));
+        for (const ScanPoint& seed : census_seeds(planar_scan_energy(theta0, theta1), opt.census, evaluations))
+            census.push_back(newton_descent(fast_energy, seed.rho0, seed.rho1));
         census_found = census_minima(census, [&](double a, double b) { return fast_energy(a, b).pseudo_energy; });
         for (const Descent* d : census_found) {
             if (fast.outcome.ok() && !(d->j < fast.pseudo_energy - kCensusSameJ * (1.0 + fast.pseudo_energy))) continue;
             bool near = false;
-            for (const ScanPoint& s : starts) near = near || same_census_minimum(s.j, s.rho0, s.rho1, d->j, d->rho0, d->rho1);
+            for (const ScanPoint& s : starts)
+                near = near || same_census_minimum(s.j, s.rho0, s.rho1, d->j, d->rho0, d->rho1);
             if (!near) starts.push_back({d->j, d->rho0, d->rho1});
         }
     }
     const double rel_tol = opt.romberg_rel_tol;
     const std::vector<Descent> runs = reference_descents(
-        [&](double r0, double r1, bool with_gradient) { return segment_energy_reference(UnitChordHermite(theta0, theta1, r0, r1), rel_tol, with_gradient); }, starts, evaluations);
+        [&](double r0, double r1, bool with_gradient) {
+            return segment_energy_reference(UnitChordHermite(theta0, theta1, r0, r1), rel_tol, with_gradient);
+        },
+        starts, evaluations);
     PseudoEnergyMinimum m = choose(theta0, theta1, runs, evaluations);
     if (census.empty() || !m.outcome.ok()) return m;
     // The count and the runner-up over every distinct minimum reached: the reference descents
@@ -124,7 +138,8 @@ PseudoEnergyMinimum minimize_pseudo_energy_reference(double theta0, double theta
     }
     std::vector<const Descent*> others;
     for (const Descent* d : all)
-        if (!same_census_minimum(d->j, d->rho0, d->rho1, m.pseudo_energy, std::log(m.r0), std::log(m.r1))) others.push_back(d);
+        if (!same_census_minimum(d->j, d->rho0, d->rho1, m.pseudo_energy, std::log(m.r0), std::log(m.r1)))
+            others.push_back(d);
     std::sort(others.begin(), others.end(), [](const Descent* a, const Descent* b) { return a->j < b->j; });
     m.local_minima = static_cast<int>(others.size()) + 1;
     m.runner_up = others.empty() ? kInf : others.front()->j;
@@ -146,7 +161,9 @@ PseudoEnergyMinimum minimize_pseudo_energy_nlopt(double theta0, double theta1, c
         // steep seed lands on the bounds, where a Romberg energy costs ~0.6 s. Dividing J by
         // max(1, |∇J(seed)| / kLbfgsFirstStep) bounds that first step to kLbfgsFirstStep in ρ; the
         // quasi-Newton steps after it, ftol_rel and the minimiser do not change with the scale.
-        const SegmentEnergy at_seed = segment_energy_reference(UnitChordHermite(theta0, theta1, std::exp(starts[si].rho0), std::exp(starts[si].rho1)), kLbfgsRombergRelTol, true);
+        const SegmentEnergy at_seed = segment_energy_reference(
+            UnitChordHermite(theta0, theta1, std::exp(starts[si].rho0), std::exp(starts[si].rho1)), kLbfgsRombergRelTol,
+            true);
         ++evaluations;
         const double scale = std::max(1.0, std::hypot(at_seed.dj_dlog_r0, at_seed.dj_dlog_r1) / kLbfgsFirstStep);
         struct Data {
@@ -201,26 +218,34 @@ std::vector<LocalMinimum> local_minima_census(double theta0, double theta1, cons
     const char* who = "cagd::fairness::local_minima_census";
     require_angles("local_minima_census", theta0, theta1);
     if (!(box.r_lo > 0 && box.r_hi > box.r_lo && std::isfinite(box.r_hi)) || box.n < 3 || box.n > kMaxCensusGrid)
-        fail_input(who, "the box [" + full_precision(box.r_lo) + ", " + full_precision(box.r_hi) + "] with n = " + std::to_string(box.n) +
+        fail_input(who, "the box [" + full_precision(box.r_lo) + ", " + full_precision(box.r_hi) +
+                            "] with n = " + std::to_string(box.n) +
                             " must satisfy 0 < r_lo < r_hi < inf and 3 <= n <= " + std::to_string(kMaxCensusGrid));
     std::vector<LocalMinimum> out;
     if (is_undefined_node(theta0, theta1)) return out;
     long evaluations = 0;
-    const auto fast_energy = [&](double a, double b) { return segment_energy_fast(UnitChordHermite(theta0, theta1, std::exp(a), std::exp(b))); };
+    const auto fast_energy = [&](double a, double b) {
+        return segment_energy_fast(UnitChordHermite(theta0, theta1, std::exp(a), std::exp(b)));
+    };
     std::vector<Descent> runs;
-    for (const ScanPoint& seed : census_seeds(planar_scan_energy(theta0, theta1), box, evaluations)) runs.push_back(newton_descent(fast_energy, seed.rho0, seed.rho1));
-    for (const Descent* d : census_minima(runs, [&](double a, double b) { return fast_energy(a, b).pseudo_energy; })) out.push_back({d->j, std::exp(d->rho0), std::exp(d->rho1)});
+    for (const ScanPoint& seed : census_seeds(planar_scan_energy(theta0, theta1), box, evaluations))
+        runs.push_back(newton_descent(fast_energy, seed.rho0, seed.rho1));
+    for (const Descent* d : census_minima(runs, [&](double a, double b) { return fast_energy(a, b).pseudo_energy; }))
+        out.push_back({d->j, std::exp(d->rho0), std::exp(d->rho1)});
     return out;
 }
 
-std::vector<LocalMinimum> local_minima_multistart(double theta0, double theta1, int starts, const ScanBox& box, unsigned seed) {
+std::vector<LocalMinimum> local_minima_multistart(double theta0, double theta1, int starts, const ScanBox& box,
+                                                  unsigned seed) {
     const char* who = "cagd::fairness::local_minima_multistart";
     require_angles("local_minima_multistart", theta0, theta1);
     require_built_with(OptionalDependency::nlopt, who);
 #if CAGD_WITH_NLOPT
-    if (starts < 1 || starts > kMaxMultistartStarts) fail_input(who, "starts = " + std::to_string(starts) + "; allowed 1.." + std::to_string(kMaxMultistartStarts));
+    if (starts < 1 || starts > kMaxMultistartStarts)
+        fail_input(who, "starts = " + std::to_string(starts) + "; allowed 1.." + std::to_string(kMaxMultistartStarts));
     if (!(box.r_lo > 0 && box.r_hi > box.r_lo && std::isfinite(box.r_hi)))
-        fail_input(who, "the box [" + full_precision(box.r_lo) + ", " + full_precision(box.r_hi) + "] must satisfy 0 < r_lo < r_hi < inf");
+        fail_input(who, "the box [" + full_precision(box.r_lo) + ", " + full_precision(box.r_hi) +
+                            "] must satisfy 0 < r_lo < r_hi < inf");
     std::vector<LocalMinimum> out;
     if (is_undefined_node(theta0, theta1)) return out;
     const auto j_at = [&](double rho0, double rho1) {
@@ -237,7 +262,9 @@ std::vector<LocalMinimum> local_minima_multistart(double theta0, double theta1, 
     std::vector<std::array<double, 3>> found;  // (J, ρ0, ρ1)
     for (int k = 0; k < starts; ++k) {
         nlopt::opt o(nlopt::LN_BOBYQA, 2);
-        o.set_min_objective([](const std::vector<double>& x, std::vector<double>&, void* p) { return (*static_cast<Data*>(p)->f)(x[0], x[1]); }, &data);
+        o.set_min_objective([](const std::vector<double>& x, std::vector<double>&,
+                               void* p) { return (*static_cast<Data*>(p)->f)(x[0], x[1]); },
+                            &data);
         o.set_lower_bounds({lo, lo});
         o.set_upper_bounds({hi, hi});
         o.set_xtol_abs(kMultistartXtol);
@@ -249,8 +276,9 @@ std::vector<LocalMinimum> local_minima_multistart(double theta0, double theta1, 
         } catch (const std::exception&) {
             continue;  // NLopt's roundoff stop: the start is dropped, others cover its basin
         }
-        if (!std::isfinite(f) || x[0] <= lo + kMultistartXtol || x[0] >= hi - kMultistartXtol || x[1] <= lo + kMultistartXtol || x[1] >= hi - kMultistartXtol)
-            continue;  // on the bound: not an interior minimum
+        if (!std::isfinite(f) || x[0] <= lo + kMultistartXtol || x[0] >= hi - kMultistartXtol ||
+            x[1] <= lo + kMultistartXtol || x[1] >= hi - kMultistartXtol)
+            continue;         // on the bound: not an interior minimum
         bool minimum = true;  // J does not decrease at the eight neighbours
         for (int da = -1; da <= 1 && minimum; ++da)
             for (int db = -1; db <= 1; ++db)
@@ -284,7 +312,8 @@ std::vector<LocalMinimum> local_minima_multistart(double theta0, double theta1, 
 #endif
 }
 
-PseudoEnergyMinimum minimize_pseudo_energy(double theta0, double theta1, const FastMinimizerOptions& opt, const std::vector<Eigen::Vector2d>& warm) {
+PseudoEnergyMinimum minimize_pseudo_energy(double theta0, double theta1, const FastMinimizerOptions& opt,
+                                           const std::vector<Eigen::Vector2d>& warm) {
     require_angles("minimize_pseudo_energy", theta0, theta1);
     if (is_undefined_node(theta0, theta1)) return undefined_node(theta0, theta1);
     long evaluations = 0;
@@ -294,7 +323,8 @@ PseudoEnergyMinimum minimize_pseudo_energy(double theta0, double theta1, const F
         return segment_energy_fast(UnitChordHermite(theta0, theta1, std::exp(a), std::exp(b)));
     };
     std::vector<Descent> runs;
-    for (std::size_t s = 0; s < starts.size() && static_cast<int>(s) < opt.starts; ++s) runs.push_back(newton_descent(fast_energy, starts[s].rho0, starts[s].rho1));
+    for (std::size_t s = 0; s < starts.size() && static_cast<int>(s) < opt.starts; ++s)
+        runs.push_back(newton_descent(fast_energy, starts[s].rho0, starts[s].rho1));
     for (const Eigen::Vector2d& w : warm)
         if (w[0] > 0 && w[1] > 0) runs.push_back(newton_descent(fast_energy, std::log(w[0]), std::log(w[1])));
     return choose(theta0, theta1, runs, evaluations);
@@ -312,7 +342,8 @@ PseudoEnergyMinimum measure_segment(double theta0, double theta1, double r0, dou
     fill_measures(m, r0, r1, segment_energy_fast(seg));
     for (const double v : {m.pseudo_energy, m.length, m.strain_energy, m.area, m.gradient_norm, m.error_estimate})
         if (!std::isfinite(v)) {
-            m.outcome = Outcome{Status::not_representable, "the measures of (r0, r1) = (" + full_precision(r0) + ", " + full_precision(r1) + ") overflow double precision"};
+            m.outcome = Outcome{Status::not_representable, "the measures of (r0, r1) = (" + full_precision(r0) + ", " +
+                                                               full_precision(r1) + ") overflow double precision"};
             break;
         }
     return m;
@@ -333,7 +364,9 @@ AngleMinimum minimize_over_end_angle(double theta, double scan_step) {
 
 AngleMinimum minimize_over_end_angle(double theta, const std::function<double(double)>& j_of, double scan_step) {
     require_angles("minimize_over_end_angle", theta, 0.0);
-    if (!(scan_step > 0.0 && scan_step <= 0.5)) fail_input("cagd::fairness::minimize_over_end_angle", "scan_step must be in (0, 0.5], got " + full_precision(scan_step));
+    if (!(scan_step > 0.0 && scan_step <= 0.5))
+        fail_input("cagd::fairness::minimize_over_end_angle",
+                   "scan_step must be in (0, 0.5], got " + full_precision(scan_step));
     const int n = static_cast<int>(std::ceil(2 * std::numbers::pi / scan_step));
     std::vector<double> t(static_cast<std::size_t>(n + 1)), v(static_cast<std::size_t>(n + 1));
     for (int i = 0; i <= n; ++i) {
@@ -343,8 +376,10 @@ AngleMinimum minimize_over_end_angle(double theta, const std::function<double(do
     return refine_end_angle_scan(theta, t, v, j_of);
 }
 
-AngleMinimum refine_end_angle_scan(double theta, const std::vector<double>& t, const std::vector<double>& v, const std::function<double(double)>& j_of) {
-    if (t.size() < 2 || t.size() != v.size()) fail_input("cagd::fairness::refine_end_angle_scan", "needs >= 2 scan angles with one J each");
+AngleMinimum refine_end_angle_scan(double theta, const std::vector<double>& t, const std::vector<double>& v,
+                                   const std::function<double(double)>& j_of) {
+    if (t.size() < 2 || t.size() != v.size())
+        fail_input("cagd::fairness::refine_end_angle_scan", "needs >= 2 scan angles with one J each");
     const auto best = static_cast<std::size_t>(std::min_element(v.begin(), v.end()) - v.begin());
     AngleMinimum out;
     out.theta = theta;

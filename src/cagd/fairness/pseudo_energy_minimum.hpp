@@ -47,36 +47,36 @@ namespace cagd::fairness {
 
 /// The minimum of J = L²E over r0, r1 > 0 at (θ0, θ1) and what it found on the way (eq 8).
 struct PseudoEnergyMinimum {
-    double theta0 = 0.0;  ///< θ0
-    double theta1 = 0.0;  ///< θ1
-    double pseudo_energy = 0.0;  ///< J(θ0, θ1)
-    double r0 = 0.0;  ///< r0 at the minimum
-    double r1 = 0.0;  ///< r1 at the minimum
-    double length = 0.0;         ///< L(θ0, θ1)
-    double area = 0.0;           ///< S(θ0, θ1)
-    double strain_energy = 0.0;  ///< E at the minimiser
+    double theta0 = 0.0;                ///< θ0
+    double theta1 = 0.0;                ///< θ1
+    double pseudo_energy = 0.0;         ///< J(θ0, θ1)
+    double r0 = 0.0;                    ///< r0 at the minimum
+    double r1 = 0.0;                    ///< r1 at the minimum
+    double length = 0.0;                ///< L(θ0, θ1)
+    double area = 0.0;                  ///< S(θ0, θ1)
+    double strain_energy = 0.0;         ///< E at the minimiser
     SegmentType type = SegmentType::x;  ///< the segment type at the minimum (eq 14)
-    double gradient_norm = 0.0;   ///< |∇_ρ J| at the answer
-    double error_estimate = 0.0;  ///< quadrature error bound on J (reference path)
-    int local_minima = 0;         ///< distinct local minima the descents reached (reference: the census)
-    double runner_up = 0.0;       ///< lowest J among the other local minima (+∞ if none)
-    double runner_up_r0 = 0.0;  ///< r0 of the runner-up
-    double runner_up_r1 = 0.0;  ///< r1 of the runner-up
-    long evaluations = 0;  ///< energy evaluations (all starts)
-    Outcome outcome;  ///< ok; no_solution at an undefined node; no_convergence
+    double gradient_norm = 0.0;         ///< |∇_ρ J| at the answer
+    double error_estimate = 0.0;        ///< quadrature error bound on J (reference path)
+    int local_minima = 0;               ///< distinct local minima the descents reached (reference: the census)
+    double runner_up = 0.0;             ///< lowest J among the other local minima (+∞ if none)
+    double runner_up_r0 = 0.0;          ///< r0 of the runner-up
+    double runner_up_r1 = 0.0;          ///< r1 of the runner-up
+    long evaluations = 0;               ///< energy evaluations (all starts)
+    Outcome outcome;                    ///< ok; no_solution at an undefined node; no_convergence
 };
 
 /// The box of (r0, r1) scanned for starting points, log-spaced.
 struct ScanBox {
     double r_lo = 1e-2;  ///< smallest r
-    double r_hi = 1e2;  ///< largest r
-    int n = 41;  ///< scan points per axis, log-spaced
+    double r_hi = 1e2;   ///< largest r
+    int n = 41;          ///< scan points per axis, log-spaced
 };
 
 /// Options of the reference minimiser (Romberg energies, Ceres conjugate gradients).
 struct ReferenceMinimizerOptions {
-    ScanBox box{};  ///< the scan for starting points
-    int starts = 6;  ///< descents from the lowest scan seeds
+    ScanBox box{};                   ///< the scan for starting points
+    int starts = 6;                  ///< descents from the lowest scan seeds
     double romberg_rel_tol = 1e-13;  ///< Romberg's relative tolerance per integral
     /// The census of local minima: a finer scan with the fast energy over a wider box, a Newton
     /// descent from every seed, and a reference descent from each distinct minimum it reaches, so
@@ -89,22 +89,23 @@ struct ReferenceMinimizerOptions {
 /// Options of the fast minimiser (Gauss–Legendre energies, Newton).
 struct FastMinimizerOptions {
     ScanBox box{1e-2, 1e2, 21};  ///< the scan for starting points
-    int starts = 6;  ///< descents from the lowest scan seeds
+    int starts = 6;              ///< descents from the lowest scan seeds
 };
 
 /// True for the undefined nodes (θ0, θ1 ∈ {0, ±π} to 1e-12).
 bool is_undefined_node(double theta0, double theta1);
 
 /// Reference path. Throws InvalidInput for angles outside [−π, π] or non-finite.
-PseudoEnergyMinimum minimize_pseudo_energy_reference(double theta0, double theta1, const ReferenceMinimizerOptions& opt = {});
+PseudoEnergyMinimum minimize_pseudo_energy_reference(double theta0, double theta1,
+                                                     const ReferenceMinimizerOptions& opt = {});
 /// Independent second minimiser (NLopt LD_LBFGS on the Romberg energy, no polish) from the same
 /// scan minima (up to 4); the lowest result.
 PseudoEnergyMinimum minimize_pseudo_energy_nlopt(double theta0, double theta1, const ScanBox& box = {});
 /// A local minimum of J(θ0, θ1; r0, r1) over (r0, r1).
 struct LocalMinimum {
     double pseudo_energy = 0.0;  ///< J
-    double r0 = 0.0;  ///< r0
-    double r1 = 0.0;  ///< r1
+    double r0 = 0.0;             ///< r0
+    double r1 = 0.0;             ///< r1
 };
 /// The census of the local minima of J(θ0, θ1; ·) over the box (ReferenceMinimizerOptions::census,
 /// whose count and runner-up the reference minimiser reports): the grid lines' one-dimensional
@@ -120,11 +121,13 @@ std::vector<LocalMinimum> local_minima_census(double theta0, double theta1, cons
 /// 1e-9 relative). Lowest J first; empty at an undefined node.
 /// The box is that of the census (ReferenceMinimizerOptions::census): minima on its boundary are
 /// not counted.
-std::vector<LocalMinimum> local_minima_multistart(double theta0, double theta1, int starts = 300, const ScanBox& box = {1e-3, 1e3, 0}, unsigned seed = 1);
+std::vector<LocalMinimum> local_minima_multistart(double theta0, double theta1, int starts = 300,
+                                                  const ScanBox& box = {1e-3, 1e3, 0}, unsigned seed = 1);
 
 /// Fast path. `warm` adds starting points (r0, r1), e.g. a neighbouring node's minimiser. Its
 /// `local_minima` and runner-up come from its coarse scan (a lower bound on the count).
-PseudoEnergyMinimum minimize_pseudo_energy(double theta0, double theta1, const FastMinimizerOptions& opt = {}, const std::vector<Eigen::Vector2d>& warm = {});
+PseudoEnergyMinimum minimize_pseudo_energy(double theta0, double theta1, const FastMinimizerOptions& opt = {},
+                                           const std::vector<Eigen::Vector2d>& warm = {});
 
 /// The largest tangent magnitude measure_segment accepts: the strain integrand squares the
 /// curvature numerator P'' × P' (of order r²), so r⁴ must stay well inside double range (1e308).
@@ -139,10 +142,10 @@ PseudoEnergyMinimum measure_segment(double theta0, double theta1, double r0, dou
 /// J(θ) = min_{θ1 ∈ [−π, π]} J(θ, θ1) and θ1(θ) (eq 11): a scan of θ1 with step `scan_step`
 /// (radians) over the fast J(θ, θ1), then Brent's method (Boost.Math) on the best bracket.
 struct AngleMinimum {
-    double theta = 0.0;  ///< θ
-    double theta1 = 0.0;  ///< θ1(θ), the minimiser
+    double theta = 0.0;          ///< θ
+    double theta1 = 0.0;         ///< θ1(θ), the minimiser
     double pseudo_energy = 0.0;  ///< J(θ)
-    Outcome outcome;  ///< ok, or why there is no minimum
+    Outcome outcome;             ///< ok, or why there is no minimum
 };
 /// The default scan: kEndAngleScanSteps steps of 2° from −π to π (181 angles).
 constexpr int kEndAngleScanSteps = 180;
@@ -154,7 +157,8 @@ AngleMinimum minimize_over_end_angle(double theta, const std::function<double(do
 /// The second half of both: given J at the scan angles t (increasing, J = +∞ where undefined), Brent's
 /// method on j_of over the bracket around the smallest; the scan's best point is kept when Brent's
 /// is not lower. Lets a caller take the scan from values it already has (a table's nodes).
-AngleMinimum refine_end_angle_scan(double theta, const std::vector<double>& t, const std::vector<double>& v, const std::function<double(double)>& j_of);
+AngleMinimum refine_end_angle_scan(double theta, const std::vector<double>& t, const std::vector<double>& v,
+                                   const std::function<double(double)>& j_of);
 /// The J that the end-angle scan uses for one fast minimum: its J, +∞ where it failed, and at the
 /// undefined nodes 0 (straight, θ = θ1 = 0) or +∞.
 double end_angle_energy(const PseudoEnergyMinimum& m);

@@ -35,7 +35,8 @@ NodePlacement parse_node_placement(const std::string& text) {
     if (text == "periodic") return NodePlacement::periodic;
     if (text == "endpoints") return NodePlacement::endpoints;
     if (text == "midpoints") return NodePlacement::midpoints;
-    fail_input("cagd::fairness::parse_node_placement", "placement must be periodic, endpoints or midpoints, got '" + text + "'");
+    fail_input("cagd::fairness::parse_node_placement",
+               "placement must be periodic, endpoints or midpoints, got '" + text + "'");
 }
 
 const char* to_string(TableMethod m) {
@@ -62,8 +63,10 @@ std::vector<double> AngleGrid::nodes() const {
     return out;
 }
 
-PseudoEnergyTable PseudoEnergyTable::build(const AngleGrid& grid, TableMethod method, int threads, bool use_symmetry, const std::function<void(long, long)>& progress) {
-    if (threads < 1) fail_input("cagd::fairness::PseudoEnergyTable::build", "threads must be >= 1, got " + std::to_string(threads));
+PseudoEnergyTable PseudoEnergyTable::build(const AngleGrid& grid, TableMethod method, int threads, bool use_symmetry,
+                                           const std::function<void(long, long)>& progress) {
+    if (threads < 1)
+        fail_input("cagd::fairness::PseudoEnergyTable::build", "threads must be >= 1, got " + std::to_string(threads));
     PseudoEnergyTable t;
     t.grid_ = grid;
     t.method_ = method;
@@ -94,10 +97,12 @@ PseudoEnergyTable PseudoEnergyTable::build(const AngleGrid& grid, TableMethod me
         static_cast<long>(todo.size()), threads,
         [&](long k) {
             const long idx = todo[static_cast<std::size_t>(k)];
-            const double a = t.axis_.nodes[static_cast<std::size_t>(idx / n)], b = t.axis_.nodes[static_cast<std::size_t>(idx % n)];
-            t.values_[static_cast<std::size_t>(idx)] = method == TableMethod::fast        ? minimize_pseudo_energy(a, b)
-                                                       : method == TableMethod::reference ? minimize_pseudo_energy_reference(a, b)
-                                                                                          : minimize_pseudo_energy_nlopt(a, b);
+            const double a = t.axis_.nodes[static_cast<std::size_t>(idx / n)],
+                         b = t.axis_.nodes[static_cast<std::size_t>(idx % n)];
+            t.values_[static_cast<std::size_t>(idx)] = method == TableMethod::fast ? minimize_pseudo_energy(a, b)
+                                                       : method == TableMethod::reference
+                                                           ? minimize_pseudo_energy_reference(a, b)
+                                                           : minimize_pseudo_energy_nlopt(a, b);
         },
         progress);
     if (use_symmetry) {
@@ -145,7 +150,8 @@ PseudoEnergyTable::CellPosition PseudoEnergyTable::locate_cell(double theta0, do
     require_tangent_angle(who, theta1, "theta1");
     if (is_undefined_node(theta0, theta1))
         fail_input(who,
-                   "(" + full_precision(theta0) + ", " + full_precision(theta1) + ") is an undefined node (theta0, theta1 in {0, +-pi}): r0, r1 do not exist there (paper §4.1)");
+                   "(" + full_precision(theta0) + ", " + full_precision(theta1) +
+                       ") is an undefined node (theta0, theta1 in {0, +-pi}): r0, r1 do not exist there (paper §4.1)");
     CellPosition c;
     axis_.locate(theta0, c.i, c.u);
     axis_.locate(theta1, c.j, c.v);
@@ -157,7 +163,8 @@ namespace {
 // Bilinear blend of the cell (i, j) at local (u, v) over its defined corners of type `want`
 // (x: every defined corner), the weights renormalised; `at(a, b)` gives a node's value.
 template <class NodeValue>
-TableValue blend_cell(int n, int i, int j, double u, double v, SegmentType want, const NodeValue& at, double theta0, double theta1) {
+TableValue blend_cell(int n, int i, int j, double u, double v, SegmentType want, const NodeValue& at, double theta0,
+                      double theta1) {
     const int i1 = next_node(i, n), j1 = next_node(j, n);
     const int ci[4] = {i, i1, i, i1}, cj[4] = {j, j, j1, j1};
     const double w[4] = {(1 - u) * (1 - v), u * (1 - v), (1 - u) * v, u * v};
@@ -181,7 +188,8 @@ TableValue blend_cell(int n, int i, int j, double u, double v, SegmentType want,
             const TableValue& m = at(ci[k], cj[k]);
             if (m.type != SegmentType::x && (want == SegmentType::x || m.type == want)) return m;
         }
-        fail_input("cagd::fairness::PseudoEnergyTable::lookup", "no defined table node near (" + full_precision(theta0) + ", " + full_precision(theta1) + ")");
+        fail_input("cagd::fairness::PseudoEnergyTable::lookup",
+                   "no defined table node near (" + full_precision(theta0) + ", " + full_precision(theta1) + ")");
     }
     out.pseudo_energy /= wsum;
     out.r0 /= wsum;
@@ -195,7 +203,8 @@ TableValue blend_cell(int n, int i, int j, double u, double v, SegmentType want,
 // The corners of `want`'s type (and defined) in the cell (i, j), read at local (u, v) by one of the
 // three further same-type rules of CellRule: each yields weights over those corners that sum to 1.
 template <class NodeValue>
-TableValue blend_same_type(CellRule rule, int n, int i, int j, double u, double v, SegmentType want, const NodeValue& at) {
+TableValue blend_same_type(CellRule rule, int n, int i, int j, double u, double v, SegmentType want,
+                           const NodeValue& at) {
     const int i1 = next_node(i, n), j1 = next_node(j, n);
     const int ci[4] = {i, i1, i, i1}, cj[4] = {j, j, j1, j1};
     const double cu[4] = {0, 1, 0, 1}, cv[4] = {0, 0, 1, 1};
@@ -205,7 +214,9 @@ TableValue blend_same_type(CellRule rule, int n, int i, int j, double u, double 
         m[k] = at(ci[k], cj[k]);
         if (m[k].type != SegmentType::x && m[k].type == want) used[count++] = k;
     }
-    if (count == 0) fail_input("cagd::fairness::PseudoEnergyTable::lookup", "no defined corner of the nearest node's type in the cell");  // (the nearest is one)
+    if (count == 0)
+        fail_input("cagd::fairness::PseudoEnergyTable::lookup",
+                   "no defined corner of the nearest node's type in the cell");  // (the nearest is one)
     double w[4] = {0, 0, 0, 0};
     if (rule == CellRule::same_type_mean_filled) {
         // Bilinear over all four corners, every other-type corner carrying the same-type mean.
@@ -264,18 +275,21 @@ TableValue blend_same_type(CellRule rule, int n, int i, int j, double u, double 
 }
 
 bool is_same_type_variant(CellRule c) {
-    return c == CellRule::same_type_linear || c == CellRule::same_type_inverse_distance || c == CellRule::same_type_mean_filled;
+    return c == CellRule::same_type_linear || c == CellRule::same_type_inverse_distance ||
+           c == CellRule::same_type_mean_filled;
 }
 
 }  // namespace
 
 TableValue PseudoEnergyTable::lookup(double theta0, double theta1, bool same_type_only) const {
-    const CellPosition cell = locate_cell(theta0, theta1);  // (not a structured binding: the lambdas below capture i, j)
+    const CellPosition cell =
+        locate_cell(theta0, theta1);  // (not a structured binding: the lambdas below capture i, j)
     const int i = cell.i, j = cell.j;
     const double u = cell.u, v = cell.v;
     const int n = grid_.n;
     const auto at = [&](int a, int b) -> const TableValue& { return packed_[static_cast<std::size_t>(a * n + b)]; };
-    const SegmentType want = same_type_only ? at(u < 0.5 ? i : next_node(i, n), v < 0.5 ? j : next_node(j, n)).type : SegmentType::x;
+    const SegmentType want =
+        same_type_only ? at(u < 0.5 ? i : next_node(i, n), v < 0.5 ? j : next_node(j, n)).type : SegmentType::x;
     return blend_cell(n, i, j, u, v, want, at, theta0, theta1);
 }
 
@@ -296,9 +310,13 @@ TableValue PseudoEnergyTable::node_value(int i, int j, double runner_up_within) 
     const auto k = static_cast<std::size_t>(i * grid_.n + j);
     const TableValue& v = packed_[k];
     const PseudoEnergyMinimum& m = values_[k];
-    if (!(runner_up_within > 0.0) || v.type == SegmentType::x || !std::isfinite(m.runner_up) || m.runner_up - m.pseudo_energy > runner_up_within) return v;
+    if (!(runner_up_within > 0.0) || v.type == SegmentType::x || !std::isfinite(m.runner_up) ||
+        m.runner_up - m.pseudo_energy > runner_up_within)
+        return v;
     if (!(m.runner_up_r0 > 0.0 && m.runner_up_r1 > 0.0))
-        fail_input("cagd::fairness::PseudoEnergyTable::lookup", "node (" + full_precision(m.theta0) + ", " + full_precision(m.theta1) + ") has no runner-up r0, r1 stored");
+        fail_input(
+            "cagd::fairness::PseudoEnergyTable::lookup",
+            "node (" + full_precision(m.theta0) + ", " + full_precision(m.theta1) + ") has no runner-up r0, r1 stored");
     const PseudoEnergyMinimum r = measure_segment(m.theta0, m.theta1, m.runner_up_r0, m.runner_up_r1);
     return {r.pseudo_energy, r.r0, r.r1, r.length, r.area, r.type};
 }
@@ -306,13 +324,15 @@ TableValue PseudoEnergyTable::node_value(int i, int j, double runner_up_within) 
 int PseudoEnergyTable::runner_up_nodes(double within) const {
     int count = 0;
     for (std::size_t k = 0; k < values_.size(); ++k)
-        count += packed_[k].type != SegmentType::x && std::isfinite(values_[k].runner_up) && values_[k].runner_up - values_[k].pseudo_energy <= within;
+        count += packed_[k].type != SegmentType::x && std::isfinite(values_[k].runner_up) &&
+                 values_[k].runner_up - values_[k].pseudo_energy <= within;
     return count;
 }
 
 TableValue PseudoEnergyTable::lookup(double theta0, double theta1, const TableReading& reading) const {
     if (reading.is_default()) return lookup(theta0, theta1, true);
-    const CellPosition cell = locate_cell(theta0, theta1);  // (not a structured binding: the lambdas below capture i, j)
+    const CellPosition cell =
+        locate_cell(theta0, theta1);  // (not a structured binding: the lambdas below capture i, j)
     const int i = cell.i, j = cell.j;
     const double u = cell.u, v = cell.v;
     const int n = grid_.n;
@@ -321,7 +341,9 @@ TableValue PseudoEnergyTable::lookup(double theta0, double theta1, const TableRe
     bool done = false;
     if (reading.cell == CellRule::nearest_node_down || reading.cell == CellRule::nearest_node_up) {
         const bool up = reading.cell == CellRule::nearest_node_up;
-        const auto pick = [&](int lower, double t) { return (std::abs(t - 0.5) <= 1e-9 ? up : t > 0.5) ? next_node(lower, n) : lower; };
+        const auto pick = [&](int lower, double t) {
+            return (std::abs(t - 0.5) <= 1e-9 ? up : t > 0.5) ? next_node(lower, n) : lower;
+        };
         out = at(pick(i, u), pick(j, v));
         done = out.type != SegmentType::x;
     }
@@ -334,7 +356,9 @@ TableValue PseudoEnergyTable::lookup(double theta0, double theta1, const TableRe
         }
     }
     if (!done) {
-        const SegmentType want = reading.cell == CellRule::same_type ? at(u < 0.5 ? i : next_node(i, n), v < 0.5 ? j : next_node(j, n)).type : SegmentType::x;
+        const SegmentType want = reading.cell == CellRule::same_type
+                                     ? at(u < 0.5 ? i : next_node(i, n), v < 0.5 ? j : next_node(j, n)).type
+                                     : SegmentType::x;
         out = blend_cell(n, i, j, u, v, want, at, theta0, theta1);
     }
     if (reading.radii) {

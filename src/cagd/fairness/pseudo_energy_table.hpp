@@ -54,7 +54,7 @@ NodePlacement parse_node_placement(const std::string& text);  ///< throws Invali
 
 /// The nodes of a table: N per axis and their placement.
 struct AngleGrid {
-    int n = 36;  ///< nodes per axis, ≥ 2
+    int n = 36;                                         ///< nodes per axis, ≥ 2
     NodePlacement placement = NodePlacement::periodic;  ///< where they lie
     /// The N node angles, ascending.
     std::vector<double> nodes() const;  ///< ascending, in [−π, π]
@@ -67,11 +67,11 @@ const char* to_string(TableMethod m);
 
 /// The values at (θ0, θ1), read from the table.
 struct TableValue {
-    double pseudo_energy = 0.0;  ///< J
-    double r0 = 0.0;  ///< r0
-    double r1 = 0.0;  ///< r1
-    double length = 0.0;  ///< L
-    double area = 0.0;  ///< S
+    double pseudo_energy = 0.0;         ///< J
+    double r0 = 0.0;                    ///< r0
+    double r1 = 0.0;                    ///< r1
+    double length = 0.0;                ///< L
+    double area = 0.0;                  ///< S
     SegmentType type = SegmentType::x;  ///< the type whose nodes were used
 };
 
@@ -98,15 +98,23 @@ struct TableValue {
 ///   runner_up_within  > 0: a node whose second local minimum is within this of the global one in J
 ///                     holds the second instead (as a minimiser that stopped in the other basin
 ///                     would); its J, L, S measured at the runner-up's r0, r1
-enum class CellRule { same_type, all_corners, nearest_node_down, nearest_node_up, same_type_linear, same_type_inverse_distance, same_type_mean_filled };
+enum class CellRule {
+    same_type,
+    all_corners,
+    nearest_node_down,
+    nearest_node_up,
+    same_type_linear,
+    same_type_inverse_distance,
+    same_type_mean_filled
+};
 /// "same_type", "all_corners", "nearest_node_down", "nearest_node_up", "same_type_linear",
 /// "same_type_inverse_distance" or "same_type_mean_filled".
 const char* to_string(CellRule c);
 /// How a table is read between its nodes (see above).
 struct TableReading {
     CellRule cell = CellRule::same_type;  ///< which corners, or which node
-    bool radii = false;  ///< interpolate r0, r1 and measure J, L, S of their segment
-    double runner_up_within = 0.0;  ///< a node whose runner-up is within this of J holds the runner-up (0: never)
+    bool radii = false;                   ///< interpolate r0, r1 and measure J, L, S of their segment
+    double runner_up_within = 0.0;        ///< a node whose runner-up is within this of J holds the runner-up (0: never)
     /// Whether this is the reading of lookup(θ0, θ1): same_type, values interpolated, no runner-up.
     bool is_default() const { return cell == CellRule::same_type && !radii && !(runner_up_within > 0.0); }
 };
@@ -115,12 +123,15 @@ struct TableReading {
 class PseudoEnergyTable {
 public:
     /// progress(done, total) is called from the building threads now and then (may be empty).
-    static PseudoEnergyTable build(const AngleGrid& grid, TableMethod method, int threads = 2, bool use_symmetry = true, const std::function<void(long, long)>& progress = {});
+    static PseudoEnergyTable build(const AngleGrid& grid, TableMethod method, int threads = 2, bool use_symmetry = true,
+                                   const std::function<void(long, long)>& progress = {});
     /// Loads a table written by save() / `cagd energy-table`; grid, placement and method come from
     /// its first line. Throws InvalidInput for a missing, foreign, truncated or other-format file.
     static PseudoEnergyTable load(const std::string& path);
-    /// load(path) when the file holds a table of this grid and method, else build and save it (locked: a concurrent caller waits).
-    static PseudoEnergyTable load_or_build(const std::string& path, const AngleGrid& grid, TableMethod method, int threads = 2);
+    /// load(path) when the file holds a table of this grid and method, else build and save it (locked: a concurrent
+    /// caller waits).
+    static PseudoEnergyTable load_or_build(const std::string& path, const AngleGrid& grid, TableMethod method,
+                                           int threads = 2);
     /// The table from the user's cache (io/user_cache.hpp), built and saved there on a miss with
     /// the build notice and progress; built in memory when the cache is off or cannot be written.
     /// The same table as build(grid, method, threads), bit for bit.
@@ -144,7 +155,8 @@ public:
     /// Nodes whose second local minimum is within `within` of the global one in J.
     int runner_up_nodes(double within) const;
 
-    /// Writes the table to `path` as an OutputFile (io/output_file.hpp): whole or not at all; OutputError on a failed write.
+    /// Writes the table to `path` as an OutputFile (io/output_file.hpp): whole or not at all; OutputError on a failed
+    /// write.
     void save(const std::string& path) const;
     /// The same text to a stream. Undefined nodes (θ0 or θ1 at 0 or ±π, eq 8) and nodes without a
     /// second minimum carry inf in J and runner_up: the format's own marks, read back by load().
@@ -153,7 +165,8 @@ public:
     std::string header_line() const;
 
 private:
-    static PseudoEnergyTable load_or_build(const std::string& path, const AngleGrid& grid, TableMethod method, int threads, bool user_cache);
+    static PseudoEnergyTable load_or_build(const std::string& path, const AngleGrid& grid, TableMethod method,
+                                           int threads, bool user_cache);
     AngleGrid grid_;
     TableMethod method_ = TableMethod::fast;
     detail::PeriodicAxis axis_;

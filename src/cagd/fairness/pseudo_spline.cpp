@@ -31,13 +31,17 @@ TangentOptimization parse_tangent_optimization(const std::string& text) {
 
 TableValue ExactOracle::segment(double theta0, double theta1) const {
     const PseudoEnergyMinimum m = minimize_pseudo_energy(theta0, theta1);
-    if (!m.outcome.ok()) fail_input("cagd::fairness::ExactOracle::segment", "no minimum at (" + full_precision(theta0) + ", " + full_precision(theta1) + "): " + m.outcome.message);
+    if (!m.outcome.ok())
+        fail_input("cagd::fairness::ExactOracle::segment", "no minimum at (" + full_precision(theta0) + ", " +
+                                                               full_precision(theta1) + "): " + m.outcome.message);
     return TableValue{m.pseudo_energy, m.r0, m.r1, m.length, m.area, m.type};
 }
 
 std::pair<double, double> ExactOracle::angle_minimum(double theta) const {
     const AngleMinimum a = minimize_over_end_angle(theta);
-    if (!a.outcome.ok()) fail_input("cagd::fairness::ExactOracle::angle_minimum", "no J(theta) at " + full_precision(theta) + ": " + a.outcome.message);
+    if (!a.outcome.ok())
+        fail_input("cagd::fairness::ExactOracle::angle_minimum",
+                   "no J(theta) at " + full_precision(theta) + ": " + a.outcome.message);
     return {a.pseudo_energy, a.theta1};
 }
 
@@ -102,11 +106,13 @@ struct ConstructionOutputs {
 };
 
 // `validated`: the points have passed require_valid_points(points, closed ? 3 : 2, true, closed, …).
-spline::PiecewiseHermiteCurve construct(const char* who, const PointList& points, const SegmentOracle& oracle, TangentOptimization mode, bool closed, TangentTie tie,
+spline::PiecewiseHermiteCurve construct(const char* who, const PointList& points, const SegmentOracle& oracle,
+                                        TangentOptimization mode, bool closed, TangentTie tie,
                                         ConstructionOutputs& result, bool validated = false) {
     if (!validated) require_valid_points(points, closed ? 3 : 2, true, closed, who);
     if (points.cols() != 2) fail_input(who, "needs planar points (2 columns), got " + std::to_string(points.cols()));
-    if (!(tie.position >= 0.0 && tie.position <= 1.0)) fail_input(who, "tie.position must lie in [0, 1], got " + full_precision(tie.position));
+    if (!(tie.position >= 0.0 && tie.position <= 1.0))
+        fail_input(who, "tie.position must lie in [0, 1], got " + full_precision(tie.position));
     const Eigen::Index np = points.rows();
     const Eigen::Index spans = closed ? np : np - 1;
     // Neighbours by comparison, not modulo (an integer division per use, several per point).
@@ -115,7 +121,9 @@ spline::PiecewiseHermiteCurve construct(const char* who, const PointList& points
 
     // (Chords and tangents are recomputed where needed rather than stored: at 10^6 points the
     // fresh memory of every array costs page faults, a quarter of the construction's time.)
-    const auto chord = [&](Eigen::Index i) -> Eigen::Vector2d { return (points.row(next(i)) - points.row(i)).transpose(); };
+    const auto chord = [&](Eigen::Index i) -> Eigen::Vector2d {
+        return (points.row(next(i)) - points.row(i)).transpose();
+    };
     std::vector<double>&phi = result.chord_angle, &len = result.chord_length;
     phi.resize(static_cast<std::size_t>(spans));
     len.resize(static_cast<std::size_t>(spans));
@@ -129,8 +137,9 @@ spline::PiecewiseHermiteCurve construct(const char* who, const PointList& points
         const Eigen::Index in = incoming(i);  // i < spans: the chord leaving point i is chord i
         const double t = wrap_angle(phi[static_cast<std::size_t>(i)] - phi[static_cast<std::size_t>(in)]);
         if (std::abs(std::abs(t) - std::numbers::pi) <= 1e-12)
-            fail_input(who,
-                       "the points turn by pi at point " + std::to_string(i) + " (a hairpin): no tangent direction between the chords, the pseudo-energy table is undefined there");
+            fail_input(who, "the points turn by pi at point " + std::to_string(i) +
+                                " (a hairpin): no tangent direction between the chords, the pseudo-energy table is "
+                                "undefined there");
         return t;
     };
 
@@ -139,7 +148,8 @@ spline::PiecewiseHermiteCurve construct(const char* who, const PointList& points
     if (result.spans) result.spans->reserve(static_cast<std::size_t>(spans));
     // The paper's tables (TableOracle itself, not a subclass) are called without the virtual call:
     // eq (12) reads J(θ) six times per point in the approximate mode.
-    const TableOracle* table = typeid(oracle) == typeid(TableOracle) ? static_cast<const TableOracle*>(&oracle) : nullptr;
+    const TableOracle* table =
+        typeid(oracle) == typeid(TableOracle) ? static_cast<const TableOracle*>(&oracle) : nullptr;
     const auto J = [&](double theta) {
         ++result.oracle_calls;
         const double t = wrap_angle(theta);
@@ -156,12 +166,15 @@ spline::PiecewiseHermiteCurve construct(const char* who, const PointList& points
         double a = 0.0;
         if (std::abs(tau) > 0.0) {
             if (mode == TangentOptimization::none) {
-                const Eigen::Vector2d d = chord(static_cast<Eigen::Index>(in)) + chord(static_cast<Eigen::Index>(out));  // P_{i+1} − P_{i−1}
+                const Eigen::Vector2d d =
+                    chord(static_cast<Eigen::Index>(in)) + chord(static_cast<Eigen::Index>(out));  // P_{i+1} − P_{i−1}
                 a = wrap_angle(std::atan2(d.y(), d.x()) - phi[out]);
             } else {
                 const auto w = [&](double alpha) { return len[in] * J(alpha + tau) + len[out] * J(alpha); };
                 const double lo = std::min(0.0, -tau), hi = std::max(0.0, -tau);
-                a = mode == TangentOptimization::exact && breakpoints ? detail::minimise_piecewise_linear_w(w, lo, hi, tau, *breakpoints, tie) : minimise_w(w, lo, hi, mode, tie);
+                a = mode == TangentOptimization::exact && breakpoints
+                        ? detail::minimise_piecewise_linear_w(w, lo, hi, tau, *breakpoints, tie)
+                        : minimise_w(w, lo, hi, mode, tie);
             }
         }
         alphas[static_cast<std::size_t>(i)] = a;
@@ -182,7 +195,8 @@ spline::PiecewiseHermiteCurve construct(const char* who, const PointList& points
     // α_n being relative to the incoming chord). The span loop carries each from the span that
     // ends at a point to the one that starts there.
     const auto tangent = [&](Eigen::Index i) {
-        const double psi = phi[static_cast<std::size_t>(std::min<Eigen::Index>(i, spans - 1))] + alphas[static_cast<std::size_t>(i)];
+        const double psi =
+            phi[static_cast<std::size_t>(std::min<Eigen::Index>(i, spans - 1))] + alphas[static_cast<std::size_t>(i)];
         return Eigen::Vector2d(std::cos(psi), std::sin(psi));
     };
     Eigen::Vector2d start_tangent = tangent(0);
@@ -197,7 +211,9 @@ spline::PiecewiseHermiteCurve construct(const char* who, const PointList& points
         s.theta0 = wrap_angle(alphas[k]);
         const bool last_open = !closed && i == spans - 1;
         // next(i) < spans whenever the span is not the last of an open curve
-        s.theta1 = last_open ? wrap_angle(alphas[k + 1]) : wrap_angle(alphas[static_cast<std::size_t>(next(i))] + phi[static_cast<std::size_t>(next(i))] - phi[k]);
+        s.theta1 = last_open ? wrap_angle(alphas[k + 1])
+                             : wrap_angle(alphas[static_cast<std::size_t>(next(i))] +
+                                          phi[static_cast<std::size_t>(next(i))] - phi[k]);
         if (std::abs(s.theta0) <= kStraight && std::abs(s.theta1) <= kStraight) {
             s.value = TableValue{0.0, 1.0, 1.0, 1.0, 0.0, SegmentType::c};
         } else {
@@ -222,28 +238,39 @@ spline::PiecewiseHermiteCurve construct(const char* who, const PointList& points
 
 }  // namespace
 
-PseudoSpline pseudo_spline(const PointList& points, const SegmentOracle& oracle, TangentOptimization mode, bool closed, TangentTie tie) {
-    PseudoSpline ps{spline::PiecewiseHermiteCurve(Eigen::MatrixXd::Zero(2, 2), Eigen::MatrixXd::Zero(1, 2), Eigen::MatrixXd::Zero(1, 2)), {}, {}, {}, {}, 0};
+PseudoSpline pseudo_spline(const PointList& points, const SegmentOracle& oracle, TangentOptimization mode, bool closed,
+                           TangentTie tie) {
+    PseudoSpline ps{spline::PiecewiseHermiteCurve(Eigen::MatrixXd::Zero(2, 2), Eigen::MatrixXd::Zero(1, 2),
+                                                  Eigen::MatrixXd::Zero(1, 2)),
+                    {},
+                    {},
+                    {},
+                    {},
+                    0};
     ConstructionOutputs out{ps.alpha, ps.chord_angle, ps.chord_length, &ps.spans, ps.oracle_calls};
     ps.curve = construct("cagd::fairness::pseudo_spline", points, oracle, mode, closed, tie, out);
     return ps;
 }
 
 namespace {
-PseudoSplineCurve pseudo_spline_curve_of(const PointList& points, const SegmentOracle& oracle, TangentOptimization mode, bool closed, TangentTie tie, bool validated) {
+PseudoSplineCurve pseudo_spline_curve_of(const PointList& points, const SegmentOracle& oracle, TangentOptimization mode,
+                                         bool closed, TangentTie tie, bool validated) {
     std::vector<double> alpha, chord_angle, chord_length;
     long calls = 0;
     ConstructionOutputs out{alpha, chord_angle, chord_length, nullptr, calls};
-    spline::PiecewiseHermiteCurve curve = construct("cagd::fairness::pseudo_spline_curve", points, oracle, mode, closed, tie, out, validated);
+    spline::PiecewiseHermiteCurve curve =
+        construct("cagd::fairness::pseudo_spline_curve", points, oracle, mode, closed, tie, out, validated);
     return PseudoSplineCurve{std::move(curve), out.length, out.area, out.pseudo_energy};
 }
 }  // namespace
 
-PseudoSplineCurve pseudo_spline_curve(const PointList& points, const SegmentOracle& oracle, TangentOptimization mode, bool closed, TangentTie tie) {
+PseudoSplineCurve pseudo_spline_curve(const PointList& points, const SegmentOracle& oracle, TangentOptimization mode,
+                                      bool closed, TangentTie tie) {
     return pseudo_spline_curve_of(points, oracle, mode, closed, tie, false);
 }
 
-PseudoSplineCurve pseudo_spline_curve(const ValidPoints& points, const SegmentOracle& oracle, TangentOptimization mode, TangentTie tie) {
+PseudoSplineCurve pseudo_spline_curve(const ValidPoints& points, const SegmentOracle& oracle, TangentOptimization mode,
+                                      TangentTie tie) {
     const bool closed = points.closed();
     return pseudo_spline_curve_of(points.points(), oracle, mode, closed, tie, points.cover(closed ? 3 : 2, closed));
 }
@@ -253,12 +280,15 @@ namespace {
 // The smallest N ≥ 3 with polygon_error(N) < spline_error; polygon_error decreases in N.
 template <class PolygonError>
 long first_closer_polygon(const char* who, double spline_error, const PolygonError& polygon_error) {
-    if (!(spline_error > 0.0 && std::isfinite(spline_error))) fail_input(who, "spline_error must be positive and finite, got " + full_precision(spline_error));
+    if (!(spline_error > 0.0 && std::isfinite(spline_error)))
+        fail_input(who, "spline_error must be positive and finite, got " + full_precision(spline_error));
     long lo = 2, hi = 3;  // invariant: polygon_error(lo) ≥ spline_error (or lo = 2), search hi
     while (polygon_error(hi) >= spline_error) {
         lo = hi;
         hi *= 2;
-        if (hi > 1000000000L) fail_input(who, "spline_error " + full_precision(spline_error) + " is below every polygon error up to N = 1e9");
+        if (hi > 1000000000L)
+            fail_input(who,
+                       "spline_error " + full_precision(spline_error) + " is below every polygon error up to N = 1e9");
     }
     while (hi - lo > 1) {  // bisection on the first N below spline_error
         const long mid = lo + (hi - lo) / 2;
@@ -272,13 +302,15 @@ long first_closer_polygon(const char* who, double spline_error, const PolygonErr
 long equivalent_polygon_points(double spline_error, CircleMeasure measure) {
     return first_closer_polygon("cagd::fairness::equivalent_polygon_points", spline_error, [&](long n) {
         const double nd = static_cast<double>(n), x = std::numbers::pi / nd;
-        return measure == CircleMeasure::perimeter ? 2.0 * std::numbers::pi - 2.0 * nd * std::sin(x) : std::numbers::pi - 0.5 * nd * std::sin(2.0 * x);
+        return measure == CircleMeasure::perimeter ? 2.0 * std::numbers::pi - 2.0 * nd * std::sin(x)
+                                                   : std::numbers::pi - 0.5 * nd * std::sin(2.0 * x);
     });
 }
 
 long equivalent_helix_polygon_points(double relative_error, double rise_over_radius) {
     const char* who = "cagd::fairness::equivalent_helix_polygon_points";
-    if (!(rise_over_radius >= 0.0 && std::isfinite(rise_over_radius))) fail_input(who, "rise_over_radius must be finite and ≥ 0, got " + full_precision(rise_over_radius));
+    if (!(rise_over_radius >= 0.0 && std::isfinite(rise_over_radius)))
+        fail_input(who, "rise_over_radius must be finite and ≥ 0, got " + full_precision(rise_over_radius));
     const double p = rise_over_radius, turn = std::sqrt(4.0 * std::numbers::pi * std::numbers::pi + p * p);
     return first_closer_polygon(who, relative_error, [&](long n) {
         const double nd = static_cast<double>(n), half_chord = std::sin(std::numbers::pi / nd), rise = p / nd;

@@ -81,7 +81,8 @@
 
 namespace cagd::fairness {
 
-/// The tangent choice of eq (12): none (Hermite A's directions), exact (the least value; see above) or approximate (a parabola through three values, Table 4).
+/// The tangent choice of eq (12): none (Hermite A's directions), exact (the least value; see above) or approximate (a
+/// parabola through three values, Table 4).
 enum class TangentOptimization { none, exact, approximate };
 /// Exact mode, where w is flat over a stretch (J(θ) read linearly from a table: both angles of w in one
 /// cell): every point of the stretch is a minimum, and `position` says which one, from 0 (its lower
@@ -118,7 +119,9 @@ public:
     /// table should be derived under the same reading (AngleMinimumTable::from_energy_table).
     TableOracle(const PseudoEnergyTable& energy, const AngleMinimumTable& angle, const TableReading& reading = {})
         : energy_(energy), angle_(angle), reading_(reading), default_reading_(reading.is_default()) {}
-    TableValue segment(double theta0, double theta1) const override { return default_reading_ ? energy_.lookup(theta0, theta1) : energy_.lookup(theta0, theta1, reading_); }
+    TableValue segment(double theta0, double theta1) const override {
+        return default_reading_ ? energy_.lookup(theta0, theta1) : energy_.lookup(theta0, theta1, reading_);
+    }
     std::pair<double, double> angle_minimum(double theta) const override { return angle_.lookup(theta); }
     double angle_energy(double theta) const override { return angle_.pseudo_energy(theta); }
     const std::vector<double>* angle_energy_nodes() const override { return &angle_.nodes(); }
@@ -134,7 +137,7 @@ private:
 /// derived from it as section 4.1 describes. Keep the object alive while its oracle() is used.
 struct PseudoSplineTables {
     PseudoEnergyTable energy;  ///< the 2-D table
-    AngleMinimumTable angle;  ///< J(θ), θ1(θ) derived from it
+    AngleMinimumTable angle;   ///< J(θ), θ1(θ) derived from it
     /// The tables of a 2-D table, the angle table derived as section 4.1 describes.
     static PseudoSplineTables from(PseudoEnergyTable energy) {
         AngleMinimumTable angle = AngleMinimumTable::from_energy_table(energy);
@@ -170,16 +173,16 @@ private:
 struct PseudoSplineSpan {
     double theta0 = 0.0;  ///< θ0 in the span's unit-chord frame (eq 9)
     double theta1 = 0.0;  ///< θ1 in the span's unit-chord frame
-    TableValue value;                   ///< r0, r1, J, L, S used for the span
+    TableValue value;     ///< r0, r1, J, L, S used for the span
 };
 
 /// The pseudo-spline through points and how it was built.
 struct PseudoSpline {
-    spline::PiecewiseHermiteCurve curve;  ///< the curve, in Hermite form on unit spans
-    std::vector<double> alpha;         ///< one per point (see above for the last point of an open curve)
-    std::vector<double> chord_angle;   ///< φ_i, one per span
-    std::vector<double> chord_length;  ///< l_i, one per span
-    std::vector<PseudoSplineSpan> spans;  ///< one per span
+    spline::PiecewiseHermiteCurve curve;       ///< the curve, in Hermite form on unit spans
+    std::vector<double> alpha;                 ///< one per point (see above for the last point of an open curve)
+    std::vector<double> chord_angle;           ///< φ_i, one per span
+    std::vector<double> chord_length;          ///< l_i, one per span
+    std::vector<PseudoSplineSpan> spans;       ///< one per span
     long oracle_calls = 0;                     ///< J(θ) evaluations spent on the tangent directions
     double length_from_tables() const;         ///< eq (16), (17)
     double area_from_tables() const;           ///< eq (19)–(21), signed (counter-clockwise positive)
@@ -188,22 +191,26 @@ struct PseudoSpline {
 };
 
 /// The pseudo-spline through the points (eq 9–13): tangents by `mode`, segments from `oracle`.
-PseudoSpline pseudo_spline(const PointList& points, const SegmentOracle& oracle, TangentOptimization mode, bool closed, TangentTie tie = {});
+PseudoSpline pseudo_spline(const PointList& points, const SegmentOracle& oracle, TangentOptimization mode, bool closed,
+                           TangentTie tie = {});
 
 /// The curve and the three table sums alone: pseudo_spline(...).curve, .length_from_tables(),
 /// .area_from_tables() and .pseudo_energy_from_tables(), bit for bit, without the per-span records
 /// and per-point arrays. What the method registry builds.
 struct PseudoSplineCurve {
-    spline::PiecewiseHermiteCurve curve;  ///< the curve, in Hermite form on unit spans
-    double length_from_tables = 0.0;  ///< eq (16)–(17)
-    double area_from_tables = 0.0;  ///< eq (19)–(21)
+    spline::PiecewiseHermiteCurve curve;     ///< the curve, in Hermite form on unit spans
+    double length_from_tables = 0.0;         ///< eq (16)–(17)
+    double area_from_tables = 0.0;           ///< eq (19)–(21)
     double pseudo_energy_from_tables = 0.0;  ///< Σ l_i J_i
 };
-/// The pseudo-spline's curve and table sums, without the per-span records (the same curve bit for bit; what the registry builds).
-PseudoSplineCurve pseudo_spline_curve(const PointList& points, const SegmentOracle& oracle, TangentOptimization mode, bool closed, TangentTie tie = {});
+/// The pseudo-spline's curve and table sums, without the per-span records (the same curve bit for bit; what the
+/// registry builds).
+PseudoSplineCurve pseudo_spline_curve(const PointList& points, const SegmentOracle& oracle, TangentOptimization mode,
+                                      bool closed, TangentTie tie = {});
 /// The same through points validated already (closed as they were validated): the same curve, the
 /// points not checked again where their checks cover this construction's.
-PseudoSplineCurve pseudo_spline_curve(const ValidPoints& points, const SegmentOracle& oracle, TangentOptimization mode, TangentTie tie = {});
+PseudoSplineCurve pseudo_spline_curve(const ValidPoints& points, const SegmentOracle& oracle, TangentOptimization mode,
+                                      TangentTie tie = {});
 
 /// "Equivalent points" of Tables 5 and 6 (section 5.1): the smallest N ≥ 3 for which the regular
 /// N-gon inscribed in the unit circle is closer to the circle than the spline, i.e.

@@ -19,7 +19,8 @@ using detail::ScanPoint;
 void require_space_angles(const char* who, double theta0, double theta1, double phi) {
     const auto check = [&](double v, const char* name, double hi) {
         if (!(v >= -1e-12 && v <= hi + 1e-12))
-            fail_input(who, std::string(name) + " must be a finite angle in [0, " + (hi > 4 ? "2pi" : "pi") + "] (radians), got " + full_precision(v));
+            fail_input(who, std::string(name) + " must be a finite angle in [0, " + (hi > 4 ? "2pi" : "pi") +
+                                "] (radians), got " + full_precision(v));
     };
     check(theta0, "theta0", std::numbers::pi);
     check(theta1, "theta1", std::numbers::pi);
@@ -62,12 +63,16 @@ SpacePseudoEnergyMinimum undefined_direction(double theta0, double theta1, doubl
     const bool straight = std::abs(theta0) < 1e-12 && std::abs(theta1) < 1e-12;
     m.pseudo_energy = m.strain_energy = straight ? 0.0 : detail::kInf;
     m.length = straight ? 1.0 : 0.0;
-    m.outcome = {Status::no_solution, straight ? "undefined direction (0, 0): the straight segment has J = 0 and r0, r1 are not determined"
-                                               : "undefined direction: both tangents lie along the chord and every segment has a cusp; no minimum exists"};
+    m.outcome = {
+        Status::no_solution,
+        straight
+            ? "undefined direction (0, 0): the straight segment has J = 0 and r0, r1 are not determined"
+            : "undefined direction: both tangents lie along the chord and every segment has a cusp; no minimum exists"};
     return m;
 }
 
-SpacePseudoEnergyMinimum choose_space(double theta0, double theta1, double phi, const std::vector<Descent>& runs, long evaluations) {
+SpacePseudoEnergyMinimum choose_space(double theta0, double theta1, double phi, const std::vector<Descent>& runs,
+                                      long evaluations) {
     SpacePseudoEnergyMinimum m;
     m.theta0 = theta0;
     m.theta1 = theta1;
@@ -86,18 +91,22 @@ SpacePseudoEnergyMinimum choose_space(double theta0, double theta1, double phi, 
 }
 
 auto space_scan_energy(double theta0, double theta1, double phi) {
-    return [=](double r0, double r1) { return space_segment_energy_fast(SpaceUnitChordHermite(theta0, theta1, phi, r0, r1), false, 8).pseudo_energy; };
+    return [=](double r0, double r1) {
+        return space_segment_energy_fast(SpaceUnitChordHermite(theta0, theta1, phi, r0, r1), false, 8).pseudo_energy;
+    };
 }
 
 }  // namespace
 
-SpaceUnitChordHermite::SpaceUnitChordHermite(double theta0, double theta1, double phi, double r0, double r1) : theta0_(theta0), theta1_(theta1), phi_(phi), r0_(r0), r1_(r1) {
+SpaceUnitChordHermite::SpaceUnitChordHermite(double theta0, double theta1, double phi, double r0, double r1)
+    : theta0_(theta0), theta1_(theta1), phi_(phi), r0_(r0), r1_(r1) {
     const char* who = "cagd::fairness::SpaceUnitChordHermite";
     require_space_angles(who, theta0, theta1, phi);
     if (!std::isfinite(r0) || !(r0 > 0.0)) fail_input(who, "r0 must be finite and > 0, got " + full_precision(r0));
     if (!std::isfinite(r1) || !(r1 > 0.0)) fail_input(who, "r1 must be finite and > 0, got " + full_precision(r1));
     // Exact at multiples of π/2, so φ = 0, π give planar segments to the last bit.
-    const Eigen::Vector2d c0 = detail::exact_unit_direction(theta0), c1 = detail::exact_unit_direction(theta1), cp = detail::exact_unit_direction(phi);
+    const Eigen::Vector2d c0 = detail::exact_unit_direction(theta0), c1 = detail::exact_unit_direction(theta1),
+                          cp = detail::exact_unit_direction(phi);
     u0_ = Eigen::Vector3d(c0.x(), c0.y(), 0.0);
     u1_ = Eigen::Vector3d(c1.x(), c1.y() * cp.x(), c1.y() * cp.y());
     const Eigen::Vector3d e1(1.0, 0.0, 0.0);
@@ -111,37 +120,50 @@ Eigen::Vector3d SpaceUnitChordHermite::position(double t) const { return t * (a_
 Eigen::Vector3d SpaceUnitChordHermite::first(double t) const { return a_ + t * (b_ + t * c_); }
 Eigen::Vector3d SpaceUnitChordHermite::second(double t) const { return b_ + 2.0 * t * c_; }
 Eigen::Vector3d SpaceUnitChordHermite::binormal_vector(double t) const { return first(t).cross(second(t)); }
-SegmentType SpaceUnitChordHermite::type() const { return binormal_vector(0.0).dot(binormal_vector(1.0)) >= 0.0 ? SegmentType::c : SegmentType::s; }
+SegmentType SpaceUnitChordHermite::type() const {
+    return binormal_vector(0.0).dot(binormal_vector(1.0)) >= 0.0 ? SegmentType::c : SegmentType::s;
+}
 
 SegmentEnergy space_segment_energy_reference(const SpaceUnitChordHermite& seg, double rel_tol, bool with_gradient) {
-    if (!(rel_tol > 0.0 && rel_tol <= 1e-12)) fail_input("cagd::fairness::space_segment_energy_reference", "rel_tol must be in (0, 1e-12], got " + full_precision(rel_tol));
-    return detail::energy_reference(seg, detail::pointwise_integrand([&](double t) { return space_integrands(seg, t, with_gradient); }), rel_tol);
+    if (!(rel_tol > 0.0 && rel_tol <= 1e-12))
+        fail_input("cagd::fairness::space_segment_energy_reference",
+                   "rel_tol must be in (0, 1e-12], got " + full_precision(rel_tol));
+    return detail::energy_reference(
+        seg, detail::pointwise_integrand([&](double t) { return space_integrands(seg, t, with_gradient); }), rel_tol);
 }
 
 SegmentEnergy space_segment_energy_fast(const SpaceUnitChordHermite& seg, bool with_gradient, int rule_nodes) {
     static const numeric::GaussLegendreRule rule20(20), rule8(8);
-    if (rule_nodes != 8 && rule_nodes != 20) fail_input("cagd::fairness::space_segment_energy_fast", "rule_nodes must be 8 or 20, got " + std::to_string(rule_nodes));
-    return detail::energy_fast(seg, detail::pointwise_integrand([&](double t) { return space_integrands(seg, t, with_gradient); }), rule_nodes == 8 ? rule8 : rule20);
+    if (rule_nodes != 8 && rule_nodes != 20)
+        fail_input("cagd::fairness::space_segment_energy_fast",
+                   "rule_nodes must be 8 or 20, got " + std::to_string(rule_nodes));
+    return detail::energy_fast(
+        seg, detail::pointwise_integrand([&](double t) { return space_integrands(seg, t, with_gradient); }),
+        rule_nodes == 8 ? rule8 : rule20);
 }
 
 // The planar undefined nodes' rule on θ0, θ1 ∈ [0, π] (φ plays no part when both tangents lie on the chord).
 bool is_undefined_space_direction(double theta0, double theta1) { return is_undefined_node(theta0, theta1); }
 
-SpacePseudoEnergyMinimum minimize_space_pseudo_energy(double theta0, double theta1, double phi, const FastMinimizerOptions& opt) {
+SpacePseudoEnergyMinimum minimize_space_pseudo_energy(double theta0, double theta1, double phi,
+                                                      const FastMinimizerOptions& opt) {
     require_space_angles("cagd::fairness::minimize_space_pseudo_energy", theta0, theta1, phi);
     if (is_undefined_space_direction(theta0, theta1)) return undefined_direction(theta0, theta1, phi);
     long evaluations = 0;
-    const std::vector<ScanPoint> starts = detail::scan_minima(space_scan_energy(theta0, theta1, phi), opt.box, evaluations);
+    const std::vector<ScanPoint> starts =
+        detail::scan_minima(space_scan_energy(theta0, theta1, phi), opt.box, evaluations);
     const auto fast_energy = [&](double a, double b) {
         ++evaluations;
         return space_segment_energy_fast(SpaceUnitChordHermite(theta0, theta1, phi, std::exp(a), std::exp(b)));
     };
     std::vector<Descent> runs;
-    for (std::size_t s = 0; s < starts.size() && static_cast<int>(s) < opt.starts; ++s) runs.push_back(detail::newton_descent(fast_energy, starts[s].rho0, starts[s].rho1));
+    for (std::size_t s = 0; s < starts.size() && static_cast<int>(s) < opt.starts; ++s)
+        runs.push_back(detail::newton_descent(fast_energy, starts[s].rho0, starts[s].rho1));
     return choose_space(theta0, theta1, phi, runs, evaluations);
 }
 
-SpacePseudoEnergyMinimum minimize_space_pseudo_energy_reference(double theta0, double theta1, double phi, const ReferenceMinimizerOptions& opt) {
+SpacePseudoEnergyMinimum minimize_space_pseudo_energy_reference(double theta0, double theta1, double phi,
+                                                                const ReferenceMinimizerOptions& opt) {
     require_space_angles("cagd::fairness::minimize_space_pseudo_energy_reference", theta0, theta1, phi);
     require_built_with(OptionalDependency::ceres, "cagd::fairness::minimize_space_pseudo_energy_reference");
     if (is_undefined_space_direction(theta0, theta1)) return undefined_direction(theta0, theta1, phi);
@@ -155,7 +177,10 @@ SpacePseudoEnergyMinimum minimize_space_pseudo_energy_reference(double theta0, d
         starts.push_back({fast.runner_up, std::log(fast.runner_up_r0), std::log(fast.runner_up_r1)});
     const double rel_tol = opt.romberg_rel_tol;
     const std::vector<Descent> runs = detail::reference_descents(
-        [&](double r0, double r1, bool with_gradient) { return space_segment_energy_reference(SpaceUnitChordHermite(theta0, theta1, phi, r0, r1), rel_tol, with_gradient); },
+        [&](double r0, double r1, bool with_gradient) {
+            return space_segment_energy_reference(SpaceUnitChordHermite(theta0, theta1, phi, r0, r1), rel_tol,
+                                                  with_gradient);
+        },
         starts, evaluations);
     return choose_space(theta0, theta1, phi, runs, evaluations);
 }

@@ -1,7 +1,8 @@
 #pragma once
 /// @file
 /// The space pseudo-energy that pseudo_energy section 6 proposes: the unit-chord cubic Hermite
-/// segment in 3-D and the minimum of J = L²E over its tangent magnitudes (the extension to space that section 6 of pseudo_energy proposes).
+/// segment in 3-D and the minimum of J = L²E over its tangent magnitudes (the extension to space that section 6 of
+/// pseudo_energy proposes).
 ///
 /// Geometry (our construction; the paper gives none). Rotating about the chord puts the start
 /// tangent in the x–y plane, so three angles fix the directions:
@@ -81,37 +82,41 @@ private:
 
 /// E, L, J and ∂J/∂log r of the space segment: the reference (Romberg, rel_tol ≤ 1e-12) and fast
 /// (Gauss–Legendre, 20 or 8 nodes) paths, as segment_energy_reference / segment_energy_fast.
-SegmentEnergy space_segment_energy_reference(const SpaceUnitChordHermite& seg, double rel_tol = 1e-13, bool with_gradient = true);
+SegmentEnergy space_segment_energy_reference(const SpaceUnitChordHermite& seg, double rel_tol = 1e-13,
+                                             bool with_gradient = true);
 /// The fast path (see above).
-SegmentEnergy space_segment_energy_fast(const SpaceUnitChordHermite& seg, bool with_gradient = true, int rule_nodes = 20);
+SegmentEnergy space_segment_energy_fast(const SpaceUnitChordHermite& seg, bool with_gradient = true,
+                                        int rule_nodes = 20);
 
 /// True for θ0, θ1 ∈ {0, π} (to 1e-12): no minimum exists (straight segment or cusp).
 bool is_undefined_space_direction(double theta0, double theta1);
 
 /// The minimum of J over r0, r1 > 0 at (θ0, θ1, φ), as PseudoEnergyMinimum in the plane.
 struct SpacePseudoEnergyMinimum {
-    double theta0 = 0.0;  ///< θ0
-    double theta1 = 0.0;  ///< θ1
-    double phi = 0.0;  ///< φ
-    double pseudo_energy = 0.0;  ///< J(θ0, θ1, φ)
-    double r0 = 0.0;  ///< r0 at the minimum
-    double r1 = 0.0;  ///< r1 at the minimum
-    double length = 0.0;  ///< L at the minimum
-    double strain_energy = 0.0;  ///< E at the minimum
+    double theta0 = 0.0;                ///< θ0
+    double theta1 = 0.0;                ///< θ1
+    double phi = 0.0;                   ///< φ
+    double pseudo_energy = 0.0;         ///< J(θ0, θ1, φ)
+    double r0 = 0.0;                    ///< r0 at the minimum
+    double r1 = 0.0;                    ///< r1 at the minimum
+    double length = 0.0;                ///< L at the minimum
+    double strain_energy = 0.0;         ///< E at the minimum
     SegmentType type = SegmentType::x;  ///< c or s (see above); x where there is no minimum
-    double gradient_norm = 0.0;  ///< |∇_ρ J| at the answer
-    double error_estimate = 0.0;  ///< quadrature error bound on J (reference path)
-    int local_minima = 0;  ///< distinct local minima the descents reached
-    double runner_up = 0.0;  ///< second local minimum's J (+∞ if none)
-    double runner_up_r0 = 0.0;  ///< its r0
-    double runner_up_r1 = 0.0;  ///< its r1
-    long evaluations = 0;  ///< energy evaluations (all starts)
-    Outcome outcome;  ///< no_solution at an undefined direction or a runaway; no_convergence
+    double gradient_norm = 0.0;         ///< |∇_ρ J| at the answer
+    double error_estimate = 0.0;        ///< quadrature error bound on J (reference path)
+    int local_minima = 0;               ///< distinct local minima the descents reached
+    double runner_up = 0.0;             ///< second local minimum's J (+∞ if none)
+    double runner_up_r0 = 0.0;          ///< its r0
+    double runner_up_r1 = 0.0;          ///< its r1
+    long evaluations = 0;               ///< energy evaluations (all starts)
+    Outcome outcome;                    ///< no_solution at an undefined direction or a runaway; no_convergence
 };
 
 /// The fast minimiser (see above); outcome no_solution for an undefined direction.
-SpacePseudoEnergyMinimum minimize_space_pseudo_energy(double theta0, double theta1, double phi, const FastMinimizerOptions& opt = {});
+SpacePseudoEnergyMinimum minimize_space_pseudo_energy(double theta0, double theta1, double phi,
+                                                      const FastMinimizerOptions& opt = {});
 /// The reference minimiser (see above).
-SpacePseudoEnergyMinimum minimize_space_pseudo_energy_reference(double theta0, double theta1, double phi, const ReferenceMinimizerOptions& opt = {});
+SpacePseudoEnergyMinimum minimize_space_pseudo_energy_reference(double theta0, double theta1, double phi,
+                                                                const ReferenceMinimizerOptions& opt = {});
 
 }  // namespace cagd::fairness

@@ -46,10 +46,10 @@ struct SpaceAngleGrid {
 
 /// The values of the space table at (θ0, θ1, φ).
 struct SpaceTableValue {
-    double pseudo_energy = 0.0;  ///< J
-    double r0 = 0.0;  ///< r0
-    double r1 = 0.0;  ///< r1
-    double length = 0.0;  ///< L
+    double pseudo_energy = 0.0;         ///< J
+    double r0 = 0.0;                    ///< r0
+    double r1 = 0.0;                    ///< r1
+    double length = 0.0;                ///< L
     SegmentType type = SegmentType::x;  ///< the type whose nodes were used
 };
 
@@ -59,15 +59,19 @@ public:
     /// One node per symmetry orbit, in a fixed order: the work list of a build.
     static std::vector<long> orbit_nodes(const SpaceAngleGrid& grid);
     /// The minima at orbit_nodes()[begin, end) (threads ≥ 1), in that order.
-    static std::vector<SpacePseudoEnergyMinimum> compute_orbits(const SpaceAngleGrid& grid, TableMethod method, long begin, long end, int threads,
+    static std::vector<SpacePseudoEnergyMinimum> compute_orbits(const SpaceAngleGrid& grid, TableMethod method,
+                                                                long begin, long end, int threads,
                                                                 const std::function<void(long, long)>& progress = {});
     /// The table from the minima of every orbit (in orbit_nodes() order).
-    static SpacePseudoEnergyTable assemble(const SpaceAngleGrid& grid, TableMethod method, const std::vector<SpacePseudoEnergyMinimum>& orbits);
+    static SpacePseudoEnergyTable assemble(const SpaceAngleGrid& grid, TableMethod method,
+                                           const std::vector<SpacePseudoEnergyMinimum>& orbits);
     /// Every node by the given minimiser, one orbit of the symmetries at a time, on `threads` threads.
-    static SpacePseudoEnergyTable build(const SpaceAngleGrid& grid, TableMethod method, int threads = 2, const std::function<void(long, long)>& progress = {});
+    static SpacePseudoEnergyTable build(const SpaceAngleGrid& grid, TableMethod method, int threads = 2,
+                                        const std::function<void(long, long)>& progress = {});
     static SpacePseudoEnergyTable load(const std::string& path);  ///< InvalidInput for a foreign or damaged file
     /// load(path) when the file holds this grid's table, else build and save it.
-    static SpacePseudoEnergyTable load_or_build(const std::string& path, const SpaceAngleGrid& grid, TableMethod method, int threads = 2);
+    static SpacePseudoEnergyTable load_or_build(const std::string& path, const SpaceAngleGrid& grid, TableMethod method,
+                                                int threads = 2);
     /// The table from the user's cache (io/user_cache.hpp), built and saved there on a miss with
     /// the build notice and progress; built in memory when the cache is off or cannot be written.
     static SpacePseudoEnergyTable user_cached(const SpaceAngleGrid& grid, TableMethod method, int threads = 2);
@@ -84,7 +88,8 @@ public:
     /// θ0, θ1 ∈ [0, π], φ any finite angle (taken mod 2π); InvalidInput otherwise.
     SpaceTableValue lookup(double theta0, double theta1, double phi) const;
 
-    /// Writes the table to `path` as an OutputFile (io/output_file.hpp): whole or not at all; OutputError on a failed write.
+    /// Writes the table to `path` as an OutputFile (io/output_file.hpp): whole or not at all; OutputError on a failed
+    /// write.
     void save(const std::string& path) const;
     /// The same text to a stream.
     void save(std::ostream& out) const;
@@ -92,7 +97,8 @@ public:
     std::string header_line() const;
 
 private:
-    static SpacePseudoEnergyTable load_or_build(const std::string& path, const SpaceAngleGrid& grid, TableMethod method, int threads, bool user_cache);
+    static SpacePseudoEnergyTable load_or_build(const std::string& path, const SpaceAngleGrid& grid, TableMethod method,
+                                                int threads, bool user_cache);
     SpaceAngleGrid grid_;
     TableMethod method_ = TableMethod::fast;
     std::vector<double> theta_, phi_;

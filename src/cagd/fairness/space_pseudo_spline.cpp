@@ -14,7 +14,9 @@ namespace {
 
 constexpr double kSpaceStraight = 1e-12;  // as the planar pseudo-spline: tangent angles below are zero
 
-double space_angle_between(const Eigen::Vector3d& a, const Eigen::Vector3d& b) { return std::atan2(a.cross(b).norm(), a.dot(b)); }
+double space_angle_between(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+    return std::atan2(a.cross(b).norm(), a.dot(b));
+}
 
 // A unit vector perpendicular to the unit vector e, in the plane of e and v when v is not along e
 // (then v's component across e points along it), else any perpendicular.
@@ -30,8 +32,9 @@ Eigen::Vector3d perpendicular_in_plane(const Eigen::Vector3d& e, const Eigen::Ve
 SpaceTableValue ExactSpaceOracle::segment(double theta0, double theta1, double phi) const {
     const SpacePseudoEnergyMinimum m = minimize_space_pseudo_energy(theta0, theta1, phi);
     if (!m.outcome.ok())
-        fail_input("cagd::fairness::ExactSpaceOracle::segment",
-                   "no minimum at (" + full_precision(theta0) + ", " + full_precision(theta1) + ", " + full_precision(phi) + "): " + m.outcome.message);
+        fail_input("cagd::fairness::ExactSpaceOracle::segment", "no minimum at (" + full_precision(theta0) + ", " +
+                                                                    full_precision(theta1) + ", " +
+                                                                    full_precision(phi) + "): " + m.outcome.message);
     return {m.pseudo_energy, m.r0, m.r1, m.length, m.type};
 }
 
@@ -41,17 +44,23 @@ double SpacePseudoSpline::length_from_tables() const {
     return s;
 }
 
-SpacePseudoSpline space_pseudo_spline(const PointList& points_in, const SpaceSegmentOracle& oracle, TangentOptimization mode, bool closed) {
+SpacePseudoSpline space_pseudo_spline(const PointList& points_in, const SpaceSegmentOracle& oracle,
+                                      TangentOptimization mode, bool closed) {
     const char* who = "cagd::fairness::space_pseudo_spline";
     require_valid_points(points_in, closed ? 3 : 2, true, closed, who);
-    if (points_in.cols() != 2 && points_in.cols() != 3) fail_input(who, "needs points with 2 or 3 coordinates, got " + std::to_string(points_in.cols()));
+    if (points_in.cols() != 2 && points_in.cols() != 3)
+        fail_input(who, "needs points with 2 or 3 coordinates, got " + std::to_string(points_in.cols()));
     Eigen::MatrixXd points = Eigen::MatrixXd::Zero(points_in.rows(), 3);
     points.leftCols(points_in.cols()) = points_in;
     const Eigen::Index np = points.rows();
     const Eigen::Index spans = closed ? np : np - 1;
     const auto next = [&](Eigen::Index i) { return (i + 1) % np; };
     std::vector<Eigen::Vector3d> dir(static_cast<std::size_t>(spans));  // unit chords
-    SpacePseudoSpline ps{spline::PiecewiseHermiteCurve(Eigen::MatrixXd::Zero(2, 3), Eigen::MatrixXd::Zero(1, 3), Eigen::MatrixXd::Zero(1, 3)), {}, {}, {}};
+    SpacePseudoSpline ps{spline::PiecewiseHermiteCurve(Eigen::MatrixXd::Zero(2, 3), Eigen::MatrixXd::Zero(1, 3),
+                                                       Eigen::MatrixXd::Zero(1, 3)),
+                         {},
+                         {},
+                         {}};
     ps.chord_length.resize(static_cast<std::size_t>(spans));
     for (Eigen::Index i = 0; i < spans; ++i) {
         const Eigen::Vector3d c = (points.row(next(i)) - points.row(i)).transpose();
@@ -69,20 +78,25 @@ SpacePseudoSpline space_pseudo_spline(const PointList& points_in, const SpaceSeg
         const Eigen::Vector3d& out = dir[static_cast<std::size_t>(i)];
         const double tau = space_angle_between(in, out);  // the turn, in [0, π]
         if (std::abs(tau - std::numbers::pi) <= 1e-12)
-            fail_input(who, "the points turn by pi at point " + std::to_string(i) + " (a hairpin): no tangent direction between the chords");
+            fail_input(who, "the points turn by pi at point " + std::to_string(i) +
+                                " (a hairpin): no tangent direction between the chords");
         Eigen::Vector3d t = out;
         if (tau > 0.0) {
             // In-plane frame: out = (1, 0), in = (cos τ, −sin τ); α ∈ [−τ, 0] from the outgoing chord.
             const Eigen::Vector3d n = perpendicular_in_plane(out, -in);
             double a = 0.0;
             if (mode == TangentOptimization::none) {
-                const Eigen::Vector3d d = in * ps.chord_length[static_cast<std::size_t>((i - 1 + spans) % spans)] + out * ps.chord_length[static_cast<std::size_t>(i)];
+                const Eigen::Vector3d d = in * ps.chord_length[static_cast<std::size_t>((i - 1 + spans) % spans)] +
+                                          out * ps.chord_length[static_cast<std::size_t>(i)];
                 a = std::atan2(d.dot(n), d.dot(out));
             } else {
-                const double lin = ps.chord_length[static_cast<std::size_t>((i - 1 + spans) % spans)], lout = ps.chord_length[static_cast<std::size_t>(i)];
+                const double lin = ps.chord_length[static_cast<std::size_t>((i - 1 + spans) % spans)],
+                             lout = ps.chord_length[static_cast<std::size_t>(i)];
                 const auto w = [&](double alpha) { return lin * J(alpha + tau) + lout * J(alpha); };
                 const std::vector<double>* breakpoints = planar.angle_energy_nodes();
-                a = mode == TangentOptimization::exact && breakpoints ? detail::minimise_piecewise_linear_w(w, -tau, 0.0, tau, *breakpoints) : detail::minimise_w(w, -tau, 0.0, mode);
+                a = mode == TangentOptimization::exact && breakpoints
+                        ? detail::minimise_piecewise_linear_w(w, -tau, 0.0, tau, *breakpoints)
+                        : detail::minimise_w(w, -tau, 0.0, mode);
             }
             t = std::cos(a) * out + std::sin(a) * n;
         }
@@ -93,7 +107,8 @@ SpacePseudoSpline space_pseudo_spline(const PointList& points_in, const SpaceSeg
         if (np == 2) {
             ps.tangent[0] = ps.tangent[1] = dir[0];
         } else {
-            const auto end_tangent = [&](const Eigen::Vector3d& chord, const Eigen::Vector3d& neighbour) -> Eigen::Vector3d {
+            const auto end_tangent = [&](const Eigen::Vector3d& chord,
+                                         const Eigen::Vector3d& neighbour) -> Eigen::Vector3d {
                 const double a = space_angle_between(chord, neighbour);  // the neighbour's angle, ≥ 0 in its plane
                 if (a <= kSpaceStraight) return chord;
                 const double theta1 = planar.angle_minimum(a).second;
@@ -102,7 +117,8 @@ SpacePseudoSpline space_pseudo_spline(const PointList& points_in, const SpaceSeg
             // As the planar α_0 = θ1(α_1 + φ_1 − φ_0) and α_n = θ1(α_{n−1}) (the segment's symmetry
             // J(θ0, θ1) = J(θ1, θ0) makes θ1(θ) the best other end for either end).
             ps.tangent[0] = end_tangent(dir[0], ps.tangent[1]);
-            ps.tangent[static_cast<std::size_t>(np - 1)] = end_tangent(dir[static_cast<std::size_t>(spans - 1)], ps.tangent[static_cast<std::size_t>(np - 2)]);
+            ps.tangent[static_cast<std::size_t>(np - 1)] =
+                end_tangent(dir[static_cast<std::size_t>(spans - 1)], ps.tangent[static_cast<std::size_t>(np - 2)]);
         }
     }
     // Spans (eq 9–10).

@@ -1,8 +1,8 @@
 #pragma once
 /// @file
-/// The space pseudo-spline (pseudo_energy section 6, extended to space): the cubic Hermite curve through points in 3-D whose
-/// spans are minimum pseudo-energy space segments (space_pseudo_energy.hpp), the generalisation of
-/// pseudo_energy section 3 (eq 9–13) that section 6 proposes.
+/// The space pseudo-spline (pseudo_energy section 6, extended to space): the cubic Hermite curve through points in 3-D
+/// whose spans are minimum pseudo-energy space segments (space_pseudo_energy.hpp), the generalisation of pseudo_energy
+/// section 3 (eq 9–13) that section 6 proposes.
 ///
 /// Tangents (eq 11–12 in space). At an interior point P_i with chords c_{i−1} (in) and c_i (out),
 /// the unit tangent T minimises w(T) = l_{i−1} J(∠(T, c_{i−1})) + l_i J(∠(T, c_i)) over the sphere,
@@ -14,14 +14,13 @@
 ///      that plane (normalised) makes both angles smaller (cos ∠(T, a) = T∥·a ≤ T∥·a / |T∥| for a in
 ///      the plane, when T∥·a > 0), hence w smaller: the minimiser lies in that plane.
 /// So T is the planar tangent of the three points in their own plane: α ∈ [−τ, 0] from the outgoing
-/// chord, τ the turn, by the least value of w (exact: every breakpoint of w where J(θ) is read from a table, Brent otherwise), the paper's 3-point parabola (approx) or the direction of
-/// P_{i+1} − P_{i−1} (none) — pseudo_spline.hpp's rules, applied in each point's plane. Collinear
-/// chords give T along them; a turn of π (hairpin) is refused as in the plane.
-/// Ends (eq 13): the end tangent lies in the plane of the end chord and the neighbouring tangent, at
-/// the angle θ1(θ) that eq (11) gives for that tangent's angle θ with the chord.
-/// Spans (eq 9–10): in span i's frame, θ0 = ∠(T_i, c_i), θ1 = ∠(T_{i+1}, c_i) ∈ [0, π] and φ the
-/// dihedral angle about c_i from the plane (c_i, T_i) to (c_i, T_{i+1}); (r0, r1) from the space
-/// oracle; derivatives l_i r0 T_i and l_i r1 T_{i+1}. Points in a plane give the planar
+/// chord, τ the turn, by the least value of w (exact: every breakpoint of w where J(θ) is read from a table, Brent
+/// otherwise), the paper's 3-point parabola (approx) or the direction of P_{i+1} − P_{i−1} (none) — pseudo_spline.hpp's
+/// rules, applied in each point's plane. Collinear chords give T along them; a turn of π (hairpin) is refused as in the
+/// plane. Ends (eq 13): the end tangent lies in the plane of the end chord and the neighbouring tangent, at the angle
+/// θ1(θ) that eq (11) gives for that tangent's angle θ with the chord. Spans (eq 9–10): in span i's frame, θ0 = ∠(T_i,
+/// c_i), θ1 = ∠(T_{i+1}, c_i) ∈ [0, π] and φ the dihedral angle about c_i from the plane (c_i, T_i) to (c_i, T_{i+1});
+/// (r0, r1) from the space oracle; derivatives l_i r0 T_i and l_i r1 T_{i+1}. Points in a plane give the planar
 /// pseudo-spline (φ = 0 or π, the planar J by symmetry; tested to 1e-9 with the exact oracles).
 /// Length (eq 16–17): L = Σ l_i L_i. A space curve encloses no area; none is reported.
 ///
@@ -44,8 +43,8 @@
 ///    −2h³(0, 1, 0) beside the helix's −h³(0, 1, 0). With P' = h(0, 1, b) and P'' = −h²(1, 0, 0) to
 ///    leading order, τ = det(P', P'', P''')/|P' × P''|² → 3b/(1 + b²) = 3τ_helix, uniformly along the
 ///    span, whatever α. Any cubic Hermite interpolant with tangents along P_{i+1} − P_{i−1} (Hermite A,
-///    Catmull–Rom, and Hermite B on equal chords) shares the factor 3; a C² cubic spline, whose third derivative converges to
-///    the helix's, does not.
+///    Catmull–Rom, and Hermite B on equal chords) shares the factor 3; a C² cubic spline, whose third derivative
+///    converges to the helix's, does not.
 ///  - Curvature. The differences δ are O(h³): relative O(h²) against P' = O(h), but relative O(h)
 ///    against P'' = O(h²). That O(h) part of P'' is along the tangent (no effect on P' × P'') or along
 ///    the binormal (the remainder of (0, 1, 0) once its tangent part is taken out), and P' × (binormal)
@@ -95,8 +94,11 @@ private:
 class TableSpaceOracle : public SpaceSegmentOracle {
 public:
     /// Segments from the space table, J(θ) from `planar` (both must outlive this oracle).
-    TableSpaceOracle(const SpacePseudoEnergyTable& table, const SegmentOracle& planar) : table_(table), planar_(planar) {}
-    SpaceTableValue segment(double theta0, double theta1, double phi) const override { return table_.lookup(theta0, theta1, phi); }
+    TableSpaceOracle(const SpacePseudoEnergyTable& table, const SegmentOracle& planar)
+        : table_(table), planar_(planar) {}
+    SpaceTableValue segment(double theta0, double theta1, double phi) const override {
+        return table_.lookup(theta0, theta1, phi);
+    }
     const SegmentOracle& planar() const override { return planar_; }
 
 private:
@@ -106,22 +108,23 @@ private:
 
 /// One span of a space pseudo-spline: its angles and the values it used.
 struct SpacePseudoSplineSpan {
-    double theta0 = 0.0;  ///< θ0
-    double theta1 = 0.0;  ///< θ1
-    double phi = 0.0;  ///< φ
+    double theta0 = 0.0;    ///< θ0
+    double theta1 = 0.0;    ///< θ1
+    double phi = 0.0;       ///< φ
     SpaceTableValue value;  ///< J, r0, r1, L, type used for the span
 };
 
 /// The space pseudo-spline through points and how it was built.
 struct SpacePseudoSpline {
-    spline::PiecewiseHermiteCurve curve;  ///< the curve, in Hermite form on unit spans
-    std::vector<Eigen::Vector3d> tangent;  ///< unit tangent at every point
-    std::vector<double> chord_length;      ///< l_i, one per span
+    spline::PiecewiseHermiteCurve curve;       ///< the curve, in Hermite form on unit spans
+    std::vector<Eigen::Vector3d> tangent;      ///< unit tangent at every point
+    std::vector<double> chord_length;          ///< l_i, one per span
     std::vector<SpacePseudoSplineSpan> spans;  ///< one per span
-    double length_from_tables() const;  ///< eq (16), (17)
+    double length_from_tables() const;         ///< eq (16), (17)
 };
 
 /// Points n × 3 (2 columns are taken as z = 0). Open: at least 2 points; closed: at least 3.
-SpacePseudoSpline space_pseudo_spline(const PointList& points, const SpaceSegmentOracle& oracle, TangentOptimization mode, bool closed);
+SpacePseudoSpline space_pseudo_spline(const PointList& points, const SpaceSegmentOracle& oracle,
+                                      TangentOptimization mode, bool closed);
 
 }  // namespace cagd::fairness

@@ -10,7 +10,8 @@
 
 namespace cagd::intrinsic {
 
-Eigen::VectorXd continuation_start(const CurvatureProfileProblem& P, const Eigen::VectorXd& start, const NewtonOptions& options) {
+Eigen::VectorXd continuation_start(const CurvatureProfileProblem& P, const Eigen::VectorXd& start,
+                                   const NewtonOptions& options) {
     require_valid_problem(P, "intrinsic::continuation_start");
     const KnotLayout& L = P.layout;
     const int n = L.spans(), p = L.degree();
@@ -32,7 +33,8 @@ Eigen::VectorXd continuation_start(const CurvatureProfileProblem& P, const Eigen
             i0 = std::min(i0, static_cast<int>(r / 2)), i1 = std::max(i1, static_cast<int>(r / 2));
         }
     if (i1 < 0) return start;  // already solved
-    const int a = std::max(0, i0 - kContinuationWindowSpans), b = std::min(n, i1 + 1 + kContinuationWindowSpans), m = b - a;
+    const int a = std::max(0, i0 - kContinuationWindowSpans), b = std::min(n, i1 + 1 + kContinuationWindowSpans),
+              m = b - a;
     if (4 * m > n) return start;
     // start's ψ at the window's ends: the first and last Bézier ordinates of segments a and b − 1.
     std::vector<double> lengths(static_cast<std::size_t>(n));
@@ -49,7 +51,9 @@ Eigen::VectorXd continuation_start(const CurvatureProfileProblem& P, const Eigen
     W.shapes = segment_shapes(W.layout, window_free);
     const double psi_a = psi_at(a, false);
     if (a > 0) W.conditions.push_back({.kind = DesignCondition::Kind::tangent_angle, .index = 0, .value = psi_a});
-    if (b < n) W.conditions.push_back({.kind = DesignCondition::Kind::tangent_angle, .index = m, .value = psi_at(b - 1, true)});
+    if (b < n)
+        W.conditions.push_back(
+            {.kind = DesignCondition::Kind::tangent_angle, .index = m, .value = psi_at(b - 1, true)});
     for (DesignCondition c : P.conditions) {
         if (a == 0 && c.index == 0) W.conditions.push_back(c);
         if (b == n && c.index == n) c.index = m, W.conditions.push_back(c);
@@ -57,7 +61,8 @@ Eigen::VectorXd continuation_start(const CurvatureProfileProblem& P, const Eigen
     // The window's own C2 start, turned by whole turns onto start's branch of ψ.
     Eigen::VectorXd w_start = c2_start(W);
     const int wl = W.layout.independent_lengths();
-    w_start.tail(W.layout.ordinates()).array() += 2.0 * std::numbers::pi * std::round((psi_a - w_start(wl)) / (2.0 * std::numbers::pi));
+    w_start.tail(W.layout.ordinates()).array() +=
+        2.0 * std::numbers::pi * std::round((psi_a - w_start(wl)) / (2.0 * std::numbers::pi));
     NewtonOptions cold = options;  // the window's own solve starts cold: no contraction required
     cold.required_contraction = 0.0;
     const CurvatureProfileSolution window = solve_curvature_profile_auto(W, w_start, cold);

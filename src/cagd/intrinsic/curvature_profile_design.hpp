@@ -91,12 +91,12 @@ struct DesignCondition {
 
 /// The design problem: points, the knot layout of ψ, the segments' shapes and the conditions.
 struct CurvatureProfileProblem {
-    PointList points;                  ///< open: n + 1 rows; closed: n rows (the closing span added)
-    KnotLayout layout;                 ///< n spans
-    std::vector<SegmentShape> shapes;  ///< one per segment
+    PointList points;                         ///< open: n + 1 rows; closed: n rows (the closing span added)
+    KnotLayout layout;                        ///< n spans
+    std::vector<SegmentShape> shapes;         ///< one per segment
     std::vector<DesignCondition> conditions;  ///< the prescribed conditions (eq 4)
-    bool closed = false;  ///< a closed curve (section 5)
-    int turns = 0;  ///< closed: ψ(L) − ψ(0) = 2π·turns; 0 = the sign of the polygon's signed area
+    bool closed = false;                      ///< a closed curve (section 5)
+    int turns = 0;               ///< closed: ψ(L) − ψ(0) = 2π·turns; 0 = the sign of the polygon's signed area
     int closing_continuity = 2;  ///< closed: G order where the curve closes, 2..p (rows: ψ, κ, κ', …)
 };
 
@@ -122,7 +122,7 @@ std::vector<std::string> design_equation_labels(const CurvatureProfileProblem& p
 
 /// f(u) and its sparse Jacobian.
 struct DesignSystem {
-    Eigen::VectorXd f;  ///< f(u), m + 1 values, in the order above
+    Eigen::VectorXd f;                     ///< f(u), m + 1 values, in the order above
     Eigen::SparseMatrix<double> jacobian;  ///< empty unless asked for
 };
 /// f(u) (and J(u) with `with_jacobian`) at the unknowns u.
@@ -151,8 +151,8 @@ DesignBandOrdering design_band_ordering(const CurvatureProfileProblem& problem);
 /// Options of the Newton iteration.
 struct NewtonOptions {
     NewtonStep step = NewtonStep::pseudo_inverse;  ///< the step
-    int max_iterations = 50;  ///< iterations before no_convergence
-    double tolerance = 1e-12;  ///< ‖f‖∞ ≤ tolerance·max(1, largest chord) is converged
+    int max_iterations = 50;                       ///< iterations before no_convergence
+    double tolerance = 1e-12;                      ///< ‖f‖∞ ≤ tolerance·max(1, largest chord) is converged
     /// Give up (no_convergence) as soon as a step leaves ‖f‖∞ above this fraction of the residual
     /// before it; 0 = never. For starts from a nearby solution (continuation), from which Newton
     /// either converges quadratically or wanders: a start outside that basin is abandoned after a
@@ -170,21 +170,23 @@ struct NewtonRecord {
 };
 /// The result of the design: the outcome, the unknowns, the history and the curve when ok.
 struct CurvatureProfileSolution {
-    Outcome outcome;  ///< ok, no_solution or no_convergence (see above), with a message
-    Eigen::VectorXd u;  ///< the last iterate
-    std::vector<NewtonRecord> history;  ///< one record per iteration
-    int equations = 0;  ///< m + 1
-    int unknowns = 0;   ///< N
-    int rank = -1;      ///< of the last Jacobian (−1: sparse LU steps)
+    Outcome outcome;                      ///< ok, no_solution or no_convergence (see above), with a message
+    Eigen::VectorXd u;                    ///< the last iterate
+    std::vector<NewtonRecord> history;    ///< one record per iteration
+    int equations = 0;                    ///< m + 1
+    int unknowns = 0;                     ///< N
+    int rank = -1;                        ///< of the last Jacobian (−1: sparse LU steps)
     std::optional<IntrinsicCurve> curve;  ///< present when outcome.ok()
 
     std::vector<double> segment_lengths() const;  ///< Δw_j of the final iterate
 };
 
 /// Newton (eq 6) from the given start.
-CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& problem, const Eigen::VectorXd& start, const NewtonOptions& options = {});
+CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& problem, const Eigen::VectorXd& start,
+                                                 const NewtonOptions& options = {});
 /// Newton (eq 6) from c2_start.
-CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& problem, const NewtonOptions& options = {});
+CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& problem,
+                                                 const NewtonOptions& options = {});
 
 /// The clothoid-spline defaults shared by `cagd interpolate` and compare/: natural ends (κ = 0 at an
 /// open end whose segment is free; lines and arcs already fix their curvature), appended to
@@ -195,9 +197,11 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
 /// LU iteration is returned as it is: the dense step would need n² doubles.
 void add_natural_open_ends(CurvatureProfileProblem& problem);
 /// The solve of the defaults above (the step chosen by size; the other options as given).
-CurvatureProfileSolution solve_curvature_profile_auto(const CurvatureProfileProblem& problem, const NewtonOptions& options = {});
+CurvatureProfileSolution solve_curvature_profile_auto(const CurvatureProfileProblem& problem,
+                                                      const NewtonOptions& options = {});
 /// The same from the given start.
-CurvatureProfileSolution solve_curvature_profile_auto(const CurvatureProfileProblem& problem, const Eigen::VectorXd& start, const NewtonOptions& options = {});
+CurvatureProfileSolution solve_curvature_profile_auto(const CurvatureProfileProblem& problem,
+                                                      const Eigen::VectorXd& start, const NewtonOptions& options = {});
 
 /// Spans on either side of the unsatisfied ones that continuation_start solves with them: an
 /// interpolating spline's response to a moved point decays by a factor of about 0.27 per span (the
@@ -215,10 +219,12 @@ inline constexpr int kContinuationWindowSpans = 64;
 /// one moved by a chord: 1 evaluation of f and J where start itself took 8). Otherwise, or when the
 /// window's own solve fails, `start` unchanged. Newton decides either way; this only picks where
 /// it begins. O(window) plus one evaluation of f (no Jacobian) on the whole.
-Eigen::VectorXd continuation_start(const CurvatureProfileProblem& problem, const Eigen::VectorXd& start, const NewtonOptions& options = {});
+Eigen::VectorXd continuation_start(const CurvatureProfileProblem& problem, const Eigen::VectorXd& start,
+                                   const NewtonOptions& options = {});
 
 /// The second solver: Ceres Levenberg–Marquardt on the same f, with its own central-difference
 /// Jacobian (DynamicNumericDiffCostFunction) and lengths bounded below — independent of ours.
-CurvatureProfileSolution solve_curvature_profile_levenberg_marquardt(const CurvatureProfileProblem& problem, const Eigen::VectorXd& start);
+CurvatureProfileSolution solve_curvature_profile_levenberg_marquardt(const CurvatureProfileProblem& problem,
+                                                                     const Eigen::VectorXd& start);
 
 }  // namespace cagd::intrinsic

@@ -47,7 +47,8 @@ constexpr double kLmShortestSpan = 1e-6;
 }  // namespace
 #endif
 
-CurvatureProfileSolution solve_curvature_profile_levenberg_marquardt(const CurvatureProfileProblem& P, const Eigen::VectorXd& start) {
+CurvatureProfileSolution solve_curvature_profile_levenberg_marquardt(const CurvatureProfileProblem& P,
+                                                                     const Eigen::VectorXd& start) {
     const std::string who = "intrinsic::solve_curvature_profile_levenberg_marquardt";
     require_valid_problem(P, who);
     require_built_with(OptionalDependency::ceres, who);
@@ -55,15 +56,19 @@ CurvatureProfileSolution solve_curvature_profile_levenberg_marquardt(const Curva
     CurvatureProfileSolution sol;
     sol.unknowns = design_unknowns(P);
     sol.equations = design_equations(P);
-    if (start.size() != sol.unknowns) fail_input(who, "start vector needs " + std::to_string(sol.unknowns) + " entries (eq 2), got " + std::to_string(start.size()));
+    if (start.size() != sol.unknowns)
+        fail_input(who, "start vector needs " + std::to_string(sol.unknowns) + " entries (eq 2), got " +
+                            std::to_string(start.size()));
     sol.u = start;
-    auto* cost = new ceres::DynamicNumericDiffCostFunction<DesignResidual, ceres::CENTRAL>(new DesignResidual{&P, sol.unknowns});
+    auto* cost =
+        new ceres::DynamicNumericDiffCostFunction<DesignResidual, ceres::CENTRAL>(new DesignResidual{&P, sol.unknowns});
     cost->AddParameterBlock(sol.unknowns);
     cost->SetNumResiduals(sol.equations);
     ceres::Problem problem;
     problem.AddResidualBlock(cost, nullptr, sol.u.data());
     const double scale = detail::data_scale(P);
-    for (int i = 0; i < P.layout.independent_lengths(); ++i) problem.SetParameterLowerBound(sol.u.data(), i, kLmShortestSpan * scale);
+    for (int i = 0; i < P.layout.independent_lengths(); ++i)
+        problem.SetParameterLowerBound(sol.u.data(), i, kLmShortestSpan * scale);
     ceres::Solver::Options opt;
     opt.minimizer_type = ceres::TRUST_REGION;
     opt.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
@@ -83,7 +88,8 @@ CurvatureProfileSolution solve_curvature_profile_levenberg_marquardt(const Curva
         return sol;
     }
     sol.outcome = {summary.termination_type == ceres::CONVERGENCE ? Status::no_solution : Status::no_convergence,
-                   "Ceres Levenberg–Marquardt (" + summary.message + ") ended with ‖f‖∞ = " + full_precision(res) + ", worst equation " + detail::worst_equation(P, f)};
+                   "Ceres Levenberg–Marquardt (" + summary.message + ") ended with ‖f‖∞ = " + full_precision(res) +
+                       ", worst equation " + detail::worst_equation(P, f)};
     return sol;
 #else
     (void)start;

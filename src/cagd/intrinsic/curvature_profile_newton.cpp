@@ -52,22 +52,29 @@ std::vector<double> CurvatureProfileSolution::segment_lengths() const {
     return curve->tangent_angle().segment_lengths();
 }
 
-CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& P, const Eigen::VectorXd& start, const NewtonOptions& options) {
+CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& P, const Eigen::VectorXd& start,
+                                                 const NewtonOptions& options) {
     const std::string who = "intrinsic::solve_curvature_profile";
     require_valid_problem(P, who);
-    if (options.max_iterations < 1 || !(options.tolerance > 0)) fail_input(who, "needs max_iterations ≥ 1 and tolerance > 0");
+    if (options.max_iterations < 1 || !(options.tolerance > 0))
+        fail_input(who, "needs max_iterations ≥ 1 and tolerance > 0");
     if (!(options.required_contraction >= 0 && options.required_contraction < 1))
         fail_input(who, "needs 0 ≤ required_contraction < 1, got " + full_precision(options.required_contraction));
     CurvatureProfileSolution sol;
     sol.unknowns = design_unknowns(P);
     sol.equations = design_equations(P);
-    if (start.size() != sol.unknowns) fail_input(who, "start vector needs " + std::to_string(sol.unknowns) + " entries (eq 2), got " + std::to_string(start.size()));
+    if (start.size() != sol.unknowns)
+        fail_input(who, "start vector needs " + std::to_string(sol.unknowns) + " entries (eq 2), got " +
+                            std::to_string(start.size()));
     const int l = P.layout.independent_lengths();
     for (int i = 0; i < l; ++i)
-        if (!(start(i) > 0) || !std::isfinite(start(i))) fail_input(who, "start length S_" + std::to_string(i) + " = " + full_precision(start(i)) + " (finite and > 0 required)");
+        if (!(start(i) > 0) || !std::isfinite(start(i)))
+            fail_input(who, "start length S_" + std::to_string(i) + " = " + full_precision(start(i)) +
+                                " (finite and > 0 required)");
     if (options.step != NewtonStep::pseudo_inverse && sol.equations != sol.unknowns)
-        fail_input(who, std::string("the ") + (options.step == NewtonStep::sparse_lu ? "sparse" : "banded") + " LU step needs a square system; this one has " +
-                            std::to_string(sol.equations) + " equations and " + std::to_string(sol.unknowns) + " unknowns (use the pseudo-inverse)");
+        fail_input(who, std::string("the ") + (options.step == NewtonStep::sparse_lu ? "sparse" : "banded") +
+                            " LU step needs a square system; this one has " + std::to_string(sol.equations) +
+                            " equations and " + std::to_string(sol.unknowns) + " unknowns (use the pseudo-inverse)");
     const double tol = options.tolerance * data_scale(P);
     // The banded step says which LU it took once the band is known (below).
     const char* method = options.step == NewtonStep::pseudo_inverse ? "Newton with the Moore–Penrose step"
@@ -86,16 +93,22 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
         // A diverging iterate winds ψ by hundreds of turns between neighbouring ordinates; the
         // integrals of such a segment cost O(turning) and mean nothing: stop it as unconverged.
         const Eigen::VectorXd ordinates = sol.u.tail(P.layout.ordinates());
-        const double turning = ordinates.size() > 1 ? (ordinates.tail(ordinates.size() - 1) - ordinates.head(ordinates.size() - 1)).lpNorm<Eigen::Infinity>() : 0.0;
+        const double turning = ordinates.size() > 1
+                                   ? (ordinates.tail(ordinates.size() - 1) - ordinates.head(ordinates.size() - 1))
+                                         .lpNorm<Eigen::Infinity>()
+                                   : 0.0;
         if (!(turning <= kMaxOrdinateTurning)) {
-            sol.outcome = {Status::no_convergence, std::string(method) + " diverged at iteration " + std::to_string(it) + ": neighbouring tangent-angle ordinates differ by " +
-                                                       full_precision(turning) + " rad (limit " + full_precision(kMaxOrdinateTurning) + ")"};
+            sol.outcome = {Status::no_convergence,
+                           std::string(method) + " diverged at iteration " + std::to_string(it) +
+                               ": neighbouring tangent-angle ordinates differ by " + full_precision(turning) +
+                               " rad (limit " + full_precision(kMaxOrdinateTurning) + ")"};
             return sol;
         }
         design_system_into(P, sol.u, true, workspace, sys);
         const double res = sys.f.lpNorm<Eigen::Infinity>();
         if (!std::isfinite(res)) {
-            sol.outcome = {Status::no_convergence, std::string(method) + ": the residual became non-finite at iteration " + std::to_string(it)};
+            sol.outcome = {Status::no_convergence,
+                           std::string(method) + ": the residual became non-finite at iteration " + std::to_string(it)};
             return sol;
         }
         if (res <= tol) {
@@ -105,17 +118,21 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
         }
         if (options.required_contraction > 0 && it > 0 && !(res <= options.required_contraction * previous_residual)) {
             sol.history.push_back({it, res, 0.0, 1.0, sol.rank});
-            sol.outcome = {Status::no_convergence, std::string(method) + " from the given start does not contract: ‖f‖∞ = " + full_precision(res) + " after " + full_precision(previous_residual) +
-                                                       " (required: at most " + full_precision(options.required_contraction) + " of it)"};
+            sol.outcome = {Status::no_convergence,
+                           std::string(method) + " from the given start does not contract: ‖f‖∞ = " +
+                               full_precision(res) + " after " + full_precision(previous_residual) +
+                               " (required: at most " + full_precision(options.required_contraction) + " of it)"};
             return sol;
         }
         previous_residual = res;
         if (it == options.max_iterations) {
             sol.history.push_back({it, res, 0.0, 1.0, sol.rank});
-            sol.outcome = {Status::no_convergence, std::string(method) + " from the given start did not reach ‖f‖∞ ≤ " + full_precision(tol) + " in " +
-                                                       std::to_string(options.max_iterations) + " iterations: ‖f‖∞ = " + full_precision(res) + ", worst equation " + worst_equation(P, sys.f) +
-                                                       "; " + std::to_string(sol.equations) + " equations, " + std::to_string(sol.unknowns) + " unknowns, rank " +
-                                                       std::to_string(sol.rank)};
+            sol.outcome = {Status::no_convergence,
+                           std::string(method) + " from the given start did not reach ‖f‖∞ ≤ " + full_precision(tol) +
+                               " in " + std::to_string(options.max_iterations) +
+                               " iterations: ‖f‖∞ = " + full_precision(res) + ", worst equation " +
+                               worst_equation(P, sys.f) + "; " + std::to_string(sol.equations) + " equations, " +
+                               std::to_string(sol.unknowns) + " unknowns, rank " + std::to_string(sol.rank)};
             return sol;
         }
         Eigen::VectorXd delta;
@@ -130,8 +147,10 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
             delta = cod.solve(sys.f);
         } else {
             const Eigen::SparseMatrix<double>& J = sys.jacobian;
-            const std::span<const int> outer(J.outerIndexPtr(), static_cast<std::size_t>(J.outerSize()) + 1), inner(J.innerIndexPtr(), static_cast<std::size_t>(J.nonZeros()));
-            if (!J.isCompressed() || !std::equal(outer.begin(), outer.end(), analysed_outer.begin(), analysed_outer.end()) ||
+            const std::span<const int> outer(J.outerIndexPtr(), static_cast<std::size_t>(J.outerSize()) + 1),
+                inner(J.innerIndexPtr(), static_cast<std::size_t>(J.nonZeros()));
+            if (!J.isCompressed() ||
+                !std::equal(outer.begin(), outer.end(), analysed_outer.begin(), analysed_outer.end()) ||
                 !std::equal(inner.begin(), inner.end(), analysed_inner.begin(), analysed_inner.end())) {
                 if (options.step == NewtonStep::banded_lu && numeric::BandedLu::available()) {
                     DesignBandOrdering order = design_band_ordering(P);
@@ -144,13 +163,16 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
                 analysed_inner.assign(inner.begin(), inner.end());
             }
             if (!lu.factorize(J)) {
-                sol.outcome = {Status::no_convergence, std::string(method) + ": the Jacobian is singular at iteration " + std::to_string(it) + " (use the pseudo-inverse step)"};
+                sol.outcome = {Status::no_convergence, std::string(method) +
+                                                           ": the Jacobian is singular at iteration " +
+                                                           std::to_string(it) + " (use the pseudo-inverse step)"};
                 return sol;
             }
             delta = lu.solve(sys.f);
         }
         if (!delta.allFinite()) {
-            sol.outcome = {Status::no_convergence, std::string(method) + ": non-finite step at iteration " + std::to_string(it)};
+            sol.outcome = {Status::no_convergence,
+                           std::string(method) + ": non-finite step at iteration " + std::to_string(it)};
             return sol;
         }
         double lambda = 1.0;
@@ -159,29 +181,37 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
         const double step = lambda * delta.lpNorm<Eigen::Infinity>();
         sol.history.push_back({it, res, step, lambda, sol.rank});
         if (step <= kStalledStep * (1.0 + sol.u.lpNorm<Eigen::Infinity>())) {
-            sol.outcome = {Status::no_solution, std::string(method) + " settled on a least-squares point with ‖f‖∞ = " + full_precision(res) + " > " + full_precision(tol) +
-                                                    ": the conditions are inconsistent for these points (worst equation " + worst_equation(P, sys.f) + "; " +
-                                                    std::to_string(sol.equations) + " equations, " + std::to_string(sol.unknowns) + " unknowns, rank " + std::to_string(sol.rank) +
-                                                    ")"};
+            sol.outcome = {
+                Status::no_solution,
+                std::string(method) + " settled on a least-squares point with ‖f‖∞ = " + full_precision(res) + " > " +
+                    full_precision(tol) + ": the conditions are inconsistent for these points (worst equation " +
+                    worst_equation(P, sys.f) + "; " + std::to_string(sol.equations) + " equations, " +
+                    std::to_string(sol.unknowns) + " unknowns, rank " + std::to_string(sol.rank) + ")"};
             return sol;
         }
         sol.u -= lambda * delta;
     }
 }
 
-CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& P, const NewtonOptions& options) { return solve_curvature_profile(P, c2_start(P), options); }
+CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& P, const NewtonOptions& options) {
+    return solve_curvature_profile(P, c2_start(P), options);
+}
 
 void add_natural_open_ends(CurvatureProfileProblem& problem) {
     if (problem.closed || problem.shapes.empty()) return;
-    if (problem.shapes.front() == SegmentShape::free) problem.conditions.push_back({DesignCondition::Kind::curvature, 0, 0.0, false});
-    if (problem.shapes.back() == SegmentShape::free) problem.conditions.push_back({DesignCondition::Kind::curvature, problem.layout.segments(), 0.0, true});
+    if (problem.shapes.front() == SegmentShape::free)
+        problem.conditions.push_back({DesignCondition::Kind::curvature, 0, 0.0, false});
+    if (problem.shapes.back() == SegmentShape::free)
+        problem.conditions.push_back({DesignCondition::Kind::curvature, problem.layout.segments(), 0.0, true});
 }
 
-CurvatureProfileSolution solve_curvature_profile_auto(const CurvatureProfileProblem& problem, const NewtonOptions& options) {
+CurvatureProfileSolution solve_curvature_profile_auto(const CurvatureProfileProblem& problem,
+                                                      const NewtonOptions& options) {
     return solve_curvature_profile_auto(problem, c2_start(problem), options);
 }
 
-CurvatureProfileSolution solve_curvature_profile_auto(const CurvatureProfileProblem& problem, const Eigen::VectorXd& start, const NewtonOptions& options) {
+CurvatureProfileSolution solve_curvature_profile_auto(const CurvatureProfileProblem& problem,
+                                                      const Eigen::VectorXd& start, const NewtonOptions& options) {
     // The Moore–Penrose step forms the Jacobian densely: n² doubles and O(n³) work per iteration
     // Above 2000 unknowns the sparse-LU outcome is the answer.
     constexpr int kDenseFallbackUnknowns = 2000;

@@ -80,7 +80,8 @@ std::vector<SegmentShape> parse_span_shapes(const std::string& text) {
         else if (item == "clothoid" || item == "linear_curvature")
             out.push_back(SegmentShape::linear_curvature);
         else
-            fail_input("intrinsic::parse_span_shapes", "span " + std::to_string(out.size()) + ": \"" + item + "\" is not a shape (allowed: free, line, arc, clothoid)");
+            fail_input("intrinsic::parse_span_shapes", "span " + std::to_string(out.size()) + ": \"" + item +
+                                                           "\" is not a shape (allowed: free, line, arc, clothoid)");
         if (comma == std::string::npos) break;
         start = comma + 1;
     }
@@ -89,9 +90,11 @@ std::vector<SegmentShape> parse_span_shapes(const std::string& text) {
 
 std::vector<SegmentShape> segment_shapes(const KnotLayout& layout, const std::vector<SegmentShape>& span_shapes) {
     if (static_cast<int>(span_shapes.size()) != layout.spans())
-        fail_input("intrinsic::segment_shapes", "needs one shape per span (" + std::to_string(layout.spans()) + "), got " + std::to_string(span_shapes.size()));
+        fail_input("intrinsic::segment_shapes", "needs one shape per span (" + std::to_string(layout.spans()) +
+                                                    "), got " + std::to_string(span_shapes.size()));
     std::vector<SegmentShape> out;
-    for (int j = 0; j < layout.segments(); ++j) out.push_back(span_shapes[static_cast<std::size_t>(layout.span_of_segment(j))]);
+    for (int j = 0; j < layout.segments(); ++j)
+        out.push_back(span_shapes[static_cast<std::size_t>(layout.span_of_segment(j))]);
     return out;
 }
 
@@ -101,7 +104,8 @@ KnotLayout span_layout(const std::vector<SegmentShape>& span_shapes) {
     std::vector<int> mult{2}, index;
     for (int i = 1; i < n; ++i) {
         const auto a = span_shapes[static_cast<std::size_t>(i) - 1], b = span_shapes[static_cast<std::size_t>(i)];
-        const bool rigid = a == SegmentShape::line || a == SegmentShape::arc || b == SegmentShape::line || b == SegmentShape::arc;
+        const bool rigid =
+            a == SegmentShape::line || a == SegmentShape::arc || b == SegmentShape::line || b == SegmentShape::arc;
         mult.push_back(rigid ? 2 : 1);
     }
     mult.push_back(2);
@@ -111,36 +115,49 @@ KnotLayout span_layout(const std::vector<SegmentShape>& span_shapes) {
 
 void require_valid_problem(const CurvatureProfileProblem& P, const std::string& who) {
     require_valid_points(P.points, P.closed ? 3 : 2, true, P.closed, who);
-    if (P.points.cols() != 2) fail_input(who, "points must be planar (2 columns), got " + std::to_string(P.points.cols()));
+    if (P.points.cols() != 2)
+        fail_input(who, "points must be planar (2 columns), got " + std::to_string(P.points.cols()));
     const int n = span_count(P);
     if (P.layout.spans() != n)
-        fail_input(who, "the knot layout has " + std::to_string(P.layout.spans()) + " spans but the " + std::to_string(P.points.rows()) +
+        fail_input(who, "the knot layout has " + std::to_string(P.layout.spans()) + " spans but the " +
+                            std::to_string(P.points.rows()) +
                             (P.closed ? " points of a closed curve make " : " points make ") + std::to_string(n));
     if (static_cast<int>(P.shapes.size()) != P.layout.segments())
-        fail_input(who, "needs one shape per segment (" + std::to_string(P.layout.segments()) + "), got " + std::to_string(P.shapes.size()));
+        fail_input(who, "needs one shape per segment (" + std::to_string(P.layout.segments()) + "), got " +
+                            std::to_string(P.shapes.size()));
     for (std::size_t j = 0; j < P.shapes.size(); ++j)
         if (P.shapes[j] == SegmentShape::linear_curvature && P.layout.degree() != 3)
-            fail_input(who, "segment " + std::to_string(j) + ": linear_curvature needs a degree-3 ψ (a degree-2 ψ has linear curvature on every segment)");
+            fail_input(
+                who, "segment " + std::to_string(j) +
+                         ": linear_curvature needs a degree-3 ψ (a degree-2 ψ has linear curvature on every segment)");
     using K = DesignCondition::Kind;
     for (const auto& c : P.conditions) {
         const int top = P.layout.segments() - (c.kind == K::segment_length ? 1 : 0);
         if (c.index < 0 || c.index > top)
-            fail_input(who, std::string(c.kind == K::segment_length ? "segment" : "breakpoint") + " index " + std::to_string(c.index) + " of a condition is outside 0.." +
-                                std::to_string(top));
+            fail_input(who, std::string(c.kind == K::segment_length ? "segment" : "breakpoint") + " index " +
+                                std::to_string(c.index) + " of a condition is outside 0.." + std::to_string(top));
         if (!std::isfinite(c.value)) fail_input(who, "condition value " + full_precision(c.value) + " is not finite");
-        if (c.kind == K::curvature_radius && c.value == 0.0) fail_input(who, "curvature radius 0 at breakpoint " + std::to_string(c.index));
-        if (c.kind == K::segment_length && !(c.value > 0)) fail_input(who, "segment length " + full_precision(c.value) + " for segment " + std::to_string(c.index) + " must be > 0");
-        const bool one_sided = c.kind == K::curvature || c.kind == K::curvature_radius || c.kind == K::curvature_derivative;
+        if (c.kind == K::curvature_radius && c.value == 0.0)
+            fail_input(who, "curvature radius 0 at breakpoint " + std::to_string(c.index));
+        if (c.kind == K::segment_length && !(c.value > 0))
+            fail_input(who, "segment length " + full_precision(c.value) + " for segment " + std::to_string(c.index) +
+                                " must be > 0");
+        const bool one_sided =
+            c.kind == K::curvature || c.kind == K::curvature_radius || c.kind == K::curvature_derivative;
         if (one_sided && ((c.from_left && c.index == 0) || (!c.from_left && c.index == P.layout.segments())))
-            fail_input(who, "curvature at breakpoint " + std::to_string(c.index) + " needs the side that has a segment");
+            fail_input(who,
+                       "curvature at breakpoint " + std::to_string(c.index) + " needs the side that has a segment");
         if (c.kind == K::curvature_derivative && (c.order < 1 || c.order > P.layout.degree() - 2))
-            fail_input(who, "curvature derivative of order " + std::to_string(c.order) + " at breakpoint " + std::to_string(c.index) + ": a degree-" +
-                                std::to_string(P.layout.degree()) + " ψ allows orders 1.." + std::to_string(P.layout.degree() - 2));
+            fail_input(who, "curvature derivative of order " + std::to_string(c.order) + " at breakpoint " +
+                                std::to_string(c.index) + ": a degree-" + std::to_string(P.layout.degree()) +
+                                " ψ allows orders 1.." + std::to_string(P.layout.degree() - 2));
     }
-    if (P.closed && std::abs(P.turns) > 100) fail_input(who, "turns = " + std::to_string(P.turns) + " is implausible (|turns| ≤ 100)");
+    if (P.closed && std::abs(P.turns) > 100)
+        fail_input(who, "turns = " + std::to_string(P.turns) + " is implausible (|turns| ≤ 100)");
     if (P.closed && (P.closing_continuity < 2 || P.closing_continuity > P.layout.degree()))
-        fail_input(who, "closing continuity G" + std::to_string(P.closing_continuity) + " is outside G2..G" + std::to_string(P.layout.degree()) + " for a degree-" +
-                            std::to_string(P.layout.degree()) + " ψ");
+        fail_input(who, "closing continuity G" + std::to_string(P.closing_continuity) + " is outside G2..G" +
+                            std::to_string(P.layout.degree()) + " for a degree-" + std::to_string(P.layout.degree()) +
+                            " ψ");
 }
 
 int design_unknowns(const CurvatureProfileProblem& P) { return P.layout.independent_lengths() + P.layout.ordinates(); }
@@ -177,16 +194,17 @@ std::vector<std::string> design_equation_labels(const CurvatureProfileProblem& P
             out.push_back("length of segment " + std::to_string(c.index));
             continue;
         }
-        const std::string what = c.kind == K::tangent_angle  ? "tangent angle"
-                                 : c.kind == K::curvature    ? "curvature"
+        const std::string what = c.kind == K::tangent_angle      ? "tangent angle"
+                                 : c.kind == K::curvature        ? "curvature"
                                  : c.kind == K::curvature_radius ? "curvature radius"
-                                                              : "curvature derivative " + std::to_string(c.order);
+                                                                 : "curvature derivative " + std::to_string(c.order);
         out.push_back(what + " at breakpoint " + std::to_string(c.index));
     }
     if (P.closed) {
         out.push_back("closed: tangent angles differ by 2π·turns");
         out.push_back("closed: end curvatures equal");
-        for (int d = 1; d + 2 <= P.closing_continuity; ++d) out.push_back("closed: end curvature derivatives " + std::to_string(d) + " equal");
+        for (int d = 1; d + 2 <= P.closing_continuity; ++d)
+            out.push_back("closed: end curvature derivatives " + std::to_string(d) + " equal");
     }
     return out;
 }

@@ -49,7 +49,8 @@ void segment_jet_of_degree(const DesignPsi& psi, int j, SegmentJet& out) {
     const KnotLayout& L = psi.layout;
     const int k0 = L.last_knot_of_breakpoint(j) - P + 1;
     double v[2 * P];
-    TangentAngleSpline::local_farin_knots_into(L, psi.lengths, j, v);  // the extraction is invariant under a shift of all knots
+    TangentAngleSpline::local_farin_knots_into(L, psi.lengths, j,
+                                               v);  // the extraction is invariant under a shift of all knots
     Jet u[2 * P], c[P + 1], b[P + 1];
     for (int m = 0; m < 2 * P; ++m) u[m] = Jet(v[m], m);
     for (int m = 0; m <= P; ++m) c[m] = Jet(psi.de_boor[k0 + m], 2 * P + m);
@@ -77,7 +78,8 @@ void segment_jet(const DesignPsi& psi, int j, SegmentJet& out) {
         case 3: segment_jet_of_degree<3>(psi, j, out); return;
         case 4: segment_jet_of_degree<4>(psi, j, out); return;
         default:
-            throw std::logic_error("cagd::intrinsic::segment_jet: degree " + std::to_string(psi.layout.degree()) + " is outside the layouts' 2..4");
+            throw std::logic_error("cagd::intrinsic::segment_jet: degree " + std::to_string(psi.layout.degree()) +
+                                   " is outside the layouts' 2..4");
     }
 }
 
@@ -94,7 +96,8 @@ struct JacobianSlots {
 
 class RowWriter {
 public:
-    RowWriter(const KnotLayout& L, std::vector<Eigen::Triplet<double>>* t, JacobianSlots* slots = nullptr) : L_(L), t_(t), slots_(slots) {}
+    RowWriter(const KnotLayout& L, std::vector<Eigen::Triplet<double>>* t, JacobianSlots* slots = nullptr)
+        : L_(L), t_(t), slots_(slots) {}
     bool writes() const { return t_ || slots_; }
     // One entry of J.
     void entry(int row, int col, double v) const {
@@ -127,7 +130,8 @@ public:
         if (!writes()) return;
         const int l = L_.independent_lengths();
         const Eigen::Matrix<double, 1, Eigen::Dynamic, Eigen::RowMajor, 1, kMaxOrdinates> gc = g.transpose() * s.db_dc;
-        const Eigen::Matrix<double, 1, Eigen::Dynamic, Eigen::RowMajor, 1, 2 * kMaxJetDegree> gw = g.transpose() * s.db_dw;
+        const Eigen::Matrix<double, 1, Eigen::Dynamic, Eigen::RowMajor, 1, 2 * kMaxJetDegree> gw =
+            g.transpose() * s.db_dw;
         for (int m = 0; m < gc.size(); ++m) entry(row, l + s.first_ordinate + m, gc(m));
         for (int i = 0; i < gw.size(); ++i) entry(row, L_.length_index(s.first_segment + i), gw(i));
     }
@@ -171,12 +175,14 @@ void assemble_jacobian(int rows, int cols, DesignWorkspace& w, Eigen::SparseMatr
 }
 
 // One evaluation of f(u) (and J(u), when `write` writes) into `out`.
-void design_system_pass(const CurvatureProfileProblem& P, const Eigen::VectorXd& u, bool with_jacobian, const RowWriter& write, DesignWorkspace& workspace,
-                        DesignSystem& out) {
+void design_system_pass(const CurvatureProfileProblem& P, const Eigen::VectorXd& u, bool with_jacobian,
+                        const RowWriter& write, DesignWorkspace& workspace, DesignSystem& out) {
     const KnotLayout& L = P.layout;
-    const int p = L.degree(), k = L.segments(), rows = design_equations(P), cols = design_unknowns(P), l = L.independent_lengths();
+    const int p = L.degree(), k = L.segments(), rows = design_equations(P), cols = design_unknowns(P),
+              l = L.independent_lengths();
     const char* who = "intrinsic::design_system";
-    if (u.size() != cols) fail_input(who, "u needs " + std::to_string(cols) + " entries (eq 2), got " + std::to_string(u.size()));
+    if (u.size() != cols)
+        fail_input(who, "u needs " + std::to_string(cols) + " entries (eq 2), got " + std::to_string(u.size()));
     std::vector<double>& lengths = workspace.lengths;
     lengths.resize(static_cast<std::size_t>(k));
     for (int j = 0; j < k; ++j) lengths[static_cast<std::size_t>(j)] = u(L.length_index(j));
@@ -269,7 +275,8 @@ void design_system_pass(const CurvatureProfileProblem& P, const Eigen::VectorXd&
         Ordinates gr = Ordinates::Zero(p + 1);
         double binomial = 1.0;  // C(e, i)
         for (int i = 0; i <= e; ++i) {
-            const double coefficient = ((e - i) % 2 == 0 ? 1.0 : -1.0) * binomial;  // Δ^e b_0 = Σ (−1)^(e−i) C(e, i) b_i
+            const double coefficient =
+                ((e - i) % 2 == 0 ? 1.0 : -1.0) * binomial;  // Δ^e b_0 = Σ (−1)^(e−i) C(e, i) b_i
             gr(at_end ? p - e + i : i) = sign * factor * coefficient / scale;
             binomial = binomial * (e - i) / (i + 1);
         }
@@ -286,7 +293,8 @@ void design_system_pass(const CurvatureProfileProblem& P, const Eigen::VectorXd&
             write.entry(row, L.length_index(c.index), 1.0);
         } else if (c.kind == K::curvature_derivative) {
             const double h = chord(P, L.span_of_segment(c.from_left ? c.index - 1 : c.index)).norm();
-            out.f(row) = curvature_derivative_row(c.index, c.from_left, c.order, 1.0, h) - std::pow(h, c.order + 1) * c.value;
+            out.f(row) =
+                curvature_derivative_row(c.index, c.from_left, c.order, 1.0, h) - std::pow(h, c.order + 1) * c.value;
         } else {
             const double target = c.kind == K::curvature ? c.value : 1.0 / c.value;
             out.f(row) = curvature_row(c.index, c.from_left, 1.0) - target;
@@ -310,16 +318,17 @@ void design_system_pass(const CurvatureProfileProblem& P, const Eigen::VectorXd&
 
 namespace detail {
 
-
 // f(u) (and J(u)) into `out`, whose arrays (and J's pattern) are reused from call to call. Once J's
 // pattern is known, J's entries are summed in place (JacobianSlots); should one not be where it
 // was, the evaluation is redone with triplets and J rebuilt from them.
-void design_system_into(const CurvatureProfileProblem& P, const Eigen::VectorXd& u, bool with_jacobian, DesignWorkspace& workspace, DesignSystem& out) {
+void design_system_into(const CurvatureProfileProblem& P, const Eigen::VectorXd& u, bool with_jacobian,
+                        DesignWorkspace& workspace, DesignSystem& out) {
     const int rows = design_equations(P), cols = design_unknowns(P);
     Eigen::SparseMatrix<double>& J = out.jacobian;
     if (with_jacobian && J.rows() == rows && J.cols() == cols && J.isCompressed() && !workspace.slots.empty()) {
         std::fill(J.valuePtr(), J.valuePtr() + J.nonZeros(), 0.0);
-        JacobianSlots slots{J.valuePtr(), J.innerIndexPtr(), J.outerIndexPtr(), workspace.slots.data(), workspace.slots.size()};
+        JacobianSlots slots{J.valuePtr(), J.innerIndexPtr(), J.outerIndexPtr(), workspace.slots.data(),
+                            workspace.slots.size()};
         design_system_pass(P, u, true, RowWriter(P.layout, nullptr, &slots), workspace, out);
         if (!slots.failed && slots.next == slots.count) return;
     }
@@ -362,14 +371,22 @@ DesignBandOrdering design_band_ordering(const CurvatureProfileProblem& P) {
     std::vector<double> row_key;
     row_key.reserve(static_cast<std::size_t>(design_equations(P)));
     for (int i = 0; i < L.spans(); ++i) row_key.insert(row_key.end(), 2, 0.5 * (L.first_segment(i) + L.end_segment(i)));
-    for (int j = 0; j < k; ++j) row_key.insert(row_key.end(), static_cast<std::size_t>(shape_rows(P.shapes[static_cast<std::size_t>(j)], p)), j + 0.5);
-    for (const auto& c : P.conditions) row_key.push_back(c.kind == DesignCondition::Kind::segment_length ? c.index + 0.5 : c.index);
-    if (P.closed) row_key.insert(row_key.end(), static_cast<std::size_t>(P.closing_continuity), 0.0);  // they join both ends: no place makes them narrow
+    for (int j = 0; j < k; ++j)
+        row_key.insert(row_key.end(), static_cast<std::size_t>(shape_rows(P.shapes[static_cast<std::size_t>(j)], p)),
+                       j + 0.5);
+    for (const auto& c : P.conditions)
+        row_key.push_back(c.kind == DesignCondition::Kind::segment_length ? c.index + 0.5 : c.index);
+    if (P.closed)
+        row_key.insert(row_key.end(), static_cast<std::size_t>(P.closing_continuity),
+                       0.0);  // they join both ends: no place makes them narrow
     auto positions = [](const std::vector<double>& key) {
         std::vector<int> order(key.size()), position(key.size());
         for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
-        std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return key[static_cast<std::size_t>(a)] < key[static_cast<std::size_t>(b)]; });
-        for (std::size_t i = 0; i < order.size(); ++i) position[static_cast<std::size_t>(order[i])] = static_cast<int>(i);
+        std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+            return key[static_cast<std::size_t>(a)] < key[static_cast<std::size_t>(b)];
+        });
+        for (std::size_t i = 0; i < order.size(); ++i)
+            position[static_cast<std::size_t>(order[i])] = static_cast<int>(i);
         return position;
     };
     return {positions(row_key), positions(column_key)};
@@ -378,18 +395,22 @@ DesignBandOrdering design_band_ordering(const CurvatureProfileProblem& P) {
 Eigen::VectorXd c2_start(const CurvatureProfileProblem& P) {
     require_valid_problem(P, "intrinsic::c2_start");
     const KnotLayout& L = P.layout;
-    const spline::PiecewiseHermiteCurve c2 = spline::cubic_spline_interpolant(P.points, spline::ParameterSpacing::chord_length, P.closed);
+    const spline::PiecewiseHermiteCurve c2 =
+        spline::cubic_spline_interpolant(P.points, spline::ParameterSpacing::chord_length, P.closed);
     const int n = L.spans();
     std::vector<double> span_length(static_cast<std::size_t>(n)), seg(static_cast<std::size_t>(L.segments()));
     for (int i = 0; i < n; ++i) {
-        span_length[static_cast<std::size_t>(i)] = analysis::piece_arc_length(c2, i, i + 1, 1);  // one cubic piece, one 20-point rule: ample for a start
+        span_length[static_cast<std::size_t>(i)] =
+            analysis::piece_arc_length(c2, i, i + 1, 1);  // one cubic piece, one 20-point rule: ample for a start
         const int a = L.first_segment(i), b = L.end_segment(i);
-        for (int j = a; j < b; ++j) seg[static_cast<std::size_t>(j)] = span_length[static_cast<std::size_t>(i)] / (b - a);
+        for (int j = a; j < b; ++j)
+            seg[static_cast<std::size_t>(j)] = span_length[static_cast<std::size_t>(i)] / (b - a);
     }
     const int l = L.independent_lengths();
     Eigen::VectorXd u = Eigen::VectorXd::Zero(l + L.ordinates());
     Eigen::VectorXd count = Eigen::VectorXd::Zero(l);
-    for (int j = 0; j < L.segments(); ++j) u(L.length_index(j)) += seg[static_cast<std::size_t>(j)], count(L.length_index(j)) += 1;
+    for (int j = 0; j < L.segments(); ++j)
+        u(L.length_index(j)) += seg[static_cast<std::size_t>(j)], count(L.length_index(j)) += 1;
     for (int i = 0; i < l; ++i) u(i) /= count(i);
     std::vector<double> lengths;
     for (int j = 0; j < L.segments(); ++j) lengths.push_back(u(L.length_index(j)));
@@ -397,14 +418,17 @@ Eigen::VectorXd c2_start(const CurvatureProfileProblem& P) {
     const std::vector<double> g = shape.greville_abscissae();
     // Span start positions in the (start) arc length.
     std::vector<double> span_start;
-    for (int i = 0; i <= n; ++i) span_start.push_back(shape.breakpoints()[static_cast<std::size_t>(i < n ? L.first_segment(i) : L.segments())]);
+    for (int i = 0; i <= n; ++i)
+        span_start.push_back(shape.breakpoints()[static_cast<std::size_t>(i < n ? L.first_segment(i) : L.segments())]);
     double previous = 0.0;
     for (int i = 0; i < L.ordinates(); ++i) {
         const double s = g[static_cast<std::size_t>(i)];
         int span = static_cast<int>(std::upper_bound(span_start.begin(), span_start.end(), s) - span_start.begin()) - 1;
         span = std::clamp(span, 0, n - 1);
-        const double frac =
-            std::clamp((s - span_start[static_cast<std::size_t>(span)]) / (span_start[static_cast<std::size_t>(span) + 1] - span_start[static_cast<std::size_t>(span)]), 0.0, 1.0);
+        const double frac = std::clamp(
+            (s - span_start[static_cast<std::size_t>(span)]) /
+                (span_start[static_cast<std::size_t>(span) + 1] - span_start[static_cast<std::size_t>(span)]),
+            0.0, 1.0);
         const Eigen::MatrixXd j = c2.jet(span + frac, 1);
         double a = std::atan2(j(1, 1), j(1, 0));
         if (i > 0) a += 2.0 * std::numbers::pi * std::round((previous - a) / (2.0 * std::numbers::pi));

@@ -10,7 +10,8 @@ DesignVerification verify_design(const CurvatureProfileProblem& P, const Intrins
     require_valid_problem(P, "intrinsic::verify_design");
     const TangentAngleSpline& psi = curve.tangent_angle();
     const KnotLayout& L = P.layout;
-    if (!(psi.layout() == L)) fail_input("intrinsic::verify_design", "the curve's knot layout differs from the problem's");
+    if (!(psi.layout() == L))
+        fail_input("intrinsic::verify_design", "the curve's knot layout differs from the problem's");
     const auto& w = psi.breakpoints();
     using GK = boost::math::quadrature::gauss_kronrod<double, 31>;
     DesignVerification v;

@@ -2,7 +2,8 @@
 /// @file
 /// Independent checks of a designed curve (curvature_profile, "claims beyond the figures"): they use
 /// the B-spline (de Boor) evaluation of ψ and Boost.Math's adaptive Gauss–Kronrod quadrature
-/// (31 points, relative tolerance 1e−14 on (cos ψ + 2, sin ψ + 2)), not the Bézier form and Gauss–Legendre rule the solver uses.
+/// (31 points, relative tolerance 1e−14 on (cos ψ + 2, sin ψ + 2)), not the Bézier form and Gauss–Legendre rule the
+/// solver uses.
 ///   interpolation_error   max_i |r(s_i) − P_i| with r(s_i) = P_0 + Σ ∫ (cos ψ, sin ψ) ds
 ///                         accumulated span by span (closed: also the return to P_0);
 ///   line_curvature        max |κ| at 20 interior samples of every line segment;

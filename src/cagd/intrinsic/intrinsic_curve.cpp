@@ -9,28 +9,36 @@
 namespace cagd::intrinsic {
 
 IntrinsicCurve::IntrinsicCurve(Eigen::Vector2d start, TangentAngleSpline psi) : psi_(std::move(psi)) {
-    if (!start.allFinite()) fail_input("intrinsic::IntrinsicCurve", "start point (" + full_precision(start(0)) + ", " + full_precision(start(1)) + ") is not finite");
+    if (!start.allFinite())
+        fail_input("intrinsic::IntrinsicCurve",
+                   "start point (" + full_precision(start(0)) + ", " + full_precision(start(1)) + ") is not finite");
     const int k = psi_.segments();
     points_.resize(k + 1, 2);
     points_.row(0) = start.transpose();
     for (int j = 0; j < k; ++j)
-        points_.row(j + 1) = points_.row(j) + psi_.segment_lengths()[static_cast<std::size_t>(j)] * direction_integrals(psi_.bezier().row(j).transpose()).transpose();
+        points_.row(j + 1) = points_.row(j) + psi_.segment_lengths()[static_cast<std::size_t>(j)] *
+                                                  direction_integrals(psi_.bezier().row(j).transpose()).transpose();
 }
 
 double IntrinsicCurve::segment_offset_bound(const IntrinsicCurve& other, int j) const {
     const char* who = "intrinsic::IntrinsicCurve::segment_offset_bound";
     if (j < 0 || j >= psi_.segments() || j >= other.psi_.segments())
-        fail_input(who, "segment " + std::to_string(j) + " is not one of both curves (" + std::to_string(psi_.segments()) + " and " + std::to_string(other.psi_.segments()) +
+        fail_input(who, "segment " + std::to_string(j) + " is not one of both curves (" +
+                            std::to_string(psi_.segments()) + " and " + std::to_string(other.psi_.segments()) +
                             " segments)");
     if (psi_.degree() != other.psi_.degree())
-        fail_input(who, "tangent angles of degree " + std::to_string(psi_.degree()) + " and " + std::to_string(other.psi_.degree()) + " have no common Bézier ordinates");
-    const double d = psi_.segment_lengths()[static_cast<std::size_t>(j)], e = other.psi_.segment_lengths()[static_cast<std::size_t>(j)];
+        fail_input(who, "tangent angles of degree " + std::to_string(psi_.degree()) + " and " +
+                            std::to_string(other.psi_.degree()) + " have no common Bézier ordinates");
+    const double d = psi_.segment_lengths()[static_cast<std::size_t>(j)],
+                 e = other.psi_.segment_lengths()[static_cast<std::size_t>(j)];
     const double angle = (psi_.bezier().row(j) - other.psi_.bezier().row(j)).cwiseAbs().maxCoeff();
     const double bound = (points_.row(j) - other.points_.row(j)).norm() + std::abs(d - e) + std::min(d, e) * angle;
     // The rounding's scale: the positions, the lengths, and ψ's ordinates times the length (ψ itself
     // rounds relative to its own size, which an unwrapped tangent angle can make large).
-    const double turning = std::max(psi_.bezier().row(j).cwiseAbs().maxCoeff(), other.psi_.bezier().row(j).cwiseAbs().maxCoeff());
-    const double magnitude = points_.row(j).cwiseAbs().maxCoeff() + other.points_.row(j).cwiseAbs().maxCoeff() + (d + e) * (1.0 + turning);
+    const double turning =
+        std::max(psi_.bezier().row(j).cwiseAbs().maxCoeff(), other.psi_.bezier().row(j).cwiseAbs().maxCoeff());
+    const double magnitude =
+        points_.row(j).cwiseAbs().maxCoeff() + other.points_.row(j).cwiseAbs().maxCoeff() + (d + e) * (1.0 + turning);
     return (bound + 1e-13 * magnitude) * (1.0 + 1e-12);
 }
 
@@ -40,7 +48,8 @@ namespace {
 // taken from the stored points, bit for bit as the quadrature gives them (+ 0.0: r_j + d_j·(+0)
 // turns a −0 coordinate into +0), without its 16 sines and cosines per piece — a sampled curve
 // asks for every join twice.
-Eigen::RowVector2d position_in_segment(const Eigen::MatrixXd& points, const TangentAngleSpline& psi, int j, double d, double tau) {
+Eigen::RowVector2d position_in_segment(const Eigen::MatrixXd& points, const TangentAngleSpline& psi, int j, double d,
+                                       double tau) {
     if (tau == 0.0) return points.row(j).array() + 0.0;
     if (tau == 1.0) return points.row(j + 1);
     return points.row(j) + d * direction_integrals(psi.bezier().row(j).transpose(), tau).transpose();
@@ -68,7 +77,8 @@ void IntrinsicCurve::evaluate_jet(double s, int first, JetSide side, Eigen::Ref<
         j = psi_.segment_at(s);
     }
     if (first == 0) {
-        const double w = psi_.breakpoints()[static_cast<std::size_t>(j)], d = psi_.segment_lengths()[static_cast<std::size_t>(j)];
+        const double w = psi_.breakpoints()[static_cast<std::size_t>(j)],
+                     d = psi_.segment_lengths()[static_cast<std::size_t>(j)];
         out.row(0) = position_in_segment(points_, psi_, j, d, std::min(1.0, std::max(0.0, (s - w) / d)));
         if (order == 0) return;
     }
@@ -78,11 +88,14 @@ void IntrinsicCurve::evaluate_jet(double s, int first, JetSide side, Eigen::Ref<
 }
 
 std::vector<ProfileSample> curvature_profile_samples(const IntrinsicCurve& curve, int per_segment) {
-    if (per_segment < 1) fail_input("intrinsic::curvature_profile_samples", "per_segment must be ≥ 1, got " + std::to_string(per_segment));
+    if (per_segment < 1)
+        fail_input("intrinsic::curvature_profile_samples",
+                   "per_segment must be ≥ 1, got " + std::to_string(per_segment));
     const TangentAngleSpline& psi = curve.tangent_angle();
     std::vector<ProfileSample> out;
     for (int j = 0; j < psi.segments(); ++j) {
-        const double a = psi.breakpoints()[static_cast<std::size_t>(j)], d = psi.segment_lengths()[static_cast<std::size_t>(j)];
+        const double a = psi.breakpoints()[static_cast<std::size_t>(j)],
+                     d = psi.segment_lengths()[static_cast<std::size_t>(j)];
         for (int m = 0; m <= per_segment; ++m) {
             const double s = std::min(a + d * m / per_segment, curve.length());
             const Eigen::MatrixXd r = curve.jet(s, 0);

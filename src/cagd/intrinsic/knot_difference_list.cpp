@@ -11,33 +11,41 @@
 
 namespace cagd::intrinsic {
 
-KnotLayout::KnotLayout(int degree, std::vector<int> segments_per_span, std::vector<int> multiplicity, std::vector<int> length_index)
+KnotLayout::KnotLayout(int degree, std::vector<int> segments_per_span, std::vector<int> multiplicity,
+                       std::vector<int> length_index)
     : degree_(degree), multiplicity_(std::move(multiplicity)), length_index_(std::move(length_index)) {
     const std::string who = "intrinsic::KnotLayout";
     if (degree_ < 2 || degree_ > 4) fail_input(who, "degree must be 2, 3 or 4, got " + std::to_string(degree_));
     if (segments_per_span.empty()) fail_input(who, "needs at least one span");
     span_first_.push_back(0);
     for (std::size_t i = 0; i < segments_per_span.size(); ++i) {
-        if (segments_per_span[i] < 1) fail_input(who, "span " + std::to_string(i) + " has " + std::to_string(segments_per_span[i]) + " segments (≥ 1 required)");
+        if (segments_per_span[i] < 1)
+            fail_input(who, "span " + std::to_string(i) + " has " + std::to_string(segments_per_span[i]) +
+                                " segments (≥ 1 required)");
         for (int s = 0; s < segments_per_span[i]; ++s) segment_span_.push_back(static_cast<int>(i));
         span_first_.push_back(span_first_.back() + segments_per_span[i]);
     }
     const int k = segments();
     if (static_cast<int>(multiplicity_.size()) != k + 1)
-        fail_input(who, "needs " + std::to_string(k + 1) + " breakpoint multiplicities, got " + std::to_string(multiplicity_.size()));
-    if (static_cast<int>(length_index_.size()) != k) fail_input(who, "needs " + std::to_string(k) + " length indices, got " + std::to_string(length_index_.size()));
+        fail_input(who, "needs " + std::to_string(k + 1) + " breakpoint multiplicities, got " +
+                            std::to_string(multiplicity_.size()));
+    if (static_cast<int>(length_index_.size()) != k)
+        fail_input(who, "needs " + std::to_string(k) + " length indices, got " + std::to_string(length_index_.size()));
     for (int g = 0; g <= k; ++g) {
         const int m = multiplicity_[static_cast<std::size_t>(g)];
         const bool end = g == 0 || g == k;
         if (end && m != degree_)
-            fail_input(who, "end breakpoint " + std::to_string(g) + " has multiplicity " + std::to_string(m) + "; the ends must have multiplicity p = " + std::to_string(degree_));
+            fail_input(who, "end breakpoint " + std::to_string(g) + " has multiplicity " + std::to_string(m) +
+                                "; the ends must have multiplicity p = " + std::to_string(degree_));
         if (!end && (m < 1 || m > degree_))
-            fail_input(who, "interior breakpoint " + std::to_string(g) + " has multiplicity " + std::to_string(m) + "; allowed 1.." + std::to_string(degree_));
+            fail_input(who, "interior breakpoint " + std::to_string(g) + " has multiplicity " + std::to_string(m) +
+                                "; allowed 1.." + std::to_string(degree_));
     }
     for (int j = 0; j < k; ++j) {
         const int li = length_index_[static_cast<std::size_t>(j)];
         if (li < 0 || li > lengths_)
-            fail_input(who, "segment " + std::to_string(j) + " has length index " + std::to_string(li) + "; indices must be numbered in order of first use (next new index " +
+            fail_input(who, "segment " + std::to_string(j) + " has length index " + std::to_string(li) +
+                                "; indices must be numbered in order of first use (next new index " +
                                 std::to_string(lengths_) + ")");
         if (li == lengths_) ++lengths_;
     }
@@ -58,7 +66,8 @@ KnotLayout KnotLayout::elevated() const {
 }
 
 bool KnotLayout::operator==(const KnotLayout& o) const {
-    return degree_ == o.degree_ && span_first_ == o.span_first_ && multiplicity_ == o.multiplicity_ && length_index_ == o.length_index_;
+    return degree_ == o.degree_ && span_first_ == o.span_first_ && multiplicity_ == o.multiplicity_ &&
+           length_index_ == o.length_index_;
 }
 
 namespace {
@@ -102,11 +111,14 @@ std::vector<Token> tokenize(const std::string& s) {
             continue;
         }
         if (std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '+') {
-            while (i < s.size() && (std::isalnum(static_cast<unsigned char>(s[i])) || s[i] == '.' || s[i] == '-' || s[i] == '+')) ++i;
+            while (i < s.size() &&
+                   (std::isalnum(static_cast<unsigned char>(s[i])) || s[i] == '.' || s[i] == '-' || s[i] == '+'))
+                ++i;
             out.push_back({Token::number, s.substr(start, i - start), start});
             continue;
         }
-        fail_input(kKnotListWho, "unexpected character '" + std::string(1, c) + "' at position " + std::to_string(i) + " of \"" + s + "\" (allowed: { } , numbers, names)");
+        fail_input(kKnotListWho, "unexpected character '" + std::string(1, c) + "' at position " + std::to_string(i) +
+                                     " of \"" + s + "\" (allowed: { } , numbers, names)");
     }
     out.push_back({Token::end, "", s.size()});
     return out;
@@ -128,20 +140,25 @@ public:
         expect(Token::open, "the list must start with '{'");
         std::vector<Entry> items = parse_items(0);
         if (tokens_[pos_].kind != Token::end)
-            fail_input(kKnotListWho, "unexpected '" + tokens_[pos_].text + "' after the closing '}' at position " + std::to_string(tokens_[pos_].position));
+            fail_input(kKnotListWho, "unexpected '" + tokens_[pos_].text + "' after the closing '}' at position " +
+                                         std::to_string(tokens_[pos_].position));
         return items;
     }
 
 private:
     std::vector<Entry> parse_items(int depth) {
         std::vector<Entry> items;
-        if (tokens_[pos_].kind == Token::close) fail_input(kKnotListWho, "empty list at position " + std::to_string(tokens_[pos_].position) + " of \"" + text_ + "\"");
+        if (tokens_[pos_].kind == Token::close)
+            fail_input(kKnotListWho,
+                       "empty list at position " + std::to_string(tokens_[pos_].position) + " of \"" + text_ + "\"");
         while (true) {
             const Token& t = tokens_[pos_];
             Entry e;
             e.position = t.position;
             if (t.kind == Token::open) {
-                if (depth > 0) fail_input(kKnotListWho, "sub-lists cannot nest (position " + std::to_string(t.position) + " of \"" + text_ + "\")");
+                if (depth > 0)
+                    fail_input(kKnotListWho, "sub-lists cannot nest (position " + std::to_string(t.position) +
+                                                 " of \"" + text_ + "\")");
                 ++pos_;
                 e.is_list = true;
                 e.children = parse_items(depth + 1);
@@ -150,7 +167,8 @@ private:
                 const double v = std::strtod(t.text.c_str(), &endp);
                 if (endp != t.text.c_str() + t.text.size() || !std::isfinite(v) || v < 0)
                     fail_input(kKnotListWho,
-                               "entry \"" + t.text + "\" at position " + std::to_string(t.position) + " is not a finite number ≥ 0 (\"…\" is not accepted: write every entry)");
+                               "entry \"" + t.text + "\" at position " + std::to_string(t.position) +
+                                   " is not a finite number ≥ 0 (\"…\" is not accepted: write every entry)");
                 if (v == 0.0)
                     e.zero = true;
                 else
@@ -160,7 +178,8 @@ private:
                 e.label = t.text;
                 ++pos_;
             } else {
-                fail_input(kKnotListWho, "expected an entry at position " + std::to_string(t.position) + " of \"" + text_ + "\", found '" +
+                fail_input(kKnotListWho, "expected an entry at position " + std::to_string(t.position) + " of \"" +
+                                             text_ + "\", found '" +
                                              (t.kind == Token::end ? std::string("end of text") : t.text) + "'");
             }
             items.push_back(std::move(e));
@@ -173,7 +192,8 @@ private:
                 ++pos_;
                 return items;
             }
-            fail_input(kKnotListWho, "expected ',' or '}' at position " + std::to_string(sep.position) + " of \"" + text_ + "\"");
+            fail_input(kKnotListWho,
+                       "expected ',' or '}' at position " + std::to_string(sep.position) + " of \"" + text_ + "\"");
         }
     }
     void expect(Token::Kind k, const std::string& what) {
@@ -211,7 +231,8 @@ KnotDifferenceList parse_knot_difference_list(const std::string& text, int degre
     std::map<std::string, int> by_name;
     auto add_segment = [&](const Entry& e) {
         int idx;
-        const bool numeric = std::isdigit(static_cast<unsigned char>(e.label[0])) || e.label[0] == '.' || e.label[0] == '+';
+        const bool numeric =
+            std::isdigit(static_cast<unsigned char>(e.label[0])) || e.label[0] == '.' || e.label[0] == '+';
         if (!numeric && by_name.count(e.label))
             idx = by_name[e.label];
         else {
@@ -226,8 +247,10 @@ KnotDifferenceList parse_knot_difference_list(const std::string& text, int degre
     int zeros = 0;
     while (i < items.size() && items[i].zero) ++zeros, ++i;
     if (zeros != degree - 1)
-        fail_input(kKnotListWho, "a degree-" + std::to_string(degree) + " list starts with " + std::to_string(degree - 1) + " zero(s) (end knot of multiplicity " +
-                                     std::to_string(degree) + "), \"" + text + "\" starts with " + std::to_string(zeros));
+        fail_input(kKnotListWho, "a degree-" + std::to_string(degree) + " list starts with " +
+                                     std::to_string(degree - 1) + " zero(s) (end knot of multiplicity " +
+                                     std::to_string(degree) + "), \"" + text + "\" starts with " +
+                                     std::to_string(zeros));
     mult.push_back(degree);
     bool after_span = false;
     int pending = 0;  // zeros since the last span
@@ -239,7 +262,8 @@ KnotDifferenceList parse_knot_difference_list(const std::string& text, int degre
         }
         if (after_span) {
             if (pending + 1 > degree)
-                fail_input(kKnotListWho, std::to_string(pending) + " consecutive zeros before position " + std::to_string(e.position) + " make a knot of multiplicity " +
+                fail_input(kKnotListWho, std::to_string(pending) + " consecutive zeros before position " +
+                                             std::to_string(e.position) + " make a knot of multiplicity " +
                                              std::to_string(pending + 1) + " > p = " + std::to_string(degree));
             mult.push_back(pending + 1);
         }
@@ -251,7 +275,8 @@ KnotDifferenceList parse_knot_difference_list(const std::string& text, int degre
             const auto& c = e.children;
             if (c.front().zero || c.back().zero)
                 fail_input(kKnotListWho,
-                           "the sub-list at position " + std::to_string(e.position) + " must begin and end with a segment length (its zeros mark knots inside the span)");
+                           "the sub-list at position " + std::to_string(e.position) +
+                               " must begin and end with a segment length (its zeros mark knots inside the span)");
             int segs = 0, inner = 0;
             for (std::size_t m = 0; m < c.size(); ++m) {
                 if (c[m].zero) {
@@ -260,7 +285,9 @@ KnotDifferenceList parse_knot_difference_list(const std::string& text, int degre
                 }
                 if (segs > 0) {
                     if (inner + 1 > degree)
-                        fail_input(kKnotListWho, std::to_string(inner) + " consecutive zeros inside the sub-list at position " + std::to_string(e.position) +
+                        fail_input(kKnotListWho, std::to_string(inner) +
+                                                     " consecutive zeros inside the sub-list at position " +
+                                                     std::to_string(e.position) +
                                                      " exceed multiplicity p = " + std::to_string(degree));
                     mult.push_back(inner + 1);
                 }
@@ -274,8 +301,9 @@ KnotDifferenceList parse_knot_difference_list(const std::string& text, int degre
     }
     if (per_span.empty()) fail_input(kKnotListWho, "\"" + text + "\" has no segment");
     if (pending != degree - 1)
-        fail_input(kKnotListWho,
-                   "a degree-" + std::to_string(degree) + " list ends with " + std::to_string(degree - 1) + " zero(s), \"" + text + "\" ends with " + std::to_string(pending));
+        fail_input(kKnotListWho, "a degree-" + std::to_string(degree) + " list ends with " +
+                                     std::to_string(degree - 1) + " zero(s), \"" + text + "\" ends with " +
+                                     std::to_string(pending));
     mult.push_back(degree);
     return {KnotLayout(degree, per_span, mult, length_index), labels, values};
 }
@@ -321,18 +349,26 @@ std::string format_list(const KnotLayout& L, const std::vector<std::string>& seg
 
 }  // namespace
 
-std::string format_knot_difference_list(const KnotLayout& layout, const std::vector<double>& segment_lengths, int decimals) {
+std::string format_knot_difference_list(const KnotLayout& layout, const std::vector<double>& segment_lengths,
+                                        int decimals) {
     if (static_cast<int>(segment_lengths.size()) != layout.segments())
-        fail_input("intrinsic::format_knot_difference_list", "needs " + std::to_string(layout.segments()) + " segment lengths, got " + std::to_string(segment_lengths.size()));
-    if (decimals < 0 || decimals > 17) fail_input("intrinsic::format_knot_difference_list", "decimals must be in 0..17, got " + std::to_string(decimals));
+        fail_input("intrinsic::format_knot_difference_list", "needs " + std::to_string(layout.segments()) +
+                                                                 " segment lengths, got " +
+                                                                 std::to_string(segment_lengths.size()));
+    if (decimals < 0 || decimals > 17)
+        fail_input("intrinsic::format_knot_difference_list",
+                   "decimals must be in 0..17, got " + std::to_string(decimals));
     std::vector<std::string> t;
     t.reserve(segment_lengths.size());
     for (double v : segment_lengths) {
-        if (!std::isfinite(v) || v <= 0) fail_input("intrinsic::format_knot_difference_list", "segment length " + full_precision(v) + " is not finite and > 0");
+        if (!std::isfinite(v) || v <= 0)
+            fail_input("intrinsic::format_knot_difference_list",
+                       "segment length " + full_precision(v) + " is not finite and > 0");
         t.push_back(fixed(v, decimals));
         if (t.back().find_first_of("123456789") == std::string::npos)  // reads as 0
-            fail_input("intrinsic::format_knot_difference_list",
-                       "segment length " + full_precision(v) + " prints as 0 with " + std::to_string(decimals) + " decimals (it would read as a repeated knot)");
+            fail_input("intrinsic::format_knot_difference_list", "segment length " + full_precision(v) +
+                                                                     " prints as 0 with " + std::to_string(decimals) +
+                                                                     " decimals (it would read as a repeated knot)");
     }
     return format_list(layout, t);
 }

@@ -33,14 +33,16 @@
 
 namespace cagd::intrinsic {
 
-/// The knot structure of ψ: degree p, segments per span, breakpoint multiplicities and which segments share a length (see above).
+/// The knot structure of ψ: degree p, segments per span, breakpoint multiplicities and which segments share a length
+/// (see above).
 class KnotLayout {
 public:
     /// segments_per_span: n entries ≥ 1; multiplicity: k + 1 entries (k = Σ segments_per_span),
     /// ends = degree, interior in [1, degree]; length_index: k entries, the independent length of
     /// each segment, numbered in order of first appearance (0, 1, …, l − 1). degree ∈ {2, 3, 4}
     /// (4: Spiro's quartic ψ, curvature cubic in arc length).
-    KnotLayout(int degree, std::vector<int> segments_per_span, std::vector<int> multiplicity, std::vector<int> length_index);
+    KnotLayout(int degree, std::vector<int> segments_per_span, std::vector<int> multiplicity,
+               std::vector<int> length_index);
 
     /// p.
     int degree() const { return degree_; }
@@ -55,7 +57,9 @@ public:
     int farin_knot_count() const { return ordinates_ + degree_ - 1; }
     /// The first segment of a span.
     int first_segment(int span) const { return span_first_[static_cast<std::size_t>(span)]; }
-    int end_segment(int span) const { return span_first_[static_cast<std::size_t>(span) + 1]; }  ///< one past the last segment of a span
+    int end_segment(int span) const {
+        return span_first_[static_cast<std::size_t>(span) + 1];
+    }  ///< one past the last segment of a span
     /// The span a segment belongs to.
     int span_of_segment(int segment) const { return segment_span_[static_cast<std::size_t>(segment)]; }
     /// The multiplicity of breakpoint g (ends: p).
@@ -95,7 +99,8 @@ KnotDifferenceList parse_knot_difference_list(const std::string& text, int degre
 
 /// The list with segment lengths printed to `decimals` places ("{0, 5.000, 0, …}"); segment_lengths
 /// has one entry per segment.
-std::string format_knot_difference_list(const KnotLayout& layout, const std::vector<double>& segment_lengths, int decimals);
+std::string format_knot_difference_list(const KnotLayout& layout, const std::vector<double>& segment_lengths,
+                                        int decimals);
 /// The symbolic list with independent lengths named S0, S1, … (equal names = equal lengths).
 std::string format_knot_difference_list(const KnotLayout& layout);
 

@@ -60,7 +60,7 @@ const Eigen::Matrix<double, 5, 4>& ordinates_of_coefficients() {
 
 // One span's end quantities and their derivatives with respect to its k.
 struct SpanEnds {
-    double length = 0.0, turn = 0.0;  // ℓ and arg Z
+    double length = 0.0, turn = 0.0;     // ℓ and arg Z
     Eigen::Matrix<double, 5, 1> bezier;  // θ_n(t − 1/2) on [0, 1]
     // value[e][q]: e = 0 start (u = −1/2), 1 end (u = +1/2); q = 0 ψ − φ, 1..3 κ, κ', κ''.
     double value[2][4];
@@ -95,7 +95,8 @@ bool span_ends(const std::array<double, 4>& k, double chord, SpanEnds& out) {
             for (int m = 0; m < 4; ++m) kn += k[static_cast<std::size_t>(m)] * coefficient(d, m, e);
             const double scale = std::pow(out.length, d + 1), K = kn / scale;
             out.value[end][d + 1] = K;
-            for (int m = 0; m < 4; ++m) out.gradient[end][d + 1][m] = coefficient(d, m, e) / scale - (d + 1) * K * d_length(m) / out.length;
+            for (int m = 0; m < 4; ++m)
+                out.gradient[end][d + 1][m] = coefficient(d, m, e) / scale - (d + 1) * K * d_length(m) / out.length;
         }
     }
     return true;
@@ -111,7 +112,8 @@ CurvatureProfileProblem spiro_problem(const PointList& points, bool closed) {
     mult.front() = mult.back() = 4;
     for (int i = 0; i < spans; ++i) index.push_back(i);
     const KnotLayout layout(4, std::vector<int>(static_cast<std::size_t>(spans), 1), mult, index);
-    CurvatureProfileProblem problem{points, layout, std::vector<SegmentShape>(static_cast<std::size_t>(spans), SegmentShape::free), {}, closed, 0};
+    CurvatureProfileProblem problem{
+        points, layout, std::vector<SegmentShape>(static_cast<std::size_t>(spans), SegmentShape::free), {}, closed, 0};
     if (closed) {
         problem.closing_continuity = 4;
     } else {
@@ -153,12 +155,13 @@ Chords chords_of(const PointList& points, bool closed, const std::string& who) {
 }
 
 // f and J at ks; false (with the span) when a spiral closes on itself.
-bool chordwise_system(const Chords& C, bool closed, const std::vector<std::array<double, 4>>& ks, std::vector<SpanEnds>& ends, SpiroChordwiseSystem& out,
-                      int& bad_span) {
+bool chordwise_system(const Chords& C, bool closed, const std::vector<std::array<double, 4>>& ks,
+                      std::vector<SpanEnds>& ends, SpiroChordwiseSystem& out, int& bad_span) {
     const int S = static_cast<int>(C.length.size());
     ends.resize(static_cast<std::size_t>(S));
     for (int i = 0; i < S; ++i)
-        if (!span_ends(ks[static_cast<std::size_t>(i)], C.length[static_cast<std::size_t>(i)], ends[static_cast<std::size_t>(i)])) {
+        if (!span_ends(ks[static_cast<std::size_t>(i)], C.length[static_cast<std::size_t>(i)],
+                       ends[static_cast<std::size_t>(i)])) {
             bad_span = i;
             return false;
         }
@@ -190,7 +193,8 @@ bool chordwise_system(const Chords& C, bool closed, const std::vector<std::array
         const double scale = 0.5 * (C.length[static_cast<std::size_t>(a)] + C.length[static_cast<std::size_t>(b)]);
         for (int q = 0; q < 4; ++q) {
             const double s = q == 0 ? 1.0 : std::pow(scale, q);
-            const double va = A.value[1][q] + (q == 0 ? C.angle[static_cast<std::size_t>(a)] : 0.0), vb = B.value[0][q] + (q == 0 ? phi_b : 0.0);
+            const double va = A.value[1][q] + (q == 0 ? C.angle[static_cast<std::size_t>(a)] : 0.0),
+                         vb = B.value[0][q] + (q == 0 ? phi_b : 0.0);
             // The tangent angles agree modulo 2π, as in libspiro: a span may wind once more than
             // the polygon's bend says (the loops Spiro draws at sharp turns).
             out.f(row) = q == 0 ? std::remainder(va - vb, kTwoPi) : s * (va - vb);
@@ -209,17 +213,21 @@ bool chordwise_system(const Chords& C, bool closed, const std::vector<std::array
 
 }  // namespace
 
-SpiroChordwiseSystem spiro_chordwise_system(const PointList& points, bool closed, const std::vector<std::array<double, 4>>& ks) {
+SpiroChordwiseSystem spiro_chordwise_system(const PointList& points, bool closed,
+                                            const std::vector<std::array<double, 4>>& ks) {
     const std::string who = "intrinsic::spiro_chordwise_system";
     const Chords C = chords_of(points, closed, who);
-    if (ks.size() != C.length.size()) fail_input(who, "needs one row of ks per span (" + std::to_string(C.length.size()) + "), got " + std::to_string(ks.size()));
+    if (ks.size() != C.length.size())
+        fail_input(who, "needs one row of ks per span (" + std::to_string(C.length.size()) + "), got " +
+                            std::to_string(ks.size()));
     for (const auto& k : ks)
         for (double v : k)
             if (!std::isfinite(v)) fail_input(who, "curvature coefficient " + full_precision(v) + " is not finite");
     std::vector<SpanEnds> ends;
     SpiroChordwiseSystem out;
     int bad = -1;
-    if (!chordwise_system(C, closed, ks, ends, out, bad)) fail_input(who, "the spiral of span " + std::to_string(bad) + " closes on itself (its chord is 0)");
+    if (!chordwise_system(C, closed, ks, ends, out, bad))
+        fail_input(who, "the spiral of span " + std::to_string(bad) + " closes on itself (its chord is 0)");
     return out;
 }
 
@@ -241,19 +249,22 @@ SpiroChordwiseSolution solve_spiro_chordwise(const PointList& points, bool close
     for (int it = 0;; ++it) {
         int bad = -1;
         if (!chordwise_system(C, closed, sol.ks, ends, sys, bad)) {
-            sol.outcome = {Status::no_convergence, "chordwise spiro Newton: the spiral of span " + std::to_string(bad) + " closes on itself at iteration " + std::to_string(it)};
+            sol.outcome = {Status::no_convergence, "chordwise spiro Newton: the spiral of span " + std::to_string(bad) +
+                                                       " closes on itself at iteration " + std::to_string(it)};
             return sol;
         }
         sol.iterations = it;
         sol.residual = sys.f.lpNorm<Eigen::Infinity>();
         if (!std::isfinite(sol.residual)) {
-            sol.outcome = {Status::no_convergence, "chordwise spiro Newton: non-finite residual at iteration " + std::to_string(it)};
+            sol.outcome = {Status::no_convergence,
+                           "chordwise spiro Newton: non-finite residual at iteration " + std::to_string(it)};
             return sol;
         }
         if (sol.residual <= kChordwiseTolerance || (it > 0 && last_step <= kChordwiseSettledStep)) break;
         if (it == max_iterations) {
-            sol.outcome = {Status::no_convergence, "chordwise spiro Newton did not converge in " + std::to_string(max_iterations) + " iterations (‖f‖∞ = " +
-                                                       full_precision(sol.residual) + ")"};
+            sol.outcome = {Status::no_convergence, "chordwise spiro Newton did not converge in " +
+                                                       std::to_string(max_iterations) +
+                                                       " iterations (‖f‖∞ = " + full_precision(sol.residual) + ")"};
             return sol;
         }
         if (!analysed) {  // the pattern depends on the span count alone
@@ -263,7 +274,8 @@ SpiroChordwiseSolution solve_spiro_chordwise(const PointList& points, bool close
             lu.analyze(sys.jacobian, natural, natural, kMaxBandStorageRows);
         }
         if (!lu.factorize(sys.jacobian)) {
-            sol.outcome = {Status::no_convergence, "chordwise spiro Newton: singular Jacobian at iteration " + std::to_string(it)};
+            sol.outcome = {Status::no_convergence,
+                           "chordwise spiro Newton: singular Jacobian at iteration " + std::to_string(it)};
             return sol;
         }
         const Eigen::VectorXd delta = lu.solve(sys.f);
@@ -280,7 +292,8 @@ SpiroChordwiseSolution solve_spiro_chordwise(const PointList& points, bool close
             k[0] = 2.0 * std::remainder(0.5 * k[0], kTwoPi);
         }
         if (!(largest <= kLargestCoefficient)) {
-            sol.outcome = {Status::no_convergence, "chordwise spiro Newton diverged at iteration " + std::to_string(it) + " (a curvature coefficient reached " +
+            sol.outcome = {Status::no_convergence, "chordwise spiro Newton diverged at iteration " +
+                                                       std::to_string(it) + " (a curvature coefficient reached " +
                                                        full_precision(largest) + ")"};
             return sol;
         }
@@ -341,7 +354,9 @@ SpiroSolution solve_spiro(const PointList& points, bool closed) {
     // A closed solution that does not turn (a figure eight) has no arc-length form here: turns = 0
     // means "the polygon's orientation" to the design problem.
     if (closed && out.chordwise.turns == 0) {
-        out.solution.outcome = {Status::no_convergence, "the chordwise solution closes with turning number 0 (a figure eight), which the arc-length form does not take"};
+        out.solution.outcome = {Status::no_convergence,
+                                "the chordwise solution closes with turning number 0 (a figure eight), which the "
+                                "arc-length form does not take"};
         return out;
     }
     if (closed) out.problem.turns = out.chordwise.turns;  // both formulations close alike
@@ -354,7 +369,8 @@ SpiroSolution solve_spiro(const PointList& points, bool closed) {
     return out;
 }
 
-SpiroSolution solve_spiro_from(const PointList& points, bool closed, const Eigen::VectorXd& start, double required_contraction) {
+SpiroSolution solve_spiro_from(const PointList& points, bool closed, const Eigen::VectorXd& start,
+                               double required_contraction) {
     if (!closed) {
         SpiroSolution out{spiro_problem(points, closed), {}, {}};
         if (start.size() == design_unknowns(out.problem)) {

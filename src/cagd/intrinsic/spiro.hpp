@@ -49,22 +49,23 @@ CurvatureProfileProblem spiro_problem(const PointList& points, bool closed);
 
 /// Levien's chordwise solution: per span, k_i = (k0, k1, k2, k3), its arc length and its ψ.
 struct SpiroChordwiseSolution {
-    Outcome outcome;  ///< ok, or no_convergence with the residual and the iteration
+    Outcome outcome;                        ///< ok, or no_convergence with the residual and the iteration
     std::vector<std::array<double, 4>> ks;  ///< libspiro's ks, one row per span
     std::vector<double> arc_lengths;        ///< ℓ_i = c_i / |Z_i|
     std::vector<double> start_angles;       ///< ψ at the start of each span (unwrapped along the curve)
     int iterations = 0;                     ///< Newton iterations taken
     double residual = 0.0;                  ///< ‖f‖∞ of the last iterate (dimensionless)
-    int turns = 0;  ///< closed: the turning number of the solution, (ψ(L) − ψ(0))/2π
+    int turns = 0;                          ///< closed: the turning number of the solution, (ψ(L) − ψ(0))/2π
 };
 /// Levien's chordwise equations at given ks: f (4 per span; open: κ_n' and κ_n'' at the start, the
 /// G4 rows of each interior point, κ_n' and κ_n'' at the end) and its exact sparse Jacobian ∂f/∂k.
 struct SpiroChordwiseSystem {
-    Eigen::VectorXd f;                      ///< the residuals
-    Eigen::SparseMatrix<double> jacobian;   ///< ∂f/∂k, k ordered span by span
+    Eigen::VectorXd f;                     ///< the residuals
+    Eigen::SparseMatrix<double> jacobian;  ///< ∂f/∂k, k ordered span by span
 };
 /// f and J at ks (one row per span). InvalidInput when a spiral's chord vanishes.
-SpiroChordwiseSystem spiro_chordwise_system(const PointList& points, bool closed, const std::vector<std::array<double, 4>>& ks);
+SpiroChordwiseSystem spiro_chordwise_system(const PointList& points, bool closed,
+                                            const std::vector<std::array<double, 4>>& ks);
 
 /// Newton on Levien's chordwise equations from k = 0 (see above).
 SpiroChordwiseSolution solve_spiro_chordwise(const PointList& points, bool closed, int max_iterations = 60);
@@ -87,6 +88,7 @@ SpiroSolution solve_spiro(const PointList& points, bool closed);
 /// number the chordwise solution decides) and for a start of another size: solve_spiro. When the
 /// start serves, `chordwise` is not run (iterations 0). The result meets solve_spiro's tolerance, on
 /// the solution branch of the start.
-SpiroSolution solve_spiro_from(const PointList& points, bool closed, const Eigen::VectorXd& start, double required_contraction);
+SpiroSolution solve_spiro_from(const PointList& points, bool closed, const Eigen::VectorXd& start,
+                               double required_contraction);
 
 }  // namespace cagd::intrinsic

@@ -58,13 +58,17 @@ public:
     void local_farin_knots_into(int segment, double* out) const;  ///< the same into out[0..2p), no allocation
     /// The same from a layout and segment lengths alone (no spline built: the Newton iterations'
     /// path); lengths has layout.segments() values.
-    static void local_farin_knots_into(const KnotLayout& layout, const std::vector<double>& lengths, int segment, double* out);
+    static void local_farin_knots_into(const KnotLayout& layout, const std::vector<double>& lengths, int segment,
+                                       double* out);
     /// InvalidInput naming `who` unless every segment length is finite and > 0 and every one of the
     /// `ordinates` de Boor ordinates is finite (the constructor's checks, for callers that hold ψ's
     /// values without building it).
-    static void require_valid_values(const char* who, const std::vector<double>& lengths, const double* de_boor, std::size_t ordinates);
-    std::vector<double> greville_abscissae() const;               ///< one per de Boor ordinate
-    const Eigen::MatrixXd& bezier() const { return bezier_; }  ///< k × (p + 1): the Bézier ordinates b_{j,r} of each segment
+    static void require_valid_values(const char* who, const std::vector<double>& lengths, const double* de_boor,
+                                     std::size_t ordinates);
+    std::vector<double> greville_abscissae() const;  ///< one per de Boor ordinate
+    const Eigen::MatrixXd& bezier() const {
+        return bezier_;
+    }  ///< k × (p + 1): the Bézier ordinates b_{j,r} of each segment
 
     /// ψ^{(d)}(s), d = 0..order, by the B-spline basis (right-continuous; s = length from the left).
     Eigen::VectorXd jet(double s, int order) const;
@@ -80,7 +84,7 @@ public:
 
 private:
     int checked_span(int segment, double s) const;  ///< the knot span of segment j; InvalidInput if s is outside it
-    std::vector<double> basis_knots_;               ///< farin_knots() with w_0 and w_k added: the knot vector of jet_in_segment
+    std::vector<double> basis_knots_;  ///< farin_knots() with w_0 and w_k added: the knot vector of jet_in_segment
     KnotLayout layout_;
     std::vector<double> lengths_, w_;
     Eigen::VectorXd de_boor_;
@@ -91,11 +95,12 @@ private:
 /// ≤ 4), 0 ≤ τ ≤ 1, by the rule above. With `weights`, also W(0, r) = ∫_0^1 cos ψ B^p_r dt and
 /// W(1, r) = ∫_0^1 sin ψ B^p_r dt (τ must be 1), the derivatives' building blocks.
 /// b may be a row of bezier() (any inner stride: no copy).
-Eigen::Vector2d direction_integrals(const Eigen::Ref<const Eigen::VectorXd, 0, Eigen::InnerStride<>>& b, double tau = 1.0,
-                                    Eigen::Matrix<double, 2, Eigen::Dynamic>* weights = nullptr);
+Eigen::Vector2d direction_integrals(const Eigen::Ref<const Eigen::VectorXd, 0, Eigen::InnerStride<>>& b,
+                                    double tau = 1.0, Eigen::Matrix<double, 2, Eigen::Dynamic>* weights = nullptr);
 /// The same with the weights in fixed storage (degree ≤ 4: at most 5 columns), no allocation.
 using DirectionWeights = Eigen::Matrix<double, 2, Eigen::Dynamic, 0, 2, 5>;
 /// The same as above with the weights in fixed storage.
-Eigen::Vector2d direction_integrals(const Eigen::Ref<const Eigen::VectorXd, 0, Eigen::InnerStride<>>& b, double tau, DirectionWeights* weights);
+Eigen::Vector2d direction_integrals(const Eigen::Ref<const Eigen::VectorXd, 0, Eigen::InnerStride<>>& b, double tau,
+                                    DirectionWeights* weights);
 
 }  // namespace cagd::intrinsic

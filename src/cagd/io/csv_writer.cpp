@@ -8,12 +8,18 @@
 namespace cagd {
 
 CsvWriter::CsvWriter(const std::string& path, const std::vector<std::string>& header)
-    : path_(path), out_(std::make_unique<OutputFile>(path, "")), columns_(header.size()), uncaught_at_start_(std::uncaught_exceptions()) {
+    : path_(path),
+      out_(std::make_unique<OutputFile>(path, "")),
+      columns_(header.size()),
+      uncaught_at_start_(std::uncaught_exceptions()) {
     row_text(header);
 }
 
 CsvWriter::CsvWriter(CsvWriter&& other) noexcept
-    : path_(std::move(other.path_)), out_(std::move(other.out_)), columns_(other.columns_), uncaught_at_start_(other.uncaught_at_start_) {}
+    : path_(std::move(other.path_)),
+      out_(std::move(other.out_)),
+      columns_(other.columns_),
+      uncaught_at_start_(other.uncaught_at_start_) {}
 
 CsvWriter::~CsvWriter() noexcept(false) {
     // Unwinding: the OutputFile's destructor removes the temporary and keeps the old file.
@@ -40,7 +46,9 @@ void CsvWriter::row(const std::vector<double>& values, int significant) {
 }
 
 void CsvWriter::row_text(const std::vector<std::string>& fields) {
-    if (fields.size() != columns_) fail_input("cagd::CsvWriter", path_ + ": row has " + std::to_string(fields.size()) + " fields, header has " + std::to_string(columns_));
+    if (fields.size() != columns_)
+        fail_input("cagd::CsvWriter", path_ + ": row has " + std::to_string(fields.size()) + " fields, header has " +
+                                          std::to_string(columns_));
     std::ostream& out = stream();
     for (std::size_t i = 0; i < fields.size(); ++i) out << (i ? "," : "") << csv_field(fields[i]);
     out << '\n';

@@ -6,8 +6,8 @@
 
 #include <atomic>
 #include <cerrno>
-#include <system_error>
 #include <filesystem>
+#include <system_error>
 
 namespace cagd {
 

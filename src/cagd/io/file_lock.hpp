@@ -43,13 +43,15 @@ bool cache_file_exists(const std::string& path);
 /// and try again (another process may have built it meanwhile), else build_and_save() under the
 /// lock, announcing the rebuild of an existing file first.
 template <class TryLoad, class BuildAndSave>
-auto load_or_build_locked(const std::string& path, const TryLoad& try_load, const BuildAndSave& build_and_save) -> decltype(build_and_save()) {
+auto load_or_build_locked(const std::string& path, const TryLoad& try_load, const BuildAndSave& build_and_save)
+    -> decltype(build_and_save()) {
     std::string why;
     if (auto cached = try_load(why)) return std::move(*cached);
     const FileLock lock(path + ".lock");
     why.clear();
     if (auto cached = try_load(why)) return std::move(*cached);
-    if (cache_file_exists(path)) announce_cache_rebuild(path, why.empty() ? "not a table of this grid, method and format" : why);
+    if (cache_file_exists(path))
+        announce_cache_rebuild(path, why.empty() ? "not a table of this grid, method and format" : why);
     return build_and_save();
 }
 

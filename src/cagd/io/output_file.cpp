@@ -84,7 +84,9 @@ int named_descriptor(const std::string& path) {
 
 std::string display_name(const std::string& path) { return path == "-" ? "standard output" : "'" + path + "'"; }
 // "--out 'f.csv'", "--out standard output", or without an option "standard output".
-std::string output_name(const std::string& option, const std::string& path) { return option.empty() ? display_name(path) : option + " " + display_name(path); }
+std::string output_name(const std::string& option, const std::string& path) {
+    return option.empty() ? display_name(path) : option + " " + display_name(path);
+}
 
 mode_t current_umask() {
     const mode_t mask = ::umask(0);
@@ -134,7 +136,7 @@ OutputFile::OutputFile(const std::string& path, const std::string& option) : pat
     const std::string name = output_name(option, path);
     if (path.empty()) fail_input(who, option + " is empty; give a file path or - for standard output");
     int fd = named_descriptor(path);
-    struct stat st{};
+    struct stat st {};
     bool exists = false;
     if (fd < 0) {
         if (::stat(path.c_str(), &st) == 0) {
@@ -142,7 +144,7 @@ OutputFile::OutputFile(const std::string& path, const std::string& option) : pat
             if (S_ISDIR(st.st_mode)) fail_input(who, name + " is a directory; give a file path");
             // The very file standard output or standard error writes: written through it.
             for (int d : {1, 2}) {
-                struct stat ds{};
+                struct stat ds {};
                 if (::fstat(d, &ds) == 0 && ds.st_dev == st.st_dev && ds.st_ino == st.st_ino) fd = d;
             }
         } else if (errno == ELOOP) {
@@ -154,7 +156,8 @@ OutputFile::OutputFile(const std::string& path, const std::string& option) : pat
     if (fd >= 0) {
         const int flags = ::fcntl(fd, F_GETFL);
         if (flags < 0 || (flags & O_ACCMODE) == O_RDONLY)
-            fail_input(who, name + ": descriptor " + std::to_string(fd) + " is not open for writing" + (fd == 1 ? " (standard output is closed)" : ""));
+            fail_input(who, name + ": descriptor " + std::to_string(fd) + " is not open for writing" +
+                                (fd == 1 ? " (standard output is closed)" : ""));
         target_ = Target::descriptor;
         descriptor_ = fd;
         stream_ = &memory_;
@@ -199,7 +202,9 @@ OutputFile::~OutputFile() {
     unregister_temporary(temp_slot_);
 }
 
-void OutputFile::fail(const std::string& what, int error) const { throw OutputError(output_name(option_, path_) + ": " + what + ": " + reason(error)); }
+void OutputFile::fail(const std::string& what, int error) const {
+    throw OutputError(output_name(option_, path_) + ": " + what + ": " + reason(error));
+}
 
 void OutputFile::commit() {
     if (committed_) throw std::logic_error("cagd::OutputFile::commit: committed twice");
@@ -249,8 +254,9 @@ void OutputFile::commit() {
 OutputDirectory::OutputDirectory(const std::string& path, const std::string& option) : path_(path), option_(option) {
     namespace fs = std::filesystem;
     const std::string who = "cagd";
-    if (path.empty() || path == "-") fail_input(who, option + " '" + path + "': give a directory (several files are written)");
-    struct stat st{};
+    if (path.empty() || path == "-")
+        fail_input(who, option + " '" + path + "': give a directory (several files are written)");
+    struct stat st {};
     if (::stat(path.c_str(), &st) == 0) {
         if (!S_ISDIR(st.st_mode)) fail_input(who, option + " '" + path + "' exists and is not a directory");
         if (::access(path.c_str(), W_OK | X_OK) != 0) fail_input(who, option + " '" + path + "': " + reason(errno));
@@ -265,8 +271,10 @@ OutputDirectory::OutputDirectory(const std::string& path, const std::string& opt
     const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
     if (!fs::is_directory(parent, ec)) fail_input(who, option + " '" + path + "': its parent directory does not exist");
     // (appends: GCC 12 warns falsely of an oversized memcpy in "." + std::string&&)
-    std::string pattern = (parent / std::string(".").append(target.filename().string()).append(".cagd-XXXXXX")).string();
-    if (::mkdtemp(pattern.data()) == nullptr) fail_input(who, option + " '" + path + "': cannot write in '" + parent.string() + "': " + reason(errno));
+    std::string pattern =
+        (parent / std::string(".").append(target.filename().string()).append(".cagd-XXXXXX")).string();
+    if (::mkdtemp(pattern.data()) == nullptr)
+        fail_input(who, option + " '" + path + "': cannot write in '" + parent.string() + "': " + reason(errno));
     ::chmod(pattern.c_str(), new_directory_mode());  // mkdtemp makes 0700; a new directory's mode
     staging_ = pattern;
     staging_slot_ = register_temporary(pattern, 3);
@@ -281,7 +289,8 @@ OutputDirectory::~OutputDirectory() {
 }
 
 std::string OutputDirectory::staged(const std::string& name) {
-    if (name.empty() || name.find('/') != std::string::npos) throw std::logic_error("cagd::OutputDirectory::staged: '" + name + "' is not a file name");
+    if (name.empty() || name.find('/') != std::string::npos)
+        throw std::logic_error("cagd::OutputDirectory::staged: '" + name + "' is not a file name");
     const std::string path = staging_ + "/" + name;
     staged_slots_.push_back(register_temporary(path, 2));  // a signal removes it with the staging directory
     return path;
@@ -290,7 +299,9 @@ std::string OutputDirectory::staged(const std::string& name) {
 void OutputDirectory::commit() {
     namespace fs = std::filesystem;
     if (committed_) throw std::logic_error("cagd::OutputDirectory::commit: committed twice");
-    const auto fail = [&](const std::string& what, int error) { throw OutputError(option_ + " '" + path_ + "': " + what + ": " + reason(error)); };
+    const auto fail = [&](const std::string& what, int error) {
+        throw OutputError(option_ + " '" + path_ + "': " + what + ": " + reason(error));
+    };
     // A new directory: the staging directory becomes it, whole.
     for (int slot : staged_slots_) unregister_temporary(slot);
     staged_slots_.clear();
@@ -349,9 +360,9 @@ extern "C" void remove_temporaries_and_reraise(int signal) {
 
 void install_output_signal_cleanup() {
     for (int signal : {SIGINT, SIGTERM, SIGHUP, SIGPIPE}) {
-        struct sigaction old{};
+        struct sigaction old {};
         if (::sigaction(signal, nullptr, &old) == 0 && old.sa_handler == SIG_IGN) continue;  // kept ignored (nohup)
-        struct sigaction action{};
+        struct sigaction action {};
         action.sa_handler = remove_temporaries_and_reraise;
         sigemptyset(&action.sa_mask);
         ::sigaction(signal, &action, nullptr);

@@ -17,7 +17,8 @@ const char* const kLocalityWho = "cagd::locality::interpolate";
 
 void require_locality(SegmentLocality m, const std::string& who) {
     for (int v : {m.left, m.right})
-        if (v < 0 || v > kMaxLocality) fail_input(who, "locality m = " + std::to_string(v) + " outside [0, " + std::to_string(kMaxLocality) + "]");
+        if (v < 0 || v > kMaxLocality)
+            fail_input(who, "locality m = " + std::to_string(v) + " outside [0, " + std::to_string(kMaxLocality) + "]");
 }
 
 // Virtual points of section 3.3 as an index → point map over all integers.
@@ -26,8 +27,14 @@ using PointRow = Eigen::Matrix<double, 1, Eigen::Dynamic, Eigen::RowMajor, 1, 3>
 
 class ExtendedPoints {
 public:
-    ExtendedPoints(const PointList& p, bool closed, Eigen::VectorXd start_normal, Eigen::VectorXd end_normal, bool start_mirror, bool end_mirror)
-        : p_(p), closed_(closed), start_normal_(std::move(start_normal)), end_normal_(std::move(end_normal)), start_mirror_(start_mirror), end_mirror_(end_mirror) {}
+    ExtendedPoints(const PointList& p, bool closed, Eigen::VectorXd start_normal, Eigen::VectorXd end_normal,
+                   bool start_mirror, bool end_mirror)
+        : p_(p),
+          closed_(closed),
+          start_normal_(std::move(start_normal)),
+          end_normal_(std::move(end_normal)),
+          start_mirror_(start_mirror),
+          end_mirror_(end_mirror) {}
 
     PointRow operator()(long k) const {
         const long n = p_.rows();
@@ -38,7 +45,8 @@ public:
     }
 
 private:
-    static PointRow reflect(const PointRow& x, const PointRow& centre, const Eigen::VectorXd& unit_normal, bool mirror) {
+    static PointRow reflect(const PointRow& x, const PointRow& centre, const Eigen::VectorXd& unit_normal,
+                            bool mirror) {
         if (!mirror) return 2.0 * centre - x;  // point symmetry (natural end)
         const double s = (x - centre).dot(unit_normal.transpose());
         return x - 2.0 * s * unit_normal.transpose();  // mirror ⟂ tangent
@@ -53,7 +61,9 @@ Eigen::VectorXd unit_tangent(const EndCondition& end, const PointList& p, bool a
     Eigen::VectorXd t;
     if (end.kind == EndKind::tangent) {
         t = end.tangent;
-        if (t.size() != p.cols()) fail_input(kLocalityWho, which + " tangent has " + std::to_string(t.size()) + " coordinates; the points have " + std::to_string(p.cols()));
+        if (t.size() != p.cols())
+            fail_input(kLocalityWho, which + " tangent has " + std::to_string(t.size()) +
+                                         " coordinates; the points have " + std::to_string(p.cols()));
         if (!t.allFinite() || t.norm() == 0.0) fail_input(kLocalityWho, which + " tangent must be finite and non-zero");
     } else {
         t = at_start ? bessel_tangent(p) : bessel_tangent(p.colwise().reverse().eval());
@@ -104,13 +114,17 @@ SegmentWeights extra_point_weights(SegmentLocality m) {
 }
 
 Eigen::Vector3d truncation_weights(int m) {
-    if (m < 1 || m > kMaxLocality) fail_input("cagd::locality::truncation_weights", "m = " + std::to_string(m) + " outside [1, " + std::to_string(kMaxLocality) + "]");
+    if (m < 1 || m > kMaxLocality)
+        fail_input("cagd::locality::truncation_weights",
+                   "m = " + std::to_string(m) + " outside [1, " + std::to_string(kMaxLocality) + "]");
     const double a = alpha(), am = std::pow(a, m), am1 = am * a, k = 1.0 / (1.0 - am1);
     return {k, -k * (1.0 - a) * am1 / 6.0, k * (1.0 - a) * am / 6.0};
 }
 
 StencilWeights truncation_weights_by_stencil(int m) {
-    if (m < 1 || m > kMaxLocality) fail_input("cagd::locality::truncation_weights_by_stencil", "m = " + std::to_string(m) + " outside [1, " + std::to_string(kMaxLocality) + "]");
+    if (m < 1 || m > kMaxLocality)
+        fail_input("cagd::locality::truncation_weights_by_stencil",
+                   "m = " + std::to_string(m) + " outside [1, " + std::to_string(kMaxLocality) + "]");
     const SegmentWeights w = extra_point_weights({m, m});
     // Coefficients on p_{i+o}, o = −(m+1) .. m+2, stored at index o + m + 1.
     const int size = 2 * m + 4, shift = m + 1;
@@ -180,7 +194,8 @@ std::string format_m_vector(const MVector& m) {
     std::string s;
     for (std::size_t i = 0; i < m.size(); ++i) {
         if (i) s += ",";
-        s += m[i].left == m[i].right ? std::to_string(m[i].left) : std::to_string(m[i].left) + ":" + std::to_string(m[i].right);
+        s += m[i].left == m[i].right ? std::to_string(m[i].left)
+                                     : std::to_string(m[i].left) + ":" + std::to_string(m[i].right);
     }
     return s;
 }
@@ -223,8 +238,10 @@ LocalitySpline interpolate_valid_points(const PointList& points, const Options& 
     const long n = points.rows();
     const long segments = o.closed ? n : n - 1;
     if (o.m.size() != 1 && static_cast<long>(o.m.size()) != segments)
-        fail_input(kLocalityWho, "m-vector has " + std::to_string(o.m.size()) + " entries; this " + (o.closed ? "closed" : "open") + " curve through " + std::to_string(n) +
-                                     " points has " + std::to_string(segments) + " segments (give 1 or " + std::to_string(segments) + ")");
+        fail_input(kLocalityWho, "m-vector has " + std::to_string(o.m.size()) + " entries; this " +
+                                     (o.closed ? "closed" : "open") + " curve through " + std::to_string(n) +
+                                     " points has " + std::to_string(segments) + " segments (give 1 or " +
+                                     std::to_string(segments) + ")");
     for (const auto& m : o.m) require_locality(m, kLocalityWho);
 
     const ExtendedPoints P = make_extended_points(points, o);
@@ -236,7 +253,8 @@ LocalitySpline interpolate_valid_points(const PointList& points, const Options& 
         return o.m[static_cast<std::size_t>(seg)];
     };
     // One set of weights when every segment has the same locality (the usual case).
-    const std::optional<SegmentWeights> uniform_weights = o.m.size() == 1 ? std::optional<SegmentWeights>(extra_point_weights(o.m[0])) : std::nullopt;
+    const std::optional<SegmentWeights> uniform_weights =
+        o.m.size() == 1 ? std::optional<SegmentWeights>(extra_point_weights(o.m[0])) : std::nullopt;
     const auto extra_point = [&](long i) -> PointRow {
         const PointRow q0 = 0.5 * (P(i) + P(i + 1));
         switch (o.rule) {
@@ -246,7 +264,9 @@ LocalitySpline interpolate_valid_points(const PointList& points, const Options& 
             case ExtraPointRule::fmill: {  // eq (17)
                 const auto tangent = [&](long k) {
                     const PointRow c = P(k + 1) - P(k - 1);
-                    if (c.norm() == 0.0) fail_input(kLocalityWho, "FMILL tangent at point " + std::to_string(k) + " undefined: its neighbours coincide");
+                    if (c.norm() == 0.0)
+                        fail_input(kLocalityWho, "FMILL tangent at point " + std::to_string(k) +
+                                                     " undefined: its neighbours coincide");
                     return PointRow(c.normalized());
                 };
                 return q0 + (tangent(i) - tangent(i + 1)) * (P(i + 1) - P(i)).norm() / 6.0;
@@ -289,8 +309,8 @@ LocalitySpline interpolate_valid_points(const PointList& points, const Options& 
     Eigen::MatrixXd control(2 * N + 1, points.cols());
     for (Eigen::Index c = 0; c < points.cols(); ++c) {
         for (long i = 0; i <= N; ++i) control(2 * i, c) = extra(i, c);  // d_{2i−1}
-        for (long i = 0; i < N; ++i) {                                 // eq (3) / (7)
-            const double p = i < n ? points(i, c) : points(0, c);      // closed: p_N = p_0
+        for (long i = 0; i < N; ++i) {                                  // eq (3) / (7)
+            const double p = i < n ? points(i, c) : points(0, c);       // closed: p_N = p_0
             control(2 * i + 1, c) = (p - rel.side * (extra(i, c) + extra(i + 1, c))) / rel.centre;
         }
     }
@@ -328,7 +348,9 @@ Eigen::RowVectorXd extended_point(const PointList& points, const Options& o, lon
 }
 
 BSplineCurve interpolating_blending_function(SplineForm form, int m) {
-    if (m < 0 || m > kMaxLocality) fail_input("cagd::locality::interpolating_blending_function", "m = " + std::to_string(m) + " outside [0, " + std::to_string(kMaxLocality) + "]");
+    if (m < 0 || m > kMaxLocality)
+        fail_input("cagd::locality::interpolating_blending_function",
+                   "m = " + std::to_string(m) + " outside [0, " + std::to_string(kMaxLocality) + "]");
     const int half = m + 3;  // zeros beyond ±(m+1) keep the natural virtual points zero
     PointList p = PointList::Zero(2 * half + 1, 2);
     for (int k = 0; k <= 2 * half; ++k) p(k, 0) = k - half;
@@ -361,7 +383,10 @@ BSplineCurve cubic_bspline_interpolant(const PointList& points, bool closed) {
     Eigen::SparseMatrix<double> A(n, n);
     A.setFromTriplets(t.begin(), t.end());
     numeric::SparseLu lu;
-    if (!lu.compute(A)) throw std::logic_error("cagd::locality: the B-spline interpolation system (rows 1 4 1) is singular");  // diagonally dominant: cannot be
+    if (!lu.compute(A))
+        throw std::logic_error(
+            "cagd::locality: the B-spline interpolation system (rows 1 4 1) is singular");  // diagonally dominant:
+                                                                                            // cannot be
     const Eigen::MatrixXd c = lu.solve(rhs);
     // Control list with one extra at each end; knots at integers.
     const long N = closed ? n + 1 : n;

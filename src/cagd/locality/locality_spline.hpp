@@ -49,7 +49,7 @@ enum class SplineForm { b2_spline, s_spline };
 
 /// The locality of one segment: m on its left and on its right (equal unless an m-vector gives a pair).
 struct SegmentLocality {
-    int left = 0;  ///< m_left: points p_{i−j}, j ≤ m_left
+    int left = 0;   ///< m_left: points p_{i−j}, j ≤ m_left
     int right = 0;  ///< m_right: points p_{i+1+j}, j ≤ m_right
 };
 /// One SegmentLocality for all segments, or one per segment.
@@ -60,7 +60,7 @@ enum class EndKind { natural, tangent, bessel };
 /// The end condition at one end.
 struct EndCondition {
     EndKind kind = EndKind::natural;  ///< natural, tangent or Bessel
-    Eigen::VectorXd tangent;  ///< used by EndKind::tangent
+    Eigen::VectorXd tangent;          ///< used by EndKind::tangent
 };
 
 /// How the extra control point of a segment is chosen: eq (12) with locality m, or an earlier rule of section 3.4.
@@ -68,11 +68,11 @@ enum class ExtraPointRule { locality, method_I, method_IIa, fmill };
 
 /// The options of an S- or B2-spline interpolant.
 struct Options {
-    SplineForm form = SplineForm::s_spline;  ///< the carrier
-    MVector m = MVector(1, SegmentLocality{2, 2});  ///< one entry (all segments) or one per segment
-    bool closed = false;  ///< a closed curve
-    EndCondition start;  ///< the condition at the first point
-    EndCondition end;  ///< the condition at the last point
+    SplineForm form = SplineForm::s_spline;          ///< the carrier
+    MVector m = MVector(1, SegmentLocality{2, 2});   ///< one entry (all segments) or one per segment
+    bool closed = false;                             ///< a closed curve
+    EndCondition start;                              ///< the condition at the first point
+    EndCondition end;                                ///< the condition at the last point
     ExtraPointRule rule = ExtraPointRule::locality;  ///< the extra-point rule
 };
 
@@ -92,7 +92,7 @@ double alpha();
 /// Weights of the barycentric combination for one segment: `left(j)` multiplies p_{i−j},
 /// `right(j)` multiplies p_{i+1+j}. They sum to 1.
 struct SegmentWeights {
-    Eigen::VectorXd left;  ///< left(j) multiplies p_{i−j}
+    Eigen::VectorXd left;   ///< left(j) multiplies p_{i−j}
     Eigen::VectorXd right;  ///< right(j) multiplies p_{i+1+j}
 };
 /// The weights of eq (12) (or of the pair's reading above) for one segment's locality.
@@ -105,7 +105,7 @@ Eigen::Vector3d truncation_weights(int m);
 /// vectors of eq (12) on p_{i−m−1} .. p_{i+m+2} and read off the coefficients of
 /// q_{i,0}, q_{i,m}, q_{i,m+1}; also returns the largest coefficient left on any other q_{i,j}.
 struct StencilWeights {
-    Eigen::Vector3d weights;  ///< (w0, w1, w2)
+    Eigen::Vector3d weights;     ///< (w0, w1, w2)
     double largest_other = 0.0;  ///< the largest coefficient left on any other q_{i,j}
 };
 /// The weights of eq (13) by the stencil (see above), m ≥ 1.
@@ -140,7 +140,7 @@ double blending_h(SplineForm form, double u, int k = 0);
 /// Coefficients of the relation (3)/(7) between p_i and the controls, from the basis:
 /// p_i = side·d_{2i−1} + centre·d_{2i} + side·d_{2i+1}.
 struct KnotRelation {
-    double side;  ///< the coefficient of d_{2i±1}
+    double side;    ///< the coefficient of d_{2i±1}
     double centre;  ///< the coefficient of d_{2i}
 };
 /// The relation (3) or (7) of a carrier.

@@ -24,16 +24,19 @@ namespace {
 // One Boost interpolator per coordinate over the chord-length parameter; its slopes at the nodes.
 template <class Interpolator>
 Interpolant componentwise_chord_interpolant(const char* function, const PointList& p) {
-    if (p.rows() < 4) fail_input(function, "needs at least 4 points (Boost's pchip and makima), got " + std::to_string(p.rows()));
+    if (p.rows() < 4)
+        fail_input(function, "needs at least 4 points (Boost's pchip and makima), got " + std::to_string(p.rows()));
     std::vector<double> h = chord_lengths(p, false);
     std::vector<double> tau{0.0};
     for (double hk : h) tau.push_back(tau.back() + hk);
     Eigen::MatrixXd slopes(p.rows(), p.cols());
     for (Eigen::Index c = 0; c < p.cols(); ++c) {
-        const Interpolator f(std::vector<double>(tau), std::vector<double>(p.col(c).data(), p.col(c).data() + p.rows()));
+        const Interpolator f(std::vector<double>(tau),
+                             std::vector<double>(p.col(c).data(), p.col(c).data() + p.rows()));
         for (Eigen::Index k = 0; k < p.rows(); ++k) slopes(k, c) = f.prime(tau[static_cast<std::size_t>(k)]);
     }
-    auto curve = std::make_shared<const spline::PiecewiseHermiteCurve>(spline::PiecewiseHermiteCurve::from_node_slopes(p, std::move(slopes), h));
+    auto curve = std::make_shared<const spline::PiecewiseHermiteCurve>(
+        spline::PiecewiseHermiteCurve::from_node_slopes(p, std::move(slopes), h));
     return detail::unit_span_interpolant(std::move(curve), p.rows(), std::move(h));
 }
 
@@ -52,8 +55,10 @@ Interpolant catmull_rom_interpolant(const PointList& p, bool closed) {
         if (!(t(j + 1) - t(j) > shortest)) {
             const Eigen::Index a = j % n, b = (j + 1) % n;  // j = n − 1, n: the ghost chords
             fail_input("cagd::methods::boost_catmull_rom_interpolant",
-                       "the chord from point " + std::to_string(a) + " is " + full_precision((p.row(b) - p.row(a)).norm()) + " long against a centripetal parameter sum of " +
-                           full_precision(sum) + ": it vanishes in double precision (the points span too many orders of magnitude)");
+                       "the chord from point " + std::to_string(a) + " is " +
+                           full_precision((p.row(b) - p.row(a)).norm()) +
+                           " long against a centripetal parameter sum of " + full_precision(sum) +
+                           ": it vanishes in double precision (the points span too many orders of magnitude)");
         }
     std::vector<double> h(static_cast<std::size_t>(spans));
     for (Eigen::Index k = 0; k < spans; ++k) h[static_cast<std::size_t>(k)] = t(k + 1) - t(k);
@@ -65,20 +70,25 @@ Interpolant catmull_rom_interpolant(const PointList& p, bool closed) {
     Eigen::MatrixXd nodes(spans + 1, p.cols());
     nodes.topRows(n) = p;
     if (closed) nodes.row(n) = p.row(0);  // from_node_slopes repeats m_0 as m_n
-    auto curve = std::make_shared<const spline::PiecewiseHermiteCurve>(spline::PiecewiseHermiteCurve::from_node_slopes(std::move(nodes), std::move(slopes), h));
+    auto curve = std::make_shared<const spline::PiecewiseHermiteCurve>(
+        spline::PiecewiseHermiteCurve::from_node_slopes(std::move(nodes), std::move(slopes), h));
     return detail::unit_span_interpolant(std::move(curve), spans + 1, std::move(h));
 }
 
 }  // namespace
 
 Interpolant boost_pchip_interpolant(const PointList& p) {
-    return componentwise_chord_interpolant<boost::math::interpolators::pchip<std::vector<double>>>("cagd::methods::boost_pchip_interpolant", p);
+    return componentwise_chord_interpolant<boost::math::interpolators::pchip<std::vector<double>>>(
+        "cagd::methods::boost_pchip_interpolant", p);
 }
 
 Interpolant boost_makima_interpolant(const PointList& p) {
-    return componentwise_chord_interpolant<boost::math::interpolators::makima<std::vector<double>>>("cagd::methods::boost_makima_interpolant", p);
+    return componentwise_chord_interpolant<boost::math::interpolators::makima<std::vector<double>>>(
+        "cagd::methods::boost_makima_interpolant", p);
 }
 
-Interpolant boost_catmull_rom_interpolant(const PointList& p, bool closed) { return p.cols() == 2 ? catmull_rom_interpolant<2>(p, closed) : catmull_rom_interpolant<3>(p, closed); }
+Interpolant boost_catmull_rom_interpolant(const PointList& p, bool closed) {
+    return p.cols() == 2 ? catmull_rom_interpolant<2>(p, closed) : catmull_rom_interpolant<3>(p, closed);
+}
 
 }  // namespace cagd::methods

@@ -12,7 +12,8 @@ std::string registry_fingerprint() {
     return hex;
 }
 
-exports::CurveProvenance method_provenance(const Method& method, const ParameterValues& values, const PointList& points, bool closed) {
+exports::CurveProvenance method_provenance(const Method& method, const ParameterValues& values, const PointList& points,
+                                           bool closed) {
     return {.method = method.name,
             .parameters = values.as_text(),
             .parameter = method.claims(values).parameter,

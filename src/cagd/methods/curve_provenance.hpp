@@ -19,6 +19,7 @@ std::string registry_fingerprint();
 /// The provenance of a curve that `method` built under `values` through `points`, in the method's
 /// own parameter (MethodClaims::parameter): what `cagd interpolate`, `cagd compare --export`,
 /// Python and the viewer write.
-exports::CurveProvenance method_provenance(const Method& method, const ParameterValues& values, const PointList& points, bool closed);
+exports::CurveProvenance method_provenance(const Method& method, const ParameterValues& values, const PointList& points,
+                                           bool closed);
 
 }  // namespace cagd::methods

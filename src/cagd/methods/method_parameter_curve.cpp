@@ -12,15 +12,21 @@ namespace {
 constexpr const char* kWho = "cagd::methods::MethodParameterCurve";
 }  // namespace
 
-MethodParameterCurve::MethodParameterCurve(const Interpolant& interpolant) : base_(interpolant.curve), u_(interpolant.node_parameters), dtau_du_(interpolant.dtau_du) {
+MethodParameterCurve::MethodParameterCurve(const Interpolant& interpolant)
+    : base_(interpolant.curve), u_(interpolant.node_parameters), dtau_du_(interpolant.dtau_du) {
     if (!base_) fail_input(kWho, "the interpolant has no curve");
     if (u_.size() != dtau_du_.size() + 1 || dtau_du_.empty())
-        fail_input(kWho, std::to_string(u_.size()) + " node parameters for " + std::to_string(dtau_du_.size()) + " spans; needs one more node than spans, and a span");
+        fail_input(kWho, std::to_string(u_.size()) + " node parameters for " + std::to_string(dtau_du_.size()) +
+                             " spans; needs one more node than spans, and a span");
     tau_.assign(u_.size(), 0.0);
     for (std::size_t k = 0; k < dtau_du_.size(); ++k) {
         const double d = dtau_du_[k], du = u_[k + 1] - u_[k];
-        if (!(d > 0.0 && std::isfinite(d))) fail_input(kWho, "dtau/du of span " + std::to_string(k) + " = " + full_precision(d) + "; allowed > 0 and finite");
-        if (!(du > 0.0)) fail_input(kWho, "node parameters not ascending at span " + std::to_string(k) + " (" + full_precision(u_[k]) + ", " + full_precision(u_[k + 1]) + ")");
+        if (!(d > 0.0 && std::isfinite(d)))
+            fail_input(kWho,
+                       "dtau/du of span " + std::to_string(k) + " = " + full_precision(d) + "; allowed > 0 and finite");
+        if (!(du > 0.0))
+            fail_input(kWho, "node parameters not ascending at span " + std::to_string(k) + " (" +
+                                 full_precision(u_[k]) + ", " + full_precision(u_[k + 1]) + ")");
         tau_[k + 1] = tau_[k] + d * du;
     }
     const auto spans = static_cast<int>(dtau_du_.size());
@@ -36,7 +42,8 @@ MethodParameterCurve::MethodParameterCurve(const Interpolant& interpolant) : bas
 
 namespace {
 [[noreturn, gnu::noinline, gnu::cold]] void reject_tau(double tau, double first, double last) {
-    fail_input(kWho, "t = " + full_precision(tau) + " outside [" + full_precision(first) + ", " + full_precision(last) + "] (the method's parameter)");
+    fail_input(kWho, "t = " + full_precision(tau) + " outside [" + full_precision(first) + ", " + full_precision(last) +
+                         "] (the method's parameter)");
 }
 }  // namespace
 
@@ -52,7 +59,8 @@ inline int MethodParameterCurve::span_of_tau(double tau, bool from_left) const {
     // From the right: the last span that starts at or before τ (the last span at τ_n) — what
     // upper_bound − 1 gives, found from τ's bucket: a step back if rounding put τ before the
     // bucket's span, then forward over the spans that start at or before τ.
-    const auto b = static_cast<std::size_t>(std::clamp(static_cast<int>((tau - tau_.front()) * buckets_per_unit_), 0, spans - 1));
+    const auto b =
+        static_cast<std::size_t>(std::clamp(static_cast<int>((tau - tau_.front()) * buckets_per_unit_), 0, spans - 1));
     int k = bucket_span_[b];
     while (k > 0 && tau_[static_cast<std::size_t>(k)] > tau) --k;
     while (k + 1 < spans && tau_[static_cast<std::size_t>(k) + 1] <= tau) ++k;
@@ -66,8 +74,12 @@ double MethodParameterCurve::span_parameter(double tau) const {
 }
 
 double MethodParameterCurve::method_parameter(double u) const {
-    if (!(u >= u_.front() && u <= u_.back())) fail_input(kWho, "u = " + full_precision(u) + " outside [" + full_precision(u_.front()) + ", " + full_precision(u_.back()) + "]");
-    const auto k = static_cast<std::size_t>(std::clamp(static_cast<int>(std::upper_bound(u_.begin(), u_.end(), u) - u_.begin()) - 1, 0, static_cast<int>(dtau_du_.size()) - 1));
+    if (!(u >= u_.front() && u <= u_.back()))
+        fail_input(kWho, "u = " + full_precision(u) + " outside [" + full_precision(u_.front()) + ", " +
+                             full_precision(u_.back()) + "]");
+    const auto k = static_cast<std::size_t>(
+        std::clamp(static_cast<int>(std::upper_bound(u_.begin(), u_.end(), u) - u_.begin()) - 1, 0,
+                   static_cast<int>(dtau_du_.size()) - 1));
     return std::min(tau_[k + 1], tau_[k] + dtau_du_[k] * (u - u_[k]));
 }
 

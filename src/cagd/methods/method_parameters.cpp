@@ -23,7 +23,9 @@ const char* to_string(ParameterType t) {
 namespace {
 
 std::string range_text(double lower, double upper) {
-    const auto bound = [](double v) { return std::isinf(v) ? std::string(v < 0 ? "-inf" : "inf") : format_number(v, 17); };
+    const auto bound = [](double v) {
+        return std::isinf(v) ? std::string(v < 0 ? "-inf" : "inf") : format_number(v, 17);
+    };
     std::string s = "[";
     s += bound(lower);
     s += ", ";
@@ -59,15 +61,21 @@ const ParameterValues::Value& ParameterValues::at(const std::string& name, Param
     const auto it = values_.find(name);
     // A builder asking for a parameter its method does not declare, or with another type, is a
     // programming error in the registry, not bad input.
-    if (it == values_.end()) throw std::logic_error("cagd::methods::ParameterValues: no value for parameter '" + name + "'");
+    if (it == values_.end())
+        throw std::logic_error("cagd::methods::ParameterValues: no value for parameter '" + name + "'");
     if (it->second.type != type && !(type == ParameterType::text && it->second.type == ParameterType::choice))
-        throw std::logic_error("cagd::methods::ParameterValues: parameter '" + name + "' is a " + to_string(it->second.type) + ", asked as " + to_string(type));
+        throw std::logic_error("cagd::methods::ParameterValues: parameter '" + name + "' is a " +
+                               to_string(it->second.type) + ", asked as " + to_string(type));
     return it->second;
 }
 
-int ParameterValues::integer(const std::string& name) const { return static_cast<int>(at(name, ParameterType::integer).number); }
+int ParameterValues::integer(const std::string& name) const {
+    return static_cast<int>(at(name, ParameterType::integer).number);
+}
 double ParameterValues::real(const std::string& name) const { return at(name, ParameterType::real).number; }
-const Eigen::VectorXd& ParameterValues::vector(const std::string& name) const { return at(name, ParameterType::vector).vector; }
+const Eigen::VectorXd& ParameterValues::vector(const std::string& name) const {
+    return at(name, ParameterType::vector).vector;
+}
 
 const std::string& ParameterValues::text(const std::string& name) const {
     static const std::string absent;
@@ -81,7 +89,8 @@ ParameterText ParameterValues::as_text() const {
     return out;
 }
 
-ParameterValues parse_parameter_values(const std::string& method, const std::vector<Parameter>& parameters, const ParameterText& given) {
+ParameterValues parse_parameter_values(const std::string& method, const std::vector<Parameter>& parameters,
+                                       const ParameterText& given) {
     const std::string who = "cagd::methods(" + method + ")";
     for (const auto& [name, text] : given) {
         bool declared = false;
@@ -89,7 +98,8 @@ ParameterValues parse_parameter_values(const std::string& method, const std::vec
         if (declared) continue;
         std::string known;
         for (const Parameter& p : parameters) known += (known.empty() ? "--" : ", --") + p.name;
-        fail_input(who, "--" + name + " is not a parameter of " + method + " (" + (known.empty() ? "it has none" : "its parameters: " + known) + ")");
+        fail_input(who, "--" + name + " is not a parameter of " + method + " (" +
+                            (known.empty() ? "it has none" : "its parameters: " + known) + ")");
     }
     ParameterValues out;
     for (const Parameter& p : parameters) {
@@ -98,7 +108,8 @@ ParameterValues parse_parameter_values(const std::string& method, const std::vec
         const std::string text = is_given ? it->second : p.default_text;
         if (text.empty()) continue;  // absent
         const auto bad = [&](const std::string& why) {
-            fail_input(who, "--" + p.name + " '" + text + "'" + (is_given ? "" : " (default)") + ": " + why + "; allowed: " + p.domain());
+            fail_input(who, "--" + p.name + " '" + text + "'" + (is_given ? "" : " (default)") + ": " + why +
+                                "; allowed: " + p.domain());
         };
         ParameterValues::Value v;
         v.type = p.type;

@@ -32,13 +32,13 @@ const char* to_string(ParameterType t);
 
 /// One declared parameter of a method.
 struct Parameter {
-    std::string name{};  ///< the option, without "--"
-    ParameterType type = ParameterType::text;  ///< how its text is checked and read
+    std::string name{};                                       ///< the option, without "--"
+    ParameterType type = ParameterType::text;                 ///< how its text is checked and read
     std::string default_text{};                               ///< as a user would type it; empty: absent unless given
     double lower = -std::numeric_limits<double>::infinity();  ///< integer, real: inclusive range
-    double upper = std::numeric_limits<double>::infinity();  ///< integer, real: inclusive upper bound
-    std::vector<std::string> choices{};  ///< choice
-    std::string help{};  ///< one line for help texts
+    double upper = std::numeric_limits<double>::infinity();   ///< integer, real: inclusive upper bound
+    std::vector<std::string> choices{};                       ///< choice
+    std::string help{};                                       ///< one line for help texts
     bool space_only = false;  ///< applies to 3-D points only (planar points refuse any other value than its default)
 
     /// "integer in [0, 1000]", "one of none | exact | approx", … for help texts and messages.
@@ -74,10 +74,12 @@ private:
     };
     const Value& at(const std::string& name, ParameterType type) const;
     std::map<std::string, Value> values_;
-    friend ParameterValues parse_parameter_values(const std::string&, const std::vector<Parameter>&, const ParameterText&);
+    friend ParameterValues parse_parameter_values(const std::string&, const std::vector<Parameter>&,
+                                                  const ParameterText&);
 };
 
 /// Checks `given` against the declarations of method `method` and fills in the defaults.
-ParameterValues parse_parameter_values(const std::string& method, const std::vector<Parameter>& parameters, const ParameterText& given);
+ParameterValues parse_parameter_values(const std::string& method, const std::vector<Parameter>& parameters,
+                                       const ParameterText& given);
 
 }  // namespace cagd::methods

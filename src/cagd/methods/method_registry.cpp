@@ -11,15 +11,22 @@ namespace cagd::methods {
 namespace detail {
 
 std::vector<Parameter> tangent_parameters() {
-    return {{.name = "start-tangent", .type = P::vector, .help = "derivative at the first point with respect to the method's parameter t, e.g. 1,0 (with --end tangent)"},
-            {.name = "end-tangent", .type = P::vector, .help = "derivative at the last point with respect to t (with --end tangent)"}};
+    return {
+        {.name = "start-tangent",
+         .type = P::vector,
+         .help =
+             "derivative at the first point with respect to the method's parameter t, e.g. 1,0 (with --end tangent)"},
+        {.name = "end-tangent",
+         .type = P::vector,
+         .help = "derivative at the last point with respect to t (with --end tangent)"}};
 }
 
 void require_tangent_pair(const std::string& who, const ParameterValues& v) {
     const bool tangent_end = v.text("end") == "tangent";
     for (const char* name : {"start-tangent", "end-tangent"}) {
         if (tangent_end && !v.has(name)) fail_input(who, "--end tangent needs --start-tangent and --end-tangent");
-        if (!tangent_end && v.has(name)) fail_input(who, std::string("--") + name + " applies with --end tangent only, the end is " + v.text("end"));
+        if (!tangent_end && v.has(name))
+            fail_input(who, std::string("--") + name + " applies with --end tangent only, the end is " + v.text("end"));
     }
 }
 
@@ -29,9 +36,10 @@ const std::vector<Method>& registry() {
     // The families in the order of the tables: one registration file each (detail/registration.hpp).
     static const std::vector<Method> methods = [] {
         std::vector<Method> all;
-        for (std::vector<Method> (*family)() : {detail::pseudo_energy_methods, detail::sb2_locality_methods, detail::hosaka_methods,
-                                                 detail::curvature_profile_methods, detail::boost_math_methods, detail::eigen_methods,
-                                                 detail::opencascade_methods})
+        for (std::vector<Method> (*family)() :
+             {detail::pseudo_energy_methods, detail::sb2_locality_methods, detail::hosaka_methods,
+              detail::curvature_profile_methods, detail::boost_math_methods, detail::eigen_methods,
+              detail::opencascade_methods})
             for (Method& m : family()) all.push_back(std::move(m));
         return all;
     }();
@@ -73,9 +81,12 @@ std::string method_applicability(const MethodClaims& m, const PointList& points,
     if (closed && !m.supports_closed) return "open curves only";
     const int need = closed ? m.min_points_closed : m.min_points;
     if (points.rows() < need) return "needs at least " + std::to_string(need) + " points";
-    if (m.max_points > 0 && points.rows() > m.max_points) return "takes at most " + std::to_string(m.max_points) + " points";
+    if (m.max_points > 0 && points.rows() > m.max_points)
+        return "takes at most " + std::to_string(m.max_points) + " points";
     if (points.cols() < 2) return "needs points of dimension 2 or 3";
-    if (points.cols() > m.max_dimension) return m.max_dimension == 2 ? "planar points only" : "at most " + std::to_string(m.max_dimension) + " dimensions";
+    if (points.cols() > m.max_dimension)
+        return m.max_dimension == 2 ? "planar points only"
+                                    : "at most " + std::to_string(m.max_dimension) + " dimensions";
     return "";
 }
 
@@ -83,12 +94,16 @@ namespace {
 
 // interpolate()'s checks and build, with the solve started from `start` when the method has a
 // rebuild and `start` is not empty.
-InterpolationResult checked_build(const Method& method, const PointList& points, bool closed, const ParameterValues& values, const Eigen::VectorXd& start) {
+InterpolationResult checked_build(const Method& method, const PointList& points, bool closed,
+                                  const ParameterValues& values, const Eigen::VectorXd& start) {
     const MethodClaims claims = method.claims(values);
     const std::string who = "cagd::methods::interpolate(" + method.name + ")";
     if (const std::string why = method_applicability(claims, points, closed); !why.empty())
-        fail_input(who, why + "; got " + std::to_string(points.rows()) + (closed ? " points of a closed curve" : " points") + " in dimension " + std::to_string(points.cols()));
-    const ValidPoints valid = validate_points(points, closed ? claims.min_points_closed : claims.min_points, closed, who);
+        fail_input(who, why + "; got " + std::to_string(points.rows()) +
+                            (closed ? " points of a closed curve" : " points") + " in dimension " +
+                            std::to_string(points.cols()));
+    const ValidPoints valid =
+        validate_points(points, closed ? claims.min_points_closed : claims.min_points, closed, who);
     const PointExtent& extent = valid.extent();
     // Valid points whose arithmetic leaves double precision: differences of coordinates near 1e308
     // overflow, and chords below 1e-150 square to 0 (their norm underflows). The result is not
@@ -96,17 +111,24 @@ InterpolationResult checked_build(const Method& method, const PointList& points,
     const double largest = extent.largest_abs_coordinate;
     if (largest > kLargestCoordinate) {
         InterpolationResult r;
-        r.outcome = {Status::not_representable, method.name + ": coordinates up to " + full_precision(largest) +
-                                                    " overflow its arithmetic (at most 1e150: squared distances must stay finite); scale the points down"};
+        r.outcome = {
+            Status::not_representable,
+            method.name + ": coordinates up to " + full_precision(largest) +
+                " overflow its arithmetic (at most 1e150: squared distances must stay finite); scale the points down"};
         return r;
     }
     const double shortest = kShortestChord * std::max(1.0, largest);
-    if (const Eigen::Index i = extent.shortest_squared_chord >= shortest * shortest ? -1 : first_chord_shorter_than(points, closed, shortest); i >= 0) {
+    if (const Eigen::Index i = extent.shortest_squared_chord >= shortest * shortest
+                                   ? -1
+                                   : first_chord_shorter_than(points, closed, shortest);
+        i >= 0) {
         const Eigen::Index next = i + 1 == points.rows() ? 0 : i + 1;
         InterpolationResult r;
-        r.outcome = {Status::not_representable, method.name + ": " + point_label(i) + " and " + point_label(next) + " differ by " +
-                                                    full_precision((points.row(next) - points.row(i)).cwiseAbs().maxCoeff()) +
-                                                    " at most per coordinate: below 1e-150 (times the coordinates' size) the chord's square underflows; scale the points up"};
+        r.outcome = {Status::not_representable,
+                     method.name + ": " + point_label(i) + " and " + point_label(next) + " differ by " +
+                         full_precision((points.row(next) - points.row(i)).cwiseAbs().maxCoeff()) +
+                         " at most per coordinate: below 1e-150 (times the coordinates' size) the chord's square "
+                         "underflows; scale the points up"};
         return r;
     }
     try {
@@ -118,11 +140,13 @@ InterpolationResult checked_build(const Method& method, const PointList& points,
 
 }  // namespace
 
-InterpolationResult interpolate(const Method& method, const PointList& points, bool closed, const ParameterValues& values) {
+InterpolationResult interpolate(const Method& method, const PointList& points, bool closed,
+                                const ParameterValues& values) {
     return checked_build(method, points, closed, values, Eigen::VectorXd());
 }
 
-InterpolationResult interpolate(const std::string& name, const PointList& points, bool closed, const ParameterText& values) {
+InterpolationResult interpolate(const std::string& name, const PointList& points, bool closed,
+                                const ParameterText& values) {
     for (const Method& m : registry())
         for (const Preset& p : m.presets)
             if (p.name == name) {
@@ -166,7 +190,8 @@ Configuration find_configuration(const std::string& name) {
     }
     std::string known;
     for (const Configuration& c : configurations()) known += (known.empty() ? "" : ", ") + c.name;
-    fail_input("cagd::methods::find_configuration", "unknown method '" + name + "'; known: " + known + " (or any method name, with its defaults)");
+    fail_input("cagd::methods::find_configuration",
+               "unknown method '" + name + "'; known: " + known + " (or any method name, with its defaults)");
 }
 
 Configuration find_configuration(const std::string& name, const ParameterText& overrides) {
@@ -183,7 +208,8 @@ InterpolationResult interpolate(const Configuration& configuration, const PointL
     return interpolate(*configuration.method, points, closed, configuration.values);
 }
 
-InterpolationResult interpolate_from(const Configuration& configuration, const PointList& points, bool closed, const Eigen::VectorXd& start) {
+InterpolationResult interpolate_from(const Configuration& configuration, const PointList& points, bool closed,
+                                     const Eigen::VectorXd& start) {
     return checked_build(*configuration.method, points, closed, configuration.values, start);
 }
 

@@ -32,10 +32,10 @@
 /// under its own name with its defaults, so a new method is compared and tested by itself.
 ///
 /// Preconditions (InvalidInput naming the point): finite coordinates; at least min_points (open) or
-/// min_points_closed, at most max_points where a method states it; no two consecutive points equal (closed: also last and first); dimension
-/// 2 (or 3 where `max_dimension` allows). A method that does not support closed curves throws when
-/// asked for one. Outcomes: the curvature-profile Newton can fail for valid points (returned, not
-/// thrown); every other method always returns a curve.
+/// min_points_closed, at most max_points where a method states it; no two consecutive points equal (closed: also last
+/// and first); dimension 2 (or 3 where `max_dimension` allows). A method that does not support closed curves throws
+/// when asked for one. Outcomes: the curvature-profile Newton can fail for valid points (returned, not thrown); every
+/// other method always returns a curve.
 #include <Eigen/Dense>
 #include <functional>
 #include <memory>
@@ -58,15 +58,15 @@ const char* to_string(Invariance i);
 
 /// What a method claims under given parameter values (see above).
 struct MethodClaims {
-    int parametric_continuity = 0;  ///< k of "C^k in τ" (0: not claimed)
-    int geometric_continuity = 0;   ///< k of "G^k" (0: not claimed)
-    std::string parameter{};        ///< what τ is
+    int parametric_continuity = 0;             ///< k of "C^k in τ" (0: not claimed)
+    int geometric_continuity = 0;              ///< k of "G^k" (0: not claimed)
+    std::string parameter{};                   ///< what τ is
     Invariance invariance = Invariance::none;  ///< the maps the method commutes with
-    bool supports_closed = true;  ///< draws closed curves
-    int min_points = 2;  ///< fewest points of an open curve
-    int min_points_closed = 3;  ///< fewest points of a closed curve
-    int max_points = 0;  ///< most points (0: no limit), where the method's cost forbids more
-    int max_dimension = 2;  ///< 2 or 3
+    bool supports_closed = true;               ///< draws closed curves
+    int min_points = 2;                        ///< fewest points of an open curve
+    int min_points_closed = 3;                 ///< fewest points of a closed curve
+    int max_points = 0;                        ///< most points (0: no limit), where the method's cost forbids more
+    int max_dimension = 2;                     ///< 2 or 3
     /// A curve exists for every valid point set. False where the method's equations have no solution
     /// for some points and several for others (Spiro): the outcome is then no_convergence, and the
     /// solution found may depend on the rounding of the input.
@@ -75,7 +75,7 @@ struct MethodClaims {
 
 /// A curve from the registry with the parameter of each data point.
 struct Interpolant {
-    std::shared_ptr<const Curve> curve;  ///< the curve
+    std::shared_ptr<const Curve> curve;   ///< the curve
     std::vector<double> node_parameters;  ///< u of each data point (closed: n + 1 values, the last = t_max)
     std::vector<double> dtau_du;          ///< one per span (see above)
 };
@@ -98,18 +98,18 @@ struct InterpolationResult {
 
 /// A named set of parameter values of a method: a configuration of the comparison.
 struct Preset {
-    std::string name{};  ///< e.g. "s-spline-m2"
+    std::string name{};      ///< e.g. "s-spline-m2"
     ParameterText values{};  ///< the parameters' text, as on the command line
 };
 
 /// A registered interpolation method (see above).
 struct Method {
-    std::string name{};  ///< the name `--method` takes
-    std::vector<std::string> aliases{};  ///< older names still accepted
-    std::string paper{};                 ///< paper id, or "Boost.Math"
-    std::string source{};                ///< equations and sections, or the Boost.Math class
-    std::string summary{};               ///< one line for help texts and docs/methods.md
-    std::vector<Parameter> parameters{};  ///< its typed parameters
+    std::string name{};                                            ///< the name `--method` takes
+    std::vector<std::string> aliases{};                            ///< older names still accepted
+    std::string paper{};                                           ///< paper id, or "Boost.Math"
+    std::string source{};                                          ///< equations and sections, or the Boost.Math class
+    std::string summary{};                                         ///< one line for help texts and docs/methods.md
+    std::vector<Parameter> parameters{};                           ///< its typed parameters
     std::function<MethodClaims(const ParameterValues&)> claims{};  ///< what it claims, given the parameter values
     /// Builds the curve through points already checked against the claims (ValidPoints: the points,
     /// whether the curve is closed, and the proof that they passed require_valid_points with the
@@ -127,7 +127,8 @@ struct Method {
     /// of a build on nearby points of the same number (continuation: the locality footprint's moved
     /// point, a drag). The result meets the same tolerance as a build's, on the solution branch of
     /// the start. Empty for the direct methods (interpolate_from then builds).
-    std::function<InterpolationResult(const ValidPoints& points, const ParameterValues&, const Eigen::VectorXd& start)> rebuild{};
+    std::function<InterpolationResult(const ValidPoints& points, const ParameterValues&, const Eigen::VectorXd& start)>
+        rebuild{};
 };
 
 /// Every method, in the order of the tables.
@@ -143,16 +144,18 @@ std::vector<std::string> method_names();  ///< names and aliases, for a command 
 std::string method_applicability(const MethodClaims& claims, const PointList& points, bool closed);
 /// Checks the points against the method's claims (method_applicability), then the points
 /// themselves (finiteness, coincident neighbours), then builds the curve.
-InterpolationResult interpolate(const Method& method, const PointList& points, bool closed, const ParameterValues& values);
+InterpolationResult interpolate(const Method& method, const PointList& points, bool closed,
+                                const ParameterValues& values);
 /// By method or preset name ("s-spline-m2"); `values` add to, or override, a preset's.
-InterpolationResult interpolate(const std::string& name, const PointList& points, bool closed, const ParameterText& values = {});
+InterpolationResult interpolate(const std::string& name, const PointList& points, bool closed,
+                                const ParameterText& values = {});
 
 /// A method under named parameter values (a preset, or the method's defaults under its name).
 struct Configuration {
-    std::string name;  ///< the preset's name, or the method's
+    std::string name;                ///< the preset's name, or the method's
     const Method* method = nullptr;  ///< the method
-    ParameterValues values;  ///< the parameter values
-    MethodClaims claims;  ///< the method's claims under them
+    ParameterValues values;          ///< the parameter values
+    MethodClaims claims;             ///< the method's claims under them
 };
 /// Every configuration, in registry order: a method's presets, or the method itself.
 const std::vector<Configuration>& configurations();
@@ -169,7 +172,8 @@ InterpolationResult interpolate(const Configuration& configuration, const PointL
 /// configuration on as many points, open or closed alike. A method with a rebuild starts its solve
 /// from it (fewer Newton iterations when the points moved a little); any other method, or an empty
 /// start, builds anew. The same checks.
-InterpolationResult interpolate_from(const Configuration& configuration, const PointList& points, bool closed, const Eigen::VectorXd& start);
+InterpolationResult interpolate_from(const Configuration& configuration, const PointList& points, bool closed,
+                                     const Eigen::VectorXd& start);
 
 /// The registry as a Markdown table (docs/methods.md) or as plain lines (`cagd interpolate --list-methods`).
 std::string registry_markdown();

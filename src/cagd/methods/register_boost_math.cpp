@@ -27,7 +27,8 @@ std::vector<Method> boost_math_methods() {
         .source = "boost::math::interpolators::pchip on x(t), y(t)",
         .summary = "monotone piecewise cubic Hermite per coordinate over chord length (a peer)",
         .claims = boost_componentwise_claims,
-        .build = [](const ValidPoints& p, const ParameterValues&) { return result_of(boost_pchip_interpolant(p.points())); },
+        .build = [](const ValidPoints& p,
+                    const ParameterValues&) { return result_of(boost_pchip_interpolant(p.points())); },
     });
     r.push_back({
         .name = "boost-makima",
@@ -35,7 +36,8 @@ std::vector<Method> boost_math_methods() {
         .source = "boost::math::interpolators::makima on x(t), y(t)",
         .summary = "modified Akima per coordinate over chord length (a peer)",
         .claims = boost_componentwise_claims,
-        .build = [](const ValidPoints& p, const ParameterValues&) { return result_of(boost_makima_interpolant(p.points())); },
+        .build = [](const ValidPoints& p,
+                    const ParameterValues&) { return result_of(boost_makima_interpolant(p.points())); },
     });
     r.push_back({
         .name = "boost-catmull-rom",
@@ -48,7 +50,10 @@ std::vector<Method> boost_math_methods() {
                          .min_points = 4,
                          .min_points_closed = 4,
                          .max_dimension = 3}),
-        .build = [](const ValidPoints& p, const ParameterValues&) { return result_of(boost_catmull_rom_interpolant(p.points(), p.closed())); },
+        .build =
+            [](const ValidPoints& p, const ParameterValues&) {
+                return result_of(boost_catmull_rom_interpolant(p.points(), p.closed()));
+            },
     });
     return r;
 }

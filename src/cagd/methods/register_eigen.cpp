@@ -1,9 +1,9 @@
 // Eigen's SplineFitting::Interpolate (unsupported/Eigen/Splines) as a peer: global B-spline
 // interpolation of Piegl and Tiller (The NURBS Book, 2nd ed., section 9.2.1). Its parameters are
-// the chord lengths normalised to [0, 1] (the curve's u; the method's τ is the chord length, L u), its knots the averages of `degree` consecutive
-// parameters (clamped at 0 and 1), and its control points solve the n × n collocation system, which
-// Eigen builds dense and solves by Householder QR: O(n³) time and O(n²) memory. The peer therefore takes at most kMaxEigenSplinePoints points, and says so.
-// Open curves only: SplineFitting has no periodic form.
+// the chord lengths normalised to [0, 1] (the curve's u; the method's τ is the chord length, L u), its knots the
+// averages of `degree` consecutive parameters (clamped at 0 and 1), and its control points solve the n × n collocation
+// system, which Eigen builds dense and solves by Householder QR: O(n³) time and O(n²) memory. The peer therefore takes
+// at most kMaxEigenSplinePoints points, and says so. Open curves only: SplineFitting has no periodic form.
 #include "cagd/methods/detail/registration.hpp"
 
 #include <unsupported/Eigen/Splines>
@@ -48,7 +48,12 @@ std::vector<Method> eigen_methods() {
         .paper = "Eigen",
         .source = "Eigen::SplineFitting::Interpolate (unsupported/Eigen/Splines), chord length",
         .summary = "global B-spline interpolation with averaged knots, dense solve (a peer)",
-        .parameters = {{.name = "degree", .type = P::integer, .default_text = "3", .lower = 1, .upper = 5, .help = "degree p of the B-spline (C^(p-1))"}},
+        .parameters = {{.name = "degree",
+                        .type = P::integer,
+                        .default_text = "3",
+                        .lower = 1,
+                        .upper = 5,
+                        .help = "degree p of the B-spline (C^(p-1))"}},
         .claims =
             [](const ParameterValues& v) {
                 const int p = v.integer("degree");

@@ -19,7 +19,8 @@ InterpolationResult build_hosaka(const ValidPoints& valid, const ParameterValues
     o.closed = closed;
     require_tangent_pair("cagd::methods(hosaka)", v);
     const bool chord = o.scale == spline::HosakaScale::chord;
-    if (v.text("end") == "tangent") {  // given in the method's parameter t; Hosaka's B_1, C_n are per span: d/du = L d/dt
+    if (v.text("end") ==
+        "tangent") {  // given in the method's parameter t; Hosaka's B_1, C_n are per span: d/du = L d/dt
         // The first and last spans' lengths only, as chord_lengths computes them.
         const auto span_length = [&](Eigen::Index span) {
             if (!chord) return 1.0;
@@ -45,7 +46,8 @@ InterpolationResult build_hosaka(const ValidPoints& valid, const ParameterValues
     // Order m > 1 forms its lengths inside a solve of 2m unknowns per point (SparseLU): these
     // chords again are a small part of it.
     std::vector<double> lengths = chord ? chord_lengths(points, closed) : unit_lengths(points, closed);
-    return result_of(unit_span_interpolant(std::make_shared<spline::HosakaCurve>(spline::hosaka_spline(valid, m, o)), node_count(points, closed), std::move(lengths)));
+    return result_of(unit_span_interpolant(std::make_shared<spline::HosakaCurve>(spline::hosaka_spline(valid, m, o)),
+                                           node_count(points, closed), std::move(lengths)));
 }
 
 }  // namespace
@@ -59,8 +61,16 @@ std::vector<Method> hosaka_methods() {
          .lower = 1,
          .upper = kMaxHosakaOrder,
          .help = "segment order m: segments of degree 2m+1, continuous to order 2m (m = 1: eq 18-20)"},
-        {.name = "scale", .type = P::choice, .default_text = "chord", .choices = {"chord", "unit"}, .help = "scale factors: chord (k_i = |A_i|/|A_i+1|, eq 19) or unit (k_i = 1)"},
-        {.name = "end", .type = P::choice, .default_text = "natural", .choices = {"natural", "tangent"}, .help = "end condition"},
+        {.name = "scale",
+         .type = P::choice,
+         .default_text = "chord",
+         .choices = {"chord", "unit"},
+         .help = "scale factors: chord (k_i = |A_i|/|A_i+1|, eq 19) or unit (k_i = 1)"},
+        {.name = "end",
+         .type = P::choice,
+         .default_text = "natural",
+         .choices = {"natural", "tangent"},
+         .help = "end condition"},
     };
     for (Parameter& t : tangent_parameters()) hosaka_parameters.push_back(std::move(t));
     r.push_back({

@@ -58,10 +58,13 @@ InterpolationResult opencascade_interpolant(const PointList& p, bool closed) {
     const Eigen::Index nodes = node_count(p, closed);
     in.node_parameters.reserve(static_cast<std::size_t>(nodes));
     for (double k : spline->knots())
-        if (k >= spline->t_min() && k <= spline->t_max() && (in.node_parameters.empty() || k != in.node_parameters.back())) in.node_parameters.push_back(k);
+        if (k >= spline->t_min() && k <= spline->t_max() &&
+            (in.node_parameters.empty() || k != in.node_parameters.back()))
+            in.node_parameters.push_back(k);
     if (std::cmp_not_equal(in.node_parameters.size(), nodes)) {
-        r.outcome = {Status::no_solution, "OpenCASCADE's curve has " + std::to_string(in.node_parameters.size()) + " distinct knots on its domain for " +
-                                              std::to_string(nodes) + " points (it took some points as coincident)"};
+        r.outcome = {Status::no_solution, "OpenCASCADE's curve has " + std::to_string(in.node_parameters.size()) +
+                                              " distinct knots on its domain for " + std::to_string(nodes) +
+                                              " points (it took some points as coincident)"};
         return r;
     }
     in.dtau_du = unit_lengths(p, closed);
@@ -76,14 +79,16 @@ std::vector<Method> opencascade_methods() {
         .name = "occt-interpolate",
         .paper = "OpenCASCADE",
         .source = "GeomAPI_Interpolate, chord length; periodic for closed curves",
-        .summary = "OpenCASCADE's interpolating cubic B-spline, as FreeCAD and CadQuery build it (a peer; closed: C1 where it closes)",
+        .summary = "OpenCASCADE's interpolating cubic B-spline, as FreeCAD and CadQuery build it (a peer; closed: C1 "
+                   "where it closes)",
         .claims = fixed({.parametric_continuity = 1,
                          .parameter = "chord length",
                          .invariance = Invariance::similarity,
                          .min_points = 2,
                          .min_points_closed = 3,
                          .max_dimension = 3}),
-        .build = [](const ValidPoints& p, const ParameterValues&) { return opencascade_interpolant(p.points(), p.closed()); },
+        .build = [](const ValidPoints& p,
+                    const ParameterValues&) { return opencascade_interpolant(p.points(), p.closed()); },
     }};
 }
 #else

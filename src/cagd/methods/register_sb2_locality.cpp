@@ -17,7 +17,11 @@ std::vector<Parameter> locality_parameters() {
          .upper = locality::kMaxLocality,
          .help = "locality m for every segment (eq 12; m = 4, 5 truncated by eq 13)"},
         {.name = "m-vector", .type = P::text, .help = "one m per segment instead of --m, pairs as l:r, e.g. 1,2,1:3"},
-        {.name = "end", .type = P::choice, .default_text = "natural", .choices = {"natural", "tangent", "bessel"}, .help = "end condition (section 3.3)"},
+        {.name = "end",
+         .type = P::choice,
+         .default_text = "natural",
+         .choices = {"natural", "tangent", "bessel"},
+         .help = "end condition (section 3.3)"},
         {.name = "rule",
          .type = P::choice,
          .default_text = "locality",
@@ -39,7 +43,8 @@ MethodClaims locality_claims(const ParameterValues& v) {
 InterpolationResult build_locality(const ValidPoints& valid, const ParameterValues& v, locality::SplineForm form) {
     const PointList& points = valid.points();
     const bool closed = valid.closed();
-    const std::string who = std::string("cagd::methods(") + (form == locality::SplineForm::s_spline ? "s-spline" : "b2-spline") + ")";
+    const std::string who =
+        std::string("cagd::methods(") + (form == locality::SplineForm::s_spline ? "s-spline" : "b2-spline") + ")";
     locality::Options o;
     o.form = form;
     if (v.given("m") && v.has("m-vector")) fail_input(who, "give --m or --m-vector, not both");
@@ -54,7 +59,9 @@ InterpolationResult build_locality(const ValidPoints& valid, const ParameterValu
              : rule == "fmill" ? locality::ExtraPointRule::fmill
                                : locality::ExtraPointRule::locality;
     const std::string& end = v.text("end");
-    o.start.kind = o.end.kind = end == "tangent" ? locality::EndKind::tangent : end == "bessel" ? locality::EndKind::bessel : locality::EndKind::natural;
+    o.start.kind = o.end.kind = end == "tangent"  ? locality::EndKind::tangent
+                                : end == "bessel" ? locality::EndKind::bessel
+                                                  : locality::EndKind::natural;
     require_tangent_pair(who, v);
     if (o.start.kind == locality::EndKind::tangent) {
         o.start.tangent = v.vector("start-tangent");
@@ -75,7 +82,8 @@ std::vector<Method> sb2_locality_methods() {
         .summary = "S-spline with controllable locality m",
         .parameters = locality_parameters(),
         .claims = locality_claims,
-        .build = [](const ValidPoints& p, const ParameterValues& v) { return build_locality(p, v, locality::SplineForm::s_spline); },
+        .build = [](const ValidPoints& p,
+                    const ParameterValues& v) { return build_locality(p, v, locality::SplineForm::s_spline); },
         .presets = {{"s-spline-m1", {{"m", "1"}}}, {"s-spline-m2", {{"m", "2"}}}, {"s-spline-m4", {{"m", "4"}}}},
     });
     r.push_back({
@@ -85,7 +93,8 @@ std::vector<Method> sb2_locality_methods() {
         .summary = "B2-spline with controllable locality m",
         .parameters = locality_parameters(),
         .claims = locality_claims,
-        .build = [](const ValidPoints& p, const ParameterValues& v) { return build_locality(p, v, locality::SplineForm::b2_spline); },
+        .build = [](const ValidPoints& p,
+                    const ParameterValues& v) { return build_locality(p, v, locality::SplineForm::b2_spline); },
         .presets = {{"b2-spline-m1", {{"m", "1"}}}, {"b2-spline-m2", {{"m", "2"}}}, {"b2-spline-m4", {{"m", "4"}}}},
     });
     return r;

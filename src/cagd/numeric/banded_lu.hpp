@@ -30,7 +30,8 @@ public:
     static bool available();
     /// The band of `pattern` with row r of A at position row_position[r] and column c at
     /// column_position[c]. Nothing is factorised yet.
-    BandedLu(const Eigen::SparseMatrix<double>& pattern, std::vector<int> row_position, std::vector<int> column_position);
+    BandedLu(const Eigen::SparseMatrix<double>& pattern, std::vector<int> row_position,
+             std::vector<int> column_position);
 
     int size() const { return n_; }          ///< n, the order of A
     int lower_width() const { return kl_; }  ///< kl: nonzeros at most kl below the diagonal of R A C

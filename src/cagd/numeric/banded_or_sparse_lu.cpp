@@ -4,7 +4,8 @@
 
 namespace cagd::numeric {
 
-void BandedOrSparseLu::analyze(const Eigen::SparseMatrix<double>& pattern, std::vector<int> row_position, std::vector<int> column_position, int max_storage_rows) {
+void BandedOrSparseLu::analyze(const Eigen::SparseMatrix<double>& pattern, std::vector<int> row_position,
+                               std::vector<int> column_position, int max_storage_rows) {
     band_.reset();
     if (max_storage_rows > 0 && BandedLu::available()) {
         band_.emplace(pattern, std::move(row_position), std::move(column_position));

@@ -32,7 +32,8 @@ public:
     /// takes at most max_storage_rows rows of band storage (BandedLu::storage_rows); otherwise the
     /// sparse LU's symbolic analysis. max_storage_rows = 0 asks for the sparse LU (the orderings
     /// are then not read). Call again when the pattern changes.
-    void analyze(const Eigen::SparseMatrix<double>& pattern, std::vector<int> row_position, std::vector<int> column_position, int max_storage_rows);
+    void analyze(const Eigen::SparseMatrix<double>& pattern, std::vector<int> row_position,
+                 std::vector<int> column_position, int max_storage_rows);
     /// The numeric factorisation of A (the pattern analysed); false when A is singular.
     bool factorize(const Eigen::SparseMatrix<double>& a) { return band_ ? band_->factorize(a) : sparse_.factorize(a); }
     /// x with A x = b after a successful factorize.

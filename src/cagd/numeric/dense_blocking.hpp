@@ -19,10 +19,12 @@ namespace cagd::numeric {
 /// The L1, L2 and L3 cache sizes (bytes) pin_dense_blocking() gives Eigen: those of the machine
 /// on which results/ was first regenerated (a 32 KiB L1 data cache), so that it still reproduces.
 inline constexpr std::ptrdiff_t kPinnedL1CacheBytes = 32 * 1024;
-inline constexpr std::ptrdiff_t kPinnedL2CacheBytes = 1024 * 1024;        ///< see kPinnedL1CacheBytes
-inline constexpr std::ptrdiff_t kPinnedL3CacheBytes = 32 * 1024 * 1024;   ///< see kPinnedL1CacheBytes
+inline constexpr std::ptrdiff_t kPinnedL2CacheBytes = 1024 * 1024;       ///< see kPinnedL1CacheBytes
+inline constexpr std::ptrdiff_t kPinnedL3CacheBytes = 32 * 1024 * 1024;  ///< see kPinnedL1CacheBytes
 
 /// Eigen's product blocking planned for the pinned cache sizes (above), whatever this CPU's are.
-inline void pin_dense_blocking() { Eigen::setCpuCacheSizes(kPinnedL1CacheBytes, kPinnedL2CacheBytes, kPinnedL3CacheBytes); }
+inline void pin_dense_blocking() {
+    Eigen::setCpuCacheSizes(kPinnedL1CacheBytes, kPinnedL2CacheBytes, kPinnedL3CacheBytes);
+}
 
 }  // namespace cagd::numeric

@@ -8,7 +8,8 @@
 
 namespace cagd::numeric {
 
-std::vector<double> one_sided_derivatives(const std::function<double(double)>& f, double x0, double h, int side, int points) {
+std::vector<double> one_sided_derivatives(const std::function<double(double)>& f, double x0, double h, int side,
+                                          int points) {
     const char* who = "cagd::numeric::one_sided_derivatives";
     if (!(h > 0) || !std::isfinite(h)) fail_input(who, "h must be positive and finite, got " + full_precision(h));
     if (side != 1 && side != -1) fail_input(who, "side must be +1 or -1, got " + std::to_string(side));

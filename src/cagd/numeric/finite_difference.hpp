@@ -11,6 +11,7 @@
 namespace cagd::numeric {
 
 /// Result[r] = r-th derivative at x0, r = 0..N−1.
-std::vector<double> one_sided_derivatives(const std::function<double(double)>& f, double x0, double h, int side, int points);
+std::vector<double> one_sided_derivatives(const std::function<double(double)>& f, double x0, double h, int side,
+                                          int points);
 
 }  // namespace cagd::numeric

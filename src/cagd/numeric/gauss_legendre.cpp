@@ -27,7 +27,8 @@ void legendre(int n, double x, double& p, double& dp) {
 }  // namespace
 
 GaussLegendreRule::GaussLegendreRule(int n) {
-    if (n < 1 || n > 200) fail_input("cagd::numeric::GaussLegendreRule", "n must be in [1, 200], got " + std::to_string(n));
+    if (n < 1 || n > 200)
+        fail_input("cagd::numeric::GaussLegendreRule", "n must be in [1, 200], got " + std::to_string(n));
     Eigen::MatrixXd jacobi = Eigen::MatrixXd::Zero(n, n);
     for (int k = 1; k < n; ++k) {
         const double beta = k / std::sqrt(4.0 * k * k - 1.0);
@@ -58,7 +59,8 @@ double GaussLegendreRule::integrate(const std::function<double(double)>& f, doub
     return half * sum;
 }
 
-double GaussLegendreRule::integrate_piecewise(const std::function<double(double)>& f, const std::vector<double>& breaks) const {
+double GaussLegendreRule::integrate_piecewise(const std::function<double(double)>& f,
+                                              const std::vector<double>& breaks) const {
     double sum = 0.0;
     for (std::size_t k = 0; k + 1 < breaks.size(); ++k) sum += integrate(f, breaks[k], breaks[k + 1]);
     return sum;

@@ -36,8 +36,8 @@ public:
     /// integrate_piecewise sums it alone. A template, so the integrand is called directly (no
     /// std::function per node: the fairness measures call it for every piece of a curve).
     template <class F>
-    requires std::same_as<std::invoke_result_t<const F&, double>, std::pair<double, double>> std::pair<double, double> integrate_piecewise(const F& f,
-                                                                                                                                           const std::vector<double>& breaks)
+    requires std::same_as<std::invoke_result_t<const F&, double>, std::pair<double, double>> std::pair<double, double>
+    integrate_piecewise(const F& f, const std::vector<double>& breaks)
     const {
         double first = 0.0, second = 0.0;
         for (std::size_t k = 0; k + 1 < breaks.size(); ++k) {

@@ -13,6 +13,7 @@
 namespace cagd::numeric {
 
 /// X with A X = rhs for the symmetric pentadiagonal A above (columns of rhs solved together).
-Eigen::MatrixXd solve_symmetric_pentadiagonal(const std::vector<double>& diag, const std::vector<double>& first, const std::vector<double>& second, Eigen::MatrixXd rhs);
+Eigen::MatrixXd solve_symmetric_pentadiagonal(const std::vector<double>& diag, const std::vector<double>& first,
+                                              const std::vector<double>& second, Eigen::MatrixXd rhs);
 
 }  // namespace cagd::numeric

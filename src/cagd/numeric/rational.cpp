@@ -8,7 +8,8 @@ namespace cagd::numeric {
 
 Fraction simplest_fraction_within(double x, double tol) {
     if (!std::isfinite(x) || !(tol > 0.0))
-        fail_input("cagd::numeric::simplest_fraction_within", "needs finite x and tol > 0, got x = " + full_precision(x) + ", tol = " + full_precision(tol));
+        fail_input("cagd::numeric::simplest_fraction_within",
+                   "needs finite x and tol > 0, got x = " + full_precision(x) + ", tol = " + full_precision(tol));
     const double lo = x - tol, hi = x + tol;
     const auto fl = static_cast<std::int64_t>(std::floor(lo));
     if (std::ceil(lo) <= hi) return {static_cast<std::int64_t>(std::ceil(lo)), 1};

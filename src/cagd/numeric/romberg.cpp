@@ -6,12 +6,15 @@
 
 namespace cagd::numeric {
 
-RombergResult romberg(const std::function<double(double)>& f, double a, double b, double rel_tol, double abs_tol, int max_levels) {
+RombergResult romberg(const std::function<double(double)>& f, double a, double b, double rel_tol, double abs_tol,
+                      int max_levels) {
     const std::string who = "cagd::numeric::romberg";
-    if (!std::isfinite(a) || !std::isfinite(b)) fail_input(who, "interval [" + full_precision(a) + ", " + full_precision(b) + "] must be finite");
+    if (!std::isfinite(a) || !std::isfinite(b))
+        fail_input(who, "interval [" + full_precision(a) + ", " + full_precision(b) + "] must be finite");
     if (!(rel_tol > 0.0)) fail_input(who, "rel_tol must be > 0, got " + full_precision(rel_tol));
     if (!(abs_tol >= 0.0)) fail_input(who, "abs_tol must be >= 0, got " + full_precision(abs_tol));
-    if (max_levels < 2 || max_levels > 30) fail_input(who, "max_levels must be in [2, 30], got " + std::to_string(max_levels));
+    if (max_levels < 2 || max_levels > 30)
+        fail_input(who, "max_levels must be in [2, 30], got " + std::to_string(max_levels));
 
     RombergResult r;
     const double h0 = b - a;
@@ -37,7 +40,8 @@ RombergResult romberg(const std::function<double(double)>& f, double a, double b
         r.error_estimate = std::abs(cur[k] - prev[k - 1]);
         r.levels = k;
         if (!std::isfinite(r.value)) {
-            r.outcome = {Status::no_convergence, who + ": integrand produced a non-finite value at level " + std::to_string(k)};
+            r.outcome = {Status::no_convergence,
+                         who + ": integrand produced a non-finite value at level " + std::to_string(k)};
             return r;
         }
         const bool small = r.error_estimate <= std::max(rel_tol * std::abs(r.value), abs_tol);
@@ -45,7 +49,8 @@ RombergResult romberg(const std::function<double(double)>& f, double a, double b
         if (small_in_a_row >= 2 && k >= 4) return r;
         prev.swap(cur);
     }
-    r.outcome = {Status::no_convergence, who + ": no convergence after " + std::to_string(max_levels) + " levels, error estimate " + full_precision(r.error_estimate)};
+    r.outcome = {Status::no_convergence, who + ": no convergence after " + std::to_string(max_levels) +
+                                             " levels, error estimate " + full_precision(r.error_estimate)};
     return r;
 }
 

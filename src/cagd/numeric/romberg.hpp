@@ -24,15 +24,16 @@ namespace cagd::numeric {
 
 /// What romberg returns: the integral, its error estimate, the work done and the outcome.
 struct RombergResult {
-    double value = 0.0;  ///< the integral at the last level
+    double value = 0.0;           ///< the integral at the last level
     double error_estimate = 0.0;  ///< |R(k,k) − R(k−1,k−1)| at the last level
     int levels = 0;               ///< k reached
-    long evaluations = 0;  ///< integrand evaluations
-    Outcome outcome;  ///< ok, or no_convergence when max_levels did not meet the tolerances
+    long evaluations = 0;         ///< integrand evaluations
+    Outcome outcome;              ///< ok, or no_convergence when max_levels did not meet the tolerances
 };
 
 /// Preconditions: a, b finite; rel_tol > 0; abs_tol ≥ 0; 2 ≤ max_levels ≤ 30.
-RombergResult romberg(const std::function<double(double)>& f, double a, double b, double rel_tol = 1e-12, double abs_tol = 0.0, int max_levels = 24);
+RombergResult romberg(const std::function<double(double)>& f, double a, double b, double rel_tol = 1e-12,
+                      double abs_tol = 0.0, int max_levels = 24);
 
 /// The same scheme for N integrals sharing one integrand evaluation, f(t) → std::array<double, N>:
 /// converged when every component meets the test above at two consecutive levels, with the
@@ -42,9 +43,9 @@ template <std::size_t N>
 struct RombergVectorResult {
     std::array<double, N> value{};           ///< the N integrals
     std::array<double, N> error_estimate{};  ///< their error estimates (as for romberg)
-    int levels = 0;  ///< levels reached
-    long evaluations = 0;  ///< evaluations of the integrand (points, each giving all N values)
-    Outcome outcome;  ///< ok, or no_convergence
+    int levels = 0;                          ///< levels reached
+    long evaluations = 0;                    ///< evaluations of the integrand (points, each giving all N values)
+    Outcome outcome;                         ///< ok, or no_convergence
 };
 
 /// The points of a level are handed to the integrand in batches of up to kRombergBatch:
@@ -55,13 +56,16 @@ inline constexpr std::size_t kRombergBatch = 16;
 
 template <std::size_t N, class FB>
 /// N integrals of one batched integrand fb over [a, b] (see kRombergBatch).
-RombergVectorResult<N> romberg_vector_batched(const FB& fb, double a, double b, double rel_tol = 1e-12, double abs_tol = 0.0, int max_levels = 24) {
+RombergVectorResult<N> romberg_vector_batched(const FB& fb, double a, double b, double rel_tol = 1e-12,
+                                              double abs_tol = 0.0, int max_levels = 24) {
     using Row = std::vector<std::array<double, N>>;
     const std::string who = "cagd::numeric::romberg_vector";
-    if (!std::isfinite(a) || !std::isfinite(b)) fail_input(who, "interval [" + full_precision(a) + ", " + full_precision(b) + "] must be finite");
+    if (!std::isfinite(a) || !std::isfinite(b))
+        fail_input(who, "interval [" + full_precision(a) + ", " + full_precision(b) + "] must be finite");
     if (!(rel_tol > 0.0)) fail_input(who, "rel_tol must be > 0, got " + full_precision(rel_tol));
     if (!(abs_tol >= 0.0)) fail_input(who, "abs_tol must be >= 0, got " + full_precision(abs_tol));
-    if (max_levels < 2 || max_levels > 30) fail_input(who, "max_levels must be in [2, 30], got " + std::to_string(max_levels));
+    if (max_levels < 2 || max_levels > 30)
+        fail_input(who, "max_levels must be in [2, 30], got " + std::to_string(max_levels));
     RombergVectorResult<N> r;
     const double h0 = b - a;
     const std::array<double, 2> ends{a, b};
@@ -83,7 +87,8 @@ RombergVectorResult<N> romberg_vector_batched(const FB& fb, double a, double b, 
         std::array<double, kRombergBatch> t;
         std::array<std::array<double, N>, kRombergBatch> v;
         for (long i0 = 0; i0 < n_new; i0 += static_cast<long>(kRombergBatch)) {
-            const std::size_t m = static_cast<std::size_t>(std::min<long>(static_cast<long>(kRombergBatch), n_new - i0));
+            const std::size_t m =
+                static_cast<std::size_t>(std::min<long>(static_cast<long>(kRombergBatch), n_new - i0));
             for (std::size_t i = 0; i < m; ++i) t[i] = a + static_cast<double>(2 * (i0 + static_cast<long>(i)) + 1) * h;
             fb(t.data(), m, v.data());
             for (std::size_t i = 0; i < m; ++i)
@@ -101,7 +106,8 @@ RombergVectorResult<N> romberg_vector_batched(const FB& fb, double a, double b, 
         double factor = 1.0;
         for (int j = 1; j <= k; ++j) {
             factor *= 4.0;
-            for (std::size_t c = 0; c < N; ++c) cur[j][c] = cur[j - 1][c] + (cur[j - 1][c] - prev[j - 1][c]) / (factor - 1.0);
+            for (std::size_t c = 0; c < N; ++c)
+                cur[j][c] = cur[j - 1][c] + (cur[j - 1][c] - prev[j - 1][c]) / (factor - 1.0);
         }
         bool small = true;
         for (std::size_t c = 0; c < N; ++c) {
@@ -109,10 +115,12 @@ RombergVectorResult<N> romberg_vector_batched(const FB& fb, double a, double b, 
             r.error_estimate[c] = std::abs(cur[k][c] - prev[k - 1][c]);
             if (!std::isfinite(r.value[c])) {
                 r.levels = k;
-                r.outcome = {Status::no_convergence, who + ": integrand produced a non-finite value at level " + std::to_string(k)};
+                r.outcome = {Status::no_convergence,
+                             who + ": integrand produced a non-finite value at level " + std::to_string(k)};
                 return r;
             }
-            small = small && r.error_estimate[c] <= std::max(rel_tol * std::max(std::abs(r.value[c]), abs_trap[c]), abs_tol);
+            small = small &&
+                    r.error_estimate[c] <= std::max(rel_tol * std::max(std::abs(r.value[c]), abs_trap[c]), abs_tol);
         }
         r.levels = k;
         small_in_a_row = small ? small_in_a_row + 1 : 0;
@@ -125,7 +133,8 @@ RombergVectorResult<N> romberg_vector_batched(const FB& fb, double a, double b, 
 
 /// The same with an integrand of one point, f(t) → std::array<double, N>.
 template <std::size_t N, class F>
-RombergVectorResult<N> romberg_vector(const F& f, double a, double b, double rel_tol = 1e-12, double abs_tol = 0.0, int max_levels = 24) {
+RombergVectorResult<N> romberg_vector(const F& f, double a, double b, double rel_tol = 1e-12, double abs_tol = 0.0,
+                                      int max_levels = 24) {
     return romberg_vector_batched<N>(
         [&f](const double* t, std::size_t m, std::array<double, N>* out) {
             for (std::size_t i = 0; i < m; ++i) out[i] = f(t[i]);

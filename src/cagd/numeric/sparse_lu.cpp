@@ -12,7 +12,9 @@ struct SparseLu::Impl {
     explicit Impl(ColumnOrdering ordering) {
         if (ordering == ColumnOrdering::natural) lu.emplace<1>();
     }
-    std::variant<Eigen::SparseLU<SparseMatrixD, Eigen::COLAMDOrdering<int>>, Eigen::SparseLU<SparseMatrixD, Eigen::NaturalOrdering<int>>> lu;
+    std::variant<Eigen::SparseLU<SparseMatrixD, Eigen::COLAMDOrdering<int>>,
+                 Eigen::SparseLU<SparseMatrixD, Eigen::NaturalOrdering<int>>>
+        lu;
     bool factored = false;
 
     template <class Rhs>

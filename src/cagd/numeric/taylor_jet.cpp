@@ -31,7 +31,9 @@ TaylorJet TaylorJet::from_derivatives(const std::vector<double>& d) {
 }
 
 double TaylorJet::coefficient(int k) const {
-    if (k < 0 || k > order()) fail_input("cagd::numeric::TaylorJet::coefficient", "k must be in [0, " + std::to_string(order()) + "], got " + std::to_string(k));
+    if (k < 0 || k > order())
+        fail_input("cagd::numeric::TaylorJet::coefficient",
+                   "k must be in [0, " + std::to_string(order()) + "], got " + std::to_string(k));
     return a_[static_cast<std::size_t>(k)];
 }
 

@@ -6,18 +6,24 @@
 
 namespace cagd::numeric {
 
-Eigen::MatrixXd solve_tridiagonal(const std::vector<double>& sub, const std::vector<double>& diag, const std::vector<double>& sup, Eigen::MatrixXd rhs) {
+Eigen::MatrixXd solve_tridiagonal(const std::vector<double>& sub, const std::vector<double>& diag,
+                                  const std::vector<double>& sup, Eigen::MatrixXd rhs) {
     const char* who = "cagd::numeric::solve_tridiagonal";
     const std::size_t n = diag.size();
     if (n == 0 || sub.size() != n || sup.size() != n || static_cast<std::size_t>(rhs.rows()) != n)
         fail_input(who, "needs sub, diag, sup and the right-hand side of one length n >= 1");
     // The rows' right-hand sides are already in place in rhs (column-major, column j at x + j·n).
-    detail::solve_tridiagonal_rows(who, n, static_cast<std::size_t>(rhs.cols()), [&](std::size_t r, double*, std::size_t) { return TridiagonalRow{sub[r], diag[r], sup[r]}; },
-                           rhs.data());
+    detail::solve_tridiagonal_rows(
+        who, n, static_cast<std::size_t>(rhs.cols()),
+        [&](std::size_t r, double*, std::size_t) {
+            return TridiagonalRow{sub[r], diag[r], sup[r]};
+        },
+        rhs.data());
     return rhs;
 }
 
-Eigen::MatrixXd solve_cyclic_tridiagonal(const std::vector<double>& sub, const std::vector<double>& diag, const std::vector<double>& sup, const Eigen::MatrixXd& rhs) {
+Eigen::MatrixXd solve_cyclic_tridiagonal(const std::vector<double>& sub, const std::vector<double>& diag,
+                                         const std::vector<double>& sup, const Eigen::MatrixXd& rhs) {
     const char* who = "cagd::numeric::solve_cyclic_tridiagonal";
     const std::size_t n = diag.size();
     if (n < 3 || sub.size() != n || sup.size() != n || static_cast<std::size_t>(rhs.rows()) != n)

@@ -12,7 +12,8 @@
 namespace cagd::numeric {
 
 /// X with A X = rhs for the tridiagonal A above (columns of rhs solved together).
-Eigen::MatrixXd solve_tridiagonal(const std::vector<double>& sub, const std::vector<double>& diag, const std::vector<double>& sup, Eigen::MatrixXd rhs);
+Eigen::MatrixXd solve_tridiagonal(const std::vector<double>& sub, const std::vector<double>& diag,
+                                  const std::vector<double>& sup, Eigen::MatrixXd rhs);
 
 /// The same solve with row r formed as the elimination reaches it: row(r, rhs, stride) returns row
 /// r's entries (a TridiagonalRow) and writes its right-hand side's `cols` values to rhs[j·stride];
@@ -29,7 +30,8 @@ void solve_tridiagonal_rows(std::size_t n, std::size_t cols, Row&& row, double* 
 /// with one extra right-hand side (A' z = u). O(n). Same stability condition as above, for A'
 /// (whose first and last pivots are 2 diag[0] and diag[n−1] − sub[0] sup[n−1]/diag[0]);
 /// a singular correction (1 + vᵀz = 0) throws InvalidInput.
-Eigen::MatrixXd solve_cyclic_tridiagonal(const std::vector<double>& sub, const std::vector<double>& diag, const std::vector<double>& sup, const Eigen::MatrixXd& rhs);
+Eigen::MatrixXd solve_cyclic_tridiagonal(const std::vector<double>& sub, const std::vector<double>& diag,
+                                         const std::vector<double>& sup, const Eigen::MatrixXd& rhs);
 
 }  // namespace cagd::numeric
 

@@ -43,7 +43,8 @@ struct BoundaryPlateSmoothing {
     long system_size = 0;          ///< unknowns (2 m n_x)
 };
 /// Method (ii) (see above).
-BoundaryPlateSmoothing boundary_plate_smoothing(const std::vector<double>& x, const std::vector<double>& y, const Eigen::MatrixXd& a, const Eigen::MatrixXd& lambda,
+BoundaryPlateSmoothing boundary_plate_smoothing(const std::vector<double>& x, const std::vector<double>& y,
+                                                const Eigen::MatrixXd& a, const Eigen::MatrixXd& lambda,
                                                 PlateEnergy energy, int m = 2, double poisson_ratio = 0.3);
 
 }  // namespace cagd::smoothing

@@ -21,10 +21,13 @@ using Sparse = Eigen::SparseMatrix<double>;
 void require_data(const std::vector<double>& x, const Eigen::MatrixXd& a, const char* who) {
     require_increasing(x, 2, "x", who);
     if (a.rows() != static_cast<Eigen::Index>(x.size()) || a.cols() < 1)
-        fail_input(who, "needs one value row per abscissa, got " + std::to_string(a.rows()) + " rows for " + std::to_string(x.size()) + " abscissae");
+        fail_input(who, "needs one value row per abscissa, got " + std::to_string(a.rows()) + " rows for " +
+                            std::to_string(x.size()) + " abscissae");
     for (Eigen::Index i = 0; i < a.rows(); ++i)
         for (Eigen::Index c = 0; c < a.cols(); ++c)
-            if (!std::isfinite(a(i, c))) fail_input(who, "value a[" + std::to_string(i) + "] is " + full_precision(a(i, c)) + "; values must be finite");
+            if (!std::isfinite(a(i, c)))
+                fail_input(who, "value a[" + std::to_string(i) + "] is " + full_precision(a(i, c)) +
+                                    "; values must be finite");
 }
 
 // Q: (n+1) × (n−1), (Q M)_i = δ²M_i for M with M_0 = M_n = 0 (column c ↔ interior node c + 1).
@@ -61,7 +64,8 @@ Tridiagonal spline_matrix(const std::vector<double>& x) {
 }
 
 // Node values y = a − Λ δ²M and the curve of eq (52) from the interior M.
-ElasticLine assemble_line(const std::vector<double>& x, const Eigen::MatrixXd& a, const std::vector<double>& lambda, const Eigen::MatrixXd& interior) {
+ElasticLine assemble_line(const std::vector<double>& x, const Eigen::MatrixXd& a, const std::vector<double>& lambda,
+                          const Eigen::MatrixXd& interior) {
     const Eigen::Index n = static_cast<Eigen::Index>(x.size()) - 1;
     Eigen::MatrixXd m = Eigen::MatrixXd::Zero(n + 1, a.cols());
     if (n > 1) m.middleRows(1, n - 1) = interior;
@@ -100,10 +104,12 @@ SplineMatrices natural_spline_matrices(const std::vector<double>& x) {
 
 std::vector<double> per_point_lambda(const std::vector<double>& lambda, std::size_t count, const char* who) {
     if (lambda.size() != 1 && lambda.size() != count)
-        fail_input(who, "needs one lambda for all points or one per point (" + std::to_string(count) + "), got " + std::to_string(lambda.size()));
+        fail_input(who, "needs one lambda for all points or one per point (" + std::to_string(count) + "), got " +
+                            std::to_string(lambda.size()));
     for (std::size_t i = 0; i < lambda.size(); ++i)
         if (!std::isfinite(lambda[i]) || lambda[i] < 0.0)
-            fail_input(who, "lambda[" + std::to_string(i) + "] = " + full_precision(lambda[i]) + "; lambda = EI/k must be finite and >= 0");
+            fail_input(who, "lambda[" + std::to_string(i) + "] = " + full_precision(lambda[i]) +
+                                "; lambda = EI/k must be finite and >= 0");
     return lambda.size() == count ? lambda : std::vector<double>(count, lambda.front());
 }
 
@@ -121,22 +127,31 @@ ElasticLine elastic_line(const std::vector<double>& x, const Eigen::MatrixXd& a,
     for (std::size_t c = 0; c < inner; ++c) {
         const std::size_t k = c + 1;
         const double ak = alpha(k), ak1 = alpha(k + 1);
-        diag[c] = 2.0 * (x[k + 1] - x[k - 1]) + 6.0 * (lambda[k - 1] * ak * ak + lambda[k] * (ak + ak1) * (ak + ak1) + lambda[k + 1] * ak1 * ak1);
-        if (c + 1 < inner) first[c] = (x[k + 1] - x[k]) + 6.0 * (-lambda[k] * (ak + ak1) * ak1 - lambda[k + 1] * ak1 * (ak1 + alpha(k + 2)));
+        diag[c] = 2.0 * (x[k + 1] - x[k - 1]) +
+                  6.0 * (lambda[k - 1] * ak * ak + lambda[k] * (ak + ak1) * (ak + ak1) + lambda[k + 1] * ak1 * ak1);
+        if (c + 1 < inner)
+            first[c] =
+                (x[k + 1] - x[k]) + 6.0 * (-lambda[k] * (ak + ak1) * ak1 - lambda[k + 1] * ak1 * (ak1 + alpha(k + 2)));
         if (c + 2 < inner) second[c] = 6.0 * lambda[k + 1] * ak1 * alpha(k + 2);
-        rhs.row(static_cast<Eigen::Index>(c)) = 6.0 * ((a.row(static_cast<Eigen::Index>(k + 1)) - a.row(static_cast<Eigen::Index>(k))) * ak1 -
-                                                       (a.row(static_cast<Eigen::Index>(k)) - a.row(static_cast<Eigen::Index>(k - 1))) * ak);
+        rhs.row(static_cast<Eigen::Index>(c)) =
+            6.0 * ((a.row(static_cast<Eigen::Index>(k + 1)) - a.row(static_cast<Eigen::Index>(k))) * ak1 -
+                   (a.row(static_cast<Eigen::Index>(k)) - a.row(static_cast<Eigen::Index>(k - 1))) * ak);
     }
     return assemble_line(x, a, lambda, numeric::solve_symmetric_pentadiagonal(diag, first, second, std::move(rhs)));
 }
 
-ElasticLine elastic_line(const std::vector<double>& x, const Eigen::MatrixXd& a, double lambda) { return elastic_line(x, a, std::vector<double>{lambda}); }
+ElasticLine elastic_line(const std::vector<double>& x, const Eigen::MatrixXd& a, double lambda) {
+    return elastic_line(x, a, std::vector<double>{lambda});
+}
 
-ElasticLineIteration elastic_line_iterative(const std::vector<double>& x, const Eigen::MatrixXd& a, const std::vector<double>& lambda_in, double tolerance, int max_iterations) {
+ElasticLineIteration elastic_line_iterative(const std::vector<double>& x, const Eigen::MatrixXd& a,
+                                            const std::vector<double>& lambda_in, double tolerance,
+                                            int max_iterations) {
     const char* who = "cagd::smoothing::elastic_line_iterative";
     require_data(x, a, who);
     const std::vector<double> lambda = per_point_lambda(lambda_in, x.size(), who);
-    if (!(tolerance > 0.0) || max_iterations < 1) fail_input(who, "needs tolerance > 0 and max_iterations >= 1, got " + full_precision(tolerance));
+    if (!(tolerance > 0.0) || max_iterations < 1)
+        fail_input(who, "needs tolerance > 0 and max_iterations >= 1, got " + full_precision(tolerance));
     const Sparse q = second_difference(x);
     ElasticLineIteration out;
     if (x.size() == 2) {
@@ -144,7 +159,8 @@ ElasticLineIteration elastic_line_iterative(const std::vector<double>& x, const 
         return out;
     }
     const Tridiagonal r = spline_matrix(x);
-    const Eigen::VectorXd weights = Eigen::Map<const Eigen::VectorXd>(lambda.data(), static_cast<Eigen::Index>(lambda.size()));
+    const Eigen::VectorXd weights =
+        Eigen::Map<const Eigen::VectorXd>(lambda.data(), static_cast<Eigen::Index>(lambda.size()));
     const Sparse qt = q.transpose();
     const Sparse coupling = 6.0 * (qt * weights.asDiagonal() * q);
     const Eigen::MatrixXd rhs = 6.0 * (qt * a);
@@ -165,8 +181,10 @@ ElasticLineIteration elastic_line_iterative(const std::vector<double>& x, const 
         if (k > 20 && out.contraction >= 1.0) break;  // growing corrections: ρ ≥ 1
         previous = step;
     }
-    out.outcome = Outcome{Status::no_convergence, "the iteration from lambda = 0 did not converge: ratio of successive corrections " + full_precision(out.contraction) + " after " +
-                                                      std::to_string(out.iterations) + " iterations (it converges only when 6 R^-1 Q^T Lambda Q has spectral radius < 1)"};
+    out.outcome = Outcome{Status::no_convergence,
+                          "the iteration from lambda = 0 did not converge: ratio of successive corrections " +
+                              full_precision(out.contraction) + " after " + std::to_string(out.iterations) +
+                              " iterations (it converges only when 6 R^-1 Q^T Lambda Q has spectral radius < 1)"};
     if (m.allFinite()) out.line = assemble_line(x, a, lambda, m);
     return out;
 }
@@ -174,7 +192,9 @@ ElasticLineIteration elastic_line_iterative(const std::vector<double>& x, const 
 std::vector<double> chord_parameters(const PointList& points, const char* who) {
     require_valid_points(points, 2, true, false, who);
     std::vector<double> t(static_cast<std::size_t>(points.rows()), 0.0);
-    for (Eigen::Index i = 1; i < points.rows(); ++i) t[static_cast<std::size_t>(i)] = t[static_cast<std::size_t>(i - 1)] + (points.row(i) - points.row(i - 1)).norm();
+    for (Eigen::Index i = 1; i < points.rows(); ++i)
+        t[static_cast<std::size_t>(i)] =
+            t[static_cast<std::size_t>(i - 1)] + (points.row(i) - points.row(i - 1)).norm();
     return t;
 }
 
@@ -182,7 +202,9 @@ ElasticLine elastic_line_parametric(const PointList& points, const std::vector<d
     return elastic_line(chord_parameters(points, "cagd::smoothing::elastic_line_parametric"), points, lambda);
 }
 
-HermiteElasticLine elastic_line_hermite(const std::vector<double>& x, const Eigen::VectorXd& a, const std::vector<double>& lambda_in, const ElasticLineConstraints& constraints) {
+HermiteElasticLine elastic_line_hermite(const std::vector<double>& x, const Eigen::VectorXd& a,
+                                        const std::vector<double>& lambda_in,
+                                        const ElasticLineConstraints& constraints) {
     const char* who = "cagd::smoothing::elastic_line_hermite";
     require_data(x, a, who);
     const std::vector<double> lambda = per_point_lambda(lambda_in, x.size(), who);
@@ -198,11 +220,14 @@ HermiteElasticLine elastic_line_hermite(const std::vector<double>& x, const Eige
     for (int i = 0; i < nodes; ++i)
         if (lambda[static_cast<std::size_t>(i)] == 0.0) fix(2 * i, a(i), point_label(i) + " (lambda = 0)");
     for (const auto& [j, c] : constraints.fixed_values) {
-        if (j < 0 || j >= nodes) fail_input(who, "fixed value index " + std::to_string(j) + " outside 0.." + std::to_string(nodes - 1));
-        if (!std::isfinite(c)) fail_input(who, "fixed value at point " + std::to_string(j) + " is " + full_precision(c));
+        if (j < 0 || j >= nodes)
+            fail_input(who, "fixed value index " + std::to_string(j) + " outside 0.." + std::to_string(nodes - 1));
+        if (!std::isfinite(c))
+            fail_input(who, "fixed value at point " + std::to_string(j) + " is " + full_precision(c));
         fix(2 * j, c, point_label(j));
     }
-    for (const auto& [slope, dof, name] : {std::tuple{constraints.start_slope, 1, "start slope"}, std::tuple{constraints.end_slope, dofs - 1, "end slope"}})
+    for (const auto& [slope, dof, name] : {std::tuple{constraints.start_slope, 1, "start slope"},
+                                           std::tuple{constraints.end_slope, dofs - 1, "end slope"}})
         if (slope) {
             if (!std::isfinite(*slope)) fail_input(who, std::string(name) + " is " + full_precision(*slope));
             fix(dof, *slope, name);
@@ -226,7 +251,9 @@ HermiteElasticLine elastic_line_hermite(const std::vector<double>& x, const Eige
             }
         };
         for (int r = 0; r < 4; ++r)
-            for (int c = 0; c < 4; ++c) t.emplace_back(dof[r], dof[c], l * rule.integrate([&](double u) { return second(r, u) * second(c, u); }, 0.0, 1.0));
+            for (int c = 0; c < 4; ++c)
+                t.emplace_back(dof[r], dof[c],
+                               l * rule.integrate([&](double u) { return second(r, u) * second(c, u); }, 0.0, 1.0));
     }
     for (int i = 0; i < nodes; ++i) {
         const double lam = lambda[static_cast<std::size_t>(i)];
@@ -243,7 +270,8 @@ HermiteElasticLine elastic_line_hermite(const std::vector<double>& x, const Eige
     Sparse kkt(size, size);
     kkt.setFromTriplets(t.begin(), t.end());
     numeric::SparseLu lu;
-    if (!lu.compute(kkt)) fail_input(who, "the constrained system is singular (constraints inconsistent with the data)");
+    if (!lu.compute(kkt))
+        fail_input(who, "the constrained system is singular (constraints inconsistent with the data)");
     const Eigen::VectorXd z = lu.solve(rhs);
     Eigen::MatrixXd y(nodes, 1), slopes(nodes, 1);
     for (int i = 0; i < nodes; ++i) {
@@ -255,17 +283,20 @@ HermiteElasticLine elastic_line_hermite(const std::vector<double>& x, const Eige
     return out;
 }
 
-double elastic_line_energy(const spline::ExplicitSpline& curve, const Eigen::VectorXd& a, const std::vector<double>& lambda_in, int column) {
+double elastic_line_energy(const spline::ExplicitSpline& curve, const Eigen::VectorXd& a,
+                           const std::vector<double>& lambda_in, int column) {
     const char* who = "cagd::smoothing::elastic_line_energy";
     const std::vector<double> lambda = per_point_lambda(lambda_in, curve.x.size(), who);
     if (a.size() != curve.values.rows() || column < 0 || column >= curve.values.cols())
         fail_input(who, "needs one datum per abscissa and a column of the curve, got column " + std::to_string(column));
     double springs = 0.0, bending = 0.0;
     for (Eigen::Index i = 0; i < a.size(); ++i)
-        if (lambda[static_cast<std::size_t>(i)] > 0.0) springs += std::pow(curve.values(i, column) - a(i), 2) / lambda[static_cast<std::size_t>(i)];
+        if (lambda[static_cast<std::size_t>(i)] > 0.0)
+            springs += std::pow(curve.values(i, column) - a(i), 2) / lambda[static_cast<std::size_t>(i)];
     for (std::size_t s = 0; s + 1 < curve.x.size(); ++s) {
         const int seg = static_cast<int>(s);
-        const double m0 = curve.evaluate_in(seg, 0.0, 2)(column), m1 = curve.evaluate_in(seg, 1.0, 2)(column);  // y'' is linear
+        const double m0 = curve.evaluate_in(seg, 0.0, 2)(column),
+                     m1 = curve.evaluate_in(seg, 1.0, 2)(column);  // y'' is linear
         bending += (m0 * m0 + m0 * m1 + m1 * m1) * (curve.x[s + 1] - curve.x[s]) / 3.0;
     }
     return 0.5 * springs + 0.5 * bending;

@@ -62,13 +62,14 @@ ElasticLine elastic_line(const std::vector<double>& x, const Eigen::MatrixXd& a,
 /// observed ratio of successive corrections (an estimate of ρ). Outcome no_convergence when the
 /// correction has not fallen below `tolerance` · max |M| after `max_iterations`, or grows.
 struct ElasticLineIteration {
-    ElasticLine line;  ///< the last iterate
-    Outcome outcome;   ///< ok, or no_convergence (see above)
+    ElasticLine line;          ///< the last iterate
+    Outcome outcome;           ///< ok, or no_convergence (see above)
     int iterations = 0;        ///< iterations done
     double contraction = 0.0;  ///< observed ratio of successive corrections
 };
 /// The iteration above.
-ElasticLineIteration elastic_line_iterative(const std::vector<double>& x, const Eigen::MatrixXd& a, const std::vector<double>& lambda, double tolerance = 1e-14,
+ElasticLineIteration elastic_line_iterative(const std::vector<double>& x, const Eigen::MatrixXd& a,
+                                            const std::vector<double>& lambda, double tolerance = 1e-14,
                                             int max_iterations = 10000);
 
 /// Smoothing a parametric curve (2-D or 3-D points): x(t), y(t) (, z(t)) each smoothed as above
@@ -93,15 +94,19 @@ struct ElasticLineConstraints {
 /// The minimiser of eq (44) over the Hermite curve (45), with its Lagrange multipliers.
 struct HermiteElasticLine {
     spline::ExplicitSpline curve;  ///< values y_i and slopes y'_i
-    Eigen::VectorXd multipliers;   ///< one Lagrange multiplier per constraint: fixed values (λ_i = 0 points first, then fixed_values), then slopes
-    double energy = 0.0;           ///< V / EI at the minimiser
+    Eigen::VectorXd multipliers;  ///< one Lagrange multiplier per constraint: fixed values (λ_i = 0 points first, then
+                                  ///< fixed_values), then slopes
+    double energy = 0.0;          ///< V / EI at the minimiser
 };
 /// The formulation above (one value column).
-HermiteElasticLine elastic_line_hermite(const std::vector<double>& x, const Eigen::VectorXd& a, const std::vector<double>& lambda, const ElasticLineConstraints& constraints = {});
+HermiteElasticLine elastic_line_hermite(const std::vector<double>& x, const Eigen::VectorXd& a,
+                                        const std::vector<double>& lambda,
+                                        const ElasticLineConstraints& constraints = {});
 
 /// V / EI = ½ Σ (y_i − a_i)² / λ_i + ½ ∫ y''² dx of a curve through the abscissae (terms with λ_i = 0
 /// are left out: those points are constrained), column `column` of the curve's values.
-double elastic_line_energy(const spline::ExplicitSpline& curve, const Eigen::VectorXd& a, const std::vector<double>& lambda, int column = 0);
+double elastic_line_energy(const spline::ExplicitSpline& curve, const Eigen::VectorXd& a,
+                           const std::vector<double>& lambda, int column = 0);
 
 /// Inflections of the smoothed y(x): y'' is linear between abscissae, so they are the sign changes
 /// of the node values M_i (values below 1e-12 · max |M| count as zero and are skipped).

@@ -12,7 +12,8 @@ namespace cagd::smoothing {
 
 using namespace detail;
 
-ElasticNet elastic_net(const std::vector<double>& x, const std::vector<double>& y, const Eigen::MatrixXd& a, const Eigen::MatrixXd& lambda_in) {
+ElasticNet elastic_net(const std::vector<double>& x, const std::vector<double>& y, const Eigen::MatrixXd& a,
+                       const Eigen::MatrixXd& lambda_in) {
     const char* who = "cagd::smoothing::elastic_net";
     const Eigen::MatrixXd lambda = node_lambda(x, y, a, lambda_in, true, who);
     const long nx = static_cast<long>(x.size()), ny = static_cast<long>(y.size());
@@ -59,7 +60,8 @@ ElasticNet elastic_net(const std::vector<double>& x, const std::vector<double>& 
     return out;
 }
 
-surface::CartesianSurface net_spline_smoothing(const std::vector<double>& x, const std::vector<double>& y, const Eigen::MatrixXd& a, const Eigen::MatrixXd& lambda) {
+surface::CartesianSurface net_spline_smoothing(const std::vector<double>& x, const std::vector<double>& y,
+                                               const Eigen::MatrixXd& a, const Eigen::MatrixXd& lambda) {
     return surface::cartesian_spline_surface(x, y, elastic_net(x, y, a, lambda).values);
 }
 

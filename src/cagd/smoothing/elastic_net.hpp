@@ -28,16 +28,18 @@ namespace cagd::smoothing {
 
 /// The elastic net's displacements and second derivatives at the nodes.
 struct ElasticNet {
-    Eigen::MatrixXd values;       ///< ζ at the nodes (nx × ny)
-    Eigen::MatrixXd xx;           ///< ζ^(2,0) at the nodes
-    Eigen::MatrixXd yy;           ///< ζ^(0,2) at the nodes
-    long system_size = 0;         ///< unknowns
-    long factor_nonzeros = 0;     ///< nonzeros of the LDLᵀ factor
+    Eigen::MatrixXd values;    ///< ζ at the nodes (nx × ny)
+    Eigen::MatrixXd xx;        ///< ζ^(2,0) at the nodes
+    Eigen::MatrixXd yy;        ///< ζ^(0,2) at the nodes
+    long system_size = 0;      ///< unknowns
+    long factor_nonzeros = 0;  ///< nonzeros of the LDLᵀ factor
 };
 /// The net of eq (53)–(54); lambda: 1 × 1 (all nodes) or nx × ny.
-ElasticNet elastic_net(const std::vector<double>& x, const std::vector<double>& y, const Eigen::MatrixXd& a, const Eigen::MatrixXd& lambda);
+ElasticNet elastic_net(const std::vector<double>& x, const std::vector<double>& y, const Eigen::MatrixXd& a,
+                       const Eigen::MatrixXd& lambda);
 
 /// Approximation 2: the net, then splines along the grid lines for the node derivatives.
-surface::CartesianSurface net_spline_smoothing(const std::vector<double>& x, const std::vector<double>& y, const Eigen::MatrixXd& a, const Eigen::MatrixXd& lambda);
+surface::CartesianSurface net_spline_smoothing(const std::vector<double>& x, const std::vector<double>& y,
+                                               const Eigen::MatrixXd& a, const Eigen::MatrixXd& lambda);
 
 }  // namespace cagd::smoothing

@@ -20,8 +20,10 @@ namespace {
 // Cubic Hermite on [0, 1] scaled to length h: value, first and second x-derivatives.
 template <typename T>
 void hermite(const T* a, const T* b, int c, double h, double u, T& v, T& d1, T& d2) {
-    const double p0 = 1 - 3 * u * u + 2 * u * u * u, q0 = 3 * u * u - 2 * u * u * u, p1 = u - 2 * u * u + u * u * u, q1 = u * u * u - u * u;
-    const double p0u = -6 * u + 6 * u * u, q0u = 6 * u - 6 * u * u, p1u = 1 - 4 * u + 3 * u * u, q1u = 3 * u * u - 2 * u;
+    const double p0 = 1 - 3 * u * u + 2 * u * u * u, q0 = 3 * u * u - 2 * u * u * u, p1 = u - 2 * u * u + u * u * u,
+                 q1 = u * u * u - u * u;
+    const double p0u = -6 * u + 6 * u * u, q0u = 6 * u - 6 * u * u, p1u = 1 - 4 * u + 3 * u * u,
+                 q1u = 3 * u * u - 2 * u;
     const double p0uu = -6 + 12 * u, q0uu = 6 - 12 * u, p1uu = -4 + 6 * u, q1uu = 6 * u - 2;
     // block layout: (y, y', z, z'); c = 0 for y, 2 for z.
     v = a[c] * p0 + b[c] * q0 + h * (a[c + 1] * p1 + b[c + 1] * q1);
@@ -60,8 +62,10 @@ struct SpringResidual {
 
 Eigen::MatrixXd ElasticSpaceCurve::whole_jet(double at, int order, JetSide side) const {
     // The piece that starts at or before x (right), or the one that ends at or after it (left).
-    const auto it = side == JetSide::left ? std::lower_bound(knots.begin(), knots.end(), at) : std::upper_bound(knots.begin(), knots.end(), at);
-    const std::size_t i = std::min<std::size_t>(static_cast<std::size_t>(std::max<long>(it - knots.begin() - 1, 0)), knots.size() - 2);
+    const auto it = side == JetSide::left ? std::lower_bound(knots.begin(), knots.end(), at)
+                                          : std::upper_bound(knots.begin(), knots.end(), at);
+    const std::size_t i =
+        std::min<std::size_t>(static_cast<std::size_t>(std::max<long>(it - knots.begin() - 1, 0)), knots.size() - 2);
     const Eigen::Index k = static_cast<Eigen::Index>(i);
     const double h = knots[i + 1] - knots[i], u = (at - knots[i]) / h;
     const double a[4] = {values(k, 0), slopes(k, 0), values(k, 1), slopes(k, 1)};
@@ -84,17 +88,22 @@ Eigen::MatrixXd ElasticSpaceCurve::whole_jet(double at, int order, JetSide side)
     return out;
 }
 
-ElasticSpaceCurve elastic_space_curve(const std::vector<double>& x, const Eigen::MatrixXd& a, const std::vector<double>& lambda_in, int subdivisions) {
+ElasticSpaceCurve elastic_space_curve(const std::vector<double>& x, const Eigen::MatrixXd& a,
+                                      const std::vector<double>& lambda_in, int subdivisions) {
     const char* who = "cagd::smoothing::elastic_space_curve";
     if (a.cols() != 2) fail_input(who, "needs two value columns (y, z), got " + std::to_string(a.cols()));
     if (subdivisions < 1) fail_input(who, "needs subdivisions >= 1, got " + std::to_string(subdivisions));
     if (x.size() >= 2 && static_cast<long long>(x.size() - 1) * subdivisions > kMaxSpaceCurvePieces)
-        fail_input(who, "subdivisions = " + std::to_string(subdivisions) + " gives " + std::to_string(static_cast<long long>(x.size() - 1) * subdivisions) +
-                            " pieces for " + std::to_string(x.size()) + " points; at most " + std::to_string(kMaxSpaceCurvePieces) + " pieces");
+        fail_input(who, "subdivisions = " + std::to_string(subdivisions) + " gives " +
+                            std::to_string(static_cast<long long>(x.size() - 1) * subdivisions) + " pieces for " +
+                            std::to_string(x.size()) + " points; at most " + std::to_string(kMaxSpaceCurvePieces) +
+                            " pieces");
     const ElasticLine start = elastic_line(x, a, lambda_in);  // validates x, a, λ
     const std::vector<double> lambda = per_point_lambda(lambda_in, x.size(), who);
     for (std::size_t i = 0; i < lambda.size(); ++i)
-        if (lambda[i] == 0.0) fail_input(who, "lambda[" + std::to_string(i) + "] = 0; the space elastic line needs finite springs (lambda > 0)");
+        if (lambda[i] == 0.0)
+            fail_input(
+                who, "lambda[" + std::to_string(i) + "] = 0; the space elastic line needs finite springs (lambda > 0)");
     require_built_with(OptionalDependency::ceres, who);
 #if CAGD_WITH_CERES
 
@@ -115,14 +124,16 @@ ElasticSpaceCurve elastic_space_curve(const std::vector<double>& x, const Eigen:
         const double h = out.knots[k + 1] - out.knots[k];
         for (std::size_t q = 0; q < rule.nodes().size(); ++q) {
             const double u = 0.5 * (rule.nodes()[q] + 1.0), w = 0.5 * rule.weights()[q];
-            problem.AddResidualBlock(new ceres::AutoDiffCostFunction<BendingResidual, 3, 4, 4>(new BendingResidual{h, u, std::sqrt(w * h)}), nullptr, block[k].data(),
-                                     block[k + 1].data());
+            problem.AddResidualBlock(
+                new ceres::AutoDiffCostFunction<BendingResidual, 3, 4, 4>(new BendingResidual{h, u, std::sqrt(w * h)}),
+                nullptr, block[k].data(), block[k + 1].data());
         }
     }
     for (std::size_t i = 0; i < x.size(); ++i)
-        problem.AddResidualBlock(new ceres::AutoDiffCostFunction<SpringResidual, 2, 4>(
-                                     new SpringResidual{a(static_cast<Eigen::Index>(i), 0), a(static_cast<Eigen::Index>(i), 1), 1.0 / std::sqrt(lambda[i])}),
-                                 nullptr, block[i * static_cast<std::size_t>(subdivisions)].data());
+        problem.AddResidualBlock(
+            new ceres::AutoDiffCostFunction<SpringResidual, 2, 4>(new SpringResidual{
+                a(static_cast<Eigen::Index>(i), 0), a(static_cast<Eigen::Index>(i), 1), 1.0 / std::sqrt(lambda[i])}),
+            nullptr, block[i * static_cast<std::size_t>(subdivisions)].data());
     ceres::Solver::Options options;
     options.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
     // The energy is quadratic but for the spring directions: Ceres converges in tens of iterations;
@@ -137,7 +148,8 @@ ElasticSpaceCurve elastic_space_curve(const std::vector<double>& x, const Eigen:
     options.logging_type = ceres::SILENT;
     ceres::Solver::Summary summary;
     ceres::Solve(options, &problem, &summary);
-    if (summary.termination_type != ceres::CONVERGENCE) out.outcome = Outcome{Status::no_convergence, "Ceres did not converge: " + summary.BriefReport()};
+    if (summary.termination_type != ceres::CONVERGENCE)
+        out.outcome = Outcome{Status::no_convergence, "Ceres did not converge: " + summary.BriefReport()};
     out.energy = summary.final_cost;
     out.values.resize(knots, 2);
     out.slopes.resize(knots, 2);

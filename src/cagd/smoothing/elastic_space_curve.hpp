@@ -31,11 +31,11 @@ inline constexpr long long kMaxSpaceCurvePieces = 20000;
 
 /// The minimiser as a Curve r(x) = (x, y(x), z(x)) (so analysis/ measures it), parameter x.
 struct ElasticSpaceCurve final : Curve {
-    std::vector<double> knots;       ///< x of every Hermite knot (data abscissae and subdivisions)
-    Eigen::MatrixXd values;          ///< (y, z) at the knots
-    Eigen::MatrixXd slopes;          ///< (y', z') at the knots
-    double energy = 0.0;             ///< ½ Σ springs + ½ ∫ κ² ds at the minimiser (Ceres' final cost)
-    Outcome outcome;                 ///< ok, or Ceres' reason for stopping short
+    std::vector<double> knots;  ///< x of every Hermite knot (data abscissae and subdivisions)
+    Eigen::MatrixXd values;     ///< (y, z) at the knots
+    Eigen::MatrixXd slopes;     ///< (y', z') at the knots
+    double energy = 0.0;        ///< ½ Σ springs + ½ ∫ κ² ds at the minimiser (Ceres' final cost)
+    Outcome outcome;            ///< ok, or Ceres' reason for stopping short
     /// (y, z)(x).
     Eigen::RowVector2d evaluate(double x) const { return jet(x, 0).block<1, 2>(0, 1); }
     int dimension() const override { return 3; }
@@ -50,7 +50,9 @@ private:
     Eigen::MatrixXd whole_jet(double x, int order, JetSide side) const;  ///< rows 0..order of the piece on `side`
 };
 
-/// The minimiser described above: `subdivisions` Hermite pieces per data interval, Ceres from the elastic lines of y and z.
-ElasticSpaceCurve elastic_space_curve(const std::vector<double>& x, const Eigen::MatrixXd& a, const std::vector<double>& lambda, int subdivisions = 8);
+/// The minimiser described above: `subdivisions` Hermite pieces per data interval, Ceres from the elastic lines of y
+/// and z.
+ElasticSpaceCurve elastic_space_curve(const std::vector<double>& x, const Eigen::MatrixXd& a,
+                                      const std::vector<double>& lambda, int subdivisions = 8);
 
 }  // namespace cagd::smoothing

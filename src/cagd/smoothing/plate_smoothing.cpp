@@ -16,7 +16,9 @@ Eigen::Matrix3d plate_energy_form(PlateEnergy energy, double nu) {
     Eigen::Matrix3d c = Eigen::Matrix3d::Zero();
     switch (energy) {
         case PlateEnergy::poisson:
-            if (!(nu >= 0.0 && nu < 0.5)) fail_input("cagd::smoothing::plate_energy_form", "Poisson's ratio must be in [0, 0.5), got " + full_precision(nu));
+            if (!(nu >= 0.0 && nu < 0.5))
+                fail_input("cagd::smoothing::plate_energy_form",
+                           "Poisson's ratio must be in [0, 0.5), got " + full_precision(nu));
             c << 1, nu, 0, nu, 1, 0, 0, 0, 2 * (1 - nu);
             break;
         case PlateEnergy::no_poisson: c << 1, 0, 0, 0, 1, 0, 0, 0, 2; break;
@@ -37,15 +39,16 @@ double plate_energy(const surface::CartesianSurface& s, PlateEnergy energy, doub
                 for (std::size_t q = 0; q < rule.nodes().size(); ++q) {
                     const double u = 0.5 * (rule.nodes()[p] + 1), v = 0.5 * (rule.nodes()[q] + 1);
                     const int ix = static_cast<int>(cx), iy = static_cast<int>(cy);
-                    const Eigen::Vector3d h(s.derivative_in(ix, iy, u, v, 2, 0), s.derivative_in(ix, iy, u, v, 0, 2), s.derivative_in(ix, iy, u, v, 1, 1));
+                    const Eigen::Vector3d h(s.derivative_in(ix, iy, u, v, 2, 0), s.derivative_in(ix, iy, u, v, 0, 2),
+                                            s.derivative_in(ix, iy, u, v, 1, 1));
                     total += 0.25 * rule.weights()[p] * rule.weights()[q] * hx * hy * h.dot(c * h);
                 }
         }
     return total;
 }
 
-PlateSmoothing plate_smoothing(const std::vector<double>& x, const std::vector<double>& y, const Eigen::MatrixXd& a, const Eigen::MatrixXd& lambda_in, PlateEnergy energy,
-                               double nu) {
+PlateSmoothing plate_smoothing(const std::vector<double>& x, const std::vector<double>& y, const Eigen::MatrixXd& a,
+                               const Eigen::MatrixXd& lambda_in, PlateEnergy energy, double nu) {
     const char* who = "cagd::smoothing::plate_smoothing";
     const Eigen::MatrixXd lambda = node_lambda(x, y, a, lambda_in, false, who);
     const Eigen::Matrix3d c = plate_energy_form(energy, nu);
@@ -73,7 +76,8 @@ PlateSmoothing plate_smoothing(const std::vector<double>& x, const std::vector<d
                 }
             for (int r = 0; r < 16; ++r)
                 for (int s = 0; s < 16; ++s)
-                    t.emplace_back(dof(cx + (r & 1), cy + ((r >> 1) & 1), (r >> 2) & 1, (r >> 3) & 1), dof(cx + (s & 1), cy + ((s >> 1) & 1), (s >> 2) & 1, (s >> 3) & 1), k(r, s));
+                    t.emplace_back(dof(cx + (r & 1), cy + ((r >> 1) & 1), (r >> 2) & 1, (r >> 3) & 1),
+                                   dof(cx + (s & 1), cy + ((s >> 1) & 1), (s >> 2) & 1, (s >> 3) & 1), k(r, s));
         }
     Eigen::VectorXd rhs = Eigen::VectorXd::Zero(unknowns);
     for (long j = 0; j < ny; ++j)

@@ -31,11 +31,12 @@ double plate_energy(const surface::CartesianSurface& s, PlateEnergy energy, doub
 /// The smoothed surface of method (i) and the size of its system.
 struct PlateSmoothing {
     surface::CartesianSurface surface;  ///< m = 1 Cartesian patch (eq 30)
-    int max_equation_terms = 0;         ///< most nonzero coefficients in one equation (36 for m = 1 on an uneven grid; 25 on an equally spaced one, where value–own-slope couplings cancel)
-    long system_size = 0;               ///< unknowns
+    int max_equation_terms = 0;  ///< most nonzero coefficients in one equation (36 for m = 1 on an uneven grid; 25 on
+                                 ///< an equally spaced one, where value–own-slope couplings cancel)
+    long system_size = 0;        ///< unknowns
 };
 /// Method (i): the bicubic surface over the grid minimising U (see above).
-PlateSmoothing plate_smoothing(const std::vector<double>& x, const std::vector<double>& y, const Eigen::MatrixXd& a, const Eigen::MatrixXd& lambda, PlateEnergy energy,
-                               double poisson_ratio = 0.3);
+PlateSmoothing plate_smoothing(const std::vector<double>& x, const std::vector<double>& y, const Eigen::MatrixXd& a,
+                               const Eigen::MatrixXd& lambda, PlateEnergy energy, double poisson_ratio = 0.3);
 
 }  // namespace cagd::smoothing

@@ -58,7 +58,8 @@ Eigen::MatrixXd window_energy_matrix(const Eigen::MatrixXd& psi, PlateEnergy ene
                     for (int step = -2; step < 2; ++step)
                         for (std::size_t g = 0; g < rule.nodes().size(); ++g) {
                             const double s = step + 0.5 * (rule.nodes()[g] + 1);
-                            one[p][q](i, k) += 0.5 * rule.weights()[g] * polynomial(psi.row(i), s, p) * polynomial(psi.row(k), s, q);
+                            one[p][q](i, k) +=
+                                0.5 * rule.weights()[g] * polynomial(psi.row(i), s, p) * polynomial(psi.row(k), s, q);
                         }
         }
     const int order[3][2] = {{2, 0}, {0, 2}, {1, 1}};  // ζxx, ζyy, ζxy
@@ -71,7 +72,9 @@ Eigen::MatrixXd window_energy_matrix(const Eigen::MatrixXd& psi, PlateEnergy ene
                     double v = 0.0;
                     for (int r = 0; r < 3; ++r)
                         for (int s = 0; s < 3; ++s)
-                            if (c(r, s) != 0.0) v += c(r, s) * scale[r] * scale[s] * one[order[r][0]][order[s][0]](i, k) * one[order[r][1]][order[s][1]](j, l);
+                            if (c(r, s) != 0.0)
+                                v += c(r, s) * scale[r] * scale[s] * one[order[r][0]][order[s][0]](i, k) *
+                                     one[order[r][1]][order[s][1]](j, l);
                     e(i + n * j, k + n * l) = hx * hy * v;
                 }
     return e;
@@ -85,7 +88,8 @@ Eigen::MatrixXd window_design(const Eigen::MatrixXd& psi) {
     for (int p = 0; p < 5; ++p)
         for (int q = 0; q < 5; ++q)
             for (int i = 0; i < n; ++i)
-                for (int j = 0; j < n; ++j) phi(p + 5 * q, i + n * j) = polynomial(psi.row(i), p - 2, 0) * polynomial(psi.row(j), q - 2, 0);
+                for (int j = 0; j < n; ++j)
+                    phi(p + 5 * q, i + n * j) = polynomial(psi.row(i), p - 2, 0) * polynomial(psi.row(j), q - 2, 0);
     return phi;
 }
 }  // namespace
@@ -98,7 +102,9 @@ std::vector<int> window_block_sizes(const Eigen::MatrixXd& psi, PlateEnergy ener
     std::vector<int> parent(static_cast<std::size_t>(n));
     std::iota(parent.begin(), parent.end(), 0);
     const auto find = [&](int v) {
-        while (parent[static_cast<std::size_t>(v)] != v) v = parent[static_cast<std::size_t>(v)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(v)])];
+        while (parent[static_cast<std::size_t>(v)] != v)
+            v = parent[static_cast<std::size_t>(v)] =
+                parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(v)])];
         return v;
     };
     for (int r = 0; r < n; ++r)
@@ -113,23 +119,28 @@ std::vector<int> window_block_sizes(const Eigen::MatrixXd& psi, PlateEnergy ener
     return out;
 }
 
-surface::CartesianSurface local_orthogonal_smoothing(const std::vector<double>& x, const std::vector<double>& y, const Eigen::MatrixXd& a, double lambda, PlateEnergy energy,
+surface::CartesianSurface local_orthogonal_smoothing(const std::vector<double>& x, const std::vector<double>& y,
+                                                     const Eigen::MatrixXd& a, double lambda, PlateEnergy energy,
                                                      double nu) {
     const char* who = "cagd::smoothing::local_orthogonal_smoothing";
     node_lambda(x, y, a, Eigen::MatrixXd::Constant(1, 1, lambda), true, who);
     for (const auto* g : {&x, &y}) {
         const char* name = g == &x ? "x" : "y";
-        if (g->size() < 5) fail_input(who, std::string("needs at least 5 ") + name + " grid lines (5 x 5 windows), got " + std::to_string(g->size()));
+        if (g->size() < 5)
+            fail_input(who, std::string("needs at least 5 ") + name + " grid lines (5 x 5 windows), got " +
+                                std::to_string(g->size()));
         const double step = ((*g).back() - (*g).front()) / static_cast<double>(g->size() - 1);
         for (std::size_t i = 1; i < g->size(); ++i)
             if (std::abs((*g)[i] - (*g)[i - 1] - step) > 1e-9 * step)
-                fail_input(who, std::string("needs equally spaced ") + name + " (eq 60's windows), step " + std::to_string(i) + " is " + full_precision((*g)[i] - (*g)[i - 1]) +
-                                    ", mean " + full_precision(step));
+                fail_input(who, std::string("needs equally spaced ") + name + " (eq 60's windows), step " +
+                                    std::to_string(i) + " is " + full_precision((*g)[i] - (*g)[i - 1]) + ", mean " +
+                                    full_precision(step));
     }
     const double hx = x[1] - x[0], hy = y[1] - y[0];
     const Eigen::MatrixXd psi = discrete_orthonormal_polynomials(5, 3);
     const Eigen::MatrixXd phi = window_design(psi);
-    const Eigen::LDLT<Eigen::MatrixXd> solver(phi.transpose() * phi + lambda * window_energy_matrix(psi, energy, hx, hy, nu));
+    const Eigen::LDLT<Eigen::MatrixXd> solver(phi.transpose() * phi +
+                                              lambda * window_energy_matrix(psi, energy, hx, hy, nu));
     const int nx = static_cast<int>(x.size()), ny = static_cast<int>(y.size());
     std::vector<Eigen::MatrixXd> nodes;
     for (int b = 0; b < ny; ++b)
@@ -144,7 +155,8 @@ surface::CartesianSurface local_orthogonal_smoothing(const std::vector<double>& 
                 for (int dj = 0; dj <= 1; ++dj) {
                     double v = 0.0;
                     for (int k = 0; k < 4; ++k)
-                        for (int l = 0; l < 4; ++l) v += c(k + 4 * l) * polynomial(psi.row(k), i - ca, di) * polynomial(psi.row(l), b - cb, dj);
+                        for (int l = 0; l < 4; ++l)
+                            v += c(k + 4 * l) * polynomial(psi.row(k), i - ca, di) * polynomial(psi.row(l), b - cb, dj);
                     node(di, dj) = v / (std::pow(hx, di) * std::pow(hy, dj));
                 }
             nodes.push_back(node);

@@ -30,11 +30,13 @@ Eigen::MatrixXd discrete_gram_matrix(const Eigen::MatrixXd& psi, int points);
 /// The 16 × 16 matrix E of ∬_{[−2,2]²} e over c (grid steps hx, hy), and the sizes of the blocks
 /// into which I + λE separates (connected components of its nonzero pattern, ascending), for the
 /// basis whose rows are given (orthonormal or not; the spring term is then the basis's Gram matrix).
-Eigen::MatrixXd window_energy_matrix(const Eigen::MatrixXd& psi, PlateEnergy energy, double hx, double hy, double poisson_ratio = 0.3);
+Eigen::MatrixXd window_energy_matrix(const Eigen::MatrixXd& psi, PlateEnergy energy, double hx, double hy,
+                                     double poisson_ratio = 0.3);
 /// The block sizes of I + λE described above.
 std::vector<int> window_block_sizes(const Eigen::MatrixXd& psi, PlateEnergy energy, double poisson_ratio = 0.3);
 /// Approximation 1: the 5 × 5 window fit at every node, the node derivatives into eq (30).
-surface::CartesianSurface local_orthogonal_smoothing(const std::vector<double>& x, const std::vector<double>& y, const Eigen::MatrixXd& a, double lambda, PlateEnergy energy,
+surface::CartesianSurface local_orthogonal_smoothing(const std::vector<double>& x, const std::vector<double>& y,
+                                                     const Eigen::MatrixXd& a, double lambda, PlateEnergy energy,
                                                      double poisson_ratio = 0.3);
 
 }  // namespace cagd::smoothing

@@ -10,10 +10,13 @@
 
 namespace cagd {
 
-BezierCurve::BezierCurve(Eigen::MatrixXd control_points, double a, double b, BezierEvaluation method) : control_(std::move(control_points)), a_(a), b_(b), method_(method) {
+BezierCurve::BezierCurve(Eigen::MatrixXd control_points, double a, double b, BezierEvaluation method)
+    : control_(std::move(control_points)), a_(a), b_(b), method_(method) {
     const std::string who = "cagd::BezierCurve";
     if (control_.rows() < 1) fail_input(who, "needs at least one control point");
-    if (!std::isfinite(a) || !std::isfinite(b) || !(a < b)) fail_input(who, "parameter interval [" + full_precision(a) + ", " + full_precision(b) + "] must be finite with a < b");
+    if (!std::isfinite(a) || !std::isfinite(b) || !(a < b))
+        fail_input(
+            who, "parameter interval [" + full_precision(a) + ", " + full_precision(b) + "] must be finite with a < b");
     if (method_ == BezierEvaluation::power_basis) monomial_ = monomial_from_bernstein(control_);
 }
 
@@ -50,7 +53,9 @@ Eigen::MatrixXd bernstein_from_monomial(const Eigen::MatrixXd& monomial) {
 }
 
 Eigen::MatrixXd BezierCurve::whole_jet(double t, int order) const {
-    if (!(t >= a_ && t <= b_)) fail_input("cagd::BezierCurve::jet", "t = " + full_precision(t) + " outside [" + full_precision(a_) + ", " + full_precision(b_) + "]");
+    if (!(t >= a_ && t <= b_))
+        fail_input("cagd::BezierCurve::jet",
+                   "t = " + full_precision(t) + " outside [" + full_precision(a_) + ", " + full_precision(b_) + "]");
     if (order < 0) fail_input("cagd::BezierCurve::jet", "order must be >= 0");
     const double s = std::min(1.0, std::max(0.0, (t - a_) / (b_ - a_)));
     const double scale = 1.0 / (b_ - a_);
@@ -95,8 +100,10 @@ Eigen::MatrixXd BezierCurve::whole_jet(double t, int order) const {
 Eigen::MatrixXd bezier_from_end_jets(int p, double h, const Eigen::MatrixXd& J0, const Eigen::MatrixXd& J1) {
     const int from_start = p / 2, from_end = p - p / 2 - 1;
     if (p < 0 || !(h > 0.0) || J0.rows() <= from_start || J1.rows() <= std::max(from_end, 0) || J0.cols() != J1.cols())
-        fail_input("cagd::bezier_from_end_jets", "needs degree >= 0, h > 0 and jets of orders " + std::to_string(from_start) + " and " + std::to_string(from_end) +
-                                                     " at the ends; got degree " + std::to_string(p) + ", h = " + full_precision(h));
+        fail_input("cagd::bezier_from_end_jets", "needs degree >= 0, h > 0 and jets of orders " +
+                                                     std::to_string(from_start) + " and " + std::to_string(from_end) +
+                                                     " at the ends; got degree " + std::to_string(p) +
+                                                     ", h = " + full_precision(h));
     Eigen::MatrixXd b = Eigen::MatrixXd::Zero(p + 1, J0.cols());
     for (int k = 0; k <= p; ++k) {
         const bool start = k <= from_start;
@@ -104,8 +111,9 @@ Eigen::MatrixXd bezier_from_end_jets(int p, double h, const Eigen::MatrixXd& J0,
         const double step = start ? h : -h;
         double hj = 1.0;
         for (int j = 0; j <= kk; ++j) {
-            const double c = boost::math::binomial_coefficient<double>(static_cast<unsigned>(kk), static_cast<unsigned>(j)) /
-                             boost::math::falling_factorial(static_cast<double>(p), static_cast<unsigned>(j));
+            const double c =
+                boost::math::binomial_coefficient<double>(static_cast<unsigned>(kk), static_cast<unsigned>(j)) /
+                boost::math::falling_factorial(static_cast<double>(p), static_cast<unsigned>(j));
             b.row(k) += c * hj * (start ? J0.row(j) : J1.row(j));
             hj *= step;
         }

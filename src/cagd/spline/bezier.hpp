@@ -19,14 +19,16 @@
 
 namespace cagd {
 
-/// How a Bézier curve is evaluated: de Casteljau (stable, O(n²)), stable Bernstein values (O(n) per point, any degree) or the power basis (fast, unstable at high degree).
+/// How a Bézier curve is evaluated: de Casteljau (stable, O(n²)), stable Bernstein values (O(n) per point, any degree)
+/// or the power basis (fast, unstable at high degree).
 enum class BezierEvaluation { de_casteljau, bernstein, power_basis };
 
 /// A Bézier curve r(t) = Σ B_i^n((t − a)/(b − a)) P_i on [a, b].
 class BezierCurve : public Curve {
 public:
     /// Control points P_0..P_n (one per row), parameter interval [a, b] (a < b) and evaluation method.
-    explicit BezierCurve(Eigen::MatrixXd control_points, double a = 0.0, double b = 1.0, BezierEvaluation method = BezierEvaluation::de_casteljau);
+    explicit BezierCurve(Eigen::MatrixXd control_points, double a = 0.0, double b = 1.0,
+                         BezierEvaluation method = BezierEvaluation::de_casteljau);
     /// n.
     int degree() const { return static_cast<int>(control_.rows()) - 1; }
     /// P_0..P_n, one per row.
@@ -36,7 +38,9 @@ public:
     int dimension() const override { return static_cast<int>(control_.cols()); }
     double t_min() const override { return a_; }
     double t_max() const override { return b_; }
-    void evaluate_jet(double t, int first, JetSide, Eigen::Ref<Eigen::MatrixXd> out) const override { take_rows(whole_jet(t, first + static_cast<int>(out.rows()) - 1), first, out); }
+    void evaluate_jet(double t, int first, JetSide, Eigen::Ref<Eigen::MatrixXd> out) const override {
+        take_rows(whole_jet(t, first + static_cast<int>(out.rows()) - 1), first, out);
+    }
     std::vector<double> breakpoints() const override { return {a_, b_}; }
     int polynomial_degree() const override { return degree(); }
 

@@ -13,21 +13,29 @@ const char* const kBSplineWho = "cagd::BSplineCurve";
 constexpr int kIndexedSpans = 64;  // fewer spans: the binary search alone
 }  // namespace
 
-BSplineCurve::BSplineCurve(int degree, std::vector<double> knots, Eigen::MatrixXd control_points) : degree_(degree), knots_(std::move(knots)), control_(std::move(control_points)) {
+BSplineCurve::BSplineCurve(int degree, std::vector<double> knots, Eigen::MatrixXd control_points)
+    : degree_(degree), knots_(std::move(knots)), control_(std::move(control_points)) {
     if (degree_ < 0) fail_input(kBSplineWho, "degree must be >= 0, got " + std::to_string(degree_));
     const auto n = static_cast<std::size_t>(control_.rows());
-    if (control_.rows() < degree_ + 1) fail_input(kBSplineWho, "needs at least degree+1 = " + std::to_string(degree_ + 1) + " control points, got " + std::to_string(n));
+    if (control_.rows() < degree_ + 1)
+        fail_input(kBSplineWho, "needs at least degree+1 = " + std::to_string(degree_ + 1) + " control points, got " +
+                                    std::to_string(n));
     if (knots_.size() != n + static_cast<std::size_t>(degree_) + 1)
-        fail_input(kBSplineWho, "knot count must be control points + degree + 1 = " + std::to_string(n + degree_ + 1) + ", got " + std::to_string(knots_.size()));
+        fail_input(kBSplineWho, "knot count must be control points + degree + 1 = " + std::to_string(n + degree_ + 1) +
+                                    ", got " + std::to_string(knots_.size()));
     for (std::size_t i = 0; i < knots_.size(); ++i) {
-        if (!std::isfinite(knots_[i])) fail_input(kBSplineWho, "knot " + std::to_string(i) + " is " + full_precision(knots_[i]));
+        if (!std::isfinite(knots_[i]))
+            fail_input(kBSplineWho, "knot " + std::to_string(i) + " is " + full_precision(knots_[i]));
         if (i > 0 && knots_[i] < knots_[i - 1])
-            fail_input(kBSplineWho, "knots must be non-decreasing; knot " + std::to_string(i) + " = " + full_precision(knots_[i]) + " < " + full_precision(knots_[i - 1]));
+            fail_input(kBSplineWho, "knots must be non-decreasing; knot " + std::to_string(i) + " = " +
+                                        full_precision(knots_[i]) + " < " + full_precision(knots_[i - 1]));
         const auto pp1 = static_cast<std::size_t>(degree_) + 1;
         if (i >= pp1 && knots_[i] == knots_[i - pp1])
-            fail_input(kBSplineWho, "knot " + full_precision(knots_[i]) + " has multiplicity > degree+1 = " + std::to_string(degree_ + 1));
+            fail_input(kBSplineWho, "knot " + full_precision(knots_[i]) +
+                                        " has multiplicity > degree+1 = " + std::to_string(degree_ + 1));
     }
-    if (!(t_min() < t_max())) fail_input(kBSplineWho, "empty domain [" + full_precision(t_min()) + ", " + full_precision(t_max()) + "]");
+    if (!(t_min() < t_max()))
+        fail_input(kBSplineWho, "empty domain [" + full_precision(t_min()) + ", " + full_precision(t_max()) + "]");
     if (!control_.allFinite()) fail_input(kBSplineWho, "control points must be finite");
 }
 
@@ -49,17 +57,20 @@ int BSplineCurve::find_span(double t) const {
     const int hint = last_span_.span.load(std::memory_order_relaxed);
     if (hint >= degree_ && knots_[static_cast<std::size_t>(hint)] <= t) {  // (hint < n: t < t_max)
         if (t < knots_[static_cast<std::size_t>(hint) + 1]) return hint;
-        if (hint + 1 < n && t < knots_[static_cast<std::size_t>(hint) + 2]) return found(hint + 1);  // the next span (U_{hint+1} ≤ t): a sampling's next step
+        if (hint + 1 < n && t < knots_[static_cast<std::size_t>(hint) + 2])
+            return found(hint + 1);  // the next span (U_{hint+1} ≤ t): a sampling's next step
     }
     auto from = knots_.begin() + degree_;
     if (n - degree_ >= kIndexedSpans && t >= t_min()) {
         const SpanBuckets& b = span_buckets();
-        const auto bucket = static_cast<std::size_t>(std::min(static_cast<double>(b.first.size() - 1), (t - t_min()) * b.per_unit));
+        const auto bucket =
+            static_cast<std::size_t>(std::min(static_cast<double>(b.first.size() - 1), (t - t_min()) * b.per_unit));
         int s = b.first[bucket];
         if (knots_[static_cast<std::size_t>(s)] <= t) {
             for (int step = 0; step < 8; ++step, ++s)
-                if (s + 1 == n || t < knots_[static_cast<std::size_t>(s) + 1]) return found(s);  // (s + 1 = n: t < t_max = U_n)
-            from = knots_.begin() + s;                                                           // U_s ≤ t still: search on from there
+                if (s + 1 == n || t < knots_[static_cast<std::size_t>(s) + 1])
+                    return found(s);    // (s + 1 = n: t < t_max = U_n)
+            from = knots_.begin() + s;  // U_s ≤ t still: search on from there
         }
     }
     const auto it = std::upper_bound(from, knots_.begin() + n, t);
@@ -74,7 +85,9 @@ const BSplineCurve::SpanBuckets& BSplineCurve::span_buckets() const {
         b.first.resize(static_cast<std::size_t>(count));
         int s = degree_;
         for (int k = 0; k < count; ++k) {
-            const double left = t_min() + k / b.per_unit;  // (rounding here costs a longer scan or the binary search, never a wrong span)
+            const double left =
+                t_min() +
+                k / b.per_unit;  // (rounding here costs a longer scan or the binary search, never a wrong span)
             while (s + 1 < n && knots_[static_cast<std::size_t>(s) + 1] <= left) ++s;
             b.first[static_cast<std::size_t>(k)] = s;
         }
@@ -90,7 +103,8 @@ namespace {
 // With Fixed ≥ 0 the degree is that constant (p must equal it): the compiler then unrolls the loops;
 // the operations and their order are the same, so are the values, bit for bit.
 template <int Max, int Fixed = -1, class Ders>
-void basis_function_derivatives_a23(int degree, const std::vector<double>& U, int span, double u, int order, Ders& ders) {
+void basis_function_derivatives_a23(int degree, const std::vector<double>& U, int span, double u, int order,
+                                    Ders& ders) {
     const int p = Fixed >= 0 ? Fixed : degree;
     using Work = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, Max, Max>;
     using WorkVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, Max, 1>;
@@ -156,9 +170,11 @@ Eigen::MatrixXd basis_function_derivatives(int p, const std::vector<double>& U, 
     return ders;
 }
 
-void basis_function_derivatives_into(int p, const std::vector<double>& U, int span, double u, int order, BasisDerivatives& ders) {
+void basis_function_derivatives_into(int p, const std::vector<double>& U, int span, double u, int order,
+                                     BasisDerivatives& ders) {
     if (p < 0 || p + 1 > kStackOrder || order < 0 || order + 1 > kStackOrder)
-        fail_input("cagd::basis_function_derivatives_into", "needs degree 0..7 and order 0..7, got " + std::to_string(p) + " and " + std::to_string(order));
+        fail_input("cagd::basis_function_derivatives_into",
+                   "needs degree 0..7 and order 0..7, got " + std::to_string(p) + " and " + std::to_string(order));
     switch (p) {  // the usual degrees unrolled
         case 2: return basis_function_derivatives_a23<kStackOrder, 2>(p, U, span, u, order, ders);
         case 3: return basis_function_derivatives_a23<kStackOrder, 3>(p, U, span, u, order, ders);
@@ -178,7 +194,8 @@ namespace {
 // jets against that product), without its dispatch per span. The usual degrees and dimensions
 // with both fixed at compile time (unrolled); P, Dim < 0: at run time.
 template <int P, int Dim>
-void basis_times_control_of(const BasisDerivatives& ders, const Eigen::MatrixXd& control, int first, int p_at_run_time, int dim_at_run_time, double* out) {
+void basis_times_control_of(const BasisDerivatives& ders, const Eigen::MatrixXd& control, int first, int p_at_run_time,
+                            int dim_at_run_time, double* out) {
     const int p = P >= 0 ? P : p_at_run_time, dim = Dim >= 0 ? Dim : dim_at_run_time;
     for (int e = 0; e < dim; ++e) {
         const double* x = control.col(e).data() + first;
@@ -192,7 +209,8 @@ void basis_times_control_of(const BasisDerivatives& ders, const Eigen::MatrixXd&
 
 // The unrolled product for degree p in Dim dimensions, when p is one of the unrolled degrees.
 template <int Dim>
-bool basis_times_control_unrolled(const BasisDerivatives& ders, const Eigen::MatrixXd& control, int first, int p, double* out) {
+bool basis_times_control_unrolled(const BasisDerivatives& ders, const Eigen::MatrixXd& control, int first, int p,
+                                  double* out) {
     switch (p) {
         case 2: basis_times_control_of<2, Dim>(ders, control, first, p, Dim, out); return true;
         case 3: basis_times_control_of<3, Dim>(ders, control, first, p, Dim, out); return true;
@@ -211,7 +229,9 @@ void basis_times_control(const BasisDerivatives& ders, const Eigen::MatrixXd& co
 
 }  // namespace
 
-double BSplineCurve::span_middle(int span) const { return 0.5 * (knots_[static_cast<std::size_t>(span)] + knots_[static_cast<std::size_t>(span) + 1]); }
+double BSplineCurve::span_middle(int span) const {
+    return 0.5 * (knots_[static_cast<std::size_t>(span)] + knots_[static_cast<std::size_t>(span) + 1]);
+}
 
 // Spans per block of the Taylor and knot-jet tables: a block is built on first use, its flag one
 // atomic load per lookup.
@@ -224,7 +244,8 @@ const double* BSplineCurve::span_row(SpanTable& table, int span, std::size_t row
         const std::lock_guard<std::mutex> lock(table.building);
         if (!table.allocated.load(std::memory_order_relaxed)) {
             table.values.assign(static_cast<std::size_t>(count) * row_size, 0.0);  // empty spans: never located
-            table.built = std::make_unique<std::atomic<std::uint8_t>[]>(static_cast<std::size_t>((count + kSpansPerTableBlock - 1) / kSpansPerTableBlock));
+            table.built = std::make_unique<std::atomic<std::uint8_t>[]>(
+                static_cast<std::size_t>((count + kSpansPerTableBlock - 1) / kSpansPerTableBlock));
             table.allocated.store(true, std::memory_order_release);
         }
     }
@@ -249,7 +270,8 @@ const double* BSplineCurve::taylor(int span) const {
         BasisDerivatives stack_ders;
         Eigen::MatrixXd heap_ders, d;
         for (int s = first; s < last; ++s) {
-            if (!(knots_[static_cast<std::size_t>(s)] < knots_[static_cast<std::size_t>(s) + 1])) continue;  // empty span: never located
+            if (!(knots_[static_cast<std::size_t>(s)] < knots_[static_cast<std::size_t>(s) + 1]))
+                continue;                                                         // empty span: never located
             double* row = c + static_cast<std::size_t>((s - p) * (p + 1) * dim);  // D, then D(k, ·) / k!
             if (p + 1 <= kStackOrder) {
                 basis_function_derivatives_into(p, knots_, s, span_middle(s), p, stack_ders);
@@ -270,18 +292,22 @@ const double* BSplineCurve::taylor(int span) const {
 }
 
 const double* BSplineCurve::knot_jet(int span, bool at_end) const {
-    if (degree_ + 1 > kStackOrder) fail_input("cagd::BSplineCurve::knot_jet", "the table of knot jets holds degrees up to 7");
+    if (degree_ + 1 > kStackOrder)
+        fail_input("cagd::BSplineCurve::knot_jet", "the table of knot jets holds degrees up to 7");
     const int p = degree_, dim = dimension();
-    const double* both = span_row(knot_jets_, span, static_cast<std::size_t>(2 * (p + 1) * dim), [&](int first, int last, double* c) {
-        BasisDerivatives ders;  // the very product the direct path forms (degree ≤ 7 only: see taylor_jet)
-        for (int s = first; s < last; ++s) {
-            if (!(knots_[static_cast<std::size_t>(s)] < knots_[static_cast<std::size_t>(s) + 1])) continue;  // empty span: never located
-            for (int end = 0; end < 2; ++end) {
-                basis_function_derivatives_into(p, knots_, s, knots_[static_cast<std::size_t>(s + end)], p, ders);
-                basis_times_control(ders, control_, s - p, p, c + static_cast<std::size_t>(((s - p) * 2 + end) * (p + 1) * dim));
+    const double* both =
+        span_row(knot_jets_, span, static_cast<std::size_t>(2 * (p + 1) * dim), [&](int first, int last, double* c) {
+            BasisDerivatives ders;  // the very product the direct path forms (degree ≤ 7 only: see taylor_jet)
+            for (int s = first; s < last; ++s) {
+                if (!(knots_[static_cast<std::size_t>(s)] < knots_[static_cast<std::size_t>(s) + 1]))
+                    continue;  // empty span: never located
+                for (int end = 0; end < 2; ++end) {
+                    basis_function_derivatives_into(p, knots_, s, knots_[static_cast<std::size_t>(s + end)], p, ders);
+                    basis_times_control(ders, control_, s - p, p,
+                                        c + static_cast<std::size_t>(((s - p) * 2 + end) * (p + 1) * dim));
+                }
             }
-        }
-    });
+        });
     return both + (at_end ? static_cast<std::size_t>((p + 1) * dim) : 0);
 }
 
@@ -350,7 +376,8 @@ void BSplineCurve::taylor_jet(int span, double t, int order, Eigen::Ref<Eigen::M
         // support ends are exactly zero, so a control point changes nothing beyond its support,
         // bit for bit (the Taylor form leaves ε there). Rows
         // 0..p come from the table of knot jets; higher orders run A2.3.
-        if (order <= p && p + 1 <= kStackOrder) {  // (above degree 7 Eigen's product may sum in another order: computed here)
+        if (order <= p &&
+            p + 1 <= kStackOrder) {  // (above degree 7 Eigen's product may sum in another order: computed here)
             const double* c = knot_jet(span, !at_start);
             for (int k = 0; k <= order; ++k)
                 for (int e = 0; e < dim; ++e) out(k, e) = c[k * dim + e];
@@ -361,7 +388,8 @@ void BSplineCurve::taylor_jet(int span, double t, int order, Eigen::Ref<Eigen::M
             basis_function_derivatives_into(p, knots_, span, t, order, ders);
             out.noalias() = ders * control_.middleRows(span - p, p + 1);
         } else {
-            out.noalias() = basis_function_derivatives(p, knots_, span, t, order) * control_.middleRows(span - p, p + 1);
+            out.noalias() =
+                basis_function_derivatives(p, knots_, span, t, order) * control_.middleRows(span - p, p + 1);
         }
         return;
     }
@@ -383,7 +411,8 @@ void BSplineCurve::evaluate_jet(double t, int first, JetSide side, Eigen::Ref<Ei
     }
     if (first == 0) return taylor_jet(span, t, order, out);
     if (t != knots_[static_cast<std::size_t>(span)] && t != knots_[static_cast<std::size_t>(span) + 1])
-        return taylor_rows(degree_, dimension(), taylor(span), t - span_middle(span), 1, order, out);  // off the knots: rows 1..order alone
+        return taylor_rows(degree_, dimension(), taylor(span), t - span_middle(span), 1, order,
+                           out);  // off the knots: rows 1..order alone
     Eigen::MatrixXd jet(order + 1, dimension());
     taylor_jet(span, t, order, jet);
     out = jet.bottomRows(order);
@@ -398,7 +427,8 @@ std::vector<double> BSplineCurve::breakpoints() const {
 
 double bspline_basis(int p, const std::vector<double>& k, double t, int derivative) {
     if (p < 0 || k.size() != static_cast<std::size_t>(p) + 2)
-        fail_input("cagd::bspline_basis", "needs degree+2 = " + std::to_string(p + 2) + " local knots, got " + std::to_string(k.size()));
+        fail_input("cagd::bspline_basis",
+                   "needs degree+2 = " + std::to_string(p + 2) + " local knots, got " + std::to_string(k.size()));
     if (derivative < 0) fail_input("cagd::bspline_basis", "derivative must be >= 0");
     if (derivative > p) return 0.0;
     if (t < k.front() || t > k.back()) return 0.0;
@@ -425,7 +455,8 @@ double bspline_basis(int p, const std::vector<double>& k, double t, int derivati
 
 BSplineCurve insert_knot(const BSplineCurve& c, double t) {
     // Boehm's algorithm.
-    if (!(t >= c.t_min() && t <= c.t_max())) fail_input("cagd::insert_knot", "t = " + full_precision(t) + " outside the domain");
+    if (!(t >= c.t_min() && t <= c.t_max()))
+        fail_input("cagd::insert_knot", "t = " + full_precision(t) + " outside the domain");
     const int p = c.degree();
     const auto& U = c.knots();
     const Eigen::MatrixXd& P = c.control_points();
@@ -465,7 +496,8 @@ BSplineCurve elevate_degree(const BSplineCurve& c) {
     const auto first_b = static_cast<int>(std::lower_bound(L.begin(), L.end(), b) - L.begin());
     std::vector<double> V;
     for (int i = last_a - q; i < 0; ++i) V.push_back(L.front());  // pad (clamped input)
-    V.insert(V.end(), L.begin() + std::max(0, last_a - q), L.begin() + std::min<int>(static_cast<int>(L.size()), first_b + q + 1));
+    V.insert(V.end(), L.begin() + std::max(0, last_a - q),
+             L.begin() + std::min<int>(static_cast<int>(L.size()), first_b + q + 1));
     while (static_cast<int>(V.size()) < (first_b - (last_a - q)) + q + 1) V.push_back(L.back());
     const int n_new = static_cast<int>(V.size()) - q - 1;
     // Least squares on q+1 Chebyshev samples per span: exact since r ∈ new space.
@@ -495,7 +527,9 @@ std::vector<BezierCurve> bezier_segments(const BSplineCurve& c) {
     const std::vector<double> br = c.breakpoints();
     std::vector<BezierCurve> segments;
     for (std::size_t s = 0; s + 1 < br.size(); ++s)  // one-sided derivatives at both span ends (bezier.hpp)
-        segments.emplace_back(bezier_from_end_jets(p, br[s + 1] - br[s], c.jet(br[s], p / 2), c.jet_from_left(br[s + 1], std::max(0, p - p / 2 - 1))), br[s], br[s + 1]);
+        segments.emplace_back(bezier_from_end_jets(p, br[s + 1] - br[s], c.jet(br[s], p / 2),
+                                                   c.jet_from_left(br[s + 1], std::max(0, p - p / 2 - 1))),
+                              br[s], br[s + 1]);
     return segments;
 }
 

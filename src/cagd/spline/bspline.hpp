@@ -39,7 +39,8 @@ namespace cagd {
 /// A B-spline curve of degree p on a knot vector (see above), evaluated through per-span Taylor coefficients.
 class BSplineCurve : public Curve {
 public:
-    /// Degree p, knots t_0..t_{n+p} and control points d_0..d_{n−1} (one per row); InvalidInput unless the preconditions above hold.
+    /// Degree p, knots t_0..t_{n+p} and control points d_0..d_{n−1} (one per row); InvalidInput unless the
+    /// preconditions above hold.
     BSplineCurve(int degree, std::vector<double> knots, Eigen::MatrixXd control_points);
 
     /// p.
@@ -82,8 +83,8 @@ private:
     /// builds their blocks, not the whole table. A built block is found by one acquire load (the
     /// lookup of every jet). A copy, or a moved curve, builds its own.
     struct SpanTable {
-        std::mutex building;                                ///< held while a block (or the array) is built
-        std::atomic<bool> allocated{false};                 ///< values and built exist (release/acquire)
+        std::mutex building;                                 ///< held while a block (or the array) is built
+        std::atomic<bool> allocated{false};                  ///< values and built exist (release/acquire)
         std::unique_ptr<std::atomic<std::uint8_t>[]> built;  ///< per block: 1 once its rows are filled
         std::vector<double> values;
         SpanTable() = default;
@@ -110,7 +111,10 @@ private:
         mutable std::atomic<int> span{-1};
         SpanHint() = default;
         SpanHint(const SpanHint&) {}
-        SpanHint& operator=(const SpanHint&) { span.store(-1, std::memory_order_relaxed); return *this; }
+        SpanHint& operator=(const SpanHint&) {
+            span.store(-1, std::memory_order_relaxed);
+            return *this;
+        }
     };
     /// Equal buckets over [t_min, t_max), one per span: first[b] is the span holding the bucket's
     /// left end, where find_span starts its forward scan.
@@ -139,7 +143,8 @@ Eigen::MatrixXd basis_function_derivatives(int degree, const std::vector<double>
 /// The same into a matrix on the stack (degree ≤ 7, order ≤ 7; InvalidInput otherwise), bit for bit.
 using BasisDerivatives = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 8, 8>;
 /// basis_function_derivatives written into `ders` (order + 1 rows, p + 1 columns; p ≤ 7), without allocating.
-void basis_function_derivatives_into(int degree, const std::vector<double>& knots, int span, double t, int order, BasisDerivatives& ders);
+void basis_function_derivatives_into(int degree, const std::vector<double>& knots, int span, double t, int order,
+                                     BasisDerivatives& ders);
 
 /// One B-spline basis function of degree p given by its p+2 local knots
 /// [κ_0, …, κ_{p+1}], or its derivative, at t; zero outside [κ_0, κ_{p+1}). Right-continuous,

@@ -11,14 +11,17 @@
 
 namespace cagd::spline {
 
-PiecewiseHermiteCurve::PiecewiseHermiteCurve(Eigen::MatrixXd nodes, Eigen::MatrixXd d0, Eigen::MatrixXd d1) : nodes_(std::move(nodes)), d0_(std::move(d0)), d1_(std::move(d1)) {
+PiecewiseHermiteCurve::PiecewiseHermiteCurve(Eigen::MatrixXd nodes, Eigen::MatrixXd d0, Eigen::MatrixXd d1)
+    : nodes_(std::move(nodes)), d0_(std::move(d0)), d1_(std::move(d1)) {
     const char* who = "PiecewiseHermiteCurve";
     if (d0_.rows() < 1) fail_input(who, "needs at least one span");
     if (nodes_.rows() != d0_.rows() + 1 || d1_.rows() != d0_.rows())
-        fail_input(who,
-                   "needs K+1 nodes and K start/end derivatives, got " + std::to_string(nodes_.rows()) + ", " + std::to_string(d0_.rows()) + ", " + std::to_string(d1_.rows()));
-    if (d0_.cols() != nodes_.cols() || d1_.cols() != nodes_.cols()) fail_input(who, "nodes and derivatives must have the same dimension");
-    if (!all_finite(nodes_) || !all_finite(d0_) || !all_finite(d1_)) fail_input(who, "nodes and derivatives must be finite");
+        fail_input(who, "needs K+1 nodes and K start/end derivatives, got " + std::to_string(nodes_.rows()) + ", " +
+                            std::to_string(d0_.rows()) + ", " + std::to_string(d1_.rows()));
+    if (d0_.cols() != nodes_.cols() || d1_.cols() != nodes_.cols())
+        fail_input(who, "nodes and derivatives must have the same dimension");
+    if (!all_finite(nodes_) || !all_finite(d0_) || !all_finite(d1_))
+        fail_input(who, "nodes and derivatives must be finite");
 }
 
 namespace {
@@ -26,18 +29,21 @@ namespace {
 // The span scales of from_node_slopes: none, or one finite scale per span.
 void require_span_scales(const char* who, const std::vector<double>& scales, Eigen::Index spans) {
     if (!scales.empty() && static_cast<Eigen::Index>(scales.size()) != spans)
-        fail_input(who, "needs K span scales (or none), got " + std::to_string(scales.size()) + " for " + std::to_string(spans) + " spans");
+        fail_input(who, "needs K span scales (or none), got " + std::to_string(scales.size()) + " for " +
+                            std::to_string(spans) + " spans");
     if (!all_finite(scales.data(), scales.size())) fail_input(who, "span scales must be finite");
 }
 
 }  // namespace
 
-PiecewiseHermiteCurve PiecewiseHermiteCurve::from_node_slopes(Eigen::MatrixXd nodes, Eigen::MatrixXd slopes, std::vector<double> scales) {
+PiecewiseHermiteCurve PiecewiseHermiteCurve::from_node_slopes(Eigen::MatrixXd nodes, Eigen::MatrixXd slopes,
+                                                              std::vector<double> scales) {
     const char* who = "PiecewiseHermiteCurve::from_node_slopes";
     const Eigen::Index spans = nodes.rows() - 1;
     if (spans < 1) fail_input(who, "needs at least one span");
     if (slopes.rows() != spans + 1 && slopes.rows() != spans)
-        fail_input(who, "needs K+1 slopes (closed: K) for K+1 nodes, got " + std::to_string(slopes.rows()) + " for " + std::to_string(nodes.rows()));
+        fail_input(who, "needs K+1 slopes (closed: K) for K+1 nodes, got " + std::to_string(slopes.rows()) + " for " +
+                            std::to_string(nodes.rows()));
     require_span_scales(who, scales, spans);
     if (slopes.cols() != nodes.cols()) fail_input(who, "nodes and slopes must have the same dimension");
     if (!all_finite(nodes) || !all_finite(slopes)) fail_input(who, "nodes and slopes must be finite");
@@ -62,8 +68,13 @@ namespace {
 // Row j of the basis: the j-th derivatives of H0..H3 at t (zero for j > 3).
 [[gnu::always_inline]] inline void hermite_basis_row(int j, double t, double h[4]) {
     switch (j) {
-        case 0: h[0] = 2 * t * t * t - 3 * t * t + 1, h[1] = -2 * t * t * t + 3 * t * t, h[2] = t * t * t - 2 * t * t + t, h[3] = t * t * t - t * t; return;
-        case 1: h[0] = 6 * t * t - 6 * t, h[1] = -6 * t * t + 6 * t, h[2] = 3 * t * t - 4 * t + 1, h[3] = 3 * t * t - 2 * t; return;
+        case 0:
+            h[0] = 2 * t * t * t - 3 * t * t + 1, h[1] = -2 * t * t * t + 3 * t * t, h[2] = t * t * t - 2 * t * t + t,
+            h[3] = t * t * t - t * t;
+            return;
+        case 1:
+            h[0] = 6 * t * t - 6 * t, h[1] = -6 * t * t + 6 * t, h[2] = 3 * t * t - 4 * t + 1, h[3] = 3 * t * t - 2 * t;
+            return;
         case 2: h[0] = 12 * t - 6, h[1] = -12 * t + 6, h[2] = 6 * t - 4, h[3] = 6 * t - 2; return;
         case 3: h[0] = 12, h[1] = -12, h[2] = 6, h[3] = 6; return;
         default: h[0] = h[1] = h[2] = h[3] = 0.0;
@@ -74,7 +85,8 @@ namespace {
 void PiecewiseHermiteCurve::evaluate_jet(double u, int first, JetSide side, Eigen::Ref<Eigen::MatrixXd> out) const {
     const char* who = "cagd::spline::PiecewiseHermiteCurve::evaluate_jet";
     const int last = first + static_cast<int>(out.rows()) - 1;
-    const PieceLocation at = side == JetSide::left ? locate_unit_piece_from_left(who, u, spans(), last) : locate_unit_piece(who, u, spans(), last);
+    const PieceLocation at = side == JetSide::left ? locate_unit_piece_from_left(who, u, spans(), last)
+                                                   : locate_unit_piece(who, u, spans(), last);
     const int k = at.piece;
     const double t = at.t;
     const Eigen::Index dim = nodes_.cols();
@@ -85,7 +97,8 @@ void PiecewiseHermiteCurve::evaluate_jet(double u, int first, JetSide side, Eige
             continue;
         }
         hermite_basis_row(j, t, h);
-        for (Eigen::Index c = 0; c < dim; ++c) out(j - first, c) = h[0] * nodes_(k, c) + h[1] * nodes_(k + 1, c) + h[2] * d0_(k, c) + h[3] * d1_(k, c);
+        for (Eigen::Index c = 0; c < dim; ++c)
+            out(j - first, c) = h[0] * nodes_(k, c) + h[1] * nodes_(k + 1, c) + h[2] * d0_(k, c) + h[3] * d1_(k, c);
     }
 }
 
@@ -134,7 +147,8 @@ PiecewiseHermiteCurve cubic_spline_of_valid_points(const PointList& points, Para
         const int prev = k == 0 ? spans - 1 : k - 1;  // span ending at node k (closed: node 0 ends the last)
         const int next = k;                           // span starting at node k (k < spans here)
         const double hp = h(prev), hn = h(next);
-        for (int c = 0; c < dim; ++c) rhs[static_cast<std::size_t>(c) * stride] = 3.0 * (hn * delta(prev, c) / hp + hp * delta(next, c) / hn);
+        for (int c = 0; c < dim; ++c)
+            rhs[static_cast<std::size_t>(c) * stride] = 3.0 * (hn * delta(prev, c) / hp + hp * delta(next, c) / hn);
         return {hn, 2.0 * (hp + hn), hp};
     };
     Eigen::MatrixXd m(N, dim);
@@ -163,7 +177,8 @@ PiecewiseHermiteCurve cubic_spline_interpolant(const PointList& points, Paramete
 
 PiecewiseHermiteCurve cubic_spline_interpolant(const ValidPoints& points, ParameterSpacing spacing) {
     const bool closed = points.closed();
-    if (!points.cover(closed ? 3 : 2, closed)) return cubic_spline_interpolant(points.points(), spacing, closed);  // checked as a PointList
+    if (!points.cover(closed ? 3 : 2, closed))
+        return cubic_spline_interpolant(points.points(), spacing, closed);  // checked as a PointList
     return cubic_spline_of_valid_points(points.points(), spacing, closed);
 }
 
@@ -178,7 +193,8 @@ namespace {
 // With `with_interior` false only the two open ends are put (the interior is the caller's:
 // planar_hermite_interior).
 template <class Row, class Put>
-void tangent_directions_with(const PointList& points, TangentRule rule, bool closed, const char* who, Put&& put, bool with_interior = true) {
+void tangent_directions_with(const PointList& points, TangentRule rule, bool closed, const char* who, Put&& put,
+                             bool with_interior = true) {
     const Eigen::Index n = points.rows(), dim = points.cols();
     const auto at = [&](Eigen::Index i) -> Row {
         if constexpr (Row::SizeAtCompileTime == Eigen::Dynamic) {
@@ -191,11 +207,14 @@ void tangent_directions_with(const PointList& points, TangentRule rule, bool clo
     };
     const auto unit_row = [](const Row& v) -> Row { return v / v.norm(); };
     // t_i from a = P_i − P_{i−1}, b = P_{i+1} − P_i and P_{i+1} − P_{i−1}.
-    const auto interior = [&](Eigen::Index i, const Row& a, double la, const Row& b, double lb, const Row& across) -> Row {
+    const auto interior = [&](Eigen::Index i, const Row& a, double la, const Row& b, double lb,
+                              const Row& across) -> Row {
         const Row d = rule == TangentRule::circle ? Row(lb / la * a + la / lb * b) : across;
         const double length = d.norm();  // once: the check and the division use the same value
         // A reversal leaves d = 0 (Hermite A: P_{i−1} = P_{i+1}) or tiny by cancellation.
-        if (length <= 1e-14 * (la + lb)) fail_input(who, "the curve reverses at point " + std::to_string(i) + " (turning angle π), where no tangent direction is defined");
+        if (length <= 1e-14 * (la + lb))
+            fail_input(who, "the curve reverses at point " + std::to_string(i) +
+                                " (turning angle π), where no tangent direction is defined");
         return d / length;
     };
     Row before = at(closed ? n - 1 : 0), here = at(closed ? 0 : 1);
@@ -249,10 +268,12 @@ void tangent_directions(const PointList& points, TangentRule rule, bool closed, 
 // vectorises it (the per-point loop waited on its square roots and divisions: 60 % of a 10^6-point
 // construction). The same curve bit for bit; a reversal is reported at the first point the per-point
 // loop would have stopped at.
-void planar_hermite_interior(const PointList& points, TangentRule rule, bool closed, const char* who, Eigen::MatrixXd& d0, Eigen::MatrixXd& d1) {
+void planar_hermite_interior(const PointList& points, TangentRule rule, bool closed, const char* who,
+                             Eigen::MatrixXd& d0, Eigen::MatrixXd& d1) {
     const Eigen::Index n = points.rows(), spans = closed ? n : n - 1, first = closed ? 0 : 1, last = closed ? n : n - 1;
     const double *x = points.col(0).data(), *y = points.col(1).data();
-    std::vector<double> cx(static_cast<std::size_t>(spans)), cy(cx.size()), h(cx.size());  // chord k = P_{k+1} − P_k, |chord k|
+    std::vector<double> cx(static_cast<std::size_t>(spans)), cy(cx.size()),
+        h(cx.size());  // chord k = P_{k+1} − P_k, |chord k|
     for (Eigen::Index k = 0; k < spans; ++k) {
         const Eigen::Index j = k + 1 == n ? 0 : k + 1;
         cx[static_cast<std::size_t>(k)] = x[j] - x[k], cy[static_cast<std::size_t>(k)] = y[j] - y[k];
@@ -261,7 +282,8 @@ void planar_hermite_interior(const PointList& points, TangentRule rule, bool clo
     double *d0x = d0.col(0).data(), *d0y = d0.col(1).data(), *d1x = d1.col(0).data(), *d1y = d1.col(1).data();
     const bool circle = rule == TangentRule::circle;
     bool reversal = false;
-    const auto direction = [&](Eigen::Index i, double& dx, double& dy) {  // d_i before normalising; true when it reverses
+    const auto direction = [&](Eigen::Index i, double& dx,
+                               double& dy) {  // d_i before normalising; true when it reverses
         const Eigen::Index before = i == 0 ? n - 1 : i - 1, after = i + 1 == n ? 0 : i + 1;
         const auto b = static_cast<std::size_t>(before), k = static_cast<std::size_t>(i);
         const double la = h[b], lb = h[k];
@@ -285,12 +307,15 @@ void planar_hermite_interior(const PointList& points, TangentRule rule, bool clo
     if (!reversal) return;
     for (Eigen::Index i = first; i < last; ++i) {
         double tx = 0.0, ty = 0.0;
-        if (direction(i, tx, ty)) fail_input(who, "the curve reverses at point " + std::to_string(i) + " (turning angle π), where no tangent direction is defined");
+        if (direction(i, tx, ty))
+            fail_input(who, "the curve reverses at point " + std::to_string(i) +
+                                " (turning angle π), where no tangent direction is defined");
     }
 }
 
 const char* directions_who(TangentRule rule) {
-    return rule == TangentRule::circle ? "hermite_tangent_directions (circle, Hermite B)" : "hermite_tangent_directions (chord of neighbours, Hermite A)";
+    return rule == TangentRule::circle ? "hermite_tangent_directions (circle, Hermite B)"
+                                       : "hermite_tangent_directions (chord of neighbours, Hermite A)";
 }
 
 }  // namespace
@@ -299,7 +324,8 @@ Eigen::MatrixXd hermite_tangent_directions(const PointList& points, TangentRule 
     const char* who = directions_who(rule);
     require_valid_points(points, (closed || rule == TangentRule::circle) ? 3 : 2, true, closed, who);
     Eigen::MatrixXd t(points.rows(), points.cols());
-    tangent_directions(points, rule, closed, who, [&](Eigen::Index i, const auto& r, double, double) { t.row(i) = r.head(points.cols()); });
+    tangent_directions(points, rule, closed, who,
+                       [&](Eigen::Index i, const auto& r, double, double) { t.row(i) = r.head(points.cols()); });
     return t;
 }
 
@@ -326,7 +352,9 @@ PiecewiseHermiteCurve hermite_spline_of_valid_points(const PointList& points, Ta
     return PiecewiseHermiteCurve(std::move(nodes), std::move(d0), std::move(d1));
 }
 
-Eigen::Index hermite_spline_min_points(TangentRule rule, bool closed) { return (closed || rule == TangentRule::circle) ? 3 : 2; }
+Eigen::Index hermite_spline_min_points(TangentRule rule, bool closed) {
+    return (closed || rule == TangentRule::circle) ? 3 : 2;
+}
 
 }  // namespace
 
@@ -337,7 +365,8 @@ PiecewiseHermiteCurve hermite_spline(const PointList& points, TangentRule rule, 
 
 PiecewiseHermiteCurve hermite_spline(const ValidPoints& points, TangentRule rule) {
     const bool closed = points.closed();
-    if (!points.cover(hermite_spline_min_points(rule, closed), closed)) return hermite_spline(points.points(), rule, closed);  // checked as a PointList
+    if (!points.cover(hermite_spline_min_points(rule, closed), closed))
+        return hermite_spline(points.points(), rule, closed);  // checked as a PointList
     return hermite_spline_of_valid_points(points.points(), rule, closed);
 }
 
@@ -345,7 +374,8 @@ PiecewiseHermiteCurve hermite_interpolant(const PointList& points, const Eigen::
     const char* who = "hermite_interpolant";
     require_valid_points(points, closed ? 3 : 2, true, closed, who);
     if (directions.rows() != points.rows() || directions.cols() != points.cols())
-        fail_input(who, "needs one direction per point, got " + std::to_string(directions.rows()) + " for " + std::to_string(points.rows()) + " points");
+        fail_input(who, "needs one direction per point, got " + std::to_string(directions.rows()) + " for " +
+                            std::to_string(points.rows()) + " points");
     Eigen::MatrixXd nodes = span_nodes(points, closed);
     const Eigen::Index spans = nodes.rows() - 1, n = points.rows();
     Eigen::MatrixXd d0(spans, points.cols()), d1(spans, points.cols());

@@ -56,7 +56,8 @@ public:
     PiecewiseHermiteCurve(Eigen::MatrixXd nodes, Eigen::MatrixXd d0, Eigen::MatrixXd d1);
     /// From one slope per node: nodes K+1 rows; slopes K+1 rows (closed: K rows, m_K = m_0); scales
     /// K values h_k, or none for h_k = 1. Span k gets d0_k = h_k m_k, d1_k = h_k m_{k+1}.
-    static PiecewiseHermiteCurve from_node_slopes(Eigen::MatrixXd nodes, Eigen::MatrixXd slopes, std::vector<double> scales);
+    static PiecewiseHermiteCurve from_node_slopes(Eigen::MatrixXd nodes, Eigen::MatrixXd slopes,
+                                                  std::vector<double> scales);
 
     /// K.
     int spans() const { return static_cast<int>(nodes_.rows()) - 1; }
@@ -81,10 +82,12 @@ private:
 
 /// The parameter of the C2 cubic spline: uniform (cubic spline A) or chord length (cubic spline B).
 enum class ParameterSpacing { uniform, chord_length };
-/// The tangent direction at a node: along the chord of its neighbours (Hermite A) or of the circle through them (Hermite B).
+/// The tangent direction at a node: along the chord of its neighbours (Hermite A) or of the circle through them
+/// (Hermite B).
 enum class TangentRule { chord_of_neighbours, circle };
 
-/// The natural C2 cubic spline through the points (closed: periodic) in the given parameter, in Hermite form on unit spans.
+/// The natural C2 cubic spline through the points (closed: periodic) in the given parameter, in Hermite form on unit
+/// spans.
 PiecewiseHermiteCurve cubic_spline_interpolant(const PointList& points, ParameterSpacing spacing, bool closed);
 /// The same through points validated already (closed as they were validated): the same curve, the
 /// points not checked again where their checks cover this construction's.

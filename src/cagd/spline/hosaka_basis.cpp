@@ -10,7 +10,8 @@ namespace {
 
 void require_indices(const char* who, int m, int i) {
     if (m < 0) fail_input(who, "m must be >= 0, got " + std::to_string(m));
-    if (i < 0 || i > m) fail_input(who, "i must be in [0, m] = [0, " + std::to_string(m) + "], got " + std::to_string(i));
+    if (i < 0 || i > m)
+        fail_input(who, "i must be in [0, m] = [0, " + std::to_string(m) + "], got " + std::to_string(i));
 }
 
 // The polynomial with power-basis coefficients c (constant first) at t, by Horner.

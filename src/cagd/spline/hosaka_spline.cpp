@@ -20,7 +20,8 @@ Eigen::MatrixXd stack(int m, const std::vector<Eigen::MatrixXd>& parts, const ch
     Eigen::MatrixXd out(static_cast<Eigen::Index>(parts.size()) * (m + 1), dim);
     for (std::size_t s = 0; s < parts.size(); ++s) {
         if (parts[s].rows() != m + 1 || parts[s].cols() != dim)
-            fail_input(who, "segment " + std::to_string(s) + ": derivative sets must be (m+1) x dim = " + std::to_string(m + 1) + " x " + std::to_string(dim));
+            fail_input(who, "segment " + std::to_string(s) + ": derivative sets must be (m+1) x dim = " +
+                                std::to_string(m + 1) + " x " + std::to_string(dim));
         out.middleRows(static_cast<Eigen::Index>(s) * (m + 1), m + 1) = parts[s];
     }
     return out;
@@ -28,17 +29,23 @@ Eigen::MatrixXd stack(int m, const std::vector<Eigen::MatrixXd>& parts, const ch
 }  // namespace
 
 HosakaCurve::HosakaCurve(int m, const std::vector<Eigen::MatrixXd>& start, const std::vector<Eigen::MatrixXd>& end)
-    : basis_(m), start_(stack(m, start, "cagd::spline::HosakaCurve")), end_(stack(m, end, "cagd::spline::HosakaCurve")) {
+    : basis_(m),
+      start_(stack(m, start, "cagd::spline::HosakaCurve")),
+      end_(stack(m, end, "cagd::spline::HosakaCurve")) {
     validate();
 }
 
-HosakaCurve::HosakaCurve(int m, Eigen::MatrixXd start, Eigen::MatrixXd end) : basis_(m), start_(std::move(start)), end_(std::move(end)) { validate(); }
+HosakaCurve::HosakaCurve(int m, Eigen::MatrixXd start, Eigen::MatrixXd end)
+    : basis_(m), start_(std::move(start)), end_(std::move(end)) {
+    validate();
+}
 
 void HosakaCurve::validate() const {
     const char* who = "cagd::spline::HosakaCurve";
-    if (start_.rows() < m() + 1 || start_.rows() % (m() + 1) != 0 || end_.rows() != start_.rows() || end_.cols() != start_.cols() || start_.cols() < 1)
-        fail_input(who,
-                   "needs (m+1) rows per segment, the same for start and end derivatives, got " + std::to_string(start_.rows()) + " and " + std::to_string(end_.rows()) + " rows");
+    if (start_.rows() < m() + 1 || start_.rows() % (m() + 1) != 0 || end_.rows() != start_.rows() ||
+        end_.cols() != start_.cols() || start_.cols() < 1)
+        fail_input(who, "needs (m+1) rows per segment, the same for start and end derivatives, got " +
+                            std::to_string(start_.rows()) + " and " + std::to_string(end_.rows()) + " rows");
     if (!start_.allFinite() || !end_.allFinite()) fail_input(who, "derivatives must be finite");
 }
 
@@ -47,7 +54,8 @@ std::vector<double> HosakaCurve::breakpoints() const { return unit_piece_breakpo
 namespace {
 // Rows first.. of segment s's jet at local t into out: row k − first = Σ_{i=0..m} p_i^(k)(t) S_i +
 // q_i^(k)(t) E_i (eq 18), S_i, E_i the segment's start and end derivatives.
-void hosaka_jet_rows(const HosakaBasis& basis, const Eigen::MatrixXd& start, const Eigen::MatrixXd& end, int m, int s, double t, int first, Eigen::Ref<Eigen::MatrixXd> out) {
+void hosaka_jet_rows(const HosakaBasis& basis, const Eigen::MatrixXd& start, const Eigen::MatrixXd& end, int m, int s,
+                     double t, int first, Eigen::Ref<Eigen::MatrixXd> out) {
     constexpr int kStackM = 15;  // the basis values on the stack up to this m
     const int dim = static_cast<int>(start.cols());
     const Eigen::Index row0 = static_cast<Eigen::Index>(s) * (m + 1);
@@ -67,14 +75,16 @@ void hosaka_jet_rows(const HosakaBasis& basis, const Eigen::MatrixXd& start, con
 void HosakaCurve::evaluate_jet(double u, int first, JetSide side, Eigen::Ref<Eigen::MatrixXd> out) const {
     const char* who = "cagd::spline::HosakaCurve::evaluate_jet";
     const int order = first + static_cast<int>(out.rows()) - 1;
-    const auto [s, t] = side == JetSide::left ? locate_unit_piece_from_left(who, u, segments(), order) : locate_unit_piece(who, u, segments(), order);
+    const auto [s, t] = side == JetSide::left ? locate_unit_piece_from_left(who, u, segments(), order)
+                                              : locate_unit_piece(who, u, segments(), order);
     hosaka_jet_rows(basis_, start_, end_, m(), s, t, first, out);
 }
 
 Eigen::MatrixXd HosakaCurve::segment_jet(int s, double t, int order) const {
     if (s < 0 || s >= segments() || !(t >= 0.0 && t <= 1.0) || order < 0)
-        fail_input("cagd::spline::HosakaCurve::segment_jet", "needs 0 <= s < " + std::to_string(segments()) + ", t in [0, 1], order >= 0; got s = " + std::to_string(s) +
-                                                                 ", t = " + full_precision(t) + ", order " + std::to_string(order));
+        fail_input("cagd::spline::HosakaCurve::segment_jet",
+                   "needs 0 <= s < " + std::to_string(segments()) + ", t in [0, 1], order >= 0; got s = " +
+                       std::to_string(s) + ", t = " + full_precision(t) + ", order " + std::to_string(order));
     Eigen::MatrixXd out(order + 1, dimension());
     hosaka_jet_rows(basis_, start_, end_, m(), s, t, 0, out);
     return out;
@@ -89,14 +99,17 @@ HosakaSpline hosaka_c2_spline_of(const PointList& points, const HosakaSplineOpti
     const int n = o.closed ? np : np - 1;  // segments
     if (!o.closed && o.end == HosakaEnd::tangent)
         for (const Eigen::VectorXd* v : {&o.start_tangent, &o.end_tangent})
-            if (v->size() != dim || !v->allFinite()) fail_input(who, "tangent ends need a finite start and end tangent of dimension " + std::to_string(dim));
+            if (v->size() != dim || !v->allFinite())
+                fail_input(who, "tangent ends need a finite start and end tangent of dimension " + std::to_string(dim));
     Eigen::MatrixXd A(n, dim);
     for (int i = 0; i < n; ++i) A.row(i) = points.row((i + 1) % np) - points.row(i);
     // |A_i| once (the result keeps them: the registry's dτ/dt), then k_i at the join after segment i
     // (closed: every segment; open: i = 0..n−2).
-    std::vector<double> lengths = o.scale == HosakaScale::unit ? std::vector<double>(static_cast<std::size_t>(n), 1.0) : chord_lengths(points, o.closed);
+    std::vector<double> lengths = o.scale == HosakaScale::unit ? std::vector<double>(static_cast<std::size_t>(n), 1.0)
+                                                               : chord_lengths(points, o.closed);
     std::vector<double> k(static_cast<std::size_t>(o.closed ? n : std::max(n - 1, 0)));
-    for (std::size_t i = 0; i < k.size(); ++i) k[i] = o.scale == HosakaScale::unit ? 1.0 : lengths[i] / lengths[(i + 1) % static_cast<std::size_t>(n)];
+    for (std::size_t i = 0; i < k.size(); ++i)
+        k[i] = o.scale == HosakaScale::unit ? 1.0 : lengths[i] / lengths[(i + 1) % static_cast<std::size_t>(n)];
 
     // The system of eq (20) and its solution; its arrays are freed before the curve is formed
     // (peak memory).
@@ -191,14 +204,19 @@ HosakaSpline hosaka_c2_spline_of(const PointList& points, const HosakaSplineOpti
         B.row(i) = start.row(2 * i + 1);
         C.row(i) = end.row(2 * i + 1);
     }
-    return HosakaSpline{HosakaCurve(1, std::move(start), std::move(end)), std::move(k), std::move(B), std::move(C), std::move(lengths)};
+    return HosakaSpline{HosakaCurve(1, std::move(start), std::move(end)), std::move(k), std::move(B), std::move(C),
+                        std::move(lengths)};
 }
 
 }  // namespace
 
-HosakaSpline hosaka_c2_spline(const PointList& points, const HosakaSplineOptions& o) { return hosaka_c2_spline_of(points, o, false); }
+HosakaSpline hosaka_c2_spline(const PointList& points, const HosakaSplineOptions& o) {
+    return hosaka_c2_spline_of(points, o, false);
+}
 
-HosakaSpline hosaka_c2_spline(const ValidPoints& points, const HosakaSplineOptions& o) { return hosaka_c2_spline_of(points.points(), o, points.cover(o.closed ? 3 : 2, o.closed)); }
+HosakaSpline hosaka_c2_spline(const ValidPoints& points, const HosakaSplineOptions& o) {
+    return hosaka_c2_spline_of(points.points(), o, points.cover(o.closed ? 3 : 2, o.closed));
+}
 
 HosakaCurve hosaka_spline(const PointList& points, int m, HosakaScale scale, bool closed) {
     HosakaSplineOptions o;
@@ -219,10 +237,13 @@ HosakaCurve hosaka_spline_of(const PointList& points, int m, const HosakaSplineO
     if (tangent_ends)
         for (const Eigen::VectorXd* t : {&o.start_tangent, &o.end_tangent})
             if (t->size() != dim || !t->allFinite())
-                fail_input(who, "tangent ends need two finite vectors of dimension " + std::to_string(dim) + ", got one of size " + std::to_string(t->size()));
+                fail_input(who, "tangent ends need two finite vectors of dimension " + std::to_string(dim) +
+                                    ", got one of size " + std::to_string(t->size()));
     const int segs = closed ? np : np - 1;
     std::vector<double> L(static_cast<std::size_t>(segs));
-    for (int i = 0; i < segs; ++i) L[static_cast<std::size_t>(i)] = scale == HosakaScale::unit ? 1.0 : (points.row((i + 1) % np) - points.row(i)).norm();
+    for (int i = 0; i < segs; ++i)
+        L[static_cast<std::size_t>(i)] =
+            scale == HosakaScale::unit ? 1.0 : (points.row((i + 1) % np) - points.row(i)).norm();
     const HosakaBasis b(m);
     // Unknown (node, j), j = 1..m: the j-th τ-derivative at the node.
     const auto unknown = [&](int node, int j) { return node * m + (j - 1); };
@@ -249,7 +270,8 @@ HosakaCurve hosaka_spline_of(const PointList& points, int m, const HosakaSplineO
             } else if (tangent_ends && k == 2 * m) {  // clamped end: the given t-derivative replaces order 2m
                 const int s = has_right ? 0 : segs - 1;
                 trip.emplace_back(row, unknown(node, 1), 1.0);
-                rhs.row(row) = (has_right ? o.start_tangent : o.end_tangent).transpose() / L[static_cast<std::size_t>(s)];
+                rhs.row(row) =
+                    (has_right ? o.start_tangent : o.end_tangent).transpose() / L[static_cast<std::size_t>(s)];
             } else if (has_right) {  // natural start: the k-th derivative vanishes
                 add_derivative(row, 0, 0.0, k, 1.0);
             } else {  // natural end
@@ -277,7 +299,9 @@ HosakaCurve hosaka_spline_of(const PointList& points, int m, const HosakaSplineO
 
 }  // namespace
 
-HosakaCurve hosaka_spline(const PointList& points, int m, const HosakaSplineOptions& o) { return hosaka_spline_of(points, m, o, false); }
+HosakaCurve hosaka_spline(const PointList& points, int m, const HosakaSplineOptions& o) {
+    return hosaka_spline_of(points, m, o, false);
+}
 
 HosakaCurve hosaka_spline(const ValidPoints& points, int m, const HosakaSplineOptions& o) {
     return hosaka_spline_of(points.points(), m, o, points.cover(o.closed ? 3 : 2, o.closed));
@@ -287,7 +311,9 @@ ExplicitSpline hosaka_explicit_spline(const std::vector<double>& x, const Eigen:
     const char* who = "cagd::spline::hosaka_explicit_spline";
     const int n = static_cast<int>(x.size());
     if (n < 2) fail_input(who, "needs at least 2 abscissae, got " + std::to_string(n));
-    if (values.rows() != n || values.cols() < 1) fail_input(who, "needs one value row per abscissa, got " + std::to_string(values.rows()) + " rows for " + std::to_string(n));
+    if (values.rows() != n || values.cols() < 1)
+        fail_input(who, "needs one value row per abscissa, got " + std::to_string(values.rows()) + " rows for " +
+                            std::to_string(n));
     if (!values.allFinite()) fail_input(who, "values must be finite");
     require_increasing(x, 2, "x", who);
     const auto h = [&](int i) { return x[static_cast<std::size_t>(i + 1)] - x[static_cast<std::size_t>(i)]; };
@@ -300,7 +326,8 @@ ExplicitSpline hosaka_explicit_spline(const std::vector<double>& x, const Eigen:
         trip.emplace_back(i, i - 1, 1.0 / h(i - 1));
         trip.emplace_back(i, i, 2.0 * (1.0 / h(i - 1) + 1.0 / h(i)));
         trip.emplace_back(i, i + 1, 1.0 / h(i));
-        rhs.row(i) = 3.0 * (values.row(i) - values.row(i - 1)) / (h(i - 1) * h(i - 1)) + 3.0 * (values.row(i + 1) - values.row(i)) / (h(i) * h(i));
+        rhs.row(i) = 3.0 * (values.row(i) - values.row(i - 1)) / (h(i - 1) * h(i - 1)) +
+                     3.0 * (values.row(i + 1) - values.row(i)) / (h(i) * h(i));
     }
     trip.emplace_back(n - 1, n - 2, 1.0);
     trip.emplace_back(n - 1, n - 1, 2.0);
@@ -314,28 +341,36 @@ ExplicitSpline hosaka_explicit_spline(const std::vector<double>& x, const Eigen:
 
 Eigen::RowVectorXd ExplicitSpline::evaluate(double at, int k) const {
     const char* who = "cagd::spline::ExplicitSpline::evaluate";
-    if (!(at >= x.front() && at <= x.back())) fail_input(who, "x = " + full_precision(at) + " outside [" + full_precision(x.front()) + ", " + full_precision(x.back()) + "]");
+    if (!(at >= x.front() && at <= x.back()))
+        fail_input(who, "x = " + full_precision(at) + " outside [" + full_precision(x.front()) + ", " +
+                            full_precision(x.back()) + "]");
     const auto it = std::upper_bound(x.begin(), x.end(), at);
     const int i = std::clamp(static_cast<int>(it - x.begin()) - 1, 0, static_cast<int>(x.size()) - 2);
-    return evaluate_in(i, (at - x[static_cast<std::size_t>(i)]) / (x[static_cast<std::size_t>(i + 1)] - x[static_cast<std::size_t>(i)]), k);
+    return evaluate_in(
+        i,
+        (at - x[static_cast<std::size_t>(i)]) / (x[static_cast<std::size_t>(i + 1)] - x[static_cast<std::size_t>(i)]),
+        k);
 }
 
 Eigen::RowVectorXd ExplicitSpline::evaluate_in(int i, double u, int k) const {
     const char* who = "cagd::spline::ExplicitSpline::evaluate_in";
-    if (i < 0 || i + 1 >= static_cast<int>(x.size())) fail_input(who, "interval " + std::to_string(i) + " does not exist");
+    if (i < 0 || i + 1 >= static_cast<int>(x.size()))
+        fail_input(who, "interval " + std::to_string(i) + " does not exist");
     if (k < 0 || k > 3) fail_input(who, "derivative order must be 0..3, got " + std::to_string(k));
     static const HosakaBasis basis(1);
     const double l = x[static_cast<std::size_t>(i + 1)] - x[static_cast<std::size_t>(i)];
     // eq (21): l^j on the j-th end derivative; d/dx = (1/l) d/du.
-    return std::pow(l, -k) *
-           (basis.p(0, u, k) * values.row(i) + basis.q(0, u, k) * values.row(i + 1) + l * basis.p(1, u, k) * slopes.row(i) + l * basis.q(1, u, k) * slopes.row(i + 1));
+    return std::pow(l, -k) * (basis.p(0, u, k) * values.row(i) + basis.q(0, u, k) * values.row(i + 1) +
+                              l * basis.p(1, u, k) * slopes.row(i) + l * basis.q(1, u, k) * slopes.row(i + 1));
 }
 
 double ExplicitSpline::bending_energy() const {
     double e = 0.0;
     for (std::size_t i = 0; i + 1 < x.size(); ++i) {
-        const Eigen::RowVectorXd y0 = evaluate_in(static_cast<int>(i), 0.0, 2), y1 = evaluate_in(static_cast<int>(i), 1.0, 2);
-        e += (x[i + 1] - x[i]) / 3.0 * (y0.squaredNorm() + y0.dot(y1) + y1.squaredNorm());  // ∫ of a linear function squared
+        const Eigen::RowVectorXd y0 = evaluate_in(static_cast<int>(i), 0.0, 2),
+                                 y1 = evaluate_in(static_cast<int>(i), 1.0, 2);
+        e += (x[i + 1] - x[i]) / 3.0 *
+             (y0.squaredNorm() + y0.dot(y1) + y1.squaredNorm());  // ∫ of a linear function squared
     }
     return e;
 }

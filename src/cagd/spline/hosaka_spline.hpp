@@ -18,11 +18,11 @@
 /// the paper criticises) is the uniform-parameter cubic spline.
 /// Unknowns B_1..B_n and C_n: a tridiagonal system (row per join, one per end), solved by the
 /// Thomas algorithm in O(n) (numeric/tridiagonal.hpp; stable: diagonally dominant after scaling the
-/// unknowns by |A_i|); a closed curve's cyclic system by Eigen SparseLU (natural ordering). End conditions: natural (R'' = 0 at both ends: 2B_1 + k_1 B_2 = 3A_1 and
-/// B_n + 2C_n = 3A_n), tangent (B_1, C_n given), closed (the recurrence wraps round; k_n = |A_n|/|A_1|).
-/// Preconditions (InvalidInput): ≥ 2 points open (≥ 3 closed), 1–3 coordinates, finite, no
-/// coincident consecutive points (k_i would be 0 or ∞); tangent ends need two finite vectors of the
-/// points' dimension.
+/// unknowns by |A_i|); a closed curve's cyclic system by Eigen SparseLU (natural ordering). End conditions: natural
+/// (R'' = 0 at both ends: 2B_1 + k_1 B_2 = 3A_1 and B_n + 2C_n = 3A_n), tangent (B_1, C_n given), closed (the
+/// recurrence wraps round; k_n = |A_n|/|A_1|). Preconditions (InvalidInput): ≥ 2 points open (≥ 3 closed), 1–3
+/// coordinates, finite, no coincident consecutive points (k_i would be 0 or ∞); tangent ends need two finite vectors of
+/// the points' dimension.
 #include <Eigen/Dense>
 #include <vector>
 
@@ -32,7 +32,8 @@
 
 namespace cagd::spline {
 
-/// A curve of Hosaka segments of order m on u ∈ [0, K]: segment s on [s, s + 1] is Σ_i p_i(m, t) start_i + q_i(m, t) end_i (eq 15).
+/// A curve of Hosaka segments of order m on u ∈ [0, K]: segment s on [s, s + 1] is Σ_i p_i(m, t) start_i + q_i(m, t)
+/// end_i (eq 15).
 class HosakaCurve : public Curve {
 public:
     /// start[s], end[s]: (m+1) × dim matrices, row i = the i-th derivative at the segment's start / end.
@@ -71,23 +72,24 @@ enum class HosakaEnd { natural, tangent };
 /// The options of Hosaka's splines.
 struct HosakaSplineOptions {
     HosakaScale scale = HosakaScale::chord;  ///< scale factors k_i
-    HosakaEnd end = HosakaEnd::natural;  ///< end condition
-    bool closed = false;  ///< closed curve (periodic)
-    Eigen::VectorXd start_tangent;  ///< B_1 for HosakaEnd::tangent
-    Eigen::VectorXd end_tangent;    ///< C_n for HosakaEnd::tangent
+    HosakaEnd end = HosakaEnd::natural;      ///< end condition
+    bool closed = false;                     ///< closed curve (periodic)
+    Eigen::VectorXd start_tangent;           ///< B_1 for HosakaEnd::tangent
+    Eigen::VectorXd end_tangent;             ///< C_n for HosakaEnd::tangent
 };
 
 /// Hosaka's C2 spline (eq 18–20): the curve and the quantities of its construction.
 struct HosakaSpline {
-    HosakaCurve curve;  ///< the curve, one segment per data span
+    HosakaCurve curve;      ///< the curve, one segment per data span
     std::vector<double> k;  ///< k_i, one per join (closed: per segment, wrapping)
-    Eigen::MatrixXd B;  ///< B_i of eq (20), one row per segment
-    Eigen::MatrixXd C;  ///< C_i of eq (20), one row per segment
+    Eigen::MatrixXd B;      ///< B_i of eq (20), one row per segment
+    Eigen::MatrixXd C;      ///< C_i of eq (20), one row per segment
     /// dτ/dt of each segment: |A_i| (chord scale, as chord_lengths computes it) or 1 (unit scale).
     std::vector<double> span_lengths;
 };
 
-/// The C2 spline of eq (18)–(20) through the points; InvalidInput for fewer than 2 points (3 closed) or repeated consecutive points.
+/// The C2 spline of eq (18)–(20) through the points; InvalidInput for fewer than 2 points (3 closed) or repeated
+/// consecutive points.
 HosakaSpline hosaka_c2_spline(const PointList& points, const HosakaSplineOptions& options = {});
 /// The same through points validated already (options.closed as they were validated): the same
 /// curve, the points not checked again where their checks cover this construction's.
@@ -116,14 +118,15 @@ HosakaCurve hosaka_spline(const ValidPoints& points, int m, const HosakaSplineOp
 /// The explicit form y(x), z(x) (eq 21–23): on [x_{i−1}, x_i] with u = (x − x_{i−1})/l, l = x_i − x_{i−1},
 ///     (y, z)(x) = Σ_{j=0}^{1} { (y, z)_{i−1}^{(j)} p_j(1, u) + (y, z)_i^{(j)} q_j(1, u) } l^j      (21, 22)
 /// with the slopes y'_i from the C2 conditions at the interior abscissae,
-///     y'_{i−1}/h_{i−1} + 2(1/h_{i−1} + 1/h_i) y'_i + y'_{i+1}/h_i = 3 (y_i − y_{i−1})/h_{i−1}² + 3 (y_{i+1} − y_i)/h_i²
+///     y'_{i−1}/h_{i−1} + 2(1/h_{i−1} + 1/h_i) y'_i + y'_{i+1}/h_i = 3 (y_i − y_{i−1})/h_{i−1}² + 3 (y_{i+1} −
+///     y_i)/h_i²
 /// (eq 23 with the squares the printed right-hand side lacks: erratum hosaka-E4), h_i = x_{i+1} − x_i,
 /// and natural ends y'' = 0 (2y'_0 + y'_1 = 3(y_1 − y_0)/h_0, y'_{n−1} + 2y'_n = 3(y_n − y_{n−1})/h_{n−1}).
 /// Each column of `values` (y, or y and z) is one function of x. This curve minimises
 /// ∫ (y''² + z''²) dx among interpolants (eq 24; checked by perturbation in the experiment).
 /// Preconditions: strictly increasing finite abscissae, ≥ 2 of them, one value row per abscissa.
 struct ExplicitSpline {
-    std::vector<double> x;  ///< the abscissae x_0 < … < x_n
+    std::vector<double> x;   ///< the abscissae x_0 < … < x_n
     Eigen::MatrixXd values;  ///< the values at the abscissae, one row per abscissa
     Eigen::MatrixXd slopes;  ///< the x-derivatives at the abscissae, one row per abscissa
     /// k-th x-derivative (k ≤ 3) at x ∈ [x_0, x_n] (InvalidInput outside); at an interior abscissa

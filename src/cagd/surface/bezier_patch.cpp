@@ -41,7 +41,8 @@ Eigen::MatrixXd basis_rows(int d, const std::vector<double>& ts, int order) {
 
 void check_parameters(const std::vector<double>& ts, const char* name) {
     for (double t : ts)
-        if (!(t >= 0.0 && t <= 1.0)) fail_input(kPatchWho, std::string(name) + " = " + full_precision(t) + " outside [0, 1]");
+        if (!(t >= 0.0 && t <= 1.0))
+            fail_input(kPatchWho, std::string(name) + " = " + full_precision(t) + " outside [0, 1]");
 }
 
 }  // namespace
@@ -58,14 +59,16 @@ BezierPatch::BezierPatch(ControlNet net) : net_(std::move(net)) {
     if (net_[0].rows() < 1 || net_[0].cols() < 1) fail_input(kPatchWho, "empty control net");
     for (const Eigen::MatrixXd& c : net_) {
         if (c.rows() != net_[0].rows() || c.cols() != net_[0].cols())
-            fail_input(kPatchWho, "coordinate matrices of different sizes (" + std::to_string(c.rows()) + "x" + std::to_string(c.cols()) + " vs " + std::to_string(net_[0].rows()) +
-                                      "x" + std::to_string(net_[0].cols()) + ")");
+            fail_input(kPatchWho, "coordinate matrices of different sizes (" + std::to_string(c.rows()) + "x" +
+                                      std::to_string(c.cols()) + " vs " + std::to_string(net_[0].rows()) + "x" +
+                                      std::to_string(net_[0].cols()) + ")");
         if (!c.allFinite()) fail_input(kPatchWho, "control points must be finite");
     }
 }
 
 Eigen::Vector3d BezierPatch::control_point(int i, int j) const {
-    if (i < 0 || j < 0 || i > degree_u() || j > degree_v()) fail_input(kPatchWho, "control point (" + std::to_string(i) + ", " + std::to_string(j) + ") outside the net");
+    if (i < 0 || j < 0 || i > degree_u() || j > degree_v())
+        fail_input(kPatchWho, "control point (" + std::to_string(i) + ", " + std::to_string(j) + ") outside the net");
     return {net_[0](i, j), net_[1](i, j), net_[2](i, j)};
 }
 
@@ -81,7 +84,9 @@ SurfaceGrid BezierPatch::evaluate_grid(const std::vector<double>& us, const std:
     for (std::size_t c = 0; c < 3; ++c) {
         std::array<Eigen::MatrixXd, 3> left;  // Bu_k · P_c
         for (std::size_t k = 0; k < 3; ++k) left[k] = bu[k] * net_[c];
-        for (std::size_t q = 0; q < 6; ++q) g.quantity[q][c] = left[static_cast<std::size_t>(orders[q][0])] * bv[static_cast<std::size_t>(orders[q][1])].transpose();
+        for (std::size_t q = 0; q < 6; ++q)
+            g.quantity[q][c] =
+                left[static_cast<std::size_t>(orders[q][0])] * bv[static_cast<std::size_t>(orders[q][1])].transpose();
     }
     return g;
 }
@@ -101,7 +106,8 @@ analysis::SurfaceJet2 BezierPatch::jet_de_casteljau(double u, double v) const {
         const Eigen::MatrixXd jv = BezierCurve(row).jet(v, 2);
         for (std::size_t r = 0; r < 3; ++r) q[r].row(i) = jv.row(static_cast<Eigen::Index>(r));
     }
-    const Eigen::MatrixXd j0 = BezierCurve(q[0]).jet(u, 2), j1 = BezierCurve(q[1]).jet(u, 1), j2 = BezierCurve(q[2]).jet(u, 0);
+    const Eigen::MatrixXd j0 = BezierCurve(q[0]).jet(u, 2), j1 = BezierCurve(q[1]).jet(u, 1),
+                          j2 = BezierCurve(q[2]).jet(u, 0);
     analysis::SurfaceJet2 j;
     j.s = j0.row(0).transpose();
     j.su = j0.row(1).transpose();

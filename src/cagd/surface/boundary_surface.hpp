@@ -52,16 +52,17 @@ using DerivativeFunction = std::function<double(double x, int k)>;
 
 /// Simple boundary data with exact derivatives of every order.
 DerivativeFunction constant_function(double c);
-DerivativeFunction polynomial_function(std::vector<double> coefficients);                          ///< Σ c_k x^k
-DerivativeFunction sinusoid(double amplitude, double frequency, double phase, double offset = 0);  ///< offset + A sin(ω x + φ)
+DerivativeFunction polynomial_function(std::vector<double> coefficients);  ///< Σ c_k x^k
+DerivativeFunction sinusoid(double amplitude, double frequency, double phase,
+                            double offset = 0);  ///< offset + A sin(ω x + φ)
 /// Column `column` of an explicit spline (eq 21–23); piecewise cubic, so derivatives beyond 3 are 0
 /// (at an interior abscissa, those of the interval to its right).
 DerivativeFunction explicit_spline_function(std::shared_ptr<const spline::ExplicitSpline> spline, int column);
 
 /// A boundary line of eq (31): y = y_k(x) over [x_min, x_max] with the cross-boundary derivatives ζ^{(0,j)} along it.
 struct BoundaryCurve {
-    double x_min = 0.0;  ///< first x
-    double x_max = 1.0;  ///< last x
+    double x_min = 0.0;                   ///< first x
+    double x_max = 1.0;                   ///< last x
     DerivativeFunction y;                 ///< y_k(x)
     std::vector<DerivativeFunction> phi;  ///< phi[j] = ζ^{(0,j)}(x, y_k(x)), j = 0..m (phi[0] = z_k(x))
 };
@@ -106,8 +107,9 @@ private:
 
 /// The four brackets of eq (40), exact, for basis index j of order m: k = 0 multiplies ζ^{(i,j)}(x, y_0),
 /// k = 1 multiplies ζ^{(i,j)}(x, y_1); s = 0 is the coefficient of y_0', s = 1 of y_1'. As derived:
-///   k=0, s=0: −j p_j + p_{j−1} + p_j'·(v−1) + p_j^{(m+1)}(m, 0) p_m      k=0, s=1: j p_j − p_j'·v + p_j^{(m+1)}(m, 1) q_m
-///   k=1, s=0: −j q_j + q_j'·(v−1) + q_j^{(m+1)}(m, 0) p_m                 k=1, s=1: j q_j + q_{j−1} − q_j'·v + q_j^{(m+1)}(m, 1) q_m
+///   k=0, s=0: −j p_j + p_{j−1} + p_j'·(v−1) + p_j^{(m+1)}(m, 0) p_m      k=0, s=1: j p_j − p_j'·v + p_j^{(m+1)}(m, 1)
+///   q_m k=1, s=0: −j q_j + q_j'·(v−1) + q_j^{(m+1)}(m, 0) p_m                 k=1, s=1: j q_j + q_{j−1} − q_j'·v +
+///   q_j^{(m+1)}(m, 1) q_m
 /// (p_{−1} = q_{−1} = 0). The paper: "by (10) always 0" (erratum hosaka-E7 for the printed form).
 RationalPolynomial identity40_bracket(int m, int j, int k, int s);
 

@@ -48,7 +48,8 @@ namespace cagd::surface {
 /// S_kl^{(i,j)} for k, l ∈ {0, 1}, i, j = 0..m, each a vector of `dimension` coordinates (zero at first).
 class CornerDerivatives {
 public:
-    /// Storage for the derivatives ζ^{(i,j)} (i, j = 0..m) at the four corners (k, l) ∈ {0, 1}², vectors of `dimension` coordinates, all zero.
+    /// Storage for the derivatives ζ^{(i,j)} (i, j = 0..m) at the four corners (k, l) ∈ {0, 1}², vectors of `dimension`
+    /// coordinates, all zero.
     CornerDerivatives(int m, int dimension);
     /// m.
     int m() const { return m_; }
@@ -128,7 +129,8 @@ Eigen::MatrixXd unit_edge_jet(const Curve& edge, double s, int order);
 class CartesianSurface {
 public:
     /// node_derivatives[a + (I+1) b] (node (x_a, y_b)): (m+1) × (m+1) matrix, entry (i, j) = ζ^{(i,j)}.
-    CartesianSurface(int m, std::vector<double> x, std::vector<double> y, std::vector<Eigen::MatrixXd> node_derivatives);
+    CartesianSurface(int m, std::vector<double> x, std::vector<double> y,
+                     std::vector<Eigen::MatrixXd> node_derivatives);
     /// m.
     int m() const { return basis_.m(); }
     /// The grid's x lines.
@@ -152,11 +154,13 @@ private:
 /// Edges through point lists (2-D or 3-D): each the C2 spline of eq (20) (chord scale, natural ends);
 /// bottom = R1 (v = 0), left = R2 (u = 0), top = R3 (v = 1), right = R4 (u = 1). The corners must
 /// coincide (EdgeFormPatch checks it).
-PatchEdges edges_through_points(const PointList& bottom, const PointList& left, const PointList& top, const PointList& right);
+PatchEdges edges_through_points(const PointList& bottom, const PointList& left, const PointList& top,
+                                const PointList& right);
 
 /// m = 1 Cartesian surface through heights z(a, b) = ζ(x_a, y_b) (rows: x, columns: y), node
 /// derivatives from natural splines (eq 23) along the grid lines as described above.
-CartesianSurface cartesian_spline_surface(const std::vector<double>& x, const std::vector<double>& y, const Eigen::MatrixXd& z);
+CartesianSurface cartesian_spline_surface(const std::vector<double>& x, const std::vector<double>& y,
+                                          const Eigen::MatrixXd& z);
 /// The same from rows (x, y, z) in any order that cover a rectangular grid exactly once.
 CartesianSurface cartesian_spline_surface(const PointList& xyz);
 

@@ -39,7 +39,9 @@ int main(int argc, char** argv) {
     int rank = 0, size = 1;
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
     MPI_Comm_size(MPI_COMM_WORLD, &size);
-    CLI::App app{"The interpolant benchmark of cagd on MPI ranks: each rank a share, rank 0 writes --out as cagd benchmark does", "cagd_benchmark_mpi"};
+    CLI::App app{
+        "The interpolant benchmark of cagd on MPI ranks: each rank a share, rank 0 writes --out as cagd benchmark does",
+        "cagd_benchmark_mpi"};
     cli::BenchmarkPlanArgs args;
     std::string out_path, timing_path;
     app.add_option("--out", out_path, "directory for the benchmark's files (as cagd benchmark --out)")->required();
@@ -72,16 +74,20 @@ int main(int argc, char** argv) {
         return code < 0 ? 0 : code;
     }
     const compare::WorkShare share{rank, size};
-    const std::string part = compare::benchmark_part_text(plan, share, compare::run_benchmark(plan, share, args.threads));
+    const std::string part =
+        compare::benchmark_part_text(plan, share, compare::run_benchmark(plan, share, args.threads));
     int length = static_cast<int>(part.size());
     std::vector<int> lengths(static_cast<std::size_t>(size)), offsets(static_cast<std::size_t>(size));
     MPI_Gather(&length, 1, MPI_INT, lengths.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
     std::vector<char> all;
     if (rank == 0) {
         long total = 0;
-        for (int r = 0; r < size; ++r) offsets[static_cast<std::size_t>(r)] = static_cast<int>(total), total += lengths[static_cast<std::size_t>(r)];
+        for (int r = 0; r < size; ++r)
+            offsets[static_cast<std::size_t>(r)] = static_cast<int>(total),
+            total += lengths[static_cast<std::size_t>(r)];
         if (total > 2147483647L) {  // MPI counts are int: a plan this large is split into --part runs instead
-            std::cerr << "cagd_benchmark_mpi: the parts hold " << total << " bytes together, more than one gather carries; use cagd benchmark --part and --merge\n";
+            std::cerr << "cagd_benchmark_mpi: the parts hold " << total
+                      << " bytes together, more than one gather carries; use cagd benchmark --part and --merge\n";
             MPI_Abort(MPI_COMM_WORLD, 1);
         }
         all.resize(static_cast<std::size_t>(total));
@@ -92,7 +98,9 @@ int main(int argc, char** argv) {
         try {
             std::vector<std::pair<std::string, std::string>> parts;
             for (int r = 0; r < size; ++r)
-                parts.emplace_back("rank " + std::to_string(r), std::string(all.data() + offsets[static_cast<std::size_t>(r)], static_cast<std::size_t>(lengths[static_cast<std::size_t>(r)])));
+                parts.emplace_back("rank " + std::to_string(r),
+                                   std::string(all.data() + offsets[static_cast<std::size_t>(r)],
+                                               static_cast<std::size_t>(lengths[static_cast<std::size_t>(r)])));
             const compare::BenchmarkResults results = compare::merge_benchmark_parts(plan, parts);
             cli::stage_benchmark_files(*out, compare::benchmark_files(plan, results));
             out->commit();

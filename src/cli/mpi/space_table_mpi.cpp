@@ -17,8 +17,8 @@
 #include <vector>
 
 #include "cagd/core/errors.hpp"
-#include "cagd/io/output_file.hpp"
 #include "cagd/fairness/space_pseudo_energy_table.hpp"
+#include "cagd/io/output_file.hpp"
 
 using namespace cagd;
 using namespace cagd::fairness;
@@ -43,7 +43,8 @@ int parse_int(const std::string& option, const std::string& text, int lo, int hi
         used = 0;
     }
     if (used != text.size() || v < lo || v > hi)
-        fail_input("cagd_space_table_mpi", option + " '" + text + "': expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+        fail_input("cagd_space_table_mpi", option + " '" + text + "': expected an integer in [" + std::to_string(lo) +
+                                               ", " + std::to_string(hi) + "]");
     return v;
 }
 
@@ -51,7 +52,10 @@ Args parse(int argc, char** argv) {
     Args a;
     for (int i = 1; i < argc; ++i) {
         const std::string o = argv[i];
-        if (i + 1 >= argc) fail_input("cagd_space_table_mpi", o + " needs a value (usage: --n-theta N --n-phi M [--method fast|reference] [--threads T] --out FILE)");
+        if (i + 1 >= argc)
+            fail_input(
+                "cagd_space_table_mpi",
+                o + " needs a value (usage: --n-theta N --n-phi M [--method fast|reference] [--threads T] --out FILE)");
         const std::string v = argv[++i];
         if (o == "--n-theta")
             a.grid.n_theta = parse_int(o, v, 2, 2000);
@@ -60,14 +64,16 @@ Args parse(int argc, char** argv) {
         else if (o == "--threads")
             a.threads = parse_int(o, v, 1, 1024);
         else if (o == "--method") {
-            if (v != "fast" && v != "reference") fail_input("cagd_space_table_mpi", "--method '" + v + "': expected fast or reference");
+            if (v != "fast" && v != "reference")
+                fail_input("cagd_space_table_mpi", "--method '" + v + "': expected fast or reference");
             a.method = v == "fast" ? TableMethod::fast : TableMethod::reference;
         } else if (o == "--out")
             a.out = v;
         else
             fail_input("cagd_space_table_mpi", "unknown option '" + o + "'");
     }
-    if (a.grid.n_theta == 0 || a.grid.n_phi == 0 || a.out.empty()) fail_input("cagd_space_table_mpi", "--n-theta, --n-phi and --out are required");
+    if (a.grid.n_theta == 0 || a.grid.n_phi == 0 || a.out.empty())
+        fail_input("cagd_space_table_mpi", "--n-theta, --n-phi and --out are required");
     SpacePseudoEnergyTable::orbit_nodes(a.grid);  // checks the grid
     return a;
 }
@@ -97,18 +103,21 @@ int main(int argc, char** argv) {
     const long orbits = static_cast<long>(SpacePseudoEnergyTable::orbit_nodes(a.grid).size());
     const auto block_start = [&](int r) { return orbits * r / size; };
     const long begin = block_start(rank), end = block_start(rank + 1);
-    const std::vector<SpacePseudoEnergyMinimum> mine = SpacePseudoEnergyTable::compute_orbits(a.grid, a.method, begin, end, a.threads);
+    const std::vector<SpacePseudoEnergyMinimum> mine =
+        SpacePseudoEnergyTable::compute_orbits(a.grid, a.method, begin, end, a.threads);
     std::vector<double> packed;
     packed.reserve(mine.size() * kFields);
     for (const SpacePseudoEnergyMinimum& m : mine)
-        packed.insert(packed.end(), {m.pseudo_energy, m.r0, m.r1, m.length, static_cast<double>(static_cast<int>(m.type)), m.outcome.ok() ? 1.0 : 0.0});
+        packed.insert(packed.end(), {m.pseudo_energy, m.r0, m.r1, m.length,
+                                     static_cast<double>(static_cast<int>(m.type)), m.outcome.ok() ? 1.0 : 0.0});
     std::vector<int> counts(static_cast<std::size_t>(size)), offsets(static_cast<std::size_t>(size));
     for (int r = 0; r < size; ++r) {
         counts[static_cast<std::size_t>(r)] = static_cast<int>((block_start(r + 1) - block_start(r)) * kFields);
         offsets[static_cast<std::size_t>(r)] = static_cast<int>(block_start(r) * kFields);
     }
     std::vector<double> all(rank == 0 ? static_cast<std::size_t>(orbits * kFields) : 0);
-    MPI_Gatherv(packed.data(), static_cast<int>(packed.size()), MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, 0, MPI_COMM_WORLD);
+    MPI_Gatherv(packed.data(), static_cast<int>(packed.size()), MPI_DOUBLE, all.data(), counts.data(), offsets.data(),
+                MPI_DOUBLE, 0, MPI_COMM_WORLD);
     int status = 0;
     if (rank == 0) {
         std::vector<SpacePseudoEnergyMinimum> minima(static_cast<std::size_t>(orbits));

@@ -42,19 +42,20 @@ struct OpenCascadeBSpline {
 struct OpenCascadePlugin {
     const char* interface = nullptr;  ///< kOpenCascadePluginInterface of the plugin's build
     /// GeomAPI_Interpolate through the rows of `points` (3 columns; 2 columns: Geom2dAPI_Interpolate,
-    /// the same curve bit for bit as with z = 0) mapped to (point − centre) / scale (`centre` has a coordinate per column), periodic when
-    /// `closed`, mapped points closer than `tolerance` coincident; the curve is mapped back (knots
-    /// · scale, poles · scale + centre) and a periodic one returned in its clamped form
-    /// (SetNotPeriodic). The maps are done here, point by point, so that neither side holds a
-    /// mapped copy of every point. False with `message` when OpenCASCADE fails.
-    bool (*interpolate)(const Eigen::MatrixXd& points, const Eigen::RowVectorXd& centre, double scale, bool closed, double tolerance, OpenCascadeBSpline& curve,
-                        std::string& message) = nullptr;
+    /// the same curve bit for bit as with z = 0) mapped to (point − centre) / scale (`centre` has a coordinate per
+    /// column), periodic when `closed`, mapped points closer than `tolerance` coincident; the curve is mapped back
+    /// (knots · scale, poles · scale + centre) and a periodic one returned in its clamped form (SetNotPeriodic). The
+    /// maps are done here, point by point, so that neither side holds a mapped copy of every point. False with
+    /// `message` when OpenCASCADE fails.
+    bool (*interpolate)(const Eigen::MatrixXd& points, const Eigen::RowVectorXd& centre, double scale, bool closed,
+                        double tolerance, OpenCascadeBSpline& curve, std::string& message) = nullptr;
     /// The STEP (AP214) text of one edge on the curve; false with `message` when OpenCASCADE fails.
     bool (*step_curve)(const OpenCascadeBSpline& curve, std::string& step, std::string& message) = nullptr;
     /// The STEP text of one face on the B-spline surface of degrees (du, dv), knot vectors ku, kv and
     /// control coordinates x, y, z (each nu × nv); false with `message` when OpenCASCADE fails.
-    bool (*step_surface)(int du, int dv, const std::vector<double>& ku, const std::vector<double>& kv, const Eigen::MatrixXd& x, const Eigen::MatrixXd& y,
-                         const Eigen::MatrixXd& z, std::string& step, std::string& message) = nullptr;
+    bool (*step_surface)(int du, int dv, const std::vector<double>& ku, const std::vector<double>& kv,
+                         const Eigen::MatrixXd& x, const Eigen::MatrixXd& y, const Eigen::MatrixXd& z,
+                         std::string& step, std::string& message) = nullptr;
     int max_surface_degree = 0;  ///< Geom_BSplineSurface::MaxDegree()
 };
 

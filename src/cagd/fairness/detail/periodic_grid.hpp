@@ -19,7 +19,8 @@ struct PeriodicAxis {
     double inv_h = 0.0;
 
     PeriodicAxis() = default;
-    explicit PeriodicAxis(std::vector<double> x) : nodes(std::move(x)), inv_h(nodes.size() > 1 ? 1.0 / (nodes[1] - nodes[0]) : 0.0) {}
+    explicit PeriodicAxis(std::vector<double> x)
+        : nodes(std::move(x)), inv_h(nodes.size() > 1 ? 1.0 / (nodes[1] - nodes[0]) : 0.0) {}
 
     // Cell of `theta`: i = the last node ≤ theta (wrapping to the last cell for theta beyond the
     // last node) and the fraction u ∈ [0, 1] across the cell, toward node next_node(i, n) (2π added

@@ -11,8 +11,8 @@
 #endif
 
 #include <Eigen/Dense>
-#include <boost/math/tools/minima.hpp>
 #include <algorithm>
+#include <boost/math/tools/minima.hpp>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -59,7 +59,9 @@ std::vector<ScanPoint> scan_minima(const ScanEnergy& j_at, const ScanBox& box, l
             for (int da = -1; da <= 1 && minimum; ++da)
                 for (int db = -1; db <= 1; ++db) {
                     const int x = a + da, y = b + db;
-                    if ((da || db) && x >= 0 && y >= 0 && x < n && y < n && grid[static_cast<std::size_t>(x * n + y)] < v) minimum = false;
+                    if ((da || db) && x >= 0 && y >= 0 && x < n && y < n &&
+                        grid[static_cast<std::size_t>(x * n + y)] < v)
+                        minimum = false;
                 }
             if (minimum) out.push_back({v, rho(a), rho(b)});
         }
@@ -68,7 +70,8 @@ std::vector<ScanPoint> scan_minima(const ScanEnergy& j_at, const ScanBox& box, l
     // lowest grid points lying more than two cells from every seed so far (three of them).
     std::vector<int> order(static_cast<std::size_t>(n * n));
     for (int k = 0; k < n * n; ++k) order[static_cast<std::size_t>(k)] = k;
-    std::sort(order.begin(), order.end(), [&](int p, int q) { return grid[static_cast<std::size_t>(p)] < grid[static_cast<std::size_t>(q)]; });
+    std::sort(order.begin(), order.end(),
+              [&](int p, int q) { return grid[static_cast<std::size_t>(p)] < grid[static_cast<std::size_t>(q)]; });
     const double step = (hi - lo) / (n - 1);
     int extra = 0;
     for (int k : order) {
@@ -86,7 +89,8 @@ std::vector<ScanPoint> scan_minima(const ScanEnergy& j_at, const ScanBox& box, l
     // points towards r → 0 have far higher J unless the minimum really lies out there).
     if (!out.empty()) {
         const double limit = 2.0 * out.front().j;
-        out.erase(std::remove_if(out.begin() + 1, out.end(), [&](const ScanPoint& p) { return p.j > limit; }), out.end());
+        out.erase(std::remove_if(out.begin() + 1, out.end(), [&](const ScanPoint& p) { return p.j > limit; }),
+                  out.end());
     }
     return out;
 }
@@ -149,7 +153,8 @@ constexpr int kCensusBrentBits = 20;
 constexpr double kCensusGradient = 1e-6;
 inline bool same_census_minimum(double j_a, double rho0_a, double rho1_a, double j_b, double rho0_b, double rho1_b) {
     const double d = std::max(std::abs(rho0_a - rho0_b), std::abs(rho1_a - rho1_b));
-    return d < kCensusSameMinimum || (d < kCensusSameValley && std::abs(j_a - j_b) <= kCensusSameJ * (1.0 + std::abs(j_a)));
+    return d < kCensusSameMinimum ||
+           (d < kCensusSameValley && std::abs(j_a - j_b) <= kCensusSameJ * (1.0 + std::abs(j_a)));
 }
 // The independent multistart (local_minima_multistart): BOBYQA to 1e-8 in ρ within the census's
 // box, at most 2000 evaluations a start (it needs about 100); the minimum test probes 1e-3 away in
@@ -176,22 +181,28 @@ std::vector<ScanPoint> census_seeds(const ScanEnergy& j_at, const ScanBox& box, 
     const auto rho = [&](int i) { return lo + step * i; };
     std::vector<double> grid(static_cast<std::size_t>(n * n));
     for (int a = 0; a < n; ++a)
-        for (int b = 0; b < n; ++b) grid[static_cast<std::size_t>(a * n + b)] = j_at(std::exp(rho(a)), std::exp(rho(b)));
+        for (int b = 0; b < n; ++b)
+            grid[static_cast<std::size_t>(a * n + b)] = j_at(std::exp(rho(a)), std::exp(rho(b)));
     evaluations += static_cast<long>(n) * n;
     std::vector<ScanPoint> out;
     for (int across = 0; across < 2; ++across) {
         // Line L holds the other coordinate at rho(L); position i along it is rho(i).
-        const auto value = [&](int line, int i) { return across == 0 ? grid[static_cast<std::size_t>(i * n + line)] : grid[static_cast<std::size_t>(line * n + i)]; };
+        const auto value = [&](int line, int i) {
+            return across == 0 ? grid[static_cast<std::size_t>(i * n + line)]
+                               : grid[static_cast<std::size_t>(line * n + i)];
+        };
         const auto energy = [&](int line, double x) {
             ++evaluations;
             return across == 0 ? j_at(std::exp(x), std::exp(rho(line))) : j_at(std::exp(rho(line)), std::exp(x));
         };
-        std::vector<std::vector<std::pair<double, double>>> floor(static_cast<std::size_t>(n));  // per line: (x, J) on the floor
+        std::vector<std::vector<std::pair<double, double>>> floor(
+            static_cast<std::size_t>(n));  // per line: (x, J) on the floor
         for (int line = 0; line < n; ++line)
             for (int i = 1; i + 1 < n; ++i) {
                 const double v = value(line, i);
                 if (!std::isfinite(v) || v > value(line, i - 1) || v > value(line, i + 1)) continue;
-                const auto [x, j] = boost::math::tools::brent_find_minima([&](double t) { return energy(line, t); }, rho(i - 1), rho(i + 1), kCensusBrentBits);
+                const auto [x, j] = boost::math::tools::brent_find_minima([&](double t) { return energy(line, t); },
+                                                                          rho(i - 1), rho(i + 1), kCensusBrentBits);
                 floor[static_cast<std::size_t>(line)].emplace_back(x, std::min(j, v));
             }
         for (int line = 0; line < n; ++line)
@@ -199,7 +210,8 @@ std::vector<ScanPoint> census_seeds(const ScanEnergy& j_at, const ScanBox& box, 
                 bool lowest = true;
                 for (int other : {line - 1, line + 1})
                     if (other >= 0 && other < n)
-                        for (const auto& [y, k] : floor[static_cast<std::size_t>(other)]) lowest = lowest && !(std::abs(y - x) <= 2 * step && k < j);
+                        for (const auto& [y, k] : floor[static_cast<std::size_t>(other)])
+                            lowest = lowest && !(std::abs(y - x) <= 2 * step && k < j);
                 if (lowest) out.push_back(across == 0 ? ScanPoint{j, x, rho(line)} : ScanPoint{j, rho(line), x});
             }
     }
@@ -254,7 +266,8 @@ Descent newton_descent(const Energy& energy, double rho0, double rho1) {
             if (step.allFinite() && std::abs(xn[0]) < kLogMagnitudeLimit && std::abs(xn[1]) < kLogMagnitudeLimit) {
                 const SegmentEnergy en = energy(xn[0], xn[1]);
                 const bool lower = en.pseudo_energy < e.pseudo_energy;
-                const bool flatter = en.pseudo_energy <= e.pseudo_energy + kEnergyNoise * std::abs(e.pseudo_energy) && grad(en).norm() < g.norm();
+                const bool flatter = en.pseudo_energy <= e.pseudo_energy + kEnergyNoise * std::abs(e.pseudo_energy) &&
+                                     grad(en).norm() < g.norm();
                 if (lower || flatter) {
                     x = xn;
                     e = en;
@@ -269,7 +282,8 @@ Descent newton_descent(const Energy& energy, double rho0, double rho1) {
             break;
         }
     }
-    d.converged = d.converged || (std::isfinite(e.pseudo_energy) && grad(e).norm() <= kGradientConverged * (1.0 + e.pseudo_energy));
+    d.converged = d.converged ||
+                  (std::isfinite(e.pseudo_energy) && grad(e).norm() <= kGradientConverged * (1.0 + e.pseudo_energy));
     d.rho0 = x[0];
     d.rho1 = x[1];
     d.energy = e;
@@ -286,7 +300,8 @@ using SegmentEnergyAt = std::function<SegmentEnergy(double r0, double r1, bool w
 #if CAGD_WITH_CERES
 class RombergPseudoEnergy final : public ceres::FirstOrderFunction {
 public:
-    RombergPseudoEnergy(SegmentEnergyAt energy, long* evaluations) : energy_(std::move(energy)), evaluations_(evaluations) {}
+    RombergPseudoEnergy(SegmentEnergyAt energy, long* evaluations)
+        : energy_(std::move(energy)), evaluations_(evaluations) {}
     bool Evaluate(const double* rho, double* cost, double* gradient) const override {
         if (!(std::abs(rho[0]) < kLogMagnitudeLimit && std::abs(rho[1]) < kLogMagnitudeLimit)) return false;
         const SegmentEnergy e = energy_(std::exp(rho[0]), std::exp(rho[1]), gradient != nullptr);
@@ -309,7 +324,8 @@ private:
 // The reference descents from each start: Ceres CG (Polak–Ribière) on the Romberg energy, then
 // Newton on ∇J = 0 with the same Romberg gradients — CG's value-based line search stalls at
 // |∇J| ~ sqrt(quadrature noise), Newton takes the last digits.
-inline std::vector<Descent> reference_descents(const SegmentEnergyAt& romberg, const std::vector<ScanPoint>& starts, long& evaluations) {
+inline std::vector<Descent> reference_descents(const SegmentEnergyAt& romberg, const std::vector<ScanPoint>& starts,
+                                               long& evaluations) {
     // Ceres logs a warning each time CG restarts, which nearly converged CG does constantly.
     FLAGS_minloglevel = std::max(FLAGS_minloglevel, 2);
     std::vector<Descent> runs;
@@ -374,7 +390,8 @@ std::vector<const Descent*> census_minima(const std::vector<Descent>& runs, cons
             minimum = true;
             for (int a = -1; a <= 1 && minimum; ++a)
                 for (int b = -1; b <= 1; ++b)
-                    if ((a || b) && j_at(d.rho0 + a * kMultistartProbe, d.rho1 + b * kMultistartProbe) < d.j) minimum = false;
+                    if ((a || b) && j_at(d.rho0 + a * kMultistartProbe, d.rho1 + b * kMultistartProbe) < d.j)
+                        minimum = false;
         }
         if (!minimum) continue;
         bool seen = false;
@@ -408,7 +425,8 @@ Minimum choose_minimum(Minimum m, const std::vector<Descent>& runs, long evaluat
         m.runner_up_r1 = std::exp(distinct[1]->rho1);
     }
     if (std::min(m.r0, m.r1) < kRunawayLow || std::max(m.r0, m.r1) > kRunawayHigh)
-        m.outcome = {Status::no_solution, "minimiser runs off to the boundary of r > 0 (r0 = " + full_precision(m.r0) + ", r1 = " + full_precision(m.r1) + ")"};
+        m.outcome = {Status::no_solution, "minimiser runs off to the boundary of r > 0 (r0 = " + full_precision(m.r0) +
+                                              ", r1 = " + full_precision(m.r1) + ")"};
     return m;
 }
 

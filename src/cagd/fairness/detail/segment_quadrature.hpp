@@ -4,8 +4,8 @@
 // power-form coefficients of P'(t) = A + Bt + Ct²), first(t), second(t), r0(), r1(); an integrand
 // function integrand(const double* t, std::size_t m, Integrands* out) gives, at each of m points
 // t, the six values |P'|, κ²|P'| (the strain-energy density), and their derivatives with respect
-// to r0 and r1 (a batch, so the points of a piece can be evaluated together). Cusp detection and the graded breakpoints are those
-// described in hermite_segment.hpp.
+// to r0 and r1 (a batch, so the points of a piece can be evaluated together). Cusp detection and the graded breakpoints
+// are those described in hermite_segment.hpp.
 #include <algorithm>
 #include <array>
 #include <boost/container/small_vector.hpp>
@@ -185,7 +185,8 @@ SegmentEnergy energy_reference(const Segment& seg, const Integrand& integrand, d
     long evaluations = 0;
     Outcome outcome;
     for (std::size_t p = 0; p + 1 < br.size(); ++p) {
-        const numeric::RombergVectorResult<6> r = numeric::romberg_vector_batched<6>(integrand, br[p], br[p + 1], rel_tol, kRombergAbsTol, kRombergLevels);
+        const numeric::RombergVectorResult<6> r =
+            numeric::romberg_vector_batched<6>(integrand, br[p], br[p + 1], rel_tol, kRombergAbsTol, kRombergLevels);
         for (std::size_t c = 0; c < 6; ++c) {
             total[c] += r.value[c];
             err[c] += r.error_estimate[c];
@@ -203,7 +204,8 @@ SegmentEnergy energy_reference(const Segment& seg, const Integrand& integrand, d
 inline constexpr int kMaxFastRuleNodes = 20;
 template <class Segment, class Integrand>
 SegmentEnergy energy_fast(const Segment& seg, const Integrand& integrand, const numeric::GaussLegendreRule& rule) {
-    if (rule.size() > kMaxFastRuleNodes) fail_input("cagd::fairness::detail::energy_fast", "at most 20 rule nodes, got " + std::to_string(rule.size()));
+    if (rule.size() > kMaxFastRuleNodes)
+        fail_input("cagd::fairness::detail::energy_fast", "at most 20 rule nodes, got " + std::to_string(rule.size()));
     const SpeedMinimaList minima = detail::speed_minima(seg);
     if (cusp_among(seg, minima)) return cusp_energy();
     const BreakList br = breaks_for(seg, minima);
@@ -214,7 +216,8 @@ SegmentEnergy energy_fast(const Segment& seg, const Integrand& integrand, const 
         // All nodes of the piece first (independent evaluations), then the sums in node order.
         std::array<double, kMaxFastRuleNodes> t;
         std::array<Integrands, kMaxFastRuleNodes> v;
-        for (int i = 0; i < rule.size(); ++i) t[static_cast<std::size_t>(i)] = mid + half * rule.nodes()[static_cast<std::size_t>(i)];
+        for (int i = 0; i < rule.size(); ++i)
+            t[static_cast<std::size_t>(i)] = mid + half * rule.nodes()[static_cast<std::size_t>(i)];
         integrand(t.data(), static_cast<std::size_t>(rule.size()), v.data());
         for (int i = 0; i < rule.size(); ++i) {
             const double w = half * rule.weights()[static_cast<std::size_t>(i)];

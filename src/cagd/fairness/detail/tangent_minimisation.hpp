@@ -28,7 +28,8 @@ double minimise_w(const W& w, double lo, double hi, TangentOptimization mode, Ta
     if (hi - lo <= 0.0) return lo;
     if (mode == TangentOptimization::exact) {
         std::uintmax_t iters = 200;
-        const std::pair<double, double> found = boost::math::tools::brent_find_minima(w, lo, hi, std::numeric_limits<double>::digits / 2, iters);
+        const std::pair<double, double> found =
+            boost::math::tools::brent_find_minima(w, lo, hi, std::numeric_limits<double>::digits / 2, iters);
         const double x = found.first, wx = found.second;  // (not a structured binding: the lambdas below capture them)
         // J(θ) read linearly between a table's nodes makes w piecewise linear: where both of its
         // angles stay in one cell over a stretch, w is flat there and Brent stops anywhere in it,
@@ -83,7 +84,8 @@ double minimise_w(const W& w, double lo, double hi, TangentOptimization mode, Ta
 // can give w two mirror-image minima, equal but for rounding: taking the least value outright would
 // let rounding choose between them, and a rotated copy of the points could take the other one.)
 template <class W>
-double minimise_piecewise_linear_w(const W& w, double lo, double hi, double tau, const std::vector<double>& nodes, TangentTie tie = {}) {
+double minimise_piecewise_linear_w(const W& w, double lo, double hi, double tau, const std::vector<double>& nodes,
+                                   TangentTie tie = {}) {
     if (hi - lo <= 0.0) return lo;
     std::vector<double> at{lo, hi};
     constexpr double two_pi = 2 * std::numbers::pi;

@@ -47,7 +47,8 @@ struct DesignWorkspace {
 
 /// design_system (f and, asked, J) into `out`, reusing `workspace` and out's J where its pattern
 /// holds.
-void design_system_into(const CurvatureProfileProblem& P, const Eigen::VectorXd& u, bool with_jacobian, DesignWorkspace& workspace, DesignSystem& out);
+void design_system_into(const CurvatureProfileProblem& P, const Eigen::VectorXd& u, bool with_jacobian,
+                        DesignWorkspace& workspace, DesignSystem& out);
 
 /// The label of the equation with the largest |f_i|, with that value.
 std::string worst_equation(const CurvatureProfileProblem& P, const Eigen::VectorXd& f);

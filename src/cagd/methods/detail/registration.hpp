@@ -37,7 +37,8 @@ using P = ParameterType;
 
 // A curve whose data points sit at u = 0, 1, …, nodes − 1, with dτ/du per span: the form in which
 // the builders hand their curves to the registry.
-inline Interpolant unit_span_interpolant(std::shared_ptr<const Curve> curve, Eigen::Index nodes, std::vector<double> dtau_du) {
+inline Interpolant unit_span_interpolant(std::shared_ptr<const Curve> curve, Eigen::Index nodes,
+                                         std::vector<double> dtau_du) {
     std::vector<double> u(static_cast<std::size_t>(nodes));
     for (std::size_t i = 0; i < u.size(); ++i) u[i] = static_cast<double>(i);
     return {std::move(curve), std::move(u), std::move(dtau_du)};
@@ -47,7 +48,9 @@ inline Interpolant unit_span_interpolant(std::shared_ptr<const Curve> curve, Eig
 inline Eigen::Index node_count(const PointList& p, bool closed) { return closed ? p.rows() + 1 : p.rows(); }
 
 // dτ/du = 1 on every span: the curve's parameter is its own τ.
-inline std::vector<double> unit_lengths(const PointList& p, bool closed) { return std::vector<double>(static_cast<std::size_t>(node_count(p, closed) - 1), 1.0); }
+inline std::vector<double> unit_lengths(const PointList& p, bool closed) {
+    return std::vector<double>(static_cast<std::size_t>(node_count(p, closed) - 1), 1.0);
+}
 
 inline InterpolationResult result_of(Interpolant i) {
     InterpolationResult r;

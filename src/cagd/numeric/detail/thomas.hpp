@@ -28,7 +28,9 @@ namespace detail {
 template <int Cols, class Row>
 void thomas_rows(const char* who, std::size_t n, std::size_t runtime_cols, Row&& row, double* x) {
     const std::size_t cols = Cols > 0 ? static_cast<std::size_t>(Cols) : runtime_cols;
-    const auto zero_pivot = [&](std::size_t r) { fail_input(who, "zero pivot at row " + std::to_string(r) + " (the matrix needs pivoting)"); };
+    const auto zero_pivot = [&](std::size_t r) {
+        fail_input(who, "zero pivot at row " + std::to_string(r) + " (the matrix needs pivoting)");
+    };
     std::vector<double> c;  // filled in order, without zeroing it first
     c.reserve(n);
     TridiagonalRow a = row(std::size_t{0}, x, n);

@@ -19,23 +19,29 @@ using Sparse = Eigen::SparseMatrix<double>;
 using Triplets = std::vector<Eigen::Triplet<double>>;
 
 // Validates the grid and heights; returns λ expanded to one per node.
-inline Eigen::MatrixXd node_lambda(const std::vector<double>& x, const std::vector<double>& y, const Eigen::MatrixXd& a, const Eigen::MatrixXd& lambda, bool allow_zero, const char* who) {
+inline Eigen::MatrixXd node_lambda(const std::vector<double>& x, const std::vector<double>& y, const Eigen::MatrixXd& a,
+                                   const Eigen::MatrixXd& lambda, bool allow_zero, const char* who) {
     require_increasing(x, 2, "x", who);
     require_increasing(y, 2, "y", who);
     const Eigen::Index nx = static_cast<Eigen::Index>(x.size()), ny = static_cast<Eigen::Index>(y.size());
     if (a.rows() != nx || a.cols() != ny)
-        fail_input(who, "heights must be " + std::to_string(nx) + " x " + std::to_string(ny) + " (x by y), got " + std::to_string(a.rows()) + " x " + std::to_string(a.cols()));
+        fail_input(who, "heights must be " + std::to_string(nx) + " x " + std::to_string(ny) + " (x by y), got " +
+                            std::to_string(a.rows()) + " x " + std::to_string(a.cols()));
     for (Eigen::Index i = 0; i < nx; ++i)
         for (Eigen::Index j = 0; j < ny; ++j)
-            if (!std::isfinite(a(i, j))) fail_input(who, "height at node (" + std::to_string(i) + ", " + std::to_string(j) + ") is " + full_precision(a(i, j)));
+            if (!std::isfinite(a(i, j)))
+                fail_input(who, "height at node (" + std::to_string(i) + ", " + std::to_string(j) + ") is " +
+                                    full_precision(a(i, j)));
     const bool scalar = lambda.rows() == 1 && lambda.cols() == 1;
     if (!scalar && (lambda.rows() != nx || lambda.cols() != ny))
-        fail_input(who, "lambda must be one value or one per node (" + std::to_string(nx) + " x " + std::to_string(ny) + ")");
+        fail_input(
+            who, "lambda must be one value or one per node (" + std::to_string(nx) + " x " + std::to_string(ny) + ")");
     Eigen::MatrixXd out = scalar ? Eigen::MatrixXd::Constant(nx, ny, lambda(0, 0)) : lambda;
     for (Eigen::Index i = 0; i < nx; ++i)
         for (Eigen::Index j = 0; j < ny; ++j)
             if (!std::isfinite(out(i, j)) || out(i, j) < 0.0 || (!allow_zero && out(i, j) == 0.0))
-                fail_input(who, "lambda at node (" + std::to_string(i) + ", " + std::to_string(j) + ") is " + full_precision(out(i, j)) +
+                fail_input(who, "lambda at node (" + std::to_string(i) + ", " + std::to_string(j) + ") is " +
+                                    full_precision(out(i, j)) +
                                     (allow_zero ? "; it must be finite and >= 0" : "; it must be finite and > 0"));
     return out;
 }
