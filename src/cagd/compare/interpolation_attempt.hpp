@@ -39,9 +39,11 @@ struct InterpolationAttempt {
     AttemptStatus status = AttemptStatus::ok;  ///< its outcome
     std::string note;                          ///< why not ok (empty when ok)
     methods::InterpolationResult result;       ///< the curve when ok
-    /// Wall time of Method::prepare (the tables a method shares between builds, loaded from the
-    /// user's cache or built) and of the build itself; not deterministic. Both 0 when not applicable.
-    double prepare_seconds = 0.0, build_seconds = 0.0;
+    /// Wall time of Method::prepare: the tables a method shares between builds, loaded from the
+    /// user's cache or built (not deterministic; 0 when not applicable).
+    double prepare_seconds = 0.0;
+    /// Wall time of the build itself (not deterministic; 0 when not applicable or refused).
+    double build_seconds = 0.0;
 };
 /// `configuration` on `points` (open or closed), classified; never throws for a method's refusal.
 /// With `start` (an earlier build's solver_state for as many points), the solve starts there
