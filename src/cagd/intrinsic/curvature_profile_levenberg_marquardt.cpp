@@ -53,12 +53,7 @@ CurvatureProfileSolution solve_curvature_profile_levenberg_marquardt(const Curva
     require_valid_problem(P, who);
     require_built_with(OptionalDependency::ceres, who);
 #if CAGD_WITH_CERES
-    CurvatureProfileSolution sol;
-    sol.unknowns = design_unknowns(P);
-    sol.equations = design_equations(P);
-    if (start.size() != sol.unknowns)
-        fail_input(who, "start vector needs " + std::to_string(sol.unknowns) + " entries (eq 2), got " +
-                            std::to_string(start.size()));
+    CurvatureProfileSolution sol = detail::sized_solution(P, start, who);
     sol.u = start;
     auto* cost =
         new ceres::DynamicNumericDiffCostFunction<DesignResidual, ceres::CENTRAL>(new DesignResidual{&P, sol.unknowns});

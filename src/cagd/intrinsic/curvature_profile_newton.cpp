@@ -22,6 +22,17 @@ std::string worst_equation(const CurvatureProfileProblem& P, const Eigen::Vector
     return design_equation_labels(P)[static_cast<std::size_t>(i)] + " (|f| = " + full_precision(std::abs(f(i))) + ")";
 }
 
+CurvatureProfileSolution sized_solution(const CurvatureProfileProblem& P, const Eigen::VectorXd& start,
+                                        const std::string& who) {
+    CurvatureProfileSolution sol;
+    sol.unknowns = design_unknowns(P);
+    sol.equations = design_equations(P);
+    if (start.size() != sol.unknowns)
+        fail_input(who, "start vector needs " + std::to_string(sol.unknowns) + " entries (eq 2), got " +
+                            std::to_string(start.size()));
+    return sol;
+}
+
 void finish_ok(const CurvatureProfileProblem& P, CurvatureProfileSolution& sol) {
     sol.curve.emplace(P.points.row(0).transpose(), TangentAngleSpline::from_unknowns(P.layout, sol.u));
 }
@@ -60,12 +71,7 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
         fail_input(who, "needs max_iterations ≥ 1 and tolerance > 0");
     if (!(options.required_contraction >= 0 && options.required_contraction < 1))
         fail_input(who, "needs 0 ≤ required_contraction < 1, got " + full_precision(options.required_contraction));
-    CurvatureProfileSolution sol;
-    sol.unknowns = design_unknowns(P);
-    sol.equations = design_equations(P);
-    if (start.size() != sol.unknowns)
-        fail_input(who, "start vector needs " + std::to_string(sol.unknowns) + " entries (eq 2), got " +
-                            std::to_string(start.size()));
+    CurvatureProfileSolution sol = detail::sized_solution(P, start, who);
     const int l = P.layout.independent_lengths();
     for (int i = 0; i < l; ++i)
         if (!(start(i) > 0) || !std::isfinite(start(i)))

@@ -91,8 +91,7 @@ void MethodParameterCurve::evaluate_jet(double tau, int first, JetSide side, Eig
     base_->evaluate_jet(u, first, left && u > base_->t_min() ? JetSide::left : JetSide::right, out);
     // The chain rule: d^k r̃/dτ^k = (du/dτ)^k d^k r/du^k, u affine in τ on the span.
     const double inv = 1.0 / dtau_du_[s];
-    double f = 1.0;
-    for (int order = 1; order < first; ++order) f *= inv;
+    double f = 1.0;  // (du/dτ)^k, row by row from k = 1 (first is 0 or 1)
     for (Eigen::Index i = first == 0 ? 1 : 0; i < out.rows(); ++i) out.row(i) *= (f *= inv);
 }
 

@@ -52,6 +52,10 @@ void design_system_into(const CurvatureProfileProblem& P, const Eigen::VectorXd&
 
 /// The label of the equation with the largest |f_i|, with that value.
 std::string worst_equation(const CurvatureProfileProblem& P, const Eigen::VectorXd& f);
+/// An empty solution of P's size (unknowns, equations) for a solver started at `start`;
+/// InvalidInput naming `who` when start has not one entry per unknown (eq 2).
+CurvatureProfileSolution sized_solution(const CurvatureProfileProblem& P, const Eigen::VectorXd& start,
+                                        const std::string& who);
 /// Builds the solution's curve from its unknowns.
 void finish_ok(const CurvatureProfileProblem& P, CurvatureProfileSolution& sol);
 
