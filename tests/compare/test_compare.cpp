@@ -14,6 +14,7 @@ using std::isnan;
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <cstdlib>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <sstream>
 #include <stdexcept>
@@ -895,8 +896,9 @@ TEST(Compare, SpanDisplacementsAreZeroOutsideALocalMethodsFootprint) {
     EXPECT_THROW(cagd::compare::span_samples(a, 0), cagd::InvalidInput);
 }
 
-// The curvature profile's footprint skips the spans whose offset bound (IntrinsicCurve::
-// segment_offset_bound) shows they cannot exceed the tolerance. The bound must cover every sampled
+// The curvature profile's footprint skips the spans whose offset bound (Curve::span_offset_bound, the
+// intrinsic curve's segment_offset_bound at the interpolant's node parameters) shows they cannot
+// exceed the tolerance. The bound must cover every sampled
 // distance, the skip must leave the count what span_displacements gives, and on a long input it
 // must skip most spans (else the footprint samples every span again).
 TEST(Compare, CurvatureProfileFootprintCountsAsEverySpanSampled) {
@@ -926,14 +928,22 @@ TEST(Compare, CurvatureProfileFootprintCountsAsEverySpanSampled) {
             ASSERT_TRUE(m.interpolant.has_value()) << what;
             const Interpolant& a = *c[0].interpolant;
             const std::vector<double> d = span_displacements(a, *m.interpolant);
-            const auto& ca = dynamic_cast<const intrinsic::IntrinsicCurve&>(*a.curve);
-            const auto& cb = dynamic_cast<const intrinsic::IntrinsicCurve&>(*m.interpolant->curve);
+            const Interpolant& b = *m.interpolant;
             int skippable = 0;
             for (std::size_t k = 0; k < d.size(); ++k) {
-                const double bound = ca.segment_offset_bound(cb, static_cast<int>(k));
-                ASSERT_GE(bound, d[k]) << what << ", span " << k;
-                if (bound <= 0.25 * 1e-9 * diagonal) ++skippable;
+                const std::optional<double> bound =
+                    a.curve->span_offset_bound(*b.curve, a.node_parameters[k], a.node_parameters[k + 1],
+                                               b.node_parameters[k], b.node_parameters[k + 1]);
+                ASSERT_TRUE(bound.has_value()) << what << ", span " << k << ": a segment of both curves";
+                ASSERT_GE(*bound, d[k]) << what << ", span " << k;
+                if (*bound <= 0.25 * 1e-9 * diagonal) ++skippable;
             }
+            // Not a segment of both (two spans at once), or another kind of curve: no bound.
+            EXPECT_FALSE(a.curve->span_offset_bound(*b.curve, a.node_parameters[0], a.node_parameters[2],
+                                                    b.node_parameters[0], b.node_parameters[2]));
+            const InterpolationResult h = cagd::methods::interpolate("hermite-a", p, closed);
+            ASSERT_TRUE(h.interpolant.has_value()) << what;
+            EXPECT_FALSE(a.curve->span_offset_bound(*h.interpolant->curve, 0.0, 1.0, 0.0, 1.0));
             const long counted = std::count_if(d.begin(), d.end(), [&](double x) { return x > 1e-9 * diagonal; });
             EXPECT_EQ(*c[0].locality_footprint, counted) << what;
             if (n == 400) {
@@ -974,6 +984,22 @@ TEST(Compare, FootprintCountsAsEverySpanSampled) {
             EXPECT_EQ(*m.locality_footprint, std::count_if(d.begin(), d.end(), [&](double x) {
                 return x > 1e-9 * diagonal;
             })) << what;
+            // Where a curve bounds a span's offset (0 for a Hermite or B-spline span of equal data),
+            // the sampled distance obeys it; a local method's untouched spans have one.
+            const std::vector<double>&ta = m.interpolant->node_parameters, &tb = r.interpolant->node_parameters;
+            std::size_t bounded = 0;
+            for (std::size_t k = 0; k < d.size(); ++k)
+                if (const std::optional<double> bound = m.interpolant->curve->span_offset_bound(
+                        *r.interpolant->curve, ta[k], ta[k + 1], tb[k], tb[k + 1])) {
+                    EXPECT_LE(d[k], *bound) << what << ", span " << k;
+                    ++bounded;
+                }
+            if (m.method == "hermite-a" || m.method == "b2-spline-m2") {
+                // All but the moved spans and a neighbour each side (whose end sample, or support,
+                // reaches a span that moved).
+                EXPECT_GE(bounded + static_cast<std::size_t>(*m.locality_footprint) + 2, d.size())
+                    << what << ": the untouched spans of a local method, footprint " << *m.locality_footprint;
+            }
             if (*m.locality_footprint < m.spans / 2) ++local;
         }
         if (!closed) {

@@ -220,6 +220,14 @@ TEST(Points, ValidPointsKeepWhatWasCheckedAndCoverNoMore) {
     EXPECT_FALSE(open.cover(4, false)) << "checked for 3 points, not 4";
     EXPECT_FALSE(open.cover(3, true)) << "the closing chord was not checked";
     EXPECT_TRUE(validate_points(p, 3, true, "test").cover(3, true));
+    // Widened to a construction of 4 points without a second pass; refused beyond the list's size.
+    const ValidPoints four = open.at_least(4, "test");
+    EXPECT_EQ(&four.points(), &p);
+    EXPECT_TRUE(four.cover(4, false));
+    EXPECT_FALSE(four.cover(4, true));
+    EXPECT_EQ(open.at_least(2, "test").min_count(), 3) << "never narrower than what was checked";
+    const std::string few = cagd::test::invalid_input_message([&] { (void)open.at_least(5, "test"); });
+    EXPECT_NE(few.find("needs at least 5 points, got 4"), std::string::npos) << few;
     PointList bad = p;
     bad(2, 0) = std::numeric_limits<double>::infinity();
     const std::string m = cagd::test::invalid_input_message([&] { (void)validate_points(bad, 2, false, "test"); });

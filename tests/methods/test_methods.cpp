@@ -307,6 +307,41 @@ double largest_gap_at_same_fractions(const InterpolationResult& a, const Interpo
 }
 }  // namespace
 
+// On points validated once (compare's path), every configuration builds the curve the PointList
+// path builds, bit for bit, open and closed, and refuses what its claims exclude.
+TEST(Methods, EveryConfigurationOnValidPointsIsThePointListBuild) {
+    for (const bool closed : {false, true}) {
+        PointList p(9, 2);
+        for (Eigen::Index i = 0; i < p.rows(); ++i) {
+            const double a = 2.0 * 3.141592653589793 * static_cast<double>(i) / static_cast<double>(p.rows());
+            p.row(i) << (2.0 + 0.3 * std::sin(3.0 * a)) * std::cos(a), (1.5 + 0.2 * std::cos(2.0 * a)) * std::sin(a);
+        }
+        const ValidPoints valid = validate_points(p, 2, closed, "test");
+        int built = 0;
+        for (const Configuration& c : configurations()) {
+            const std::string what = c.name + (closed ? ", closed" : ", open");
+            if (!method_applicability(c.claims, p, closed).empty()) {
+                EXPECT_THROW((void)interpolate_from(c, valid), InvalidInput) << what;
+                continue;
+            }
+            const InterpolationResult a = interpolate(c, p, closed), b = interpolate_from(c, valid);
+            ASSERT_EQ(a.outcome.ok(), b.outcome.ok())
+                << what << ": " << a.outcome.message << " / " << b.outcome.message;
+            if (!a.outcome.ok()) continue;
+            EXPECT_EQ(a.interpolant->node_parameters, b.interpolant->node_parameters) << what;
+            EXPECT_EQ(largest_gap_at_same_fractions(a, b), 0.0) << what;
+            ++built;
+        }
+        EXPECT_GE(built, 10) << (closed ? "closed" : "open");
+    }
+    // Fewer points than a method needs: refused as from a PointList, naming the count.
+    PointList two(2, 2);
+    two << 0, 0, 1, 1;
+    const std::string m = invalid_input_message(
+        [&] { (void)interpolate_from(find_configuration("cubic-b"), validate_points(two, 2, true, "test")); });
+    EXPECT_NE(m.find("got 2 points of a closed curve"), std::string::npos) << m;
+}
+
 // A rebuild on moved points starts from the first solve's final iterate: it converges in fewer
 // Newton iterations to the cold solve's curve (within the solver's tolerance), for 300 points
 // (sparse-LU steps) and for 12 (Moore–Penrose), open and closed; methods without a rebuild build anew.

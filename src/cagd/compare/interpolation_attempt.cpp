@@ -28,10 +28,10 @@ std::optional<AttemptStatus> attempt_status_from_string(const std::string& text)
     return std::nullopt;
 }
 
-InterpolationAttempt attempt_interpolation(const methods::Configuration& configuration, const PointList& points,
-                                           bool closed, const Eigen::VectorXd* start) {
+InterpolationAttempt attempt_interpolation(const methods::Configuration& configuration, const ValidPoints& points,
+                                           const Eigen::VectorXd* start) {
     InterpolationAttempt a;
-    a.note = methods::method_applicability(configuration.claims, points, closed);
+    a.note = methods::method_applicability(configuration.claims, points.points(), points.closed());
     if (!a.note.empty()) {
         a.status = AttemptStatus::not_applicable;
         return a;
@@ -40,14 +40,13 @@ InterpolationAttempt attempt_interpolation(const methods::Configuration& configu
     // not charge it to whichever configuration runs first.
     const auto prepared = std::chrono::steady_clock::now();
     if (configuration.method->prepare)
-        configuration.method->prepare(configuration.values, static_cast<int>(points.cols()));
+        configuration.method->prepare(configuration.values, static_cast<int>(points.points().cols()));
     const auto built = std::chrono::steady_clock::now();
     a.prepare_seconds = std::chrono::duration<double>(built - prepared).count();
     try {
-        a.result = start ? methods::interpolate_from(configuration, points, closed, *start)
-                         : methods::interpolate(configuration, points, closed);
-    } catch (const InvalidInput&
-                 e) {  // this method refuses these points (Boost's Catmull–Rom on 1e-40 spacing): its row says why
+        a.result = methods::interpolate_from(configuration, points, start ? *start : Eigen::VectorXd());
+    } catch (const InvalidInput& e) {
+        // this method refuses these points (Boost's Catmull–Rom on 1e-40 spacing): its row says why
         a.status = AttemptStatus::refused;
         a.note = in_user_terms(one_line(e.what()));
         return a;
@@ -58,6 +57,26 @@ InterpolationAttempt attempt_interpolation(const methods::Configuration& configu
         a.note = in_user_terms(one_line(a.result.outcome.message));
     }
     return a;
+}
+
+InterpolationAttempt attempt_interpolation(const methods::Configuration& configuration, const PointList& points,
+                                           bool closed, const Eigen::VectorXd* start) {
+    InterpolationAttempt a;
+    a.note = methods::method_applicability(configuration.claims, points, closed);
+    if (!a.note.empty()) {
+        a.status = AttemptStatus::not_applicable;
+        return a;
+    }
+    const int need = closed ? configuration.claims.min_points_closed : configuration.claims.min_points;
+    try {
+        const ValidPoints valid =
+            validate_points(points, need, closed, "cagd::methods::interpolate(" + configuration.method->name + ")");
+        return attempt_interpolation(configuration, valid, start);
+    } catch (const InvalidInput& e) {  // no method takes these points: this one refuses them
+        a.status = AttemptStatus::refused;
+        a.note = in_user_terms(one_line(e.what()));
+        return a;
+    }
 }
 
 }  // namespace cagd::compare

@@ -48,7 +48,13 @@ struct InterpolationAttempt {
 /// `configuration` on `points` (open or closed), classified; never throws for a method's refusal.
 /// With `start` (an earlier build's solver_state for as many points), the solve starts there
 /// (methods::interpolate_from).
+/// The points are validated first (a refusal when they are not valid: non-finite, coincident
+/// neighbours).
 InterpolationAttempt attempt_interpolation(const methods::Configuration& configuration, const PointList& points,
                                            bool closed, const Eigen::VectorXd* start = nullptr);
+/// The same on points validated already, closed as they were validated: a comparison validates them
+/// once for all its configurations.
+InterpolationAttempt attempt_interpolation(const methods::Configuration& configuration, const ValidPoints& points,
+                                           const Eigen::VectorXd* start = nullptr);
 
 }  // namespace cagd::compare

@@ -10,6 +10,7 @@
 #include <memory>
 #include <mutex>
 #include <numeric>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -20,9 +21,6 @@
 #include "cagd/compare/locality_footprint.hpp"
 #include "cagd/core/csv.hpp"
 #include "cagd/core/parallel.hpp"
-#include "cagd/intrinsic/intrinsic_curve.hpp"
-#include "cagd/spline/bspline.hpp"
-#include "cagd/spline/hermite_spline.hpp"
 
 namespace cagd::compare {
 
@@ -102,20 +100,31 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
     if (points.rows() < 2) fail_input(who, "needs at least 2 points, got " + std::to_string(points.rows()));
     // What no method could accept is bad input of the whole comparison (finite coordinates, no two
     // consecutive points equal); what one method refuses beyond that is that method's row.
-    require_valid_points(points, 2, true, options.closed, who);
+    const ValidPoints valid = validate_points(points, 2, options.closed, who);
     std::vector<methods::Configuration> configurations = options.configurations;
     if (configurations.empty()) {
         for (const std::string& name : options.methods) configurations.push_back(methods::find_configuration(name));
         if (options.methods.empty()) configurations = methods::configurations();
     }
     const double diagonal = bounding_box_diagonal(points);
+    // The locality footprint's input: the middle point moved by 1e-3 of the diagonal, validated once
+    // (nothing when it made the points invalid: no footprint).
+    PointList moved = points;
+    if (points.rows() >= 3) moved(points.rows() / 2, 1) += 1e-3 * diagonal;
+    const std::optional<ValidPoints> moved_valid = [&]() -> std::optional<ValidPoints> {
+        if (!options.locality || points.rows() < 3) return std::nullopt;
+        try {
+            return validate_points(moved, 2, options.closed, who);
+        } catch (const InvalidInput&) {
+            return std::nullopt;
+        }
+    }();
     const auto measure_unguarded = [&](const methods::Configuration& configuration) {
         MethodComparison c;
         c.method = configuration.name;
         const auto start_state = options.starts.find(configuration.name);
-        InterpolationAttempt attempt =
-            attempt_interpolation(configuration, points, options.closed,
-                                  start_state != options.starts.end() ? &start_state->second : nullptr);
+        InterpolationAttempt attempt = attempt_interpolation(
+            configuration, valid, start_state != options.starts.end() ? &start_state->second : nullptr);
         c.status = attempt.status;
         c.note = std::move(attempt.note);
         c.shared_seconds = attempt.prepare_seconds;
@@ -145,14 +154,11 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
             c.status = AttemptStatus::cusp;
             c.note = in_user_terms(one_line(e.what()));
         }
-        if (options.locality && points.rows() >= 3) {
-            PointList moved = points;
-            moved(points.rows() / 2, 1) += 1e-3 * diagonal;
+        if (moved_valid) {
             try {
                 // From this build's final iterate (continuation: fewer Newton iterations, and the
                 // same solution branch); a direct method builds anew.
-                const InterpolationResult m =
-                    methods::interpolate_from(configuration, moved, options.closed, c.solver_state);
+                const InterpolationResult m = methods::interpolate_from(configuration, *moved_valid, c.solver_state);
                 if (m.outcome.ok() && m.interpolant)
                     c.locality_footprint = spans_moved(*c.interpolant, *m.interpolant, 1e-9 * diagonal);
             } catch (const InvalidInput&) {  // the moved point made the input invalid for this method

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace cagd {
@@ -52,6 +53,18 @@ public:
     /// with out.rows() ≥ 1, out.cols() == dimension(), t inside the domain (left: t > t_min), so an
     /// implementation checks only what is its own (an order it does not provide: InvalidInput).
     virtual void evaluate_jet(double t, int first, JetSide side, Eigen::Ref<Eigen::MatrixXd> out) const = 0;
+
+    /// An upper bound B on the distance between this curve r and `other` q at equal fractions of the
+    /// parameter intervals [t0, t1] and [u0, u1]: |r(t0 + f (t1 − t0)) − q(u0 + f (u1 − u0))| ≤ B for
+    /// f ∈ [0, 1] (t1 and u1 themselves at f = 1), the positions as evaluate_jet computes them
+    /// (JetSide::right); std::nullopt where the curve knows no bound cheaper than sampling — the
+    /// default, and whenever `other` is not of its own kind. A comparison skips the spans that cannot
+    /// have moved with it (compare's locality footprint). Never throws for intervals outside the domain:
+    /// it knows no bound there.
+    virtual std::optional<double> span_offset_bound(const Curve& /*other*/, double /*t0*/, double /*t1*/, double /*u0*/,
+                                                    double /*u1*/) const {
+        return std::nullopt;
+    }
 
     /// Row k of the result is the k-th derivative d^k r/dt^k at t, k = 0..order.
     /// Precondition: t_min ≤ t ≤ t_max, order ≥ 0 (InvalidInput otherwise).

@@ -180,6 +180,12 @@ ValidPoints validate_points(const PointList& points, Eigen::Index min_count, boo
     return {points, min_count, closed, require_valid_points_with_extent(points, min_count, closed, who)};
 }
 
+ValidPoints ValidPoints::at_least(Eigen::Index count, const std::string& who) const {
+    if (points_.rows() < count)
+        fail_input(who, "needs at least " + std::to_string(count) + " points, got " + std::to_string(points_.rows()));
+    return {points_, std::max(count, min_count_), closed_, extent_};
+}
+
 std::vector<double> chord_lengths(const PointList& points, bool closed) {
     const Eigen::Index n = points.rows(), spans = std::max<Eigen::Index>(closed ? n : n - 1, 0);
     std::vector<double> h(static_cast<std::size_t>(spans));

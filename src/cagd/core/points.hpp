@@ -43,6 +43,10 @@ public:
     /// Whether these checks are those a construction of a curve, closed or not as `closed`, through
     /// at least `count` points needs.
     bool cover(Eigen::Index count, bool closed) const { return count <= min_count_ && closed == closed_; }
+    /// The same proof for a construction through at least `count` points: InvalidInput naming `who`
+    /// unless the list has that many (its other checks do not depend on the count, so nothing is
+    /// checked again).
+    ValidPoints at_least(Eigen::Index count, const std::string& who) const;
 
 private:
     ValidPoints(const PointList& points, Eigen::Index min_count, bool closed, PointExtent extent)

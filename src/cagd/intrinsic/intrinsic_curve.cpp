@@ -2,7 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <limits>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "cagd/core/errors.hpp"
 
@@ -40,6 +44,21 @@ double IntrinsicCurve::segment_offset_bound(const IntrinsicCurve& other, int j) 
     const double magnitude =
         points_.row(j).cwiseAbs().maxCoeff() + other.points_.row(j).cwiseAbs().maxCoeff() + (d + e) * (1.0 + turning);
     return (bound + 1e-13 * magnitude) * (1.0 + 1e-12);
+}
+
+std::optional<double> IntrinsicCurve::span_offset_bound(const Curve& other, double t0, double t1, double u0,
+                                                        double u1) const {
+    const auto* o = dynamic_cast<const IntrinsicCurve*>(&other);
+    if (o == nullptr || o->psi_.degree() != psi_.degree()) return std::nullopt;
+    const std::vector<double>&w = psi_.breakpoints(), &v = o->psi_.breakpoints();
+    const auto j = std::lower_bound(w.begin(), w.end(), t0) - w.begin();
+    if (j + 1 >= static_cast<std::ptrdiff_t>(w.size()) || j + 1 >= static_cast<std::ptrdiff_t>(v.size()) ||
+        !(w[static_cast<std::size_t>(j)] == t0 && w[static_cast<std::size_t>(j) + 1] == t1 &&
+          v[static_cast<std::size_t>(j)] == u0 && v[static_cast<std::size_t>(j) + 1] == u1))
+        return std::nullopt;
+    const double parameter_rounding =
+        16.0 * std::numeric_limits<double>::epsilon() * (std::abs(t0) + std::abs(t1) + std::abs(u0) + std::abs(u1));
+    return segment_offset_bound(*o, static_cast<int>(j)) + parameter_rounding;
 }
 
 namespace {

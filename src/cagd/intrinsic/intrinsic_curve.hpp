@@ -48,6 +48,12 @@ public:
     /// have moved by more than a tolerance (compare's locality footprint).
     /// InvalidInput unless both have segment j and the same degree.
     double segment_offset_bound(const IntrinsicCurve& other, int j) const;
+    /// Where [t0, t1] is segment j of this curve and [u0, u1] segment j of `other`, another intrinsic
+    /// curve of the same degree: segment_offset_bound(other, j) plus the rounding of the sample
+    /// parameters t0 + f (t1 − t0) (16 ulps of |t0| + |t1| + |u0| + |u1|, at unit speed a distance
+    /// as large); std::nullopt otherwise.
+    std::optional<double> span_offset_bound(const Curve& other, double t0, double t1, double u0,
+                                            double u1) const override;
 
 private:
     TangentAngleSpline psi_;

@@ -92,18 +92,23 @@ std::string method_applicability(const MethodClaims& m, const PointList& points,
 
 namespace {
 
-// interpolate()'s checks and build, with the solve started from `start` when the method has a
-// rebuild and `start` is not empty.
-InterpolationResult checked_build(const Method& method, const PointList& points, bool closed,
-                                  const ParameterValues& values, const Eigen::VectorXd& start) {
-    const MethodClaims claims = method.claims(values);
-    const std::string who = "cagd::methods::interpolate(" + method.name + ")";
+// interpolate()'s name for messages about `method`.
+std::string interpolate_who(const Method& method) { return "cagd::methods::interpolate(" + method.name + ")"; }
+
+// InvalidInput naming `who` unless the method's claims take the points (method_applicability).
+void require_applicable(const MethodClaims& claims, const PointList& points, bool closed, const std::string& who) {
     if (const std::string why = method_applicability(claims, points, closed); !why.empty())
         fail_input(who, why + "; got " + std::to_string(points.rows()) +
                             (closed ? " points of a closed curve" : " points") + " in dimension " +
                             std::to_string(points.cols()));
-    const ValidPoints valid =
-        validate_points(points, closed ? claims.min_points_closed : claims.min_points, closed, who);
+}
+
+// interpolate()'s build on points checked against the claims and validated, with the solve started
+// from `start` when the method has a rebuild and `start` is not empty.
+InterpolationResult build_valid(const Method& method, const ValidPoints& valid, const ParameterValues& values,
+                                const Eigen::VectorXd& start, const std::string& who) {
+    const PointList& points = valid.points();
+    const bool closed = valid.closed();
     const PointExtent& extent = valid.extent();
     // Valid points whose arithmetic leaves double precision: differences of coordinates near 1e308
     // overflow, and chords below 1e-150 square to 0 (their norm underflows). The result is not
@@ -136,6 +141,17 @@ InterpolationResult checked_build(const Method& method, const PointList& points,
     } catch (const std::domain_error& e) {  // Boost.Math's own precondition checks
         fail_input(who, std::string("Boost.Math refused the points: ") + e.what());
     }
+}
+
+// interpolate()'s checks (the claims, then the points) and build.
+InterpolationResult checked_build(const Method& method, const PointList& points, bool closed,
+                                  const ParameterValues& values, const Eigen::VectorXd& start) {
+    const MethodClaims claims = method.claims(values);
+    const std::string who = interpolate_who(method);
+    require_applicable(claims, points, closed, who);
+    const ValidPoints valid =
+        validate_points(points, closed ? claims.min_points_closed : claims.min_points, closed, who);
+    return build_valid(method, valid, values, start, who);
 }
 
 }  // namespace
@@ -211,6 +227,17 @@ InterpolationResult interpolate(const Configuration& configuration, const PointL
 InterpolationResult interpolate_from(const Configuration& configuration, const PointList& points, bool closed,
                                      const Eigen::VectorXd& start) {
     return checked_build(*configuration.method, points, closed, configuration.values, start);
+}
+
+InterpolationResult interpolate_from(const Configuration& configuration, const ValidPoints& points,
+                                     const Eigen::VectorXd& start) {
+    const Method& method = *configuration.method;
+    const MethodClaims claims = method.claims(configuration.values);
+    const std::string who = interpolate_who(method);
+    require_applicable(claims, points.points(), points.closed(), who);
+    const bool closed = points.closed();
+    return build_valid(method, points.at_least(closed ? claims.min_points_closed : claims.min_points, who),
+                       configuration.values, start, who);
 }
 
 }  // namespace cagd::methods

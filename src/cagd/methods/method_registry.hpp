@@ -174,6 +174,11 @@ InterpolationResult interpolate(const Configuration& configuration, const PointL
 /// start, builds anew. The same checks.
 InterpolationResult interpolate_from(const Configuration& configuration, const PointList& points, bool closed,
                                      const Eigen::VectorXd& start);
+/// interpolate_from on points validated already, closed as they were validated (compare validates
+/// them once for all its configurations): the claims checked, then the build; the same result as
+/// from the PointList. An empty start builds anew.
+InterpolationResult interpolate_from(const Configuration& configuration, const ValidPoints& points,
+                                     const Eigen::VectorXd& start = Eigen::VectorXd());
 
 /// The registry as a Markdown table (docs/methods.md) or as plain lines (`cagd interpolate --list-methods`).
 std::string registry_markdown();

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "cagd/core/errors.hpp"
 
@@ -37,6 +38,23 @@ BSplineCurve::BSplineCurve(int degree, std::vector<double> knots, Eigen::MatrixX
     if (!(t_min() < t_max()))
         fail_input(kBSplineWho, "empty domain [" + full_precision(t_min()) + ", " + full_precision(t_max()) + "]");
     if (!control_.allFinite()) fail_input(kBSplineWho, "control points must be finite");
+}
+
+std::optional<double> BSplineCurve::span_offset_bound(const Curve& other, double t0, double t1, double u0,
+                                                      double u1) const {
+    const auto* o = dynamic_cast<const BSplineCurve*>(&other);
+    if (o == nullptr || o->degree_ != degree_ || o->knots_.size() != knots_.size() ||
+        o->control_.rows() != control_.rows() || o->control_.cols() != control_.cols() || !(t0 == u0 && t1 == u1) ||
+        !(t_min() <= t0 && t0 <= t1 && t1 <= t_max()))
+        return std::nullopt;
+    // The knot spans s0..s1 of t ∈ [t0, t1], and what A2.3 and the basis read for them: knots
+    // s0 − p .. s1 + p + 1, control points s0 − p .. s1.
+    const int p = degree_, s0 = find_span(t0), s1 = find_span(t1);
+    for (int i = s0 - p; i <= s1 + p + 1; ++i)
+        if (!(knots_[static_cast<std::size_t>(i)] == o->knots_[static_cast<std::size_t>(i)])) return std::nullopt;
+    const Eigen::Index first = s0 - p, count = s1 - s0 + p + 1;
+    return control_.middleRows(first, count) == o->control_.middleRows(first, count) ? std::optional<double>(0.0)
+                                                                                     : std::nullopt;
 }
 
 int BSplineCurve::find_span(double t) const {

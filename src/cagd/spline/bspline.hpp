@@ -57,6 +57,11 @@ public:
     void evaluate_jet(double t, int first, JetSide side, Eigen::Ref<Eigen::MatrixXd> out) const override;
     std::vector<double> breakpoints() const override;
     int polynomial_degree() const override { return degree_; }
+    /// 0 where both curves evaluate [t0, t1] = [u0, u1] from equal data: another B-spline curve of the
+    /// same degree, knot count and control-point shape whose knots and control points agree, entry by
+    /// entry, wherever Algorithm A2.3 reads them for the knot spans of [t0, t1]; std::nullopt otherwise.
+    std::optional<double> span_offset_bound(const Curve& other, double t0, double t1, double u0,
+                                            double u1) const override;
 
     /// Index s with t_s ≤ t < t_{s+1}, p ≤ s ≤ n−1 (t = t_max: the last non-empty span).
     int find_span(double t) const;

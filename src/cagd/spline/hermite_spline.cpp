@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -100,6 +101,21 @@ void PiecewiseHermiteCurve::evaluate_jet(double u, int first, JetSide side, Eige
         for (Eigen::Index c = 0; c < dim; ++c)
             out(j - first, c) = h[0] * nodes_(k, c) + h[1] * nodes_(k + 1, c) + h[2] * d0_(k, c) + h[3] * d1_(k, c);
     }
+}
+
+std::optional<double> PiecewiseHermiteCurve::span_offset_bound(const Curve& other, double t0, double t1, double u0,
+                                                               double u1) const {
+    const auto* o = dynamic_cast<const PiecewiseHermiteCurve*>(&other);
+    if (o == nullptr || o->spans() != spans() || o->dimension() != dimension() || !(t0 == u0 && t1 == u1) ||
+        !(0.0 <= t0 && t0 <= t1 && t1 <= spans()))
+        return std::nullopt;
+    // The spans evaluate_jet reads for t ∈ [t0, t1] (JetSide::right): nodes i0..i1 + 1, derivatives i0..i1.
+    const auto i0 = static_cast<Eigen::Index>(std::min(static_cast<int>(t0), spans() - 1)),
+               i1 = static_cast<Eigen::Index>(std::min(static_cast<int>(t1), spans() - 1)), count = i1 - i0 + 1;
+    const bool equal = nodes_.middleRows(i0, count + 1) == o->nodes_.middleRows(i0, count + 1) &&
+                       d0_.middleRows(i0, count) == o->d0_.middleRows(i0, count) &&
+                       d1_.middleRows(i0, count) == o->d1_.middleRows(i0, count);
+    return equal ? std::optional<double>(0.0) : std::nullopt;
 }
 
 namespace {

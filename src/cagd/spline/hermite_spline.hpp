@@ -74,6 +74,11 @@ public:
     void evaluate_jet(double u, int first, JetSide side, Eigen::Ref<Eigen::MatrixXd> out) const override;
     std::vector<double> breakpoints() const override;
     int polynomial_degree() const override { return 3; }
+    /// 0 where both curves evaluate [t0, t1] = [u0, u1] from equal data: another Hermite curve of as many
+    /// spans and coordinates whose nodes and end derivatives agree, entry by entry, on every span the
+    /// parameters fall in (the one starting at t1 included, which evaluates t1); std::nullopt otherwise.
+    std::optional<double> span_offset_bound(const Curve& other, double t0, double t1, double u0,
+                                            double u1) const override;
 
 private:
     PiecewiseHermiteCurve() = default;
