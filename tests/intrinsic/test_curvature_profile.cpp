@@ -624,6 +624,45 @@ TEST(CurvatureProfileDesign, DivergingIterationStopsEarly) {
     EXPECT_GE(diverged, 1);
 }
 
+// A square regular system whose Newton settles above the absolute tolerance, at the rounding level of
+// its curvature equations (96 points on a 270° arc of the unit circle: ‖f‖∞ ≈ 7e-12 > 1e-12), has
+// converged: a root lies within the step's resolution. It used to be reported as "the conditions are
+// inconsistent", with a full-rank Jacobian. The curve is the natural clothoid spline through the
+// points: within its O(h²) distance of the circle, and through every point.
+TEST(CurvatureProfileDesign, SettlingAtTheRoundingLevelIsConvergence) {
+    int settled_above_tolerance = 0;
+    for (const int n : {48, 96, 192}) {
+        PointList p(n, 2);
+        for (int i = 0; i < n; ++i) {
+            const double a = 1.5 * std::numbers::pi * i / (n - 1);
+            p.row(i) << std::cos(a), std::sin(a);
+        }
+        const std::vector<SegmentShape> free(static_cast<std::size_t>(n - 1), SegmentShape::free);
+        const KnotLayout layout = span_layout(free);
+        CurvatureProfileProblem problem{p, layout, segment_shapes(layout, free), {}, false, 0};
+        add_natural_open_ends(problem);
+        for (const NewtonStep step : {NewtonStep::banded_lu, NewtonStep::pseudo_inverse}) {
+            NewtonOptions o;
+            o.step = step;
+            const CurvatureProfileSolution sol = solve_curvature_profile(problem, o);
+            const std::string what = std::to_string(n) + (step == NewtonStep::banded_lu ? " LU" : " Moore–Penrose");
+            ASSERT_TRUE(sol.outcome.ok()) << what << ": " << sol.outcome.message;
+            EXPECT_LE(sol.history.back().residual, 1e-10) << what;
+            EXPECT_EQ(sol.history.back().step, 0.0) << what << ": the final record takes no step";
+            if (sol.history.back().residual > 1e-12) ++settled_above_tolerance;
+            const IntrinsicCurve& c = *sol.curve;
+            double off = 0.0;
+            for (int k = 0; k <= 400; ++k) off = std::max(off, std::abs(c.point(c.t_max() * k / 400.0).norm() - 1.0));
+            EXPECT_LT(off, 20.0 / (n * n)) << what << ": distance from the circle";
+            const std::vector<double> w = c.breakpoints();
+            for (int i = 0; i < n; ++i)
+                EXPECT_LT((c.point(w[static_cast<std::size_t>(i)]) - p.row(i).transpose()).norm(), 1e-9)
+                    << what << ", point " << i;
+        }
+    }
+    EXPECT_GE(settled_above_tolerance, 1) << "no run exercised the settling above the tolerance";
+}
+
 TEST(CurvatureProfileDesign, InconsistentArcIsNoSolutionNotAWrongCurve) {
     // Line, arc, line: the circle leaving (1,0) along +x through (2,1) arrives heading +y, not along the
     // final line's +x.

@@ -54,6 +54,12 @@ namespace {
 constexpr double kRankThreshold = 1e-10;
 constexpr double kStalledStep = 1e-13;
 constexpr double kKeptLengthFraction = 0.2;
+// A settled iterate (its step below kStalledStep · (1 + ‖u‖∞), the stall radius r) whose residual is
+// at most kReachMultiple · ‖J‖∞ · r could be left by a root within r of it (to first order
+// |f(u)| ≤ ‖J‖∞ |u − u*|): the residual a root can leave at the resolution of u, which a square
+// regular system's Newton step (f = J δ, |f|∞ ≤ ‖J‖∞ |δ|∞) always meets when it settles. The
+// multiple allows for the rounding of the step's solve.
+constexpr double kReachMultiple = 2.0;
 
 }  // namespace
 
@@ -187,12 +193,34 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
         const double step = lambda * delta.lpNorm<Eigen::Infinity>();
         sol.history.push_back({it, res, step, lambda, sol.rank});
         if (step <= kStalledStep * (1.0 + sol.u.lpNorm<Eigen::Infinity>())) {
-            sol.outcome = {
-                Status::no_solution,
-                std::string(method) + " settled on a least-squares point with ‖f‖∞ = " + full_precision(res) + " > " +
-                    full_precision(tol) + ": the conditions are inconsistent for these points (worst equation " +
-                    worst_equation(P, sys.f) + "; " + std::to_string(sol.equations) + " equations, " +
-                    std::to_string(sol.unknowns) + " unknowns, rank " + std::to_string(sol.rank) + ")"};
+            // Settled above the tolerance. Within a few times the rounding floor: converged as far as
+            // double precision goes. Otherwise inconsistent conditions only with evidence — a rank
+            // below the unknowns, or more equations than unknowns (a least-squares point); a square
+            // system of full rank that settles far above its floor is the solver's failure.
+            const double radius = kStalledStep * (1.0 + sol.u.lpNorm<Eigen::Infinity>());
+            const double reach = kReachMultiple *
+                                 (sys.jacobian.cwiseAbs() * Eigen::VectorXd::Ones(sys.jacobian.cols())).maxCoeff() *
+                                 radius;
+            const bool full_rank = options.step != NewtonStep::pseudo_inverse || sol.rank == sol.unknowns;
+            const std::string found =
+                "‖f‖∞ = " + full_precision(res) + " above the tolerance " + full_precision(tol) + " and " +
+                full_precision(res / reach) + " times what a root within the step's resolution " +
+                full_precision(radius) + " could leave (worst equation " + worst_equation(P, sys.f) + "; " +
+                std::to_string(sol.equations) + " equations, " + std::to_string(sol.unknowns) + " unknowns, " +
+                (sol.rank < 0 ? std::string("a regular LU") : "rank " + std::to_string(sol.rank)) + ")";
+            if (full_rank && res <= reach) {
+                sol.history.back().step = 0.0;  // the final record: the step was not taken
+                sol.history.back().damping = 1.0;
+                finish_ok(P, sol);
+                return sol;
+            }
+            if (!full_rank || sol.equations > sol.unknowns)
+                sol.outcome = {Status::no_solution, std::string(method) + " settled on a least-squares point: " +
+                                                        found + ": the conditions are inconsistent for these points"};
+            else
+                sol.outcome = {Status::no_convergence,
+                               std::string(method) + " settled with a regular Jacobian: " + found +
+                                   ": the solver failed, which does not show that no curve exists"};
             return sol;
         }
         sol.u -= lambda * delta;
