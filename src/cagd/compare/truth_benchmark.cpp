@@ -2,9 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <tuple>
+
+#include <boost/math/tools/minima.hpp>
 
 #include "cagd/analysis/curve_measures.hpp"
 #include "cagd/analysis/frenet_jet.hpp"
@@ -26,12 +30,6 @@ constexpr int kShapeTableSize = 24;
 // tests hold it to adaptive Gauss–Kronrod, which is too slow to run on every case).
 constexpr int kLengthPieces = 4;
 constexpr int kProjectionIterations = 30;
-// The observed order comes from the largest this many sizes: the smaller ones are before the
-// asymptotic regime (cubic-b on the closed ellipse: a fit over n = 6..96 gave 3.2, the pair
-// 192/384 gives 4.0; on the nonuniform closed trefoil the fit over 96..384 gave 4.4, the pairs
-// 96/192, 192/384, 384/768 give 4.6, 4.1, 4.0).
-constexpr int kFittedSizes = 2;
-
 // κ of a jet (signed for planar curves, |κ| in space); NaN at a point of zero speed.
 double kappa(const Eigen::MatrixXd& jet) { return analysis::frenet_jet(jet.bottomRows(jet.rows() - 1)).curvature; }
 
@@ -45,18 +43,113 @@ double angle_between(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
     return std::atan2(cross, dot);
 }
 
-// The truth parameter nearest to q, from the guess t, within [lo, hi].
-double project(const Curve& truth, const Eigen::VectorXd& q, double t, double lo, double hi) {
-    for (int it = 0; it < kProjectionIterations; ++it) {
-        const Eigen::MatrixXd j = truth.jet(t, 2);
-        const Eigen::VectorXd d = j.row(0).transpose() - q, d1 = j.row(1).transpose(), d2 = j.row(2).transpose();
-        const double g = d.dot(d1), dg = d1.dot(d1) + d.dot(d2);
-        if (!(dg > 0)) break;
-        const double next = std::clamp(t - g / dg, lo, hi);
-        if (std::abs(next - t) <= 1e-15 * (hi - lo)) return next;
-        t = next;
+// The projection's bracket: the truth sampled at this many equal parameter steps per data span.
+constexpr int kBracketSamples = 8;
+// The curvature's L2 per piece: 16-point Gauss–Legendre, accepted where the 8-point rule on the same
+// piece agrees with it to kL2Tolerance of it or to an absolute ρ² × the piece's chord (ρ the
+// curvature's rounding level, truth_rounding_level: below that the integrand is rounding), and
+// otherwise the piece halved, at most kL2MaxDepth times (where the projection onto the truth jumps,
+// |Δκ| does too). The 8-point estimate is the cruder, so the accepted 16-point value is more
+// accurate than the agreement. (Boost's adaptive Gauss–Kronrod misjudges its error on the short,
+// nearly constant pieces a B-spline peer's knots cut beside the nodes: 10^6 evaluations each.)
+constexpr double kL2Tolerance = 1e-6;
+constexpr int kL2MaxDepth = 10;
+// The maxima: the pieces with the largest sampled maxima, this many, are refined.
+constexpr std::size_t kRefinedPieces = 4;
+// Brent locates the maximiser to 2^-kRefineBits of its bracket (two sample steps of one piece): the
+// value, quadratic in that error near a smooth maximum, to about 2^-40 of it.
+constexpr int kRefineBits = 20;
+
+// The nearest point of the truth to points of an interpolant on data span k (TruthErrors): the
+// truth sampled at kBracketSamples steps per span over the spans k − 1 … k + 1 (wrapping round a
+// closed sample), the nearest sample bracketing Newton on (T(t) − q)·T'(t) = 0 between its
+// neighbours. Global over those three spans; Newton stops at a step of 1e−15 of the stretch.
+class TruthProjector {
+public:
+    TruthProjector(const Curve& truth, const TruthSample& sample) : truth_(truth), sample_(sample) {
+        const std::size_t spans = sample.params.size() - 1;
+        grid_.resize(static_cast<Eigen::Index>(spans * kBracketSamples + 1), truth.dimension());
+        for (std::size_t k = 0; k < spans; ++k)
+            for (int i = 0; i < kBracketSamples; ++i)
+                grid_.row(static_cast<Eigen::Index>(k * kBracketSamples + static_cast<std::size_t>(i))) =
+                    truth.jet(grid_parameter(k * kBracketSamples + static_cast<std::size_t>(i)), 0).row(0);
+        grid_.row(grid_.rows() - 1) = truth.jet(sample.params.back(), 0).row(0);
     }
-    return t;
+    // The truth parameter nearest to q, for a point of data span k.
+    double nearest(const Eigen::VectorXd& q, std::size_t k) const {
+        const long spans = static_cast<long>(sample_.params.size()) - 1, S = kBracketSamples;
+        const long first = sample_.closed ? static_cast<long>(k) - 1 : std::max(0L, static_cast<long>(k) - 1),
+                   last = sample_.closed ? static_cast<long>(k) + 1 : std::min(spans - 1, static_cast<long>(k) + 1);
+        long best = 0;
+        double best_distance = std::numeric_limits<double>::infinity();
+        const long rows = static_cast<long>(grid_.rows()) - 1, dim = static_cast<long>(grid_.cols());
+        long w = wrap_index(first * S);  // the grid row of unwrapped index g, stepped along without a division
+        for (long g = first * S; g <= (last + 1) * S; ++g, w = sample_.closed && w + 1 == rows ? 0 : w + 1) {
+            const double* row = grid_.data() + w * dim;
+            double d = 0.0;
+            for (long i = 0; i < dim; ++i) d += (row[i] - q(i)) * (row[i] - q(i));
+            if (d < best_distance) best_distance = d, best = g;
+        }
+        const double lo = unwrapped_parameter(sample_.closed ? best - 1 : std::max(best - 1, 0L)),
+                     hi = unwrapped_parameter(sample_.closed ? best + 1 : std::min(best + 1, spans * S));
+        double t = unwrapped_parameter(best);
+        for (int it = 0; it < kProjectionIterations; ++it) {
+            const Eigen::MatrixXd j = jet(t, 2);
+            const Eigen::VectorXd d = j.row(0).transpose() - q, d1 = j.row(1).transpose(), d2 = j.row(2).transpose();
+            const double g = d.dot(d1), dg = d1.dot(d1) + d.dot(d2);
+            if (!(dg > 0)) break;
+            const double next = std::clamp(t - g / dg, lo, hi);
+            if (std::abs(next - t) <= 1e-15 * (sample_.t_last - sample_.t_first)) return wrap(next);
+            t = next;
+        }
+        return wrap(t);
+    }
+    // The truth's jet at a parameter of its sample's stretch (a closed sample's taken modulo its period).
+    Eigen::MatrixXd jet(double t, int order) const { return truth_.jet(wrap(t), order); }
+
+private:
+    double grid_parameter(std::size_t g) const {
+        const std::size_t k = g / kBracketSamples, i = g % kBracketSamples;
+        const double t0 = sample_.params[k], t1 = sample_.params[k + 1];
+        return i == 0 ? t0 : t0 + static_cast<double>(i) / kBracketSamples * (t1 - t0);
+    }
+    long wrap_index(long g) const {
+        const long n = static_cast<long>(grid_.rows()) - 1;
+        return sample_.closed ? ((g % n) + n) % n : g;
+    }
+    double unwrapped_parameter(long g) const {
+        const long n = static_cast<long>(grid_.rows()) - 1;
+        const double period = sample_.t_last - sample_.t_first;
+        const long w = wrap_index(g);
+        return grid_parameter(static_cast<std::size_t>(w)) +
+               (sample_.closed ? static_cast<double>((g - w) / n) * period : 0.0);
+    }
+    double wrap(double t) const {
+        if (!sample_.closed) return std::clamp(t, sample_.t_first, sample_.t_last);
+        const double period = sample_.t_last - sample_.t_first;
+        double r = std::fmod(t - sample_.t_first, period);
+        if (r < 0) r += period;
+        return sample_.t_first + r;
+    }
+    const Curve& truth_;
+    const TruthSample& sample_;
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> grid_;  // a row per sample
+};
+
+// The pieces of [u0, u1] between the curve's breakpoints `br` (ascending) strictly inside it.
+std::vector<double> piece_ends(const std::vector<double>& br, double u0, double u1) {
+    std::vector<double> ends{u0};
+    for (auto it = std::upper_bound(br.begin(), br.end(), u0); it != br.end() && *it < u1; ++it) ends.push_back(*it);
+    ends.push_back(u1);
+    return ends;
+}
+
+// The largest of f over [lo, hi] from Brent's method, never below the value at the sample `at`.
+double refined_maximum(const std::function<double(double)>& f, double lo, double hi, double sampled) {
+    if (!(hi > lo)) return sampled;
+    const auto [x, minus] = boost::math::tools::brent_find_minima([&](double v) { return -f(v); }, lo, hi, kRefineBits);
+    (void)x;
+    return std::max(sampled, -minus);
 }
 
 // A turn of the polygon (the sine of its angle) counts as none below this: collinear points.
@@ -76,23 +169,30 @@ ShapeMeasures shape_measures(const Curve& c, const std::vector<double>& nodes, b
     static const numeric::GaussLegendreRule rule(kNodesPerSpan);
     double length = 0.0, bending = 0.0, variation = 0.0, max_kappa = 0.0;
     std::vector<double> rates, kappas;
+    const std::vector<double> breakpoints = c.breakpoints();
     for (std::size_t k = 0; k + 1 < nodes.size(); ++k) {
-        const double u0 = nodes[k], u1 = nodes[k + 1];
-        // κ's sign also at the span's ends (one-sided): a sign change between the last Gauss node and
-        // the point (3 % of the span from it) is counted too.
-        kappas.push_back(kappa(c.jet(u0, 2)));
-        for (int q = 0; q < rule.size(); ++q) {
-            const double u = u0 + 0.5 * (rule.nodes()[static_cast<std::size_t>(q)] + 1.0) * (u1 - u0);
-            const Eigen::MatrixXd j = c.jet(u, 3);
-            const analysis::FrenetJet f = analysis::frenet_jet(j.bottomRows(3));
-            const double kappa = f.curvature, rate = f.curvature_rate;
-            const double ds = 0.5 * rule.weights()[static_cast<std::size_t>(q)] * (u1 - u0) * j.row(1).norm();
-            length += ds, bending += kappa * kappa * ds, variation += rate * rate * ds;
-            max_kappa = std::max(max_kappa, std::abs(kappa));
-            rates.push_back(rate);
-            kappas.push_back(kappa);
+        // Per piece between the curve's breakpoints (κ' may jump there), with κ also at the piece's
+        // ends (one-sided): for its largest value (a natural end's), and a sign change between the
+        // last Gauss node and the end (3 % of the piece from it) is counted too.
+        const std::vector<double> ends = piece_ends(breakpoints, nodes[k], nodes[k + 1]);
+        for (std::size_t p = 0; p + 1 < ends.size(); ++p) {
+            const double u0 = ends[p], u1 = ends[p + 1];
+            kappas.push_back(kappa(c.jet(u0, 2)));
+            for (int q = 0; q < rule.size(); ++q) {
+                const double u = u0 + 0.5 * (rule.nodes()[static_cast<std::size_t>(q)] + 1.0) * (u1 - u0);
+                const Eigen::MatrixXd j = c.jet(u, 3);
+                const analysis::FrenetJet f = analysis::frenet_jet(j.bottomRows(3));
+                const double kappa = f.curvature, rate = f.curvature_rate;
+                const double ds = 0.5 * rule.weights()[static_cast<std::size_t>(q)] * (u1 - u0) * j.row(1).norm();
+                length += ds, bending += kappa * kappa * ds, variation += rate * rate * ds;
+                max_kappa = std::max(max_kappa, std::abs(kappa));
+                rates.push_back(rate);
+                kappas.push_back(kappa);
+            }
+            kappas.push_back(kappa(c.jet_from_left(u1, 2)));
+            max_kappa =
+                std::max({max_kappa, std::abs(kappas.back()), std::abs(kappas[kappas.size() - 2 - rule.size()])});
         }
-        kappas.push_back(kappa(c.jet_from_left(u1, 2)));
     }
     ShapeMeasures m;
     m.bending = length * bending;
@@ -154,32 +254,94 @@ TruthErrors truth_errors(const methods::Interpolant& in, const TruthSample& samp
     if (nodes != sample.params.size())
         fail_input(who, "the interpolant has " + std::to_string(nodes) + " nodes, the sample " +
                             std::to_string(sample.params.size()));
-    static const numeric::GaussLegendreRule rule(kNodesPerSpan);
+    static const numeric::GaussLegendreRule fine_rule(kNodesPerSpan), coarse_rule(kNodesPerSpan / 2);
     const Curve& c = *in.curve;
     const double L = sample.length;
+    const TruthProjector projector(truth, sample);
+    const std::vector<double> breakpoints = c.breakpoints();
+    // The distance (÷ L) and |Δκ|·L at u on span k, from the piece that starts (right) or ends there.
+    struct Local {
+        double distance, angle, curvature, speed;
+    };
+    const auto local = [&](double u, std::size_t k, JetSide side) {
+        const Eigen::MatrixXd jc = side == JetSide::left ? c.jet_from_left(u, 2) : c.jet(u, 2);
+        const Eigen::VectorXd point = jc.row(0).transpose();
+        const Eigen::MatrixXd jt = projector.jet(projector.nearest(point, k), 2);
+        return Local{(point - jt.row(0).transpose()).norm() / L,
+                     angle_between(jc.row(1).transpose(), jt.row(1).transpose()), std::abs(kappa(jc) - kappa(jt)) * L,
+                     jc.row(1).norm()};
+    };
+    // Per piece, the sampled maxima of the distance and the curvature error, and the brackets
+    // (the neighbouring samples) for their refinement.
+    struct Candidate {
+        std::size_t span;
+        double lo, hi, sampled;
+    };
+    std::vector<Candidate> distance_candidates, curvature_candidates;
     TruthErrors e;
-    double l2 = 0.0, arc = 0.0;
+    double l2 = 0.0;
+    std::vector<std::pair<double, Local>> samples;
     for (std::size_t k = 0; k + 1 < nodes; ++k) {
-        const double u0 = in.node_parameters[k], u1 = in.node_parameters[k + 1];
-        const double t0 = sample.params[k], t1 = sample.params[k + 1];
-        for (int q = 0; q < rule.size(); ++q) {
-            const double f = 0.5 * (rule.nodes()[static_cast<std::size_t>(q)] + 1.0),
-                         w = 0.5 * rule.weights()[static_cast<std::size_t>(q)];
-            const double u = u0 + f * (u1 - u0);
-            const Eigen::MatrixXd jc = c.jet(u, 2);
-            const Eigen::VectorXd point = jc.row(0).transpose();
-            const double t = project(truth, point, t0 + f * (t1 - t0), sample.t_first, sample.t_last);
-            const Eigen::MatrixXd jt = truth.jet(t, 2);
-            e.distance = std::max(e.distance, (point - jt.row(0).transpose()).norm() / L);
-            e.tangent_angle = std::max(e.tangent_angle, angle_between(jc.row(1).transpose(), jt.row(1).transpose()));
-            const double dk = std::abs(kappa(jc) - kappa(jt)) * L;
-            e.curvature_max = std::max(e.curvature_max, dk);
-            const double ds = w * (u1 - u0) * jc.row(1).norm();
-            l2 += dk * dk * ds;
-            arc += ds;
+        const std::vector<double> ends = piece_ends(breakpoints, in.node_parameters[k], in.node_parameters[k + 1]);
+        for (std::size_t p = 0; p + 1 < ends.size(); ++p) {
+            const double a = ends[p], b = ends[p + 1];
+            // The piece's ends (one-sided), and every point the adaptive Gauss–Kronrod rule of the
+            // curvature's L2 evaluates: the samples of the maxima, in increasing u.
+            samples.assign({{a, local(a, k, JetSide::right)}, {b, local(b, k, JetSide::left)}});
+            const double rounding = truth_rounding_level(2, static_cast<int>(nodes));
+            const auto integrand = [&](double u) {
+                const Local v = local(u, k, JetSide::right);
+                samples.emplace_back(u, v);
+                return v.curvature * v.curvature * v.speed;
+            };
+            const std::function<double(double, double, int)> adaptive = [&](double lo, double hi, int depth) {
+                const double fine = fine_rule.integrate(integrand, lo, hi),
+                             coarse = coarse_rule.integrate(integrand, lo, hi);
+                const double chord = (c.jet(hi, 0).row(0) - c.jet(lo, 0).row(0)).norm();
+                if (depth == kL2MaxDepth ||
+                    std::abs(fine - coarse) <= std::max(kL2Tolerance * std::abs(fine), rounding * rounding * chord))
+                    return fine;
+                const double mid = 0.5 * (lo + hi);
+                return adaptive(lo, mid, depth + 1) + adaptive(mid, hi, depth + 1);
+            };
+            l2 += adaptive(a, b, 0);
+            std::sort(samples.begin(), samples.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+            std::vector<double> at(samples.size());
+            std::vector<Local> values(samples.size());
+            for (std::size_t i = 0; i < samples.size(); ++i) at[i] = samples[i].first, values[i] = samples[i].second;
+            std::size_t best_distance = 0, best_curvature = 0;
+            for (std::size_t i = 0; i < at.size(); ++i) {
+                e.tangent_angle = std::max(e.tangent_angle, values[i].angle);
+                if (values[i].distance > values[best_distance].distance) best_distance = i;
+                if (values[i].curvature > values[best_curvature].curvature) best_curvature = i;
+            }
+            const auto bracket = [&](std::size_t i, double sampled) {
+                return Candidate{k, at[i == 0 ? 0 : i - 1], at[std::min(i + 1, at.size() - 1)], sampled};
+            };
+            distance_candidates.push_back(bracket(best_distance, values[best_distance].distance));
+            curvature_candidates.push_back(bracket(best_curvature, values[best_curvature].curvature));
+            e.distance = std::max(e.distance, values[best_distance].distance);
+            e.curvature_max = std::max(e.curvature_max, values[best_curvature].curvature);
         }
     }
-    e.curvature_l2 = std::sqrt(l2 / arc);
+    // The suprema: the kRefinedPieces pieces of the largest sampled maxima, each refined by Brent's
+    // method between the samples beside its largest (inside the piece: one-sided at its end).
+    const auto refine = [&](std::vector<Candidate>& candidates, double& largest, double Local::*field) {
+        const std::size_t count = std::min(kRefinedPieces, candidates.size());
+        std::partial_sort(candidates.begin(), candidates.begin() + static_cast<std::ptrdiff_t>(count), candidates.end(),
+                          [](const Candidate& x, const Candidate& y) { return x.sampled > y.sampled; });
+        for (std::size_t i = 0; i < count; ++i) {
+            const Candidate& cand = candidates[i];
+            const double hi = cand.hi;
+            const auto f = [&](double u) {
+                return local(u, cand.span, u == hi ? JetSide::left : JetSide::right).*field;
+            };
+            largest = std::max(largest, refined_maximum(f, cand.lo, hi, cand.sampled));
+        }
+    };
+    refine(distance_candidates, e.distance, &Local::distance);
+    refine(curvature_candidates, e.curvature_max, &Local::curvature);
+    e.curvature_l2 = std::sqrt(l2 / L);
     e.length = std::abs(analysis::arc_length(c, kLengthPieces) - L) / L;
     return e;
 }
@@ -305,6 +467,33 @@ const std::vector<PredictedOrder>& predicted_orders() {
     return p;
 }
 
+double truth_rounding_level(int measure, int n) {
+    const double level = 64.0 * std::numeric_limits<double>::epsilon();
+    return measure == 0 ? level : measure == 2 || measure == 3 ? level * n * n : level * n;
+}
+
+double truth_solver_level(int measure, int n) {
+    const double per_span = 1e-13 * n;
+    return measure == 2 || measure == 3 ? per_span * n : per_span;
+}
+
+double truth_error_floor(const std::string& method, int measure, int n) {
+    const double rounding = truth_rounding_level(measure, n);
+    return methods::find_configuration(method).method->iterative ? std::max(rounding, truth_solver_level(measure, n))
+                                                                 : rounding;
+}
+
+const char* to_string(OrderRegime regime) {
+    switch (regime) {
+        case OrderRegime::asymptotic: return "asymptotic";
+        case OrderRegime::pre_asymptotic: return "pre-asymptotic";
+        case OrderRegime::exact: return "exact";
+        case OrderRegime::solver_level: return "solver tolerance";
+        case OrderRegime::none: return "none";
+    }
+    return "?";
+}
+
 std::vector<ConvergenceOrder> convergence_orders(const std::vector<TruthRun>& runs) {
     // Group the runs of one (family, spacing, closed, method) by size, in the runs' order.
     using Key = std::tuple<std::string, int, bool, std::string>;
@@ -317,30 +506,41 @@ std::vector<ConvergenceOrder> convergence_orders(const std::vector<TruthRun>& ru
     }
     std::vector<ConvergenceOrder> out;
     for (const Key& k : order_of_keys) {
-        const std::vector<const TruthRun*>& g = groups[k];
-        if (std::any_of(g.begin(), g.end(), [](const TruthRun* r) { return r->status != AttemptStatus::ok; })) continue;
+        std::vector<const TruthRun*> by_size = groups[k];
+        if (std::any_of(by_size.begin(), by_size.end(),
+                        [](const TruthRun* r) { return r->status != AttemptStatus::ok; }))
+            continue;
+        std::stable_sort(by_size.begin(), by_size.end(),
+                         [](const TruthRun* a, const TruthRun* b) { return a->n < b->n; });
+        const bool iterative = methods::find_configuration(std::get<3>(k)).method->iterative;
         for (int measure = 0; measure < static_cast<int>(truth_error_names().size()); ++measure) {
             ConvergenceOrder c;
             c.family = std::get<0>(k), c.spacing = static_cast<TruthSpacing>(std::get<1>(k)), c.closed = std::get<2>(k),
             c.method = std::get<3>(k);
             c.measure = truth_error_names()[static_cast<std::size_t>(measure)];
-            // The largest kFittedSizes sizes above the exact level, in decreasing n.
-            std::vector<const TruthRun*> by_size(g.begin(), g.end());
-            std::stable_sort(by_size.begin(), by_size.end(),
-                             [](const TruthRun* a, const TruthRun* b) { return a->n > b->n; });
-            double sx = 0, sy = 0, sxx = 0, sxy = 0;
-            int count = 0, above = 0;
-            for (const TruthRun* r : by_size) {
-                const double e = truth_error(r->errors, measure);
-                if (e <= truth_exact_level(r->n)) continue;
-                ++above;
-                if (count == kFittedSizes) continue;
-                const double x = std::log(static_cast<double>(r->n)), y = std::log(e);
-                sx += x, sy += y, sxx += x * x, sxy += x * y, ++count;
+            bool all_rounding = true, all_floor = true;
+            for (std::size_t i = 0; i < by_size.size(); ++i) {
+                const int n = by_size[i]->n;
+                const double e = truth_error(by_size[i]->errors, measure), rounding = truth_rounding_level(measure, n);
+                all_rounding = all_rounding && e <= rounding;
+                all_floor = all_floor && e <= truth_error_floor(c.method, measure, n);
+                if (i + 1 == by_size.size()) break;
+                const int n1 = by_size[i + 1]->n;
+                const double e1 = truth_error(by_size[i + 1]->errors, measure);
+                if (e > rounding && e1 > truth_rounding_level(measure, n1) && n1 > n)
+                    c.pairs.push_back({n, n1, -std::log(e1 / e) / std::log(static_cast<double>(n1) / n)});
             }
-            c.sizes_fitted = count;
-            c.exact = above == 0;
-            if (count == kFittedSizes) c.order = -(count * sxy - sx * sy) / (count * sxx - sx * sx);
+            if (!iterative && all_rounding)
+                c.regime = OrderRegime::exact;
+            else if (iterative && all_floor)
+                c.regime = OrderRegime::solver_level;
+            else if (!c.pairs.empty()) {
+                c.order = c.pairs.back().order;
+                c.regime = c.pairs.size() >= 2 &&
+                                   std::abs(c.pairs.back().order - c.pairs[c.pairs.size() - 2].order) <= kAsymptoticBand
+                               ? OrderRegime::asymptotic
+                               : OrderRegime::pre_asymptotic;
+            }
             for (const PredictedOrder& p : predicted_orders())
                 if (p.method == c.method && p.measure == c.measure && p.closed == c.closed)
                     c.predicted = p.order, c.source = p.source;
@@ -386,27 +586,46 @@ std::vector<std::vector<std::string>> truth_runs_rows(const std::vector<TruthRun
 }
 
 std::vector<std::string> convergence_orders_header() {
-    return {"family", "spacing",      "closed",    "method",  "measure", "order",
-            "exact",  "sizes_fitted", "predicted", "verdict", "source"};
+    return {"family", "spacing", "closed",    "method",  "measure", "order",
+            "regime", "pairs",   "predicted", "verdict", "source"};
 }
 
 namespace {
 
 std::string verdict(const ConvergenceOrder& c) {
     if (!c.predicted) return "measured";
-    if (c.exact) return "holds (exact)";
+    if (c.regime == OrderRegime::exact) return "holds (exact)";
     if (!c.order) return "not measurable";
+    if (c.regime != OrderRegime::asymptotic) return "not asymptotic";
     return std::abs(*c.order - *c.predicted) <= kPredictedOrderTolerance ? "holds" : "fails";
 }
 
-std::string order_text(const ConvergenceOrder& c) {
-    if (c.exact) return "exact";
-    if (!c.order) return "-";
+std::string fixed2(double v) {
     std::ostringstream s;
     s.setf(std::ios::fixed);
     s.precision(2);
-    s << *c.order;
+    s << v;
     return s.str();
+}
+
+// The leaderboard's order: the value, "(p)" when pre-asymptotic, or the regime.
+std::string order_text(const ConvergenceOrder& c) {
+    switch (c.regime) {
+        case OrderRegime::exact: return "exact";
+        case OrderRegime::solver_level: return "solver tol.";
+        case OrderRegime::asymptotic: return fixed2(*c.order);
+        case OrderRegime::pre_asymptotic: return "(" + fixed2(*c.order) + ")";
+        case OrderRegime::none: break;
+    }
+    return "-";
+}
+
+std::string pairs_text(const ConvergenceOrder& c) {
+    std::string t;
+    for (const PairOrder& p : c.pairs)
+        (t += t.empty() ? "" : ";") +=
+            std::to_string(p.n0) + "/" + std::to_string(p.n1) + ":" + format_number(p.order, 4);
+    return t;
 }
 
 }  // namespace
@@ -415,7 +634,7 @@ std::vector<std::vector<std::string>> convergence_orders_rows(const std::vector<
     std::vector<std::vector<std::string>> rows;
     for (const ConvergenceOrder& c : orders)
         rows.push_back({c.family, to_string(c.spacing), c.closed ? "1" : "0", c.method, c.measure,
-                        c.order ? format_number(*c.order, 4) : "", c.exact ? "1" : "0", std::to_string(c.sizes_fitted),
+                        c.order ? format_number(*c.order, 4) : "", to_string(c.regime), pairs_text(c),
                         c.predicted ? format_number(*c.predicted, 3) : "", verdict(c), c.source});
     return rows;
 }
@@ -446,21 +665,32 @@ std::string truth_leaderboard_markdown(const std::vector<TruthRun>& runs, const 
         });
         md << "\n#### " << f.name << ": " << f.description << "\n\n"
            << largest << " points uniform in arc length" << (f.closed ? ", closed" : "")
-           << "; errors dimensionless (see the notes above); order = observed order of the distance over n = ";
+           << "; errors dimensionless (see the notes above); distances within the rounding level (64 ε; "
+              "an iterative method's: its solver level, 1e−13 n) of the row above share its rank; order = the "
+              "distance's order from the last pair of successive sizes, in parentheses when the pair before "
+              "disagrees by more than "
+           << kAsymptoticBand << " (pre-asymptotic), over n = ";
         std::vector<int> sizes;
         for (const TruthRun& r : runs)
             if (r.family == f.name && std::find(sizes.begin(), sizes.end(), r.n) == sizes.end()) sizes.push_back(r.n);
         for (std::size_t i = 0; i < sizes.size(); ++i) md << (i ? ", " : "") << sizes[i];
         md << ".\n\n| rank | method | distance | order | tangent angle | curvature max | curvature L2 | length "
               "|\n|---:|---|---:|---:|---:|---:|---:|---:|\n";
-        int rank = 0;
+        // Competition ranking with ties: a distance within the larger floor (truth_error_floor) of the
+        // row above it shares that row's rank.
+        int rank = 0, position = 0;
+        double previous = 0.0, previous_floor = 0.0;
         for (const TruthRun* r : rows) {
             if (r->status != AttemptStatus::ok) {
                 md << "| — | `" << r->method << "` | " << to_string(r->status) << " | | | | | |\n";
                 continue;
             }
+            const double floor = truth_error_floor(r->method, 0, r->n);
+            ++position;
+            if (position == 1 || r->errors.distance - previous > std::max(floor, previous_floor)) rank = position;
+            previous = r->errors.distance, previous_floor = floor;
             const ConvergenceOrder* o = find_order(*r, "distance");
-            md << "| " << ++rank << " | `" << r->method << "` | " << number(r->errors.distance) << " | "
+            md << "| " << rank << " | `" << r->method << "` | " << number(r->errors.distance) << " | "
                << (o ? order_text(*o) : "-") << " | " << number(r->errors.tangent_angle) << " | "
                << number(r->errors.curvature_max) << " | " << number(r->errors.curvature_l2) << " | "
                << number(r->errors.length) << " |\n";
@@ -490,26 +720,28 @@ std::string truth_leaderboard_markdown(const std::vector<TruthRun>& runs, const 
             shape_row("`" + s->method + "`", s->shape, s->extensionality ? number(*s->extensionality) : "no curve");
     }
     // Exact reproduction: every size at rounding level, in both spacings.
-    md << "\n#### Exact reproduction\n\nA method reproduces a curve when its distance is at most "
-       << format_number(kTruthExactLevelPerPoint, 2) << " × n"
-       << " at every size and spacing (closed where the curve is closed):\n\n| family | methods |\n|---|---|\n";
+    md << "\n#### Exact reproduction\n\nA direct method reproduces a curve when its distance is at its rounding "
+          "level, 64 ε, at every size and spacing (closed where the curve is closed); an iterative method's "
+          "distance at its solver level, 1e−13 n, is listed as such:\n\n| family | methods |\n|---|---|\n";
     for (const char* name : {"line", "circle", "clothoid"}) {
         std::vector<std::string> exact;
-        std::map<std::string, bool> all;
+        std::map<std::string, bool> all, solver;
         for (const ConvergenceOrder& c : orders)
             if (c.family == name && c.measure == "distance" && c.closed == find_truth_family(name).closed) {
                 if (!all.count(c.method)) all[c.method] = true, exact.push_back(c.method);
-                all[c.method] = all[c.method] && c.exact;
+                all[c.method] =
+                    all[c.method] && (c.regime == OrderRegime::exact || c.regime == OrderRegime::solver_level);
+                if (c.regime == OrderRegime::solver_level) solver[c.method] = true;
             }
         std::string list;
         for (const std::string& m : exact)
-            if (all[m]) list += (list.empty() ? "`" : ", `") + m + "`";
+            if (all[m]) list += (list.empty() ? "`" : ", `") + m + "`" + (solver[m] ? " (solver tolerance)" : "");
         md << "| " << name << " | " << (list.empty() ? "none" : list) << " |\n";
     }
     md << "\n#### Predicted orders\n\nWhere a theorem predicts the order of convergence, the observed order must be "
           "within "
-       << kPredictedOrderTolerance
-       << " of it:\n\n| method | family | spacing | closed | measure | predicted | observed | verdict | source "
+       << kPredictedOrderTolerance << " of it, where it is asymptotic (its last two pairs within " << kAsymptoticBand
+       << "):\n\n| method | family | spacing | closed | measure | predicted | observed | verdict | source "
           "|\n|---|---|---|---|---|---:|---:|---|---|\n";
     for (const ConvergenceOrder& c : orders)
         if (c.predicted)

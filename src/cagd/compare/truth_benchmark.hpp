@@ -4,22 +4,33 @@
 /// curves of truth_curves.hpp, every configuration of the registry interpolating them, and each
 /// curve measured against the curve the points came from.
 ///
-/// Errors of one interpolant (truth_errors), on 16 Gauss–Legendre nodes in the interpolant's own
-/// parameter on every span (8 left the curvature's L2 3 % low on 9 points of the ellipse); each node q = c(u) is
-/// projected onto the truth, T(t*) nearest to q (Newton on (T(t) − q)·T'(t) = 0 from the truth parameter at the same
-/// fraction of the span, clamped to the sampled stretch):
-///   distance       max |q − T(t*)| over the nodes (a sample of the maximum: the tests find it
-///                  within 5 % of 65 equally spaced samples per span), ÷ the truth's length L
-///   tangent angle  max angle between c'(u) and T'(t*) (radians)
-///   curvature      max |κ_c(u) − κ_T(t*)| × L, and the L2 form (∫ (κ_c − κ_T)² ds / L)^(1/2) × L
-///                  over the interpolant's arc length (planar: signed κ; space: |κ|)
+/// Errors of one interpolant (truth_errors), per piece of each data span between the interpolant's
+/// breakpoints (κ' may jump at a B-spline peer's knots inside a span), in the interpolant's own
+/// parameter; each point q = c(u) is projected onto the truth, T(t*) nearest to q among the spans
+/// beside it (the truth sampled at 8 steps per span over the data spans k − 1 … k + 1, wrapping round
+/// a closed curve; Newton on (T(t) − q)·T'(t) = 0 from the nearest sample, between its neighbours):
+///   distance       sup |q − T(t*)| ÷ the truth's length L
+///   tangent angle  the largest angle between c'(u) and T'(t*) over the samples (radians)
+///   curvature      sup |κ_c(u) − κ_T(t*)| × L, and the L2 form (∫ (κ_c − κ_T)² ds / L)^(1/2) × L,
+///                  ds the interpolant's arc length, L the truth's (planar: signed κ; space: |κ|)
 ///   length         |L_c − L| / L (adaptive Gauss–Kronrod lengths, analysis/)
+/// The L2 integral: 16-point Gauss–Legendre per piece, accepted where the 8-point rule agrees to
+/// 1e−6 of it (or to the curvature's rounding level), the piece halved otherwise (at most 10 times).
+/// The suprema: the largest of every sample (both rules' nodes and each piece's ends, one-sided), in
+/// the 4 pieces of the largest samples refined by Brent's method between the samples beside it (the
+/// maximiser to 2^−20 of that bracket, so a smooth maximum's value to about 2^−40 of it). The tests
+/// hold both to a dense computation: at least every one of 128 equally spaced samples per span, and
+/// within 1e−3 of their largest.
 /// Each is dimensionless, so families and sizes compare.
 ///
-/// Observed order (convergence_orders): p = −log(e_2/e_1)/log(n_2/n_1) from the two largest sizes
-/// whose error is above truth_exact_level(n) (smaller sizes are before the asymptotic regime: the
-/// slope fitted over 6..96 mixes regimes); "exact" when no size is above it, none when only one is. An order is a claim
-/// where a theorem predicts it (predicted_orders: the source is named) and otherwise a measurement.
+/// Observed order (convergence_orders): from every pair of successive sizes n_k < n_{k+1} whose
+/// errors are both above the rounding level (truth_rounding_level), p_k = −log(e_{k+1}/e_k)/log(n_{k+1}/
+/// n_k). The published order is the last pair's; it is asymptotic when the pair before it agrees
+/// within kAsymptoticBand, and otherwise marked pre-asymptotic, with its pairs. "exact" when a
+/// direct method's error is at its rounding level at every size; "solver tolerance" when an
+/// iterative method's is at its solver's level at every size. An order is a claim where a theorem
+/// predicts it (predicted_orders: the source is named), checked only where it is asymptotic; and
+/// otherwise a measurement.
 #include <optional>
 #include <string>
 #include <vector>
@@ -31,13 +42,26 @@
 
 namespace cagd::compare {
 
-/// Errors at or below truth_exact_level(n) are rounding: the curve reproduces the truth. The
-/// level grows with n: the iterative methods stop at 1e−12 of the largest chord per equation, and
-/// their positions drift by about that per span along the curve (the clothoid spline on a circle of
-/// 768 non-uniform points: 3.7e−11 of its length; 1e−16 at 6 points).
-inline constexpr double kTruthExactLevelPerPoint = 1e-13;
-/// kTruthExactLevelPerPoint × n.
-inline double truth_exact_level(int n) { return kTruthExactLevelPerPoint * n; }
+/// The rounding level of error `measure` (truth_error_names() index) at n points: 64 ε for the
+/// distance (positions evaluated near the truth: the line's exact reproductions are at 1.4e−16),
+/// 64 ε n for the tangent angle and the length (the length's quadrature sums n pieces), 64 ε n² for
+/// the two curvature errors (a curvature from second derivatives over spans of length L/n
+/// amplifies the positions' rounding by n²). A direct method's error at or below it is rounding;
+/// the order's pairs use no error at or below it, for any method.
+double truth_rounding_level(int measure, int n);
+/// An iterative method's solver level of error `measure` at n points: 1e−13 n for the distance, the
+/// tangent angle and the length, 1e−13 n² for the curvature errors. Its Newton stops at a residual
+/// of about 1e−12 of the largest chord per equation (or its rounding level), and its positions drift
+/// by about that along the curve (the clothoid spline on a circle of 768 non-uniform points: 3.7e−11
+/// of its length; 1e−16 at 6 points).
+double truth_solver_level(int measure, int n);
+/// The error of `method` in `measure` at n points below which it is not a finding: the rounding
+/// level, or for an iterative method (methods::Method::iterative) the larger of it and the solver
+/// level. Errors within it of each other rank as ties; an iterative method at or below it at every
+/// size is "solver tolerance".
+double truth_error_floor(const std::string& method, int measure, int n);
+/// Successive pair orders agreeing within this make the last one asymptotic.
+inline constexpr double kAsymptoticBand = 0.2;
 
 /// The errors of one interpolant against its truth (see above).
 struct TruthErrors {
@@ -55,15 +79,17 @@ double truth_error(const TruthErrors& e, int index);
 TruthErrors truth_errors(const methods::Interpolant& interpolant, const TruthSample& sample, const Curve& truth);
 
 /// Scale-free shape measures of a curve (L its length), comparable across sizes, libraries and the
-/// truth itself; on the 16 Gauss nodes per span of truth_errors (the integrals by that rule):
+/// truth itself; on 16 Gauss nodes per piece of each span between the curve's breakpoints (the
+/// integrals by that rule: exact to rounding on polynomial pieces' smooth integrands), and at the
+/// pieces' ends (one-sided):
 struct ShapeMeasures {
     double bending = 0.0;        ///< L ∫ κ² ds
     double variation = 0.0;      ///< L³ ∫ (dκ/ds)² ds
-    double max_curvature = 0.0;  ///< max |κ| · L
+    double max_curvature = 0.0;  ///< max |κ| · L over the nodes and the pieces' ends
     int curvature_extrema = 0;   ///< sign changes of dκ/ds along the curve (|dκ/ds| L² ≤ 1e-9 counts as 0)
     double g2_defect = 0.0;      ///< max over the interior points (closed: every point) of |κ(u⁺) − κ(u⁻)| · L
     /// Sign changes of the signed κ along the curve (closed: around it), on the Gauss nodes and the
-    /// spans' ends (one-sided), |κ| L ≤ 1e-9 counting as 0; a κ jump through 0 at a G1 join counts.
+    /// pieces' ends (one-sided), |κ| L ≤ 1e-9 counting as 0; a κ jump through 0 at a G1 join counts.
     /// Space curves: 0 (|κ| has no sign).
     int inflections = 0;
     /// Inflections the polygon through the points does not imply: inflections less the sign changes
@@ -86,8 +112,7 @@ const std::vector<std::string>& shape_measure_names();
 /// Levien 2009 names the property for Spiro): the point c(u*) at the middle of the parameter
 /// interval of span ⌊spans/2⌋ of `interpolant` is inserted between that span's points, `configuration`
 /// interpolates the n + 1 points again, and the result is the largest distance of the new curve
-/// from the old, ÷ the old curve's length (truth_errors' distance with the old curve as the truth;
-/// 16 Gauss nodes per span). Absent when the method refuses the new points or has no curve for them.
+/// from the old, ÷ the old curve's length (truth_errors' distance with the old curve as the truth). Absent when the method refuses the new points or has no curve for them.
 std::optional<double> extensionality(const methods::Configuration& configuration, const PointList& points, bool closed,
                                      const methods::Interpolant& interpolant);
 
@@ -131,15 +156,31 @@ struct PredictedOrder {
 const std::vector<PredictedOrder>& predicted_orders();
 
 /// The observed order of one measure of one configuration on one family, spacing and closedness.
+/// The regime of an observed order (see above).
+enum class OrderRegime {
+    asymptotic,      ///< the last two pair orders agree within kAsymptoticBand
+    pre_asymptotic,  ///< they do not, or there is one pair only
+    exact,           ///< a direct method at its rounding level at every size
+    solver_level,    ///< an iterative method at its solver's level at every size
+    none             ///< fewer than two sizes above the floor, and not every one at it
+};
+/// "asymptotic", "pre-asymptotic", "exact", "solver tolerance", "none".
+const char* to_string(OrderRegime regime);
+/// One pair of successive sizes and the order it gives.
+struct PairOrder {
+    int n0 = 0, n1 = 0;  ///< the sizes, n0 < n1
+    double order = 0.0;  ///< −log(e1/e0)/log(n1/n0)
+};
+/// The observed order of one measure of one configuration on one truth (see above).
 struct ConvergenceOrder {
     std::string family;                            ///< truth family
     TruthSpacing spacing = TruthSpacing::uniform;  ///< where the points are
     bool closed = false;                           ///< closed points
     std::string method;                            ///< configuration
     std::string measure;                           ///< one of truth_error_names()
-    std::optional<double> order;                   ///< p, from the two largest sizes above truth_exact_level(n)
-    bool exact = false;                            ///< every size at or below truth_exact_level(n)
-    int sizes_fitted = 0;                          ///< sizes in the fit
+    std::vector<PairOrder> pairs;                  ///< every successive pair above the floor, in increasing n
+    OrderRegime regime = OrderRegime::none;        ///< see above
+    std::optional<double> order;                   ///< the last pair's order (asymptotic or pre-asymptotic)
     std::optional<double> predicted;               ///< the predicted order, when there is one
     std::string source;                            ///< its source
 };
@@ -153,8 +194,9 @@ inline constexpr double kPredictedOrderTolerance = 0.35;
 std::vector<std::string> truth_runs_header();
 /// One row per run, the errors to `digits` significant digits (empty unless ok).
 std::vector<std::vector<std::string>> truth_runs_rows(const std::vector<TruthRun>& runs, int digits = 6);
-/// convergence_orders.csv's columns: family, spacing, closed, method, measure, order, exact,
-/// sizes_fitted, predicted, verdict (measured, holds, holds (exact), fails, not measurable), source.
+/// convergence_orders.csv's columns: family, spacing, closed, method, measure, order, regime, pairs
+/// ("n0/n1:p" separated by ";"), predicted, verdict (measured, holds, holds (exact), fails, not
+/// asymptotic, not measurable), source.
 std::vector<std::string> convergence_orders_header();
 /// One row per order.
 std::vector<std::vector<std::string>> convergence_orders_rows(const std::vector<ConvergenceOrder>& orders);

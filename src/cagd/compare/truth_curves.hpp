@@ -9,7 +9,7 @@
 ///   circle         (cos t, sin t)                                             [0, 2π]     yes
 ///   ellipse        (2 cos t, sin t)                                           [0, 2π]     yes
 ///   epitrochoid    ((R+r) cos t − d cos((R+r)t/r), (R+r) sin t − d sin((R+r)t/r)),
-///                  R = 3, r = 1, d = 1/2 (a four-lobed rose, no self-intersection)  [0, 2π]  yes
+///                  R = 3, r = 1, d = 1/2 (a three-lobed rose, no self-intersection)  [0, 2π]  yes
 ///   clothoid       r(s) = ∫_0^s (cos σ²/2, sin σ²/2) dσ, s arc length        [0, 2.5]    no
 ///   log-aesthetic  ρ^α = c0 s + c1 with α = 2, c0 = c1 = 1 (typical_curves eq 8: κ = (1 + s)^(−1/2),
 ///                  turning 2(√5 − 1) rad), s arc length                       [0, 4]      no
