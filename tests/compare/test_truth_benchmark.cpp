@@ -252,6 +252,25 @@ TEST(TruthBenchmark, OrdersFromSuccessivePairs) {
     EXPECT_TRUE(convergence_orders(runs).empty());
 }
 
+// The leaderboard: exact reproductions tie (rank 1 each on the line), and boost-catmull-rom's
+// wrap-around end tangents are stated beside its rows on an open truth, with what they do there.
+TEST(TruthBenchmark, LeaderboardRanksTiesAndExplainsThePeer) {
+    TruthBenchmarkOptions o;
+    o.sizes = {6, 12, 24};
+    o.families = {"line", "clothoid"};
+    o.methods = {"cubic-b", "hermite-a", "boost-catmull-rom"};
+    const std::vector<TruthRun> runs = run_truth_benchmark(o);
+    const std::string md = truth_leaderboard_markdown(runs, convergence_orders(runs));
+    EXPECT_NE(md.find("| 1 | `cubic-b` | 0 | exact |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| 1 | `hermite-a` | 0 | exact |"), std::string::npos) << md;
+    std::size_t notes = 0;
+    for (std::size_t at = md.find("`boost-catmull-rom`: Boost closes"); at != std::string::npos;
+         at = md.find("`boost-catmull-rom`: Boost closes", at + 1))
+        ++notes;
+    EXPECT_EQ(notes, 2u) << "one note per open family: " << md;
+    EXPECT_NE(md.find("here the distance's order is 0.9"), std::string::npos) << "about 1 on the clothoid: " << md;
+}
+
 TEST(TruthBenchmark, ResultsDoNotDependOnTheThreadCount) {
     TruthBenchmarkOptions one, two;
     one.sizes = two.sizes = {6, 12};

@@ -695,6 +695,16 @@ std::string truth_leaderboard_markdown(const std::vector<TruthRun>& runs, const 
                << number(r->errors.curvature_max) << " | " << number(r->errors.curvature_l2) << " | "
                << number(r->errors.length) << " |\n";
         }
+        // The behaviour that decides a peer's rank, beside its row, with what it does here.
+        for (const TruthRun* r : rows)
+            if (r->method == "boost-catmull-rom" && !r->closed && r->status == AttemptStatus::ok) {
+                const ConvergenceOrder* o = find_order(*r, "distance");
+                md << "\n`boost-catmull-rom`: Boost closes an open curve's end tangents round the other end (ghost "
+                      "points P_{n−1} before P_0 and P_0, P_1 after P_{n−1}; docs/methods.md): here the distance's "
+                      "order is "
+                   << (o ? order_text(*o) : "-") << " and the tangent-angle error " << number(r->errors.tangent_angle)
+                   << " rad.\n";
+            }
         // The shape at a size where the methods still differ visibly, beside the truth's.
         std::vector<const TruthRun*> shaped;
         for (const TruthRun* r : rows)

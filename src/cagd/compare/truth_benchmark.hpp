@@ -112,7 +112,8 @@ const std::vector<std::string>& shape_measure_names();
 /// Levien 2009 names the property for Spiro): the point c(u*) at the middle of the parameter
 /// interval of span ⌊spans/2⌋ of `interpolant` is inserted between that span's points, `configuration`
 /// interpolates the n + 1 points again, and the result is the largest distance of the new curve
-/// from the old, ÷ the old curve's length (truth_errors' distance with the old curve as the truth). Absent when the method refuses the new points or has no curve for them.
+/// from the old, ÷ the old curve's length (truth_errors' distance with the old curve as the truth). Absent when the
+/// method refuses the new points or has no curve for them.
 std::optional<double> extensionality(const methods::Configuration& configuration, const PointList& points, bool closed,
                                      const methods::Interpolant& interpolant);
 
@@ -168,7 +169,8 @@ enum class OrderRegime {
 const char* to_string(OrderRegime regime);
 /// One pair of successive sizes and the order it gives.
 struct PairOrder {
-    int n0 = 0, n1 = 0;  ///< the sizes, n0 < n1
+    int n0 = 0;          ///< the smaller size
+    int n1 = 0;          ///< the larger size, n1 > n0
     double order = 0.0;  ///< −log(e1/e0)/log(n1/n0)
 };
 /// The observed order of one measure of one configuration on one truth (see above).
