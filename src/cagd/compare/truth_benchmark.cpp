@@ -144,7 +144,7 @@ std::vector<double> piece_ends(const std::vector<double>& br, double u0, double 
     return ends;
 }
 
-// The largest of f over [lo, hi] from Brent's method, never below the value at the sample `at`.
+// The largest of f over [lo, hi] by Brent's method, and never below `sampled`, the largest sample's value.
 double refined_maximum(const std::function<double(double)>& f, double lo, double hi, double sampled) {
     if (!(hi > lo)) return sampled;
     const auto [x, minus] = boost::math::tools::brent_find_minima([&](double v) { return -f(v); }, lo, hi, kRefineBits);
@@ -285,8 +285,8 @@ TruthErrors truth_errors(const methods::Interpolant& in, const TruthSample& samp
         const std::vector<double> ends = piece_ends(breakpoints, in.node_parameters[k], in.node_parameters[k + 1]);
         for (std::size_t p = 0; p + 1 < ends.size(); ++p) {
             const double a = ends[p], b = ends[p + 1];
-            // The piece's ends (one-sided), and every point the adaptive Gauss–Kronrod rule of the
-            // curvature's L2 evaluates: the samples of the maxima, in increasing u.
+            // The piece's ends (one-sided), and every node the adaptive Gauss–Legendre rules of the
+            // curvature's L2 evaluate: the samples of the maxima, in increasing u.
             samples.assign({{a, local(a, k, JetSide::right)}, {b, local(b, k, JetSide::left)}});
             const double rounding = truth_rounding_level(2, static_cast<int>(nodes));
             const auto integrand = [&](double u) {
