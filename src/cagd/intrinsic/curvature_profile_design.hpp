@@ -46,14 +46,14 @@
 /// not (recorded as the damping of the iteration); the paper's iteration is the undamped one.
 ///
 /// Outcomes (returned, never thrown): ok when ‖f‖∞ ≤ tolerance·max(1, largest chord), or when the
-/// iteration settles (its step below r = 1e−13·(1 + ‖u‖∞), the resolution of u) with
-/// ‖f‖∞ ≤ 2‖J‖∞·r, the residual a root within r could leave: the curvature equations' rounding
-/// level, which can exceed the absolute tolerance (a 270° arc through 96 points settles at
-/// 7e−12); the history's last record has that residual. no_solution only with evidence: settled
-/// above that level with a rank-deficient Jacobian or more equations than unknowns (a
-/// least-squares point) — the conditions are inconsistent (e.g. an arc span no arc with the given
-/// tangents joins). A regular system settled above it is no_convergence, the solver's failure,
-/// not evidence that no curve exists. no_convergence also when max_iterations
+/// iteration settles (its step below r = 1e−13·(1 + ‖u‖∞), the resolution of u) with a regular
+/// Jacobian and ‖f‖∞ ≤ 2‖J‖∞·r, the residual a root within r could leave: the curvature
+/// equations' rounding level, which can exceed the absolute tolerance (a 270° arc through 96
+/// points settles at 7e−12); the history's last record has that residual. no_solution only with
+/// evidence: settled on a least-squares point above that level with a rank-deficient Jacobian or
+/// more equations than unknowns — the conditions are inconsistent (e.g. an arc span no arc with
+/// the given tangents joins). A square regular system settled above it is no_convergence, the
+/// solver's failure, not evidence that no curve exists. no_convergence also when max_iterations
 /// pass, or when an iterate diverges: neighbouring de Boor
 /// ordinates B_i, B_{i+1} more than kMaxOrdinateTurning = 1000 rad apart (160 turns; the integrals
 /// of eq 3 would cost O(turning) per segment; found by fuzzing, on a closed 6-point hairpin). The

@@ -193,23 +193,22 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
         const double step = lambda * delta.lpNorm<Eigen::Infinity>();
         sol.history.push_back({it, res, step, lambda, sol.rank});
         if (step <= kStalledStep * (1.0 + sol.u.lpNorm<Eigen::Infinity>())) {
-            // Settled above the tolerance. Within what a root at the step's resolution could leave:
-            // converged as far as double precision goes, whatever the rank. Above it, inconsistent
-            // conditions only with evidence — a rank-deficient Jacobian, or more equations than
-            // unknowns (a least-squares point); a regular system settled above it is the solver's failure.
+            // Settled above the tolerance. With a regular Jacobian and a residual a root at the step's
+            // resolution could leave: converged as far as double precision goes. Otherwise inconsistent
+            // conditions only with evidence — a rank below the unknowns, or more equations than unknowns
+            // (a least-squares point); a regular square system settled above that is the solver's failure.
             const double radius = kStalledStep * (1.0 + sol.u.lpNorm<Eigen::Infinity>());
             const double reach = kReachMultiple *
                                  (sys.jacobian.cwiseAbs() * Eigen::VectorXd::Ones(sys.jacobian.cols())).maxCoeff() *
                                  radius;
-            const bool full_rank =
-                options.step != NewtonStep::pseudo_inverse || sol.rank == std::min(sol.equations, sol.unknowns);
+            const bool full_rank = options.step != NewtonStep::pseudo_inverse || sol.rank == sol.unknowns;
             const std::string found =
                 "‖f‖∞ = " + full_precision(res) + " above the tolerance " + full_precision(tol) + " and " +
                 full_precision(res / reach) + " times what a root within the step's resolution " +
                 full_precision(radius) + " could leave (worst equation " + worst_equation(P, sys.f) + "; " +
                 std::to_string(sol.equations) + " equations, " + std::to_string(sol.unknowns) + " unknowns, " +
                 (sol.rank < 0 ? std::string("a regular LU") : "rank " + std::to_string(sol.rank)) + ")";
-            if (res <= reach) {
+            if (full_rank && res <= reach) {
                 sol.history.back().step = 0.0;  // the final record: the step was not taken
                 sol.history.back().damping = 1.0;
                 finish_ok(P, sol);
