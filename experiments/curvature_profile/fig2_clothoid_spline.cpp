@@ -68,10 +68,12 @@ int main(int argc, char** argv) {
     run.validate("fig2.sparse_lu",
                  "Newton with sparse LU steps against the Moore–Penrose steps (square, regular J): largest span-length "
                  "difference",
-                 length_dev(sparse), 0.0, 1e-10, "two Newton solutions to ‖f‖∞ ≤ 1e-12·scale (measured ≤ 1e-13)");
+                 length_dev(sparse), 0.0, 1e-10,
+                 "two Newton solutions to ‖f‖∞ ≤ 1e-12 per dimensionless equation (measured ≤ 1e-13)");
     run.validate("fig2.levenberg_marquardt",
                  "Ceres Levenberg–Marquardt (own central-difference Jacobian): largest span-length difference",
-                 length_dev(lm), 0.0, 1e-8, "LM stops at ‖f‖∞ ≤ 1e-9·scale with a finite-difference Jacobian");
+                 length_dev(lm), 0.0, 1e-8,
+                 "LM stops at ‖f‖∞ ≤ 1e-9 per dimensionless equation with a finite-difference Jacobian");
     run.validate("fig2.degree3_equivalent",
                  "degree-3 ψ with double knots and linear curvature on every segment: largest span-length difference",
                  length_dev(cub), 0.0, 1e-10, "two Newton solutions (measured ≤ 1e-13)");

@@ -142,15 +142,17 @@ int main(int argc, char** argv) {
         cubic_dev = std::max(cubic_dev, std::abs(cub.segment_lengths()[static_cast<std::size_t>(j)] -
                                                  lengths[static_cast<std::size_t>(j)]));
     }
-    run.validate("fig3.levenberg_marquardt",
-                 "Ceres Levenberg–Marquardt (own central-difference Jacobian) from the same start: largest difference "
-                 "of the 11 determined span lengths",
-                 lm_dev, 0.0, 1e-8,
-                 "LM stops at ‖f‖∞ ≤ 1e-9·scale with a finite-difference Jacobian (measured ≤ 1e-10)");
+    run.validate(
+        "fig3.levenberg_marquardt",
+        "Ceres Levenberg–Marquardt (own central-difference Jacobian) from the same start: largest difference "
+        "of the 11 determined span lengths",
+        lm_dev, 0.0, 1e-8,
+        "LM stops at ‖f‖∞ ≤ 1e-9 per dimensionless equation with a finite-difference Jacobian (measured ≤ 1e-10)");
     run.validate("fig3.degree3_equivalent",
                  "the same design as a degree-3 ψ (triple/double knots, linear curvature on free segments): largest "
                  "difference of the 11 determined span lengths",
-                 cubic_dev, 0.0, 1e-10, "two Newton solutions to ‖f‖∞ ≤ 1e-12·scale (measured ≤ 1e-13)");
+                 cubic_dev, 0.0, 1e-10,
+                 "two Newton solutions to ‖f‖∞ ≤ 1e-12 per dimensionless equation (measured ≤ 1e-13)");
     const double cubic_second = pinned(cubic.layout, cubic.shapes, s10, paper_first)[static_cast<std::size_t>(s10) + 1];
     run.validate("fig3.degree3_pinned_span10",
                  "span ⑩'s second segment given the first = 2.053, degree-3 formulation against degree 2", cubic_second,

@@ -127,7 +127,7 @@ TEST(Methods, AllocationFreeJetsEqualTheAllocatingOnes) {
     for_each_method_curve([](const std::string& which, const Curve& c) {
         JetMatrix J;
         for (int k = 0; k <= 40; ++k) {
-            const double t = c.t_min() + (c.t_max() - c.t_min()) * k / 40.0;
+            const double t = std::min(c.t_max(), c.t_min() + (c.t_max() - c.t_min()) * k / 40.0);
             for (int order = 0; order < kJetCapacity; ++order) {
                 c.jet_into(t, order, J);
                 const Eigen::MatrixXd expected = c.jet(t, order);
@@ -160,7 +160,8 @@ TEST(Methods, BatchJetsEqualTheJetsOneByOne) {
     // both ends; blocks longer than the wrapper's own (256) included.
     for_each_method_curve([](const std::string& which, const Curve& c) {
         std::vector<double> t;
-        for (int k = 0; k <= 600; ++k) t.push_back(c.t_min() + (c.t_max() - c.t_min()) * k / 600.0);
+        for (int k = 0; k <= 600; ++k)
+            t.push_back(std::min(c.t_max(), c.t_min() + (c.t_max() - c.t_min()) * k / 600.0));
         for (const double b : c.breakpoints()) t.push_back(b);
         const int dim = c.dimension();
         for (int order = 0; order < kJetCapacity; ++order) {

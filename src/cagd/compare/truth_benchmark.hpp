@@ -51,9 +51,8 @@ namespace cagd::compare {
 double truth_rounding_level(int measure, int n);
 /// An iterative method's solver level of error `measure` at n points: 1e−13 n for the distance, the
 /// tangent angle and the length, 1e−13 n² for the curvature errors. Its Newton stops at a residual
-/// of about 1e−12 of the largest chord per equation (or its rounding level), and its positions drift
-/// by about that along the curve (the clothoid spline on a circle of 768 non-uniform points: 3.7e−11
-/// of its length; 1e−16 at 6 points).
+/// of 1e−12 per dimensionless equation (positions relative to their span's chord) or at its rounding
+/// level, so its positions can drift along the curve by that much per span.
 double truth_solver_level(int measure, int n);
 /// The error of `method` in `measure` at n points below which it is not a finding: the rounding
 /// level, or for an iterative method (methods::Method::iterative) the larger of it and the solver

@@ -25,7 +25,7 @@ Eigen::VectorXd continuation_start(const CurvatureProfileProblem& P, const Eigen
     // The rows start leaves unsatisfied: the interpolation rows of spans i0..i1 only (span i: rows
     // 2i, 2i + 1; one segment per span, its own length and ordinates i..i + p).
     const Eigen::VectorXd f = design_system(P, start, false).f;
-    const double tol = options.tolerance * detail::data_scale(P);
+    const double tol = options.tolerance;
     int i0 = n, i1 = -1;
     for (Eigen::Index r = 0; r < f.size(); ++r)
         if (!(std::abs(f(r)) <= tol)) {

@@ -19,6 +19,11 @@
 ///   closed curves (section 5): ψ(L) − ψ(0) = 2π·turns and κ(L) = κ(0); with closing_continuity
 ///     G > 2 also κ^(d)(L) = κ^(d)(0) for d = 1..G − 2 (Spiro closes G4: d = 1, 2), times h^(d+1)
 ///     with h the mean of the first and last chords.
+/// Every row is dimensionless, so that one tolerance means the same in each: an interpolation row
+/// is divided by its span's chord |P_{i+1} − P_i|, a segment-length row by its span's chord, a
+/// curvature (or radius) row multiplied by its span's chord (closed: the mean of the first and last),
+/// angle and shape rows are in radians. The factors are data, not unknowns: J is scaled with f, and
+/// a square system's Newton step is unchanged by them.
 /// The paper's ψ has degree 2 or 3. Degree 4 (κ cubic in arc length, simple knots: G4) is Levien's
 /// Spiro (R. Levien, From Spiral to Spline: Optimal Techniques in Interactive Curve Design, PhD
 /// thesis, UC Berkeley, 2009, ch. 8), which the same unknowns, integrals and Newton iteration solve.
@@ -45,11 +50,11 @@
 /// Positivity: a step that would shrink a length below a fifth of its value is halved until it does
 /// not (recorded as the damping of the iteration); the paper's iteration is the undamped one.
 ///
-/// Outcomes (returned, never thrown): ok when ‖f‖∞ ≤ tolerance·max(1, largest chord), or when the
-/// iteration settles (its step below r = 1e−13·(1 + ‖u‖∞), the resolution of u) with a regular
-/// Jacobian and ‖f‖∞ ≤ 2‖J‖∞·r, the residual a root within r could leave: the curvature
-/// equations' rounding level, which can exceed the absolute tolerance (a 270° arc through 96
-/// points settles at 7e−12); the history's last record has that residual. no_solution only with
+/// Outcomes (returned, never thrown): ok when ‖f‖∞ ≤ tolerance (f dimensionless, above), or when the
+/// iteration settles (its step below r = 1e−13·(1 + ‖u‖∞), the resolution of u, and no longer
+/// halving ‖f‖∞ when tried) with a regular Jacobian and ‖f‖∞ ≤ 2‖J‖∞·r, the residual a root within
+/// r could leave: the rows' rounding level, which a tolerance below it cannot beat; the history's
+/// last record has that residual. no_solution only with
 /// evidence: settled on a least-squares point above that level with a rank-deficient Jacobian or
 /// more equations than unknowns — the conditions are inconsistent (e.g. an arc span no arc with
 /// the given tangents joins). A square regular system settled above it is no_convergence, the
@@ -158,7 +163,7 @@ DesignBandOrdering design_band_ordering(const CurvatureProfileProblem& problem);
 struct NewtonOptions {
     NewtonStep step = NewtonStep::pseudo_inverse;  ///< the step
     int max_iterations = 50;                       ///< iterations before no_convergence
-    double tolerance = 1e-12;                      ///< ‖f‖∞ ≤ tolerance·max(1, largest chord) is converged
+    double tolerance = 1e-12;                      ///< ‖f‖∞ ≤ tolerance (f dimensionless) is converged
     /// Give up (no_convergence) as soon as a step leaves ‖f‖∞ above this fraction of the residual
     /// before it; 0 = never. For starts from a nearby solution (continuation), from which Newton
     /// either converges quadratically or wanders: a start outside that basin is abandoned after a
@@ -202,6 +207,14 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
 /// fails (a singular or unconverged iteration) on at most 2000 unknowns. Above 2000 unknowns a failed
 /// LU iteration is returned as it is: the dense step would need n² doubles.
 void add_natural_open_ends(CurvatureProfileProblem& problem);
+/// The G1 Hermite problem with clothoids (two points: one clothoid arc, ψ quadratic in arc length)
+/// and, through more points, the clothoid spline (every span free on span_layout: degree 2, G2
+/// joins) whose ends take the tangent angles θ_0 = `start_angle` at the first point and θ_1 =
+/// `end_angle` at the last (radians, from +x) instead of natural ends. Square: 2n interpolation
+/// rows and two angle rows in 2n + 2 unknowns. InvalidInput for fewer than 2 points or a
+/// non-finite angle (then as require_valid_problem).
+CurvatureProfileProblem clothoid_spline_with_end_angles(const PointList& points, double start_angle, double end_angle);
+
 /// The solve of the defaults above (the step chosen by size; the other options as given).
 CurvatureProfileSolution solve_curvature_profile_auto(const CurvatureProfileProblem& problem,
                                                       const NewtonOptions& options = {});

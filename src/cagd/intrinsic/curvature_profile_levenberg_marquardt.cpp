@@ -34,7 +34,7 @@ struct DesignResidual {
 namespace {
 
 // The Levenberg–Marquardt cross-check. Its Jacobian is a central difference (error ~ε^(2/3) ≈
-// 4e-11 relative), so it is accepted at ‖f‖∞ ≤ kLmAcceptance · scale, three digits above Newton's
+// 4e-11 relative), so it is accepted at ‖f‖∞ ≤ kLmAcceptance, three digits above Newton's
 // exact-Jacobian tolerance (NewtonOptions::tolerance, 1e-12): what it checks is the span lengths,
 // to 1e-8 (fig2, fig3). Its own stopping rules are set below any reachable value so that only the
 // iteration limit (LM takes tens of iterations here) or a stall ends it.
@@ -78,7 +78,7 @@ CurvatureProfileSolution solve_curvature_profile_levenberg_marquardt(const Curva
     const Eigen::VectorXd f = design_system(P, sol.u, false).f;
     const double res = f.lpNorm<Eigen::Infinity>();
     sol.history.push_back({static_cast<int>(summary.iterations.size()), res, 0.0, 1.0, -1});
-    if (res <= kLmAcceptance * scale) {
+    if (res <= kLmAcceptance) {
         detail::finish_ok(P, sol);
         return sol;
     }

@@ -39,7 +39,6 @@ void finish_ok(const CurvatureProfileProblem& P, CurvatureProfileSolution& sol) 
 
 }  // namespace detail
 
-using detail::data_scale;
 using detail::DesignWorkspace;
 using detail::finish_ok;
 using detail::worst_equation;
@@ -60,6 +59,8 @@ constexpr double kKeptLengthFraction = 0.2;
 // regular system's Newton step (f = J δ, |f|∞ ≤ ‖J‖∞ |δ|∞) always meets when it settles. The
 // multiple allows for the rounding of the step's solve.
 constexpr double kReachMultiple = 2.0;
+// A step below the stall radius is still taken when it multiplies the residual by at most this.
+constexpr double kSettledContraction = 0.5;
 
 }  // namespace
 
@@ -87,7 +88,7 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
         fail_input(who, std::string("the ") + (options.step == NewtonStep::sparse_lu ? "sparse" : "banded") +
                             " LU step needs a square system; this one has " + std::to_string(sol.equations) +
                             " equations and " + std::to_string(sol.unknowns) + " unknowns (use the pseudo-inverse)");
-    const double tol = options.tolerance * data_scale(P);
+    const double tol = options.tolerance;  // the equations are dimensionless (design_system)
     // The banded step says which LU it took once the band is known (below).
     const char* method = options.step == NewtonStep::pseudo_inverse ? "Newton with the Moore–Penrose step"
                          : options.step == NewtonStep::banded_lu    ? "Newton with banded LU"
@@ -99,7 +100,7 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
     numeric::BandedOrSparseLu lu;  // banded_lu: the band of the analysed pattern, when narrow
     std::vector<int> analysed_outer, analysed_inner;
     DesignWorkspace workspace;
-    DesignSystem sys;
+    DesignSystem sys, trial;
     double previous_residual = std::numeric_limits<double>::infinity();
     for (int it = 0;; ++it) {
         // A diverging iterate winds ψ by hundreds of turns between neighbouring ordinates; the
@@ -193,6 +194,13 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
         const double step = lambda * delta.lpNorm<Eigen::Infinity>();
         sol.history.push_back({it, res, step, lambda, sol.rank});
         if (step <= kStalledStep * (1.0 + sol.u.lpNorm<Eigen::Infinity>())) {
+            // A step at u's resolution that still halves the residual is taken (a curvature row
+            // turns a difference of neighbouring ordinates into f: its last quadratic step is short).
+            design_system_into(P, sol.u - lambda * delta, false, workspace, trial);
+            if (trial.f.lpNorm<Eigen::Infinity>() <= kSettledContraction * res) {
+                sol.u -= lambda * delta;
+                continue;
+            }
             // Settled above the tolerance. With a regular Jacobian and a residual a root at the step's
             // resolution could leave: converged as far as double precision goes. Otherwise inconsistent
             // conditions only with evidence — a rank below the unknowns, or more equations than unknowns
@@ -202,18 +210,18 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
                                  (sys.jacobian.cwiseAbs() * Eigen::VectorXd::Ones(sys.jacobian.cols())).maxCoeff() *
                                  radius;
             const bool full_rank = options.step != NewtonStep::pseudo_inverse || sol.rank == sol.unknowns;
-            const std::string found =
-                "‖f‖∞ = " + full_precision(res) + " above the tolerance " + full_precision(tol) + " and " +
-                full_precision(res / reach) + " times what a root within the step's resolution " +
-                full_precision(radius) + " could leave (worst equation " + worst_equation(P, sys.f) + "; " +
-                std::to_string(sol.equations) + " equations, " + std::to_string(sol.unknowns) + " unknowns, " +
-                (sol.rank < 0 ? std::string("a regular LU") : "rank " + std::to_string(sol.rank)) + ")";
             if (full_rank && res <= reach) {
                 sol.history.back().step = 0.0;  // the final record: the step was not taken
                 sol.history.back().damping = 1.0;
                 finish_ok(P, sol);
                 return sol;
             }
+            const std::string found =
+                "‖f‖∞ = " + full_precision(res) + " above the tolerance " + full_precision(tol) + " and " +
+                full_precision(res / reach) + " times what a root within the step's resolution " +
+                full_precision(radius) + " could leave (worst equation " + worst_equation(P, sys.f) + "; " +
+                std::to_string(sol.equations) + " equations, " + std::to_string(sol.unknowns) + " unknowns, " +
+                (sol.rank < 0 ? std::string("a regular LU") : "rank " + std::to_string(sol.rank)) + ")";
             if (!full_rank || sol.equations > sol.unknowns)
                 sol.outcome = {Status::no_solution, std::string(method) + " settled on a least-squares point: " +
                                                         found + ": the conditions are inconsistent for these points"};
@@ -229,6 +237,22 @@ CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& 
 
 CurvatureProfileSolution solve_curvature_profile(const CurvatureProfileProblem& P, const NewtonOptions& options) {
     return solve_curvature_profile(P, c2_start(P), options);
+}
+
+CurvatureProfileProblem clothoid_spline_with_end_angles(const PointList& points, double start_angle, double end_angle) {
+    const char* who = "intrinsic::clothoid_spline_with_end_angles";
+    if (points.rows() < 2) fail_input(who, "needs at least 2 points, got " + std::to_string(points.rows()));
+    if (!std::isfinite(start_angle) || !std::isfinite(end_angle))
+        fail_input(who, "end angles " + full_precision(start_angle) + ", " + full_precision(end_angle) +
+                            " (finite radians required)");
+    const std::vector<SegmentShape> free(static_cast<std::size_t>(points.rows() - 1), SegmentShape::free);
+    const KnotLayout layout = span_layout(free);
+    CurvatureProfileProblem problem{points, layout, segment_shapes(layout, free), {}, false, 0};
+    problem.conditions.push_back({.kind = DesignCondition::Kind::tangent_angle, .index = 0, .value = start_angle});
+    problem.conditions.push_back(
+        {.kind = DesignCondition::Kind::tangent_angle, .index = layout.segments(), .value = end_angle});
+    require_valid_problem(problem, who);
+    return problem;
 }
 
 void add_natural_open_ends(CurvatureProfileProblem& problem) {

@@ -192,6 +192,8 @@ void design_system_pass(const CurvatureProfileProblem& P, const Eigen::VectorXd&
     jets.resize(static_cast<std::size_t>(k));
     for (int j = 0; j < k; ++j) segment_jet(psi, j, jets[static_cast<std::size_t>(j)]);
     out.f.resize(rows);
+    Eigen::VectorXd& row_scale = workspace.row_scale;  // each row's factor to a dimensionless equation
+    row_scale.setOnes(rows);
     int row = 0;
 
     // eq (3): interpolation.
@@ -209,6 +211,7 @@ void design_system_pass(const CurvatureProfileProblem& P, const Eigen::VectorXd&
             }
         }
         out.f.segment<2>(row) = sum - chord(P, i);
+        row_scale.segment<2>(row).setConstant(1.0 / chord(P, i).norm());  // relative to the chord
         row += 2;
     }
     // eq (4): segment shapes.
@@ -291,6 +294,7 @@ void design_system_pass(const CurvatureProfileProblem& P, const Eigen::VectorXd&
         } else if (c.kind == K::segment_length) {
             out.f(row) = lengths[static_cast<std::size_t>(c.index)] - c.value;
             write.entry(row, L.length_index(c.index), 1.0);
+            row_scale(row) = 1.0 / chord(P, L.span_of_segment(c.index)).norm();
         } else if (c.kind == K::curvature_derivative) {
             const double h = chord(P, L.span_of_segment(c.from_left ? c.index - 1 : c.index)).norm();
             out.f(row) =
@@ -298,20 +302,30 @@ void design_system_pass(const CurvatureProfileProblem& P, const Eigen::VectorXd&
         } else {
             const double target = c.kind == K::curvature ? c.value : 1.0 / c.value;
             out.f(row) = curvature_row(c.index, c.from_left, 1.0) - target;
+            row_scale(row) = chord(P, L.span_of_segment(c.from_left ? c.index - 1 : c.index)).norm();
         }
         ++row;
     }
     if (P.closed) {
         out.f(row) = angle_row(k, true, 1.0) + angle_row(0, false, -1.0) - 2.0 * std::numbers::pi * closing_turns(P);
         ++row;
-        out.f(row) = curvature_row(k, true, 1.0) + curvature_row(0, false, -1.0);
-        ++row;
         const double h = 0.5 * (chord(P, 0).norm() + chord(P, L.spans() - 1).norm());
+        out.f(row) = curvature_row(k, true, 1.0) + curvature_row(0, false, -1.0);
+        row_scale(row) = h;
+        ++row;
         for (int m = 1; m + 2 <= P.closing_continuity; ++m) {
             out.f(row) = curvature_derivative_row(k, true, m, 1.0, h) + curvature_derivative_row(0, false, m, -1.0, h);
             ++row;
         }
     }
+    out.f.array() *= row_scale.array();
+}
+
+// J's rows times the pass's row scales (J in compressed column-major form).
+void scale_jacobian_rows(const Eigen::VectorXd& scale, Eigen::SparseMatrix<double>& J) {
+    double* value = J.valuePtr();
+    const int* inner = J.innerIndexPtr();
+    for (Eigen::Index k = 0; k < J.nonZeros(); ++k) value[k] *= scale(inner[k]);
 }
 
 }  // namespace
@@ -330,13 +344,17 @@ void design_system_into(const CurvatureProfileProblem& P, const Eigen::VectorXd&
         JacobianSlots slots{J.valuePtr(), J.innerIndexPtr(), J.outerIndexPtr(), workspace.slots.data(),
                             workspace.slots.size()};
         design_system_pass(P, u, true, RowWriter(P.layout, nullptr, &slots), workspace, out);
-        if (!slots.failed && slots.next == slots.count) return;
+        if (!slots.failed && slots.next == slots.count) {
+            scale_jacobian_rows(workspace.row_scale, J);
+            return;
+        }
     }
     std::vector<Eigen::Triplet<double>>& triplets = workspace.triplets;
     triplets.clear();
     design_system_pass(P, u, with_jacobian, RowWriter(P.layout, with_jacobian ? &triplets : nullptr), workspace, out);
     if (!with_jacobian) return;
     assemble_jacobian(rows, cols, workspace, J);
+    scale_jacobian_rows(workspace.row_scale, J);
     std::vector<Eigen::Triplet<double>>().swap(triplets);  // the next evaluations write in place: free their memory
 }
 

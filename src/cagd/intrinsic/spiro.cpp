@@ -18,7 +18,7 @@ constexpr double kTwoPi = 2.0 * std::numbers::pi;
 // scaled by the chord); diverged when a coefficient exceeds kLargestCoefficient (a span turning by
 // hundreds of radians) or a spiral's chord shrinks below kShortestChord of its arc length.
 constexpr double kChordwiseTolerance = 1e-13;
-// The arc-length polish's ‖f‖∞ tolerance, relative to the largest chord (see solve_spiro).
+// The arc-length polish's ‖f‖∞ tolerance, its rows dimensionless (see solve_spiro).
 constexpr double kArcLengthTolerance = 1e-11;
 // ... or when a step was below this (the residual then is rounding; the arc-length Newton polishes).
 constexpr double kChordwiseSettledStep = 1e-11;

@@ -43,6 +43,7 @@ struct DesignWorkspace {
     std::vector<SegmentJet> jets;
     std::vector<Eigen::Triplet<double>> triplets;  ///< J's entries while its pattern is not known (freed once it is)
     std::vector<int> slots;                        ///< entry i's place in the last Jacobian's value array
+    Eigen::VectorXd row_scale;                     ///< each equation's factor to dimensionless form
 };
 
 /// design_system (f and, asked, J) into `out`, reusing `workspace` and out's J where its pattern
