@@ -278,6 +278,10 @@ int main(int argc, char** argv) {
     double assembly_length = 0, assembly_area = 0, ref_gap = 0, quadrature_error = 0;
     std::string ties;  // the n where the table's w is flat over a stretch around the bisector
     int bisector_minimises = 0;
+    CsvWriter odds = run.table("table5_table6_match_odds.csv",
+                               {"n", "table", "printed_equivalent", "readings_matching", "readings", "distinct_counts",
+                                "lowest_count", "highest_count", "chance_of_a_match", "what_a_match_shows"});
+    std::string odds_chance, odds_evidence;  // the claims a reading matches, by what the match shows
     for (int n = 3; n <= 10; ++n) {
         const PointList p = circle_points(n);
         std::string id = "n";
@@ -344,6 +348,22 @@ int main(int argc, char** argv) {
         run.check_over_choices(table6 + ".equivalent",
                                double(equivalent_polygon_points(std::abs(std::numbers::pi - S), CircleMeasure::area)),
                                exact_label, reading_choices(n, true, true));
+        // The odds that a reading meets the printed count by chance (docs/reproduction.md).
+        for (const bool area : {false, true}) {
+            const std::string claim = (area ? table6 : table5) + ".equivalent";
+            const double printed = run.reference().row("pseudo_energy." + claim).paper_value;
+            const repro::MatchOdds o = repro::match_odds(reading_choices(n, area, true), printed);
+            const bool chance = o.chance >= repro::MatchOdds::kConsistentWithChance;
+            const std::string verdict = o.matching == 0 ? "no reading matches"
+                                        : chance        ? "consistent with chance"
+                                                        : "evidence for the matching readings";
+            odds.row_text({std::to_string(n), area ? "6 (area)" : "5 (length)", format_number(printed),
+                           std::to_string(o.matching), std::to_string(o.readings), std::to_string(o.distinct),
+                           std::to_string(o.lowest), std::to_string(o.highest), format_number(o.chance, 3), verdict});
+            if (o.matching > 0)
+                (chance ? odds_chance : odds_evidence) +=
+                    ", " + claim + " (" + format_number(100.0 * o.chance, 3) + " %)";
+        }
         // The paper's equivalent-points column from its own printed length/area.
         const double printed_L = run.reference().row("pseudo_energy." + table5 + ".length").paper_value;
         const double printed_S = run.reference().row("pseudo_energy." + table6 + ".area").paper_value;
@@ -392,6 +412,13 @@ int main(int argc, char** argv) {
         (ties.empty() ? std::string(" none") : ties) +
         ". The table columns take the middle of the stretch (the bisector); the readings 'tangent exact tie k/16' stop "
         "k/16 of the way along it.");
+    run.note(
+        "The odds of a chance match (docs/reproduction.md; table5_table6_match_odds.csv): where a reading of "
+        "the text gives the printed equivalent points, the chance that one of the readings' distinct counts "
+        "meets an integer drawn from their range. Consistent with chance (at least 1/20)" +
+        (odds_chance.empty() ? std::string(": none") : ": " + odds_chance.substr(2)) +
+        ". Evidence for the matching readings (below 1/20)" +
+        (odds_evidence.empty() ? std::string(": none") : ": " + odds_evidence.substr(2)) + ".");
     run.note(
         "A stop tuned within a tie to give one printed value (not a reading: see the experiment), and the other "
         "measure there" +

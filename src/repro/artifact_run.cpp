@@ -44,6 +44,25 @@ ClaimStatus classify(const ReferenceRow& row, double ours, std::optional<double>
     return ClaimStatus::failed;
 }
 
+MatchOdds match_odds(const std::vector<ChoiceValue>& choices, double printed) {
+    MatchOdds odds;
+    std::set<long> values;
+    for (const ChoiceValue& c : choices) {
+        if (c.kind != ChoiceKind::reading) continue;
+        if (!(std::abs(c.ours) < 1e15) || c.ours != std::round(c.ours))
+            fail_input("repro::match_odds",
+                       "reading \"" + c.label + "\" has the value " + full_precision(c.ours) + ", not an integer");
+        ++odds.readings;
+        odds.matching += c.ours == printed ? 1 : 0;
+        values.insert(static_cast<long>(c.ours));
+    }
+    if (values.empty()) fail_input("repro::match_odds", "needs at least one reading, got none");
+    odds.distinct = static_cast<int>(values.size());
+    odds.lowest = *values.begin(), odds.highest = *values.rbegin();
+    odds.chance = static_cast<double>(odds.distinct) / static_cast<double>(odds.highest - odds.lowest + 1);
+    return odds;
+}
+
 ClaimStatus classify_over_choices(ClaimStatus stated, const std::vector<bool>& within) {
     if (stated == ClaimStatus::failed || within.empty()) return stated;
     for (bool w : within)

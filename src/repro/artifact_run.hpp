@@ -69,6 +69,20 @@ struct ChoiceValue {
 // tolerance.
 ClaimStatus classify_over_choices(ClaimStatus stated, const std::vector<bool>& within);
 
+// The odds of a chance match (docs/reproduction.md) of an integer claim checked over choices: over
+// the readings only (notes are never evidence), how many give `printed`, and the chance that some
+// reading equals an integer drawn uniformly from [lowest, highest], the smallest range holding every
+// reading's value: distinct / (highest − lowest + 1).
+struct MatchOdds {
+    int readings = 0, matching = 0, distinct = 0;  // readings; of them giving `printed`; distinct values
+    long lowest = 0, highest = 0;                  // the range of the readings' values
+    double chance = 0.0;                           // distinct / (highest − lowest + 1)
+    // A match whose chance is at least this is consistent with chance (docs/reproduction.md).
+    static constexpr double kConsistentWithChance = 0.05;
+};
+// InvalidInput when there is no reading or a reading's value is not an integer.
+MatchOdds match_odds(const std::vector<ChoiceValue>& choices, double printed);
+
 struct CheckRecord {
     std::string kind;  // "claim", "ours" (a claim of ours) or "validation"
     std::string id, description;

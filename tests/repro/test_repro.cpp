@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <set>
 #include <string>
 
 #include "cagd/core/csv.hpp"
@@ -48,6 +49,30 @@ TEST(Repro, ClaimDependsOnAChoiceOnlyWhenTheVerdictsDiffer) {
 
 // The rule for `depends`: only readings the text allows and thresholds declared in the reference
 // row before the run decide; a threshold chosen after the result cannot turn `deviates` into `depends`.
+// docs/reproduction.md, the odds of a chance match: readings 20, 22, 22, 25 cover 3 of the 6
+// integers 20..25 (chance 1/2); a note never counts; a non-integer reading is refused by name.
+TEST(Repro, MatchOddsCountDistinctReadingsOverTheirRange) {
+    using cagd::repro::ChoiceKind;
+    const std::vector<cagd::repro::ChoiceValue> choices{
+        {"a", 20}, {"b", 22}, {"c", 22}, {"d", 25}, {"tuned", 40, std::nullopt, ChoiceKind::note}};
+    const cagd::repro::MatchOdds odds = cagd::repro::match_odds(choices, 22);
+    EXPECT_EQ(odds.readings, 4);
+    EXPECT_EQ(odds.matching, 2);
+    EXPECT_EQ(odds.distinct, 3);
+    EXPECT_EQ(odds.lowest, 20);
+    EXPECT_EQ(odds.highest, 25);
+    EXPECT_DOUBLE_EQ(odds.chance, 0.5);
+    EXPECT_EQ(cagd::repro::match_odds(choices, 40).matching, 0) << "a note's value is no match";
+    EXPECT_DOUBLE_EQ(cagd::repro::match_odds({{"only", 7}}, 7).chance, 1.0);
+    try {
+        cagd::repro::match_odds({{"half", 7.5}}, 7);
+        ADD_FAILURE() << "a non-integer reading was accepted";
+    } catch (const cagd::InvalidInput& e) {
+        EXPECT_NE(std::string(e.what()).find("\"half\" has the value 7.5"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(cagd::repro::match_odds({{"tuned", 3, std::nullopt, ChoiceKind::note}}, 3), cagd::InvalidInput);
+}
+
 TEST(Repro, AThresholdChosenAfterTheResultCannotTurnADeviationIntoDepends) {
     const std::filesystem::path root = std::filesystem::temp_directory_path() / "cagd_depends_rule";
     std::filesystem::create_directories(root / "reference" / "t");
@@ -147,4 +172,31 @@ TEST(Repro, NumberFormattingIsStable) {
     EXPECT_EQ(format_number(1e-20), "1e-20");
     EXPECT_EQ(csv_field("a,b"), "\"a,b\"");
     EXPECT_EQ(split_csv_line("a,\"b,c\",d").size(), 3u);
+}
+
+// reference/ERRATA.md (pseudo_energy-E4) says which matches of Tables 5–6's equivalent points are
+// consistent with chance and which are not: the committed odds table must say the same.
+TEST(Repro, ErratumE4StatesTheOddsTheExperimentComputed) {
+    std::ifstream in(std::string(CAGD_SOURCE_DIR) + "/results/pseudo_energy/table5_table6_match_odds.csv");
+    ASSERT_TRUE(in) << "results/pseudo_energy/table5_table6_match_odds.csv";
+    std::string line;
+    std::getline(in, line);
+    const std::vector<std::string> header = cagd::split_csv_line(line);
+    const auto column = [&](const std::string& name) {
+        return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+    };
+    std::set<std::string> chance, evidence;
+    while (std::getline(in, line)) {
+        const std::vector<std::string> f = cagd::split_csv_line(line);
+        const std::string cell = "n" + f.at(column("n")) + (f.at(column("table"))[0] == '5' ? " length" : " area");
+        if (f.at(column("what_a_match_shows")) == "consistent with chance") chance.insert(cell);
+        if (f.at(column("what_a_match_shows")) == "evidence for the matching readings") evidence.insert(cell);
+    }
+    EXPECT_EQ(chance, (std::set<std::string>{"n3 length", "n3 area", "n4 length", "n4 area", "n5 length", "n5 area"}));
+    EXPECT_EQ(evidence, (std::set<std::string>{"n10 length", "n6 area", "n9 area"}));
+    std::ifstream errata(std::string(CAGD_SOURCE_DIR) + "/reference/ERRATA.md");
+    const std::string text((std::istreambuf_iterator<char>(errata)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("the matches at\n   n = 3, 4 and 5 are consistent with chance"), std::string::npos);
+    EXPECT_NE(text.find("those of n = 10's length and of the areas at n = 6 and 9 are below\n   1/20"),
+              std::string::npos);
 }
