@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "cagd/compare/interpolation_attempt.hpp"
 #include "cagd/compare/random_sets.hpp"
 #include "cagd/core/errors.hpp"
 #include "cagd/core/random_walk.hpp"
@@ -33,9 +34,10 @@ TEST(RandomSets, CountsAddUpAndDoNotDependOnTheThreads) {
     ASSERT_EQ(one.size(), 2u * 2 * 4);
     EXPECT_EQ(random_sets_rows(one), random_sets_rows(two));
     for (const RandomSetSummary& s : one) {
-        EXPECT_EQ(s.ok + s.no_result + s.refused + s.not_applicable, s.sets) << s.method;
+        EXPECT_EQ(s.ok + s.no_result() + s.refused + s.not_applicable, s.sets) << s.method;
         EXPECT_EQ(s.seconds.size(), static_cast<std::size_t>(s.sets - s.not_applicable));
-        EXPECT_DOUBLE_EQ(s.failure_rate(), static_cast<double>(s.no_result + s.refused) / (s.sets - s.not_applicable));
+        EXPECT_DOUBLE_EQ(s.failure_rate(),
+                         static_cast<double>(s.no_result() + s.refused) / (s.sets - s.not_applicable));
         if (s.method == "cubic-b") {
             EXPECT_EQ(s.ok, s.sets) << "a linear system with a unique solution";
         }
@@ -46,7 +48,30 @@ TEST(RandomSets, CountsAddUpAndDoNotDependOnTheThreads) {
         return *std::find_if(one.begin(), one.end(),
                              [&](const RandomSetSummary& s) { return s.kind == kind && s.n == n && s.method == m; });
     };
-    EXPECT_GT(find(RandomSetKind::scatter, 16, "spiro").no_result, 0);
+    EXPECT_GT(find(RandomSetKind::scatter, 16, "spiro").no_result(), 0);
+    // Each failure is counted in its class: the statuses of the same sets tried one by one.
+    for (const std::string m : {"spiro", "curvature-profile"}) {
+        RandomSetOptions single = o;
+        single.sizes = {16};
+        single.methods = {m};
+        const std::vector<RandomSetSummary> runs = run_random_sets(single);
+        const RandomSetSummary& s = runs.at(1);  // scatter, 16 points
+        ASSERT_EQ(s.kind, RandomSetKind::scatter);
+        RandomSetSummary tally;
+        for (int set = 0; set < o.sets; ++set) {
+            const InterpolationAttempt a = attempt_interpolation(methods::find_configuration(m),
+                                                                 random_set(RandomSetKind::scatter, 16, set), false);
+            if (a.status != AttemptStatus::no_result) continue;
+            const Status st = a.result.outcome.status;
+            ++(st == Status::no_solution      ? tally.no_solution
+               : st == Status::no_convergence ? tally.no_convergence
+                                              : tally.not_representable);
+        }
+        EXPECT_EQ(s.no_solution, tally.no_solution) << m;
+        EXPECT_EQ(s.no_convergence, tally.no_convergence) << m;
+        EXPECT_EQ(s.not_representable, tally.not_representable) << m;
+        EXPECT_GT(s.no_result(), 0) << m << ": the classes were exercised";
+    }
     EXPECT_LT(find(RandomSetKind::walk, 16, "spiro").failure_rate(),
               find(RandomSetKind::scatter, 16, "spiro").failure_rate());
 }
@@ -76,9 +101,19 @@ TEST(RandomSets, MarkdownListsFailuresAndTheMethodsThatNeverFail) {
     o.sizes = {16};
     o.sets = 30;
     o.methods = {"cubic-b", "spiro"};
-    const std::string md = random_sets_markdown(run_random_sets(o));
+    const std::vector<RandomSetSummary> runs = run_random_sets(o);
+    const std::string md = random_sets_markdown(runs);
     EXPECT_NE(md.find("#### Failure rates on seeded random sets"), std::string::npos);
     EXPECT_NE(md.find("| spiro |"), std::string::npos);
+    // Spiro's failures over all sizes, by class, as the summaries count them.
+    for (const RandomSetSummary& s : runs)
+        if (s.method == "spiro" && s.kind == RandomSetKind::scatter) {
+            const std::string classes = std::to_string(s.no_solution) + " no solution, " +
+                                        std::to_string(s.no_convergence) + " no convergence, " +
+                                        std::to_string(s.refused) + " refused |";
+            EXPECT_NE(md.find(classes), std::string::npos) << classes << "\n" << md;
+            EXPECT_GT(s.no_result(), 0);
+        }
     EXPECT_NE(md.find("Never failed: cubic-b"), std::string::npos);
     EXPECT_EQ(random_sets_markdown({}), "");
 }

@@ -11,7 +11,9 @@
 
 #include "cagd/analysis/curve_measures.hpp"
 #include "cagd/compare/truth_benchmark.hpp"
+#include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
+#include "cagd/methods/method_registry.hpp"
 
 using namespace cagd;
 using namespace cagd::compare;
@@ -269,6 +271,33 @@ TEST(TruthBenchmark, LeaderboardRanksTiesAndExplainsThePeer) {
         ++notes;
     EXPECT_EQ(notes, 2u) << "one note per open family: " << md;
     EXPECT_NE(md.find("here the distance's order is 0.9"), std::string::npos) << "about 1 on the clothoid: " << md;
+}
+
+// OpenCASCADE's C1 seam where a periodic curve closes is stated beside its row on a closed truth,
+// with its order and the G2 defect it leaves at the shape table's 24 points (a C2 method's is 0).
+TEST(TruthBenchmark, LeaderboardExplainsOpenCascadesSeam) {
+    const std::vector<std::string> names = cagd::methods::method_names();
+    if (std::find(names.begin(), names.end(), "occt-interpolate") == names.end())
+        GTEST_SKIP() << "a library without OpenCASCADE";
+    TruthBenchmarkOptions o;
+    o.sizes = {6, 12, 24};
+    o.families = {"circle", "clothoid"};
+    o.methods = {"cubic-b", "occt-interpolate"};
+    const std::vector<TruthRun> runs = run_truth_benchmark(o);
+    const std::string md = truth_leaderboard_markdown(runs, convergence_orders(runs));
+    const std::string note = "`occt-interpolate`: OpenCASCADE's periodic interpolation is C1 where the curve closes";
+    const std::size_t at = md.find(note);
+    ASSERT_NE(at, std::string::npos) << md;
+    EXPECT_EQ(md.find(note, at + 1), std::string::npos) << "one note, on the closed circle only: " << md;
+    double defect = -1.0;
+    for (const TruthRun& r : runs)
+        if (r.family == "circle" && r.closed && r.n == 24 && r.method == "occt-interpolate" &&
+            r.spacing == cagd::compare::TruthSpacing::uniform)
+            defect = r.shape.g2_defect;
+    EXPECT_GT(defect, 1e-6) << "the seam leaves a curvature jump";
+    EXPECT_NE(md.find("its G2 defect (the largest curvature jump × L) is " + cagd::format_number(defect, 3) + "."),
+              std::string::npos)
+        << md;
 }
 
 TEST(TruthBenchmark, ResultsDoNotDependOnTheThreadCount) {

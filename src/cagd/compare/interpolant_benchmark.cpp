@@ -197,7 +197,8 @@ std::string random_record(long index, const RandomSetSummary& s) {
     std::string seconds;
     for (const double t : s.seconds) (seconds += seconds.empty() ? "" : ";") += exact(t);
     return line({"random", std::to_string(index), to_string(s.kind), std::to_string(s.n), escaped(s.method),
-                 std::to_string(s.sets), std::to_string(s.ok), std::to_string(s.no_result), std::to_string(s.refused),
+                 std::to_string(s.sets), std::to_string(s.ok), std::to_string(s.no_solution),
+                 std::to_string(s.no_convergence), std::to_string(s.not_representable), std::to_string(s.refused),
                  std::to_string(s.not_applicable), seconds});
 }
 RandomSetSummary read_random(Fields& f, const std::string& where) {
@@ -209,7 +210,9 @@ RandomSetSummary read_random(Fields& f, const std::string& where) {
     s.n = static_cast<int>(f.integer(0, 100000));
     s.method = f.text();
     s.sets = static_cast<int>(f.integer(0, 1L << 30)), s.ok = static_cast<int>(f.integer(0, 1L << 30)),
-    s.no_result = static_cast<int>(f.integer(0, 1L << 30));
+    s.no_solution = static_cast<int>(f.integer(0, 1L << 30));
+    s.no_convergence = static_cast<int>(f.integer(0, 1L << 30));
+    s.not_representable = static_cast<int>(f.integer(0, 1L << 30));
     s.refused = static_cast<int>(f.integer(0, 1L << 30)), s.not_applicable = static_cast<int>(f.integer(0, 1L << 30));
     std::stringstream seconds(f.text());
     for (std::string t; std::getline(seconds, t, ';');) {
@@ -217,7 +220,7 @@ RandomSetSummary read_random(Fields& f, const std::string& where) {
         if (!parse_decimal(t, v)) fail_input(kWho, where + ": a run time \"" + excerpt(t) + "\" is not a number");
         s.seconds.push_back(v);
     }
-    if (s.ok + s.no_result + s.refused + s.not_applicable != s.sets ||
+    if (s.ok + s.no_result() + s.refused + s.not_applicable != s.sets ||
         static_cast<int>(s.seconds.size()) != s.sets - s.not_applicable)
         fail_input(kWho,
                    where + ": the counts of " + s.method + " do not add up to its " + std::to_string(s.sets) + " sets");

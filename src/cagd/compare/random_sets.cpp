@@ -34,7 +34,7 @@ PointList random_set(RandomSetKind kind, int n, unsigned seed) {
 
 double RandomSetSummary::failure_rate() const {
     const int applicable = sets - not_applicable;
-    return applicable > 0 ? static_cast<double>(no_result + refused) / applicable : 0.0;
+    return applicable > 0 ? static_cast<double>(no_result() + refused) / applicable : 0.0;
 }
 
 std::vector<RandomSetSummary> run_random_sets(const RandomSetOptions& o) {
@@ -59,10 +59,12 @@ std::vector<RandomSetSummary> run_random_sets(const RandomSetOptions& o) {
             if (kind == RandomSetKind::walk || n <= o.scatter_max_points) cases.emplace_back(kind, n);
     std::vector<RandomSetSummary> out;
     for (const auto& [kind, n] : cases)
-        for (const methods::Configuration& c : configurations) out.push_back({kind, n, c.name, 0, 0, 0, 0, 0, {}});
+        for (const methods::Configuration& c : configurations)
+            out.push_back({.kind = kind, .n = n, .method = c.name, .seconds = {}});
     // One task per (case, set): its points made once, every configuration on them.
     struct SetOutcome {
         AttemptStatus status = AttemptStatus::ok;
+        Status outcome = Status::ok;  // no result: the method's returned status
         double seconds = 0.0;
     };
     const std::size_t per_set = configurations.size();
@@ -76,7 +78,8 @@ std::vector<RandomSetSummary> run_random_sets(const RandomSetOptions& o) {
             SetOutcome& r = outcomes[static_cast<std::size_t>(task) * per_set + m];
             // Timed around the whole attempt (the applicability check is a few comparisons).
             const auto start = std::chrono::steady_clock::now();
-            r.status = attempt_interpolation(configurations[m], points, false).status;
+            const InterpolationAttempt attempt = attempt_interpolation(configurations[m], points, false);
+            r.status = attempt.status, r.outcome = attempt.result.outcome.status;
             r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         }
     });
@@ -91,7 +94,14 @@ std::vector<RandomSetSummary> run_random_sets(const RandomSetOptions& o) {
                 ++s.not_applicable;
                 continue;
             }
-            ++(r.status == AttemptStatus::ok ? s.ok : r.status == AttemptStatus::no_result ? s.no_result : s.refused);
+            if (r.status == AttemptStatus::ok)
+                ++s.ok;
+            else if (r.status != AttemptStatus::no_result)
+                ++s.refused;
+            else
+                ++(r.outcome == Status::no_solution      ? s.no_solution
+                   : r.outcome == Status::no_convergence ? s.no_convergence
+                                                         : s.not_representable);
             s.seconds.push_back(r.seconds);
         }
     }
@@ -108,22 +118,33 @@ void merge_random_sets(std::vector<RandomSetSummary>& total, const std::vector<R
         if (p.kind != t.kind || p.n != t.n || p.method != t.method)
             throw std::logic_error("compare::merge_random_sets: summary " + std::to_string(i) + " is " + p.method +
                                    ", not " + t.method);
-        t.sets += p.sets, t.ok += p.ok, t.no_result += p.no_result, t.refused += p.refused,
-            t.not_applicable += p.not_applicable;
+        t.sets += p.sets, t.ok += p.ok, t.no_solution += p.no_solution, t.no_convergence += p.no_convergence,
+            t.not_representable += p.not_representable, t.refused += p.refused, t.not_applicable += p.not_applicable;
         t.seconds.insert(t.seconds.end(), p.seconds.begin(), p.seconds.end());
     }
 }
 
 std::vector<std::string> random_sets_header() {
-    return {"kind", "n", "method", "sets", "ok", "no_result", "refused", "not_applicable", "failure_rate"};
+    return {"kind",
+            "n",
+            "method",
+            "sets",
+            "ok",
+            "no_solution",
+            "no_convergence",
+            "not_representable",
+            "refused",
+            "not_applicable",
+            "failure_rate"};
 }
 
 std::vector<std::vector<std::string>> random_sets_rows(const std::vector<RandomSetSummary>& summaries) {
     std::vector<std::vector<std::string>> rows;
     for (const RandomSetSummary& s : summaries)
         rows.push_back({to_string(s.kind), std::to_string(s.n), s.method, std::to_string(s.sets), std::to_string(s.ok),
-                        std::to_string(s.no_result), std::to_string(s.refused), std::to_string(s.not_applicable),
-                        format_number(s.failure_rate(), 6)});
+                        std::to_string(s.no_solution), std::to_string(s.no_convergence),
+                        std::to_string(s.not_representable), std::to_string(s.refused),
+                        std::to_string(s.not_applicable), format_number(s.failure_rate(), 6)});
     return rows;
 }
 
@@ -148,6 +169,16 @@ std::vector<std::vector<std::string>> random_set_timing_rows(const std::vector<R
     return rows;
 }
 
+namespace {
+// "2 no solution, 47 no convergence, 0 refused" (not representable only where it occurs).
+std::string failure_classes(const RandomSetSummary& s) {
+    std::string text =
+        std::to_string(s.no_solution) + " no solution, " + std::to_string(s.no_convergence) + " no convergence, ";
+    if (s.not_representable > 0) text += std::to_string(s.not_representable) + " not representable, ";
+    return text + std::to_string(s.refused) + " refused";
+}
+}  // namespace
+
 std::string random_sets_markdown(const std::vector<RandomSetSummary>& summaries) {
     std::ostringstream s;
     if (summaries.empty()) return "";
@@ -158,8 +189,9 @@ std::string random_sets_markdown(const std::vector<RandomSetSummary>& summaries)
          "*walk*: chords in [0.1, 2], turns within ±1 rad; *scatter*: points uniform in the unit square (at the "
          "smaller sizes only: "
          "beyond them nearly every set defeats the two Newton methods). A failure is no curve "
-         "(a returned status) or a refusal (the method's own input check); not applicable sets are left out of the "
-         "rate. "
+         "(a returned status: *no solution* when the method showed that none exists, *no convergence* when its solver "
+         "failed, which shows nothing about the data) or a refusal (the method's own input check); not applicable "
+         "sets are left out of the rate. "
          "Run times are not deterministic, so they stay out of these counts: `cagd benchmark --timing-out FILE` writes "
          "them "
          "(`make benchmark` and `make reproduce`: results/timing/benchmark_random_sets.csv).\n";
@@ -181,7 +213,7 @@ std::string random_sets_markdown(const std::vector<RandomSetSummary>& summaries)
         for (const std::string& m : methods) {
             std::ostringstream line;
             bool fails = false;
-            int no_result = 0, refused = 0, applicable = 0;
+            RandomSetSummary all;  // the counts over all sizes
             line << "| " << m << " |";
             for (const int n : sizes)
                 for (const RandomSetSummary& r : summaries)
@@ -190,20 +222,17 @@ std::string random_sets_markdown(const std::vector<RandomSetSummary>& summaries)
                             line << " not applicable |";
                             continue;
                         }
-                        applicable += r.sets - r.not_applicable;
-                        no_result += r.no_result, refused += r.refused;
-                        fails = fails || r.no_result + r.refused > 0;
+                        all.sets += r.sets - r.not_applicable;
+                        all.no_solution += r.no_solution, all.no_convergence += r.no_convergence;
+                        all.not_representable += r.not_representable, all.refused += r.refused;
+                        fails = fails || r.no_result() + r.refused > 0;
                         line << " " << format_number(100.0 * r.failure_rate(), 3) << " % |";
                     }
-            if (!fails && applicable > 0) {
+            if (!fails && all.sets > 0) {
                 never.push_back(m);
                 continue;
             }
-            line << " "
-                 << (applicable == 0
-                         ? std::string("—")
-                         : std::to_string(no_result) + " no result, " + std::to_string(refused) + " refused")
-                 << " |\n";
+            line << " " << (all.sets == 0 ? std::string("—") : failure_classes(all)) << " |\n";
             s << line.str();
         }
         if (!never.empty()) {

@@ -8,10 +8,12 @@
 ///            (data a designer might place: no hairpins);
 ///   scatter  points uniform in the unit square (any turn, crossings, near-reversals).
 /// Set s of a kind and size has seed s (s = 0 … sets − 1). Each configuration interpolates every set
-/// as an open curve; the outcome is counted as ok, no result (a returned status: no solution, no
-/// convergence, not representable), refused (InvalidInput: the method's own check, e.g. a reversal
-/// where no tangent exists) or not applicable (methods::method_applicability). The failure rate is
-/// (no result + refused) / (sets − not applicable).
+/// as an open curve; the outcome is counted as ok, no result by its returned status — no solution
+/// (the method showed that none exists: the curvature-profile Newton's inconsistent conditions, with
+/// a rank deficiency or more equations than unknowns), no convergence (the solver failed, which
+/// shows nothing about the data), not representable — refused (InvalidInput: the method's own check,
+/// e.g. a reversal where no tangent exists) or not applicable (methods::method_applicability). The
+/// failure rate is (no result + refused) / (sets − not applicable).
 ///
 /// Run times are wall-clock seconds per construction (methods::interpolate, its input checks
 /// included), measured in the worker thread; they vary from run to run and are reported apart from
@@ -35,8 +37,8 @@ PointList random_set(RandomSetKind kind, int n, unsigned seed);
 struct RandomSetOptions {
     std::vector<int> sizes{8, 32, 128};  ///< numbers of points (each ≥ 3)
     /// Scattered sets only up to this many points (0: none). Beyond 32 nearly every scattered set
-    /// defeats the two Newton methods (at 128 points: curvature-profile 93 %, Spiro 100 %), and
-    /// curvature-profile's dense Moore–Penrose fallback on each failing set would dominate the run.
+    /// defeats the two Newton methods, and curvature-profile's dense Moore–Penrose fallback on each
+    /// failing set would dominate the run.
     int scatter_max_points = 32;
     int sets = 1000;                   ///< sets per kind and size (≥ 1)
     std::vector<std::string> methods;  ///< configuration or method names; empty: every configuration
@@ -54,10 +56,14 @@ struct RandomSetSummary {
     std::string method;                        ///< configuration
     int sets = 0;                              ///< sets interpolated
     int ok = 0;                                ///< a curve
-    int no_result = 0;                         ///< a returned status without a curve
+    int no_solution = 0;                       ///< no result: Status::no_solution
+    int no_convergence = 0;                    ///< no result: Status::no_convergence
+    int not_representable = 0;                 ///< no result: Status::not_representable
     int refused = 0;                           ///< InvalidInput from the method
     int not_applicable = 0;                    ///< outside the method's claims
     std::vector<double> seconds;               ///< per construction that ran (ok, no result, refused), in set order
+    /// A returned status without a curve: no_solution + no_convergence + not_representable.
+    int no_result() const { return no_solution + no_convergence + not_representable; }
     /// (no_result + refused) / (sets − not_applicable); 0 when every set is not applicable.
     double failure_rate() const;
 };
@@ -67,7 +73,8 @@ std::vector<RandomSetSummary> run_random_sets(const RandomSetOptions& options);
 /// same order; std::logic_error otherwise): shares of one run merged.
 void merge_random_sets(std::vector<RandomSetSummary>& total, const std::vector<RandomSetSummary>& part);
 
-/// random_sets.csv's columns: kind, n, method, sets, ok, no_result, refused, not_applicable, failure_rate.
+/// random_sets.csv's columns: kind, n, method, sets, ok, no_solution, no_convergence,
+/// not_representable, refused, not_applicable, failure_rate.
 std::vector<std::string> random_sets_header();
 /// One row per summary (deterministic).
 std::vector<std::vector<std::string>> random_sets_rows(const std::vector<RandomSetSummary>& summaries);

@@ -705,6 +705,19 @@ std::string truth_leaderboard_markdown(const std::vector<TruthRun>& runs, const 
                    << (o ? order_text(*o) : "-") << " and the tangent-angle error " << number(r->errors.tangent_angle)
                    << " rad.\n";
             }
+        for (const TruthRun* r : rows)
+            if (r->method == "occt-interpolate" && r->closed && r->status == AttemptStatus::ok) {
+                const ConvergenceOrder* o = find_order(*r, "distance");
+                md << "\n`occt-interpolate`: OpenCASCADE's periodic interpolation is C1 where the curve closes, at its "
+                      "first point (C2 elsewhere; docs/methods.md): here the distance's order is "
+                   << (o ? order_text(*o) : "-") << " and the curvature error " << number(r->errors.curvature_max);
+                for (const TruthRun& s : runs)
+                    if (s.family == f.name && s.n == kShapeTableSize && s.spacing == TruthSpacing::uniform &&
+                        s.closed && s.method == r->method && s.status == AttemptStatus::ok)
+                        md << "; at " << kShapeTableSize << " points its G2 defect (the largest curvature jump × L) is "
+                           << number(s.shape.g2_defect);
+                md << ".\n";
+            }
         // The shape at a size where the methods still differ visibly, beside the truth's.
         std::vector<const TruthRun*> shaped;
         for (const TruthRun* r : rows)
