@@ -2,7 +2,13 @@
 // themselves, the samples, the errors against a second computation, the orders.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <functional>
+#include <iterator>
+#include <map>
+#include <numeric>
+#include <string>
+#include <vector>
 
 #include <algorithm>
 #include <cmath>
@@ -397,4 +403,49 @@ TEST(TruthBenchmark, ExtensionalityOfTheSpiralSplinesAndNotOfTheCubic) {
         static_cast<std::size_t>(std::find(header.begin(), header.end(), "extensionality") - header.begin());
     ASSERT_LT(column, header.size());
     for (const auto& row : truth_runs_rows(runs)) EXPECT_EQ(row[5] == "ok", !row[column].empty()) << row[4];
+}
+
+// The numbers docs/benchmark.md quotes from the benchmark's results are the committed results'.
+TEST(TruthBenchmark, DocsQuoteTheCommittedResults) {
+    const std::string root = CAGD_SOURCE_DIR;
+    std::ifstream docs_file(root + "/docs/benchmark.md");
+    const std::string docs((std::istreambuf_iterator<char>(docs_file)), std::istreambuf_iterator<char>());
+    // results/benchmark/truth_runs.csv: the distance and curvature error of one run, by column name.
+    std::ifstream runs(root + "/results/benchmark/truth_runs.csv");
+    ASSERT_TRUE(runs) << "results/benchmark/truth_runs.csv";
+    std::string line;
+    std::getline(runs, line);
+    const std::vector<std::string> header = cagd::split_csv_line(line);
+    const auto column = [&](const std::string& name) {
+        return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+    };
+    std::map<std::string, std::vector<std::string>> row;  // "family,spacing,closed,n,method" → fields
+    while (std::getline(runs, line)) {
+        const std::vector<std::string> f = cagd::split_csv_line(line);
+        row[f.at(0) + "," + f.at(1) + "," + f.at(2) + "," + f.at(3) + "," + f.at(4)] = f;
+    }
+    const auto value = [&](const std::string& key, const std::string& measure) {
+        return std::stod(row.at(key).at(column(measure)));
+    };
+    // "the closed non-uniform epitrochoid at 6 points … its nearest-point distance is 0.025"
+    EXPECT_EQ(cagd::format_number(value("epitrochoid,nonuniform,1,6,cubic-b", "distance"), 2), "0.025");
+    EXPECT_NE(docs.find("its nearest-point\ndistance is 0.025"), std::string::npos);
+    // "cubic-b on the closed ellipse: a fit over n = 6…96 gives 3.2, the last pairs 4.0"
+    std::vector<double> x, y;
+    for (const int n : {6, 12, 24, 48, 96}) {
+        x.push_back(std::log(n));
+        y.push_back(std::log(value("ellipse,uniform,1," + std::to_string(n) + ",cubic-b", "distance")));
+    }
+    const double mx = std::accumulate(x.begin(), x.end(), 0.0) / 5, my = std::accumulate(y.begin(), y.end(), 0.0) / 5;
+    double sxy = 0, sxx = 0;
+    for (std::size_t i = 0; i < x.size(); ++i) sxy += (x[i] - mx) * (y[i] - my), sxx += (x[i] - mx) * (x[i] - mx);
+    EXPECT_EQ(cagd::format_number(-sxy / sxx, 2), "3.2");
+    const double last = -std::log(value("ellipse,uniform,1,768,cubic-b", "distance") /
+                                  value("ellipse,uniform,1,384,cubic-b", "distance")) /
+                        std::log(2.0);
+    EXPECT_EQ(cagd::format_number(last, 2), "4");
+    EXPECT_NE(docs.find("a fit over n = 6…96\ngives 3.2, the last pairs 4.0"), std::string::npos);
+    // "the natural ends' curvature error on the open circle arc is κ·L = 3π/2 = 4.712 at its ends"
+    EXPECT_EQ(cagd::format_number(value("circle,uniform,0,768,cubic-b", "curvature_max"), 4), "4.712");
+    EXPECT_NEAR(value("circle,uniform,0,768,cubic-b", "curvature_max"), 1.5 * std::numbers::pi, 5e-6);
 }
