@@ -15,6 +15,7 @@
 #include <numbers>
 #include <optional>
 
+#include "../support/committed_files.hpp"
 #include "cagd/analysis/curve_measures.hpp"
 #include "cagd/compare/truth_benchmark.hpp"
 #include "cagd/core/csv.hpp"
@@ -407,25 +408,12 @@ TEST(TruthBenchmark, ExtensionalityOfTheSpiralSplinesAndNotOfTheCubic) {
 
 // The numbers docs/benchmark.md quotes from the benchmark's results are the committed results'.
 TEST(TruthBenchmark, DocsQuoteTheCommittedResults) {
-    const std::string root = CAGD_SOURCE_DIR;
-    std::ifstream docs_file(root + "/docs/benchmark.md");
-    const std::string docs((std::istreambuf_iterator<char>(docs_file)), std::istreambuf_iterator<char>());
-    // results/benchmark/truth_runs.csv: the distance and curvature error of one run, by column name.
-    std::ifstream runs(root + "/results/benchmark/truth_runs.csv");
-    ASSERT_TRUE(runs) << "results/benchmark/truth_runs.csv";
-    std::string line;
-    std::getline(runs, line);
-    const std::vector<std::string> header = cagd::split_csv_line(line);
-    const auto column = [&](const std::string& name) {
-        return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
-    };
-    std::map<std::string, std::vector<std::string>> row;  // "family,spacing,closed,n,method" → fields
-    while (std::getline(runs, line)) {
-        const std::vector<std::string> f = cagd::split_csv_line(line);
-        row[f.at(0) + "," + f.at(1) + "," + f.at(2) + "," + f.at(3) + "," + f.at(4)] = f;
-    }
+    const std::string docs = cagd::test::committed_text("docs/benchmark.md");
+    std::map<std::string, std::map<std::string, std::string>> row;  // "family,spacing,closed,n,method" → row
+    for (auto& r : cagd::test::committed_csv("results/benchmark/truth_runs.csv"))
+        row[r["family"] + "," + r["spacing"] + "," + r["closed"] + "," + r["n"] + "," + r["method"]] = r;
     const auto value = [&](const std::string& key, const std::string& measure) {
-        return std::stod(row.at(key).at(column(measure)));
+        return std::stod(row.at(key).at(measure));
     };
     // "the closed non-uniform epitrochoid at 6 points … its nearest-point distance is 0.025"
     EXPECT_EQ(cagd::format_number(value("epitrochoid,nonuniform,1,6,cubic-b", "distance"), 2), "0.025");

@@ -10,6 +10,7 @@
 #include <set>
 #include <string>
 
+#include "../support/committed_files.hpp"
 #include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
 #include "repro/artifact_run.hpp"
@@ -177,25 +178,15 @@ TEST(Repro, NumberFormattingIsStable) {
 // reference/ERRATA.md (pseudo_energy-E4) says which matches of Tables 5–6's equivalent points are
 // consistent with chance and which are not: the committed odds table must say the same.
 TEST(Repro, ErratumE4StatesTheOddsTheExperimentComputed) {
-    std::ifstream in(std::string(CAGD_SOURCE_DIR) + "/results/pseudo_energy/table5_table6_match_odds.csv");
-    ASSERT_TRUE(in) << "results/pseudo_energy/table5_table6_match_odds.csv";
-    std::string line;
-    std::getline(in, line);
-    const std::vector<std::string> header = cagd::split_csv_line(line);
-    const auto column = [&](const std::string& name) {
-        return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
-    };
     std::set<std::string> chance, evidence;
-    while (std::getline(in, line)) {
-        const std::vector<std::string> f = cagd::split_csv_line(line);
-        const std::string cell = "n" + f.at(column("n")) + (f.at(column("table"))[0] == '5' ? " length" : " area");
-        if (f.at(column("what_a_match_shows")) == "consistent with chance") chance.insert(cell);
-        if (f.at(column("what_a_match_shows")) == "evidence for the matching readings") evidence.insert(cell);
+    for (auto& row : cagd::test::committed_csv("results/pseudo_energy/table5_table6_match_odds.csv")) {
+        const std::string cell = "n" + row["n"] + (row["table"][0] == '5' ? " length" : " area");
+        if (row["what_a_match_shows"] == "consistent with chance") chance.insert(cell);
+        if (row["what_a_match_shows"] == "evidence for the matching readings") evidence.insert(cell);
     }
     EXPECT_EQ(chance, (std::set<std::string>{"n3 length", "n3 area", "n4 length", "n4 area", "n5 length", "n5 area"}));
     EXPECT_EQ(evidence, (std::set<std::string>{"n10 length", "n6 area", "n9 area"}));
-    std::ifstream errata(std::string(CAGD_SOURCE_DIR) + "/reference/ERRATA.md");
-    const std::string text((std::istreambuf_iterator<char>(errata)), std::istreambuf_iterator<char>());
+    const std::string text = cagd::test::committed_text("reference/ERRATA.md");
     EXPECT_NE(text.find("the matches at\n   n = 3, 4 and 5 are consistent with chance"), std::string::npos);
     EXPECT_NE(text.find("those of n = 10's length and of the areas at n = 6 and 9 are below\n   1/20"),
               std::string::npos);
