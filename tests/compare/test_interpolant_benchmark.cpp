@@ -119,6 +119,7 @@ TEST(InterpolantBenchmark, MissingTwiceForeignAndDamagedPartsAreRefusedByName) {
     EXPECT_EQ(merge_error(plan, parts), "");
     EXPECT_NE(merge_error(plan, {parts[0], parts[2]}).find("part 2 of 3 is missing"), std::string::npos)
         << merge_error(plan, {parts[0], parts[2]});
+    EXPECT_NE(merge_error(plan, {parts[0], parts[2], parts[2]}).find("part 3 of 3 again"), std::string::npos);
     const std::string twice = merge_error(plan, {parts[0], parts[1], parts[1], parts[2]});
     EXPECT_NE(twice.find("part 2 of 3 again (first in part 2)"), std::string::npos) << twice;
     BenchmarkPlan other = plan;
@@ -147,7 +148,40 @@ TEST(InterpolantBenchmark, ARecordOutsideItsShareIsRefused) {
     text = text.substr(0, text.rfind("# checksum"));
     text.replace(text.find("part,1,1"), 8, "part,1,2");
     const std::string error = merge_error(plan, {{"greedy", text + checksum_line(text)}, parts_of(plan, 2)[1]});
-    EXPECT_NE(error.find("greedy:6: truth run 1 is not part 1's"), std::string::npos) << error;
+    EXPECT_NE(error.find("greedy:4: units,36,3,6 declares 18 truth, 2 classic and 6 random records for part 1 of 2; "
+                         "it holds 36, 3 and 6"),
+              std::string::npos)
+        << error;
+    // As many records as its share, one of them another share's.
+    const auto halves = parts_of(plan, 2);
+    std::string swapped = halves[0].second.substr(0, halves[0].second.rfind("# checksum"));
+    swapped.replace(swapped.find("\ntruth,0,"), 9, "\ntruth,1,");
+    const std::string outside = merge_error(plan, {{"swapped", swapped + checksum_line(swapped)}, halves[1]});
+    EXPECT_NE(outside.find("swapped:5: truth run 1 is not part 1's"), std::string::npos) << outside;
+    // A units line claiming ten million runs is refused before anything is sized from it.
+    std::string inflated = halves[0].second.substr(0, halves[0].second.rfind("# checksum"));
+    inflated.replace(inflated.find("units,36,"), 9, "units,10000000,");
+    const std::string big = merge_error(plan, {{"inflated", inflated + checksum_line(inflated)}, halves[1]});
+    EXPECT_NE(big.find("inflated:4: units,10000000,3,6 declares 5000000 truth"), std::string::npos) << big;
+}
+
+// Every value of a part is finite: a resealed nan, inf or overflowing hex float is refused by field.
+TEST(InterpolantBenchmark, NonFiniteValuesAreRefused) {
+    const BenchmarkPlan plan = small_plan();
+    const auto whole = parts_of(plan, 1)[0];
+    std::string text = whole.second.substr(0, whole.second.rfind("# checksum"));
+    const std::size_t record = text.find("\ntruth,0,");
+    ASSERT_NE(record, std::string::npos);
+    // The distance: the first number after the record's nine leading fields.
+    std::size_t at = record + 1;
+    for (int field = 0; field < 9; ++field) at = text.find(',', at) + 1;
+    const std::size_t end = text.find(',', at);
+    for (const std::string bad : {"nan", "inf", "-inf", "0x1p+2000"}) {
+        std::string t = text;
+        t.replace(at, end - at, bad);
+        const std::string error = merge_error(plan, {{"resealed", t + checksum_line(t)}});
+        EXPECT_NE(error.find("\"" + bad + "\" is not a finite number"), std::string::npos) << bad << ": " << error;
+    }
 }
 
 TEST(InterpolantBenchmark, ASharesRunsOutsideItAreLeftEmpty) {

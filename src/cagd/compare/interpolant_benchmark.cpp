@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <map>
 #include <optional>
+#include <set>
 #include <sstream>
 
 #include "cagd/core/checksum.hpp"
@@ -74,8 +75,9 @@ public:
     double number() {
         const std::string& f = next();
         double v = 0.0;
-        if (!parse_decimal(f, v))
-            fail_input(kWho, where_ + ": field " + std::to_string(at_) + " \"" + excerpt(f) + "\" is not a number");
+        if (!parse_decimal(f, v) || !std::isfinite(v))
+            fail_input(kWho,
+                       where_ + ": field " + std::to_string(at_) + " \"" + excerpt(f) + "\" is not a finite number");
         return v;
     }
     std::optional<double> optional_number() {
@@ -303,7 +305,8 @@ BenchmarkResults merge_benchmark_parts(const BenchmarkPlan& plan,
     for (const auto& part : parts) {
         const std::string& name =
             part.first;  // not a structured binding: clang 14 (Emscripten's) cannot capture one in a lambda
-        std::istringstream in{std::string(checked_content(part.second, name))};
+        const std::string_view content = checked_content(part.second, name);
+        std::istringstream in{std::string(content)};
         std::string l;
         int line_no = 0;
         const auto next_line = [&](const char* what) {
@@ -321,6 +324,20 @@ BenchmarkResults merge_benchmark_parts(const BenchmarkPlan& plan,
         const long k = head.integer(1, 1L << 20), n = head.integer(1, 1L << 20);
         head.end();
         if (k > n) fail_input(kWho, where() + ": part " + std::to_string(k) + " of " + std::to_string(n));
+        if (n > static_cast<long>(parts.size())) {  // before anything is sized from it: the first one missing
+            std::set<long> given;
+            for (const auto& other : parts) {
+                const std::size_t second = other.second.find('\n');
+                long a = 0, b = 0;
+                if (second != std::string::npos &&
+                    std::sscanf(other.second.c_str() + second + 1, "part,%ld,%ld", &a, &b) == 2 && b == n)
+                    given.insert(a);
+            }
+            long first = 1;
+            while (given.count(first) > 0) ++first;
+            fail_input(kWho, "part " + std::to_string(first) + " of " + std::to_string(n) + " is missing (" +
+                                 std::to_string(parts.size()) + " parts given)");
+        }
         if (count >= 0 && n != count)
             fail_input(kWho, where() + ": a part of " + std::to_string(n) + ", the others of " + std::to_string(count));
         count = n;
@@ -341,6 +358,22 @@ BenchmarkResults merge_benchmark_parts(const BenchmarkPlan& plan,
         if (units.next() != "units") fail_input(kWho, where() + ": expected units,<truth>,<classic>,<random>");
         const long t = units.integer(0, kMaxCount), c = units.integer(0, kMaxCount), r = units.integer(0, kMaxCount);
         units.end();
+        // The part holds its share of each kind's units, and every random summary: its records,
+        // counted before anything is sized from the units line.
+        const auto held = [&](const std::string& kind) {
+            long count_of_kind = 0;
+            const std::string start = "\n" + kind + ",";
+            for (std::size_t at = content.find(start); at != std::string::npos; at = content.find(start, at + 1))
+                ++count_of_kind;
+            return count_of_kind;
+        };
+        const auto owned = [&](long units_of_kind) { return units_of_kind > k - 1 ? (units_of_kind - k) / n + 1 : 0L; };
+        if (held("truth") != owned(t) || held("classic") != owned(c) || held("random") != r)
+            fail_input(kWho, where() + ": " + l + " declares " + std::to_string(owned(t)) + " truth, " +
+                                 std::to_string(owned(c)) + " classic and " + std::to_string(r) +
+                                 " random records for part " + std::to_string(k) + " of " + std::to_string(n) +
+                                 "; it holds " + std::to_string(held("truth")) + ", " +
+                                 std::to_string(held("classic")) + " and " + std::to_string(held("random")));
         if (truth_units < 0) {
             truth_units = t, classic_units = c, random_units = r;
             out.truth.resize(static_cast<std::size_t>(t)), truth_seen.assign(static_cast<std::size_t>(t), 0);

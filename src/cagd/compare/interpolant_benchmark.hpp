@@ -55,7 +55,9 @@ std::string benchmark_plan_fingerprint(const BenchmarkPlan& plan);
 std::string benchmark_part_text(const BenchmarkPlan& plan, const WorkShare& share, const BenchmarkResults& results);
 /// The results of the whole plan from its parts, each (a name for messages, its text). InvalidInput,
 /// naming the part and line, when a part is damaged, belongs to another plan or build, comes twice,
-/// is missing, or does not hold exactly its share's units.
+/// is missing, holds other counts of records than its units line declares for its share (checked
+/// before anything is sized from that line), a record outside its share, or a value that is not
+/// finite.
 BenchmarkResults merge_benchmark_parts(const BenchmarkPlan& plan,
                                        const std::vector<std::pair<std::string, std::string>>& parts);
 
