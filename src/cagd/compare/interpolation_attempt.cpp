@@ -70,7 +70,7 @@ InterpolationAttempt attempt_interpolation(const methods::Configuration& configu
     const int need = closed ? configuration.claims.min_points_closed : configuration.claims.min_points;
     try {
         const ValidPoints valid =
-            validate_points(points, need, closed, "cagd::methods::interpolate(" + configuration.method->name + ")");
+            validate_points(points, need, closed, methods::interpolate_who(*configuration.method));
         return attempt_interpolation(configuration, valid, start);
     } catch (const InvalidInput& e) {  // no method takes these points: this one refuses them
         a.status = AttemptStatus::refused;

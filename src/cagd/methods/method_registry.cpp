@@ -90,10 +90,9 @@ std::string method_applicability(const MethodClaims& m, const PointList& points,
     return "";
 }
 
-namespace {
-
-// interpolate()'s name for messages about `method`.
 std::string interpolate_who(const Method& method) { return "cagd::methods::interpolate(" + method.name + ")"; }
+
+namespace {
 
 // InvalidInput naming `who` unless the method's claims take the points (method_applicability).
 void require_applicable(const MethodClaims& claims, const PointList& points, bool closed, const std::string& who) {

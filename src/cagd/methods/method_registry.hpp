@@ -142,6 +142,8 @@ std::vector<std::string> method_names();  ///< names and aliases, for a command 
 /// does. The one check of the claims: interpolate() throws it as InvalidInput, and compare reports
 /// the method as not applicable with it.
 std::string method_applicability(const MethodClaims& claims, const PointList& points, bool closed);
+/// interpolate()'s name for messages about `method`: "cagd::methods::interpolate(<name>)".
+std::string interpolate_who(const Method& method);
 /// Checks the points against the method's claims (method_applicability), then the points
 /// themselves (finiteness, coincident neighbours), then builds the curve.
 InterpolationResult interpolate(const Method& method, const PointList& points, bool closed,
