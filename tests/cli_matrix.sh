@@ -205,7 +205,7 @@ for bad in "--n 100000" "--n 2" "--n 0" "--grid 100000" "--grid 1" "--n 400 --gr
 done
 run 0 "" benchmark --out "$dir/bench_good" --sizes 6,12 --families circle,helix --methods cubic-b,spiro --random-sets 20 --timing-out "$dir/bench_seconds.csv"
 [ -s "$dir/bench_good/random_sets.csv" ] && [ -s "$dir/bench_seconds.csv" ] || fail "benchmark wrote no random_sets.csv or no --timing-out file"
-for bad in "--sizes 2" "--sizes 6,x" "--sizes 100001" "--families square" "--methods cubic-z" "--threads -1" "--random-sets -1" "--random-sizes 8,2" \
+for bad in "--sizes 2" "--sizes 6,x" "--sizes 100001" "--sizes 6,6" "--sizes 12,6" "--families square" "--methods cubic-z" "--threads -1" "--random-sets -1" "--random-sizes 8,2" \
     "--scatter-max-points -1" "--part 0/2" "--part 3/2" "--part 1/5000" "--part x" "--part 1/2 --timing-out $dir/bench_t.csv" "--merge $dir/no_such_part" \
     "--merge $dir/good.csv" "--part 1/2 --merge $dir/good.csv"; do
     # shellcheck disable=SC2086

@@ -329,6 +329,13 @@ TEST(TruthBenchmark, ResultsDoNotDependOnTheThreadCount) {
     TruthBenchmarkOptions bad;
     bad.sizes = {2};
     EXPECT_THROW(run_truth_benchmark(bad), InvalidInput);
+    bad.sizes = {6, 6};  // no order from a repeated size (it published NaN and a "fails" verdict)
+    try {
+        run_truth_benchmark(bad);
+        ADD_FAILURE() << "repeated sizes were accepted";
+    } catch (const InvalidInput& e) {
+        EXPECT_NE(std::string(e.what()).find("size 6 after 6; the sizes must increase"), std::string::npos) << e.what();
+    }
 }
 
 // The shape measures: closed forms on the truths, a second quadrature on an interpolant, and the

@@ -381,8 +381,13 @@ std::optional<double> extensionality(const methods::Configuration& configuration
 std::vector<TruthRun> run_truth_benchmark(const TruthBenchmarkOptions& o) {
     const char* who = "compare::run_truth_benchmark";
     if (o.sizes.empty()) fail_input(who, "needs at least one size");
-    for (int n : o.sizes)
+    for (std::size_t i = 0; i < o.sizes.size(); ++i) {
+        const int n = o.sizes[i];
         if (n < 3 || n > 100000) fail_input(who, "size " + std::to_string(n) + " outside 3..100000");
+        if (i > 0 && !(n > o.sizes[i - 1]))  // an order needs two different sizes, in the order given
+            fail_input(who, "size " + std::to_string(n) + " after " + std::to_string(o.sizes[i - 1]) +
+                                "; the sizes must increase");
+    }
     std::vector<const TruthFamily*> families;
     for (const std::string& name : o.families) families.push_back(&find_truth_family(name));
     if (o.families.empty())

@@ -133,7 +133,7 @@ struct TruthRun {
 
 /// What run_truth_benchmark runs.
 struct TruthBenchmarkOptions {
-    std::vector<int> sizes{6, 12, 24, 48, 96, 192, 384, 768};  ///< numbers of points (each ≥ 3)
+    std::vector<int> sizes{6, 12, 24, 48, 96, 192, 384, 768};  ///< numbers of points (each 3..100000, increasing)
     std::vector<std::string> families;                         ///< empty: every family
     std::vector<std::string> methods;  ///< configuration or method names; empty: every configuration
     int threads = 0;                   ///< cases measured at once (0: the hardware's); results do not depend on it
