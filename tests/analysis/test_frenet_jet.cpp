@@ -94,6 +94,26 @@ TEST(FrenetJet, AStraightPointHasNoSignAndNoTorsion) {
     EXPECT_EQ(cagd::analysis::defined_torsion(bent, 1e4), 5.0);
 }
 
+// A circle of radius R in the parameter c·t, at scales where v³ under- or overflowed: κ = 1/R,
+// dκ/ds = 0 and, for a helix of radius R and pitch R, τ = 1/(2R), wherever those are representable.
+TEST(FrenetJet, AnyRepresentableScaleOfCurveAndParameter) {
+    for (const double R : {1e-150, 1e-120, 1.0, 1e140, 1e150})
+        for (const double c : {1e-100, 1.0, 1e100}) {
+            const double t = 0.7, s = std::sin(t), k = std::cos(t);
+            Eigen::MatrixXd plane(3, 2), space(3, 3);
+            plane << -R * s * c, R * k * c, -R * k * c * c, -R * s * c * c, R * s * c * c * c, -R * k * c * c * c;
+            space << -R * s * c, R * k * c, R * c, -R * k * c * c, -R * s * c * c, 0.0, R * s * c * c * c,
+                -R * k * c * c * c, 0.0;
+            if (!std::isnormal(R * c) || !std::isnormal(R * c * c) || !std::isnormal(R * c * c * c))
+                continue;  // the jet itself
+            const FrenetJet p = frenet_jet(plane), h = frenet_jet(space);
+            EXPECT_NEAR(p.curvature * R, 1.0, 1e-14) << "R = " << R << ", c = " << c;
+            EXPECT_NEAR(p.curvature_rate * R * R, 0.0, 1e-14) << "R = " << R << ", c = " << c;
+            EXPECT_NEAR(h.curvature * R, 0.5, 1e-14) << "helix, R = " << R << ", c = " << c;
+            EXPECT_NEAR(h.torsion * R, 0.5, 1e-14) << "helix, R = " << R << ", c = " << c;
+        }
+}
+
 TEST(FrenetJet, ZeroSpeedIsNotRegularAndItsCurvatureIsNaN) {
     Eigen::MatrixXd D(2, 2);
     D << 0.0, 0.0, 1.0, 0.0;

@@ -281,6 +281,40 @@ TEST(CurveFormats, SvgIsACubicPathAndRefusesSpaceCurves) {
               std::string::npos);
 }
 
+// The comb at the ends of the representable scales: points scaled by 1e-120 wrote 3,988 nan (the
+// speed's cube underflowed), by 1e140 teeth of length 0 (it overflowed). A tooth scales with the
+// points, the comb's c (tooth = −c κ n) with their square.
+TEST(CurveFormats, SvgCombScalesWithThePointsAtAnyRepresentableScale) {
+    const auto comb = [](double s, double& c, Eigen::Vector4d& first_tooth) {
+        const PointList p = s * test::kNewberyGarrett;
+        const methods::InterpolationResult r = methods::interpolate("cubic-b", p, false);
+        const methods::MethodParameterCurve curve(*r.interpolant);
+        std::stringstream out;
+        ASSERT_TRUE(write_curve(out, CurveFormat::svg, curve, {.points = p}, {.comb = true}).ok());
+        const std::string svg = out.str();
+        EXPECT_EQ(svg.find("nan"), std::string::npos) << "scale " << s;
+        EXPECT_EQ(svg.find("inf"), std::string::npos) << "scale " << s;
+        const std::size_t at = svg.find("data-comb-scale=\"");
+        ASSERT_NE(at, std::string::npos);
+        c = std::stod(svg.substr(at + 17));
+        std::stringstream teeth(svg.substr(svg.find("d=\"M", at) + 4));
+        char l = 0;
+        teeth >> first_tooth(0) >> first_tooth(1) >> l >> first_tooth(2) >> first_tooth(3);
+        ASSERT_EQ(l, 'L');
+    };
+    double c1 = 0.0;
+    Eigen::Vector4d t1;
+    comb(1.0, c1, t1);
+    ASSERT_GT((t1.tail<2>() - t1.head<2>()).norm(), 0.0);
+    for (const double s : {1e-120, 1e140}) {
+        double c = 0.0;
+        Eigen::Vector4d t;
+        comb(s, c, t);
+        EXPECT_NEAR(c / (c1 * s * s), 1.0, 1e-9) << "scale " << s;
+        EXPECT_NEAR((t / s - t1).norm(), 0.0, 1e-9 * t1.norm()) << "scale " << s << ": the first tooth";
+    }
+}
+
 namespace {
 // The SPLINE entity's group codes: flags, degree, stated and counted knots and control points,
 // and the smallest knot.

@@ -13,7 +13,11 @@
 ///   τ     = (r′ × r″)·r‴ / |r′ × r″|²                                                    (space)
 ///   dτ/ds = [ ((r′×r″)·r⁗) |r′×r″|² − ((r′×r″)·r‴) · 2 (r′×r″)·(r′×r‴) ] / |r′×r″|⁴ / v (space)
 /// (differentiate κ = |w|/v³ and τ = w·r‴/|w|² with w = r′ × r″, w′ = r′ × r‴, and divide by
-/// ds/dt = v). Each follows from the Frenet–Serret formulas; tests/analysis/frenet_jet_test.cpp
+/// ds/dt = v). They are evaluated on the jet reparametrised to unit speed (row k divided by v k + 1
+/// times, v = |r′| without underflow), where v = 1: no power of v is formed, so a curve at any
+/// representable scale, in any parameter, gives its curvature wherever that is representable
+/// (v³ under- or overflowed at 1e±103: the SVG comb of points scaled by 1e-120 was NaN).
+/// Each follows from the Frenet–Serret formulas; tests/analysis/frenet_jet_test.cpp
 /// checks them on a circle, a helix and a clothoid, whose κ, dκ/ds and τ are known in closed form.
 ///
 /// The flatness policy, stated once: a point of a curve is straight (its curvature 0 to rounding)

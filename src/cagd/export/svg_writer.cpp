@@ -44,7 +44,7 @@ void write_svg(std::ostream& out, const Curve& curve, const BezierForm& cubic, c
     if (o.comb && o.comb_teeth < 2)
         fail_input(who, "comb teeth must be at least 2, got " + std::to_string(o.comb_teeth));
     Eigen::Vector2d lo = b.control.colwise().minCoeff().transpose(), hi = b.control.colwise().maxCoeff().transpose();
-    const double diagonal = (hi - lo).norm();
+    const double diagonal = (hi - lo).stableNorm();  // no underflow for a curve of size 1e-160
     // The comb: teeth spread over the curve's pieces, at equal parameter steps within each.
     std::vector<Eigen::Vector2d> base, tip;
     double scale = 0.0;
