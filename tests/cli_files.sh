@@ -173,6 +173,42 @@ prlimit --as=536870912 "$cagd" interpolate --method pseudo-spline --table huge_h
 expect 2 "a table whose header declares a huge grid, under 512 MB of address space" $?
 no_temporaries "reads"
 
+# ---- curve documents (export/curve_json.hpp): bounded before they are read, every fault exit 2 ----
+"$cagd" interpolate --method cubic-b --in walk.csv --out walk.json 2> err
+expect 0 "a curve document of 20000 points" $?
+prlimit --as=536870912 "$cagd" analyze --in walk.json > walk_measures.csv 2> err
+expect 0 "analyze of its own document under 512 MB" $?
+mkdir dir.json
+"$cagd" analyze --in dir.json 2> err
+expect 2 "a directory as the document" $?
+grep -q "dir.json: is a directory" err || fail "a directory document: $(cat err)"
+sed '0,/"points": \[/{n;s/\[[^,]*,/[1e400,/}' walk.json > overflow.json
+"$cagd" analyze --in overflow.json 2> err
+expect 2 "1e400 in a document" $?
+grep -q "overflow.json: not JSON (in points\[0\]\[0\]): number overflow parsing '1e400'" err ||
+    fail "1e400: $(cat err)"
+python3 -c "
+import json
+d = json.load(open('walk.json'))
+d['pieces'][7][0][1] += 1.0
+json.dump(d, open('jump.json', 'w'))"
+"$cagd" analyze --in jump.json 2> err
+expect 2 "pieces that do not join" $?
+grep -q "jump.json: pieces\[7\] starts at" err || fail "a jump: $(cat err)"
+ln -s /dev/zero zero.json
+timeout 20 "$cagd" analyze --in zero.json 2> err
+expect 2 "/dev/zero as a document" $?
+mkfifo blank.json
+(yes "" > blank.json 2> /dev/null &)
+start=$(date +%s)
+timeout 60 prlimit --as=536870912 "$cagd" analyze --in blank.json 2> err
+expect 2 "a FIFO of endless white space under 512 MB" $?
+runs=$((runs + 1))
+[ $(($(date +%s) - start)) -le 5 ] || fail "endless white space was refused only after $(($(date +%s) - start)) s"
+grep -q "white space longer than 1048576 bytes" err || fail "endless white space: $(cat err)"
+rm -f walk.json overflow.json jump.json
+no_temporaries "documents"
+
 # Sizes: every size option at its limit runs inside 512 MB of address space; beyond it, exit 2 at once.
 prlimit --as=536870912 "$cagd" typical-surface --n 1000 --grid 100 --alpha-u -1.5 --alpha-v -1.5 --angle-deg 10 --out ts.csv 2> err
 expect 0 "typical-surface at its net limit (n 1000) under 512 MB" $?

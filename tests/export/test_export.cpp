@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <sstream>
 
@@ -244,7 +245,67 @@ TEST(CurveJson, BadDocumentsAreRefusedNamingTheMember) {
     EXPECT_NE(message(head + R"("degree": 1, "breaks": [0, 1], "pieces": [[[0, 0], [1]]]})")
                   .find("pieces[0][1] must have 2 coordinates"),
               std::string::npos);
-    EXPECT_NE(message(head + R"("degree": 99, "breaks": [0, 1], "pieces": []})").find("degree = 99 outside [0, 31]"),
+    EXPECT_NE(message(head + R"("degree": 99, "breaks": [0, 1], "pieces": []})").find("degree = 99 outside [1, 31]"),
+              std::string::npos);
+    // Attacks: degree-0 pieces, an overflowing number, a span that overflows, a jump, a string among
+    // the coordinates, nesting without end, and more small values than the reader keeps.
+    EXPECT_NE(message(head + R"("degree": 0, "breaks": [0, 1, 2], "pieces": [[[0, 0]], [[1, 1]]]})")
+                  .find("degree = 0 outside [1, 31]"),
+              std::string::npos);
+    EXPECT_NE(message(head + R"("degree": 1, "breaks": [0, 1], "pieces": [[[0, 0], [1e400, 1]]]})")
+                  .find("doc.json: not JSON (in pieces[0][1][0]): number overflow parsing '1e400'"),
+              std::string::npos);
+    EXPECT_NE(message(head + R"("degree": 1, "breaks": [-1e308, 1e308], "pieces": [[[0, 0], [1, 1]]]})")
+                  .find("breaks spans -1e+308 to 1e+308: the span overflows"),
+              std::string::npos);
+    EXPECT_NE(message(head + R"("degree": 1, "breaks": [0, 1, 2], "pieces": [[[0, 0], [1, 1]], [[1, 2], [3, 3]]]})")
+                  .find("pieces[1] starts at (1, 2), pieces[0] ends at (1, 1): the pieces of a curve must join"),
+              std::string::npos);
+    EXPECT_NE(message(head + R"("degree": 1, "breaks": [0, 1], "pieces": [[[0, 0], [1, "1"]]]})")
+                  .find("pieces[0][1][1] must be a number"),
+              std::string::npos);
+    EXPECT_NE(message(head + R"("degree": 1, "breaks": [0, 1], "pieces": [[[[0], 0], [1, 1]]]})")
+                  .find("pieces[0][0][0] must be a number"),
+              std::string::npos);
+    EXPECT_NE(message(std::string(100, '[')).find("nested deeper than 64"), std::string::npos);
+    std::string many = R"({"format": "cagd-curve", "other": [)";
+    for (int i = 0; i < 100'001; ++i) many += "true,";
+    EXPECT_NE(message(many).find("more than 100000 values outside the numeric arrays"), std::string::npos);
+    EXPECT_NE(message("[1, 2]").find("doc.json: must be a JSON object"), std::string::npos);
+}
+
+// The reader keeps the numeric arrays flat and the rest in a small DOM: a document of 10^5 pieces
+// reads back bit for bit, and a stream that ends inside the arrays names where.
+TEST(CurveJson, LargeDocumentsStreamAndTruncatedOnesNameThePlace) {
+    BezierForm f;
+    f.exact = true;
+    f.pieces.degree = 3;
+    const int K = 100'000;
+    for (int i = 0; i <= K; ++i) f.pieces.breaks.push_back(i);
+    f.pieces.control.resize(4 * K, 2);
+    for (int i = 0; i < K; ++i)
+        for (int k = 0; k < 4; ++k)
+            f.pieces.control.row(4 * i + k) << i + k / 3.0, std::sin(i + k / 3.0) + 1e-7 * (k == 3 ? 0 : k);
+    std::stringstream s;
+    write_curve_json(s, f, {});
+    const std::string text = s.str();
+    const CurveDocument d = read_curve_json(s, "big.json");
+    EXPECT_EQ(d.form.pieces.control, f.pieces.control);
+    EXPECT_EQ(d.form.pieces.breaks, f.pieces.breaks);
+    std::stringstream cut(text.substr(0, text.size() / 2));
+    const std::string m = test::invalid_input_message([&] { read_curve_json(cut, "cut.json"); });
+    EXPECT_NE(m.find("cut.json: not JSON (in pieces["), std::string::npos) << m;
+    EXPECT_NE(m.find("unexpected end of input"), std::string::npos) << m;
+}
+
+// A writer refuses what a reader would refuse: a non-finite number, named by its member.
+TEST(CurveJson, NonFiniteValuesAreNeverWritten) {
+    BezierForm f;
+    f.pieces.degree = 1;
+    f.pieces.breaks = {0, 1};
+    f.pieces.control = Eigen::MatrixXd{{0, 0}, {1, std::numeric_limits<double>::infinity()}};
+    std::stringstream s;
+    EXPECT_NE(test::invalid_input_message([&] { write_curve_json(s, f, {}); }).find("pieces holds inf"),
               std::string::npos);
 }
 

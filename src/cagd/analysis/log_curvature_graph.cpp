@@ -106,20 +106,17 @@ CurvatureTorsionExtremes curvature_torsion_extremes(const Curve& c, int samples_
                    "samples_per_piece = " + std::to_string(samples_per_piece) + " < 1");
     // τ is measured where it is defined by the flatness policy (torsion(c, t, extent) not NaN).
     CurvatureTorsionExtremes e;
-    std::vector<std::pair<double, double>> samples;  // (t, kappa)
     const std::vector<double> br = c.breakpoints();
+    const bool space = c.dimension() == 3;
+    const double extent = space ? curve_extent(c) : 0.0;
     for (std::size_t p = 0; p + 1 < br.size(); ++p)
         for (int k = 0; k <= samples_per_piece; ++k) {
             const double t = br[p] + (br[p + 1] - br[p]) * k / samples_per_piece;
-            samples.emplace_back(t, curvature(c, t));
-            e.max_abs_curvature = std::max(e.max_abs_curvature, samples.back().second);
-        }
-    if (c.dimension() == 3) {
-        const double extent = curve_extent(c);
-        for (const auto& [t, kappa] : samples)
-            if (!is_straight(kappa, extent))
+            const double kappa = curvature(c, t);
+            e.max_abs_curvature = std::max(e.max_abs_curvature, kappa);
+            if (space && !is_straight(kappa, extent))
                 e.max_abs_torsion = std::max(e.max_abs_torsion, std::abs(torsion_and_rate(c, t).torsion));
-    }
+        }
     return e;
 }
 

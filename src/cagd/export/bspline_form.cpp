@@ -12,6 +12,8 @@ namespace {
 // The tolerance of the continuity test and of the blossoms' spread, relative to the control
 // points' bounding-box diagonal (header).
 constexpr double kBlossomTolerance = 1e-13;
+// Pieces join when their shared point differs by at most this, relative to the extent (header).
+constexpr double kJoinTolerance = 1e-12;
 
 void check_pieces(const BezierPieces& b, const char* who) {
     if (b.pieces() < 1 || b.degree < 0 || b.control.rows() != static_cast<Eigen::Index>(b.pieces()) * (b.degree + 1) ||
@@ -137,8 +139,23 @@ bool raise_multiplicities(const KnotPlan& plan, const std::vector<double>& sprea
 
 }  // namespace
 
+int first_unjoined_piece(const BezierPieces& b) {
+    check_pieces(b, "cagd::exports::first_unjoined_piece");
+    const double extent = std::max(control_diagonal(b), b.control.cwiseAbs().maxCoeff());
+    const Eigen::Index n = b.degree + 1;
+    for (Eigen::Index i = 1; i < b.pieces(); ++i)
+        if ((b.control.row(i * n) - b.control.row(i * n - 1)).norm() > kJoinTolerance * extent)
+            return static_cast<int>(i);
+    return 0;
+}
+
 BSplineCurve bezier_pieces_curve(const BezierPieces& b) {
     check_pieces(b, "cagd::exports::bezier_pieces_curve");
+    if (const int i = first_unjoined_piece(b); i > 0)
+        fail_input("cagd::exports::bezier_pieces_curve",
+                   "piece " + std::to_string(i) + " does not start where piece " + std::to_string(i - 1) +
+                       " ends (a gap of " + full_precision((b.piece(i).row(0) - b.piece(i - 1).row(b.degree)).norm()) +
+                       ")");
     const int p = std::max(b.degree, 1);
     const BezierPieces e = b.degree < 1 ? elevate_degree(b, 1) : b;
     std::vector<int> mu(static_cast<std::size_t>(e.pieces()), p);

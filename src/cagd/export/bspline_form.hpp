@@ -40,8 +40,15 @@ struct BSplineForm {
 /// non-increasing breaks.
 BSplineForm to_bspline(const BezierPieces& pieces);
 
+/// The first piece i ≥ 1 that does not start where piece i − 1 ends, 0 when every piece does: the
+/// gap ‖b_{i,0} − b_{i−1,p}‖ exceeds 1e-12 of the control points' extent (the larger of their
+/// bounding-box diagonal and their largest absolute coordinate). The pieces of one curve, computed
+/// one by one, meet to rounding; a larger gap is a curve that jumps.
+int first_unjoined_piece(const BezierPieces& pieces);
+
 /// The pieces as a B-spline with every interior knot of multiplicity p (no conversion, exact):
-/// the evaluator of a piecewise Bézier curve.
+/// the evaluator of a piecewise Bézier curve. InvalidInput for pieces that do not join
+/// (first_unjoined_piece), naming the first.
 BSplineCurve bezier_pieces_curve(const BezierPieces& pieces);
 
 /// A closed curve's periodic form: degree p, n distinct control points d_0 … d_{n−1} and the

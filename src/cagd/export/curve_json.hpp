@@ -31,10 +31,20 @@
 ///   }                                               rows of degree_v + 1 points [x, y, z]
 ///
 /// Numbers are written in the shortest form that reads back to the same double (nlohmann/json), so
-/// a document read back gives the same pieces bit for bit.
-/// Reading checks everything before using it (InvalidInput naming the document and the member):
-/// the format and its version, dimension 2 or 3, 0 ≤ degree ≤ 31, at most 10^7 pieces, breaks
-/// finite and increasing, every piece of degree + 1 points of `dimension` finite coordinates.
+/// a document read back gives the same pieces bit for bit. Writers stream, member by member: they
+/// hold the curve, never its text; a non-finite number is InvalidInput naming the member.
+///
+/// Reading is bounded before it reads: at most kMaxDocumentBytes of text (a larger regular file is
+/// refused before it is opened, a stream at the limit), the numeric arrays (points, breaks, pieces;
+/// u_breaks, v_breaks, patches) streamed into flat storage, at most kMaxDocumentNumbers numbers in
+/// all (8 bytes each), everything else a small DOM of at most kMaxDocumentValues values nested at
+/// most 64 deep. Peak memory is the curve's numbers twice (flat, then as matrices) plus a constant.
+/// Reading checks everything before using it (InvalidInput naming the document and the member or
+/// the place: "not JSON (in pieces[3][1][0]): number overflow parsing '1e400'"): the format and its
+/// version, dimension 2 or 3, 1 ≤ degree ≤ 31, 1 to 10^7 pieces, breaks increasing with a finite
+/// span, every piece of degree + 1 points of `dimension` finite coordinates, and pieces that join:
+/// piece i starts where piece i − 1 ends (first_unjoined_piece, bspline_form.hpp).
+#include <cstdint>
 #include <istream>
 #include <map>
 #include <ostream>
@@ -47,6 +57,14 @@
 #include "cagd/export/surface_form.hpp"
 
 namespace cagd::exports {
+
+/// The readers' limits (see above): a 10^6-point space curve's document of cubic pieces is about
+/// 300 MB and 1.5·10^7 numbers.
+inline constexpr std::uint64_t kMaxDocumentBytes = std::uint64_t{1} << 29;  ///< 512 MiB of text
+inline constexpr long long kMaxDocumentNumbers = 1LL << 25;                 ///< 256 MiB as doubles
+inline constexpr long long kMaxDocumentValues = 100'000;  ///< strings, booleans, … outside the arrays
+inline constexpr int kMaxDocumentDegree = 31;             ///< a curve document's pieces
+inline constexpr long kMaxDocumentPieces = 10'000'000;    ///< a curve document's pieces
 
 /// Parameter names and their values, as text.
 using ParameterText = std::map<std::string, std::string>;
@@ -91,9 +109,9 @@ struct SurfaceDocument {
 
 /// Writes the surface document of `form` and `provenance` (see above) to `out`.
 void write_surface_json(std::ostream& out, const SurfaceForm& form, const SurfaceProvenance& provenance);
-/// Reads a surface document: format and version, 1 ≤ degrees ≤ 1000, breaks finite and increasing
-/// (at most 100001), at most 10^7 control points, one net of finite points per cell; InvalidInput
-/// naming the document and the member otherwise.
+/// Reads a surface document, bounded as a curve document is: format and version, 1 ≤ degrees ≤ 1000,
+/// breaks increasing with a finite span (at most 100001), at most 10^7 control points, one net of
+/// finite points per cell; InvalidInput naming the document and the member otherwise.
 SurfaceDocument read_surface_json(std::istream& in, const std::string& source);
 /// The same from a file path.
 SurfaceDocument read_surface_json_file(const std::string& path);

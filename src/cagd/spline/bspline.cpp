@@ -261,7 +261,14 @@ const double* BSplineCurve::span_row(SpanTable& table, int span, std::size_t row
     if (!table.allocated.load(std::memory_order_acquire)) {
         const std::lock_guard<std::mutex> lock(table.building);
         if (!table.allocated.load(std::memory_order_relaxed)) {
-            table.values.assign(static_cast<std::size_t>(count) * row_size, 0.0);  // empty spans: never located
+            table.row.resize(static_cast<std::size_t>(count));
+            int rows = 0;  // an empty span shares the next one's row: it is never located
+            for (int i = 0; i < count; ++i) {
+                table.row[static_cast<std::size_t>(i)] = rows;
+                if (knots_[static_cast<std::size_t>(i + degree_)] < knots_[static_cast<std::size_t>(i + degree_) + 1])
+                    ++rows;
+            }
+            table.values.assign(static_cast<std::size_t>(rows) * row_size, 0.0);
             table.built = std::make_unique<std::atomic<std::uint8_t>[]>(
                 static_cast<std::size_t>((count + kSpansPerTableBlock - 1) / kSpansPerTableBlock));
             table.allocated.store(true, std::memory_order_release);
@@ -272,16 +279,19 @@ const double* BSplineCurve::span_row(SpanTable& table, int span, std::size_t row
         const std::lock_guard<std::mutex> lock(table.building);
         if (!built.load(std::memory_order_relaxed)) {
             const int first = degree_ + index / kSpansPerTableBlock * kSpansPerTableBlock;
-            fill(first, std::min(first + kSpansPerTableBlock, degree_ + count), table.values.data());
+            fill(first, std::min(first + kSpansPerTableBlock, degree_ + count), [&](int s) {
+                return table.values.data() +
+                       static_cast<std::size_t>(table.row[static_cast<std::size_t>(s - degree_)]) * row_size;
+            });
             built.store(1, std::memory_order_release);
         }
     }
-    return table.values.data() + static_cast<std::size_t>(index) * row_size;
+    return table.values.data() + static_cast<std::size_t>(table.row[static_cast<std::size_t>(index)]) * row_size;
 }
 
 const double* BSplineCurve::taylor(int span) const {
     const int p = degree_, dim = dimension();
-    return span_row(taylor_, span, static_cast<std::size_t>((p + 1) * dim), [&](int first, int last, double* c) {
+    return span_row(taylor_, span, static_cast<std::size_t>((p + 1) * dim), [&](int first, int last, auto row_of) {
         // The basis derivatives on the stack (degree ≤ 7) and the product's array reused: no heap per
         // span. The same product, bit for bit, as from basis_function_derivatives' MatrixXd (both
         // sizes are dynamic, so Eigen sums each entry in the same order; tested).
@@ -289,8 +299,8 @@ const double* BSplineCurve::taylor(int span) const {
         Eigen::MatrixXd heap_ders, d;
         for (int s = first; s < last; ++s) {
             if (!(knots_[static_cast<std::size_t>(s)] < knots_[static_cast<std::size_t>(s) + 1]))
-                continue;                                                         // empty span: never located
-            double* row = c + static_cast<std::size_t>((s - p) * (p + 1) * dim);  // D, then D(k, ·) / k!
+                continue;             // empty span: never located
+            double* row = row_of(s);  // D, then D(k, ·) / k!
             if (p + 1 <= kStackOrder) {
                 basis_function_derivatives_into(p, knots_, s, span_middle(s), p, stack_ders);
                 basis_times_control(stack_ders, control_, s - p, p, row);
@@ -314,7 +324,7 @@ const double* BSplineCurve::knot_jet(int span, bool at_end) const {
         fail_input("cagd::BSplineCurve::knot_jet", "the table of knot jets holds degrees up to 7");
     const int p = degree_, dim = dimension();
     const double* both =
-        span_row(knot_jets_, span, static_cast<std::size_t>(2 * (p + 1) * dim), [&](int first, int last, double* c) {
+        span_row(knot_jets_, span, static_cast<std::size_t>(2 * (p + 1) * dim), [&](int first, int last, auto row_of) {
             BasisDerivatives ders;  // the very product the direct path forms (degree ≤ 7 only: see taylor_jet)
             for (int s = first; s < last; ++s) {
                 if (!(knots_[static_cast<std::size_t>(s)] < knots_[static_cast<std::size_t>(s) + 1]))
@@ -322,7 +332,7 @@ const double* BSplineCurve::knot_jet(int span, bool at_end) const {
                 for (int end = 0; end < 2; ++end) {
                     basis_function_derivatives_into(p, knots_, s, knots_[static_cast<std::size_t>(s + end)], p, ders);
                     basis_times_control(ders, control_, s - p, p,
-                                        c + static_cast<std::size_t>(((s - p) * 2 + end) * (p + 1) * dim));
+                                        row_of(s) + static_cast<std::size_t>(end * (p + 1) * dim));
                 }
             }
         });

@@ -82,7 +82,8 @@ private:
         OnceCache(OnceCache&&) noexcept = default;
         OnceCache& operator=(OnceCache&&) noexcept = default;
     };
-    /// Rows of doubles per non-empty span s (at s − p), built on first use block by block of
+    /// Rows of doubles per non-empty span s (row[s − p]; an empty span takes no row: a curve of
+    /// Bézier pieces, every knot p-fold, has one non-empty span in p), built on first use block by block of
     /// kSpansPerTableBlock spans (thread-safe), each row exactly as a whole-table build forms it: a
     /// curve evaluated on a few spans only (the locality footprint's moved curve: a few dozen of 10^5)
     /// builds their blocks, not the whole table. A built block is found by one acquire load (the
@@ -91,6 +92,7 @@ private:
         std::mutex building;                                 ///< held while a block (or the array) is built
         std::atomic<bool> allocated{false};                  ///< values and built exist (release/acquire)
         std::unique_ptr<std::atomic<std::uint8_t>[]> built;  ///< per block: 1 once its rows are filled
+        std::vector<int> row;                                ///< per span s − p: its row in values
         std::vector<double> values;
         SpanTable() = default;
         SpanTable(const SpanTable&) : SpanTable() {}
@@ -100,12 +102,13 @@ private:
         SpanTable& reset() {
             allocated.store(false, std::memory_order_relaxed);
             built.reset();
+            row.clear();
             values.clear();
             return *this;
         }
     };
     /// The row of `span` in `table` (row_size doubles per span), its block filled first if need be by
-    /// fill(first, last, values): the spans first ≤ s < last into values + (s − p)·row_size.
+    /// fill(first, last, row_of): the non-empty spans first ≤ s < last into row_of(s) (row_size doubles).
     template <class Fill>
     const double* span_row(SpanTable& table, int span, std::size_t row_size, Fill fill) const;
     /// The span find_span found last (a hint, checked against the definition before use: successive
