@@ -21,6 +21,18 @@ for k in 1 2 3; do "$cagd" benchmark --out "$dir/part$k" "${plan[@]}" --part "$k
   { cat "$dir/err"; fail "--merge"; }
 diff -r "$dir/whole" "$dir/merged" > "$dir/diff" || { head "$dir/diff"; fail "3 parts merged differ from the whole run"; }
 [ "$(wc -l < "$dir/merged_seconds.csv")" -eq "$(wc -l < "$dir/whole_seconds.csv")" ] || fail "the merged run times have other rows"
+# SIGTERM at moments spread over a --merge (about 25 ms): nothing is left behind, since every
+# temporary is registered before it exists (io/temporary_file.hpp).
+for delay in 0 0.002 0.004 0.006 0.008 0.01 0.012 0.014 0.016 0.018 0.02 0.025 0.03 0.04 0.06; do
+  "$cagd" benchmark --out "$dir/killed" "${plan[@]}" --merge "$dir/part2" "$dir/part3" "$dir/part1" > /dev/null 2>&1 &
+  pid=$!
+  sleep "$delay"
+  kill -TERM "$pid" 2> /dev/null
+  wait "$pid"
+  left=$(find "$dir" -name '.*.cagd-*' | head -3)
+  [ -z "$left" ] || fail "SIGTERM after $delay s of --merge left $left"
+  rm -rf "$dir/killed"
+done
 # A missing part, a part of other options: exit 2, one line naming it, no directory.
 expect_refusal() {  # expect_refusal TEXT ARGS...: exit 2, one line containing TEXT, nothing at $dir/bad
     local text=$1; shift

@@ -135,14 +135,21 @@ runs=$((runs + 1))
 no_temporaries "compare"
 
 # ---- signals: the temporary files go, the status is the signal's ---------------------------------
-"$cagd" compare --in walk.csv --out killed > /dev/null 2>&1 &
-pid=$!
-sleep 1
-kill -TERM "$pid"
-wait "$pid"
-expect 143 "SIGTERM during compare" $?
-runs=$((runs + 1))
-[ ! -e killed ] || fail "an interrupted compare left its folder"
+# Kills spread over the whole run of compare (about 3.5 s here): its staging folder, its files and
+# their temporaries are registered before they exist (io/temporary_file.hpp).
+for delay in 0.05 0.2 0.5 0.9 1.4 2 2.6 3.2; do
+    "$cagd" compare --in walk.csv --out killed > /dev/null 2>&1 &
+    pid=$!
+    sleep "$delay"
+    kill -TERM "$pid" 2> /dev/null
+    wait "$pid"
+    code=$?
+    runs=$((runs + 1))
+    [ "$code" -eq 143 ] || [ "$code" -eq 0 ] || fail "SIGTERM after $delay s of compare: exit $code"
+    [ "$code" -eq 0 ] || [ ! -e killed ] || fail "compare killed after $delay s left its folder"
+    rm -rf killed
+    no_temporaries "SIGTERM after $delay s of compare"
+done
 "$cagd" interpolate --method cubic-b --in walk.csv --out - 2> /dev/null | head -c 100 > /dev/null
 expect 141 "a reader that stops (SIGPIPE)" "${PIPESTATUS[0]}"
 no_temporaries "signals"

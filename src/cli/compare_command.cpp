@@ -170,10 +170,10 @@ int run_compare(const CompareArgs& a) {
                 // ≤ ~1000 in each small panel of the combs figure: it draws the points once per method, and
                 // cairo's dots were two thirds of that figure's time at 10^5 points (1.1 of 1.6 s)
                 "; panel_point_every=" + std::to_string(std::max<Eigen::Index>(1, points.rows() / 1000));
-            // gnuplot's messages (its warnings on few points, say) go to a log in the staging
-            // directory, never staged: it is read only when gnuplot fails, and leaves with the staging.
+            // gnuplot's messages (its warnings on few points, say) go to a scratch log: read only when
+            // gnuplot fails, never published.
             commands.push_back("gnuplot -e " + shell_quoted(settings) + " " + shell_quoted(script) + " 2> " +
-                               shell_quoted(out.staging() + "/" + figure + ".log"));
+                               shell_quoted(out.scratch(figure + ".log")));
         }
         std::vector<int> status(commands.size(), 0);
         parallel_for(static_cast<long>(commands.size()), hardware_threads(),

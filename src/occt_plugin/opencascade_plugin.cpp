@@ -3,7 +3,6 @@
 // every entry point returns false with the message instead.
 #include "cagd/core/detail/opencascade_plugin.hpp"
 
-#include <unistd.h>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <Geom2dAPI_Interpolate.hxx>
@@ -28,10 +27,7 @@
 #include <TopoDS_Face.hxx>
 
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <mutex>
-#include <sstream>
 #include <type_traits>
 
 namespace {
@@ -110,9 +106,8 @@ bool interpolate(const Eigen::MatrixXd& points, const Eigen::RowVectorXd& centre
 
 std::mutex step_writer_mutex;  // OpenCASCADE's static interface parameters are process-wide
 
-// The STEP text of `shape` (AP214, millimetres) through a temporary file: OpenCASCADE writes only to
-// paths. The caller holds step_writer_mutex.
-bool write_shape(const TopoDS_Shape& shape, const char* what, std::string& step, std::string& message) {
+// Writes the STEP file of `shape` (AP214, millimetres) to `path`. The caller holds step_writer_mutex.
+bool write_shape(const TopoDS_Shape& shape, const char* what, const char* path, std::string& message) {
     STEPControl_Writer writer;
     Interface_Static::SetCVal("write.step.schema", "AP214IS");
     Interface_Static::SetCVal("write.step.unit", "MM");
@@ -120,33 +115,10 @@ bool write_shape(const TopoDS_Shape& shape, const char* what, std::string& step,
         message = std::string("OpenCASCADE could not translate the ") + what + " to STEP";
         return false;
     }
-    std::string pattern = (std::filesystem::temp_directory_path() / "cagd-step-XXXXXX").string();
-    const int fd = mkstemp(pattern.data());
-    if (fd < 0) {
-        message =
-            "no temporary file for OpenCASCADE's STEP writer in " + std::filesystem::temp_directory_path().string();
+    if (writer.Write(path) != IFSelect_RetDone) {
+        message = std::string("OpenCASCADE's STEP writer failed to write ") + path;
         return false;
     }
-    close(fd);
-    const std::filesystem::path temp = pattern;
-    struct RemovedOnExit {  // also when OpenCASCADE throws
-        std::filesystem::path path;
-        ~RemovedOnExit() {
-            std::error_code ec;
-            std::filesystem::remove(path, ec);
-        }
-    } removed{temp};
-    const IFSelect_ReturnStatus written = writer.Write(temp.c_str());
-    std::ifstream in(temp, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    const bool read = static_cast<bool>(in);
-    in.close();
-    if (written != IFSelect_RetDone || !read) {
-        message = "OpenCASCADE's STEP writer failed";
-        return false;
-    }
-    step = text.str();
     return true;
 }
 
@@ -168,7 +140,7 @@ void fill_knots(const std::vector<double>& all, TColStd_Array1OfReal& knots, TCo
     }
 }
 
-bool step_curve(const OpenCascadeBSpline& curve, std::string& step, std::string& message) {
+bool step_curve(const OpenCascadeBSpline& curve, const char* path, std::string& message) {
     const std::lock_guard<std::mutex> lock(step_writer_mutex);
     try {
         TColgp_Array1OfPnt poles(1, static_cast<int>(curve.poles.rows()));
@@ -183,7 +155,7 @@ bool step_curve(const OpenCascadeBSpline& curve, std::string& step, std::string&
             message = "OpenCASCADE could not make an edge of the B-spline";
             return false;
         }
-        return write_shape(edge.Edge(), "curve", step, message);
+        return write_shape(edge.Edge(), "curve", path, message);
     } catch (const Standard_Failure& e) {
         message = std::string("OpenCASCADE: ") + e.GetMessageString();
         return false;
@@ -191,7 +163,7 @@ bool step_curve(const OpenCascadeBSpline& curve, std::string& step, std::string&
 }
 
 bool step_surface(int du, int dv, const std::vector<double>& ku, const std::vector<double>& kv,
-                  const Eigen::MatrixXd& x, const Eigen::MatrixXd& y, const Eigen::MatrixXd& z, std::string& step,
+                  const Eigen::MatrixXd& x, const Eigen::MatrixXd& y, const Eigen::MatrixXd& z, const char* path,
                   std::string& message) {
     const std::lock_guard<std::mutex> lock(step_writer_mutex);
     try {
@@ -209,7 +181,7 @@ bool step_surface(int du, int dv, const std::vector<double>& ku, const std::vect
             message = "OpenCASCADE could not make a face of the B-spline surface";
             return false;
         }
-        return write_shape(face.Face(), "surface", step, message);
+        return write_shape(face.Face(), "surface", path, message);
     } catch (const Standard_Failure& e) {
         message = std::string("OpenCASCADE: ") + e.GetMessageString();
         return false;

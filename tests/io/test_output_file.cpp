@@ -6,6 +6,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -14,6 +15,7 @@
 
 #include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
+#include "cagd/io/temporary_file.hpp"
 #include "cagd/io/csv_writer.hpp"
 #include "cagd/io/output_file.hpp"
 
@@ -171,6 +173,48 @@ TEST(OutputFile, SignalCleanupRemovesEveryRegisteredTemporary) {
     EXPECT_EQ(temporaries_in(s.dir), 2) << "a's temporary file and the folder's staging directory";
     remove_output_temporaries();  // what the signal handler calls
     EXPECT_EQ(temporaries_in(s.dir), 0);
+}
+
+// A scratch file (a tool's log) is removed by a signal with the staging directory, and never published.
+TEST(OutputDirectory, ScratchFilesAreRemovedBySignalsAndNeverPublished) {
+    cagd::test::ScratchDirectory s;
+    {
+        OutputDirectory d(s.path("folder"));
+        std::ofstream(d.scratch("tool.log")) << "a warning";
+        OutputFile staged(d.staged("x.csv"));
+        staged.stream() << "x";
+        staged.commit();
+        remove_output_temporaries();
+        EXPECT_EQ(temporaries_in(s.dir), 0) << "the log is registered: the staging directory goes with it";
+    }
+    OutputDirectory d(s.path("folder"));
+    std::ofstream(d.scratch("tool.log")) << "a warning";
+    OutputFile staged(d.staged("x.csv"));
+    staged.stream() << "x";
+    staged.commit();
+    d.commit();
+    EXPECT_TRUE(fs::exists(s.path("folder") + "/x.csv"));
+    EXPECT_FALSE(fs::exists(s.path("folder") + "/tool.log"));
+}
+
+// Temporaries are registered before they exist: a name drawn twice is never created twice, and
+// a failure leaves nothing registered.
+TEST(TemporaryFile, CreatedAfterItsRegistrationAndRemovedByItsDestructor) {
+    cagd::test::ScratchDirectory s;
+    std::string path;
+    {
+        const TemporaryFile t(s.path("t-"), "test");
+        path = t.path();
+        EXPECT_EQ(path.size(), s.path("t-").size() + 16);
+        EXPECT_TRUE(fs::is_regular_file(path));
+    }
+    EXPECT_FALSE(fs::exists(path));
+    std::string p;
+    int slot = -1;
+    EXPECT_EQ(create_temporary(s.path("missing/t-"), TemporaryKind::file, p, slot), -1);
+    EXPECT_EQ(errno, ENOENT);
+    const std::string m = invalid_input_message([&] { TemporaryFile(s.path("missing/t-"), "who"); });
+    EXPECT_NE(m.find("no temporary file"), std::string::npos) << m;
 }
 
 // core/csv's CsvWriter writes through an OutputFile: the harness's tables are published whole.

@@ -1,7 +1,11 @@
 #include "cagd/export/step_writer.hpp"
 
 #if CAGD_WITH_OPENCASCADE
+#include <filesystem>
+#include <fstream>
+
 #include "cagd/core/detail/opencascade_plugin.hpp"
+#include "cagd/io/temporary_file.hpp"
 #endif
 
 namespace cagd::exports {
@@ -9,16 +13,29 @@ namespace cagd::exports {
 #if CAGD_WITH_OPENCASCADE
 bool step_available() { return true; }
 
-// OpenCASCADE is loaded on the first write (core/detail/opencascade_plugin.hpp); it writes through a
-// temporary file, and the text it wrote is copied to `out`.
+namespace {
+// OpenCASCADE (loaded on the first write: core/detail/opencascade_plugin.hpp) writes only to paths:
+// it writes a registered temporary file (io/temporary_file.hpp: a signal removes it), whose bytes
+// are then streamed to `out`; the text is never held in memory.
+template <class Write>
+Outcome step_through_file(std::ostream& out, const char* who, Write write) {
+    const TemporaryFile file((std::filesystem::temp_directory_path() / "cagd-step-").string(), who);
+    std::string message;
+    if (!write(file.path().c_str(), message)) return {Status::no_solution, message};
+    std::ifstream in(file.path(), std::ios::binary);
+    if (!(in && out << in.rdbuf()) || in.bad())
+        return {Status::no_solution, std::string("OpenCASCADE's STEP file could not be read back from ") + file.path()};
+    return {};
+}
+}  // namespace
+
 Outcome write_step(std::ostream& out, const BSplineCurve& curve) {
-    const cagd::detail::OpenCascadePlugin& occt = cagd::detail::opencascade_plugin("cagd::exports::write_step");
+    const char* who = "cagd::exports::write_step";
+    const cagd::detail::OpenCascadePlugin& occt = cagd::detail::opencascade_plugin(who);
     const cagd::detail::OpenCascadeBSpline c{
         .degree = curve.degree(), .knots = curve.knots(), .poles = curve.control_points()};
-    std::string step, message;
-    if (!occt.step_curve(c, step, message)) return {Status::no_solution, message};
-    out << step;
-    return {};
+    return step_through_file(out, who,
+                             [&](const char* path, std::string& message) { return occt.step_curve(c, path, message); });
 }
 
 Outcome write_step(std::ostream& out, const BSplineSurface& surface) {
@@ -28,12 +45,10 @@ Outcome write_step(std::ostream& out, const BSplineSurface& surface) {
         fail_input(who, "a surface of degree " + std::to_string(surface.degree_u) + " x " +
                             std::to_string(surface.degree_v) + "; OpenCASCADE's B-spline surfaces take degree <= " +
                             std::to_string(occt.max_surface_degree) + " (json takes any degree)");
-    std::string step, message;
-    if (!occt.step_surface(surface.degree_u, surface.degree_v, surface.knots_u, surface.knots_v, surface.control[0],
-                           surface.control[1], surface.control[2], step, message))
-        return {Status::no_solution, message};
-    out << step;
-    return {};
+    return step_through_file(out, who, [&](const char* path, std::string& message) {
+        return occt.step_surface(surface.degree_u, surface.degree_v, surface.knots_u, surface.knots_v,
+                                 surface.control[0], surface.control[1], surface.control[2], path, message);
+    });
 }
 #else
 bool step_available() { return false; }

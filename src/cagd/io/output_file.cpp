@@ -5,9 +5,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <atomic>
 #include <cerrno>
-#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -20,37 +18,6 @@
 namespace cagd {
 
 namespace {
-
-// ---- the registry of temporary files and directories (read by a signal handler) ----------------
-
-// Slots: 0 free, 1 being filled, 2 a temporary file, 3 a staging directory. A path longer than
-// kSlotPath is not registered (it is still removed by its owner; only a signal could leave it).
-constexpr int kSlots = 256;
-constexpr std::size_t kSlotPath = 4096;
-struct Slot {
-    std::atomic<int> state{0};
-    char path[kSlotPath]{};
-};
-// Constant-initialised (zero, in .bss): no code runs at start-up, and the megabyte's pages are
-// touched only when a slot is used (a dynamic initialiser faulted all 256 pages in every process).
-constinit Slot slots[kSlots];
-
-int register_temporary(const std::string& path, int kind) {
-    if (path.size() + 1 > kSlotPath) return -1;
-    for (int i = 0; i < kSlots; ++i) {
-        int free = 0;
-        if (slots[i].state.compare_exchange_strong(free, 1)) {
-            std::memcpy(slots[i].path, path.c_str(), path.size() + 1);
-            slots[i].state.store(kind);
-            return i;
-        }
-    }
-    return -1;
-}
-
-void unregister_temporary(int slot) {
-    if (slot >= 0) slots[slot].state.store(0);
-}
 
 // write(2) until every byte is written; 0, or the errno of the failure.
 int write_all(int fd, const char* data, std::size_t size) {
@@ -182,13 +149,13 @@ OutputFile::OutputFile(const std::string& path, const std::string& option) : pat
     if (fs::is_symlink(fs::symlink_status(p, ec))) fail_input(who, name + ": a loop of symbolic links");
     const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
     if (!fs::is_directory(dir, ec)) fail_input(who, name + ": the directory '" + dir.string() + "' does not exist");
-    std::string pattern = (dir / ("." + p.filename().string() + ".cagd-XXXXXX")).string();
-    const int temp = ::mkstemp(pattern.data());
+    std::string temp_name;
+    const int temp = create_temporary((dir / ("." + p.filename().string() + ".cagd-")).string(), TemporaryKind::file,
+                                      temp_name, temp_slot_);
     if (temp < 0) fail_input(who, name + ": cannot write in '" + dir.string() + "': " + reason(errno));
-    temp_path_ = pattern;
-    temp_slot_ = register_temporary(pattern, 2);
+    temp_path_ = temp_name;
     final_ = p;
-    // mkstemp makes 0600: the file gets the mode of the one it replaces, or a new file's.
+    // Made 0600: the file gets the mode of the one it replaces, or a new file's.
     ::fchmod(temp, exists ? (st.st_mode & 07777) : new_file_mode());
     file_buffer_ = std::make_unique<FdBuffer>(temp);
     file_stream_ = std::make_unique<std::ostream>(file_buffer_.get());
@@ -271,17 +238,15 @@ OutputDirectory::OutputDirectory(const std::string& path, const std::string& opt
     const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
     if (!fs::is_directory(parent, ec)) fail_input(who, option + " '" + path + "': its parent directory does not exist");
     // (appends: GCC 12 warns falsely of an oversized memcpy in "." + std::string&&)
-    std::string pattern =
-        (parent / std::string(".").append(target.filename().string()).append(".cagd-XXXXXX")).string();
-    if (::mkdtemp(pattern.data()) == nullptr)
+    if (create_temporary((parent / std::string(".").append(target.filename().string()).append(".cagd-")).string(),
+                         TemporaryKind::directory, staging_, staging_slot_) < 0)
         fail_input(who, option + " '" + path + "': cannot write in '" + parent.string() + "': " + reason(errno));
-    ::chmod(pattern.c_str(), new_directory_mode());  // mkdtemp makes 0700; a new directory's mode
-    staging_ = pattern;
-    staging_slot_ = register_temporary(pattern, 3);
+    ::chmod(staging_.c_str(), new_directory_mode());  // made 0700; a new directory's mode
 }
 
 OutputDirectory::~OutputDirectory() {
     for (int slot : staged_slots_) unregister_temporary(slot);
+    for (const auto& scratch : scratch_) unregister_temporary(scratch.second);
     if (committed_) return;
     std::error_code ec;
     std::filesystem::remove_all(staging_, ec);
@@ -292,7 +257,16 @@ std::string OutputDirectory::staged(const std::string& name) {
     if (name.empty() || name.find('/') != std::string::npos)
         throw std::logic_error("cagd::OutputDirectory::staged: '" + name + "' is not a file name");
     const std::string path = staging_ + "/" + name;
-    staged_slots_.push_back(register_temporary(path, 2));  // a signal removes it with the staging directory
+    staged_slots_.push_back(
+        register_temporary(path, TemporaryKind::file));  // a signal removes it with the staging directory
+    return path;
+}
+
+std::string OutputDirectory::scratch(const std::string& name) {
+    if (name.empty() || name.find('/') != std::string::npos)
+        throw std::logic_error("cagd::OutputDirectory::scratch: '" + name + "' is not a file name");
+    const std::string path = staging_ + "/" + name;
+    scratch_.emplace_back(path, register_temporary(path, TemporaryKind::file));
     return path;
 }
 
@@ -302,6 +276,11 @@ void OutputDirectory::commit() {
     const auto fail = [&](const std::string& what, int error) {
         throw OutputError(option_ + " '" + path_ + "': " + what + ": " + reason(error));
     };
+    for (const auto& [path, slot] : scratch_) {
+        ::unlink(path.c_str());
+        unregister_temporary(slot);
+    }
+    scratch_.clear();
     // A new directory: the staging directory becomes it, whole.
     for (int slot : staged_slots_) unregister_temporary(slot);
     staged_slots_.clear();
@@ -333,40 +312,6 @@ void OutputDirectory::commit() {
     ::rmdir(staging_.c_str());
     unregister_temporary(staging_slot_);
     committed_ = true;
-}
-
-// ---- signals ------------------------------------------------------------------------------------
-
-void remove_output_temporaries() noexcept {
-    for (int kind : {2, 3})  // files first, then the directories that held them
-        for (Slot& s : slots)
-            if (s.state.load() == kind) {
-                if (kind == 2)
-                    ::unlink(s.path);
-                else
-                    ::rmdir(s.path);
-            }
-}
-
-namespace {
-
-extern "C" void remove_temporaries_and_reraise(int signal) {
-    remove_output_temporaries();
-    ::signal(signal, SIG_DFL);
-    ::raise(signal);  // delivered when the handler returns: the default action, status 128 + signal
-}
-
-}  // namespace
-
-void install_output_signal_cleanup() {
-    for (int signal : {SIGINT, SIGTERM, SIGHUP, SIGPIPE}) {
-        struct sigaction old {};
-        if (::sigaction(signal, nullptr, &old) == 0 && old.sa_handler == SIG_IGN) continue;  // kept ignored (nohup)
-        struct sigaction action {};
-        action.sa_handler = remove_temporaries_and_reraise;
-        sigemptyset(&action.sa_mask);
-        ::sigaction(signal, &action, nullptr);
-    }
 }
 
 }  // namespace cagd

@@ -8,7 +8,7 @@
 ///     written through that descriptor at commit(), at its offset (appended where the shell appends),
 ///     never truncated, renamed over or removed;
 ///   - special: an existing device, FIFO or socket: opened for writing at commit() and written;
-///   - regular: a regular file or a new path: a temporary file beside it (created by mkstemp, given the
+///   - regular: a regular file or a new path: a temporary file beside it (created by create_temporary, given the
 ///     mode of the file it replaces, or 0666 less the umask for a new one), renamed over it at commit().
 ///     A symbolic link keeps pointing where it did: the file it finally names is replaced.
 /// Output appears only after success: what stream() receives is published by commit(). Descriptor
@@ -25,15 +25,19 @@
 /// on DIR, so that two runs never mix their files; renames replace links planted in DIR, they never
 /// follow them.
 ///
-/// Temporary files and directories are registered while they exist; remove_output_temporaries()
-/// removes them all and is async-signal-safe (a signal handler calls it: install_output_signal_cleanup).
+/// Temporary files and directories are registered before they exist (io/temporary_file.hpp);
+/// remove_output_temporaries() removes them all and is async-signal-safe (a signal handler calls it:
+/// install_output_signal_cleanup).
 #include <filesystem>
 #include <memory>
 #include <ostream>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include "cagd/io/temporary_file.hpp"
 
 namespace cagd {
 
@@ -91,6 +95,9 @@ public:
     ~OutputDirectory();
     /// Where a file `name` (no '/') is staged: write it there (e.g. with an OutputFile) before commit().
     std::string staged(const std::string& name);
+    /// Where a scratch file `name` (no '/') goes: in the staging directory, registered (a signal removes
+    /// it), never published (commit() removes it first): a tool's log, read only when the tool fails.
+    std::string scratch(const std::string& name);
     /// The staging directory (for tools that write into it themselves, such as gnuplot).
     const std::string& staging() const { return staging_; }
     /// Moves every staged file into the directory, under an exclusive lock on it; OutputError on failure.
@@ -100,14 +107,8 @@ private:
     std::string path_, option_, staging_;
     int staging_slot_ = -1;
     std::vector<int> staged_slots_;
+    std::vector<std::pair<std::string, int>> scratch_;  ///< path, slot
     bool committed_ = false;
 };
-
-/// Removes every registered temporary file and staging directory of the process. Async-signal-safe.
-void remove_output_temporaries() noexcept;
-
-/// Installs handlers for SIGINT, SIGTERM, SIGHUP and SIGPIPE that call remove_output_temporaries()
-/// and then end the process by the same signal (the conventional exit status 128 + signal).
-void install_output_signal_cleanup();
 
 }  // namespace cagd

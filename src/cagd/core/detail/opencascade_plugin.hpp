@@ -26,7 +26,7 @@ namespace cagd::detail {
 
 #ifdef CAGD_LIBRARY_VERSION  // defined by the build for the library's and the plugin's own sources
 /// What both sides must agree on; a plugin reporting anything else is not loaded.
-inline constexpr const char* kOpenCascadePluginInterface = "cagd-occt-plugin 3 " CAGD_LIBRARY_VERSION;
+inline constexpr const char* kOpenCascadePluginInterface = "cagd-occt-plugin 4 " CAGD_LIBRARY_VERSION;
 #endif
 
 /// A B-spline in OpenCASCADE's terms: degree, the full knot vector (values repeated by
@@ -49,13 +49,14 @@ struct OpenCascadePlugin {
     /// `message` when OpenCASCADE fails.
     bool (*interpolate)(const Eigen::MatrixXd& points, const Eigen::RowVectorXd& centre, double scale, bool closed,
                         double tolerance, OpenCascadeBSpline& curve, std::string& message) = nullptr;
-    /// The STEP (AP214) text of one edge on the curve; false with `message` when OpenCASCADE fails.
-    bool (*step_curve)(const OpenCascadeBSpline& curve, std::string& step, std::string& message) = nullptr;
-    /// The STEP text of one face on the B-spline surface of degrees (du, dv), knot vectors ku, kv and
-    /// control coordinates x, y, z (each nu × nv); false with `message` when OpenCASCADE fails.
+    /// Writes the STEP (AP214) file of one edge on the curve to `path` (OpenCASCADE writes only to
+    /// paths: the caller's registered temporary file); false with `message` when OpenCASCADE fails.
+    bool (*step_curve)(const OpenCascadeBSpline& curve, const char* path, std::string& message) = nullptr;
+    /// The same for one face on the B-spline surface of degrees (du, dv), knot vectors ku, kv and
+    /// control coordinates x, y, z (each nu × nv).
     bool (*step_surface)(int du, int dv, const std::vector<double>& ku, const std::vector<double>& kv,
-                         const Eigen::MatrixXd& x, const Eigen::MatrixXd& y, const Eigen::MatrixXd& z,
-                         std::string& step, std::string& message) = nullptr;
+                         const Eigen::MatrixXd& x, const Eigen::MatrixXd& y, const Eigen::MatrixXd& z, const char* path,
+                         std::string& message) = nullptr;
     int max_surface_degree = 0;  ///< Geom_BSplineSurface::MaxDegree()
 };
 
