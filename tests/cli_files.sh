@@ -178,6 +178,22 @@ grep -q "checksum does not match" err || fail "a flipped digit is not named as a
 printf '# cagd pseudo_energy table format 7 grid 6000 placement periodic method fast\nx\n' > huge_header.txt
 prlimit --as=536870912 "$cagd" interpolate --method pseudo-spline --table huge_header.txt --in p.csv --out ps.csv 2> err
 expect 2 "a table whose header declares a huge grid, under 512 MB of address space" $?
+# Table readers are bounded before they read whole: a stream without line breaks at its first line,
+# a valid header followed by endless rows at the last line its grid allows.
+printf '0,0,0\n1,1,0.5\n2,0,1\n3,1,0\n' > space.csv
+for option in --table --space-table; do
+    in=p.csv
+    [ "$option" = --space-table ] && in=space.csv
+    timeout 20 prlimit --as=536870912 "$cagd" interpolate --method pseudo-spline "$option" /dev/zero --in "$in" --out ps.csv 2> err
+    expect 2 "$option /dev/zero" $?
+    grep -q "a line longer than 4096 bytes" err || fail "$option /dev/zero: $(cat err)"
+done
+mkfifo endless.txt
+( (head -1 t12.txt; yes "1,2") > endless.txt 2> /dev/null &)
+timeout 20 prlimit --as=536870912 "$cagd" interpolate --method pseudo-spline --table endless.txt --in p.csv --out ps.csv 2> err
+expect 2 "--table: a header, then endless rows" $?
+grep -q "more than the 147 lines a table of the grid its header declares holds" err || fail "endless rows: $(cat err)"
+rm -f endless.txt
 no_temporaries "reads"
 
 # ---- curve documents (export/curve_json.hpp): bounded before they are read, every fault exit 2 ----

@@ -95,14 +95,17 @@ AngleMinimumTable AngleMinimumTable::load_or_build(const std::string& path, cons
     header << "# cagd pseudo_energy angle-minimum table format 2 grid " << grid.n << " placement "
            << to_string(grid.placement);
     const auto try_load = [&](std::string& why) -> std::optional<AngleMinimumTable> {
-        std::ifstream file(path, std::ios::binary);
-        if (!file) return std::nullopt;
-        std::ostringstream whole;
-        whole << file.rdbuf();
-        const std::string text = whole.str();
+        if (!std::ifstream(path)) return std::nullopt;
+        // Lines after the header: the column names, a row per node, the checksum line.
+        const auto lines_after = [](const std::string& h) -> long {
+            const std::size_t at = h.find(" grid ");
+            const long n = at == std::string::npos ? 0 : std::atol(h.c_str() + at + 6);
+            return n >= 2 && n <= 10'000'000 ? n + 2 : -1;  // a row per node, far beyond any grid in use
+        };
         std::istringstream in;
         try {
-            in.str(std::string(checked_content(text, path)));
+            in.str(std::string(
+                checked_content(read_table_text(path, "cagd::fairness::AngleMinimumTable", lines_after), path)));
         } catch (const InvalidInput& e) {
             why = e.what();
             return std::nullopt;

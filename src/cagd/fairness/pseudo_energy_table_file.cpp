@@ -73,12 +73,20 @@ void PseudoEnergyTable::save(const std::string& path) const {
 
 namespace {
 
-std::string read_whole(const std::string& path, const char* who) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) fail_input(who, "cannot open '" + path + "'");
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
+// The text of the table file `path`, bounded by the grid its header declares (grid n: the column
+// names, n² rows, the checksum line); a header without a grid is left to parse_table to name.
+std::string table_text(const std::string& path, const char* who) {
+    return read_table_text(path, who, [&](const std::string& header) -> long {
+        std::istringstream h(header);
+        std::string word;
+        while (h >> word && word != "grid") {}
+        long n = 0;
+        if (!(h >> n)) return -1;
+        if (n < 2 || n > kMaxTableGrid)
+            fail_input(who, "'" + path + "': grid " + std::to_string(n) + "; it must be in [2, " +
+                                std::to_string(kMaxTableGrid) + "]");
+        return n * n + 2;
+    });
 }
 
 // The table in `text` (the file `source`), every value checked as the header comment says.
@@ -212,7 +220,7 @@ PseudoEnergyTable PseudoEnergyTable::load_or_build(const std::string& path, cons
         std::ifstream probe(path);
         if (!probe) return std::nullopt;
         try {
-            ParsedTable p = parse_table(read_whole(path, "cagd::fairness::PseudoEnergyTable::load_or_build"), path);
+            ParsedTable p = parse_table(table_text(path, "cagd::fairness::PseudoEnergyTable::load_or_build"), path);
             if (p.grid.n != grid.n || p.grid.placement != grid.placement ||
                 p.method != method) {  // another table: rebuilt
                 why = "another table (grid " + std::to_string(p.grid.n) + ", another placement or method)";
@@ -249,7 +257,7 @@ PseudoEnergyTable PseudoEnergyTable::load_or_build(const std::string& path, cons
 }
 
 PseudoEnergyTable PseudoEnergyTable::load(const std::string& path) {
-    ParsedTable p = parse_table(read_whole(path, "cagd::fairness::PseudoEnergyTable::load"), path);
+    ParsedTable p = parse_table(table_text(path, "cagd::fairness::PseudoEnergyTable::load"), path);
     PseudoEnergyTable t;
     t.grid_ = p.grid;
     t.method_ = p.method;

@@ -154,13 +154,18 @@ void SpacePseudoEnergyTable::save(const std::string& path) const {
 // A load checks, before it trusts a value: the checksum (core/checksum.hpp); the grid (require_grid);
 // exactly n_θ² n_φ rows, each node once; every field a number, NaN nowhere; type c, s or x; a node
 // of type c or s has finite J ≥ 0, magnitudes r0, r1 > 0 and length L ≥ 1 (the unit chord); a node
-// of type x, J ≥ 0 or inf. Memory grows with the rows read, not with what the header declares.
+// of type x, J ≥ 0 or inf. The text is bounded by what the header declares (read_table_text).
 SpacePseudoEnergyTable SpacePseudoEnergyTable::load(const std::string& path) {
-    std::ifstream file(path, std::ios::binary);
-    if (!file) fail_input(kWho, "cannot open '" + path + "'");
-    std::ostringstream whole;
-    whole << file.rdbuf();
-    const std::string text = whole.str();
+    // Lines after the header: the column names, n_θ² n_φ rows, the checksum line (−1: no grid).
+    const auto lines_after = [](const std::string& header) -> long {
+        std::istringstream h(header);
+        std::string word;
+        while (h >> word && word != "grid") {}
+        long n = 0, m = 0;
+        if (!(h >> n >> m) || n < 2 || m < 4 || n * n * m > 200'000'000L) return -1;
+        return n * n * m + 2;
+    };
+    const std::string text = read_table_text(path, kWho, lines_after);
     std::istringstream in{std::string(checked_content(text, path))};
     std::string line;
     std::getline(in, line);
