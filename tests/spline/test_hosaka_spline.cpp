@@ -161,14 +161,16 @@ TEST(HosakaExplicit, InterpolatesIsC2WithNaturalEndsAndRejectsBadAbscissae) {
 
 TEST(HosakaSpline, OrderMSplineIsContinuousTo2mAndReducesToEq20ForM1) {
     const cagd::PointList p = uneven_points();
-    EXPECT_LT(analysis::max_distance_same_parameter(spline::hosaka_spline(p, 1), spline::hosaka_c2_spline(p).curve),
+    EXPECT_LT(analysis::max_distance_same_parameter(spline::hosaka_spline(p, 1).curve.value(),
+                                                    spline::hosaka_c2_spline(p).curve),
               1e-12);
     spline::HosakaSplineOptions closed;
     closed.closed = true;
-    EXPECT_LT(analysis::max_distance_same_parameter(spline::hosaka_spline(p, 1, spline::HosakaScale::chord, true),
-                                                    spline::hosaka_c2_spline(p, closed).curve),
+    EXPECT_LT(analysis::max_distance_same_parameter(
+                  spline::hosaka_spline(p, 1, spline::HosakaScale::chord, true).curve.value(),
+                  spline::hosaka_c2_spline(p, closed).curve),
               1e-12);
-    const spline::HosakaCurve c = spline::hosaka_spline(p, 2, spline::HosakaScale::unit);
+    const spline::HosakaCurve c = spline::hosaka_spline(p, 2, spline::HosakaScale::unit).curve.value();
     for (int s = 1; s < c.segments(); ++s)
         for (int k = 1; k <= 4; ++k) {  // unit scale: τ = u, so t-derivatives must match directly
             const spline::HosakaBasis b(2);
@@ -190,10 +192,10 @@ TEST(HosakaSpline, TangentEndsForAnyOrder) {
     o.start_tangent = Eigen::Vector2d(0.5, 1.0);
     o.end_tangent = Eigen::Vector2d(1.0, -2.0);
     // m = 1: the clamped spline of eq (20).
-    EXPECT_LT(
-        analysis::max_distance_same_parameter(spline::hosaka_spline(p, 1, o), spline::hosaka_c2_spline(p, o).curve),
-        1e-12);
-    const spline::HosakaCurve c = spline::hosaka_spline(p, 2, o);
+    EXPECT_LT(analysis::max_distance_same_parameter(spline::hosaka_spline(p, 1, o).curve.value(),
+                                                    spline::hosaka_c2_spline(p, o).curve),
+              1e-12);
+    const spline::HosakaCurve c = spline::hosaka_spline(p, 2, o).curve.value();
     const int last = c.segments() - 1;
     EXPECT_LT((c.segment_jet(0, 0.0, 1).row(1).transpose() - o.start_tangent).norm(), 1e-12);
     EXPECT_LT((c.segment_jet(last, 1.0, 1).row(1).transpose() - o.end_tangent).norm(), 1e-12);
@@ -201,7 +203,7 @@ TEST(HosakaSpline, TangentEndsForAnyOrder) {
               1e-9 * c.segment_jet(0, 0.5, 3).row(3).norm() + 1e-9);  // order m+1 = 3 vanishes
     EXPECT_GT(c.segment_jet(0, 0.0, 4).row(4).norm(), 1e-3);          // order 2m does not
     // Differs from the natural m = 2 spline, and bad tangents are rejected.
-    EXPECT_GT(analysis::max_distance_same_parameter(c, spline::hosaka_spline(p, 2)), 1e-3);
+    EXPECT_GT(analysis::max_distance_same_parameter(c, spline::hosaka_spline(p, 2).curve.value()), 1e-3);
     o.end_tangent = Eigen::Vector3d(1, 0, 0);
     EXPECT_THROW(spline::hosaka_spline(p, 2, o), InvalidInput);
 }
@@ -228,7 +230,7 @@ TEST(HosakaSpline, JetIntoIsTheJetBitForBit) {
             PointList pts(7, dim);
             for (Eigen::Index r = 0; r < pts.rows(); ++r)
                 for (int c = 0; c < dim; ++c) pts(r, c) = u(rng) + 3.0 * static_cast<double>(r);
-            const spline::HosakaCurve curve = spline::hosaka_spline(pts, m);
+            const spline::HosakaCurve curve = spline::hosaka_spline(pts, m).curve.value();
             JetMatrix J;
             for (int step = 0; step <= 60; ++step) {
                 const double x = curve.t_max() * step / 60.0;
@@ -266,7 +268,8 @@ TEST(HosakaSpline, ValidatedPointsGiveTheSameCurves) {
         const ValidPoints valid = validate_points(p, 3, closed, "test");
         const spline::HosakaCurve c2 = spline::hosaka_c2_spline(valid, o).curve,
                                   c2_list = spline::hosaka_c2_spline(p, o).curve;
-        const spline::HosakaCurve c3 = spline::hosaka_spline(valid, 3, o), c3_list = spline::hosaka_spline(p, 3, o);
+        const spline::HosakaCurve c3 = spline::hosaka_spline(valid, 3, o).curve.value(),
+                                  c3_list = spline::hosaka_spline(p, 3, o).curve.value();
         JetMatrix a, b;
         for (double t = 0.0; t <= c2.t_max(); t += 0.37) {
             c2.jet_into(t, 2, a);
@@ -313,4 +316,36 @@ TEST(HosakaSpline, SpanLengthsAreTheChordsAndGiveEq19BitForBit) {
             EXPECT_EQ(spline::hosaka_c2_spline(p, o).span_lengths, std::vector<double>(chords.size(), 1.0));
         }
     }
+}
+
+// The τ-derivatives are solved in units of the mean chord's power of 2: the same curve, scaled, from
+// 1e-150 to 1e150 at every order (at 1e60 and m = 3 the system was "singular": entries 1e60^-5),
+// and a numerical outcome, not an exception, where the system is singular in double precision.
+TEST(HosakaSpline, TheSameCurveAtEveryScaleAndASingularSystemIsAnOutcome) {
+    const PointList p = test::kNewberyGarrett;
+    // m = 6 is solved at every scale too, but its system is ill-conditioned: curves at two scales
+    // (two λ) differ by up to 8e-4 here, the rounding of a badly conditioned solve; only m ≤ 3 is
+    // held to rounding.
+    for (int m : {2, 3, 6}) {
+        const spline::HosakaCurve unit = spline::hosaka_spline(p, m).curve.value();
+        for (double s : {1e-150, 1e-60, 1e60, 1e150}) {
+            const spline::HosakaSplineFit f = spline::hosaka_spline(PointList(s * p), m);
+            ASSERT_TRUE(f.outcome.ok()) << "m = " << m << ", scale " << s << ": " << f.outcome.message;
+            ASSERT_TRUE(f.curve->point(1.5).allFinite());
+            if (m == 6) continue;
+            for (double u = 0.0; u <= unit.t_max(); u += 0.25)
+                EXPECT_LE((f.curve->point(u) / s - unit.point(u)).norm(), 1e-12 * 10)
+                    << "m = " << m << ", scale " << s << ", u = " << u;
+        }
+    }
+    PointList wild(12, 2);
+    double x = 0.0;
+    for (int i = 0; i < 12; ++i) {
+        x += std::pow(10.0, i % 2 == 0 ? -6.0 : 6.0);
+        wild.row(i) << x, i % 3 == 0 ? 1.0 : -1.0;
+    }
+    const spline::HosakaSplineFit f = spline::hosaka_spline(wild, 30);
+    EXPECT_FALSE(f.outcome.ok());
+    EXPECT_FALSE(f.curve.has_value());
+    EXPECT_NE(f.outcome.message.find("order m = 30"), std::string::npos) << f.outcome.message;
 }

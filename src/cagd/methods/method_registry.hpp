@@ -82,7 +82,8 @@ struct Interpolant {
 
 /// What an interpolation gives: the outcome, the curve when ok, and what the method reported.
 struct InterpolationResult {
-    Outcome outcome;  ///< ok, or the numerical reason there is no curve (only the curvature-profile Newton fails)
+    Outcome
+        outcome;  ///< ok, or the numerical reason there is no curve (a solver's: Newton, Hosaka's order m, OpenCASCADE)
     std::optional<Interpolant> interpolant;  ///< present when outcome.ok()
     /// What the method reports besides the curve, as (quantity, value) text in the order computed:
     /// the curvature-profile Newton history (`newton_<i>_residual`, `newton_<i>_rank`), equations,

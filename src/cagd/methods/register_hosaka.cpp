@@ -45,8 +45,14 @@ InterpolationResult build_hosaka(const ValidPoints& valid, const ParameterValues
     }
     // Order m > 1 forms its lengths inside a solve of 2m unknowns per point (SparseLU): these
     // chords again are a small part of it.
+    spline::HosakaSplineFit fit = spline::hosaka_spline(valid, m, o);
+    if (!fit.outcome.ok()) {
+        InterpolationResult none;
+        none.outcome = std::move(fit.outcome);
+        return none;
+    }
     std::vector<double> lengths = chord ? chord_lengths(points, closed) : unit_lengths(points, closed);
-    return result_of(unit_span_interpolant(std::make_shared<spline::HosakaCurve>(spline::hosaka_spline(valid, m, o)),
+    return result_of(unit_span_interpolant(std::make_shared<spline::HosakaCurve>(std::move(*fit.curve)),
                                            node_count(points, closed), std::move(lengths)));
 }
 

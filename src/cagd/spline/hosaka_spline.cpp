@@ -218,7 +218,7 @@ HosakaSpline hosaka_c2_spline(const ValidPoints& points, const HosakaSplineOptio
     return hosaka_c2_spline_of(points.points(), o, points.cover(o.closed ? 3 : 2, o.closed));
 }
 
-HosakaCurve hosaka_spline(const PointList& points, int m, HosakaScale scale, bool closed) {
+HosakaSplineFit hosaka_spline(const PointList& points, int m, HosakaScale scale, bool closed) {
     HosakaSplineOptions o;
     o.scale = scale;
     o.closed = closed;
@@ -227,7 +227,7 @@ HosakaCurve hosaka_spline(const PointList& points, int m, HosakaScale scale, boo
 
 namespace {
 // hosaka_spline; `validated`: the points have passed require_valid_points(points, o.closed ? 3 : 2, …).
-HosakaCurve hosaka_spline_of(const PointList& points, int m, const HosakaSplineOptions& o, bool validated) {
+HosakaSplineFit hosaka_spline_of(const PointList& points, int m, const HosakaSplineOptions& o, bool validated) {
     const char* who = "cagd::spline::hosaka_spline";
     if (m < 1) fail_input(who, "m must be >= 1, got " + std::to_string(m));
     const bool closed = o.closed, tangent_ends = o.end == HosakaEnd::tangent && !closed;
@@ -240,10 +240,20 @@ HosakaCurve hosaka_spline_of(const PointList& points, int m, const HosakaSplineO
                 fail_input(who, "tangent ends need two finite vectors of dimension " + std::to_string(dim) +
                                     ", got one of size " + std::to_string(t->size()));
     const int segs = closed ? np : np - 1;
+    // L_i = |A_i| / λ, λ the power of 2 nearest the mean chord: the τ-derivatives are then solved in
+    // units of λ (τ = λσ), so the system's entries L^{j−k} (1 ≤ j ≤ m < k ≤ 2m) stay near 1 at any
+    // scale of the points (with L = |A_i| they underflowed from 1e±60 on: 1e60^−5 at m = 3). The
+    // curve is the same: segment rows are L^j times the σ-derivatives, |A_i|^j times the τ ones.
     std::vector<double> L(static_cast<std::size_t>(segs));
-    for (int i = 0; i < segs; ++i)
+    double mean = 0.0;
+    for (int i = 0; i < segs; ++i) {
         L[static_cast<std::size_t>(i)] =
             scale == HosakaScale::unit ? 1.0 : (points.row((i + 1) % np) - points.row(i)).norm();
+        mean += L[static_cast<std::size_t>(i)] / segs;
+    }
+    int exponent = 0;
+    if (scale == HosakaScale::chord) std::frexp(mean, &exponent);
+    for (double& l : L) l = std::ldexp(l, -exponent);
     const HosakaBasis b(m);
     // Unknown (node, j), j = 1..m: the j-th τ-derivative at the node.
     const auto unknown = [&](int node, int j) { return node * m + (j - 1); };
@@ -281,8 +291,16 @@ HosakaCurve hosaka_spline_of(const PointList& points, int m, const HosakaSplineO
     Eigen::SparseMatrix<double> M(unknowns, unknowns);
     M.setFromTriplets(trip.begin(), trip.end());
     numeric::SparseLu lu;
-    if (!lu.compute(M)) fail_input(who, "the continuity system is singular for these points");
+    if (!lu.compute(M))
+        return {{Status::no_solution, "hosaka: the continuity system of order m = " + std::to_string(m) +
+                                          " is singular in double precision for these points (chords of very different "
+                                          "lengths: a lower m may do)"},
+                std::nullopt};
     const Eigen::MatrixXd x = lu.solve(rhs);
+    if (!x.allFinite())
+        return {{Status::not_representable, "hosaka: the continuity system of order m = " + std::to_string(m) +
+                                                " overflows double precision for these points"},
+                std::nullopt};
     Eigen::MatrixXd start((m + 1) * segs, dim), end((m + 1) * segs, dim);
     for (int s = 0; s < segs; ++s) {
         const int a = s, c = (s + 1) % np;
@@ -294,16 +312,16 @@ HosakaCurve hosaka_spline_of(const PointList& points, int m, const HosakaSplineO
             end.row(s * (m + 1) + j) = std::pow(l, j) * x.row(unknown(c, j));
         }
     }
-    return HosakaCurve(m, std::move(start), std::move(end));
+    return {{}, HosakaCurve(m, std::move(start), std::move(end))};
 }
 
 }  // namespace
 
-HosakaCurve hosaka_spline(const PointList& points, int m, const HosakaSplineOptions& o) {
+HosakaSplineFit hosaka_spline(const PointList& points, int m, const HosakaSplineOptions& o) {
     return hosaka_spline_of(points, m, o, false);
 }
 
-HosakaCurve hosaka_spline(const ValidPoints& points, int m, const HosakaSplineOptions& o) {
+HosakaSplineFit hosaka_spline(const ValidPoints& points, int m, const HosakaSplineOptions& o) {
     return hosaka_spline_of(points.points(), m, o, points.cover(o.closed ? 3 : 2, o.closed));
 }
 
