@@ -42,9 +42,17 @@ Interpolant componentwise_chord_interpolant(const char* function, const PointLis
 
 template <std::size_t D>
 Interpolant catmull_rom_interpolant(const PointList& p, bool closed) {
+    // Boost refuses a first chord whose centripetal length |d|^(1/2) is below machine epsilon, an
+    // absolute bound ("the first and last point should not be the same" for points 1e-40 apart). It
+    // gets the points scaled by 4^−k, 4^k the power of 4 nearest their bounding-box diagonal (exact);
+    // the curve is the same, its parameter and slopes scaled back by √(4^k) = 2^k (exact).
+    int k = 0;
+    std::frexp((p.colwise().maxCoeff() - p.colwise().minCoeff()).norm(), &k);
+    k /= 2;
     std::vector<std::array<double, D>> points(static_cast<std::size_t>(p.rows()));
-    for (Eigen::Index k = 0; k < p.rows(); ++k)
-        for (std::size_t c = 0; c < D; ++c) points[static_cast<std::size_t>(k)][c] = p(k, static_cast<Eigen::Index>(c));
+    for (Eigen::Index r = 0; r < p.rows(); ++r)
+        for (std::size_t c = 0; c < D; ++c)
+            points[static_cast<std::size_t>(r)][c] = std::ldexp(p(r, static_cast<Eigen::Index>(c)), -2 * k);
     const boost::math::catmull_rom<std::array<double, D>> cr(std::move(points), closed, 0.5);
     // Boost's parameter_at_point(j) is its t_{j+1}: node k at t_{k+1} = 0 for k = 0; after the
     // nodes its ghost nodes' t_{n+1} (a closed curve's end), t_{n+2}.
@@ -57,15 +65,15 @@ Interpolant catmull_rom_interpolant(const PointList& p, bool closed) {
             fail_input("cagd::methods::boost_catmull_rom_interpolant",
                        "the chord from point " + std::to_string(a) + " is " +
                            full_precision((p.row(b) - p.row(a)).norm()) +
-                           " long against a centripetal parameter sum of " + full_precision(sum) +
+                           " long against a centripetal parameter sum of " + full_precision(std::ldexp(sum, k)) +
                            ": it vanishes in double precision (the points span too many orders of magnitude)");
         }
     std::vector<double> h(static_cast<std::size_t>(spans));
-    for (Eigen::Index k = 0; k < spans; ++k) h[static_cast<std::size_t>(k)] = t(k + 1) - t(k);
+    for (Eigen::Index j = 0; j < spans; ++j) h[static_cast<std::size_t>(j)] = std::ldexp(t(j + 1) - t(j), k);
     Eigen::MatrixXd slopes(n, p.cols());
-    for (Eigen::Index k = 0; k < n; ++k) {
-        const std::array<double, D> d = cr.prime(t(k));
-        for (std::size_t c = 0; c < D; ++c) slopes(k, static_cast<Eigen::Index>(c)) = d[c];
+    for (Eigen::Index j = 0; j < n; ++j) {
+        const std::array<double, D> d = cr.prime(t(j));
+        for (std::size_t c = 0; c < D; ++c) slopes(j, static_cast<Eigen::Index>(c)) = std::ldexp(d[c], k);
     }
     Eigen::MatrixXd nodes(spans + 1, p.cols());
     nodes.topRows(n) = p;
