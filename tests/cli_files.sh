@@ -244,7 +244,27 @@ expect 0 "lac3d at its degree limit under 512 MB" $?
 prlimit --as=536870912 "$cagd" interpolate --method cubic-b --in /dev/zero --out zero.csv 2> err
 expect 2 "a stream without line breaks under 512 MB" $?
 grep -q "longer than" err || fail "the line limit is not named: $(cat err)"
-rm -f ts.csv lac3d.csv
+start=$(date +%s)
+prlimit --as=536870912 "$cagd" typical-surface --n 1000 --alpha-u -1.5 --alpha-v -1.5 --angle-deg 10 --out ts.json 2> err
+expect 0 "typical-surface --n 1000 as JSON (its own net, no conversion) under 512 MB" $?
+runs=$((runs + 1))
+[ $(($(date +%s) - start)) -le 10 ] || fail "typical-surface --n 1000 --out ts.json took $(($(date +%s) - start)) s"
+"$cagd" typical-surface --n 27 --alpha-u -1.5 --alpha-v -1.5 --angle-deg 10 --out ts.step 2> err
+code=$?
+if grep -q "without it" err; then runs=$((runs + 1)); else
+    expect 2 "typical-surface --n 27 to STEP, refused before the work" $code
+    grep -q "step takes degree <= 25 (--n <= 26)" err || fail "--n 27 to STEP: $(cat err)"
+fi
+python3 -c "
+for name, row in (('b', '{s!r},0,0'), ('l', '0,{s!r},0'), ('t', '{s!r},1,0'), ('r', '1,{s!r},0')):
+    open('edge_' + name + '.csv', 'w').write(''.join(row.format(s=i / 999) + '\n' for i in range(1000)))"
+start=$(date +%s)
+"$cagd" surface --kind coons --bottom edge_b.csv --left edge_l.csv --top edge_t.csv --right edge_r.csv --out co.json 2> err
+expect 2 "a Coons surface of 1000-point edges to JSON: more patches than the limit" $?
+runs=$((runs + 1))
+[ $(($(date +%s) - start)) -le 1 ] || fail "the Coons size refusal took $(($(date +%s) - start)) s"
+grep -q "would hold 15968016 control points, more than 10000000" err || fail "Coons size: $(cat err)"
+rm -f ts.csv ts.json ts.step lac3d.csv edge_?.csv
 no_temporaries "sizes"
 
 echo "cli files: $runs checks, $fails failed"

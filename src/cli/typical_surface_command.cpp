@@ -51,6 +51,11 @@ int run_typical_surface(const TypicalSurfaceArgs& a) {
         fail_input(who, "--n " + std::to_string(a.n) + " x --grid " + std::to_string(a.grid) +
                             " exceeds 1e5 ((n grid)^2 operations: minutes); lower one");
     const exports::CurveFormat format = surface_output_format(a.format, a.out, who);
+    if (format != exports::CurveFormat::csv && a.n - 1 > exports::max_surface_degree(format))
+        fail_input(who, "--n " + std::to_string(a.n) + ": a patch of degree " + std::to_string(a.n - 1) + "; " +
+                            exports::curve_format_info(format).name +
+                            " takes degree <= " + std::to_string(exports::max_surface_degree(format)) +
+                            " (--n <= " + std::to_string(exports::max_surface_degree(format) + 1) + ")");
     OutputFile file(a.out);
     std::unique_ptr<OutputFile> net_file;
     if (!a.net_out.empty()) net_file = std::make_unique<OutputFile>(a.net_out, "--net-out");

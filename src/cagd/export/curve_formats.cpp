@@ -124,6 +124,13 @@ Outcome write_curve(std::ostream& out, CurveFormat format, const Curve& curve, c
     return {};
 }
 
+int max_surface_degree(CurveFormat format) {
+    if (format == CurveFormat::json) return kMaxSurfaceDocumentDegree;
+    if (format == CurveFormat::step) return step_max_surface_degree();
+    fail_input("cagd::exports::max_surface_degree",
+               std::string(curve_format_info(format).name) + " takes no surfaces as patches (json or step)");
+}
+
 Outcome write_surface(std::ostream& out, CurveFormat format, const SurfaceForm& form,
                       const SurfaceProvenance& provenance) {
     const char* who = "cagd::exports::write_surface";

@@ -60,6 +60,9 @@ CurveFormat curve_format_of_path(const std::string& path);
 const CurveFormatInfo& curve_format_info(CurveFormat format);
 /// Whether this library writes STEP (it was built with OpenCASCADE).
 bool step_available();
+/// The largest surface degree (in u and in v) `format` takes: json 1000 (its reader's limit), step
+/// OpenCASCADE's 25; InvalidInput for a format without surfaces, or step without OpenCASCADE.
+int max_surface_degree(CurveFormat format);
 
 /// What a written curve carries besides its shape.
 struct ExportOptions {

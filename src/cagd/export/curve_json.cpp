@@ -24,8 +24,6 @@ constexpr const char* kCurveFormat = "cagd-curve";
 constexpr int kCurveFormatVersion = 1;
 constexpr const char* kSurfaceFormat = "cagd-surface";
 constexpr int kSurfaceFormatVersion = 1;
-constexpr int kMaxSurfaceDegree = 1000;
-constexpr long long kMaxSurfaceControlPoints = 10'000'000;
 constexpr long kMaxBreaks = 100'001;  // surfaces' u_breaks and v_breaks
 constexpr std::size_t kMaxNesting = 64;
 
@@ -521,8 +519,8 @@ SurfaceDocument read_surface_json(std::istream& in, const std::string& source) {
     d.form.exact = r.boolean(r.member(j, "exact"), "exact");
     d.form.conversion_error = r.number(r.member(j, "conversion_error"), "conversion_error");
     BezierSurfacePieces& p = d.form.pieces;
-    p.degree_u = r.integer(r.member(j, "degree_u"), "degree_u", 1, kMaxSurfaceDegree);
-    p.degree_v = r.integer(r.member(j, "degree_v"), "degree_v", 1, kMaxSurfaceDegree);
+    p.degree_u = r.integer(r.member(j, "degree_u"), "degree_u", 1, kMaxSurfaceDocumentDegree);
+    p.degree_v = r.integer(r.member(j, "degree_v"), "degree_v", 1, kMaxSurfaceDocumentDegree);
     p.u_breaks = r.breaks(parser.array("u_breaks"), "u_breaks", kMaxBreaks);
     p.v_breaks = r.breaks(parser.array("v_breaks"), "v_breaks", kMaxBreaks);
     const long long cells = static_cast<long long>(p.cells_u()) * p.cells_v();

@@ -60,11 +60,12 @@ namespace cagd::exports {
 
 /// The readers' limits (see above): a 10^6-point space curve's document of cubic pieces is about
 /// 300 MB and 1.5·10^7 numbers.
-inline constexpr std::uint64_t kMaxDocumentBytes = std::uint64_t{1} << 29;  ///< 512 MiB of text
+inline constexpr std::uint64_t kMaxDocumentBytes = std::uint64_t{1} << 30;  ///< 1 GiB of text
 inline constexpr long long kMaxDocumentNumbers = 1LL << 25;                 ///< 256 MiB as doubles
 inline constexpr long long kMaxDocumentValues = 100'000;  ///< strings, booleans, … outside the arrays
 inline constexpr int kMaxDocumentDegree = 31;             ///< a curve document's pieces
 inline constexpr long kMaxDocumentPieces = 10'000'000;    ///< a curve document's pieces
+inline constexpr int kMaxSurfaceDocumentDegree = 1000;    ///< a surface document's degrees
 
 /// Parameter names and their values, as text.
 using ParameterText = std::map<std::string, std::string>;

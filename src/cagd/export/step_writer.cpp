@@ -38,6 +38,10 @@ Outcome write_step(std::ostream& out, const BSplineCurve& curve) {
                              [&](const char* path, std::string& message) { return occt.step_curve(c, path, message); });
 }
 
+int step_max_surface_degree() {
+    return cagd::detail::opencascade_plugin("cagd::exports::step_max_surface_degree").max_surface_degree;
+}
+
 Outcome write_step(std::ostream& out, const BSplineSurface& surface) {
     const char* who = "cagd::exports::write_step";
     const cagd::detail::OpenCascadePlugin& occt = cagd::detail::opencascade_plugin(who);
@@ -52,6 +56,12 @@ Outcome write_step(std::ostream& out, const BSplineSurface& surface) {
 }
 #else
 bool step_available() { return false; }
+
+int step_max_surface_degree() {
+    fail_input("cagd::exports::step_max_surface_degree",
+               "STEP needs a cagd library built with OpenCASCADE (Debian libocct-data-exchange-dev); this one was "
+               "built without it");
+}
 
 Outcome write_step(std::ostream&, const BSplineCurve&) {
     fail_input("cagd::exports::write_step",

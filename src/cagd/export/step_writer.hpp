@@ -25,5 +25,8 @@ Outcome write_step(std::ostream& out, const BSplineCurve& curve);
 /// degree above OpenCASCADE's limit (25; the typical surface of n > 26 control points per
 /// direction leaves in JSON only); Outcome not ok when OpenCASCADE rejects the surface.
 Outcome write_step(std::ostream& out, const BSplineSurface& surface);
+/// OpenCASCADE's largest B-spline surface degree (Geom_BSplineSurface::MaxDegree(), 25); InvalidInput
+/// in a library built without OpenCASCADE.
+int step_max_surface_degree();
 
 }  // namespace cagd::exports

@@ -137,6 +137,19 @@ double net_diagonal(const BezierSurfacePieces& pieces) {
     return pieces.nets.empty() ? 0.0 : (hi - lo).norm();
 }
 
+namespace {
+// Refuses patches of more than kMaxSurfaceControlPoints control points, before any is built.
+void require_size(const char* who, std::size_t u_breaks, std::size_t v_breaks, int du, int dv) {
+    const double points = static_cast<double>(u_breaks - 1) * static_cast<double>(v_breaks - 1) * (du + 1) * (dv + 1);
+    if (points > static_cast<double>(kMaxSurfaceControlPoints))
+        fail_input(who, "the surface's " + std::to_string(u_breaks - 1) + " x " + std::to_string(v_breaks - 1) +
+                            " patches of degree " + std::to_string(du) + " x " + std::to_string(dv) + " would hold " +
+                            full_precision(points) + " control points, more than " +
+                            std::to_string(kMaxSurfaceControlPoints) + ": give fewer points");
+}
+
+}  // namespace
+
 SurfaceForm to_bezier(const surface::BezierPatch& patch) {
     BezierSurfacePieces p;
     p.degree_u = patch.degree_u();
@@ -144,7 +157,12 @@ SurfaceForm to_bezier(const surface::BezierPatch& patch) {
     p.u_breaks = {0.0, 1.0};
     p.v_breaks = {0.0, 1.0};
     p.nets = {patch.net()};
-    return measured(std::move(p), [&](int, int, double s, double t) { return patch.jet_de_casteljau(s, t).s; });
+    // The patch's own net, copied: no conversion, nothing to measure (measuring compared two de
+    // Casteljau evaluations of this very net, O(n³) each: minutes at n = 1000).
+    SurfaceForm f;
+    f.pieces = std::move(p);
+    f.exact = true;
+    return f;
 }
 
 SurfaceForm to_bezier(const surface::HosakaPatch& patch) {
@@ -163,6 +181,7 @@ SurfaceForm to_bezier(const surface::HosakaPatch& patch) {
 SurfaceForm to_bezier(const surface::CartesianSurface& surface) {
     const int d = 2 * surface.m() + 1;
     const std::vector<double>&x = surface.x(), &y = surface.y();
+    require_size("cagd::exports::to_bezier", x.size(), y.size(), d, d);
     BezierSurfacePieces p;
     p.degree_u = p.degree_v = d;
     p.u_breaks = x;
@@ -208,6 +227,7 @@ SurfaceForm to_bezier(const surface::EdgeFormPatch& patch) {
     merge_edge_breaks(*e.r3, p.u_breaks);
     merge_edge_breaks(*e.r2, p.v_breaks);
     merge_edge_breaks(*e.r4, p.v_breaks);
+    require_size("cagd::exports::to_bezier", p.u_breaks.size(), p.v_breaks.size(), du, dv);
     std::vector<double> su, sv;
     const Eigen::PartialPivLU<Eigen::MatrixXd> nu(chebyshev_collocation(du, su)), nv(chebyshev_collocation(dv, sv));
     // The breaks by value: `p` moves into measured() before this is called there.

@@ -41,6 +41,11 @@
 
 namespace cagd::exports {
 
+/// The most control points a surface's patches hold (cells × (p + 1)(q + 1)): 240 MB of coordinates,
+/// built in under a minute; to_bezier refuses more before it builds any (InvalidInput naming the
+/// cells and degrees), and the surface document's reader refuses more.
+inline constexpr long long kMaxSurfaceControlPoints = 10'000'000;
+
 /// A grid of Bézier patches of one bi-degree (see above).
 struct BezierSurfacePieces {
     int degree_u = 0;              ///< p
@@ -66,7 +71,7 @@ struct SurfaceForm {
     bool exact = false;             ///< conversion_error ≤ 1e-12 of the net's diagonal
 };
 
-/// The typical surface's own net.
+/// The typical surface's own net: the patch is a Bézier patch, copied (exact, conversion_error 0).
 SurfaceForm to_bezier(const surface::BezierPatch& patch);
 /// Hosaka's tensor patch, eq (27).
 SurfaceForm to_bezier(const surface::HosakaPatch& patch);
