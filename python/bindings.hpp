@@ -112,6 +112,20 @@ inline Array real_array(const py::object& value, const char* name) {
     return Array::ensure(raw);
 }
 
+// A whole number argument in [lo, hi]: TypeError naming it when it is not an integer (a bool, a
+// float, a string), ValueError naming it and the range when it lies outside (also 2**40: never a
+// cast error).
+inline int int_argument(const py::handle& value, const char* name, int lo, int hi) {
+    if (!py::isinstance<py::int_>(value) || py::isinstance<py::bool_>(value))
+        throw py::type_error(std::string(name) + ": expected an integer, got " +
+                             py::str(py::type::of(value).attr("__name__")).cast<std::string>());
+    const py::object v = py::reinterpret_borrow<py::object>(value);
+    if (v < py::int_(lo) || v > py::int_(hi))
+        throw py::value_error(std::string(name) + " = " + py::repr(v).cast<std::string>() + " is outside [" +
+                              std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    return v.cast<int>();
+}
+
 // The parameter argument t (real_array).
 inline Array parameter_array(const py::object& t_in) { return real_array(t_in, "t"); }
 

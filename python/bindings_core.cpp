@@ -148,9 +148,20 @@ void bind_core(py::module_& m) {
                 return c.recipe;
             },
             [](const py::tuple& recipe) {
-                // Built again by the same call: the state is the call, not the pieces.
-                const py::object made = py::module_::import("cagd").attr(recipe[0])(*recipe[1], **recipe[2]);
+                // Built again by the same call: the state is the call, not the pieces. A state that is
+                // not such a call, or a call that makes no Curve, is ValueError naming what it holds.
+                const py::module_ cagd = py::module_::import("cagd");
+                if (recipe.size() != 4 || !py::isinstance<py::str>(recipe[0]) || !py::hasattr(cagd, recipe[0]) ||
+                    !py::isinstance<py::tuple>(recipe[1]) || !py::isinstance<py::dict>(recipe[2]))
+                    throw py::value_error(
+                        "state: not a cagd.Curve's pickle (a call of a cagd function, its arguments "
+                        "and the key of the curve in its result)");
+                const py::object made = cagd.attr(recipe[0])(*recipe[1], **recipe[2]);
                 const py::object curve = recipe[3].is_none() ? made : made[recipe[3]];
+                if (!py::isinstance<PyCurve>(curve))
+                    throw py::value_error("state: cagd." + recipe[0].cast<std::string>() + " made a " +
+                                          py::str(py::type::of(curve).attr("__name__")).cast<std::string>() +
+                                          ", not a cagd.Curve");
                 return curve.cast<PyCurve>();
             }));
 }

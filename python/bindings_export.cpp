@@ -4,6 +4,7 @@
 
 #include "cagd/export/bspline_form.hpp"
 #include "cagd/export/curve_formats.hpp"
+#include "cagd/export/curve_json.hpp"
 #include "cagd/export/surface_form.hpp"
 #include "cagd/methods/curve_provenance.hpp"
 
@@ -41,11 +42,19 @@ cagd::exports::BezierForm bezier_form(const PyCurve& c, std::optional<int> degre
 }
 
 // scipy's PPoly coefficients c (p + 1, K, dim), highest power first, and breaks x (K + 1) → a curve.
+// The degrees a curve leaves Python with: the curve document's (export/curve_json.hpp), at which
+// from_bspline and from_ppoly are tested to 1e-10 of the control points (tests/test_cagd.py); the
+// Taylor and power-basis forms behind them lose accuracy beyond it (1.4 at degree 60).
+constexpr int kMaxBridgeDegree = cagd::exports::kMaxDocumentDegree;
+
 PyCurve curve_from_ppoly(const py::object& c_in, const py::object& x_in) {
     const Array c = real_array(c_in, "c");
     if (c.ndim() != 3 || c.shape(2) < 2 || c.shape(2) > 3 || c.shape(0) < 1 || c.shape(1) < 1)
         throw cagd::InvalidInput("c: expected PPoly coefficients of shape (degree + 1, pieces, 2 or 3), got " +
                                  std::to_string(c.ndim()) + " dimension(s)");
+    if (c.shape(0) - 1 > kMaxBridgeDegree)
+        throw py::value_error("c: PPoly coefficients of degree " + std::to_string(c.shape(0) - 1) + "; degrees up to " +
+                              std::to_string(kMaxBridgeDegree) + " are taken");
     cagd::exports::PowerPieces w;
     w.degree = static_cast<int>(c.shape(0)) - 1;
     w.breaks = to_vector(real_array(x_in, "x"), "x");
@@ -57,12 +66,17 @@ PyCurve curve_from_ppoly(const py::object& c_in, const py::object& x_in) {
         w.coefficients.push_back(std::move(piece));
     }
     const cagd::exports::BezierPieces b = cagd::exports::bezier_pieces_from_power(w);
+    if (!b.control.allFinite())
+        throw py::value_error(
+            "x, c: the pieces' Bézier control points overflow (coefficient × width^power beyond "
+            "double: a subnormal or tiny piece width)");
     return with_recipe(wrap(std::make_shared<cagd::BSplineCurve>(cagd::exports::bezier_pieces_curve(b)), "ppoly"),
                        "_curve_from_ppoly", py::make_tuple(c, from_vector(w.breaks)));
 }
 
 // scipy's B-spline (knots t, coefficients c (n, dim) or splprep's list of dim arrays, degree k) → a curve.
-PyCurve curve_from_bspline(const py::object& t_in, const py::object& c_in, int k) {
+PyCurve curve_from_bspline(const py::object& t_in, const py::object& c_in, const py::object& k_in) {
+    const int k = int_argument(k_in, "k", 0, kMaxBridgeDegree);
     Eigen::MatrixXd control;
     if (py::isinstance<py::list>(c_in) || py::isinstance<py::tuple>(c_in)) {  // splprep: [cx, cy(, cz)]
         const py::sequence seq = c_in.cast<py::sequence>();
@@ -187,8 +201,8 @@ void bind_export(py::module_& m) {
     curve_class.def_static(
         "from_bspline",
         [](const py::object& b) {
-            return py::hasattr(b, "t") ? curve_from_bspline(b.attr("t"), b.attr("c"), b.attr("k").cast<int>())
-                                       : curve_from_bspline(b[py::int_(0)], b[py::int_(1)], b[py::int_(2)].cast<int>());
+            return py::hasattr(b, "t") ? curve_from_bspline(b.attr("t"), b.attr("c"), b.attr("k"))
+                                       : curve_from_bspline(b[py::int_(0)], b[py::int_(1)], b[py::int_(2)]);
         },
         py::arg("b"),
         "A B-spline curve of scipy's form as a cagd curve, knot for knot: a scipy.interpolate.BSpline "

@@ -578,6 +578,42 @@ def test_scipy_curves_come_in_exactly_and_ours_go_out_to_scipy():
         cagd.Curve.from_ppoly((np.zeros((4, 3)), np.arange(4.0)))
 
 
+def test_bridges_share_one_degree_limit_accurate_at_it_and_refuse_beyond():
+    """from_bspline and from_ppoly take degrees up to 31 (the curve document's limit), accurate to
+    1e-10 of the coefficients there; beyond it, and for arguments of the wrong type or range, a
+    ValueError or TypeError naming the argument, never pybind11's cast error."""
+    from scipy.interpolate import BSpline, PPoly
+    import pickle
+
+    rng = np.random.default_rng(5)
+    k = 31
+    b = BSpline(np.r_[[0.0] * (k + 1), [1.0] * (k + 1)], rng.uniform(-1, 1, (k + 1, 2)), k)
+    u = np.linspace(0, 1, 601)
+    assert np.max(np.abs(cagd.Curve.from_bspline(b)(u) - b(u))) <= 1e-10
+    c = rng.uniform(-1, 1, (k + 1, 3, 2))
+    x = np.array([0.0, 1.0, 2.0, 3.0])
+    for i in range(2):  # continuous: each piece starts where the previous ends
+        c[k, i + 1] = sum(c[m, i] * (x[i + 1] - x[i]) ** (k - m) for m in range(k + 1))
+    pp = PPoly(c, x)
+    u = np.linspace(0, 3, 601)
+    assert np.max(np.abs(cagd.Curve.from_ppoly(pp)(u) - pp(u))) <= 1e-10 * np.max(np.abs(c))
+    t = np.r_[[0.0] * 4, [1.0] * 4]
+    with pytest.raises(ValueError, match=r"k = 40 is outside \[0, 31\]"):
+        cagd.Curve.from_bspline((np.r_[[0.0] * 41, [1.0] * 41], np.zeros((41, 2)), 40))
+    with pytest.raises(ValueError, match=r"k = 1099511627776 is outside"):
+        cagd.Curve.from_bspline((t, np.zeros((4, 2)), 2**40))
+    with pytest.raises(TypeError, match="k: expected an integer, got str"):
+        cagd.Curve.from_bspline((t, np.zeros((4, 2)), "3"))
+    with pytest.raises(ValueError, match="c: PPoly coefficients of degree 1000"):
+        cagd.Curve.from_ppoly((np.zeros((1001, 1, 2)), np.array([0.0, 1.0])))
+    curve = cagd.interpolate(np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 0.0]]), "cubic-b")
+    with pytest.raises(ValueError, match="cagd.methods made a list, not a cagd.Curve"):
+        cagd.Curve.__new__(cagd.Curve).__setstate__(("methods", (), {}, None))
+    with pytest.raises(ValueError, match="not a cagd.Curve's pickle"):
+        cagd.Curve.__new__(cagd.Curve).__setstate__(("no_such_function", (), {}, None))
+    assert pickle.loads(pickle.dumps(curve))(0.5).tolist() == curve(0.5).tolist()
+
+
 def test_surfaces_equal_cpp(cpp):
     gx, gy = np.array([0.0, 1.0, 2.5, 3.0, 4.2]), np.array([0.0, 0.5, 1.5, 2.0])
     z = np.array([[math.sin(x) * math.cos(y) + 0.1 * a * b for b, y in enumerate(gy)] for a, x in enumerate(gx)])

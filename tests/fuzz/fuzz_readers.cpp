@@ -1,7 +1,8 @@
 // libFuzzer target: every reader of user input on arbitrary bytes. The first byte picks the reader
-// (a byte from 0xF0 up: the table files, 0xF0 planar and 0xF1 space, with their checksum line
-// appended by this harness so that the value checks behind it are reached; otherwise modulo 7),
-// the rest is its text:
+// (0xF0 planar and 0xF1 space table files, with their checksum line appended by this harness so
+// that the value checks behind it are reached; 0xF2 a curve document, 0xF3 a surface document
+// (export/curve_json.hpp); bytes from 0xF4 up: a table file by their last bit; below 0xF0: modulo
+// 7), the rest is its text:
 //   0 points (core/point_csv)   1 values (λ files)   2 numeric tables (curve CSV of cagd analyze)
 //   3 m-vectors (sb2_locality)  4 knot-difference lists (degree 2 or 3)   5 span-shape lists
 //   6 method parameters: the registry's typed options of a method (second byte), "name=value" lines
@@ -22,6 +23,8 @@
 #include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
 #include "cagd/core/point_csv.hpp"
+#include "cagd/export/bspline_form.hpp"
+#include "cagd/export/curve_json.hpp"
 #include "cagd/fairness/pseudo_energy_table.hpp"
 #include "cagd/fairness/space_pseudo_energy_table.hpp"
 #include "cagd/intrinsic/curvature_profile_design.hpp"
@@ -33,6 +36,28 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     using namespace cagd;
     if (size < 1) return 0;
     const std::string text(reinterpret_cast<const char*>(data + 1), size - 1);
+    if (data[0] == 0xF2 || data[0] == 0xF3) {
+        std::istringstream in(text);
+        try {
+            if (data[0] == 0xF2) {
+                const exports::CurveDocument d = exports::read_curve_json(in, "fuzz");
+                const exports::BezierPieces& p = d.form.pieces;
+                if (p.pieces() < 1 || p.degree < 1 || p.degree > exports::kMaxDocumentDegree ||
+                    p.control.rows() != static_cast<Eigen::Index>(p.pieces()) * (p.degree + 1) ||
+                    !p.control.allFinite() || exports::first_unjoined_piece(p) != 0 || !d.provenance.points.allFinite())
+                    std::abort();
+            } else {
+                const exports::SurfaceDocument d = exports::read_surface_json(in, "fuzz");
+                const exports::BezierSurfacePieces& p = d.form.pieces;
+                if (p.nets.size() != static_cast<std::size_t>(p.cells_u()) * static_cast<std::size_t>(p.cells_v()))
+                    std::abort();
+                for (const surface::ControlNet& net : p.nets)
+                    for (const Eigen::MatrixXd& c : net)
+                        if (c.rows() != p.degree_u + 1 || c.cols() != p.degree_v + 1 || !c.allFinite()) std::abort();
+            }
+        } catch (const InvalidInput&) {}
+        return 0;
+    }
     if (data[0] >= 0xF0) {  // a table file: loaded from a file of this process
         static const std::string path = "/tmp/cagd-fuzz-table-" + std::to_string(::getpid()) + ".txt";
         static const struct Remove {
