@@ -59,17 +59,32 @@
     return '#' + encodeURIComponent(JSON.stringify({ v: 1, points: s.points, closed: s.closed, shown, comb: s.comb, locality: s.locality, perSpan: s.perSpan }));
   }
 
+  // A link is refused whole, with a message naming what is wrong, when it is longer than
+  // MAX_LINK_BYTES or holds more than MAX_LINK_POINTS points (checked before it is parsed: below
+  // them the page answers within 2 s), is not a JSON object, or holds a point that is not two finite
+  // numbers (named, never dropped); the example is shown instead.
+  const MAX_LINK_POINTS = 2000, MAX_LINK_BYTES = 256 * 1024;
   function decodeState(hash) {
     if (!hash || hash.length < 2) return null;
+    const refuse = (why) => {
+      report('the link ' + why + '; the example is shown');
+      return null;
+    };
+    if (hash.length > MAX_LINK_BYTES) return refuse(`is ${hash.length} characters long, more than the ${MAX_LINK_BYTES} a link may hold (at most ${MAX_LINK_POINTS} points)`);
     let o;
     try {
       o = JSON.parse(decodeURIComponent(hash.slice(1)));
     } catch (e) {
-      report('the link\'s state is not readable JSON (' + e.message + '); the example is shown');
-      return null;
+      return refuse('is not readable JSON (' + e.message + ')');
     }
+    if (o === null || typeof o !== 'object' || Array.isArray(o))
+      return refuse('must hold a JSON object of the viewer\'s state, not ' + (o === null ? 'null' : Array.isArray(o) ? 'an array' : 'a ' + typeof o + ' (' + JSON.stringify(o).slice(0, 40) + ')'));
+    if (o.points !== undefined && !Array.isArray(o.points)) return refuse('holds "points" that are not an array');
+    const points = o.points || [];
+    if (points.length > MAX_LINK_POINTS) return refuse(`holds ${points.length} points, more than the ${MAX_LINK_POINTS} a link may hold`);
+    const bad = points.findIndex((p) => !(Array.isArray(p) && p.length === 2 && p.every((v) => typeof v === 'number' && Number.isFinite(v))));
+    if (bad >= 0) return refuse(`holds point ${bad + 1} as ${JSON.stringify(points[bad])}, not two finite numbers`);
     const known = new Set(viewer.registry.configurations.map((c) => c.name));
-    const points = Array.isArray(o.points) ? o.points.filter((p) => Array.isArray(p) && p.length === 2 && p.every(Number.isFinite)) : [];
     const shown = [];
     for (const entry of Array.isArray(o.shown) ? o.shown : []) {
       const name = Array.isArray(entry) ? entry[0] : entry;
@@ -86,10 +101,14 @@
     if (location.hash !== h) history.replaceState(null, '', h);
   }
 
+  // A message for the user: on its own line, which the frames' status does not overwrite; it
+  // stays until the user acts (a click, a key, a change of a control).
   function report(message) {
     viewer.errors.push(message);
-    $('status').textContent = message;
+    $('notice').textContent = message;
   }
+  for (const type of ['pointerdown', 'keydown', 'change'])
+    document.addEventListener(type, () => { $('notice').textContent = ''; }, { capture: true });
 
   // ---- colours: one per configuration, fixed by its place in the registry ------------------
   function colour(name, alpha) {
@@ -690,7 +709,7 @@
     const fromHash = decodeState(location.hash);
     applyState(fromHash || defaultState());
     return viewer;
-  }).catch((e) => {
+  }, (e) => {
     report('the WebAssembly module did not load: ' + e);
     throw e;
   });

@@ -286,6 +286,38 @@ test('a link with the state in its hash reopens the same curves', async () => {
   assert.deepEqual(second.curves, first.curves, 'the same curves, bit for bit');
 });
 
+test('a bad or oversized link is refused with a message that stays until the user acts', async () => {
+  const cases = [
+    ['#null', /must hold a JSON object of the viewer's state, not null/],
+    ['#42', /not a number \(42\)/],
+    ['#' + encodeURIComponent(JSON.stringify({ v: 1, points: [[0, 0], ['1', 2], [2, 0]] })), /holds point 2 as \["1",2\], not two finite numbers/],
+    ['#' + encodeURIComponent(JSON.stringify({ v: 1, points: [[0, 0], [1, null], [2, 0]] })), /holds point 2 as \[1,null\]/],
+    ['#' + encodeURIComponent('{"v":1,"points":[[0,0],[NaN,1]]}'), /is not readable JSON/],
+    ['#' + encodeURIComponent(JSON.stringify({ v: 1, points: Array.from({ length: 2001 }, (_, i) => [i, i % 7]) })), /holds 2001 points, more than the 2000/],
+    ['#' + 'x'.repeat(300 * 1024), /characters long, more than the 262144/],
+    ['#' + encodeURIComponent(JSON.stringify({ v: 1, points: [[0, 0], [1, 1], [2, 0]], shown: ['no-such-method'] })), /unknown method "no-such-method"/],
+  ];
+  for (const [hash, expected] of cases) {
+    const start = Date.now();
+    const p = await openViewer(hash);
+    const seconds = (Date.now() - start) / 1000;
+    const r = await p.evaluate(() => ({ notice: document.getElementById('notice').textContent, status: document.getElementById('status').textContent }));
+    await p.close();
+    assert.match(r.notice, expected, hash.slice(0, 60));
+    assert.doesNotMatch(r.notice, /WebAssembly module did not load/);
+    assert.ok(seconds < 10, `${hash.slice(0, 40)}: answered in ${seconds} s`);
+  }
+  // The message stays while the page draws, and goes when the user acts.
+  const p = await openViewer('#null');
+  const kept = await p.evaluate(() => { window.cagdViewer.setState({}); return document.getElementById('notice').textContent; });
+  await p.mouse.click(5, 5);
+  const after = await p.evaluate(() => document.getElementById('notice').textContent);
+  await p.close();
+  assert.match(kept, /not null/);
+  assert.equal(after, '');
+  consoleErrors.length = 0;  // the refused links' own messages are not console errors of the page
+});
+
 test('bad points are answered with a message naming them', async () => {
   const r = await page.evaluate(() => {
     const v = window.cagdViewer;
