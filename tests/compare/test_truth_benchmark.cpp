@@ -2,9 +2,7 @@
 // themselves, the samples, the errors against a second computation, the orders.
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <functional>
-#include <iterator>
 #include <map>
 #include <numeric>
 #include <string>
