@@ -766,10 +766,10 @@ TEST(Compare, CatmullRomRefusesPointsWhoseChordsVanishInItsParameters) {
 }
 
 TEST(Compare, AMethodThatRefusesThePointsIsARowAndTheOthersAreMeasured) {
-    // Four points 1e-40 apart: Boost's centripetal Catmull–Rom refuses them (its parameters
-    // coincide); the comparison must not abort for one method.
+    // A chord of 1e-20 beside chords of 1e10: its centripetal parameter step vanishes beside their
+    // sum, so boost-catmull-rom refuses the points; the comparison must not abort for one method.
     PointList p(4, 2);
-    p << 0, 0, 1e-40, 0, 2e-40, 1e-40, 3e-40, 0;
+    p << 0, 0, 1e-20, 0, 1e10, 1, 2e10, 0;
     ComparisonOptions o;
     o.methods = {"cubic-b", "hermite-a", "boost-catmull-rom"};
     const std::vector<MethodComparison> c = compare_methods(p, o);

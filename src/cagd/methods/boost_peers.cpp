@@ -62,7 +62,7 @@ Interpolant catmull_rom_interpolant(const PointList& p, bool closed) {
     for (Eigen::Index j = 0; j <= n; ++j)
         if (!(t(j + 1) - t(j) > shortest)) {
             const Eigen::Index a = j % n, b = (j + 1) % n;  // j = n − 1, n: the ghost chords
-            fail_input("cagd::methods::boost_catmull_rom_interpolant",
+            fail_input("cagd::methods(boost-catmull-rom)",
                        "the chord from point " + std::to_string(a) + " is " +
                            full_precision((p.row(b) - p.row(a)).norm()) +
                            " long against a centripetal parameter sum of " + full_precision(std::ldexp(sum, k)) +
