@@ -121,6 +121,7 @@ struct HosakaSplineFit {
     Outcome outcome;                   ///< ok, or no_solution (see above)
     std::optional<HosakaCurve> curve;  ///< the spline, when ok
 };
+/// The spline of order m through the points with the given scale, open or closed (see above).
 HosakaSplineFit hosaka_spline(const PointList& points, int m, HosakaScale scale = HosakaScale::chord,
                               bool closed = false);
 /// The spline of order m (continuous to order 2m) through the points, with the given options.
