@@ -1,13 +1,16 @@
 // libFuzzer target: every reader of user input on arbitrary bytes. The first byte picks the reader
 // (0xF0 planar and 0xF1 space table files, with their checksum line appended by this harness so
 // that the value checks behind it are reached; 0xF2 a curve document, 0xF3 a surface document
-// (export/curve_json.hpp); bytes from 0xF4 up: a table file by their last bit; below 0xF0: modulo
-// 7), the rest is its text:
+// (export/curve_json.hpp); 0xF4 benchmark parts (compare/interpolant_benchmark.hpp: parts split at
+// form feeds, the token PLAN replaced by a small plan's fingerprint and each closed by its checksum
+// line, so that the records behind them are reached); bytes from 0xF5 up: a table file by their
+// last bit; below 0xF0: modulo 7), the rest is its text:
 //   0 points (core/point_csv)   1 values (λ files)   2 numeric tables (curve CSV of cagd analyze)
 //   3 m-vectors (sb2_locality)  4 knot-difference lists (degree 2 or 3)   5 span-shape lists
 //   6 method parameters: the registry's typed options of a method (second byte), "name=value" lines
 // Contract checked: each returns (points: 1+ rows of 2 or 3 finite columns; values and tables:
-// finite numbers, rows as long as the header) or throws cagd::InvalidInput; nothing else escapes,
+// finite numbers, rows as long as the header; merged parts: as many runs as the units line, finite
+// errors) or throws cagd::InvalidInput; nothing else escapes,
 // and ASan/UBSan see no memory error or undefined behaviour. Seed corpus: tests/fuzz/corpus/readers.
 #include <cmath>
 #include <cstdint>
@@ -19,6 +22,7 @@
 
 #include <fstream>
 
+#include "cagd/compare/interpolant_benchmark.hpp"
 #include "cagd/core/checksum.hpp"
 #include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
@@ -55,6 +59,35 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                     for (const Eigen::MatrixXd& c : net)
                         if (c.rows() != p.degree_u + 1 || c.cols() != p.degree_v + 1 || !c.allFinite()) std::abort();
             }
+        } catch (const InvalidInput&) {}
+        return 0;
+    }
+    if (data[0] == 0xF4) {
+        static const compare::BenchmarkPlan plan = [] {
+            compare::BenchmarkPlan p;
+            p.truth.sizes = {6, 12};
+            p.truth.families = {"circle", "helix"};
+            p.truth.methods = {"cubic-b", "spiro"};
+            p.random.sizes = {8};
+            p.random.sets = 3;
+            p.random.methods = p.truth.methods;
+            return p;
+        }();
+        static const std::string fingerprint = compare::benchmark_plan_fingerprint(plan);
+        std::vector<std::pair<std::string, std::string>> parts;
+        std::istringstream split(text);
+        for (std::string part; std::getline(split, part, '\f');) {
+            for (std::size_t at = part.find("PLAN"); at != std::string::npos; at = part.find("PLAN", at))
+                part.replace(at, 4, fingerprint);
+            parts.emplace_back("part " + std::to_string(parts.size() + 1), part + checksum_line(part));
+        }
+        try {
+            const compare::BenchmarkResults r = compare::merge_benchmark_parts(plan, parts);
+            for (const compare::TruthRun& run : r.truth)
+                for (int e = 0; e < 5; ++e)
+                    if (!std::isfinite(compare::truth_error(run.errors, e))) std::abort();
+            for (const compare::RandomSetSummary& s : r.random)
+                if (s.sets != plan.random.sets) std::abort();
         } catch (const InvalidInput&) {}
         return 0;
     }

@@ -172,12 +172,12 @@ struct DocumentReader {
     }
     int integer(const json& j, const std::string& what, int lo, int hi) const {
         if (!j.is_number_integer()) fail(what + " must be a whole number");
-        const long long v = j.is_number_unsigned() && j.get<unsigned long long>() > 1ULL << 62
-                                ? std::numeric_limits<long long>::max()
-                                : j.get<long long>();
-        if (v < lo || v > hi)
-            fail(what + " = " + (v == std::numeric_limits<long long>::max() ? j.dump() : std::to_string(v)) +
-                 " outside [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+        // An unsigned number beyond long long's range lies outside every [lo, hi] of int.
+        const bool huge =
+            j.is_number_unsigned() && j.get<std::uint64_t>() > std::numeric_limits<std::uint64_t>::max() / 2;
+        const long long v = huge ? 0 : j.get<long long>();
+        if (huge || v < lo || v > hi)
+            fail(what + " = " + j.dump() + " outside [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
         return static_cast<int>(v);
     }
     std::string text(const json& j, const std::string& what) const {
