@@ -33,37 +33,14 @@ bool is_data_set_name(const std::string& s) {
 
 std::vector<ClassicDataSet> read_classic_data(const std::string& path) {
     const char* who = "cagd::compare::read_classic_data";
-    InputFile file(path);
+    const TextTable t = read_text_table(path, {"name", "group", "file", "closed", "source"});
     const std::filesystem::path folder = std::filesystem::path(path).parent_path();
-    std::vector<std::string> header;
-    std::map<std::string, std::size_t> column;
     std::vector<ClassicDataSet> sets;
-    std::string raw;
-    for (int line_no = 1; read_line(file.stream(), raw, file.name(), line_no); ++line_no) {
-        const std::string line = clean_csv_line(raw, line_no);
-        if (line.empty()) continue;
-        const std::string where = file.name() + ":" + std::to_string(line_no);
-        std::vector<std::string> fields = split_csv_line(line);
-        for (std::string& f : fields) {
-            const auto b = f.find_first_not_of(" \t"), e = f.find_last_not_of(" \t");
-            f = b == std::string::npos ? std::string() : f.substr(b, e - b + 1);
-        }
-        if (header.empty()) {
-            header = fields;
-            for (std::size_t i = 0; i < header.size(); ++i) column[header[i]] = i;
-            for (const char* name : {"name", "group", "file", "closed", "source"})
-                if (!column.count(name))
-                    fail_input(who, where + ": the header \"" + excerpt(line) + "\" has no column \"" + name +
-                                        "\" (needs name, group, file, closed, source)");
-            continue;
-        }
-        if (fields.size() != header.size())
-            fail_input(who, where + ": " + std::to_string(fields.size()) + " fields where the header has " +
-                                std::to_string(header.size()) + ": \"" + excerpt(line) + "\"");
+    for (std::size_t r = 0; r < t.rows.size(); ++r) {
+        const std::string where = t.where(r);
         ClassicDataSet d;
-        d.name = fields[column["name"]], d.group = fields[column["group"]], d.file = fields[column["file"]],
-        d.source = fields[column["source"]];
-        const std::string closed = fields[column["closed"]];
+        d.name = t.at(r, "name"), d.group = t.at(r, "group"), d.file = t.at(r, "file"), d.source = t.at(r, "source");
+        const std::string& closed = t.at(r, "closed");
         if (!is_data_set_name(d.name))
             fail_input(who, where + ": name \"" + excerpt(d.name) + "\" is not letters, digits, '-', '_', '.'");
         for (const ClassicDataSet& other : sets)
@@ -76,7 +53,7 @@ std::vector<ClassicDataSet> read_classic_data(const std::string& path) {
         d.points = read_points_csv((folder / d.file).string());
         sets.push_back(std::move(d));
     }
-    if (sets.empty()) fail_input(who, file.name() + ": no data set");
+    if (sets.empty()) fail_input(who, t.source + ": no data set");
     return sets;
 }
 

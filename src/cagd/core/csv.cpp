@@ -1,5 +1,6 @@
 #include "cagd/core/csv.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -196,6 +197,54 @@ NumericTable read_numeric_table(std::istream& stream, const std::string& name) {
         t.rows.push_back(std::move(row));
     }
     if (t.header.empty()) fail_input(who, name + ": empty (no header line)");
+    return t;
+}
+
+}  // namespace cagd
+
+namespace cagd {
+
+const std::string& TextTable::at(std::size_t row, const std::string& name) const {
+    for (std::size_t c = 0; c < header.size(); ++c)
+        if (header[c] == name) return rows.at(row)[c];
+    fail_input("cagd::TextTable::at", source + ": no column \"" + name + "\"");
+}
+
+std::string TextTable::where(std::size_t row) const { return source + ":" + std::to_string(lines.at(row)); }
+
+TextTable read_text_table(const std::string& path, const std::vector<std::string>& columns) {
+    const char* who = "cagd::read_text_table";
+    InputFile file(path);
+    TextTable t;
+    t.source = file.name();
+    std::string raw;
+    for (int line_no = 1; read_line(file.stream(), raw, file.name(), line_no); ++line_no) {
+        const std::string line = clean_csv_line(raw, line_no);
+        if (line.empty()) continue;
+        const std::string where = file.name() + ":" + std::to_string(line_no);
+        std::vector<std::string> fields = split_csv_line(line);
+        for (std::string& f : fields) {
+            const auto b = f.find_first_not_of(" \t"), e = f.find_last_not_of(" \t");
+            f = b == std::string::npos ? std::string() : f.substr(b, e - b + 1);
+        }
+        if (t.header.empty()) {
+            t.header = fields;
+            for (const std::string& name : columns)
+                if (std::find(t.header.begin(), t.header.end(), name) == t.header.end()) {
+                    std::string all;
+                    for (const std::string& c : columns) all += (all.empty() ? "" : ", ") + c;
+                    fail_input(who, where + ": the header \"" + excerpt(line) + "\" has no column \"" + name +
+                                        "\" (needs " + all + ")");
+                }
+            continue;
+        }
+        if (fields.size() != t.header.size())
+            fail_input(who, where + ": " + std::to_string(fields.size()) + " fields where the header has " +
+                                std::to_string(t.header.size()) + ": \"" + excerpt(line) + "\"");
+        t.rows.push_back(std::move(fields));
+        t.lines.push_back(line_no);
+    }
+    if (t.header.empty()) fail_input(who, file.name() + ": no header line");
     return t;
 }
 

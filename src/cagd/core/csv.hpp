@@ -69,4 +69,20 @@ NumericTable read_numeric_table(const std::string& path);
 /// The table in a stream; `source_name` names the source in messages.
 NumericTable read_numeric_table(std::istream& in, const std::string& source_name);
 
+/// A CSV of text records under a header of column names (a manifest: the benchmark's classic data,
+/// the peers), read by the rules above: quoted fields may hold commas, each field trimmed.
+struct TextTable {
+    std::string source;                          ///< the file's name, for messages
+    std::vector<std::string> header;             ///< the column names
+    std::vector<std::vector<std::string>> rows;  ///< the records, each as long as the header
+    std::vector<int> lines;                      ///< each record's line number
+    /// Record `row`'s field in column `name` (a column read_text_table was asked for).
+    const std::string& at(std::size_t row, const std::string& name) const;
+    /// "source:line" of record `row`, for messages.
+    std::string where(std::size_t row) const;
+};
+/// The table of the file `path`; InvalidInput naming path:line when there is no header, it lacks
+/// one of `columns`, or a record's field count differs from the header's.
+TextTable read_text_table(const std::string& path, const std::vector<std::string>& columns);
+
 }  // namespace cagd
