@@ -18,7 +18,7 @@ BENCH_ON      = -DCAGD_BUILD_BENCH=ON -DCAGD_BUILD_CLI=ON -DCAGD_BUILD_PYTHON=ON
 PYTHON_ON     = -DCAGD_BUILD_PYTHON=ON -DCAGD_BUILD_TESTS=OFF -DCAGD_BUILD_BENCH=OFF
 # make install: the library, its headers, CMake config and pkg-config file, the cagd command and
 # the Python package, into $(PREFIX), from a build of its own (no tests, experiments, benchmarks).
-INSTALL_FLAGS = -DCAGD_BUILD_TESTS=OFF -DCAGD_BUILD_EXPERIMENTS=OFF -DCAGD_BUILD_BENCH=OFF -DCAGD_BUILD_CLI=ON -DCAGD_BUILD_PYTHON=ON
+INSTALL_FLAGS = -DCAGD_BUILD_TESTS=OFF -DCAGD_BUILD_EXPERIMENTS=OFF -DCAGD_BUILD_BENCH=OFF -DCAGD_BUILD_CLI=ON -DCAGD_BUILD_PYTHON=ON -DCAGD_BUILD_PEERS=OFF
 
 # The harness, the sanitizers and the benchmarks keep their table cache (the pseudo-energy tables
 # that the library keeps in the user's cache, core/user_cache.hpp) in the build tree, never in the
@@ -57,7 +57,7 @@ test: build
 # elsewhere (NodeSource) does not search for: NODE_PATH names Debian's folder.
 WEB_BUILD ?= build-web
 CLI_ONLY  = -DCAGD_BUILD_CLI=ON -DCAGD_BUILD_TESTS=OFF -DCAGD_BUILD_EXPERIMENTS=OFF -DCAGD_BUILD_BENCH=OFF
-WEB_FLAGS = -DCAGD_BUILD_WEB=ON -DCAGD_BUILD_TESTS=OFF -DCAGD_BUILD_EXPERIMENTS=OFF -DCAGD_BUILD_CLI=OFF -DCAGD_BUILD_BENCH=OFF -DCAGD_BUILD_PYTHON=OFF
+WEB_FLAGS = -DCAGD_BUILD_WEB=ON -DCAGD_BUILD_TESTS=OFF -DCAGD_BUILD_EXPERIMENTS=OFF -DCAGD_BUILD_CLI=OFF -DCAGD_BUILD_BENCH=OFF -DCAGD_BUILD_PYTHON=OFF -DCAGD_BUILD_PEERS=OFF
 web:
 	@bash scripts/install-deps.sh web
 	@emcmake cmake -S . -B $(WEB_BUILD) $(call generator_for,$(WEB_BUILD)) $(CMAKE_FLAGS) $(WEB_FLAGS) >/dev/null
@@ -84,14 +84,14 @@ reproduce:
 	@cmake --build $(BUILD) -j$(JOBS)
 	@$(TABLE_CACHE) JOBS=$(JOBS) bash scripts/reproduce.sh $(BUILD)
 
-# The interpolant benchmark alone (make reproduce runs it too): results/benchmark/ and its figures.
+# The interpolant benchmark alone (make reproduce runs it too): results/benchmark/ and its figures;
+# the peers it runs are those installed (scripts/install-deps.sh reproduce installs them all).
 benchmark:
 	@bash scripts/install-deps.sh reproduce
 	@cmake -S . -B $(BUILD) $(call generator_for,$(BUILD)) $(CMAKE_FLAGS) $(REPRODUCE_ON) >/dev/null
-	@cmake --build $(BUILD) -j$(JOBS) --target cagd_cli
-	@mkdir -p results/timing
-	@echo "make benchmark: truths, classic data and random sets into results/benchmark/ ..."
-	@$(TABLE_CACHE) $(BUILD)/cagd benchmark --out results/benchmark --classic reference/benchmark/classic_data.csv --timing-out results/timing/benchmark_random_sets.csv --quiet
+	@cmake --build $(BUILD) -j$(JOBS) --target cagd_cli cagd_peers
+	@echo "make benchmark: truths, classic data, random sets and peers into results/benchmark/ ..."
+	@$(TABLE_CACHE) bash scripts/benchmark.sh $(BUILD)
 	@gnuplot -e "datadir='results/benchmark'" scripts/plot/benchmark_fig_convergence.gp
 
 bench:

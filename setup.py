@@ -44,7 +44,7 @@ class BuildWithCMake(build_ext):
             build_dir = Path(self.build_temp).resolve() / "cmake"
             subprocess.run(
                 ["cmake", "-S", str(ROOT), "-B", str(build_dir), "-DCMAKE_BUILD_TYPE=Release", f"-DPython_EXECUTABLE={sys.executable}",
-                 "-DCAGD_BUILD_PYTHON=ON", "-DCAGD_BUILD_TESTS=OFF", "-DCAGD_BUILD_EXPERIMENTS=OFF", "-DCAGD_BUILD_CLI=OFF", "-DCAGD_BUILD_BENCH=OFF"],
+                 "-DCAGD_BUILD_PYTHON=ON", "-DCAGD_BUILD_TESTS=OFF", "-DCAGD_BUILD_EXPERIMENTS=OFF", "-DCAGD_BUILD_CLI=OFF", "-DCAGD_BUILD_BENCH=OFF", "-DCAGD_BUILD_PEERS=OFF"],
                 check=True)
         env = dict(os.environ)
         env.setdefault("CMAKE_BUILD_PARALLEL_LEVEL", "2")

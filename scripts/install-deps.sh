@@ -7,7 +7,9 @@
 #
 #   library    build and install the C++ library and the cagd command (make install without Python)
 #   python     + the Python module (make python, make install, pip install --no-build-isolation .)
-#   reproduce  + the figures (make reproduce)
+#   reproduce  + the figures and the peers (make reproduce, make benchmark)
+#   peers      the benchmark's peers: GSL, ALGLIB, SISL, MetaPost, Asymptote, Node.js and npm (the
+#              JavaScript peers' packages come from peers/package-lock.json: scripts/benchmark.sh)
 #   test       everything below: GoogleTest, the Python tests, MPI, the API docs, the sanitizers and
 #              the benchmarks' packages (make test, make sanitize)
 #   bench      + Google Benchmark and the peers' Python (make bench)
@@ -43,6 +45,13 @@ python=(
 reproduce=(
   gnuplot-nox            # figures (pngcairo and svg terminals)
 )
+peers=(
+  libgsl-dev             # the gsl peer (peers/gsl: a program of its own, GPL)
+  libalglib-dev          # the alglib peer (peers/alglib: a program of its own, GPL)
+  libsisl-dev            # the sisl peer (peers/sisl: a program of its own, AGPL)
+  texlive-binaries texlive-metapost   # the metapost peer: mpost and its plain macros
+  asymptote              # the asymptote peer: asy
+)
 test=(
   libgtest-dev libgmock-dev        # unit tests
   doxygen python3-sphinx # the API references: no undocumented public declaration, no Sphinx warning
@@ -70,23 +79,24 @@ web=(
 )
 # Node.js and npm (puppeteer-core, the static server) may come from another source than Debian
 # (NodeSource's nodejs brings its own npm): Debian's packages only where there is no node or npm.
-if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then web+=(nodejs npm); fi
+if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then web+=(nodejs npm); peers+=(nodejs npm); fi
 
 list_only=0
 if [ "${1:-}" = "--list" ]; then list_only=1; shift; fi
 layers=("$@")
-[ ${#layers[@]} -gt 0 ] || layers=(library python reproduce test bench docs web)
+[ ${#layers[@]} -gt 0 ] || layers=(library python reproduce peers test bench docs web)
 packages=()
 for layer in "${layers[@]}"; do
   case "$layer" in
     library) packages+=("${library[@]}") ;;
     python) packages+=("${library[@]}" "${python[@]}") ;;
-    reproduce) packages+=("${library[@]}" "${reproduce[@]}") ;;
-    test) packages+=("${library[@]}" "${python[@]}" "${reproduce[@]}" "${test[@]}" "${bench[@]}") ;;  # make test's build has the benchmarks too
+    reproduce) packages+=("${library[@]}" "${reproduce[@]}" "${peers[@]}") ;;
+    peers) packages+=("${library[@]}" "${peers[@]}") ;;
+    test) packages+=("${library[@]}" "${python[@]}" "${reproduce[@]}" "${peers[@]}" "${test[@]}" "${bench[@]}") ;;  # make test's build has the benchmarks too
     bench) packages+=("${library[@]}" "${python[@]}" "${bench[@]}") ;;
     docs) packages+=("${docs[@]}") ;;
     web) packages+=("${library[@]}" "${web[@]}") ;;  # the native command makes the tests' golden files
-    *) echo "install-deps: unknown layer '$layer'; allowed: library python reproduce test bench docs web" >&2; exit 2 ;;
+    *) echo "install-deps: unknown layer '$layer'; allowed: library python reproduce peers test bench docs web" >&2; exit 2 ;;
   esac
 done
 

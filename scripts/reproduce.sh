@@ -39,15 +39,10 @@ slow="pseudo_energy__circle_length_area pseudo_energy__fine_grid pseudo_energy__
   grep -v -x -e "$first" -e "$last" -e '' $(for e in $slow; do printf -- '-e %s ' "$e"; done) "$build/experiments.txt"; } |
   xargs -P "${JOBS:-2}" -I{} bash -c 'run_one "$1"' _ {} || status=1
 run_one "$last" || status=1
-# Beyond the papers: the interpolant benchmark on data with a truth and on seeded random sets
-# (results/benchmark/; the random sets' run times in results/timing/, not compared); its figures are
+# Beyond the papers: the interpolant benchmark and the peers (results/benchmark/); its figures are
 # rendered with the remaining scripts below.
-mkdir -p results/timing
-echo "reproduce: the interpolant benchmark (truths, classic data, random sets) into results/benchmark/ ..."
-started=$SECONDS
-"$build/cagd" benchmark --out results/benchmark --classic reference/benchmark/classic_data.csv --timing-out results/timing/benchmark_random_sets.csv --quiet ||
-  { echo "reproduce: cagd benchmark failed" >&2; status=1; }
-echo "reproduce: the interpolant benchmark took $((SECONDS - started)) s"
+echo "reproduce: the interpolant benchmark (truths, classic data, random sets, peers) into results/benchmark/ ..."
+bash scripts/benchmark.sh "$build" || status=1
 # Any figure script no experiment named (style.gp and compare_panels.gp are loaded by the figure
 # scripts, not figures themselves), $JOBS gnuplot processes at a time.
 # (grep -v selects nothing when every figure was rendered: that is not a failure.)

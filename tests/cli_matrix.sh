@@ -214,6 +214,22 @@ for bad in "--sizes 2" "--sizes 6,x" "--sizes 100001" "--sizes 6,6" "--sizes 12,
 done
 : > "$dir/bench_file"
 run 2 "" benchmark --out "$dir/bench_file" --sizes 6 --families circle --methods cubic-b   # a file where a directory is expected
+# peers: the real peers (those installed here; the others are skipped) on the real claims, and
+# every bad input refused before a peer runs, leaving no --out.
+src=$(cd "$(dirname "$0")/.." && pwd)
+run 0 "" peers --peers "$src/peers" --list-markdown
+run 0 "" peers --peers "$src/peers" --identities "$src/reference/benchmark/peer_identities.csv" --classic "$src/reference/benchmark/classic_data.csv" --out "$dir/peers_good"
+[ -s "$dir/peers_good/peers.md" ] && [ -s "$dir/peers_good/peer_identities.csv" ] || fail "peers wrote no peers.md or peer_identities.csv"
+printf 'left,right,closed,ends,expected,reason\nnobody:x,cagd:cubic-b,0,0,identical,r\n' > "$dir/claims_unknown.csv"
+printf 'left,right,closed,ends,expected,reason\nd3-shape:natural,cagd:cubic-a,0,x,identical,r\n' > "$dir/claims_ends.csv"
+claims=$src/reference/benchmark/peer_identities.csv classic=$src/reference/benchmark/classic_data.csv
+for bad in "$dir/adir $claims $classic" "$src/peers $dir/good.csv $classic" "$src/peers $dir/claims_unknown.csv $classic" \
+    "$src/peers $dir/claims_ends.csv $classic" "$src/peers $dir/no_such_file $classic" "$src/peers $claims $dir/good.csv"; do
+    read -r peers identities data <<< "$bad"
+    run 2 "" peers --peers "$peers" --identities "$identities" --classic "$data" --out "$dir/peers_bad"
+    [ ! -e "$dir/peers_bad" ] || fail "peers $bad left $dir/peers_bad"
+done
+run 2 "" peers --peers "$src/peers" --identities "$src/reference/benchmark/peer_identities.csv"
 run 0 "" monotone --in "$dir/good.csv"
 for c in empty garbage nan inf columns space one_point missing; do run 2 "" monotone --in "$dir/$c.csv"; done
 run 2 "" monotone --in "$dir/good.csv" --knots other

@@ -144,7 +144,8 @@ std::vector<std::string> figure_data_files(const fs::path& root, const fs::path&
 namespace {
 
 // "Beyond the papers": the interpolant benchmark of results/benchmark/ (cagd benchmark), when run:
-// its leaderboards as the command wrote them and its convergence figures.
+// its leaderboards as the command wrote them, its convergence figures, and the peers with their
+// identity table (cagd peers).
 std::string benchmark_section(const fs::path& results) {
     const fs::path dir = results / "benchmark";
     const fs::path board = dir / "leaderboard.md";
@@ -176,6 +177,10 @@ std::string benchmark_section(const fs::path& results) {
          {"line", "circle", "ellipse", "epitrochoid", "clothoid", "log-aesthetic", "helix", "trefoil"})
         if (fs::exists(dir / (std::string("convergence_") + family + ".png")))
             s << "![" << family << "](benchmark/convergence_" << family << ".png)\n\n";
+    // The peers (cagd peers) as peers.md has them, its headings two levels down.
+    if (std::ifstream peers{dir / "peers.md"}) {
+        for (std::string line; std::getline(peers, line);) s << (line.rfind('#', 0) == 0 ? "##" : "") << line << "\n";
+    }
     return s.str();
 }
 
