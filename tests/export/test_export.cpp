@@ -15,6 +15,7 @@
 #include "cagd/export/curve_formats.hpp"
 #include "cagd/export/curve_json.hpp"
 #include "cagd/export/curve_samples.hpp"
+#include "cagd/export/step_writer.hpp"
 #include "cagd/methods/curve_provenance.hpp"
 #include "cagd/methods/method_parameter_curve.hpp"
 #include "cagd/methods/method_registry.hpp"
@@ -443,4 +444,23 @@ TEST(CurveSamples, ArcLengthSamplesAreEquallySpacedInArcLength) {
     for (std::size_t k = 0; k + 1 < ts.size(); ++k)
         EXPECT_NEAR(analysis::arc_length(c, ts[k], ts[k + 1], 8), L / 10, 1e-10 * L)
             << "between samples " << k << " and " << k + 1;
+}
+
+TEST(StepExport, ACurveBeyondTheLimitIsRefusedBeforeOpenCascadeSeesIt) {
+    // One control point over kMaxStepControlPoints: refused by count, whether or not the library
+    // has OpenCASCADE (the check comes first), naming the count and the formats that take it.
+    const long n = exports::kMaxStepControlPoints + 1;
+    std::vector<double> knots(static_cast<std::size_t>(n + 2));
+    for (std::size_t i = 0; i < knots.size(); ++i)
+        knots[i] = static_cast<double>(std::min<long>(std::max<long>(static_cast<long>(i), 1), n));
+    Eigen::MatrixXd poles(n, 2);
+    for (long i = 0; i < n; ++i) poles.row(i) << static_cast<double>(i), 0.0;
+    const BSplineCurve line(1, knots, poles);
+    std::ostringstream out;
+    const std::string message = test::invalid_input_message([&] { exports::write_step(out, line); });
+    EXPECT_NE(message.find("the curve has " + std::to_string(n) + " control points; STEP takes at most 2500000"),
+              std::string::npos)
+        << message;
+    EXPECT_NE(message.find("JSON, SVG or DXF"), std::string::npos);
+    EXPECT_TRUE(out.str().empty());
 }

@@ -31,6 +31,10 @@ Outcome step_through_file(std::ostream& out, const char* who, Write write) {
 
 Outcome write_step(std::ostream& out, const BSplineCurve& curve) {
     const char* who = "cagd::exports::write_step";
+    if (curve.control_points().rows() > kMaxStepControlPoints)
+        fail_input(who, "the curve has " + std::to_string(curve.control_points().rows()) +
+                            " control points; STEP takes at most " + std::to_string(kMaxStepControlPoints) +
+                            " (OpenCASCADE holds its whole model in memory): write JSON, SVG or DXF");
     const cagd::detail::OpenCascadePlugin& occt = cagd::detail::opencascade_plugin(who);
     const cagd::detail::OpenCascadeBSpline c{
         .degree = curve.degree(), .knots = curve.knots(), .poles = curve.control_points()};

@@ -17,8 +17,14 @@
 
 namespace cagd::exports {
 
-/// Writes the STEP file of `curve`. Outcome not ok when OpenCASCADE rejects the curve or fails to
-/// write.
+/// The most control points a curve's STEP file takes. STEPControl_Writer builds OpenCASCADE's whole
+/// model of the curve before it writes, several times the curve's own size, so the limit keeps a
+/// run at it within 3 GB of address space and a minute on 2 cores; JSON, SVG and DXF, which stream,
+/// take any curve.
+inline constexpr long kMaxStepControlPoints = 2'500'000;
+
+/// Writes the STEP file of `curve`. InvalidInput for more than kMaxStepControlPoints control points
+/// (before OpenCASCADE sees it); Outcome not ok when OpenCASCADE rejects the curve or fails to write.
 Outcome write_step(std::ostream& out, const BSplineCurve& curve);
 /// Writes the STEP file of `surface`: one face on a Geom_BSplineSurface, which the translator
 /// writes as a B_SPLINE_SURFACE_WITH_KNOTS bounded by its parameter rectangle. InvalidInput for a
