@@ -1,5 +1,10 @@
-// compare/: every method on the same points (cagd.compare, as `cagd compare`).
+// compare/: every method on the same points (cagd.compare, as `cagd compare`); a peer's curve
+// (cagd.peer_curve, as `cagd peers` runs it).
+#include <filesystem>
+
 #include "bindings.hpp"
+#include "cagd/compare/peer_curves.hpp"
+#include "cagd/export/bspline_form.hpp"
 
 namespace cagd_python {
 
@@ -66,7 +71,42 @@ py::dict comparison_dict(const std::vector<cagd::compare::MethodComparison>& row
 
 }  // namespace
 
+// The curve a peer's adapter draws through `points` (compare/peer_curves.hpp): its own exact pieces.
+PyCurve peer_curve(const Array& points, const std::string& name, bool closed, const std::string& peers,
+                   const std::string& programs) {
+    const std::size_t colon = name.find(':');
+    if (colon == std::string::npos || colon == 0 || colon + 1 == name.size())
+        throw py::value_error("name: \"" + name + "\" is not PEER:CONFIGURATION (e.g. d3-shape:natural)");
+    if (!std::filesystem::is_regular_file(std::filesystem::path(peers) / "run"))
+        throw py::value_error("peers: \"" + peers + "\" holds no launcher run (the repository's peers/ folder)");
+    const cagd::PointList p = to_matrix(points, "points");
+    const cagd::compare::PeerLauncher launcher{.run = (std::filesystem::path(peers) / "run").string(),
+                                               .programs = programs};
+    cagd::compare::PeerRun run;
+    {
+        py::gil_scoped_release release;
+        run = cagd::compare::run_peer(launcher, name.substr(0, colon),
+                                      {{.configuration = name.substr(colon + 1), .points = p, .closed = closed}});
+    }
+    if (!run.installed) throw std::runtime_error(run.reason);
+    const cagd::compare::PeerAnswer& answer = run.answers.at(0);
+    if (!answer.curve) throw NoSolution(name + ": " + answer.error);
+    cagd::BSplineCurve b = cagd::exports::bezier_pieces_curve(answer.curve->form.pieces);
+    py::array_t<double> t = from_vector(b.knots()), c = from_matrix(b.control_points());
+    const int k = b.degree();
+    return with_recipe(wrap(std::make_shared<cagd::BSplineCurve>(std::move(b)), name), "_curve_from_bspline",
+                       py::make_tuple(t, c, k));
+}
+
 void bind_compare(py::module_& m) {
+    m.def("_peer_curve", &peer_curve, py::arg("points"), py::arg("name"), py::arg("closed") = false,
+          py::arg("peers") = "peers", py::arg("programs") = "build/peers",
+          "The curve another library draws through `points`, run as its users run it by its adapter under the "
+          "repository's peers/ folder (docs/peers.md): `name` is PEER:CONFIGURATION (d3-shape:natural, "
+          "gsl:cspline, metapost:hobby, …; `cagd peers --peers peers --list-markdown` lists them), `programs` "
+          "where CMake built the C and C++ adapters. The curve is the peer's own exact pieces (a pickle keeps "
+          "them). ValueError for a name or folder that is not one; RuntimeError when the peer is not installed "
+          "here; cagd.NoSolution when the peer refuses the points or fails on them, with its message.");
     m.def(
         "_compare",
         [](const Array& points, bool closed, const std::vector<std::string>& methods, bool locality, int threads) {

@@ -102,7 +102,7 @@ from . import _cagd
 
 __all__ = [
     "__version__", "Curve", "ExplicitSpline", "Interpolation", "NoSolution", "PseudoEnergyTable",
-    "methods", "interpolate", "interpolate_result", "compare",
+    "methods", "interpolate", "interpolate_result", "compare", "peer_curve",
     "pseudo_energy", "segment_measures",
     "log_aesthetic_curve", "normalized_log_aesthetic_curve", "log_aesthetic_space_curve",
     "typical_curve", "space_typical_curve",
@@ -231,3 +231,27 @@ def compare(points: _npt.ArrayLike, closed: bool = False, methods: Union[None, s
         else:
             out[name] = value
     return out
+
+
+def peer_curve(points: _npt.ArrayLike, name: str, closed: bool = False, peers: str = "peers",
+               programs: str = "build/peers") -> Curve:
+    """The curve another library draws through `points`, run as its users run it by its adapter
+    under the repository's peers/ folder (docs/peers.md), as `cagd peers` runs it: `name` is
+    PEER:CONFIGURATION ("d3-shape:natural", "gsl:cspline", "metapost:hobby"; docs/methods.md lists
+    them), `programs` the folder where CMake built the C and C++ adapters. The curve is the peer's
+    own exact pieces, and every measure of cagd applies to it.
+
+    ValueError for a name or a folder that is not one; RuntimeError when the peer is not installed
+    here (the message says what is missing); cagd.NoSolution when the peer refuses the points or
+    fails on them, with its message.
+
+    From the repository's top, with the peers installed (make benchmark installs them), GSL's
+    natural spline over chord length is cubic-b's curve to rounding:
+
+    >>> p = np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 0.0], [3.0, 1.0]])
+    >>> gsl = cagd.peer_curve(p, "gsl:cspline")  # doctest: +SKIP
+    >>> t = np.linspace(0.0, 4.2, 9)
+    >>> bool(np.abs(gsl(t) - cagd.interpolate(p, "cubic-b")(t)).max() < 1e-14)  # doctest: +SKIP
+    True
+    """
+    return _cagd._peer_curve(_points(points), name, _flag(closed, "closed"), peers, programs)

@@ -9,6 +9,7 @@ import csv
 import io
 import math
 import os
+import pickle
 import subprocess
 import sys
 
@@ -772,3 +773,29 @@ def test_torsion_is_nan_where_undefined_at_natural_ends():
     tau = c.torsion(np.array([a, 0.5 * (a + b), b]))
     assert math.isnan(tau[0]) and math.isnan(tau[2]), tau
     assert abs(tau[1] - 0.3 / 1.09) < 0.05, tau
+
+
+def test_peer_curve_runs_an_adapter_and_names_every_failure():
+    # The launcher of tests/data/peers (a shell script speaking the peer protocol): "echoer" draws
+    # the polygon through the points, refuses configuration "refuse"; "absent" is not installed.
+    peers = os.path.join(ROOT, "tests", "data", "peers")
+    p = np.array([[0.0, 0.0], [1.0, 2.0], [3.0, 1.0]])
+    c = cagd.peer_curve(p, "echoer:a", peers=peers)
+    assert c.parameter_range == (0.0, 2.0)
+    assert np.array_equal(c(np.array([0.0, 1.0, 2.0])), p)
+    assert np.allclose(c(0.5), [0.5, 1.0], rtol=0, atol=1e-15)
+    closed = cagd.peer_curve(p, "echoer:a", closed=True, peers=peers)
+    assert closed.parameter_range == (0.0, 3.0) and np.array_equal(closed(3.0), p[0])
+    assert np.array_equal(pickle.loads(pickle.dumps(c))(0.5), c(0.5))
+    with pytest.raises(cagd.NoSolution, match="echoer:refuse: refused by the test peer"):
+        cagd.peer_curve(p, "echoer:refuse", peers=peers)
+    with pytest.raises(RuntimeError, match="absent: not installed here"):
+        cagd.peer_curve(p, "absent:a", peers=peers)
+    with pytest.raises(ValueError, match="name: \"echoer\" is not PEER:CONFIGURATION"):
+        cagd.peer_curve(p, "echoer", peers=peers)
+    with pytest.raises(ValueError, match="peers: "):
+        cagd.peer_curve(p, "echoer:a", peers=os.path.join(ROOT, "tests"))
+    with pytest.raises(ValueError, match="no peer"):
+        cagd.peer_curve(p, "nobody:a", peers=os.path.join(ROOT, "peers"))
+    with pytest.raises(TypeError, match="closed"):
+        cagd.peer_curve(p, "echoer:a", closed="yes", peers=peers)

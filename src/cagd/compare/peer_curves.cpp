@@ -12,7 +12,8 @@ namespace cagd::compare {
 
 namespace {
 
-// The exit status of peers/run for a peer that is not installed here.
+// The exit statuses of peers/run for a name that is no peer's, and for a peer not installed here.
+constexpr int kNoSuchPeer = 2;
 constexpr int kNotInstalled = 3;
 
 // The last line of a program's standard error (its reason), at most one line.
@@ -88,6 +89,8 @@ PeerRun run_peer(const PeerLauncher& launcher, const std::string& peer, const st
     const std::vector<std::pair<std::string, std::string>> environment{{"CAGD_PEER_PROGRAMS", launcher.programs}};
     PeerRun run;
     const ProgramRun version = run_program({launcher.run, peer, "--version"}, "", environment, 60.0);
+    if (version.started && version.exit_status == kNoSuchPeer)
+        fail_input("cagd::compare::run_peer", last_line(version.error));
     if (!version.succeeded()) {
         run.reason = version.started && version.exit_status == kNotInstalled
                          ? last_line(version.error)

@@ -69,9 +69,9 @@ struct PeerRun {
 
 /// The request lines of `requests` (see above).
 std::string peer_request_text(const std::vector<PeerRequest>& requests);
-/// Runs `peer` on `requests` in one process of its adapter (see above). A peer that is not
-/// installed is skipped; a run that ends badly (a crash, a time-out, fewer answers than requests)
-/// answers every request with that failure, named as the peer's.
+/// Runs `peer` on `requests` in one process of its adapter (see above). InvalidInput when the
+/// launcher knows no such peer (its exit status 2); a peer that is not installed is skipped; a run that ends badly (a
+/// crash, a time-out, fewer answers than requests) answers every request with that failure, named as the peer's.
 PeerRun run_peer(const PeerLauncher& launcher, const std::string& peer, const std::vector<PeerRequest>& requests);
 
 }  // namespace cagd::compare
