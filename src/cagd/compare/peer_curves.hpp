@@ -1,8 +1,8 @@
 #pragma once
 /// @file
-/// The benchmark's peers: other libraries' interpolants (d3-shape, paper.js, three.js, MetaPost,
-/// Asymptote, GSL, ALGLIB, SISL, libspiro), each run as its users run it by an adapter of its own under
-/// peers/PEER/, launched by peers/run, never linked (GSL, ALGLIB and libspiro are GPL, SISL AGPL).
+/// The benchmark's peers: other libraries' interpolants (peers/peers.csv lists them), each run as
+/// its users run it by an adapter of its own under peers/PEER/, launched by peers/run, never
+/// linked (several are GPL or AGPL, some JavaScript).
 ///
 /// The protocol (docs/peers.md). `peers/run PEER --version` prints the peer's name and version, or
 /// exits 3 with the reason on standard error when the peer is not installed. `peers/run PEER` reads
