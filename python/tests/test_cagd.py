@@ -799,3 +799,5 @@ def test_peer_curve_runs_an_adapter_and_names_every_failure():
         cagd.peer_curve(p, "nobody:a", peers=os.path.join(ROOT, "peers"))
     with pytest.raises(TypeError, match="closed"):
         cagd.peer_curve(p, "echoer:a", closed="yes", peers=peers)
+    with pytest.raises(ValueError, match="is not a name"):
+        cagd.peer_curve(p, "echoer:two words", peers=peers)

@@ -93,6 +93,16 @@ TEST(PeerCurves, RequestsAreWrittenAtFullPrecision) {
               "1.0000000000000001e+300\n");
 }
 
+TEST(PeerCurves, AConfigurationThatWouldBreakItsLineIsRefused) {
+    const PointList p = data_set("x", false).points;
+    for (const std::string bad : {"", "two words", "line\nbreak"})
+        EXPECT_NE(test::invalid_input_message([&] {
+                      peer_request_text({{.configuration = bad, .points = p}});
+                  }).find("is not a name (no blanks)"),
+                  std::string::npos)
+            << bad;
+}
+
 TEST(PeerIdentity, TheDifferenceLiesBetweenItsSampleAndItsBound) {
     // Two cubic pieces; the second curve's middle control points moved by (0, 3) and (0, −3): the
     // difference is 3 (B1 − B2)(w), whose largest value 3·(2/3)(1/3)·… lies below the bound 3.
@@ -108,10 +118,10 @@ TEST(PeerIdentity, TheDifferenceLiesBetweenItsSampleAndItsBound) {
     EXPECT_EQ(d.compared, 2);
     EXPECT_EQ(d.over, 1);
     EXPECT_EQ(d.farthest, 0);  // the last piece: at an end
-    // Left out as an end piece: nothing differs.
-    const PieceDifference inner = piecewise_difference(pieces(3, a), pieces(3, b), 2.0, 1);
-    EXPECT_EQ(inner.compared, 0);
-    EXPECT_EQ(inner.bound, 0.0);
+    // With both pieces left out as end pieces nothing is compared, and the pair is not comparable
+    // (never a vacuous "identical").
+    EXPECT_EQ(piecewise_difference(pieces(3, a), pieces(3, b), 2.0, 1).incomparable,
+              "2 pieces: none between the 1 left out at each end");
     // A line as degree 1 and raised to degree 3 is the same curve.
     Eigen::MatrixXd line(2, 2), cubic(4, 2);
     line << 0, 0, 3, 3;

@@ -16,13 +16,6 @@ namespace {
 constexpr int kNoSuchPeer = 2;
 constexpr int kNotInstalled = 3;
 
-// The last line of a program's standard error (its reason), at most one line.
-std::string last_line(std::string text) {
-    while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
-    const std::size_t at = text.rfind('\n');
-    return at == std::string::npos ? text : text.substr(at + 1);
-}
-
 }  // namespace
 
 std::vector<PeerConfiguration> read_peer_manifest(const std::string& path) {
@@ -72,6 +65,9 @@ std::string peer_request_text(const std::vector<PeerRequest>& requests) {
     std::string text;
     char number[32];
     for (const PeerRequest& r : requests) {
+        if (r.configuration.empty() || r.configuration.find_first_of(" \t\r\n") != std::string::npos)
+            fail_input("cagd::compare::peer_request_text",
+                       "configuration \"" + excerpt(r.configuration) + "\" is not a name (no blanks)");
         text += "curve " + r.configuration + (r.closed ? " closed " : " open ") + std::to_string(r.points.rows()) +
                 " " + std::to_string(r.points.cols()) + "\n";
         for (Eigen::Index i = 0; i < r.points.rows(); ++i) {
@@ -92,7 +88,7 @@ PeerRun run_peer(const PeerLauncher& launcher, const std::string& peer, const st
     if (version.started && version.exit_status == kNoSuchPeer)
         fail_input("cagd::compare::run_peer", last_line(version.error));
     if (!version.succeeded()) {
-        run.reason = version.started && version.exit_status == kNotInstalled
+        run.reason = version.started && version.exit_status == kNotInstalled && !last_line(version.error).empty()
                          ? last_line(version.error)
                          : peer + ": peers/run " + peer + " --version: " + version.describe();
         return run;

@@ -67,7 +67,8 @@ struct PeerRun {
     std::vector<PeerAnswer> answers;  ///< one per request (all with `reason` as error when the run failed)
 };
 
-/// The request lines of `requests` (see above).
+/// The request lines of `requests` (see above); InvalidInput for a configuration that is empty or
+/// holds blanks (it would break its line).
 std::string peer_request_text(const std::vector<PeerRequest>& requests);
 /// Runs `peer` on `requests` in one process of its adapter (see above). InvalidInput when the
 /// launcher knows no such peer (its exit status 2); a peer that is not installed is skipped; a run that ends badly (a

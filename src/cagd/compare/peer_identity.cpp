@@ -58,6 +58,12 @@ PieceDifference piecewise_difference(const exports::BezierPieces& a, const expor
     }
     if (!(scale > 0))
         fail_input("cagd::compare::piecewise_difference", "scale " + std::to_string(scale) + " is not > 0");
+    if (ends < 0) fail_input("cagd::compare::piecewise_difference", "ends = " + std::to_string(ends) + " is negative");
+    if (a.pieces() <= 2 * ends) {
+        out.incomparable =
+            std::to_string(a.pieces()) + " pieces: none between the " + std::to_string(ends) + " left out at each end";
+        return out;
+    }
     const int degree = std::max(a.degree, b.degree);
     const exports::BezierPieces ea = a.degree < degree ? exports::elevate_degree(a, degree) : a;
     const exports::BezierPieces eb = b.degree < degree ? exports::elevate_degree(b, degree) : b;
@@ -157,6 +163,8 @@ IdentityResults measure_identities(const std::vector<IdentityClaim>& claims, con
             const PeerAnswer& answer = run.answers[p.request[s]];
             if (!answer.curve)
                 m.failure = label + answer.error;
+            else if (!answer.curve->form.exact)
+                m.failure = label + "the peer gives samples, not its pieces";
             else if (const PointList& echoed = answer.curve->provenance.points;
                      echoed.rows() != p.set->points.rows() || echoed.cols() != p.set->points.cols() ||
                      echoed != p.set->points || answer.curve->provenance.closed != p.set->closed)

@@ -11,7 +11,8 @@
 ///   max_k |D_k|  ≥  sup_w |a_i(w) − b_i(w)|  ≥  max_{j = 0..64} |Σ_k B_k(j/64) D_k|,
 /// and the supremum over the curve lies between the sampled value and the bound. Both are divided by
 /// the diagonal of the points' bounding box. Curves of different piece counts are not comparable
-/// this way, and the row says so. Where they differ is counted too: the pieces whose bound exceeds
+/// this way, nor an open curve with no piece between the ones left out at its ends, nor a peer's
+/// samples; the row says so. Where they differ is counted too: the pieces whose bound exceeds
 /// kIdentityTolerance, and how far the farthest of them lies from the nearest end (open) or from the
 /// seam (closed), in pieces: 0 for the end pieces themselves.
 ///

@@ -41,16 +41,19 @@ struct Pipe {
 
 }  // namespace
 
+std::string last_line(std::string text) {
+    while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
+    const std::size_t line = text.rfind('\n');
+    return line == std::string::npos ? text : text.substr(line + 1);
+}
+
 std::string ProgramRun::describe() const {
-    std::string what = !started      ? "could not be started"
-                       : timed_out   ? "timed out"
-                       : too_much    ? "wrote more than its output limit"
-                       : signal != 0 ? "killed by signal " + std::to_string(signal)
-                                     : "exit status " + std::to_string(exit_status);
-    std::string last = error;
-    while (!last.empty() && (last.back() == '\n' || last.back() == '\r')) last.pop_back();
-    const std::size_t line = last.rfind('\n');
-    if (line != std::string::npos) last = last.substr(line + 1);
+    const std::string what = !started      ? "could not be started"
+                             : timed_out   ? "timed out"
+                             : too_much    ? "wrote more than its output limit"
+                             : signal != 0 ? "killed by signal " + std::to_string(signal)
+                                           : "exit status " + std::to_string(exit_status);
+    const std::string last = last_line(error);
     return last.empty() ? what : what + ": " + last;
 }
 

@@ -31,6 +31,9 @@ struct ProgramRun {
     std::string describe() const;
 };
 
+/// The last line of `text` without its line break: a program's reason on its standard error.
+std::string last_line(std::string text);
+
 /// Runs `argv` (see above) with `input` on its standard input.
 ProgramRun run_program(const std::vector<std::string>& argv, const std::string& input,
                        const std::vector<std::pair<std::string, std::string>>& environment = {}, double seconds = 600.0,
