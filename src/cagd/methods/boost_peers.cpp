@@ -44,7 +44,7 @@ template <std::size_t D>
 Interpolant catmull_rom_interpolant(const PointList& p, bool closed) {
     // Boost refuses a first chord whose centripetal length |d|^(1/2) is below machine epsilon, an
     // absolute bound ("the first and last point should not be the same" for points 1e-40 apart). It
-    // gets the points scaled by 4^−k, 4^k the power of 4 nearest their bounding-box diagonal (exact);
+    // gets the points scaled by 4^−k, k = e/2 rounded toward 0 for their box diagonal in [2^(e−1), 2^e);
     // the curve is the same, its parameter and slopes scaled back by √(4^k) = 2^k (exact).
     int k = 0;
     std::frexp((p.colwise().maxCoeff() - p.colwise().minCoeff()).norm(), &k);

@@ -240,7 +240,7 @@ HosakaSplineFit hosaka_spline_of(const PointList& points, int m, const HosakaSpl
                 fail_input(who, "tangent ends need two finite vectors of dimension " + std::to_string(dim) +
                                     ", got one of size " + std::to_string(t->size()));
     const int segs = closed ? np : np - 1;
-    // L_i = |A_i| / λ, λ the power of 2 nearest the mean chord: the τ-derivatives are then solved in
+    // L_i = |A_i| / λ, λ = 2^e with the mean chord in [λ/2, λ): the τ-derivatives are then solved in
     // units of λ (τ = λσ), so the system's entries L^{j−k} (1 ≤ j ≤ m < k ≤ 2m) stay near 1 at any
     // scale of the points (with L = |A_i| they underflowed from 1e±60 on: 1e60^−5 at m = 3). The
     // curve is the same: segment rows are L^j times the σ-derivatives, |A_i|^j times the τ ones.

@@ -109,7 +109,7 @@ HosakaSpline hosaka_c2_spline(const ValidPoints& points, const HosakaSplineOptio
 /// segment's own parameter t (as B_1, C_n of eq 20), and the natural conditions keep orders m+1..2m−1
 /// zero — the end conditions of the variational problem min ∫ |R^{(m+1)}(τ)|² dτ with R' clamped (for
 /// m = 1: hosaka_c2_spline's tangent ends, tested).
-/// The τ-derivatives are solved in units of λ, the power of 2 nearest the mean chord (τ = λσ): the
+/// The τ-derivatives are solved in units of λ = 2^e, the mean chord in [λ/2, λ) (τ = λσ): the
 /// system's entries (chord/λ)^{j−k}, 1 ≤ j ≤ m < k ≤ 2m, stay near 1 at any scale of the points
 /// (tested from 1e-150 to 1e150). Accuracy: m ≤ 3 gives the same curve at every scale to rounding;
 /// the system grows ill-conditioned with m (at m = 6 two scales of Newbery–Garrett's points give
