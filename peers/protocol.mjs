@@ -71,22 +71,46 @@ export function document(peer, request, pieces, { parameter = "uniform (span ind
 }
 
 // Runs an adapter: `answer(request)` returns a document line or throws; its message is the error.
-export function serve(peer, answer) {
+// An adapter whose program starts slowly (MetaPost, Asymptote) also gives `answerAll(requests)`,
+// which draws every request in one run and returns their lines in order; when that run fails, each
+// request is drawn alone by `answer`, so that a request the program rejects fails alone.
+export function serve(peer, answer, answerAll) {
   if (process.argv.includes("--version")) {
     process.stdout.write(`${peer.name} ${peer.version}\n`);
     return;
   }
-  const out = [];
-  for (const request of readRequests(readFileSync(0, "utf8"))) {
+  const requests = readRequests(readFileSync(0, "utf8"));
+  const known = (request) => {
+    if (!peer.configurations.includes(request.configuration))
+      throw new Error(`unknown configuration "${request.configuration}"; ${peer.name} has ${peer.configurations.join(", ")}`);
+  };
+  const alone = (request) => {
     try {
-      if (!peer.configurations.includes(request.configuration))
-        throw new Error(`unknown configuration "${request.configuration}"; ${peer.name} has ${peer.configurations.join(", ")}`);
-      out.push(answer(request));
+      known(request);
+      return answer(request);
     } catch (e) {
-      out.push(JSON.stringify({ error: String(e.message ?? e) }));
+      return JSON.stringify({ error: String(e.message ?? e) });
+    }
+  };
+  let out = null;
+  if (answerAll && requests.length > 1) {
+    try {
+      requests.forEach(known);
+      out = answerAll(requests);
+      if (out.length !== requests.length) throw new Error(`${out.length} answers to ${requests.length} requests`);
+    } catch {
+      out = null;
     }
   }
+  out ??= requests.map(alone);
   process.stdout.write(out.join("\n") + (out.length ? "\n" : ""));
+}
+
+// Splits the text a batch program wrote into its paths: each path's lines follow a line "path".
+export function pathsOfBatch(text, count) {
+  const parts = text.split(/^path$/m).slice(1);
+  if (parts.length !== count) throw new Error(`the program wrote ${parts.length} paths of ${count}`);
+  return parts;
 }
 
 // The version of an installed npm package of peers/.
