@@ -28,7 +28,7 @@ INSTALL_FLAGS = -DCAGD_BUILD_TESTS=OFF -DCAGD_BUILD_EXPERIMENTS=OFF -DCAGD_BUILD
 # ~/.cache/ccache), so that compiled objects are reused across clones.
 TABLE_CACHE = CCACHE_DIR="$${CCACHE_DIR:-$${XDG_CACHE_HOME:-$$HOME/.cache}/ccache}" XDG_CACHE_HOME=$(abspath $(BUILD))/cache/user
 
-.PHONY: all deps configure build test reproduce benchmark bench python install sanitize docs clean web web-serve test-web
+.PHONY: all deps configure build test reproduce benchmark scorecard bench python install sanitize docs clean web web-serve test-web
 
 all: build
 
@@ -84,15 +84,29 @@ reproduce:
 	@cmake --build $(BUILD) -j$(JOBS)
 	@$(TABLE_CACHE) JOBS=$(JOBS) bash scripts/reproduce.sh $(BUILD)
 
-# The interpolant benchmark alone (make reproduce runs it too): results/benchmark/ and its figures;
+# What the benchmark and the scorecard run: the command and the peers' programs, with their packages.
+define benchmark_build
+@bash scripts/install-deps.sh reproduce
+@cmake -S . -B $(BUILD) $(call generator_for,$(BUILD)) $(CMAKE_FLAGS) $(REPRODUCE_ON) >/dev/null
+@cmake --build $(BUILD) -j$(JOBS) --target cagd_cli cagd_peers
+endef
+
+# The interpolant benchmark alone (make reproduce runs it too, without the scorecard): results/benchmark/ and its figures;
 # the peers it runs are those installed (scripts/install-deps.sh reproduce installs them all).
 benchmark:
-	@bash scripts/install-deps.sh reproduce
-	@cmake -S . -B $(BUILD) $(call generator_for,$(BUILD)) $(CMAKE_FLAGS) $(REPRODUCE_ON) >/dev/null
-	@cmake --build $(BUILD) -j$(JOBS) --target cagd_cli cagd_peers
+	$(benchmark_build)
 	@echo "make benchmark: truths, classic data, random sets and peers into results/benchmark/ ..."
-	@$(TABLE_CACHE) bash scripts/benchmark.sh $(BUILD)
+	@$(TABLE_CACHE) bash scripts/benchmark.sh $(BUILD) all
 	@gnuplot -e "datadir='results/benchmark'" scripts/plot/benchmark_fig_convergence.gp
+	@gnuplot -e "datadir='results/benchmark'" scripts/plot/benchmark_fig_scorecard.gp
+
+# The scorecard alone (make benchmark runs it too; make reproduce does not: about half an hour on two
+# cores): Levien's properties for every method and peer, results/benchmark/scorecard.* and its figure.
+scorecard:
+	$(benchmark_build)
+	@echo "make scorecard: every method and peer on 10^4 random polygons into results/benchmark/ ..."
+	@$(TABLE_CACHE) bash scripts/benchmark.sh $(BUILD) scorecard
+	@gnuplot -e "datadir='results/benchmark'" scripts/plot/benchmark_fig_scorecard.gp
 
 bench:
 	@bash scripts/install-deps.sh bench

@@ -218,8 +218,10 @@ run 2 "" benchmark --out "$dir/bench_file" --sizes 6 --families circle --methods
 # every bad input refused before a peer runs, leaving no --out.
 src=$(cd "$(dirname "$0")/.." && pwd)
 run 0 "" peers --peers "$src/peers" --list-markdown
-run 0 "" peers --peers "$src/peers" --identities "$src/reference/benchmark/peer_identities.csv" --classic "$src/reference/benchmark/classic_data.csv" --out "$dir/peers_good"
-[ -s "$dir/peers_good/peers.md" ] && [ -s "$dir/peers_good/peer_identities.csv" ] || fail "peers wrote no peers.md or peer_identities.csv"
+run 0 "" peers --peers "$src/peers" --identities "$src/reference/benchmark/peer_identities.csv" --classic "$src/reference/benchmark/classic_data.csv" --out "$dir/peers_good" --truth-sizes 6,12
+[ -s "$dir/peers_good/peers.md" ] && [ -s "$dir/peers_good/peer_identities.csv" ] && [ -s "$dir/peers_good/peer_truth_runs.csv" ] ||
+    fail "peers wrote no peers.md, peer_identities.csv or peer_truth_runs.csv"
+run 2 "" peers --peers "$src/peers" --identities "$src/reference/benchmark/peer_identities.csv" --classic "$src/reference/benchmark/classic_data.csv" --out "$dir/peers_bad" --truth-sizes 12,6
 printf 'left,right,closed,ends,expected,reason\nnobody:x,cagd:cubic-b,0,0,identical,r\n' > "$dir/claims_unknown.csv"
 printf 'left,right,closed,ends,expected,reason\nd3-shape:natural,cagd:cubic-a,0,x,identical,r\n' > "$dir/claims_ends.csv"
 claims=$src/reference/benchmark/peer_identities.csv classic=$src/reference/benchmark/classic_data.csv
@@ -230,6 +232,19 @@ for bad in "$dir/adir $claims $classic" "$src/peers $dir/good.csv $classic" "$sr
     [ ! -e "$dir/peers_bad" ] || fail "peers $bad left $dir/peers_bad"
 done
 run 2 "" peers --peers "$src/peers" --identities "$src/reference/benchmark/peer_identities.csv"
+# scorecard: a few methods and a peer (skipped where it is not installed) on a few polygons, and
+# bad input refused before any work, leaving no --out.
+run 0 "" scorecard --out "$dir/score_good" --polygons 20 --only cubic-b,s-spline-m1,d3-shape:natural --peers "$src/peers" --classic "$classic"
+for f in scorecard.md scorecard.csv scorecard_classic.csv scorecard_locality.dat; do
+    [ -s "$dir/score_good/$f" ] || fail "scorecard wrote no $f"
+done
+grep -q '^| s-spline-m1 |' "$dir/score_good/scorecard.md" || fail "scorecard.md has no row for s-spline-m1"
+for bad in "--polygons 0" "--polygons 1000001" "--only nosuch" "--threads -1" "--peers $dir/adir" "--classic $dir/no_such_file"; do
+    # shellcheck disable=SC2086
+    run 2 "" scorecard --out "$dir/score_bad" --only cubic-b $bad
+    [ ! -e "$dir/score_bad" ] || fail "scorecard $bad left $dir/score_bad"
+done
+run 2 "" scorecard --polygons 5
 run 0 "" monotone --in "$dir/good.csv"
 for c in empty garbage nan inf columns space one_point missing; do run 2 "" monotone --in "$dir/$c.csv"; done
 run 2 "" monotone --in "$dir/good.csv" --knots other

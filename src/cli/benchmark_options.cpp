@@ -1,5 +1,7 @@
 #include "cli/benchmark_options.hpp"
 
+#include <cstdlib>
+#include <filesystem>
 #include <sstream>
 
 #include "cagd/core/errors.hpp"
@@ -86,6 +88,29 @@ void stage_benchmark_files(OutputDirectory& out, const std::vector<std::pair<std
         f.stream() << content;
         f.commit();
     }
+}
+
+std::vector<compare::PeerConfiguration> peer_manifest(const std::string& peers) {
+    const std::filesystem::path folder(peers);
+    if (!std::filesystem::is_regular_file(folder / "run"))
+        fail_input("--peers", peers + ": no launcher " + (folder / "run").string());
+    return compare::read_peer_manifest((folder / "peers.csv").string());
+}
+
+compare::PeerLauncher peer_launcher(const std::string& peers, const std::string& programs) {
+    std::string folder = programs;
+    if (folder.empty() && std::getenv("CAGD_PEER_PROGRAMS")) folder = std::getenv("CAGD_PEER_PROGRAMS");
+    if (folder.empty()) {
+        std::error_code ec;
+        folder = (std::filesystem::read_symlink("/proc/self/exe", ec).parent_path() / "peers").string();
+    }
+    return {.run = std::filesystem::absolute(std::filesystem::path(peers) / "run").string(), .programs = folder};
+}
+
+void add_peer_programs_option(CLI::App* c, std::string& programs) {
+    c->add_option("--programs", programs,
+                  "where the adapter programs were built (absent: $CAGD_PEER_PROGRAMS, else peers/ beside this "
+                  "executable)");
 }
 
 }  // namespace cagd::cli

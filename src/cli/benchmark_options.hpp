@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cagd/compare/interpolant_benchmark.hpp"
+#include "cagd/compare/peer_curves.hpp"
 #include "cagd/io/output_file.hpp"
 
 namespace cagd::cli {
@@ -24,5 +25,15 @@ void add_benchmark_plan_options(CLI::App* c, BenchmarkPlanArgs& a);
 compare::BenchmarkPlan benchmark_plan(const BenchmarkPlanArgs& a);
 // Stages `files` (name, content) in `out` (committed by the caller).
 void stage_benchmark_files(OutputDirectory& out, const std::vector<std::pair<std::string, std::string>>& files);
+
+// The manifest of the peers' folder `peers` (its peers.csv), once its launcher `run` is there;
+// InvalidInput naming --peers otherwise (`cagd peers`, `cagd scorecard`).
+std::vector<compare::PeerConfiguration> peer_manifest(const std::string& peers);
+// The launcher of the peers' folder `peers`, with the adapter programs in `programs`, else
+// $CAGD_PEER_PROGRAMS, else peers/ beside this executable (the build tree's, where
+// peers/CMakeLists.txt puts them).
+compare::PeerLauncher peer_launcher(const std::string& peers, const std::string& programs);
+// Adds --programs (the folder peer_launcher takes) to `c`, stored in `programs`.
+void add_peer_programs_option(CLI::App* c, std::string& programs);
 
 }  // namespace cagd::cli

@@ -29,6 +29,7 @@ Command add_monotone_command(CLI::App& app);
 Command add_typical_surface_command(CLI::App& app);
 Command add_benchmark_command(CLI::App& app);
 Command add_peers_command(CLI::App& app);
+Command add_scorecard_command(CLI::App& app);
 
 // An option whose text names one value of an enumeration (CLI11's checked transform): the help
 // lists the names and shows the current value of `value` as the default.

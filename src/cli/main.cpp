@@ -43,7 +43,7 @@ int main(int argc, char** argv) {
         add_surface_command(app),     add_smooth_command(app),       add_smooth_surface_command(app),
         add_energy_command(app),      add_energy_table_command(app), add_lac_command(app),
         add_monotone_command(app),    add_lac3d_command(app),        add_typical_surface_command(app),
-        add_benchmark_command(app),   add_peers_command(app),
+        add_benchmark_command(app),   add_peers_command(app),        add_scorecard_command(app),
     };
     try {
         app.parse(argc, argv);

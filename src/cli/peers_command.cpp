@@ -5,15 +5,19 @@
 //   peers.md              the peers (version, licence, configurations, call; those skipped and why)
 //                         and the identity table with its verdicts
 //   peer_identities.csv   one row per claim and data set: the sampled difference and its bound
+//   peer_truth_runs.csv, peer_convergence_orders.csv
+//                         every installed peer on the benchmark's truths (compare/peer_truths.hpp),
+//                         ranked in peers.md as leaderboard.md ranks the methods
 // A peer that is not installed here is skipped and named; nothing fails for it. Deterministic as
 // long as the peers' versions are. `cagd peers --peers DIR --list-markdown` prints the manifest as a
 // Markdown table instead (docs/methods.md's, written by scripts/update-docs-methods.sh).
-#include <cstdlib>
-#include <filesystem>
+#include <cmath>
 #include <iostream>
 #include <memory>
 
 #include "cagd/compare/peer_identity.hpp"
+#include "cagd/compare/peer_truths.hpp"
+#include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
 #include "cli/benchmark_options.hpp"
 #include "cli/commands.hpp"
@@ -24,16 +28,12 @@ namespace cagd::cli {
 namespace {
 
 struct PeersArgs {
-    std::string peers, identities, classic, out, programs;
+    std::string peers, identities, classic, out, programs, truth_sizes = "6,12,24,48,96,192,384,768";
     bool list_markdown = false;
 };
 
 int run_peers(const PeersArgs& a) {
-    const std::filesystem::path folder(a.peers);
-    if (!std::filesystem::is_regular_file(folder / "run"))
-        fail_input("cagd peers", "--peers " + a.peers + ": no launcher " + (folder / "run").string());
-    const std::vector<compare::PeerConfiguration> manifest =
-        compare::read_peer_manifest((folder / "peers.csv").string());
+    const std::vector<compare::PeerConfiguration> manifest = peer_manifest(a.peers);
     if (a.list_markdown) {
         std::cout << compare::peer_manifest_markdown(manifest);
         return std::cout.flush() ? 0 : 1;
@@ -43,22 +43,38 @@ int run_peers(const PeersArgs& a) {
         if (value->empty()) fail_input("cagd peers", std::string(option) + " is required (unless --list-markdown)");
     const std::vector<compare::IdentityClaim> claims = compare::read_identity_claims(a.identities);
     const std::vector<compare::ClassicDataSet> sets = compare::read_classic_data(a.classic);
-    // The adapter programs: --programs, else CAGD_PEER_PROGRAMS, else peers/ beside this executable
-    // (the build tree's, where peers/CMakeLists.txt puts them).
-    std::string programs = a.programs;
-    if (programs.empty() && std::getenv("CAGD_PEER_PROGRAMS")) programs = std::getenv("CAGD_PEER_PROGRAMS");
-    if (programs.empty()) {
-        std::error_code ec;
-        programs = (std::filesystem::read_symlink("/proc/self/exe", ec).parent_path() / "peers").string();
+    std::vector<int> sizes;
+    for (const std::string& f : split_csv_line(a.truth_sizes)) {
+        const double v = parse_number(f);
+        if (!(std::abs(v) <= 1e9) || v != std::trunc(v))  // before the cast: within int's range
+            fail_input("--truth-sizes", "\"" + f + "\" is not a whole number of points");
+        sizes.push_back(static_cast<int>(v));
     }
+    compare::check_truth_sizes(sizes, "--truth-sizes");
     OutputDirectory out(a.out);  // checked before the work
-    const compare::PeerLauncher launcher{.run = std::filesystem::absolute(folder / "run").string(),
-                                         .programs = programs};
+    const compare::PeerLauncher launcher = peer_launcher(a.peers, a.programs);
     const compare::IdentityResults results = compare::measure_identities(claims, sets, manifest, launcher);
     for (const compare::PeerStatus& s : results.peers)
         if (!s.installed) std::cerr << "cagd peers: skipped " << s.peer << ": " << s.reason << "\n";
-    stage_benchmark_files(out, {{"peers.md", compare::peers_markdown(claims, manifest, results)},
-                                {"peer_identities.csv", compare::identity_measures_csv(claims, results)}});
+    // Every installed peer against the truths, measured as the benchmark measures the methods.
+    std::vector<compare::CurveSubject> subjects;
+    for (const compare::PeerConfiguration& c : manifest)
+        for (const compare::PeerStatus& p : results.peers)
+            if (p.peer == c.peer && p.installed) subjects.push_back(compare::peer_subject(launcher, c));
+    const std::vector<compare::TruthRun> runs = compare::subject_truth_runs(subjects, sizes);
+    const std::vector<compare::ConvergenceOrder> orders = compare::convergence_orders(runs);
+    const std::string truths =
+        "\n## Against the truths\n\nEvery installed peer on the benchmark's points with a known answer, measured and "
+        "ranked as the benchmark ranks the methods (`leaderboard.md`; docs/benchmark.md): the same truths, uniform "
+        "in arc length, at the same sizes. Data: [`peer_truth_runs.csv`](peer_truth_runs.csv), "
+        "[`peer_convergence_orders.csv`](peer_convergence_orders.csv).\n" +
+        compare::truth_leaderboard_markdown(runs, orders);
+    stage_benchmark_files(
+        out, {{"peers.md", compare::peers_markdown(claims, manifest, results) + truths},
+              {"peer_identities.csv", compare::identity_measures_csv(claims, results)},
+              {"peer_truth_runs.csv", csv_table(compare::truth_runs_header(), compare::truth_runs_rows(runs))},
+              {"peer_convergence_orders.csv",
+               csv_table(compare::convergence_orders_header(), compare::convergence_orders_rows(orders))}});
     out.commit();
     return 0;
 }
@@ -77,9 +93,9 @@ Command add_peers_command(CLI::App& app) {
     c->add_option("--classic", a->classic,
                   "manifest of classic data sets the claims are measured on (reference/benchmark/classic_data.csv)");
     c->add_option("--out", a->out, "directory for peers.md and peer_identities.csv");
-    c->add_option("--programs", a->programs,
-                  "where the adapter programs were built (absent: $CAGD_PEER_PROGRAMS, else peers/ beside this "
-                  "executable)");
+    add_peer_programs_option(c, a->programs);
+    c->add_option("--truth-sizes", a->truth_sizes, "numbers of points of the peers' truth runs, increasing")
+        ->capture_default_str();
     c->add_flag("--list-markdown", a->list_markdown,
                 "print the manifest's configurations as a Markdown table and stop (no peer is run)");
     return {c, [a] { return run_peers(*a); }};

@@ -144,8 +144,8 @@ std::vector<std::string> figure_data_files(const fs::path& root, const fs::path&
 namespace {
 
 // "Beyond the papers": the interpolant benchmark of results/benchmark/ (cagd benchmark), when run:
-// its leaderboards as the command wrote them, its convergence figures, and the peers with their
-// identity table (cagd peers).
+// its leaderboards as the command wrote them, its convergence figures, the peers with their
+// identity table (cagd peers) and the scorecard (cagd scorecard).
 std::string benchmark_section(const fs::path& results) {
     const fs::path dir = results / "benchmark";
     const fs::path board = dir / "leaderboard.md";
@@ -177,9 +177,19 @@ std::string benchmark_section(const fs::path& results) {
          {"line", "circle", "ellipse", "epitrochoid", "clothoid", "log-aesthetic", "helix", "trefoil"})
         if (fs::exists(dir / (std::string("convergence_") + family + ".png")))
             s << "![" << family << "](benchmark/convergence_" << family << ".png)\n\n";
-    // The peers (cagd peers) as peers.md has them, its headings two levels down.
-    if (std::ifstream peers{dir / "peers.md"}) {
-        for (std::string line; std::getline(peers, line);) s << (line.rfind('#', 0) == 0 ? "##" : "") << line << "\n";
+    // The peers (cagd peers) and the scorecard (cagd scorecard; make scorecard) as their pages have
+    // them, their headings two levels down, their links to their neighbours (the CSVs, the figure)
+    // one folder down.
+    for (const char* page : {"peers.md", "scorecard.md"}) {
+        std::ifstream in_page(dir / page);
+        if (!in_page) continue;
+        s << "\n";
+        for (std::string line; std::getline(in_page, line);) {
+            for (const char* neighbour : {"](peer", "](scorecard"})
+                for (std::size_t at = 0; (at = line.find(neighbour, at)) != std::string::npos; at += 2)
+                    line.insert(at + 2, "benchmark/");
+            s << (line.rfind('#', 0) == 0 ? "##" : "") << line << "\n";
+        }
     }
     return s.str();
 }

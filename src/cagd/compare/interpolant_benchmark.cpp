@@ -126,11 +126,7 @@ ShapeMeasures get_shape(Fields& f) {
     s.unimplied_inflections = static_cast<int>(f.integer(0, kMaxCount));
     return s;
 }
-std::string line(const std::vector<std::string>& fields) {
-    std::string out;
-    for (std::size_t i = 0; i < fields.size(); ++i) (out += i ? "," : "") += csv_field(fields[i]);
-    return out + '\n';
-}
+std::string line(const std::vector<std::string>& fields) { return csv_record(fields); }
 
 std::string truth_record(long index, const TruthRun& r) {
     std::vector<std::string> f{"truth",
@@ -252,12 +248,6 @@ std::string plan_text(const BenchmarkPlan& p) {
             for (Eigen::Index j = 0; j < d.points.cols(); ++j) t << ' ' << exact(d.points(i, j));
     }
     return t.str();
-}
-
-std::string csv_text(const std::vector<std::string>& header, const std::vector<std::vector<std::string>>& rows) {
-    std::string out = line(header);
-    for (const auto& row : rows) out += line(row);
-    return out;
 }
 
 }  // namespace
@@ -445,14 +435,14 @@ std::vector<std::pair<std::string, std::string>> benchmark_files(const Benchmark
     std::vector<std::pair<std::string, std::string>> files;
     const std::vector<ConvergenceOrder> orders = convergence_orders(results.truth);
     if (!plan.classic.empty()) {
-        files.emplace_back("classic_runs.csv", csv_text(classic_runs_header(), classic_runs_rows(results.classic)));
+        files.emplace_back("classic_runs.csv", csv_table(classic_runs_header(), classic_runs_rows(results.classic)));
         files.emplace_back("classic.md", classic_tables_markdown(results.classic, plan.classic));
     }
     if (plan.random.sets > 0)
-        files.emplace_back("random_sets.csv", csv_text(random_sets_header(), random_sets_rows(results.random)));
-    files.emplace_back("truth_runs.csv", csv_text(truth_runs_header(), truth_runs_rows(results.truth)));
+        files.emplace_back("random_sets.csv", csv_table(random_sets_header(), random_sets_rows(results.random)));
+    files.emplace_back("truth_runs.csv", csv_table(truth_runs_header(), truth_runs_rows(results.truth)));
     files.emplace_back("convergence_orders.csv",
-                       csv_text(convergence_orders_header(), convergence_orders_rows(orders)));
+                       csv_table(convergence_orders_header(), convergence_orders_rows(orders)));
     files.emplace_back("leaderboard.md", truth_leaderboard_markdown(results.truth, orders) +
                                              classic_summary_markdown(results.classic, plan.classic) +
                                              random_sets_markdown(results.random));
@@ -478,7 +468,7 @@ std::vector<std::pair<std::string, std::string>> benchmark_files(const Benchmark
 }
 
 std::string benchmark_timing_csv(const BenchmarkResults& results) {
-    return csv_text(random_set_timing_header(), random_set_timing_rows(results.random));
+    return csv_table(random_set_timing_header(), random_set_timing_rows(results.random));
 }
 
 }  // namespace cagd::compare

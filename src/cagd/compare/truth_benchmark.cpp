@@ -346,48 +346,80 @@ TruthErrors truth_errors(const methods::Interpolant& in, const TruthSample& samp
     return e;
 }
 
-std::optional<double> extensionality(const methods::Configuration& configuration, const PointList& points, bool closed,
-                                     const methods::Interpolant& in) {
-    const char* who = "compare::extensionality";
+ExtendedPoints extended_points(const PointList& points, bool closed, const methods::Interpolant& in) {
+    const char* who = "compare::extended_points";
     const std::vector<double>& u = in.node_parameters;
     if (u.size() < 2 || u.size() != static_cast<std::size_t>(points.rows()) + (closed ? 1 : 0))
         fail_input(who, "the interpolant has " + std::to_string(u.size()) + " nodes for " +
                             std::to_string(points.rows()) + (closed ? " closed" : " open") + " points");
-    const std::size_t k = (u.size() - 1) / 2;  // the middle span
-    const double middle = 0.5 * (u[k] + u[k + 1]);
-    PointList more(points.rows() + 1, points.cols());
-    const auto before = static_cast<Eigen::Index>(k + 1);
-    more.topRows(before) = points.topRows(before);
-    more.row(before) = in.curve->jet(middle, 0).row(0);
-    more.bottomRows(points.rows() - before) = points.bottomRows(points.rows() - before);
-    methods::InterpolationResult again;
-    try {
-        again = methods::interpolate(configuration, more, closed);
-    } catch (const InvalidInput&) {
-        return std::nullopt;
-    }
-    if (!again.outcome.ok() || !again.interpolant) return std::nullopt;
+    ExtendedPoints e;
+    e.span = (u.size() - 1) / 2;  // the middle span
+    e.parameter = 0.5 * (u[e.span] + u[e.span + 1]);
+    e.points.resize(points.rows() + 1, points.cols());
+    const auto before = static_cast<Eigen::Index>(e.span + 1);
+    e.points.topRows(before) = points.topRows(before);
+    e.points.row(before) = in.curve->jet(e.parameter, 0).row(0);
+    e.points.bottomRows(points.rows() - before) = points.bottomRows(points.rows() - before);
+    return e;
+}
+
+double extension_distance(const methods::Interpolant& in, const ExtendedPoints& extended, bool closed,
+                          const methods::Interpolant& again) {
     // The old curve as the truth: its parameters at the n + 1 points, its whole stretch.
-    TruthSample old{.points = more,
-                    .params = u,
+    TruthSample old{.points = extended.points,
+                    .params = in.node_parameters,
                     .t_first = in.curve->t_min(),
                     .t_last = in.curve->t_max(),
                     .length = analysis::arc_length(*in.curve, kLengthPieces),
                     .closed = closed};
-    old.params.insert(old.params.begin() + static_cast<std::ptrdiff_t>(k + 1), middle);
-    return truth_errors(*again.interpolant, old, *in.curve).distance;
+    old.params.insert(old.params.begin() + static_cast<std::ptrdiff_t>(extended.span + 1), extended.parameter);
+    return truth_errors(again, old, *in.curve).distance;
+}
+
+std::optional<double> extensionality(const methods::Configuration& configuration, const PointList& points, bool closed,
+                                     const methods::Interpolant& in) {
+    const ExtendedPoints more = extended_points(points, closed, in);
+    methods::InterpolationResult again;
+    try {
+        again = methods::interpolate(configuration, more.points, closed);
+    } catch (const InvalidInput&) {
+        return std::nullopt;
+    }
+    if (!again.outcome.ok() || !again.interpolant) return std::nullopt;
+    return extension_distance(in, more, closed, *again.interpolant);
+}
+
+void measure_truth_run(TruthRun& r, const methods::Interpolant& in, const TruthSample& sample, const Curve& truth,
+                       std::optional<double> extension) {
+    r.errors = truth_errors(in, sample, truth);
+    r.shape = shape_measures(*in.curve, in.node_parameters, r.closed);
+    r.extensionality = extension;
+    bool finite = std::isfinite(r.shape.bending) && std::isfinite(r.shape.variation) &&
+                  std::isfinite(r.shape.max_curvature) && std::isfinite(r.shape.g2_defect);
+    for (int e = 0; e < 5; ++e) finite = finite && std::isfinite(truth_error(r.errors, e));
+    if (!finite) {  // a node of zero speed: κ undefined there
+        r.status = AttemptStatus::cusp;
+        r.note = "the curve has a point of zero speed, where its curvature is undefined";
+        r.errors = {};
+        r.shape = {};
+        r.extensionality.reset();
+    }
+}
+
+void check_truth_sizes(const std::vector<int>& sizes, const char* who) {
+    if (sizes.empty()) fail_input(who, "needs at least one size");
+    for (std::size_t i = 0; i < sizes.size(); ++i) {
+        const int n = sizes[i];
+        if (n < 3 || n > 100000) fail_input(who, "size " + std::to_string(n) + " outside 3..100000");
+        if (i > 0 && !(n > sizes[i - 1]))  // an order needs two different sizes, in the order given
+            fail_input(who, "size " + std::to_string(n) + " after " + std::to_string(sizes[i - 1]) +
+                                "; the sizes must increase");
+    }
 }
 
 std::vector<TruthRun> run_truth_benchmark(const TruthBenchmarkOptions& o) {
     const char* who = "compare::run_truth_benchmark";
-    if (o.sizes.empty()) fail_input(who, "needs at least one size");
-    for (std::size_t i = 0; i < o.sizes.size(); ++i) {
-        const int n = o.sizes[i];
-        if (n < 3 || n > 100000) fail_input(who, "size " + std::to_string(n) + " outside 3..100000");
-        if (i > 0 && !(n > o.sizes[i - 1]))  // an order needs two different sizes, in the order given
-            fail_input(who, "size " + std::to_string(n) + " after " + std::to_string(o.sizes[i - 1]) +
-                                "; the sizes must increase");
-    }
+    check_truth_sizes(o.sizes, who);
     std::vector<const TruthFamily*> families;
     for (const std::string& name : o.families) families.push_back(&find_truth_family(name));
     if (o.families.empty())
@@ -442,20 +474,8 @@ std::vector<TruthRun> run_truth_benchmark(const TruthBenchmarkOptions& o) {
         r.status = attempt.status;
         r.note = attempt.note;
         if (attempt.status != AttemptStatus::ok) return;
-        const methods::InterpolationResult& result = attempt.result;
-        r.errors = truth_errors(*result.interpolant, sample, *k.family->curve);
-        r.shape = shape_measures(*result.interpolant->curve, result.interpolant->node_parameters, k.closed);
-        r.extensionality = extensionality(m, sample.points, k.closed, *result.interpolant);
-        bool finite = std::isfinite(r.shape.bending) && std::isfinite(r.shape.variation) &&
-                      std::isfinite(r.shape.max_curvature) && std::isfinite(r.shape.g2_defect);
-        for (int e = 0; e < 5; ++e) finite = finite && std::isfinite(truth_error(r.errors, e));
-        if (!finite) {  // a node of zero speed: κ undefined there
-            r.status = AttemptStatus::cusp;
-            r.note = "the curve has a point of zero speed, where its curvature is undefined";
-            r.errors = {};
-            r.shape = {};
-            r.extensionality.reset();
-        }
+        const methods::Interpolant& in = *attempt.result.interpolant;
+        measure_truth_run(r, in, sample, *k.family->curve, extensionality(m, sample.points, k.closed, in));
     });
     return runs;
 }
@@ -482,10 +502,15 @@ double truth_solver_level(int measure, int n) {
     return measure == 2 || measure == 3 ? per_span * n : per_span;
 }
 
+bool iterative_configuration(const std::string& name) {
+    for (const methods::Configuration& c : methods::configurations())
+        if (c.name == name) return c.method->iterative;
+    return false;
+}
+
 double truth_error_floor(const std::string& method, int measure, int n) {
     const double rounding = truth_rounding_level(measure, n);
-    return methods::find_configuration(method).method->iterative ? std::max(rounding, truth_solver_level(measure, n))
-                                                                 : rounding;
+    return iterative_configuration(method) ? std::max(rounding, truth_solver_level(measure, n)) : rounding;
 }
 
 const char* to_string(OrderRegime regime) {
@@ -517,7 +542,7 @@ std::vector<ConvergenceOrder> convergence_orders(const std::vector<TruthRun>& ru
             continue;
         std::stable_sort(by_size.begin(), by_size.end(),
                          [](const TruthRun* a, const TruthRun* b) { return a->n < b->n; });
-        const bool iterative = methods::find_configuration(std::get<3>(k)).method->iterative;
+        const bool iterative = iterative_configuration(std::get<3>(k));
         for (int measure = 0; measure < static_cast<int>(truth_error_names().size()); ++measure) {
             ConvergenceOrder c;
             c.family = std::get<0>(k), c.spacing = static_cast<TruthSpacing>(std::get<1>(k)), c.closed = std::get<2>(k),

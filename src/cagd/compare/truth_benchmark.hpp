@@ -59,6 +59,9 @@ double truth_solver_level(int measure, int n);
 /// level. Errors within it of each other rank as ties; an iterative method at or below it at every
 /// size is "solver tolerance".
 double truth_error_floor(const std::string& method, int measure, int n);
+/// Whether `name` is an iterative configuration of the registry (its Method::iterative); false for
+/// any other name (a peer's configuration: measured against the rounding level).
+bool iterative_configuration(const std::string& name);
 /// Successive pair orders agreeing within this make the last one asymptotic.
 inline constexpr double kAsymptoticBand = 0.2;
 
@@ -115,6 +118,21 @@ const std::vector<std::string>& shape_measure_names();
 /// method refuses the new points or has no curve for them.
 std::optional<double> extensionality(const methods::Configuration& configuration, const PointList& points, bool closed,
                                      const methods::Interpolant& interpolant);
+/// The points extensionality() interpolates: `points` with c(u*) inserted after point `span`, u* the
+/// middle of the parameter interval of span ⌊spans/2⌋ of `interpolant` (through `points`, open or
+/// `closed`). InvalidInput when the interpolant's nodes do not match the points.
+struct ExtendedPoints {
+    PointList points;        ///< the n + 1 points
+    std::size_t span = 0;    ///< the span the point was taken on
+    double parameter = 0.0;  ///< u*
+};
+/// The extended points of `interpolant` (see ExtendedPoints).
+ExtendedPoints extended_points(const PointList& points, bool closed, const methods::Interpolant& interpolant);
+/// How far `again`, a curve through `extended`'s points, lies from `interpolant`: the largest
+/// distance of `again` from it ÷ its length (truth_errors' distance, the old curve as the truth).
+/// extensionality() with the new curve drawn by anyone (the scorecard's peers).
+double extension_distance(const methods::Interpolant& interpolant, const ExtendedPoints& extended, bool closed,
+                          const methods::Interpolant& again);
 
 /// One interpolation of the benchmark.
 struct TruthRun {
@@ -131,6 +149,12 @@ struct TruthRun {
     std::optional<double> extensionality;  ///< when ok: how far a point taken on the curve moves it (extensionality())
 };
 
+/// Measures `r` (its family, closedness, size and name set; status ok) from its interpolant `in`
+/// through `sample` of `truth`: the errors, the shape measures and `extension` (extensionality()),
+/// or the status cusp when a measure is not finite (a node of zero speed).
+void measure_truth_run(TruthRun& r, const methods::Interpolant& in, const TruthSample& sample, const Curve& truth,
+                       std::optional<double> extension);
+
 /// What run_truth_benchmark runs.
 struct TruthBenchmarkOptions {
     std::vector<int> sizes{6, 12, 24, 48, 96, 192, 384, 768};  ///< numbers of points (each 3..100000, increasing)
@@ -139,6 +163,8 @@ struct TruthBenchmarkOptions {
     int threads = 0;                   ///< cases measured at once (0: the hardware's); results do not depend on it
     WorkShare share;                   ///< the runs computed (by their index in the result); default: all
 };
+/// InvalidInput (from `who`) unless `sizes` is not empty and increases within 3 … 100000.
+void check_truth_sizes(const std::vector<int>& sizes, const char* who);
 /// Every family (closed families also as open arcs) × spacing × size × configuration, in that order.
 /// With a share of the work, the runs outside it are left empty (TruthRun{}: no method), the others
 /// are the values of the whole run.

@@ -52,6 +52,18 @@ std::string csv_field(const std::string& text) {
     return q + "\"";
 }
 
+std::string csv_record(const std::vector<std::string>& fields) {
+    std::string out;
+    for (std::size_t i = 0; i < fields.size(); ++i) (out += i ? "," : "") += csv_field(fields[i]);
+    return out + '\n';
+}
+
+std::string csv_table(const std::vector<std::string>& header, const std::vector<std::vector<std::string>>& rows) {
+    std::string out = csv_record(header);
+    for (const auto& row : rows) out += csv_record(row);
+    return out;
+}
+
 std::string format_number(double value, int significant) {
     if (std::isnan(value)) return "nan";
     if (value == 0.0) return "0";

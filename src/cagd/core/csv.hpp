@@ -11,6 +11,10 @@ namespace cagd {
 /// The fields of one CSV line, unquoted (RFC 4180: quoted fields may hold commas and doubled quotes).
 std::vector<std::string> split_csv_line(const std::string& line);
 std::string csv_field(const std::string& text);  ///< quotes when needed
+/// One CSV line of `fields` (each csv_field), ended by a newline.
+std::string csv_record(const std::vector<std::string>& fields);
+/// A CSV table: the header's line, then one line per row (csv_record).
+std::string csv_table(const std::vector<std::string>& header, const std::vector<std::vector<std::string>>& rows);
 /// Stable rendering: "%.10g", with −0 printed as 0. Used for every number in results/.
 std::string format_number(double value, int significant = 10);
 /// Parses a decimal or an exact fraction "a/b" (reference files print 1/6 as 1/6).

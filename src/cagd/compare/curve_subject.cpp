@@ -1,0 +1,146 @@
+#include "cagd/compare/curve_subject.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <memory>
+
+#include "cagd/core/errors.hpp"
+#include "cagd/core/parallel.hpp"
+#include "cagd/export/bspline_form.hpp"
+
+namespace cagd::compare {
+
+namespace {
+
+constexpr double kPeerThroughPoint = 1e-9;  // a peer's piece starts at a point within this × D
+
+DrawnCurve drawn(InterpolationAttempt a) {
+    DrawnCurve d{.status = a.status, .note = std::move(a.note), .interpolant = std::nullopt};
+    if (a.status == AttemptStatus::ok) d.interpolant = std::move(a.result.interpolant);
+    return d;
+}
+
+// The parameter in [a, b] of the point of `curve` nearest p: the nearest of 65 equally spaced samples,
+// then Newton on (c(t) − p)·c′(t) = 0, kept inside [a, b].
+double nearest_on_piece(const Curve& curve, const Eigen::RowVectorXd& p, double a, double b) {
+    constexpr int kSamples = 64, kNewtonSteps = 8;
+    double best = a, closest = std::numeric_limits<double>::infinity();
+    for (int j = 0; j <= kSamples; ++j) {
+        const double t = j == kSamples ? b : a + (b - a) * j / kSamples;
+        const double d = (curve.jet(t, 0).row(0) - p).norm();
+        if (d < closest) closest = d, best = t;
+    }
+    for (int step = 0; step < kNewtonSteps; ++step) {
+        const Eigen::MatrixXd jet = curve.jet(best, 2);
+        const Eigen::RowVectorXd e = jet.row(0) - p;
+        const double slope = jet.row(1).squaredNorm() + e.dot(jet.row(2));
+        if (!(slope > 0.0)) break;
+        best = std::clamp(best - e.dot(jet.row(1)) / slope, a, b);
+    }
+    return best;
+}
+
+}  // namespace
+
+CurveSubject method_subject(const methods::Configuration& configuration, int threads) {
+    return {
+        .name = configuration.name,
+        .kind = "method",
+        .draw = [configuration, threads](const std::vector<CurveRequest>& requests) {
+            std::vector<DrawnCurve> out(requests.size());
+            parallel_for(static_cast<long>(requests.size()), threads > 0 ? threads : hardware_threads(), [&](long k) {
+                const CurveRequest& r = requests[static_cast<std::size_t>(k)];
+                out[static_cast<std::size_t>(k)] = drawn(attempt_interpolation(configuration, r.points, r.closed));
+            });
+            return out;
+        }};
+}
+
+std::optional<methods::Interpolant> peer_interpolant(const exports::CurveDocument& document, const PointList& points,
+                                                     bool closed, std::string& why) {
+    const exports::BezierPieces& pieces = document.form.pieces;
+    if (pieces.dimension() != points.cols() || pieces.pieces() < 1) {
+        why = "the peer's curve has " + std::to_string(pieces.pieces()) + " pieces of dimension " +
+              std::to_string(pieces.dimension()) + " for points of dimension " + std::to_string(points.cols());
+        return std::nullopt;
+    }
+    methods::Interpolant in;
+    try {
+        in.curve = std::make_shared<const BSplineCurve>(exports::bezier_pieces_curve(pieces));
+    } catch (const InvalidInput& e) {
+        why = e.what();
+        return std::nullopt;
+    }
+    const double tolerance = kPeerThroughPoint * bounding_box_diagonal(points);
+    const int last = pieces.pieces();
+    const auto start = [&](int k) -> Eigen::RowVectorXd {  // where piece k starts; k = last: the end
+        return k < last ? pieces.control.row(static_cast<Eigen::Index>(k) * (pieces.degree + 1))
+                        : pieces.control.row(pieces.control.rows() - 1);
+    };
+    const long n = points.rows(), nodes = n + (closed ? 1 : 0);
+    // Each point where a piece starts at it, or else where a piece passes through it (a peer that
+    // drops knots, as SISL's free ends do), after the point before.
+    int k = 0;
+    double after = -std::numeric_limits<double>::infinity();
+    for (long i = 0; i < nodes; ++i) {
+        const Eigen::RowVectorXd p = points.row(i % n);
+        std::optional<double> node;
+        for (int j = k; j <= last && !node; ++j)  // first where a piece starts (the usual peer)
+            if (pieces.breaks[static_cast<std::size_t>(j)] > after && (start(j) - p).norm() <= tolerance)
+                node = pieces.breaks[static_cast<std::size_t>(j)], k = j;
+        for (int j = k; j < last && !node; ++j) {  // else inside a piece
+            const double lo = std::max(pieces.breaks[static_cast<std::size_t>(j)], after);
+            const double t = nearest_on_piece(*in.curve, p, lo, pieces.breaks[static_cast<std::size_t>(j) + 1]);
+            if (t > after && (in.curve->jet(t, 0).row(0) - p).norm() <= tolerance) node = t, k = j;
+        }
+        if (!node) {
+            why = "the peer's curve does not pass through point " + point_label(i % n) + " after the one before";
+            return std::nullopt;
+        }
+        in.node_parameters.push_back(after = *node);
+    }
+    if (in.node_parameters.front() != pieces.breaks.front() || in.node_parameters.back() != pieces.breaks.back()) {
+        why = "the peer's curve runs on beyond its first or last point";
+        return std::nullopt;
+    }
+    in.dtau_du.assign(static_cast<std::size_t>(nodes - 1), 1.0);
+    return in;
+}
+
+CurveSubject peer_subject(const PeerLauncher& launcher, const PeerConfiguration& configuration) {
+    return {.name = configuration.name(),
+            .kind = "peer",
+            .draw = [launcher, configuration](const std::vector<CurveRequest>& requests) {
+                std::vector<DrawnCurve> out(requests.size());
+                std::vector<PeerRequest> asked;
+                std::vector<std::size_t> index;
+                for (std::size_t k = 0; k < requests.size(); ++k) {
+                    const bool closed = requests[k].closed;
+                    if (closed ? !configuration.closed : !configuration.open) {
+                        out[k] = {.status = AttemptStatus::not_applicable,
+                                  .note = std::string("draws no ") + (closed ? "closed" : "open") + " curves"};
+                        continue;
+                    }
+                    asked.push_back({configuration.configuration, requests[k].points, closed});
+                    index.push_back(k);
+                }
+                if (asked.empty()) return out;
+                const PeerRun run = run_peer(launcher, configuration.peer, asked);
+                for (std::size_t i = 0; i < asked.size(); ++i) {
+                    DrawnCurve& d = out[index[i]];
+                    if (!run.installed || !run.reason.empty()) {
+                        d = {.status = AttemptStatus::failed, .note = run.reason};
+                    } else if (const PeerAnswer& a = run.answers[i]; !a.curve) {
+                        d = {.status = AttemptStatus::no_result, .note = configuration.peer + ": " + a.error};
+                    } else if (std::string why;
+                               (d.interpolant = peer_interpolant(*a.curve, asked[i].points, asked[i].closed, why))) {
+                        d.status = AttemptStatus::ok;
+                    } else {
+                        d = {.status = AttemptStatus::no_result, .note = why};
+                    }
+                }
+                return out;
+            }};
+}
+
+}  // namespace cagd::compare

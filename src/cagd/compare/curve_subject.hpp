@@ -1,0 +1,54 @@
+#pragma once
+/// @file
+/// What draws curves for the scorecard (scorecard.hpp) and the peers' truth runs (peer_truths.hpp): a
+/// configuration of the registry or a peer's configuration (peer_curves.hpp), behind one call that
+/// draws a batch of curves, each an interpolant or the reason there is none (the classification of
+/// interpolation_attempt.hpp).
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cagd/compare/interpolation_attempt.hpp"
+#include "cagd/compare/peer_curves.hpp"
+#include "cagd/methods/method_registry.hpp"
+
+namespace cagd::compare {
+
+/// A curve a subject drew, or why there is none.
+struct DrawnCurve {
+    AttemptStatus status = AttemptStatus::ok;           ///< ok, not applicable, refused, no result or failed
+    std::string note{};                                 ///< why not ok
+    std::optional<methods::Interpolant> interpolant{};  ///< when ok
+};
+/// One curve to draw.
+struct CurveRequest {
+    PointList points{};   ///< its points
+    bool closed = false;  ///< closed
+};
+/// A configuration of the registry or of a peer, drawing curves in batches (a peer's adapter runs
+/// once per batch).
+struct CurveSubject {
+    std::string name{};  ///< the configuration's name; a peer's "peer:configuration"
+    std::string kind{};  ///< "method" or "peer"
+    /// One answer per request, in order.
+    std::function<std::vector<DrawnCurve>(const std::vector<CurveRequest>&)> draw;
+};
+/// A configuration of the registry as a subject: attempt_interpolation on each request, `threads` at
+/// once (0: the hardware's).
+CurveSubject method_subject(const methods::Configuration& configuration, int threads = 0);
+/// A peer's configuration as a subject: run_peer once per batch; an answer with an error is no
+/// result (the peer's message the note), a run that failed is failed; a curve that does not pass
+/// through the points is no result (peer_interpolant).
+CurveSubject peer_subject(const PeerLauncher& launcher, const PeerConfiguration& configuration);
+/// A peer's pieces as an interpolant through `points` (closed: and back to the first): each node
+/// parameter is the first break after the previous node where a piece starts at the point (within
+/// 10⁻⁹ D), so a peer may draw several pieces per span; or, where none does, the parameter inside a
+/// piece where the curve passes through the point (the nearest of 65 samples, refined by Newton's
+/// method, again within 10⁻⁹ D), so a peer may drop knots (SISL's free ends: one cubic through
+/// four points). Each dτ/du 1. Nothing, with `why` set, when the curve does not pass through a point
+/// after the one before, or its pieces do not join.
+std::optional<methods::Interpolant> peer_interpolant(const exports::CurveDocument& document, const PointList& points,
+                                                     bool closed, std::string& why);
+
+}  // namespace cagd::compare
