@@ -1,7 +1,7 @@
 #pragma once
 /// @file
 /// The scorecard: the properties Levien names for an interpolating spline (R. Levien, From Spiral to
-/// Spline: Optimal Techniques in Interactive Curve Design, PhD thesis, UC Berkeley, 2009, ch. 3:
+/// Spline: Optimal Techniques in Interactive Curve Design, PhD thesis, UC Berkeley, 2009:
 /// roundness, extensionality, locality, existence) and four more users ask about, each measured as a
 /// number for every configuration of the registry and every peer (peer_curves.hpp), on seeded random
 /// polygons (with 95 % intervals, numeric/confidence_interval.hpp) and on the classic data.
