@@ -20,24 +20,30 @@ DrawnCurve drawn(InterpolationAttempt a) {
     return d;
 }
 
-// The parameter in [a, b] of the point of `curve` nearest p: the nearest of 65 equally spaced samples,
-// then Newton on (c(t) − p)·c′(t) = 0, kept inside [a, b].
-double nearest_on_piece(const Curve& curve, const Eigen::RowVectorXd& p, double a, double b) {
-    constexpr int kSamples = 64, kNewtonSteps = 8;
-    double best = a, closest = std::numeric_limits<double>::infinity();
+// The first parameter t in (a, b] where `curve` passes within `tolerance` of p: Newton's method on
+// (c(t) − p)·c′(t) = 0 (kept inside [a, b]) from each local minimum, in turn, of the distance at
+// 65 equally spaced samples (a piece that loops passes near p more than once).
+std::optional<double> first_pass_through(const Curve& curve, const Eigen::RowVectorXd& p, double a, double b,
+                                         double tolerance) {
+    constexpr int kSamples = 64, kNewtonSteps = 12;
+    std::vector<double> t(kSamples + 1), d(kSamples + 1);
     for (int j = 0; j <= kSamples; ++j) {
-        const double t = j == kSamples ? b : a + (b - a) * j / kSamples;
-        const double d = (curve.jet(t, 0).row(0) - p).norm();
-        if (d < closest) closest = d, best = t;
+        t[j] = j == kSamples ? b : a + (b - a) * j / kSamples;
+        d[j] = (curve.jet(t[j], 0).row(0) - p).norm();
     }
-    for (int step = 0; step < kNewtonSteps; ++step) {
-        const Eigen::MatrixXd jet = curve.jet(best, 2);
-        const Eigen::RowVectorXd e = jet.row(0) - p;
-        const double slope = jet.row(1).squaredNorm() + e.dot(jet.row(2));
-        if (!(slope > 0.0)) break;
-        best = std::clamp(best - e.dot(jet.row(1)) / slope, a, b);
+    for (int j = 0; j <= kSamples; ++j) {
+        if ((j > 0 && d[j - 1] < d[j]) || (j < kSamples && d[j + 1] < d[j])) continue;  // not a local minimum
+        double u = t[j];
+        for (int step = 0; step < kNewtonSteps; ++step) {
+            const Eigen::MatrixXd jet = curve.jet(u, 2);
+            const Eigen::RowVectorXd e = jet.row(0) - p;
+            const double slope = jet.row(1).squaredNorm() + e.dot(jet.row(2));
+            if (!(slope > 0.0)) break;
+            u = std::clamp(u - e.dot(jet.row(1)) / slope, a, b);
+        }
+        if (u > a && (curve.jet(u, 0).row(0) - p).norm() <= tolerance) return u;
     }
-    return best;
+    return std::nullopt;
 }
 
 }  // namespace
@@ -90,11 +96,12 @@ std::optional<methods::Interpolant> peer_interpolant(const exports::CurveDocumen
                 node = pieces.breaks[static_cast<std::size_t>(j)], k = j;
         for (int j = k; j < last && !node; ++j) {  // else inside a piece
             const double lo = std::max(pieces.breaks[static_cast<std::size_t>(j)], after);
-            const double t = nearest_on_piece(*in.curve, p, lo, pieces.breaks[static_cast<std::size_t>(j) + 1]);
-            if (t > after && (in.curve->jet(t, 0).row(0) - p).norm() <= tolerance) node = t, k = j;
+            if (const auto t =
+                    first_pass_through(*in.curve, p, lo, pieces.breaks[static_cast<std::size_t>(j) + 1], tolerance))
+                node = *t, k = j;
         }
         if (!node) {
-            why = "the peer's curve does not pass through point " + point_label(i % n) + " after the one before";
+            why = "the peer's curve does not pass through " + point_label(i % n) + " after the one before";
             return std::nullopt;
         }
         in.node_parameters.push_back(after = *node);

@@ -44,10 +44,10 @@ CurveSubject peer_subject(const PeerLauncher& launcher, const PeerConfiguration&
 /// A peer's pieces as an interpolant through `points` (closed: and back to the first): each node
 /// parameter is the first break after the previous node where a piece starts at the point (within
 /// 10⁻⁹ D), so a peer may draw several pieces per span; or, where none does, the parameter inside a
-/// piece where the curve passes through the point (the nearest of 65 samples, refined by Newton's
-/// method, again within 10⁻⁹ D), so a peer may drop knots (SISL's free ends: one cubic through
-/// four points). Each dτ/du 1. Nothing, with `why` set, when the curve does not pass through a point
-/// after the one before, or its pieces do not join.
+/// piece where the curve first passes through the point (Newton's method from each local minimum
+/// of the distance at 65 samples, again within 10⁻⁹ D), so a peer may drop knots (SISL's free ends:
+/// one cubic through four points). Each dτ/du 1. Nothing, with `why` set, when the curve does not
+/// pass through a point after the one before, or its pieces do not join.
 std::optional<methods::Interpolant> peer_interpolant(const exports::CurveDocument& document, const PointList& points,
                                                      bool closed, std::string& why);
 
