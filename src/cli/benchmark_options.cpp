@@ -19,7 +19,8 @@ std::vector<std::string> split(const std::string& text) {
     return out;
 }
 
-// A comma-separated, increasing list of numbers of points in 3..100000, given to `option`.
+}  // namespace
+
 std::vector<int> parse_sizes(const std::string& option, const std::string& text) {
     std::vector<int> sizes;
     for (const std::string& s : split(text)) {
@@ -31,16 +32,14 @@ std::vector<int> parse_sizes(const std::string& option, const std::string& text)
             used = 0;
         }
         if (used != s.size() || n < 3 || n > 100000)
-            fail_input("cagd benchmark", option + ": \"" + s + "\" is not a whole number of points in 3..100000");
+            fail_input(option, "\"" + s + "\" is not a whole number of points in 3..100000");
         if (!sizes.empty() && !(n > sizes.back()))
-            fail_input("cagd benchmark", option + ": " + std::to_string(n) + " after " + std::to_string(sizes.back()) +
-                                             "; the sizes must increase");
+            fail_input(option,
+                       std::to_string(n) + " after " + std::to_string(sizes.back()) + "; the sizes must increase");
         sizes.push_back(n);
     }
     return sizes;
 }
-
-}  // namespace
 
 void add_benchmark_plan_options(CLI::App* c, BenchmarkPlanArgs& a) {
     c->add_option("--sizes", a.sizes, "numbers of points, comma-separated and increasing (each 3..100000)")

@@ -19,6 +19,9 @@ struct BenchmarkPlanArgs {
     int threads = 0, random_sets = 1000, scatter_max_points = 32;
 };
 
+// A comma-separated, increasing list of numbers of points in 3..100000, given to `option`;
+// InvalidInput naming the option and the value.
+std::vector<int> parse_sizes(const std::string& option, const std::string& text);
 // Adds the plan's options (and --threads) to `c`, stored in `a`.
 void add_benchmark_plan_options(CLI::App* c, BenchmarkPlanArgs& a);
 // The plan of `a`; InvalidInput naming the option and value (before any work).

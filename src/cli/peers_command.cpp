@@ -43,15 +43,9 @@ int run_peers(const PeersArgs& a) {
         if (value->empty()) fail_input("cagd peers", std::string(option) + " is required (unless --list-markdown)");
     const std::vector<compare::IdentityClaim> claims = compare::read_identity_claims(a.identities);
     const std::vector<compare::ClassicDataSet> sets = compare::read_classic_data(a.classic);
-    std::vector<int> sizes;
-    for (const std::string& f : split_csv_line(a.truth_sizes)) {
-        const double v = parse_number(f);
-        if (!(std::abs(v) <= 1e9) || v != std::trunc(v))  // before the cast: within int's range
-            fail_input("--truth-sizes", "\"" + f + "\" is not a whole number of points");
-        sizes.push_back(static_cast<int>(v));
-    }
-    compare::check_truth_sizes(sizes, "--truth-sizes");
-    OutputDirectory out(a.out);  // checked before the work
+    const std::vector<int> sizes = parse_sizes("--truth-sizes", a.truth_sizes);
+    compare::check_truth_sizes(sizes, "--truth-sizes");  // none at all, too
+    OutputDirectory out(a.out);                          // checked before the work
     const compare::PeerLauncher launcher = peer_launcher(a.peers, a.programs);
     const compare::IdentityResults results = compare::measure_identities(claims, sets, manifest, launcher);
     for (const compare::PeerStatus& s : results.peers)

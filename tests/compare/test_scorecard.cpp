@@ -154,6 +154,21 @@ TEST(Scorecard, PeerPiecesBecomeAnInterpolantThroughThePoints) {
     ASSERT_TRUE(inside) << why;
     for (int i = 0; i < 4; ++i)
         EXPECT_NEAR(inside->node_parameters[static_cast<std::size_t>(i)], i * std::sqrt(2.0), 1e-9);
+    // A piece with a loop: it passes 0.034 from the point near t = 0.03 (the nearest sample there)
+    // and through it at t = 0.962; the pass is found from the second local minimum.
+    exports::CurveDocument loop;
+    loop.form.pieces.degree = 3;
+    loop.form.pieces.breaks = {0.0, 1.0};
+    loop.form.pieces.control.resize(4, 2);
+    loop.form.pieces.control << 0, 0, 3, 4, -6, 3, 1, 0;
+    const BezierCurve looped = exports::piece_curve(loop.form.pieces, 0);
+    PointList three(3, 2);
+    three.row(0) = looped.jet(0.0, 0).row(0);
+    three.row(1) = looped.jet(0.962, 0).row(0);
+    three.row(2) = looped.jet(1.0, 0).row(0);
+    const auto through = peer_interpolant(loop, three, false, why);
+    ASSERT_TRUE(through) << why;
+    EXPECT_NEAR(through->node_parameters[1], 0.962, 1e-9);
     // A curve that misses a point is no interpolant, and says which point.
     PointList moved = p;
     moved(5, 1) += 0.1;

@@ -11,23 +11,16 @@ std::vector<TruthRun> subject_truth_runs(const std::vector<CurveSubject>& subjec
                                          int threads) {
     check_truth_sizes(sizes, "cagd::compare::subject_truth_runs");
     if (threads <= 0) threads = hardware_threads();
-    struct Case {
-        const TruthFamily* family;
-        bool closed;
-        int n;
-        TruthSample sample;
-    };
-    std::vector<Case> cases;
-    for (const TruthFamily& f : truth_families())
-        for (bool closed : {true, false})
-            if (!closed || f.closed)
-                for (int n : sizes) cases.push_back({&f, closed, n, {}});
+    std::vector<const TruthFamily*> families;
+    for (const TruthFamily& f : truth_families()) families.push_back(&f);
+    const std::vector<TruthCase> cases = truth_cases(families, {TruthSpacing::uniform}, sizes);
+    std::vector<TruthSample> samples(cases.size());
     parallel_for(static_cast<long>(cases.size()), threads, [&](long k) {
-        Case& c = cases[static_cast<std::size_t>(k)];
-        c.sample = truth_samples(*c.family, c.n, TruthSpacing::uniform, c.closed);
+        const TruthCase& c = cases[static_cast<std::size_t>(k)];
+        samples[static_cast<std::size_t>(k)] = truth_samples(*c.family, c.n, c.spacing, c.closed);
     });
     std::vector<CurveRequest> requests;
-    for (const Case& c : cases) requests.push_back({c.sample.points, c.closed});
+    for (std::size_t k = 0; k < cases.size(); ++k) requests.push_back({samples[k].points, cases[k].closed});
     std::vector<TruthRun> runs;
     for (const CurveSubject& subject : subjects) {
         const std::vector<DrawnCurve> drawn = subject.draw(requests);
@@ -37,7 +30,7 @@ std::vector<TruthRun> subject_truth_runs(const std::vector<CurveSubject>& subjec
         std::vector<long> more_of(cases.size(), -1);
         for (std::size_t k = 0; k < cases.size(); ++k) {
             if (!drawn[k].interpolant) continue;
-            extended[k] = extended_points(cases[k].sample.points, cases[k].closed, *drawn[k].interpolant);
+            extended[k] = extended_points(samples[k].points, cases[k].closed, *drawn[k].interpolant);
             more_of[k] = static_cast<long>(more.size());
             more.push_back({extended[k].points, cases[k].closed});
         }
@@ -45,11 +38,12 @@ std::vector<TruthRun> subject_truth_runs(const std::vector<CurveSubject>& subjec
         std::vector<TruthRun> mine(cases.size());
         parallel_for(static_cast<long>(cases.size()), threads, [&](long index) {
             const auto k = static_cast<std::size_t>(index);
-            const Case& c = cases[k];
+            const TruthCase& c = cases[k];
+            const TruthSample& sample = samples[k];
             TruthRun& r = mine[k];
-            r.family = c.family->name, r.spacing = TruthSpacing::uniform, r.closed = c.closed, r.n = c.n;
+            r.family = c.family->name, r.spacing = c.spacing, r.closed = c.closed, r.n = c.n;
             r.method = subject.name;
-            r.truth_shape = shape_measures(*c.family->curve, c.sample.params, c.closed);
+            r.truth_shape = shape_measures(*c.family->curve, sample.params, c.closed);
             r.status = drawn[k].status;
             r.note = drawn[k].note;
             if (!drawn[k].interpolant) return;
@@ -59,7 +53,7 @@ std::vector<TruthRun> subject_truth_runs(const std::vector<CurveSubject>& subjec
                 extension = extension_distance(in, extended[k], c.closed,
                                                *again[static_cast<std::size_t>(more_of[k])].interpolant);
             try {
-                measure_truth_run(r, in, c.sample, *c.family->curve, extension);
+                measure_truth_run(r, in, sample, *c.family->curve, extension);
             } catch (const std::exception& e) {  // a drawn curve no measure should fail on: the subject's defect
                 r = TruthRun{.family = r.family,
                              .spacing = r.spacing,

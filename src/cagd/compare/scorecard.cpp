@@ -380,31 +380,30 @@ std::vector<ScorecardRow> scorecard_rows(const SubjectScores& sc) {
 }
 
 std::string scorecard_csv(const std::vector<ScorecardRow>& rows) {
-    std::ostringstream o;
-    o << "subject,kind,property,quantity,sets,value,low,high\n";
+    std::vector<std::vector<std::string>> table;
     for (const ScorecardRow& r : rows)
-        o << r.subject << ',' << r.kind << ',' << r.property << ',' << r.quantity << ',' << r.sets << ','
-          << format_number(r.estimate.value, 6) << ',' << format_number(r.estimate.low, 6) << ','
-          << format_number(r.estimate.high, 6) << '\n';
-    return o.str();
+        table.push_back({r.subject, r.kind, r.property, r.quantity, std::to_string(r.sets),
+                         format_number(r.estimate.value, 6), format_number(r.estimate.low, 6),
+                         format_number(r.estimate.high, 6)});
+    return csv_table({"subject", "kind", "property", "quantity", "sets", "value", "low", "high"}, table);
 }
 
 std::string scorecard_classic_csv(const std::vector<SubjectScores>& scores, const std::vector<ClassicDataSet>& sets) {
-    std::ostringstream o;
-    o << "subject,kind,data_set,closed,status,extensionality,symmetry,similarity,spans_moved,zero_influence_spans,"
-         "inner_curvature_maxima,bending,variation,g2_defect\n";
     const auto number = [](const std::optional<double>& x) { return x ? format_number(*x, 6) : std::string(); };
     const auto count = [](const std::optional<int>& x) { return x ? std::to_string(*x) : std::string(); };
+    std::vector<std::vector<std::string>> table;
     for (const SubjectScores& sc : scores)
         for (std::size_t c = 0; c < sc.classic.size() && c < sets.size(); ++c) {
             const CaseScore& s = sc.classic[c];
-            o << sc.subject << ',' << sc.kind << ',' << sets[c].name << ',' << (sets[c].closed ? "closed" : "open")
-              << ',' << to_string(s.status) << ',' << number(s.extensionality) << ',' << number(s.symmetry) << ','
-              << number(s.similarity) << ',' << count(s.spans_moved) << ',' << count(s.zero_influence_spans) << ','
-              << count(s.inner_curvature_maxima) << ',' << number(s.bending) << ',' << number(s.variation) << ','
-              << number(s.g2_defect) << '\n';
+            table.push_back({sc.subject, sc.kind, sets[c].name, sets[c].closed ? "closed" : "open", to_string(s.status),
+                             number(s.extensionality), number(s.symmetry), number(s.similarity), count(s.spans_moved),
+                             count(s.zero_influence_spans), count(s.inner_curvature_maxima), number(s.bending),
+                             number(s.variation), number(s.g2_defect)});
         }
-    return o.str();
+    return csv_table(
+        {"subject", "kind", "data_set", "closed", "status", "extensionality", "symmetry", "similarity", "spans_moved",
+         "zero_influence_spans", "inner_curvature_maxima", "bending", "variation", "g2_defect"},
+        table);
 }
 
 namespace {

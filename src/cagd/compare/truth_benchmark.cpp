@@ -417,6 +417,18 @@ void check_truth_sizes(const std::vector<int>& sizes, const char* who) {
     }
 }
 
+std::vector<TruthCase> truth_cases(const std::vector<const TruthFamily*>& families,
+                                   const std::vector<TruthSpacing>& spacings, const std::vector<int>& sizes) {
+    std::vector<TruthCase> cases;
+    for (const TruthFamily* f : families)
+        for (bool closed : {true, false}) {
+            if (closed && !f->closed) continue;
+            for (TruthSpacing s : spacings)
+                for (int n : sizes) cases.push_back({.family = f, .spacing = s, .closed = closed, .n = n});
+        }
+    return cases;
+}
+
 std::vector<TruthRun> run_truth_benchmark(const TruthBenchmarkOptions& o) {
     const char* who = "compare::run_truth_benchmark";
     check_truth_sizes(o.sizes, who);
@@ -427,19 +439,8 @@ std::vector<TruthRun> run_truth_benchmark(const TruthBenchmarkOptions& o) {
     std::vector<methods::Configuration> configurations;
     for (const std::string& name : o.methods) configurations.push_back(methods::find_configuration(name));
     if (o.methods.empty()) configurations = methods::configurations();
-    struct Case {
-        const TruthFamily* family;
-        TruthSpacing spacing;
-        bool closed;
-        int n;
-    };
-    std::vector<Case> cases;
-    for (const TruthFamily* f : families)
-        for (bool closed : {true, false}) {
-            if (closed && !f->closed) continue;
-            for (TruthSpacing s : {TruthSpacing::uniform, TruthSpacing::nonuniform})
-                for (int n : o.sizes) cases.push_back({f, s, closed, n});
-        }
+    const std::vector<TruthCase> cases =
+        truth_cases(families, {TruthSpacing::uniform, TruthSpacing::nonuniform}, o.sizes);
     const int threads = o.threads > 0 ? o.threads : hardware_threads();
     // The samples of each case once (t(s) by adaptive quadrature of the truth), shared by the methods.
     std::vector<TruthSample> samples(cases.size());
@@ -452,7 +453,7 @@ std::vector<TruthRun> run_truth_benchmark(const TruthBenchmarkOptions& o) {
     };
     parallel_for(static_cast<long>(cases.size()), threads, [&](long k) {
         if (!case_needed(k)) return;
-        const Case& c = cases[static_cast<std::size_t>(k)];
+        const TruthCase& c = cases[static_cast<std::size_t>(k)];
         samples[static_cast<std::size_t>(k)] = truth_samples(*c.family, c.n, c.spacing, c.closed);
         truth_shapes[static_cast<std::size_t>(k)] =
             shape_measures(*c.family->curve, samples[static_cast<std::size_t>(k)].params, c.closed);
@@ -464,7 +465,7 @@ std::vector<TruthRun> run_truth_benchmark(const TruthBenchmarkOptions& o) {
             if (m.method->prepare && m.claims.max_dimension >= d) m.method->prepare(m.values, d);
     parallel_for(static_cast<long>(runs.size()), threads, [&](long index) {
         if (!o.share.owns(index)) return;
-        const Case& k = cases[static_cast<std::size_t>(index) / configurations.size()];
+        const TruthCase& k = cases[static_cast<std::size_t>(index) / configurations.size()];
         const TruthSample& sample = samples[static_cast<std::size_t>(index) / configurations.size()];
         const methods::Configuration& m = configurations[static_cast<std::size_t>(index) % configurations.size()];
         TruthRun& r = runs[static_cast<std::size_t>(index)];

@@ -165,6 +165,17 @@ struct TruthBenchmarkOptions {
 };
 /// InvalidInput (from `who`) unless `sizes` is not empty and increases within 3 … 100000.
 void check_truth_sizes(const std::vector<int>& sizes, const char* who);
+/// One case of the benchmark: a truth, how its points are spaced, its closedness, their number.
+struct TruthCase {
+    const TruthFamily* family = nullptr;           ///< the truth
+    TruthSpacing spacing = TruthSpacing::uniform;  ///< the spacing of its points
+    bool closed = false;                           ///< closed points (a closed truth also runs as an open arc)
+    int n = 0;                                     ///< the number of points
+};
+/// The cases of `families`, in the benchmark's order: each family, closed first where its truth is
+/// closed, then open; in each, every spacing of `spacings`; in each, every size of `sizes`.
+std::vector<TruthCase> truth_cases(const std::vector<const TruthFamily*>& families,
+                                   const std::vector<TruthSpacing>& spacings, const std::vector<int>& sizes);
 /// Every family (closed families also as open arcs) × spacing × size × configuration, in that order.
 /// With a share of the work, the runs outside it are left empty (TruthRun{}: no method), the others
 /// are the values of the whole run.
