@@ -1,8 +1,10 @@
 // compare/: every method on the same points (cagd.compare, as `cagd compare`); a peer's curve
 // (cagd.peer_curve, as `cagd peers` runs it).
+#include <algorithm>
 #include <filesystem>
 
 #include "bindings.hpp"
+#include "cagd/compare/curve_subject.hpp"
 #include "cagd/compare/peer_curves.hpp"
 #include "cagd/export/bspline_form.hpp"
 
@@ -109,10 +111,32 @@ void bind_compare(py::module_& m) {
           "here; cagd.NoSolution when the peer refuses the points or fails on them, with its message.");
     m.def(
         "_compare",
-        [](const Array& points, bool closed, const std::vector<std::string>& methods, bool locality, int threads) {
+        [](const Array& points, bool closed, const std::vector<std::string>& methods, bool locality, int threads,
+           const std::string& peers, const std::string& programs) {
             const Eigen::MatrixXd p = to_matrix(points, "compare: points");
             cagd::compare::ComparisonOptions o;
-            o.methods = methods;
+            // Registry names, and peers' PEER:CONFIGURATION run by their adapters under `peers`.
+            std::vector<std::string> peer_names;
+            for (const std::string& name : methods)
+                (name.find(':') == std::string::npos ? o.methods : peer_names).push_back(name);
+            if (!peer_names.empty()) {
+                if (!std::filesystem::is_regular_file(std::filesystem::path(peers) / "run"))
+                    throw py::value_error("peers: \"" + peers +
+                                          "\" holds no launcher run (the repository's peers/ folder)");
+                const std::vector<cagd::compare::PeerConfiguration> manifest =
+                    cagd::compare::read_peer_manifest((std::filesystem::path(peers) / "peers.csv").string());
+                for (const std::string& name : peer_names)
+                    if (std::none_of(manifest.begin(), manifest.end(), [&](const auto& c) { return c.name() == name; }))
+                        throw py::value_error("methods: \"" + name + "\" is no peer configuration of " + peers +
+                                              "/peers.csv");
+                cagd::compare::InstalledPeers installed = cagd::compare::installed_peer_subjects(
+                    {.run = (std::filesystem::path(peers) / "run").string(), .programs = programs}, manifest,
+                    [&](const std::string& n) {
+                        return std::find(peer_names.begin(), peer_names.end(), n) != peer_names.end();
+                    });
+                if (!installed.skipped.empty()) throw std::runtime_error(installed.skipped.front());
+                o.peers = std::move(installed.subjects);
+            }
             o.closed = closed;
             o.locality = locality;
             o.threads = threads;
@@ -124,7 +148,8 @@ void bind_compare(py::module_& m) {
             return comparison_dict(rows, closed, static_cast<int>(p.cols()));
         },
         py::arg("points"), py::arg("closed") = false, py::arg("methods") = std::vector<std::string>{},
-        py::arg("locality") = true, py::arg("threads") = 0);
+        py::arg("locality") = true, py::arg("threads") = 0, py::arg("peers") = "peers",
+        py::arg("programs") = "build/peers");
 }
 
 }  // namespace cagd_python

@@ -245,6 +245,20 @@ for bad in "--polygons 0" "--polygons 1000001" "--only nosuch" "--threads -1" "-
     [ ! -e "$dir/score_bad" ] || fail "scorecard $bad left $dir/score_bad"
 done
 run 2 "" scorecard --polygons 5
+# compare with peers: a method and a peer (its row and --export file where the peer is installed
+# here), and a peer's name refused without --peers or where the manifest lacks it.
+run 0 "" compare --in "$dir/good.csv" --out "$dir/cmp_peers" --no-plot --methods cubic-b,d3-shape:natural --peers "$src/peers" --export json
+grep -q '^cubic-b,ok,' "$dir/cmp_peers/measures.csv" || fail "compare --peers has no cubic-b row"
+if "$src/peers/run" d3-shape --version > /dev/null 2>&1; then
+    grep -q '^d3-shape:natural,ok,' "$dir/cmp_peers/measures.csv" || fail "compare --peers has no d3-shape:natural row"
+    grep -q '"name":"d3-shape:natural"' "$dir/cmp_peers/curve_d3-shape_natural.json" ||
+        fail "compare --peers --export json wrote no d3-shape:natural curve"
+fi
+for bad in "--methods d3-shape:natural" "--methods nobody:x --peers $src/peers" "--peers $dir/adir"; do
+    # shellcheck disable=SC2086
+    run 2 "" compare --in "$dir/good.csv" --out "$dir/cmp_peers_bad" --no-plot $bad
+    [ ! -e "$dir/cmp_peers_bad" ] || fail "compare $bad left $dir/cmp_peers_bad"
+done
 run 0 "" monotone --in "$dir/good.csv"
 for c in empty garbage nan inf columns space one_point missing; do run 2 "" monotone --in "$dir/$c.csv"; done
 run 2 "" monotone --in "$dir/good.csv" --knots other

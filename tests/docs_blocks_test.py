@@ -54,6 +54,7 @@ def logical_lines(body):
 def prepare(folder, source, build):
     os.symlink(build, os.path.join(folder, "build"))
     os.symlink(os.path.join(source, "reference"), os.path.join(folder, "reference"))
+    os.symlink(os.path.join(source, "peers"), os.path.join(folder, "peers"))
     fixtures = os.path.join(source, "tests", "data", "docs")
     for name in os.listdir(fixtures):
         shutil.copy(os.path.join(fixtures, name), folder)

@@ -198,7 +198,8 @@ def interpolate(points: _npt.ArrayLike, method: str, closed: bool = False, **par
     return r.curve
 
 
-def compare(points: _npt.ArrayLike, closed: bool = False, methods: Union[None, str, Iterable[str]] = None, locality: bool = True, threads: int = 0) -> Dict[str, Any]:
+def compare(points: _npt.ArrayLike, closed: bool = False, methods: Union[None, str, Iterable[str]] = None, locality: bool = True, threads: int = 0,
+            peers: str = "peers", programs: str = "build/peers") -> Dict[str, Any]:
     """Every method (or the named configurations) on the same planar or space points, measured as
     by ``cagd compare``: a dict of arrays, one entry per configuration (``methods``: a list of
     names, or one name). ``method``, ``status`` ("ok", "not applicable", "refused", "no result",
@@ -213,6 +214,13 @@ def compare(points: _npt.ArrayLike, closed: bool = False, methods: Union[None, s
     and load once before it (the pseudo-spline's tables), timed apart so that neither is charged
     to whichever configuration runs first.
 
+    ``methods`` may name other libraries' configurations as PEER:CONFIGURATION ("gsl:cspline",
+    "d3-shape:natural"; docs/methods.md lists them), run by their adapters under the repository's
+    ``peers`` folder as ``peer_curve`` runs them and measured as the methods are (``seconds``: the
+    adapter's whole run); then only the named registry configurations are compared beside them.
+    ValueError for a name the folder's manifest lacks; RuntimeError when a named peer is not
+    installed here.
+
     >>> import numpy as np
     >>> t = compare(np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 0.0], [3.0, 1.0]]), methods=["cubic-b", "pseudo-spline"])
     >>> t["method"], t["status"]
@@ -222,7 +230,8 @@ def compare(points: _npt.ArrayLike, closed: bool = False, methods: Union[None, s
                  mask=[False, False],
            fill_value=1e+20)
     """
-    raw = _cagd._compare(_points(points), _flag(closed, "closed"), _names(methods, "methods"), _flag(locality, "locality"), int(threads))
+    raw = _cagd._compare(_points(points), _flag(closed, "closed"), _names(methods, "methods"), _flag(locality, "locality"), int(threads),
+                         str(peers), str(programs))
     out: Dict[str, Any] = {}
     for name, value in raw.items():
         if isinstance(value, tuple):

@@ -801,3 +801,26 @@ def test_peer_curve_runs_an_adapter_and_names_every_failure():
         cagd.peer_curve(p, "echoer:a", closed="yes", peers=peers)
     with pytest.raises(ValueError, match="is not a name"):
         cagd.peer_curve(p, "echoer:two words", peers=peers)
+
+
+def test_compare_measures_peers_beside_the_methods():
+    # The test launcher's echoer draws the polygon: its length is the polygon's, it bends nowhere, and
+    # moving the middle point moves the two spans beside it; its "refuse" configuration has no curve.
+    peers = os.path.join(ROOT, "tests", "data", "peers")
+    p = np.array([[0.0, 0.0], [1.0, 2.0], [3.0, 1.0], [4.0, 3.0], [6.0, 0.0]])
+    t = cagd.compare(p, methods=["cubic-b", "echoer:polygon"], peers=peers)
+    assert t["method"] == ["cubic-b", "echoer:polygon"]
+    assert t["status"] == ["ok", "ok"]
+    perimeter = float(np.sum(np.linalg.norm(np.diff(p, axis=0), axis=1)))
+    assert abs(t["length"][1] - perimeter) <= 1e-12 * perimeter
+    assert t["bending_energy"][1] == 0.0
+    assert t["locality_footprint"][1] == 2
+    refused = cagd.compare(p, methods=["echoer:refuse"], peers=peers)
+    assert refused["status"] == ["no result"]
+    assert refused["note"] == ["echoer: refused by the test peer"]
+    with pytest.raises(RuntimeError, match="absent: not installed here"):
+        cagd.compare(p, methods=["absent:a"], peers=peers)
+    with pytest.raises(ValueError, match="nobody:x"):
+        cagd.compare(p, methods=["nobody:x"], peers=peers)
+    with pytest.raises(ValueError, match="peers: "):
+        cagd.compare(p, methods=["echoer:polygon"], peers=os.path.join(ROOT, "tests"))

@@ -1,5 +1,8 @@
-// `cagd compare --in P.csv [--closed] [--methods a,b,…] [--no-plot] --out DIR`: every configuration
-// of the method registry on the user's points (compare/method_comparison), planar or in space.
+// `cagd compare --in P.csv [--closed] [--methods a,b,…] [--peers DIR [--programs DIR]] [--no-plot]
+// --out DIR`: every configuration of the method registry on the user's points
+// (compare/method_comparison), planar or in space; with --peers also every installed peer's
+// configuration (peers/peers.csv, run by its adapter through peers/run), rows "peer:configuration"
+// after the registry's; a peer not installed is skipped and named on stderr.
 // Writes DIR/measures.csv and DIR/measures.md (one row per method), the figure data
 // DIR/{points,curves,curvature,combs,methods}.csv, DIR/compare_panels.gp, and with gnuplot on the
 // PATH the figures DIR/{curves,combs,curvature}.png (space points: DIR/{curves,curvature,torsion}.png,
@@ -8,6 +11,7 @@
 // made in a staging directory beside it and published together, or not at all.
 // Prints the Markdown table on stdout and one progress line per method on stderr.
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -28,6 +32,7 @@
 #include "cagd/export/curve_formats.hpp"
 #include "cagd/methods/curve_provenance.hpp"
 #include "cagd/methods/method_parameter_curve.hpp"
+#include "cli/benchmark_options.hpp"
 #include "cli/commands.hpp"
 #include "cli/compare_panels_script.hpp"
 #include "cli/output.hpp"
@@ -37,7 +42,7 @@ namespace cagd::cli {
 namespace {
 
 struct CompareArgs {
-    std::string in, out, methods, export_formats;
+    std::string in, out, methods, export_formats, peers, programs;
     bool closed = false, no_plot = false;
 };
 
@@ -60,10 +65,35 @@ int run_compare(const CompareArgs& a) {
     const PointList points = read_user_points(a.in, a.closed);
     compare::ComparisonOptions options;
     options.closed = a.closed;
-    if (!a.methods.empty()) {
-        std::stringstream ss(a.methods);
-        std::string m;
-        while (std::getline(ss, m, ',')) options.methods.push_back(methods::find_configuration(m).name);
+    // --methods: registry names, and peers' "peer:configuration" (with --peers); none: all of both.
+    std::vector<std::string> peer_names;
+    for (const std::string& m : a.methods.empty() ? std::vector<std::string>{} : split_csv_line(a.methods)) {
+        if (m.find(':') == std::string::npos)
+            options.methods.push_back(methods::find_configuration(m).name);
+        else if (a.peers.empty())
+            fail_input("--methods", m + ": a peer's configuration, and no --peers folder was given");
+        else
+            peer_names.push_back(m);
+    }
+    std::vector<std::string> skipped;
+    if (!a.peers.empty()) {
+        const std::vector<compare::PeerConfiguration> manifest = peer_manifest(a.peers);
+        for (const std::string& m : peer_names)
+            if (std::none_of(manifest.begin(), manifest.end(), [&](const auto& c) { return c.name() == m; }))
+                fail_input("--methods", m + ": no such peer configuration in " + a.peers + "/peers.csv");
+        // Named peers only when --methods names some; every peer when --methods is absent.
+        if (a.methods.empty() || !peer_names.empty()) {
+            compare::InstalledPeers installed = compare::installed_peer_subjects(
+                peer_launcher(a.peers, a.programs), manifest, [&](const std::string& n) {
+                    return peer_names.empty() || std::find(peer_names.begin(), peer_names.end(), n) != peer_names.end();
+                });
+            options.peers = std::move(installed.subjects);
+            skipped = std::move(installed.skipped);
+        }
+        // No --methods: the registry's configurations beside the peers.
+        if (a.methods.empty()) options.configurations = methods::configurations();
+        if (!peer_names.empty() && options.methods.empty() && options.peers.empty())
+            throw NoResult("none of the peers named in --methods is installed here: " + skipped.front());
     }
     if (points.cols() != 2 && points.cols() != 3)
         fail_input(who, a.in + ": compares planar or space curves, the points have " + std::to_string(points.cols()) +
@@ -83,6 +113,7 @@ int run_compare(const CompareArgs& a) {
     OutputDirectory out(a.out);     // checked before the work
     OutputFile table_out("-", "");  // the Markdown table on standard output, checked too
     const bool progress = progress_enabled();
+    for (const std::string& why : skipped) std::cerr << "cagd compare: skipped " << why << "\n";
     if (progress)
         std::cerr << "cagd compare: " << points.rows() << " points, "
                   << (options.methods.empty() ? methods::configurations().size() : options.methods.size())
@@ -126,15 +157,23 @@ int run_compare(const CompareArgs& a) {
     // own parameter, with its configuration's parameters and the points (export/curve_formats.hpp).
     for (const compare::MethodComparison& r : results) {
         if (!r.interpolant) continue;
-        const methods::Configuration conf = methods::find_configuration(r.method);
         const methods::MethodParameterCurve curve(*r.interpolant);
-        const exports::CurveProvenance provenance =
-            methods::method_provenance(*conf.method, conf.values, points, a.closed);
+        // A peer's curve: its adapter's own provenance, with the points.
+        exports::CurveProvenance provenance;
+        if (r.provenance) {
+            provenance = *r.provenance;
+            provenance.points = points;
+        } else {
+            const methods::Configuration conf = methods::find_configuration(r.method);
+            provenance = methods::method_provenance(*conf.method, conf.values, points, a.closed);
+        }
+        std::string file_name = "curve_" + r.method;  // a peer's "peer:configuration" as curve_peer_configuration
+        std::replace(file_name.begin(), file_name.end(), ':', '_');
         exports::ExportOptions export_options;
         export_options.points = true;
         export_options.comb = dimension == 2;
         for (const exports::CurveFormat format : export_formats) {
-            OutputFile f(out.staged("curve_" + r.method + exports::curve_format_info(format).extensions.front()));
+            OutputFile f(out.staged(file_name + exports::curve_format_info(format).extensions.front()));
             if (const Outcome written = exports::write_curve(f.stream(), format, curve, provenance, export_options);
                 !written.ok())
                 throw NoResult(r.method + " as " + exports::curve_format_info(format).name + ": " + written.message +
@@ -213,7 +252,12 @@ Command add_compare_command(CLI::App& app) {
                 "closed curves (methods that draw open curves only are listed as not applicable)");
     c->add_option("--methods", a->methods,
                   "comma-separated presets or methods (a method runs with its defaults), e.g. "
-                  "pseudo-spline-exact,cubic-b,hosaka (default: every preset)");
+                  "pseudo-spline-exact,cubic-b,hosaka; with --peers also peers' configurations, e.g. gsl:cspline "
+                  "(default: every preset, and every installed peer with --peers)");
+    c->add_option("--peers", a->peers,
+                  "the peers' folder (peers/): every installed peer's configuration is compared too, or those "
+                  "named in --methods as peer:configuration (e.g. d3-shape:natural)");
+    add_peer_programs_option(c, a->programs);
     c->add_flag("--no-plot", a->no_plot, "write the figure data and script but do not run gnuplot");
     c->add_option("--export", a->export_formats,
                   "also write each method's curve as curve_<method>.<ext> in these comma-separated formats: csv, json, "

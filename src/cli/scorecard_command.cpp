@@ -45,24 +45,13 @@ int run_scorecard(const ScorecardArgs& a) {
     std::vector<compare::CurveSubject> subjects;
     for (const methods::Configuration& c : methods::configurations())
         if (wanted(c.name)) subjects.push_back(compare::method_subject(c, 1));
-    std::vector<std::string> skipped, absent;  // why each absent peer was skipped; its name
+    std::vector<std::string> skipped, absent;  // why each absent peer was skipped; the configurations absent
     if (!a.peers.empty()) {
-        const compare::PeerLauncher launcher = peer_launcher(a.peers, a.programs);
-        std::vector<std::string> checked;
-        for (const compare::PeerConfiguration& c : peer_manifest(a.peers)) {
-            if (!wanted(c.name())) continue;
-            if (std::find(checked.begin(), checked.end(), c.peer) == checked.end()) {
-                checked.push_back(c.peer);
-                if (const compare::PeerRun probe = compare::run_peer(launcher, c.peer, {}); !probe.installed) {
-                    skipped.push_back(probe.reason);
-                    absent.push_back(c.peer);
-                }
-            }
-            if (std::find(absent.begin(), absent.end(), c.peer) == absent.end())
-                subjects.push_back(compare::peer_subject(launcher, c));
-            else
-                absent.push_back(c.name());
-        }
+        compare::InstalledPeers peers =
+            compare::installed_peer_subjects(peer_launcher(a.peers, a.programs), peer_manifest(a.peers), wanted);
+        for (compare::CurveSubject& s : peers.subjects) subjects.push_back(std::move(s));
+        skipped = std::move(peers.skipped);
+        absent = std::move(peers.absent);
     }
     for (const std::string& name : only)
         if (std::none_of(subjects.begin(), subjects.end(), [&](const auto& s) { return s.name == name; }) &&

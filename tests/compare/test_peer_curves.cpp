@@ -10,6 +10,7 @@
 
 #include "../support/messages.hpp"
 #include "../support/scratch_directory.hpp"
+#include "cagd/compare/method_comparison.hpp"
 #include "cagd/compare/peer_identity.hpp"
 
 using namespace cagd;
@@ -210,4 +211,88 @@ TEST(PeerCurves, MethodsPageListsTheManifest) {
            "(make "
            "reproduce does)";
     for (const PeerConfiguration& c : manifest) EXPECT_NE(table.find("`" + c.configuration + "`"), std::string::npos);
+}
+
+TEST(PeerCurves, OnlyTheInstalledPeersBecomeSubjects) {
+    FakePeers peers;
+    const InstalledPeers installed =
+        installed_peer_subjects(peers.launcher,
+                                {configuration("echoer", "a"), configuration("absent", "x"),
+                                 configuration("echoer", "refuse"), configuration("absent", "y")},
+                                [](const std::string& name) { return name != "echoer:refuse"; });
+    ASSERT_EQ(installed.subjects.size(), 1u);
+    EXPECT_EQ(installed.subjects[0].name, "echoer:a");
+    EXPECT_EQ(installed.subjects[0].kind, "peer");
+    EXPECT_EQ(installed.skipped, std::vector<std::string>{"absent: not installed here (a test)"});
+    EXPECT_EQ(installed.absent, (std::vector<std::string>{"absent:x", "absent:y"}));
+}
+
+TEST(PeerCurves, ComparedPeersAreMeasuredAsTheMethodsAre) {
+    // The echoer draws the polygon: its length is the polygon's, it bends nowhere, and moving the middle
+    // point moves the two spans beside it. A refusal is the row's "no result" with the peer's message,
+    // a crashed adapter the row's failure; the registry's rows come first.
+    FakePeers peers;
+    const PointList p = data_set("open", false).points;
+    ComparisonOptions options;
+    options.methods = {"cubic-b"};
+    options.peers = {peer_subject(peers.launcher, configuration("echoer", "polygon")),
+                     peer_subject(peers.launcher, configuration("echoer", "refuse")),
+                     peer_subject(peers.launcher, configuration("crash", "a"))};
+    options.threads = 2;
+    const std::vector<MethodComparison> rows = compare_methods(p, options);
+    ASSERT_EQ(rows.size(), 4u);
+    EXPECT_EQ(rows[0].method, "cubic-b");
+    const MethodComparison& polygon = find_comparison(rows, "echoer:polygon");
+    EXPECT_EQ(&polygon, &rows[1]);
+    ASSERT_EQ(polygon.status, AttemptStatus::ok) << polygon.note;
+    double perimeter = 0.0;
+    for (Eigen::Index i = 0; i + 1 < p.rows(); ++i) perimeter += (p.row(i + 1) - p.row(i)).norm();
+    EXPECT_NEAR(polygon.length, perimeter, 1e-12 * perimeter);
+    ASSERT_TRUE(polygon.fairness);
+    EXPECT_EQ(polygon.fairness->bending_energy, 0.0);
+    EXPECT_EQ(polygon.spans, 4);
+    EXPECT_EQ(polygon.locality_footprint, 2);
+    ASSERT_TRUE(polygon.provenance);
+    EXPECT_EQ(polygon.provenance->method, "echoer:polygon");
+    EXPECT_EQ(rows[2].status, AttemptStatus::no_result);
+    EXPECT_EQ(rows[2].note, "echoer: refused by the test peer");
+    EXPECT_EQ(rows[3].status, AttemptStatus::failed);
+    EXPECT_NE(rows[3].note.find("crash: "), std::string::npos) << rows[3].note;
+    // Peers alone: no registry row.
+    options.methods.clear();
+    options.peers.resize(1);
+    const std::vector<MethodComparison> alone = compare_methods(p, options);
+    ASSERT_EQ(alone.size(), 1u);
+    EXPECT_EQ(alone[0].method, "echoer:polygon");
+}
+
+TEST(PeerCurves, CurvesDrawnElsewhereAreASubject) {
+    // The viewer's peers draw in the browser: their answers become a subject's curves, a refusal
+    // the peer's message, a request beyond the answers none.
+    const PointList p = data_set("open", false).points;
+    FakePeers peers;
+    const PeerRun run = run_peer(peers.launcher, "echoer",
+                                 {{.configuration = "a", .points = p}, {.configuration = "refuse", .points = p}});
+    ASSERT_EQ(run.answers.size(), 2u);
+    const DrawnCurve drawn = peer_drawn_curve(run.answers[0], "echoer", p, false);
+    ASSERT_EQ(drawn.status, AttemptStatus::ok) << drawn.note;
+    ASSERT_TRUE(drawn.interpolant && drawn.provenance);
+    EXPECT_EQ(drawn.interpolant->node_parameters, (std::vector<double>{0, 1, 2, 3, 4}));
+    EXPECT_EQ(drawn.provenance->method, "echoer:a");
+    const DrawnCurve refused = peer_drawn_curve(run.answers[1], "echoer", p, false);
+    EXPECT_EQ(refused.status, AttemptStatus::no_result);
+    EXPECT_EQ(refused.note, "echoer: refused by the test peer");
+    PointList other = p;
+    other(2, 1) += 1.0;  // points the curve does not pass through
+    const DrawnCurve missed = peer_drawn_curve(run.answers[0], "echoer", other, false);
+    EXPECT_EQ(missed.status, AttemptStatus::no_result);
+    EXPECT_NE(missed.note.find("does not pass through"), std::string::npos) << missed.note;
+    const CurveSubject subject = drawn_subject("echoer:a", {drawn});
+    EXPECT_EQ(subject.kind, "peer");
+    const std::vector<DrawnCurve> answers =
+        subject.draw({{.points = p, .closed = false}, {.points = p, .closed = false}});
+    ASSERT_EQ(answers.size(), 2u);
+    EXPECT_EQ(answers[0].status, AttemptStatus::ok);
+    EXPECT_EQ(answers[1].status, AttemptStatus::no_result);
+    EXPECT_EQ(answers[1].note, "not drawn");
 }

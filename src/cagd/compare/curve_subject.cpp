@@ -114,6 +114,26 @@ std::optional<methods::Interpolant> peer_interpolant(const exports::CurveDocumen
     return in;
 }
 
+DrawnCurve peer_drawn_curve(const PeerAnswer& answer, const std::string& peer, const PointList& points, bool closed) {
+    if (!answer.curve) return {.status = AttemptStatus::no_result, .note = peer + ": " + answer.error};
+    DrawnCurve d;
+    if (d.interpolant = peer_interpolant(*answer.curve, points, closed, d.note); !d.interpolant)
+        return {.status = AttemptStatus::no_result, .note = d.note};
+    d.provenance = answer.curve->provenance;
+    return d;
+}
+
+CurveSubject drawn_subject(const std::string& name, const std::vector<DrawnCurve>& answers) {
+    return {.name = name, .kind = "peer", .draw = [answers](const std::vector<CurveRequest>& requests) {
+                std::vector<DrawnCurve> out;
+                for (std::size_t k = 0; k < requests.size(); ++k)
+                    out.push_back(k < answers.size()
+                                      ? answers[k]
+                                      : DrawnCurve{.status = AttemptStatus::no_result, .note = "not drawn"});
+                return out;
+            }};
+}
+
 CurveSubject peer_subject(const PeerLauncher& launcher, const PeerConfiguration& configuration) {
     return {.name = configuration.name(),
             .kind = "peer",
@@ -135,19 +155,34 @@ CurveSubject peer_subject(const PeerLauncher& launcher, const PeerConfiguration&
                 const PeerRun run = run_peer(launcher, configuration.peer, asked);
                 for (std::size_t i = 0; i < asked.size(); ++i) {
                     DrawnCurve& d = out[index[i]];
-                    if (!run.installed || !run.reason.empty()) {
+                    if (!run.installed || !run.reason.empty())
                         d = {.status = AttemptStatus::failed, .note = run.reason};
-                    } else if (const PeerAnswer& a = run.answers[i]; !a.curve) {
-                        d = {.status = AttemptStatus::no_result, .note = configuration.peer + ": " + a.error};
-                    } else if (std::string why;
-                               (d.interpolant = peer_interpolant(*a.curve, asked[i].points, asked[i].closed, why))) {
-                        d.status = AttemptStatus::ok;
-                    } else {
-                        d = {.status = AttemptStatus::no_result, .note = why};
-                    }
+                    else
+                        d = peer_drawn_curve(run.answers[i], configuration.peer, asked[i].points, asked[i].closed);
                 }
                 return out;
             }};
+}
+
+InstalledPeers installed_peer_subjects(const PeerLauncher& launcher, const std::vector<PeerConfiguration>& manifest,
+                                       const std::function<bool(const std::string&)>& wanted) {
+    InstalledPeers out;
+    std::vector<std::string> asked, missing;  // the peers asked for their version; those not installed
+    for (const PeerConfiguration& c : manifest) {
+        if (!wanted(c.name())) continue;
+        if (std::find(asked.begin(), asked.end(), c.peer) == asked.end()) {
+            asked.push_back(c.peer);
+            if (const PeerRun probe = run_peer(launcher, c.peer, {}); !probe.installed) {
+                out.skipped.push_back(probe.reason);
+                missing.push_back(c.peer);
+            }
+        }
+        if (std::find(missing.begin(), missing.end(), c.peer) == missing.end())
+            out.subjects.push_back(peer_subject(launcher, c));
+        else
+            out.absent.push_back(c.name());
+    }
+    return out;
 }
 
 }  // namespace cagd::compare

@@ -20,6 +20,8 @@ struct DrawnCurve {
     AttemptStatus status = AttemptStatus::ok;           ///< ok, not applicable, refused, no result or failed
     std::string note{};                                 ///< why not ok
     std::optional<methods::Interpolant> interpolant{};  ///< when ok
+    /// What made it, as a peer's adapter wrote it in its curve document (empty for a method's curve).
+    std::optional<exports::CurveProvenance> provenance{};
 };
 /// One curve to draw.
 struct CurveRequest {
@@ -41,6 +43,24 @@ CurveSubject method_subject(const methods::Configuration& configuration, int thr
 /// result (the peer's message the note), a run that failed is failed; a curve that does not pass
 /// through the points is no result (peer_interpolant).
 CurveSubject peer_subject(const PeerLauncher& launcher, const PeerConfiguration& configuration);
+/// A peer's answer to a request for a curve through `points` as a drawn curve: its pieces as an
+/// interpolant (peer_interpolant) with the document's provenance; or no result, its note the peer's
+/// refusal ("peer: message") or why the pieces are not an interpolant through the points.
+DrawnCurve peer_drawn_curve(const PeerAnswer& answer, const std::string& peer, const PointList& points, bool closed);
+/// Curves drawn elsewhere as a subject (the viewer's JavaScript peers, drawn in the browser):
+/// request k is answered by answers[k], a request beyond them with no result ("not drawn").
+CurveSubject drawn_subject(const std::string& name, const std::vector<DrawnCurve>& answers);
+/// The installed peers among a manifest's configurations, as subjects (installed_peer_subjects).
+struct InstalledPeers {
+    std::vector<CurveSubject> subjects{};  ///< the wanted configurations of the installed peers, in order
+    std::vector<std::string> skipped{};    ///< for each peer not installed here, why ("peer: reason")
+    std::vector<std::string> absent{};     ///< the wanted configurations of those peers ("peer:configuration")
+};
+/// The configurations of `manifest` that `wanted` accepts (by "peer:configuration"), as peer_subject
+/// subjects of the peers installed here: each peer is asked once for its version (run_peer with no
+/// request), and one that is not installed is skipped with its reason, never an error.
+InstalledPeers installed_peer_subjects(const PeerLauncher& launcher, const std::vector<PeerConfiguration>& manifest,
+                                       const std::function<bool(const std::string&)>& wanted);
 /// A peer's pieces as an interpolant through `points` (closed: and back to the first): each node
 /// parameter is the first break after the previous node where a piece starts at the point (within
 /// 10⁻⁹ D), so a peer may draw several pieces per span; or, where none does, the parameter inside a

@@ -86,6 +86,8 @@ analysis::FairnessSampling comparison_sampling(int pieces) {
 }
 
 const MethodComparison& find_comparison(const std::vector<MethodComparison>& c, const std::string& configuration) {
+    for (const MethodComparison& m : c)  // a peer's row, or a configuration by its own name
+        if (m.method == configuration) return m;
     const std::string name = methods::find_configuration(configuration).name;
     for (const MethodComparison& m : c)
         if (m.method == name) return m;
@@ -104,7 +106,7 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
     std::vector<methods::Configuration> configurations = options.configurations;
     if (configurations.empty()) {
         for (const std::string& name : options.methods) configurations.push_back(methods::find_configuration(name));
-        if (options.methods.empty()) configurations = methods::configurations();
+        if (options.methods.empty() && options.peers.empty()) configurations = methods::configurations();
     }
     const double diagonal = bounding_box_diagonal(points);
     // The locality footprint's input: the middle point moved by 1e-3 of the diagonal, validated once
@@ -119,23 +121,12 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
             return std::nullopt;
         }
     }();
-    const auto measure_unguarded = [&](const methods::Configuration& configuration) {
-        MethodComparison c;
-        c.method = configuration.name;
-        const auto start_state = options.starts.find(configuration.name);
-        InterpolationAttempt attempt = attempt_interpolation(
-            configuration, valid, start_state != options.starts.end() ? &start_state->second : nullptr);
-        c.status = attempt.status;
-        c.note = std::move(attempt.note);
-        c.shared_seconds = attempt.prepare_seconds;
-        c.seconds = attempt.build_seconds;
-        if (attempt.status != AttemptStatus::ok) return c;
-        InterpolationResult& r = attempt.result;
-        c.solver_state = std::move(r.solver_state);  // also the start of the footprint's build (below)
-        c.interpolant = std::move(r.interpolant);
+    // The measures of c's curve (c.interpolant): its spans and, with options.measures, length, area,
+    // fairness, pseudo-energy, and whether a closed planar curve loops.
+    const auto measure_curve = [&](MethodComparison& c) {
         const Curve& curve = *c.interpolant->curve;
         c.spans = static_cast<int>(c.interpolant->node_parameters.size()) - 1;
-        if (!options.measures) return c;
+        if (!options.measures) return;
         const analysis::FairnessSampling sampling =
             comparison_sampling(static_cast<int>(curve.breakpoints().size()) - 1);
         if (options.closed && points.cols() == 2) c.area = analysis::enclosed_area(curve);
@@ -154,7 +145,23 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
             c.status = AttemptStatus::cusp;
             c.note = in_user_terms(one_line(e.what()));
         }
-        if (moved_valid) {
+    };
+    const auto measure_configuration = [&](const methods::Configuration& configuration) {
+        MethodComparison c;
+        c.method = configuration.name;
+        const auto start_state = options.starts.find(configuration.name);
+        InterpolationAttempt attempt = attempt_interpolation(
+            configuration, valid, start_state != options.starts.end() ? &start_state->second : nullptr);
+        c.status = attempt.status;
+        c.note = std::move(attempt.note);
+        c.shared_seconds = attempt.prepare_seconds;
+        c.seconds = attempt.build_seconds;
+        if (attempt.status != AttemptStatus::ok) return c;
+        InterpolationResult& r = attempt.result;
+        c.solver_state = std::move(r.solver_state);  // also the start of the footprint's build (below)
+        c.interpolant = std::move(r.interpolant);
+        measure_curve(c);
+        if (options.measures && moved_valid) {
             try {
                 // From this build's final iterate (continuation: fewer Newton iterations, and the
                 // same solution branch); a direct method builds anew.
@@ -166,31 +173,61 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
         }
         return c;
     };
-    // Whatever one configuration throws beyond a refusal (its curve failing to evaluate inside its
-    // own range, memory) is that configuration's row, never the end of the comparison.
-    const auto measure = [&](const methods::Configuration& configuration) {
+    // A peer draws the points and the moved ones in one run of its adapter.
+    const auto measure_peer = [&](const CurveSubject& peer) {
+        MethodComparison c;
+        c.method = peer.name;
+        std::vector<CurveRequest> requests{{.points = points, .closed = options.closed}};
+        if (options.measures && moved_valid) requests.push_back({.points = moved, .closed = options.closed});
+        const auto start = std::chrono::steady_clock::now();
+        std::vector<DrawnCurve> drawn = peer.draw(requests);
+        c.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        c.status = drawn.front().status;
+        c.note = std::move(drawn.front().note);
+        if (c.status != AttemptStatus::ok) return c;
+        c.interpolant = std::move(drawn.front().interpolant);
+        c.provenance = std::move(drawn.front().provenance);
+        measure_curve(c);
+        if (drawn.size() > 1 && drawn[1].interpolant)
+            c.locality_footprint = spans_moved(*c.interpolant, *drawn[1].interpolant, 1e-9 * diagonal);
+        return c;
+    };
+    // Whatever one configuration or peer throws beyond a refusal (its curve failing to evaluate inside
+    // its own range, memory) is that row's, never the end of the comparison.
+    const auto guarded = [&](const std::string& name, const char* kind,
+                             const std::function<MethodComparison()>& measure) {
         try {
-            return measure_unguarded(configuration);
+            return measure();
         } catch (const std::exception& e) {
             MethodComparison c;
-            c.method = configuration.name;
+            c.method = name;
             c.status = AttemptStatus::failed;
-            c.note =
-                "the method failed (a defect of the method, not of the points): " + in_user_terms(one_line(e.what()));
+            c.note = std::string("the ") + kind + " failed (a defect of the " + kind +
+                     ", not of the points): " + in_user_terms(one_line(e.what()));
             return c;
         }
     };
-    // The iterative methods are started first; the rows keep the configurations' order.
-    std::vector<std::size_t> order(configurations.size());
+    // The iterative methods are started first, then the peers (each a process of its own); the rows
+    // keep the configurations' order, then the peers'.
+    const std::size_t rows = configurations.size() + options.peers.size();
+    std::vector<std::size_t> order(rows);
     std::iota(order.begin(), order.end(), std::size_t{0});
-    std::stable_partition(order.begin(), order.end(),
-                          [&](std::size_t k) { return configurations[k].method->iterative; });
-    std::vector<MethodComparison> out(configurations.size());
+    const auto rank = [&](std::size_t k) {
+        return k >= configurations.size() ? 1 : configurations[k].method->iterative ? 0 : 2;
+    };
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return rank(i) < rank(j); });
+    std::vector<MethodComparison> out(rows);
     std::mutex report;
     const int threads = options.threads > 0 ? options.threads : hardware_threads();
     parallel_for(static_cast<long>(order.size()), threads, [&](long slot) {
         const std::size_t k = order[static_cast<std::size_t>(slot)];
-        out[k] = measure(configurations[k]);
+        if (k < configurations.size())
+            out[k] =
+                guarded(configurations[k].name, "method", [&] { return measure_configuration(configurations[k]); });
+        else {
+            const CurveSubject& peer = options.peers[k - configurations.size()];
+            out[k] = guarded(peer.name, "peer", [&] { return measure_peer(peer); });
+        }
         const std::lock_guard<std::mutex> lock(report);
         if (options.on_method) options.on_method(out[k]);
     });

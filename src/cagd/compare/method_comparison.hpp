@@ -20,6 +20,10 @@
 ///
 /// Space points (3 columns): no enclosed area and no inflections; the largest |τ| instead
 /// (analysis/fairness_measures); the figure data are the curves in 3-D and κ(s), τ(s), no combs.
+/// Peers (ComparisonOptions::peers: other libraries' configurations, run by their adapters,
+/// compare/curve_subject.hpp) are measured after the same rules, on their own pieces; a peer draws the
+/// points and the moved points (the footprint's) in one run of its adapter, whose wall time, process
+/// start included, is its `seconds`. A peer's refusal is its row's "no result" with the peer's message.
 /// A method that does not apply (too few points, closed curves unsupported, 3-D) is listed with
 /// the reason; a returned outcome (the curvature-profile Newton) is listed with its message; a curve
 /// with a point of zero speed (a cusp: Boost's pchip does this where x and y turn together) has no
@@ -38,6 +42,7 @@
 #include <vector>
 
 #include "cagd/analysis/fairness_measures.hpp"
+#include "cagd/compare/curve_subject.hpp"
 #include "cagd/compare/interpolation_attempt.hpp"
 #include "cagd/methods/method_registry.hpp"
 
@@ -50,8 +55,8 @@ struct MethodComparison;
 
 /// What compare_methods measures and how.
 struct ComparisonOptions {
-    std::vector<std::string>
-        methods{};  ///< configuration or method names (methods::find_configuration); empty: every configuration
+    std::vector<std::string> methods{};  ///< configuration or method names (methods::find_configuration); empty: every
+                                         ///< configuration, unless `peers` are given
     /// Configurations given whole (a method under parameter values of the caller's choice,
     /// methods::find_configuration with overrides); when not empty they are compared instead of `methods`.
     std::vector<methods::Configuration> configurations{};
@@ -70,6 +75,9 @@ struct ComparisonOptions {
     /// comparison of as many points, open or closed alike; such a configuration's solve starts there
     /// (methods::interpolate_from). Empty: every method builds anew.
     std::map<std::string, Eigen::VectorXd> starts{};
+    /// Peers' configurations (installed_peer_subjects, peer_subject), compared too: their rows follow
+    /// the configurations', named as the subjects are ("peer:configuration").
+    std::vector<CurveSubject> peers{};
 };
 
 /// One method's row of the comparison.
@@ -77,7 +85,9 @@ struct MethodComparison {
     std::string method;                        ///< the configuration's name
     AttemptStatus status = AttemptStatus::ok;  ///< what became of it (interpolation_attempt.hpp)
     std::string note;                          ///< the reason when status is not ok
-    std::optional<Interpolant> interpolant;    ///< the curve, when the method applies and succeeds
+    /// A peer's row: what made the curve, as its adapter wrote it (empty for a configuration's row).
+    std::optional<exports::CurveProvenance> provenance;
+    std::optional<Interpolant> interpolant;  ///< the curve, when the method applies and succeeds
     Eigen::VectorXd solver_state;  ///< the build's InterpolationResult::solver_state (empty for direct methods)
     double length = 0.0;           ///< arc length
     double area = 0.0;             ///< enclosed area (closed)
@@ -99,10 +109,11 @@ std::optional<std::vector<std::pair<double, double>>> measured_span_integrals(co
 /// Samples (8 to 128) and Gauss–Legendre sub-pieces (2 to 512) per piece for a curve of `pieces`
 /// pieces: about 2·10^6 of each in all, fewer per piece for long inputs.
 analysis::FairnessSampling comparison_sampling(int pieces);
-/// The row of `configuration` (a name methods::find_configuration knows); InvalidInput if the name is
-/// unknown or the comparison has no such row.
+/// The row of `configuration` (a peer's "peer:configuration", or a name methods::find_configuration
+/// knows); InvalidInput if the name is unknown or the comparison has no such row.
 const MethodComparison& find_comparison(const std::vector<MethodComparison>& c, const std::string& configuration);
-/// Every configuration (or those named) on the points, in the configurations' order (see above).
+/// Every configuration (or those named) on the points, in the configurations' order, then the peers
+/// (see above).
 std::vector<MethodComparison> compare_methods(const PointList& points, const ComparisonOptions& options);
 
 }  // namespace cagd::compare
