@@ -58,8 +58,11 @@ test: build
 WEB_BUILD ?= build-web
 CLI_ONLY  = -DCAGD_BUILD_CLI=ON -DCAGD_BUILD_TESTS=OFF -DCAGD_BUILD_EXPERIMENTS=OFF -DCAGD_BUILD_BENCH=OFF
 WEB_FLAGS = -DCAGD_BUILD_WEB=ON -DCAGD_BUILD_TESTS=OFF -DCAGD_BUILD_EXPERIMENTS=OFF -DCAGD_BUILD_CLI=OFF -DCAGD_BUILD_BENCH=OFF -DCAGD_BUILD_PYTHON=OFF -DCAGD_BUILD_PEERS=OFF
+# npm ci in folder $(1) once per lockfile (the viewer's tests in web/, the JavaScript peers in peers/).
+npm_ci = cd $(1) && (cmp -s package-lock.json node_modules/.cagd-lock 2>/dev/null || (npm ci --no-audit --no-fund --loglevel=error && cp package-lock.json node_modules/.cagd-lock))
 web:
 	@bash scripts/install-deps.sh web
+	@$(call npm_ci,peers)
 	@emcmake cmake -S . -B $(WEB_BUILD) $(call generator_for,$(WEB_BUILD)) $(CMAKE_FLAGS) $(WEB_FLAGS) >/dev/null
 	@NODE_PATH=/usr/share/nodejs cmake --build $(WEB_BUILD) -j$(JOBS)
 
@@ -73,9 +76,9 @@ web-serve: web
 test-web: web
 	@cmake -S . -B $(BUILD) $(call generator_for,$(BUILD)) $(CMAKE_FLAGS) $(if $(wildcard $(BUILD)/CMakeCache.txt),,$(CLI_ONLY)) >/dev/null
 	@cmake --build $(BUILD) -j$(JOBS) --target cagd_cli
-	@cd web && (cmp -s package-lock.json node_modules/.cagd-lock 2>/dev/null || (npm ci --no-audit --no-fund --loglevel=error && cp package-lock.json node_modules/.cagd-lock))
+	@$(call npm_ci,web)
 	@mkdir -p results/timing
-	@cd web && CAGD_SITE=$(abspath $(WEB_BUILD))/site CAGD_CLI=$(abspath $(BUILD))/cagd CAGD_WEB_OUT=$(abspath $(WEB_BUILD))/test-output \
+	@cd web && CAGD_SITE=$(abspath $(WEB_BUILD))/site CAGD_CLI=$(abspath $(BUILD))/cagd CAGD_PEERS=$(abspath peers) CAGD_WEB_OUT=$(abspath $(WEB_BUILD))/test-output \
 	  CAGD_FRAME_TIMES=$(abspath results/timing/web_frames.csv) node --test --test-reporter=spec tests/
 
 reproduce:

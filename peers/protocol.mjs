@@ -32,11 +32,6 @@ export function readRequests(text) {
   return requests;
 }
 
-// The cubic Bézier pieces of a line segment (a degree-elevated line: the peers' lineTo).
-export function lineAsCubic(a, b) {
-  return [a, a.map((v, k) => v + (b[k] - v) / 3), a.map((v, k) => v + (2 * (b[k] - v)) / 3), b];
-}
-
 // Planar cubic pieces from lines of eight numbers each (x0 y0 x1 y1 x2 y2 x3 y3), as the MetaPost
 // and Asymptote adapters have their programs write them.
 export function planarCubicsOfLines(text) {

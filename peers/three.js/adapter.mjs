@@ -1,37 +1,10 @@
-// three.js as its users call it: new THREE.CatmullRomCurve3(points, closed, curveType), read
-// through getPoint. Each span of a CatmullRomCurve3 is a cubic in its local parameter w ∈ [0, 1]
-// (three's CubicPoly), so four evaluations per span, at w = 0, 1/3, 2/3, 1, give its Bézier points
-// exactly up to rounding (the curve's parameter t = (i + w)/spans is rounded once).
-// Configurations: centripetal, chordal, uniform (three's "catmullrom", tension 0.5); open and closed.
+// three.js as its users call it (pieces.mjs: the drawing, shared with the viewer), run by peers/run.
 import * as THREE from "three";
 import { document, packageVersion, serve } from "../protocol.mjs";
+import { configurations, pieces } from "./pieces.mjs";
 
-const peer = {
-  name: "three.js",
-  version: packageVersion("three"),
-  configurations: ["centripetal", "chordal", "uniform"],
-};
-const curveTypes = { centripetal: "centripetal", chordal: "chordal", uniform: "catmullrom" };
+const peer = { name: "three.js", version: packageVersion("three"), configurations };
 
-serve(peer, (request) => {
-  const d = request.points[0].length;
-  const curve = new THREE.CatmullRomCurve3(
-    request.points.map((p) => new THREE.Vector3(p[0], p[1], d === 3 ? p[2] : 0)),
-    request.closed,
-    curveTypes[request.configuration],
-  );
-  const spans = request.closed ? request.points.length : request.points.length - 1;
-  const at = (t) => {
-    const v = curve.getPoint(Math.min(t, 1));
-    return [v.x, v.y, v.z].slice(0, d);
-  };
-  const pieces = [];
-  for (let i = 0; i < spans; ++i) {
-    const [c0, p1, p2, c3] = [0, 1, 2, 3].map((k) => at((i + k / 3) / spans));
-    // P(1/3) = (8c0 + 12c1 + 6c2 + c3)/27, P(2/3) = (c0 + 6c1 + 12c2 + 8c3)/27, solved for c1, c2.
-    const a = p1.map((v, k) => 27 * v - 8 * c0[k] - c3[k]);
-    const b = p2.map((v, k) => 27 * v - c0[k] - 8 * c3[k]);
-    pieces.push([c0, a.map((v, k) => (2 * v - b[k]) / 18), b.map((v, k) => (2 * v - a[k]) / 18), c3]);
-  }
-  return document(peer, request, pieces);
-});
+serve(peer, (request) =>
+  document(peer, request, pieces(THREE, request.configuration, request.points, request.closed)),
+);

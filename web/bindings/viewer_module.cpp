@@ -14,9 +14,14 @@
 //     since the anchor (compare::span_displacements), divided by the data diagonal. continuation:
 //     a drag frame; the iterative methods start from the last comparison's solutions when it had
 //     as many points (methods::interpolate_from), else solve anew.
+//     peers: [{name: "peer:configuration", pieces: [x0, y0, …, x3, y3, …], error}]: curves the page's
+//     JavaScript peers drew (web/site/peers.mjs: d3-shape, paper.js, three.js, as their users call
+//     them), eight numbers per cubic piece (breaks 0, 1, …) or the peer's error; measured and drawn
+//     as compare measures a peer (compare::peer_drawn_curve), rows after the configurations'.
 //   readPoints(text, source)       -> {ok, message, points: [[x, y], …]}: the command's CSV reader
 //   exportCurve(request)           -> {ok, message, text}
 //     request: {points, closed, name, parameters, format: "svg" | "dxf" | "json" | "csv", comb, samples}
+//     (a peer's curve: name "peer:configuration" and its pieces, as in compare's peers)
 // Bad input never throws into JavaScript: {ok: false, message} names it, as the command's messages.
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
@@ -30,6 +35,7 @@
 
 #include "cagd/compare/comparison_figure.hpp"
 #include "cagd/compare/comparison_tables.hpp"
+#include "cagd/compare/curve_subject.hpp"
 #include "cagd/compare/locality_footprint.hpp"
 #include "cagd/compare/method_comparison.hpp"
 #include "cagd/core/errors.hpp"
@@ -100,6 +106,41 @@ val failure(const std::string& message) {
     out.set("ok", false);
     out.set("message", message);
     return out;
+}
+
+// A JavaScript peer's curve as the page drew it ({name, pieces, error}; see compare above), through
+// `points`; `name` receives its name.
+cagd::compare::DrawnCurve peer_curve_of(const val& entry, const cagd::PointList& points, bool closed,
+                                        std::string& name) {
+    name = val::global("String")(entry["name"]).as<std::string>();
+    const std::size_t colon = name.find(':');
+    if (colon == std::string::npos || colon == 0 || colon + 1 == name.size())
+        cagd::fail_input("viewer", "peer \"" + name + "\" is not peer:configuration");
+    cagd::compare::PeerAnswer answer;
+    if (const val error = entry["error"]; !error.isUndefined() && !error.isNull()) {
+        answer.error = val::global("String")(error).as<std::string>();
+    } else {
+        const std::vector<double> flat = emscripten::convertJSArrayToNumberVector<double>(entry["pieces"]);
+        const std::size_t pieces = flat.size() / 8;
+        if (pieces == 0 || flat.size() % 8 != 0 || pieces > static_cast<std::size_t>(kMaxViewerPoints))
+            cagd::fail_input("viewer", name + ": pieces needs 8 numbers per cubic piece, at most " +
+                                           std::to_string(kMaxViewerPoints) + " pieces; got " +
+                                           std::to_string(flat.size()) + " numbers");
+        cagd::exports::CurveDocument d;
+        d.provenance.method = name;
+        d.provenance.parameter = "uniform (span index)";
+        d.provenance.closed = closed;
+        d.provenance.points = points;
+        d.form.exact = true;
+        d.form.pieces.degree = 3;
+        d.form.pieces.control.resize(static_cast<Eigen::Index>(4 * pieces), 2);
+        for (Eigen::Index i = 0; i < d.form.pieces.control.rows(); ++i)
+            d.form.pieces.control.row(i) << flat[static_cast<std::size_t>(2 * i)],
+                flat[static_cast<std::size_t>(2 * i + 1)];
+        for (std::size_t k = 0; k <= pieces; ++k) d.form.pieces.breaks.push_back(static_cast<double>(k));
+        answer.curve = std::move(d);
+    }
+    return cagd::compare::peer_drawn_curve(answer, name.substr(0, colon), points, closed);
 }
 
 val parameter_json(const cagd::methods::Parameter& p) {
@@ -196,12 +237,18 @@ val compare(const val& request) {
         options.locality = false;
         options.measures = flag(request, "measures");
         options.threads = 1;
-        const val list = request["configurations"];
+        const val list = request["configurations"], peers = request["peers"];
         const int count = list.isUndefined() ? 0 : list["length"].as<int>();
-        if (count == 0) return failure("viewer: no configuration chosen");
+        const int peer_count = peers.isUndefined() ? 0 : peers["length"].as<int>();
+        if (count + peer_count == 0) return failure("viewer: no configuration chosen");
         for (int i = 0; i < count; ++i)
             options.configurations.push_back(cagd::methods::find_configuration(
                 val::global("String")(list[i]["name"]).as<std::string>(), parameters_of(list[i]["parameters"])));
+        for (int i = 0; i < peer_count; ++i) {
+            std::string name;
+            const cagd::compare::DrawnCurve drawn = peer_curve_of(peers[i], points, options.closed, name);
+            options.peers.push_back(cagd::compare::drawn_subject(name, {drawn}));
+        }
         const int per_span = request["perSpan"].isUndefined() ? 16 : request["perSpan"].as<int>();
         if (per_span < 1 || per_span > kMaxPerSpan)
             return failure("viewer: perSpan = " + std::to_string(per_span) + "; allowed 1.." +
@@ -297,16 +344,27 @@ val export_curve(const val& request) {
     try {
         const cagd::PointList points = points_of(request);
         const bool closed = flag(request, "closed");
-        const cagd::methods::Configuration c = cagd::methods::find_configuration(
-            val::global("String")(request["name"]).as<std::string>(), parameters_of(request["parameters"]));
         const cagd::exports::CurveFormat format =
             cagd::exports::curve_format_named(val::global("String")(request["format"]).as<std::string>());
-        const cagd::methods::InterpolationResult r = cagd::methods::interpolate(c, points, closed);
-        if (!r.outcome.ok() || !r.interpolant) return failure(c.name + ": " + cagd::one_line(r.outcome.message));
-        // As `cagd interpolate` writes it: the curve in the method's own parameter, with its provenance.
-        const cagd::methods::MethodParameterCurve curve(*r.interpolant);
-        const cagd::exports::CurveProvenance provenance =
-            cagd::methods::method_provenance(*c.method, c.values, points, closed);
+        // As `cagd interpolate` writes it: the curve in the method's own parameter, with its provenance
+        // (a peer's: in its pieces' parameter, as `cagd compare --peers` writes it).
+        std::optional<cagd::methods::Interpolant> interpolant;
+        cagd::exports::CurveProvenance provenance;
+        if (!request["pieces"].isUndefined()) {
+            std::string name;
+            cagd::compare::DrawnCurve drawn = peer_curve_of(request, points, closed, name);
+            if (!drawn.interpolant) return failure(name + ": " + cagd::one_line(drawn.note));
+            interpolant = std::move(drawn.interpolant);
+            provenance = *drawn.provenance;
+        } else {
+            const cagd::methods::Configuration c = cagd::methods::find_configuration(
+                val::global("String")(request["name"]).as<std::string>(), parameters_of(request["parameters"]));
+            cagd::methods::InterpolationResult r = cagd::methods::interpolate(c, points, closed);
+            if (!r.outcome.ok() || !r.interpolant) return failure(c.name + ": " + cagd::one_line(r.outcome.message));
+            interpolant = std::move(r.interpolant);
+            provenance = cagd::methods::method_provenance(*c.method, c.values, points, closed);
+        }
+        const cagd::methods::MethodParameterCurve curve(*interpolant);
         cagd::exports::ExportOptions options;
         options.points = true;
         options.comb = flag(request, "comb");

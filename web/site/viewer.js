@@ -2,6 +2,8 @@
 // registry drawn over them with its curvature comb (one common scale) and its κ(s) profile, the
 // comparison's measures, the locality view, the exports, and the whole state in the URL hash.
 // All mathematics is the library's (cagd.js, from web/bindings/viewer_module.cpp); this file draws.
+// The JavaScript peers (d3-shape, paper.js, three.js) draw their curves in the page as their users
+// call them (peers.mjs); the library measures and samples their pieces as it does a method's.
 'use strict';
 
 (function () {
@@ -9,6 +11,7 @@
     ready: null,          // resolves when the module is loaded and the first frame drawn
     module: null,
     registry: null,
+    peers: { list: [], draw: null, reason: '' },  // the JavaScript peers (peers.mjs), once loaded
     state: null,
     result: null,         // the last comparison
     measures: null,       // the last measures table from the worker: {id, header, rows, names}
@@ -40,8 +43,14 @@
   let pauseTimer = null;  // the measures' request waiting for the dragged point to rest
 
   // ---- state and the URL hash -------------------------------------------------------------
+  // Every name the page can show: the registry's configurations, then the peers' "peer:configuration".
+  function knownNames() {
+    return new Set(viewer.registry.configurations.map((c) => c.name).concat(viewer.peers.list.map((p) => p.name)));
+  }
+  const isPeer = (name) => viewer.peers.list.some((p) => p.name === name);
+
   function defaultState() {
-    const known = new Set(viewer.registry.configurations.map((c) => c.name));
+    const known = knownNames();
     return {
       points: EXAMPLE.map((p) => p.slice()),
       closed: false,
@@ -84,7 +93,7 @@
     if (points.length > MAX_LINK_POINTS) return refuse(`holds ${points.length} points, more than the ${MAX_LINK_POINTS} a link may hold`);
     const bad = points.findIndex((p) => !(Array.isArray(p) && p.length === 2 && p.every((v) => typeof v === 'number' && Number.isFinite(v))));
     if (bad >= 0) return refuse(`holds point ${bad + 1} as ${JSON.stringify(points[bad])}, not two finite numbers`);
-    const known = new Set(viewer.registry.configurations.map((c) => c.name));
+    const known = knownNames();
     const shown = [];
     for (const entry of Array.isArray(o.shown) ? o.shown : []) {
       const name = Array.isArray(entry) ? entry[0] : entry;
@@ -112,7 +121,7 @@
 
   // ---- colours: one per configuration, fixed by its place in the registry ------------------
   function colour(name, alpha) {
-    const i = viewer.registry.configurations.findIndex((c) => c.name === name);
+    const i = configIndex(name);
     const hue = (i * 137.508) % 360;  // the golden angle: neighbours far apart, no repeats
     return alpha === undefined ? `hsl(${hue.toFixed(1)} 70% 40%)` : `hsl(${hue.toFixed(1)} 70% 40% / ${alpha})`;
   }
@@ -165,12 +174,22 @@
     return Math.max(2, Math.min(s.perSpan, Math.ceil(chords[chords.length >> 1] / SCREEN_STEP)));
   }
 
+  // The shown configurations of the registry, and the shown peers' curves drawn on the points (each
+  // its pieces or its error), as the library's compare takes them.
+  function shownParts() {
+    const s = viewer.state;
+    return {
+      configurations: s.shown.filter((c) => !isPeer(c.name)),
+      peers: s.shown.filter((c) => isPeer(c.name)).map((c) => viewer.peers.draw(c.name, s.points, s.closed)),
+    };
+  }
+
   function compute(options) {
     const s = viewer.state;
     if (s.points.length < 2 || s.shown.length === 0) return null;
     viewer.perSpan = samplesPerSpan();
     const r = viewer.module.compare({
-      points: s.points.flat(), closed: s.closed, configurations: s.shown, perSpan: viewer.perSpan,
+      points: s.points.flat(), closed: s.closed, ...shownParts(), perSpan: viewer.perSpan,
       anchor: !!(options && options.anchor), motion: !!(options && options.motion),
       continuation: !!(options && options.drag),
     });
@@ -219,7 +238,7 @@
       return;
     }
     $('measures').classList.add('stale');
-    workerNext = { id: ++requestId, points: s.points.flat(), closed: s.closed, configurations: s.shown };
+    workerNext = { id: ++requestId, points: s.points.flat(), closed: s.closed, ...shownParts() };
     pumpWorker();
   }
 
@@ -455,31 +474,38 @@
 
   function shownEntry(name) { return viewer.state.shown.find((c) => c.name === name); }
 
+  // The list's item of a configuration or peer `name`: its box (shown or not), colour and name,
+  // `title` on hover; the caller appends what follows the label.
+  function methodItem(name, title) {
+    const li = document.createElement('li');
+    li.dataset.name = name;
+    const label = document.createElement('label');
+    const box = document.createElement('input');
+    box.type = 'checkbox';
+    box.checked = !!shownEntry(name);
+    box.addEventListener('change', () => {
+      if (box.checked) viewer.state.shown.push({ name, parameters: {} });
+      else viewer.state.shown = viewer.state.shown.filter((e) => e.name !== name);
+      viewer.state.shown.sort((a, b) => configIndex(a.name) - configIndex(b.name));
+      renderMethods();
+      update();
+    });
+    const swatch = document.createElement('span');
+    swatch.className = 'swatch';
+    swatch.style.background = colour(name);
+    label.append(box, swatch, name);
+    label.title = title;
+    li.appendChild(label);
+    return li;
+  }
+
   function renderMethods() {
     const list = $('methods');
     list.textContent = '';
     const methods = new Map(viewer.registry.methods.map((m) => [m.name, m]));
     for (const c of viewer.registry.configurations) {
-      const li = document.createElement('li');
-      li.dataset.name = c.name;
-      const label = document.createElement('label');
-      const box = document.createElement('input');
-      box.type = 'checkbox';
-      box.checked = !!shownEntry(c.name);
-      box.addEventListener('change', () => {
-        if (box.checked) viewer.state.shown.push({ name: c.name, parameters: {} });
-        else viewer.state.shown = viewer.state.shown.filter((e) => e.name !== c.name);
-        viewer.state.shown.sort((a, b) => configIndex(a.name) - configIndex(b.name));
-        renderMethods();
-        update();
-      });
-      const swatch = document.createElement('span');
-      swatch.className = 'swatch';
-      swatch.style.background = colour(c.name);
-      label.append(box, swatch, c.name);
       const m = methods.get(c.method);
-      label.title = `${m.summary} [${m.paper}, ${m.source}]`;
-      li.appendChild(label);
+      const li = methodItem(c.name, `${m.summary} [${m.paper}, ${m.source}]`);
       const entry = shownEntry(c.name);
       // Parameters a browser can set on planar points (no files: a table file is the command's
       // and Python's; none of those the registry marks as for 3-D points only).
@@ -519,15 +545,35 @@
       li.appendChild(note);
       list.appendChild(li);
     }
+    // The peers, drawn in this page by their own libraries.
+    const heading = document.createElement('li');
+    heading.className = 'group';
+    heading.textContent = viewer.peers.list.length ? 'Other libraries, run in this page as their users call them'
+      : `Other libraries: not loaded (${viewer.peers.reason})`;
+    list.appendChild(heading);
+    for (const p of viewer.peers.list) {
+      const li = methodItem(p.name, `${p.library}, as its users call it (the drawing its adapter under peers/${p.peer}/ runs)`);
+      const note = document.createElement('div');
+      note.className = 'note';
+      li.appendChild(note);
+      list.appendChild(li);
+    }
     renderExportChoices();
   }
 
-  function configIndex(name) { return viewer.registry.configurations.findIndex((c) => c.name === name); }
+  // The place of a name in the list: the registry's configurations, then the peers.
+  function configIndex(name) {
+    const i = viewer.registry.configurations.findIndex((c) => c.name === name);
+    if (i >= 0) return i;
+    const k = viewer.peers.list.findIndex((p) => p.name === name);
+    return k < 0 ? -1 : viewer.registry.configurations.length + k;
+  }
 
   function renderMethodNotes() {
     const r = viewer.result;
     for (const li of $('methods').children) {
       const note = li.querySelector('.note');
+      if (!note) continue;  // a group's heading
       const m = r ? r.results.find((x) => x.name === li.dataset.name) : null;
       note.textContent = m && m.status !== 'ok' ? `${m.status}: ${m.note}` : '';
     }
@@ -544,8 +590,12 @@
   // ---- exports -------------------------------------------------------------------------------
   // The text of one shown method's curve in a format, written by the library's writer.
   viewer.exportText = function (name, format) {
+    const s = viewer.state;
+    const request = { points: s.points.flat(), closed: s.closed, format, comb: s.comb };
+    // A peer's curve: its pieces as the page's peer draws them (or its error), in their own parameter.
+    if (isPeer(name)) return viewer.module.exportCurve({ ...request, ...viewer.peers.draw(name, s.points, s.closed) });
     const entry = shownEntry(name) || { name, parameters: {} };
-    return viewer.module.exportCurve({ points: viewer.state.points.flat(), closed: viewer.state.closed, name, parameters: entry.parameters, format, comb: viewer.state.comb });
+    return viewer.module.exportCurve({ ...request, name, parameters: entry.parameters });
   };
 
   function download() {
@@ -642,7 +692,8 @@
     $('clear').addEventListener('click', () => usePoints([]));
     $('example').addEventListener('click', () => usePoints(EXAMPLE.map((p) => p.slice())));
     $('all-methods').addEventListener('click', () => {
-      viewer.state.shown = viewer.registry.configurations.map((c) => shownEntry(c.name) || { name: c.name, parameters: {} });
+      viewer.state.shown = viewer.registry.configurations.map((c) => c.name).concat(viewer.peers.list.map((p) => p.name))
+        .map((name) => shownEntry(name) || { name, parameters: {} });
       renderMethods();
       update();
     });
@@ -699,9 +750,15 @@
     return { x: r.left + sx * r.width / canvas.width, y: r.top + sy * r.height / canvas.height };
   };
 
-  viewer.ready = createCagdModule().then((module) => {
+  viewer.ready = createCagdModule().then(async (module) => {
     viewer.module = module;
     viewer.registry = module.registry();
+    try {
+      viewer.peers = { ...(await (await import('./peers.mjs')).loadPeers()), reason: '' };
+    } catch (e) {
+      viewer.peers = { list: [], draw: null, reason: e.message };
+      report('the JavaScript peers did not load: ' + e.message);
+    }
     worker = new Worker('measures-worker.js');
     worker.onmessage = onMeasures;
     worker.onerror = (e) => report('the measures worker failed: ' + e.message);

@@ -14,6 +14,9 @@ const SITE = resolve(process.env.CAGD_SITE || 'build-web/site');
 const CLI = resolve(process.env.CAGD_CLI || 'build/cagd');
 const OUT = resolve(process.env.CAGD_WEB_OUT || 'build-web/test-output');
 const CHROMIUM = process.env.CHROMIUM || '/usr/bin/chromium';
+const PEERS = resolve(process.env.CAGD_PEERS || '../peers');
+// The JavaScript peers the page runs (web/site/peers.mjs), every configuration of each.
+const PAGE_PEERS = ['d3-shape', 'paper.js', 'three.js'];
 // The agreement asked of the WebAssembly build with the native one: 1e-12 of the data diagonal.
 const AGREEMENT = 1e-12;
 // Every method, the two builds differing in compiler and maths library (Emscripten's clang and
@@ -124,9 +127,52 @@ test('every method the WebAssembly build registers agrees with the native librar
   assert.ok(compared.length >= registry.configurations.length, `compared ${compared.length} curves`);
 });
 
+test('the JavaScript peers draw in the page the pieces their Node.js adapters draw', async () => {
+  const peers = await page.evaluate(() => window.cagdViewer.peers.list.map((p) => p.name));
+  // Every configuration of the page's peers in the manifest, and no other.
+  const manifest = readFileSync(join(PEERS, 'peers.csv'), 'utf8').split('\n').filter((l) => l && !l.startsWith('#')).slice(1)
+    .map((l) => l.split(',')).filter(([peer]) => PAGE_PEERS.includes(peer)).map(([peer, configuration]) => `${peer}:${configuration}`);
+  assert.deepEqual([...peers].sort(), [...manifest].sort());
+  let compared = 0;
+  for (const [label, points, closed] of [['open', OPEN, false], ['closed', CLOSED, true]]) {
+    const scale = diagonal(points);
+    for (const name of peers) {
+      const [peer, configuration] = name.split(':');
+      const request = `curve ${configuration} ${closed ? 'closed' : 'open'} ${points.length} 2\n` + points.map((p) => p.join(' ')).join('\n') + '\n';
+      const node = JSON.parse(execFileSync(join(PEERS, 'run'), [peer], { input: request, encoding: 'utf8' }).trim());
+      const web = await page.evaluate((n, pts, cl) => {
+        window.cagdViewer.setState({ points: pts, closed: cl, shown: [{ name: n, parameters: {} }] });
+        const r = window.cagdViewer.result.results[0];
+        return { exported: window.cagdViewer.exportText(n, 'json'), name: r.name, status: r.status, note: r.note, spans: r.spans, samples: r.curve.length };
+      }, name, points, closed);
+      assert.equal(web.name, name);
+      if (node.error) {
+        // The same refusal in both: the row without a curve, the export naming the peer's message.
+        assert.equal(web.status, 'no result', `${label} ${name}: ${web.status}`);
+        assert.equal(web.note, `${peer}: ${node.error}`);
+        assert.equal(web.exported.ok, false);
+        continue;
+      }
+      assert.ok(['ok', 'cusp'].includes(web.status), `${label} ${name}: ${web.status} (${web.note})`);
+      assert.equal(web.spans, points.length - (closed ? 0 : 1), `${label} ${name}: spans`);
+      assert.ok(web.samples > 2 * points.length, `${label} ${name}: ${web.samples / 2} curve samples`);
+      assert.ok(web.exported.ok, `${label} ${name}: ${web.exported.message}`);
+      const ours = JSON.parse(web.exported.text);
+      assert.equal(ours.method.name, name);
+      assert.equal(ours.pieces.length, node.pieces.length, `${label} ${name}: pieces`);
+      let worst = 0;
+      ours.pieces.forEach((piece, i) => piece.forEach((p, j) => p.forEach((v, k) => { worst = Math.max(worst, Math.abs(v - node.pieces[i][j][k]) / scale); })));
+      assert.ok(worst <= AGREEMENT, `${label} ${name}: the page's pieces differ from the adapter's by ${worst} of the diagonal (allowed ${AGREEMENT})`);
+      ++compared;
+    }
+  }
+  assert.equal(compared, 2 * peers.length - 2);  // d3's natural and monotone-x draw no closed curve
+});
+
 test('the page lists every method of the registry and draws each', async () => {
-  const names = await page.evaluate(() => [...document.querySelectorAll('#methods li')].map((li) => li.dataset.name));
-  assert.deepEqual(names, registry.configurations.map((c) => c.name));
+  const names = await page.evaluate(() => [...document.querySelectorAll('#methods li')].map((li) => li.dataset.name).filter(Boolean));
+  const peers = await page.evaluate(() => window.cagdViewer.peers.list.map((p) => p.name));
+  assert.deepEqual(names, registry.configurations.map((c) => c.name).concat(peers));
   const statuses = await page.evaluate((pts) => {
     document.getElementById('all-methods').click();
     window.cagdViewer.setState({ points: pts, shown: window.cagdViewer.registry.configurations.map((c) => ({ name: c.name, parameters: {} })) });
