@@ -8,7 +8,7 @@
 #   library    build and install the C++ library and the cagd command (make install without Python)
 #   python     + the Python module (make python, make install, pip install --no-build-isolation .)
 #   reproduce  + the figures and the peers (make reproduce, make benchmark)
-#   peers      the benchmark's peers: GSL, ALGLIB, SISL, libspiro, MetaPost, Asymptote, Node.js and npm (the
+#   peers      the benchmark's peers: GSL, ALGLIB, SISL, libspiro, MetaPost, Asymptote, plotutils, Node.js and npm (the
 #              JavaScript peers' packages come from peers/package-lock.json: scripts/benchmark.sh)
 #   test       everything below: GoogleTest, the Python tests, MPI, the API docs, the sanitizers and
 #              the benchmarks' packages (make test, make sanitize)
@@ -52,6 +52,7 @@ peers=(
   libspiro-dev           # the libspiro peer (peers/libspiro: a program of its own, GPL)
   texlive-binaries texlive-metapost   # the metapost peer: mpost and its plain macros
   asymptote              # the asymptote peer: asy
+  plotutils              # the plotutils peer: GNU spline
 )
 test=(
   libgtest-dev libgmock-dev        # unit tests
