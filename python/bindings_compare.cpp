@@ -55,8 +55,9 @@ py::dict comparison_dict(const std::vector<cagd::compare::MethodComparison>& row
             c.locality_footprint ? std::optional<double>(*c.locality_footprint) : std::nullopt,
             built ? std::optional<double>(c.seconds) : std::nullopt,
             measured && dimension == 3 ? std::optional<double>(c.fairness->max_abs_torsion) : std::nullopt,
-            c.status != cagd::compare::AttemptStatus::not_applicable ? std::optional<double>(c.shared_seconds)
-                                                                     : std::nullopt,
+            c.status != cagd::compare::AttemptStatus::not_applicable && !c.peer
+                ? std::optional<double>(c.shared_seconds)
+                : std::nullopt,
         };
         for (std::size_t k = 0; k < names.size(); ++k) {
             values[k].mutable_data()[i] = v[k].value_or(0.0);

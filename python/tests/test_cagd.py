@@ -815,6 +815,7 @@ def test_compare_measures_peers_beside_the_methods():
     assert abs(t["length"][1] - perimeter) <= 1e-12 * perimeter
     assert t["bending_energy"][1] == 0.0
     assert t["locality_footprint"][1] == 2
+    assert list(np.ma.getmaskarray(t["shared_seconds"])) == [False, True]  # a peer shares no tables
     refused = cagd.compare(p, methods=["echoer:refuse"], peers=peers)
     assert refused["status"] == ["no result"]
     assert refused["note"] == ["echoer: refused by the test peer"]

@@ -244,6 +244,8 @@ TEST(PeerCurves, ComparedPeersAreMeasuredAsTheMethodsAre) {
     EXPECT_EQ(rows[0].method, "cubic-b");
     const MethodComparison& polygon = find_comparison(rows, "echoer:polygon");
     EXPECT_EQ(&polygon, &rows[1]);
+    EXPECT_FALSE(rows[0].peer);
+    EXPECT_TRUE(polygon.peer && rows[2].peer && rows[3].peer);
     ASSERT_EQ(polygon.status, AttemptStatus::ok) << polygon.note;
     double perimeter = 0.0;
     for (Eigen::Index i = 0; i + 1 < p.rows(); ++i) perimeter += (p.row(i + 1) - p.row(i)).norm();

@@ -87,7 +87,8 @@ std::vector<std::vector<std::string>> comparison_rows(const std::vector<MethodCo
         r.push_back(c.locality_footprint ? std::to_string(*c.locality_footprint) : "");
         if (timing)
             r.push_back(built ? format_number(c.seconds, 3) : ""),
-                r.push_back(c.status == AttemptStatus::not_applicable ? "" : format_number(c.shared_seconds, 3));
+                r.push_back(c.status == AttemptStatus::not_applicable || c.peer ? ""
+                                                                                : format_number(c.shared_seconds, 3));
         r.push_back(c.note);
         rows.push_back(std::move(r));
     }

@@ -177,6 +177,7 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
     const auto measure_peer = [&](const CurveSubject& peer) {
         MethodComparison c;
         c.method = peer.name;
+        c.peer = true;
         std::vector<CurveRequest> requests{{.points = points, .closed = options.closed}};
         if (options.measures && moved_valid) requests.push_back({.points = moved, .closed = options.closed});
         const auto start = std::chrono::steady_clock::now();
@@ -227,6 +228,7 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
         else {
             const CurveSubject& peer = options.peers[k - configurations.size()];
             out[k] = guarded(peer.name, "peer", [&] { return measure_peer(peer); });
+            out[k].peer = true;
         }
         const std::lock_guard<std::mutex> lock(report);
         if (options.on_method) options.on_method(out[k]);

@@ -83,6 +83,7 @@ struct ComparisonOptions {
 /// One method's row of the comparison.
 struct MethodComparison {
     std::string method;                        ///< the configuration's name
+    bool peer = false;                         ///< a peer's row (ComparisonOptions::peers)
     AttemptStatus status = AttemptStatus::ok;  ///< what became of it (interpolation_attempt.hpp)
     std::string note;                          ///< the reason when status is not ok
     /// A peer's row: what made the curve, as its adapter wrote it (empty for a configuration's row).
@@ -97,7 +98,8 @@ struct MethodComparison {
     std::optional<int> locality_footprint;  ///< spans moved when the middle point moves (absent when not measured)
     double seconds = 0.0;                   ///< wall time of interpolate() (not deterministic)
     /// Wall time of Method::prepare before it: the tables the method shares between builds, loaded
-    /// from the user's cache or built (not deterministic; about 0 for a method with nothing shared).
+    /// from the user's cache or built (not deterministic; about 0 for a method with nothing shared;
+    /// none for a peer, whose `seconds` is its adapter's whole run).
     double shared_seconds = 0.0;
 };
 
