@@ -114,10 +114,15 @@ int run_compare(const CompareArgs& a) {
     OutputFile table_out("-", "");  // the Markdown table on standard output, checked too
     const bool progress = progress_enabled();
     for (const std::string& why : skipped) std::cerr << "cagd compare: skipped " << why << "\n";
-    if (progress)
-        std::cerr << "cagd compare: " << points.rows() << " points, "
-                  << (options.methods.empty() ? methods::configurations().size() : options.methods.size())
-                  << " methods\n";
+    if (progress) {
+        // As compare_methods chooses: the configurations given, else those named, else (no peers) all.
+        const std::size_t registry = !options.configurations.empty() ? options.configurations.size()
+                                     : !options.methods.empty()      ? options.methods.size()
+                                     : options.peers.empty()         ? methods::configurations().size()
+                                                                     : 0;
+        std::cerr << "cagd compare: " << points.rows() << " points, " << registry << " methods, "
+                  << options.peers.size() << " peers\n";
+    }
     options.on_method = [progress](const compare::MethodComparison& r) {
         if (progress)
             std::cerr << "cagd compare: " << r.method << ": " << compare::to_string(r.status)

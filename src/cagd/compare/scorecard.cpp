@@ -8,6 +8,7 @@
 #include <numbers>
 #include <random>
 #include <sstream>
+#include <stdexcept>
 
 #include "cagd/analysis/frenet_jet.hpp"
 #include "cagd/compare/locality_footprint.hpp"
@@ -241,9 +242,10 @@ SubjectScores run_scorecard(const CurveSubject& subject, const ScorecardOptions&
         first.push_back({co_circular_points(static_cast<unsigned>(s), false), false});
     }
     std::vector<DrawnCurve> one = subject.draw(first);
+    // A subject answers every request (curve_subject.hpp); anything else is its defect, not bad input.
     if (one.size() != first.size())
-        fail_input(who,
-                   subject.name + " drew " + std::to_string(one.size()) + " curves of " + std::to_string(first.size()));
+        throw std::logic_error(std::string(who) + ": " + subject.name + " drew " + std::to_string(one.size()) +
+                               " curves of " + std::to_string(first.size()));
     // Round 2: each drawn case's extension (extensionality).
     std::vector<ExtendedPoints> extended(cases.size());
     std::vector<long> second_of(cases.size(), -1);
@@ -257,8 +259,8 @@ SubjectScores run_scorecard(const CurveSubject& subject, const ScorecardOptions&
     }
     const std::vector<DrawnCurve> two = second.empty() ? std::vector<DrawnCurve>{} : subject.draw(second);
     if (two.size() != second.size())
-        fail_input(
-            who, subject.name + " drew " + std::to_string(two.size()) + " curves of " + std::to_string(second.size()));
+        throw std::logic_error(std::string(who) + ": " + subject.name + " drew " + std::to_string(two.size()) +
+                               " curves of " + std::to_string(second.size()));
     std::vector<CaseScore> scores(cases.size());
     parallel_for(static_cast<long>(cases.size()), threads, [&](long k) {
         const auto c = static_cast<std::size_t>(k);
