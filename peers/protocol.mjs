@@ -45,9 +45,10 @@ export function planarCubicsOfLines(text) {
     });
 }
 
-// One answer: the document of `pieces` (cubic Bézier control points), with breaks 0, 1, 2, … (the
-// span index) unless given.
-export function document(peer, request, pieces, { parameter = "uniform (span index)", breaks } = {}) {
+// One answer: the document of `pieces` (Bézier control points, cubic unless given longer), with
+// breaks 0, 1, 2, … (the span index) unless given. A peer that gives samples only and whose pieces
+// approximate its curve says so: `approximation: {maxDistance, tolerance}` (exact: false, the bound).
+export function document(peer, request, pieces, { parameter = "uniform (span index)", breaks, approximation } = {}) {
   return JSON.stringify({
     format: "cagd-curve",
     format_version: 1,
@@ -57,9 +58,9 @@ export function document(peer, request, pieces, { parameter = "uniform (span ind
     points: request.points,
     dimension: request.points[0].length,
     degree: pieces.length ? pieces[0].length - 1 : 3,
-    exact: true,
-    max_distance: 0,
-    tolerance: 0,
+    exact: !approximation,
+    max_distance: approximation?.maxDistance ?? 0,
+    tolerance: approximation?.tolerance ?? 0,
     breaks: breaks ?? pieces.map((_, i) => i).concat([pieces.length]),
     pieces,
   });

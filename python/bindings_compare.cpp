@@ -108,7 +108,9 @@ void bind_compare(py::module_& m) {
           "repository's peers/ folder (docs/peers.md): `name` is PEER:CONFIGURATION (d3-shape:natural, "
           "gsl:cspline, metapost:hobby, …; `cagd peers --peers peers --list-markdown` lists them), `programs` "
           "where CMake built the C and C++ adapters. The curve is the peer's own exact pieces (a pickle keeps "
-          "them). ValueError for a name or folder that is not one; RuntimeError when the peer is not installed "
+          "them); where the peer gives samples only (plotutils's tension splines), the adapter's approximation of "
+          "its curve (docs/peers.md). ValueError for a name or folder that is not one; RuntimeError when the peer is "
+          "not installed "
           "here; cagd.NoSolution when the peer refuses the points or fails on them, with its message.");
     m.def(
         "_compare",

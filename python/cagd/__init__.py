@@ -248,7 +248,9 @@ def peer_curve(points: _npt.ArrayLike, name: str, closed: bool = False, peers: s
     under the repository's peers/ folder (docs/peers.md), as `cagd peers` runs it: `name` is
     PEER:CONFIGURATION ("d3-shape:natural", "gsl:cspline", "metapost:hobby"; docs/methods.md lists
     them), `programs` the folder where CMake built the C and C++ adapters. The curve is the peer's
-    own exact pieces, and every measure of cagd applies to it.
+    own exact pieces, and every measure of cagd applies to it; where the peer gives samples only
+    (plotutils's tension splines), it is its adapter's approximation of the peer's curve, within
+    the bound ``compare`` states in the row's note (docs/peers.md).
 
     ValueError for a name or a folder that is not one; RuntimeError when the peer is not installed
     here (the message says what is missing); cagd.NoSolution when the peer refuses the points or

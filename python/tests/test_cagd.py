@@ -7,9 +7,11 @@ not compute. Environment (set by ctest): CAGD_SOURCE_DIR, CAGD_REFERENCE_VALUES,
 """
 import csv
 import io
+import json
 import math
 import os
 import pickle
+import shutil
 import subprocess
 import sys
 
@@ -816,6 +818,11 @@ def test_compare_measures_peers_beside_the_methods():
     assert t["bending_energy"][1] == 0.0
     assert t["locality_footprint"][1] == 2
     assert list(np.ma.getmaskarray(t["shared_seconds"])) == [False, True]  # a peer shares no tables
+    # A peer that gives samples only: its pieces approximate its curve, and the note gives the bound.
+    approximate = cagd.compare(p, methods=["echoer:approximate"], peers=peers)
+    assert approximate["status"] == ["ok"]
+    assert approximate["note"] == [
+        "its pieces approximate echoer:approximate's curve within 0.25 (the peer gives samples only)"]
     refused = cagd.compare(p, methods=["echoer:refuse"], peers=peers)
     assert refused["status"] == ["no result"]
     assert refused["note"] == ["echoer: refused by the test peer"]
@@ -825,3 +832,53 @@ def test_compare_measures_peers_beside_the_methods():
         cagd.compare(p, methods=["nobody:x"], peers=peers)
     with pytest.raises(ValueError, match="peers: "):
         cagd.compare(p, methods=["echoer:polygon"], peers=os.path.join(ROOT, "tests"))
+
+
+def _bezier_values(pieces, breaks, t):
+    # The pieces (K, degree + 1, 2) on their breaks, evaluated at the parameters t (de Casteljau).
+    k = np.clip(np.searchsorted(breaks, t, side="right") - 1, 0, len(pieces) - 1)
+    u = ((t - breaks[k]) / (breaks[k + 1] - breaks[k]))[:, None]
+    b = pieces[k].copy()
+    for r in range(b.shape[1] - 1, 0, -1):
+        b = (1 - u[:, :, None]) * b[:, :r] + u[:, :, None] * b[:, 1:r + 1]
+    return b[:, 0]
+
+
+@pytest.mark.skipif(not (shutil.which("spline") and shutil.which("node")),
+                    reason="plotutils's spline or Node.js is not installed (scripts/install-deps.sh peers)")
+def test_plotutils_pieces_lie_within_their_bound_of_splines_own_samples():
+    # The plotutils adapter recovers each span from spline's samples at quarters (thirds at tension
+    # 0) and, for a spline under tension, writes quintic Hermite pieces with a bound (docs/peers.md).
+    # spline's own samples at 1/240 of every span, run here directly, lie within that bound of the
+    # pieces (the bound is a remainder estimate, so it must hold everywhere), and the cubic's pieces
+    # are spline's curve to rounding.
+    rng = np.random.default_rng(7)
+    for trial in range(6):
+        n, closed = int(rng.integers(3, 12)), trial % 2 == 1
+        p = rng.uniform(-5.0, 5.0, (n, 2))
+        q = np.vstack([p, p[:1]]) if closed else p
+        spans, per = len(q) - 1, 240
+        diagonal = float(np.linalg.norm(p.max(axis=0) - p.min(axis=0)))
+        for configuration, args in [("cubic", []), ("tension-1", ["-T", "1"]), ("tension-5", ["-T", "5"])]:
+            request = f"curve {configuration} {'closed' if closed else 'open'} {n} 2\n" + "".join(
+                f"{x!r} {y!r}\n" for x, y in p)
+            answer = subprocess.run([os.path.join(ROOT, "peers", "run"), "plotutils"], input=request.encode(),
+                                    capture_output=True, check=True).stdout
+            document = json.loads(answer)
+            assert "error" not in document, document
+            dense = subprocess.run(["spline", "-d", "2", "-a", "-n", str(per * spans), "-s", "-O", "d", *args]
+                                   + (["-p"] if closed else []),
+                                   input="".join(f"{x!r} {y!r}\n" for x, y in q).encode(),
+                                   capture_output=True, check=True).stdout
+            samples = np.frombuffer(dense, dtype=np.float64).reshape(-1, 2)
+            t = np.arange(per * spans + 1) / per
+            ours = _bezier_values(np.array(document["pieces"]), np.array(document["breaks"]), t)
+            error = float(np.linalg.norm(ours - samples, axis=1).max())
+            if configuration == "cubic":
+                assert document["exact"] and error <= 1e-13 * diagonal, (configuration, error)
+            else:
+                assert not document["exact"]
+                bound = document["max_distance"]
+                assert 0.0 < bound <= 1e-8 * diagonal, (configuration, bound, diagonal)
+                assert error <= bound + 1e-13 * diagonal, (configuration, error, bound)
+                assert error >= 0.01 * bound, (configuration, error, bound)  # not a loose bound

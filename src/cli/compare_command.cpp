@@ -177,6 +177,7 @@ int run_compare(const CompareArgs& a) {
         exports::ExportOptions export_options;
         export_options.points = true;
         export_options.comb = dimension == 2;
+        export_options.stands_within = r.approximation.value_or(0.0);
         for (const exports::CurveFormat format : export_formats) {
             OutputFile f(out.staged(file_name + exports::curve_format_info(format).extensions.front()));
             if (const Outcome written = exports::write_curve(f.stream(), format, curve, provenance, export_options);

@@ -268,6 +268,29 @@ TEST(PeerCurves, ComparedPeersAreMeasuredAsTheMethodsAre) {
     EXPECT_EQ(alone[0].method, "echoer:polygon");
 }
 
+TEST(PeerCurves, APeersApproximationIsMeasuredWithItsBoundStated) {
+    // A peer that gives samples only hands back pieces that approximate its curve, within a bound
+    // its document states (exact false, max_distance): the row measures the pieces and says so.
+    FakePeers peers;
+    const PointList p = data_set("open", false).points;
+    ComparisonOptions options;
+    options.peers = {peer_subject(peers.launcher, configuration("echoer", "approximate")),
+                     peer_subject(peers.launcher, configuration("echoer", "polygon"))};
+    const std::vector<MethodComparison> rows = compare_methods(p, options);
+    ASSERT_EQ(rows.size(), 2u);
+    ASSERT_EQ(rows[0].status, AttemptStatus::ok) << rows[0].note;
+    EXPECT_EQ(rows[0].approximation, 0.25);
+    EXPECT_EQ(rows[0].note,
+              "its pieces approximate echoer:approximate's curve within 0.25 (the peer gives samples only)");
+    EXPECT_EQ(rows[0].length, rows[1].length);  // the same polygon, measured alike
+    EXPECT_FALSE(rows[1].approximation);
+    EXPECT_EQ(rows[1].note, "");
+    const DrawnCurve drawn = peer_drawn_curve(
+        run_peer(peers.launcher, "echoer", {{.configuration = "approximate", .points = p, .closed = false}}).answers[0],
+        "echoer", p, false);
+    EXPECT_EQ(drawn.approximation, 0.25);
+}
+
 TEST(PeerCurves, CurvesDrawnElsewhereAreASubject) {
     // The viewer's peers draw in the browser: their answers become a subject's curves, a refusal
     // the peer's message, a request beyond the answers none.

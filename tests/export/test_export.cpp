@@ -321,6 +321,27 @@ TEST(CurveFormats, ChosenByExtensionAndUnknownOnesAreBadInput) {
               std::string::npos);
 }
 
+TEST(CurveFormats, ACurveThatStandsForAnotherSaysSoWithItsBound) {
+    // A peer's pieces that approximate the peer's curve: the document is not exact, and its bound
+    // is the pieces' distance from that curve (here the form's own is 0: cubic-b is polynomial).
+    const methods::InterpolationResult r = methods::interpolate("cubic-b", test::kNewberyGarrett, false);
+    const methods::MethodParameterCurve c(*r.interpolant);
+    std::stringstream exact, standing;
+    ASSERT_TRUE(write_curve(exact, CurveFormat::json, c, {}, {}).ok());
+    ASSERT_TRUE(write_curve(standing, CurveFormat::json, c, {}, {.stands_within = 0.125}).ok());
+    const CurveDocument e = read_curve_json(exact, "exact"), s = read_curve_json(standing, "standing");
+    EXPECT_TRUE(e.form.exact);
+    EXPECT_EQ(e.form.max_distance, 0.0);
+    EXPECT_FALSE(s.form.exact);
+    EXPECT_EQ(s.form.max_distance, 0.125);
+    EXPECT_EQ(s.form.pieces.control, e.form.pieces.control);
+    std::stringstream bad;
+    EXPECT_NE(test::invalid_input_message([&] {
+                  (void)write_curve(bad, CurveFormat::json, c, {}, {.stands_within = -0.5});
+              }).find("stands_within must be finite and >= 0, got -0.5"),
+              std::string::npos);
+}
+
 TEST(CurveFormats, SvgIsACubicPathAndRefusesSpaceCurves) {
     const methods::InterpolationResult r = methods::interpolate("cubic-b", test::kNewberyGarrett, false);
     const methods::MethodParameterCurve c(*r.interpolant);

@@ -120,6 +120,7 @@ DrawnCurve peer_drawn_curve(const PeerAnswer& answer, const std::string& peer, c
     if (d.interpolant = peer_interpolant(*answer.curve, points, closed, d.note); !d.interpolant)
         return {.status = AttemptStatus::no_result, .note = d.note};
     d.provenance = answer.curve->provenance;
+    if (!answer.curve->form.exact) d.approximation = answer.curve->form.max_distance;
     return d;
 }
 

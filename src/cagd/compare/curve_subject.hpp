@@ -22,6 +22,9 @@ struct DrawnCurve {
     std::optional<methods::Interpolant> interpolant{};  ///< when ok
     /// What made it, as a peer's adapter wrote it in its curve document (empty for a method's curve).
     std::optional<exports::CurveProvenance> provenance{};
+    /// A peer that gives samples only: its pieces approximate its curve, within this distance (its
+    /// document's max_distance, exact false); empty for the peer's own pieces and a method's curve.
+    std::optional<double> approximation{};
 };
 /// One curve to draw.
 struct CurveRequest {
@@ -44,7 +47,8 @@ CurveSubject method_subject(const methods::Configuration& configuration, int thr
 /// through the points is no result (peer_interpolant).
 CurveSubject peer_subject(const PeerLauncher& launcher, const PeerConfiguration& configuration);
 /// A peer's answer to a request for a curve through `points` as a drawn curve: its pieces as an
-/// interpolant (peer_interpolant) with the document's provenance; or no result, its note the peer's
+/// interpolant (peer_interpolant) with the document's provenance (and its bound where the pieces
+/// approximate the peer's curve: DrawnCurve::approximation); or no result, its note the peer's
 /// refusal ("peer: message") or why the pieces are not an interpolant through the points.
 DrawnCurve peer_drawn_curve(const PeerAnswer& answer, const std::string& peer, const PointList& points, bool closed);
 /// Curves drawn elsewhere as a subject (the viewer's JavaScript peers, drawn in the browser):

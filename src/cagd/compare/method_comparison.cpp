@@ -189,6 +189,9 @@ std::vector<MethodComparison> compare_methods(const PointList& points, const Com
         c.interpolant = std::move(drawn.front().interpolant);
         c.provenance = std::move(drawn.front().provenance);
         measure_curve(c);
+        if ((c.approximation = drawn.front().approximation))
+            c.note += (c.note.empty() ? "" : "; ") + std::string("its pieces approximate ") + peer.name +
+                      "'s curve within " + format_number(*c.approximation, 3) + " (the peer gives samples only)";
         if (drawn.size() > 1 && drawn[1].interpolant)
             c.locality_footprint = spans_moved(*c.interpolant, *drawn[1].interpolant, 1e-9 * diagonal);
         return c;

@@ -85,9 +85,14 @@ struct MethodComparison {
     std::string method;                        ///< the configuration's name
     bool peer = false;                         ///< a peer's row (ComparisonOptions::peers)
     AttemptStatus status = AttemptStatus::ok;  ///< what became of it (interpolation_attempt.hpp)
-    std::string note;                          ///< the reason when status is not ok
+    /// The reason when status is not ok; for a peer's curve that approximates the peer's own (a peer
+    /// that gives samples only, `approximation`), that bound.
+    std::string note;
     /// A peer's row: what made the curve, as its adapter wrote it (empty for a configuration's row).
     std::optional<exports::CurveProvenance> provenance;
+    /// A peer's row whose pieces approximate the peer's curve: the adapter's bound on their distance
+    /// (DrawnCurve::approximation); every measure is the approximation's.
+    std::optional<double> approximation;
     std::optional<Interpolant> interpolant;  ///< the curve, when the method applies and succeeds
     Eigen::VectorXd solver_state;  ///< the build's InterpolationResult::solver_state (empty for direct methods)
     double length = 0.0;           ///< arc length

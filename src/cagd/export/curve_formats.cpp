@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 
+#include "cagd/core/csv.hpp"
 #include "cagd/core/errors.hpp"
 #include "cagd/export/bspline_form.hpp"
 #include "cagd/export/dxf_writer.hpp"
@@ -96,8 +98,12 @@ Outcome write_curve(std::ostream& out, CurveFormat format, const Curve& curve, c
                 fail_input("cagd::exports::write_curve",
                            "STEP needs a cagd library built with OpenCASCADE (Debian libocct-data-exchange-dev); this "
                            "one was built without it");
-            const BezierForm form = to_bezier(curve, o.approximation);
+            if (!(o.stands_within >= 0.0) || !std::isfinite(o.stands_within))
+                fail_input("cagd::exports::write_curve",
+                           "stands_within must be finite and >= 0, got " + format_number(o.stands_within, 17));
+            BezierForm form = to_bezier(curve, o.approximation);
             if (!form.outcome.ok()) return form.outcome;
+            if (o.stands_within > 0.0) form.exact = false, form.max_distance += o.stands_within;
             if (!form.pieces.control.allFinite())
                 return {Status::not_representable, "a control point of the curve is not finite"};
             if (format == CurveFormat::json) {

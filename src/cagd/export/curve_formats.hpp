@@ -70,6 +70,10 @@ struct ExportOptions {
     SampleOptions samples{};               ///< csv
     bool points = false;                   ///< svg, dxf: draw the provenance's points
     bool comb = false;                     ///< svg: the curvature comb
+    /// The curve is itself an approximation, within this distance, of the curve it stands for (a
+    /// peer's pieces where the peer gives samples only, docs/peers.md): json says exact false and
+    /// adds it to max_distance. 0: the curve is what it stands for.
+    double stands_within = 0.0;
 };
 
 /// Writes `curve` in `format` to `out`. Outcome not ok (nothing useful written: the caller does
