@@ -134,21 +134,23 @@ TEST(PeerIdentity, TheDifferenceLiesBetweenItsSampleAndItsBound) {
 
 TEST(PeerIdentity, ClaimsAreMeasuredOnTheirDataSetsWithEveryFailureNamed) {
     FakePeers peers;
-    const std::vector<PeerConfiguration> manifest{configuration("echoer", "a"), configuration("echoer", "b"),
-                                                  configuration("echoer", "refuse"), configuration("absent", "a"),
-                                                  configuration("liar", "a")};
+    std::vector<PeerConfiguration> manifest{configuration("echoer", "a"),      configuration("echoer", "b"),
+                                            configuration("echoer", "refuse"), configuration("absent", "a"),
+                                            configuration("liar", "a"),        configuration("echoer", "approximate")};
+    manifest.back().output = "samples";  // a peer that gives samples only: its pieces approximate its curve
     const std::vector<ClassicDataSet> sets{data_set("open", false), data_set("closed", true)};
     const std::vector<IdentityClaim> claims{
         {.left = "echoer:a", .right = "echoer:b", .closed = false, .identical = true, .reason = "the same polygon"},
         {.left = "echoer:a", .right = "cagd:cubic-b", .closed = true, .identical = false, .reason = "a polygon"},
         {.left = "echoer:refuse", .right = "echoer:a", .closed = false, .identical = true, .reason = "r"},
         {.left = "echoer:a", .right = "absent:a", .closed = false, .identical = true, .reason = "s"},
-        {.left = "liar:a", .right = "echoer:a", .closed = false, .identical = true, .reason = "t"}};
+        {.left = "liar:a", .right = "echoer:a", .closed = false, .identical = true, .reason = "t"},
+        {.left = "echoer:a", .right = "echoer:approximate", .closed = false, .identical = true, .reason = "u"}};
     const IdentityResults r = measure_identities(claims, sets, manifest, peers.launcher);
     ASSERT_EQ(r.peers.size(), 3u);
     EXPECT_TRUE(r.peers[0].installed);
     EXPECT_FALSE(r.peers[1].installed);
-    ASSERT_EQ(r.measures.size(), 5u);  // each claim on the one data set of its closedness
+    ASSERT_EQ(r.measures.size(), 6u);  // each claim on the one data set of its closedness
     EXPECT_EQ(r.measures[0].failure, "");
     EXPECT_EQ(r.measures[0].difference.bound, 0.0);
     EXPECT_EQ(r.measures[1].data_set, "closed");
@@ -157,12 +159,14 @@ TEST(PeerIdentity, ClaimsAreMeasuredOnTheirDataSetsWithEveryFailureNamed) {
     EXPECT_EQ(r.measures[2].failure, "left: refused by the test peer");
     EXPECT_EQ(r.measures[3].failure, "right: skipped: absent: not installed here (a test)");
     EXPECT_EQ(r.measures[4].failure, "left: the peer answered with the curve of other points");
+    EXPECT_EQ(r.measures[5].failure, "right: the peer gives samples, not its pieces");
     const std::string md = peers_markdown(claims, manifest, r);
     EXPECT_NE(
         md.find("| echoer:a | echoer:b | open | 0 | identical | 1 of 1 | 0 | 0 | nowhere | holds | the same polygon |"),
         std::string::npos)
         << md;
     EXPECT_NE(md.find("| absent | skipped: absent: not installed here (a test) |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| echoer | 1.0 | a, b, refuse, approximate (*samples*) |"), std::string::npos) << md;
     EXPECT_NE(identity_measures_csv(claims, r).find(
                   "echoer:refuse,echoer:a,0,0,identical,open,left: refused by the test peer,,,,,\n"),
               std::string::npos);

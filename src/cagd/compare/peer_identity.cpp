@@ -206,12 +206,17 @@ std::string peers_markdown(const std::vector<IdentityClaim>& claims, const std::
                            const IdentityResults& results) {
     std::ostringstream o;
     o << "# The peers\n\nOther libraries' interpolants, each run as its users run it by an adapter of its own "
-         "(peers/, docs/peers.md). Written by `cagd peers`; its configurations: docs/methods.md.\n\n"
+         "(peers/, docs/peers.md). Written by `cagd peers`; its configurations: docs/methods.md. A configuration "
+         "marked *samples* comes from a peer that gives samples only: its adapter's pieces approximate the peer's "
+         "curve within the bound each of its documents states (max_distance), and every measure of it is of "
+         "those pieces.\n\n"
       << "| peer | version | configurations |\n|---|---|---|\n";
     for (const PeerStatus& s : results.peers) {
         std::string configurations;
         for (const PeerConfiguration& c : manifest)
-            if (c.peer == s.peer) configurations += (configurations.empty() ? "" : ", ") + c.configuration;
+            if (c.peer == s.peer)
+                configurations += (configurations.empty() ? "" : ", ") + c.configuration +
+                                  (c.output == "samples" ? " (*samples*)" : "");
         o << "| " << s.peer << " | " << (s.installed ? s.version : "skipped: " + s.reason) << " | " << configurations
           << " |\n";
     }
