@@ -98,8 +98,10 @@ export function serve(peer, answer, answerAll) {
       out = null;
     }
   }
-  out ??= requests.map(alone);
-  process.stdout.write(out.join("\n") + (out.length ? "\n" : ""));
+  // One line at a time, each written as it is drawn (writes to a pipe or a file are synchronous
+  // here): a batch's answers together may exceed the longest string V8 holds (2^29 characters).
+  if (out) for (const line of out) process.stdout.write(line + "\n");
+  else for (const request of requests) process.stdout.write(alone(request) + "\n");
 }
 
 // Splits the text a batch program wrote into its paths: each path's lines follow a line "path".

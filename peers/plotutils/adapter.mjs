@@ -121,8 +121,8 @@ serve(peer, (request) => {
   const args = request.closed ? ["-p"] : request.configuration === "natural" ? ["-k", "0"] : [];
   const tension = tensions[request.configuration];
   if (!tension) return document(peer, request, cubicPieces(samples(points, 3, args), spans));
-  const lo = [0, 1].map((c) => Math.min(...points.map((p) => p[c])));
-  const hi = [0, 1].map((c) => Math.max(...points.map((p) => p[c])));
+  const lo = [0, 1].map((c) => points.reduce((m, p) => Math.min(m, p[c]), Infinity));
+  const hi = [0, 1].map((c) => points.reduce((m, p) => Math.max(m, p[c]), -Infinity));
   const diagonal = Math.hypot(hi[0] - lo[0], hi[1] - lo[1]);
   const S = samples(points, 4, ["-T", String(tension.sigma), ...args]);
   const { pieces, bound, breaks } = tensionPieces(S, spans, tension, diagonal);

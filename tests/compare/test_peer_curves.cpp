@@ -10,6 +10,7 @@
 
 #include "../support/messages.hpp"
 #include "../support/scratch_directory.hpp"
+#include "cagd/analysis/curve_measures.hpp"
 #include "cagd/compare/method_comparison.hpp"
 #include "cagd/compare/peer_identity.hpp"
 
@@ -166,7 +167,7 @@ TEST(PeerIdentity, ClaimsAreMeasuredOnTheirDataSetsWithEveryFailureNamed) {
         std::string::npos)
         << md;
     EXPECT_NE(md.find("| absent | skipped: absent: not installed here (a test) |"), std::string::npos) << md;
-    EXPECT_NE(md.find("| echoer | 1.0 | a, b, refuse, approximate (*samples*) |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| echoer | echoer 1.0 | a, b, refuse, approximate (*samples*) |"), std::string::npos) << md;
     EXPECT_NE(identity_measures_csv(claims, r).find(
                   "echoer:refuse,echoer:a,0,0,identical,open,left: refused by the test peer,,,,,\n"),
               std::string::npos);
@@ -293,6 +294,27 @@ TEST(PeerCurves, APeersApproximationIsMeasuredWithItsBoundStated) {
         run_peer(peers.launcher, "echoer", {{.configuration = "approximate", .points = p, .closed = false}}).answers[0],
         "echoer", p, false);
     EXPECT_EQ(drawn.approximation, 0.25);
+}
+
+TEST(PeerCurves, ALargeBatchIsDrawnInRunsAndAnsweredInOrder) {
+    // A peer's adapter runs once per thousand requests (its output is bounded): 2500 requests, each
+    // a triangle of its own size, come back as 2500 curves in order, the polygon of each.
+    FakePeers peers;
+    std::vector<CurveRequest> requests;
+    for (int k = 0; k < 2500; ++k) {
+        PointList p(3, 2);
+        p << 0, 0, k + 1, 0, 0, 1;
+        requests.push_back({.points = p, .closed = k % 2 == 1});
+    }
+    const std::vector<DrawnCurve> drawn =
+        peer_subject(peers.launcher, configuration("echoer", "polygon")).draw(requests);
+    ASSERT_EQ(drawn.size(), requests.size());
+    for (std::size_t k = 0; k < drawn.size(); ++k) {
+        ASSERT_EQ(drawn[k].status, AttemptStatus::ok) << k << ": " << drawn[k].note;
+        const double a = static_cast<double>(k) + 1.0;
+        const double open = a + std::hypot(a, 1.0), length = requests[k].closed ? open + 1.0 : open;
+        ASSERT_NEAR(analysis::arc_length(*drawn[k].interpolant->curve), length, 1e-12 * length) << k;
+    }
 }
 
 TEST(PeerCurves, CurvesDrawnElsewhereAreASubject) {

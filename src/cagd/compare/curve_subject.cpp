@@ -13,6 +13,9 @@ namespace cagd::compare {
 namespace {
 
 constexpr double kPeerThroughPoint = 1e-9;  // a peer's piece starts at a point within this × D
+// Requests per run of a peer's adapter: its output is bounded (run_program: 1 GiB), and a thousand
+// curves of 64 points as plotutils's tension-5 writes them (16 quintic pieces a span) are 0.24 GB.
+constexpr std::size_t kPeerRequestsPerRun = 1000;
 
 DrawnCurve drawn(InterpolationAttempt a) {
     DrawnCurve d{.status = a.status, .note = std::move(a.note), .interpolant = std::nullopt};
@@ -152,14 +155,19 @@ CurveSubject peer_subject(const PeerLauncher& launcher, const PeerConfiguration&
                     asked.push_back({configuration.configuration, requests[k].points, closed});
                     index.push_back(k);
                 }
-                if (asked.empty()) return out;
-                const PeerRun run = run_peer(launcher, configuration.peer, asked);
-                for (std::size_t i = 0; i < asked.size(); ++i) {
-                    DrawnCurve& d = out[index[i]];
-                    if (!run.installed || !run.reason.empty())
-                        d = {.status = AttemptStatus::failed, .note = run.reason};
-                    else
-                        d = peer_drawn_curve(run.answers[i], configuration.peer, asked[i].points, asked[i].closed);
+                for (std::size_t first = 0; first < asked.size(); first += kPeerRequestsPerRun) {
+                    const std::size_t count = std::min(kPeerRequestsPerRun, asked.size() - first);
+                    const PeerRun run = run_peer(
+                        launcher, configuration.peer,
+                        {asked.begin() + static_cast<long>(first), asked.begin() + static_cast<long>(first + count)});
+                    for (std::size_t i = first; i < first + count; ++i) {
+                        DrawnCurve& d = out[index[i]];
+                        if (!run.installed || !run.reason.empty())
+                            d = {.status = AttemptStatus::failed, .note = run.reason};
+                        else
+                            d = peer_drawn_curve(run.answers[i - first], configuration.peer, asked[i].points,
+                                                 asked[i].closed);
+                    }
                 }
                 return out;
             }};

@@ -32,7 +32,7 @@ struct CurveRequest {
     bool closed = false;  ///< closed
 };
 /// A configuration of the registry or of a peer, drawing curves in batches (a peer's adapter runs
-/// once per batch).
+/// once per thousand requests of a batch).
 struct CurveSubject {
     std::string name{};  ///< the configuration's name; a peer's "peer:configuration"
     std::string kind{};  ///< "method" or "peer"
@@ -42,7 +42,8 @@ struct CurveSubject {
 /// A configuration of the registry as a subject: attempt_interpolation on each request, `threads` at
 /// once (0: the hardware's).
 CurveSubject method_subject(const methods::Configuration& configuration, int threads = 0);
-/// A peer's configuration as a subject: run_peer once per batch; an answer with an error is no
+/// A peer's configuration as a subject: run_peer once per batch of at most a thousand requests (an
+/// adapter's output is bounded; the answers do not depend on the split); an answer with an error is no
 /// result (the peer's message the note), a run that failed is failed; a curve that does not pass
 /// through the points is no result (peer_interpolant).
 CurveSubject peer_subject(const PeerLauncher& launcher, const PeerConfiguration& configuration);
