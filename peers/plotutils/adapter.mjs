@@ -25,6 +25,7 @@
 // max_distance is the largest of these bounds over the sub-pieces (the coordinates' in quadrature),
 // rounding aside.
 import { spawnSync } from "node:child_process";
+import { cubicThroughThirds } from "../cubic_through_thirds.mjs";
 import { document, programVersion, serve } from "../protocol.mjs";
 
 const version = programVersion("spline", ["--version"]);
@@ -56,15 +57,7 @@ function samples(points, per, args) {
 }
 
 function cubicPieces(S, spans) {
-  const pieces = [];
-  for (let i = 0; i < spans; ++i) {
-    const [c0, p1, p2, c3] = [0, 1, 2, 3].map((k) => S[3 * i + k]);
-    // P(1/3) = (8c0 + 12c1 + 6c2 + c3)/27, P(2/3) = (c0 + 6c1 + 12c2 + 8c3)/27, solved for c1, c2.
-    const a = p1.map((x, k) => 27 * x - 8 * c0[k] - c3[k]);
-    const b = p2.map((x, k) => 27 * x - c0[k] - 8 * c3[k]);
-    pieces.push([c0, a.map((x, k) => (2 * x - b[k]) / 18), b.map((x, k) => (2 * x - a[k]) / 18), c3]);
-  }
-  return pieces;
+  return Array.from({ length: spans }, (_, i) => cubicThroughThirds(S[3 * i], S[3 * i + 1], S[3 * i + 2], S[3 * i + 3]));
 }
 
 // The quintic pieces of the tension spline through the samples S (4 per span), and their bound.

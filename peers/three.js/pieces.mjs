@@ -5,6 +5,8 @@
 // rounded once). Configurations: centripetal, chordal, uniform (three's "catmullrom", tension
 // 0.5); open and closed, planar or in space. Shared by the adapter (Node.js) and the viewer (the
 // browser, web/site/peers.mjs): `THREE` is the three module either loaded.
+import { cubicThroughThirds } from "../cubic_through_thirds.mjs";
+
 export const configurations = ["centripetal", "chordal", "uniform"];
 const curveTypes = { centripetal: "centripetal", chordal: "chordal", uniform: "catmullrom" };
 
@@ -23,11 +25,7 @@ export function pieces(THREE, configuration, points, closed) {
   };
   const out = [];
   for (let i = 0; i < spans; ++i) {
-    const [c0, p1, p2, c3] = [0, 1, 2, 3].map((k) => at((i + k / 3) / spans));
-    // P(1/3) = (8c0 + 12c1 + 6c2 + c3)/27, P(2/3) = (c0 + 6c1 + 12c2 + 8c3)/27, solved for c1, c2.
-    const a = p1.map((v, k) => 27 * v - 8 * c0[k] - c3[k]);
-    const b = p2.map((v, k) => 27 * v - c0[k] - 8 * c3[k]);
-    out.push([c0, a.map((v, k) => (2 * v - b[k]) / 18), b.map((v, k) => (2 * v - a[k]) / 18), c3]);
+    out.push(cubicThroughThirds(...[0, 1, 2, 3].map((k) => at((i + k / 3) / spans))));
   }
   return out;
 }
